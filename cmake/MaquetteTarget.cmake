@@ -1,0 +1,27 @@
+# Warnings for project code: every project target calls maquette_target(NAME).
+function(maquette_target name)
+  target_compile_options(${name} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+endfunction()
+
+# One line per module (OpenCV style): maquette_add_module(terrain SOURCES ... TESTS ...)
+# builds lib/maquette/libmaquette_<name>.so and a GoogleTest executable for its tests.
+function(maquette_add_module name)
+  cmake_parse_arguments(MOD "" "" "SOURCES;TESTS;LIBS" ${ARGN})
+  set(target maquette_${name})
+  add_library(${target} MODULE ${MOD_SOURCES})
+  target_link_libraries(${target} PRIVATE maquette ${MOD_LIBS})
+  set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${MAQUETTE_MODULE_DIR}
+                                             CXX_VISIBILITY_PRESET hidden)
+  maquette_target(${target})
+  if(MOD_TESTS)
+    add_executable(${target}_test ${MOD_TESTS})
+    target_link_libraries(${target}_test PRIVATE maquette ${MOD_LIBS} GTest::gtest_main)
+    target_compile_definitions(${target}_test PRIVATE
+      MAQUETTE_MODULE_DIR="${MAQUETTE_MODULE_DIR}"
+      MAQUETTE_BIN_DIR="${PROJECT_BINARY_DIR}/bin"
+      MAQUETTE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+    add_dependencies(${target}_test ${target} maquette_cli)
+    maquette_target(${target}_test)
+    gtest_discover_tests(${target}_test DISCOVERY_TIMEOUT 60)
+  endif()
+endfunction()

@@ -1,0 +1,61 @@
+#include "image/colour_ramp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+struct Stop {
+  double t;
+  std::array<double, 3> rgb;
+};
+
+// Hypsometric tints, lowland green to snow.
+constexpr Stop kTerrain[] = {{0.00, {58, 112, 64}},   {0.20, {112, 158, 82}},
+                             {0.40, {205, 196, 120}}, {0.60, {170, 120, 72}},
+                             {0.80, {140, 110, 100}}, {1.00, {250, 250, 250}}};
+// Flat white through yellow and red to dark purple for steep slopes.
+constexpr Stop kSlope[] = {{0.00, {255, 255, 255}}, {0.25, {255, 230, 110}},
+                           {0.50, {240, 130, 50}},  {0.75, {190, 40, 50}},
+                           {1.00, {70, 10, 80}}};
+
+template <size_t N>
+std::array<uint8_t, 3> interpolate(const Stop (&stops)[N], double t) {
+  size_t i = 1;
+  while (i < N - 1 && t > stops[i].t) ++i;
+  const Stop& a = stops[i - 1];
+  const Stop& b = stops[i];
+  const double w = std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0);
+  std::array<uint8_t, 3> out{};
+  for (int k = 0; k < 3; ++k) out[k] = uint8_t(std::lround(a.rgb[k] + w * (b.rgb[k] - a.rgb[k])));
+  return out;
+}
+
+}  // namespace
+
+Ramp parse_ramp(std::string_view name) {
+  if (name == "grey" || name == "gray") return Ramp::Grey;
+  if (name == "terrain") return Ramp::Terrain;
+  if (name == "slope") return Ramp::Slope;
+  throw Error("unknown colour ramp '" + std::string(name) + "' (expected grey, terrain or slope)");
+}
+
+std::array<uint8_t, 3> ramp_colour(Ramp ramp, double t) {
+  t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+  switch (ramp) {
+    case Ramp::Terrain:
+      return interpolate(kTerrain, t);
+    case Ramp::Slope:
+      return interpolate(kSlope, t);
+    case Ramp::Grey:
+      break;
+  }
+  const auto g = uint8_t(std::lround(255.0 * t));
+  return {g, g, g};
+}
+
+}  // namespace maquette

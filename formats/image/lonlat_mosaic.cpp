@@ -1,0 +1,98 @@
+#include "image/lonlat_mosaic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "core/error.h"
+#include "core/region.h"
+
+namespace maquette {
+namespace {
+
+constexpr double kMetresPerDegree = 111319.49;  // at the equator, to pick a pixel size
+
+struct Bounds {
+  double west = 180, south = 90, east = -180, north = -90;
+};
+
+// Lon/lat bounds of the cells, with longitudes kept continuous around the first cell so that
+// regions across the antimeridian stay in one piece.
+Bounds bounds_of(const Grid& grid, const std::vector<CellId>& cells) {
+  Bounds b;
+  const double lon0 = grid.centre(cells.front()).lon;
+  for (CellId c : compact(cells)) {
+    for (const LonLat& p : grid.boundary(c, 8)) {
+      const double lon = lon0 + std::remainder(p.lon - lon0, 360.0);
+      b.west = std::min(b.west, lon);
+      b.east = std::max(b.east, lon);
+      b.south = std::min(b.south, p.lat);
+      b.north = std::max(b.north, p.lat);
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::string& layer,
+                          std::vector<CellId> cells, int max_side) {
+  const LayerInfo info = store.require_layer(layer);
+  if (cells.empty()) cells = store.tile_cells(layer);
+  std::sort(cells.begin(), cells.end());
+  if (cells.empty()) throw Error("layer '" + layer + "' in " + store.path() + " has no tiles");
+  const Bounds b = bounds_of(grid, cells);
+
+  // The layer's own pixel size, coarsened (through overviews) until the raster fits max_side.
+  const int log2n = log2_tile_size(info.tile_size);
+  double step = grid.level_info(info.level, info.tile_size).pixel_m / kMetresPerDegree;
+  int level = info.level;
+  while (level > 0 && std::max(b.east - b.west, b.north - b.south) / step > max_side) {
+    --level;
+    step *= 2;
+  }
+  LonLatRaster r;
+  r.west = b.west;
+  r.north = b.north;
+  r.step = step;
+  r.width = std::max(1, int(std::ceil((b.east - b.west) / step)));
+  r.height = std::max(1, int(std::ceil((b.north - b.south) / step)));
+  r.channels = info.channels;
+  r.values.assign(size_t(r.width) * size_t(r.height) * size_t(r.channels),
+                  std::numeric_limits<float>::quiet_NaN());
+
+  const double* nodata = info.nodata ? &*info.nodata : nullptr;
+  const int pixel_level = std::min(level + log2n, CellId::kMaxLevel);
+  const int shift = pixel_level - level;  // tile pixels per cell side = 2^shift
+  std::map<CellId, std::optional<Tile<float>>> tiles;
+  std::vector<LonLat> points(size_t(r.width));
+  std::vector<CellId> ids(points.size());
+  for (int row = 0; row < r.height; ++row) {
+    for (int col = 0; col < r.width; ++col)
+      points[size_t(col)] = {std::remainder(r.west + (col + 0.5) * step, 360.0), r.north - (row + 0.5) * step};
+    grid.cells_from_points(points, pixel_level, ids);
+    for (int col = 0; col < r.width; ++col) {
+      const CellId pixel = ids[size_t(col)];
+      const CellId cell = pixel.parent(level);
+      if (level == info.level && !std::binary_search(cells.begin(), cells.end(), cell)) continue;
+      auto [it, fresh] = tiles.try_emplace(cell);
+      if (fresh) {
+        const auto raw = level == info.level ? store.get_tile(layer, cell) : store.get_overview(layer, cell);
+        if (raw) it->second = to_tile<float>(*raw, nodata);
+      }
+      if (!it->second) continue;
+      // With a tile coarser than 2^shift pixels (tile sizes above 2^(29 - level)) pixels repeat.
+      const int scale = info.tile_size >> shift;
+      const int tc = int(pixel.col() - (cell.col() << shift)) * scale;
+      const int tr = int(pixel.row() - (cell.row() << shift)) * scale;
+      for (int k = 0; k < r.channels; ++k)
+        r.values[(size_t(row) * size_t(r.width) + size_t(col)) * size_t(r.channels) + size_t(k)] =
+            it->second->at(tc, tr, k);
+    }
+  }
+  return r;
+}
+
+}  // namespace maquette

@@ -1,0 +1,100 @@
+// maquette info STORE: layers, levels, tile counts, bounding box, size on disk.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "core/grid.h"
+#include "core/region.h"
+#include "store/store.h"
+
+namespace maquette::cli {
+namespace {
+
+using json = nlohmann::json;
+
+// Lon/lat bounds of a set of cells (of their compacted cover, so big layers stay cheap).
+json cells_bbox(const std::vector<CellId>& cells) {
+  if (cells.empty()) return nullptr;
+  const Grid& grid = default_grid();
+  double w = 180, s = 90, e = -180, n = -90;
+  for (CellId c : compact(cells)) {
+    for (const LonLat& p : grid.boundary(c, 8)) {
+      const double lon = std::remainder(p.lon, 360.0);
+      w = std::min(w, lon);
+      e = std::max(e, lon);
+      s = std::min(s, p.lat);
+      n = std::max(n, p.lat);
+    }
+  }
+  return json::array({w, s, e, n});
+}
+
+json layer_json(const Store& store, const LayerInfo& l) {
+  const LayerStats st = store.stats(l.name);
+  json j = {{"name", l.name},
+            {"kind", layer_kind_name(l.kind)},
+            {"dtype", dtype_name(l.dtype)},
+            {"channels", l.channels},
+            {"tile_size", l.tile_size},
+            {"level", l.level},
+            {"levels", st.levels},
+            {"tiles", st.tile_count},
+            {"bytes", st.bytes},
+            {"semantics", semantics_name(l.semantics)},
+            {"units", l.units},
+            {"codec", l.codec},
+            {"nodata", l.nodata ? json(*l.nodata) : json(nullptr)},
+            {"bbox", cells_bbox(store.tile_cells(l.name))},
+            {"provenance", l.provenance}};
+  if (l.level >= 0 && l.tile_size > 0)
+    j["pixel_m"] = default_grid().level_info(l.level, l.tile_size).pixel_m;
+  return j;
+}
+
+void print_info(const std::string& path, bool as_json) {
+  const auto store = Store::open(path, Store::Mode::ReadOnly);
+  json layers = json::array();
+  for (const LayerInfo& l : store->layers()) layers.push_back(layer_json(*store, l));
+  const json report = {{"store", path},
+                       {"size_bytes", store->file_size()},
+                       {"layers", layers},
+                       {"artifacts", store->artifact_names()}};
+  if (as_json) {
+    std::cout << report.dump(2) << "\n";
+    return;
+  }
+  std::printf("store     %s (%.1f MiB on disk)\n", path.c_str(), double(store->file_size()) / 1048576.0);
+  std::printf("layers    %zu\n", layers.size());
+  for (const json& l : layers) {
+    std::printf("\n  %s: %s %s x%d, %d px tiles at level %d (%.3f m/px), %s%s%s\n",
+                l["name"].get<std::string>().c_str(), l["kind"].get<std::string>().c_str(),
+                l["dtype"].get<std::string>().c_str(), l["channels"].get<int>(),
+                l["tile_size"].get<int>(), l["level"].get<int>(), l.value("pixel_m", 0.0),
+                l["semantics"].get<std::string>().c_str(),
+                l["units"].get<std::string>().empty() ? "" : ", units ",
+                l["units"].get<std::string>().c_str());
+    std::printf("    tiles  %lld (%.1f MiB compressed), levels %s\n", l["tiles"].get<long long>(),
+                l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
+    std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
+  }
+  if (!report["artifacts"].empty()) std::printf("\nartifacts %s\n", report["artifacts"].dump().c_str());
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  auto as_json = std::make_shared<bool>(false);
+  CLI::App* info = app.add_subcommand("info", "Describe a store: layers, levels, tile counts, bounding box, size");
+  info->add_option("STORE", *path, "Store file")->required();
+  info->add_flag("--json", *as_json, "Print JSON");
+  info->callback([path, as_json] { print_info(*path, *as_json); });
+}
+
+}  // namespace maquette::cli

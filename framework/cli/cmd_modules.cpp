@@ -1,0 +1,26 @@
+// maquette modules: the modules found, their operators, inputs, outputs and parameters.
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "runtime/operator_registry.h"
+
+namespace maquette::cli {
+
+void add_modules_command(CLI::App& app) {
+  auto as_json = std::make_shared<bool>(false);
+  CLI::App* modules = app.add_subcommand(
+      "modules",
+      "List modules (from MAQUETTE_MODULE_PATH, then lib/maquette next to the program) and their "
+      "operators with inputs, outputs and parameters");
+  modules->add_flag("--json", *as_json, "Print JSON");
+  modules->callback([as_json] {
+    const OperatorRegistry& registry = default_registry();
+    if (*as_json)
+      std::cout << registry.to_json().dump(2) << "\n";
+    else
+      registry.print(std::cout);
+  });
+}
+
+}  // namespace maquette::cli

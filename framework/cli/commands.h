@@ -1,0 +1,22 @@
+// The `maquette` subcommands; each file cmd_<name>.cpp adds one to the program.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace maquette::cli {
+
+void add_cells_command(CLI::App& app);
+void add_info_command(CLI::App& app);
+void add_modules_command(CLI::App& app);
+void add_run_command(CLI::App& app);
+void add_export_command(CLI::App& app);
+void add_demo_command(CLI::App& app);
+
+// Global options shared by every subcommand.
+struct GlobalOptions {
+  bool quiet = false;
+  bool verbose = false;
+};
+const GlobalOptions& global_options();
+
+}  // namespace maquette::cli

@@ -1,0 +1,57 @@
+// maquette: ingest, run and export Digital Earth grids. See README.md.
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.h"
+#include "core/error.h"
+
+namespace maquette::cli {
+namespace {
+GlobalOptions g_options;
+}
+const GlobalOptions& global_options() { return g_options; }
+}  // namespace maquette::cli
+
+int main(int argc, char** argv) {
+  using namespace maquette::cli;
+  CLI::App app{
+      "maquette: Digital Earth grids on rHEALPix (WGS84, aperture 4).\n"
+      "Ingest data into a cell-indexed store, run operators from modules over cell ranges, "
+      "export what the store holds.",
+      "maquette"};
+  app.set_version_flag("--version", std::string(MAQUETTE_VERSION_STRING));
+  app.add_flag("-q,--quiet", g_options.quiet, "Only print errors");
+  app.add_flag("-v,--verbose", g_options.verbose, "Print debug messages");
+  app.require_subcommand(1);
+  app.fallthrough();
+  add_cells_command(app);
+  add_info_command(app);
+  add_modules_command(app);
+  add_run_command(app);
+  add_export_command(app);
+  add_demo_command(app);
+
+  spdlog::set_default_logger(spdlog::stderr_color_mt("maquette"));
+  spdlog::set_pattern("%^%l%$: %v");
+  // Runs after every option is parsed and before the subcommand's callback.
+  app.parse_complete_callback([] {
+    spdlog::set_level(g_options.quiet     ? spdlog::level::err
+                      : g_options.verbose ? spdlog::level::debug
+                                          : spdlog::level::info);
+  });
+  try {
+    app.parse(argc, argv);  // subcommand callbacks run here
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const maquette::Error& e) {
+    std::fprintf(stderr, "maquette: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "maquette: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,97 @@
+#include "core/halo.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+// Where one halo pixel is read from: a tile-local pixel of a (neighbouring) cell.
+struct HaloSource {
+  int col, row;          // destination, tile-local (halo coordinates)
+  CellId cell;           // source cell at the tile's level
+  int src_col, src_row;  // pixel inside the source tile
+};
+
+void check_tile(const Tile<float>& tile, CellId cell, int size) {
+  if (tile.size() != size || tile.halo() != 0)
+    throw Error("halo: tile of cell " + cell.ToText() + " has size " + std::to_string(tile.size()) +
+                " (halo " + std::to_string(tile.halo()) + "), expected " + std::to_string(size));
+}
+
+}  // namespace
+
+std::optional<FaceCoord> pixel_source(const Grid& grid, CellId cell, int size, int col, int row) {
+  const int pixel_level = cell.level() + log2_tile_size(size);
+  const FaceCoord c{cell.face(), global_col(cell, size, col), global_row(cell, size, row)};
+  const int64_t n = int64_t(1) << pixel_level;
+  if (c.col >= 0 && c.col < n && c.row >= 0 && c.row < n) return c;
+  return grid.wrap(c, pixel_level);
+}
+
+LonLat pixel_centre(const Grid& grid, FaceCoord pixel, int pixel_level) {
+  const PlaneSquare face = grid.plane_square(CellId::FromFace(pixel.face));
+  const double scale = std::ldexp(1.0, -pixel_level);
+  const double u = (double(pixel.col) + 0.5) * scale;
+  const double v = (double(pixel.row) + 0.5) * scale;
+  return grid.inverse({face.x_min + u * face.side, face.y_max - v * face.side});
+}
+
+Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
+                          const TileFetch& fetch) {
+  const int log2_size = log2_tile_size(size);
+  if (halo < 0 || halo > size)
+    throw Error("halo: " + std::to_string(halo) + " pixels around a tile of " +
+                std::to_string(size) + " (must be in [0, size])");
+
+  // First find every halo pixel's source, so each neighbour tile is fetched once (at most 8).
+  std::vector<HaloSource> sources;
+  std::vector<std::pair<CellId, std::optional<Tile<float>>>> tiles{{cell, fetch(cell)}};
+  const auto cached = [&](CellId c) -> const std::optional<Tile<float>>& {
+    for (const auto& [id, tile] : tiles)
+      if (id == c) return tile;
+    return tiles.emplace_back(c, fetch(c)).second;
+  };
+  const int mask = size - 1;
+  for (int row = -halo; row < size + halo; ++row) {
+    for (int col = -halo; col < size + halo; ++col) {
+      if (col >= 0 && col < size && row >= 0 && row < size) continue;
+      const std::optional<FaceCoord> src = pixel_source(grid, cell, size, col, row);
+      if (!src) continue;
+      const CellId source_cell =
+          CellId::FromFaceColRow(src->face, cell.level(), uint32_t(src->col >> log2_size),
+                                 uint32_t(src->row >> log2_size));
+      sources.push_back({col, row, source_cell, int(src->col & mask), int(src->row & mask)});
+      cached(source_cell);
+    }
+  }
+
+  int channels = 0;
+  for (const auto& [id, tile] : tiles) {
+    if (!tile) continue;
+    check_tile(*tile, id, size);
+    if (channels == 0) channels = tile->channels();
+    if (tile->channels() != channels)
+      throw Error("halo: tile of cell " + id.ToText() + " has " + std::to_string(tile->channels()) +
+                  " channels, expected " + std::to_string(channels));
+  }
+
+  Tile<float> out(size, channels == 0 ? 1 : channels, halo,
+                  std::numeric_limits<float>::quiet_NaN());
+  if (const auto& own = tiles.front().second)
+    for (int row = 0; row < size; ++row)
+      for (int col = 0; col < size; ++col)
+        for (int k = 0; k < channels; ++k) out.at(col, row, k) = own->at(col, row, k);
+  for (const HaloSource& s : sources)
+    if (const auto& tile = cached(s.cell))
+      for (int k = 0; k < channels; ++k)
+        out.at(s.col, s.row, k) = tile->at(s.src_col, s.src_row, k);
+  return out;
+}
+
+}  // namespace maquette

@@ -1,0 +1,46 @@
+// The one C entry point of a module. A module is a shared library exporting
+//
+//   extern "C" const MaquetteModuleInfo* maquette_module_info(void);
+//
+// The loader reads abi_version first and refuses a module built against another framework
+// ABI, naming the file. Bump MAQUETTE_ABI_VERSION whenever operator.h, tile.h, grid.h or
+// store.h change in a way that breaks binary compatibility.
+#pragma once
+
+#include <cstdint>
+
+#include "runtime/operator.h"
+
+#define MAQUETTE_ABI_VERSION 1u
+#define MAQUETTE_MODULE_ENTRY "maquette_module_info"
+
+extern "C" {
+
+struct MaquetteOperatorEntry {
+  const char* name;                    // "<module>.<verb>"
+  maquette::OperatorFactory create;
+};
+
+struct MaquetteModuleInfo {
+  uint32_t abi_version;                // MAQUETTE_ABI_VERSION the module was built with
+  const char* name;                    // "terrain"
+  const char* version;                 // "1.0.0"
+  const char* description;
+  const MaquetteOperatorEntry* operators;
+  uint32_t operator_count;
+};
+
+}  // extern "C"
+
+// In a module's one source file that lists its operators:
+//   MAQUETTE_MODULE("terrain", "1.0.0", "Terrain derivatives",
+//                   {"terrain.derive", &make_derive}, {"terrain.fill_voids", &make_fill})
+#define MAQUETTE_MODULE(NAME, VERSION, DESCRIPTION, ...)                                       \
+  extern "C" __attribute__((visibility("default"))) const MaquetteModuleInfo*                 \
+  maquette_module_info() {                                                                     \
+    static const MaquetteOperatorEntry entries[] = {__VA_ARGS__};                              \
+    static const MaquetteModuleInfo info = {MAQUETTE_ABI_VERSION, NAME, VERSION, DESCRIPTION,  \
+                                            entries,                                           \
+                                            uint32_t(sizeof(entries) / sizeof(entries[0]))};   \
+    return &info;                                                                              \
+  }

@@ -1,0 +1,31 @@
+#include "runtime/operator.h"
+
+#include "core/error.h"
+
+namespace maquette {
+
+std::string_view operator_kind_name(OperatorKind k) {
+  switch (k) {
+    case OperatorKind::Cell:
+      return "cell";
+    case OperatorKind::Reduce:
+      return "reduce";
+    case OperatorKind::Region:
+      return "region";
+  }
+  return "unknown";
+}
+
+const Tile<float>& CellData::input(const std::string& port) const {
+  const auto it = inputs.find(port);
+  if (it == inputs.end()) throw Error("no input tile for port '" + port + "'");
+  return it->second;
+}
+
+Tile<float>& CellData::output(const std::string& port) {
+  const auto it = outputs.find(port);
+  if (it == outputs.end()) throw Error("no output tile for port '" + port + "'");
+  return it->second;
+}
+
+}  // namespace maquette

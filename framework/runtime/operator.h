@@ -1,0 +1,117 @@
+// The operator API. An operator is named "<module>.<verb>", declares its inputs, outputs, halo,
+// parameters (a JSON Schema, validated before anything runs) and its kind:
+//  - cell:   one cell at a time, from its input tiles (+ halo) to its output tiles;
+//  - reduce: map each cell to a partial result, merge partials, finish into an artifact;
+//  - region: a whole region at once, as one mosaic split back into cells by the framework.
+// Operators must be deterministic: same inputs and parameters, same bits, for any thread
+// count, order or number of processes.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/cell_id.h"
+#include "core/grid.h"
+#include "core/tile.h"
+#include "store/store.h"
+
+namespace maquette {
+
+using json = nlohmann::json;
+
+enum class OperatorKind { Cell, Reduce, Region };
+std::string_view operator_kind_name(OperatorKind k);
+
+struct InputSpec {
+  std::string name;
+  std::string description;
+  bool optional = false;
+};
+
+// An output port. The layer it writes gets dtype/channels/semantics/units from here and its tile
+// size and level from the step's first input (or the pipeline's level).
+struct OutputSpec {
+  std::string name;
+  std::string description;
+  DType dtype = DType::F32;
+  int channels = 1;
+  Semantics semantics = Semantics::Continuous;
+  std::string units;
+  std::optional<double> nodata;
+};
+
+struct OperatorSpec {
+  std::string name;
+  std::string description;
+  OperatorKind kind = OperatorKind::Cell;
+  std::vector<InputSpec> inputs;
+  std::vector<OutputSpec> outputs;
+  int halo = 0;  // pixels of neighbouring tiles each input tile needs on every side
+  // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
+  // items, additionalProperties false) of the step's "params" object.
+  json params_schema = {{"type", "object"}, {"properties", json::object()}};
+};
+
+// What an operator sees of the cell it works on.
+struct CellContext {
+  CellId cell;
+  int tile_size = 0;
+  const Grid* grid = nullptr;
+  const json* params = nullptr;  // validated, defaults filled in
+};
+
+// Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
+// float32 (NaN -> the output's nodata), converted to the output dtype by the framework.
+struct CellData {
+  std::map<std::string, Tile<float>> inputs;   // by input port name (absent optional: missing)
+  std::map<std::string, Tile<float>> outputs;  // by output port name, only those the step maps
+
+  const Tile<float>& input(const std::string& port) const;   // throws naming the port
+  Tile<float>& output(const std::string& port);              // throws naming the port
+  bool wants(const std::string& output_port) const { return outputs.count(output_port) != 0; }
+};
+
+class Operator {
+ public:
+  virtual ~Operator() = default;
+  virtual const OperatorSpec& spec() const = 0;
+};
+
+class CellOperator : public Operator {
+ public:
+  virtual void run(const CellContext& ctx, CellData& data) const = 0;
+};
+
+class ReduceOperator : public Operator {
+ public:
+  // Partial result of one cell (may be null for "nothing here").
+  virtual json map(const CellContext& ctx, const CellData& data) const = 0;
+  // Associative merge; the framework merges partials in cell-id order, so the result does not
+  // depend on threads or ranks.
+  virtual json merge(const json& a, const json& b) const = 0;
+  // The artifact written under the step's output name.
+  virtual Artifact finish(const json& merged, const json& params) const = 0;
+};
+
+// A mosaic: the tiles of a region's cells pasted into one raster on one face. `origin_col/row`
+// are the global face pixel coordinates of mosaic pixel (0, 0).
+struct Mosaic {
+  int face = 0;
+  int level = 0;  // pixel level: cell level + log2(tile size)
+  int64_t origin_col = 0, origin_row = 0;
+  std::map<std::string, Tile<float>> layers;  // square or not: width = height = tile.size()
+};
+
+class RegionOperator : public Operator {
+ public:
+  virtual void run(const json& params, const Grid& grid, const Mosaic& input, Mosaic& output) const = 0;
+};
+
+using OperatorFactory = std::unique_ptr<Operator> (*)();
+
+}  // namespace maquette

@@ -1,0 +1,142 @@
+#include "runtime/operator_registry.h"
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+bool kind_matches(const Operator& op) {
+  switch (op.spec().kind) {
+    case OperatorKind::Cell:
+      return dynamic_cast<const CellOperator*>(&op) != nullptr;
+    case OperatorKind::Reduce:
+      return dynamic_cast<const ReduceOperator*>(&op) != nullptr;
+    case OperatorKind::Region:
+      return dynamic_cast<const RegionOperator*>(&op) != nullptr;
+  }
+  return false;
+}
+
+nlohmann::json operator_json(const OperatorSpec& spec) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const auto& in : spec.inputs)
+    inputs.push_back(
+        {{"name", in.name}, {"description", in.description}, {"optional", in.optional}});
+  nlohmann::json outputs = nlohmann::json::array();
+  for (const auto& out : spec.outputs) {
+    nlohmann::json o = {{"name", out.name},
+                        {"description", out.description},
+                        {"dtype", dtype_name(out.dtype)},
+                        {"channels", out.channels},
+                        {"semantics", semantics_name(out.semantics)},
+                        {"units", out.units}};
+    if (out.nodata) o["nodata"] = *out.nodata;
+    outputs.push_back(o);
+  }
+  return {{"name", spec.name},
+          {"description", spec.description},
+          {"kind", operator_kind_name(spec.kind)},
+          {"inputs", inputs},
+          {"outputs", outputs},
+          {"halo", spec.halo},
+          {"params", spec.params_schema}};
+}
+
+// One line per parameter: "name type = default [min..max] {enum} (required)".
+void print_params(std::ostream& out, const nlohmann::json& schema) {
+  if (!schema.contains("properties")) return;
+  const nlohmann::json required = schema.value("required", nlohmann::json::array());
+  for (const auto& [name, p] : schema.at("properties").items()) {
+    out << "      " << name << " " << p.value("type", std::string("any"));
+    if (p.contains("default")) out << " = " << p.at("default").dump();
+    if (p.contains("minimum") || p.contains("maximum"))
+      out << " [" << (p.contains("minimum") ? p.at("minimum").dump() : "") << ".."
+          << (p.contains("maximum") ? p.at("maximum").dump() : "") << "]";
+    if (p.contains("enum")) out << " one of " << p.at("enum").dump();
+    for (const auto& r : required)
+      if (r == name) out << " (required)";
+    if (p.contains("description")) out << ": " << p.at("description").get<std::string>();
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+OperatorRegistry OperatorRegistry::load(const std::vector<std::string>& dirs) {
+  OperatorRegistry registry;
+  for (const auto& file : find_module_files(dirs)) registry.add(load_module(file));
+  return registry;
+}
+
+void OperatorRegistry::add(const LoadedModule& module) {
+  const MaquetteModuleInfo& info = *module.info;
+  for (uint32_t i = 0; i < info.operator_count; ++i) {
+    const std::string name = info.operators[i].name;
+    if (const auto it = operators_.find(name); it != operators_.end())
+      throw Error("operator '" + name + "' is defined twice: in " + it->second.file + " and in " +
+                  module.file);
+    std::unique_ptr<Operator> op = info.operators[i].create();
+    if (!op || op->spec().name != name)
+      throw Error(module.file + ": operator '" + name +
+                  "' does not create an operator of that name");
+    if (!kind_matches(*op))
+      throw Error(module.file + ": operator '" + name + "' declares kind " +
+                  std::string(operator_kind_name(op->spec().kind)) + " but is not of that class");
+    operators_.emplace(name, Entry{std::move(op), module.file});
+  }
+  modules_.push_back(module);
+}
+
+const Operator* OperatorRegistry::find(const std::string& name) const {
+  const auto it = operators_.find(name);
+  return it == operators_.end() ? nullptr : it->second.op.get();
+}
+
+nlohmann::json OperatorRegistry::to_json() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& m : modules_) {
+    nlohmann::json ops = nlohmann::json::array();
+    for (uint32_t i = 0; i < m.info->operator_count; ++i)
+      ops.push_back(operator_json(find(m.info->operators[i].name)->spec()));
+    out.push_back({{"name", m.info->name},
+                   {"version", m.info->version},
+                   {"description", m.info->description},
+                   {"file", m.file},
+                   {"operators", ops}});
+  }
+  return out;
+}
+
+void OperatorRegistry::print(std::ostream& out) const {
+  if (modules_.empty())
+    out << "no modules found (searched MAQUETTE_MODULE_PATH and lib/maquette)\n";
+  for (const auto& m : modules_) {
+    out << m.info->name << " " << m.info->version << ": " << m.info->description << "\n  " << m.file
+        << "\n";
+    for (uint32_t i = 0; i < m.info->operator_count; ++i) {
+      const OperatorSpec& s = find(m.info->operators[i].name)->spec();
+      out << "  " << s.name << " (" << operator_kind_name(s.kind);
+      if (s.halo > 0) out << ", halo " << s.halo;
+      out << "): " << s.description << "\n";
+      for (const auto& in : s.inputs)
+        out << "    input  " << in.name << (in.optional ? " (optional)" : "") << ": "
+            << in.description << "\n";
+      for (const auto& o : s.outputs) {
+        out << "    output " << o.name << " " << dtype_name(o.dtype) << " x" << o.channels << " "
+            << semantics_name(o.semantics);
+        if (!o.units.empty()) out << " [" << o.units << "]";
+        out << ": " << o.description << "\n";
+      }
+      if (s.params_schema.contains("properties") && !s.params_schema.at("properties").empty())
+        out << "    params\n";
+      print_params(out, s.params_schema);
+    }
+  }
+}
+
+const OperatorRegistry& default_registry() {
+  static const OperatorRegistry registry = OperatorRegistry::load(module_search_path());
+  return registry;
+}
+
+}  // namespace maquette

@@ -1,0 +1,107 @@
+#include "runtime/params_schema.h"
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+using json = nlohmann::json;
+
+class Validator {
+ public:
+  explicit Validator(const std::string& context) : context_(context) {}
+
+  json check(const json& schema, const json& value, const std::string& path) const {
+    json out = value;
+    if (schema.contains("type")) check_type(schema.at("type").get<std::string>(), out, path);
+    if (schema.contains("enum")) check_enum(schema.at("enum"), out, path);
+    if (out.is_number()) check_range(schema, out, path);
+    if (out.is_object()) check_object(schema, out, path);
+    if (out.is_array() && schema.contains("items")) {
+      for (size_t i = 0; i < out.size(); ++i)
+        out[i] = check(schema.at("items"), out[i], path + "[" + std::to_string(i) + "]");
+    }
+    return out;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw Error(context_ + ": " + path + ": " + what);
+  }
+
+  // Draft 7: "integer" also accepts a number with a zero fractional part (2.0), stored as 2.
+  void check_type(const std::string& type, json& value, const std::string& path) const {
+    bool ok = false;
+    if (type == "object")
+      ok = value.is_object();
+    else if (type == "number")
+      ok = value.is_number();
+    else if (type == "string")
+      ok = value.is_string();
+    else if (type == "boolean")
+      ok = value.is_boolean();
+    else if (type == "array")
+      ok = value.is_array();
+    else if (type == "integer") {
+      ok = value.is_number_integer();
+      if (value.is_number_float()) {
+        const double d = value.get<double>();
+        if (d == double(int64_t(d))) {
+          value = int64_t(d);
+          ok = true;
+        }
+      }
+    } else {
+      fail(path, "the operator's schema has an unsupported type '" + type + "'");
+    }
+    if (!ok) fail(path, "expected " + article(type) + ", got " + value.dump());
+  }
+
+  static std::string article(const std::string& type) {
+    return (type == "object" || type == "integer" || type == "array" ? "an " : "a ") + type;
+  }
+
+  void check_enum(const json& allowed, const json& value, const std::string& path) const {
+    for (const auto& a : allowed)
+      if (a == value) return;
+    fail(path, value.dump() + " is not one of " + allowed.dump());
+  }
+
+  void check_range(const json& schema, const json& value, const std::string& path) const {
+    const double v = value.get<double>();
+    if (schema.contains("minimum") && v < schema.at("minimum").get<double>())
+      fail(path, value.dump() + " is below the minimum " + schema.at("minimum").dump());
+    if (schema.contains("maximum") && v > schema.at("maximum").get<double>())
+      fail(path, value.dump() + " is above the maximum " + schema.at("maximum").dump());
+  }
+
+  void check_object(const json& schema, json& value, const std::string& path) const {
+    const json empty = json::object();
+    const json& props = schema.contains("properties") ? schema.at("properties") : empty;
+    if (schema.contains("additionalProperties") && schema.at("additionalProperties") == false) {
+      for (const auto& [key, _] : value.items())
+        if (!props.contains(key)) fail(path, "unknown field '" + key + "'");
+    }
+    if (schema.contains("required")) {
+      for (const auto& key : schema.at("required"))
+        if (!value.contains(key.get<std::string>()))
+          fail(path, "missing required field '" + key.get<std::string>() + "'");
+    }
+    for (const auto& [key, sub] : props.items()) {
+      if (value.contains(key))
+        value[key] = check(sub, value.at(key), path + "." + key);
+      else if (sub.contains("default"))
+        value[key] = sub.at("default");
+    }
+  }
+
+  const std::string& context_;
+};
+
+}  // namespace
+
+json validate_params(const json& schema, const json& params, const std::string& context) {
+  return Validator(context).check(schema, params.is_null() ? json::object() : params, "params");
+}
+
+}  // namespace maquette

@@ -1,0 +1,17 @@
+// Validation of a step's "params" against its operator's JSON Schema (the draft 7 subset of
+// OperatorSpec::params_schema: type, properties, required, enum, minimum, maximum, default, items,
+// additionalProperties false).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace maquette {
+
+// Returns `params` with defaults filled in. Throws maquette::Error prefixed with `context` (e.g.
+// "step 2 (terrain.derive)") naming the field path and the bad value:
+//   step 2 (terrain.derive): params.z_factor: expected a number, got "abc"
+nlohmann::json validate_params(const nlohmann::json& schema, const nlohmann::json& params,
+                               const std::string& context);
+
+}  // namespace maquette

@@ -1,0 +1,76 @@
+#include "runtime/pipeline_region.h"
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/geojson.h"
+#include "core/grid.h"
+#include "core/region.h"
+
+namespace maquette {
+namespace {
+
+using json = nlohmann::json;
+
+std::vector<CellId> bbox_cells(const json& v, int level, const std::string& where) {
+  std::vector<double> bbox;
+  if (v.is_array())
+    for (const auto& x : v) {
+      if (!x.is_number()) throw Error(where + ": expected a number, got " + x.dump());
+      bbox.push_back(x.get<double>());
+    }
+  check_bbox(bbox, where);
+  return default_grid().cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], level, Containment::Overlap);
+}
+
+std::vector<CellId> geojson_cells(const json& v, int level, const std::string& base_dir,
+                                  const std::string& where) {
+  const auto polygons =
+      v.is_string()
+          ? read_geojson_polygons((std::filesystem::path(base_dir) / v.get<std::string>()).string())
+          : geojson_polygons(v, where);
+  return cover_geojson(default_grid(), polygons, level, Containment::Overlap);
+}
+
+std::vector<CellId> listed_cells(const json& v, int level, const std::string& where) {
+  if (!v.is_array()) throw Error(where + ": expected an array of cell ids, got " + v.dump());
+  std::vector<CellId> cells;
+  for (size_t i = 0; i < v.size(); ++i) {
+    std::optional<CellId> cell;
+    if (v[i].is_string()) cell = CellId::FromText(v[i].get<std::string>());
+    if (v[i].is_number_unsigned() && CellId(v[i].get<uint64_t>()).is_valid())
+      cell = CellId(v[i].get<uint64_t>());
+    if (!cell)
+      throw Error(where + "[" + std::to_string(i) + "]: " + v[i].dump() +
+                  " is not a valid cell id");
+    cells.push_back(*cell);
+  }
+  return uncompact(cells, level);
+}
+
+}  // namespace
+
+std::vector<CellId> region_cells(const json& region, int level, const std::string& base_dir,
+                                 const std::string& context) {
+  if (!region.is_object() || region.size() != 1)
+    throw Error(context +
+                ": region: expected {\"bbox\": ...}, {\"geojson\": ...} or {\"cells\": ...}, got " +
+                region.dump());
+  const std::string key = region.begin().key();
+  const json& value = region.begin().value();
+  const std::string where = context + ": region." + key;
+  std::vector<CellId> cells;
+  if (key == "bbox")
+    cells = bbox_cells(value, level, where);
+  else if (key == "geojson")
+    cells = geojson_cells(value, level, base_dir, where);
+  else if (key == "cells")
+    cells = listed_cells(value, level, where);
+  else
+    throw Error(context + ": region: unknown field '" + key +
+                "' (expected bbox, geojson or cells)");
+  if (cells.empty()) throw Error(where + ": the region covers no cells");
+  return cells;
+}
+
+}  // namespace maquette

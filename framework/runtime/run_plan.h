@@ -1,0 +1,40 @@
+// What a run will do, worked out before anything runs: for each step the layers it reads and
+// writes (checked against the store and the earlier steps) and the cells it processes.
+#pragma once
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "runtime/cell_plan.h"
+#include "runtime/pipeline.h"
+#include "store/store.h"
+
+namespace maquette {
+
+struct StepPlan {
+  const PipelineStep* step = nullptr;
+  int level = 0;  // level of the cells (and tiles) the step reads and writes
+  int tile_size = 0;
+  std::vector<std::pair<std::string, LayerInfo>> inputs;  // port -> layer, in the spec's order
+  std::map<std::string, LayerInfo> outputs;               // port -> raster layer (cell, region)
+  std::string artifact;                                   // reduce: the artifact written
+  // A step with inputs processes the first input's tiles within the region; one without, the
+  // region's cells at the pipeline level.
+  CellPlan cells;
+};
+
+struct RunPlan {
+  std::vector<StepPlan> steps;
+};
+
+// Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
+// store does not exist yet) nor written by an earlier step, inputs of one step at different
+// levels or tile sizes, a region operator over cells of several faces.
+RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
+
+// The dry-run report: steps, cell counts and the layers to be written.
+void print_plan(const Pipeline& pipeline, const RunPlan& plan, std::ostream& out);
+
+}  // namespace maquette

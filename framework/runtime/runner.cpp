@@ -1,0 +1,130 @@
+#include "runtime/runner.h"
+
+#include <spdlog/spdlog.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "runtime/run_plan.h"
+#include "runtime/step_exec.h"
+
+namespace maquette {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The pipeline's store, or null when it does not exist yet.
+std::unique_ptr<Store> open_existing(const Pipeline& pipeline, Store::Mode mode) {
+  if (!std::filesystem::exists(pipeline.store_path)) return nullptr;
+  return Store::open(pipeline.store_path, mode);
+}
+
+RunSummary dry_run(const Pipeline& pipeline, const RunOptions& options, std::ostream& out) {
+  const auto store = open_existing(pipeline, Store::Mode::ReadOnly);
+  const RunPlan plan = plan_run(pipeline, store.get(), std::max(options.threads, 1));
+  print_plan(pipeline, plan, out);
+  RunSummary summary;
+  for (const auto& sp : plan.steps)
+    summary.steps.push_back({sp.step->label(), int64_t(sp.cells.size()), 0, 0, 0.0});
+  return summary;
+}
+
+class Runner {
+ public:
+  Runner(const Pipeline& pipeline, const RunOptions& options)
+      : pipeline_(pipeline),
+        options_(options),
+        threads_(options.threads > 0 ? options.threads : tbb::info::default_concurrency()),
+        arena_(threads_) {}
+
+  RunSummary run() {
+    const auto start = Clock::now();
+    // Everything is validated before the store is created or written. Mode::Create also finishes
+    // a store whose creation was killed before its schema was committed.
+    store_ = open_existing(pipeline_, Store::Mode::Create);
+    const RunPlan plan = plan_run(pipeline_, store_.get(), threads_);
+    if (!store_) store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
+    // Creating every output layer first also checks them against existing layers before any
+    // cell is computed.
+    for (const auto& sp : plan.steps)
+      for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
+
+    RunSummary summary;
+    if (options_.resume) {
+      if (const auto id = store_->latest_unfinished_run(pipeline_.document)) {
+        summary.run_id = *id;
+        summary.resumed = true;
+        if (!options_.quiet) spdlog::info("resuming run {} of {}", *id, pipeline_.source);
+      } else if (!options_.quiet) {
+        spdlog::info("no unfinished run of {} to resume: starting a new run", pipeline_.source);
+      }
+    }
+    if (!summary.resumed) summary.run_id = store_->begin_run(pipeline_.document);
+    try {
+      for (const auto& sp : plan.steps) summary.steps.push_back(run_step(sp, summary));
+    } catch (const std::exception& e) {
+      store_->finish_run(summary.run_id, std::string("failed: ") + e.what());
+      throw;
+    }
+    store_->finish_run(summary.run_id, "ok");
+    summary.seconds = seconds_since(start);
+    return summary;
+  }
+
+ private:
+  StepSummary run_step(const StepPlan& sp, const RunSummary& run) {
+    const auto start = Clock::now();
+    StepSummary s{sp.step->label(), int64_t(sp.cells.size()), 0, 0, 0.0};
+    std::vector<CellId> done;
+    if (run.resumed) {
+      done = store_->done_cells(run.run_id, sp.step->index);
+      std::sort(done.begin(), done.end());
+    }
+    StepIO io(*store_, sp, run.run_id);
+    const OperatorKind kind = sp.step->op->spec().kind;
+    if (kind == OperatorKind::Cell) {
+      std::vector<CellId> todo;
+      std::set_difference(sp.cells.cells().begin(), sp.cells.cells().end(), done.begin(),
+                          done.end(), std::back_inserter(todo));
+      s.computed = int64_t(todo.size());
+      const size_t chunk = default_chunk_size(todo.size(), threads_);
+      Progress progress(s.label, s.computed, options_.quiet);
+      run_cell_step(sp, CellPlan(std::move(todo), chunk), io, progress, arena_);
+    } else if (done.empty()) {
+      // Reduce and region steps record all their cells at once, when complete.
+      s.computed = s.cells;
+      Progress progress(s.label, s.computed, options_.quiet);
+      if (kind == OperatorKind::Reduce)
+        run_reduce_step(sp, io, progress, arena_);
+      else
+        run_region_step(sp, io, progress);
+    }
+    s.skipped = s.cells - s.computed;
+    for (const auto& [port, layer] : sp.outputs) store_->update_overviews(layer.name);
+    s.seconds = seconds_since(start);
+    return s;
+  }
+
+  const Pipeline& pipeline_;
+  const RunOptions& options_;
+  int threads_;
+  tbb::task_arena arena_;
+  std::unique_ptr<Store> store_;
+};
+
+}  // namespace
+
+RunSummary run_pipeline(const Pipeline& pipeline, const RunOptions& options,
+                        std::ostream& plan_out) {
+  if (options.dry_run) return dry_run(pipeline, options, plan_out);
+  return Runner(pipeline, options).run();
+}
+
+}  // namespace maquette

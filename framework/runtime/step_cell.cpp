@@ -1,0 +1,47 @@
+#include "core/error.h"
+#include "runtime/step_exec.h"
+
+namespace maquette {
+namespace {
+
+CellContext context(const StepPlan& plan, CellId cell) {
+  return CellContext{cell, plan.tile_size, &default_grid(), &plan.step->params};
+}
+
+}  // namespace
+
+void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progress& progress,
+                   tbb::task_arena& arena) {
+  const auto& op = static_cast<const CellOperator&>(*plan.step->op);  // kind checked on loading
+  const int halo = op.spec().halo;
+  for_each_cell(todo, arena, plan.step->label(), [&](size_t, CellId cell) {
+    CellData data = io.load(cell, halo);
+    op.run(context(plan, cell), data);
+    const CellOutput out{cell, &data.outputs};
+    io.write({&out, 1});
+    progress.advance();
+  });
+}
+
+void run_reduce_step(const StepPlan& plan, StepIO& io, Progress& progress, tbb::task_arena& arena) {
+  const auto& op = static_cast<const ReduceOperator&>(*plan.step->op);
+  const int halo = op.spec().halo;
+  std::vector<json> partials(plan.cells.size());
+  for_each_cell(plan.cells, arena, plan.step->label(), [&](size_t i, CellId cell) {
+    partials[i] = op.map(context(plan, cell), io.load(cell, halo));
+    progress.advance();
+  });
+  try {
+    // Strictly in cell-id order, so the result does not depend on the thread count.
+    json merged;
+    for (const json& p : partials)
+      if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);
+    Artifact artifact = op.finish(merged, plan.step->params);
+    artifact.name = plan.artifact;
+    io.write_artifact(artifact, plan.cells.cells());
+  } catch (const std::exception& e) {
+    throw Error(plan.step->label() + " failed: " + e.what());
+  }
+}
+
+}  // namespace maquette

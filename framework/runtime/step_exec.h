@@ -1,0 +1,31 @@
+// Executing one step of each operator kind (used by the runner).
+#pragma once
+
+#include <tbb/task_arena.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "runtime/cell_plan.h"
+#include "runtime/progress.h"
+#include "runtime/run_plan.h"
+#include "runtime/step_io.h"
+
+namespace maquette {
+
+// Calls fn(index in `cells`, cell) for every cell, chunk by chunk on the arena's threads. After a
+// failure no new cell starts, and the failure of the lowest index is thrown as maquette::Error
+// "LABEL failed on cell N1234: what".
+void for_each_cell(const CellPlan& cells, tbb::task_arena& arena, const std::string& label,
+                   const std::function<void(size_t, CellId)>& fn);
+
+// Cell operator: `todo` (the step's cells not yet done), each written with its run record.
+void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progress& progress,
+                   tbb::task_arena& arena);
+// Reduce operator: map all cells in parallel, merge in cell-id order, finish into the artifact.
+void run_reduce_step(const StepPlan& plan, StepIO& io, Progress& progress, tbb::task_arena& arena);
+// Region operator: one mosaic of the step's cells (on one face), split back into cells.
+void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress);
+
+}  // namespace maquette

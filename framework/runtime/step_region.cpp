@@ -1,0 +1,82 @@
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "runtime/step_exec.h"
+
+namespace maquette {
+namespace {
+
+// Copies `src` (no halo) into `dst` with its top-left at (col, row), or the reverse.
+void paste(const Tile<float>& src, Tile<float>& dst, int64_t col, int64_t row) {
+  for (int r = 0; r < src.size(); ++r)
+    for (int c = 0; c < src.size(); ++c)
+      for (int k = 0; k < src.channels(); ++k)
+        dst.at(int(col) + c, int(row) + r, k) = src.at(c, r, k);
+}
+
+void cut(const Tile<float>& src, Tile<float>& dst, int64_t col, int64_t row) {
+  for (int r = 0; r < dst.size(); ++r)
+    for (int c = 0; c < dst.size(); ++c)
+      for (int k = 0; k < dst.channels(); ++k)
+        dst.at(c, r, k) = src.at(int(col) + c, int(row) + r, k);
+}
+
+}  // namespace
+
+void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
+  const auto& op = static_cast<const RegionOperator&>(*plan.step->op);
+  const std::vector<CellId>& cells = plan.cells.cells();
+  if (cells.empty()) return;
+  const int n = plan.tile_size;
+  uint32_t col0 = UINT32_MAX, row0 = UINT32_MAX, col1 = 0, row1 = 0;
+  for (const CellId c : cells) {
+    col0 = std::min(col0, c.col());
+    row0 = std::min(row0, c.row());
+    col1 = std::max(col1, c.col());
+    row1 = std::max(row1, c.row());
+  }
+  // Mosaic tiles are square: the side of the larger extent.
+  const int side = int(std::max(col1 - col0, row1 - row0) + 1) * n;
+  auto offset = [&](CellId c) {
+    return std::pair<int64_t, int64_t>(int64_t(c.col() - col0) * n, int64_t(c.row() - row0) * n);
+  };
+
+  Mosaic input;
+  input.face = cells.front().face();
+  input.level = plan.level + log2_tile_size(n);
+  input.origin_col = int64_t(col0) * n;
+  input.origin_row = int64_t(row0) * n;
+  Mosaic output = input;
+  for (const auto& [port, layer] : plan.inputs) {
+    Tile<float> mosaic(side, layer.channels, 0, NAN);
+    for (const CellId c : cells)
+      if (const auto tile = io.read(layer, c))
+        paste(*tile, mosaic, offset(c).first, offset(c).second);
+    input.layers.emplace(port, std::move(mosaic));
+  }
+  output.layers = io.blank_outputs(side);
+  try {
+    op.run(plan.step->params, default_grid(), input, output);
+  } catch (const std::exception& e) {
+    throw Error(plan.step->label() + " failed on the region's mosaic: " + e.what());
+  }
+  for (const auto& [port, layer] : plan.outputs) {
+    const Tile<float>& m = output.layers.at(port);
+    if (m.size() != side || m.channels() != layer.channels)
+      throw Error(plan.step->label() + ": the operator changed the size of output mosaic '" + port +
+                  "'");
+  }
+
+  std::vector<TileSet> tiles(cells.size(), io.blank_outputs(n));
+  std::vector<CellOutput> outputs;
+  for (size_t i = 0; i < cells.size(); ++i) {
+    for (auto& [port, tile] : tiles[i])
+      cut(output.layers.at(port), tile, offset(cells[i]).first, offset(cells[i]).second);
+    outputs.push_back({cells[i], &tiles[i]});
+  }
+  io.write(outputs);
+  progress.advance(int64_t(cells.size()));
+}
+
+}  // namespace maquette

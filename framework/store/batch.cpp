@@ -1,0 +1,105 @@
+// Batches: writes checked and encoded by the caller's thread, applied in one transaction.
+#include <set>
+
+#include "store/codec.h"
+#include "store/store_impl.h"
+
+namespace maquette {
+
+struct Store::Batch::Pending {
+  struct TileWrite {
+    int64_t layer;
+    CellId cell;
+    std::vector<std::byte> blob;
+  };
+  struct Done {
+    int64_t run;
+    int step;
+    CellId cell;
+  };
+  std::vector<TileWrite> tiles;
+  std::vector<Artifact> artifacts;
+  std::vector<Done> done;
+};
+
+Store::Batch::Batch(Store& store) : store_(store), pending_(std::make_unique<Pending>()) {
+  store_.impl_->require_writable();
+}
+
+Store::Batch::~Batch() = default;
+
+void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile& tile) {
+  const Impl& d = *store_.impl_;
+  const LayerEntry e = d.require(layer);
+  const LayerInfo& l = e.info;
+  const std::string where =
+      "cannot write layer '" + layer + "' at " + cell_text(cell) + " in " + d.path + ": ";
+  if (!open_) throw Error(where + "the batch is already committed");
+  if (!cell.is_valid() || cell.level() != l.level)
+    throw Error(where + "the layer's tiles are at level " + std::to_string(l.level));
+  if (tile.dtype != l.dtype || tile.size != l.tile_size || tile.channels != l.channels ||
+      tile.bytes.size() != tile.sample_count() * dtype_size(tile.dtype))
+    throw Error(where + "got a " + std::to_string(tile.size) + "x" + std::to_string(tile.size) +
+                "x" + std::to_string(tile.channels) + " " + std::string(dtype_name(tile.dtype)) +
+                " tile of " + std::to_string(tile.bytes.size()) + " bytes, the layer holds " +
+                std::to_string(l.tile_size) + "x" + std::to_string(l.tile_size) + "x" +
+                std::to_string(l.channels) + " " + std::string(dtype_name(l.dtype)));
+  pending_->tiles.push_back({e.id, cell, encode_tile(tile, parse_codec(l.codec))});
+}
+
+void Store::Batch::put_artifact(const Artifact& artifact) {
+  if (!open_) throw Error("cannot write artifact '" + artifact.name + "': batch already committed");
+  if (artifact.name.empty()) throw Error("an artifact needs a name");
+  pending_->artifacts.push_back(artifact);
+}
+
+void Store::Batch::mark_done(int64_t run_id, int step, CellId cell) {
+  if (!open_) throw Error("cannot mark a cell done: batch already committed");
+  pending_->done.push_back({run_id, step, cell});
+}
+
+void Store::Batch::commit() {
+  if (!open_) throw Error("batch on " + store_.impl_->path + " is already committed");
+  const Pending& p = *pending_;
+  store_.impl_->write([&](sqlite::Connection& c) {
+    std::set<int64_t> layers;
+    for (const auto& t : p.tiles) {
+      c.query("INSERT OR REPLACE INTO tiles(layer, cell, blob) VALUES(?, ?, ?)")
+          .bind_int(1, t.layer)
+          .bind_int(2, int64_t(t.cell.id()))
+          .bind_blob(3, t.blob)
+          .run();
+      mark_parent_stale(c, t.layer, t.cell);
+      layers.insert(t.layer);
+    }
+    for (int64_t id : layers)
+      c.query("UPDATE layers SET updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")
+          .bind_int(1, id)
+          .run();
+    for (const auto& a : p.artifacts)
+      c.query(
+           "INSERT OR REPLACE INTO artifacts(name, media_type, data, metadata, updated) "
+           "VALUES(?, ?, ?, ?, strftime('%Y-%m-%dT%H:%M:%fZ'))")
+          .bind_text(1, a.name)
+          .bind_text(2, a.media_type)
+          .bind_blob(3, a.data)
+          .bind_text(4, a.metadata.dump())
+          .run();
+    for (const auto& d : p.done)
+      c.query("INSERT OR IGNORE INTO run_cells(run, step, cell) VALUES(?, ?, ?)")
+          .bind_int(1, d.run)
+          .bind_int(2, d.step)
+          .bind_int(3, int64_t(d.cell.id()))
+          .run();
+  });
+  open_ = false;
+  pending_.reset();
+}
+
+void Store::put_tile(const std::string& layer, CellId cell, const RawTile& tile) {
+  Batch batch(*this);
+  batch.put_tile(layer, cell, tile);
+  batch.commit();
+}
+
+}  // namespace maquette

@@ -1,0 +1,174 @@
+#include "store/codec.h"
+
+#include <zstd.h>
+
+#include <bit>
+#include <charconv>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <type_traits>
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+static_assert(std::endian::native == std::endian::little,
+              "tile blobs hold little-endian samples in native order");
+
+constexpr char kMagic[4] = {'M', 'Q', 'T', 'L'};
+constexpr uint8_t kFormatVersion = 1;
+constexpr size_t kHeaderSize = 16;
+constexpr uint32_t kMaxChannels = 1024;
+
+// One compression and one decompression context per thread: creating them per tile costs more
+// than compressing a small tile.
+struct ZstdContexts {
+  std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> c{ZSTD_createCCtx(), &ZSTD_freeCCtx};
+  std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> d{ZSTD_createDCtx(), &ZSTD_freeDCtx};
+};
+ZstdContexts& zstd_contexts() {
+  thread_local ZstdContexts contexts;
+  return contexts;
+}
+
+void put_u32(std::byte* p, uint32_t v) { std::memcpy(p, &v, 4); }
+uint32_t get_u32(const std::byte* p) {
+  uint32_t v;
+  std::memcpy(&v, p, 4);
+  return v;
+}
+
+}  // namespace
+
+Codec parse_codec(std::string_view text) {
+  if (text == "raw") return {Codec::Kind::Raw, 0};
+  if (text == "zstd") return {};
+  if (text.starts_with("zstd:")) {
+    const std::string_view digits = text.substr(5);
+    int level = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), level);
+    if (ec == std::errc() && end == digits.data() + digits.size() && level >= 1 &&
+        level <= ZSTD_maxCLevel())
+      return {Codec::Kind::Zstd, level};
+  }
+  throw Error("unknown codec '" + std::string(text) + "' (expected raw, zstd or zstd:LEVEL with " +
+              "LEVEL in 1.." + std::to_string(ZSTD_maxCLevel()) + ")");
+}
+
+namespace {
+
+// Calls f(std::integral_constant<size_t, width>): with the sample width known at compile time,
+// the (un)shuffle loops unroll into `width` sequential streams, several times faster.
+template <typename F>
+void with_width(size_t width, F&& f) {
+  switch (width) {
+    case 1:
+      return f(std::integral_constant<size_t, 1>{});
+    case 2:
+      return f(std::integral_constant<size_t, 2>{});
+    case 4:
+      return f(std::integral_constant<size_t, 4>{});
+    case 8:
+      return f(std::integral_constant<size_t, 8>{});
+  }
+  throw Error("cannot shuffle samples of " + std::to_string(width) + " bytes");
+}
+
+}  // namespace
+
+void shuffle_bytes(std::span<const std::byte> in, size_t width, std::span<std::byte> out) {
+  with_width(width, [&](auto w) {
+    const size_t n = in.size() / w;
+    for (size_t i = 0; i < n; ++i)
+      for (size_t b = 0; b < w; ++b) out[b * n + i] = in[i * w + b];
+  });
+}
+
+void unshuffle_bytes(std::span<const std::byte> in, size_t width, std::span<std::byte> out) {
+  with_width(width, [&](auto w) {
+    const size_t n = in.size() / w;
+    for (size_t i = 0; i < n; ++i)
+      for (size_t b = 0; b < w; ++b) out[i * w + b] = in[b * n + i];
+  });
+}
+
+std::vector<std::byte> encode_tile(const RawTile& tile, const Codec& codec) {
+  const size_t width = dtype_size(tile.dtype);
+  const size_t raw_size = tile.sample_count() * width;
+  if (tile.bytes.size() != raw_size)
+    throw Error("tile holds " + std::to_string(tile.bytes.size()) + " bytes, expected " +
+                std::to_string(raw_size));
+
+  std::vector<std::byte> blob(kHeaderSize);
+  std::memcpy(blob.data(), kMagic, 4);
+  blob[4] = std::byte{kFormatVersion};
+  blob[5] = std::byte(codec.kind);
+  blob[6] = std::byte(tile.dtype);
+  blob[7] = std::byte{0};
+  put_u32(blob.data() + 8, uint32_t(tile.size));
+  put_u32(blob.data() + 12, uint32_t(tile.channels));
+
+  if (codec.kind == Codec::Kind::Raw) {
+    blob.resize(kHeaderSize + raw_size);
+    std::memcpy(blob.data() + kHeaderSize, tile.bytes.data(), raw_size);
+    return blob;
+  }
+  std::vector<std::byte> shuffled(raw_size);
+  shuffle_bytes(tile.bytes, width, shuffled);
+  ZSTD_CCtx* cctx = zstd_contexts().c.get();
+  ZSTD_CCtx_reset(cctx, ZSTD_reset_session_and_parameters);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, codec.level);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
+  blob.resize(kHeaderSize + ZSTD_compressBound(raw_size));
+  const size_t n = ZSTD_compress2(cctx, blob.data() + kHeaderSize, blob.size() - kHeaderSize,
+                                  shuffled.data(), shuffled.size());
+  if (ZSTD_isError(n)) throw Error(std::string("zstd compression failed: ") + ZSTD_getErrorName(n));
+  blob.resize(kHeaderSize + n);
+  return blob;
+}
+
+RawTile decode_tile(std::span<const std::byte> blob) {
+  if (blob.size() < kHeaderSize)
+    throw Error("blob of " + std::to_string(blob.size()) + " bytes is shorter than its header");
+  if (std::memcmp(blob.data(), kMagic, 4) != 0) throw Error("blob does not start with MQTL");
+  if (blob[4] != std::byte{kFormatVersion})
+    throw Error("blob format version " + std::to_string(int(blob[4])) + " (expected 1)");
+  const auto codec = uint8_t(blob[5]);
+  const auto dtype = uint8_t(blob[6]);
+  if (codec > uint8_t(Codec::Kind::Zstd)) throw Error("unknown codec " + std::to_string(codec));
+  if (dtype > uint8_t(DType::F64)) throw Error("unknown dtype " + std::to_string(dtype));
+  if (blob[7] != std::byte{0}) throw Error("reserved header byte is not 0");
+  const uint32_t size = get_u32(blob.data() + 8);
+  const uint32_t channels = get_u32(blob.data() + 12);
+  if (size == 0 || size > 4096 || (size & (size - 1)) != 0)
+    throw Error("tile size " + std::to_string(size) + " is not a power of two in [1, 4096]");
+  if (channels == 0 || channels > kMaxChannels)
+    throw Error("channel count " + std::to_string(channels) + " out of range");
+
+  RawTile tile{DType(dtype), int(size), int(channels), {}};
+  const size_t width = dtype_size(tile.dtype);
+  const size_t raw_size = tile.sample_count() * width;
+  const auto payload = blob.subspan(kHeaderSize);
+  if (Codec::Kind(codec) == Codec::Kind::Raw) {
+    if (payload.size() != raw_size)
+      throw Error("raw payload of " + std::to_string(payload.size()) + " bytes, expected " +
+                  std::to_string(raw_size));
+    tile.bytes.assign(payload.begin(), payload.end());
+    return tile;
+  }
+  if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != raw_size ||
+      ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size())
+    throw Error("zstd frame does not hold " + std::to_string(raw_size) + " bytes");
+  std::vector<std::byte> shuffled(raw_size);
+  const size_t n = ZSTD_decompressDCtx(zstd_contexts().d.get(), shuffled.data(), shuffled.size(),
+                                       payload.data(), payload.size());
+  if (ZSTD_isError(n)) throw Error(std::string("zstd: ") + ZSTD_getErrorName(n));
+  if (n != raw_size) throw Error("zstd frame decoded to " + std::to_string(n) + " bytes");
+  tile.bytes.resize(raw_size);
+  unshuffle_bytes(shuffled, width, tile.bytes);
+  return tile;
+}
+
+}  // namespace maquette

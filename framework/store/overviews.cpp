@@ -1,0 +1,129 @@
+// Overview pyramid: stale marks and bottom-up rebuilding.
+//
+// Writing a tile marks only its parent stale; rebuilding an overview tile marks its own parent
+// stale in the same transaction. So update_overviews(layer, m) walks the levels from the base
+// down to m and rebuilds exactly the ancestors of the tiles written since, and marks left
+// below m wait for a later call with a lower min_level.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "store/codec.h"
+#include "store/downsample.h"
+#include "store/store_impl.h"
+
+namespace maquette {
+namespace {
+
+constexpr int kCellsPerTransaction = 64;  // bounds memory and lock time
+
+struct ChildBlobs {
+  std::array<std::optional<std::vector<std::byte>>, 4> blobs;  // by child digit
+};
+
+// The stored tiles of `cell`'s children: base tiles if they sit at the layer's level, else
+// overview tiles one level below `cell`.
+ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell) {
+  const int child_level = cell.level() + 1;
+  const bool base = child_level == e.info.level;
+  auto q = c.query(base ? "SELECT cell, blob FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4"
+                        : "SELECT cell, blob FROM overviews WHERE layer = ?1 AND level = ?2 AND "
+                          "cell BETWEEN ?3 AND ?4");
+  q.bind_int(1, e.id)
+      .bind_int(2, child_level)
+      .bind_int(3, int64_t(cell.range_min().id()))
+      .bind_int(4, int64_t(cell.range_max().id()));
+  ChildBlobs out;
+  while (q.step()) {
+    const auto blob = q.blob(1);
+    out.blobs[CellId(uint64_t(q.int64(0))).digit(child_level)].emplace(blob.begin(), blob.end());
+  }
+  return out;
+}
+
+}  // namespace
+
+bool Store::Impl::rebuild_stale(const LayerEntry& e, int level) {
+  bool any = false;
+  write([&](sqlite::Connection& c) {
+    std::vector<CellId> cells;
+    {
+      auto q = c.query(
+          "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
+      q.bind_int(1, e.id).bind_int(2, level).bind_int(3, kCellsPerTransaction);
+      while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
+    }
+    any = !cells.empty();
+    std::vector<ChildBlobs> children;
+    for (CellId cell : cells) children.push_back(read_children(c, e, cell));
+
+    // Decoding, reducing and encoding dominate: done in parallel, without SQLite. Isolated, so
+    // that a worker waiting here never picks up an outer task that would take the write lock.
+    std::vector<std::vector<std::byte>> blobs(cells.size());
+    const Codec codec = parse_codec(e.info.codec);
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
+        std::array<std::optional<RawTile>, 4> tiles;
+        std::array<const RawTile*, 4> ptrs{};
+        for (int k = 0; k < 4; ++k)
+          if (const auto& blob = children[i].blobs[k]) {
+            tiles[k] = decode(*blob, e, cells[i].child(k));
+            ptrs[k] = &*tiles[k];
+          }
+        blobs[i] = encode_tile(build_overview(ptrs, e.info), codec);
+      });
+    });
+
+    for (size_t i = 0; i < cells.size(); ++i) {
+      const int64_t id = int64_t(cells[i].id());
+      c.query("INSERT OR REPLACE INTO overviews(layer, level, cell, blob) VALUES(?, ?, ?, ?)")
+          .bind_int(1, e.id)
+          .bind_int(2, level)
+          .bind_int(3, id)
+          .bind_blob(4, blobs[i])
+          .run();
+      c.query("DELETE FROM stale_overviews WHERE layer = ? AND level = ? AND cell = ?")
+          .bind_int(1, e.id)
+          .bind_int(2, level)
+          .bind_int(3, id)
+          .run();
+      mark_parent_stale(c, e.id, cells[i]);
+    }
+  });
+  return any;
+}
+
+void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell) {
+  if (cell.level() == 0) return;
+  conn.query("INSERT OR IGNORE INTO stale_overviews(layer, level, cell) VALUES(?, ?, ?)")
+      .bind_int(1, layer_id)
+      .bind_int(2, cell.level() - 1)
+      .bind_int(3, int64_t(cell.parent().id()))
+      .run();
+}
+
+void Store::update_overviews(const std::string& layer, int min_level) {
+  Impl& d = *impl_;
+  const LayerEntry e = d.require(layer);
+  const std::string where = "cannot build overviews of layer '" + layer + "' in " + d.path + ": ";
+  if (min_level < 0 || min_level > e.info.level)
+    throw Error(where + "min level " + std::to_string(min_level) + " not in [0, " +
+                std::to_string(e.info.level) + "]");
+  if (e.info.tile_size < 2) throw Error(where + "tiles of 1x1 samples cannot be halved");
+  for (int level = e.info.level - 1; level >= min_level; --level)
+    while (d.rebuild_stale(e, level)) {
+    }
+}
+
+std::optional<RawTile> Store::get_overview(const std::string& layer, CellId cell) const {
+  const LayerEntry e = impl_->require(layer);
+  if (!cell.is_valid() || cell.level() >= e.info.level)
+    throw Error("no overview of layer '" + layer + "' at " + cell_text(cell) + " in " +
+                impl_->path + ": overviews are at levels below " + std::to_string(e.info.level));
+  auto conn = impl_->readers.borrow();
+  auto q = conn->query("SELECT blob FROM overviews WHERE layer = ? AND level = ? AND cell = ?");
+  if (!q.bind_int(1, e.id).bind_int(2, cell.level()).bind_int(3, int64_t(cell.id())).step())
+    return std::nullopt;
+  return impl_->decode(q.blob(0), e, cell);
+}
+
+}  // namespace maquette

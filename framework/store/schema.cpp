@@ -1,0 +1,107 @@
+#include "store/schema.h"
+
+#include <string>
+
+namespace maquette {
+namespace {
+
+// Cell ids are < 2^62, so they are plain SQLite INTEGERs that sort in id order. Layers are
+// referenced by their integer id to keep the (layer, cell) keys short. Tiles and overviews
+// are WITHOUT ROWID so that a (layer, cell) range is one range scan of the primary key.
+constexpr const char* kSchema = R"sql(
+CREATE TABLE layers(
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  kind TEXT NOT NULL,
+  dtype TEXT NOT NULL,
+  channels INTEGER NOT NULL,
+  tile_size INTEGER NOT NULL,
+  level INTEGER NOT NULL,
+  nodata REAL,
+  semantics TEXT NOT NULL,
+  units TEXT NOT NULL,
+  codec TEXT NOT NULL,
+  provenance TEXT NOT NULL,
+  created TEXT NOT NULL,
+  updated TEXT NOT NULL);
+CREATE TABLE tiles(
+  layer INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  blob BLOB NOT NULL,
+  PRIMARY KEY(layer, cell)) WITHOUT ROWID;
+CREATE TABLE overviews(
+  layer INTEGER NOT NULL,
+  level INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  blob BLOB NOT NULL,
+  PRIMARY KEY(layer, level, cell)) WITHOUT ROWID;
+CREATE TABLE stale_overviews(
+  layer INTEGER NOT NULL,
+  level INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  PRIMARY KEY(layer, level, cell)) WITHOUT ROWID;
+CREATE TABLE artifacts(
+  name TEXT PRIMARY KEY,
+  media_type TEXT NOT NULL,
+  data BLOB NOT NULL,
+  metadata TEXT NOT NULL,
+  updated TEXT NOT NULL);
+CREATE TABLE runs(
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  pipeline TEXT NOT NULL,
+  pipeline_hash TEXT NOT NULL,
+  status TEXT NOT NULL,
+  started TEXT NOT NULL,
+  finished TEXT);
+CREATE INDEX runs_by_pipeline ON runs(pipeline_hash, id);
+CREATE TABLE run_cells(
+  run INTEGER NOT NULL,
+  step INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  PRIMARY KEY(run, step, cell)) WITHOUT ROWID;
+)sql";
+
+int32_t pragma_int(sqlite::Connection& conn, const char* sql) {
+  auto q = conn.query(sql);
+  return q.step() ? int32_t(q.int64(0)) : 0;
+}
+
+[[noreturn]] void not_a_store(const sqlite::Connection& conn) {
+  throw Error(conn.path() + " is not a Maquette store");
+}
+
+}  // namespace
+
+void configure_connection(sqlite::Connection& conn, bool writer) {
+  conn.exec("PRAGMA busy_timeout = 60000");
+  conn.exec("PRAGMA mmap_size = 1073741824");
+  // In WAL mode NORMAL loses no committed transaction when the process dies (only on power loss).
+  if (writer) conn.exec("PRAGMA synchronous = NORMAL");
+}
+
+void create_schema(sqlite::Connection& conn) {
+  if (pragma_int(conn, "PRAGMA application_id") == 0) {
+    // Larger pages keep 100 kB tile blobs in fewer overflow pages. Only effective on an empty file.
+    conn.exec("PRAGMA page_size = 16384");
+    conn.transaction([&] {
+      // Re-checked under the write lock: another process may have created it meanwhile.
+      if (pragma_int(conn, "PRAGMA application_id") != 0) return;
+      if (pragma_int(conn, "SELECT count(*) FROM sqlite_schema") != 0) not_a_store(conn);
+      conn.exec(kSchema);
+      conn.exec(("PRAGMA application_id = " + std::to_string(kStoreApplicationId)).c_str());
+      conn.exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str());
+    });
+  }
+  check_schema(conn);
+  conn.exec("PRAGMA journal_mode = WAL");
+}
+
+void check_schema(sqlite::Connection& conn) {
+  if (pragma_int(conn, "PRAGMA application_id") != kStoreApplicationId) not_a_store(conn);
+  const int32_t version = pragma_int(conn, "PRAGMA user_version");
+  if (version > kStoreSchemaVersion)
+    throw Error(conn.path() + " has store schema version " + std::to_string(version) +
+                "; this Maquette reads up to version " + std::to_string(kStoreSchemaVersion));
+}
+
+}  // namespace maquette

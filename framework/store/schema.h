@@ -1,0 +1,24 @@
+// The store's SQLite schema (see framework/store/README.md): creation, and the check that a
+// file is a Maquette store of a version this code reads.
+#pragma once
+
+#include <cstdint>
+
+#include "store/sqlite.h"
+
+namespace maquette {
+
+constexpr int32_t kStoreApplicationId = 0x4D515354;  // "MQST", PRAGMA application_id
+constexpr int32_t kStoreSchemaVersion = 1;           // PRAGMA user_version
+
+// Sets the per-connection pragmas (busy timeout; synchronous=NORMAL for writers).
+void configure_connection(sqlite::Connection& conn, bool writer);
+
+// Creates the schema in an empty database (no-op if it is already a Maquette store) and
+// switches it to WAL. Throws "PATH is not a Maquette store" for a foreign database.
+void create_schema(sqlite::Connection& conn);
+
+// Throws maquette::Error unless the database is a Maquette store of a readable version.
+void check_schema(sqlite::Connection& conn);
+
+}  // namespace maquette

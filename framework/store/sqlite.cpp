@@ -1,0 +1,112 @@
+#include "store/sqlite.h"
+
+#include <sqlite3.h>
+
+namespace maquette::sqlite {
+
+Query::~Query() {
+  sqlite3_reset(stmt_);
+  sqlite3_clear_bindings(stmt_);
+}
+
+Query& Query::bind_int(int i, int64_t v) {
+  if (int rc = sqlite3_bind_int64(stmt_, i, v); rc != SQLITE_OK) conn_.fail(rc);
+  return *this;
+}
+
+Query& Query::bind_real(int i, double v) {
+  if (int rc = sqlite3_bind_double(stmt_, i, v); rc != SQLITE_OK) conn_.fail(rc);
+  return *this;
+}
+
+Query& Query::bind_null(int i) {
+  if (int rc = sqlite3_bind_null(stmt_, i); rc != SQLITE_OK) conn_.fail(rc);
+  return *this;
+}
+
+Query& Query::bind_text(int i, std::string_view v) {
+  if (int rc = sqlite3_bind_text64(stmt_, i, v.data(), v.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
+      rc != SQLITE_OK)
+    conn_.fail(rc);
+  return *this;
+}
+
+Query& Query::bind_blob(int i, std::span<const std::byte> v) {
+  // A zero-length blob must still be a BLOB, not NULL: pass a non-null pointer.
+  static const std::byte empty{};
+  if (int rc =
+          sqlite3_bind_blob64(stmt_, i, v.empty() ? &empty : v.data(), v.size(), SQLITE_TRANSIENT);
+      rc != SQLITE_OK)
+    conn_.fail(rc);
+  return *this;
+}
+
+bool Query::step() {
+  const int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  conn_.fail(rc);
+}
+
+void Query::run() {
+  while (step()) {
+  }
+}
+
+bool Query::is_null(int i) const { return sqlite3_column_type(stmt_, i) == SQLITE_NULL; }
+int64_t Query::int64(int i) const { return sqlite3_column_int64(stmt_, i); }
+double Query::real(int i) const { return sqlite3_column_double(stmt_, i); }
+
+std::string Query::text(int i) const {
+  const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(stmt_, i));
+  return p ? std::string(p, size_t(sqlite3_column_bytes(stmt_, i))) : std::string();
+}
+
+std::span<const std::byte> Query::blob(int i) const {
+  const auto* p = static_cast<const std::byte*>(sqlite3_column_blob(stmt_, i));
+  return {p, p ? size_t(sqlite3_column_bytes(stmt_, i)) : 0};
+}
+
+Connection::Connection(std::string path, int flags) : path_(std::move(path)) {
+  const int rc = sqlite3_open_v2(path_.c_str(), &db_, flags | SQLITE_OPEN_EXRESCODE, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string msg = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    sqlite3_close_v2(db_);
+    throw Failure("cannot open " + path_ + ": " + msg, rc & 0xff);
+  }
+}
+
+Connection::~Connection() {
+  for (auto& [sql, stmt] : statements_) sqlite3_finalize(stmt);
+  sqlite3_close_v2(db_);
+}
+
+void Connection::exec(const char* sql) {
+  if (int rc = sqlite3_exec(db_, sql, nullptr, nullptr, nullptr); rc != SQLITE_OK) fail(rc);
+}
+
+Query Connection::query(const char* sql) {
+  auto [it, inserted] = statements_.try_emplace(sql, nullptr);
+  if (inserted) {
+    const int rc =
+        sqlite3_prepare_v3(db_, sql, -1, SQLITE_PREPARE_PERSISTENT, &it->second, nullptr);
+    if (rc != SQLITE_OK) {
+      statements_.erase(it);
+      fail(rc);
+    }
+  }
+  return Query(*this, it->second);
+}
+
+int64_t Connection::last_insert_rowid() const { return sqlite3_last_insert_rowid(db_); }
+int64_t Connection::changes() const { return sqlite3_changes64(db_); }
+
+void Connection::fail(int code) const {
+  throw Failure(path_ + ": " + sqlite3_errmsg(db_), code & 0xff);
+}
+
+void Connection::rollback() noexcept {
+  if (!sqlite3_get_autocommit(db_)) sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+}  // namespace maquette::sqlite

@@ -1,0 +1,122 @@
+// Opening a store, the connection pool, and whole-file queries.
+#include "store/store.h"
+
+#include <sqlite3.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "store/codec.h"
+#include "store/schema.h"
+#include "store/store_impl.h"
+
+namespace maquette {
+namespace {
+
+constexpr int kReadFlags = SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX;
+
+// Root may write to any file, so the mode bits are checked as well as access(): a store
+// made read-only (chmod a-w) is refused for writing whoever opens it.
+bool writable(const std::string& path, const struct stat& st) {
+  return ::access(path.c_str(), W_OK) == 0 && (st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) != 0;
+}
+
+}  // namespace
+
+std::string cell_text(CellId cell) {
+  return cell.is_valid() ? "cell " + cell.ToText() : "cell id " + std::to_string(cell.id());
+}
+
+ReadPool::Lease ReadPool::borrow() {
+  {
+    std::lock_guard lock(mutex_);
+    if (!idle_.empty()) {
+      auto conn = std::move(idle_.back());
+      idle_.pop_back();
+      return Lease(*this, std::move(conn));
+    }
+  }
+  auto conn = std::make_unique<sqlite::Connection>(path_, kReadFlags);
+  configure_connection(*conn, false);
+  return Lease(*this, std::move(conn));
+}
+
+void ReadPool::give_back(std::unique_ptr<sqlite::Connection> conn) {
+  std::lock_guard lock(mutex_);
+  idle_.push_back(std::move(conn));
+}
+
+void Store::Impl::require_writable() const {
+  if (read_only) throw Error(path + " is open read-only: cannot write to it");
+}
+
+RawTile Store::Impl::decode(std::span<const std::byte> blob, const LayerEntry& layer,
+                            CellId cell) const {
+  const std::string where = "corrupt tile of layer '" + layer.info.name + "' at " +
+                            cell_text(cell) + " in " + path + ": ";
+  RawTile tile;
+  try {
+    tile = decode_tile(blob);
+  } catch (const Error& e) {
+    throw Error(where + e.what());
+  }
+  const LayerInfo& info = layer.info;
+  if (tile.dtype != info.dtype || tile.size != info.tile_size || tile.channels != info.channels)
+    throw Error(where + "blob holds " + std::to_string(tile.size) + "x" +
+                std::to_string(tile.size) + "x" + std::to_string(tile.channels) + " " +
+                std::string(dtype_name(tile.dtype)) + ", the layer " +
+                std::to_string(info.tile_size) + "x" + std::to_string(info.tile_size) + "x" +
+                std::to_string(info.channels) + " " + std::string(dtype_name(info.dtype)));
+  return tile;
+}
+
+Store::Store(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Store::~Store() = default;
+
+std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
+  struct stat st {};
+  const bool exists = ::stat(path.c_str(), &st) == 0;
+  if (!exists && mode != Mode::Create) throw Error("no such store: " + path);
+  if (exists && S_ISDIR(st.st_mode)) throw Error(path + " is a directory, not a Maquette store");
+  if (exists && mode != Mode::ReadOnly && !writable(path, st))
+    throw Error(path + " is read-only: open it read-only or make it writable");
+
+  auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
+  try {
+    if (mode == Mode::ReadOnly) {
+      check_schema(*impl->readers.borrow());
+    } else {
+      const int create = mode == Mode::Create ? SQLITE_OPEN_CREATE : 0;
+      impl->writer = std::make_unique<sqlite::Connection>(
+          path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX | create);
+      configure_connection(*impl->writer, true);
+      if (mode == Mode::Create)
+        create_schema(*impl->writer);
+      else
+        check_schema(*impl->writer);
+    }
+  } catch (const sqlite::Failure& e) {
+    if (e.code() == SQLITE_NOTADB) throw Error(path + " is not a Maquette store");
+    throw;
+  }
+  return std::unique_ptr<Store>(new Store(std::move(impl)));
+}
+
+const std::string& Store::path() const { return impl_->path; }
+bool Store::read_only() const { return impl_->read_only; }
+
+int64_t Store::file_size() const {
+  int64_t total = 0;
+  for (const std::string& file : {impl_->path, impl_->path + "-wal"}) {
+    struct stat st {};
+    if (::stat(file.c_str(), &st) == 0) total += st.st_size;
+  }
+  return total;
+}
+
+bool Store::integrity_ok() const {
+  auto conn = impl_->readers.borrow();
+  auto q = conn->query("PRAGMA integrity_check");
+  return q.step() && q.text(0) == "ok" && !q.step();
+}
+
+}  // namespace maquette

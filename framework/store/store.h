@@ -1,0 +1,140 @@
+// Store: one SQLite file per dataset. Layers, tiles keyed by (layer, cell id) in a WITHOUT ROWID
+// table (so a range of cell ids is one index range scan), overview tiles, artifacts and run
+// records. Tile blobs are compressed by the layer's codec (core: "zstd" with byte shuffling).
+// Every write is one transaction; a process killed at any moment leaves a store that opens
+// and passes PRAGMA integrity_check. A Store may be used from many threads at once: reads use
+// a pool of read-only connections and run in parallel; commits are serialised. See
+// framework/store/README.md for the schema and blob encoding.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/cell_id.h"
+#include "core/tile.h"
+
+namespace maquette {
+
+enum class LayerKind { Raster, Mesh, Volume, Features, Artifact };
+enum class Semantics { Continuous, Categorical };
+
+std::string_view layer_kind_name(LayerKind k);
+LayerKind parse_layer_kind(std::string_view name);  // throws maquette::Error
+std::string_view semantics_name(Semantics s);
+Semantics parse_semantics(std::string_view name);  // throws maquette::Error
+
+struct LayerInfo {
+  std::string name;
+  LayerKind kind = LayerKind::Raster;
+  DType dtype = DType::F32;
+  int channels = 1;
+  int tile_size = 256;
+  int level = 0;  // level of the cells holding full-resolution tiles
+  std::optional<double> nodata;
+  Semantics semantics = Semantics::Continuous;
+  std::string units;
+  std::string codec = "zstd";                            // "zstd" (byte-shuffled) or "raw"
+  nlohmann::json provenance = nlohmann::json::object();  // free-form: source, operator, params
+};
+
+struct LayerStats {
+  int64_t tile_count = 0;             // full-resolution tiles
+  int64_t bytes = 0;                  // compressed blob bytes, overview tiles included
+  std::vector<int> levels;            // levels holding tiles (overviews, then base), ascending
+  std::optional<CellId> first, last;  // first and last full-resolution tile
+};
+
+struct Artifact {
+  std::string name;
+  std::string media_type = "application/json";
+  std::vector<std::byte> data;
+  nlohmann::json metadata = nlohmann::json::object();
+};
+
+class Store {
+ public:
+  enum class Mode { ReadOnly, ReadWrite, Create };  // Create: create the file if absent
+
+  // Throws maquette::Error naming the path: missing file, not a Maquette store (or a newer
+  // schema), read-only file opened for writing.
+  static std::unique_ptr<Store> open(const std::string& path, Mode mode);
+  ~Store();
+  Store(const Store&) = delete;
+  Store& operator=(const Store&) = delete;
+
+  const std::string& path() const;
+  bool read_only() const;
+
+  // Layers. create_layer fails if the name exists with a different definition, and is a no-op
+  // when it exists with the same one (so re-running a step is idempotent).
+  void create_layer(const LayerInfo& info);
+  std::optional<LayerInfo> layer(const std::string& name) const;
+  LayerInfo require_layer(const std::string& name) const;  // throws "unknown layer 'x' in STORE"
+  std::vector<LayerInfo> layers() const;
+  LayerStats stats(const std::string& layer) const;
+
+  // Tiles (full-resolution tiles at the layer's level).
+  std::optional<RawTile> get_tile(const std::string& layer, CellId cell) const;
+  bool has_tile(const std::string& layer, CellId cell) const;
+  // Cells holding tiles with ids in [first, last], ascending (pass a cell's range_min/max).
+  std::vector<CellId> tile_cells(const std::string& layer, CellId first, CellId last) const;
+  std::vector<CellId> tile_cells(const std::string& layer) const;
+  void scan(const std::string& layer, CellId first, CellId last,
+            const std::function<void(CellId, const RawTile&)>& visit) const;
+
+  // A batch of writes committed atomically (one SQLite transaction). Use one per cell or per
+  // group of cells; nothing is visible to readers or survives a crash until commit().
+  // Writes are checked and encoded when made (in the calling thread, so batches of several
+  // threads compress in parallel) and applied by commit() in one BEGIN IMMEDIATE transaction.
+  class Batch {
+   public:
+    explicit Batch(Store& store);  // throws if the store is read-only
+    ~Batch();                      // rolls back (discards the writes) if not committed
+    Batch(const Batch&) = delete;
+    Batch& operator=(const Batch&) = delete;
+    void put_tile(const std::string& layer, CellId cell, const RawTile& tile);
+    void put_artifact(const Artifact& artifact);
+    void mark_done(int64_t run_id, int step, CellId cell);  // run record progress
+    void commit();
+
+   private:
+    struct Pending;
+    Store& store_;
+    bool open_ = true;
+    std::unique_ptr<Pending> pending_;
+  };
+  void put_tile(const std::string& layer, CellId cell, const RawTile& tile);  // own transaction
+
+  // Overviews: coarser levels down to `min_level`, mean (continuous) or mode (categorical),
+  // nodata-aware. Built on demand; tiles written since mark their ancestors stale, and
+  // update_overviews rebuilds only those.
+  void update_overviews(const std::string& layer, int min_level = 0);
+  std::optional<RawTile> get_overview(const std::string& layer, CellId cell) const;
+
+  // Artifacts: fitted models, statistics, run reports.
+  void put_artifact(const Artifact& artifact);
+  std::optional<Artifact> get_artifact(const std::string& name) const;
+  std::vector<std::string> artifact_names() const;
+
+  // Run records: a run is a pipeline (JSON) being executed; steps record per-cell progress
+  // so that --resume skips what is done.
+  int64_t begin_run(const nlohmann::json& pipeline);
+  std::optional<int64_t> latest_unfinished_run(const nlohmann::json& pipeline) const;
+  std::vector<CellId> done_cells(int64_t run_id, int step) const;
+  void finish_run(int64_t run_id, const std::string& status);  // "ok" | "failed: ..."
+
+  int64_t file_size() const;
+  bool integrity_ok() const;  // PRAGMA integrity_check == "ok"
+
+ private:
+  struct Impl;
+  explicit Store(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace maquette

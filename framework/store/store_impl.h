@@ -1,0 +1,102 @@
+// Store internals shared by store.cpp, batch.cpp, overviews.cpp and runs.cpp.
+//
+// Concurrency: one writer connection, used under `write_mutex` for the few statements of a
+// transaction, and a pool of read-only connections, each borrowed by one thread at a time.
+// In WAL mode readers see the last committed state and never wait for the writer, so reads
+// run in parallel (and decode outside any lock) while another thread commits.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "store/sqlite.h"
+#include "store/store.h"
+
+namespace maquette {
+
+// A layer as the store resolves it: the row id used in tile keys, and its definition.
+struct LayerEntry {
+  int64_t id = 0;
+  LayerInfo info;
+};
+
+class ReadPool {
+ public:
+  // A borrowed connection, returned to the pool when the lease ends.
+  class Lease {
+   public:
+    Lease(ReadPool& pool, std::unique_ptr<sqlite::Connection> conn)
+        : pool_(pool), conn_(std::move(conn)) {}
+    ~Lease() { pool_.give_back(std::move(conn_)); }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    sqlite::Connection* operator->() { return conn_.get(); }
+    sqlite::Connection& operator*() { return *conn_; }
+
+   private:
+    ReadPool& pool_;
+    std::unique_ptr<sqlite::Connection> conn_;
+  };
+
+  explicit ReadPool(std::string path) : path_(std::move(path)) {}
+  Lease borrow();
+
+ private:
+  void give_back(std::unique_ptr<sqlite::Connection> conn);
+
+  std::string path_;
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<sqlite::Connection>> idle_;
+};
+
+struct Store::Impl {
+  Impl(std::string path, bool read_only) : path(path), read_only(read_only), readers(path) {}
+
+  // Layer lookup (cached: layers are never dropped or redefined). Throws for unknown names.
+  LayerEntry require(const std::string& name) const;
+  std::optional<LayerEntry> find(const std::string& name) const;
+
+  // Throws unless the store was opened for writing.
+  void require_writable() const;
+  // Runs f(writer) in one BEGIN IMMEDIATE transaction under the write mutex.
+  template <typename F>
+  void write(F&& f) {
+    require_writable();
+    std::lock_guard lock(write_mutex);
+    writer->transaction([&] { f(*writer); });
+  }
+
+  // Rebuilds up to 64 stale overview tiles at `level` in one transaction; false when none
+  // was stale (overviews.cpp).
+  bool rebuild_stale(const LayerEntry& layer, int level);
+
+  // Decodes a stored blob and checks it against the layer; throws naming layer and cell.
+  RawTile decode(std::span<const std::byte> blob, const LayerEntry& layer, CellId cell) const;
+
+  const std::string path;
+  const bool read_only;
+  std::unique_ptr<sqlite::Connection> writer;  // null when read-only
+  std::mutex write_mutex;
+  mutable ReadPool readers;
+  mutable std::mutex layers_mutex;
+  mutable std::map<std::string, LayerEntry, std::less<>> layers;
+};
+
+// Layer definitions (layer_info.cpp).
+// Checks a definition (throws maquette::Error naming the field) and drops a NaN nodata of a
+// float layer (NaN is always missing there).
+LayerInfo normalized_layer(const LayerInfo& info);
+// The first field where two definitions differ, as "dtype float32 vs uint16"; empty if none.
+// Provenance is not part of the definition.
+std::string layer_difference(const LayerInfo& a, const LayerInfo& b);
+
+// Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
+void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
+
+// "cell Q2013" for error messages.
+std::string cell_text(CellId cell);
+
+}  // namespace maquette

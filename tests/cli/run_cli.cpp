@@ -1,0 +1,70 @@
+#include "run_cli.h"
+
+#include <sys/wait.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace maquette::test {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct TempRoot {
+  std::filesystem::path path;
+  TempRoot() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "maquette-cli-XXXXXX").string();
+    path = mkdtemp(tmpl.data());
+  }
+  ~TempRoot() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
+TempRoot& root() {
+  static TempRoot r;
+  return r;
+}
+
+}  // namespace
+
+std::string temp_dir() {
+  static int counter = 0;
+  std::string name = "d";  // not "d" + to_string(): GCC 12 warns falsely (-Wrestrict) on that
+  name += std::to_string(counter++);
+  const auto dir = root().path / name;
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+CliResult run_maquette(const std::string& args) {
+  const std::string dir = temp_dir();
+  const std::string out = dir + "/stdout", err = dir + "/stderr";
+  std::ostringstream cmd;
+  cmd << MAQUETTE_BIN_DIR << "/maquette " << args << " >" << out << " 2>" << err;
+  const int status = std::system(cmd.str().c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string file_fingerprint(const std::string& path) {
+  if (!std::filesystem::exists(path)) return "";
+  const std::string bytes = slurp(path);
+  uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
+  return std::to_string(bytes.size()) + ":" + std::to_string(h);
+}
+
+}  // namespace maquette::test

@@ -1,0 +1,23 @@
+// Runs the real `maquette` program (as a user would) and captures its output and exit code.
+#pragma once
+
+#include <string>
+
+namespace maquette::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+// Runs `maquette ARGS` through /bin/sh (so ARGS may quote) in a private temp directory.
+CliResult run_maquette(const std::string& args);
+
+// A fresh empty directory under the system temp dir, removed at process exit.
+std::string temp_dir();
+
+// SHA-256-free content fingerprint of a file (size + FNV-1a of bytes), "" when missing.
+std::string file_fingerprint(const std::string& path);
+
+}  // namespace maquette::test

@@ -1,0 +1,69 @@
+#include "runtime/params_schema.h"
+
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using test::error_of;
+
+const json kSchema = {
+    {"type", "object"},
+    {"properties",
+     {{"z_factor", {{"type", "number"}, {"default", 1.0}}},
+      {"azimuth", {{"type", "number"}, {"minimum", 0}, {"maximum", 360}, {"default", 315}}},
+      {"steps", {{"type", "integer"}, {"minimum", 1}}},
+      {"mode", {{"type", "string"}, {"enum", {"mean", "max"}}, {"default", "mean"}}},
+      {"weights", {{"type", "array"}, {"items", {{"type", "number"}}}}},
+      {"fast", {{"type", "boolean"}, {"default", false}}},
+      {"x", {{"type", "number"}}}}},
+    {"required", {"x"}},
+    {"additionalProperties", false}};
+const std::string kStep = "step 2 (terrain.derive)";
+
+TEST(ParamsSchema, FillsDefaults) {
+  const json p = validate_params(kSchema, {{"x", 3}, {"steps", 2.0}}, kStep);
+  EXPECT_EQ(p, json({{"x", 3},
+                     {"steps", 2},
+                     {"z_factor", 1.0},
+                     {"azimuth", 315},
+                     {"mode", "mean"},
+                     {"fast", false}}));
+  EXPECT_TRUE(p.at("steps").is_number_integer());
+}
+
+TEST(ParamsSchema, NamesStepFieldAndValue) {
+  auto err = [](const json& p) { return error_of([&] { validate_params(kSchema, p, kStep); }); };
+  EXPECT_EQ(err({{"x", 1}, {"z_factor", "abc"}}),
+            "step 2 (terrain.derive): params.z_factor: expected a number, got \"abc\"");
+  EXPECT_EQ(err({{"x", 1}, {"azimuth", 400}}),
+            "step 2 (terrain.derive): params.azimuth: 400 is above the maximum 360");
+  EXPECT_EQ(err({{"x", 1}, {"azimuth", -1}}),
+            "step 2 (terrain.derive): params.azimuth: -1 is below the minimum 0");
+  EXPECT_EQ(err({{"x", 1}, {"zfactor", 2}}),
+            "step 2 (terrain.derive): params: unknown field 'zfactor'");
+  EXPECT_EQ(err(json::object()), "step 2 (terrain.derive): params: missing required field 'x'");
+  EXPECT_EQ(err({{"x", 1}, {"steps", 1.5}}),
+            "step 2 (terrain.derive): params.steps: expected an integer, got 1.5");
+  EXPECT_EQ(err({{"x", 1}, {"mode", "median"}}),
+            "step 2 (terrain.derive): params.mode: \"median\" is not one of [\"mean\",\"max\"]");
+  EXPECT_EQ(err({{"x", 1}, {"weights", {1, "w"}}}),
+            "step 2 (terrain.derive): params.weights[1]: expected a number, got \"w\"");
+  EXPECT_EQ(err({{"x", 1}, {"fast", 1}}),
+            "step 2 (terrain.derive): params.fast: expected a boolean, got 1");
+  EXPECT_EQ(err(json::array()), "step 2 (terrain.derive): params: expected an object, got []");
+}
+
+TEST(ParamsSchema, NullParamsAreEmpty) {
+  const json schema = {{"type", "object"},
+                       {"properties", {{"a", {{"type", "integer"}, {"default", 4}}}}}};
+  EXPECT_EQ(validate_params(schema, nullptr, kStep), json({{"a", 4}}));
+  // Without additionalProperties: false, extra fields pass through.
+  EXPECT_EQ(validate_params(schema, {{"b", 1}}, kStep), json({{"a", 4}, {"b", 1}}));
+}
+
+}  // namespace
+}  // namespace maquette

@@ -1,0 +1,150 @@
+#include "runtime/pipeline.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "runtime/runner.h"
+#include "test_util.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using test::demo_pipeline;
+using test::error_of;
+using ::testing::HasSubstr;
+
+Pipeline parse(const json& doc) {
+  return parse_pipeline(doc.dump(), "p.json", "/base", test::fixture_registry());
+}
+std::string parse_error(const json& doc) {
+  return error_of([&] { parse(doc); });
+}
+
+TEST(Pipeline, ParsesStepsRegionAndPaths) {
+  const Pipeline p = parse(demo_pipeline());
+  EXPECT_EQ(p.store_path, "/base/out.mqt");
+  EXPECT_EQ(p.level, 4);
+  EXPECT_EQ(p.tile_size, 16);
+  EXPECT_EQ(p.region.size(), 64u);  // Q2 at level 4
+  EXPECT_TRUE(std::is_sorted(p.region.begin(), p.region.end()));
+  ASSERT_EQ(p.steps.size(), 4u);
+  EXPECT_EQ(p.steps[1].label(), "step 2 (fixture.blur)");
+  EXPECT_EQ(p.steps[1].inputs.at("src"), "height");
+  EXPECT_EQ(p.steps[0].params.at("mode"), "wave");  // default filled in
+}
+
+TEST(Pipeline, RegionFromBboxGeojsonAndCells) {
+  json doc = demo_pipeline();
+  doc["region"] = {{"bbox", {0, 0, 10, 10}}};
+  EXPECT_FALSE(parse(doc).region.empty());
+  doc["region"] = {{"geojson", json::parse(R"({"type": "Feature", "geometry": {"type": "Polygon",
+      "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 0]]]}})")}};
+  EXPECT_FALSE(parse(doc).region.empty());
+  doc["region"] = {{"cells", {"Q20", "Q2000000"}}};  // finer cells map to their ancestor
+  const Pipeline p = parse(doc);
+  EXPECT_EQ(p.region.size(), 16u);
+  EXPECT_EQ(p.region.front().ToText(), "Q2000");
+}
+
+TEST(Pipeline, MalformedJsonNamesLineAndColumn) {
+  const std::string message = error_of([] {
+    parse_pipeline("{\"store\": \"x.mqt\",\n  \"level\": 4,,\n}", "p.json", ".",
+                   test::fixture_registry());
+  });
+  EXPECT_THAT(message, ::testing::StartsWith("p.json: parse error at line 2, column 14"));
+}
+
+TEST(Pipeline, UnknownOperator) {
+  json doc = demo_pipeline();
+  doc["steps"][1]["op"] = "fixture.blurr";
+  EXPECT_THAT(
+      parse_error(doc),
+      ::testing::StartsWith("step 2 (fixture.blurr): op: unknown operator 'fixture.blurr'"));
+}
+
+TEST(Pipeline, MissingOrWrongTypedParameter) {
+  json doc = demo_pipeline();
+  doc["steps"][0]["params"].erase("seed");
+  EXPECT_EQ(parse_error(doc), "step 1 (fixture.fill): params: missing required field 'seed'");
+  doc["steps"][0]["params"]["seed"] = "abc";
+  EXPECT_EQ(parse_error(doc), "step 1 (fixture.fill): params.seed: expected a number, got \"abc\"");
+  doc["steps"][0]["params"]["seed"] = 1;
+  doc["steps"][1]["params"]["sleep_ms"] = 20000;
+  EXPECT_EQ(parse_error(doc),
+            "step 2 (fixture.blur): params.sleep_ms: 20000 is above the maximum 10000");
+}
+
+TEST(Pipeline, PortErrors) {
+  json doc = demo_pipeline();
+  doc["steps"][1]["inputs"] = {{"source", "height"}};
+  EXPECT_THAT(parse_error(doc),
+              HasSubstr("step 2 (fixture.blur): inputs.source: unknown input port"));
+  doc["steps"][1]["inputs"] = json::object();
+  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): inputs: missing required input 'src'");
+  doc = demo_pipeline();
+  doc["steps"][1]["outputs"] = json::object();
+  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): outputs: map at least one of: dst");
+  doc["steps"][1]["outputs"] = {{"dst", "height"}};
+  EXPECT_EQ(parse_error(doc),
+            "step 2 (fixture.blur): outputs.dst: layer 'height' is also the step's input");
+  doc["steps"][1]["outputs"] = {{"dst", "scan"}};
+  EXPECT_EQ(parse_error(doc),
+            "step 4 (fixture.region_scan): outputs.dst: layer 'scan' is already written by step 2");
+  doc = demo_pipeline();
+  doc["steps"][1]["param"] = json::object();
+  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): unknown field 'param'");
+}
+
+TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
+  json doc = demo_pipeline();
+  doc["region"] = {{"cells", {"Q2", "Q9"}}};
+  EXPECT_EQ(parse_error(doc), "p.json: region.cells[1]: \"Q9\" is not a valid cell id");
+  doc = demo_pipeline();
+  doc["level"] = 30;
+  EXPECT_EQ(parse_error(doc), "p.json: level: 30 is outside 0..29");
+  doc["level"] = "8";
+  EXPECT_EQ(parse_error(doc), "p.json: level: expected an integer, got \"8\"");
+  doc = demo_pipeline();
+  doc["region"] = {{"bbox", {0, -95, 10, 10}}};
+  EXPECT_EQ(parse_error(doc), "p.json: region.bbox: latitude -95 is outside -90..90");
+  doc["region"] = {{"circle", 1}};
+  EXPECT_THAT(parse_error(doc), HasSubstr("p.json: region: unknown field 'circle'"));
+  doc = demo_pipeline();
+  doc["tile_size"] = 100;
+  EXPECT_EQ(parse_error(doc), "p.json: tile_size: 100 is not a power of two in 1..4096");
+  doc.erase("store");
+  EXPECT_EQ(parse_error(doc), "p.json: store: missing required field");
+}
+
+TEST(Pipeline, UnknownLayerIsFoundBeforeAnythingRuns) {
+  test::TempDir dir;
+  json doc = demo_pipeline();
+  doc["steps"][1]["inputs"]["src"] = "hieght";
+  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  const std::string store = dir.file("out.mqt");
+  EXPECT_EQ(error_of([&] { run_pipeline(p, RunOptions{}); }),
+            "step 2 (fixture.blur): inputs.src: unknown layer 'hieght' in " + store);
+  EXPECT_FALSE(std::filesystem::exists(store));
+}
+
+TEST(Pipeline, DryRunPrintsThePlanAndWritesNothing) {
+  test::TempDir dir;
+  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, demo_pipeline()));
+  std::ostringstream out;
+  RunOptions options;
+  options.dry_run = true;
+  const RunSummary summary = run_pipeline(p, options, out);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.mqt")));
+  ASSERT_EQ(summary.steps.size(), 4u);
+  for (const auto& s : summary.steps) EXPECT_EQ(s.cells, 64);
+  EXPECT_THAT(out.str(), HasSubstr("step 2 (fixture.blur): cell operator, 64 cells at level 4"));
+  EXPECT_THAT(out.str(), HasSubstr("writes smooth (dst: float32 x1, 64 tiles of 16px)"));
+  EXPECT_THAT(out.str(), HasSubstr("writes artifact smooth_sum"));
+}
+
+}  // namespace
+}  // namespace maquette

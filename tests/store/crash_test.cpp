@@ -1,0 +1,104 @@
+// Crash safety: a child process writing small batches is SIGKILLed at random moments; every
+// time, the store must open, pass integrity_check, and hold every batch the child reported
+// committed, completely, with tiles that decode to what was written. Its own executable, so
+// that fork() happens in a process without other threads.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+#include <thread>
+
+#include "store/store.h"
+#include "store_test_util.h"
+
+namespace maquette {
+namespace {
+
+constexpr int kTilesPerBatch = 4;
+constexpr int kTileSize = 64;
+constexpr int kLevel = 10;
+
+CellId cell_of(int64_t k) {
+  return CellId::FromFaceColRow(int(k % 6), kLevel, uint32_t((k / 6) % 1024),
+                                uint32_t((k / 6) / 1024));
+}
+
+// Writes batches first_batch, first_batch + 1, ... forever, reporting each after its commit.
+[[noreturn]] void write_until_killed(const std::string& path, int64_t first_batch, int report_fd) {
+  try {
+    auto store = Store::open(path, Store::Mode::Create);
+    LayerInfo l;
+    l.name = "dem";
+    l.tile_size = kTileSize;
+    l.level = kLevel;
+    store->create_layer(l);
+    for (int64_t b = first_batch;; ++b) {
+      Store::Batch batch(*store);
+      for (int i = 0; i < kTilesPerBatch; ++i) {
+        const int64_t k = b * kTilesPerBatch + i;
+        batch.put_tile("dem", cell_of(k), test::smooth_tile(kTileSize, float(k)));
+      }
+      batch.commit();
+      if (::write(report_fd, &b, sizeof b) != sizeof b) ::_exit(3);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "writer: %s\n", e.what());
+    ::_exit(2);
+  }
+}
+
+TEST(StoreCrash, KilledWriterLeavesAValidStore) {
+  test::TempDir dir;
+  const std::string path = dir.file("crash.mqs");
+  std::mt19937 rng(20240607);
+  std::set<int64_t> reported;
+  for (int round = 0; round < 6; ++round) {
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      ::close(fds[0]);
+      write_until_killed(path, int64_t(round) * 100000, fds[1]);
+    }
+    ::close(fds[1]);
+    std::this_thread::sleep_for(std::chrono::milliseconds(30 + rng() % 150));
+    ASSERT_EQ(::kill(child, SIGKILL), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "child exited with " << WEXITSTATUS(status);
+    int64_t b;
+    while (::read(fds[0], &b, sizeof b) == sizeof b) reported.insert(b);
+    ::close(fds[0]);
+
+    auto store = Store::open(path, Store::Mode::ReadWrite);
+    ASSERT_TRUE(store->integrity_ok()) << "round " << round;
+    std::map<int64_t, int> tiles_per_batch;
+    const auto cells = store->tile_cells("dem");
+    std::set<CellId> present(cells.begin(), cells.end());
+    for (int64_t batch : reported)
+      for (int i = 0; i < kTilesPerBatch; ++i)
+        ASSERT_TRUE(present.count(cell_of(batch * kTilesPerBatch + i)))
+            << "committed batch " << batch << " lost in round " << round;
+    // Every stored tile decodes to what was written; batches are all or nothing.
+    store->scan("dem", CellId(0), CellId(uint64_t(INT64_MAX)), [&](CellId c, const RawTile& t) {
+      const int64_t k = int64_t(c.face()) + 6 * (int64_t(c.row()) * 1024 + c.col());
+      ASSERT_EQ(cell_of(k), c);
+      EXPECT_EQ(t.bytes, test::smooth_tile(kTileSize, float(k)).bytes) << c.ToText();
+      ++tiles_per_batch[k / kTilesPerBatch];
+    });
+    for (const auto& [batch, count] : tiles_per_batch)
+      EXPECT_EQ(count, kTilesPerBatch) << "batch " << batch << " is partial";
+    RecordProperty("round" + std::to_string(round) + "_batches", int(tiles_per_batch.size()));
+  }
+  EXPECT_GT(reported.size(), 10u) << "the child wrote too little for the test to mean much";
+}
+
+}  // namespace
+}  // namespace maquette
