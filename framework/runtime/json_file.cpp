@@ -27,8 +27,4 @@ std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-nlohmann::json read_json_file(const std::string& path) {
-  return parse_json(read_text_file(path), path);
-}
-
 }  // namespace maquette

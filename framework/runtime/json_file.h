@@ -1,4 +1,4 @@
-// Reading JSON documents (pipelines, GeoJSON) with errors that name the source, line and column.
+// Reading JSON documents with errors that name the source, line and column.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -9,8 +9,7 @@ namespace maquette {
 
 // Throws maquette::Error "SOURCE: parse error at line L, column C: ...".
 nlohmann::json parse_json(std::string_view text, const std::string& source);
-// Throws maquette::Error naming the file when it cannot be read or parsed.
+// Throws maquette::Error naming the file when it cannot be read.
 std::string read_text_file(const std::string& path);
-nlohmann::json read_json_file(const std::string& path);
 
 }  // namespace maquette

@@ -46,10 +46,11 @@ std::string temp_dir() {
   return dir.string();
 }
 
-CliResult run_maquette(const std::string& args) {
+CliResult run_maquette(const std::string& args, const std::string& env) {
   const std::string dir = temp_dir();
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   std::ostringstream cmd;
+  if (!env.empty()) cmd << "env " << env << " ";
   cmd << MAQUETTE_BIN_DIR << "/maquette " << args << " >" << out << " 2>" << err;
   const int status = std::system(cmd.str().c_str());
   CliResult r;

@@ -11,8 +11,9 @@ struct CliResult {
   std::string err;  // stderr
 };
 
-// Runs `maquette ARGS` through /bin/sh (so ARGS may quote) in a private temp directory.
-CliResult run_maquette(const std::string& args);
+// Runs `maquette ARGS` through /bin/sh (so ARGS may quote), with `env` ("NAME=value ...")
+// added to the environment.
+CliResult run_maquette(const std::string& args, const std::string& env = "");
 
 // A fresh empty directory under the system temp dir, removed at process exit.
 std::string temp_dir();

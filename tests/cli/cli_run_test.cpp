@@ -1,0 +1,242 @@
+// `maquette run`, `info`, `modules` and `demo` as a user runs them. Every bad input gives a
+// clear message naming what is wrong, a non-zero exit, and leaves the store's bytes untouched.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "run_cli.h"
+
+namespace maquette::test {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+const std::string kFixtures = MAQUETTE_FIXTURE_MODULE_DIR;
+
+void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The store's bytes, WAL included: what "untouched" means. An empty WAL (left by a reader, as
+// SQLite does) holds nothing, like a missing one.
+std::string store_fingerprint(const std::string& store) {
+  const std::string wal = store + "-wal";
+  const bool has_wal = fs::exists(wal) && fs::file_size(wal) > 0;
+  return file_fingerprint(store) + "|" + (has_wal ? file_fingerprint(wal) : "");
+}
+
+// A small valid pipeline: synthetic terrain on 16-pixel tiles and its derivatives.
+json small_pipeline(const std::string& store) {
+  return {{"store", store},
+          {"region", {{"bbox", {6.0, 44.0, 9.0, 46.0}}}},
+          {"level", 5},
+          {"tile_size", 16},
+          {"steps",
+           {{{"op", "terrain.synthesize"}, {"outputs", {{"dem", "dem"}}}, {"params", {{"seed", 3}}}},
+            {{"op", "terrain.derive"},
+             {"inputs", {{"dem", "dem"}}},
+             {"outputs", {{"slope", "slope"}, {"hillshade", "hs"}}}}}}};
+}
+
+class CliRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = temp_dir();
+    store_ = dir_ + "/s.mqt";
+    write_file(dir_ + "/good.json", small_pipeline(store_).dump(2));
+    const CliResult r = run_maquette("-q run " + dir_ + "/good.json --threads 2");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  // Runs a pipeline given as text; expects failure naming `message`, and the store untouched.
+  void expect_refused(const std::string& pipeline_text, const std::string& message,
+                      const std::string& env = "") {
+    const std::string before = store_fingerprint(store_);
+    const std::string file = dir_ + "/bad.json";
+    write_file(file, pipeline_text);
+    const CliResult r = run_maquette("run " + file, env);
+    EXPECT_NE(r.exit_code, 0) << pipeline_text;
+    EXPECT_NE(r.err.find(message), std::string::npos) << "expected '" << message << "' in: " << r.err;
+    EXPECT_NE(r.err.find("error"), std::string::npos) << r.err;
+    EXPECT_EQ(store_fingerprint(store_), before) << "store changed by: " << pipeline_text;
+  }
+  std::string dir_, store_;
+};
+
+TEST_F(CliRun, InfoDescribesTheLayersWritten) {
+  const CliResult r = run_maquette("info " + store_ + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json info = json::parse(r.out);
+  std::set<std::string> names;
+  for (const json& l : info["layers"]) {
+    names.insert(l["name"]);
+    EXPECT_EQ(l["level"], 5);
+    EXPECT_EQ(l["tile_size"], 16);
+    EXPECT_GT(l["tiles"].get<int>(), 0);
+    // The layer's bbox holds the pipeline's bbox (cells overlap it).
+    const json b = l["bbox"];
+    EXPECT_LE(b[0].get<double>(), 6.0);
+    EXPECT_LE(b[1].get<double>(), 44.0);
+    EXPECT_GE(b[2].get<double>(), 9.0);
+    EXPECT_GE(b[3].get<double>(), 46.0);
+  }
+  EXPECT_EQ(names, (std::set<std::string>{"dem", "slope", "hs"}));
+  EXPECT_GT(info["size_bytes"].get<long long>(), 0);
+  // The tiles are exactly the cells covering the bbox (as `cells cover` lists them).
+  const CliResult cover = run_maquette("cells cover --bbox 6 44 9 46 --level 5");
+  ASSERT_EQ(cover.exit_code, 0);
+  const long lines = std::count(cover.out.begin(), cover.out.end(), '\n');
+  EXPECT_EQ(info["layers"][0]["tiles"].get<long>(), lines);
+}
+
+TEST_F(CliRun, RerunAndResumeGiveTheSameBits) {
+  const CliResult again = run_maquette("-q run " + dir_ + "/good.json --threads 1 --resume");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const std::string other = dir_ + "/other.mqt";
+  write_file(dir_ + "/other.json", small_pipeline(other).dump());
+  ASSERT_EQ(run_maquette("-q run " + dir_ + "/other.json --threads 1").exit_code, 0);
+  const CliResult png1 = run_maquette("-q export png " + store_ + " " + dir_ + "/a.png --layer slope --range 0 30");
+  const CliResult png2 = run_maquette("-q export png " + other + " " + dir_ + "/b.png --layer slope --range 0 30");
+  ASSERT_EQ(png1.exit_code, 0) << png1.err;
+  ASSERT_EQ(png2.exit_code, 0) << png2.err;
+  EXPECT_EQ(file_fingerprint(dir_ + "/a.png"), file_fingerprint(dir_ + "/b.png"));
+}
+
+TEST_F(CliRun, DryRunWritesNothing) {
+  const std::string before = store_fingerprint(store_);
+  const CliResult r = run_maquette("run " + dir_ + "/good.json --dry-run");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("terrain.derive"), std::string::npos) << r.out;
+  EXPECT_EQ(store_fingerprint(store_), before);
+}
+
+TEST_F(CliRun, BadPipelinesAreRefusedBeforeAnythingRuns) {
+  json p = small_pipeline(store_);
+  expect_refused("{\"store\": \"s.mqt\",\n  \"steps\": [,]}", "line 2");
+
+  p = small_pipeline(store_);
+  p["steps"][1]["op"] = "terrain.nope";
+  expect_refused(p.dump(), "terrain.nope");
+
+  p = small_pipeline(store_);
+  p["steps"][1]["params"] = {{"azimuth", "north"}};
+  expect_refused(p.dump(), "azimuth");
+
+  p = small_pipeline(store_);
+  p["steps"][1]["params"] = {{"azimuth", 400}};
+  expect_refused(p.dump(), "400");
+
+  p = small_pipeline(store_);
+  p["steps"][1]["inputs"]["dem"] = "dme";
+  expect_refused(p.dump(), "dme");
+
+  p = small_pipeline(store_);
+  p["region"] = {{"cells", {"N12", "X9"}}};
+  expect_refused(p.dump(), "X9");
+
+  p = small_pipeline(store_);
+  p["level"] = 40;
+  expect_refused(p.dump(), "40");
+
+  p = small_pipeline(store_);
+  p["region"] = {{"bbox", {6.0, 44.0, 9.0, 95.0}}};
+  expect_refused(p.dump(), "95");
+}
+
+TEST_F(CliRun, MissingRequiredParameterIsNamed) {
+  json p = small_pipeline(store_);
+  p["steps"] = {{{"op", "fixture.fill"}, {"outputs", {{"value", "v"}}}}};
+  expect_refused(p.dump(), "seed", "MAQUETTE_MODULE_PATH=" + kFixtures + "/good");
+}
+
+TEST_F(CliRun, OperatorThrowingNamesStepAndCellAndKeepsEarlierTiles) {
+  json p = small_pipeline(store_);
+  p["steps"] = {{{"op", "fixture.fill"},
+                 {"outputs", {{"value", "v"}}},
+                 {"params", {{"seed", 1}, {"fail_on", "N1111"}}}}};
+  p["region"] = {{"cells", {"N1110", "N1111", "N1112"}}};
+  p["level"] = 4;
+  write_file(dir_ + "/fail.json", p.dump());
+  const CliResult r =
+      run_maquette("run " + dir_ + "/fail.json --threads 1", "MAQUETTE_MODULE_PATH=" + kFixtures + "/good");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("step 1 (fixture.fill)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("N1111"), std::string::npos) << r.err;
+  // What was stored before is intact: the earlier layers still export the same picture.
+  const CliResult after = run_maquette("-q export png " + store_ + " " + dir_ + "/after.png --layer dem --range 0 3000");
+  ASSERT_EQ(after.exit_code, 0) << after.err;
+  const std::string other = dir_ + "/other.mqt";
+  write_file(dir_ + "/other.json", small_pipeline(other).dump());
+  ASSERT_EQ(run_maquette("-q run " + dir_ + "/other.json").exit_code, 0);
+  ASSERT_EQ(run_maquette("-q export png " + other + " " + dir_ + "/ref.png --layer dem --range 0 3000").exit_code, 0);
+  EXPECT_EQ(file_fingerprint(dir_ + "/after.png"), file_fingerprint(dir_ + "/ref.png"));
+}
+
+TEST_F(CliRun, StoreErrorsAreNamed) {
+  json p = small_pipeline(dir_ + "/notes.txt");
+  write_file(dir_ + "/notes.txt", "not a database, just notes\n");
+  const std::string notes_before = file_fingerprint(dir_ + "/notes.txt");
+  write_file(dir_ + "/p.json", p.dump());
+  CliResult r = run_maquette("run " + dir_ + "/p.json");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("not a Maquette store"), std::string::npos) << r.err;
+  EXPECT_EQ(file_fingerprint(dir_ + "/notes.txt"), notes_before);
+
+  // A read-only store file opened for writing (even as root, who could write it).
+  fs::permissions(store_, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  const std::string before = store_fingerprint(store_);
+  r = run_maquette("run " + dir_ + "/good.json");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("read-only"), std::string::npos) << r.err;
+  EXPECT_EQ(store_fingerprint(store_), before);
+  // Reading it is fine.
+  EXPECT_EQ(run_maquette("info " + store_).exit_code, 0);
+}
+
+TEST(CliModules, ListsTheTerrainOperators) {
+  const CliResult r = run_maquette("modules --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("terrain.derive"), std::string::npos);
+  EXPECT_NE(r.out.find("terrain.synthesize"), std::string::npos);
+  EXPECT_TRUE(json::accept(r.out)) << r.out;
+}
+
+TEST(CliModules, BadModulesAreRefusedNamingTheFile) {
+  CliResult r = run_maquette("modules", "MAQUETTE_MODULE_PATH=" + kFixtures + "/bad_abi");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("bad_abi"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ABI"), std::string::npos) << r.err;
+  r = run_maquette("modules", "MAQUETTE_MODULE_PATH=" + kFixtures + "/no_entry");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no_entry"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("entry point"), std::string::npos) << r.err;
+}
+
+TEST(CliDemo, WritesAStoreAndQuicklooks) {
+  const std::string dir = temp_dir() + "/demo";
+  const CliResult r = run_maquette("demo --output " + dir + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"dem.png", "hillshade.png", "slope.png"}) {
+    const cv::Mat png = cv::imread(dir + "/" + name, cv::IMREAD_UNCHANGED);
+    ASSERT_FALSE(png.empty()) << name;
+    EXPECT_EQ(png.channels(), 4) << name;
+    // Most of the picture is terrain (opaque), and it is not one flat colour.
+    std::vector<cv::Mat> planes;
+    cv::split(png, planes);
+    EXPECT_GT(cv::countNonZero(planes[3]), int(0.6 * png.total())) << name;
+    double lo = 0, hi = 0;
+    cv::minMaxLoc(planes[1], &lo, &hi, nullptr, nullptr, planes[3]);
+    EXPECT_GT(hi - lo, 50) << name;
+  }
+  const CliResult info = run_maquette("info " + dir + "/demo.mqt --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const json layers = json::parse(info.out)["layers"];
+  EXPECT_EQ(layers.size(), 6u);
+  EXPECT_NE(r.out.find("maquette info"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace maquette::test
