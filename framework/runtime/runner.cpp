@@ -46,9 +46,8 @@ class Runner {
 
   RunSummary run() {
     const auto start = Clock::now();
-    // Everything is validated before the store is created or written. Mode::Create also finishes
-    // a store whose creation was killed before its schema was committed.
-    store_ = open_existing(pipeline_, Store::Mode::Create);
+    // Everything is validated before the store is created or written.
+    store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
     const RunPlan plan = plan_run(pipeline_, store_.get(), threads_);
     if (!store_) store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
     // Creating every output layer first also checks them against existing layers before any

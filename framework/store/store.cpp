@@ -89,10 +89,9 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
       impl->writer = std::make_unique<sqlite::Connection>(
           path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX | create);
       configure_connection(*impl->writer, true);
-      if (mode == Mode::Create)
-        create_schema(*impl->writer);
-      else
-        check_schema(*impl->writer);
+      // Also for ReadWrite: an empty database is a store whose creation was killed before its
+      // schema transaction committed, and becomes a store now.
+      create_schema(*impl->writer);
     }
   } catch (const sqlite::Failure& e) {
     if (e.code() == SQLITE_NOTADB) throw Error(path + " is not a Maquette store");

@@ -39,9 +39,7 @@ TempRoot& root() {
 
 std::string temp_dir() {
   static int counter = 0;
-  std::string name = "d";  // not "d" + to_string(): GCC 12 warns falsely (-Wrestrict) on that
-  name += std::to_string(counter++);
-  const auto dir = root().path / name;
+  const auto dir = root().path / ("d" + std::to_string(counter++));
   std::filesystem::create_directories(dir);
   return dir.string();
 }
@@ -49,10 +47,9 @@ std::string temp_dir() {
 CliResult run_maquette(const std::string& args, const std::string& env) {
   const std::string dir = temp_dir();
   const std::string out = dir + "/stdout", err = dir + "/stderr";
-  std::ostringstream cmd;
-  if (!env.empty()) cmd << "env " << env << " ";
-  cmd << MAQUETTE_BIN_DIR << "/maquette " << args << " >" << out << " 2>" << err;
-  const int status = std::system(cmd.str().c_str());
+  const std::string prefix = env.empty() ? "" : "env " + env + " ";
+  const std::string cmd = prefix + MAQUETTE_BIN_DIR + "/maquette " + args + " >" + out + " 2>" + err;
+  const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = slurp(out);
