@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config ccache git ca-certificates
+  build-essential cmake ninja-build pkg-config ccache git ca-certificates clang-format
   libgeographiclib-dev libeigen3-dev libproj-dev proj-bin proj-data libgdal-dev gdal-bin
   libopenvdb-dev libdraco-dev draco libopencv-dev
   libspdlog-dev libfmt-dev libtbb-dev libopenmpi-dev openmpi-bin

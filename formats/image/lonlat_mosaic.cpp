@@ -71,7 +71,8 @@ LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::strin
   std::vector<CellId> ids(points.size());
   for (int row = 0; row < r.height; ++row) {
     for (int col = 0; col < r.width; ++col)
-      points[size_t(col)] = {std::remainder(r.west + (col + 0.5) * step, 360.0), r.north - (row + 0.5) * step};
+      points[size_t(col)] = {std::remainder(r.west + (col + 0.5) * step, 360.0),
+                             r.north - (row + 0.5) * step};
     grid.cells_from_points(points, pixel_level, ids);
     for (int col = 0; col < r.width; ++col) {
       const CellId pixel = ids[size_t(col)];
@@ -79,7 +80,8 @@ LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::strin
       if (level == info.level && !std::binary_search(cells.begin(), cells.end(), cell)) continue;
       auto [it, fresh] = tiles.try_emplace(cell);
       if (fresh) {
-        const auto raw = level == info.level ? store.get_tile(layer, cell) : store.get_overview(layer, cell);
+        const auto raw =
+            level == info.level ? store.get_tile(layer, cell) : store.get_overview(layer, cell);
         if (raw) it->second = to_tile<float>(*raw, nodata);
       }
       if (!it->second) continue;

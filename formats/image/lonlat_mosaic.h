@@ -20,7 +20,8 @@ struct LonLatRaster {
   }
 };
 
-// Resamples `cells` of `layer` (all its tiles when empty) onto a lon/lat raster no larger than
+// Resamples the tiles of `layer` at `cells` (cells at the layer's level, e.g. from
+// layer_tile_cells; all its tiles when empty) onto a lon/lat raster no larger than
 // `max_side` pixels on its longer side, reading overview levels when that is coarser than the
 // layer. Throws maquette::Error for an unknown layer or when there are no tiles.
 LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::string& layer,

@@ -1,14 +1,13 @@
 // maquette cells: the grid from the command line (point to cell, cell info, cover, levels).
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/commands.h"
-#include "core/geojson.h"
 #include "core/error.h"
+#include "core/geojson.h"
 #include "core/grid.h"
 #include "core/region.h"
 #include "core/tile.h"
@@ -30,11 +29,6 @@ struct CellsOptions {
   int tile_size = 256;
   int edge_points = 16;
 };
-
-void check_level(int level) {
-  if (level < 0 || level > CellId::kMaxLevel)
-    throw Error("--level " + std::to_string(level) + " is outside 0.." + std::to_string(CellId::kMaxLevel));
-}
 
 Containment parse_mode(const std::string& mode) {
   if (mode == "centre" || mode == "center") return Containment::Centre;
@@ -73,7 +67,7 @@ void print_cell_info(const CellsOptions& o) {
 }
 
 void print_cover(const CellsOptions& o) {
-  check_level(o.level);
+  CellId::CheckLevel(o.level);
   const Grid& grid = default_grid();
   const Containment mode = parse_mode(o.mode);
   std::vector<CellId> cells;
@@ -102,8 +96,12 @@ void print_levels(const CellsOptions& o) {
     json rows = json::array();
     for (int l = 0; l <= CellId::kMaxLevel; ++l) {
       const LevelInfo i = grid.level_info(l, o.tile_size);
-      rows.push_back({{"level", l}, {"cell_side_m", i.cell_side_m}, {"plane_side_m", i.plane_side_m},
-                      {"area_m2", i.area_m2}, {"pixel_m", i.pixel_m}, {"tile_size", o.tile_size}});
+      rows.push_back({{"level", l},
+                      {"cell_side_m", i.cell_side_m},
+                      {"plane_side_m", i.plane_side_m},
+                      {"area_m2", i.area_m2},
+                      {"pixel_m", i.pixel_m},
+                      {"tile_size", o.tile_size}});
     }
     std::cout << rows.dump(2) << "\n";
     return;
@@ -121,16 +119,20 @@ void print_levels(const CellsOptions& o) {
 
 void add_cells_command(CLI::App& app) {
   auto opts = std::make_shared<CellsOptions>();
-  CLI::App* cells = app.add_subcommand("cells", "The grid: point to cell, cell info, cover a region, levels table");
+  CLI::App* cells = app.add_subcommand(
+      "cells", "The grid: point to cell, cell info, cover a region, levels table");
   cells->require_subcommand(1);
 
-  CLI::App* from_point = cells->add_subcommand("from-point", "Print the id of the cell holding a point");
-  from_point->add_option("LON", opts->lon, "Longitude, degrees")->required()->check(CLI::Range(-360.0, 360.0));
+  CLI::App* from_point =
+      cells->add_subcommand("from-point", "Print the id of the cell holding a point");
+  from_point->add_option("LON", opts->lon, "Longitude, degrees")
+      ->required()
+      ->check(CLI::Range(-360.0, 360.0));
   from_point->add_option("LAT", opts->lat, "Latitude, degrees (-90..90)")->required();
   from_point->add_option("--level,-l", opts->level, "Cell level (0..29)")->required();
   from_point->add_flag("--json", opts->json_out, "Print JSON");
   from_point->callback([opts] {
-    check_level(opts->level);
+    CellId::CheckLevel(opts->level);
     const CellId cell = default_grid().cell_from_point({opts->lon, opts->lat}, opts->level);
     if (opts->json_out)
       std::cout << json{{"id", cell.ToText()}, {"int_id", cell.id()}}.dump() << "\n";
@@ -138,24 +140,32 @@ void add_cells_command(CLI::App& app) {
       std::printf("%s\n", cell.ToText().c_str());
   });
 
-  CLI::App* info = cells->add_subcommand("info", "Centre, area, level, plane square and boundary of a cell");
+  CLI::App* info =
+      cells->add_subcommand("info", "Centre, area, level, plane square and boundary of a cell");
   info->add_option("ID", opts->id, "Cell id: text (e.g. N11011323) or integer")->required();
-  info->add_option("--edge-points", opts->edge_points, "Boundary points per edge")->check(CLI::Range(1, 100000));
+  info->add_option("--edge-points", opts->edge_points, "Boundary points per edge")
+      ->check(CLI::Range(1, 100000));
   info->add_flag("--json", opts->json_out, "Print JSON");
   info->callback([opts] { print_cell_info(*opts); });
 
   CLI::App* cover = cells->add_subcommand("cover", "Print the cells at a level covering a region");
-  cover->add_option("--bbox", opts->bbox, "W S E N in degrees (W > E crosses the antimeridian)")->expected(4);
+  cover->add_option("--bbox", opts->bbox, "W S E N in degrees (W > E crosses the antimeridian)")
+      ->expected(4);
   cover->add_option("--geojson", opts->geojson, "GeoJSON file with a Polygon or MultiPolygon");
   cover->add_option("--level,-l", opts->level, "Cell level (0..29)")->required();
-  cover->add_option("--mode", opts->mode, "centre: cell centre inside; overlap: cell touches; full: cell inside")
+  cover
+      ->add_option("--mode", opts->mode,
+                   "centre: cell centre inside; overlap: cell touches; full: cell inside")
       ->capture_default_str();
-  cover->add_flag("--compact", opts->compact, "Replace complete sets of 4 siblings by their parent");
+  cover->add_flag("--compact", opts->compact,
+                  "Replace complete sets of 4 siblings by their parent");
   cover->add_flag("--json", opts->json_out, "Print a JSON array");
   cover->callback([opts] { print_cover(*opts); });
 
-  CLI::App* levels = cells->add_subcommand("levels", "Print the levels table: cell side, area, pixel size");
-  levels->add_option("--tile-size", opts->tile_size, "Tile size in pixels (a power of two)")->capture_default_str();
+  CLI::App* levels =
+      cells->add_subcommand("levels", "Print the levels table: cell side, area, pixel size");
+  levels->add_option("--tile-size", opts->tile_size, "Tile size in pixels (a power of two)")
+      ->capture_default_str();
   levels->add_flag("--json", opts->json_out, "Print JSON");
   levels->callback([opts] { print_levels(*opts); });
 }

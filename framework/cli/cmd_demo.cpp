@@ -1,11 +1,11 @@
 // maquette demo: the main job on data the project can always make, with quicklooks.
+#include <spdlog/spdlog.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
-
-#include <spdlog/spdlog.h>
 
 #include "cli/commands.h"
 #include "core/error.h"
@@ -56,7 +56,8 @@ void run_demo(const DemoOptions& o) {
   std::string written;
   for (const Quicklook& q : looks) {
     const std::string path = (fs::path(o.output) / q.file).string();
-    write_quicklook_png(mosaic_layer(*store, default_grid(), q.layer, {}), {q.ramp, std::nullopt}, path);
+    write_quicklook_png(mosaic_layer(*store, default_grid(), q.layer, {}), {q.ramp, std::nullopt},
+                        path);
     written += "\n  " + path;
   }
   std::printf(
@@ -77,7 +78,8 @@ void add_demo_command(CLI::App& app) {
       "Run the demo pipeline (examples/demo.json, built in): a synthetic terrain and its "
       "derivatives in a new store, plus PNG quicklooks");
   demo->add_option("-o,--output", o->output, "Output directory")->capture_default_str();
-  demo->add_option("-t,--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
+  demo->add_option("-t,--threads", o->threads, "Worker threads (0: all cores)")
+      ->capture_default_str();
   demo->callback([o] { run_demo(*o); });
 }
 

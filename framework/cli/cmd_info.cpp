@@ -1,16 +1,13 @@
 // maquette info STORE: layers, levels, tile counts, bounding box, size on disk.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "cli/commands.h"
 #include "core/grid.h"
-#include "core/region.h"
+#include "core/lonlat_bounds.h"
 #include "store/store.h"
 
 namespace maquette::cli {
@@ -18,21 +15,11 @@ namespace {
 
 using json = nlohmann::json;
 
-// Lon/lat bounds of a set of cells (of their compacted cover, so big layers stay cheap).
+// W S E N of the layer's cells; W > E when they cross the antimeridian.
 json cells_bbox(const std::vector<CellId>& cells) {
   if (cells.empty()) return nullptr;
-  const Grid& grid = default_grid();
-  double w = 180, s = 90, e = -180, n = -90;
-  for (CellId c : compact(cells)) {
-    for (const LonLat& p : grid.boundary(c, 8)) {
-      const double lon = std::remainder(p.lon, 360.0);
-      w = std::min(w, lon);
-      e = std::max(e, lon);
-      s = std::min(s, p.lat);
-      n = std::max(n, p.lat);
-    }
-  }
-  return json::array({w, s, e, n});
+  const LonLatBounds b = lonlat_bounds(default_grid(), cells);
+  return json::array({b.west, b.south, b.east > 180.0 ? b.east - 360.0 : b.east, b.north});
 }
 
 json layer_json(const Store& store, const LayerInfo& l) {
@@ -69,7 +56,8 @@ void print_info(const std::string& path, bool as_json) {
     std::cout << report.dump(2) << "\n";
     return;
   }
-  std::printf("store     %s (%.1f MiB on disk)\n", path.c_str(), double(store->file_size()) / 1048576.0);
+  std::printf("store     %s (%.1f MiB on disk)\n", path.c_str(),
+              double(store->file_size()) / 1048576.0);
   std::printf("layers    %zu\n", layers.size());
   for (const json& l : layers) {
     std::printf("\n  %s: %s %s x%d, %d px tiles at level %d (%.3f m/px), %s%s%s\n",
@@ -83,7 +71,8 @@ void print_info(const std::string& path, bool as_json) {
                 l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
     std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
   }
-  if (!report["artifacts"].empty()) std::printf("\nartifacts %s\n", report["artifacts"].dump().c_str());
+  if (!report["artifacts"].empty())
+    std::printf("\nartifacts %s\n", report["artifacts"].dump().c_str());
 }
 
 }  // namespace
@@ -91,7 +80,8 @@ void print_info(const std::string& path, bool as_json) {
 void add_info_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
-  CLI::App* info = app.add_subcommand("info", "Describe a store: layers, levels, tile counts, bounding box, size");
+  CLI::App* info = app.add_subcommand(
+      "info", "Describe a store: layers, levels, tile counts, bounding box, size");
   info->add_option("STORE", *path, "Store file")->required();
   info->add_flag("--json", *as_json, "Print JSON");
   info->callback([path, as_json] { print_info(*path, *as_json); });

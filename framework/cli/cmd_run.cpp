@@ -1,8 +1,8 @@
 // maquette run PIPELINE.json: validate, plan and run a pipeline.
+#include <spdlog/spdlog.h>
+
 #include <memory>
 #include <string>
-
-#include <spdlog/spdlog.h>
 
 #include "cli/commands.h"
 #include "runtime/operator_registry.h"
@@ -36,8 +36,9 @@ void add_run_command(CLI::App& app) {
   run->add_option("-t,--threads", o->run.threads, "Worker threads (0: all cores)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
-  run->add_flag("--resume", o->run.resume,
-                "Finish the latest unfinished run of the same pipeline, skipping cells it completed");
+  run->add_flag(
+      "--resume", o->run.resume,
+      "Finish the latest unfinished run of the same pipeline, skipping cells it completed");
   run->add_flag("--dry-run", o->run.dry_run, "Validate and print the plan; write nothing");
   run->callback([o] {
     o->run.quiet = global_options().quiet;

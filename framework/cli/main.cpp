@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.fallthrough();
   add_cells_command(app);
+  add_ingest_command(app);
   add_info_command(app);
   add_modules_command(app);
   add_run_command(app);

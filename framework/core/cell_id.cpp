@@ -39,4 +39,10 @@ std::string CellId::ToText() const {
   return text;
 }
 
+void CellId::CheckLevel(int level) {
+  if (level < 0 || level > kMaxLevel)
+    throw Error("invalid level " + std::to_string(level) + ": expected 0.." +
+                std::to_string(kMaxLevel));
+}
+
 }  // namespace maquette

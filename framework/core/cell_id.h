@@ -91,6 +91,9 @@ class CellId {
 
   std::string ToText() const;
 
+  // Throws maquette::Error "invalid level L: expected 0..29" unless 0 <= level <= kMaxLevel.
+  static void CheckLevel(int level);
+
   friend constexpr bool operator==(CellId a, CellId b) = default;
   friend constexpr auto operator<=>(CellId a, CellId b) = default;
 

@@ -2,10 +2,9 @@
 // and cell boundaries.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/grid.h"
 

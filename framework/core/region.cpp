@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <string>
 
-#include "core/error.h"
 
 namespace maquette {
 
@@ -41,10 +40,7 @@ std::vector<CellId> compact(std::vector<CellId> cells) {
 }
 
 std::vector<CellId> uncompact(std::span<const CellId> cells, int level) {
-  if (level < 0 || level > CellId::kMaxLevel) {
-    throw Error("invalid level " + std::to_string(level) + ": expected 0.." +
-                std::to_string(CellId::kMaxLevel));
-  }
+  CellId::CheckLevel(level);
   std::vector<CellId> coarse;
   coarse.reserve(cells.size());
   for (const CellId cell : cells)

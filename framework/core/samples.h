@@ -38,6 +38,9 @@ decltype(auto) visit_dtype(DType t, F&& f) {
 template <typename T>
 T cast_sample(double v) {
   if constexpr (std::is_floating_point_v<T>) {
+    // Converting a double beyond T's range is undefined behaviour: saturate to +-infinity.
+    if (std::abs(v) > double(std::numeric_limits<T>::max()) && std::isfinite(v))
+      return v > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
     return static_cast<T>(v);
   } else {
     if (std::isnan(v)) return T{0};

@@ -21,32 +21,49 @@ enum class DType : uint8_t { U8, U16, I16, U32, I32, F32, F64 };
 
 size_t dtype_size(DType t);
 std::string_view dtype_name(DType t);
-// Parses "uint8", "uint16", "int16", "uint32", "int32", "float32", "float64"; throws maquette::Error.
+// Parses "uint8", "uint16", "int16", "uint32", "int32", "float32", "float64"; throws
+// maquette::Error.
 DType parse_dtype(std::string_view name);
 
 template <typename T>
 constexpr DType dtype_of();
 template <>
-constexpr DType dtype_of<uint8_t>() { return DType::U8; }
+constexpr DType dtype_of<uint8_t>() {
+  return DType::U8;
+}
 template <>
-constexpr DType dtype_of<uint16_t>() { return DType::U16; }
+constexpr DType dtype_of<uint16_t>() {
+  return DType::U16;
+}
 template <>
-constexpr DType dtype_of<int16_t>() { return DType::I16; }
+constexpr DType dtype_of<int16_t>() {
+  return DType::I16;
+}
 template <>
-constexpr DType dtype_of<uint32_t>() { return DType::U32; }
+constexpr DType dtype_of<uint32_t>() {
+  return DType::U32;
+}
 template <>
-constexpr DType dtype_of<int32_t>() { return DType::I32; }
+constexpr DType dtype_of<int32_t>() {
+  return DType::I32;
+}
 template <>
-constexpr DType dtype_of<float>() { return DType::F32; }
+constexpr DType dtype_of<float>() {
+  return DType::F32;
+}
 template <>
-constexpr DType dtype_of<double>() { return DType::F64; }
+constexpr DType dtype_of<double>() {
+  return DType::F64;
+}
 
 template <typename T>
 class Tile {
  public:
   Tile() = default;
   Tile(int size, int channels, int halo = 0, T fill = T{})
-      : size_(size), channels_(channels), halo_(halo),
+      : size_(size),
+        channels_(channels),
+        halo_(halo),
         data_(size_t(size + 2 * halo) * size_t(size + 2 * halo) * size_t(channels), fill) {}
 
   int size() const { return size_; }
@@ -102,8 +119,12 @@ template <typename T>
 RawTile from_tile(const Tile<T>& tile, DType dtype, const double* nodata = nullptr);
 
 // Global pixel coordinates on the tile's face (at level cell.level() + log2(size)).
-inline int64_t global_col(CellId cell, int size, int col) { return int64_t(cell.col()) * size + col; }
-inline int64_t global_row(CellId cell, int size, int row) { return int64_t(cell.row()) * size + row; }
+inline int64_t global_col(CellId cell, int size, int col) {
+  return int64_t(cell.col()) * size + col;
+}
+inline int64_t global_row(CellId cell, int size, int row) {
+  return int64_t(cell.row()) * size + row;
+}
 int log2_tile_size(int size);  // throws maquette::Error unless size is a power of two in [1, 4096]
 
 }  // namespace maquette

@@ -24,7 +24,8 @@ class CellPlan {
   size_t chunk_begin(size_t i) const { return i * chunk_size_; }
   std::span<const CellId> chunk(size_t i) const;
 
-  // The contiguous part `rank` of `ranks` (sizes differ by at most one cell).
+  // The contiguous part `rank` of `ranks` (sizes differ by at most one cell). For sharing a run
+  // among MPI ranks (a later issue): not used by the runner yet, only unit-tested.
   CellPlan share(int rank, int ranks) const;
 
  private:

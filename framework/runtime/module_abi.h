@@ -17,14 +17,14 @@
 extern "C" {
 
 struct MaquetteOperatorEntry {
-  const char* name;                    // "<module>.<verb>"
+  const char* name;  // "<module>.<verb>"
   maquette::OperatorFactory create;
 };
 
 struct MaquetteModuleInfo {
-  uint32_t abi_version;                // MAQUETTE_ABI_VERSION the module was built with
-  const char* name;                    // "terrain"
-  const char* version;                 // "1.0.0"
+  uint32_t abi_version;  // MAQUETTE_ABI_VERSION the module was built with
+  const char* name;      // "terrain"
+  const char* version;   // "1.0.0"
   const char* description;
   const MaquetteOperatorEntry* operators;
   uint32_t operator_count;
@@ -35,12 +35,12 @@ struct MaquetteModuleInfo {
 // In a module's one source file that lists its operators:
 //   MAQUETTE_MODULE("terrain", "1.0.0", "Terrain derivatives",
 //                   {"terrain.derive", &make_derive}, {"terrain.fill_voids", &make_fill})
-#define MAQUETTE_MODULE(NAME, VERSION, DESCRIPTION, ...)                                       \
-  extern "C" __attribute__((visibility("default"))) const MaquetteModuleInfo*                 \
-  maquette_module_info() {                                                                     \
-    static const MaquetteOperatorEntry entries[] = {__VA_ARGS__};                              \
-    static const MaquetteModuleInfo info = {MAQUETTE_ABI_VERSION, NAME, VERSION, DESCRIPTION,  \
-                                            entries,                                           \
-                                            uint32_t(sizeof(entries) / sizeof(entries[0]))};   \
-    return &info;                                                                              \
+#define MAQUETTE_MODULE(NAME, VERSION, DESCRIPTION, ...)                                \
+  extern "C" __attribute__((visibility("default"))) const MaquetteModuleInfo*           \
+  maquette_module_info() {                                                              \
+    static const MaquetteOperatorEntry entries[] = {__VA_ARGS__};                       \
+    static const MaquetteModuleInfo info = {                                            \
+        MAQUETTE_ABI_VERSION, NAME,    VERSION,                                         \
+        DESCRIPTION,          entries, uint32_t(sizeof(entries) / sizeof(entries[0]))}; \
+    return &info;                                                                       \
   }

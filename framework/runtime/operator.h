@@ -9,11 +9,10 @@
 
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/cell_id.h"
 #include "core/grid.h"
@@ -71,8 +70,8 @@ struct CellData {
   std::map<std::string, Tile<float>> inputs;   // by input port name (absent optional: missing)
   std::map<std::string, Tile<float>> outputs;  // by output port name, only those the step maps
 
-  const Tile<float>& input(const std::string& port) const;   // throws naming the port
-  Tile<float>& output(const std::string& port);              // throws naming the port
+  const Tile<float>& input(const std::string& port) const;  // throws naming the port
+  Tile<float>& output(const std::string& port);             // throws naming the port
   bool wants(const std::string& output_port) const { return outputs.count(output_port) != 0; }
 };
 
@@ -109,7 +108,8 @@ struct Mosaic {
 
 class RegionOperator : public Operator {
  public:
-  virtual void run(const json& params, const Grid& grid, const Mosaic& input, Mosaic& output) const = 0;
+  virtual void run(const json& params, const Grid& grid, const Mosaic& input,
+                   Mosaic& output) const = 0;
 };
 
 using OperatorFactory = std::unique_ptr<Operator> (*)();

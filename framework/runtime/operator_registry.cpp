@@ -73,8 +73,8 @@ void OperatorRegistry::add(const LoadedModule& module) {
   for (uint32_t i = 0; i < info.operator_count; ++i) {
     const std::string name = info.operators[i].name;
     if (const auto it = operators_.find(name); it != operators_.end())
-      throw Error("operator '" + name + "' is defined twice: in " + it->second.file + " and in " +
-                  module.file);
+      throw Error("operator '" + name + "' is defined twice: in " + it->second.module.file +
+                  " and in " + module.file);
     std::unique_ptr<Operator> op = info.operators[i].create();
     if (!op || op->spec().name != name)
       throw Error(module.file + ": operator '" + name +
@@ -82,7 +82,7 @@ void OperatorRegistry::add(const LoadedModule& module) {
     if (!kind_matches(*op))
       throw Error(module.file + ": operator '" + name + "' declares kind " +
                   std::string(operator_kind_name(op->spec().kind)) + " but is not of that class");
-    operators_.emplace(name, Entry{std::move(op), module.file});
+    operators_.emplace(name, Entry{std::move(op), module});
   }
   modules_.push_back(module);
 }
@@ -90,6 +90,11 @@ void OperatorRegistry::add(const LoadedModule& module) {
 const Operator* OperatorRegistry::find(const std::string& name) const {
   const auto it = operators_.find(name);
   return it == operators_.end() ? nullptr : it->second.op.get();
+}
+
+const LoadedModule* OperatorRegistry::module_of(const std::string& name) const {
+  const auto it = operators_.find(name);
+  return it == operators_.end() ? nullptr : &it->second.module;
 }
 
 nlohmann::json OperatorRegistry::to_json() const {
@@ -125,6 +130,7 @@ void OperatorRegistry::print(std::ostream& out) const {
         out << "    output " << o.name << " " << dtype_name(o.dtype) << " x" << o.channels << " "
             << semantics_name(o.semantics);
         if (!o.units.empty()) out << " [" << o.units << "]";
+        if (o.nodata) out << " nodata " << nlohmann::json(*o.nodata).dump();
         out << ": " << o.description << "\n";
       }
       if (s.params_schema.contains("properties") && !s.params_schema.at("properties").empty())

@@ -23,7 +23,8 @@ class OperatorRegistry {
   // and naming the file when an operator's declared kind does not match its class.
   void add(const LoadedModule& module);
 
-  const Operator* find(const std::string& name) const;  // null when unknown
+  const Operator* find(const std::string& name) const;           // null when unknown
+  const LoadedModule* module_of(const std::string& name) const;  // null when unknown
   const std::vector<LoadedModule>& modules() const { return modules_; }
 
   // `maquette modules --json`: per module name, version, description, file and operators (kind,
@@ -35,7 +36,7 @@ class OperatorRegistry {
  private:
   struct Entry {
     std::unique_ptr<Operator> op;
-    std::string file;
+    LoadedModule module;
   };
   std::vector<LoadedModule> modules_;
   std::map<std::string, Entry> operators_;

@@ -1,5 +1,8 @@
 #include "runtime/params_schema.h"
 
+#include <cmath>
+#include <cstdint>
+
 #include "core/error.h"
 
 namespace maquette {
@@ -43,18 +46,27 @@ class Validator {
     else if (type == "array")
       ok = value.is_array();
     else if (type == "integer") {
-      ok = value.is_number_integer();
-      if (value.is_number_float()) {
-        const double d = value.get<double>();
-        if (d == double(int64_t(d))) {
-          value = int64_t(d);
-          ok = true;
-        }
-      }
+      ok = value.is_number_integer() || (value.is_number_float() && is_whole(value));
+      if (ok && !fits_int64(value))
+        fail(path, value.dump() + " is outside the 64-bit integer range");
+      if (ok && value.is_number_float()) value = int64_t(value.get<double>());
     } else {
       fail(path, "the operator's schema has an unsupported type '" + type + "'");
     }
     if (!ok) fail(path, "expected " + article(type) + ", got " + value.dump());
+  }
+
+  static bool is_whole(const json& value) {
+    const double d = value.get<double>();
+    return std::isfinite(d) && d == std::trunc(d);
+  }
+
+  // Casting a double outside [-2^63, 2^63) to int64_t is undefined: check before.
+  static bool fits_int64(const json& value) {
+    if (value.is_number_unsigned()) return value.get<uint64_t>() <= uint64_t(INT64_MAX);
+    if (value.is_number_integer()) return true;
+    const double d = value.get<double>();
+    return d >= -0x1p63 && d < 0x1p63;
   }
 
   static std::string article(const std::string& type) {

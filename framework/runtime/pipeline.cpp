@@ -1,10 +1,12 @@
 #include "runtime/pipeline.h"
 
 #include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <set>
 
 #include "core/error.h"
+#include "core/tile.h"
 #include "runtime/json_file.h"
 #include "runtime/params_schema.h"
 #include "runtime/pipeline_region.h"
@@ -25,10 +27,16 @@ void check_fields(const json& obj, const std::set<std::string>& known, const std
     if (!known.count(key)) fail(context, path, "unknown field '" + key + "'");
 }
 
-int integer(const json& obj, const char* key, const std::string& context) {
+// An integer field within lo..hi (lo <= 0 <= hi). JSON integers are 64-bit, positive ones
+// unsigned: they are compared as such, not truncated to int first.
+int integer(const json& obj, const char* key, int lo, int hi, const std::string& context) {
   const json& v = obj.at(key);
   if (!v.is_number_integer()) fail(context, key, "expected an integer, got " + v.dump());
-  return v.get<int>();
+  const bool in_range = v.is_number_unsigned() ? v.get<uint64_t>() <= uint64_t(hi)
+                                               : v.get<int64_t>() >= lo && v.get<int64_t>() <= hi;
+  if (!in_range)
+    fail(context, key, v.dump() + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+  return int(v.get<int64_t>());
 }
 
 // A step's "inputs" or "outputs": an object mapping port names to layer names.
@@ -91,6 +99,8 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
     fail(label, "op",
          "unknown operator '" + step.op_name +
              "' (no loaded module has it; see `maquette modules`)");
+  const MaquetteModuleInfo& module = *registry.module_of(step.op_name)->info;
+  step.module = std::string(module.name) + " " + module.version;
   step.inputs = port_map(s, "inputs", label);
   step.outputs = port_map(s, "outputs", label);
   check_ports(step);
@@ -129,14 +139,14 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
   if (!doc.at("store").is_string())
     fail(source, "store", "expected a path, got " + doc.at("store").dump());
   p.store_path = (std::filesystem::path(base_dir) / doc.at("store").get<std::string>()).string();
-  p.level = integer(doc, "level", source);
-  if (p.level < 0 || p.level > CellId::kMaxLevel)
-    fail(source, "level",
-         std::to_string(p.level) + " is outside 0.." + std::to_string(CellId::kMaxLevel));
+  p.level = integer(doc, "level", 0, CellId::kMaxLevel, source);
   if (doc.contains("tile_size")) {
-    p.tile_size = integer(doc, "tile_size", source);
-    if (p.tile_size < 1 || p.tile_size > 4096 || (p.tile_size & (p.tile_size - 1)) != 0)
-      fail(source, "tile_size", std::to_string(p.tile_size) + " is not a power of two in 1..4096");
+    p.tile_size = integer(doc, "tile_size", INT_MIN, INT_MAX, source);
+    try {
+      log2_tile_size(p.tile_size);
+    } catch (const Error& e) {
+      fail(source, "tile_size", e.what());
+    }
   }
 
   const json& steps = doc.at("steps");

@@ -26,6 +26,7 @@ struct PipelineStep {
   int index = 0;  // 1-based, as in messages and run records
   std::string op_name;
   const Operator* op = nullptr;
+  std::string module;  // "name version" of the operator's module, part of a run's identity
   std::map<std::string, std::string> inputs;   // port -> layer
   std::map<std::string, std::string> outputs;  // port -> layer (reduce: artifact name)
   nlohmann::json params;                       // validated, defaults filled in
@@ -34,7 +35,7 @@ struct PipelineStep {
 };
 
 struct Pipeline {
-  nlohmann::json document;  // the pipeline as written: identifies the run for --resume
+  nlohmann::json document;  // the pipeline as written: part of the run's identity (--resume)
   std::string source;       // the file name, for messages
   std::string store_path;   // resolved
   int level = 0;

@@ -32,7 +32,10 @@ class Planner {
     }
     std::vector<CellId> cells =
         sp.inputs.empty() ? pipeline_.region : tiles_in_region(sp.inputs.front().second);
-    if (spec.kind == OperatorKind::Region) check_one_face(step, cells);
+    if (spec.kind == OperatorKind::Region) {
+      check_one_face(step, cells);
+      sp.mosaic = mosaic_box(step, cells, sp.tile_size);
+    }
     for (const auto& out : spec.outputs) {
       const auto it = step.outputs.find(out.name);
       if (it == step.outputs.end()) continue;
@@ -123,6 +126,25 @@ class Planner {
                   ": a region operator needs all cells on one face, but they span faces " +
                   CellId::FromFace(cells.front().face()).ToText() + " to " +
                   CellId::FromFace(cells.back().face()).ToText());
+  }
+
+  // Checked before anything runs, so that a huge mosaic is refused before it is allocated.
+  static MosaicBox mosaic_box(const PipelineStep& step, const std::vector<CellId>& cells,
+                              int tile_size) {
+    if (cells.empty()) return {};
+    uint32_t col0 = UINT32_MAX, row0 = UINT32_MAX, col1 = 0, row1 = 0;
+    for (const CellId c : cells) {
+      col0 = std::min(col0, c.col());
+      row0 = std::min(row0, c.row());
+      col1 = std::max(col1, c.col());
+      row1 = std::max(row1, c.row());
+    }
+    const MosaicBox box{col0, row0, int64_t(std::max(col1 - col0, row1 - row0)) + 1};
+    if (const int64_t side = box.cells * tile_size; side > kMaxMosaicSide)
+      throw Error(step.label() + ": the region's mosaic would be " + std::to_string(side) + " x " +
+                  std::to_string(side) + " samples, above the limit of " +
+                  std::to_string(kMaxMosaicSide) + " x " + std::to_string(kMaxMosaicSide));
+    return box;
   }
 
   const Pipeline& pipeline_;

@@ -2,6 +2,7 @@
 // writes (checked against the store and the earlier steps) and the cells it processes.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <ostream>
 #include <string>
@@ -13,6 +14,16 @@
 
 namespace maquette {
 
+// A region step's square mosaic: the bounding box of its cells on their face, `cells` cells a
+// side from cell (col0, row0).
+struct MosaicBox {
+  uint32_t col0 = 0, row0 = 0;
+  int64_t cells = 0;
+};
+
+// The largest mosaic side in samples a region step may allocate (16384^2 floats: 1 GiB a channel).
+inline constexpr int64_t kMaxMosaicSide = 16384;
+
 struct StepPlan {
   const PipelineStep* step = nullptr;
   int level = 0;  // level of the cells (and tiles) the step reads and writes
@@ -23,6 +34,7 @@ struct StepPlan {
   // A step with inputs processes the first input's tiles within the region; one without, the
   // region's cells at the pipeline level.
   CellPlan cells;
+  MosaicBox mosaic;  // region steps
 };
 
 struct RunPlan {
@@ -31,7 +43,8 @@ struct RunPlan {
 
 // Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
 // store does not exist yet) nor written by an earlier step, inputs of one step at different
-// levels or tile sizes, a region operator over cells of several faces.
+// levels or tile sizes, a region operator over cells of several faces or with a mosaic side above
+// kMaxMosaicSide.
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
 
 // The dry-run report: steps, cell counts and the layers to be written.

@@ -1,6 +1,8 @@
 #include "runtime/runner.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
@@ -36,12 +38,33 @@ RunSummary dry_run(const Pipeline& pipeline, const RunOptions& options, std::ost
   return summary;
 }
 
+// FNV-1a of the sorted cell ids: a region file giving other cells gives another run identity.
+std::string cells_hash(const std::vector<CellId>& cells) {
+  uint64_t h = 14695981039346656037ull;
+  for (const CellId c : cells)
+    for (int shift = 0; shift < 64; shift += 8)
+      h = (h ^ ((c.id() >> shift) & 0xff)) * 1099511628211ull;
+  return fmt::format("{:016x}", h);
+}
+
+// What identifies a run for --resume: the pipeline as written, the cells its region resolved to
+// and the module (name and version) of each step's operator.
+nlohmann::json run_identity(const Pipeline& pipeline) {
+  nlohmann::json modules = nlohmann::json::array();
+  for (const auto& step : pipeline.steps) modules.push_back(step.module);
+  return {
+      {"pipeline", pipeline.document},
+      {"region_cells", {{"count", pipeline.region.size()}, {"fnv1a", cells_hash(pipeline.region)}}},
+      {"modules", modules}};
+}
+
 class Runner {
  public:
   Runner(const Pipeline& pipeline, const RunOptions& options)
       : pipeline_(pipeline),
         options_(options),
         threads_(options.threads > 0 ? options.threads : tbb::info::default_concurrency()),
+        parallelism_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
         arena_(threads_) {}
 
   RunSummary run() {
@@ -56,20 +79,29 @@ class Runner {
       for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
 
     RunSummary summary;
+    const nlohmann::json identity = run_identity(pipeline_);
     if (options_.resume) {
-      if (const auto id = store_->latest_unfinished_run(pipeline_.document)) {
+      if (const auto id = store_->latest_unfinished_run(identity)) {
         summary.run_id = *id;
         summary.resumed = true;
         if (!options_.quiet) spdlog::info("resuming run {} of {}", *id, pipeline_.source);
       } else if (!options_.quiet) {
-        spdlog::info("no unfinished run of {} to resume: starting a new run", pipeline_.source);
+        spdlog::info(
+            "no unfinished run of {} with the same pipeline, region cells ({}, hash {}) and "
+            "modules ({}) to resume: starting a new run",
+            pipeline_.source, pipeline_.region.size(),
+            identity.at("region_cells").at("fnv1a").get<std::string>(),
+            identity.at("modules").dump());
       }
     }
-    if (!summary.resumed) summary.run_id = store_->begin_run(pipeline_.document);
+    if (!summary.resumed) summary.run_id = store_->begin_run(identity);
     try {
       for (const auto& sp : plan.steps) summary.steps.push_back(run_step(sp, summary));
     } catch (const std::exception& e) {
       store_->finish_run(summary.run_id, std::string("failed: ") + e.what());
+      throw;
+    } catch (...) {
+      store_->finish_run(summary.run_id, "failed: unknown exception");
       throw;
     }
     store_->finish_run(summary.run_id, "ok");
@@ -106,7 +138,10 @@ class Runner {
         run_region_step(sp, io, progress);
     }
     s.skipped = s.cells - s.computed;
-    for (const auto& [port, layer] : sp.outputs) store_->update_overviews(layer.name);
+    // In the arena, so that the overviews' parallel loops use `threads` threads too.
+    arena_.execute([&] {
+      for (const auto& [port, layer] : sp.outputs) store_->update_overviews(layer.name);
+    });
     s.seconds = seconds_since(start);
     return s;
   }
@@ -114,6 +149,10 @@ class Runner {
   const Pipeline& pipeline_;
   const RunOptions& options_;
   int threads_;
+  // Without it TBB keeps at most default_concurrency() - 1 workers for the whole process, so
+  // an arena of more threads than cores would get fewer. It applies to the whole process while
+  // the run lasts.
+  tbb::global_control parallelism_;
   tbb::task_arena arena_;
   std::unique_ptr<Store> store_;
 };

@@ -14,7 +14,8 @@ namespace maquette {
 
 struct RunOptions {
   int threads = 0;       // 0: all cores
-  bool resume = false;   // continue the latest unfinished run of the same pipeline
+  bool resume = false;   // continue the latest unfinished run of the same pipeline, region
+                         // cells and module versions
   bool dry_run = false;  // validate and print the plan, write nothing
   bool quiet = false;    // no progress output
 };

@@ -41,6 +41,8 @@ void run_reduce_step(const StepPlan& plan, StepIO& io, Progress& progress, tbb::
     io.write_artifact(artifact, plan.cells.cells());
   } catch (const std::exception& e) {
     throw Error(plan.step->label() + " failed: " + e.what());
+  } catch (...) {
+    throw Error(plan.step->label() + " failed: unknown exception");
   }
 }
 

@@ -15,8 +15,9 @@
 namespace maquette {
 
 // Calls fn(index in `cells`, cell) for every cell, chunk by chunk on the arena's threads. After a
-// failure no new cell starts, and the failure of the lowest index is thrown as maquette::Error
-// "LABEL failed on cell N1234: what".
+// failure no cell after the failing one starts, but those before it still run: the failure
+// thrown, as maquette::Error "LABEL failed on cell N1234: what" (any exception, even one not
+// derived from std::exception), is that of the lowest failing cell, whatever the thread count.
 void for_each_cell(const CellPlan& cells, tbb::task_arena& arena, const std::string& label,
                    const std::function<void(size_t, CellId)>& fn);
 

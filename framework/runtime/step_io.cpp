@@ -1,5 +1,6 @@
 #include "runtime/step_io.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -9,22 +10,37 @@ namespace maquette {
 
 namespace {
 const double* nodata_ptr(const LayerInfo& layer) { return layer.nodata ? &*layer.nodata : nullptr; }
+
+// The cache's capacity in tiles: kTileCacheBytes of the step's largest decoded input tiles.
+size_t cache_capacity(const StepPlan& plan) {
+  size_t tile_bytes = 1;
+  for (const auto& [port, layer] : plan.inputs)
+    tile_bytes = std::max(tile_bytes, size_t(layer.tile_size) * size_t(layer.tile_size) *
+                                          size_t(layer.channels) * sizeof(float));
+  return std::max<size_t>(4, kTileCacheBytes / tile_bytes);
+}
+
 }  // namespace
 
 StepIO::StepIO(Store& store, const StepPlan& plan, int64_t run_id)
-    : store_(store), plan_(plan), run_id_(run_id) {}
+    : store_(store), plan_(plan), run_id_(run_id), cache_(cache_capacity(plan)) {}
 
 std::optional<Tile<float>> StepIO::read(const LayerInfo& layer, CellId cell) const {
   const std::optional<RawTile> raw = store_.get_tile(layer.name, cell);
   if (!raw) return std::nullopt;
+  ++decoded_;
   return to_tile<float>(*raw, nodata_ptr(layer));
 }
 
-CellData StepIO::load(CellId cell, int halo) const {
+CellData StepIO::load(CellId cell, int halo) {
   CellData data;
   for (const auto& [port, layer] : plan_.inputs) {
-    data.inputs[port] = assemble_halo(default_grid(), cell, plan_.tile_size, halo,
-                                      [&](CellId c) { return read(layer, c); });
+    // Without a halo each tile is read once: caching it would only evict useful tiles.
+    auto fetch = [&](CellId c) -> std::optional<Tile<float>> {
+      if (halo == 0) return read(layer, c);
+      return *cache_.get(layer.name, c, [&] { return read(layer, c); });
+    };
+    data.inputs[port] = assemble_halo(default_grid(), cell, plan_.tile_size, halo, fetch);
   }
   data.outputs = blank_outputs(plan_.tile_size);
   return data;

@@ -1,9 +1,12 @@
 // The store access of one running step, from any thread: reading input tiles as float with the
 // operator's halo, and writing each cell's output tiles together with its run record in one
 // batch, so a killed run leaves no cell half-written. The store is the single writer: batches are
-// encoded in the calling thread and committed one at a time under its write mutex.
+// encoded in the calling thread and committed one at a time under its write mutex. Input tiles
+// read for a halo go through a TileCache of at most kTileCacheBytes of decoded tiles (and at least
+// 4 tiles), so each is decoded about once per step.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -12,6 +15,7 @@
 
 #include "runtime/operator.h"
 #include "runtime/run_plan.h"
+#include "runtime/tile_cache.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -23,6 +27,8 @@ struct CellOutput {
   const TileSet* tiles;
 };
 
+inline constexpr size_t kTileCacheBytes = size_t(256) << 20;
+
 class StepIO {
  public:
   StepIO(Store& store, const StepPlan& plan, int64_t run_id);
@@ -30,7 +36,9 @@ class StepIO {
   // The tile of `layer` at `cell` as float (nodata -> NaN), or nullopt.
   std::optional<Tile<float>> read(const LayerInfo& layer, CellId cell) const;
   // The step's input tiles at `cell` with `halo` pixels, and NaN output tiles for mapped outputs.
-  CellData load(CellId cell, int halo) const;
+  CellData load(CellId cell, int halo);
+  // Tiles read and decoded so far (for tests of the cache).
+  int64_t decoded() const { return decoded_; }
   // NaN tiles of `size` pixels for the step's mapped outputs.
   TileSet blank_outputs(int size) const;
 
@@ -43,6 +51,8 @@ class StepIO {
   Store& store_;
   const StepPlan& plan_;
   int64_t run_id_;
+  TileCache cache_;
+  mutable std::atomic<int64_t> decoded_{0};
 };
 
 }  // namespace maquette

@@ -12,13 +12,18 @@ namespace maquette {
 
 void for_each_cell(const CellPlan& cells, tbb::task_arena& arena, const std::string& label,
                    const std::function<void(size_t, CellId)>& fn) {
-  struct Failure {
-    size_t index;
-    std::string what;
-  };
-  std::atomic<bool> stop{false};
+  // The lowest failing index so far: cells above it are skipped, cells below it still run, so
+  // the failure reported is that of the lowest failing cell whatever the thread count.
+  std::atomic<size_t> lowest{SIZE_MAX};
   std::mutex mutex;
-  std::optional<Failure> failure;
+  std::string what;
+  auto record = [&](size_t index, std::string message) {
+    std::lock_guard lock(mutex);
+    if (index < lowest) {
+      lowest = index;
+      what = std::move(message);
+    }
+  };
   arena.execute([&] {
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, cells.chunk_count(), 1),
@@ -27,22 +32,21 @@ void for_each_cell(const CellPlan& cells, tbb::task_arena& arena, const std::str
             const size_t first = cells.chunk_begin(c);
             const auto chunk = cells.chunk(c);
             for (size_t k = 0; k < chunk.size(); ++k) {
-              if (stop.load()) return;
+              if (first + k > lowest.load()) return;
               try {
                 fn(first + k, chunk[k]);
               } catch (const std::exception& e) {
-                std::lock_guard lock(mutex);
-                if (!failure || first + k < failure->index) failure = Failure{first + k, e.what()};
-                stop = true;
+                record(first + k, e.what());
+              } catch (...) {
+                record(first + k, "unknown exception");
               }
             }
           }
         },
         tbb::simple_partitioner());
   });
-  if (failure)
-    throw Error(label + " failed on cell " + cells.cells()[failure->index].ToText() + ": " +
-                failure->what);
+  if (const size_t index = lowest.load(); index != SIZE_MAX)
+    throw Error(label + " failed on cell " + cells.cells()[index].ToText() + ": " + what);
 }
 
 }  // namespace maquette

@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -29,15 +28,8 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   const std::vector<CellId>& cells = plan.cells.cells();
   if (cells.empty()) return;
   const int n = plan.tile_size;
-  uint32_t col0 = UINT32_MAX, row0 = UINT32_MAX, col1 = 0, row1 = 0;
-  for (const CellId c : cells) {
-    col0 = std::min(col0, c.col());
-    row0 = std::min(row0, c.row());
-    col1 = std::max(col1, c.col());
-    row1 = std::max(row1, c.row());
-  }
-  // Mosaic tiles are square: the side of the larger extent.
-  const int side = int(std::max(col1 - col0, row1 - row0) + 1) * n;
+  const auto [col0, row0, extent] = plan.mosaic;
+  const int side = int(extent * n);  // at most kMaxMosaicSide (checked by plan_run)
   auto offset = [&](CellId c) {
     return std::pair<int64_t, int64_t>(int64_t(c.col() - col0) * n, int64_t(c.row() - row0) * n);
   };
@@ -60,6 +52,8 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     op.run(plan.step->params, default_grid(), input, output);
   } catch (const std::exception& e) {
     throw Error(plan.step->label() + " failed on the region's mosaic: " + e.what());
+  } catch (...) {
+    throw Error(plan.step->label() + " failed on the region's mosaic: unknown exception");
   }
   for (const auto& [port, layer] : plan.outputs) {
     const Tile<float>& m = output.layers.at(port);

@@ -15,9 +15,10 @@ struct Store::Batch::Pending {
   struct Done {
     int64_t run;
     int step;
-    CellId cell;
+    int64_t key;  // a cell id or another key
   };
   std::vector<TileWrite> tiles;
+  std::vector<FeatureWrite> features;
   std::vector<Artifact> artifacts;
   std::vector<Done> done;
 };
@@ -53,9 +54,22 @@ void Store::Batch::put_artifact(const Artifact& artifact) {
   pending_->artifacts.push_back(artifact);
 }
 
+void Store::Batch::put_feature(const std::string& layer, const Feature& feature,
+                               std::span<const CellId> cells) {
+  if (!open_)
+    throw Error("cannot write feature " + std::to_string(feature.fid) + " of layer '" + layer +
+                "': batch already committed");
+  const Impl& d = *store_.impl_;
+  pending_->features.push_back(feature_write(d.require(layer), d.path, feature, cells));
+}
+
 void Store::Batch::mark_done(int64_t run_id, int step, CellId cell) {
-  if (!open_) throw Error("cannot mark a cell done: batch already committed");
-  pending_->done.push_back({run_id, step, cell});
+  mark_done(run_id, step, int64_t(cell.id()));
+}
+
+void Store::Batch::mark_done(int64_t run_id, int step, int64_t key) {
+  if (!open_) throw Error("cannot mark work done: batch already committed");
+  pending_->done.push_back({run_id, step, key});
 }
 
 void Store::Batch::commit() {
@@ -71,6 +85,10 @@ void Store::Batch::commit() {
           .run();
       mark_parent_stale(c, t.layer, t.cell);
       layers.insert(t.layer);
+    }
+    for (const auto& f : p.features) {
+      write_feature(c, f);
+      layers.insert(f.layer);
     }
     for (int64_t id : layers)
       c.query("UPDATE layers SET updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")
@@ -89,7 +107,7 @@ void Store::Batch::commit() {
       c.query("INSERT OR IGNORE INTO run_cells(run, step, cell) VALUES(?, ?, ?)")
           .bind_int(1, d.run)
           .bind_int(2, d.step)
-          .bind_int(3, int64_t(d.cell.id()))
+          .bind_int(3, d.key)
           .run();
   });
   open_ = false;

@@ -115,6 +115,7 @@ std::vector<LayerInfo> Store::layers() const {
 LayerStats Store::stats(const std::string& layer) const {
   const LayerEntry e = impl_->require(layer);
   auto conn = impl_->readers.borrow();
+  if (e.info.kind == LayerKind::Features) return feature_stats(*conn, e);
   LayerStats s;
   {
     auto q = conn->query(

@@ -42,12 +42,18 @@ std::optional<int64_t> Store::latest_unfinished_run(const nlohmann::json& pipeli
 }
 
 std::vector<CellId> Store::done_cells(int64_t run_id, int step) const {
+  std::vector<CellId> cells;
+  for (int64_t key : done_keys(run_id, step)) cells.emplace_back(uint64_t(key));
+  return cells;
+}
+
+std::vector<int64_t> Store::done_keys(int64_t run_id, int step) const {
   auto conn = impl_->readers.borrow();
   auto q = conn->query("SELECT cell FROM run_cells WHERE run = ? AND step = ? ORDER BY cell");
   q.bind_int(1, run_id).bind_int(2, step);
-  std::vector<CellId> cells;
-  while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
-  return cells;
+  std::vector<int64_t> keys;
+  while (q.step()) keys.push_back(q.int64(0));
+  return keys;
 }
 
 void Store::finish_run(int64_t run_id, const std::string& status) {

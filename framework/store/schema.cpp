@@ -61,9 +61,45 @@ CREATE TABLE run_cells(
   PRIMARY KEY(run, step, cell)) WITHOUT ROWID;
 )sql";
 
+// Version 2: features layers. A feature is stored once (geometry blobs can be large, so a rowid
+// table) with the cells it is indexed in, which lets a rewrite drop its old index entries; the
+// index (layer, cell, fid) makes a cell range one range scan.
+constexpr const char* kFeaturesSchema = R"sql(
+CREATE TABLE features(
+  layer INTEGER NOT NULL,
+  fid INTEGER NOT NULL,
+  west REAL NOT NULL,
+  south REAL NOT NULL,
+  east REAL NOT NULL,
+  north REAL NOT NULL,
+  geometry BLOB NOT NULL,
+  attributes TEXT NOT NULL,
+  cells BLOB NOT NULL,
+  PRIMARY KEY(layer, fid));
+CREATE TABLE feature_cells(
+  layer INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  fid INTEGER NOT NULL,
+  PRIMARY KEY(layer, cell, fid)) WITHOUT ROWID;
+)sql";
+
 int32_t pragma_int(sqlite::Connection& conn, const char* sql) {
   auto q = conn.query(sql);
   return q.step() ? int32_t(q.int64(0)) : 0;
+}
+
+void set_version(sqlite::Connection& conn) {
+  conn.exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str());
+}
+
+// Brings a version 1 store (no features tables) to the current version.
+void migrate(sqlite::Connection& conn) {
+  conn.transaction([&] {
+    // Re-checked under the write lock: another process may have migrated it meanwhile.
+    if (pragma_int(conn, "PRAGMA user_version") >= kStoreSchemaVersion) return;
+    conn.exec(kFeaturesSchema);
+    set_version(conn);
+  });
 }
 
 [[noreturn]] void not_a_store(const sqlite::Connection& conn) {
@@ -88,11 +124,13 @@ void create_schema(sqlite::Connection& conn) {
       if (pragma_int(conn, "PRAGMA application_id") != 0) return;
       if (pragma_int(conn, "SELECT count(*) FROM sqlite_schema") != 0) not_a_store(conn);
       conn.exec(kSchema);
+      conn.exec(kFeaturesSchema);
       conn.exec(("PRAGMA application_id = " + std::to_string(kStoreApplicationId)).c_str());
-      conn.exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str());
+      set_version(conn);
     });
   }
   check_schema(conn);
+  if (pragma_int(conn, "PRAGMA user_version") < kStoreSchemaVersion) migrate(conn);
   conn.exec("PRAGMA journal_mode = WAL");
 }
 

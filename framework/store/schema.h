@@ -9,13 +9,16 @@
 namespace maquette {
 
 constexpr int32_t kStoreApplicationId = 0x4D515354;  // "MQST", PRAGMA application_id
-constexpr int32_t kStoreSchemaVersion = 1;           // PRAGMA user_version
+// PRAGMA user_version. 2 added features layers; version 1 stores are read as they are and
+// migrated when opened for writing.
+constexpr int32_t kStoreSchemaVersion = 2;
 
 // Sets the per-connection pragmas (busy timeout; synchronous=NORMAL for writers).
 void configure_connection(sqlite::Connection& conn, bool writer);
 
-// Creates the schema in an empty database (no-op if it is already a Maquette store) and
-// switches it to WAL. Throws "PATH is not a Maquette store" for a foreign database.
+// Creates the schema in an empty database (if it is already a Maquette store: migrates an
+// older version) and switches it to WAL. Throws "PATH is not a Maquette store" for a foreign
+// database.
 void create_schema(sqlite::Connection& conn);
 
 // Throws maquette::Error unless the database is a Maquette store of a readable version.

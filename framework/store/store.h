@@ -7,11 +7,13 @@
 // framework/store/README.md for the schema and blob encoding.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,10 +45,19 @@ struct LayerInfo {
 };
 
 struct LayerStats {
-  int64_t tile_count = 0;             // full-resolution tiles
+  int64_t tile_count = 0;             // full-resolution tiles; features layers: cells indexed
+  int64_t feature_count = 0;          // features layers: features stored
   int64_t bytes = 0;                  // compressed blob bytes, overview tiles included
   std::vector<int> levels;            // levels holding tiles (overviews, then base), ascending
-  std::optional<CellId> first, last;  // first and last full-resolution tile
+  std::optional<CellId> first, last;  // first and last full-resolution tile (or indexed cell)
+};
+
+// A vector feature of a `features` layer: stored once, indexed in every cell it touches.
+struct Feature {
+  int64_t fid = 0;                                       // unique within the layer
+  std::vector<std::byte> wkb;                            // geometry, WKB in WGS84 lon/lat
+  nlohmann::json attributes = nlohmann::json::object();  // typed values by field name
+  std::array<double, 4> bbox{};                          // west, south, east, north (degrees)
 };
 
 struct Artifact {
@@ -99,7 +110,13 @@ class Store {
     Batch& operator=(const Batch&) = delete;
     void put_tile(const std::string& layer, CellId cell, const RawTile& tile);
     void put_artifact(const Artifact& artifact);
+    // Writes (or replaces) a feature of a features layer and indexes it in `cells`, which must
+    // be at the layer's level; a replaced feature loses its old index entries.
+    void put_feature(const std::string& layer, const Feature& feature,
+                     std::span<const CellId> cells);
     void mark_done(int64_t run_id, int step, CellId cell);  // run record progress
+    // Progress of work not keyed by cells (e.g. a batch of features), in the same records.
+    void mark_done(int64_t run_id, int step, int64_t key);
     void commit();
 
    private:
@@ -109,6 +126,12 @@ class Store {
     std::unique_ptr<Pending> pending_;
   };
   void put_tile(const std::string& layer, CellId cell, const RawTile& tile);  // own transaction
+
+  // Features layers. features_in: the features indexed in cells with ids in [first, last]
+  // (pass a cell's range_min/max), each once, ordered by fid.
+  std::vector<Feature> features_in(const std::string& layer, CellId first, CellId last) const;
+  std::vector<CellId> feature_cells(const std::string& layer, int64_t fid) const;  // ascending
+  int64_t feature_count(const std::string& layer) const;
 
   // Overviews: coarser levels down to `min_level`, mean (continuous) or mode (categorical),
   // nodata-aware. Built on demand; tiles written since mark their ancestors stale, and
@@ -126,7 +149,8 @@ class Store {
   int64_t begin_run(const nlohmann::json& pipeline);
   std::optional<int64_t> latest_unfinished_run(const nlohmann::json& pipeline) const;
   std::vector<CellId> done_cells(int64_t run_id, int step) const;
-  void finish_run(int64_t run_id, const std::string& status);  // "ok" | "failed: ..."
+  std::vector<int64_t> done_keys(int64_t run_id, int step) const;  // ascending
+  void finish_run(int64_t run_id, const std::string& status);      // "ok" | "failed: ..."
 
   int64_t file_size() const;
   bool integrity_ok() const;  // PRAGMA integrity_check == "ok"

@@ -93,6 +93,21 @@ LayerInfo normalized_layer(const LayerInfo& info);
 // Provenance is not part of the definition.
 std::string layer_difference(const LayerInfo& a, const LayerInfo& b);
 
+// A feature checked against its layer and ready to write (features.cpp).
+struct FeatureWrite {
+  int64_t layer = 0;
+  Feature feature;
+  std::vector<CellId> cells;  // sorted, unique
+};
+// Throws maquette::Error naming the layer and fid unless the layer holds features and the cells
+// are valid cells at its level.
+FeatureWrite feature_write(const LayerEntry& layer, const std::string& store_path,
+                           const Feature& feature, std::span<const CellId> cells);
+// Writes (or replaces) the feature and its index entries, inside the caller's transaction.
+void write_feature(sqlite::Connection& conn, const FeatureWrite& write);
+// Store::stats of a features layer: indexed cells as tiles, bytes of features and cell lists.
+LayerStats feature_stats(sqlite::Connection& conn, const LayerEntry& layer);
+
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
 

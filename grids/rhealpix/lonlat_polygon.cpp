@@ -13,6 +13,38 @@ constexpr double kShifts[] = {-360, 0, 360};
 
 bool overlaps(double lo, double hi, double a, double b) { return a <= hi && b >= lo; }
 
+// Twice the signed area of the triangle a b c: > 0 when c is left of a -> b.
+double orient(LonLat a, LonLat b, LonLat c) {
+  return (b.lon - a.lon) * (c.lat - a.lat) - (b.lat - a.lat) * (c.lon - a.lon);
+}
+
+// Whether the closed segments a b and c d meet (touching counts).
+bool segments_meet(LonLat a, LonLat b, LonLat c, LonLat d) {
+  if (std::max(a.lon, b.lon) < std::min(c.lon, d.lon) ||
+      std::max(c.lon, d.lon) < std::min(a.lon, b.lon) ||
+      std::max(a.lat, b.lat) < std::min(c.lat, d.lat) ||
+      std::max(c.lat, d.lat) < std::min(a.lat, b.lat)) {
+    return false;
+  }
+  const double d1 = orient(a, b, c), d2 = orient(a, b, d);
+  if (d1 == 0 && d2 == 0) return true;  // collinear, and the bounding boxes overlap
+  const double d3 = orient(c, d, a), d4 = orient(c, d, b);
+  return !((d1 > 0 && d2 > 0) || (d1 < 0 && d2 < 0) || (d3 > 0 && d4 > 0) || (d3 < 0 && d4 < 0));
+}
+
+// Crossing number of p against the closed ring shifted by `shift` in longitude.
+bool in_ring(std::span<const LonLat> ring, double shift, LonLat p) {
+  bool inside = false;
+  for (size_t i = 0; i + 1 < ring.size(); ++i) {
+    const LonLat a = ring[i], b = ring[i + 1];
+    if ((a.lat > p.lat) != (b.lat > p.lat) &&
+        p.lon < a.lon + shift + (p.lat - a.lat) / (b.lat - a.lat) * (b.lon - a.lon)) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
 }  // namespace
 
 LonLatPolygon::LonLatPolygon(const std::vector<std::vector<LonLat>>& rings) {
@@ -102,6 +134,44 @@ Relation LonLatPolygon::relate(const LonLatRect& r, std::span<const uint32_t> ca
   std::sort(crossing.begin(), crossing.end());
   crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
   return crossing.empty() ? Relation::Disjoint : Relation::Crosses;
+}
+
+// The ring shifted by `shift` against the unshifted polygon. With no contact between the
+// boundaries, each ring of the polygon lies wholly inside or wholly outside the ring (then one
+// of its vertices tells, and its edges, meeting the enclosing rectangle, are candidates), and
+// the ring wholly inside or outside the polygon (its first point tells).
+Relation LonLatPolygon::relate_ring_shifted(std::span<const LonLat> ring, double shift,
+                                            std::span<const uint32_t> candidates) const {
+  for (const uint32_t i : candidates) {
+    const Edge& e = edges_[i];
+    for (size_t j = 0; j + 1 < ring.size(); ++j) {
+      const LonLat a{ring[j].lon + shift, ring[j].lat}, b{ring[j + 1].lon + shift, ring[j + 1].lat};
+      if (segments_meet(e.a, e.b, a, b)) return Relation::Crosses;
+    }
+  }
+  for (const uint32_t i : candidates) {
+    if (in_ring(ring, shift, edges_[i].a)) return Relation::Crosses;
+  }
+  return contains_unshifted(ring[0].lon + shift, ring[0].lat) ? Relation::Inside
+                                                              : Relation::Disjoint;
+}
+
+Relation LonLatPolygon::relate_ring(std::span<const LonLat> ring,
+                                    std::span<const uint32_t> candidates) const {
+  LonLatRect r{1e300, 90, -1e300, -90};
+  for (const LonLat& p : ring) {
+    r = {std::min(r.west, p.lon), std::min(r.south, p.lat), std::max(r.east, p.lon),
+         std::max(r.north, p.lat)};
+  }
+  if (!overlaps(bounds_.south, bounds_.north, r.south, r.north)) return Relation::Disjoint;
+  bool crosses = false;
+  for (const double s : kShifts) {
+    if (!overlaps(bounds_.west, bounds_.east, r.west + s, r.east + s)) continue;
+    const Relation relation = relate_ring_shifted(ring, s, candidates);
+    if (relation == Relation::Inside) return Relation::Inside;
+    crosses = crosses || relation == Relation::Crosses;
+  }
+  return crosses ? Relation::Crosses : Relation::Disjoint;
 }
 
 }  // namespace maquette

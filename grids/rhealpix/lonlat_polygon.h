@@ -33,6 +33,12 @@ class LonLatPolygon {
   // an enclosing rectangle); those crossing this one are written to `crossing`.
   Relation relate(const LonLatRect& r, std::span<const uint32_t> candidates,
                   std::vector<uint32_t>& crossing) const;
+  // A closed ring (a simple polygon, closed by repeating its first point, with continuous
+  // longitudes, e.g. a densified cell boundary) against the polygon: Disjoint if their interiors
+  // do not meet, Inside if the ring lies in the polygon, else Crosses. A ring touching the
+  // polygon's boundary counts as crossing it. Only `candidates` edges are tested for meeting the
+  // ring (the edges meeting an open rectangle holding it); containment uses every edge.
+  Relation relate_ring(std::span<const LonLat> ring, std::span<const uint32_t> candidates) const;
   bool contains(LonLat p) const;
 
  private:
@@ -42,6 +48,8 @@ class LonLatPolygon {
   };
   bool contains_unshifted(double lon, double lat) const;
   bool crosses_interior(const Edge& e, const LonLatRect& r) const;
+  Relation relate_ring_shifted(std::span<const LonLat> ring, double shift,
+                               std::span<const uint32_t> candidates) const;
 
   std::vector<Edge> edges_;
   LonLatRect bounds_;

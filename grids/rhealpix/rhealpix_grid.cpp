@@ -17,13 +17,6 @@ double unwrap(double lon, double previous) {
 
 }  // namespace
 
-void RHealpixGrid::check_level(int level) {
-  if (level < 0 || level > CellId::kMaxLevel) {
-    throw Error("invalid level " + std::to_string(level) + ": expected 0.." +
-                std::to_string(CellId::kMaxLevel));
-  }
-}
-
 void RHealpixGrid::check_cell(CellId cell) {
   if (!cell.is_valid()) throw Error("invalid cell id " + std::to_string(cell.id()));
 }
@@ -38,7 +31,7 @@ LonLat RHealpixGrid::inverse(PlanePoint p) const {
 
 void RHealpixGrid::cells_from_points(std::span<const LonLat> points, int level,
                                      std::span<CellId> out) const {
-  check_level(level);
+  CellId::CheckLevel(level);
   if (out.size() != points.size()) {
     throw Error("cells_from_points: " + std::to_string(points.size()) + " points but room for " +
                 std::to_string(out.size()) + " cells");
@@ -107,7 +100,7 @@ std::vector<LonLat> RHealpixGrid::boundary(CellId cell, int points_per_edge) con
 }
 
 double RHealpixGrid::area(int level) const {
-  check_level(level);
+  CellId::CheckLevel(level);
   const double r = projection_.radius();
   return 4 * kPi * r * r / (6 * std::ldexp(1.0, 2 * level));
 }
@@ -168,7 +161,7 @@ std::vector<CellId> RHealpixGrid::vertex_neighbours(CellId cell) const {
 
 std::vector<CellId> RHealpixGrid::cover_bbox(double west, double south, double east, double north,
                                              int level, Containment mode) const {
-  check_level(level);
+  CellId::CheckLevel(level);
   if (!(south >= -90 && north <= 90 && south <= north) || !std::isfinite(west) ||
       !std::isfinite(east)) {
     throw Error("invalid bbox west " + std::to_string(west) + ", south " + std::to_string(south) +
@@ -187,7 +180,7 @@ std::vector<CellId> RHealpixGrid::cover_bbox(double west, double south, double e
 
 std::vector<CellId> RHealpixGrid::cover_polygon(const std::vector<std::vector<LonLat>>& rings,
                                                 int level, Containment mode) const {
-  check_level(level);
+  CellId::CheckLevel(level);
   return cover(projection_, LonLatPolygon(rings), level, mode);
 }
 

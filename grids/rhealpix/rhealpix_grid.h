@@ -17,7 +17,7 @@ class RHealpixGrid final : public Grid {
   LonLat inverse(PlanePoint p) const override;
 
   CellId cell_from_point(LonLat p, int level) const override {
-    check_level(level);
+    CellId::CheckLevel(level);
     return cell_at(projection_.to_face(p), level);
   }
   void cells_from_points(std::span<const LonLat> points, int level,
@@ -41,7 +41,6 @@ class RHealpixGrid final : public Grid {
   const RHealpixProjection& projection() const { return projection_; }
 
  private:
-  static void check_level(int level);
   static void check_cell(CellId cell);
 
   // The floor rule, clamped to the face: a point on an inner edge goes to the lower row and

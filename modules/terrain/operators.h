@@ -9,5 +9,6 @@ namespace maquette::terrain {
 
 std::unique_ptr<Operator> make_synthesize();
 std::unique_ptr<Operator> make_derive();
+std::unique_ptr<Operator> make_fill_voids();
 
 }  // namespace maquette::terrain

@@ -1,14 +1,14 @@
 // The `maquette` program as a user runs it: exact outputs of the documented forms, checked
 // against the DESIGN.md reference table, PROJ and GeographicLib; and every bad input gives a
 // clear message and a non-zero exit without touching the store.
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <proj.h>
 
+#include <GeographicLib/Geodesic.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <set>
 #include <sstream>
@@ -37,8 +37,8 @@ TEST(CliCells, FromPointMatchesTheDesignReferenceTable) {
                       {"-43.2 -22.9", "P3", "P320", "P32002121"}};
   for (const Ref& r : refs) {
     for (auto [level, want] : {std::pair{1, r.l1}, {3, r.l3}, {8, r.l8}}) {
-      const CliResult res =
-          run_maquette(std::string("cells from-point ") + r.lonlat + " --level " + std::to_string(level));
+      const CliResult res = run_maquette(std::string("cells from-point ") + r.lonlat + " --level " +
+                                         std::to_string(level));
       ASSERT_EQ(res.exit_code, 0) << res.err;
       EXPECT_EQ(trim(res.out), want) << r.lonlat << " level " << level;
     }
@@ -55,7 +55,8 @@ TEST(CliCells, InfoAgreesWithProjAndGeographicLib) {
   const double ellipsoid_area = GeographicLib::Geodesic::WGS84().EllipsoidArea();
   EXPECT_NEAR(j["area_m2"].get<double>(), ellipsoid_area / (6.0 * std::pow(4.0, 8)), 1e-3);
   // The centre projects (PROJ) to the middle of the plane square.
-  PJ* pj = proj_create(PJ_DEFAULT_CTX, "+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0");
+  PJ* pj =
+      proj_create(PJ_DEFAULT_CTX, "+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0");
   ASSERT_NE(pj, nullptr);
   auto forward = [pj](double lon, double lat) {
     return proj_trans(pj, PJ_FWD, proj_coord(proj_torad(lon), proj_torad(lat), 0, 0)).xy;
@@ -88,7 +89,8 @@ TEST(CliCells, CoverHoldsTheCellOfEveryPointInTheBox) {
   for (int i = 0; i < 20; ++i) {
     std::ostringstream args;
     args.precision(10);
-    args << "cells from-point " << std::remainder(lon(rng), 360.0) << " " << lat(rng) << " --level 5";
+    args << "cells from-point " << std::remainder(lon(rng), 360.0) << " " << lat(rng)
+         << " --level 5";
     const CliResult p = run_maquette(args.str());
     ASSERT_EQ(p.exit_code, 0) << p.err;
     EXPECT_TRUE(cover.count(trim(p.out))) << args.str() << " -> " << p.out;
@@ -103,7 +105,8 @@ TEST(CliCells, LevelsTableListsEveryLevel) {
   const double ellipsoid_area = GeographicLib::Geodesic::WGS84().EllipsoidArea();
   for (const json& r : rows) {
     const int level = r["level"];
-    EXPECT_NEAR(r["area_m2"].get<double>() / (ellipsoid_area / (6.0 * std::pow(4.0, level))), 1.0, 1e-9);
+    EXPECT_NEAR(r["area_m2"].get<double>() / (ellipsoid_area / (6.0 * std::pow(4.0, level))), 1.0,
+                1e-9);
     EXPECT_NEAR(r["pixel_m"].get<double>(), r["cell_side_m"].get<double>() / 256, 1e-9);
   }
 }

@@ -1,5 +1,6 @@
 #include "run_cli.h"
 
+#include <spawn.h>
 #include <sys/wait.h>
 
 #include <cstdint>
@@ -48,13 +49,26 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
   const std::string dir = temp_dir();
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   const std::string prefix = env.empty() ? "" : "env " + env + " ";
-  const std::string cmd = prefix + MAQUETTE_BIN_DIR + "/maquette " + args + " >" + out + " 2>" + err;
+  const std::string cmd =
+      prefix + MAQUETTE_BIN_DIR + "/maquette " + args + " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+int spawn_maquette(const std::string& args, const std::string& env) {
+  const std::string prefix = env.empty() ? "" : "env " + env + " ";
+  // exec, so that the pid is maquette's own and SIGKILL reaches it, not a shell.
+  const std::string cmd =
+      "exec " + prefix + MAQUETTE_BIN_DIR + "/maquette " + args + " >/dev/null 2>&1";
+  const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+  pid_t pid = 0;
+  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)
+    return -1;
+  return pid;
 }
 
 std::string file_fingerprint(const std::string& path) {

@@ -15,6 +15,9 @@ struct CliResult {
 // added to the environment.
 CliResult run_maquette(const std::string& args, const std::string& env = "");
 
+// Starts `maquette ARGS` (output discarded) and returns its process id, for tests that kill it.
+int spawn_maquette(const std::string& args, const std::string& env = "");
+
 // A fresh empty directory under the system temp dir, removed at process exit.
 std::string temp_dir();
 

@@ -3,11 +3,16 @@
 //   fixture.blur         cell, halo 1: 3x3 NaN-aware mean, so a result depends on neighbours;
 //   fixture.sum          reduce: float sum of a layer, merged in float, so merge order shows;
 //   fixture.region_scan  region: a running sum along each mosaic row (depends on the whole row).
-// fill and blur take sleep_ms (per cell, to make runs slow enough to kill) and fail_on (a cell id
-// on which they throw).
+// fill and blur take sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
+// they throw on it and its descendants) and fail_with ("exception": a std::runtime_error, "int":
+// an int). They record the threads they run on: fixture_thread_count() (a C entry point the tests
+// find with dlsym) tells how many distinct threads ran them since fixture_reset_threads().
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <memory>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -22,7 +27,11 @@ using maquette::OperatorSpec;
 
 const json kSlowAndFailing = {
     {"sleep_ms", {{"type", "integer"}, {"minimum", 0}, {"maximum", 10000}, {"default", 0}}},
-    {"fail_on", {{"type", "string"}, {"default", ""}}}};
+    {"fail_on", {{"type", "string"}, {"default", ""}}},
+    {"fail_with", {{"type", "string"}, {"enum", {"exception", "int"}}, {"default", "exception"}}}};
+
+std::mutex threads_mutex;
+std::set<std::thread::id> threads_seen;
 
 json schema(json properties, json required = json::array()) {
   properties.update(kSlowAndFailing);
@@ -49,10 +58,17 @@ OperatorSpec make_spec(const std::string& name, const std::string& description,
 }
 
 void slow_and_failing(const CellContext& ctx) {
+  {
+    std::lock_guard lock(threads_mutex);
+    threads_seen.insert(std::this_thread::get_id());
+  }
   const json& p = *ctx.params;
   std::this_thread::sleep_for(std::chrono::milliseconds(p.at("sleep_ms").get<int>()));
-  if (ctx.cell.ToText() == p.at("fail_on").get<std::string>())
+  const std::string fail_on = p.at("fail_on").get<std::string>();
+  if (!fail_on.empty() && ctx.cell.ToText().starts_with(fail_on)) {
+    if (p.at("fail_with") == "int") throw 42;
     throw std::runtime_error("fixture failure requested");
+  }
 }
 
 class Fill : public maquette::CellOperator {
@@ -184,3 +200,13 @@ std::unique_ptr<maquette::Operator> make() {
 MAQUETTE_MODULE("fixture", "0.0.1", "Operators for the runtime tests",
                 {"fixture.fill", &make<Fill>}, {"fixture.blur", &make<Blur>},
                 {"fixture.sum", &make<Sum>}, {"fixture.region_scan", &make<RegionScan>})
+
+extern "C" __attribute__((visibility("default"))) size_t fixture_thread_count() {
+  std::lock_guard lock(threads_mutex);
+  return threads_seen.size();
+}
+
+extern "C" __attribute__((visibility("default"))) void fixture_reset_threads() {
+  std::lock_guard lock(threads_mutex);
+  threads_seen.clear();
+}

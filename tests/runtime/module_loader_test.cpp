@@ -91,6 +91,7 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   r.print(text);
   EXPECT_THAT(text.str(), HasSubstr("fixture 0.0.1: Operators for the runtime tests"));
   EXPECT_THAT(text.str(), HasSubstr("fixture.blur (cell, halo 1)"));
+  EXPECT_THAT(text.str(), HasSubstr("output dst float32 x1 continuous nodata -9999.0: the result"));
   EXPECT_THAT(text.str(), HasSubstr("fixture.sum (reduce)"));
   EXPECT_THAT(text.str(), HasSubstr("seed number (required)"));
   EXPECT_THAT(text.str(), HasSubstr("sleep_ms integer = 0 [0..10000]"));

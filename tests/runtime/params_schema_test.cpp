@@ -48,6 +48,15 @@ TEST(ParamsSchema, NamesStepFieldAndValue) {
   EXPECT_EQ(err(json::object()), "step 2 (terrain.derive): params: missing required field 'x'");
   EXPECT_EQ(err({{"x", 1}, {"steps", 1.5}}),
             "step 2 (terrain.derive): params.steps: expected an integer, got 1.5");
+  // Whole doubles become int64: out of range is an error, not an undefined cast.
+  EXPECT_EQ(err({{"x", 1}, {"steps", 1e300}}),
+            "step 2 (terrain.derive): params.steps: 1e+300 is outside the 64-bit integer range");
+  EXPECT_EQ(err({{"x", 1}, {"steps", 0x1p63}}),
+            "step 2 (terrain.derive): params.steps: 9.223372036854776e+18 is outside the 64-bit "
+            "integer range");
+  EXPECT_EQ(err({{"x", 1}, {"steps", 18446744073709551615u}}),
+            "step 2 (terrain.derive): params.steps: 18446744073709551615 is outside the 64-bit "
+            "integer range");
   EXPECT_EQ(err({{"x", 1}, {"mode", "median"}}),
             "step 2 (terrain.derive): params.mode: \"median\" is not one of [\"mean\",\"max\"]");
   EXPECT_EQ(err({{"x", 1}, {"weights", {1, "w"}}}),

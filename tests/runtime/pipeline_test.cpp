@@ -106,6 +106,10 @@ TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
   doc = demo_pipeline();
   doc["level"] = 30;
   EXPECT_EQ(parse_error(doc), "p.json: level: 30 is outside 0..29");
+  doc["level"] = 4294967300;  // 4 when truncated to 32 bits
+  EXPECT_EQ(parse_error(doc), "p.json: level: 4294967300 is outside 0..29");
+  doc["level"] = -18446744073709551;
+  EXPECT_EQ(parse_error(doc), "p.json: level: -18446744073709551 is outside 0..29");
   doc["level"] = "8";
   EXPECT_EQ(parse_error(doc), "p.json: level: expected an integer, got \"8\"");
   doc = demo_pipeline();
@@ -115,7 +119,10 @@ TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
   EXPECT_THAT(parse_error(doc), HasSubstr("p.json: region: unknown field 'circle'"));
   doc = demo_pipeline();
   doc["tile_size"] = 100;
-  EXPECT_EQ(parse_error(doc), "p.json: tile_size: 100 is not a power of two in 1..4096");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: tile_size: tile size 100 is not a power of two in [1, 4096]");
+  doc["tile_size"] = 4294967312;  // 16 when truncated to 32 bits
+  EXPECT_EQ(parse_error(doc), "p.json: tile_size: 4294967312 is outside -2147483648..2147483647");
   doc.erase("store");
   EXPECT_EQ(parse_error(doc), "p.json: store: missing required field");
 }

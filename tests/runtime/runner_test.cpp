@@ -3,6 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "runtime/run_plan.h"
+#include "runtime/step_io.h"
 #include "store/store.h"
 #include "test_util.h"
 
@@ -42,14 +48,23 @@ TEST(Runner, WritesEveryLayerAndArtifact) {
 }
 
 // The blur reads neighbours through the halo and the float sum depends on merge order: both
-// must give the same bits whatever the thread count.
+// must give the same bits whatever the thread count, and the threads must really run cells.
 TEST(Runner, SameBitsWithOneTwoAndFourThreads) {
   test::TempDir one, two, four;
-  run_in(one, demo_pipeline(), 1);
-  run_in(two, demo_pipeline(), 2);
-  run_in(four, demo_pipeline(), 4);
+  std::map<int, size_t> threads_seen;
+  for (const auto& [threads, dir] :
+       {std::pair<int, test::TempDir*>{1, &one}, {2, &two}, {4, &four}}) {
+    test::reset_fixture_threads();
+    run_in(*dir, demo_pipeline(1, 1), threads);  // slow cells, so that every thread gets some
+    threads_seen[threads] = test::fixture_threads();
+  }
+  EXPECT_EQ(threads_seen[1], 1u);
+  EXPECT_GT(threads_seen[2], 1u);
+  EXPECT_GT(threads_seen[4], 2u);  // more threads than the 2 cores of a small machine
+  EXPECT_LE(threads_seen[4], 4u);
   const auto reference = test::snapshot(one.file("out.mqt"));
-  EXPECT_EQ(reference.size(), 3u * 64u + 1u);
+  // 3 layers of 64 tiles at level 4 with overviews at levels 3 to 0 (16, 4, 1, 1), one artifact.
+  EXPECT_EQ(reference.size(), 3u * (64u + 16u + 4u + 1u + 1u) + 1u);
   EXPECT_EQ(test::first_difference(reference, test::snapshot(two.file("out.mqt"))), "");
   EXPECT_EQ(test::first_difference(reference, test::snapshot(four.file("out.mqt"))), "");
 }
@@ -85,6 +100,90 @@ TEST(Runner, FailingOperatorNamesStepAndCellAndKeepsEarlierTiles) {
   for (const CellId c : written)
     EXPECT_EQ(store->get_tile("smooth", c)->bytes, before.at("smooth/" + c.ToText()));
   EXPECT_FALSE(store->get_artifact("smooth_sum").has_value());
+}
+
+// Cells 16..31 (Q21...) fail: the cell reported is the first of them whatever the thread count,
+// and every cell before it is written.
+TEST(Runner, ReportedFailureIsTheLowestFailingCell) {
+  const json doc = demo_pipeline(0, 1, "Q21");
+  for (const int threads : {1, 2, 4}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    test::TempDir dir;
+    const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+    EXPECT_EQ(error_of([&] { run_in(dir, doc, threads); }),
+              "step 2 (fixture.blur) failed on cell " + p.region[16].ToText() +
+                  ": fixture failure requested");
+    const auto written =
+        Store::open(dir.file("out.mqt"), Store::Mode::ReadOnly)->tile_cells("smooth");
+    EXPECT_EQ(std::vector<CellId>(written.begin(), written.begin() + 16),
+              std::vector<CellId>(p.region.begin(), p.region.begin() + 16));
+  }
+}
+
+TEST(Runner, OperatorThrowingANonStandardExceptionFailsTheRun) {
+  test::TempDir dir;
+  json doc = demo_pipeline(0, 0, "Q2013");
+  doc["steps"][1]["params"]["fail_with"] = "int";
+  const std::string expected = "step 2 (fixture.blur) failed on cell Q2013: unknown exception";
+  EXPECT_EQ(error_of([&] { run_in(dir, doc, 2); }), expected);
+  EXPECT_EQ(test::run_statuses(dir.file("out.mqt")),
+            std::vector<std::string>{"failed: " + expected});
+}
+
+// The run's identity includes the cells a region file resolves to: after the file changes,
+// --resume starts a new run instead of skipping cells of another region.
+TEST(Runner, ResumeNeedsTheSameRegionCells) {
+  test::TempDir dir;
+  auto write_region = [&](double east) {
+    std::ofstream(dir.file("region.geojson"))
+        << json{{"type", "Polygon"},
+                {"coordinates", {{{0, 0}, {east, 0}, {east, 10}, {0, 10}, {0, 0}}}}}
+               .dump();
+  };
+  json doc = demo_pipeline(0, 0, "Q");  // every cell of face Q fails
+  doc["region"] = {{"geojson", "region.geojson"}};
+  doc["steps"] = json::array({doc["steps"][0], doc["steps"][1]});
+  auto resume = [&] {
+    RunOptions options;
+    options.threads = 2;
+    options.quiet = true;
+    options.resume = true;
+    error_of([&] {
+      run_pipeline(test::load_fixture_pipeline(test::write_pipeline(dir, doc)), options);
+    });
+    return test::run_statuses(dir.file("out.mqt")).size();
+  };
+  write_region(10);
+  EXPECT_EQ(resume(), 1u);
+  EXPECT_THAT(test::run_statuses(dir.file("out.mqt"))[0], testing::StartsWith("failed: "));
+  EXPECT_EQ(resume(), 1u);  // the same run, resumed
+  write_region(20);
+  EXPECT_EQ(resume(), 2u);  // a new run
+}
+
+// A region step's mosaic (16 x 16 cells of 4096 pixels here) is refused before anything runs.
+TEST(Runner, RegionMosaicSizeIsLimited) {
+  test::TempDir dir;
+  json doc = demo_pipeline();
+  doc["level"] = 5;
+  doc["tile_size"] = 4096;
+  EXPECT_EQ(error_of([&] { run_in(dir, doc, 2); }),
+            "step 4 (fixture.region_scan): the region's mosaic would be 65536 x 65536 samples, "
+            "above the limit of 16384 x 16384");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.mqt")));
+}
+
+// Each input tile of a halo step is decoded once, not once per neighbouring cell.
+TEST(Runner, HaloTilesAreDecodedOnce) {
+  test::TempDir dir;
+  run_in(dir, demo_pipeline(), 2);
+  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, demo_pipeline()));
+  const auto store = Store::open(dir.file("out.mqt"), Store::Mode::ReadWrite);
+  const RunPlan plan = plan_run(p, store.get(), 1);
+  const StepPlan& blur = plan.steps[1];
+  StepIO io(*store, blur, 0);
+  for (const CellId cell : blur.cells.cells()) io.load(cell, 1);
+  EXPECT_EQ(io.decoded(), 64);
 }
 
 TEST(Runner, RegionOperatorNeedsOneFace) {

@@ -1,9 +1,12 @@
 #include "test_util.h"
 
+#include <dlfcn.h>
+#include <sqlite3.h>
 #include <stdlib.h>
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 #include "store/store.h"
 
@@ -17,6 +20,19 @@ const OperatorRegistry& fixture_registry() {
   static const OperatorRegistry registry = OperatorRegistry::load({fixture_dir("good")});
   return registry;
 }
+
+// A C entry point of the fixture module (already loaded by fixture_registry()).
+template <typename F>
+F* fixture_function(const char* name) {
+  fixture_registry();
+  void* module =
+      dlopen((fixture_dir("good") + "/libfixture_ops.so").c_str(), RTLD_NOW | RTLD_NOLOAD);
+  if (module == nullptr) throw std::runtime_error("the fixture module is not loaded");
+  return reinterpret_cast<F*>(dlsym(module, name));
+}
+
+size_t fixture_threads() { return fixture_function<size_t()>("fixture_thread_count")(); }
+void reset_fixture_threads() { fixture_function<void()>("fixture_reset_threads")(); }
 
 TempDir::TempDir() {
   std::string templ = (std::filesystem::temp_directory_path() / "maquette_runtime_XXXXXX").string();
@@ -61,11 +77,33 @@ Pipeline load_fixture_pipeline(const std::string& path) {
 Snapshot snapshot(const std::string& store_path) {
   Snapshot out;
   const auto store = Store::open(store_path, Store::Mode::ReadOnly);
-  for (const LayerInfo& layer : store->layers())
-    for (const CellId cell : store->tile_cells(layer.name))
+  for (const LayerInfo& layer : store->layers()) {
+    for (const CellId cell : store->tile_cells(layer.name)) {
       out[layer.name + "/" + cell.ToText()] = store->get_tile(layer.name, cell)->bytes;
+      // The overview tiles: every ancestor of a tile, down to level 0.
+      for (int level = layer.level - 1; level >= 0; --level) {
+        const CellId parent = cell.parent(level);
+        if (out.count(layer.name + "/overview/" + parent.ToText())) break;  // seen from a sibling
+        if (const auto tile = store->get_overview(layer.name, parent))
+          out[layer.name + "/overview/" + parent.ToText()] = tile->bytes;
+      }
+    }
+  }
   for (const std::string& name : store->artifact_names())
     out["artifact/" + name] = store->get_artifact(name)->data;
+  return out;
+}
+
+std::vector<std::string> run_statuses(const std::string& store_path) {
+  sqlite3* db = nullptr;
+  sqlite3_open_v2(store_path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+  sqlite3_stmt* q = nullptr;
+  sqlite3_prepare_v2(db, "SELECT status FROM runs ORDER BY id", -1, &q, nullptr);
+  std::vector<std::string> out;
+  while (sqlite3_step(q) == SQLITE_ROW)
+    out.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(q, 0)));
+  sqlite3_finalize(q);
+  sqlite3_close(db);
   return out;
 }
 

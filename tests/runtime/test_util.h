@@ -31,6 +31,10 @@ class TempDir {
 
 // fill(seed) -> height; blur(height) -> smooth; sum(smooth) -> smooth_sum; region_scan(smooth) ->
 // scan, over the cells of `region` at level 4 (Q2: 64 cells), 16-pixel tiles, store "out.mqt".
+// The number of distinct threads that ran fixture.fill or fixture.blur since the last reset.
+size_t fixture_threads();
+void reset_fixture_threads();
+
 nlohmann::json demo_pipeline(int fill_sleep_ms = 0, int blur_sleep_ms = 0,
                              const std::string& blur_fail_on = "",
                              const nlohmann::json& cells = {"Q2"});
@@ -39,11 +43,15 @@ nlohmann::json demo_pipeline(int fill_sleep_ms = 0, int blur_sleep_ms = 0,
 std::string write_pipeline(const TempDir& dir, const nlohmann::json& doc);
 Pipeline load_fixture_pipeline(const std::string& path);
 
-// "layer/cell" -> tile bytes for every tile, "artifact/name" -> data for every artifact.
+// "layer/cell" -> tile bytes for every tile, "layer/overview/cell" -> bytes for every overview
+// tile, "artifact/name" -> data for every artifact.
 using Snapshot = std::map<std::string, std::vector<std::byte>>;
 Snapshot snapshot(const std::string& store_path);
 // The first key where the snapshots differ, or "" when they are equal.
 std::string first_difference(const Snapshot& a, const Snapshot& b);
+
+// The status of every run record of a store, by run id ("running", "ok", "failed: ...").
+std::vector<std::string> run_statuses(const std::string& store_path);
 
 // The message of the maquette::Error `f` throws ("" if none).
 template <typename F>

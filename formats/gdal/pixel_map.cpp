@@ -1,0 +1,90 @@
+#include "gdal/pixel_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace maquette {
+
+void PixelMapper::exact(CellId cell, int size, std::vector<double>& x, std::vector<double>& y) {
+  // In: tile sample coordinates (col, row); out: source pixel coordinates.
+  const PlaneSquare sq = grid_.plane_square(cell);
+  const double d = sq.side / size;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const LonLat p = grid_.inverse({sq.x_min + (x[i] + 0.5) * d, sq.y_max - (y[i] + 0.5) * d});
+    x[i] = p.lon;
+    y[i] = p.lat;
+  }
+  transform_.to_pixel(x, y);
+}
+
+void PixelMapper::map(CellId cell, int size, PixelMap& out) {
+  out.size = size;
+  const size_t n = size_t(size) * size_t(size);
+  out.x.assign(n, 0);
+  out.y.assign(n, 0);
+  // Lattice columns/rows: 0, kStep, 2 kStep, ..., and the last sample.
+  std::vector<int> ticks;
+  for (int t = 0; t < size - 1; t += kStep) ticks.push_back(t);
+  ticks.push_back(size - 1);
+  const size_t m = ticks.size();
+  std::vector<double> lx(m * m), ly(m * m);
+  for (size_t j = 0; j < m; ++j)
+    for (size_t i = 0; i < m; ++i) {
+      lx[j * m + i] = ticks[i];
+      ly[j * m + i] = ticks[j];
+    }
+  exact(cell, size, lx, ly);
+
+  std::vector<double> bx, by;
+  for (size_t j = 0; j + 1 < std::max<size_t>(m, 2); ++j) {
+    for (size_t i = 0; i + 1 < std::max<size_t>(m, 2); ++i) {
+      const int c0 = ticks[std::min(i, m - 1)], c1 = ticks[std::min(i + 1, m - 1)];
+      const int r0 = ticks[std::min(j, m - 1)], r1 = ticks[std::min(j + 1, m - 1)];
+      const size_t k00 = std::min(j, m - 1) * m + std::min(i, m - 1);
+      const size_t k01 = k00 + (c1 > c0), k10 = k00 + (r1 > r0) * m, k11 = k10 + (c1 > c0);
+      const auto interp = [&](const std::vector<double>& v, double fc, double fr) {
+        return (1 - fr) * ((1 - fc) * v[k00] + fc * v[k01]) +
+               fr * ((1 - fc) * v[k10] + fc * v[k11]);
+      };
+      // Check the block's centre against the exact transform.
+      bool linear = !std::isnan(lx[k00] + lx[k01] + lx[k10] + lx[k11]);
+      if (linear && c1 - c0 > 1) {
+        bx = {0.5 * (c0 + c1)};
+        by = {0.5 * (r0 + r1)};
+        exact(cell, size, bx, by);
+        linear = std::abs(bx[0] - interp(lx, 0.5, 0.5)) <= kMaxError &&
+                 std::abs(by[0] - interp(ly, 0.5, 0.5)) <= kMaxError;
+      }
+      // The block's samples: [c0, c1] x [r0, r1], the last column/row only at the tile's edge.
+      const int ce = c1 == size - 1 ? c1 + 1 : c1, re = r1 == size - 1 ? r1 + 1 : r1;
+      if (linear) {
+        const double wc = std::max(1, c1 - c0), wr = std::max(1, r1 - r0);
+        for (int r = r0; r < re; ++r)
+          for (int c = c0; c < ce; ++c) {
+            const size_t k = size_t(r) * size_t(size) + size_t(c);
+            out.x[k] = interp(lx, (c - c0) / wc, (r - r0) / wr);
+            out.y[k] = interp(ly, (c - c0) / wc, (r - r0) / wr);
+          }
+        continue;
+      }
+      bx.clear();
+      by.clear();
+      for (int r = r0; r < re; ++r)
+        for (int c = c0; c < ce; ++c) {
+          bx.push_back(c);
+          by.push_back(r);
+        }
+      exact(cell, size, bx, by);
+      size_t q = 0;
+      for (int r = r0; r < re; ++r)
+        for (int c = c0; c < ce; ++c, ++q) {
+          const size_t k = size_t(r) * size_t(size) + size_t(c);
+          out.x[k] = bx[q];
+          out.y[k] = by[q];
+        }
+    }
+  }
+}
+
+}  // namespace maquette

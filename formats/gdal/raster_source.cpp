@@ -1,0 +1,216 @@
+#include "gdal/raster_source.h"
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "gdal/class_table.h"
+#include "gdal/gdal_env.h"
+
+namespace maquette {
+namespace {
+
+DType dtype_from_gdal(GDALDataType t, const std::string& where) {
+  switch (t) {
+    case GDT_Byte:
+      return DType::U8;
+    case GDT_UInt16:
+      return DType::U16;
+    case GDT_Int16:
+      return DType::I16;
+    case GDT_UInt32:
+      return DType::U32;
+    case GDT_Int32:
+      return DType::I32;
+    case GDT_Float32:
+      return DType::F32;
+    case GDT_Float64:
+      return DType::F64;
+    default:
+      throw Error(where + ": data type " + GDALGetDataTypeName(t) +
+                  " is not supported (byte, (u)int16, (u)int32, float32, float64)");
+  }
+}
+
+GDALDataset* open_dataset(const std::string& path) {
+  init_gdal();
+  CPLErrorReset();
+  auto* ds = GDALDataset::FromHandle(
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!ds)
+    throw Error(path + ": cannot read the raster: " +
+                gdal_last_error("not a format GDAL reads, or the file is missing"));
+  return ds;
+}
+
+std::string crs_of(GDALDataset& ds, const std::string& path, const std::string& src_crs) {
+  OGRSpatialReference srs;
+  if (!src_crs.empty()) {
+    if (srs.SetFromUserInput(src_crs.c_str()) != OGRERR_NONE)
+      throw Error("--src-crs: '" + src_crs + "' is not a CRS GDAL understands");
+  } else if (const OGRSpatialReference* own = ds.GetSpatialRef(); own && !own->IsEmpty()) {
+    srs = *own;
+  } else {
+    throw Error(path + ": the raster has no CRS; give one with --src-crs (e.g. EPSG:4326)");
+  }
+  char* wkt = nullptr;
+  const char* options[] = {"FORMAT=WKT2_2019", nullptr};
+  srs.exportToWkt(&wkt, options);
+  std::string out = wkt ? wkt : "";
+  CPLFree(wkt);
+  return out;
+}
+
+}  // namespace
+
+RasterSource describe_source(const std::string& path, const std::vector<int>& bands,
+                             const std::string& src_crs) {
+  GDALDataset* ds = open_dataset(path);
+  struct Closer {
+    GDALDataset* ds;
+    ~Closer() { GDALClose(ds); }
+  } closer{ds};
+
+  RasterSource s;
+  s.path = path;
+  s.width = ds->GetRasterXSize();
+  s.height = ds->GetRasterYSize();
+  if (s.width <= 0 || s.height <= 0 || ds->GetRasterCount() == 0)
+    throw Error(path + ": the file holds no raster bands");
+  if (ds->GetGeoTransform(s.geotransform.data()) != CE_None)
+    throw Error(path + ": the raster has no georeferencing (geotransform)");
+  if (!GDALInvGeoTransform(s.geotransform.data(), s.inverse.data()))
+    throw Error(path + ": the geotransform is not invertible");
+  s.crs_wkt = crs_of(*ds, path, src_crs);
+  OGRSpatialReference srs(s.crs_wkt.c_str());
+  s.geographic = srs.IsGeographic();
+  const auto& gt = s.geotransform;
+  s.wraps = s.geographic && gt[2] == 0 && gt[4] == 0 &&
+            std::abs(std::abs(gt[1]) * s.width - 360.0) < 1e-6 * std::abs(gt[1]);
+
+  s.bands = bands;
+  if (s.bands.empty())
+    for (int b = 1; b <= ds->GetRasterCount(); ++b) s.bands.push_back(b);
+  for (int b : s.bands) {
+    if (b < 1 || b > ds->GetRasterCount())
+      throw Error("--bands: " + path + " has no band " + std::to_string(b) + " (it has " +
+                  std::to_string(ds->GetRasterCount()) + ")");
+    GDALRasterBand* band = ds->GetRasterBand(b);
+    const DType t = dtype_from_gdal(band->GetRasterDataType(), path);
+    if (s.nodata.empty()) {
+      s.dtype = t;
+      s.unit_type = band->GetUnitType();
+    }
+    int has = 0;
+    const double nd = band->GetNoDataValue(&has);
+    s.nodata.push_back(has ? std::optional<double>(nd) : std::nullopt);
+    s.scale.push_back(band->GetScale());
+    s.offset.push_back(band->GetOffset());
+    s.scaled = s.scaled || s.scale.back() != 1.0 || s.offset.back() != 0.0;
+  }
+  s.classes = band_class_table(*ds->GetRasterBand(s.bands.front()));
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    s.file_size = int64_t(st.st_size);
+    s.mtime = int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
+  }
+  return s;
+}
+
+SourceReader::SourceReader(const RasterSource& source)
+    : source_(source), dataset_(open_dataset(source.path)) {}
+
+SourceReader::~SourceReader() { GDALClose(dataset_); }
+
+void SourceReader::read_span(int band, int64_t x0, int64_t y0, int w, int h, int step,
+                             bool categorical, float* out, int out_stride) {
+  GDALRasterIOExtraArg extra;
+  INIT_RASTERIO_EXTRA_ARG(extra);
+  extra.eResampleAlg = step == 1     ? GRIORA_NearestNeighbour
+                       : categorical ? GRIORA_Mode
+                                     : GRIORA_Average;
+  GDALRasterBand* b = dataset_->GetRasterBand(source_.bands[size_t(band)]);
+  CPLErrorReset();
+  if (b->RasterIO(GF_Read, int(x0), int(y0), w * step, h * step, out, w, h, GDT_Float32,
+                  sizeof(float), GSpacing(out_stride) * GSpacing(sizeof(float)), &extra) != CE_None)
+    throw Error(source_.path + ": read error: " + gdal_last_error("RasterIO failed"));
+}
+
+void SourceReader::read(int64_t x0, int64_t y0, int w, int h, int step, bool categorical,
+                        Window& out) {
+  out.x0 = x0;
+  out.y0 = y0;
+  out.w = w;
+  out.h = h;
+  out.step = step;
+  out.planes.resize(source_.bands.size());
+  const int64_t W = source_.width, H = source_.height;
+  // Window rows and columns whose `step` source pixels all lie in the raster (or in one turn of
+  // a wrapping raster); the rest stay NaN.
+  const int j0 = int(std::clamp<int64_t>((-y0 + step - 1) / step, 0, h));
+  const int j1 = int(std::clamp<int64_t>((H - y0) >= 0 ? (H - y0) / step : 0, j0, h));
+  for (size_t band = 0; band < out.planes.size(); ++band) {
+    auto& plane = out.planes[band];
+    plane.assign(size_t(w) * size_t(h), std::numeric_limits<float>::quiet_NaN());
+    if (j1 <= j0) continue;
+    int i = 0;
+    while (i < w) {
+      int64_t sx = x0 + int64_t(i) * step;  // first source column of window column i
+      int64_t turn = 0;
+      if (source_.wraps) {
+        turn = sx >= 0 ? sx / W : -((-sx + W - 1) / W);
+        sx -= turn * W;
+      } else if (sx < 0) {
+        i = int(std::min<int64_t>(w, (-x0 + step - 1) / step));
+        continue;
+      }
+      if (sx + step > W) {  // straddles the raster's edge (or the wrap): stays NaN
+        if (!source_.wraps) break;
+        ++i;
+        continue;
+      }
+      const int n = int(std::min<int64_t>(w - i, (W - sx) / step));
+      read_span(int(band), sx, y0 + int64_t(j0) * step, n, j1 - j0, step, categorical,
+                plane.data() + size_t(j0) * size_t(w) + size_t(i), w);
+      i += n;
+    }
+    const auto& nd = source_.nodata[band];
+    const float nodata = nd ? float(*nd) : 0.0f;
+    const float scale = float(source_.scale[band]), offset = float(source_.offset[band]);
+    for (float& v : plane) {
+      if (nd && v == nodata)
+        v = std::numeric_limits<float>::quiet_NaN();
+      else if (source_.scaled)
+        v = v * scale + offset;
+    }
+  }
+}
+
+bool SourceReader::any_valid() {
+  constexpr int kChunk = 1024;  // columns per read: bounded memory whatever the width
+  std::vector<float> buf;
+  for (size_t band = 0; band < source_.bands.size(); ++band) {
+    int bw = 0, bh = 0;
+    dataset_->GetRasterBand(source_.bands[band])->GetBlockSize(&bw, &bh);
+    const int rows = std::clamp(bh, 1, 1024);
+    for (int y = 0; y < source_.height; y += rows) {
+      const int h = std::min(rows, source_.height - y);
+      for (int x = 0; x < source_.width; x += kChunk) {
+        const int w = std::min(kChunk, source_.width - x);
+        buf.resize(size_t(w) * size_t(h));
+        read_span(int(band), x, y, w, h, 1, false, buf.data(), w);
+        const auto& nd = source_.nodata[band];
+        for (float v : buf)
+          if (!std::isnan(v) && !(nd && v == float(*nd))) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace maquette

@@ -1,0 +1,80 @@
+// A raster source as the ingest sees it: what `describe_source` learns from the file once (size,
+// georeferencing, CRS, selected bands, dtype, nodata, scale/offset), and `SourceReader`, one
+// thread's own GDAL handle on it that reads windows as float samples (NaN = missing).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/tile.h"
+
+class GDALDataset;
+
+namespace maquette {
+
+struct RasterSource {
+  std::string path;
+  int width = 0, height = 0;
+  std::array<double, 6> geotransform{};  // pixel -> source CRS (GDAL convention)
+  std::array<double, 6> inverse{};       // source CRS -> pixel
+  std::string crs_wkt;                   // the file's CRS, or --src-crs
+  bool geographic = false;               // the CRS is geographic (degrees)
+  bool wraps = false;        // geographic, north-up and 360 degrees wide: columns wrap around
+  std::vector<int> bands;    // 1-based band numbers read, in output channel order
+  DType dtype = DType::F32;  // of the first selected band
+  std::vector<std::optional<double>> nodata;  // per selected band
+  std::vector<double> scale, offset;          // per selected band (1 and 0 when unset)
+  bool scaled = false;                        // some band has scale != 1 or offset != 0
+  std::string unit_type;                      // of the first selected band ("" when unset)
+  int64_t file_size = 0, mtime = 0;           // for resume: a changed file is another ingest
+  nlohmann::json classes = nlohmann::json::object();  // class table (see class_table.h)
+};
+
+// Opens and checks a source; throws maquette::Error naming the file: not readable by GDAL
+// (missing, truncated, corrupt), no georeferencing, no CRS and no `src_crs`, a band out of range,
+// an unsupported data type. Empty `bands`: every band.
+RasterSource describe_source(const std::string& path, const std::vector<int>& bands,
+                             const std::string& src_crs);
+
+// A window of source pixels [x0, x0 + w) x [y0, y0 + h), possibly read at a coarser resolution
+// (`step` source pixels per window pixel, averaged), one float plane per selected band with
+// nodata as NaN and scale/offset applied. Pixels outside the raster are NaN (columns wrap for
+// wrapping sources).
+struct Window {
+  int64_t x0 = 0, y0 = 0;
+  int w = 0, h = 0;
+  int step = 1;
+  std::vector<std::vector<float>> planes;
+
+  float at(int band, int x, int y) const {
+    if (x < 0 || y < 0 || x >= w || y >= h) return std::numeric_limits<float>::quiet_NaN();
+    return planes[size_t(band)][size_t(y) * size_t(w) + size_t(x)];
+  }
+};
+
+class SourceReader {
+ public:
+  explicit SourceReader(const RasterSource& source);  // its own dataset handle
+  ~SourceReader();
+  SourceReader(const SourceReader&) = delete;
+  SourceReader& operator=(const SourceReader&) = delete;
+
+  // Reads the window; `categorical` picks the mode instead of the mean when step > 1.
+  void read(int64_t x0, int64_t y0, int w, int h, int step, bool categorical, Window& out);
+  // Whether the source holds at least one valid sample, scanning block rows and stopping at the
+  // first one.
+  bool any_valid();
+
+ private:
+  void read_span(int band, int64_t x0, int64_t y0, int w, int h, int step, bool categorical,
+                 float* out, int out_stride);
+  const RasterSource& source_;
+  GDALDataset* dataset_ = nullptr;
+};
+
+}  // namespace maquette

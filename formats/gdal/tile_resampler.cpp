@@ -1,0 +1,121 @@
+#include "gdal/tile_resampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace maquette {
+
+struct TileResampler::Source {
+  const RasterSource& info;
+  SourceReader reader;
+  PixelMapper mapper;
+  Source(const Grid& grid, const RasterSource& s) : info(s), reader(s), mapper(grid, s) {}
+};
+
+TileResampler::TileResampler(const Grid& grid, const std::vector<RasterSource>& sources,
+                             Resampling resampling, bool categorical)
+    : resampling_(resampling), categorical_(categorical) {
+  for (const RasterSource& s : sources) sources_.push_back(std::make_unique<Source>(grid, s));
+}
+
+TileResampler::~TileResampler() = default;
+
+bool TileResampler::make(CellId cell, int size, Tile<float>& tile) {
+  const int channels = int(sources_.front()->info.bands.size());
+  tile = Tile<float>(size, channels, 0, std::numeric_limits<float>::quiet_NaN());
+  for (auto& s : sources_) sample(*s, cell, tile);
+  for (float v : tile.data())
+    if (!std::isnan(v)) return true;
+  return false;
+}
+
+void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
+  s.mapper.map(cell, tile.size(), map_);
+  const int n = tile.size(), channels = tile.channels();
+  const double W = s.info.width, H = s.info.height;
+  auto& x = map_.x;
+  auto& y = map_.y;
+  // A tile across the seam of a wrapping raster: take its columns into one continuous range.
+  if (s.info.wraps) {
+    double lo = W, hi = 0;
+    for (double v : x)
+      if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (hi - lo > W / 2)
+      for (double& v : x)
+        if (v < W / 2) v += W;
+  }
+  const bool area = resampling_ == Resampling::Average || resampling_ == Resampling::Mode;
+  const auto missing = [&](int c, int r) {
+    for (int k = 0; k < channels; ++k)
+      if (std::isnan(tile.at(c, r, k))) return true;
+    return false;
+  };
+  const auto usable = [&](size_t i) {
+    return !std::isnan(x[i]) && !std::isnan(y[i]) && y[i] >= 0 && y[i] <= H &&
+           (s.info.wraps || (x[i] >= 0 && x[i] <= W));
+  };
+  // Half-sizes of each sample's footprint in source pixels (area kernels only).
+  std::vector<float> hx, hy;
+  if (area) {
+    hx.assign(x.size(), 0.5f);
+    hy.assign(x.size(), 0.5f);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        const size_t i = size_t(r) * n + c;
+        const size_t cl = size_t(r) * n + std::max(c - 1, 0),
+                     cr = size_t(r) * n + std::min(c + 1, n - 1);
+        const size_t ru = size_t(std::max(r - 1, 0)) * n + c,
+                     rd = size_t(std::min(r + 1, n - 1)) * n + c;
+        const double dc = std::max(1, std::min(c + 1, n - 1) - std::max(c - 1, 0));
+        const double dr = std::max(1, std::min(r + 1, n - 1) - std::max(r - 1, 0));
+        const double xc = (x[cr] - x[cl]) / dc, yc = (y[cr] - y[cl]) / dc;
+        const double xr = (x[rd] - x[ru]) / dr, yr = (y[rd] - y[ru]) / dr;
+        const double ax = 0.5 * (std::abs(xc) + std::abs(xr)),
+                     ay = 0.5 * (std::abs(yc) + std::abs(yr));
+        // Beyond a seam the differences are meaningless: keep one pixel there.
+        if (std::isfinite(ax) && std::isfinite(ay) && ax < W / 4 && ay < H / 4) {
+          hx[i] = float(ax);
+          hy[i] = float(ay);
+        }
+      }
+  }
+  // The source window the samples need.
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      const size_t i = size_t(r) * n + c;
+      if (!usable(i) || !missing(c, r)) continue;
+      const double rx = area ? hx[i] + 1 : 2, ry = area ? hy[i] + 1 : 2;
+      x0 = std::min(x0, x[i] - rx);
+      x1 = std::max(x1, x[i] + rx);
+      y0 = std::min(y0, y[i] - ry);
+      y1 = std::max(y1, y[i] + ry);
+    }
+  if (!(x0 < x1)) return;
+  if (!s.info.wraps) x0 = std::max(x0, 0.0), x1 = std::min(x1, W);
+  y0 = std::max(y0, 0.0);
+  y1 = std::min(y1, H);
+  const int64_t ix0 = int64_t(std::floor(x0)), iy0 = int64_t(std::floor(y0));
+  const int64_t span =
+      std::max<int64_t>(int64_t(std::ceil(x1)) - ix0, int64_t(std::ceil(y1)) - iy0);
+  const int step = int(std::max<int64_t>(1, (span + kMaxWindow - 1) / kMaxWindow));
+  const int ww = int((int64_t(std::ceil(x1)) - ix0 + step - 1) / step);
+  const int wh = int((int64_t(std::ceil(y1)) - iy0 + step - 1) / step);
+  if (ww <= 0 || wh <= 0) return;
+  s.reader.read(ix0, iy0, ww, wh, step, categorical_, window_);
+
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      const size_t i = size_t(r) * n + c;
+      if (!usable(i)) continue;
+      const double wx = (x[i] - double(ix0)) / step, wy = (y[i] - double(iy0)) / step;
+      const double ax = area ? hx[i] / step : 0, ay = area ? hy[i] / step : 0;
+      for (int k = 0; k < channels; ++k) {
+        float& out = tile.at(c, r, k);
+        if (std::isnan(out)) out = resample(window_, k, resampling_, wx, wy, ax, ay);
+      }
+    }
+}
+
+}  // namespace maquette

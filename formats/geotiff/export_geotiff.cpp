@@ -1,0 +1,104 @@
+#include "geotiff/export_geotiff.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "geotiff/band_metadata.h"
+#include "geotiff/export_crs.h"
+#include "geotiff/gdal_util.h"
+#include "geotiff/plane_geotiff.h"
+#include "geotiff/warp.h"
+
+namespace maquette {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A GeoTIFF and its .aux.xml written under a temporary name; removed unless renamed to
+// `final` by commit().
+class TempGeoTiff {
+ public:
+  TempGeoTiff(std::string path, std::string final = "")
+      : path_(std::move(path)), final_(std::move(final)) {}
+  ~TempGeoTiff() {
+    std::error_code ec;
+    fs::remove(path_, ec);
+    fs::remove(path_ + ".aux.xml", ec);
+  }
+  TempGeoTiff(const TempGeoTiff&) = delete;
+  TempGeoTiff& operator=(const TempGeoTiff&) = delete;
+  const std::string& path() const { return path_; }
+  void commit() {
+    std::error_code ec;
+    fs::remove(final_ + ".aux.xml", ec);  // a stale one would describe another image
+    if (fs::exists(path_ + ".aux.xml")) fs::rename(path_ + ".aux.xml", final_ + ".aux.xml", ec);
+    if (!ec) fs::rename(path_, final_, ec);
+    if (ec) throw Error("cannot write " + final_ + ": " + ec.message());
+  }
+
+ private:
+  std::string path_, final_;
+};
+
+// The layer's ground pixel (metres, mean over the cell) in target units at the region centre:
+// the distance in the target CRS that a pixel-long step north covers there.
+double default_resolution(const Grid& grid, const LayerInfo& layer, int level, CellId centre_cell,
+                          const OGRSpatialReference& target) {
+  const double pixel_m = grid.level_info(level, layer.tile_size).pixel_m;
+  const LonLat c = grid.centre(centre_cell);
+  const double dlat = pixel_m / 111320.0;  // metres per degree of latitude, to 1 %
+  OGRSpatialReference wgs84;
+  wgs84.importFromEPSG(4326);
+  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> ct(
+      OGRCreateCoordinateTransformation(&wgs84, &target));
+  double x[2] = {c.lon, c.lon}, y[2] = {std::max(c.lat - dlat / 2, -90.0), 0};
+  y[1] = y[0] + dlat;
+  if (!ct || !ct->Transform(2, x, y)) gdal_error("cannot transform the region centre to --crs");
+  return std::hypot(x[1] - x[0], y[1] - y[0]);
+}
+
+}  // namespace
+
+void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& spec,
+                    const std::string& out) {
+  GdalSession gdal;
+  const LayerInfo layer = store.require_layer(spec.layer);
+  if (layer.kind != LayerKind::Raster)
+    throw Error("layer '" + layer.name + "' is not a raster layer");
+  const ExportCrs crs = parse_export_crs(spec.crs);
+  const int level = spec.level.value_or(layer.level);
+  if (level < 0 || level > layer.level)
+    throw Error("--level " + std::to_string(level) + " must be in 0.." +
+                std::to_string(layer.level) + " (the layer's level; coarser reads overviews)");
+  if (spec.resolution && !(*spec.resolution > 0)) throw Error("--resolution must be positive");
+  const std::vector<CellId> cells =
+      cells_at_level(layer_tile_cells(store, grid, layer, spec.region), level);
+
+  TempGeoTiff result(out + ".part", out);
+  if (crs.rhealpix) {
+    write_plane_geotiff(store, grid, layer, cells, level, result.path());
+  } else {
+    static std::atomic<int> counter = 0;
+    const std::string name =
+        "maquette-export-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".tif";
+    const TempGeoTiff plane((fs::temp_directory_path() / name).string());
+    write_plane_geotiff(store, grid, layer, cells, level, plane.path());
+    WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
+    warp.resolution = spec.resolution.value_or(
+        default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs));
+    warp_geotiff(plane.path(), result.path(), warp);
+    DatasetPtr ds(GDALDataset::Open(result.path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
+    if (!ds) gdal_error("cannot reopen " + result.path());
+    describe_bands(*ds, layer, level);
+    ds.reset();
+    if (CPLGetLastErrorType() == CE_Failure) gdal_error("cannot write " + out);
+  }
+  result.commit();
+}
+
+}  // namespace maquette

@@ -1,0 +1,38 @@
+// Small GDAL helpers shared by the GeoTIFF writers.
+#pragma once
+
+#include <gdal_priv.h>
+
+#include <memory>
+#include <string>
+
+#include "core/tile.h"
+
+namespace maquette {
+
+// Registers GDAL's drivers once, and keeps GDAL's own error printing quiet while alive: the
+// writers report failures as maquette::Error with GDAL's message (gdal_error).
+class GdalSession {
+ public:
+  GdalSession();
+  ~GdalSession();
+  GdalSession(const GdalSession&) = delete;
+  GdalSession& operator=(const GdalSession&) = delete;
+};
+
+// A maquette::Error: `what`, then GDAL's last error message if any.
+[[noreturn]] void gdal_error(const std::string& what);
+
+GDALDataType gdal_type(DType t);
+
+struct GdalClose {
+  void operator()(GDALDataset* ds) const { GDALClose(GDALDataset::ToHandle(ds)); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, GdalClose>;
+
+// Creation options of every GeoTIFF we write: 256 x 256 tiles, DEFLATE with the predictor
+// that suits the samples (floating point or integer), BigTIFF when needed, and unwritten (empty)
+// tiles left sparse (GDAL reads them as nodata).
+CPLStringList geotiff_creation_options(bool floating_point);
+
+}  // namespace maquette

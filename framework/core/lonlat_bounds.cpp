@@ -1,0 +1,28 @@
+#include "core/lonlat_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/region.h"
+
+namespace maquette {
+
+LonLatBounds lonlat_bounds(const Grid& grid, const std::vector<CellId>& cells) {
+  const double lon0 = grid.centre(cells.front()).lon;
+  double west = 1e9, east = -1e9, south = 90, north = -90;
+  // The compacted set has the same outline and far fewer cells.
+  for (CellId c : compact(cells)) {
+    for (const LonLat& p : grid.boundary(c, 8)) {
+      const double lon = lon0 + std::remainder(p.lon - lon0, 360.0);
+      west = std::min(west, lon);
+      east = std::max(east, lon);
+      south = std::min(south, p.lat);
+      north = std::max(north, p.lat);
+    }
+  }
+  if (east - west >= 360.0 - 1e-9) return {-180.0, south, 180.0, north};
+  const double shift = 360.0 * std::floor((west + 180.0) / 360.0);
+  return {west - shift, south, east - shift, north};
+}
+
+}  // namespace maquette

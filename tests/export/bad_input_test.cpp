@@ -1,0 +1,61 @@
+// Bad export requests: a clear message, a non-zero exit and no output file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "export_fixture.h"
+#include "run_cli.h"
+
+namespace maquette::test {
+namespace {
+
+void expect_refused(const std::string& args, const std::string& message,
+                    const std::string& out_name = "out.tif") {
+  const std::string dir = temp_dir();
+  const std::string out = out_name[0] == '/' ? out_name : dir + "/" + out_name;
+  const CliResult r =
+      run_maquette("export gtiff " + export_fixture().store_path + " " + out + " " + args);
+  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(ExportBadInput, UnknownLayer) { expect_refused("--layer nope", "unknown layer 'nope'"); }
+
+TEST(ExportBadInput, NoTilesInTheRegion) {
+  expect_refused("--layer dem --bbox -100 -50 -99 -49", "no tiles in the region");
+  expect_refused("--layer dem --cells S0", "no tiles in the region");
+}
+
+TEST(ExportBadInput, BadCrs) {
+  expect_refused("--layer dem --crs foo", "bad --crs 'foo'");
+  expect_refused("--layer dem --crs EPSG:abc", "bad --crs 'EPSG:abc'");
+  expect_refused("--layer dem --crs EPSG:99999999", "no such EPSG code");
+}
+
+TEST(ExportBadInput, LevelFinerThanTheLayer) {
+  expect_refused("--layer dem --level 9", "--level 9 must be in 0..6");
+}
+
+TEST(ExportBadInput, UnwritableOutput) {
+  expect_refused("--layer dem", "cannot create", "/nonexistent-dir/out.tif");
+  expect_refused("--layer dem --crs EPSG:4326", "/nonexistent-dir/out.tif",
+                 "/nonexistent-dir/out.tif");
+}
+
+TEST(ExportBadInput, PngUnknownLayerAndBadBands) {
+  const std::string out = temp_dir() + "/out.png";
+  CliResult r = run_maquette("export png " + export_fixture().store_path + " --layer nope " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("unknown layer 'nope'"), std::string::npos) << r.err;
+  r = run_maquette("export png " + export_fixture().store_path + " --layer rgb --bands 1,2,9 " +
+                   out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("band 9 out of range"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace maquette::test

@@ -1,0 +1,132 @@
+// export gtiff --crs EPSG:4326: nearest sampling checked pixel by pixel against the grid's own
+// point-to-cell, bilinear against the smooth field the tiles sample, and both against gdalwarp
+// run on our rHEALPix-plane export.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+
+#include "export_fixture.h"
+#include "run_cli.h"
+
+namespace maquette::test {
+namespace {
+
+std::string export_to(const std::string& layer, const std::string& crs) {
+  const std::string out = temp_dir() + "/" + layer + ".tif";
+  const CliResult r = run_maquette("export gtiff " + export_fixture().store_path + " --layer " +
+                                   layer + " " + out + " --crs " + crs);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return out;
+}
+
+// Lon/lat of the centre of pixel (col, row) of a geographic raster.
+LonLat pixel_centre(const double gt[6], int col, int row) {
+  return {gt[0] + (col + 0.5) * gt[1], gt[3] + (row + 0.5) * gt[5]};
+}
+
+TEST(GtiffWarp, NearestPicksTheSampleOfTheCellHoldingEachPixelCentre) {
+  const auto ds = open_raster(export_to("landcover", "EPSG:4326"));
+  ASSERT_TRUE(ds);
+  OGRSpatialReference wgs84;
+  wgs84.importFromEPSG(4326);
+  const char* const ignore_axis_order[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=YES", nullptr};
+  EXPECT_TRUE(ds->GetSpatialRef()->IsSame(&wgs84, ignore_axis_order));
+  ASSERT_NE(ds->GetRasterBand(1)->GetColorTable(), nullptr);
+  double gt[6];
+  ASSERT_EQ(ds->GetGeoTransform(gt), CE_None);
+  // Default resolution: the layer's pixel (~2.4 km) in degrees at the centre.
+  EXPECT_NEAR(gt[1], 0.0219, 0.002);
+
+  const auto& cells = export_fixture().dem_cells;
+  const std::vector<double> v = read_band(*ds);
+  const int w = ds->GetRasterXSize(), h = ds->GetRasterYSize();
+  int data = 0, mismatches = 0;
+  for (int row = 0; row < h; ++row)
+    for (int col = 0; col < w; ++col) {
+      const CellId pixel = default_grid().cell_from_point(pixel_centre(gt, col, row), kPixelLevel);
+      const bool inside = std::count(cells.begin(), cells.end(), pixel.parent(kLevel)) > 0;
+      const double expected = inside ? landcover_class(pixel.col(), pixel.row()) : 0.0;
+      data += inside;
+      mismatches += v[size_t(row) * w + col] != expected;
+    }
+  EXPECT_GT(data, 4 * kTileSize * kTileSize / 2);
+  EXPECT_EQ(mismatches, 0);
+}
+
+TEST(GtiffWarp, BilinearFollowsTheSmoothField) {
+  const auto ds = open_raster(export_to("dem", "EPSG:4326"));
+  ASSERT_TRUE(ds);
+  double gt[6];
+  ASSERT_EQ(ds->GetGeoTransform(gt), CE_None);
+  const std::vector<double> v = read_band(*ds);
+  const int w = ds->GetRasterXSize(), h = ds->GetRasterYSize();
+  // Pixels at least two layer pixels inside the tiles' plane square.
+  const PlaneSquare a = default_grid().plane_square(export_fixture().dem_cells[0]);
+  const double margin = 2 * a.side / kTileSize, x0 = a.x_min, y1 = a.y_max, side = 2 * a.side;
+  double max_err = 0;
+  int checked = 0;
+  for (int row = 0; row < h; ++row)
+    for (int col = 0; col < w; ++col) {
+      const PlanePoint p = default_grid().forward(pixel_centre(gt, col, row));
+      if (p.x < x0 + margin || p.x > x0 + side - margin || p.y > y1 - margin ||
+          p.y < y1 - side + margin)
+        continue;
+      ++checked;
+      max_err = std::max(max_err, std::abs(v[size_t(row) * w + col] - dem_field(p)));
+    }
+  EXPECT_GT(checked, 10000);
+  // Bilinear interpolation alone errs by up to ~0.2 m here (h^2/8 |f''|); GDAL widens the kernel
+  // where an output pixel covers more than one source pixel, which smooths a little more.
+  EXPECT_LT(max_err, 1.0);
+}
+
+// gdalwarp (the program) on our rHEALPix export, onto exactly our EPSG:4326 grid.
+void compare_with_gdalwarp(const std::string& layer, const std::string& resampling, double max_mean,
+                           double max_max) {
+  const std::string ours = export_to(layer, "EPSG:4326");
+  const std::string plane = temp_dir() + "/plane.tif";
+  ASSERT_EQ(run_maquette("export gtiff " + export_fixture().store_path + " --layer " + layer + " " +
+                         plane)
+                .exit_code,
+            0);
+  const auto ds = open_raster(ours);
+  ASSERT_TRUE(ds);
+  double gt[6];
+  ds->GetGeoTransform(gt);
+  const int w = ds->GetRasterXSize(), h = ds->GetRasterYSize();
+  const std::string theirs = temp_dir() + "/gdalwarp.tif";
+  std::ostringstream cmd;
+  cmd << std::setprecision(17) << "gdalwarp -q -t_srs EPSG:4326 -r " << resampling << " -te "
+      << gt[0] << " " << gt[3] + h * gt[5] << " " << gt[0] + w * gt[1] << " " << gt[3] << " -ts "
+      << w << " " << h << " " << plane << " " << theirs;
+  ASSERT_EQ(std::system(cmd.str().c_str()), 0) << cmd.str();
+  const auto ref = open_raster(theirs);
+  ASSERT_TRUE(ref);
+  const std::vector<double> a = read_band(*ds), b = read_band(*ref);
+  ASSERT_EQ(a.size(), b.size());
+  const double nodata = ds->GetRasterBand(1)->GetNoDataValue();
+  double sum = 0, max_diff = 0;
+  int n = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i] == nodata || b[i] == nodata) continue;
+    const double d = std::abs(a[i] - b[i]);
+    sum += d, max_diff = std::max(max_diff, d), ++n;
+  }
+  ASSERT_GT(n, int(a.size() / 2));
+  EXPECT_LE(sum / n, max_mean);
+  EXPECT_LE(max_diff, max_max);
+}
+
+TEST(GtiffWarp, AgreesWithGdalwarpOnOurRhealpixExport) {
+  compare_with_gdalwarp("dem", "bilinear", 0.05, 1.0);
+  // gdalwarp's default approximate transformer may move a pixel centre across a class edge.
+  compare_with_gdalwarp("landcover", "near", 0.02, 2.0);
+}
+
+}  // namespace
+}  // namespace maquette::test

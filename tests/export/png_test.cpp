@@ -1,0 +1,88 @@
+// export png, decoded with OpenCV: class colours, hillshade, the 2-98 % stretch of imagery.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <set>
+
+#include "export_fixture.h"
+#include "run_cli.h"
+
+namespace maquette::test {
+namespace {
+
+cv::Mat export_png(const std::string& layer, const std::string& extra = "") {
+  const std::string out = temp_dir() + "/" + layer + ".png";
+  const CliResult r = run_maquette("export png " + export_fixture().store_path + " --layer " +
+                                   layer + " " + out + " " + extra);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return cv::imread(out, cv::IMREAD_UNCHANGED);
+}
+
+// Opaque pixels as RGB triples, with their counts.
+std::map<std::array<int, 3>, int> colours(const cv::Mat& png) {
+  std::map<std::array<int, 3>, int> out;
+  for (int r = 0; r < png.rows; ++r)
+    for (int c = 0; c < png.cols; ++c)
+      if (const auto& p = png.at<cv::Vec4b>(r, c); p[3] == 255) ++out[{p[2], p[1], p[0]}];
+  return out;
+}
+
+TEST(Png, LandcoverUsesExactlyTheClassColours) {
+  const cv::Mat png = export_png("landcover");
+  ASSERT_EQ(png.type(), CV_8UC4);
+  const std::set<std::array<int, 3>> expected = {
+      {0x22, 0x8b, 0x22}, {0x1e, 0x90, 0xff}, {0xff, 0x00, 0x00}};
+  std::set<std::array<int, 3>> seen;
+  for (const auto& [rgb, count] : colours(png)) seen.insert(rgb);
+  EXPECT_EQ(seen, expected);
+}
+
+TEST(Png, HillshadeChangesTheDemPicture) {
+  const cv::Mat plain = export_png("dem"), shaded = export_png("dem", "--hillshade");
+  ASSERT_FALSE(plain.empty());
+  ASSERT_EQ(plain.size(), shaded.size());
+  EXPECT_GT(cv::norm(plain, shaded, cv::NORM_L1), 0.0);
+  // Shading only darkens the ramp.
+  const auto a = colours(plain), b = colours(shaded);
+  EXPECT_EQ(a.size() > 1, true);
+  int darker = 0, total = 0;
+  for (int r = 0; r < plain.rows; ++r)
+    for (int c = 0; c < plain.cols; ++c) {
+      const auto p = plain.at<cv::Vec4b>(r, c), s = shaded.at<cv::Vec4b>(r, c);
+      if (p[3] != 255) continue;
+      ++total;
+      darker += s[0] <= p[0] && s[1] <= p[1] && s[2] <= p[2];
+    }
+  EXPECT_EQ(darker, total);
+}
+
+// Fraction of opaque pixels whose channel k equals v.
+double fraction(const cv::Mat& png, int k, int v) {
+  int hit = 0, total = 0;
+  for (int r = 0; r < png.rows; ++r)
+    for (int c = 0; c < png.cols; ++c)
+      if (const auto& p = png.at<cv::Vec4b>(r, c); p[3] == 255) ++total, hit += p[k] == v;
+  return double(hit) / total;
+}
+
+TEST(Png, ImageryIsStretchedTwoToNinetyEightPercentPerBand) {
+  const cv::Mat png = export_png("rgb");
+  ASSERT_EQ(png.type(), CV_8UC4);
+  for (int k = 0; k < 3; ++k) {
+    // Roughly 2 % of the samples lie at or below the 2nd percentile, 2 % at or above the 98th.
+    EXPECT_NEAR(fraction(png, k, 0), 0.025, 0.015) << k;
+    EXPECT_NEAR(fraction(png, k, 255), 0.025, 0.015) << k;
+  }
+  // --bands picks which channels are drawn: 3,2,1 swaps red and blue.
+  const cv::Mat swapped = export_png("rgb", "--bands 3,2,1");
+  cv::Mat a[4], b[4];
+  cv::split(png, a);
+  cv::split(swapped, b);
+  EXPECT_EQ(cv::norm(a[0], b[2], cv::NORM_L1), 0.0);
+  EXPECT_EQ(cv::norm(a[2], b[0], cv::NORM_L1), 0.0);
+}
+
+}  // namespace
+}  // namespace maquette::test

@@ -1,0 +1,33 @@
+#include "ingest_fixture.h"
+
+#include "core/halo.h"
+#include "core/tile.h"
+
+namespace maquette::test {
+
+std::unique_ptr<Store> ingest(const std::string& dir, const std::string& name,
+                              const std::vector<std::string>& sources, RasterIngestOptions o) {
+  const std::string path = dir + "/" + name + ".mqt";
+  o.quiet = true;
+  ingest_raster(path, sources, o);
+  return Store::open(path, Store::Mode::ReadOnly);
+}
+
+void for_each_sample(const Store& store, const std::string& layer,
+                     const std::function<void(CellId, LonLat, const float*)>& visit) {
+  const Grid& grid = default_grid();
+  const LayerInfo info = store.require_layer(layer);
+  const double* nodata = info.nodata ? &*info.nodata : nullptr;
+  const int n = info.tile_size, pixel_level = info.level + log2_tile_size(n);
+  for (CellId cell : store.tile_cells(layer)) {
+    const Tile<float> tile = to_tile<float>(*store.get_tile(layer, cell), nodata);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        const LonLat p = pixel_centre(
+            grid, {cell.face(), global_col(cell, n, c), global_row(cell, n, r)}, pixel_level);
+        visit(cell, p, &tile.at(c, r, 0));
+      }
+  }
+}
+
+}  // namespace maquette::test

@@ -1,0 +1,188 @@
+// Bad input through the real program (clear message naming the file or option, non-zero exit,
+// store bytes untouched), mosaics, and a killed ingest resumed to the same bits.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "ingest_fixture.h"
+#include "run_cli.h"
+#include "synthetic_raster.h"
+
+namespace maquette::test {
+namespace {
+
+RasterSpec small_lonlat(double west, int bands = 1) {
+  RasterSpec s;
+  s.width = s.height = 100;
+  s.bands = bands;
+  s.geotransform = {west, 0.01, 0, 46, 0, -0.01};
+  s.crs = "EPSG:4326";
+  s.type = "Int16";
+  s.nodata = -32768;
+  return s;
+}
+
+double ramp(int band, double lon, double lat) { return 100 * band + 1000 * (lon + lat); }
+
+class IngestInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = temp_dir();
+    good = dir + "/good.tif";
+    write_raster(good, small_lonlat(7), ramp);
+    store = dir + "/s.mqt";
+    const CliResult r = run_maquette("-q ingest " + store + " --layer a --as dem " + good);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    before = file_fingerprint(store);
+  }
+  // Runs a bad ingest into the store: it must fail naming `expected`, leaving the store as it was.
+  void expect_refused(const std::string& args, const std::string& expected) {
+    const CliResult r = run_maquette("ingest " + store + " --layer b " + args);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("maquette: error: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_EQ(file_fingerprint(store), before) << args;
+  }
+  std::string dir, good, store, before;
+};
+
+TEST_F(IngestInput, TruncatedGeoTiff) {
+  const std::string bad = dir + "/truncated.tif";
+  std::filesystem::copy_file(good, bad);
+  std::filesystem::resize_file(bad, std::filesystem::file_size(good) / 3);
+  expect_refused("--as dem " + bad, bad);
+}
+
+TEST_F(IngestInput, CorruptFile) {
+  const std::string bad = dir + "/corrupt.tif";
+  std::ofstream(bad) << "II*\0 this is not a tiff at all";
+  expect_refused("--as dem " + bad, bad + ": cannot read the raster");
+}
+
+TEST_F(IngestInput, RasterWithoutCrsUnlessSrcCrs) {
+  const std::string bad = dir + "/nocrs.tif";
+  RasterSpec spec = small_lonlat(7);
+  spec.crs = "";
+  write_raster(bad, spec, ramp);
+  expect_refused("--as dem " + bad, bad + ": the raster has no CRS; give one with --src-crs");
+  const CliResult r =
+      run_maquette("-q ingest " + dir + "/other.mqt --layer b --as dem --src-crs EPSG:4326 " + bad);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST_F(IngestInput, RegionNotOverlappingTheSource) {
+  expect_refused("--as dem --bbox 100 10 101 11 " + good, "--bbox does not overlap the sources");
+}
+
+TEST_F(IngestInput, AllNodata) {
+  const std::string bad = dir + "/void.tif";
+  write_raster(bad, small_lonlat(7), [](int, double, double) { return -32768; });
+  expect_refused("--as dem " + bad, bad + ": every sample is nodata");
+}
+
+TEST_F(IngestInput, LevelTooFineIsRefusedWithTheEstimate) {
+  expect_refused("--as dem --level 19 " + good, "tiles of 256x256x1 float32 at level 19");
+}
+
+TEST_F(IngestInput, MismatchedBandCounts) {
+  const std::string three = dir + "/three.tif";
+  write_raster(three, small_lonlat(8, 3), ramp);
+  expect_refused("--as raster " + good + " " + three,
+                 "band counts differ: " + good + " has 1 band(s) (1), " + three + " has 3");
+}
+
+TEST_F(IngestInput, BadOptionValues) {
+  expect_refused("--as dem --resampling lanczos " + good, "--resampling 'lanczos'");
+  expect_refused("--as heights " + good, "--as 'heights'");
+  expect_refused("--as dem --bands 2 " + good, "--bands: " + good + " has no band 2");
+}
+
+TEST_F(IngestInput, MosaicLaterSourcesFillOnlyNodata) {
+  // Two overlapping rasters: the first has a hole (nodata) where the second must show through,
+  // and elsewhere the first wins.
+  const std::string a = dir + "/a.tif", b = dir + "/b.tif";
+  write_raster(a, small_lonlat(7),
+               [](int, double lon, double) { return lon > 7.4 && lon < 7.6 ? -32768 : 1; });
+  write_raster(b, small_lonlat(7.5), [](int, double, double) { return 2; });
+  RasterIngestOptions o;
+  o.layer = "m";
+  o.as = "raster";
+  o.resampling = Resampling::Nearest;
+  const auto s = ingest(dir, "mosaic", {a, b}, o);
+  int ones = 0, twos = 0;
+  for_each_sample(*s, "m", [&](CellId, LonLat p, const float* v) {
+    if (std::isnan(v[0]) || p.lat < 45.01 || p.lat > 45.99) return;
+    if (p.lon > 7.01 && p.lon < 7.39) {
+      EXPECT_EQ(v[0], 1.0f);
+    }
+    if (p.lon > 7.41 && p.lon < 7.59) {
+      EXPECT_EQ(v[0], 2.0f) << p.lon;
+    }
+    if (p.lon > 7.61 && p.lon < 7.99) {
+      EXPECT_EQ(v[0], 1.0f);
+    }
+    if (p.lon > 8.01 && p.lon < 8.49) {
+      EXPECT_EQ(v[0], 2.0f);
+    }
+    (v[0] == 1.0f ? ones : twos)++;
+  });
+  EXPECT_GT(ones, 1000);
+  EXPECT_GT(twos, 1000);
+}
+
+TEST(IngestResume, KilledIngestResumesToTheSameTiles) {
+  const std::string dir = temp_dir(), tif = dir + "/big.tif";
+  RasterSpec spec = small_lonlat(7);
+  spec.width = spec.height = 2000;
+  spec.geotransform = {7, 0.0005, 0, 46, 0, -0.0005};
+  write_raster(tif, spec, ramp);
+  const std::string args = " --layer d --as dem --threads 1 " + tif;
+  const std::string clean = dir + "/clean.mqt", killed = dir + "/killed.mqt";
+  ASSERT_EQ(run_maquette("-q ingest " + clean + args).exit_code, 0);
+
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string bin = std::string(MAQUETTE_BIN_DIR) + "/maquette";
+    execl(bin.c_str(), bin.c_str(), "-q", "ingest", killed.c_str(), "--layer", "d", "--as", "dem",
+          "--threads", "1", tif.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill it once a few tiles are committed.
+  for (int i = 0; i < 2000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (!std::filesystem::exists(killed)) continue;
+    try {
+      if (Store::open(killed, Store::Mode::ReadOnly)->tile_cells("d").size() >= 3) break;
+    } catch (const std::exception&) {
+    }
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const int64_t partial =
+      int64_t(Store::open(killed, Store::Mode::ReadOnly)->tile_cells("d").size());
+  const CliResult r = run_maquette("ingest " + killed + args + " --resume");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  if (WIFSIGNALED(status)) {
+    EXPECT_NE(r.err.find("resum"), std::string::npos) << r.err;
+  }
+  const auto a = Store::open(clean, Store::Mode::ReadOnly),
+             b = Store::open(killed, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = a->tile_cells("d");
+  ASSERT_EQ(cells, b->tile_cells("d"));
+  EXPECT_LE(partial, int64_t(cells.size()));
+  for (CellId c : cells) EXPECT_EQ(a->get_tile("d", c)->bytes, b->get_tile("d", c)->bytes);
+  for (CellId c : cells)
+    EXPECT_EQ(a->get_overview("d", c.parent())->bytes, b->get_overview("d", c.parent())->bytes);
+}
+
+}  // namespace
+}  // namespace maquette::test

@@ -1,0 +1,83 @@
+#include "synthetic_raster.h"
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace maquette::test {
+struct Projector::Impl {
+  std::unique_ptr<OGRCoordinateTransformation> t;
+};
+
+Projector::Projector(const std::string& from, const std::string& to) : impl_(new Impl) {
+  OGRSpatialReference a, b;
+  a.SetFromUserInput(from.c_str());
+  b.SetFromUserInput(to.c_str());
+  a.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  b.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  impl_->t.reset(OGRCreateCoordinateTransformation(&a, &b));
+  if (!impl_->t) throw std::runtime_error("no transformation " + from + " -> " + to);
+}
+
+Projector::~Projector() = default;
+
+std::array<double, 2> Projector::operator()(double x, double y) const {
+  if (!impl_->t->Transform(1, &x, &y)) return {NAN, NAN};
+  return {x, y};
+}
+
+void write_raster(const std::string& path, const RasterSpec& spec, const PixelValue& value) {
+  GDALAllRegister();
+  GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
+  GDALDataset* ds = drv->Create(path.c_str(), spec.width, spec.height, spec.bands,
+                                GDALGetDataTypeByName(spec.type.c_str()), nullptr);
+  if (!ds) throw std::runtime_error("cannot create " + path);
+  auto gt = spec.geotransform;
+  ds->SetGeoTransform(gt.data());
+  if (!spec.crs.empty()) {
+    OGRSpatialReference srs;
+    srs.SetFromUserInput(spec.crs.c_str());
+    ds->SetSpatialRef(&srs);
+  }
+  std::vector<double> row(size_t(spec.width));
+  for (int b = 1; b <= spec.bands; ++b) {
+    GDALRasterBand* band = ds->GetRasterBand(b);
+    if (spec.nodata) band->SetNoDataValue(*spec.nodata);
+    for (int y = 0; y < spec.height; ++y) {
+      for (int x = 0; x < spec.width; ++x) {
+        const double px = x + 0.5, py = y + 0.5;
+        row[size_t(x)] = value(b, gt[0] + px * gt[1] + py * gt[2], gt[3] + px * gt[4] + py * gt[5]);
+      }
+      if (band->RasterIO(GF_Write, 0, y, spec.width, 1, row.data(), spec.width, 1, GDT_Float64, 0,
+                         0) != CE_None)
+        throw std::runtime_error("write failed");
+    }
+  }
+  GDALRasterBand* first = ds->GetRasterBand(1);
+  if (!spec.categories.empty()) {
+    CPLStringList names;
+    for (const auto& n : spec.categories) names.AddString(n.c_str());
+    first->SetCategoryNames(names.List());
+  }
+  if (spec.colour_table) {
+    GDALColorTable ct;
+    for (int i = 0; i < 16; ++i) {
+      const GDALColorEntry e{short(10 * i), short(20 * i), short(15 * i), 255};
+      ct.SetColorEntry(i, &e);
+    }
+    first->SetColorTable(&ct);
+  }
+  GDALClose(ds);
+}
+
+double sphere_field(double lon, double lat) {
+  constexpr double d = std::numbers::pi / 180;
+  const double x = std::cos(lat * d) * std::cos(lon * d), y = std::cos(lat * d) * std::sin(lon * d),
+               z = std::sin(lat * d);
+  return 100 * (x + 2 * y + 3 * z);
+}
+
+}  // namespace maquette::test
