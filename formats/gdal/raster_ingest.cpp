@@ -1,6 +1,6 @@
 // ingest_raster: the write pass. Cells run in parallel on a oneTBB arena; each thread has its own
 // GDAL handles and PROJ transforms (TileResampler); each cell's tile and run record are committed
-// in one batch, so a killed ingest resumes with --resume to the same bits.
+// in one batch (a few cells per batch), so a killed ingest resumes with --resume to the same bits.
 #include "gdal/raster_ingest.h"
 
 #include <spdlog/spdlog.h>
@@ -18,6 +18,13 @@
 #include "runtime/progress.h"
 
 namespace maquette {
+namespace {
+
+// Cells per transaction: a commit costs about as much as a tile's work (see the store benchmark),
+// and a few cells per batch still keep every thread busy.
+constexpr size_t kCellsPerBatch = 4;
+
+}  // namespace
 
 RasterIngestReport ingest_raster(const std::string& store_path,
                                  const std::vector<std::string>& sources,
@@ -67,29 +74,33 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     Progress progress("ingest " + layer.name, int64_t(todo.size()), o.quiet);
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
     arena.execute([&] {
-      tbb::parallel_for(size_t(0), todo.size(), [&](size_t i) {
-        if (failed) return;
-        try {
-          auto& resampler = resamplers.local();
-          if (!resampler)
-            resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
-                                                        plan.resampling, categorical);
-          Tile<float> tile;
-          Store::Batch batch(*store);
-          if (resampler->make(todo[i], layer.tile_size, tile)) {
-            batch.put_tile(layer.name, todo[i], from_tile(tile, layer.dtype, nodata));
-            ++written;
-          } else {
-            ++empty;
-          }
-          batch.mark_done(run, 0, todo[i]);
-          batch.commit();
-          progress.advance();
-        } catch (...) {
-          std::lock_guard lock(error_mutex);
-          if (!failed.exchange(true)) error = std::current_exception();
-        }
-      });
+      tbb::parallel_for(
+          size_t(0), (todo.size() + kCellsPerBatch - 1) / kCellsPerBatch, [&](size_t chunk) {
+            if (failed) return;
+            try {
+              auto& resampler = resamplers.local();
+              if (!resampler)
+                resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
+                                                            plan.resampling, categorical);
+              Tile<float> tile;
+              Store::Batch batch(*store);
+              const size_t end = std::min(todo.size(), (chunk + 1) * kCellsPerBatch);
+              for (size_t i = chunk * kCellsPerBatch; i < end; ++i) {
+                if (resampler->make(todo[i], layer.tile_size, tile)) {
+                  batch.put_tile(layer.name, todo[i], from_tile(tile, layer.dtype, nodata));
+                  ++written;
+                } else {
+                  ++empty;
+                }
+                batch.mark_done(run, 0, todo[i]);
+              }
+              batch.commit();
+              progress.advance(int64_t(end - chunk * kCellsPerBatch));
+            } catch (...) {
+              std::lock_guard lock(error_mutex);
+              if (!failed.exchange(true)) error = std::current_exception();
+            }
+          });
     });
   }
   if (error) {

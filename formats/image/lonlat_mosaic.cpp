@@ -7,33 +7,12 @@
 #include <optional>
 
 #include "core/error.h"
-#include "core/region.h"
+#include "core/lonlat_bounds.h"
 
 namespace maquette {
 namespace {
 
 constexpr double kMetresPerDegree = 111319.49;  // at the equator, to pick a pixel size
-
-struct Bounds {
-  double west = 180, south = 90, east = -180, north = -90;
-};
-
-// Lon/lat bounds of the cells, with longitudes kept continuous around the first cell so that
-// regions across the antimeridian stay in one piece.
-Bounds bounds_of(const Grid& grid, const std::vector<CellId>& cells) {
-  Bounds b;
-  const double lon0 = grid.centre(cells.front()).lon;
-  for (CellId c : compact(cells)) {
-    for (const LonLat& p : grid.boundary(c, 8)) {
-      const double lon = lon0 + std::remainder(p.lon - lon0, 360.0);
-      b.west = std::min(b.west, lon);
-      b.east = std::max(b.east, lon);
-      b.south = std::min(b.south, p.lat);
-      b.north = std::max(b.north, p.lat);
-    }
-  }
-  return b;
-}
 
 }  // namespace
 
@@ -43,7 +22,7 @@ LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::strin
   if (cells.empty()) cells = store.tile_cells(layer);
   std::sort(cells.begin(), cells.end());
   if (cells.empty()) throw Error("layer '" + layer + "' in " + store.path() + " has no tiles");
-  const Bounds b = bounds_of(grid, cells);
+  const LonLatBounds b = lonlat_bounds(grid, cells);
 
   // The layer's own pixel size, coarsened (through overviews) until the raster fits max_side.
   const int log2n = log2_tile_size(info.tile_size);

@@ -1,4 +1,6 @@
 // maquette info STORE: layers, levels, tile counts, bounding box, size on disk.
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -22,6 +24,21 @@ json cells_bbox(const std::vector<CellId>& cells) {
   return json::array({b.west, b.south, b.east > 180.0 ? b.east - 360.0 : b.east, b.north});
 }
 
+// W S E N of a features layer: the union of its features' boxes.
+json features_bbox(const Store& store, const std::string& layer) {
+  const auto features = store.features_in(layer, CellId::FromFace(0).range_min(),
+                                          CellId::FromFace(CellId::kNumFaces - 1).range_max());
+  if (features.empty()) return nullptr;
+  std::array<double, 4> b = features.front().bbox;
+  for (const Feature& f : features) {
+    b[0] = std::min(b[0], f.bbox[0]);
+    b[1] = std::min(b[1], f.bbox[1]);
+    b[2] = std::max(b[2], f.bbox[2]);
+    b[3] = std::max(b[3], f.bbox[3]);
+  }
+  return json::array({b[0], b[1], b[2], b[3]});
+}
+
 json layer_json(const Store& store, const LayerInfo& l) {
   const LayerStats st = store.stats(l.name);
   json j = {{"name", l.name},
@@ -32,12 +49,14 @@ json layer_json(const Store& store, const LayerInfo& l) {
             {"level", l.level},
             {"levels", st.levels},
             {"tiles", st.tile_count},
+            {"features", st.feature_count},
             {"bytes", st.bytes},
             {"semantics", semantics_name(l.semantics)},
             {"units", l.units},
             {"codec", l.codec},
             {"nodata", l.nodata ? json(*l.nodata) : json(nullptr)},
-            {"bbox", cells_bbox(store.tile_cells(l.name))},
+            {"bbox", l.kind == LayerKind::Features ? features_bbox(store, l.name)
+                                                   : cells_bbox(store.tile_cells(l.name))},
             {"provenance", l.provenance}};
   if (l.level >= 0 && l.tile_size > 0)
     j["pixel_m"] = default_grid().level_info(l.level, l.tile_size).pixel_m;
@@ -67,8 +86,13 @@ void print_info(const std::string& path, bool as_json) {
                 l["semantics"].get<std::string>().c_str(),
                 l["units"].get<std::string>().empty() ? "" : ", units ",
                 l["units"].get<std::string>().c_str());
-    std::printf("    tiles  %lld (%.1f MiB compressed), levels %s\n", l["tiles"].get<long long>(),
-                l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
+    if (l["kind"] == "features")
+      std::printf("    features %lld indexed in %lld cells (%.1f MiB)\n",
+                  l["features"].get<long long>(), l["tiles"].get<long long>(),
+                  l["bytes"].get<double>() / 1048576.0);
+    else
+      std::printf("    tiles  %lld (%.1f MiB compressed), levels %s\n", l["tiles"].get<long long>(),
+                  l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
     std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
   }
   if (!report["artifacts"].empty())

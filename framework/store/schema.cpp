@@ -137,8 +137,7 @@ void create_schema(sqlite::Connection& conn) {
 void check_schema(sqlite::Connection& conn) {
   if (pragma_int(conn, "PRAGMA application_id") == 0 &&
       pragma_int(conn, "SELECT count(*) FROM sqlite_schema") == 0)
-    throw Error(conn.path() + " is an empty store (its creation was interrupted): open it for " +
-                "writing, e.g. run the pipeline again, to make it a store");
+    throw Error(conn.path() + " is an empty database, not a Maquette store");
   if (pragma_int(conn, "PRAGMA application_id") != kStoreApplicationId) not_a_store(conn);
   const int32_t version = pragma_int(conn, "PRAGMA user_version");
   if (version > kStoreSchemaVersion)

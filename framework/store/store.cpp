@@ -5,6 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include "store/codec.h"
 #include "store/schema.h"
 #include "store/store_impl.h"
@@ -18,6 +21,23 @@ constexpr int kReadFlags = SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX;
 // made read-only (chmod a-w) is refused for writing whoever opens it.
 bool writable(const std::string& path, const struct stat& st) {
   return ::access(path.c_str(), W_OK) == 0 && (st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) != 0;
+}
+
+// Builds a new store under a temporary name and links it into place, so that a process killed
+// at any moment never leaves a file at `path` without the schema (at worst an orphaned
+// PATH.creating.PID next to it).
+void create_store_file(const std::string& path) {
+  const std::string tmp = path + ".creating." + std::to_string(::getpid());
+  {
+    sqlite::Connection conn(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX);
+    create_schema(conn);
+  }  // closing the last connection checkpoints and removes the WAL
+  // link() rather than rename(): if another process created the store meanwhile, keep theirs.
+  const int rc = ::link(tmp.c_str(), path.c_str());
+  const int err = errno;
+  ::unlink(tmp.c_str());
+  if (rc != 0 && err != EEXIST)
+    throw Error("cannot create store " + path + ": " + std::strerror(err));
 }
 
 }  // namespace
@@ -82,16 +102,14 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
 
   auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
   try {
+    if (!exists) create_store_file(path);
     if (mode == Mode::ReadOnly) {
       check_schema(*impl->readers.borrow());
     } else {
-      const int create = mode == Mode::Create ? SQLITE_OPEN_CREATE : 0;
-      impl->writer = std::make_unique<sqlite::Connection>(
-          path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX | create);
+      impl->writer =
+          std::make_unique<sqlite::Connection>(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
       configure_connection(*impl->writer, true);
-      // Also for ReadWrite: an empty database is a store whose creation was killed before its
-      // schema transaction committed, and becomes a store now.
-      create_schema(*impl->writer);
+      create_schema(*impl->writer);  // for an existing store: checks, migrates, sets WAL
     }
   } catch (const sqlite::Failure& e) {
     if (e.code() == SQLITE_NOTADB) throw Error(path + " is not a Maquette store");

@@ -4,6 +4,7 @@
 
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/PolygonArea.hpp>
+#include <random>
 
 #include "core/error.h"
 #include "rhealpix/rhealpix_grid.h"
@@ -49,6 +50,26 @@ TEST(Geometry, ChildrenTileTheParent) {
       EXPECT_DOUBLE_EQ(c.side, p.side / 2);
       EXPECT_NEAR(c.x_min, p.x_min + (d & 1) * c.side, 1e-6);
       EXPECT_NEAR(c.y_max, p.y_max - (d >> 1) * c.side, 1e-6);
+    }
+  }
+}
+
+// Independent of plane_square's arithmetic: points of the parent's square, taken to the
+// ellipsoid (inverse) and back to a cell (forward), land in the child whose quadrant holds them.
+TEST(Geometry, PointsOfTheParentLandInThePredictedChild) {
+  const Grid& grid = default_grid();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.01, 0.99);
+  for (const CellId cell : sample_cells()) {
+    if (cell.level() >= CellId::kMaxLevel) continue;
+    const PlaneSquare p = grid.plane_square(cell);
+    for (int k = 0; k < 8; ++k) {
+      const double u = unit(rng), v = unit(rng);
+      if (std::abs(u - 0.5) < 0.02 || std::abs(v - 0.5) < 0.02) continue;  // off the midlines
+      const LonLat ll = grid.inverse({p.x_min + u * p.side, p.y_max - v * p.side});
+      const int digit = 2 * int(v >= 0.5) + int(u >= 0.5);
+      EXPECT_EQ(grid.cell_from_point(ll, cell.level() + 1), cell.child(digit))
+          << cell.ToText() << " u=" << u << " v=" << v;
     }
   }
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "ingest_fixture.h"
@@ -35,17 +36,20 @@ RasterSpec utm_spec(const std::string& type) {
   return s;
 }
 
-TEST(IngestAccuracy, SmoothFieldInUtmWithinTheBilinearBound) {
+// Ingests the UTM field and returns the largest and mean error of the samples well inside it.
+void check_utm_field(std::optional<Resampling> resampling, double max_error, double mean_error) {
   const std::string dir = temp_dir(), tif = dir + "/utm.tif";
   write_raster(tif, utm_spec("Float32"), [](int, double e, double n) { return utm_field(e, n); });
   RasterIngestOptions o;
   o.layer = "f";
   o.as = "climate";
+  o.resampling = resampling;
   const auto store = ingest(dir, "utm", {tif}, o);
   const LayerInfo info = store->require_layer("f");
   EXPECT_EQ(info.level, 11);  // 17.6 m pixels, the coarsest level not coarser than 30 m
   EXPECT_EQ(info.dtype, DType::F32);
-  EXPECT_EQ(info.provenance["resampling"], "bilinear");
+  EXPECT_EQ(info.provenance["resampling"],
+            resampling_name(resampling.value_or(Resampling::Bilinear)));
   const Projector to_utm("EPSG:4326", "EPSG:32612");
   double max_err = 0, sum = 0;
   int64_t n = 0;
@@ -67,9 +71,18 @@ TEST(IngestAccuracy, SmoothFieldInUtmWithinTheBilinearBound) {
     ++n;
   });
   ASSERT_GT(n, 100000);
+  EXPECT_LT(max_err, max_error);
+  EXPECT_LT(sum / double(n), mean_error);
+}
+
+TEST(IngestAccuracy, SmoothFieldInUtmWithinTheBilinearBound) {
   // Bilinear: h^2/8 |f''| ~ 0.02; the approximate transform adds up to 1/8 pixel x gradient.
-  EXPECT_LT(max_err, 0.06);
-  EXPECT_LT(sum / double(n), 0.01);
+  check_utm_field(std::nullopt, 0.06, 0.01);
+}
+
+TEST(IngestAccuracy, SmoothFieldInUtmCubic) {
+  // Cubic convolution is exact to the third order: only the transform's error is left.
+  check_utm_field(Resampling::Cubic, 0.05, 0.005);
 }
 
 TEST(IngestAccuracy, CategoricalClassesExactAwayFromBorders) {
@@ -103,6 +116,27 @@ TEST(IngestAccuracy, CategoricalClassesExactAwayFromBorders) {
     ++checked;
   });
   EXPECT_GT(checked, 100000);
+}
+
+TEST(IngestAccuracy, ScaleAndOffsetGiveFloat32) {
+  const std::string dir = temp_dir(), tif = dir + "/scaled.tif";
+  RasterSpec spec = utm_spec("UInt16");
+  spec.nodata = 0;
+  spec.scale = 0.1;
+  spec.offset = 5;
+  write_raster(tif, spec, [](int, double e, double) { return e < kUtmE0 + 6000 ? 1000 : 0; });
+  RasterIngestOptions o;
+  o.layer = "s";
+  o.as = "imagery";  // would keep uint16 without the scale
+  const auto store = ingest(dir, "scaled", {tif}, o);
+  EXPECT_EQ(store->require_layer("s").dtype, DType::F32);
+  int64_t valid = 0;
+  for_each_sample(*store, "s", [&](CellId, LonLat, const float* v) {
+    if (std::isnan(v[0])) return;
+    ASSERT_NEAR(v[0], 105.0f, 1e-4f);  // nodata (0) never mixed in
+    ++valid;
+  });
+  EXPECT_GT(valid, 100000);
 }
 
 // Ingests a lon/lat raster of sphere_field and checks every valid sample against it.

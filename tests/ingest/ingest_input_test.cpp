@@ -81,6 +81,21 @@ TEST_F(IngestInput, RegionNotOverlappingTheSource) {
   expect_refused("--as dem --bbox 100 10 101 11 " + good, "--bbox does not overlap the sources");
 }
 
+TEST_F(IngestInput, GeoJsonRegionNotOverlappingTheSource) {
+  const std::string region = dir + "/far.geojson";
+  std::ofstream(region) << R"({"type": "Polygon", "coordinates": [[[100, 10], [101, 10], )"
+                        << R"([101, 11], [100, 10]]]})";
+  expect_refused("--as dem --region " + region + " " + good,
+                 "--region " + region + " does not overlap the sources (" + good + ": lon 7..8");
+}
+
+TEST_F(IngestInput, BadClassTable) {
+  expect_refused(R"(--as landcover --classes '{"1": {"color": "blue"}}' )" + good,
+                 R"(--classes: class 1.color: expected "#rrggbb", got "blue")");
+  expect_refused(R"(--as landcover --classes '{"water": {}}' )" + good,
+                 "--classes: class key 'water' is not an integer value");
+}
+
 TEST_F(IngestInput, AllNodata) {
   const std::string bad = dir + "/void.tif";
   write_raster(bad, small_lonlat(7), [](int, double, double) { return -32768; });
@@ -135,6 +150,18 @@ TEST_F(IngestInput, MosaicLaterSourcesFillOnlyNodata) {
   });
   EXPECT_GT(ones, 1000);
   EXPECT_GT(twos, 1000);
+}
+
+TEST_F(IngestInput, ClassTableFromTheCommandLine) {
+  const CliResult r = run_maquette(
+      "-q ingest " + store +
+      R"( --layer lc --as landcover --classes '{"11": {"name": "Open water", "color": "#466b9f"}}' )" +
+      good);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const LayerInfo lc = Store::open(store, Store::Mode::ReadOnly)->require_layer("lc");
+  EXPECT_EQ(lc.provenance["classes"]["11"]["name"], "Open water");
+  EXPECT_EQ(lc.dtype, DType::I16);
+  EXPECT_EQ(lc.nodata, -32768.0);
 }
 
 TEST(IngestResume, KilledIngestResumesToTheSameTiles) {

@@ -46,6 +46,8 @@ void write_raster(const std::string& path, const RasterSpec& spec, const PixelVa
   for (int b = 1; b <= spec.bands; ++b) {
     GDALRasterBand* band = ds->GetRasterBand(b);
     if (spec.nodata) band->SetNoDataValue(*spec.nodata);
+    if (spec.scale != 1) band->SetScale(spec.scale);
+    if (spec.offset != 0) band->SetOffset(spec.offset);
     for (int y = 0; y < spec.height; ++y) {
       for (int x = 0; x < spec.width; ++x) {
         const double px = x + 0.5, py = y + 0.5;

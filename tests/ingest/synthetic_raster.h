@@ -18,7 +18,8 @@ struct RasterSpec {
   std::string type = "Float32";  // GDAL type name
   std::optional<double> nodata;
   std::vector<std::string> categories;  // category names of band 1
-  bool colour_table = false;            // a colour table on band 1 (class i: (10i, 20i, 30i))
+  bool colour_table = false;            // a colour table on band 1 (class i: (10i, 20i, 15i))
+  double scale = 1, offset = 0;         // of every band
 };
 
 // value(band, x, y) with x, y the pixel centre in the raster's CRS.

@@ -104,9 +104,9 @@ TEST(StoreOpen, NotAStore) {
   for (const auto& path : {garbage, foreign})
     for (auto mode : {Store::Mode::ReadOnly, Store::Mode::ReadWrite, Store::Mode::Create})
       expect_error([&] { Store::open(path, mode); }, {path + " is not a Maquette store"});
-  // An empty file is a store whose creation was killed before its schema committed: readers
-  // are told so, and opening it for writing makes it a store.
-  expect_error([&] { Store::open(empty, Store::Mode::ReadOnly); }, {empty, "empty store"});
+  // An empty file (not made by us: stores are created whole) is not a store to readers, and
+  // becomes one when opened for writing.
+  expect_error([&] { Store::open(empty, Store::Mode::ReadOnly); }, {empty, "empty database"});
   EXPECT_NO_THROW(Store::open(empty, Store::Mode::ReadWrite));
   EXPECT_NO_THROW(Store::open(empty, Store::Mode::ReadOnly)->layers());
 }
