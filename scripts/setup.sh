@@ -12,16 +12,37 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev
 )
 
+root=$(cd "$(dirname "$0")/.." && pwd)
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "setup: done"
+fi
 
-echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
-sudo=""
-[ "$(id -u)" -ne 0 ] && sudo="sudo"
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-echo "setup: done"
+# The demo's real data: a Landsat 7 scene and its DEM (Olinda, Brazil), shipped by Debian's
+# r-cran-stars package. Only the two files are extracted (no R needed) into build/demo-data,
+# where build/bin/maquette looks for them. Without them the demo uses synthetic terrain.
+demo_data="$root/build/demo-data"
+if [ ! -f "$demo_data/L7_ETMs.tif" ] || [ ! -f "$demo_data/olinda_dem_utm25s.tif" ]; then
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+  # apt-get download needs package lists: fetch them once if this machine has none yet.
+  if (cd "$tmp" && apt-get download -qq r-cran-stars >/dev/null 2>&1) ||
+     ($sudo apt-get update -qq >/dev/null 2>&1 && cd "$tmp" && apt-get download -qq r-cran-stars >/dev/null 2>&1); then
+    dpkg-deb -x "$tmp"/r-cran-stars_*.deb "$tmp/x"
+    mkdir -p "$demo_data"
+    cp "$tmp"/x/usr/lib/R/site-library/stars/tif/{L7_ETMs.tif,olinda_dem_utm25s.tif} "$demo_data/"
+    echo "setup: demo data (Debian r-cran-stars: L7_ETMs.tif, olinda_dem_utm25s.tif) in $demo_data"
+  else
+    echo "setup: could not download r-cran-stars (the demo will use synthetic terrain)"
+  fi
+fi

@@ -23,12 +23,13 @@ print(f"{dt:.3f} {resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024:
 PY
 }
 
-# bench NAME SOURCE AS RESAMPLING GDAL_RESAMPLING
+# bench NAME SOURCE AS RESAMPLING [MAQUETTE OPTIONS...]
 bench() {
   name=$1 src=$2 as=$3 rs=$4
+  shift 4
   [ -f "$src" ] || { echo "$name: $src is absent, skipped"; return; }
   store=$TMP/$name.mqt
-  set -- $(timed "$MAQUETTE" -q ingest "$store" --layer l --as "$as" --resampling "$rs" "$src")
+  set -- $(timed "$MAQUETTE" -q ingest "$store" --layer l --as "$as" --resampling "$rs" "$@" "$src")
   m_s=$1 m_mem=$2
   info=$("$MAQUETTE" info "$store" --json)
   set -- $(python3 -c '
@@ -62,3 +63,6 @@ print(f"  ratio gdalwarp / maquette: {float(gs) / float(ms):.2f}x")' \
 nproc | sed 's/^/cores: /'
 bench srtm_rainier "$DATA/srtm3/mt_rainier_90m.tif" dem bilinear
 bench landsat_b4 "$DATA/zion/landsat_b4.tif" imagery bilinear
+# The same scene at the next finer level (4x the samples): fixed costs (program start, planning,
+# overviews) weigh less.
+bench landsat_b4_level12 "$DATA/zion/landsat_b4.tif" imagery bilinear --level 12

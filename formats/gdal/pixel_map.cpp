@@ -59,13 +59,22 @@ void PixelMapper::map(CellId cell, int size, PixelMap& out) {
       // The block's samples: [c0, c1] x [r0, r1], the last column/row only at the tile's edge.
       const int ce = c1 == size - 1 ? c1 + 1 : c1, re = r1 == size - 1 ? r1 + 1 : r1;
       if (linear) {
+        // Bilinear interpolation, stepped along each row from its two ends.
         const double wc = std::max(1, c1 - c0), wr = std::max(1, r1 - r0);
-        for (int r = r0; r < re; ++r)
+        for (int r = r0; r < re; ++r) {
+          const double fr = (r - r0) / wr;
+          const double xl = (1 - fr) * lx[k00] + fr * lx[k10],
+                       xr = (1 - fr) * lx[k01] + fr * lx[k11];
+          const double yl = (1 - fr) * ly[k00] + fr * ly[k10],
+                       yr = (1 - fr) * ly[k01] + fr * ly[k11];
+          const double dx = (xr - xl) / wc, dy = (yr - yl) / wc;
+          double* ox = out.x.data() + size_t(r) * size_t(size);
+          double* oy = out.y.data() + size_t(r) * size_t(size);
           for (int c = c0; c < ce; ++c) {
-            const size_t k = size_t(r) * size_t(size) + size_t(c);
-            out.x[k] = interp(lx, (c - c0) / wc, (r - r0) / wr);
-            out.y[k] = interp(ly, (c - c0) / wc, (r - r0) / wr);
+            ox[c] = xl + (c - c0) * dx;
+            oy[c] = yl + (c - c0) * dy;
           }
+        }
         continue;
       }
       bx.clear();

@@ -13,9 +13,15 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
+// floor for the window's coordinate range, without a libm call (the hot path).
+inline int ifloor(double v) {
+  const int i = int(v);
+  return i - (v < i);
+}
+
 float bilinear(const Window& w, int band, double x, double y) {
   const double u = x - 0.5, v = y - 0.5;
-  const int i = int(std::floor(u)), j = int(std::floor(v));
+  const int i = ifloor(u), j = ifloor(v);
   const double fu = u - i, fv = v - j;
   // The common case: all four pixels in the window and valid.
   if (i >= 0 && j >= 0 && i + 1 < w.w && j + 1 < w.h) {
@@ -48,7 +54,7 @@ void keys(double t, double out[4]) {  // weights of pixels -1, 0, 1, 2 for offse
 
 float cubic(const Window& w, int band, double x, double y) {
   const double u = x - 0.5, v = y - 0.5;
-  const int i = int(std::floor(u)), j = int(std::floor(v));
+  const int i = ifloor(u), j = ifloor(v);
   double wu[4], wv[4];
   keys(u - i, wu);
   keys(v - j, wv);

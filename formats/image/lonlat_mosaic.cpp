@@ -14,6 +14,29 @@ namespace {
 
 constexpr double kMetresPerDegree = 111319.49;  // at the equator, to pick a pixel size
 
+// Crops the raster to the rows and columns holding data: cells are often much larger than the
+// data in them.
+void crop_to_data(LonLatRaster& r) {
+  int c0 = r.width, c1 = -1, r0 = r.height, r1 = -1;
+  for (int row = 0; row < r.height; ++row)
+    for (int col = 0; col < r.width; ++col)
+      if (std::isfinite(r.at(col, row))) {
+        c0 = std::min(c0, col), c1 = std::max(c1, col);
+        r0 = std::min(r0, row), r1 = std::max(r1, row);
+      }
+  if (c1 < 0) return;  // no data at all: keep the frame
+  std::vector<float> values;
+  values.reserve(size_t(c1 - c0 + 1) * size_t(r1 - r0 + 1) * size_t(r.channels));
+  for (int row = r0; row <= r1; ++row)
+    for (int col = c0; col <= c1; ++col)
+      for (int k = 0; k < r.channels; ++k) values.push_back(r.at(col, row, k));
+  r.west += c0 * r.step;
+  r.north -= r0 * r.step;
+  r.width = c1 - c0 + 1;
+  r.height = r1 - r0 + 1;
+  r.values = std::move(values);
+}
+
 }  // namespace
 
 LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::string& layer,
@@ -73,6 +96,7 @@ LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::strin
             it->second->at(tc, tr, k);
     }
   }
+  crop_to_data(r);
   return r;
 }
 

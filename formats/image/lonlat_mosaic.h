@@ -23,7 +23,8 @@ struct LonLatRaster {
 // Resamples the tiles of `layer` at `cells` (cells at the layer's level, e.g. from
 // layer_tile_cells; all its tiles when empty) onto a lon/lat raster no larger than
 // `max_side` pixels on its longer side, reading overview levels when that is coarser than the
-// layer. Throws maquette::Error for an unknown layer or when there are no tiles.
+// layer, cropped to the samples holding data. Throws maquette::Error for an unknown layer or
+// when there are no tiles.
 LonLatRaster mosaic_layer(const Store& store, const Grid& grid, const std::string& layer,
                           std::vector<CellId> cells, int max_side = 2048);
 

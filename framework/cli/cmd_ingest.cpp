@@ -36,10 +36,10 @@ void ingest_rasters(IngestCommandOptions& o) {
   if (!o.resampling.empty()) r.resampling = parse_resampling(o.resampling);
   const RasterIngestReport rep = ingest_raster(o.store, o.sources, r);
   spdlog::info(
-      "layer {}: {} tiles written, {} cells without data, {} already done, level {}, {} in "
-      "{:.2f} s{}",
-      r.layer, rep.written, rep.empty, rep.skipped, rep.level, resampling_name(rep.resampling),
-      rep.seconds, rep.resumed ? " (resumed)" : "");
+      "layer {}: {} cells at level {}: {} tiles written, {} without data, {} already done; {} "
+      "in {:.2f} s{}",
+      r.layer, rep.cells, rep.level, rep.written, rep.empty, rep.skipped,
+      resampling_name(rep.resampling), rep.seconds, rep.resumed ? " (resumed)" : "");
 }
 
 void ingest_vectors(const IngestCommandOptions& o) {

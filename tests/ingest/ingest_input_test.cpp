@@ -164,7 +164,7 @@ TEST_F(IngestInput, ClassTableFromTheCommandLine) {
   EXPECT_EQ(lc.nodata, -32768.0);
 }
 
-TEST(IngestResume, KilledIngestResumesToTheSameTiles) {
+TEST(IngestResume, KilledIngestResumesToTheSameTilesAsAnyThreadCount) {
   const std::string dir = temp_dir(), tif = dir + "/big.tif";
   RasterSpec spec = small_lonlat(7);
   spec.width = spec.height = 2000;
@@ -201,12 +201,20 @@ TEST(IngestResume, KilledIngestResumesToTheSameTiles) {
   if (WIFSIGNALED(status)) {
     EXPECT_NE(r.err.find("resum"), std::string::npos) << r.err;
   }
+  const std::string two = dir + "/two_threads.mqt";
+  ASSERT_EQ(run_maquette("-q ingest " + two + " --layer d --as dem --threads 2 " + tif).exit_code,
+            0);
+  const auto t = Store::open(two, Store::Mode::ReadOnly);
   const auto a = Store::open(clean, Store::Mode::ReadOnly),
              b = Store::open(killed, Store::Mode::ReadOnly);
   const std::vector<CellId> cells = a->tile_cells("d");
   ASSERT_EQ(cells, b->tile_cells("d"));
   EXPECT_LE(partial, int64_t(cells.size()));
-  for (CellId c : cells) EXPECT_EQ(a->get_tile("d", c)->bytes, b->get_tile("d", c)->bytes);
+  ASSERT_EQ(cells, t->tile_cells("d"));
+  for (CellId c : cells) {
+    EXPECT_EQ(a->get_tile("d", c)->bytes, b->get_tile("d", c)->bytes);
+    EXPECT_EQ(a->get_tile("d", c)->bytes, t->get_tile("d", c)->bytes);  // any thread count
+  }
   for (CellId c : cells)
     EXPECT_EQ(a->get_overview("d", c.parent())->bytes, b->get_overview("d", c.parent())->bytes);
 }
