@@ -10,7 +10,10 @@ packages=(
   libspdlog-dev libfmt-dev libtbb-dev libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3 libzstd-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev
+  libcpp-httplib-dev chromium
 )
+# The viewer is built with npm; Debian's node is enough where the machine has none of its own.
+command -v npm >/dev/null || packages+=(nodejs npm)
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 sudo=""
