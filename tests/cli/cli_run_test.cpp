@@ -122,12 +122,23 @@ TEST_F(CliRun, KilledRunResumesToTheSameBits) {
   const std::string env = "MAQUETTE_MODULE_PATH=" + kFixtures + "/good";
   const int pid = spawn_maquette("run " + dir_ + "/killed.json --threads 2", env);
   ASSERT_GT(pid, 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  // Kill it once a few cells are stored (polling, since a loaded machine may start it slowly).
+  const std::string killed = dir_ + "/killed.mqt";
+  auto cells_done = [&]() -> size_t {
+    if (!fs::exists(killed)) return 0;
+    try {
+      return Store::open(killed, Store::Mode::ReadOnly)->tile_cells("v").size();
+    } catch (const std::exception&) {
+      return 0;  // layer not created yet
+    }
+  };
+  for (int i = 0; i < 2000 && cells_done() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(::kill(pid, SIGKILL), 0);
   int status = 0;
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed: make it slower";
-  EXPECT_TRUE(Store::open(dir_ + "/killed.mqt", Store::Mode::ReadOnly)->integrity_ok());
+  EXPECT_TRUE(Store::open(killed, Store::Mode::ReadOnly)->integrity_ok());
 
   const CliResult resumed =
       run_maquette("-q run " + dir_ + "/killed.json --resume --threads 1", env);
