@@ -26,3 +26,9 @@ if(TARGET zstd::libzstd_shared)
 else()
   set(MAQUETTE_ZSTD zstd::libzstd_static)
 endif()
+# Optional: `maquette run` under mpirun/srun shares a run among ranks (framework/runtime/ranks.h).
+# Without MPI the build is single-process only.
+find_package(MPI COMPONENTS CXX)
+if(MPI_CXX_FOUND)
+  set(MAQUETTE_WITH_MPI ON)
+endif()

@@ -1,13 +1,16 @@
 #!/bin/sh
 # Side by side: `maquette ingest` against `gdalwarp -multi -wo NUM_THREADS=ALL_CPUS` to
 # +proj=rhealpix, on the same sources, with the same resampling and the same number of output
-# samples (gdalwarp's grid: the footprint's extent at our pixel size, scaled to our sample count).
-# Prints wall time, peak RSS and the ratio for each. Usage: benchmarks/ingest/compare.sh [BUILD_DIR]
+# samples (gdalwarp's grid: the footprint's extent at our pixel size, scaled to our sample count),
+# both on all cores. Each program runs once untimed (warm file cache, both alike), then RUNS (3)
+# times alternately; prints the median wall time, the largest peak RSS and the ratio of the medians.
+# Usage: benchmarks/ingest/compare.sh [BUILD_DIR]
 set -eu
 BUILD=${1:-build}
 HERE=$(cd "$(dirname "$0")" && pwd)
 DATA=${MAQUETTE_SHARED_DATA:-$HERE/../../../shared/data}
 MAQUETTE=$BUILD/bin/maquette
+RUNS=${RUNS:-3}
 RHP='+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0'
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
@@ -23,41 +26,59 @@ print(f"{dt:.3f} {resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024:
 PY
 }
 
+# median FILE: the median seconds and the largest peak RSS of the "SECONDS PEAK" lines in FILE.
+median() {
+  python3 - "$1" <<'PY'
+import statistics, sys
+runs = [tuple(map(float, l.split())) for l in open(sys.argv[1])]
+print(f"{statistics.median(s for s, _ in runs):.3f} {max(m for _, m in runs):.0f}")
+PY
+}
+
 # bench NAME SOURCE AS RESAMPLING [MAQUETTE OPTIONS...]
 bench() {
   name=$1 src=$2 as=$3 rs=$4
   shift 4
   [ -f "$src" ] || { echo "$name: $src is absent, skipped"; return; }
   store=$TMP/$name.mqt
-  set -- $(timed "$MAQUETTE" -q ingest "$store" --layer l --as "$as" --resampling "$rs" "$@" "$src")
-  m_s=$1 m_mem=$2
+  "$MAQUETTE" -q ingest "$store" --layer l --as "$as" --resampling "$rs" "$@" "$src"  # warm-up
   info=$("$MAQUETTE" info "$store" --json)
-  set -- $(python3 -c '
+  level_tiles=$(python3 -c '
 import json, sys
 l = json.loads(sys.argv[1])["layers"][0]
-print(l["level"], l["tile_size"], l["tiles"], l.get("channels", 1))' "$info")
-  level=$1 n=$2 tiles=$3
+print(l["level"], l["tile_size"], l["tiles"])' "$info")
+  level=${level_tiles%% *} tiles=${level_tiles##* } n=${level_tiles#* } n=${n%% *}
   samples=$((tiles * n * n))
   pixel=$("$MAQUETTE" cells levels --tile-size "$n" --json |
           python3 -c "import json,sys; print(json.load(sys.stdin)[$level]['plane_side_m'] / $n)")
   gdalwarp -q -overwrite -of VRT -t_srs "$RHP" -tr "$pixel" "$pixel" "$src" "$TMP/probe.vrt"
-  set -- $(python3 -c '
+  gsize=$(python3 -c '
 import json, math, subprocess, sys
 info = json.loads(subprocess.check_output(["gdalinfo", "-json", sys.argv[1]]))
 w, h = info["size"]; k = math.sqrt(int(sys.argv[2]) / (w * h))
 print(round(w * k), round(h * k))' "$TMP/probe.vrt" "$samples")
-  gw=$1 gh=$2
-  set -- $(timed gdalwarp -q -overwrite -multi -wo NUM_THREADS=ALL_CPUS -t_srs "$RHP" \
-           -ts "$gw" "$gh" -r "$rs" "$src" "$TMP/$name.tif")
-  g_s=$1 g_mem=$2
+  gw=${gsize% *} gh=${gsize#* }
+  gdalwarp -q -overwrite -multi -wo NUM_THREADS=ALL_CPUS -t_srs "$RHP" -ts "$gw" "$gh" -r "$rs" \
+    "$src" "$TMP/$name.tif"  # warm-up
+  : >"$TMP/m" && : >"$TMP/g"
+  i=0
+  while [ $i -lt "$RUNS" ]; do
+    rm -f "$store"
+    timed "$MAQUETTE" -q ingest "$store" --layer l --as "$as" --resampling "$rs" "$@" "$src" \
+      >>"$TMP/m"
+    timed gdalwarp -q -overwrite -multi -wo NUM_THREADS=ALL_CPUS -t_srs "$RHP" -ts "$gw" "$gh" \
+      -r "$rs" "$src" "$TMP/$name.tif" >>"$TMP/g"
+    i=$((i + 1))
+  done
+  set -- $(median "$TMP/m") $(median "$TMP/g")
   python3 -c '
 import sys
-name, ms, mm, gs, gm, samples, gw, gh, level, tiles = sys.argv[1:]
-print(f"{name}: level {level}, {tiles} tiles, {int(samples)/1e6:.2f} M samples (gdalwarp {gw}x{gh} = {int(gw)*int(gh)/1e6:.2f} M)")
+name, ms, mm, gs, gm, samples, gw, gh, level, tiles, runs = sys.argv[1:]
+print(f"{name}: level {level}, {tiles} tiles, {int(samples)/1e6:.2f} M samples (gdalwarp {gw}x{gh} = {int(gw)*int(gh)/1e6:.2f} M), median of {runs}")
 print(f"  maquette ingest {float(ms):7.3f} s  peak {mm:>5} MiB")
 print(f"  gdalwarp -multi {float(gs):7.3f} s  peak {gm:>5} MiB")
 print(f"  ratio gdalwarp / maquette: {float(gs) / float(ms):.2f}x")' \
-    "$name" "$m_s" "$m_mem" "$g_s" "$g_mem" "$samples" "$gw" "$gh" "$level" "$tiles"
+    "$name" "$1" "$2" "$3" "$4" "$samples" "$gw" "$gh" "$level" "$tiles" "$RUNS"
 }
 
 nproc | sed 's/^/cores: /'

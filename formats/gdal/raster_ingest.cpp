@@ -10,10 +10,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <exception>
 #include <mutex>
 
 #include "core/error.h"
+#include "core/samples.h"
 #include "gdal/tile_resampler.h"
 #include "runtime/progress.h"
 
@@ -23,6 +25,34 @@ namespace {
 // Cells per transaction: a commit costs about as much as a tile's work (see the store benchmark),
 // and a few cells per batch still keep every thread busy.
 constexpr size_t kCellsPerBatch = 4;
+
+// from_tile(tile, dtype, nodata) without its per-sample conversion through double and libm's
+// round: the same bytes (NaN -> nodata; integer dtypes rounded half away from zero and clamped).
+RawTile to_raw(const Tile<float>& tile, DType dtype, const double* nodata) {
+  RawTile raw{dtype, tile.size(), tile.channels(), {}};
+  raw.bytes.resize(raw.sample_count() * dtype_size(dtype));
+  const std::span<const float> in = tile.data();
+  visit_dtype(dtype, [&]<typename S>(std::type_identity<S>) {
+    const S fill = cast_sample<S>(nodata ? *nodata : std::numeric_limits<double>::quiet_NaN());
+    std::byte* out = raw.bytes.data();
+    for (size_t i = 0; i < in.size(); ++i, out += sizeof(S)) {
+      const float v = in[i];
+      S s = fill;
+      if constexpr (std::is_floating_point_v<S>) {
+        if (!std::isnan(v)) s = S(v);  // float32 and float64 hold every float exactly
+      } else if (!std::isnan(v)) {
+        constexpr double lo = double(std::numeric_limits<S>::min()),
+                         hi = double(std::numeric_limits<S>::max());
+        const double d = v;
+        s = d <= lo   ? std::numeric_limits<S>::min()
+            : d >= hi ? std::numeric_limits<S>::max()
+                      : S(d < 0 ? -int64_t(0.5 - d) : int64_t(d + 0.5));
+      }
+      std::memcpy(out, &s, sizeof(S));
+    }
+  });
+  return raw;
+}
 
 }  // namespace
 
@@ -65,7 +95,12 @@ RasterIngestReport ingest_raster(const std::string& store_path,
 
   const double* nodata = layer.nodata ? &*layer.nodata : nullptr;
   const bool categorical = layer.semantics == Semantics::Categorical;
-  tbb::enumerable_thread_specific<std::unique_ptr<TileResampler>> resamplers;
+  // Per thread: its resampler (GDAL handles, PROJ transforms) and work tile, kept across cells.
+  struct Worker {
+    std::unique_ptr<TileResampler> resampler;
+    Tile<float> tile;
+  };
+  tbb::enumerable_thread_specific<Worker> workers;
   std::atomic<int64_t> written = 0, empty = 0;
   std::atomic<bool> failed = false;
   std::exception_ptr error;
@@ -78,16 +113,15 @@ RasterIngestReport ingest_raster(const std::string& store_path,
           size_t(0), (todo.size() + kCellsPerBatch - 1) / kCellsPerBatch, [&](size_t chunk) {
             if (failed) return;
             try {
-              auto& resampler = resamplers.local();
+              auto& [resampler, tile] = workers.local();
               if (!resampler)
                 resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
                                                             plan.resampling, categorical);
-              Tile<float> tile;
               Store::Batch batch(*store);
               const size_t end = std::min(todo.size(), (chunk + 1) * kCellsPerBatch);
               for (size_t i = chunk * kCellsPerBatch; i < end; ++i) {
                 if (resampler->make(todo[i], layer.tile_size, tile)) {
-                  batch.put_tile(layer.name, todo[i], from_tile(tile, layer.dtype, nodata));
+                  batch.put_tile(layer.name, todo[i], to_raw(tile, layer.dtype, nodata));
                   ++written;
                 } else {
                   ++empty;

@@ -19,10 +19,8 @@ inline int ifloor(double v) {
   return i - (v < i);
 }
 
-float bilinear(const Window& w, int band, double x, double y) {
-  const double u = x - 0.5, v = y - 0.5;
-  const int i = ifloor(u), j = ifloor(v);
-  const double fu = u - i, fv = v - j;
+// Bilinear from the 2x2 pixels at (i, j)..(i + 1, j + 1) with fractions fu, fv.
+float bilinear_at(const Window& w, int band, int i, int j, double fu, double fv) {
   // The common case: all four pixels in the window and valid.
   if (i >= 0 && j >= 0 && i + 1 < w.w && j + 1 < w.h) {
     const float* p = w.planes[size_t(band)].data() + size_t(j) * size_t(w.w) + size_t(i);
@@ -40,6 +38,12 @@ float bilinear(const Window& w, int band, double x, double y) {
       norm += wt[k];
     }
   return norm > 0 ? float(sum / norm) : kNaN;
+}
+
+float bilinear(const Window& w, int band, double x, double y) {
+  const double u = x - 0.5, v = y - 0.5;
+  const int i = ifloor(u), j = ifloor(v);
+  return bilinear_at(w, band, i, j, u - i, v - j);
 }
 
 void keys(double t, double out[4]) {  // weights of pixels -1, 0, 1, 2 for offset t in [0, 1)
@@ -142,20 +146,41 @@ Resampling parse_resampling(std::string_view name) {
               "' is not one of nearest, bilinear, cubic, mode, average");
 }
 
-float resample(const Window& w, int band, Resampling r, double x, double y, double hx, double hy) {
+void resample(const Window& w, Resampling r, const WindowPoints& p, std::span<float> out) {
+  const size_t bands = w.planes.size();
+  // Calls value(i, band) for the bands of each sample still missing.
+  const auto fill = [&](auto value) {
+    for (size_t i = 0; i < p.x.size(); ++i) {
+      if (std::isnan(p.x[i])) continue;
+      float* o = out.data() + i * bands;
+      for (size_t b = 0; b < bands; ++b)
+        if (std::isnan(o[b])) o[b] = value(i, int(b));
+    }
+  };
   switch (r) {
     case Resampling::Nearest:
-      return w.at(band, int(std::floor(x)), int(std::floor(y)));
+      return fill([&](size_t i, int b) {
+        return w.at(b, int(std::floor(p.x[i])), int(std::floor(p.y[i])));
+      });
     case Resampling::Bilinear:
-      return bilinear(w, band, x, y);
+      // The taps and fractions once per sample.
+      for (size_t i = 0; i < p.x.size(); ++i) {
+        if (std::isnan(p.x[i])) continue;
+        const double u = p.x[i] - 0.5, v = p.y[i] - 0.5;
+        const int col = ifloor(u), row = ifloor(v);
+        const double fu = u - col, fv = v - row;
+        float* o = out.data() + i * bands;
+        for (size_t b = 0; b < bands; ++b)
+          if (std::isnan(o[b])) o[b] = bilinear_at(w, int(b), col, row, fu, fv);
+      }
+      return;
     case Resampling::Cubic:
-      return cubic(w, band, x, y);
+      return fill([&](size_t i, int b) { return cubic(w, b, p.x[i], p.y[i]); });
     case Resampling::Mode:
-      return mode(w, band, x, y, hx, hy);
+      return fill([&](size_t i, int b) { return mode(w, b, p.x[i], p.y[i], p.hx[i], p.hy[i]); });
     case Resampling::Average:
-      return average(w, band, x, y, hx, hy);
+      return fill([&](size_t i, int b) { return average(w, b, p.x[i], p.y[i], p.hx[i], p.hy[i]); });
   }
-  return kNaN;
 }
 
 }  // namespace maquette

@@ -8,6 +8,7 @@
 // - mode: the value covering the largest area of that footprint, ties to the smallest value.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -20,7 +21,16 @@ enum class Resampling { Nearest, Bilinear, Cubic, Mode, Average };
 std::string_view resampling_name(Resampling r);
 Resampling parse_resampling(std::string_view name);  // throws maquette::Error
 
-// The value of `band` at window coordinates (x, y) (pixel centres at i + 0.5).
-float resample(const Window& w, int band, Resampling r, double x, double y, double hx, double hy);
+// The window coordinates (pixel centres at i + 0.5) of a tile's samples, row-major; x NaN: not
+// to be resampled. hx, hy: each sample's footprint half-sizes in window pixels (area kernels
+// only, else empty).
+struct WindowPoints {
+  std::span<const double> x, y, hx, hy;
+};
+
+// For every sample i with a valid x and every band of the window: out[i * bands + band] = the
+// kernel's value there, where out is NaN (not filled by an earlier source). The kernel is chosen
+// once per call, and the taps and weights once per sample for all bands.
+void resample(const Window& w, Resampling r, const WindowPoints& points, std::span<float> out);
 
 }  // namespace maquette

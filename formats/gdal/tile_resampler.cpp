@@ -23,7 +23,10 @@ TileResampler::~TileResampler() = default;
 
 bool TileResampler::make(CellId cell, int size, Tile<float>& tile) {
   const int channels = int(sources_.front()->info.bands.size());
-  tile = Tile<float>(size, channels, 0, std::numeric_limits<float>::quiet_NaN());
+  if (tile.size() == size && tile.channels() == channels && tile.halo() == 0)
+    std::ranges::fill(tile.data(), std::numeric_limits<float>::quiet_NaN());
+  else
+    tile = Tile<float>(size, channels, 0, std::numeric_limits<float>::quiet_NaN());
   for (auto& s : sources_) sample(*s, cell, tile);
   for (float v : tile.data())
     if (!std::isnan(v)) return true;
@@ -46,9 +49,10 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
         if (v < W / 2) v += W;
   }
   const bool area = resampling_ == Resampling::Average || resampling_ == Resampling::Mode;
-  const auto missing = [&](int c, int r) {
+  const std::span<const float> values = tile.data();
+  const auto missing = [&](size_t i) {
     for (int k = 0; k < channels; ++k)
-      if (std::isnan(tile.at(c, r, k))) return true;
+      if (std::isnan(values[i * size_t(channels) + size_t(k)])) return true;
     return false;
   };
   const auto usable = [&](size_t i) {
@@ -56,10 +60,10 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
            (s.info.wraps || (x[i] >= 0 && x[i] <= W));
   };
   // Half-sizes of each sample's footprint in source pixels (area kernels only).
-  std::vector<float> hx, hy;
+  std::vector<double> hx, hy;  // float precision (as the kernels have always seen them)
   if (area) {
-    hx.assign(x.size(), 0.5f);
-    hy.assign(x.size(), 0.5f);
+    hx.assign(x.size(), 0.5);
+    hy.assign(x.size(), 0.5);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
         const size_t i = size_t(r) * n + c;
@@ -75,23 +79,26 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
                      ay = 0.5 * (std::abs(yc) + std::abs(yr));
         // Beyond a seam the differences are meaningless: keep one pixel there.
         if (std::isfinite(ax) && std::isfinite(ay) && ax < W / 4 && ay < H / 4) {
-          hx[i] = float(ax);
-          hy[i] = float(ay);
+          hx[i] = double(float(ax));
+          hy[i] = double(float(ay));
         }
       }
   }
-  // The source window the samples need.
+  // The source window the samples to fill need (usable, some channel still missing); unusable
+  // samples get x = NaN, which the kernels skip.
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) {
-      const size_t i = size_t(r) * n + c;
-      if (!usable(i) || !missing(c, r)) continue;
-      const double rx = area ? hx[i] + 1 : 2, ry = area ? hy[i] + 1 : 2;
-      x0 = std::min(x0, x[i] - rx);
-      x1 = std::max(x1, x[i] + rx);
-      y0 = std::min(y0, y[i] - ry);
-      y1 = std::max(y1, y[i] + ry);
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (!usable(i)) {
+      x[i] = std::numeric_limits<double>::quiet_NaN();
+      continue;
     }
+    if (!missing(i)) continue;
+    const double rx = area ? hx[i] + 1 : 2, ry = area ? hy[i] + 1 : 2;
+    x0 = std::min(x0, x[i] - rx);
+    x1 = std::max(x1, x[i] + rx);
+    y0 = std::min(y0, y[i] - ry);
+    y1 = std::max(y1, y[i] + ry);
+  }
   if (!(x0 < x1)) return;
   if (!s.info.wraps) x0 = std::max(x0, 0.0), x1 = std::min(x1, W);
   y0 = std::max(y0, 0.0);
@@ -105,17 +112,14 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
   if (ww <= 0 || wh <= 0) return;
   s.reader.read(ix0, iy0, ww, wh, step, categorical_, window_);
 
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) {
-      const size_t i = size_t(r) * n + c;
-      if (!usable(i)) continue;
-      const double wx = (x[i] - double(ix0)) / step, wy = (y[i] - double(iy0)) / step;
-      const double ax = area ? hx[i] / step : 0, ay = area ? hy[i] / step : 0;
-      for (int k = 0; k < channels; ++k) {
-        float& out = tile.at(c, r, k);
-        if (std::isnan(out)) out = resample(window_, k, resampling_, wx, wy, ax, ay);
-      }
-    }
+  // Source pixel coordinates -> window coordinates.
+  for (size_t i = 0; i < x.size(); ++i) {
+    x[i] = (x[i] - double(ix0)) / step;
+    y[i] = (y[i] - double(iy0)) / step;
+  }
+  for (double& v : hx) v /= step;
+  for (double& v : hy) v /= step;
+  resample(window_, resampling_, {x, y, hx, hy}, tile.data());
 }
 
 }  // namespace maquette

@@ -22,8 +22,8 @@ class TileResampler {
                 bool categorical);
   ~TileResampler();
 
-  // Fills `tile` (size x size x channels, NaN where no source has data); returns whether any
-  // sample is valid.
+  // Fills `tile` (size x size x channels, NaN where no source has data; its storage is reused
+  // when the shape matches); returns whether any sample is valid.
   bool make(CellId cell, int size, Tile<float>& tile);
 
  private:

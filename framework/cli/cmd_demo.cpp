@@ -18,6 +18,7 @@
 #include "image/quicklook.h"
 #include "runtime/operator_registry.h"
 #include "runtime/runner.h"
+#include "tiles3d/export_tiles3d.h"
 
 namespace maquette::cli {
 namespace {
@@ -115,14 +116,23 @@ void run_demo(const DemoOptions& o) {
     write_quicklook_png(mosaic_layer(*store, default_grid(), q.layer, {}), q.style, path);
     written += "\n  " + path;
   }
+  // The terrain for 3D viewers: Draco-compressed 3D Tiles, textured with the imagery if any.
+  const std::string tiles_dir = (fs::path(o.output) / "tiles3d").string();
+  fs::remove_all(tiles_dir, ec);
+  Tiles3dExport tiles;
+  tiles.terrain.dem = "dem";
+  if (real) tiles.terrain.texture = "imagery";
+  const int64_t tile_count = export_tiles3d(*store, default_grid(), tiles, tiles_dir);
   std::printf(
       "Demo (%s) finished in %.1f s.\n"
-      "Store:      %s\nPipeline:   %s\nQuicklooks:%s\n"
-      "Next:\n  maquette info %s\n  maquette export gtiff %s --layer dem dem.tif\n"
+      "Store:      %s\nPipeline:   %s\nQuicklooks:%s\n3D Tiles:   %s (%lld tiles)\n"
+      "Next:\n  maquette view %s      (then open the URL it prints)\n"
+      "  maquette info %s\n  maquette export gtiff %s --layer dem dem.tif\n"
       "  maquette run %s --dry-run\n",
       real ? "Olinda, Brazil: Landsat 7 and DEM" : "synthetic terrain", summary.seconds,
-      pipeline.store_path.c_str(), pipeline_file.c_str(), written.c_str(),
-      pipeline.store_path.c_str(), pipeline.store_path.c_str(), pipeline_file.c_str());
+      pipeline.store_path.c_str(), pipeline_file.c_str(), written.c_str(), tiles_dir.c_str(),
+      static_cast<long long>(tile_count), tiles_dir.c_str(), pipeline.store_path.c_str(),
+      pipeline.store_path.c_str(), pipeline_file.c_str());
 }
 
 }  // namespace

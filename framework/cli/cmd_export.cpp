@@ -1,4 +1,5 @@
-// maquette export gtiff|png: layers out of a store as GeoTIFF or PNG quicklooks.
+// maquette export gtiff|png|tiles3d|glb|drc: layers out of a store as GeoTIFF, PNG quicklooks,
+// 3D Tiles, GLB or Draco terrain meshes.
 #include <spdlog/spdlog.h>
 
 #include <memory>
@@ -10,8 +11,10 @@
 #include "core/geojson.h"
 #include "core/grid.h"
 #include "geotiff/export_geotiff.h"
+#include "gltf/export_glb.h"
 #include "image/quicklook.h"
 #include "store/store.h"
+#include "tiles3d/export_tiles3d.h"
 
 namespace maquette::cli {
 namespace {
@@ -130,6 +133,106 @@ void add_png_command(CLI::App* exp) {
   cmd->callback([o] { export_png(*o); });
 }
 
+void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture) {
+  cmd->add_option("--dem", t.dem, "DEM layer (one-channel heights in metres)")->required();
+  if (texture) cmd->add_option("--texture", t.texture, "Imagery layer (uint8, 1, 3 or 4 channels)");
+  cmd->add_option("--decimation", t.decimation, "A vertex every K DEM pixels")
+      ->capture_default_str();
+  cmd->add_option("--position-bits", t.bits.position, "Draco position quantization bits")
+      ->capture_default_str();
+  cmd->add_option("--texcoord-bits", t.bits.texcoord, "Draco texture coordinate bits")
+      ->capture_default_str();
+  cmd->add_option("--normal-bits", t.bits.normal, "Draco normal bits")->capture_default_str();
+  cmd->add_option("--max-mib", t.max_bytes, "Refuse exports estimated above this size (MiB)")
+      ->capture_default_str()
+      ->transform([](std::string v) { return std::to_string(std::stoll(v) << 20); });
+  cmd->add_flag("--force", t.force, "Write into a non-empty output and above --max-mib");
+}
+
+std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
+  std::vector<CellId> cells;
+  for (const std::string& id : ids) cells.push_back(CellId::Parse(id));
+  return cells;
+}
+
+struct Tiles3dOptions {
+  std::string store, out, levels;
+  RegionOptions region;
+  Tiles3dExport spec;
+};
+
+void export_3d_tiles(Tiles3dOptions& o) {
+  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  o.spec.region = region_of(o.region);
+  if (!o.levels.empty()) {
+    const size_t dots = o.levels.find("..");
+    try {
+      if (dots == std::string::npos) throw std::invalid_argument("no ..");
+      o.spec.min_level = std::stoi(o.levels.substr(0, dots));
+      o.spec.max_level = std::stoi(o.levels.substr(dots + 2));
+    } catch (const std::exception&) {
+      throw Error("--levels '" + o.levels + "': expected A..B, e.g. 6..10");
+    }
+  }
+  const int64_t tiles = export_tiles3d(*store, default_grid(), o.spec, o.out);
+  spdlog::info("wrote {}/tileset.json ({} tiles)", o.out, tiles);
+}
+
+void add_tiles3d_command(CLI::App* exp) {
+  auto o = std::make_shared<Tiles3dOptions>();
+  CLI::App* cmd = exp->add_subcommand(
+      "tiles3d", "Write terrain as a 3D Tiles 1.1 tileset of Draco-compressed GLB (cell tree)");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("OUTDIR", o->out, "Output directory (tileset.json, tiles/, subtrees/)")
+      ->required();
+  add_terrain_options(cmd, o->spec.terrain, true);
+  add_region_options(cmd, o->region);
+  cmd->add_option("--levels", o->levels,
+                  "Cell levels A..B (default: the DEM's level and 4 above; coarser levels read "
+                  "overviews)");
+  cmd->add_flag(
+      "--no-draco", [o](int64_t) { o->spec.terrain.draco = false; },
+      "Plain (uncompressed) GLB, for comparisons");
+  cmd->callback([o] { export_3d_tiles(*o); });
+}
+
+struct MeshOptions {
+  std::string store, out;
+  std::vector<std::string> cells;
+  TerrainSettings terrain;
+};
+
+void add_glb_command(CLI::App* exp) {
+  auto o = std::make_shared<MeshOptions>();
+  CLI::App* cmd =
+      exp->add_subcommand("glb", "Write the terrain of a few cells into one Draco-compressed GLB");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("OUT", o->out, "Output .glb file")->required();
+  cmd->add_option("--cells", o->cells, "Cells (text ids), each at its own level")->required();
+  add_terrain_options(cmd, o->terrain, true);
+  cmd->add_flag(
+      "--no-draco", [o](int64_t) { o->terrain.draco = false; }, "Plain (uncompressed) GLB");
+  cmd->callback([o] {
+    const auto store = Store::open(o->store, Store::Mode::ReadOnly);
+    export_glb(*store, default_grid(), o->terrain, parse_cells(o->cells), o->out);
+    spdlog::info("wrote {}", o->out);
+  });
+}
+
+void add_drc_command(CLI::App* exp) {
+  auto o = std::make_shared<MeshOptions>();
+  CLI::App* cmd = exp->add_subcommand("drc", "Write one raw Draco terrain mesh per cell");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("OUTDIR", o->out, "Output directory (CELL.drc, frame.json)")->required();
+  cmd->add_option("--cells", o->cells, "Cells (text ids), each at its own level")->required();
+  add_terrain_options(cmd, o->terrain, false);
+  cmd->callback([o] {
+    const auto store = Store::open(o->store, Store::Mode::ReadOnly);
+    export_drc(*store, default_grid(), o->terrain, parse_cells(o->cells), o->out);
+    spdlog::info("wrote {}", o->out);
+  });
+}
+
 }  // namespace
 
 void add_export_command(CLI::App& app) {
@@ -137,6 +240,9 @@ void add_export_command(CLI::App& app) {
   exp->require_subcommand(1);
   add_gtiff_command(exp);
   add_png_command(exp);
+  add_tiles3d_command(exp);
+  add_glb_command(exp);
+  add_drc_command(exp);
 }
 
 }  // namespace maquette::cli

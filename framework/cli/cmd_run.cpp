@@ -1,11 +1,14 @@
 // maquette run PIPELINE.json: validate, plan and run a pipeline.
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "cli/commands.h"
+#include "core/error.h"
 #include "runtime/operator_registry.h"
+#include "runtime/ranks.h"
 #include "runtime/runner.h"
 
 namespace maquette::cli {
@@ -31,7 +34,8 @@ void add_run_command(CLI::App& app) {
   CLI::App* run = app.add_subcommand(
       "run",
       "Run a pipeline (JSON: store, region, level, steps). Everything is checked before anything "
-      "runs; results are identical for any thread count");
+      "runs; results are identical for any thread count, and under mpirun or srun for any number "
+      "of ranks");
   run->add_option("PIPELINE", o->pipeline, "Pipeline JSON file")->required();
   run->add_option("-t,--threads", o->run.threads, "Worker threads (0: all cores)")
       ->capture_default_str()
@@ -41,10 +45,27 @@ void add_run_command(CLI::App& app) {
       "Finish the latest unfinished run of the same pipeline, skipping cells it completed");
   run->add_flag("--dry-run", o->run.dry_run, "Validate and print the plan; write nothing");
   run->callback([o] {
-    o->run.quiet = global_options().quiet;
-    const Pipeline pipeline = load_pipeline(o->pipeline, default_registry());
-    const RunSummary summary = run_pipeline(pipeline, o->run);
-    if (!o->run.dry_run) log_summary(summary);
+    // Under mpirun or srun, this process is one rank of the run (MPI finalized when it ends).
+    const std::unique_ptr<Ranks> ranks = launched_ranks();
+    RunOptions options = o->run;
+    options.ranks = ranks.get();
+    options.quiet = global_options().quiet;
+    try {
+      Pipeline pipeline;
+      exchange(*ranks, [&] {  // under MPI, a failure on one rank fails all
+        pipeline = load_pipeline(o->pipeline, default_registry());
+        return "";
+      });
+      const RunSummary summary = run_pipeline(pipeline, options);
+      if (!options.dry_run && ranks->root()) log_summary(summary);
+    } catch (const Error& e) {
+      if (ranks->size() == 1) throw;
+      // Every rank fails with the same message: the root prints it (as main() would) before any
+      // rank exits, since a launcher ends the whole job when one rank exits with an error.
+      if (ranks->root()) std::fprintf(stderr, "maquette: error: %s\n", e.what());
+      ranks->all_gather("");
+      throw CLI::RuntimeError(1);
+    }
   });
 }
 

@@ -12,6 +12,7 @@ void add_run_command(CLI::App& app);
 void add_export_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_ingest_command(CLI::App& app);
+void add_view_command(CLI::App& app);
 
 // Global options shared by every subcommand.
 struct GlobalOptions {

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_export_command(app);
   add_demo_command(app);
+  add_view_command(app);
 
   spdlog::set_default_logger(spdlog::stderr_color_mt("maquette"));
   spdlog::set_pattern("%^%l%$: %v");

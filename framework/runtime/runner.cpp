@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <sstream>
 
+#include "runtime/ranks.h"
 #include "runtime/run_plan.h"
 #include "runtime/step_exec.h"
 
@@ -60,32 +62,71 @@ nlohmann::json run_identity(const Pipeline& pipeline) {
 
 class Runner {
  public:
-  Runner(const Pipeline& pipeline, const RunOptions& options)
+  Runner(const Pipeline& pipeline, const RunOptions& options, Ranks& ranks)
       : pipeline_(pipeline),
         options_(options),
+        ranks_(ranks),
+        quiet_(options.quiet || !ranks.root()),
         threads_(options.threads > 0 ? options.threads : tbb::info::default_concurrency()),
         parallelism_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
         arena_(threads_) {}
 
   RunSummary run() {
     const auto start = Clock::now();
+    RunSummary summary;
+    RunPlan plan;
+    // The root validates everything, creates the store, its layers and the run record; then the
+    // other ranks open the store and make the same plan.
+    const std::string run =
+        exchange(ranks_, [&] { return ranks_.root() ? prepare(plan, summary) : ""; }).front();
+    std::vector<std::vector<CellId>> done;  // by step
+    try {
+      // Every rank reads the done cells before any rank writes, so all share the same cells.
+      exchange(ranks_, [&] {
+        if (!ranks_.root()) join(run, plan, summary);
+        done.resize(plan.steps.size());
+        for (size_t i = 0; i < plan.steps.size() && summary.resumed; ++i) {
+          done[i] = store_->done_cells(summary.run_id, plan.steps[i].step->index);
+          std::sort(done[i].begin(), done[i].end());
+        }
+        return "";
+      });
+      for (size_t i = 0; i < plan.steps.size(); ++i)
+        summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
+    } catch (const std::exception& e) {
+      fail(summary.run_id, std::string("failed: ") + e.what());
+      throw;
+    } catch (...) {
+      fail(summary.run_id, "failed: unknown exception");
+      throw;
+    }
+    exchange(ranks_, [&] {
+      if (ranks_.root()) store_->finish_run(summary.run_id, "ok");
+      return "";
+    });
+    summary.seconds = seconds_since(start);
+    return summary;
+  }
+
+ private:
+  // On the root: the store, its output layers and the run record. Returns the run for join().
+  std::string prepare(RunPlan& plan, RunSummary& summary) {
     // Everything is validated before the store is created or written.
     store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
-    const RunPlan plan = plan_run(pipeline_, store_.get(), threads_);
+    plan = plan_run(pipeline_, store_.get(), threads_);
     if (!store_) store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
     // Creating every output layer first also checks them against existing layers before any
     // cell is computed.
     for (const auto& sp : plan.steps)
       for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
 
-    RunSummary summary;
     const nlohmann::json identity = run_identity(pipeline_);
     if (options_.resume) {
       if (const auto id = store_->latest_unfinished_run(identity)) {
         summary.run_id = *id;
         summary.resumed = true;
-        if (!options_.quiet) spdlog::info("resuming run {} of {}", *id, pipeline_.source);
-      } else if (!options_.quiet) {
+        if (!quiet_) spdlog::info("resuming run {} of {}", *id, pipeline_.source);
+      } else if (!quiet_) {
         spdlog::info(
             "no unfinished run of {} with the same pipeline, region cells ({}, hash {}) and "
             "modules ({}) to resume: starting a new run",
@@ -95,59 +136,108 @@ class Runner {
       }
     }
     if (!summary.resumed) summary.run_id = store_->begin_run(identity);
-    try {
-      for (const auto& sp : plan.steps) summary.steps.push_back(run_step(sp, summary));
-    } catch (const std::exception& e) {
-      store_->finish_run(summary.run_id, std::string("failed: ") + e.what());
-      throw;
-    } catch (...) {
-      store_->finish_run(summary.run_id, "failed: unknown exception");
-      throw;
-    }
-    store_->finish_run(summary.run_id, "ok");
-    summary.seconds = seconds_since(start);
-    return summary;
+    return nlohmann::json{{"run", summary.run_id}, {"resumed", summary.resumed}}.dump();
   }
 
- private:
-  StepSummary run_step(const StepPlan& sp, const RunSummary& run) {
+  // On the other ranks, once the root has prepared the run.
+  void join(const std::string& run, RunPlan& plan, RunSummary& summary) {
+    const nlohmann::json j = nlohmann::json::parse(run);
+    summary.run_id = j.at("run").get<int64_t>();
+    summary.resumed = j.at("resumed").get<bool>();
+    store_ = Store::open(pipeline_.store_path, Store::Mode::ReadWrite);
+    plan = plan_run(pipeline_, store_.get(), threads_);
+  }
+
+  // Marks the run failed (on the root); no rank leaves before, since a launcher may end the job
+  // as soon as one rank exits with an error.
+  void fail(int64_t run_id, const std::string& status) {
+    exchange(ranks_, [&] {
+      if (ranks_.root() && run_id != 0) store_->finish_run(run_id, status);
+      return "";
+    });
+  }
+
+  StepSummary run_step(const StepPlan& sp, const std::vector<CellId>& done, int64_t run_id) {
     const auto start = Clock::now();
     StepSummary s{sp.step->label(), int64_t(sp.cells.size()), 0, 0, 0.0};
-    std::vector<CellId> done;
-    if (run.resumed) {
-      done = store_->done_cells(run.run_id, sp.step->index);
-      std::sort(done.begin(), done.end());
-    }
-    StepIO io(*store_, sp, run.run_id);
+    StepIO io(*store_, sp, run_id);
     const OperatorKind kind = sp.step->op->spec().kind;
     if (kind == OperatorKind::Cell) {
       std::vector<CellId> todo;
       std::set_difference(sp.cells.cells().begin(), sp.cells.cells().end(), done.begin(),
                           done.end(), std::back_inserter(todo));
       s.computed = int64_t(todo.size());
-      const size_t chunk = default_chunk_size(todo.size(), threads_);
-      Progress progress(s.label, s.computed, options_.quiet);
-      run_cell_step(sp, CellPlan(std::move(todo), chunk), io, progress, arena_);
+      const CellPlan mine = share(std::move(todo));
+      exchange(ranks_, [&] {
+        Progress progress(s.label, int64_t(mine.size()), quiet_);
+        run_cell_step(sp, mine, io, progress, arena_);
+        return "";
+      });
     } else if (done.empty()) {
       // Reduce and region steps record all their cells at once, when complete.
       s.computed = s.cells;
-      Progress progress(s.label, s.computed, options_.quiet);
       if (kind == OperatorKind::Reduce)
-        run_reduce_step(sp, io, progress, arena_);
+        run_reduce(sp, io);
       else
-        run_region_step(sp, io, progress);
+        exchange(ranks_, [&] {
+          // A region operator sees the whole mosaic at once: the root runs it alone.
+          if (ranks_.root()) {
+            Progress progress(s.label, s.computed, quiet_);
+            run_region_step(sp, io, progress);
+          }
+          return "";
+        });
     }
     s.skipped = s.cells - s.computed;
-    // In the arena, so that the overviews' parallel loops use `threads` threads too.
-    arena_.execute([&] {
-      for (const auto& [port, layer] : sp.outputs) store_->update_overviews(layer.name);
+    exchange(ranks_, [&] {
+      update_overviews(sp);
+      return "";
     });
     s.seconds = seconds_since(start);
     return s;
   }
 
+  // Each rank maps its share; the root merges all partials in cell-id order (rank order is
+  // cell-id order) and writes the artifact. Partials travel as CBOR, which keeps every double,
+  // NaN included; a single process takes the same path, so the bits cannot depend on the ranks.
+  void run_reduce(const StepPlan& sp, StepIO& io) {
+    const CellPlan mine = share(sp.cells.cells());
+    const std::vector<std::string> parts = exchange(ranks_, [&] {
+      Progress progress(sp.step->label(), int64_t(mine.size()), quiet_);
+      const auto cbor =
+          nlohmann::json::to_cbor(nlohmann::json(map_reduce_cells(sp, mine, io, progress, arena_)));
+      return std::string(cbor.begin(), cbor.end());
+    });
+    exchange(ranks_, [&] {
+      if (!ranks_.root()) return "";
+      std::vector<nlohmann::json> partials;
+      for (const std::string& part : parts)
+        for (nlohmann::json& p : nlohmann::json::from_cbor(part)) partials.push_back(std::move(p));
+      finish_reduce_step(sp, partials, io);
+      return "";
+    });
+  }
+
+  // The step's output layers are shared out among the ranks (each layer's overviews depend on
+  // its tiles only). In the arena, so that the overviews' parallel loops use `threads` threads.
+  void update_overviews(const StepPlan& sp) {
+    int i = 0;
+    arena_.execute([&] {
+      for (const auto& [port, layer] : sp.outputs)
+        if (i++ % ranks_.size() == ranks_.rank()) store_->update_overviews(layer.name);
+    });
+  }
+
+  // This rank's contiguous part of `cells` (sorted), in chunks for its threads.
+  CellPlan share(std::vector<CellId> cells) const {
+    const CellPlan part = CellPlan(std::move(cells), 1).share(ranks_.rank(), ranks_.size());
+    return CellPlan(part.cells(), default_chunk_size(part.size(), threads_));
+  }
+
   const Pipeline& pipeline_;
   const RunOptions& options_;
+  Ranks& ranks_;
+  bool quiet_;  // progress and logs from the root only
   int threads_;
   // Without it TBB keeps at most default_concurrency() - 1 workers for the whole process, so
   // an arena of more threads than cores would get fewer. It applies to the whole process while
@@ -161,8 +251,13 @@ class Runner {
 
 RunSummary run_pipeline(const Pipeline& pipeline, const RunOptions& options,
                         std::ostream& plan_out) {
-  if (options.dry_run) return dry_run(pipeline, options, plan_out);
-  return Runner(pipeline, options).run();
+  const std::unique_ptr<Ranks> alone = options.ranks ? nullptr : single_process();
+  Ranks& ranks = options.ranks ? *options.ranks : *alone;
+  if (options.dry_run) {
+    std::ostringstream discard;  // the plan is printed once, by the root
+    return dry_run(pipeline, options, ranks.root() ? plan_out : discard);
+  }
+  return Runner(pipeline, options, ranks).run();
 }
 
 }  // namespace maquette

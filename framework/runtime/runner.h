@@ -9,15 +9,17 @@
 #include <vector>
 
 #include "runtime/pipeline.h"
+#include "runtime/ranks.h"
 
 namespace maquette {
 
 struct RunOptions {
-  int threads = 0;       // 0: all cores
-  bool resume = false;   // continue the latest unfinished run of the same pipeline, region
-                         // cells and module versions
-  bool dry_run = false;  // validate and print the plan, write nothing
-  bool quiet = false;    // no progress output
+  int threads = 0;         // 0: all cores
+  bool resume = false;     // continue the latest unfinished run of the same pipeline, region
+                           // cells and module versions
+  bool dry_run = false;    // validate and print the plan, write nothing
+  bool quiet = false;      // no progress output
+  Ranks* ranks = nullptr;  // the processes sharing the run (MPI ranks); null: this one alone
 };
 
 struct StepSummary {

@@ -23,16 +23,22 @@ void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progr
   });
 }
 
-void run_reduce_step(const StepPlan& plan, StepIO& io, Progress& progress, tbb::task_arena& arena) {
+std::vector<json> map_reduce_cells(const StepPlan& plan, const CellPlan& cells, StepIO& io,
+                                   Progress& progress, tbb::task_arena& arena) {
   const auto& op = static_cast<const ReduceOperator&>(*plan.step->op);
   const int halo = op.spec().halo;
-  std::vector<json> partials(plan.cells.size());
-  for_each_cell(plan.cells, arena, plan.step->label(), [&](size_t i, CellId cell) {
+  std::vector<json> partials(cells.size());
+  for_each_cell(cells, arena, plan.step->label(), [&](size_t i, CellId cell) {
     partials[i] = op.map(context(plan, cell), io.load(cell, halo));
     progress.advance();
   });
+  return partials;
+}
+
+void finish_reduce_step(const StepPlan& plan, const std::vector<json>& partials, StepIO& io) {
+  const auto& op = static_cast<const ReduceOperator&>(*plan.step->op);
   try {
-    // Strictly in cell-id order, so the result does not depend on the thread count.
+    // Strictly in cell-id order, so the result does not depend on the thread or rank count.
     json merged;
     for (const json& p : partials)
       if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);

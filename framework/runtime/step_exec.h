@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "runtime/cell_plan.h"
 #include "runtime/progress.h"
@@ -24,8 +25,12 @@ void for_each_cell(const CellPlan& cells, tbb::task_arena& arena, const std::str
 // Cell operator: `todo` (the step's cells not yet done), each written with its run record.
 void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progress& progress,
                    tbb::task_arena& arena);
-// Reduce operator: map all cells in parallel, merge in cell-id order, finish into the artifact.
-void run_reduce_step(const StepPlan& plan, StepIO& io, Progress& progress, tbb::task_arena& arena);
+// Reduce operator, in two parts so that each rank can map its share: the partials of `cells`
+// (mapped in parallel, in the order of `cells`), then the merge of all the step's partials in
+// cell-id order, finished into the artifact, written with the run records of all its cells.
+std::vector<json> map_reduce_cells(const StepPlan& plan, const CellPlan& cells, StepIO& io,
+                                   Progress& progress, tbb::task_arena& arena);
+void finish_reduce_step(const StepPlan& plan, const std::vector<json>& partials, StepIO& io);
 // Region operator: one mosaic of the step's cells (on one face), split back into cells.
 void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress);
 

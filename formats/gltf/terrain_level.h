@@ -1,0 +1,59 @@
+// Terrain of many cells of one level, built in parallel: meshes in the export's frame, snapped
+// onto the level's lattice, Draco-encoded, with their imagery.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gltf/draco_encode.h"
+#include "gltf/local_frame.h"
+#include "gltf/terrain_mesh.h"
+#include "gltf/texture_image.h"
+#include "store/store.h"
+
+namespace maquette {
+
+struct TerrainSettings {
+  std::string dem;      // DEM layer
+  std::string texture;  // imagery layer, "" for none
+  int decimation = 1;   // a vertex every K pixels
+  QuantizationBits bits;
+  bool draco = true;                     // false: plain meshes (for comparisons)
+  int64_t max_bytes = int64_t(4) << 30;  // refuse larger exports unless forced
+  bool force = false;
+};
+
+// An export's inputs, checked: layers of the right kinds, a decimation dividing the tile size.
+struct TerrainSource {
+  TerrainSource(const Store& store, const Grid& grid, TerrainSettings settings);
+
+  const Store& store;
+  const Grid& grid;
+  TerrainSettings settings;
+  LayerInfo dem;
+  std::optional<LayerInfo> texture;
+
+  // Distance between vertices at `level` (metres, mean).
+  double vertex_spacing(int level) const;
+  // Rough output size of `cells` tiles at `level`; throws (naming it) above max_bytes unless
+  // forced.
+  int64_t check_size(int64_t tiles_total, int64_t tiles_with_texture) const;
+};
+
+struct CellTerrain {
+  CellId cell;
+  TerrainMesh mesh;
+  DracoPrimitive draco;     // empty without settings.draco
+  double lattice_step = 0;  // positions moved up to this far (per axis, half of it) by quantization
+  std::optional<EncodedImage> image;
+};
+
+// The export's frame: east-north-up at the centre of the cells' bounds.
+LocalFrame frame_for(const Grid& grid, const std::vector<CellId>& cells);
+
+// Terrain of `cells` (all at one level); cells without a DEM tile are left out.
+std::vector<CellTerrain> build_level(const TerrainSource& source, const LocalFrame& frame,
+                                     const std::vector<CellId>& cells);
+
+}  // namespace maquette

@@ -1,0 +1,34 @@
+// The terrain mesh of one cell: a regular grid of vertices at the corners of every K-th pixel of
+// the DEM tile (K: decimation), so a cell's edge vertices are corners its neighbours have too.
+// A corner's height is the mean of the (up to 4) pixels around it, read through the tile's halo,
+// and its position is computed from its global corner coordinates on the face: both cells of an
+// edge compute the same values. Skirts hang from the four edges, `skirt_depth` metres down, so
+// that neighbours of different levels never show cracks. Corners without any valid pixel
+// (nodata) are left out with their triangles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/grid.h"
+#include "core/tile.h"
+#include "gltf/local_frame.h"
+
+namespace maquette {
+
+struct TerrainMesh {
+  std::vector<float> positions;  // glTF frame, 3 per vertex
+  std::vector<float> normals;    // unit, 3 per vertex
+  std::vector<float>
+      texcoords;  // into the cell's imagery tile (0, 0 at its top-left), 2 per vertex
+  std::vector<uint32_t> indices;          // triangles, counter-clockwise seen from above
+  double min_height = 0, max_height = 0;  // above the ellipsoid, skirts included
+
+  size_t vertex_count() const { return positions.size() / 3; }
+};
+
+// `dem` has a halo of at least 2 pixels; `decimation` divides its size.
+TerrainMesh build_terrain_mesh(const Grid& grid, CellId cell, const Tile<float>& dem,
+                               int decimation, const LocalFrame& frame, double skirt_depth);
+
+}  // namespace maquette

@@ -1,0 +1,100 @@
+#include "tiles3d/export_tiles3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "core/error.h"
+#include "core/lonlat_bounds.h"
+#include "gltf/glb_writer.h"
+#include "gltf/output_dir.h"
+#include "tiles3d/tileset.h"
+
+namespace maquette {
+namespace {
+
+constexpr double kEarthRadius = 6371008.8;
+
+// The cell's region; heights padded by the quantization step and by the sag of a straight edge
+// below the ellipsoid's curve.
+std::array<double, 6> cell_region(const Grid& grid, const CellTerrain& t, double spacing) {
+  const CellId cell = t.cell;
+  const TerrainMesh& mesh = t.mesh;
+  const LonLatBounds b = lonlat_bounds(grid, {cell});
+  const double rad = std::numbers::pi / 180;
+  double east = b.east;
+  if (east > 180) east -= 360;  // regions crossing the antimeridian have west > east
+  const double sag = spacing * spacing / (8 * kEarthRadius) + t.lattice_step;
+  return {b.west * rad,  b.south * rad,         east * rad,
+          b.north * rad, mesh.min_height - sag, mesh.max_height + sag};
+}
+
+std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem) {
+  const int hi = spec.max_level < 0 ? dem.level : spec.max_level;
+  const int lo = spec.min_level < 0 ? std::max(0, hi - 4) : spec.min_level;
+  if (lo > hi || hi > dem.level)
+    throw Error("--levels " + std::to_string(lo) + ".." + std::to_string(hi) +
+                ": expected A <= B <= " + std::to_string(dem.level) + " (the level of layer '" +
+                dem.name + "')");
+  return {lo, hi};
+}
+
+}  // namespace
+
+int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport& spec,
+                       const std::string& out_dir) {
+  const TerrainSource source(store, grid, spec.terrain);
+  const auto [lo, hi] = level_range(spec, source.dem);
+  const std::vector<CellId> tile_cells = layer_tile_cells(store, grid, source.dem, spec.region);
+  std::map<int, std::vector<CellId>> cells;
+  int64_t total = 0;
+  for (int l = lo; l <= hi; ++l) {
+    cells[l] = cells_at_level(tile_cells, l);
+    total += int64_t(cells[l].size());
+  }
+  source.check_size(total, source.texture ? total : 0);
+  prepare_output_dir(out_dir, spec.terrain.force);
+  const LocalFrame frame = frame_for(grid, cells[lo]);
+
+  // Level by level (one level's meshes in memory at a time), finest first so that a parent's
+  // region can grow to hold its children's.
+  std::map<CellId, std::unique_ptr<TileNode>> nodes;
+  for (int l = hi; l >= lo; --l) {
+    const double spacing = source.vertex_spacing(l);
+    for (const CellTerrain& t : build_level(source, frame, cells[l])) {
+      const auto region = cell_region(grid, t, spacing);
+      auto& node = nodes[t.cell];  // may exist already, holding children without a parent tile
+      if (node)
+        extend_region(node->region, region);
+      else
+        node = std::make_unique<TileNode>(TileNode{t.cell, region, 0, "", {}});
+      node->geometric_error = l < hi ? spacing : 0;
+      node->content = "tiles/" + std::to_string(l) + "/" + t.cell.ToText() + ".glb";
+      const GlbPrimitive prim{&t.mesh, spec.terrain.draco ? &t.draco : nullptr,
+                              t.image ? &*t.image : nullptr, t.cell.ToText()};
+      write_file(inside(out_dir, node->content).string(), make_glb({prim}));
+    }
+    // Children (level l) under their parents (level l - 1) when those exist.
+    for (CellId c : cells[l]) {
+      auto it = nodes.find(c);
+      if (l == lo || it == nodes.end()) continue;
+      // A parent without a DEM tile of its own still groups its children.
+      auto& parent = nodes[c.parent()];
+      if (!parent) {
+        parent = std::make_unique<TileNode>(
+            TileNode{c.parent(), it->second->region, source.vertex_spacing(l - 1), "", {}});
+      }
+      extend_region(parent->region, it->second->region);
+      parent->children.push_back(std::move(it->second));
+      nodes.erase(it);
+    }
+  }
+  if (nodes.empty()) throw Error("no terrain in the region: every DEM tile is nodata");
+  std::vector<TileNode*> top;
+  for (auto& [cell, node] : nodes) top.push_back(node.get());
+  write_tilesets(out_dir, top, 2 * source.vertex_spacing(lo), frame.enu_to_ecef());
+  return total;
+}
+
+}  // namespace maquette

@@ -1,0 +1,37 @@
+// The processes running one pipeline: this process alone, or the ranks of an MPI job launched by
+// mpirun or srun. The runner only needs one collective, all_gather; only the thread that created
+// the Ranks may call it (MPI_THREAD_FUNNELED: TBB worker threads compute, never communicate).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace maquette {
+
+class Ranks {
+ public:
+  virtual ~Ranks() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  bool root() const { return rank() == 0; }
+  // Every rank's `bytes`, in rank order, on every rank. Also a barrier.
+  virtual std::vector<std::string> all_gather(const std::string& bytes) = 0;
+};
+
+// This process alone.
+std::unique_ptr<Ranks> single_process();
+
+// The ranks of the MPI job when this process was started by an MPI launcher (mpirun, mpiexec,
+// srun: it sets OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK), with MPI initialized until the
+// Ranks is destroyed; otherwise, and in a build without MPI, this process alone. A plain
+// `maquette run` thus never initializes MPI.
+std::unique_ptr<Ranks> launched_ranks();
+
+// Runs `fn` on every rank, then gives every rank the payloads all ranks' `fn` returned, in rank
+// order. When `fn` throws on some rank, every rank throws maquette::Error with the message of the
+// lowest such rank, "rank R of N: what". With a single rank, exceptions pass through unchanged.
+std::vector<std::string> exchange(Ranks& ranks, const std::function<std::string()>& fn);
+
+}  // namespace maquette

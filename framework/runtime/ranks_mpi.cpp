@@ -1,0 +1,90 @@
+// launched_ranks(): MPI_COMM_WORLD when built with MPI and started by an MPI launcher.
+#include <cstdlib>
+
+#include "core/error.h"
+#include "runtime/ranks.h"
+
+#ifdef MAQUETTE_WITH_MPI
+#include <mpi.h>
+
+#include <chrono>
+#include <numeric>
+#include <thread>
+#endif
+
+namespace maquette {
+namespace {
+
+// Open MPI's mpirun, MPICH's and Intel's mpiexec (PMI), srun with PMI-2 or PMIx.
+bool started_by_mpi_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+#ifdef MAQUETTE_WITH_MPI
+// MPI_COMM_WORLD, initialized for the lifetime of the object. MPI calls keep the default error
+// handler, MPI_ERRORS_ARE_FATAL: a failed collective ends the whole job.
+class MpiRanks final : public Ranks {
+ public:
+  MpiRanks() {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (provided < MPI_THREAD_FUNNELED) {
+      MPI_Finalize();
+      throw Error("the MPI library does not provide MPI_THREAD_FUNNELED");
+    }
+  }
+  ~MpiRanks() override { MPI_Finalize(); }
+  MpiRanks(const MpiRanks&) = delete;
+  MpiRanks& operator=(const MpiRanks&) = delete;
+
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+
+  std::vector<std::string> all_gather(const std::string& bytes) override {
+    const int length = int(bytes.size());
+    const size_t n = size_t(size_);
+    std::vector<int> lengths(n), offsets(n);
+    MPI_Request request = MPI_REQUEST_NULL;
+    MPI_Iallgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD, &request);
+    wait(request);
+    std::exclusive_scan(lengths.begin(), lengths.end(), offsets.begin(), 0);
+    std::string all(size_t(offsets.back() + lengths.back()), '\0');
+    MPI_Iallgatherv(bytes.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
+                    MPI_CHAR, MPI_COMM_WORLD, &request);
+    wait(request);
+    std::vector<std::string> parts;
+    for (size_t r = 0; r < n; ++r)
+      parts.push_back(all.substr(size_t(offsets[r]), size_t(lengths[r])));
+    return parts;
+  }
+
+ private:
+  // Blocking MPI calls busy-poll: a rank done with its part would keep a core from the threads of
+  // the ranks still computing when they share cores. Polling every millisecond costs nothing
+  // next to a step.
+  static void wait(MPI_Request& request) {
+    for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+
+  int rank_ = 0, size_ = 1;
+};
+#endif
+
+}  // namespace
+
+std::unique_ptr<Ranks> launched_ranks() {
+  if (!started_by_mpi_launcher()) return single_process();
+#ifdef MAQUETTE_WITH_MPI
+  return std::make_unique<MpiRanks>();
+#else
+  // Each process would run the whole pipeline into the same store.
+  throw Error("started by an MPI launcher, but this maquette was built without MPI");
+#endif
+}
+
+}  // namespace maquette

@@ -1,0 +1,245 @@
+// climate.fit_stations + climate.regionalize through a store: synthetic stations from known
+// gradients, zones from a features layer, the Colorado stations, and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "../station_fit.h"
+#include "climate_module.h"
+#include "vector/vector_ingest.h"
+
+namespace maquette::climate {
+namespace {
+
+namespace fs = std::filesystem;
+using climate_test::centre_of;
+using climate_test::error_of;
+using climate_test::reduce;
+using climate_test::run;
+using climate_test::sample;
+
+class Regionalize : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("climate_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    path_ = (dir_ / "s.mqt").string();
+    store_ = Store::open(path_, Store::Mode::Create);
+  }
+  void TearDown() override {
+    store_.reset();
+    fs::remove_all(dir_);
+  }
+
+  void put_json(const std::string& name, const json& j) {
+    const std::string text = j.dump();
+    Artifact a;
+    a.name = name;
+    for (char c : text) a.data.push_back(std::byte(c));
+    store_->put_artifact(a);
+  }
+
+  // Runs the fit (a reduce over `cells`) and stores its artifact as "fit".
+  StationFit fit(const json& params, const std::vector<CellId>& cells) {
+    json p = params;
+    p["store"] = path_;
+    Artifact a = reduce("climate.fit_stations", cells, 16, p);
+    a.name = "fit";
+    store_->put_artifact(a);
+    const auto* b = reinterpret_cast<const char*>(a.data.data());
+    return StationFit::from_json(json::parse(b, b + a.data.size()), "fit");
+  }
+
+  fs::path dir_;
+  std::string path_;
+  std::unique_ptr<Store> store_;
+};
+
+// Stations on a lon/lat grid around Colorado: t = 20 - 6 z/km + 0.01 x/km, p = 300 + 250 z/km.
+json synthetic_stations() {
+  json stations = json::array();
+  int i = 0;
+  for (double lon = -109; lon <= -102; lon += 1)
+    for (double lat = 37; lat <= 41; lat += 1, ++i) {
+      const double z = 1200 + std::fmod(i * 731.0, 2800);
+      stations.push_back({{"id", std::to_string(i)},
+                          {"lon", lon},
+                          {"lat", lat},
+                          {"elevation", z},
+                          {"values", {{"t", 20 - 6 * z / 1000}, {"p", 300 + 250 * z / 1000}}}});
+    }
+  return {{"columns", {"t", "p"}}, {"stations", stations}};
+}
+
+const CellId kCell = CellId::FromFaceColRow(1, 6, 20, 20);
+
+TEST_F(Regionalize, OutputsFollowTheRegression) {
+  put_json("stations", synthetic_stations());
+  const StationFit f = fit({{"stations", "stations"}, {"columns", {"t", "p"}}}, {kCell});
+  EXPECT_NEAR(f.fits[0].at("t").per_km_elevation, -6, 1e-9);
+  EXPECT_NEAR(f.fits[0].at("p").per_km_elevation, 250, 1e-9);
+
+  const int size = 16;
+  CellData data;
+  data.inputs.emplace("dem", sample(kCell, size, [](LonLat p) { return 500 + 100 * p.lat; }));
+  data.inputs.at("dem").at(3, 4) = NAN;
+  const CellData out = run("climate.regionalize", kCell, size, data,
+                           {{"store", path_},
+                            {"fit", "fit"},
+                            {"temperature_column", "t"},
+                            {"precipitation_column", "p"}});
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
+      const double z = data.inputs.at("dem").at(col, row);
+      if (std::isnan(z)) {
+        EXPECT_TRUE(std::isnan(out.outputs.at("temperature").at(col, row)));
+        continue;
+      }
+      EXPECT_NEAR(out.outputs.at("temperature").at(col, row), 20 - 6 * z / 1000, 1e-4);
+      EXPECT_NEAR(out.outputs.at("precipitation").at(col, row), 300 + 250 * z / 1000, 1e-3);
+    }
+}
+
+TEST_F(Regionalize, ZonesFromAFeaturesLayer) {
+  // Two zones split at 105.5 W with different lapse rates; one more station far away.
+  json stations = synthetic_stations();
+  for (json& s : stations["stations"])
+    if (s["lon"].get<double>() > -105.5)
+      s["values"]["t"] = 25 - 7 * s["elevation"].get<double>() / 1000;
+  put_json("stations", stations);
+  const std::string geojson = (dir_ / "zones.geojson").string();
+  std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "west"}, "geometry": {"type": "Polygon",
+     "coordinates": [[[-110, 36], [-105.5, 36], [-105.5, 42], [-110, 42], [-110, 36]]]}},
+    {"type": "Feature", "properties": {"name": "east"}, "geometry": {"type": "Polygon",
+     "coordinates": [[[-105.5, 36], [-101, 36], [-101, 42], [-105.5, 42], [-105.5, 36]]]}}]})";
+  FeatureIngestOptions zones;
+  zones.layer = "zones";
+  zones.src_crs = "EPSG:4326";
+  ingest_features(*store_, {geojson}, zones);
+  const StationFit f = fit(
+      {{"stations", "stations"}, {"columns", {"t"}}, {"zones", "zones"}, {"zone_field", "name"}},
+      {kCell});
+  ASSERT_EQ(f.zones.size(), 2u);
+  EXPECT_EQ(f.zones[0].name, "west");
+  EXPECT_NEAR(f.fits[0].at("t").per_km_elevation, -6, 1e-9);
+  EXPECT_NEAR(f.fits[1].at("t").per_km_elevation, -7, 1e-9);
+
+  // A cell straddling the border gets each zone's regression.
+  const CellId cell = default_grid().cell_from_point({-105.5, 39}, 10);
+  const int size = 16;
+  CellData data;
+  data.inputs.emplace("dem", sample(cell, size, [](LonLat) { return 2000.0; }));
+  const CellData out =
+      run("climate.regionalize", cell, size, data,
+          {{"store", path_}, {"fit", "fit"}, {"temperature_column", "t"}}, {"temperature"});
+  int west = 0, east = 0;
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
+      const bool is_west = centre_of(cell, size, col, row).lon < -105.5;
+      EXPECT_NEAR(out.outputs.at("temperature").at(col, row), is_west ? 8.0 : 11.0, 1e-4);
+      (is_west ? west : east)++;
+    }
+  EXPECT_GT(west, 0);
+  EXPECT_GT(east, 0);
+}
+
+TEST_F(Regionalize, Colorado) {
+  const std::string csv = MAQUETTE_SHARED_DIR "/data/climate/CO_stations_annual_climate.csv";
+  if (!fs::exists(csv)) GTEST_SKIP() << "no " << csv << " (../shared is absent)";
+  StationsIngestOptions o;
+  o.layer = "co";
+  ingest_stations(*store_, csv, o);
+  const std::vector<CellId> region =
+      default_grid().cover_bbox(-109.1, 36.9, -102.0, 41.1, 6, Containment::Overlap);
+  const StationFit f = fit(
+      {{"stations", "co"}, {"columns", {"mean_annual_tmean_C", "mean_annual_precip_mm"}}}, region);
+  const ColumnFit& t = f.fits[0].at("mean_annual_tmean_C");
+  const ColumnFit& p = f.fits[0].at("mean_annual_precip_mm");
+  RecordProperty("lapse_rate_K_per_km", std::to_string(t.per_km_elevation));
+  RecordProperty("precip_per_km", std::to_string(p.per_km_elevation));
+  std::printf(
+      "Colorado: %lld stations, lapse rate %.3f K/km (r2 %.3f, rmse %.2f K); precipitation "
+      "%+.2f per km (r2 %.3f)\n",
+      static_cast<long long>(t.stations), t.per_km_elevation, t.r2, t.rmse, p.per_km_elevation,
+      p.r2);
+  EXPECT_GT(t.stations, 300);
+  EXPECT_GT(t.per_km_elevation, -7);
+  EXPECT_LT(t.per_km_elevation, -5);
+  EXPECT_GT(p.per_km_elevation, 0);
+  // With both horizontal gradients the lapse rate stays plausible.
+  const StationFit h = fit(
+      {{"stations", "co"}, {"columns", {"mean_annual_tmean_C"}}, {"horizontal", "both"}}, region);
+  const ColumnFit& th = h.fits[0].at("mean_annual_tmean_C");
+  std::printf(
+      "Colorado with horizontal terms: %.3f K/km elevation, %.4f K/km east, %.4f K/km "
+      "north (r2 %.3f)\n",
+      th.per_km_elevation, th.per_km_east, th.per_km_north, th.r2);
+  EXPECT_GT(th.per_km_elevation, -8);
+  EXPECT_LT(th.per_km_elevation, -4);
+}
+
+TEST_F(Regionalize, BadInput) {
+  const json base = {{"stations", "stations"}, {"columns", {"t"}}};
+  EXPECT_EQ(error_of([&] { fit(base, {kCell}); }),
+            "climate.fit_stations: params.stations: no artifact 'stations' in " + path_);
+  put_json("stations", synthetic_stations());
+  json p = base;
+  p["columns"] = {"tmax"};
+  EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
+            "climate.fit_stations: params.columns: no station has a column 'tmax'");
+  // Stations outside the region: used (default), dropped or refused.
+  const CellId small = default_grid().cell_from_point({-105, 39}, 6);
+  EXPECT_EQ(fit(base, {small}).fits[0].at("t").stations, 40);
+  p = base;
+  p["outside_region"] = "error";
+  EXPECT_NE(error_of([&] { fit(p, {small}); }).find("params.outside_region: station 0 at"),
+            std::string::npos);
+  p["outside_region"] = "drop";
+  EXPECT_NE(error_of([&] { fit(p, {small}); }).find("the regression needs at least 3"),
+            std::string::npos);
+  // A zones layer of points.
+  const std::string geojson = (dir_ / "points.geojson").string();
+  std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+    "properties": {}, "geometry": {"type": "Point", "coordinates": [-105, 39]}}]})";
+  FeatureIngestOptions points;
+  points.layer = "points";
+  points.src_crs = "EPSG:4326";
+  ingest_features(*store_, {geojson}, points);
+  p = base;
+  p["zones"] = "points";
+  EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
+            "climate.fit_stations: params.zones: feature 1 of 'points' is a Point, not a polygon");
+  p["zones"] = "nothing";
+  EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
+            "climate.fit_stations: params.zones: no layer 'nothing' in " + path_);
+  // Regionalize: a mapped output without its column, and an unknown column.
+  fit(base, {kCell});
+  CellData data;
+  data.inputs.emplace("dem", sample(kCell, 16, [](LonLat) { return 1.0; }));
+  EXPECT_EQ(error_of([&] {
+              run("climate.regionalize", kCell, 16, data, {{"store", path_}, {"fit", "fit"}});
+            }),
+            "climate.regionalize: params.temperature_column: output 'temperature' is mapped but "
+            "no column is given");
+  EXPECT_EQ(error_of([&] {
+              run("climate.regionalize", kCell, 16, data,
+                  {{"store", path_}, {"fit", "fit"}, {"temperature_column", "p"}}, {"temperature"});
+            }),
+            "climate.regionalize: params.temperature_column: column 'p' is not in fit 'fit'");
+  EXPECT_EQ(error_of([&] {
+              run("climate.regionalize", kCell, 16, data,
+                  {{"store", path_}, {"fit", "stations"}, {"temperature_column", "t"}},
+                  {"temperature"});
+            }),
+            "climate.regionalize: params.fit: artifact 'stations': not a station fit of "
+            "climate.fit_stations");
+}
+
+}  // namespace
+}  // namespace maquette::climate

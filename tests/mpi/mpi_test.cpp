@@ -1,0 +1,246 @@
+// `maquette run` under mpirun with 2 and 3 ranks, as users run it: every layer's tile blobs,
+// overview blobs and artifacts must be bit-identical to a single-process run; a failing cell
+// names its rank, step and cell; a rank killed with SIGKILL leaves a valid store that --resume
+// completes (with 3 ranks, or one process) to the same bits.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sqlite3.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "store/store.h"
+
+extern char** environ;
+
+namespace maquette {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kMaquette = std::string(MAQUETTE_BIN_DIR) + "/maquette";
+const std::string kEnv =
+    std::string("MAQUETTE_MODULE_PATH=") + MAQUETTE_FIXTURE_MODULE_DIR + "/good";
+
+// `maquette run` of DIR/pipeline.json, alone (ranks 0) or under mpirun, one thread per process.
+std::string run_command(const std::string& dir, int ranks, const std::string& extra = "") {
+  const std::string run = kMaquette + " run --threads 1 " + extra + " " + dir + "/pipeline.json";
+  if (ranks == 0) return "env " + kEnv + " " + run;
+  return "env " + kEnv + " " + MAQUETTE_MPIEXEC +
+         " --oversubscribe --allow-run-as-root -x MAQUETTE_MODULE_PATH -np " +
+         std::to_string(ranks) + " " + run;
+}
+
+struct Result {
+  int exit_code = -1;
+  std::string err;
+};
+
+Result run(const std::string& dir, int ranks, const std::string& extra = "") {
+  const std::string err = dir + "/stderr";
+  const int status = std::system((run_command(dir, ranks, extra) + " >/dev/null 2>" + err).c_str());
+  std::ostringstream text;
+  text << std::ifstream(err).rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+// The directory of this test process's pipelines, removed at exit.
+struct TempRoot {
+  fs::path path = fs::temp_directory_path() / ("maquette-mpi-" + std::to_string(getpid()));
+  ~TempRoot() { fs::remove_all(path); }
+};
+const TempRoot temp_root;
+
+// Every operator kind and every terrain operator, on 64 cells of 64 pixels. fixture.blur (step
+// 5) takes `blur` as extra params (sleep_ms, fail_on).
+std::string write_pipeline(const json& blur = json::object()) {
+  static int counter = 0;
+  const fs::path dir = temp_root.path / std::to_string(counter++);
+  fs::create_directories(dir);
+  const json pipeline = {
+      {"store", "out.mqt"},
+      {"region", {{"cells", {"Q2"}}}},
+      {"level", 4},
+      {"tile_size", 64},  // terrain.fill_voids has a halo of 64
+      {"steps",
+       {{{"op", "terrain.synthesize"}, {"outputs", {{"dem", "dem"}}}, {"params", {{"seed", 7}}}},
+        {{"op", "terrain.fill_voids"},
+         {"inputs", {{"dem", "dem"}}},
+         {"outputs", {{"dem", "filled"}, {"filled", "filled_mask"}}}},
+        {{"op", "terrain.derive"},
+         {"inputs", {{"dem", "filled"}}},
+         {"outputs", {{"slope", "slope"}, {"hillshade", "hillshade"}, {"normal", "normal"}}}},
+        {{"op", "fixture.fill"}, {"outputs", {{"value", "height"}}}, {"params", {{"seed", 1.5}}}},
+        {{"op", "fixture.blur"},
+         {"inputs", {{"src", "height"}}},
+         {"outputs", {{"dst", "smooth"}}},
+         {"params", blur}},
+        {{"op", "fixture.sum"},
+         {"inputs", {{"src", "smooth"}}},
+         {"outputs", {{"total", "smooth_sum"}}}},
+        {{"op", "fixture.region_scan"},
+         {"inputs", {{"src", "smooth"}}},
+         {"outputs", {{"dst", "scan"}}}}}}};
+  std::ofstream(dir / "pipeline.json") << pipeline.dump(2);
+  return dir.string();
+}
+
+// Rows of a query on the store, each row's columns joined; blobs as FNV-1a hashes.
+std::vector<std::string> rows(const std::string& store, const std::string& sql) {
+  sqlite3* db = nullptr;
+  sqlite3_open_v2(store.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+  sqlite3_busy_timeout(db, 10000);
+  sqlite3_stmt* q = nullptr;
+  std::vector<std::string> out;
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &q, nullptr) == SQLITE_OK) {
+    while (sqlite3_step(q) == SQLITE_ROW) {
+      std::string row;
+      for (int i = 0; i < sqlite3_column_count(q); ++i) {
+        if (sqlite3_column_type(q, i) == SQLITE_BLOB) {
+          const auto* p = static_cast<const unsigned char*>(sqlite3_column_blob(q, i));
+          uint64_t h = 14695981039346656037ull;
+          for (int k = 0; k < sqlite3_column_bytes(q, i); ++k) h = (h ^ p[k]) * 1099511628211ull;
+          row += std::to_string(h);
+        } else if (const auto* t = sqlite3_column_text(q, i)) {
+          row += reinterpret_cast<const char*>(t);
+        }
+        row += "|";
+      }
+      out.push_back(row);
+    }
+  }
+  sqlite3_finalize(q);
+  sqlite3_close(db);
+  return out;
+}
+
+// Every tile blob, overview blob and artifact of the store, by layer and cell.
+std::vector<std::string> blobs(const std::string& dir) {
+  const std::string store = dir + "/out.mqt";
+  auto all = rows(store,
+                  "SELECT l.name, t.cell, t.blob FROM tiles t JOIN layers l ON l.id = t.layer "
+                  "ORDER BY l.name, t.cell");
+  for (auto& r : rows(store,
+                      "SELECT l.name, o.level, o.cell, o.blob FROM overviews o JOIN layers l ON "
+                      "l.id = o.layer ORDER BY l.name, o.level, o.cell"))
+    all.push_back("overview|" + r);
+  for (auto& r : rows(store, "SELECT name, data FROM artifacts ORDER BY name"))
+    all.push_back("artifact|" + r);
+  return all;
+}
+
+const std::vector<std::string>& reference() {
+  static const std::vector<std::string> expected = [] {
+    const std::string dir = write_pipeline();
+    const Result r = run(dir, 0);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return blobs(dir);
+  }();
+  return expected;
+}
+
+bool store_valid(const std::string& dir) {
+  return Store::open(dir + "/out.mqt", Store::Mode::ReadOnly)->integrity_ok();
+}
+
+TEST(Mpi, PlainRunPrintsNoMpiNoise) {
+  const std::string dir = write_pipeline();
+  const Result r = run(dir, 0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("MPI"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("rank"), std::string::npos) << r.err;
+}
+
+TEST(Mpi, RanksGiveTheSingleProcessBits) {
+  ASSERT_GT(reference().size(), 64u * 8);  // 8 raster layers of 64 tiles, overviews, artifact
+  for (const int ranks : {2, 3}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    const std::string dir = write_pipeline();
+    const Result r = run(dir, ranks);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(blobs(dir), reference());
+    EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"), std::vector<std::string>{"ok|"});
+  }
+}
+
+TEST(Mpi, FailingCellNamesRankStepAndCell) {
+  // Cells are shared in id order: with 2 ranks Q23xx (the last 16 of 64) belong to rank 1.
+  const std::string dir = write_pipeline({{"fail_on", "Q23"}});
+  const Result r = run(dir, 2);
+  EXPECT_NE(r.exit_code, 0);
+  const std::string message =
+      "rank 1 of 2: step 5 (fixture.blur) failed on cell Q2300: fixture failure requested";
+  EXPECT_NE(r.err.find("maquette: error: " + message), std::string::npos) << r.err;
+  EXPECT_TRUE(store_valid(dir));
+  EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"),
+            std::vector<std::string>{"failed: " + message + "|"});
+}
+
+// The pid of the process of `rank` started by mpirun `launcher`, or 0.
+pid_t rank_pid(pid_t launcher, int rank) {
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::ifstream stat(entry.path() / "stat");
+    std::string pid, comm, state;
+    pid_t ppid = 0;
+    if (!(stat >> pid >> comm >> state >> ppid) || ppid != launcher) continue;
+    std::ifstream env(entry.path() / "environ");
+    for (std::string var; std::getline(env, var, '\0');)
+      if (var == "OMPI_COMM_WORLD_RANK=" + std::to_string(rank)) return std::stoi(pid);
+  }
+  return 0;
+}
+
+// Starts a 2-rank run whose fixture.blur takes 40 ms a cell, kills rank 1 with SIGKILL once
+// some cells of that step are done, and waits for mpirun to end the job.
+void kill_mid_step(const std::string& dir) {
+  const std::string cmd = "exec " + run_command(dir, 2) + " >/dev/null 2>" + dir + "/stderr";
+  const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+  pid_t launcher = 0;
+  ASSERT_EQ(
+      posix_spawn(&launcher, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ),
+      0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  auto blur_cells_done = [&] {
+    if (!fs::exists(dir + "/out.mqt")) return 0;
+    const auto count = rows(dir + "/out.mqt", "SELECT count(*) FROM run_cells WHERE step = 5");
+    return count.empty() ? 0 : std::stoi(count.front());
+  };
+  while (std::chrono::steady_clock::now() < deadline && blur_cells_done() < 6)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const pid_t victim = rank_pid(launcher, 1);
+  ASSERT_GT(victim, 0);
+  kill(victim, SIGKILL);
+  int status = 0;
+  waitpid(launcher, &status, 0);
+  EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_TRUE(store_valid(dir));
+  const auto statuses = rows(dir + "/out.mqt", "SELECT status FROM runs");
+  EXPECT_EQ(statuses, std::vector<std::string>{"running|"});
+}
+
+TEST(Mpi, KilledRankResumesToTheSameBits) {
+  for (const int resume_ranks : {3, 0}) {
+    SCOPED_TRACE(resume_ranks == 0 ? "resumed by one process" : "resumed with 3 ranks");
+    const json slow = {{"sleep_ms", 40}};
+    const std::string dir = write_pipeline(slow);
+    kill_mid_step(dir);
+    const Result r = run(dir, resume_ranks, "--resume");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("resuming run 1"), std::string::npos) << r.err;
+    EXPECT_EQ(blobs(dir), reference());
+  }
+}
+
+}  // namespace
+}  // namespace maquette

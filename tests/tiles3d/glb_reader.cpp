@@ -1,0 +1,83 @@
+#include "glb_reader.h"
+
+#include <draco/compression/decode.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace maquette::test {
+namespace {
+
+uint32_t u32(const std::vector<char>& b, size_t at) {
+  uint32_t v;
+  std::memcpy(&v, b.data() + at, 4);
+  return v;
+}
+
+DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
+                        const nlohmann::json& prim) {
+  DecodedPrimitive out;
+  const auto& ext = prim["extensions"]["KHR_draco_mesh_compression"];
+  const auto& view = j["bufferViews"][ext["bufferView"].get<int>()];
+  draco::DecoderBuffer buffer;
+  buffer.Init(bin.data() + view["byteOffset"].get<size_t>(), view["byteLength"].get<size_t>());
+  auto decoded = draco::Decoder().DecodeMeshFromBuffer(&buffer);
+  EXPECT_TRUE(decoded.ok());
+  if (!decoded.ok()) return out;
+  const draco::Mesh& mesh = *decoded.value();
+  const auto& acc = j["accessors"];
+  const auto& pos_acc = acc[prim["attributes"]["POSITION"].get<int>()];
+  EXPECT_EQ(mesh.num_points(), pos_acc["count"].get<uint32_t>());
+  EXPECT_EQ(size_t(mesh.num_faces()) * 3, acc[prim["indices"].get<int>()]["count"].get<size_t>());
+  out.index_count = size_t(mesh.num_faces()) * 3;
+  EXPECT_EQ(ext["attributes"].size(), prim["attributes"].size());
+  for (const auto& [name, id] : ext["attributes"].items()) {
+    const draco::PointAttribute* att = mesh.GetAttributeByUniqueId(id.get<uint32_t>());
+    EXPECT_NE(att, nullptr) << name;
+    if (!att) return out;
+    EXPECT_EQ(mesh.num_points(), acc[prim["attributes"][name].get<int>()]["count"].get<uint32_t>());
+  }
+  const draco::PointAttribute* pos =
+      mesh.GetAttributeByUniqueId(ext["attributes"]["POSITION"].get<uint32_t>());
+  std::array<float, 3> lo, hi;
+  lo.fill(1e30f);
+  hi.fill(-1e30f);
+  for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+    std::array<float, 3> p;
+    pos->GetMappedValue(i, p.data());
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+    out.positions.push_back(p);
+  }
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(lo[k], pos_acc["min"][k].get<float>());
+    EXPECT_EQ(hi[k], pos_acc["max"][k].get<float>());
+  }
+  return out;
+}
+
+}  // namespace
+
+Glb read_glb(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  const std::vector<char> b((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  Glb glb;
+  EXPECT_GE(b.size(), 28u) << path;
+  if (b.size() < 28) return glb;
+  EXPECT_EQ(u32(b, 0), 0x46546C67u);
+  EXPECT_EQ(u32(b, 8), b.size());
+  const uint32_t json_len = u32(b, 12);
+  glb.json = nlohmann::json::parse(b.begin() + 20, b.begin() + 20 + json_len);
+  const size_t bin_at = 20 + json_len + 8;
+  const std::vector<char> bin(b.begin() + long(bin_at), b.end());
+  for (const auto& mesh : glb.json["meshes"])
+    for (const auto& prim : mesh["primitives"])
+      glb.primitives.push_back(decode(glb.json, bin, prim));
+  return glb;
+}
+
+}  // namespace maquette::test

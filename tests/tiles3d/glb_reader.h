@@ -1,0 +1,25 @@
+// Reads the GLB files the exports write: the JSON chunk, and every Draco primitive decoded with
+// draco::Decoder, checked against its accessors (counts, attribute set, position bounds).
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace maquette::test {
+
+struct DecodedPrimitive {
+  std::vector<std::array<float, 3>> positions;  // decoded, glTF frame
+  size_t index_count = 0;
+};
+
+struct Glb {
+  nlohmann::json json;
+  std::vector<DecodedPrimitive> primitives;
+};
+
+// Reads and decodes `path`; every mismatch with the accessors is a GoogleTest failure.
+Glb read_glb(const std::string& path);
+
+}  // namespace maquette::test

@@ -1,0 +1,77 @@
+#include "tiles3d_fixture.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "run_cli.h"
+#include "store/store.h"
+
+namespace maquette::test {
+namespace {
+
+template <typename T, typename F>
+RawTile make_tile(const Grid& grid, CellId cell, int channels, F value) {
+  const PlaneSquare sq = grid.plane_square(cell);
+  const double pixel = sq.side / kTileSize;
+  std::vector<T> v;
+  for (int r = 0; r < kTileSize; ++r)
+    for (int c = 0; c < kTileSize; ++c) {
+      const LonLat p = grid.inverse({sq.x_min + (c + 0.5) * pixel, sq.y_max - (r + 0.5) * pixel});
+      for (int k = 0; k < channels; ++k) v.push_back(T(value(p, k)));
+    }
+  RawTile t{dtype_of<T>(), kTileSize, channels, std::vector<std::byte>(v.size() * sizeof(T))};
+  std::memcpy(t.bytes.data(), v.data(), t.bytes.size());
+  return t;
+}
+
+Tiles3dFixture build() {
+  const Grid& grid = default_grid();
+  Tiles3dFixture f;
+  f.store_path = temp_dir() + "/tiles3d.maquette";
+  const CellId parent = grid.cell_from_point({10, 10}, kLevel - 1);
+  for (int d = 0; d < 4; ++d) f.block.push_back(parent.child(d));
+  f.seam = {grid.cell_from_point({-0.3, 5}, kLevel), grid.cell_from_point({0.3, 5}, kLevel)};
+
+  auto store = Store::open(f.store_path, Store::Mode::Create);
+  LayerInfo dem;
+  dem.name = "dem";
+  dem.tile_size = kTileSize;
+  dem.level = kLevel;
+  dem.nodata = -9999;
+  dem.units = "m";
+  LayerInfo rgb = dem;
+  rgb.name = "rgb";
+  rgb.dtype = DType::U8;
+  rgb.channels = 3;
+  rgb.nodata.reset();
+  rgb.units = "";
+  store->create_layer(dem);
+  store->create_layer(rgb);
+  Store::Batch batch(*store);
+  std::vector<CellId> all = f.block;
+  all.insert(all.end(), f.seam.begin(), f.seam.end());
+  for (CellId c : all) {
+    batch.put_tile("dem", c,
+                   make_tile<float>(grid, c, 1, [](LonLat p, int) { return dem_field(p); }));
+    batch.put_tile("rgb", c, make_tile<uint8_t>(grid, c, 3, [](LonLat p, int k) {
+                     return uint8_t(int(std::abs(p.lon * 50 + p.lat * 30 + k * 60)) % 256);
+                   }));
+  }
+  batch.commit();
+  store->update_overviews("dem");
+  store->update_overviews("rgb");
+  return f;
+}
+
+}  // namespace
+
+const Tiles3dFixture& tiles3d_fixture() {
+  static const Tiles3dFixture f = build();
+  return f;
+}
+
+double dem_field(LonLat p) {
+  return 1000.0 + 500.0 * std::sin(p.lon * M_PI / 9) * std::cos(p.lat * M_PI / 12);
+}
+
+}  // namespace maquette::test

@@ -1,0 +1,197 @@
+// maquette export tiles3d|glb|drc on a small generated store: Draco primitives decoded and checked
+// against their accessors and the DEM, shared edges identical (also across a face seam), the
+// tileset's tree, the Khronos glTF validator, and bad input.
+#include <gtest/gtest.h>
+
+#include <GeographicLib/Geocentric.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "glb_reader.h"
+#include "run_cli.h"
+#include "tiles3d_fixture.h"
+
+namespace maquette::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Pos = std::array<float, 3>;
+
+struct Export {
+  std::string dir;
+  json tileset;
+  std::map<std::string, Glb> glbs;  // by content uri, relative to dir
+};
+
+json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
+
+// Geodetic height of a decoded vertex through the root transform (glTF y-up -> ENU -> ECEF).
+std::array<double, 3> geodetic(const std::vector<double>& m, const Pos& p) {
+  const double e = p[0], n = -p[2], u = p[1];
+  double x[3];
+  for (int r = 0; r < 3; ++r) x[r] = m[r] * e + m[4 + r] * n + m[8 + r] * u + m[12 + r];
+  double lat, lon, h;
+  GeographicLib::Geocentric::WGS84().Reverse(x[0], x[1], x[2], lat, lon, h);
+  return {lon, lat, h};
+}
+
+void walk(const fs::path& file, const json& tile, const json* parent, Export& out) {
+  const auto& r = tile["boundingVolume"]["region"];
+  if (parent) {
+    const auto& pr = (*parent)["boundingVolume"]["region"];
+    for (int k : {0, 1, 4}) EXPECT_GE(r[k].get<double>(), pr[k].get<double>());
+    for (int k : {2, 3, 5}) EXPECT_LE(r[k].get<double>(), pr[k].get<double>());
+    EXPECT_LT(tile["geometricError"].get<double>(),
+              (*parent)["geometricError"].get<double>() + 1e-9);
+  }
+  if (tile.contains("content")) {
+    const fs::path uri = file.parent_path() / tile["content"]["uri"].get<std::string>();
+    EXPECT_TRUE(fs::exists(uri)) << uri;
+    if (uri.extension() == ".json") {
+      walk(uri, read_json(uri)["root"], &tile, out);
+    } else {
+      Glb glb = read_glb(uri.string());
+      const auto m = out.tileset["root"]["transform"].get<std::vector<double>>();
+      for (const auto& prim : glb.primitives)
+        for (const Pos& p : prim.positions) {
+          const auto g = geodetic(m, p);
+          EXPECT_GE(g[2], r[4].get<double>());
+          EXPECT_LE(g[2], r[5].get<double>());
+        }
+      out.glbs[fs::relative(uri, out.dir).string()] = std::move(glb);
+    }
+  }
+  if (tile.contains("children"))
+    for (const auto& c : tile["children"]) walk(file, c, &tile, out);
+}
+
+const Export& tiles3d_export() {
+  static const Export e = [] {
+    Export x;
+    x.dir = temp_dir() + "/tiles";
+    const auto r = run_maquette("export tiles3d " + tiles3d_fixture().store_path + " " + x.dir +
+                                " --dem dem --texture rgb --levels 4..6");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    x.tileset = read_json(x.dir + "/tileset.json");
+    walk(x.dir + "/tileset.json", x.tileset["root"], nullptr, x);
+    return x;
+  }();
+  return e;
+}
+
+const Glb& glb_of(CellId c) {
+  return tiles3d_export().glbs.at("tiles/" + std::to_string(c.level()) + "/" + c.ToText() + ".glb");
+}
+
+size_t shared_vertices(const Glb& a, const Glb& b) {
+  std::set<Pos> pa(a.primitives[0].positions.begin(), a.primitives[0].positions.end());
+  size_t n = 0;
+  for (const Pos& p :
+       std::set<Pos>(b.primitives[0].positions.begin(), b.primitives[0].positions.end()))
+    n += pa.count(p);
+  return n;
+}
+
+TEST(Tiles3d, TilesetTreeAndContents) {
+  const Export& e = tiles3d_export();
+  EXPECT_EQ(e.tileset["asset"]["version"], "1.1");
+  // 6 cells at level 6, their parents at 5 and 4 (the seam cells have distinct ancestors).
+  EXPECT_GE(e.glbs.size(), 6u + 3u + 3u);
+  for (const auto& [uri, glb] : e.glbs) {
+    ASSERT_EQ(glb.primitives.size(), 1u) << uri;
+    EXPECT_GT(glb.primitives[0].index_count, 0u);
+    EXPECT_EQ(glb.json["extensionsRequired"][0], "KHR_draco_mesh_compression");
+    EXPECT_EQ(glb.json["images"][0]["mimeType"], "image/jpeg");
+  }
+}
+
+TEST(Tiles3d, PositionsFollowTheDem) {
+  const Export& e = tiles3d_export();
+  const auto m = e.tileset["root"]["transform"].get<std::vector<double>>();
+  const Grid& grid = default_grid();
+  for (CellId c : tiles3d_fixture().block) {
+    const auto& prim = glb_of(c).primitives[0];
+    // Lattice step of 14 bits over the cell's extent; skirts hang 2 vertex spacings down.
+    const double step = 2 * grid.level_info(kLevel, 1).cell_side_m / 16382;
+    const double skirt = 2 * grid.level_info(kLevel, kTileSize).pixel_m;
+    size_t top = 0;
+    for (const Pos& p : prim.positions) {
+      const auto g = geodetic(m, p);
+      const double want = dem_field({g[0], g[1]});
+      const bool on_top = std::abs(g[2] - want) < step;
+      top += on_top;
+      EXPECT_TRUE(on_top || std::abs(g[2] - (want - skirt)) < step)
+          << c.ToText() << " h " << g[2] << " dem " << want;
+    }
+    EXPECT_EQ(top, size_t((kTileSize + 1) * (kTileSize + 1)));
+  }
+}
+
+TEST(Tiles3d, SharedEdgesDecodeIdentically) {
+  const auto& f = tiles3d_fixture();
+  // Cells 0 | 1 side by side, 0 over 2; an edge has kTileSize + 1 vertices (and as many skirt
+  // vertices hanging from them).
+  EXPECT_GE(shared_vertices(glb_of(f.block[0]), glb_of(f.block[1])), size_t(kTileSize + 1));
+  EXPECT_GE(shared_vertices(glb_of(f.block[0]), glb_of(f.block[2])), size_t(kTileSize + 1));
+  EXPECT_GE(shared_vertices(glb_of(f.seam[0]), glb_of(f.seam[1])), size_t(kTileSize + 1));
+}
+
+TEST(Tiles3d, GltfValidator) {
+  const std::string node = MAQUETTE_NODE_DIR;
+  if (!fs::exists(node + "/node_modules/gltf-validator"))
+    GTEST_SKIP() << "gltf-validator not installed (npm ci in " << node << " failed)";
+  const std::string glb = temp_dir() + "/cells.glb";
+  const auto& f = tiles3d_fixture();
+  ASSERT_EQ(run_maquette("export glb " + f.store_path + " " + glb + " --dem dem --texture rgb " +
+                         "--cells " + f.block[0].ToText() + " " + f.block[1].ToText())
+                .exit_code,
+            0);
+  const std::string cmd = "node " + node + "/validate.mjs " + tiles3d_export().dir +
+                          " > /dev/null && node " + node + "/validate.mjs " +
+                          fs::path(glb).parent_path().string();
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+}
+
+TEST(Tiles3d, DrcPerCell) {
+  const auto& f = tiles3d_fixture();
+  const std::string dir = temp_dir() + "/drc";
+  const auto r = run_maquette("export drc " + f.store_path + " " + dir + " --dem dem --cells " +
+                              f.block[0].ToText() + " " + f.seam[1].ToText());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/" + f.block[0].ToText() + ".drc"));
+  EXPECT_TRUE(fs::exists(dir + "/" + f.seam[1].ToText() + ".drc"));
+  EXPECT_TRUE(fs::exists(dir + "/frame.json"));
+}
+
+TEST(Tiles3d, BadInput) {
+  const auto& f = tiles3d_fixture();
+  auto fails = [&](const std::string& args, const std::string& message) {
+    const auto r = run_maquette("export " + args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  };
+  const std::string out = temp_dir() + "/bad";
+  fails("tiles3d " + f.store_path + " " + out + " --dem nope", "unknown layer 'nope'");
+  fails("tiles3d " + f.store_path + " " + out + " --dem rgb", "expected a one-channel raster");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --texture dem", "is not imagery");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --bbox 100 -40 101 -39", "no tiles");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --max-mib 0", "would write about");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --levels 7..8", "--levels");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --decimation 3", "--decimation");
+  fails("glb " + f.store_path + " " + out + ".glb --dem dem --cells ../../etc", "../../etc");
+  fs::create_directories(out);
+  std::ofstream(out + "/keep.txt") << "x";
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem", "not empty");
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 1);
+  EXPECT_EQ(run_maquette("export tiles3d " + f.store_path + " " + out +
+                         " --dem dem --levels 6..6 "
+                         "--force")
+                .exit_code,
+            0);
+}
+
+}  // namespace
+}  // namespace maquette::test

@@ -1,0 +1,152 @@
+// `maquette view` through the real program: bad input is refused with a message that says what
+// to do; a good OUTDIR is served (tileset and viewer files with the right MIME types) and Ctrl-C
+// stops the server cleanly. The browser test is e2e.mjs (CTest viewer_e2e).
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "run_cli.h"
+
+namespace fs = std::filesystem;
+using maquette::test::run_maquette;
+using maquette::test::spawn_maquette;
+using maquette::test::temp_dir;
+
+namespace {
+
+void write_file(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+// A fake viewer bundle and a minimal export.
+struct Dirs {
+  std::string viewer, outdir;
+};
+Dirs make_dirs() {
+  const fs::path root = temp_dir();
+  write_file(root / "viewer" / "index.html", "<!doctype html><title>v</title>");
+  write_file(root / "viewer" / "app.js", "console.log(1)");
+  write_file(root / "viewer" / "draco" / "draco_decoder.wasm", std::string("\0asm", 4));
+  write_file(root / "out" / "tileset.json", R"({"asset":{"version":"1.1"}})");
+  write_file(root / "out" / "tiles" / "Q1.glb", "glTF");
+  return {(root / "viewer").string(), (root / "out").string()};
+}
+
+// A port on 127.0.0.1 held open (listening) while the object lives.
+struct HeldPort {
+  int fd = -1;
+  int port = 0;
+  HeldPort() {
+    fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = 0;
+    bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a);
+    listen(fd, 1);
+    socklen_t len = sizeof a;
+    getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+    port = ntohs(a.sin_port);
+  }
+  ~HeldPort() { close(fd); }
+};
+
+}  // namespace
+
+TEST(ViewCli, RefusesOutdirWithoutTileset) {
+  const Dirs d = make_dirs();
+  fs::remove(fs::path(d.outdir) / "tileset.json");
+  const auto r = run_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port 0");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no tileset.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("export tiles3d"), std::string::npos) << r.err;
+}
+
+TEST(ViewCli, RefusesMissingOutdir) {
+  const Dirs d = make_dirs();
+  const auto r = run_maquette("view " + d.outdir + "/nope --viewer " + d.viewer);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("is not a directory"), std::string::npos) << r.err;
+}
+
+TEST(ViewCli, RefusesMissingViewerBundleAndSaysHowToBuildIt) {
+  const Dirs d = make_dirs();
+  const auto r = run_maquette("view " + d.outdir + " --viewer " + d.outdir + "/no-viewer --port 0");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no viewer bundle"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("maquette_viewer"), std::string::npos) << r.err;
+}
+
+TEST(ViewCli, RefusesPortInUse) {
+  const Dirs d = make_dirs();
+  HeldPort held;
+  ASSERT_GT(held.port, 0);
+  const auto r = run_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port " +
+                              std::to_string(held.port));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("in use"), std::string::npos) << r.err;
+}
+
+TEST(ViewCli, RefusesBadPort) {
+  const Dirs d = make_dirs();
+  const auto r = run_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port 70000");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--port"), std::string::npos) << r.err;
+}
+
+TEST(ViewCli, ServesViewerAndTilesetWithMimeTypesAndStopsOnSigint) {
+  const Dirs d = make_dirs();
+  int port = 0;
+  {
+    HeldPort probe;  // a port that was free a moment ago
+    port = probe.port;
+  }
+  const int pid = spawn_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port " +
+                                 std::to_string(port));
+  ASSERT_GT(pid, 0);
+  httplib::Client cli("127.0.0.1", port);
+  cli.set_connection_timeout(1);
+  auto res = cli.Get("/tileset.json");
+  for (int i = 0; i < 50 && !res; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    res = cli.Get("/tileset.json");
+  }
+  ASSERT_TRUE(res) << "maquette view did not answer on port " << port;
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  const auto check = [&](const std::string& path, const std::string& mime) {
+    auto r = cli.Get(path);
+    ASSERT_TRUE(r) << path;
+    EXPECT_EQ(r->status, 200) << path;
+    EXPECT_EQ(r->get_header_value("Content-Type").rfind(mime, 0), 0u)
+        << path << ": " << r->get_header_value("Content-Type");
+  };
+  check("/", "text/html");
+  check("/app.js", "text/javascript");
+  check("/tiles/Q1.glb", "model/gltf-binary");
+  check("/draco/draco_decoder.wasm", "application/wasm");
+  auto missing = cli.Get("/tiles/none.glb");
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->status, 404);
+  auto escape = cli.Get("/../../etc/passwd");
+  ASSERT_TRUE(escape);
+  EXPECT_NE(escape->status, 200);
+
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
