@@ -1,0 +1,188 @@
+// texture module speed, through the loaded module as the runner calls it (inputs with halos
+// prepared beforehand, as the runner's tile cache does):
+//  - Procedural: texture.procedural on 256 x 256 tiles, a model of 8 layers constrained by 5
+//    quantities (height, slope, temperature, rainfall, radiation), 2 threads; Mpx/s.
+//  - Fit: texture.classify + texture.fit (map, merge in cell order, finish) on a 2400 x 2200
+//    scene, 2 threads.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <thread>
+
+#include "core/halo.h"
+#include "runtime/operator_registry.h"
+#include "runtime/params_schema.h"
+
+namespace maquette {
+namespace {
+
+using json = nlohmann::json;
+constexpr int kSize = 256, kLevel = 6, kThreads = 2;
+
+const Operator& op(const std::string& name) {
+  static const OperatorRegistry registry = [] {
+    OperatorRegistry r;
+    r.add(load_module(MAQUETTE_MODULE_DIR "/libmaquette_texture.so"));
+    return r;
+  }();
+  return *registry.find(name);
+}
+
+double relief(LonLat p) { return 1500 + 1450 * std::sin(p.lon * 9) * std::cos(p.lat * 7); }
+
+Tile<float> sample(CellId cell, const std::function<double(LonLat)>& f, int channels = 1) {
+  const int level = cell.level() + log2_tile_size(kSize);
+  Tile<float> t(kSize, channels);
+  for (int r = 0; r < kSize; ++r)
+    for (int c = 0; c < kSize; ++c) {
+      const double v = f(pixel_centre(
+          default_grid(), {cell.face(), global_col(cell, kSize, c), global_row(cell, kSize, r)},
+          level));
+      for (int k = 0; k < channels; ++k) t.at(c, r, k) = float(v);
+    }
+  return t;
+}
+
+Tile<float> halo(CellId cell, int h, const std::function<double(LonLat)>& f) {
+  return assemble_halo(default_grid(), cell, kSize, h,
+                       [&](CellId n) { return std::optional(sample(n, f)); });
+}
+
+json hat(double a, double b, double c, double d) { return {{"hat", {a, b, c, d}}}; }
+
+// 8 layers: root, 4 types constrained by all 5 quantities, 3 noisy children.
+json model() {
+  json q = json::array();
+  for (const auto& [name, lo, hi] :
+       std::vector<std::tuple<std::string, double, double>>{{"height", 0, 3000},
+                                                            {"slope", 0, 90},
+                                                            {"temperature", -10, 20},
+                                                            {"rainfall", 0, 2000},
+                                                            {"radiation", 0, 2e6}})
+    q.push_back({{"name", name}, {"range", {lo, hi}}});
+  json root = {{"colour", {150, 110, 90}}, {"class", 0}, {"children", json::array()}};
+  for (int i = 0; i < 4; ++i) {
+    const double h0 = 700.0 * i;
+    json l = {{"class", i + 1},
+              {"colour", {40 * i, 200 - 30 * i, 60}},
+              {"noise_scale", 0.2},
+              {"roughness_m", 2},
+              {"noise", {{"seed", i + 2}, {"octaves", 3}, {"wavelength_m", 300}}},
+              {"constraints",
+               {{"height", hat(h0 - 200, h0, h0 + 900, h0 + 1100)},
+                {"slope", hat(0, 0, 30 + 5 * i, 45 + 5 * i)},
+                {"temperature", hat(-10, -5, 15, 20)},
+                {"rainfall", hat(0, 100, 1800, 2000)},
+                {"radiation", hat(0, 1e5, 1.8e6, 2e6)}}}};
+    if (i < 3)
+      l["children"] = {{{"colour", {90, 120, 50}},
+                        {"bias", 0.5},
+                        {"noise_scale", 0.6},
+                        {"noise", {{"seed", 20 + i}}}}};
+    root["children"].push_back(l);
+  }
+  return {{"format", "maquette.texture.model"}, {"version", 1}, {"quantities", q}, {"root", root}};
+}
+
+std::vector<CellId> cells(int cols, int rows) {
+  std::vector<CellId> out;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      out.push_back(CellId::FromFaceColRow(2, kLevel, uint32_t(30 + c), uint32_t(30 + r)));
+  return out;
+}
+
+void parallel(size_t n, const std::function<void(size_t)>& f) {
+  std::vector<std::thread> pool;
+  for (int t = 0; t < kThreads; ++t)
+    pool.emplace_back([&, t] {
+      for (size_t i = size_t(t); i < n; i += kThreads) f(i);
+    });
+  for (auto& th : pool) th.join();
+}
+
+void Procedural(benchmark::State& state) {
+  const auto& proc = static_cast<const CellOperator&>(op("texture.procedural"));
+  const json params = validate_params(proc.spec().params_schema, {{"model", model()}}, "bench");
+  const std::vector<CellId> cs = cells(4, 2);
+  std::vector<CellData> inputs(cs.size());
+  for (size_t i = 0; i < cs.size(); ++i) {
+    const int h = proc.spec().halo;
+    inputs[i].inputs.emplace("dem", halo(cs[i], h, relief));
+    inputs[i].inputs.emplace("temperature",
+                             halo(cs[i], h, [](LonLat p) { return 20 - 0.0065 * relief(p); }));
+    inputs[i].inputs.emplace("rainfall",
+                             halo(cs[i], h, [](LonLat p) { return 300 + 0.5 * relief(p); }));
+    inputs[i].inputs.emplace("radiation",
+                             halo(cs[i], h, [](LonLat p) { return 1e6 + 300 * relief(p); }));
+  }
+  for (auto _ : state)
+    parallel(cs.size(), [&](size_t i) {
+      CellData d = inputs[i];
+      for (const OutputSpec& o : proc.spec().outputs)
+        d.outputs.emplace(o.name, Tile<float>(kSize, o.channels));
+      proc.run({cs[i], kSize, &default_grid(), &params}, d);
+      benchmark::DoNotOptimize(d.outputs);
+    });
+  state.counters["Mpx/s"] =
+      benchmark::Counter(double(cs.size()) * kSize * kSize * 1e-6 * double(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(Procedural)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+
+void Fit(benchmark::State& state) {
+  const auto& classify = static_cast<const CellOperator&>(op("texture.classify"));
+  const auto& fit = static_cast<const ReduceOperator&>(op("texture.fit"));
+  const json cp = validate_params(classify.spec().params_schema, json::parse(R"({"boxes": [
+    {"id": 3, "hue": [290, 310], "value": [0.8, 1]}, {"id": 0, "hue": [0, 60]},
+    {"id": 1, "hue": [60, 180], "value": [0.45, 1]}, {"id": 2, "hue": [60, 180], "value": [0, 0.45]}]})"),
+                                  "bench");
+  const json fp =
+      validate_params(fit.spec().params_schema, {{"ranges", {{"height", {0, 3000}}}}}, "bench");
+  // 10 x 9 tiles of 256, cropped to 2400 x 2200 pixels (NaN beyond).
+  const std::vector<CellId> cs = cells(10, 9);
+  const auto& proc = static_cast<const CellOperator&>(op("texture.procedural"));
+  const json pp = validate_params(proc.spec().params_schema, {{"model", model()}}, "bench");
+  std::vector<Tile<float>> rgb(cs.size()), dem(cs.size());
+  parallel(cs.size(), [&](size_t i) {
+    CellData d;
+    d.inputs.emplace("dem", halo(cs[i], proc.spec().halo, relief));
+    for (const char* q : {"temperature", "rainfall", "radiation"})
+      d.inputs.emplace(q, halo(cs[i], proc.spec().halo, [](LonLat) { return 500.0; }));
+    d.outputs.emplace("imagery", Tile<float>(kSize, 3));
+    proc.run({cs[i], kSize, &default_grid(), &pp}, d);
+    rgb[i] = d.outputs.at("imagery");
+    for (int r = 0; r < kSize; ++r)
+      for (int c = 0; c < kSize; ++c)
+        for (int k = 0; k < 3; ++k) {
+          float& v = rgb[i].at(c, r, k);
+          v = (int(i % 10) * kSize + c >= 2400 || int(i / 10) * kSize + r >= 2200) ? NAN
+                                                                                   : std::round(v);
+        }
+    dem[i] = d.inputs.at("dem");
+  });
+  for (auto _ : state) {
+    std::vector<json> partials(cs.size());
+    parallel(cs.size(), [&](size_t i) {
+      CellData c;
+      c.inputs.emplace("rgb", rgb[i]);
+      c.outputs.emplace("classes", Tile<float>(kSize, 1));
+      classify.run({cs[i], kSize, &default_grid(), &cp}, c);
+      CellData f;
+      f.inputs.emplace("classes", c.outputs.at("classes"));
+      f.inputs.emplace("rgb", rgb[i]);
+      f.inputs.emplace("dem", dem[i]);
+      partials[i] = fit.map({cs[i], kSize, &default_grid(), &fp}, f);
+    });
+    json merged;
+    for (const json& p : partials) merged = fit.merge(merged, p);
+    benchmark::DoNotOptimize(fit.finish(merged, fp));
+  }
+}
+BENCHMARK(Fit)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+
+}  // namespace
+}  // namespace maquette
+
+BENCHMARK_MAIN();

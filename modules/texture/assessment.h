@@ -1,0 +1,14 @@
+// Agreement statistics from a merged confusion count {"obs,pred": n} (pred -1: no class).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace maquette::texture {
+
+// {"classes", "confusion" (rows observed, columns predicted, last column: none), "accuracy",
+//  "kappa" (Cohen's), "proportions" {class: {observed, predicted}}, "ciede2000_mean", "pixels"}.
+nlohmann::json assessment(const nlohmann::json& merged);
+std::string assessment_table(const nlohmann::json& report);
+
+}  // namespace maquette::texture

@@ -1,0 +1,19 @@
+// Colour conversions: RGB -> HSV (paper 5.2.1), sRGB -> CIELAB (D65) and the CIEDE2000
+// colour difference (Sharma, Wu and Dalal 2005).
+#pragma once
+
+#include <array>
+
+namespace maquette::texture {
+
+struct Hsv {
+  double h = 0;  // degrees [0, 360)
+  double s = 0;  // [0, 1]
+  double v = 0;  // [0, 1]
+};
+
+Hsv rgb_to_hsv(double r, double g, double b);                     // components 0..255
+std::array<double, 3> srgb_to_lab(double r, double g, double b);  // components 0..255
+double ciede2000(const std::array<double, 3>& lab1, const std::array<double, 3>& lab2);
+
+}  // namespace maquette::texture

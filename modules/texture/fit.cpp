@@ -1,0 +1,199 @@
+// texture.fit (reduce): per class and quantity, 256-bin histograms over the quantity's range
+// (paper 5.2.3), merged in cell-id order; finished into a model document (hierarchy.h).
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "core/error.h"
+#include "fit_inputs.h"
+#include "hierarchy.h"
+#include "operators.h"
+
+namespace maquette::texture {
+namespace {
+
+const char* kOp = "texture.fit";
+
+OperatorSpec fit_spec() {
+  OperatorSpec s;
+  s.name = kOp;
+  s.description =
+      "Fits a surface-layer model to a classified image: constraint functions from per-class "
+      "histograms of height, slope and any named raster; layer hierarchy of paper 001 5.2.2";
+  s.kind = OperatorKind::Reduce;
+  s.inputs = {{"classes", "surface types (texture.classify)", false},
+              {"rgb", "the image the classes come from (layer colours)", false},
+              {"dem", "elevation in metres", false}};
+  for (const std::string& q : kRasterPorts)
+    s.inputs.push_back({q, "raster of the quantity '" + q + "'", true});
+  s.outputs = {{"model", "model document (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
+  s.halo = kInputHalo;
+  s.params_schema = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required", {"ranges"}},
+      {"properties",
+       {{"quantities",
+         {{"type", "array"},
+          {"items",
+           {{"type", "string"},
+            {"enum", {"height", "slope", "temperature", "rainfall", "radiation", "extra"}}}},
+          {"default", {"height", "slope"}}}},
+        {"ranges",
+         {{"type", "object"},
+          {"description", "quantity -> [lo, hi]: its values are scaled to [0, 1) over this"}}},
+        {"classes",
+         {{"type", "array"},
+          {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
+          {"default", json::array()},
+          {"description", "classes that must have pixels (others found are fitted too)"}}},
+        {"noise_scale", {{"type", "number"}, {"default", 0.1}}},
+        {"noise_wavelength_m", {{"type", "number"}, {"minimum", 0.001}, {"default", 200}}},
+        {"noise_octaves", {{"type", "integer"}, {"minimum", 1}, {"maximum", 12}, {"default", 3}}},
+        {"large_fraction", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}, {"default", 0.25}}},
+        {"children", {{"type", "integer"}, {"minimum", 0}, {"maximum", 8}, {"default", 2}}},
+        {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 1}}},
+        {"out",
+         {{"type", "string"},
+          {"default", ""},
+          {"description", "also write the model document to this file (for model_file)"}}}}}};
+  return s;
+}
+
+std::vector<Quantity> quantities(const json& params) {
+  std::vector<Quantity> out;
+  const json& ranges = params.at("ranges");
+  for (const std::string& name : params.at("quantities").get<std::vector<std::string>>()) {
+    const std::string path = std::string(kOp) + ": params.ranges." + name;
+    json r = ranges.contains(name) ? ranges.at(name) : name == "slope" ? json{0, 90} : json();
+    if (r.is_null()) throw Error(path + ": missing (give [lo, hi] of the region's values)");
+    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
+        !(r[1].get<double>() > r[0].get<double>()))
+      throw Error(path + ": expected [lo, hi] with lo < hi, got " + r.dump());
+    out.push_back({name, r[0].get<double>(), r[1].get<double>()});
+  }
+  return out;
+}
+
+int bin(float v, const Quantity& q) {
+  return std::clamp(int(std::floor((v - q.lo) / (q.hi - q.lo) * kBins)), 0, kBins - 1);
+}
+
+class Fit : public ReduceOperator {
+ public:
+  const OperatorSpec& spec() const override { return spec_; }
+
+  // Partial: {"<class>": {"n": pixels, "sum": [3], "sum_sq": [3], "hist": [[256] per quantity]}}.
+  json map(const CellContext& ctx, const CellData& data) const override {
+    const std::vector<Quantity> qs = quantities(*ctx.params);
+    std::vector<std::string> names;
+    for (const Quantity& q : qs) names.push_back(q.name);
+    const std::vector<Plane> planes = quantity_planes(ctx, data, names, kOp);
+    const Tile<float>& cls = data.input("classes");
+    const Tile<float>& rgb = data.input("rgb");
+    if (rgb.channels() != 3)
+      throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
+                  std::to_string(rgb.channels()));
+    std::map<int, ClassStats> stats;
+    for (int r = 0; r < ctx.tile_size; ++r)
+      for (int c = 0; c < ctx.tile_size; ++c) {
+        const float k = cls.at(c, r);
+        if (std::isnan(k) || std::isnan(rgb.at(c, r, 0))) continue;
+        bool valid = true;
+        for (const Plane& p : planes) valid = valid && !std::isnan(p.at(c, r));
+        if (!valid) continue;  // a pixel counts only with every quantity known
+        ClassStats& s = stats[int(k)];
+        if (s.hist.empty()) s.hist.resize(qs.size(), {});
+        ++s.pixels;
+        for (size_t ch = 0; ch < 3; ++ch) {
+          const double v = rgb.at(c, r, int(ch));
+          s.sum[ch] += v, s.sum_sq[ch] += v * v;
+        }
+        for (size_t q = 0; q < qs.size(); ++q) ++s.hist[q][size_t(bin(planes[q].at(c, r), qs[q]))];
+      }
+    if (stats.empty()) return nullptr;
+    json out = json::object();
+    for (const auto& [id, s] : stats)
+      out[std::to_string(id)] = {
+          {"n", s.pixels}, {"sum", s.sum}, {"sum_sq", s.sum_sq}, {"hist", s.hist}};
+    return out;
+  }
+
+  json merge(const json& a, const json& b) const override {
+    if (a.is_null()) return b;
+    if (b.is_null()) return a;
+    json out = a;
+    for (const auto& [id, s] : b.items()) {
+      if (!out.contains(id)) {
+        out[id] = s;
+        continue;
+      }
+      json& o = out[id];
+      o["n"] = o["n"].get<uint64_t>() + s["n"].get<uint64_t>();
+      for (size_t ch = 0; ch < 3; ++ch) {
+        o["sum"][ch] = o["sum"][ch].get<double>() + s["sum"][ch].get<double>();
+        o["sum_sq"][ch] = o["sum_sq"][ch].get<double>() + s["sum_sq"][ch].get<double>();
+      }
+      for (size_t q = 0; q < s["hist"].size(); ++q)
+        for (size_t i = 0; i < size_t(kBins); ++i)
+          o["hist"][q][i] = o["hist"][q][i].get<uint64_t>() + s["hist"][q][i].get<uint64_t>();
+    }
+    return out;
+  }
+
+  Artifact finish(const json& merged, const json& params) const override {
+    const std::vector<Quantity> qs = quantities(params);
+    std::vector<ClassStats> classes;
+    if (!merged.is_null())
+      for (const auto& [id, s] : merged.items()) {
+        ClassStats c;
+        c.id = std::stoi(id);
+        c.pixels = s.at("n").get<uint64_t>();
+        c.sum = s.at("sum").get<std::array<double, 3>>();
+        c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
+        c.hist = s.at("hist").get<std::vector<std::array<uint64_t, kBins>>>();
+        classes.push_back(std::move(c));
+      }
+    std::sort(classes.begin(), classes.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    for (const int id : params.at("classes").get<std::vector<int>>())
+      if (std::none_of(classes.begin(), classes.end(), [&](auto& c) { return c.id == id; }))
+        throw Error(std::string(kOp) + ": params.classes: class " + std::to_string(id) +
+                    " has no pixels with every quantity known");
+    if (classes.empty())
+      throw Error(std::string(kOp) +
+                  ": no classified pixel with every quantity known in the region (inputs.classes "
+                  "empty, or the quantities missing)");
+    HierarchyParams h;
+    h.noise_scale = params.at("noise_scale").get<double>();
+    h.noise.wavelength_m = params.at("noise_wavelength_m").get<double>();
+    h.noise.octaves = params.at("noise_octaves").get<int>();
+    h.large_fraction = params.at("large_fraction").get<double>();
+    h.children = params.at("children").get<int>();
+    h.seed = params.at("seed").get<uint64_t>();
+    json doc = model_to_json(build_model(qs, classes, h));
+    json summary = json::array();
+    for (const ClassStats& c : classes) summary.push_back({{"class", c.id}, {"pixels", c.pixels}});
+    doc["fitted_classes"] = summary;
+    const std::string text = doc.dump(1);
+    if (const std::string out = params.at("out"); !out.empty()) {
+      std::ofstream file(out);
+      if (!(file << text << '\n'))
+        throw Error(std::string(kOp) + ": params.out: cannot write '" + out + "'");
+    }
+    Artifact a;
+    a.name = "model";
+    a.data.resize(text.size());
+    std::transform(text.begin(), text.end(), a.data.begin(), [](char ch) { return std::byte(ch); });
+    a.metadata = {{"format", doc["format"]}, {"version", doc["version"]}, {"classes", summary}};
+    return a;
+  }
+
+ private:
+  OperatorSpec spec_ = fit_spec();
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_fit() { return std::make_unique<Fit>(); }
+
+}  // namespace maquette::texture

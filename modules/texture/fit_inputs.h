@@ -1,0 +1,20 @@
+// The per-pixel samples texture.fit and texture.assess read from a cell: the quantities of the
+// model at the inputs' resolution, computed exactly as texture.procedural computes them at
+// refine 0 (B-spline of the DEM, slope from it), so a fitted model sees what it was fitted on.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "field.h"
+#include "runtime/operator.h"
+
+namespace maquette::texture {
+
+// One plane (ring 0) per name in `quantities` ("height", "slope" or an input port name).
+// Throws naming `op` and the quantity when its input is not mapped.
+std::vector<Plane> quantity_planes(const CellContext& ctx, const CellData& data,
+                                   const std::vector<std::string>& quantities,
+                                   const std::string& op);
+
+}  // namespace maquette::texture

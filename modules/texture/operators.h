@@ -1,0 +1,22 @@
+// Factories of the texture module's operators (listed in module.cpp), and the input ports of
+// the geographic quantities an operator may read besides height and slope.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/operator.h"
+
+namespace maquette::texture {
+
+inline const std::vector<std::string> kRasterPorts = {"temperature", "rainfall", "radiation",
+                                                      "extra"};
+
+std::unique_ptr<Operator> make_procedural();
+std::unique_ptr<Operator> make_classify();
+std::unique_ptr<Operator> make_cluster();
+std::unique_ptr<Operator> make_fit();
+std::unique_ptr<Operator> make_assess();
+
+}  // namespace maquette::texture

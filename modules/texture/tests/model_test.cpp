@@ -1,0 +1,175 @@
+// The model document (parsing, errors naming field and value, hats, serialisation) and the
+// coverage / colour / height formulas of paper 4.2 against hand-computed values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../hierarchy.h"
+#include "../noise.h"
+#include "../surface.h"
+#include "core/error.h"
+
+namespace maquette::texture {
+namespace {
+
+json base_model() {
+  return json::parse(R"({
+    "format": "maquette.texture.model", "version": 1,
+    "quantities": [{"name": "height", "range": [0, 1000]}, {"name": "slope", "range": [0, 90]}],
+    "root": {"colour": [100, 100, 100], "class": 0, "children": [
+      {"name": "a", "class": 1, "colour": [200, 40, 0], "bias": 0.9, "noise_scale": 0.3,
+       "roughness_m": 5, "noise": {"seed": 4, "octaves": 2, "wavelength_m": 50},
+       "constraints": {"height": {"hat": [0, 200, 600, 800]}, "slope": {"hat": [0, 0, 30, 60]}},
+       "children": [{"name": "a1", "colour": [0, 0, 250], "bias": 2}]},
+      {"name": "b", "class": 2, "colour": [0, 255, 0], "bias": 0.5,
+       "constraints": {"height": {"hat": [700, 900, 1000, 1000]}}}]}})");
+}
+
+std::string parse_error(const json& doc) {
+  try {
+    parse_model(doc, "ctx");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Model, ParsesDepthFirst) {
+  const Model m = parse_model(base_model(), "ctx");
+  ASSERT_EQ(m.layers.size(), 4u);
+  EXPECT_EQ(m.layers[1].name, "a");
+  EXPECT_EQ(m.layers[2].name, "a1");
+  EXPECT_EQ(m.layers[2].parent, 1);
+  EXPECT_EQ(m.layers[3].parent, 0);
+  EXPECT_EQ(layer_class(m, 2), 1);  // inherited
+  EXPECT_FALSE(m.layers[3].constraints[1].has_value());
+}
+
+TEST(Model, JsonRoundTrip) {
+  const Model m = parse_model(base_model(), "ctx");
+  const json again = model_to_json(parse_model(model_to_json(m), "ctx"));
+  EXPECT_EQ(again, model_to_json(m));
+}
+
+TEST(Model, HatTable) {
+  const Table t = hat_table({200, 400, 600, 800}, 0, 1024);  // bins of 4, centres at 4i + 2
+  EXPECT_EQ(t[0], 0);
+  EXPECT_NEAR(t[75], (302 - 200) / 200.0, 1e-6);   // rising
+  EXPECT_EQ(t[125], 1);                            // plateau
+  EXPECT_NEAR(t[175], (800 - 702) / 200.0, 1e-6);  // falling
+  EXPECT_EQ(t[255], 0);
+}
+
+TEST(Model, ErrorsNameFieldAndValue) {
+  json m = base_model();
+  m["version"] = 2;
+  EXPECT_EQ(parse_error(m),
+            "ctx: model.version: unsupported version 2 (this build reads version 1)");
+  m = base_model();
+  m.erase("format");
+  EXPECT_EQ(parse_error(m), "ctx: model.format: expected \"maquette.texture.model\", got nothing");
+  m = base_model();
+  m["root"]["children"][0]["constraints"]["height"] = {{"table", json::array({0.5, 0.5})}};
+  EXPECT_EQ(parse_error(m),
+            "ctx: model.root.children[0].constraints.height.table: expected 256 numbers, got 2");
+  m = base_model();
+  m["root"]["children"][1]["constraints"]["rainfall"] = {{"hat", {0, 1, 2, 3}}};
+  EXPECT_EQ(parse_error(m),
+            "ctx: model.root.children[1].constraints.rainfall: not a quantity of the model "
+            "(declare it in \"quantities\")");
+  m = base_model();
+  m["root"]["children"][0]["constraints"]["slope"]["hat"] = {0, 50, 40, 60};
+  EXPECT_EQ(parse_error(m),
+            "ctx: model.root.children[0].constraints.slope.hat: expected a <= b <= c <= d, got "
+            "[0,50,40,60]");
+  m = base_model();
+  m["root"]["children"][0]["colour"] = {1, 2};
+  EXPECT_EQ(parse_error(m), "ctx: model.root.children[0].colour: expected [r, g, b], got [1,2]");
+  m = base_model();
+  m["root"]["children"][0]["colur"] = {1, 2, 3};
+  EXPECT_EQ(parse_error(m), "ctx: model.root.children[0]: unknown field 'colur'");
+  m = base_model();
+  m["root"]["constraints"] = {{"height", {{"hat", {0, 1, 2, 3}}}}};
+  EXPECT_EQ(parse_error(m),
+            "ctx: model.root.constraints: the root layer has no constraints (paper 4.2)");
+  m = base_model();
+  m["quantities"][1]["range"] = {90, 0};
+  EXPECT_EQ(parse_error(m), "ctx: model.quantities[1].range: expected lo < hi, got [90,0]");
+}
+
+// One pixel, by hand: C = clamp((b + s N) F_h F_s) C_parent, RGB and H blended layer by layer.
+TEST(Model, CoverageFormulaByHand) {
+  const Model m = parse_model(base_model(), "ctx");
+  const float h0 = 450, slope = 45;
+  const Vec3d pos{1234.5, -987.25, 6.3e6};
+  SurfaceInputs in;
+  in.height = Plane(1, 0, h0);
+  in.slope = Plane(1, 0, slope);
+  in.quantities = {nullptr, nullptr};
+  const std::vector<Vec3d> position{pos};
+  in.position = &position;
+  const Surface s = evaluate(m, in);
+
+  const float n = NoiseField(m.layers[1].noise)(pos);
+  ASSERT_GE(n, -1);
+  ASSERT_LE(n, 1);
+  const float fh = lookup(*m.layers[1].constraints[0], h0 / 1000);
+  const float fs = lookup(*m.layers[1].constraints[1], slope / 90);
+  EXPECT_NEAR(fh, 1, 1e-6);         // on the height plateau
+  EXPECT_NEAR(fs, 0.5, 1.0 / 256);  // half-way down the slope hat
+  const float ca = std::clamp((0.9f + 0.3f * n) * fh * fs, 0.0f, 1.0f);
+  const float ca1 = std::clamp(2.0f, 0.0f, 1.0f) * ca;  // bounded by its parent
+  std::array<float, 3> rgb{100, 100, 100};              // root, coverage 1
+  for (int k = 0; k < 3; ++k) rgb[k] = (1 - ca) * rgb[k] + ca * m.layers[1].colour[k];
+  for (int k = 0; k < 3; ++k) rgb[k] = (1 - ca1) * rgb[k] + ca1 * m.layers[2].colour[k];
+  const float fb = lookup(*m.layers[3].constraints[0], (h0 + ca * 5 * n) / 1000);
+  EXPECT_EQ(fb, 0);  // layer b sees the displaced height, far below its hat
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(s.rgb[k], rgb[k], 1e-3) << k;
+  EXPECT_NEAR(s.height.v[0], h0 + ca * 5 * n, 1e-4);
+  EXPECT_EQ(s.dominant_class.v[0], ca1 >= 0.5 ? 1.0f : 0.0f);
+}
+
+TEST(Model, NaNHeightGivesNaN) {
+  const Model m = parse_model(base_model(), "ctx");
+  SurfaceInputs in;
+  in.height = Plane(1, 0, NAN);
+  in.slope = Plane(1, 0, 0);
+  in.quantities = {nullptr, nullptr};
+  const std::vector<Vec3d> position{{0, 0, 6.3e6}};
+  in.position = &position;
+  const Surface s = evaluate(m, in);
+  EXPECT_TRUE(std::isnan(s.rgb[0]));
+  EXPECT_TRUE(std::isnan(s.dominant_class.v[0]));
+}
+
+TEST(Model, ConstraintFunctionHasMeanHalf) {
+  std::array<uint64_t, kBins> h{};
+  for (int i = 100; i < 140; ++i) h[size_t(i)] = 10 + uint64_t(i % 3);
+  const Table t = constraint_function(h);
+  double sum = 0;
+  for (const float v : t) sum += v;
+  EXPECT_EQ(t[0], 0);
+  EXPECT_EQ(t[120], 1);  // clamped: 40 bins hold everything, far above twice the mean
+  std::array<uint64_t, kBins> flat{};
+  flat.fill(7);
+  const Table f = constraint_function(flat);
+  EXPECT_FLOAT_EQ(f[3], 0.5f);
+  EXPECT_GT(sum, 0);
+}
+
+TEST(Noise, CodomainAndDeterminism) {
+  const NoiseParams p{9, 4, 100, 0.5};
+  float lo = 1, hi = -1;
+  for (int i = 0; i < 2000; ++i) {
+    const float v = NoiseField(p)({i * 7.31, i * -3.7, 6.3e6 + i});
+    lo = std::min(lo, v), hi = std::max(hi, v);
+    ASSERT_EQ(v, NoiseField(p)({i * 7.31, i * -3.7, 6.3e6 + i}));
+  }
+  EXPECT_GE(lo, -1);
+  EXPECT_LE(hi, 1);
+  EXPECT_LT(lo, -0.4);  // uses its range
+  EXPECT_GT(hi, 0.4);
+}
+
+}  // namespace
+}  // namespace maquette::texture

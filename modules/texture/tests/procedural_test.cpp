@@ -1,0 +1,150 @@
+// texture.procedural through the loaded module: seamless across tile borders and a face seam at
+// levels finer than the DEM, same bits for any thread count, errors naming the missing input.
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "../field.h"
+#include "../render.h"
+#include "texture_module.h"
+
+namespace maquette::texture {
+namespace {
+
+using namespace texture_test;
+
+const json kModel = json::parse(R"({
+  "format": "maquette.texture.model", "version": 1,
+  "quantities": [{"name": "height", "range": [0, 3000]}, {"name": "slope", "range": [0, 90]}],
+  "root": {"colour": [150, 110, 90], "class": 0, "roughness_m": 3,
+           "noise": {"seed": 3, "wavelength_m": 40}, "children": [
+    {"class": 1, "colour": [80, 140, 60], "bias": 1, "noise_scale": 0.4, "roughness_m": 2,
+     "noise": {"seed": 5, "wavelength_m": 60, "octaves": 4},
+     "constraints": {"height": {"hat": [0, 100, 1200, 1400]}}},
+    {"class": 2, "colour": [30, 80, 40], "bias": 1, "noise_scale": 0.3,
+     "constraints": {"height": {"hat": [1200, 1400, 2200, 2400]}, "slope": {"hat": [0, 0, 25, 35]}}},
+    {"class": 3, "colour": [240, 240, 245], "bias": 1,
+     "constraints": {"height": {"hat": [2400, 2600, 3000, 3100]}}}]}})");
+
+Rendered render(CellId cell, int size, int refine) {
+  const auto tile_of = [&](CellId c) { return sample(c, size, relief); };
+  return render_tile(parse_model(kModel, "test"), default_grid(), cell, size, refine,
+                     with_halo(cell, size, kInputHalo, tile_of), {}, "test");
+}
+
+// The step across the border (between a's last and b's first column, b to the right of a) is
+// within the range of steps between neighbouring interior pixels of the two tiles.
+void expect_seamless(const std::vector<float>& a, const std::vector<float>& b, int m, int channels,
+                     const char* what) {
+  const auto value = [&](const std::vector<float>& t, int c, int r) {
+    double s = 0;
+    for (int k = 0; k < channels; ++k)
+      s += t[(size_t(r) * size_t(m) + size_t(c)) * size_t(channels) + size_t(k)];
+    return s;
+  };
+  double interior = 0, border = 0;
+  for (int r = 0; r < m; ++r) {
+    for (int c = 1; c < m; ++c)
+      interior = std::max({interior, std::abs(value(a, c, r) - value(a, c - 1, r)),
+                           std::abs(value(b, c, r) - value(b, c - 1, r))});
+    border = std::max(border, std::abs(value(b, 0, r) - value(a, m - 1, r)));
+  }
+  EXPECT_GT(interior, 0) << what;
+  EXPECT_LE(border, interior) << what << ": a seam";
+}
+
+TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
+  const int size = 16, refine = 2, level = 10;
+  const CellId a = CellId::FromFaceColRow(2, level, 520, 500),
+               b = CellId::FromFaceColRow(2, level, 521, 500);
+  const Rendered ra = render(a, size, refine), rb = render(b, size, refine);
+  ASSERT_EQ(ra.size, 64);
+  expect_seamless(ra.rgb, rb.rgb, ra.size, 3, "rgb");
+  expect_seamless(ra.height, rb.height, ra.size, 1, "height");
+  expect_seamless(ra.normal, rb.normal, ra.size, 3, "normal");
+}
+
+TEST(Procedural, SeamlessAcrossFaceSeam) {
+  const int size = 16, refine = 1, level = 9;
+  const uint32_t last = (1u << level) - 1;
+  // O's last column meets P's first (equatorial faces side by side).
+  const CellId a = CellId::FromFaceColRow(1, level, last, 200),
+               b = CellId::FromFaceColRow(2, level, 0, 200);
+  const Rendered ra = render(a, size, refine), rb = render(b, size, refine);
+  expect_seamless(ra.rgb, rb.rgb, ra.size, 3, "rgb");
+  expect_seamless(ra.height, rb.height, ra.size, 1, "height");
+}
+
+// Finer levels refine the same surface: a pixel of refine 0 and the mean of its 4 children at
+// refine 1 have about the same height.
+TEST(Procedural, LevelsAgree) {
+  const CellId cell = CellId::FromFaceColRow(2, 10, 520, 500);
+  const Rendered r0 = render(cell, 16, 0), r1 = render(cell, 16, 1);
+  double worst = 0;
+  for (int r = 0; r < 16; ++r)
+    for (int c = 0; c < 16; ++c) {
+      double mean = 0;
+      for (int k = 0; k < 4; ++k)
+        mean += r1.height[size_t(2 * r + k / 2) * 32 + size_t(2 * c + k % 2)] / 4;
+      worst = std::max(worst, std::abs(mean - r0.height[size_t(r) * 16 + size_t(c)]));
+    }
+  EXPECT_LT(worst, 15);  // metres, on a relief of 3000 m with roughness of a few metres
+}
+
+TEST(Procedural, SameBitsForAnyThreadCount) {
+  const int size = 32;
+  std::vector<CellId> cells;
+  for (uint32_t i = 0; i < 8; ++i)
+    cells.push_back(CellId::FromFaceColRow(2, 10, 520 + i % 4, 500 + i / 4));
+  const auto run_all = [&](int threads) {
+    std::vector<std::vector<float>> out(cells.size());
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (size_t i = size_t(t); i < cells.size(); i += size_t(threads)) {
+          CellData d;
+          d.inputs.emplace("dem", with_halo(cells[i], size, kInputHalo,
+                                            [&](CellId c) { return sample(c, size, relief); }));
+          const CellData r = run_cell("texture.procedural", cells[i], size, d, {{"model", kModel}});
+          const auto img = r.outputs.at("imagery").data(), h = r.outputs.at("height").data();
+          out[i].assign(img.begin(), img.end());
+          out[i].insert(out[i].end(), h.begin(), h.end());
+        }
+      });
+    for (auto& th : pool) th.join();
+    return out;
+  };
+  const auto one = run_all(1);
+  EXPECT_EQ(one, run_all(2));
+  EXPECT_EQ(one, run_all(4));
+}
+
+TEST(Procedural, ErrorsNameTheInput) {
+  json model = kModel;
+  model["quantities"].push_back({{"name", "rainfall"}, {"range", {0, 2000}}});
+  const CellId cell = CellId::FromFaceColRow(2, 10, 520, 500);
+  CellData d;
+  d.inputs.emplace(
+      "dem", with_halo(cell, 16, kInputHalo, [&](CellId c) { return sample(c, 16, relief); }));
+  try {
+    run_cell("texture.procedural", cell, 16, d, {{"model", model}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "texture.procedural: model quantity 'rainfall' has no input raster (map "
+                 "inputs.rainfall)");
+  }
+  model = kModel;
+  model["version"] = "1";
+  try {
+    run_cell("texture.procedural", cell, 16, d, {{"model", model}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "texture.procedural: params: model.version: unsupported version \"1\" (this "
+                 "build reads version 1)");
+  }
+}
+
+}  // namespace
+}  // namespace maquette::texture
