@@ -122,7 +122,7 @@ void Procedural(benchmark::State& state) {
       CellData d = inputs[i];
       for (const OutputSpec& o : proc.spec().outputs)
         d.outputs.emplace(o.name, Tile<float>(kSize, o.channels));
-      proc.run({cs[i], kSize, &default_grid(), &params}, d);
+      proc.run({cs[i], kSize, &default_grid(), &params, nullptr}, d);
       benchmark::DoNotOptimize(d.outputs);
     });
   state.counters["Mpx/s"] =
@@ -151,7 +151,7 @@ void Fit(benchmark::State& state) {
     for (const char* q : {"temperature", "rainfall", "radiation"})
       d.inputs.emplace(q, halo(cs[i], proc.spec().halo, [](LonLat) { return 500.0; }));
     d.outputs.emplace("imagery", Tile<float>(kSize, 3));
-    proc.run({cs[i], kSize, &default_grid(), &pp}, d);
+    proc.run({cs[i], kSize, &default_grid(), &pp, nullptr}, d);
     rgb[i] = d.outputs.at("imagery");
     for (int r = 0; r < kSize; ++r)
       for (int c = 0; c < kSize; ++c)
@@ -168,16 +168,16 @@ void Fit(benchmark::State& state) {
       CellData c;
       c.inputs.emplace("rgb", rgb[i]);
       c.outputs.emplace("classes", Tile<float>(kSize, 1));
-      classify.run({cs[i], kSize, &default_grid(), &cp}, c);
+      classify.run({cs[i], kSize, &default_grid(), &cp, nullptr}, c);
       CellData f;
       f.inputs.emplace("classes", c.outputs.at("classes"));
       f.inputs.emplace("rgb", rgb[i]);
       f.inputs.emplace("dem", dem[i]);
-      partials[i] = fit.map({cs[i], kSize, &default_grid(), &fp}, f);
+      partials[i] = fit.map({cs[i], kSize, &default_grid(), &fp, nullptr}, f);
     });
     json merged;
     for (const json& p : partials) merged = fit.merge(merged, p);
-    benchmark::DoNotOptimize(fit.finish(merged, fp));
+    benchmark::DoNotOptimize(fit.finish(merged, {&default_grid(), &fp, nullptr}));
   }
 }
 BENCHMARK(Fit)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);

@@ -33,8 +33,10 @@ DracoPrimitive encode_draco(const TerrainMesh& mesh, const Lattice& lattice,
   dm.set_num_points(uint32_t(mesh.vertex_count()));
   DracoPrimitive out;
   out.position_id = add_attribute(dm, draco::GeometryAttribute::POSITION, 3, mesh.positions);
-  out.normal_id = add_attribute(dm, draco::GeometryAttribute::NORMAL, 3, mesh.normals);
-  out.texcoord_id = add_attribute(dm, draco::GeometryAttribute::TEX_COORD, 2, mesh.texcoords);
+  if (!mesh.normals.empty())
+    out.normal_id = add_attribute(dm, draco::GeometryAttribute::NORMAL, 3, mesh.normals);
+  if (!mesh.texcoords.empty())
+    out.texcoord_id = add_attribute(dm, draco::GeometryAttribute::TEX_COORD, 2, mesh.texcoords);
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
     dm.AddFace({draco::PointIndex(mesh.indices[t]), draco::PointIndex(mesh.indices[t + 1]),
                 draco::PointIndex(mesh.indices[t + 2])});

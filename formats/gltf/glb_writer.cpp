@@ -34,13 +34,16 @@ class GlbBuilder {
   std::vector<char> finish(const json& extras);
 
  private:
-  int material(const EncodedImage* image);
+  int material(const GlbPrimitive& p);
+  // A float accessor of its own bufferView (instance attributes).
+  int floats(const std::vector<float>& values, int components, const char* type);
+  void use(const std::string& extension);
 
   std::vector<char> bin_;
   json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(),
        nodes_ = json::array(), materials_ = json::array(), images_ = json::array(),
        textures_ = json::array();
-  bool draco_ = false;
+  std::vector<std::string> extensions_;
 };
 
 json bounds(const std::vector<float>& pos, bool max) {
@@ -51,7 +54,20 @@ json bounds(const std::vector<float>& pos, bool max) {
   return b;
 }
 
-int GlbBuilder::material(const EncodedImage* image) {
+int GlbBuilder::floats(const std::vector<float>& values, int components, const char* type) {
+  return accessor({{"componentType", kFloat},
+                   {"count", values.size() / size_t(components)},
+                   {"type", type},
+                   {"bufferView", view(values.data(), values.size() * 4)}});
+}
+
+void GlbBuilder::use(const std::string& extension) {
+  if (std::ranges::find(extensions_, extension) == extensions_.end())
+    extensions_.push_back(extension);
+}
+
+int GlbBuilder::material(const GlbPrimitive& p) {
+  const EncodedImage* image = p.image;
   json m = {{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1}}},
             {"doubleSided", true}};  // skirts are seen from either side
   if (image) {
@@ -60,7 +76,7 @@ int GlbBuilder::material(const EncodedImage* image) {
     textures_.push_back({{"sampler", 0}, {"source", images_.size() - 1}});
     m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", textures_.size() - 1}};
   } else {
-    m["pbrMetallicRoughness"]["baseColorFactor"] = {0.6, 0.6, 0.6, 1.0};
+    m["pbrMetallicRoughness"]["baseColorFactor"] = {p.color[0], p.color[1], p.color[2], 1.0};
   }
   materials_.push_back(m);
   return int(materials_.size() - 1);
@@ -74,30 +90,51 @@ void GlbBuilder::add(const GlbPrimitive& p) {
               {"type", "VEC3"},
               {"min", bounds(m.positions, false)},
               {"max", bounds(m.positions, true)}};
-  json nrm = {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}};
-  json uv = {{"componentType", kFloat}, {"count", n}, {"type", "VEC2"}};
   json idx = {{"componentType", kUint32}, {"count", m.indices.size()}, {"type", "SCALAR"}};
+  // The attributes present: name, values, draco id, accessor.
+  struct Attribute {
+    const char* name;
+    const std::vector<float>& values;
+    int draco_id;
+    json accessor;
+  };
+  std::vector<Attribute> atts = {
+      {"POSITION", m.positions, p.draco ? p.draco->position_id : -1, pos}};
+  if (!m.normals.empty())
+    atts.push_back({"NORMAL",
+                    m.normals,
+                    p.draco ? p.draco->normal_id : -1,
+                    {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}}});
+  if (!m.texcoords.empty())
+    atts.push_back({"TEXCOORD_0",
+                    m.texcoords,
+                    p.draco ? p.draco->texcoord_id : -1,
+                    {{"componentType", kFloat}, {"count", n}, {"type", "VEC2"}}});
   json prim = {{"mode", 4}};
   if (p.draco) {
-    draco_ = true;
+    use("KHR_draco_mesh_compression");
+    json ids;
+    for (const Attribute& a : atts) ids[a.name] = a.draco_id;
     prim["extensions"]["KHR_draco_mesh_compression"] = {
-        {"bufferView", view(p.draco->data.data(), p.draco->data.size())},
-        {"attributes",
-         {{"POSITION", p.draco->position_id},
-          {"NORMAL", p.draco->normal_id},
-          {"TEXCOORD_0", p.draco->texcoord_id}}}};
+        {"bufferView", view(p.draco->data.data(), p.draco->data.size())}, {"attributes", ids}};
   } else {
-    pos["bufferView"] = view(m.positions.data(), m.positions.size() * 4, kArrayBuffer);
-    nrm["bufferView"] = view(m.normals.data(), m.normals.size() * 4, kArrayBuffer);
-    uv["bufferView"] = view(m.texcoords.data(), m.texcoords.size() * 4, kArrayBuffer);
+    for (Attribute& a : atts)
+      a.accessor["bufferView"] = view(a.values.data(), a.values.size() * 4, kArrayBuffer);
     idx["bufferView"] = view(m.indices.data(), m.indices.size() * 4, kElementArrayBuffer);
   }
-  prim["attributes"] = {
-      {"POSITION", accessor(pos)}, {"NORMAL", accessor(nrm)}, {"TEXCOORD_0", accessor(uv)}};
+  for (const Attribute& a : atts) prim["attributes"][a.name] = accessor(a.accessor);
   prim["indices"] = accessor(idx);
-  prim["material"] = material(p.image);
+  prim["material"] = material(p);
   meshes_.push_back({{"name", p.name}, {"primitives", json::array({prim})}});
-  nodes_.push_back({{"name", p.name}, {"mesh", meshes_.size() - 1}});
+  json node = {{"name", p.name}, {"mesh", meshes_.size() - 1}};
+  if (p.instances) {
+    use("EXT_mesh_gpu_instancing");
+    node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
+        {"TRANSLATION", floats(p.instances->translation, 3, "VEC3")},
+        {"ROTATION", floats(p.instances->rotation, 4, "VEC4")},
+        {"SCALE", floats(p.instances->scale, 3, "VEC3")}};
+  }
+  nodes_.push_back(node);
 }
 
 void append_u32(std::vector<char>& out, uint32_t v) {
@@ -124,9 +161,9 @@ std::vector<char> GlbBuilder::finish(const json& extras) {
     gltf["samplers"] = {
         {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}}};
   }
-  if (draco_) {
-    gltf["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-    gltf["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  if (!extensions_.empty()) {  // both extensions are required to draw the content correctly
+    gltf["extensionsUsed"] = extensions_;
+    gltf["extensionsRequired"] = extensions_;
   }
   while (bin_.size() % 4) bin_.push_back(0);
   gltf["buffers"] = {{{"byteLength", bin_.size()}}};

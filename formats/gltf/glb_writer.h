@@ -1,6 +1,8 @@
-// GLB files of terrain meshes: one glTF mesh and node per primitive, Draco-compressed
+// GLB files of meshes: one glTF mesh and node per primitive, Draco-compressed
 // (KHR_draco_mesh_compression: attribute accessors without bufferViews, as the extension
-// specifies) or plain, each textured with its embedded image (or untextured grey).
+// specifies) or plain, each textured with its embedded image (or of one colour), optionally
+// drawn once per instance (EXT_mesh_gpu_instancing). Normals and texture coordinates are
+// optional (left out when empty).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,11 +15,20 @@
 
 namespace maquette {
 
+// Per-instance transforms of a node (EXT_mesh_gpu_instancing), in the node's frame.
+struct InstanceTransforms {
+  std::vector<float> translation;  // 3 per instance
+  std::vector<float> rotation;     // unit quaternions (x, y, z, w)
+  std::vector<float> scale;        // 3 per instance
+};
+
 struct GlbPrimitive {
   const TerrainMesh* mesh = nullptr;
   const DracoPrimitive* draco = nullptr;  // nullptr: plain vertex buffers
   const EncodedImage* image = nullptr;    // nullptr: untextured
   std::string name;
+  std::array<double, 3> color{0.6, 0.6, 0.6};  // without an image
+  const InstanceTransforms* instances = nullptr;
 };
 
 // The GLB bytes; `extras` goes to the asset's extras (e.g. the frame's origin).

@@ -16,6 +16,7 @@
 
 namespace maquette {
 
+// Also the geometry of content meshes, which may leave normals and texcoords empty.
 struct TerrainMesh {
   std::vector<float> positions;  // glTF frame, 3 per vertex
   std::vector<float> normals;    // unit, 3 per vertex

@@ -1,12 +1,13 @@
 #include "image/quicklook.h"
 
+#include <gdal_priv.h>
+
 #include <algorithm>
 #include <cmath>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "core/error.h"
+#include "gdal/gdal_env.h"
 #include "image/hillshade.h"
 
 namespace maquette {
@@ -41,14 +42,21 @@ std::vector<int> drawn_channels(const LonLatRaster& m, const QuicklookStyle& sty
   return bands;
 }
 
-void write_png(const cv::Mat& image, const std::string& path) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(path, image);
-  } catch (const cv::Exception& e) {
-    throw Error("cannot write " + path + ": " + e.what());
-  }
-  if (!ok) throw Error("cannot write " + path);
+// Writes `rgba` (width x height pixels of 4 interleaved bytes) as an RGBA PNG: an in-memory GDAL
+// dataset copied through the PNG driver.
+void write_png(std::vector<uint8_t>& rgba, int width, int height, const std::string& path) {
+  init_gdal();
+  const std::string why = "cannot write " + path;
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
+  if (!mem || !png) throw Error(why + ": GDAL has no MEM or PNG driver");
+  const GDALDatasetUniquePtr image(mem->Create("", width, height, 4, GDT_Byte, nullptr));
+  if (!image || image->RasterIO(GF_Write, 0, 0, width, height, rgba.data(), width, height, GDT_Byte,
+                                4, nullptr, 4, 4 * GSpacing(width), 1, nullptr) != CE_None)
+    throw Error(why + ": " + gdal_last_error("GDAL failed"));
+  const GDALDatasetUniquePtr out(
+      png->CreateCopy(path.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+  if (!out) throw Error(why + ": " + gdal_last_error("the PNG driver failed"));
 }
 
 }  // namespace
@@ -63,9 +71,9 @@ void write_quicklook_png(const LonLatRaster& m, const QuicklookStyle& style,
   const std::vector<float> shade =
       style.hillshade && !rgb && !style.classes ? hillshade(m) : std::vector<float>{};
 
-  cv::Mat image(m.height, m.width, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+  std::vector<uint8_t> image(size_t(m.width) * size_t(m.height) * 4, 0);  // RGBA, transparent
   for (int r = 0; r < m.height; ++r) {
-    auto* px = image.ptr<cv::Vec4b>(r);
+    uint8_t* row = image.data() + size_t(r) * size_t(m.width) * 4;
     for (int c = 0; c < m.width; ++c) {
       const float v0 = m.at(c, r, channels[0]);
       if (!std::isfinite(v0)) continue;
@@ -85,10 +93,11 @@ void write_quicklook_png(const LonLatRaster& m, const QuicklookStyle& style,
         const float s = shade[size_t(r) * size_t(m.width) + size_t(c)];
         for (auto& x : colour) x = uint8_t(std::lround(x * s));
       }
-      px[c] = cv::Vec4b(colour[2], colour[1], colour[0], 255);  // OpenCV stores BGRA
+      std::copy(colour.begin(), colour.end(), row + 4 * c);
+      row[4 * c + 3] = 255;
     }
   }
-  write_png(image, path);
+  write_png(image, m.width, m.height, path);
 }
 
 }  // namespace maquette

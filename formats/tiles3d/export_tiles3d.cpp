@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
+#include "gltf/content_glb.h"
 #include "gltf/glb_writer.h"
 #include "gltf/output_dir.h"
 #include "tiles3d/tileset.h"
@@ -45,6 +46,7 @@ std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem)
 int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport& spec,
                        const std::string& out_dir) {
   const TerrainSource source(store, grid, spec.terrain);
+  for (const std::string& layer : spec.content) require_content_layer(store, layer);
   const auto [lo, hi] = level_range(spec, source.dem);
   const std::vector<CellId> tile_cells = layer_tile_cells(store, grid, source.dem, spec.region);
   std::map<int, std::vector<CellId>> cells;
@@ -68,12 +70,22 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
       if (node)
         extend_region(node->region, region);
       else
-        node = std::make_unique<TileNode>(TileNode{t.cell, region, 0, "", {}});
+        node = std::make_unique<TileNode>(TileNode{t.cell, region, 0, {}, {}});
       node->geometric_error = l < hi ? spacing : 0;
-      node->content = "tiles/" + std::to_string(l) + "/" + t.cell.ToText() + ".glb";
+      const std::string stem = "tiles/" + std::to_string(l) + "/" + t.cell.ToText();
+      node->contents = {stem + ".glb"};
       const GlbPrimitive prim{&t.mesh, spec.terrain.draco ? &t.draco : nullptr,
                               t.image ? &*t.image : nullptr, t.cell.ToText()};
-      write_file(inside(out_dir, node->content).string(), make_glb({prim}));
+      write_file(inside(out_dir, node->contents[0]).string(), make_glb({prim}));
+      for (const std::string& layer : spec.content) {
+        const auto content = get_content(store, layer, t.cell);
+        if (!content || content->empty()) continue;
+        const ContentGlb glb = content_glb(*content, frame, spec.terrain.bits, spec.terrain.draco,
+                                           layer + " " + t.cell.ToText());
+        node->contents.push_back(stem + "." + layer + ".glb");
+        write_file(inside(out_dir, node->contents.back()).string(), glb.bytes);
+        extend_region(node->region, glb.region);
+      }
     }
     // Children (level l) under their parents (level l - 1) when those exist.
     for (CellId c : cells[l]) {
@@ -83,7 +95,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
       auto& parent = nodes[c.parent()];
       if (!parent) {
         parent = std::make_unique<TileNode>(
-            TileNode{c.parent(), it->second->region, source.vertex_spacing(l - 1), "", {}});
+            TileNode{c.parent(), it->second->region, source.vertex_spacing(l - 1), {}, {}});
       }
       extend_region(parent->region, it->second->region);
       parent->children.push_back(std::move(it->second));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/grid.h"
 #include "gltf/terrain_level.h"
@@ -14,6 +15,9 @@ namespace maquette {
 
 struct Tiles3dExport {
   TerrainSettings terrain;
+  // 3D content layers (gltf/content_layer.h): a cell's content becomes an additional content of
+  // its tile, OUTDIR/tiles/<LEVEL>/<CELL>.<LAYER>.glb (cells without a terrain tile are skipped).
+  std::vector<std::string> content;
   RegionSpec region;
   int min_level = -1, max_level = -1;  // -1: the DEM's level, and 4 levels above it
 };

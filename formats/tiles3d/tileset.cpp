@@ -35,7 +35,10 @@ json tile_json(const std::filesystem::path& dir, const TileNode& n, int depth,
     t["content"] = {{"uri", prefix + uri}};
     return t;
   }
-  if (!n.content.empty()) t["content"] = {{"uri", prefix + n.content}};
+  json contents = json::array();
+  for (const std::string& uri : n.contents) contents.push_back({{"uri", prefix + uri}});
+  if (contents.size() == 1) t["content"] = contents[0];
+  if (contents.size() > 1) t["contents"] = contents;
   for (const auto& c : n.children) t["children"].push_back(tile_json(dir, *c, depth + 1, prefix));
   return t;
 }

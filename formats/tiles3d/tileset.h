@@ -1,5 +1,6 @@
 // 3D Tiles 1.1 tileset.json files for a cell tree: `region` bounding volumes (radians, heights
-// in metres), REPLACE refinement, the ENU -> ECEF transform on the root. Every tile
+// in metres), REPLACE refinement, the ENU -> ECEF transform on the root; a tile with several
+// contents (terrain and 3D content layers) lists them in `contents` (3D Tiles 1.1). Every tile
 // kSubtreeDepth levels below the top tiles (and so on) roots an external tileset
 // (subtrees/<CELL>.json), so no JSON file holds more than 4^kSubtreeDepth tiles per top tile.
 #pragma once
@@ -20,7 +21,7 @@ struct TileNode {
   CellId cell;
   std::array<double, 6> region{};  // west, south, east, north (radians), min, max height (m)
   double geometric_error = 0;
-  std::string content;  // relative uri of the .glb, "" for none
+  std::vector<std::string> contents;  // relative uris of the .glb files (terrain first)
   std::vector<std::unique_ptr<TileNode>> children;
 };
 

@@ -187,6 +187,8 @@ void add_tiles3d_command(CLI::App* exp) {
       ->required();
   add_terrain_options(cmd, o->spec.terrain, true);
   add_region_options(cmd, o->region);
+  cmd->add_option("--content", o->spec.content,
+                  "3D content layers (meshes, instances) added to the tiles of their cells");
   cmd->add_option("--levels", o->levels,
                   "Cell levels A..B (default: the DEM's level and 4 above; coarser levels read "
                   "overviews)");

@@ -11,7 +11,8 @@
 
 #include "runtime/operator.h"
 
-#define MAQUETTE_ABI_VERSION 1u
+// 2: operators get the run's store (CellContext::store, StepContext for finish() and regions).
+#define MAQUETTE_ABI_VERSION 2u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

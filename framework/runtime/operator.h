@@ -56,12 +56,24 @@ struct OperatorSpec {
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
 };
 
-// What an operator sees of the cell it works on.
+// What an operator sees of the cell it works on. `store` is the run's store (on every rank), for
+// reading what the step's ports do not carry: artifacts (a stations table, a fitted model), other
+// layers, features layers. Operators must only read it: the runner writes every output, and a
+// write from an operator would escape the run records, resume and the ranks' agreement.
 struct CellContext {
   CellId cell;
   int tile_size = 0;
   const Grid* grid = nullptr;
   const json* params = nullptr;  // validated, defaults filled in
+  const Store* store = nullptr;  // read-only (see above)
+};
+
+// What a reduce operator's finish() and a region operator see of their step: as CellContext,
+// without a cell.
+struct StepContext {
+  const Grid* grid = nullptr;
+  const json* params = nullptr;  // validated, defaults filled in
+  const Store* store = nullptr;  // read-only, as in CellContext
 };
 
 // Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
@@ -94,7 +106,7 @@ class ReduceOperator : public Operator {
   // depend on threads or ranks.
   virtual json merge(const json& a, const json& b) const = 0;
   // The artifact written under the step's output name.
-  virtual Artifact finish(const json& merged, const json& params) const = 0;
+  virtual Artifact finish(const json& merged, const StepContext& ctx) const = 0;
 };
 
 // A mosaic: the tiles of a region's cells pasted into one raster on one face. `origin_col/row`
@@ -108,8 +120,7 @@ struct Mosaic {
 
 class RegionOperator : public Operator {
  public:
-  virtual void run(const json& params, const Grid& grid, const Mosaic& input,
-                   Mosaic& output) const = 0;
+  virtual void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const = 0;
 };
 
 using OperatorFactory = std::unique_ptr<Operator> (*)();

@@ -4,8 +4,8 @@
 namespace maquette {
 namespace {
 
-CellContext context(const StepPlan& plan, CellId cell) {
-  return CellContext{cell, plan.tile_size, &default_grid(), &plan.step->params};
+CellContext context(const StepPlan& plan, const StepIO& io, CellId cell) {
+  return CellContext{cell, plan.tile_size, &default_grid(), &plan.step->params, &io.store()};
 }
 
 }  // namespace
@@ -16,7 +16,7 @@ void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progr
   const int halo = op.spec().halo;
   for_each_cell(todo, arena, plan.step->label(), [&](size_t, CellId cell) {
     CellData data = io.load(cell, halo);
-    op.run(context(plan, cell), data);
+    op.run(context(plan, io, cell), data);
     const CellOutput out{cell, &data.outputs};
     io.write({&out, 1});
     progress.advance();
@@ -29,7 +29,7 @@ std::vector<json> map_reduce_cells(const StepPlan& plan, const CellPlan& cells, 
   const int halo = op.spec().halo;
   std::vector<json> partials(cells.size());
   for_each_cell(cells, arena, plan.step->label(), [&](size_t i, CellId cell) {
-    partials[i] = op.map(context(plan, cell), io.load(cell, halo));
+    partials[i] = op.map(context(plan, io, cell), io.load(cell, halo));
     progress.advance();
   });
   return partials;
@@ -42,7 +42,7 @@ void finish_reduce_step(const StepPlan& plan, const std::vector<json>& partials,
     json merged;
     for (const json& p : partials)
       if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);
-    Artifact artifact = op.finish(merged, plan.step->params);
+    Artifact artifact = op.finish(merged, {&default_grid(), &plan.step->params, &io.store()});
     artifact.name = plan.artifact;
     io.write_artifact(artifact, plan.cells.cells());
   } catch (const std::exception& e) {

@@ -37,6 +37,8 @@ class StepIO {
   std::optional<Tile<float>> read(const LayerInfo& layer, CellId cell) const;
   // The step's input tiles at `cell` with `halo` pixels, and NaN output tiles for mapped outputs.
   CellData load(CellId cell, int halo);
+  // The run's store, for operators to read (CellContext::store, StepContext::store).
+  const Store& store() const { return store_; }
   // Tiles read and decoded so far (for tests of the cache).
   int64_t decoded() const { return decoded_; }
   // NaN tiles of `size` pixels for the step's mapped outputs.

@@ -1,6 +1,7 @@
 #include "store/downsample.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "core/samples.h"
@@ -15,11 +16,23 @@ T fill_value(const double* nodata) {
   return T{0};
 }
 
+// The mean of n <= 4 values, cast_sample<T>(sum / n). Integer dtypes (at most 32 bits) get the
+// same result without floating point: |sum| / n rounded half away from zero is
+// (2 |sum| + n) / 2n, and the mean of samples of T needs no clamping.
 template <typename T>
 T mean(const T* v, int n) {
-  double sum = 0;
-  for (int i = 0; i < n; ++i) sum += double(v[i]);
-  return cast_sample<T>(sum / n);
+  if constexpr (std::is_integral_v<T>) {
+    static_assert(sizeof(T) <= 4, "the sum of four samples must fit in int64_t");
+    int64_t sum = 0;
+    for (int i = 0; i < n; ++i) sum += int64_t(v[i]);
+    const int64_t a = sum < 0 ? -sum : sum;
+    const int64_t q = n == 4 ? (a + 2) / 4 : (2 * a + n) / (2 * n);
+    return T(sum < 0 ? -q : q);
+  } else {
+    double sum = 0;
+    for (int i = 0; i < n; ++i) sum += double(v[i]);
+    return cast_sample<T>(sum / n);
+  }
 }
 
 // The most frequent of n <= 4 values, the smallest among equally frequent ones.

@@ -32,15 +32,14 @@ OperatorSpec fit_spec() {
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
-      {"required", {"store", "stations", "columns"}},
+      {"required", {"stations", "columns"}},
       {"properties",
-       {{"store", {{"type", "string"}, {"description", "store holding the stations and zones"}}},
-        {"stations", {{"type", "string"}, {"description", "stations artifact name"}}},
+       {{"stations", {{"type", "string"}, {"description", "stations artifact name in the store"}}},
         {"columns",
          {{"type", "array"},
           {"items", {{"type", "string"}}},
           {"description", "value columns to regress"}}},
-        {"zones", text("features layer of zone polygons; empty: one zone")},
+        {"zones", text("features layer of zone polygons in the store; empty: one zone")},
         {"zone_field", text("zone attribute naming each zone in the report; empty: the fid")},
         {"horizontal",
          {{"type", "string"},
@@ -69,11 +68,12 @@ class FitStations : public ReduceOperator {
     return out;
   }
 
-  Artifact finish(const json& merged, const json& params) const override {
-    const auto store = open_params_store(params, kOp);
+  Artifact finish(const json& merged, const StepContext& ctx) const override {
+    const json& params = *ctx.params;
+    const Store& store = run_store(ctx.store, kOp);
     const std::string name = params.at("stations").get<std::string>();
     std::vector<Station> stations =
-        parse_stations(read_json_artifact(*store, name, kOp, "stations"),
+        parse_stations(read_json_artifact(store, name, kOp, "stations"),
                        kOp + ": params.stations: artifact '" + name + "'");
     const int64_t outside = drop_outside(stations, merged, params.at("outside_region"));
     const auto columns = params.at("columns").get<std::vector<std::string>>();
@@ -82,7 +82,7 @@ class FitStations : public ReduceOperator {
 
     std::vector<Zone> zones;
     if (const std::string layer = params.at("zones"); !layer.empty())
-      zones = read_zones(*store, layer, params.at("zone_field"), kOp);
+      zones = read_zones(store, layer, params.at("zone_field"), kOp);
     else
       zones.push_back({std::nullopt, "all", {}, {-180, -90, 180, 90}});
     StationFit fit = fit_stations(stations, std::move(zones), columns,

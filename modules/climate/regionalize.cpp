@@ -34,10 +34,10 @@ OperatorSpec regionalize_spec() {
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
-      {"required", {"store", "fit"}},
+      {"required", {"fit"}},
       {"properties",
-       {{"store", {{"type", "string"}, {"description", "store holding the fit artifact"}}},
-        {"fit", {{"type", "string"}, {"description", "artifact of climate.fit_stations"}}},
+       {{"fit",
+         {{"type", "string"}, {"description", "artifact of climate.fit_stations in the store"}}},
         {"temperature_column", column("fitted column for output 'temperature'")},
         {"precipitation_column", column("fitted column for output 'precipitation'")}}}};
   return s;
@@ -51,7 +51,7 @@ class Regionalize : public CellOperator {
     const json& p = *ctx.params;
     const std::string name = p.at("fit").get<std::string>();
     const StationFit fit =
-        StationFit::from_json(read_json_artifact(*open_params_store(p, kOp), name, kOp, "fit"),
+        StationFit::from_json(read_json_artifact(run_store(ctx.store, kOp), name, kOp, "fit"),
                               kOp + ": params.fit: artifact '" + name + "'");
     const Tile<float>& dem = data.input("dem");
     const int size = ctx.tile_size, level = ctx.cell.level() + log2_tile_size(size);

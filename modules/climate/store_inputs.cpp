@@ -7,13 +7,10 @@
 
 namespace maquette::climate {
 
-std::unique_ptr<Store> open_params_store(const nlohmann::json& params, const std::string& op) {
-  const std::string path = params.at("store").get<std::string>();
-  try {
-    return Store::open(path, Store::Mode::ReadOnly);
-  } catch (const Error& e) {
-    throw Error(op + ": params.store: " + e.what());
-  }
+const Store& run_store(const Store* store, const std::string& op) {
+  if (store == nullptr)
+    throw Error(op + ": no store: the operator reads its inputs from a run's store");
+  return *store;
 }
 
 nlohmann::json read_json_artifact(const Store& store, const std::string& name,

@@ -1,9 +1,7 @@
-// What the climate operators read from a store besides their raster inputs (the operator API
-// gives operators no store, so the step names it in params.store): JSON artifacts and the zone
-// polygons of a features layer.
+// What the climate operators read from the run's store (CellContext::store, StepContext::store)
+// besides their raster inputs: JSON artifacts and the zone polygons of a features layer.
 #pragma once
 
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,8 +11,8 @@
 
 namespace maquette::climate {
 
-// Opens params.store read-only; errors name the operator and field.
-std::unique_ptr<Store> open_params_store(const nlohmann::json& params, const std::string& op);
+// The run's store `store`; throws naming op when there is none (an operator called outside a run).
+const Store& run_store(const Store* store, const std::string& op);
 
 // The JSON artifact `name` (params field `field`); throws naming op, field and value when absent
 // or not JSON.

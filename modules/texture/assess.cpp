@@ -86,7 +86,7 @@ class Assess : public ReduceOperator {
     return out;
   }
 
-  Artifact finish(const json& merged, const json&) const override {
+  Artifact finish(const json& merged, const StepContext&) const override {
     if (merged.is_null() || merged.at("confusion").empty())
       throw Error("texture.assess: no classified pixel in the region (inputs.classes empty)");
     const json report = assessment(merged);

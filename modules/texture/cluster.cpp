@@ -64,7 +64,8 @@ class ClusterOp : public ReduceOperator {
     return out;
   }
 
-  Artifact finish(const json& merged, const json& params) const override {
+  Artifact finish(const json& merged, const StepContext& ctx) const override {
+    const json& params = *ctx.params;
     if (merged.is_null()) throw Error("texture.cluster: no RGB pixel in the region");
     const std::vector<uint64_t> hist = merged.get<std::vector<uint64_t>>();
     json centres = json::array();

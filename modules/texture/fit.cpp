@@ -141,7 +141,8 @@ class Fit : public ReduceOperator {
     return out;
   }
 
-  Artifact finish(const json& merged, const json& params) const override {
+  Artifact finish(const json& merged, const StepContext& ctx) const override {
+    const json& params = *ctx.params;
     const std::vector<Quantity> qs = quantities(params);
     std::vector<ClassStats> classes;
     if (!merged.is_null())

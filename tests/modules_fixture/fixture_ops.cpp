@@ -159,7 +159,7 @@ class Sum : public maquette::ReduceOperator {
     return {{"sum", a.at("sum").get<float>() + b.at("sum").get<float>()},
             {"count", a.at("count").get<int64_t>() + b.at("count").get<int64_t>()}};
   }
-  maquette::Artifact finish(const json& merged, const json&) const override {
+  maquette::Artifact finish(const json& merged, const maquette::StepContext&) const override {
     maquette::Artifact a;
     const std::string text = merged.dump();
     for (const char ch : text) a.data.push_back(std::byte(ch));
@@ -176,7 +176,7 @@ class RegionScan : public maquette::RegionOperator {
                   maquette::OperatorKind::Region, "src", "dst", OperatorSpec().params_schema);
     return s;
   }
-  void run(const json&, const maquette::Grid&, const maquette::Mosaic& input,
+  void run(const maquette::StepContext&, const maquette::Mosaic& input,
            maquette::Mosaic& output) const override {
     const auto& in = input.layers.at("src");
     auto& out = output.layers.at("dst");

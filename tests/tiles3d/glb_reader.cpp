@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 
 namespace maquette::test {
 namespace {
@@ -73,11 +74,22 @@ Glb read_glb(const std::string& path) {
   const uint32_t json_len = u32(b, 12);
   glb.json = nlohmann::json::parse(b.begin() + 20, b.begin() + 20 + json_len);
   const size_t bin_at = 20 + json_len + 8;
-  const std::vector<char> bin(b.begin() + long(bin_at), b.end());
+  glb.bin.assign(b.begin() + long(bin_at), b.end());
   for (const auto& mesh : glb.json["meshes"])
     for (const auto& prim : mesh["primitives"])
-      glb.primitives.push_back(decode(glb.json, bin, prim));
+      if (prim.contains("extensions"))  // Draco: plain primitives are read through floats()
+        glb.primitives.push_back(decode(glb.json, glb.bin, prim));
   return glb;
+}
+
+std::vector<float> Glb::floats(int accessor) const {
+  const auto& a = json["accessors"][accessor];
+  const auto& view = json["bufferViews"][a["bufferView"].get<int>()];
+  const std::map<std::string, size_t> components = {{"SCALAR", 1}, {"VEC3", 3}, {"VEC4", 4}};
+  std::vector<float> v(a["count"].get<size_t>() * components.at(a["type"]));
+  EXPECT_EQ(v.size() * 4, view["byteLength"].get<size_t>());
+  std::memcpy(v.data(), bin.data() + view["byteOffset"].get<size_t>(), v.size() * 4);
+  return v;
 }
 
 }  // namespace maquette::test

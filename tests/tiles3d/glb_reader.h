@@ -16,7 +16,11 @@ struct DecodedPrimitive {
 
 struct Glb {
   nlohmann::json json;
-  std::vector<DecodedPrimitive> primitives;
+  std::vector<char> bin;
+  std::vector<DecodedPrimitive> primitives;  // the Draco-compressed ones
+
+  // The values of a plain float accessor (e.g. instance attributes).
+  std::vector<float> floats(int accessor) const;
 };
 
 // Reads and decodes `path`; every mismatch with the accessors is a GoogleTest failure.

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "glb_reader.h"
@@ -38,6 +39,15 @@ std::array<double, 3> geodetic(const std::vector<double>& m, const Pos& p) {
   return {lon, lat, h};
 }
 
+// The EXT_mesh_gpu_instancing attributes of the GLB's first node, if any.
+std::optional<json> instancing(const Glb& glb) {
+  const json& node = glb.json["nodes"][0];
+  if (!node.contains("extensions")) return std::nullopt;
+  return node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
+}
+
+bool is_terrain(const std::string& uri) { return !fs::path(uri).stem().has_extension(); }
+
 void walk(const fs::path& file, const json& tile, const json* parent, Export& out) {
   const auto& r = tile["boundingVolume"]["region"];
   if (parent) {
@@ -47,22 +57,31 @@ void walk(const fs::path& file, const json& tile, const json* parent, Export& ou
     EXPECT_LT(tile["geometricError"].get<double>(),
               (*parent)["geometricError"].get<double>() + 1e-9);
   }
-  if (tile.contains("content")) {
-    const fs::path uri = file.parent_path() / tile["content"]["uri"].get<std::string>();
+  json contents = tile.value("contents", json::array());
+  if (tile.contains("content")) contents.push_back(tile["content"]);
+  for (const auto& content : contents) {
+    const fs::path uri = file.parent_path() / content["uri"].get<std::string>();
     EXPECT_TRUE(fs::exists(uri)) << uri;
     if (uri.extension() == ".json") {
       walk(uri, read_json(uri)["root"], &tile, out);
-    } else {
-      Glb glb = read_glb(uri.string());
-      const auto m = out.tileset["root"]["transform"].get<std::vector<double>>();
-      for (const auto& prim : glb.primitives)
-        for (const Pos& p : prim.positions) {
-          const auto g = geodetic(m, p);
-          EXPECT_GE(g[2], r[4].get<double>());
-          EXPECT_LE(g[2], r[5].get<double>());
-        }
-      out.glbs[fs::relative(uri, out.dir).string()] = std::move(glb);
+      continue;
     }
+    Glb glb = read_glb(uri.string());
+    const auto m = out.tileset["root"]["transform"].get<std::vector<double>>();
+    auto inside = [&](const Pos& p, double top) {
+      const auto g = geodetic(m, p);
+      EXPECT_GE(g[2], r[4].get<double>()) << uri;
+      EXPECT_LE(g[2] + top, r[5].get<double>()) << uri;
+    };
+    if (const auto inst = instancing(glb)) {  // the prototypes' bases and tops
+      const auto t = glb.floats((*inst)["TRANSLATION"]), sc = glb.floats((*inst)["SCALE"]);
+      for (size_t i = 0; i < sc.size() / 3; ++i)
+        inside({t[3 * i], t[3 * i + 1], t[3 * i + 2]}, sc[3 * i]);
+    } else {
+      for (const auto& prim : glb.primitives)
+        for (const Pos& p : prim.positions) inside(p, 0);
+    }
+    out.glbs[fs::relative(uri, out.dir).string()] = std::move(glb);
   }
   if (tile.contains("children"))
     for (const auto& c : tile["children"]) walk(file, c, &tile, out);
@@ -73,7 +92,7 @@ const Export& tiles3d_export() {
     Export x;
     x.dir = temp_dir() + "/tiles";
     const auto r = run_maquette("export tiles3d " + tiles3d_fixture().store_path + " " + x.dir +
-                                " --dem dem --texture rgb --levels 4..6");
+                                " --dem dem --texture rgb --levels 4..6 --content boxes trees");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     x.tileset = read_json(x.dir + "/tileset.json");
     walk(x.dir + "/tileset.json", x.tileset["root"], nullptr, x);
@@ -101,10 +120,87 @@ TEST(Tiles3d, TilesetTreeAndContents) {
   // 6 cells at level 6, their parents at 5 and 4 (the seam cells have distinct ancestors).
   EXPECT_GE(e.glbs.size(), 6u + 3u + 3u);
   for (const auto& [uri, glb] : e.glbs) {
+    if (!is_terrain(uri)) continue;
     ASSERT_EQ(glb.primitives.size(), 1u) << uri;
     EXPECT_GT(glb.primitives[0].index_count, 0u);
     EXPECT_EQ(glb.json["extensionsRequired"][0], "KHR_draco_mesh_compression");
     EXPECT_EQ(glb.json["images"][0]["mimeType"], "image/jpeg");
+  }
+}
+
+const Glb& content_of(CellId c, const std::string& layer) {
+  return tiles3d_export().glbs.at("tiles/" + std::to_string(c.level()) + "/" + c.ToText() + "." +
+                                  layer + ".glb");
+}
+
+TEST(Tiles3d, ContentLayersAreExtraContents) {
+  const Export& e = tiles3d_export();
+  const auto& f = tiles3d_fixture();
+  size_t contents = 0;
+  for (const auto& [uri, glb] : e.glbs) contents += !is_terrain(uri);
+  EXPECT_EQ(contents, 2u);  // only the cells holding content
+  const Glb& boxes = content_of(f.block[0], "boxes");
+  ASSERT_EQ(boxes.primitives.size(), 1u);
+  EXPECT_EQ(boxes.primitives[0].positions.size(), 8u);
+  EXPECT_EQ(boxes.primitives[0].index_count, 36u);
+  EXPECT_EQ(boxes.json["extensionsRequired"], json({"KHR_draco_mesh_compression"}));
+  EXPECT_FALSE(instancing(boxes));
+  // 100 m wide and high, tilted in the export frame (the accessor's bounds are the decoded ones:
+  // glb_reader checks).
+  const auto& pos =
+      boxes.json["accessors"]
+                [boxes.json["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(pos["max"][k].get<double>() - pos["min"][k].get<double>(), 107, 7) << k;
+}
+
+TEST(Tiles3d, InstancesDecodeAsWritten) {
+  const Export& e = tiles3d_export();
+  const auto& f = tiles3d_fixture();
+  const Glb& trees = content_of(f.block[1], "trees");
+  EXPECT_EQ(trees.json["extensionsUsed"], json({"EXT_mesh_gpu_instancing"}));
+  EXPECT_EQ(trees.json["extensionsRequired"], trees.json["extensionsUsed"]);
+  const auto& cone = trees.json["meshes"][0]["primitives"][0];
+  EXPECT_EQ(trees.floats(cone["attributes"]["POSITION"]).size(), 3u * 18);  // apex, centre, 16
+  const auto inst = instancing(trees);
+  ASSERT_TRUE(inst);
+  const auto t = trees.floats((*inst)["TRANSLATION"]), q = trees.floats((*inst)["ROTATION"]),
+             sc = trees.floats((*inst)["SCALE"]);
+  ASSERT_EQ(t.size(), size_t(3 * kTreeCount));
+  ASSERT_EQ(q.size(), size_t(4 * kTreeCount));
+  const auto m = e.tileset["root"]["transform"].get<std::vector<double>>();
+  const Grid& grid = default_grid();
+  const PlaneSquare sq = grid.plane_square(f.block[1]);
+  const LonLat c = grid.inverse({sq.x_min + sq.side / 2, sq.y_max - sq.side / 2});
+  for (int i = 0; i < kTreeCount; ++i) {
+    const LonLat want{c.lon + 0.01 * i, c.lat - 0.01 * i};
+    const Pos base = {t[3 * i], t[3 * i + 1], t[3 * i + 2]};
+    const auto g = geodetic(m, base);
+    EXPECT_NEAR(g[0], want.lon, 1e-6);
+    EXPECT_NEAR(g[1], want.lat, 1e-6);
+    EXPECT_NEAR(g[2], dem_field(want), 0.05);
+    EXPECT_FLOAT_EQ(sc[3 * i], 20.0f + float(i));
+    // The prototype's up (0, 1, 0) and north (0, 0, -1) turned by the quaternion: up points up
+    // and north points at the heading, measured in the instance's local frame.
+    auto rotate = [&](std::array<double, 3> v) {
+      const double x = q[4 * i], y = q[4 * i + 1], z = q[4 * i + 2], w = q[4 * i + 3];
+      const std::array<double, 3> u = {x, y, z};
+      const std::array<double, 3> uv = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                        u[0] * v[1] - u[1] * v[0]};
+      const std::array<double, 3> uuv = {u[1] * uv[2] - u[2] * uv[1], u[2] * uv[0] - u[0] * uv[2],
+                                         u[0] * uv[1] - u[1] * uv[0]};
+      for (int k = 0; k < 3; ++k) v[k] += 2 * (w * uv[k] + uuv[k]);
+      return Pos{float(base[0] + 50 * v[0]), float(base[1] + 50 * v[1]),
+                 float(base[2] + 50 * v[2])};
+    };
+    const auto top = geodetic(m, rotate({0, 1, 0}));
+    EXPECT_NEAR(top[0], g[0], 1e-6);
+    EXPECT_NEAR(top[1], g[1], 1e-6);
+    EXPECT_NEAR(top[2] - g[2], 50, 0.05);
+    const auto ahead = geodetic(m, rotate({0, 0, -1}));
+    // (on a sphere: the ellipsoid's radii of curvature differ by under 1 %)
+    const double de = (ahead[0] - g[0]) * std::cos(g[1] * M_PI / 180), dn = ahead[1] - g[1];
+    EXPECT_NEAR(std::atan2(de, dn) * 180 / M_PI, 30.0 * i, 0.5) << i;
   }
 }
 

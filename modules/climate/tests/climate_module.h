@@ -1,5 +1,6 @@
 // Test helpers: the climate module's operators loaded from the built .so through the
-// framework's loader, run on cells, and tiles sampled from analytic fields at pixel centres.
+// framework's loader, run on cells alone or as pipeline steps through the runner on a store, and
+// tiles sampled from analytic fields at pixel centres.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 #include "core/halo.h"
 #include "runtime/operator_registry.h"
 #include "runtime/params_schema.h"
+#include "runtime/pipeline.h"
+#include "runtime/runner.h"
 
 namespace maquette::climate_test {
 
@@ -30,8 +33,8 @@ inline const Operator& climate_operator(const std::string& name) {
   return *op;
 }
 
-// Runs a cell operator on one cell with `params` (defaults filled in as the runner does),
-// mapping the outputs named in `outputs` (empty: all).
+// Runs a cell operator that reads no store on one cell with `params` (defaults filled in as the
+// runner does), mapping the outputs named in `outputs` (empty: all).
 inline CellData run(const std::string& name, CellId cell, int size, CellData data,
                     const json& params = json::object(),
                     const std::vector<std::string>& outputs = {}) {
@@ -40,22 +43,25 @@ inline CellData run(const std::string& name, CellId cell, int size, CellData dat
   for (const OutputSpec& out : op.spec().outputs)
     if (outputs.empty() || std::find(outputs.begin(), outputs.end(), out.name) != outputs.end())
       data.outputs.emplace(out.name, Tile<float>(size, out.channels));
-  op.run({cell, size, &default_grid(), &full}, data);
+  op.run({cell, size, &default_grid(), &full, nullptr}, data);
   return data;
 }
 
-// Runs a reduce operator over `cells` (merged in id order, as the runner does).
-inline Artifact reduce(const std::string& name, std::vector<CellId> cells, int size,
-                       const json& params) {
-  const auto& op = static_cast<const ReduceOperator&>(climate_operator(name));
-  const json full = validate_params(op.spec().params_schema, params, name);
-  std::sort(cells.begin(), cells.end());
-  json merged;
-  for (CellId c : cells) {
-    const json p = op.map({c, size, &default_grid(), &full}, CellData{});
-    if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);
-  }
-  return op.finish(merged, full);
+// Runs the pipeline `steps` on `cells` (of one level) of the store at `path` through the runner,
+// quietly on one thread.
+inline void run_steps(const std::string& path, const std::vector<CellId>& cells, int tile_size,
+                      const json& steps) {
+  json region = json::array();
+  for (const CellId c : cells) region.push_back(c.ToText());
+  const json doc = {{"store", path},
+                    {"region", {{"cells", region}}},
+                    {"level", cells.front().level()},
+                    {"tile_size", tile_size},
+                    {"steps", steps}};
+  RunOptions options;
+  options.threads = 1;
+  options.quiet = true;
+  run_pipeline(parse_pipeline(doc.dump(), "test", ".", climate_registry()), options);
 }
 
 // A tile of `cell` holding field(pixel centre) (no halo).

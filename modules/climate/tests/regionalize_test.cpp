@@ -1,10 +1,12 @@
-// climate.fit_stations + climate.regionalize through a store: synthetic stations from known
-// gradients, zones from a features layer, the Colorado stations, and bad input.
+// climate.fit_stations + climate.regionalize run by the runner on a store, reading the stations,
+// the zones and the fit from it: synthetic stations from known gradients, zones from a features
+// layer, the Colorado stations, and bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "../station_fit.h"
 #include "climate_module.h"
@@ -16,9 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 using climate_test::centre_of;
 using climate_test::error_of;
-using climate_test::reduce;
-using climate_test::run;
+using climate_test::run_steps;
 using climate_test::sample;
+
+constexpr int kSize = 16;
 
 class Regionalize : public ::testing::Test {
  protected:
@@ -44,15 +47,39 @@ class Regionalize : public ::testing::Test {
     store_->put_artifact(a);
   }
 
-  // Runs the fit (a reduce over `cells`) and stores its artifact as "fit".
+  // Runs the fit over `cells` into the artifact "fit".
   StationFit fit(const json& params, const std::vector<CellId>& cells) {
-    json p = params;
-    p["store"] = path_;
-    Artifact a = reduce("climate.fit_stations", cells, 16, p);
-    a.name = "fit";
-    store_->put_artifact(a);
+    run_steps(
+        path_, cells, kSize,
+        {{{"op", "climate.fit_stations"}, {"outputs", {{"fit", "fit"}}}, {"params", params}}});
+    const Artifact a = *store_->get_artifact("fit");
     const auto* b = reinterpret_cast<const char*>(a.data.data());
     return StationFit::from_json(json::parse(b, b + a.data.size()), "fit");
+  }
+
+  // Runs climate.regionalize on `cell` of the DEM tile `dem`, its `outputs` mapped to layers of
+  // the same names; returns their tiles.
+  std::map<std::string, Tile<float>> regionalize(CellId cell, const Tile<float>& dem,
+                                                 const json& params,
+                                                 const std::vector<std::string>& outputs = {
+                                                     "temperature", "precipitation"}) {
+    LayerInfo info;
+    info.name = "dem";
+    info.tile_size = kSize;
+    info.level = cell.level();
+    store_->create_layer(info);
+    store_->put_tile("dem", cell, from_tile(dem, DType::F32));
+    json mapped = json::object();
+    for (const std::string& port : outputs) mapped[port] = port;
+    run_steps(path_, {cell}, kSize,
+              {{{"op", "climate.regionalize"},
+                {"inputs", {{"dem", "dem"}}},
+                {"outputs", mapped},
+                {"params", params}}});
+    std::map<std::string, Tile<float>> tiles;
+    for (const std::string& port : outputs)
+      tiles.emplace(port, to_tile<float>(*store_->get_tile(port, cell), nullptr));
+    return tiles;
   }
 
   fs::path dir_;
@@ -84,24 +111,19 @@ TEST_F(Regionalize, OutputsFollowTheRegression) {
   EXPECT_NEAR(f.fits[0].at("t").per_km_elevation, -6, 1e-9);
   EXPECT_NEAR(f.fits[0].at("p").per_km_elevation, 250, 1e-9);
 
-  const int size = 16;
-  CellData data;
-  data.inputs.emplace("dem", sample(kCell, size, [](LonLat p) { return 500 + 100 * p.lat; }));
-  data.inputs.at("dem").at(3, 4) = NAN;
-  const CellData out = run("climate.regionalize", kCell, size, data,
-                           {{"store", path_},
-                            {"fit", "fit"},
-                            {"temperature_column", "t"},
-                            {"precipitation_column", "p"}});
-  for (int row = 0; row < size; ++row)
-    for (int col = 0; col < size; ++col) {
-      const double z = data.inputs.at("dem").at(col, row);
+  Tile<float> dem = sample(kCell, kSize, [](LonLat p) { return 500 + 100 * p.lat; });
+  dem.at(3, 4) = NAN;
+  const auto out = regionalize(
+      kCell, dem, {{"fit", "fit"}, {"temperature_column", "t"}, {"precipitation_column", "p"}});
+  for (int row = 0; row < kSize; ++row)
+    for (int col = 0; col < kSize; ++col) {
+      const double z = dem.at(col, row);
       if (std::isnan(z)) {
-        EXPECT_TRUE(std::isnan(out.outputs.at("temperature").at(col, row)));
+        EXPECT_TRUE(std::isnan(out.at("temperature").at(col, row)));
         continue;
       }
-      EXPECT_NEAR(out.outputs.at("temperature").at(col, row), 20 - 6 * z / 1000, 1e-4);
-      EXPECT_NEAR(out.outputs.at("precipitation").at(col, row), 300 + 250 * z / 1000, 1e-3);
+      EXPECT_NEAR(out.at("temperature").at(col, row), 20 - 6 * z / 1000, 1e-4);
+      EXPECT_NEAR(out.at("precipitation").at(col, row), 300 + 250 * z / 1000, 1e-3);
     }
 }
 
@@ -132,17 +154,13 @@ TEST_F(Regionalize, ZonesFromAFeaturesLayer) {
 
   // A cell straddling the border gets each zone's regression.
   const CellId cell = default_grid().cell_from_point({-105.5, 39}, 10);
-  const int size = 16;
-  CellData data;
-  data.inputs.emplace("dem", sample(cell, size, [](LonLat) { return 2000.0; }));
-  const CellData out =
-      run("climate.regionalize", cell, size, data,
-          {{"store", path_}, {"fit", "fit"}, {"temperature_column", "t"}}, {"temperature"});
+  const auto out = regionalize(cell, sample(cell, kSize, [](LonLat) { return 2000.0; }),
+                               {{"fit", "fit"}, {"temperature_column", "t"}}, {"temperature"});
   int west = 0, east = 0;
-  for (int row = 0; row < size; ++row)
-    for (int col = 0; col < size; ++col) {
-      const bool is_west = centre_of(cell, size, col, row).lon < -105.5;
-      EXPECT_NEAR(out.outputs.at("temperature").at(col, row), is_west ? 8.0 : 11.0, 1e-4);
+  for (int row = 0; row < kSize; ++row)
+    for (int col = 0; col < kSize; ++col) {
+      const bool is_west = centre_of(cell, kSize, col, row).lon < -105.5;
+      EXPECT_NEAR(out.at("temperature").at(col, row), is_west ? 8.0 : 11.0, 1e-4);
       (is_west ? west : east)++;
     }
   EXPECT_GT(west, 0);
@@ -186,13 +204,14 @@ TEST_F(Regionalize, Colorado) {
 
 TEST_F(Regionalize, BadInput) {
   const json base = {{"stations", "stations"}, {"columns", {"t"}}};
+  const std::string fit_failed = "step 1 (climate.fit_stations) failed: climate.fit_stations: ";
   EXPECT_EQ(error_of([&] { fit(base, {kCell}); }),
-            "climate.fit_stations: params.stations: no artifact 'stations' in " + path_);
+            fit_failed + "params.stations: no artifact 'stations' in " + path_);
   put_json("stations", synthetic_stations());
   json p = base;
   p["columns"] = {"tmax"};
   EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
-            "climate.fit_stations: params.columns: no station has a column 'tmax'");
+            fit_failed + "params.columns: no station has a column 'tmax'");
   // Stations outside the region: used (default), dropped or refused.
   const CellId small = default_grid().cell_from_point({-105, 39}, 6);
   EXPECT_EQ(fit(base, {small}).fits[0].at("t").stations, 40);
@@ -214,31 +233,30 @@ TEST_F(Regionalize, BadInput) {
   p = base;
   p["zones"] = "points";
   EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
-            "climate.fit_stations: params.zones: feature 1 of 'points' is a Point, not a polygon");
+            fit_failed + "params.zones: feature 1 of 'points' is a Point, not a polygon");
   p["zones"] = "nothing";
   EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
-            "climate.fit_stations: params.zones: no layer 'nothing' in " + path_);
+            fit_failed + "params.zones: no layer 'nothing' in " + path_);
   // Regionalize: a mapped output without its column, and an unknown column.
   fit(base, {kCell});
-  CellData data;
-  data.inputs.emplace("dem", sample(kCell, 16, [](LonLat) { return 1.0; }));
+  const Tile<float> dem = sample(kCell, kSize, [](LonLat) { return 1.0; });
+  const std::string failed =
+      "step 1 (climate.regionalize) failed on cell " + kCell.ToText() + ": climate.regionalize: ";
+  EXPECT_EQ(
+      error_of([&] {
+        regionalize(kCell, dem, {{"fit", "fit"}});
+      }),
+      failed + "params.temperature_column: output 'temperature' is mapped but no column is given");
+  EXPECT_EQ(
+      error_of([&] {
+        regionalize(kCell, dem, {{"fit", "fit"}, {"temperature_column", "p"}}, {"temperature"});
+      }),
+      failed + "params.temperature_column: column 'p' is not in fit 'fit'");
   EXPECT_EQ(error_of([&] {
-              run("climate.regionalize", kCell, 16, data, {{"store", path_}, {"fit", "fit"}});
+              regionalize(kCell, dem, {{"fit", "stations"}, {"temperature_column", "t"}},
+                          {"temperature"});
             }),
-            "climate.regionalize: params.temperature_column: output 'temperature' is mapped but "
-            "no column is given");
-  EXPECT_EQ(error_of([&] {
-              run("climate.regionalize", kCell, 16, data,
-                  {{"store", path_}, {"fit", "fit"}, {"temperature_column", "p"}}, {"temperature"});
-            }),
-            "climate.regionalize: params.temperature_column: column 'p' is not in fit 'fit'");
-  EXPECT_EQ(error_of([&] {
-              run("climate.regionalize", kCell, 16, data,
-                  {{"store", path_}, {"fit", "stations"}, {"temperature_column", "t"}},
-                  {"temperature"});
-            }),
-            "climate.regionalize: params.fit: artifact 'stations': not a station fit of "
-            "climate.fit_stations");
+            failed + "params.fit: artifact 'stations': not a station fit of climate.fit_stations");
 }
 
 }  // namespace

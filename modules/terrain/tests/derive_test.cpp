@@ -130,7 +130,7 @@ TEST(Derive, ComputesOnlyTheMappedOutputs) {
   const CellOperator& op = terrain_test::terrain_operator("terrain.derive");
   data.outputs.emplace("slope", Tile<float>());
   const json params = validate_params(op.spec().params_schema, json::object(), "derive");
-  op.run({cell, kSize, &default_grid(), &params}, data);
+  op.run({cell, kSize, &default_grid(), &params, nullptr}, data);
   EXPECT_EQ(data.outputs.size(), 1U);
   EXPECT_EQ(data.outputs.at("slope").size(), kSize);
   EXPECT_GT(data.outputs.at("slope").at(3, 3), 0.0f);

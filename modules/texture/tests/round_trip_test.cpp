@@ -153,7 +153,7 @@ TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
     d.inputs.emplace("classes", s.classes.at(c));
     d.inputs.emplace("rgb", s.rgb.at(c));
     d.inputs.emplace("dem", s.dem_halo(c));
-    parts.push_back(op.map({c, kSize, &default_grid(), &params}, d));
+    parts.push_back(op.map({c, kSize, &default_grid(), &params, nullptr}, d));
   }
   while (parts.size() > 1) {
     std::vector<json> next;
@@ -161,7 +161,7 @@ TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
       next.push_back(op.merge(parts[i], parts[i + 1]));
     parts = next;
   }
-  const Artifact tree = op.finish(parts[0], params);
+  const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
   EXPECT_EQ(
       json::parse(std::string(reinterpret_cast<const char*>(tree.data.data()), tree.data.size())),
       a);
