@@ -109,7 +109,6 @@ void migrate(sqlite::Connection& conn) {
 }  // namespace
 
 void configure_connection(sqlite::Connection& conn, bool writer) {
-  conn.exec("PRAGMA busy_timeout = 60000");
   conn.exec("PRAGMA mmap_size = 1073741824");
   // In WAL mode NORMAL loses no committed transaction when the process dies (only on power loss).
   if (writer) conn.exec("PRAGMA synchronous = NORMAL");

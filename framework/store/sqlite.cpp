@@ -2,6 +2,9 @@
 
 #include <sqlite3.h>
 
+#include <chrono>
+#include <thread>
+
 namespace maquette::sqlite {
 
 Query::~Query() {
@@ -67,6 +70,20 @@ std::span<const std::byte> Query::blob(int i) const {
   return {p, p ? size_t(sqlite3_column_bytes(stmt_, i)) : 0};
 }
 
+namespace {
+
+// Waits for another connection's lock by polling every 0.2 ms, for up to 60 s. SQLite's own
+// busy_timeout backs off to sleeps of up to 100 ms, which left processes writing the same store
+// (MPI ranks) idle for much of a run.
+int wait_for_lock(void*, int attempts) {
+  constexpr int kMaxAttempts = 300000;
+  if (attempts >= kMaxAttempts) return 0;
+  std::this_thread::sleep_for(std::chrono::microseconds(200));
+  return 1;
+}
+
+}  // namespace
+
 Connection::Connection(std::string path, int flags) : path_(std::move(path)) {
   const int rc = sqlite3_open_v2(path_.c_str(), &db_, flags | SQLITE_OPEN_EXRESCODE, nullptr);
   if (rc != SQLITE_OK) {
@@ -74,6 +91,7 @@ Connection::Connection(std::string path, int flags) : path_(std::move(path)) {
     sqlite3_close_v2(db_);
     throw Failure("cannot open " + path_ + ": " + msg, rc & 0xff);
   }
+  sqlite3_busy_handler(db_, &wait_for_lock, nullptr);
 }
 
 Connection::~Connection() {
