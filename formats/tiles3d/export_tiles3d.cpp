@@ -18,17 +18,22 @@ namespace {
 constexpr double kEarthRadius = 6371008.8;
 
 // The cell's region; heights padded by the quantization step and by the sag of a straight edge
-// below the ellipsoid's curve.
+// below the ellipsoid's curve, sides by the quantization step (which moves edge vertices up to
+// that far, in any direction).
 std::array<double, 6> cell_region(const Grid& grid, const CellTerrain& t, double spacing) {
   const CellId cell = t.cell;
   const TerrainMesh& mesh = t.mesh;
   const LonLatBounds b = lonlat_bounds(grid, {cell});
   const double rad = std::numbers::pi / 180;
+  const double dlat = t.lattice_step / kEarthRadius;
+  const double max_abs_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north))) * rad;
+  const double dlon = dlat / std::cos(max_abs_lat);
   double east = b.east;
   if (east > 180) east -= 360;  // regions crossing the antimeridian have west > east
   const double sag = spacing * spacing / (8 * kEarthRadius) + t.lattice_step;
-  return {b.west * rad,  b.south * rad,         east * rad,
-          b.north * rad, mesh.min_height - sag, mesh.max_height + sag};
+  return {b.west * rad - dlon,   std::max(-std::numbers::pi / 2, b.south * rad - dlat),
+          east * rad + dlon,     std::min(std::numbers::pi / 2, b.north * rad + dlat),
+          mesh.min_height - sag, mesh.max_height + sag};
 }
 
 std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -72,6 +73,12 @@ void walk(const fs::path& file, const json& tile, const json* parent, Export& ou
       const auto g = geodetic(m, p);
       EXPECT_GE(g[2], r[4].get<double>()) << uri;
       EXPECT_LE(g[2] + top, r[5].get<double>()) << uri;
+      // Sideways too (the fixture has no region across the antimeridian: west < east).
+      const double rad = std::numbers::pi / 180;
+      EXPECT_GE(g[0] * rad, r[0].get<double>()) << uri;
+      EXPECT_LE(g[0] * rad, r[2].get<double>()) << uri;
+      EXPECT_GE(g[1] * rad, r[1].get<double>()) << uri;
+      EXPECT_LE(g[1] * rad, r[3].get<double>()) << uri;
     };
     if (const auto inst = instancing(glb)) {  // the prototypes' bases and tops
       const auto t = glb.floats((*inst)["TRANSLATION"]), sc = glb.floats((*inst)["SCALE"]);
