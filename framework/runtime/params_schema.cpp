@@ -116,4 +116,20 @@ json validate_params(const json& schema, const json& params, const std::string& 
   return Validator(context).check(schema, params.is_null() ? json::object() : params, "params");
 }
 
+json number_param(double min, double max, double def, const std::string& description) {
+  return {{"type", "number"},
+          {"minimum", min},
+          {"maximum", max},
+          {"default", def},
+          {"description", description}};
+}
+
+json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description) {
+  return {{"type", "integer"},
+          {"minimum", min},
+          {"maximum", max},
+          {"default", def},
+          {"description", description}};
+}
+
 }  // namespace maquette

@@ -3,6 +3,7 @@
 // additionalProperties false).
 #pragma once
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -13,5 +14,9 @@ namespace maquette {
 //   step 2 (terrain.derive): params.z_factor: expected a number, got "abc"
 nlohmann::json validate_params(const nlohmann::json& schema, const nlohmann::json& params,
                                const std::string& context);
+
+// Schemas of bounded numeric parameters with a default, for operators' params_schema.
+nlohmann::json number_param(double min, double max, double def, const std::string& description);
+nlohmann::json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description);
 
 }  // namespace maquette

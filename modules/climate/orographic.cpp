@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "local_frame.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::climate {
 namespace {
@@ -39,22 +40,15 @@ OperatorSpec orographic_spec() {
                {"lift", "height above the weighted upwind terrain", DType::F32, 1,
                 Semantics::Continuous, "m", std::nullopt}};
   s.halo = kHalo;
-  const auto number = [](double min, double max, double def, const char* what) {
-    return json{{"type", "number"},
-                {"minimum", min},
-                {"maximum", max},
-                {"default", def},
-                {"description", what}};
-  };
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
       {"properties",
        {{"wind_direction",
-         number(0, 360, 270, "direction the wind comes from, degrees clockwise from north")},
-        {"strength", number(0, 100, 0.5, "fractional precipitation change per km of lift")},
-        {"decay_length", number(1, 1e7, 10000, "upwind memory length L, metres")},
-        {"max_distance", number(0, 1e7, 50000, "upwind reach, metres; at most the halo")}}}};
+         number_param(0, 360, 270, "direction the wind comes from, degrees clockwise from north")},
+        {"strength", number_param(0, 100, 0.5, "fractional precipitation change per km of lift")},
+        {"decay_length", number_param(1, 1e7, 10000, "upwind memory length L, metres")},
+        {"max_distance", number_param(0, 1e7, 50000, "upwind reach, metres; at most the halo")}}}};
   return s;
 }
 

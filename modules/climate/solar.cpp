@@ -8,6 +8,7 @@
 #include "horizon.h"
 #include "local_frame.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "sun.h"
 
 namespace maquette::climate {
@@ -26,36 +27,23 @@ OperatorSpec solar_spec() {
   s.outputs = {{"radiation", "potential direct radiation summed over the period", DType::F32, 1,
                 Semantics::Continuous, "Wh/m2", std::nullopt}};
   s.halo = kHalo;
-  const auto number = [](double min, double max, double def, const char* what) {
-    return json{{"type", "number"},
-                {"minimum", min},
-                {"maximum", max},
-                {"default", def},
-                {"description", what}};
-  };
-  const auto integer = [](int min, int max, int def, const char* what) {
-    return json{{"type", "integer"},
-                {"minimum", min},
-                {"maximum", max},
-                {"default", def},
-                {"description", what}};
-  };
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
       {"properties",
-       {{"solar_constant", number(0, 2000, 1367, "W/m^2 at the mean sun distance")},
+       {{"solar_constant", number_param(0, 2000, 1367, "W/m^2 at the mean sun distance")},
         {"transmissivity",
-         number(0.01, 1, 0.7, "fraction of the beam passing a vertical sea-level atmosphere")},
-        {"first_day", integer(1, 366, 1, "first day of year of the period")},
-        {"last_day", integer(1, 366, 365, "last day of year of the period (inclusive)")},
-        {"day_step", integer(1, 366, 5, "sample every n-th day (each stands for n days)")},
-        {"minutes", number(1, 60, 15, "time step within a day")},
+         number_param(0.01, 1, 0.7,
+                      "fraction of the beam passing a vertical sea-level atmosphere")},
+        {"first_day", integer_param(1, 366, 1, "first day of year of the period")},
+        {"last_day", integer_param(1, 366, 365, "last day of year of the period (inclusive)")},
+        {"day_step", integer_param(1, 366, 5, "sample every n-th day (each stands for n days)")},
+        {"minutes", number_param(1, 60, 15, "time step within a day")},
         {"max_shadow_distance",
-         number(0, 1e6, 20000,
-                "metres searched for shadowing terrain (0: no shadows); at most "
-                "the 64-pixel halo")},
-        {"horizon_directions", integer(4, 360, 36, "azimuths of the horizon angles")}}}};
+         number_param(0, 1e6, 20000,
+                      "metres searched for shadowing terrain (0: no shadows); at most "
+                      "the 64-pixel halo")},
+        {"horizon_directions", integer_param(4, 360, 36, "azimuths of the horizon angles")}}}};
   return s;
 }
 
