@@ -101,6 +101,24 @@ Tiles3dFixture build() {
 
 }  // namespace
 
+std::string corner_store(const std::vector<CellId>& cells) {
+  const Grid& grid = default_grid();
+  const std::string path = temp_dir() + "/corner.maquette";
+  auto store = Store::open(path, Store::Mode::Create);
+  LayerInfo dem;
+  dem.name = "dem";
+  dem.tile_size = kTileSize;
+  dem.level = cells.front().level();
+  dem.units = "m";
+  store->create_layer(dem);
+  Store::Batch batch(*store);
+  for (CellId c : cells)
+    batch.put_tile("dem", c,
+                   make_tile<float>(grid, c, 1, [](LonLat p, int) { return dem_field(p); }));
+  batch.commit();
+  return path;
+}
+
 const Tiles3dFixture& tiles3d_fixture() {
   static const Tiles3dFixture f = build();
   return f;

@@ -23,6 +23,9 @@ struct Tiles3dFixture {
 };
 const Tiles3dFixture& tiles3d_fixture();
 
+// A store holding only `dem` (the same field, float32, no nodata) on `cells` (one level).
+std::string corner_store(const std::vector<CellId>& cells);
+
 double dem_field(LonLat p);  // metres
 
 }  // namespace maquette::test

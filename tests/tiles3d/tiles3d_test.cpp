@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <GeographicLib/Geocentric.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -240,6 +241,41 @@ TEST(Tiles3d, SharedEdgesDecodeIdentically) {
   EXPECT_GE(shared_vertices(glb_of(f.block[0]), glb_of(f.block[1])), size_t(kTileSize + 1));
   EXPECT_GE(shared_vertices(glb_of(f.block[0]), glb_of(f.block[2])), size_t(kTileSize + 1));
   EXPECT_GE(shared_vertices(glb_of(f.seam[0]), glb_of(f.seam[1])), size_t(kTileSize + 1));
+}
+
+// Where three faces meet (N's bottom-right corner = O's top-right = P's top-left) every pair of
+// the three corner cells shares an edge, computed from a different face plane on each side: the
+// decoded edge vertices must still coincide exactly.
+TEST(Tiles3d, EdgesMatchAtACubeCorner) {
+  const int n = 1 << kLevel;
+  const CellId north = CellId::FromFaceColRow(0, kLevel, n - 1, n - 1);
+  const CellId o = CellId::FromFaceColRow(1, kLevel, n - 1, 0);
+  const CellId p = CellId::FromFaceColRow(2, kLevel, 0, 0);
+  // The grid says they are edge neighbours (checked against geometry in tests/grid).
+  const auto around = default_grid().edge_neighbours(o);
+  ASSERT_NE(std::find(around.begin(), around.end(), north), around.end());
+  ASSERT_NE(std::find(around.begin(), around.end(), p), around.end());
+  const std::string store = corner_store({north, o, p});
+  const std::string dir = temp_dir() + "/corner";
+  const auto r = run_maquette("export tiles3d " + store + " " + dir + " --dem dem --levels " +
+                              std::to_string(kLevel) + ".." + std::to_string(kLevel));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto glb = [&](CellId c) {
+    return read_glb(dir + "/tiles/" + std::to_string(kLevel) + "/" + c.ToText() + ".glb");
+  };
+  const Glb gn = glb(north), go = glb(o), gp = glb(p);
+  EXPECT_GE(shared_vertices(gn, go), size_t(kTileSize + 1)) << "N/O seam";
+  EXPECT_GE(shared_vertices(gn, gp), size_t(kTileSize + 1)) << "N/P seam";
+  EXPECT_GE(shared_vertices(go, gp), size_t(kTileSize + 1)) << "O/P seam";
+}
+
+TEST(Tiles3d, UnknownContentLayerIsRefused) {
+  const std::string dir = temp_dir() + "/nocontent";
+  const auto r = run_maquette("export tiles3d " + tiles3d_fixture().store_path + " " + dir +
+                              " --dem dem --content shrubs");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("shrubs"), std::string::npos) << r.err;
+  EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir)) << "wrote into " << dir;
 }
 
 TEST(Tiles3d, GltfValidator) {
