@@ -94,4 +94,15 @@ Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
   return out;
 }
 
+Tile<float> sample_field(const Grid& grid, CellId cell, int size,
+                         const std::function<double(LonLat)>& field) {
+  const int level = cell.level() + log2_tile_size(size);
+  Tile<float> tile(size, 1);
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col)
+      tile.at(col, row) = float(field(pixel_centre(
+          grid, {cell.face(), global_col(cell, size, col), global_row(cell, size, row)}, level)));
+  return tile;
+}
+
 }  // namespace maquette

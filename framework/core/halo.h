@@ -40,4 +40,8 @@ std::optional<FaceCoord> pixel_source(const Grid& grid, CellId cell, int size, i
 // Geodetic centre of a face pixel at `pixel_level` (may exceed CellId::kMaxLevel).
 LonLat pixel_centre(const Grid& grid, FaceCoord pixel, int pixel_level);
 
+// A one-channel tile of `cell` (no halo) holding field(pixel centre): e.g. a known field for tests.
+Tile<float> sample_field(const Grid& grid, CellId cell, int size,
+                         const std::function<double(LonLat)>& field);
+
 }  // namespace maquette

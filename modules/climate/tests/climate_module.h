@@ -66,14 +66,7 @@ inline void run_steps(const std::string& path, const std::vector<CellId>& cells,
 
 // A tile of `cell` holding field(pixel centre) (no halo).
 inline Tile<float> sample(CellId cell, int size, const std::function<double(LonLat)>& field) {
-  const Grid& grid = default_grid();
-  const int level = cell.level() + log2_tile_size(size);
-  Tile<float> tile(size, 1);
-  for (int row = 0; row < size; ++row)
-    for (int col = 0; col < size; ++col)
-      tile.at(col, row) = float(field(pixel_centre(
-          grid, {cell.face(), global_col(cell, size, col), global_row(cell, size, row)}, level)));
-  return tile;
+  return sample_field(default_grid(), cell, size, field);
 }
 
 // The field on `cell` with a halo, assembled from its neighbours as the runner does.

@@ -37,14 +37,7 @@ inline CellData run(const std::string& name, CellId cell, int size, CellData dat
 
 // A tile of `cell` holding field(pixel centre) (no halo).
 inline Tile<float> sample(CellId cell, int size, const std::function<double(LonLat)>& field) {
-  const Grid& grid = default_grid();
-  const int level = cell.level() + log2_tile_size(size);
-  Tile<float> tile(size, 1);
-  for (int row = 0; row < size; ++row)
-    for (int col = 0; col < size; ++col)
-      tile.at(col, row) = float(field(pixel_centre(
-          grid, {cell.face(), global_col(cell, size, col), global_row(cell, size, row)}, level)));
-  return tile;
+  return sample_field(default_grid(), cell, size, field);
 }
 
 // True centre of pixel (col, row) of `cell`'s tile, halo pixels included.
