@@ -3,7 +3,8 @@
 # +proj=rhealpix, on the same sources, with the same resampling and the same number of output
 # samples (gdalwarp's grid: the footprint's extent at our pixel size, scaled to our sample count),
 # both on all cores. Each program runs once untimed (warm file cache, both alike), then RUNS (3)
-# times alternately; prints the median wall time, the largest peak RSS and the ratio of the medians.
+# times alternately; prints the median wall and CPU (user + system) times, the largest peak RSS
+# and the ratios of the medians.
 # Usage: benchmarks/ingest/compare.sh [BUILD_DIR]
 set -eu
 BUILD=${1:-build}
@@ -15,23 +16,27 @@ RHP='+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0'
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
-# Runs a command; prints "SECONDS PEAK_RSS_MIB" (the command's own, from rusage).
+# Runs a command; prints "SECONDS CPU_SECONDS PEAK_RSS_MIB": wall time, then the command's own
+# user + system time and peak RSS (rusage). CPU time is the steadier measure on a busy machine.
 timed() {
   python3 - "$@" <<'PY'
 import resource, subprocess, sys, time
 t = time.monotonic()
 subprocess.run(sys.argv[1:], check=True)
 dt = time.monotonic() - t
-print(f"{dt:.3f} {resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024:.0f}")
+r = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(f"{dt:.3f} {r.ru_utime + r.ru_stime:.3f} {r.ru_maxrss / 1024:.0f}")
 PY
 }
 
-# median FILE: the median seconds and the largest peak RSS of the "SECONDS PEAK" lines in FILE.
+# median FILE: the median seconds, the median CPU seconds and the largest peak RSS of the lines
+# of FILE.
 median() {
   python3 - "$1" <<'PY'
 import statistics, sys
 runs = [tuple(map(float, l.split())) for l in open(sys.argv[1])]
-print(f"{statistics.median(s for s, _ in runs):.3f} {max(m for _, m in runs):.0f}")
+print(f"{statistics.median(r[0] for r in runs):.3f} {statistics.median(r[1] for r in runs):.3f}"
+      f" {max(r[2] for r in runs):.0f}")
 PY
 }
 
@@ -73,12 +78,12 @@ print(round(w * k), round(h * k))' "$TMP/probe.vrt" "$samples")
   set -- $(median "$TMP/m") $(median "$TMP/g")
   python3 -c '
 import sys
-name, ms, mm, gs, gm, samples, gw, gh, level, tiles, runs = sys.argv[1:]
+name, ms, mc, mm, gs, gc, gm, samples, gw, gh, level, tiles, runs = sys.argv[1:]
 print(f"{name}: level {level}, {tiles} tiles, {int(samples)/1e6:.2f} M samples (gdalwarp {gw}x{gh} = {int(gw)*int(gh)/1e6:.2f} M), median of {runs}")
-print(f"  maquette ingest {float(ms):7.3f} s  peak {mm:>5} MiB")
-print(f"  gdalwarp -multi {float(gs):7.3f} s  peak {gm:>5} MiB")
-print(f"  ratio gdalwarp / maquette: {float(gs) / float(ms):.2f}x")' \
-    "$name" "$1" "$2" "$3" "$4" "$samples" "$gw" "$gh" "$level" "$tiles" "$RUNS"
+print(f"  maquette ingest {float(ms):7.3f} s  cpu {float(mc):7.3f} s  peak {mm:>5} MiB")
+print(f"  gdalwarp -multi {float(gs):7.3f} s  cpu {float(gc):7.3f} s  peak {gm:>5} MiB")
+print(f"  ratio gdalwarp / maquette: {float(gs) / float(ms):.2f}x (cpu {float(gc) / float(mc):.2f}x)")' \
+    "$name" "$1" "$2" "$3" "$4" "$5" "$6" "$samples" "$gw" "$gh" "$level" "$tiles" "$RUNS"
 }
 
 nproc | sed 's/^/cores: /'

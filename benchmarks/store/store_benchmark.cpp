@@ -177,8 +177,10 @@ void BM_UpdateOverviews(benchmark::State& state) {
 }
 
 BENCHMARK_CAPTURE(BM_Encode, zstd, "zstd");
+BENCHMARK_CAPTURE(BM_Encode, zstd3, "zstd:3");  // the level stores were written at before
 BENCHMARK_CAPTURE(BM_Encode, raw, "raw");
 BENCHMARK_CAPTURE(BM_Decode, zstd, "zstd");
+BENCHMARK_CAPTURE(BM_Decode, zstd3, "zstd:3");
 BENCHMARK_CAPTURE(BM_Write, zstd, "zstd")->Arg(1)->Arg(16)->Arg(64)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Write, raw, "raw")->Arg(16)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Read, zstd, "zstd")->UseRealTime();

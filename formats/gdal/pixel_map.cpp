@@ -21,8 +21,8 @@ void PixelMapper::exact(CellId cell, int size, std::vector<double>& x, std::vect
 void PixelMapper::map(CellId cell, int size, PixelMap& out) {
   out.size = size;
   const size_t n = size_t(size) * size_t(size);
-  out.x.assign(n, 0);
-  out.y.assign(n, 0);
+  out.x.resize(n);  // every sample is written below
+  out.y.resize(n);
   // Lattice columns/rows: 0, kStep, 2 kStep, ..., and the last sample.
   std::vector<int> ticks;
   for (int t = 0; t < size - 1; t += kStep) ticks.push_back(t);

@@ -22,14 +22,27 @@
 namespace maquette {
 namespace {
 
-// Cells per transaction: a commit costs about as much as a tile's work (see the store benchmark),
-// and a few cells per batch still keep every thread busy.
-constexpr size_t kCellsPerBatch = 4;
+// Where the batches of `cells` (sorted) start, and their end: each batch holds the cells of one
+// parent (up to four, consecutive in id order). A commit costs about as much as a tile's work
+// (see the store benchmark), so a few cells per batch; and a batch holding all four children of
+// a parent writes the parent's overview from its tiles in memory (Store::Batch), so that
+// update_overviews need not read the base tiles back.
+std::vector<size_t> sibling_batches(const std::vector<CellId>& cells) {
+  std::vector<size_t> starts;
+  for (size_t i = 0; i < cells.size(); ++i)
+    if (i == 0 || cells[i].level() == 0 || cells[i].parent() != cells[i - 1].parent())
+      starts.push_back(i);
+  starts.push_back(cells.size());
+  return starts;
+}
 
 // from_tile(tile, dtype, nodata) without its per-sample conversion through double and libm's
-// round: the same bytes (NaN -> nodata; integer dtypes rounded half away from zero and clamped).
-RawTile to_raw(const Tile<float>& tile, DType dtype, const double* nodata) {
-  RawTile raw{dtype, tile.size(), tile.channels(), {}};
+// round: the same bytes (NaN -> nodata; integer dtypes rounded half away from zero and clamped),
+// into `raw`, whose storage a thread reuses from tile to tile.
+void to_raw(const Tile<float>& tile, DType dtype, const double* nodata, RawTile& raw) {
+  raw.dtype = dtype;
+  raw.size = tile.size();
+  raw.channels = tile.channels();
   raw.bytes.resize(raw.sample_count() * dtype_size(dtype));
   const std::span<const float> in = tile.data();
   visit_dtype(dtype, [&]<typename S>(std::type_identity<S>) {
@@ -51,7 +64,6 @@ RawTile to_raw(const Tile<float>& tile, DType dtype, const double* nodata) {
       std::memcpy(out, &s, sizeof(S));
     }
   });
-  return raw;
 }
 
 }  // namespace
@@ -95,10 +107,11 @@ RasterIngestReport ingest_raster(const std::string& store_path,
 
   const double* nodata = layer.nodata ? &*layer.nodata : nullptr;
   const bool categorical = layer.semantics == Semantics::Categorical;
-  // Per thread: its resampler (GDAL handles, PROJ transforms) and work tile, kept across cells.
+  // Per thread: its resampler (GDAL handles, PROJ transforms) and work tiles, kept across cells.
   struct Worker {
     std::unique_ptr<TileResampler> resampler;
     Tile<float> tile;
+    RawTile raw;
   };
   tbb::enumerable_thread_specific<Worker> workers;
   std::atomic<int64_t> written = 0, empty = 0;
@@ -107,34 +120,35 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   std::mutex error_mutex;
   {
     Progress progress("ingest " + layer.name, int64_t(todo.size()), o.quiet);
+    const std::vector<size_t> batches = sibling_batches(todo);
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
     arena.execute([&] {
-      tbb::parallel_for(
-          size_t(0), (todo.size() + kCellsPerBatch - 1) / kCellsPerBatch, [&](size_t chunk) {
-            if (failed) return;
-            try {
-              auto& [resampler, tile] = workers.local();
-              if (!resampler)
-                resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
-                                                            plan.resampling, categorical);
-              Store::Batch batch(*store);
-              const size_t end = std::min(todo.size(), (chunk + 1) * kCellsPerBatch);
-              for (size_t i = chunk * kCellsPerBatch; i < end; ++i) {
-                if (resampler->make(todo[i], layer.tile_size, tile)) {
-                  batch.put_tile(layer.name, todo[i], to_raw(tile, layer.dtype, nodata));
-                  ++written;
-                } else {
-                  ++empty;
-                }
-                batch.mark_done(run, 0, todo[i]);
-              }
-              batch.commit();
-              progress.advance(int64_t(end - chunk * kCellsPerBatch));
-            } catch (...) {
-              std::lock_guard lock(error_mutex);
-              if (!failed.exchange(true)) error = std::current_exception();
+      tbb::parallel_for(size_t(0), batches.size() - 1, [&](size_t chunk) {
+        if (failed) return;
+        try {
+          auto& [resampler, tile, raw] = workers.local();
+          if (!resampler)
+            resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
+                                                        plan.resampling, categorical);
+          Store::Batch batch(*store);
+          const size_t begin = batches[chunk], end = batches[chunk + 1];
+          for (size_t i = begin; i < end; ++i) {
+            if (resampler->make(todo[i], layer.tile_size, tile)) {
+              to_raw(tile, layer.dtype, nodata, raw);
+              batch.put_tile(layer.name, todo[i], raw);
+              ++written;
+            } else {
+              ++empty;
             }
-          });
+            batch.mark_done(run, 0, todo[i]);
+          }
+          batch.commit();
+          progress.advance(int64_t(end - begin));
+        } catch (...) {
+          std::lock_guard lock(error_mutex);
+          if (!failed.exchange(true)) error = std::current_exception();
+        }
+      });
     });
   }
   if (error) {

@@ -148,25 +148,29 @@ Resampling parse_resampling(std::string_view name) {
 
 void resample(const Window& w, Resampling r, const WindowPoints& p, std::span<float> out) {
   const size_t bands = w.planes.size();
-  // Calls value(i, band) for the bands of each sample still missing.
+  const double x0 = double(w.x0), y0 = double(w.y0), step = w.step;
+  // Source pixels to window pixels (no division in the usual case of a full-resolution window).
+  const auto scaled = [&](double v) { return w.step == 1 ? v : v / step; };
+  // Calls value(i, band, x, y) with the window coordinates of each sample still missing.
   const auto fill = [&](auto value) {
     for (size_t i = 0; i < p.x.size(); ++i) {
       if (std::isnan(p.x[i])) continue;
+      const double x = scaled(p.x[i] - x0), y = scaled(p.y[i] - y0);
       float* o = out.data() + i * bands;
       for (size_t b = 0; b < bands; ++b)
-        if (std::isnan(o[b])) o[b] = value(i, int(b));
+        if (std::isnan(o[b])) o[b] = value(i, int(b), x, y);
     }
   };
   switch (r) {
     case Resampling::Nearest:
-      return fill([&](size_t i, int b) {
-        return w.at(b, int(std::floor(p.x[i])), int(std::floor(p.y[i])));
+      return fill([&](size_t, int b, double x, double y) {
+        return w.at(b, int(std::floor(x)), int(std::floor(y)));
       });
     case Resampling::Bilinear:
       // The taps and fractions once per sample.
       for (size_t i = 0; i < p.x.size(); ++i) {
         if (std::isnan(p.x[i])) continue;
-        const double u = p.x[i] - 0.5, v = p.y[i] - 0.5;
+        const double u = scaled(p.x[i] - x0) - 0.5, v = scaled(p.y[i] - y0) - 0.5;
         const int col = ifloor(u), row = ifloor(v);
         const double fu = u - col, fv = v - row;
         float* o = out.data() + i * bands;
@@ -175,11 +179,15 @@ void resample(const Window& w, Resampling r, const WindowPoints& p, std::span<fl
       }
       return;
     case Resampling::Cubic:
-      return fill([&](size_t i, int b) { return cubic(w, b, p.x[i], p.y[i]); });
+      return fill([&](size_t, int b, double x, double y) { return cubic(w, b, x, y); });
     case Resampling::Mode:
-      return fill([&](size_t i, int b) { return mode(w, b, p.x[i], p.y[i], p.hx[i], p.hy[i]); });
+      return fill([&](size_t i, int b, double x, double y) {
+        return mode(w, b, x, y, scaled(p.hx[i]), scaled(p.hy[i]));
+      });
     case Resampling::Average:
-      return fill([&](size_t i, int b) { return average(w, b, p.x[i], p.y[i], p.hx[i], p.hy[i]); });
+      return fill([&](size_t i, int b, double x, double y) {
+        return average(w, b, x, y, scaled(p.hx[i]), scaled(p.hy[i]));
+      });
   }
 }
 

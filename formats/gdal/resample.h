@@ -21,9 +21,10 @@ enum class Resampling { Nearest, Bilinear, Cubic, Mode, Average };
 std::string_view resampling_name(Resampling r);
 Resampling parse_resampling(std::string_view name);  // throws maquette::Error
 
-// The window coordinates (pixel centres at i + 0.5) of a tile's samples, row-major; x NaN: not
-// to be resampled. hx, hy: each sample's footprint half-sizes in window pixels (area kernels
-// only, else empty).
+// The source pixel coordinates (pixel centres at i + 0.5) of a tile's samples, row-major; x NaN:
+// not to be resampled. hx, hy: each sample's footprint half-sizes in source pixels (area kernels
+// only, else empty). The kernels take them into the window's coordinates ((x - x0) / step) as
+// they go, rather than in a pass of their own over the tile.
 struct WindowPoints {
   std::span<const double> x, y, hx, hy;
 };

@@ -111,14 +111,6 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
   const int wh = int((int64_t(std::ceil(y1)) - iy0 + step - 1) / step);
   if (ww <= 0 || wh <= 0) return;
   s.reader.read(ix0, iy0, ww, wh, step, categorical_, window_);
-
-  // Source pixel coordinates -> window coordinates.
-  for (size_t i = 0; i < x.size(); ++i) {
-    x[i] = (x[i] - double(ix0)) / step;
-    y[i] = (y[i] - double(iy0)) / step;
-  }
-  for (double& v : hx) v /= step;
-  for (double& v : hy) v /= step;
   resample(window_, resampling_, {x, y, hx, hy}, tile.data());
 }
 

@@ -1,13 +1,11 @@
 #include "image/quicklook.h"
 
-#include <gdal_priv.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "core/error.h"
-#include "gdal/gdal_env.h"
+#include "gdal/image_file.h"
 #include "image/hillshade.h"
 
 namespace maquette {
@@ -40,23 +38,6 @@ std::vector<int> drawn_channels(const LonLatRaster& m, const QuicklookStyle& sty
       throw Error("band " + std::to_string(b + 1) + " out of range: the layer has " +
                   std::to_string(m.channels) + " channels");
   return bands;
-}
-
-// Writes `rgba` (width x height pixels of 4 interleaved bytes) as an RGBA PNG: an in-memory GDAL
-// dataset copied through the PNG driver.
-void write_png(std::vector<uint8_t>& rgba, int width, int height, const std::string& path) {
-  init_gdal();
-  const std::string why = "cannot write " + path;
-  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
-  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
-  if (!mem || !png) throw Error(why + ": GDAL has no MEM or PNG driver");
-  const GDALDatasetUniquePtr image(mem->Create("", width, height, 4, GDT_Byte, nullptr));
-  if (!image || image->RasterIO(GF_Write, 0, 0, width, height, rgba.data(), width, height, GDT_Byte,
-                                4, nullptr, 4, 4 * GSpacing(width), 1, nullptr) != CE_None)
-    throw Error(why + ": " + gdal_last_error("GDAL failed"));
-  const GDALDatasetUniquePtr out(
-      png->CreateCopy(path.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
-  if (!out) throw Error(why + ": " + gdal_last_error("the PNG driver failed"));
 }
 
 }  // namespace
@@ -97,7 +78,7 @@ void write_quicklook_png(const LonLatRaster& m, const QuicklookStyle& style,
       row[4 * c + 3] = 255;
     }
   }
-  write_png(image, m.width, m.height, path);
+  write_image(image, m.width, m.height, 4, {"PNG", {}}, path);
 }
 
 }  // namespace maquette

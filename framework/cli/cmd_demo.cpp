@@ -1,29 +1,29 @@
-// maquette demo: the main job on data the project can always get, with quicklooks.
-// With the Olinda data (scripts/setup.sh puts it in build/demo-data): ingest a DEM and a Landsat 7
-// scene, fill voids and derive terrain. Without it: a synthetic terrain and its derivatives.
+// maquette demo: the main job on data the project can always get. With the Olinda data
+// (scripts/setup.sh puts it in build/demo-data): ingest a DEM and a Landsat 7 scene, fill voids,
+// derive terrain, fit a procedural texture model to the scene and synthesize the texture two
+// levels finer than the DEM, then quicklooks and textured 3D Tiles. Without it: a synthetic
+// terrain and its derivatives. Both are pipelines (examples/demo-*.json, built in), written to
+// the output directory as demo.json with the data files' paths filled in.
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
+#include "cli/builtin_steps.h"
 #include "cli/commands.h"
 #include "core/error.h"
-#include "core/grid.h"
 #include "demo_pipelines.h"
-#include "gdal/raster_ingest.h"
-#include "image/quicklook.h"
-#include "runtime/operator_registry.h"
 #include "runtime/runner.h"
-#include "tiles3d/export_tiles3d.h"
 
 namespace maquette::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using json = nlohmann::json;
 
 constexpr const char* kDemDataFile = "olinda_dem_utm25s.tif";
 constexpr const char* kImageryDataFile = "L7_ETMs.tif";
@@ -32,12 +32,6 @@ struct DemoOptions {
   std::string output = "demo-output";
   std::string data;  // default: demo-data next to the program's bin/
   int threads = 0;
-};
-
-struct Quicklook {
-  const char* layer;
-  QuicklookStyle style;
-  const char* file;
 };
 
 // build/bin/maquette -> build/demo-data, where scripts/setup.sh extracts the data.
@@ -51,19 +45,15 @@ bool has_real_data(const std::string& dir) {
   return fs::exists(fs::path(dir) / kDemDataFile) && fs::exists(fs::path(dir) / kImageryDataFile);
 }
 
-// Ingests the Olinda DEM and the Landsat 7 scene (bands 3, 2, 1: red, green, blue).
-void ingest_olinda(const std::string& store, const std::string& dir, const DemoOptions& o) {
-  RasterIngestOptions dem;
-  dem.layer = "dem_source";
-  dem.as = "dem";
-  dem.threads = o.threads;
-  dem.quiet = global_options().quiet;
-  ingest_raster(store, {(fs::path(dir) / kDemDataFile).string()}, dem);
-  RasterIngestOptions imagery = dem;
-  imagery.layer = "imagery";
-  imagery.as = "imagery";
-  imagery.bands = {3, 2, 1};
-  ingest_raster(store, {(fs::path(dir) / kImageryDataFile).string()}, imagery);
+// The built-in pipeline with its ingest steps' sources in the data directory (absolute, so that
+// demo.json runs from any working directory).
+json demo_pipeline(bool real, const std::string& data) {
+  json doc = json::parse(real ? kDemoOlinda : kDemoSynthetic);
+  for (json& step : doc.at("steps"))
+    if (step.at("op") == "ingest")
+      for (json& source : step.at("params").at("sources"))
+        source = fs::absolute(fs::path(data) / source.get<std::string>()).string();
+  return doc;
 }
 
 void remove_store(const std::string& path) {
@@ -84,55 +74,36 @@ void run_demo(const DemoOptions& o) {
         data, kDemDataFile, kImageryDataFile);
 
   const std::string pipeline_file = (fs::path(o.output) / "demo.json").string();
-  std::ofstream(pipeline_file) << (real ? kDemoOlinda : kDemoSynthetic);
-  const Pipeline pipeline = load_pipeline(pipeline_file, default_registry());
+  std::ofstream(pipeline_file) << demo_pipeline(real, data).dump(2) << "\n";
+  const Pipeline pipeline = load_pipeline(pipeline_file, program_registry());
   remove_store(pipeline.store_path);  // a demo always starts afresh
-  if (real) {
-    spdlog::info("demo: ingesting the Olinda DEM and Landsat 7 scene from {}", data);
-    ingest_olinda(pipeline.store_path, data, o);
-  } else {
+  std::string written;                // the exports, which replace earlier ones
+  for (const PipelineStep& step : pipeline.steps)
+    if (step.op_name == "export") {
+      const std::string out = resolve_path(pipeline.base_dir, step.params.at("out"));
+      if (step.params.at("format") == "tiles3d") fs::remove_all(out, ec);
+      written += "\n  " + out;
+    }
+  if (real)
+    spdlog::info("demo: the Olinda DEM and Landsat 7 scene from {}", data);
+  else
     spdlog::info("demo: synthetic terrain, {} cells at level {} ({} px tiles)",
                  pipeline.region.size(), pipeline.level, pipeline.tile_size);
-  }
   RunOptions run;
   run.threads = o.threads;
   run.quiet = global_options().quiet;
   const RunSummary summary = run_pipeline(pipeline, run);
-
-  auto style = [](Ramp ramp, bool hillshade) {
-    QuicklookStyle s;
-    s.ramp = ramp;
-    s.hillshade = hillshade;
-    return s;
-  };
-  std::vector<Quicklook> looks = {{"dem", style(Ramp::Terrain, true), "dem.png"},
-                                  {"hillshade", style(Ramp::Grey, false), "hillshade.png"},
-                                  {"slope", style(Ramp::Slope, false), "slope.png"}};
-  if (real) looks.push_back({"imagery", QuicklookStyle{}, "imagery.png"});
-  const auto store = Store::open(pipeline.store_path, Store::Mode::ReadOnly);
-  std::string written;
-  for (const Quicklook& q : looks) {
-    const std::string path = (fs::path(o.output) / q.file).string();
-    write_quicklook_png(mosaic_layer(*store, default_grid(), q.layer, {}), q.style, path);
-    written += "\n  " + path;
-  }
-  // The terrain for 3D viewers: Draco-compressed 3D Tiles, textured with the imagery if any.
   const std::string tiles_dir = (fs::path(o.output) / "tiles3d").string();
-  fs::remove_all(tiles_dir, ec);
-  Tiles3dExport tiles;
-  tiles.terrain.dem = "dem";
-  if (real) tiles.terrain.texture = "imagery";
-  const int64_t tile_count = export_tiles3d(*store, default_grid(), tiles, tiles_dir);
   std::printf(
       "Demo (%s) finished in %.1f s.\n"
-      "Store:      %s\nPipeline:   %s\nQuicklooks:%s\n3D Tiles:   %s (%lld tiles)\n"
+      "Store:      %s\nPipeline:   %s\nWritten:%s\n"
       "Next:\n  maquette view %s      (then open the URL it prints)\n"
       "  maquette info %s\n  maquette export gtiff %s --layer dem dem.tif\n"
       "  maquette run %s --dry-run\n",
-      real ? "Olinda, Brazil: Landsat 7 and DEM" : "synthetic terrain", summary.seconds,
-      pipeline.store_path.c_str(), pipeline_file.c_str(), written.c_str(), tiles_dir.c_str(),
-      static_cast<long long>(tile_count), tiles_dir.c_str(), pipeline.store_path.c_str(),
-      pipeline.store_path.c_str(), pipeline_file.c_str());
+      real ? "Olinda, Brazil: Landsat 7, DEM and synthesized texture" : "synthetic terrain",
+      summary.seconds, pipeline.store_path.c_str(), pipeline_file.c_str(), written.c_str(),
+      tiles_dir.c_str(), pipeline.store_path.c_str(), pipeline.store_path.c_str(),
+      pipeline_file.c_str());
 }
 
 }  // namespace
@@ -142,9 +113,10 @@ void add_demo_command(CLI::App& app) {
   CLI::App* demo = app.add_subcommand(
       "demo",
       "Run the demo: ingest a DEM and a Landsat 7 scene (Olinda, Brazil; fetched by "
-      "scripts/setup.sh from Debian's r-cran-stars), fill voids and derive terrain "
-      "(examples/demo-olinda.json, built in), and write PNG quicklooks. Without that data: a "
-      "synthetic terrain (examples/demo-synthetic.json)");
+      "scripts/setup.sh from Debian's r-cran-stars), fill voids, derive terrain, fit a procedural "
+      "texture to the scene and synthesize it 4x finer than the DEM, write PNG quicklooks and "
+      "textured 3D Tiles (examples/demo-olinda.json, built in). Without that data: a synthetic "
+      "terrain (examples/demo-synthetic.json)");
   demo->add_option("-o,--output", o->output, "Output directory")->capture_default_str();
   demo->add_option("--data", o->data,
                    "Directory holding olinda_dem_utm25s.tif and L7_ETMs.tif (default: "

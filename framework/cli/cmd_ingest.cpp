@@ -1,89 +1,14 @@
 // maquette ingest STORE --layer NAME --as KIND SOURCE...: rasters through GDAL (formats/gdal),
 // vector features and station tables through OGR (formats/vector).
-#include <spdlog/spdlog.h>
-
-#include <array>
 #include <memory>
-#include <optional>
-#include <string>
-#include <vector>
 
 #include "cli/commands.h"
-#include "core/error.h"
-#include "core/region.h"
-#include "gdal/raster_ingest.h"
-#include "vector/vector_ingest.h"
+#include "cli/ingest_job.h"
 
 namespace maquette::cli {
-namespace {
-
-struct IngestCommandOptions {
-  std::string store;
-  std::vector<std::string> sources;
-  std::vector<double> bbox;
-  std::optional<int> level;
-  std::string resampling;
-  RasterIngestOptions raster;
-  std::string lon = "lon", lat = "lat", elevation = "elev_m";
-  std::vector<std::string> values;
-};
-
-void ingest_rasters(IngestCommandOptions& o) {
-  RasterIngestOptions& r = o.raster;
-  r.quiet = global_options().quiet;
-  r.level = o.level;
-  if (!o.bbox.empty()) r.bbox = std::array<double, 4>{o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3]};
-  if (!o.resampling.empty()) r.resampling = parse_resampling(o.resampling);
-  const RasterIngestReport rep = ingest_raster(o.store, o.sources, r);
-  spdlog::info(
-      "layer {}: {} cells at level {}: {} tiles written, {} without data, {} already done; {} "
-      "in {:.2f} s{}",
-      r.layer, rep.cells, rep.level, rep.written, rep.empty, rep.skipped,
-      resampling_name(rep.resampling), rep.seconds, rep.resumed ? " (resumed)" : "");
-}
-
-void ingest_vectors(const IngestCommandOptions& o) {
-  if (o.raster.as == "stations" && o.sources.size() != 1)
-    throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
-  auto store = Store::open(o.store, Store::Mode::Create);
-  if (o.raster.as == "stations") {
-    StationsIngestOptions s;
-    s.layer = o.raster.layer;
-    s.lon_column = o.lon;
-    s.lat_column = o.lat;
-    s.elevation_column = o.elevation;
-    s.value_columns = o.values;
-    const StationsIngestReport rep = ingest_stations(*store, o.sources.front(), s);
-    spdlog::info("artifact {}: {} stations, {} value columns", s.layer, rep.stations,
-                 rep.value_columns.size());
-    return;
-  }
-  FeatureIngestOptions f;
-  f.layer = o.raster.layer;
-  f.level = o.level;
-  f.src_crs = o.raster.src_crs;
-  f.resume = o.raster.resume;
-  // The region as compact cells (at --level, or 8: ~20 km cells, to keep big regions cheap).
-  const int level = o.level.value_or(8);
-  if (!o.bbox.empty()) {
-    check_bbox(o.bbox, "--bbox");
-    f.region = compact(default_grid().cover_bbox(o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3], level,
-                                                 Containment::Overlap));
-  } else if (!o.raster.region.empty()) {
-    f.region = compact(cover_geojson(default_grid(), read_geojson_polygons(o.raster.region), level,
-                                     Containment::Overlap));
-  }
-  const FeatureIngestReport rep = ingest_features(*store, o.sources, f);
-  spdlog::info(
-      "layer {}: {} features at level {} ({} cell entries), {} invalid skipped, {} "
-      "outside the region",
-      f.layer, rep.features, rep.level, rep.cell_entries, rep.invalid_skipped, rep.outside_skipped);
-}
-
-}  // namespace
 
 void add_ingest_command(CLI::App& app) {
-  auto o = std::make_shared<IngestCommandOptions>();
+  auto o = std::make_shared<IngestJob>();
   CLI::App* cmd = app.add_subcommand(
       "ingest",
       "Ingest sources into a store layer: rasters (any GDAL format and CRS, mosaicked and "
@@ -132,11 +57,8 @@ void add_ingest_command(CLI::App& app) {
                   "numeric column)")
       ->delimiter(',');
   cmd->callback([o] {
-    if (o->raster.as == "features" || o->raster.as == "stations") {
-      ingest_vectors(*o);
-      return;
-    }
-    ingest_rasters(*o);
+    o->raster.quiet = global_options().quiet;
+    run_ingest(*o);
   });
 }
 

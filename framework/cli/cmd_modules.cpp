@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/builtin_steps.h"
 #include "cli/commands.h"
 #include "runtime/operator_registry.h"
 
@@ -15,7 +16,7 @@ void add_modules_command(CLI::App& app) {
       "operators with inputs, outputs and parameters");
   modules->add_flag("--json", *as_json, "Print JSON");
   modules->callback([as_json] {
-    const OperatorRegistry& registry = default_registry();
+    const OperatorRegistry& registry = program_registry();
     if (*as_json)
       std::cout << registry.to_json().dump(2) << "\n";
     else

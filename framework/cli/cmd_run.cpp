@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/builtin_steps.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "runtime/operator_registry.h"
@@ -53,7 +54,7 @@ void add_run_command(CLI::App& app) {
     try {
       Pipeline pipeline;
       exchange(*ranks, [&] {  // under MPI, a failure on one rank fails all
-        pipeline = load_pipeline(o->pipeline, default_registry());
+        pipeline = load_pipeline(o->pipeline, program_registry());
         return "";
       });
       const RunSummary summary = run_pipeline(pipeline, options);

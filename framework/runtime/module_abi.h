@@ -12,7 +12,8 @@
 #include "runtime/operator.h"
 
 // 2: operators get the run's store (CellContext::store, StepContext for finish() and regions).
-#define MAQUETTE_ABI_VERSION 2u
+// 3: outputs finer than the inputs (OperatorSpec::refinable, CellContext::refine).
+#define MAQUETTE_ABI_VERSION 3u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -12,6 +12,8 @@ std::string_view operator_kind_name(OperatorKind k) {
       return "reduce";
     case OperatorKind::Region:
       return "region";
+    case OperatorKind::Task:
+      return "task";
   }
   return "unknown";
 }

@@ -2,7 +2,8 @@
 // parameters (a JSON Schema, validated before anything runs) and its kind:
 //  - cell:   one cell at a time, from its input tiles (+ halo) to its output tiles;
 //  - reduce: map each cell to a partial result, merge partials, finish into an artifact;
-//  - region: a whole region at once, as one mosaic split back into cells by the framework.
+//  - region: a whole region at once, as one mosaic split back into cells by the framework;
+//  - task:   the program's built-in steps (ingest, export), run once (task_operator.h).
 // Operators must be deterministic: same inputs and parameters, same bits, for any thread
 // count, order or number of processes.
 #pragma once
@@ -23,7 +24,7 @@ namespace maquette {
 
 using json = nlohmann::json;
 
-enum class OperatorKind { Cell, Reduce, Region };
+enum class OperatorKind { Cell, Reduce, Region, Task };
 std::string_view operator_kind_name(OperatorKind k);
 
 struct InputSpec {
@@ -32,8 +33,9 @@ struct InputSpec {
   bool optional = false;
 };
 
-// An output port. The layer it writes gets dtype/channels/semantics/units from here and its tile
-// size and level from the step's first input (or the pipeline's level).
+// An output port. The layer it writes gets dtype/channels/semantics/units from here and its level
+// and tile size from the step's first input (or the pipeline's level and tile size), the tile size
+// times 2^refine for a step with "refine" (OperatorSpec::refinable).
 struct OutputSpec {
   std::string name;
   std::string description;
@@ -51,6 +53,9 @@ struct OperatorSpec {
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
   int halo = 0;  // pixels of neighbouring tiles each input tile needs on every side
+  // A cell operator that can write its outputs `CellContext::refine` levels finer than its inputs
+  // (a step's "refine"): output tiles of tile_size << refine samples on the same cells.
+  bool refinable = false;
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
   // items, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
@@ -62,7 +67,8 @@ struct OperatorSpec {
 // write from an operator would escape the run records, resume and the ranks' agreement.
 struct CellContext {
   CellId cell;
-  int tile_size = 0;
+  int tile_size = 0;  // of the input tiles (without halo)
+  int refine = 0;     // output tiles have tile_size << refine samples (OperatorSpec::refinable)
   const Grid* grid = nullptr;
   const json* params = nullptr;  // validated, defaults filled in
   const Store* store = nullptr;  // read-only (see above)

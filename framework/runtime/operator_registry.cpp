@@ -1,6 +1,7 @@
 #include "runtime/operator_registry.h"
 
 #include "core/error.h"
+#include "runtime/task_operator.h"
 
 namespace maquette {
 namespace {
@@ -13,6 +14,8 @@ bool kind_matches(const Operator& op) {
       return dynamic_cast<const ReduceOperator*>(&op) != nullptr;
     case OperatorKind::Region:
       return dynamic_cast<const RegionOperator*>(&op) != nullptr;
+    case OperatorKind::Task:
+      return dynamic_cast<const TaskOperator*>(&op) != nullptr;
   }
   return false;
 }
@@ -127,6 +130,10 @@ void OperatorRegistry::print(std::ostream& out) const {
         out << "    input  " << in.name << (in.optional ? " (optional)" : "") << ": "
             << in.description << "\n";
       for (const auto& o : s.outputs) {
+        if (s.kind == OperatorKind::Task) {  // the layer's type comes from the task's params
+          out << "    output " << o.name << ": " << o.description << "\n";
+          continue;
+        }
         out << "    output " << o.name << " " << dtype_name(o.dtype) << " x" << o.channels << " "
             << semantics_name(o.semantics);
         if (!o.units.empty()) out << " [" << o.units << "]";
@@ -138,11 +145,6 @@ void OperatorRegistry::print(std::ostream& out) const {
       print_params(out, s.params_schema);
     }
   }
-}
-
-const OperatorRegistry& default_registry() {
-  static const OperatorRegistry registry = OperatorRegistry::load(module_search_path());
-  return registry;
 }
 
 }  // namespace maquette

@@ -42,7 +42,4 @@ class OperatorRegistry {
   std::map<std::string, Entry> operators_;
 };
 
-// The registry of the modules on module_search_path(), loaded on first use.
-const OperatorRegistry& default_registry();
-
 }  // namespace maquette

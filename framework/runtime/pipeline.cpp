@@ -16,6 +16,9 @@ namespace {
 
 using json = nlohmann::json;
 
+// A tile of 1 sample refined 12 times is 4096, the largest tile (log2_tile_size).
+constexpr int kMaxRefine = 12;
+
 [[noreturn]] void fail(const std::string& context, const std::string& path,
                        const std::string& what) {
   throw Error(context + ": " + (path.empty() ? "" : path + ": ") + what);
@@ -76,7 +79,8 @@ void check_ports(const PipelineStep& step) {
                      [&](auto& o) { return o.name == port; }))
       fail(label, "outputs." + port,
            "unknown output port (the operator has: " + names(spec.outputs) + ")");
-  if (step.outputs.empty()) fail(label, "outputs", "map at least one of: " + names(spec.outputs));
+  if (step.outputs.empty() && !spec.outputs.empty())  // a task may write no layer (export)
+    fail(label, "outputs", "map at least one of: " + names(spec.outputs));
   if (spec.kind == OperatorKind::Reduce && step.outputs.size() != 1)
     fail(label, "outputs", "a reduce operator writes exactly one artifact");
   for (const auto& [port, layer] : step.outputs)
@@ -93,7 +97,7 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   if (!s.contains("op") || !s.at("op").is_string()) fail(where, "op", "missing operator name");
   step.op_name = s.at("op").get<std::string>();
   const std::string label = step.label();
-  check_fields(s, {"op", "inputs", "outputs", "params"}, label, "");
+  check_fields(s, {"op", "inputs", "outputs", "params", "refine"}, label, "");
   step.op = registry.find(step.op_name);
   if (step.op == nullptr)
     fail(label, "op",
@@ -104,6 +108,13 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   step.inputs = port_map(s, "inputs", label);
   step.outputs = port_map(s, "outputs", label);
   check_ports(step);
+  if (s.contains("refine")) {
+    step.refine = integer(s, "refine", 0, kMaxRefine, label);
+    if (step.refine > 0 &&
+        (step.op->spec().kind != OperatorKind::Cell || !step.op->spec().refinable))
+      fail(label, "refine",
+           "the operator writes its outputs at its inputs' resolution only (not refinable)");
+  }
   step.params =
       validate_params(step.op->spec().params_schema, s.value("params", json::object()), label);
   return step;
@@ -129,6 +140,7 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
                         const std::string& base_dir, const OperatorRegistry& registry) {
   Pipeline p;
   p.source = source;
+  p.base_dir = base_dir;
   p.document = parse_json(text, source);
   const json& doc = p.document;
   if (!doc.is_object()) throw Error(source + ": expected a JSON object, got " + doc.dump());

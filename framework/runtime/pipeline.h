@@ -4,7 +4,9 @@
 //    "region": {"bbox": [W, S, E, N]} | {"geojson": <GeoJSON or a file path>} | {"cells": ["N1"]},
 //    "level": 8, "tile_size": 256,
 //    "steps": [{"op": "terrain.derive", "inputs": {"dem": "dem"},
-//               "outputs": {"slope": "slope"}, "params": {"z_factor": 1}}]}
+//               "outputs": {"slope": "slope"}, "params": {"z_factor": 1}},
+//              {"op": "texture.procedural", "inputs": {"dem": "dem"},
+//               "outputs": {"imagery": "texture"}, "refine": 2, "params": {...}}]}
 //
 // Relative paths resolve against the pipeline file's directory. Checks that need the store
 // (input layers exist) are made by plan_run (run_plan.h).
@@ -30,6 +32,7 @@ struct PipelineStep {
   std::map<std::string, std::string> inputs;   // port -> layer
   std::map<std::string, std::string> outputs;  // port -> layer (reduce: artifact name)
   nlohmann::json params;                       // validated, defaults filled in
+  int refine = 0;  // outputs this many levels finer than the inputs (refinable cell operators)
 
   std::string label() const;  // "step 2 (terrain.derive)"
 };
@@ -38,6 +41,7 @@ struct Pipeline {
   nlohmann::json document;  // the pipeline as written: part of the run's identity (--resume)
   std::string source;       // the file name, for messages
   std::string store_path;   // resolved
+  std::string base_dir;     // the pipeline file's directory: relative paths resolve against it
   int level = 0;
   int tile_size = 256;
   std::vector<CellId> region;  // the region's cells at `level`, sorted by id

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "core/error.h"
 #include "core/region.h"
+#include "core/tile.h"
+#include "runtime/artifact_refs.h"
 
 namespace maquette {
 namespace {
@@ -17,9 +20,12 @@ class Planner {
   StepPlan plan(const PipelineStep& step) {
     StepPlan sp;
     sp.step = &step;
+    sp.params = step.params;
     sp.level = pipeline_.level;
     sp.tile_size = pipeline_.tile_size;
     const OperatorSpec& spec = step.op->spec();
+    check_artifact_refs(step);
+    if (spec.kind == OperatorKind::Task) return plan_task(step, std::move(sp));
     for (const auto& in : spec.inputs) {
       const auto it = step.inputs.find(in.name);
       if (it == step.inputs.end()) continue;
@@ -36,18 +42,20 @@ class Planner {
       check_one_face(step, cells);
       sp.mosaic = mosaic_box(step, cells, sp.tile_size);
     }
+    const int out_tile_size = output_tile_size(step, sp.tile_size);
     for (const auto& out : spec.outputs) {
       const auto it = step.outputs.find(out.name);
       if (it == step.outputs.end()) continue;
       if (spec.kind == OperatorKind::Reduce) {
         sp.artifact = it->second;
+        artifacts_.insert(sp.artifact);
         continue;
       }
       LayerInfo info;
       info.name = it->second;
       info.dtype = out.dtype;
       info.channels = out.channels;
-      info.tile_size = sp.tile_size;
+      info.tile_size = out_tile_size;
       info.level = sp.level;
       info.nodata = out.nodata;
       info.semantics = out.semantics;
@@ -66,6 +74,61 @@ class Planner {
     LayerInfo info;
     std::vector<CellId> cells;  // the cells an earlier step writes, sorted
   };
+
+  // A task's layers read must exist; the raster layer it writes is an output like a cell step's
+  // (its tiles within the region are the cells of the steps reading it).
+  StepPlan plan_task(const PipelineStep& step, StepPlan sp) {
+    TaskPlan task;
+    try {
+      task = static_cast<const TaskOperator&>(*step.op).plan(task_context(pipeline_, step));
+    } catch (const std::exception& e) {
+      throw Error(step.label() + ": " + e.what());
+    }
+    for (const auto& [field, name] : task.reads)
+      if (!produced_.count(name) && !written_.count(name) &&
+          !(store_ != nullptr && store_->layer(name)))
+        throw Error(step.label() + ": " + field + ": unknown layer '" + name + "' in " +
+                    pipeline_.store_path);
+    if (!task.written.empty()) written_.insert(task.written);
+    std::vector<CellId> cells = pipeline_.region;  // a task without a raster layer records these
+    if (task.layer) {
+      sp.level = task.layer->level;
+      sp.tile_size = task.layer->tile_size;
+      sp.outputs.emplace(step.outputs.begin()->first, *task.layer);
+      produced_[task.layer->name] = {*task.layer, within_region(task.cells, task.layer->level)};
+      cells = task.cells;
+    }
+    sp.cells = CellPlan(std::move(cells), 1);
+    return sp;
+  }
+
+  // The cells of `cells` (sorted, at `level`) overlapping the region.
+  std::vector<CellId> within_region(const std::vector<CellId>& cells, int level) const {
+    const std::vector<CellId>& region = pipeline_.region;
+    std::vector<CellId> out;
+    if (level >= pipeline_.level) {
+      for (const CellId c : cells)
+        if (std::binary_search(region.begin(), region.end(), c.parent(pipeline_.level)))
+          out.push_back(c);
+      return out;
+    }
+    std::vector<CellId> ancestors;  // sorted, since the region is
+    for (const CellId r : region)
+      if (ancestors.empty() || ancestors.back() != r.parent(level))
+        ancestors.push_back(r.parent(level));
+    std::set_intersection(cells.begin(), cells.end(), ancestors.begin(), ancestors.end(),
+                          std::back_inserter(out));
+    return out;
+  }
+
+  // Artifacts in params ({"$artifact": NAME}) must be in the store or written by an earlier step.
+  void check_artifact_refs(const PipelineStep& step) const {
+    for (const auto& [path, name] : artifact_refs(step.params))
+      if (!artifacts_.count(name) && !written_.count(name) &&
+          !(store_ != nullptr && store_->get_artifact(name)))
+        throw Error(step.label() + ": " + path + ": unknown artifact '" + name + "' (not in " +
+                    pipeline_.store_path + " nor written by an earlier step)");
+  }
 
   LayerInfo input_layer(const PipelineStep& step, const std::string& port, const std::string& name,
                         const StepPlan& sp) const {
@@ -120,6 +183,18 @@ class Planner {
     return cells;
   }
 
+  // The step's input tile size times 2^refine, a valid tile size (log2_tile_size).
+  static int output_tile_size(const PipelineStep& step, int tile_size) {
+    const int size = tile_size << step.refine;  // refine <= 12, tile_size <= 4096: no overflow
+    try {
+      log2_tile_size(size);
+    } catch (const Error& e) {
+      throw Error(step.label() + ": refine: " + std::to_string(step.refine) +
+                  " levels finer than " + std::to_string(tile_size) + "-sample tiles: " + e.what());
+    }
+    return size;
+  }
+
   static void check_one_face(const PipelineStep& step, const std::vector<CellId>& cells) {
     if (!cells.empty() && cells.front().face() != cells.back().face())
       throw Error(step.label() +
@@ -151,9 +226,20 @@ class Planner {
   const Store* store_;
   int threads_;
   std::map<std::string, Produced> produced_;
+  std::set<std::string> artifacts_;  // written by the steps planned so far
+  std::set<std::string> written_;    // features layers and artifacts written by tasks
 };
 
 }  // namespace
+
+TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step) {
+  TaskContext ctx;
+  ctx.store_path = pipeline.store_path;
+  ctx.base_dir = pipeline.base_dir;
+  ctx.params = &step.params;
+  ctx.outputs = &step.outputs;
+  return ctx;
+}
 
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads) {
   Planner planner(pipeline, store, threads);
@@ -168,8 +254,16 @@ void print_plan(const Pipeline& pipeline, const RunPlan& plan, std::ostream& out
       << pipeline.region.size() << " cells\n";
   for (const auto& sp : plan.steps) {
     const OperatorSpec& spec = sp.step->op->spec();
+    if (spec.kind == OperatorKind::Task && sp.outputs.empty()) {  // export: writes files only
+      out << sp.step->label() << ": task, writes no layer\n";
+      continue;
+    }
     out << sp.step->label() << ": " << operator_kind_name(spec.kind) << " operator, "
-        << sp.cells.size() << " cells at level " << sp.level << "\n";
+        << sp.cells.size() << " cells at level " << sp.level
+        << (sp.step->refine > 0 ? ", outputs refined " + std::to_string(sp.step->refine) +
+                                      (sp.step->refine == 1 ? " level" : " levels")
+                                : std::string())
+        << "\n";
     for (const auto& [port, layer] : sp.inputs)
       out << "  reads  " << layer.name << " (" << port << ")\n";
     for (const auto& [port, layer] : sp.outputs)

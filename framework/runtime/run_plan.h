@@ -10,6 +10,7 @@
 
 #include "runtime/cell_plan.h"
 #include "runtime/pipeline.h"
+#include "runtime/task_operator.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -26,13 +27,17 @@ inline constexpr int64_t kMaxMosaicSide = 16384;
 
 struct StepPlan {
   const PipelineStep* step = nullptr;
+  // The step's params as the operator sees them: step->params, with the artifacts they refer to
+  // ({"$artifact": NAME}) pasted in by the runner just before the step runs.
+  json params;
   int level = 0;  // level of the cells (and tiles) the step reads and writes
   int tile_size = 0;
   std::vector<std::pair<std::string, LayerInfo>> inputs;  // port -> layer, in the spec's order
   std::map<std::string, LayerInfo> outputs;               // port -> raster layer (cell, region)
   std::string artifact;                                   // reduce: the artifact written
   // A step with inputs processes the first input's tiles within the region; one without, the
-  // region's cells at the pipeline level.
+  // region's cells at the pipeline level; a task its raster layer's tiles, or the region's cells
+  // (its run records).
   CellPlan cells;
   MosaicBox mosaic;  // region steps
 };
@@ -40,6 +45,9 @@ struct StepPlan {
 struct RunPlan {
   std::vector<StepPlan> steps;
 };
+
+// What a task step sees of the pipeline (the runner adds threads, resume and quiet).
+TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 
 // Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
 // store does not exist yet) nor written by an earlier step, inputs of one step at different

@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/error.h"
+#include "runtime/artifact_refs.h"
+#include "runtime/params_schema.h"
 #include "runtime/ranks.h"
 #include "runtime/run_plan.h"
 #include "runtime/step_exec.h"
@@ -91,8 +94,13 @@ class Runner {
         }
         return "";
       });
-      for (size_t i = 0; i < plan.steps.size(); ++i)
+      for (size_t i = 0; i < plan.steps.size(); ++i) {
+        exchange(ranks_, [&] {  // every rank reads the artifacts; a failure fails all
+          paste_artifacts(plan.steps[i]);
+          return "";
+        });
         summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
+      }
     } catch (const std::exception& e) {
       fail(summary.run_id, std::string("failed: ") + e.what());
       throw;
@@ -114,7 +122,11 @@ class Runner {
     // Everything is validated before the store is created or written.
     store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
-    if (!store_) store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
+    if (!store_) {
+      if (const auto dir = std::filesystem::path(pipeline_.store_path).parent_path(); !dir.empty())
+        std::filesystem::create_directories(dir);
+      store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
+    }
     // Creating every output layer first also checks them against existing layers before any
     // cell is computed.
     for (const auto& sp : plan.steps)
@@ -157,6 +169,16 @@ class Runner {
     });
   }
 
+  // The artifacts the step's params refer to, now written by the earlier steps, pasted in and
+  // validated against the operator's schema.
+  void paste_artifacts(StepPlan& sp) const {
+    const PipelineStep& step = *sp.step;
+    if (artifact_refs(step.params).empty()) return;
+    sp.params = validate_params(step.op->spec().params_schema,
+                                maquette::paste_artifacts(step.params, *store_, step.label()),
+                                step.label());
+  }
+
   StepSummary run_step(const StepPlan& sp, const std::vector<CellId>& done, int64_t run_id) {
     const auto start = Clock::now();
     StepSummary s{sp.step->label(), int64_t(sp.cells.size()), 0, 0, 0.0};
@@ -174,10 +196,15 @@ class Runner {
         return "";
       });
     } else if (done.empty()) {
-      // Reduce and region steps record all their cells at once, when complete.
+      // Reduce, region and task steps record all their cells at once, when complete.
       s.computed = s.cells;
       if (kind == OperatorKind::Reduce)
         run_reduce(sp, io);
+      else if (kind == OperatorKind::Task)
+        exchange(ranks_, [&] {
+          if (ranks_.root()) run_task(sp, io);
+          return "";
+        });
       else
         exchange(ranks_, [&] {
           // A region operator sees the whole mosaic at once: the root runs it alone.
@@ -216,6 +243,21 @@ class Runner {
       finish_reduce_step(sp, partials, io);
       return "";
     });
+  }
+
+  // A task runs on the root (an ingest writes its layer with its own threads).
+  void run_task(const StepPlan& sp, StepIO& io) const {
+    TaskContext ctx = task_context(pipeline_, *sp.step);
+    ctx.params = &sp.params;
+    ctx.threads = threads_;
+    ctx.resume = options_.resume;
+    ctx.quiet = quiet_;
+    try {
+      static_cast<const TaskOperator&>(*sp.step->op).run(ctx);
+    } catch (const std::exception& e) {
+      throw Error(sp.step->label() + " failed: " + e.what());
+    }
+    io.write_done(sp.cells.cells());
   }
 
   // The step's output layers are shared out among the ranks (each layer's overviews depend on

@@ -5,7 +5,8 @@ namespace maquette {
 namespace {
 
 CellContext context(const StepPlan& plan, const StepIO& io, CellId cell) {
-  return CellContext{cell, plan.tile_size, &default_grid(), &plan.step->params, &io.store()};
+  return CellContext{cell,         plan.tile_size, plan.step->refine, &default_grid(),
+                     &plan.params, &io.store()};
 }
 
 }  // namespace
@@ -42,9 +43,9 @@ void finish_reduce_step(const StepPlan& plan, const std::vector<json>& partials,
     json merged;
     for (const json& p : partials)
       if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);
-    Artifact artifact = op.finish(merged, {&default_grid(), &plan.step->params, &io.store()});
+    Artifact artifact = op.finish(merged, {&default_grid(), &plan.params, &io.store()});
     artifact.name = plan.artifact;
-    io.write_artifact(artifact, plan.cells.cells());
+    io.write_done(plan.cells.cells(), &artifact);
   } catch (const std::exception& e) {
     throw Error(plan.step->label() + " failed: " + e.what());
   } catch (...) {

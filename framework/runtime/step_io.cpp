@@ -42,14 +42,14 @@ CellData StepIO::load(CellId cell, int halo) {
     };
     data.inputs[port] = assemble_halo(default_grid(), cell, plan_.tile_size, halo, fetch);
   }
-  data.outputs = blank_outputs(plan_.tile_size);
+  data.outputs = blank_outputs();
   return data;
 }
 
 TileSet StepIO::blank_outputs(int size) const {
   TileSet tiles;
   for (const auto& [port, layer] : plan_.outputs)
-    tiles.emplace(port, Tile<float>(size, layer.channels, 0, NAN));
+    tiles.emplace(port, Tile<float>(size > 0 ? size : layer.tile_size, layer.channels, 0, NAN));
   return tiles;
 }
 
@@ -68,9 +68,9 @@ void StepIO::write(std::span<const CellOutput> cells) {
   batch.commit();
 }
 
-void StepIO::write_artifact(const Artifact& artifact, std::span<const CellId> cells) {
+void StepIO::write_done(std::span<const CellId> cells, const Artifact* artifact) {
   Store::Batch batch(store_);
-  batch.put_artifact(artifact);
+  if (artifact != nullptr) batch.put_artifact(*artifact);
   for (const CellId cell : cells) batch.mark_done(run_id_, plan_.step->index, cell);
   batch.commit();
 }

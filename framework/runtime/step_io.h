@@ -41,13 +41,13 @@ class StepIO {
   const Store& store() const { return store_; }
   // Tiles read and decoded so far (for tests of the cache).
   int64_t decoded() const { return decoded_; }
-  // NaN tiles of `size` pixels for the step's mapped outputs.
-  TileSet blank_outputs(int size) const;
+  // NaN tiles for the step's mapped outputs, of `size` pixels (0: of their layers' tile size).
+  TileSet blank_outputs(int size = 0) const;
 
   // One batch: the output tiles of all `cells` and their run records.
   void write(std::span<const CellOutput> cells);
-  // One batch: the artifact and the run records of all `cells`.
-  void write_artifact(const Artifact& artifact, std::span<const CellId> cells);
+  // One batch: the run records of all `cells` (a task's, a reduce's with its artifact).
+  void write_done(std::span<const CellId> cells, const Artifact* artifact = nullptr);
 
  private:
   Store& store_;

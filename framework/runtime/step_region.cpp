@@ -49,7 +49,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   }
   output.layers = io.blank_outputs(side);
   try {
-    op.run({&default_grid(), &plan.step->params, &io.store()}, input, output);
+    op.run({&default_grid(), &plan.params, &io.store()}, input, output);
   } catch (const std::exception& e) {
     throw Error(plan.step->label() + " failed on the region's mosaic: " + e.what());
   } catch (...) {

@@ -1,7 +1,12 @@
 // Batches: writes checked and encoded by the caller's thread, applied in one transaction.
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
 #include <set>
 
 #include "store/codec.h"
+#include "store/downsample.h"
 #include "store/store_impl.h"
 
 namespace maquette {
@@ -17,7 +22,15 @@ struct Store::Batch::Pending {
     int step;
     int64_t key;  // a cell id or another key
   };
-  std::vector<TileWrite> tiles;
+  // The tiles of a parent's children written so far in this batch. Once all four are, the
+  // parent's overview depends on nothing else: it is built and encoded here, from the tiles in
+  // memory, and written by commit() in place of a stale mark (update_overviews would decode the
+  // four tiles again to build the same bytes).
+  struct Siblings {
+    std::array<std::optional<RawTile>, 4> tiles;  // by child digit
+  };
+  std::map<std::pair<int64_t, CellId>, Siblings> siblings;  // by layer id and parent
+  std::vector<TileWrite> tiles, overviews;
   std::vector<FeatureWrite> features;
   std::vector<Artifact> artifacts;
   std::vector<Done> done;
@@ -45,7 +58,17 @@ void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile
                 " tile of " + std::to_string(tile.bytes.size()) + " bytes, the layer holds " +
                 std::to_string(l.tile_size) + "x" + std::to_string(l.tile_size) + "x" +
                 std::to_string(l.channels) + " " + std::string(dtype_name(l.dtype)));
-  pending_->tiles.push_back({e.id, cell, encode_tile(tile, parse_codec(l.codec))});
+  const Codec codec = parse_codec(l.codec);
+  pending_->tiles.push_back({e.id, cell, encode_tile(tile, codec)});
+  if (l.level == 0 || l.tile_size < 2) return;  // no parent, or tiles that cannot be halved
+  const auto key = std::make_pair(e.id, cell.parent());
+  auto& children = pending_->siblings[key].tiles;
+  children[cell.digit(l.level)] = tile;
+  if (!std::ranges::all_of(children, [](const auto& t) { return t.has_value(); })) return;
+  const RawTile overview =
+      build_overview({&*children[0], &*children[1], &*children[2], &*children[3]}, l);
+  pending_->overviews.push_back({e.id, cell.parent(), encode_tile(overview, codec)});
+  pending_->siblings.erase(key);
 }
 
 void Store::Batch::put_artifact(const Artifact& artifact) {
@@ -86,6 +109,8 @@ void Store::Batch::commit() {
       mark_parent_stale(c, t.layer, t.cell);
       layers.insert(t.layer);
     }
+    // After the tiles: writing an overview clears the stale mark its children just set.
+    for (const auto& o : p.overviews) write_overview(c, o.layer, o.cell, o.blob);
     for (const auto& f : p.features) {
       write_feature(c, f);
       layers.insert(f.layer);

@@ -23,10 +23,13 @@ constexpr size_t kHeaderSize = 16;
 constexpr uint32_t kMaxChannels = 1024;
 
 // One compression and one decompression context per thread: creating them per tile costs more
-// than compressing a small tile.
+// than compressing a small tile. Likewise the shuffled samples and the compressed frame go
+// through buffers kept per thread (grown to the largest tile seen): fresh 64-256 KiB vectors
+// would be zeroed and page-faulted in for every tile.
 struct ZstdContexts {
   std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> c{ZSTD_createCCtx(), &ZSTD_freeCCtx};
   std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> d{ZSTD_createDCtx(), &ZSTD_freeDCtx};
+  std::vector<std::byte> shuffled, frame;
 };
 ZstdContexts& zstd_contexts() {
   thread_local ZstdContexts contexts;
@@ -49,12 +52,13 @@ Codec parse_codec(std::string_view text) {
     const std::string_view digits = text.substr(5);
     int level = 0;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), level);
-    if (ec == std::errc() && end == digits.data() + digits.size() && level >= 1 &&
-        level <= ZSTD_maxCLevel())
+    if (ec == std::errc() && end == digits.data() + digits.size() && level != 0 &&
+        level >= Codec::kMinLevel && level <= ZSTD_maxCLevel())
       return {Codec::Kind::Zstd, level};
   }
   throw Error("unknown codec '" + std::string(text) + "' (expected raw, zstd or zstd:LEVEL with " +
-              "LEVEL in 1.." + std::to_string(ZSTD_maxCLevel()) + ")");
+              "LEVEL in " + std::to_string(Codec::kMinLevel) + "..-1 or 1.." +
+              std::to_string(ZSTD_maxCLevel()) + ")");
 }
 
 namespace {
@@ -115,17 +119,18 @@ std::vector<std::byte> encode_tile(const RawTile& tile, const Codec& codec) {
     std::memcpy(blob.data() + kHeaderSize, tile.bytes.data(), raw_size);
     return blob;
   }
-  std::vector<std::byte> shuffled(raw_size);
+  ZstdContexts& z = zstd_contexts();
+  if (z.shuffled.size() < raw_size) z.shuffled.resize(raw_size);
+  const std::span<std::byte> shuffled(z.shuffled.data(), raw_size);
   shuffle_bytes(tile.bytes, width, shuffled);
-  ZSTD_CCtx* cctx = zstd_contexts().c.get();
+  ZSTD_CCtx* cctx = z.c.get();
   ZSTD_CCtx_reset(cctx, ZSTD_reset_session_and_parameters);
   ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, codec.level);
   ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
-  blob.resize(kHeaderSize + ZSTD_compressBound(raw_size));
-  const size_t n = ZSTD_compress2(cctx, blob.data() + kHeaderSize, blob.size() - kHeaderSize,
-                                  shuffled.data(), shuffled.size());
+  if (z.frame.size() < ZSTD_compressBound(raw_size)) z.frame.resize(ZSTD_compressBound(raw_size));
+  const size_t n = ZSTD_compress2(cctx, z.frame.data(), z.frame.size(), shuffled.data(), raw_size);
   if (ZSTD_isError(n)) throw Error(std::string("zstd compression failed: ") + ZSTD_getErrorName(n));
-  blob.resize(kHeaderSize + n);
+  blob.insert(blob.end(), z.frame.begin(), z.frame.begin() + std::ptrdiff_t(n));
   return blob;
 }
 
@@ -161,9 +166,11 @@ RawTile decode_tile(std::span<const std::byte> blob) {
   if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != raw_size ||
       ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size())
     throw Error("zstd frame does not hold " + std::to_string(raw_size) + " bytes");
-  std::vector<std::byte> shuffled(raw_size);
-  const size_t n = ZSTD_decompressDCtx(zstd_contexts().d.get(), shuffled.data(), shuffled.size(),
-                                       payload.data(), payload.size());
+  ZstdContexts& z = zstd_contexts();
+  if (z.shuffled.size() < raw_size) z.shuffled.resize(raw_size);
+  const std::span<std::byte> shuffled(z.shuffled.data(), raw_size);
+  const size_t n =
+      ZSTD_decompressDCtx(z.d.get(), shuffled.data(), raw_size, payload.data(), payload.size());
   if (ZSTD_isError(n)) throw Error(std::string("zstd: ") + ZSTD_getErrorName(n));
   if (n != raw_size) throw Error("zstd frame decoded to " + std::to_string(n) + " bytes");
   tile.bytes.resize(raw_size);

@@ -73,23 +73,26 @@ bool Store::Impl::rebuild_stale(const LayerEntry& e, int level) {
       });
     });
 
-    for (size_t i = 0; i < cells.size(); ++i) {
-      const int64_t id = int64_t(cells[i].id());
-      c.query("INSERT OR REPLACE INTO overviews(layer, level, cell, blob) VALUES(?, ?, ?, ?)")
-          .bind_int(1, e.id)
-          .bind_int(2, level)
-          .bind_int(3, id)
-          .bind_blob(4, blobs[i])
-          .run();
-      c.query("DELETE FROM stale_overviews WHERE layer = ? AND level = ? AND cell = ?")
-          .bind_int(1, e.id)
-          .bind_int(2, level)
-          .bind_int(3, id)
-          .run();
-      mark_parent_stale(c, e.id, cells[i]);
-    }
+    for (size_t i = 0; i < cells.size(); ++i) write_overview(c, e.id, cells[i], blobs[i]);
   });
   return any;
+}
+
+void write_overview(sqlite::Connection& conn, int64_t layer_id, CellId cell,
+                    std::span<const std::byte> blob) {
+  const int64_t id = int64_t(cell.id());
+  conn.query("INSERT OR REPLACE INTO overviews(layer, level, cell, blob) VALUES(?, ?, ?, ?)")
+      .bind_int(1, layer_id)
+      .bind_int(2, cell.level())
+      .bind_int(3, id)
+      .bind_blob(4, blob)
+      .run();
+  conn.query("DELETE FROM stale_overviews WHERE layer = ? AND level = ? AND cell = ?")
+      .bind_int(1, layer_id)
+      .bind_int(2, cell.level())
+      .bind_int(3, id)
+      .run();
+  mark_parent_stale(conn, layer_id, cell);
 }
 
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell) {

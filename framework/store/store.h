@@ -102,6 +102,9 @@ class Store {
   // group of cells; nothing is visible to readers or survives a crash until commit().
   // Writes are checked and encoded when made (in the calling thread, so batches of several
   // threads compress in parallel) and applied by commit() in one BEGIN IMMEDIATE transaction.
+  // A batch that writes all four children of a parent also writes the parent's overview (built
+  // from them in memory) rather than marking it stale; it keeps a copy of each tile whose
+  // siblings it has not all seen, so memory grows with the tiles a batch holds.
   class Batch {
    public:
     explicit Batch(Store& store);  // throws if the store is read-only

@@ -110,6 +110,10 @@ LayerStats feature_stats(sqlite::Connection& conn, const LayerEntry& layer);
 
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
+// Writes (or replaces) the overview tile of `cell`, which is then no longer stale, and marks its
+// parent stale (overviews.cpp).
+void write_overview(sqlite::Connection& conn, int64_t layer_id, CellId cell,
+                    std::span<const std::byte> blob);
 
 // "cell Q2013" for error messages.
 std::string cell_text(CellId cell);

@@ -2,11 +2,13 @@
 // optionally position), written as the coefficients artifact that climate.regionalize applies.
 // The cells only tell which stations lie outside the step's region; the fit is made once, in
 // finish().
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/lonlat_bounds.h"
 #include "operators.h"
 #include "station_fit.h"
 #include "store_inputs.h"
@@ -75,7 +77,9 @@ class FitStations : public ReduceOperator {
     std::vector<Station> stations =
         parse_stations(read_json_artifact(store, name, kOp, "stations"),
                        kOp + ": params.stations: artifact '" + name + "'");
-    const int64_t outside = drop_outside(stations, merged, params.at("outside_region"));
+    const std::vector<CellId> region = region_cells(merged);
+    check_overlap(stations, region, name);
+    const int64_t outside = drop_outside(stations, region, params.at("outside_region"));
     const auto columns = params.at("columns").get<std::vector<std::string>>();
     if (columns.empty()) throw Error(kOp + ": params.columns: no column given");
     check_columns(stations, columns);
@@ -101,13 +105,46 @@ class FitStations : public ReduceOperator {
   }
 
  private:
-  // Stations outside the step's cells: counted, and kept, dropped or refused per `policy`.
-  static int64_t drop_outside(std::vector<Station>& stations, const json& cells,
-                              const std::string& policy) {
-    if (!cells.is_array() || cells.empty()) return 0;
+  // The step's cells, sorted (empty for a step without cells).
+  static std::vector<CellId> region_cells(const json& merged) {
     std::vector<CellId> region;
-    for (const auto& id : cells) region.emplace_back(id.get<uint64_t>());
+    if (merged.is_array())
+      for (const auto& id : merged) region.emplace_back(id.get<uint64_t>());
     std::sort(region.begin(), region.end());
+    return region;
+  }
+
+  // Stations that all lie away from the step's region would give a fit extrapolated onto it
+  // from elsewhere (e.g. a DEM of another area): refused. Their bounding box must meet the
+  // region's lon/lat bounds; a region only partly covered by the stations is fitted.
+  static void check_overlap(const std::vector<Station>& stations, const std::vector<CellId>& region,
+                            const std::string& name) {
+    if (region.empty() || stations.empty()) return;
+    LonLatBounds s{180, 90, -180, -90};
+    for (const Station& st : stations) {
+      s.west = std::min(s.west, st.lon);
+      s.east = std::max(s.east, st.lon);
+      s.south = std::min(s.south, st.lat);
+      s.north = std::max(s.north, st.lat);
+    }
+    const LonLatBounds r = lonlat_bounds(default_grid(), region);
+    // r.east may exceed 180 (a region across the antimeridian): try the stations shifted by 360.
+    const auto meets = [&](double shift) {
+      return s.west + shift <= r.east && s.east + shift >= r.west;
+    };
+    if ((meets(0) || meets(360)) && s.south <= r.north && s.north >= r.south) return;
+    const auto box = [](const LonLatBounds& b) {
+      return fmt::format("lon {:g}..{:g}, lat {:g}..{:g}", b.west, b.east, b.south, b.north);
+    };
+    throw Error(kOp + ": params.stations: the " + std::to_string(stations.size()) +
+                " stations of '" + name + "' (" + box(s) + ") do not overlap the step's region (" +
+                box(r) + "): the fit would be extrapolated from elsewhere");
+  }
+
+  // Stations outside the step's cells: counted, and kept, dropped or refused per `policy`.
+  static int64_t drop_outside(std::vector<Station>& stations, const std::vector<CellId>& region,
+                              const std::string& policy) {
+    if (region.empty()) return 0;
     const int level = region.front().level();
     const auto inside = [&](const Station& s) {
       const CellId c = default_grid().cell_from_point({s.lon, s.lat}, level);

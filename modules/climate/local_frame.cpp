@@ -2,60 +2,29 @@
 
 #include <cmath>
 
-#include "core/halo.h"
-
 namespace maquette::climate {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
 constexpr double kRad = M_PI / 180;
-
-// WGS84 ECEF position (metres) of a point on the ellipsoid.
-Vec3 ecef(LonLat p) {
-  constexpr double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
-  const double lat = p.lat * kRad, lon = p.lon * kRad;
-  const double n = a / std::sqrt(1 - e2 * std::sin(lat) * std::sin(lat));
-  return {n * std::cos(lat) * std::cos(lon), n * std::cos(lat) * std::sin(lon),
-          n * (1 - e2) * std::sin(lat)};
-}
-
-Step project(const Vec3& d, LonLat p) {
-  const double lat = p.lat * kRad, lon = p.lon * kRad;
-  const Vec3 east{-std::sin(lon), std::cos(lon), 0};
-  const Vec3 north{-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)};
-  return {d[0] * east[0] + d[1] * east[1] + d[2] * east[2],
-          d[0] * north[0] + d[1] * north[1] + d[2] * north[2]};
-}
 
 }  // namespace
 
 LocalFrames::LocalFrames(const Grid& grid, CellId cell, int size)
     : size_(size), frames_(size_t(size) * size_t(size)) {
-  const int level = cell.level() + log2_tile_size(size);
-  const int stride = size + 2;
-  std::vector<LonLat> where(size_t(stride) * stride);
-  std::vector<char> known(where.size(), 0);
-  for (int row = -1; row <= size; ++row)
-    for (int col = -1; col <= size; ++col) {
-      const auto source = pixel_source(grid, cell, size, col, row);
-      if (!source) continue;
-      const size_t i = size_t(row + 1) * stride + size_t(col + 1);
-      where[i] = pixel_centre(grid, *source, level);
-      known[i] = 1;
-    }
-  const auto index = [&](int col, int row) { return size_t(row + 1) * stride + size_t(col + 1); };
+  const TileFrame tile(grid, cell, size);
+  // Half the ECEF difference of the two neighbours along an axis: a central difference.
+  const auto half = [](const Vec3& a, const Vec3& b) {
+    return Vec3{(b[0] - a[0]) / 2, (b[1] - a[1]) / 2, (b[2] - a[2]) / 2};
+  };
   for (int row = 0; row < size; ++row)
     for (int col = 0; col < size; ++col) {
-      const size_t l = index(col - 1, row), r = index(col + 1, row);
-      const size_t u = index(col, row - 1), d = index(col, row + 1);
-      if (!known[l] || !known[r] || !known[u] || !known[d]) continue;
-      const LonLat centre = where[index(col, row)];
-      const Vec3 pl = ecef(where[l]), pr = ecef(where[r]), pu = ecef(where[u]), pd = ecef(where[d]);
+      if (!tile.known(col - 1, row) || !tile.known(col + 1, row) || !tile.known(col, row - 1) ||
+          !tile.known(col, row + 1))
+        continue;
       PixelFrame& f = frames_[size_t(row) * size + col];
-      f.lat = centre.lat;
-      f.col = project({(pr[0] - pl[0]) / 2, (pr[1] - pl[1]) / 2, (pr[2] - pl[2]) / 2}, centre);
-      f.row = project({(pd[0] - pu[0]) / 2, (pd[1] - pu[1]) / 2, (pd[2] - pu[2]) / 2}, centre);
+      f.lat = tile.position(col, row).lat;
+      f.col = tile.tangent(col, row, half(tile.ecef(col - 1, row), tile.ecef(col + 1, row)));
+      f.row = tile.tangent(col, row, half(tile.ecef(col, row - 1), tile.ecef(col, row + 1)));
       f.valid = true;
     }
 }

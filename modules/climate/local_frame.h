@@ -1,25 +1,20 @@
-// The local metric frame of each pixel of a tile with a halo, computed from the true pixel
-// positions (core/halo.h pixel_source + pixel_centre, so turned halo pixels from another face
-// sit where they really are): latitude, the east/north metres of one column and one row step,
-// and from them the DEM gradient and straight-line marches along an azimuth.
-//
-// This is the climate module's own minimal version of what terrain.derive does (central
-// differences instead of Horn's 3x3 fit; terrain's geometry code lives in the terrain module,
-// which modules cannot share).
+// The local metric frame of each pixel of a tile with a halo, from the tile's true geometry
+// (core/tile_frame.h): latitude, the east/north metres of one column and one row step (central
+// differences of the neighbours' positions), and from them the DEM gradient and straight-line
+// marches along an azimuth. terrain.derive fits Horn's 3x3 plane instead; climate only needs
+// the central-difference gradient.
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "core/grid.h"
 #include "core/tile.h"
+#include "core/tile_frame.h"
 
 namespace maquette::climate {
 
 // Metres east and north of one step along a tile axis, in the pixel's tangent plane.
-struct Step {
-  double east = 0, north = 0;
-};
+using Step = EastNorth;
 
 struct PixelFrame {
   double lat = 0;      // degrees

@@ -16,7 +16,9 @@ struct Station {
   nlohmann::json values;            // column -> number or null
 };
 
-// Throws maquette::Error prefixed with `where` for a document that is not a stations artifact.
+// Throws maquette::Error prefixed with `where`, naming the station and field, for a document that
+// is not a stations artifact, a lon/lat that is not a number within [-180, 180] x [-90, 90], or an
+// elevation or value that is neither a finite number nor null (null or absent: missing).
 std::vector<Station> parse_stations(const nlohmann::json& artifact, const std::string& where);
 
 // The value of `column` at a station; nullopt when null or absent.

@@ -1,13 +1,14 @@
 // terrain.derive: slope, aspect, profile curvature, hillshade and normals of a DEM, in true
-// metres on the ellipsoid (see tile_geometry.h and surface_fit.h).
+// metres on the ellipsoid (see core/tile_frame.h, neighbourhood.h and surface_fit.h).
 #include <cmath>
 #include <limits>
 
 #include "core/error.h"
+#include "neighbourhood.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "surface_fit.h"
 #include "surface_measures.h"
-#include "tile_geometry.h"
 
 namespace maquette::terrain {
 namespace {
@@ -39,17 +40,9 @@ OperatorSpec derive_spec() {
       {"additionalProperties", false},
       {"properties",
        {{"azimuth",
-         {{"type", "number"},
-          {"minimum", 0},
-          {"maximum", 360},
-          {"default", 315},
-          {"description", "hillshade light direction, degrees clockwise from north"}}},
+         number_param(0, 360, 315, "hillshade light direction, degrees clockwise from north")},
         {"altitude",
-         {{"type", "number"},
-          {"minimum", 0},
-          {"maximum", 90},
-          {"default", 45},
-          {"description", "hillshade light altitude, degrees above the horizon"}}},
+         number_param(0, 90, 45, "hillshade light altitude, degrees above the horizon")},
         {"z_factor",
          {{"type", "number"},
           {"minimum", 0},
@@ -79,12 +72,12 @@ class Derive : public CellOperator {
     Tile<float>* shade = output(data, "hillshade", size, 1);
     Tile<float>* normal = output(data, "normal", size, 3);
 
-    const TileGeometry geometry(*ctx.grid, ctx.cell, size);
+    const TileFrame frame(*ctx.grid, ctx.cell, size);
     Neighbourhood offsets;
     Heights h;
     for (int row = 0; row < size; ++row)
       for (int col = 0; col < size; ++col) {
-        if (!heights(dem, col, row, h) || !geometry.neighbourhood(col, row, offsets)) continue;
+        if (!heights(dem, col, row, h) || !neighbourhood(frame, col, row, offsets)) continue;
         const Gradient g = fit_gradient(offsets, h);
         if (slope) slope->at(col, row) = float(slope_degrees(g));
         if (aspect) aspect->at(col, row) = float(aspect_degrees(g));

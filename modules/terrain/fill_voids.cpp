@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "void_fill.h"
 
 namespace maquette::terrain {
@@ -41,13 +42,9 @@ OperatorSpec fill_voids_spec() {
            "biharmonic: thin plate, smooth (C1) across the void's border; laplace: membrane, "
            "stays within the border's range"}}},
         {"max_void_px",
-         {{"type", "integer"},
-          {"minimum", 1},
-          {"maximum", kHalo - 1},
-          {"default", kHalo - 1},
-          {"description",
-           "largest void filled, pixels along its bounding box's longer side; larger voids "
-           "stay nodata"}}}}}};
+         integer_param(1, kHalo - 1, kHalo - 1,
+                       "largest void filled, pixels along its bounding box's longer side; larger "
+                       "voids stay nodata")}}}};
   return s;
 }
 

@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "tile_geometry.h"
+#include "neighbourhood.h"
 
 namespace maquette::terrain {
 

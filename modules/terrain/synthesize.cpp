@@ -1,6 +1,7 @@
 // terrain.synthesize: the synthetic terrain of synthetic_terrain.h sampled at the pixel centres.
 #include "core/halo.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "synthetic_terrain.h"
 
 namespace maquette::terrain {
@@ -17,24 +18,13 @@ OperatorSpec synthesize_spec() {
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
+      // Relief beyond 20 km is no longer terrain, and a wavelength beyond 20000 km is longer than
+      // half the globe's circumference.
       {"properties",
        {{"seed", {{"type", "integer"}, {"default", 1}, {"description", "noise seed"}}},
-        {"amplitude_m",
-         {{"type", "number"},
-          {"minimum", 0},
-          {"default", 2500},
-          {"description", "scale of the relief, metres"}}},
-        {"octaves",
-         {{"type", "integer"},
-          {"minimum", 1},
-          {"maximum", 24},
-          {"default", 7},
-          {"description", "noise octaves"}}},
-        {"feature_km",
-         {{"type", "number"},
-          {"minimum", 0.001},
-          {"default", 400},
-          {"description", "wavelength of the coarsest octave, km"}}}}}};
+        {"amplitude_m", number_param(0, 20000, 2500, "scale of the relief, metres")},
+        {"octaves", integer_param(1, 24, 7, "noise octaves")},
+        {"feature_km", number_param(0.001, 20000, 400, "wavelength of the coarsest octave, km")}}}};
   return s;
 }
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "tile_geometry.h"
+#include "core/ecef.h"
 
 namespace maquette::terrain {
 

@@ -2,13 +2,17 @@
 // the snow rule (snow below a minimal altitude is cloud, paper 6) and a land-cover exclusion.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/error.h"
 #include "hs_classes.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::texture {
 namespace {
+
+constexpr int kMaxMajorityRadius = 16;  // the operator's halo
 
 json range_schema(double lo, double hi) {
   return {{"type", "array"}, {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}}};
@@ -43,12 +47,18 @@ OperatorSpec classify_spec() {
                          {"name", {{"type", "string"}}},
                          {"hue", {{"type", "number"}, {"minimum", 0}, {"maximum", 360}}},
                          {"saturation", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
+                         {"value", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
                          {"pixels", {{"type", "integer"}}}}}};
+  s.halo = kMaxMajorityRadius;
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
       {"properties",
-       {{"boxes", {{"type", "array"}, {"items", box}, {"default", json::array()}}},
+       {{"majority_radius",
+         integer_param(0, kMaxMajorityRadius, 0,
+                       "each class pixel takes the most frequent class of the (2r+1)^2 window "
+                       "around it (minimum mapping unit; 0: none)")},
+        {"boxes", {{"type", "array"}, {"items", box}, {"default", json::array()}}},
         {"centres", {{"type", "array"}, {"items", centre}, {"default", json::array()}}},
         {"snow_class", {{"type", "integer"}, {"minimum", -1}, {"maximum", 254}, {"default", -1}}},
         {"snow_min_altitude_m", {{"type", "number"}, {"default", 0}}},
@@ -56,6 +66,42 @@ OperatorSpec classify_spec() {
          {{"type", "array"}, {"items", {{"type", "integer"}}}, {"default", json::array()}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
   return s;
+}
+
+// Majority filter of `cls` (side x side, -1: no class) over the n x n pixels inside its ring of
+// `radius`: each classified pixel takes the most frequent class of the (2 radius + 1)^2 window
+// around it; ties keep its own class when it is among the most frequent, else the lowest id.
+// One summed-area table per class present, so the cost does not grow with the radius.
+std::vector<int> majority(const std::vector<int>& cls, int n, int radius) {
+  const size_t side = size_t(n + 2 * radius), w = side + 1;
+  std::vector<int> ids;
+  for (const int k : cls)
+    if (k >= 0 && std::find(ids.begin(), ids.end(), k) == ids.end()) ids.push_back(k);
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::vector<uint32_t>> sums(ids.size(), std::vector<uint32_t>(w * w, 0));
+  for (size_t i = 0; i < ids.size(); ++i)
+    for (size_t r = 0; r < side; ++r)
+      for (size_t c = 0; c < side; ++c)
+        sums[i][(r + 1) * w + c + 1] = uint32_t(cls[r * side + c] == ids[i]) +
+                                       sums[i][r * w + c + 1] + sums[i][(r + 1) * w + c] -
+                                       sums[i][r * w + c];
+  std::vector<int> out(size_t(n) * size_t(n), -1);
+  const size_t d = size_t(2 * radius + 1);
+  for (size_t r = 0; r < size_t(n); ++r)
+    for (size_t c = 0; c < size_t(n); ++c) {
+      const int own = cls[(r + size_t(radius)) * side + c + size_t(radius)];
+      if (own < 0) continue;
+      const auto count = [&](size_t i) {
+        const std::vector<uint32_t>& s = sums[i];
+        return s[(r + d) * w + c + d] - s[r * w + c + d] - s[(r + d) * w + c] + s[r * w + c];
+      };
+      const size_t self = size_t(std::find(ids.begin(), ids.end(), own) - ids.begin());
+      size_t best = self;  // replaced only by a strictly larger count: the lowest such id
+      for (size_t i = 0; i < ids.size(); ++i)
+        if (count(i) > count(best)) best = i;
+      out[r * size_t(n) + c] = ids[best];
+    }
+  return out;
 }
 
 class Classify : public CellOperator {
@@ -86,9 +132,15 @@ class Classify : public CellOperator {
     if (!excluded.empty() && !lc)
       throw Error("texture.classify: params.exclude_landcover needs inputs.landcover");
     if (snow >= 0 && !dem) throw Error("texture.classify: params.snow_class needs inputs.dem");
-    Tile<float>& out = data.output("classes") = Tile<float>(ctx.tile_size, 1, 0, NAN);
-    for (int r = 0; r < ctx.tile_size; ++r)
-      for (int c = 0; c < ctx.tile_size; ++c) {
+    // Classes of the tile and a ring of `radius` pixels (-1: none), then the majority filter.
+    const int radius = p.at("majority_radius").get<int>(), n = ctx.tile_size;
+    const int side = n + 2 * radius;
+    if (rgb.halo() < radius)
+      throw Error("texture.classify: inputs.rgb: halo " + std::to_string(rgb.halo()) +
+                  " is narrower than params.majority_radius " + std::to_string(radius));
+    std::vector<int> cls(size_t(side) * size_t(side), -1);
+    for (int r = -radius; r < n + radius; ++r)
+      for (int c = -radius; c < n + radius; ++c) {
         const float R = rgb.at(c, r, 0), G = rgb.at(c, r, 1), B = rgb.at(c, r, 2);
         if (std::isnan(R) || std::isnan(G) || std::isnan(B)) continue;
         if (!excluded.empty() &&
@@ -98,8 +150,14 @@ class Classify : public CellOperator {
         const int k = classifier.classify(R, G, B);
         if (k < 0) continue;
         if (k == snow && !(dem->at(c, r) >= snow_min)) continue;  // cloud, or unknown height
-        out.at(c, r) = float(k);
+        cls[size_t(r + radius) * size_t(side) + size_t(c + radius)] = k;
       }
+    const std::vector<int> filtered = majority(cls, n, radius);
+    Tile<float>& out = data.output("classes") = Tile<float>(n, 1, 0, NAN);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        if (const int k = filtered[size_t(r) * size_t(n) + size_t(c)]; k >= 0)
+          out.at(c, r) = float(k);
   }
 
  private:

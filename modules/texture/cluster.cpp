@@ -1,37 +1,116 @@
-// texture.cluster (reduce): the hue-saturation histogram of an image (grey pixels given a hue,
-// paper 5.2.1) and k classes found in it by deterministic k-means; the artifact's "centres" are
-// the "centres" parameter of texture.classify.
+// texture.cluster (reduce): the colour histogram of an image (hue x saturation, or x value; grey
+// pixels given a hue, paper 5.2.1), surface-type clusters found in it (k-means or a Gaussian
+// mixture, k given or chosen; colour_clusters.h) and optionally its density plot as a PNG. The
+// artifact's "centres" are the "centres" parameter of texture.classify.
 #include <algorithm>
 #include <fstream>
 
+#include "colour_clusters.h"
 #include "core/error.h"
-#include "kmeans.h"
+#include "hs_classes.h"
+#include "hs_plot.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::texture {
 namespace {
+
+constexpr int kMaxK = 32;
 
 OperatorSpec cluster_spec() {
   OperatorSpec s;
   s.name = "texture.cluster";
   s.description =
-      "Hue-saturation histogram of an RGB image and k surface-type clusters by deterministic "
-      "k-means (centres for texture.classify)";
+      "Hue-saturation(-value) histogram of an RGB image, surface-type clusters by deterministic "
+      "k-means or Gaussian mixture with k given or chosen (centres for texture.classify), and "
+      "its density plot";
   s.kind = OperatorKind::Reduce;
   s.inputs = {{"rgb", "RGB image, 0..255", false}};
   s.outputs = {
       {"clusters", "centres and histogram (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
-  s.params_schema = {{"type", "object"},
-                     {"additionalProperties", false},
-                     {"required", {"k"}},
-                     {"properties",
-                      {{"k", {{"type", "integer"}, {"minimum", 1}, {"maximum", 32}}},
-                       {"out",
-                        {{"type", "string"},
-                         {"default", ""},
-                         {"description", "also write the result to this file"}}}}}};
+  s.params_schema = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required", {"k"}},
+      {"properties",
+       {{"k",
+         {{"minimum", 1},
+          {"maximum", kMaxK},
+          {"description", "number of clusters, or \"auto\" to choose up to k_max"}}},
+        {"k_max", integer_param(2, kMaxK, 8, "largest k tried when k is \"auto\"")},
+        {"method", {{"type", "string"}, {"enum", {"kmeans", "gmm"}}, {"default", "kmeans"}}},
+        {"space", {{"type", "string"}, {"enum", {"hs", "hsv"}}, {"default", "hs"}}},
+        {"out",
+         {{"type", "string"},
+          {"default", ""},
+          {"description", "also write the result to this file"}}},
+        {"plot",
+         {{"type", "string"},
+          {"default", ""},
+          {"description", "write the hue-saturation density plot to this PNG file"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
   return s;
+}
+
+ClusterRequest parse_request(const json& p) {
+  ClusterRequest r{parse_cluster_method(p.at("method").get<std::string>()),
+                   parse_colour_space(p.at("space").get<std::string>()), 0,
+                   p.at("k_max").get<int>()};
+  if (const json& k = p.at("k"); k.is_number_integer())
+    r.k = k.get<int>();
+  else if (k != "auto")
+    throw Error("texture.cluster: params.k: expected an integer 1.." + std::to_string(kMaxK) +
+                " or \"auto\", got " + k.dump());
+  return r;
+}
+
+json matrix(const Matrix& m, int dims) {
+  json out = json::array();
+  for (int a = 0; a < dims; ++a)
+    out.push_back(std::vector<double>(m[size_t(a)].begin(), m[size_t(a)].begin() + dims));
+  return out;
+}
+
+// The artifact: method, space, centres (ids in decreasing pixel count), the mixture's
+// components, how k was chosen, the histogram.
+json clusters_document(const ClusterRequest& request, const ColourClusters& found,
+                       const std::vector<uint64_t>& histogram) {
+  const bool hsv = request.space == ColourSpace::Hsv;
+  json centres = json::array();
+  for (size_t c = 0; c < found.centres.size(); ++c) {
+    const Hsv x = point_colour(found.centres[c]);
+    json centre = {{"id", c}, {"hue", x.h}, {"saturation", x.s}};
+    if (hsv) centre["value"] = x.v;
+    centre["pixels"] = found.pixels[c];
+    centres.push_back(centre);
+  }
+  json hist = {{"hue_bins", kHueBins}, {"saturation_bins", kSatBins}};
+  if (hsv) hist["value_bins"] = kValueBins;
+  hist["counts"] = histogram;
+  json doc = {{"method", request.method == ClusterMethod::Gmm ? "gmm" : "kmeans"},
+              {"space", hsv ? "hsv" : "hs"},
+              {"k", found.centres.size()},
+              {"centres", centres},
+              {"histogram", hist}};
+  if (found.mixture) {
+    const int dims = found.mixture->dims;
+    json components = json::array();
+    for (size_t c = 0; c < found.mixture->components.size(); ++c) {
+      const Gaussian& g = found.mixture->components[c];
+      components.push_back({{"id", c},
+                            {"weight", g.weight},
+                            {"mean", std::vector<double>(g.mean.begin(), g.mean.begin() + dims)},
+                            {"covariance", matrix(g.covariance, dims)}});
+    }
+    doc["components"] = components;
+    doc["log_likelihood"] = found.mixture->log_likelihood;
+    doc["em_iterations"] = found.mixture->iterations;
+  }
+  if (!found.tried_k.empty())
+    doc["selection"] = {{"criterion", found.mixture ? "bic" : "silhouette"},
+                        {"k", found.tried_k},
+                        {"values", found.criterion}};
+  return doc;
 }
 
 class ClusterOp : public ReduceOperator {
@@ -39,18 +118,19 @@ class ClusterOp : public ReduceOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   json map(const CellContext& ctx, const CellData& data) const override {
+    const ColourSpace space = parse_request(*ctx.params).space;
     const HsClassifier grey = HsClassifier::from_params(*ctx.params);
     const Tile<float>& rgb = data.input("rgb");
     if (rgb.channels() != 3)
       throw Error("texture.cluster: inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
-    std::vector<uint64_t> hist(size_t(kHueBins * kSatBins), 0);
+    std::vector<uint64_t> hist(size_t(histogram_bins(space)), 0);
     bool any = false;
     for (int r = 0; r < ctx.tile_size; ++r)
       for (int c = 0; c < ctx.tile_size; ++c) {
         const float R = rgb.at(c, r, 0), G = rgb.at(c, r, 1), B = rgb.at(c, r, 2);
         if (std::isnan(R) || std::isnan(G) || std::isnan(B)) continue;
-        ++hist[size_t(hs_bin(grey.hsv(R, G, B)))];
+        ++hist[size_t(colour_bin(grey.hsv(R, G, B), space))];
         any = true;
       }
     return any ? json(hist) : json();
@@ -66,28 +146,31 @@ class ClusterOp : public ReduceOperator {
 
   Artifact finish(const json& merged, const StepContext& ctx) const override {
     const json& params = *ctx.params;
+    const ClusterRequest request = parse_request(params);
     if (merged.is_null()) throw Error("texture.cluster: no RGB pixel in the region");
     const std::vector<uint64_t> hist = merged.get<std::vector<uint64_t>>();
-    json centres = json::array();
-    for (const auto& c : kmeans(hist, params.at("k").get<int>()))
-      centres.push_back({{"id", c.centre.id},
-                         {"hue", c.centre.hue},
-                         {"saturation", c.centre.saturation},
-                         {"pixels", c.pixels}});
-    const json doc = {
-        {"centres", centres},
-        {"histogram", {{"hue_bins", kHueBins}, {"saturation_bins", kSatBins}, {"counts", hist}}}};
+    const ColourClusters found = find_clusters(hist, request);
+    const json doc = clusters_document(request, found, hist);
     const std::string text = doc.dump();
     if (const std::string out = params.at("out"); !out.empty()) {
       std::ofstream file(out);
       if (!(file << text << '\n'))
         throw Error("texture.cluster: params.out: cannot write '" + out + "'");
     }
+    if (const std::string plot = params.at("plot"); !plot.empty()) {
+      std::vector<Hsv> marks;
+      for (const Point& p : found.centres) marks.push_back(point_colour(p));
+      try {
+        write_hs_plot(hs_marginal(hist, request.space), marks, plot);
+      } catch (const Error& e) {
+        throw Error(std::string("texture.cluster: params.plot: ") + e.what());
+      }
+    }
     Artifact a;
     a.name = "clusters";
     a.data.resize(text.size());
     std::transform(text.begin(), text.end(), a.data.begin(), [](char ch) { return std::byte(ch); });
-    a.metadata = {{"k", centres.size()}};
+    a.metadata = {{"k", found.centres.size()}};
     return a;
   }
 

@@ -40,8 +40,8 @@ Plane upsample(const Tile<float>& tile, int refine, int ring);
 Plane slope_degrees(const Plane& height, double pixel_m);
 
 // Positions (metres, on the sphere of the authalic radius) of the target pixels of `cell` with
-// `ring`: exact on a lattice of every 8th global pixel, bilinear in between, so neighbouring
-// tiles compute the same values for the same pixel.
+// `ring`: exact on a lattice of every 8th global pixel (16th or 32nd for pixels of <= 9 m),
+// bilinear in between, so neighbouring tiles compute the same values for the same pixel.
 std::vector<Vec3d> pixel_positions(const Grid& grid, CellId cell, int size, int refine, int ring);
 
 }  // namespace maquette::texture

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <fstream>
 
+#include "calibration.h"
 #include "core/error.h"
 #include "fit_inputs.h"
 #include "hierarchy.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::texture {
 namespace {
@@ -53,6 +55,21 @@ OperatorSpec fit_spec() {
         {"large_fraction", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}, {"default", 0.25}}},
         {"children", {{"type", "integer"}, {"minimum", 0}, {"maximum", 8}, {"default", 2}}},
         {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 1}}},
+        {"constraints",
+         {{"type", "string"},
+          {"enum", {"density", "odds"}},
+          {"default", "density"},
+          {"description",
+           "constraint functions: the class histogram scaled to mean 0.5 (paper 5.2.3), or the "
+           "class's odds per bin scaled to a maximum of 1 (prior-aware)"}}},
+        {"calibrate",
+         {{"type", "boolean"},
+          {"default", false},
+          {"description",
+           "choose level-1 biases so that each class dominates as much land as it is observed "
+           "on (calibration.h)"}}},
+        {"sample_step",
+         integer_param(1, 64, 4, "calibration sample: every n-th pixel of every n-th row")},
         {"out",
          {{"type", "string"},
           {"default", ""},
@@ -83,7 +100,8 @@ class Fit : public ReduceOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
 
-  // Partial: {"<class>": {"n": pixels, "sum": [3], "sum_sq": [3], "hist": [[256] per quantity]}}.
+  // Partial: {"<class>": {"n": pixels, "sum": [3], "sum_sq": [3], "hist": [[256] per quantity],
+  // "sample": [bins of the calibration sample's pixels, one per quantity, pixel after pixel]}}.
   json map(const CellContext& ctx, const CellData& data) const override {
     const std::vector<Quantity> qs = quantities(*ctx.params);
     std::vector<std::string> names;
@@ -95,6 +113,9 @@ class Fit : public ReduceOperator {
       throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
     std::map<int, ClassStats> stats;
+    std::map<int, std::vector<int>> sample;
+    const int step =
+        ctx.params->at("calibrate").get<bool>() ? ctx.params->at("sample_step").get<int>() : 0;
     for (int r = 0; r < ctx.tile_size; ++r)
       for (int c = 0; c < ctx.tile_size; ++c) {
         const float k = cls.at(c, r);
@@ -109,13 +130,21 @@ class Fit : public ReduceOperator {
           const double v = rgb.at(c, r, int(ch));
           s.sum[ch] += v, s.sum_sq[ch] += v * v;
         }
-        for (size_t q = 0; q < qs.size(); ++q) ++s.hist[q][size_t(bin(planes[q].at(c, r), qs[q]))];
+        const bool sampled = step > 0 && r % step == 0 && c % step == 0;
+        for (size_t q = 0; q < qs.size(); ++q) {
+          const int b = bin(planes[q].at(c, r), qs[q]);
+          ++s.hist[q][size_t(b)];
+          if (sampled) sample[int(k)].push_back(b);
+        }
       }
     if (stats.empty()) return nullptr;
     json out = json::object();
     for (const auto& [id, s] : stats)
-      out[std::to_string(id)] = {
-          {"n", s.pixels}, {"sum", s.sum}, {"sum_sq", s.sum_sq}, {"hist", s.hist}};
+      out[std::to_string(id)] = {{"n", s.pixels},
+                                 {"sum", s.sum},
+                                 {"sum_sq", s.sum_sq},
+                                 {"hist", s.hist},
+                                 {"sample", sample[id]}};
     return out;
   }
 
@@ -134,6 +163,7 @@ class Fit : public ReduceOperator {
         o["sum"][ch] = o["sum"][ch].get<double>() + s["sum"][ch].get<double>();
         o["sum_sq"][ch] = o["sum_sq"][ch].get<double>() + s["sum_sq"][ch].get<double>();
       }
+      for (const json& b : s.at("sample")) o["sample"].push_back(b);
       for (size_t q = 0; q < s["hist"].size(); ++q)
         for (size_t i = 0; i < size_t(kBins); ++i)
           o["hist"][q][i] = o["hist"][q][i].get<uint64_t>() + s["hist"][q][i].get<uint64_t>();
@@ -145,6 +175,7 @@ class Fit : public ReduceOperator {
     const json& params = *ctx.params;
     const std::vector<Quantity> qs = quantities(params);
     std::vector<ClassStats> classes;
+    std::vector<Sample> samples;
     if (!merged.is_null())
       for (const auto& [id, s] : merged.items()) {
         ClassStats c;
@@ -153,6 +184,11 @@ class Fit : public ReduceOperator {
         c.sum = s.at("sum").get<std::array<double, 3>>();
         c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
         c.hist = s.at("hist").get<std::vector<std::array<uint64_t, kBins>>>();
+        const std::vector<uint8_t> bins = s.at("sample").get<std::vector<uint8_t>>();
+        for (size_t i = 0; i + qs.size() <= bins.size(); i += qs.size())
+          samples.push_back(
+              {c.id, std::vector<uint8_t>(bins.begin() + std::ptrdiff_t(i),
+                                          bins.begin() + std::ptrdiff_t(i + qs.size()))});
         classes.push_back(std::move(c));
       }
     std::sort(classes.begin(), classes.end(), [](auto& a, auto& b) { return a.id < b.id; });
@@ -171,7 +207,10 @@ class Fit : public ReduceOperator {
     h.large_fraction = params.at("large_fraction").get<double>();
     h.children = params.at("children").get<int>();
     h.seed = params.at("seed").get<uint64_t>();
-    json doc = model_to_json(build_model(qs, classes, h));
+    h.odds = params.at("constraints").get<std::string>() == "odds";
+    Model model = build_model(qs, classes, h);
+    if (params.at("calibrate").get<bool>()) calibrate_biases(model, samples);
+    json doc = model_to_json(model);
     json summary = json::array();
     for (const ClassStats& c : classes) summary.push_back({{"class", c.id}, {"pixels", c.pixels}});
     doc["fitted_classes"] = summary;

@@ -31,6 +31,21 @@ Table constraint_function(const std::array<uint64_t, kBins>& hist) {
   return t;
 }
 
+Table odds_function(const std::array<uint64_t, kBins>& hist,
+                    const std::array<uint64_t, kBins>& all) {
+  Table t{};
+  double top = 0;
+  std::array<double, kBins> o{};
+  for (size_t i = 0; i < size_t(kBins); ++i)
+    if (all[i] > 0) {
+      o[i] = std::clamp((double(hist[i]) + 0.5) / (double(all[i] - hist[i]) + 0.5), 1.0 / 64, 64.0);
+      top = std::max(top, o[i]);
+    }
+  if (top == 0) return t;
+  for (size_t i = 0; i < size_t(kBins); ++i) t[i] = float(o[i] / top);
+  return t;
+}
+
 Model build_model(const std::vector<Quantity>& quantities, const std::vector<ClassStats>& classes,
                   const HierarchyParams& p) {
   std::vector<size_t> order(classes.size());
@@ -38,7 +53,12 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return classes[a].pixels > classes[b].pixels; });
   uint64_t total = 0;
-  for (const ClassStats& c : classes) total += c.pixels;
+  std::vector<std::array<uint64_t, kBins>> all(quantities.size(), std::array<uint64_t, kBins>{});
+  for (const ClassStats& c : classes) {
+    total += c.pixels;
+    for (size_t q = 0; q < quantities.size(); ++q)
+      for (size_t i = 0; i < size_t(kBins); ++i) all[q][i] += c.hist[q][i];
+  }
 
   Model m;
   m.quantities = quantities;
@@ -59,7 +79,9 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
     l.noise_scale = float(p.noise_scale);
     l.noise = p.noise;
     l.noise.seed = p.seed * 1000 + uint64_t(c.id);
-    for (const auto& h : c.hist) l.constraints.push_back(constraint_function(h));
+    for (size_t q = 0; q < quantities.size(); ++q)
+      l.constraints.push_back(p.odds ? odds_function(c.hist[q], all[q])
+                                     : constraint_function(c.hist[q]));
     const int self = int(m.layers.size());
     m.layers.push_back(l);
     if (double(c.pixels) < p.large_fraction * double(total)) continue;

@@ -1,7 +1,7 @@
 // The layer hierarchy of a fitted model (paper 5.2.2 and 5.2.3): a root with the colour of the
 // most widespread class, one level-1 layer per class with its mean colour and one constraint
-// function per quantity (the class's histogram scaled to mean 0.5, clamped to [0, 1]), and
-// diversified children for the large classes.
+// function per quantity (the class's histogram scaled to mean 0.5, clamped to [0, 1], or the
+// class's odds per bin), and diversified children for the large classes.
 #pragma once
 
 #include <array>
@@ -27,10 +27,17 @@ struct HierarchyParams {
   double child_bias = 0.5, child_noise_scale = 0.6;  // children cover noise-shaped patches
   double colour_spread = 1;  // child colours: mean +- spread * standard deviation
   uint64_t seed = 1;
+  bool odds = false;  // constraint functions: class odds per bin instead of scaled density
 };
 
 // Constraint function of a histogram: scaled so its mean is 0.5, clamped to [0, 1].
 Table constraint_function(const std::array<uint64_t, kBins>& hist);
+
+// Constraint function as the class's odds per bin, (n + 0.5) / (others + 0.5) clamped to
+// [1/64, 64], divided by its largest value (0 where no class has pixels): prior-aware, and the
+// product over quantities is proportional to the naive-Bayes odds of the class.
+Table odds_function(const std::array<uint64_t, kBins>& hist,
+                    const std::array<uint64_t, kBins>& all);
 
 // `classes` in increasing id, each with pixels > 0. Level-1 layers in decreasing pixel count
 // (ties: lower id first), so rarer types are evaluated later and overwrite where they fit.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/error.h"
+
 namespace maquette::texture {
 namespace {
 
@@ -49,8 +51,12 @@ HsClassifier HsClassifier::from_params(const nlohmann::json& p) {
     c.boxes.push_back({b.at("id").get<int>(), pair(b, "hue", {0, 360}),
                        pair(b, "saturation", {0, 1}), pair(b, "value", {0, 1})});
   for (const auto& z : p.value("centres", nlohmann::json::array()))
-    c.centres.push_back(
-        {z.at("id").get<int>(), z.at("hue").get<double>(), z.at("saturation").get<double>()});
+    c.centres.push_back({z.at("id").get<int>(), z.at("hue").get<double>(),
+                         z.at("saturation").get<double>(), z.value("value", double(NAN))});
+  for (const Centre& z : c.centres)
+    if (std::isnan(z.value) != std::isnan(c.centres.front().value))
+      throw Error("params.centres: give \"value\" for every centre or for none (centre id " +
+                  std::to_string(z.id) + ")");
   return c;
 }
 
@@ -70,7 +76,8 @@ int HsClassifier::classify(double r, double g, double b) const {
   const auto p = wheel(x.h, x.s);
   for (const Centre& z : centres) {
     const auto q = wheel(z.hue, z.saturation);
-    const double d = std::hypot(p[0] - q[0], p[1] - q[1]);
+    const double dv = std::isnan(z.value) ? 0 : x.v - z.value;
+    const double d = std::hypot(p[0] - q[0], p[1] - q[1], dv);
     if (d < best_d) best_d = d, best = z.id;
   }
   return best;

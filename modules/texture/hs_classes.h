@@ -1,9 +1,11 @@
 // Surface types in hue-saturation space (paper 5.2.1): near-grey pixels, whose hue is
 // meaningless, get a user-defined hue; classes are boxes in hue-saturation(-value) or the
-// nearest of given cluster centres (texture.classify, texture.fit's k-means).
+// nearest of given cluster centres (texture.classify, from texture.cluster): nearest on the
+// colour wheel (s cos h, s sin h), or in (s cos h, s sin h, v) when the centres give a value.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -20,6 +22,7 @@ struct Box {
 struct Centre {
   int id = 0;
   double hue = 0, saturation = 0;
+  double value = NAN;  // NaN: not given (every centre gives it, or none)
 };
 
 struct HsClassifier {
@@ -28,9 +31,10 @@ struct HsClassifier {
   std::vector<Box> boxes;      // first match wins
   std::vector<Centre> centres;
 
-  static HsClassifier from_params(const nlohmann::json& params);  // boxes/centres may be absent
-  Hsv hsv(double r, double g, double b) const;                    // with the grey rule
-  int classify(double r, double g, double b) const;               // -1: no class
+  // Boxes and centres may be absent; throws maquette::Error when only some centres give a value.
+  static HsClassifier from_params(const nlohmann::json& params);
+  Hsv hsv(double r, double g, double b) const;       // with the grey rule
+  int classify(double r, double g, double b) const;  // -1: no class
 };
 
 // Schema properties of the grey rule's parameters, shared by the operators that read colours.

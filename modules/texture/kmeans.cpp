@@ -2,74 +2,78 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numeric>
 
 namespace maquette::texture {
 
-int hs_bin(const Hsv& x) {
-  const int h = std::clamp(int(x.h / 360 * kHueBins), 0, kHueBins - 1);
-  const int s = std::clamp(int(x.s * kSatBins), 0, kSatBins - 1);
-  return h * kSatBins + s;
+size_t nearest_centre(const std::vector<Point>& centres, const Point& x) {
+  size_t best = 0;
+  for (size_t c = 1; c < centres.size(); ++c)
+    if (squared_distance(x, centres[c]) < squared_distance(x, centres[best])) best = c;
+  return best;
 }
 
-std::vector<Cluster> kmeans(const std::vector<uint64_t>& histogram, int k) {
-  struct Point {
-    std::array<double, 2> p;
-    double w;
-  };
-  std::vector<Point> pts;
-  for (int i = 0; i < kHueBins * kSatBins; ++i)
-    if (histogram[size_t(i)] > 0)
-      pts.push_back(
-          {wheel((i / kSatBins + 0.5) * 360.0 / kHueBins, (i % kSatBins + 0.5) / kSatBins),
-           double(histogram[size_t(i)])});
-  const auto d2 = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
-  };
-  const auto nearest = [&](const std::vector<std::array<double, 2>>& cs, const Point& x) {
-    size_t best = 0;
-    for (size_t c = 1; c < cs.size(); ++c)
-      if (d2(x.p, cs[c]) < d2(x.p, cs[best])) best = c;
-    return best;
-  };
-  std::vector<std::array<double, 2>> centres;
-  const size_t kk = std::min(size_t(std::max(k, 1)), pts.size());
-  while (centres.size() < kk) {
+Partition kmeans(const std::vector<BinPoint>& bins, int k) {
+  Partition out;
+  const size_t kk = std::min(size_t(std::max(k, 1)), bins.size());
+  while (out.centres.size() < kk) {
     size_t pick = 0;
     double best = -1;
-    for (size_t i = 0; i < pts.size(); ++i) {
+    for (size_t i = 0; i < bins.size(); ++i) {
       const double score =
-          centres.empty() ? pts[i].w : pts[i].w * d2(pts[i].p, centres[nearest(centres, pts[i])]);
+          out.centres.empty()
+              ? bins[i].w
+              : bins[i].w * squared_distance(bins[i].x,
+                                             out.centres[nearest_centre(out.centres, bins[i].x)]);
       if (score > best) best = score, pick = i;  // first of equals: deterministic
     }
-    centres.push_back(pts[pick].p);
+    out.centres.push_back(bins[pick].x);
   }
-  std::vector<size_t> assign(pts.size(), kk);
+  out.assign.assign(bins.size(), kk);
   for (int iter = 0; iter < 100; ++iter) {
     bool changed = false;
-    for (size_t i = 0; i < pts.size(); ++i) {
-      const size_t c = nearest(centres, pts[i]);
-      changed = changed || c != assign[i];
-      assign[i] = c;
+    for (size_t i = 0; i < bins.size(); ++i) {
+      const size_t c = nearest_centre(out.centres, bins[i].x);
+      changed = changed || c != out.assign[i];
+      out.assign[i] = c;
     }
     if (!changed) break;
-    std::vector<std::array<double, 3>> acc(kk, {0, 0, 0});
-    for (size_t i = 0; i < pts.size(); ++i)
-      acc[assign[i]] = {acc[assign[i]][0] + pts[i].w * pts[i].p[0],
-                        acc[assign[i]][1] + pts[i].w * pts[i].p[1], acc[assign[i]][2] + pts[i].w};
+    std::vector<Point> sum(kk, Point{0, 0, 0});
+    std::vector<double> weight(kk, 0);
+    for (size_t i = 0; i < bins.size(); ++i) {
+      for (int d = 0; d < 3; ++d) sum[out.assign[i]][size_t(d)] += bins[i].w * bins[i].x[size_t(d)];
+      weight[out.assign[i]] += bins[i].w;
+    }
     for (size_t c = 0; c < kk; ++c)
-      if (acc[c][2] > 0) centres[c] = {acc[c][0] / acc[c][2], acc[c][1] / acc[c][2]};
+      if (weight[c] > 0)
+        out.centres[c] = {sum[c][0] / weight[c], sum[c][1] / weight[c], sum[c][2] / weight[c]};
   }
-  std::vector<Cluster> out(kk);
-  for (size_t c = 0; c < kk; ++c) {
-    const double hue = std::atan2(centres[c][1], centres[c][0]) * 180 / M_PI;
-    out[c].centre = {0, hue < 0 ? hue + 360 : hue, std::hypot(centres[c][0], centres[c][1])};
-  }
-  for (size_t i = 0; i < pts.size(); ++i) out[assign[i]].pixels += uint64_t(pts[i].w);
-  std::stable_sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.pixels > b.pixels; });
-  for (size_t c = 0; c < kk; ++c) out[c].centre.id = int(c);
   return out;
+}
+
+double silhouette(const std::vector<BinPoint>& bins, const Partition& partition) {
+  const size_t k = partition.centres.size(), n = bins.size();
+  // to[i * k + c]: summed distance from bin i's centre to the pixels of cluster c.
+  std::vector<double> to(n * k, 0), size(k, 0);
+  for (size_t i = 0; i < n; ++i) {
+    size[partition.assign[i]] += bins[i].w;
+    for (size_t j = i + 1; j < n; ++j) {
+      const double d = std::sqrt(squared_distance(bins[i].x, bins[j].x));
+      to[i * k + partition.assign[j]] += bins[j].w * d;
+      to[j * k + partition.assign[i]] += bins[i].w * d;
+    }
+  }
+  double sum = 0, total = 0;
+  for (size_t i = 0; i < n; ++i) {
+    total += bins[i].w;
+    const size_t own = partition.assign[i];
+    if (size[own] <= 1) continue;                        // a lone pixel: s = 0
+    const double a = to[i * k + own] / (size[own] - 1);  // the bin's other pixels are at 0
+    double b = INFINITY;
+    for (size_t c = 0; c < k; ++c)
+      if (c != own && size[c] > 0) b = std::min(b, to[i * k + c] / size[c]);
+    if (std::isfinite(b) && std::max(a, b) > 0) sum += bins[i].w * (b - a) / std::max(a, b);
+  }
+  return total > 0 ? sum / total : 0;
 }
 
 }  // namespace maquette::texture

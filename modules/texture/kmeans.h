@@ -1,25 +1,30 @@
-// Automatic classes in hue-saturation space: a hue-saturation histogram of the image and
-// weighted k-means on the colour wheel over its bins (deterministic: seeded with the heaviest
-// bin, then each next seed the bin of largest weight x squared distance to the seeds so far).
+// Weighted k-means over the occupied bins of a colour histogram (hs_histogram.h), deterministic:
+// seeded with the heaviest bin, then each next seed the bin of largest weight x squared distance
+// to the seeds so far (first of equals), Lloyd iterations until no bin changes cluster (at most
+// 100). And the silhouette of a partition, the criterion that chooses k for k-means.
 #pragma once
 
-#include <cstdint>
+#include <cstddef>
 #include <vector>
 
-#include "hs_classes.h"
+#include "hs_histogram.h"
 
 namespace maquette::texture {
 
-inline constexpr int kHueBins = 72, kSatBins = 20;  // 5 degrees x 0.05
-
-int hs_bin(const Hsv& x);  // index into a kHueBins * kSatBins histogram
-
-struct Cluster {
-  Centre centre;
-  uint64_t pixels = 0;
+struct Partition {
+  std::vector<Point> centres;  // weighted means of their bins
+  std::vector<size_t> assign;  // cluster of each bin
 };
 
-// k clusters (fewer when fewer bins are occupied), ids 0.. in decreasing pixel count.
-std::vector<Cluster> kmeans(const std::vector<uint64_t>& histogram, int k);
+// min(k, bins) clusters; k >= 1.
+Partition kmeans(const std::vector<BinPoint>& bins, int k);
+
+// Index of the centre nearest to x (first of equals).
+size_t nearest_centre(const std::vector<Point>& centres, const Point& x);
+
+// Mean silhouette over the pixels, each pixel at its bin centre (exact for the binned data):
+// s = (b - a) / max(a, b), a the mean distance to the other pixels of its cluster, b the least
+// mean distance to another cluster's pixels; 0 for a pixel alone in its cluster. O(bins^2).
+double silhouette(const std::vector<BinPoint>& bins, const Partition& partition);
 
 }  // namespace maquette::texture

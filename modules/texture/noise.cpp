@@ -31,7 +31,15 @@ float lerp(float a, float b, float t) { return a + t * (b - a); }
 
 }  // namespace
 
-NoiseField::NoiseField(const NoiseParams& params) : p_(params), perm_(2 * kPeriod) {
+NoiseField::NoiseField(const NoiseParams& params) : perm_(2 * kPeriod) {
+  double amplitude = 1, scale = 1 / params.wavelength_m;
+  for (int o = 0; o < params.octaves; ++o) {
+    scale_.push_back(scale);
+    amplitude_.push_back(amplitude);
+    norm_ += amplitude;
+    amplitude *= params.persistence;
+    scale *= 2;
+  }
   for (int i = 0; i < kPeriod; ++i) perm_[size_t(i)] = uint16_t(i);
   uint64_t state = params.seed;
   for (int i = kPeriod - 1; i > 0; --i)  // Fisher-Yates
@@ -39,7 +47,7 @@ NoiseField::NoiseField(const NoiseParams& params) : p_(params), perm_(2 * kPerio
   std::copy(perm_.begin(), perm_.begin() + kPeriod, perm_.begin() + kPeriod);
 }
 
-float NoiseField::octave(double x, double y, double z) const {
+float NoiseField::gradient_noise(double x, double y, double z) const {
   const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
   const auto i = unsigned(int64_t(fx) & (kPeriod - 1)), j = unsigned(int64_t(fy) & (kPeriod - 1)),
              k = unsigned(int64_t(fz) & (kPeriod - 1));
@@ -57,18 +65,16 @@ float NoiseField::octave(double x, double y, double z) const {
       w);
 }
 
+float NoiseField::octave(int o, const Vec3d& p) const {
+  // Octaves shifted apart so their lattices do not line up.
+  const double scale = scale_[size_t(o)], shift = 0.37 * o;
+  return gradient_noise(p[0] * scale + shift, p[1] * scale + 2 * shift, p[2] * scale + 3 * shift);
+}
+
 float NoiseField::operator()(const Vec3d& p) const {
-  double sum = 0, norm = 0, amplitude = 1, scale = 1 / p_.wavelength_m;
-  for (int o = 0; o < p_.octaves; ++o) {
-    // Octaves shifted apart so their lattices do not line up.
-    const double shift = 0.37 * o;
-    sum += amplitude *
-           octave(p[0] * scale + shift, p[1] * scale + 2 * shift, p[2] * scale + 3 * shift);
-    norm += amplitude;
-    amplitude *= p_.persistence;
-    scale *= 2;
-  }
-  return float(std::clamp(sum / norm, -1.0, 1.0));
+  double sum = 0;
+  for (int o = 0; o < octaves(); ++o) sum += amplitude_[size_t(o)] * octave(o, p);
+  return float(std::clamp(sum / norm_, -1.0, 1.0));
 }
 
 }  // namespace maquette::texture

@@ -32,6 +32,7 @@ OperatorSpec procedural_spec() {
        Semantics::Categorical, "", 255.0},
   };
   s.halo = kInputHalo;
+  s.refinable = true;  // a step's "refine": levels finer than the DEM (render_tile's refine)
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
@@ -54,9 +55,9 @@ class Procedural : public CellOperator {
     std::map<std::string, const Tile<float>*> rasters;
     for (const std::string& q : kRasterPorts)
       if (data.inputs.count(q)) rasters[q] = &data.inputs.at(q);
-    const Rendered r = render_tile(*model, *ctx.grid, ctx.cell, ctx.tile_size, 0, data.input("dem"),
-                                   rasters, spec_.name);
-    const int n = ctx.tile_size;
+    const Rendered r = render_tile(*model, *ctx.grid, ctx.cell, ctx.tile_size, ctx.refine,
+                                   data.input("dem"), rasters, spec_.name);
+    const int n = r.size;
     const auto put = [&](const char* port, const std::vector<float>& v, int channels) {
       if (!data.wants(port)) return;
       Tile<float>& t = data.output(port) = Tile<float>(n, channels);

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "field.h"
+#include "lattice_noise.h"
 #include "surface.h"
 
 namespace maquette::texture {
@@ -30,8 +31,12 @@ Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size
     planes[q] = upsample(*it->second, refine, 1);
     in.quantities[q] = &planes[q];
   }
-  const std::vector<Vec3d> position = pixel_positions(grid, cell, size, refine, 1);
+  in.position_ring = 1 + kNoiseLatticeReach;
+  const std::vector<Vec3d> position = pixel_positions(grid, cell, size, refine, in.position_ring);
   in.position = &position;
+  in.col0 = global_col(cell, m, 0);
+  in.row0 = global_row(cell, m, 0);
+  in.pixel_m = pixel_m;
   const Surface s = evaluate(model, in);
 
   Rendered out{m, std::vector<float>(size_t(m) * size_t(m) * 3),

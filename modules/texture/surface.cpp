@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "lattice_noise.h"
 
 namespace maquette::texture {
 
-float lookup(const Table& t, float unit) {
-  const float x = std::clamp(unit * kBins - 0.5f, 0.0f, float(kBins - 1));
+float table_coordinate(float unit) {
+  return std::clamp(unit * kBins - 0.5f, 0.0f, float(kBins - 1));
+}
+
+float lookup_at(const Table& t, float x) {
   const int i = std::min(int(x), kBins - 2);
   const float f = x - float(i);
   return t[size_t(i)] + f * (t[size_t(i) + 1] - t[size_t(i)]);
@@ -15,8 +21,9 @@ float lookup(const Table& t, float unit) {
 
 Surface evaluate(const Model& model, const SurfaceInputs& in) {
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-  const size_t n = in.height.v.size(), layers = model.layers.size();
-  Surface out{std::vector<float>(3 * n, kNaN), Plane(in.height.size, in.height.ring, kNaN),
+  const size_t side = size_t(in.height.side()), layers = model.layers.size();
+  Surface out{std::vector<float>(3 * in.height.v.size(), kNaN),
+              Plane(in.height.size, in.height.ring, kNaN),
               Plane(in.height.size, in.height.ring, kNaN)};
   const int height_q = model.quantity("height"), slope_q = model.quantity("slope");
   std::vector<int> classes(layers);
@@ -26,41 +33,113 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
     scale[q] = float(1 / (model.quantities[q].hi - model.quantities[q].lo));
     offset[q] = float(-model.quantities[q].lo) * scale[q];
   }
-  std::vector<NoiseField> noise;
-  for (const Layer& l : model.layers) noise.emplace_back(l.noise);
-  std::vector<float> coverage(layers);
-  for (size_t p = 0; p < n; ++p) {
-    double h = in.height.v[p];
-    if (std::isnan(h)) continue;
-    float rgb[3] = {0, 0, 0};
-    int dominant = -1;
+  const NoiseGeometry geometry{in.height.size, in.height.ring, in.col0,         in.row0,
+                               in.pixel_m,     in.position,    in.position_ring};
+  std::vector<NoiseField> fields;
+  fields.reserve(layers);  // the lattices keep references
+  std::vector<std::optional<LatticeNoise>> noise(layers);
+  for (size_t l = 0; l < layers; ++l) {
+    const Layer& layer = model.layers[l];
+    fields.emplace_back(layer.noise);
+    if (layer.noise_scale != 0 || layer.roughness_m != 0) noise[l].emplace(fields[l], geometry);
+  }
+
+  // One row of the planes at a time: per pixel, the layers in depth-first order. Each layer keeps
+  // the list of pixels it covers, which its children start from (a layer cannot contribute more
+  // than its parent); coverage is only defined on those pixels.
+  std::vector<double> h(side);
+  std::vector<float> rgb(3 * side), coverage(layers * side), product(side), n_x(side);
+  std::vector<int> dominant(side);
+  std::vector<uint32_t> valid(side), lists(layers * side);
+  std::vector<size_t> listed(layers);
+  // Per quantity read from a plane (not the displaced height): its table coordinates along the
+  // row, shared by the layers.
+  std::vector<std::vector<float>> coordinate(model.quantities.size());
+  for (size_t r = 0; r < side; ++r) {
+    const size_t row = r * side;
+    for (size_t q = 0; q < coordinate.size(); ++q) {
+      if (int(q) == height_q) continue;
+      const float* plane =
+          (int(q) == slope_q ? in.slope.v.data() : in.quantities[q]->v.data()) + row;
+      coordinate[q].resize(side);
+      for (size_t c = 0; c < side; ++c)
+        coordinate[q][c] = table_coordinate(plane[c] * scale[q] + offset[q]);
+    }
+    size_t n_valid = 0;
+    for (size_t c = 0; c < side; ++c) {
+      h[c] = in.height.v[row + c];
+      valid[n_valid] = uint32_t(c);
+      n_valid += !std::isnan(h[c]);  // a missing height has no layers
+    }
+    std::fill(rgb.begin(), rgb.end(), 0.0f);
+    std::fill(dominant.begin(), dominant.end(), -1);
     for (size_t l = 0; l < layers; ++l) {
       const Layer& layer = model.layers[l];
-      const float parent = layer.parent < 0 ? 1.0f : coverage[size_t(layer.parent)];
-      coverage[l] = 0;
-      if (parent <= 0) continue;  // a layer cannot contribute more than its parent
-      float product = 1;
-      for (size_t q = 0; q < layer.constraints.size() && product > 0; ++q) {
-        if (!layer.constraints[q]) continue;
-        const float v = int(q) == height_q  ? float(h)
-                        : int(q) == slope_q ? in.slope.v[p]
-                                            : in.quantities[q]->v[p];
-        product *= std::isnan(v) ? 0.0f : lookup(*layer.constraints[q], v * scale[q] + offset[q]);
+      float* cov = &coverage[l * side];
+      uint32_t* active = &lists[l * side];
+      // The pixels the layer can contribute to: those its parent covers, then those where every
+      // constraint is > 0.
+      size_t n = 0;
+      const float* parent = layer.parent < 0 ? nullptr : &coverage[size_t(layer.parent) * side];
+      if (!parent) {
+        std::copy(valid.begin(), valid.begin() + ptrdiff_t(n_valid), active);
+        n = n_valid;
+        for (size_t k = 0; k < n; ++k) product[active[k]] = 1;
+      } else {
+        const uint32_t* from = &lists[size_t(layer.parent) * side];
+        for (size_t k = 0; k < listed[size_t(layer.parent)]; ++k) {
+          active[n] = from[k];
+          product[from[k]] = 1;
+          n += parent[from[k]] > 0;
+        }
       }
-      if (product <= 0) continue;
-      const bool noisy = layer.noise_scale != 0 || layer.roughness_m != 0;
-      const float n_x = noisy ? noise[l]((*in.position)[p]) : 0.0f;
-      const float c =
-          std::clamp((layer.bias + layer.noise_scale * n_x) * product, 0.0f, 1.0f) * parent;
-      coverage[l] = c;
-      for (int k = 0; k < 3; ++k) rgb[k] = (1 - c) * rgb[k] + c * layer.colour[size_t(k)];
-      h += double(c * layer.roughness_m * n_x);
-      if (c >= 0.5f) dominant = int(l);
+      for (size_t q = 0; q < layer.constraints.size() && n > 0; ++q) {
+        if (!layer.constraints[q]) continue;
+        const Table& table = *layer.constraints[q];
+        const bool height = int(q) == height_q;
+        size_t kept = 0;
+        for (size_t k = 0; k < n; ++k) {
+          const uint32_t c = active[k];
+          const float x =
+              height ? table_coordinate(float(h[c]) * scale[q] + offset[q]) : coordinate[q][c];
+          const float p = std::isnan(x) ? 0.0f : product[c] * lookup_at(table, x);
+          product[c] = p;
+          active[kept] = c;
+          kept += p > 0;
+        }
+        n = kept;
+      }
+      listed[l] = n;
+      if (noise[l])  // over each run of consecutive pixels
+        for (size_t k = 0; k < n;) {
+          const size_t first = k;
+          while (k + 1 < n && active[k + 1] == active[k] + 1) ++k;
+          const int ring = in.height.ring;
+          noise[l]->row(int(r) - ring, int(active[first]) - ring, int(active[k]) - ring,
+                        n_x.data() + active[first]);
+          ++k;
+        }
+      for (size_t k = 0; k < n; ++k) {
+        const uint32_t c = active[k];
+        const float nx = noise[l] ? n_x[c] : 0.0f;
+        const float cv =
+            std::clamp((layer.bias + layer.noise_scale * nx) * product[c], 0.0f, 1.0f) *
+            (parent ? parent[c] : 1.0f);
+        cov[c] = cv;
+        for (size_t i = 0; i < 3; ++i)
+          rgb[3 * c + i] = (1 - cv) * rgb[3 * c + i] + cv * layer.colour[i];
+        h[c] += double(cv * layer.roughness_m * nx);
+        if (cv >= 0.5f) dominant[c] = int(l);
+      }
     }
-    for (int k = 0; k < 3; ++k) out.rgb[3 * p + size_t(k)] = rgb[k];
-    out.height.v[p] = float(h);
-    if (dominant >= 0 && classes[size_t(dominant)] >= 0)
-      out.dominant_class.v[p] = float(classes[size_t(dominant)]);
+    for (size_t c = 0; c < side; ++c) {
+      const size_t p = row + c;
+      if (std::isnan(in.height.v[p])) continue;
+      for (size_t k = 0; k < 3; ++k) out.rgb[3 * p + k] = rgb[3 * c + k];
+      out.height.v[p] = float(h[c]);
+      if (dominant[c] >= 0 && classes[size_t(dominant[c])] >= 0)
+        out.dominant_class.v[p] = float(classes[size_t(dominant[c])]);
+    }
   }
   return out;
 }

@@ -2,9 +2,11 @@
 // depth-first over the layers, coverage C = clamp((b + s N) prod F_i) C_parent goes only to a
 // layer's children, while colour and height go on to the next layer evaluated:
 //   RGB = (1 - C) RGB_in + C RGB_layer,   H' = H + C B N.
-// The displacement map D of Eq. 2 is the layer's own noise N.
+// The displacement map D of Eq. 2 is the layer's own noise N. Evaluated a row at a time, layer by
+// layer over the pixels each layer can still cover (tables and noise only there).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "field.h"
@@ -18,7 +20,14 @@ struct SurfaceInputs {
   // Per model quantity: its plane (same size and ring), or nullptr for "height" (the current,
   // displaced height) and "slope".
   std::vector<const Plane*> quantities;
-  const std::vector<Vec3d>* position = nullptr;  // per pixel of the planes (ring included)
+  // Positions of the planes' pixels for the noise, with `position_ring` extra pixels on every
+  // side (>= ring). With pixel_m > 0, the noise is cached on the global lattice of
+  // lattice_noise.h (then position_ring >= ring + kNoiseLatticeReach), the planes' pixel (0, 0)
+  // being global face pixel (col0, row0); with pixel_m = 0 it is exact at every pixel.
+  const std::vector<Vec3d>* position = nullptr;
+  int position_ring = 0;
+  int64_t col0 = 0, row0 = 0;
+  double pixel_m = 0;
 };
 
 struct Surface {
@@ -27,8 +36,11 @@ struct Surface {
   Plane dominant_class;    // class of the last layer with coverage >= 0.5 (NaN: none)
 };
 
-// Constraint table lookup: linear between bin centres, clamped at the ends.
-float lookup(const Table& t, float unit);
+// Constraint table lookup: linear between bin centres, clamped at the ends. In two steps: the
+// coordinate in the table of a value scaled to [0, 1) (NaN stays NaN), and the lookup there.
+float table_coordinate(float unit);
+float lookup_at(const Table& t, float coordinate);
+inline float lookup(const Table& t, float unit) { return lookup_at(t, table_coordinate(unit)); }
 
 Surface evaluate(const Model& model, const SurfaceInputs& in);
 

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -296,8 +297,10 @@ TEST(CliDemo, WithoutDataRunsTheSyntheticTerrain) {
   EXPECT_NE(r.out.find("maquette info"), std::string::npos) << r.out;
 }
 
-// The real-data demo, with the Olinda data scripts/setup.sh extracts next to the build's bin/.
-TEST(CliDemo, IngestsTheOlindaDataAndDerivesTerrain) {
+// The real-data demo, with the Olinda data scripts/setup.sh extracts next to the build's bin/:
+// terrain, and a texture fitted to the Landsat scene synthesized two levels finer than the DEM,
+// on the 3D Tiles terrain.
+TEST(CliDemo, IngestsTheOlindaDataAndSynthesizesItsTexture) {
   const std::string data = std::string(MAQUETTE_BIN_DIR) + "/../demo-data";
   if (!fs::exists(data + "/L7_ETMs.tif"))
     GTEST_SKIP() << "no demo data in " << data << " (scripts/setup.sh fetches it)";
@@ -305,10 +308,36 @@ TEST(CliDemo, IngestsTheOlindaDataAndDerivesTerrain) {
   const CliResult r = run_maquette("demo --output " + dir + " --threads 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("Olinda"), std::string::npos) << r.out;
-  expect_quicklooks(dir, {"dem.png", "hillshade.png", "slope.png", "imagery.png"});
+  expect_quicklooks(dir, {"dem.png", "hillshade.png", "slope.png", "imagery.png", "texture.png"});
   EXPECT_EQ(layer_names(dir + "/demo.mqt"),
-            (std::set<std::string>{"dem_source", "imagery", "dem", "dem_filled", "slope", "aspect",
-                                   "curvature", "hillshade", "normal"}));
+            (std::set<std::string>{"dem_source", "imagery", "imagery_dem_grid", "dem", "dem_filled",
+                                   "slope", "aspect", "curvature", "hillshade", "normal", "classes",
+                                   "texture"}));
+  const auto store = Store::open(dir + "/demo.mqt", Store::Mode::ReadOnly);
+  const LayerInfo dem = store->require_layer("dem"), texture = store->require_layer("texture");
+  EXPECT_EQ(texture.level, dem.level);
+  EXPECT_EQ(texture.tile_size, dem.tile_size << 2);  // "refine": 2
+  EXPECT_EQ(store->tile_cells("texture"), store->tile_cells("dem"));
+  EXPECT_TRUE(store->get_artifact("texture_model"));
+  // The finest 3D Tiles carry the synthesized texture: JPEG images of its tile size (the
+  // imagery's would be 256 pixels).
+  int textured = 0;
+  for (const auto& entry :
+       fs::directory_iterator(dir + "/tiles3d/tiles/" + std::to_string(dem.level))) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::vector<uchar> glb((std::istreambuf_iterator<char>(in)),
+                                 std::istreambuf_iterator<char>());
+    const uchar soi[] = {0xFF, 0xD8, 0xFF};
+    const auto jpeg = std::search(glb.begin(), glb.end(), std::begin(soi), std::end(soi));
+    ASSERT_NE(jpeg, glb.end()) << entry.path();
+    const cv::Mat image = cv::imdecode(std::vector<uchar>(jpeg, glb.end()), cv::IMREAD_COLOR);
+    EXPECT_EQ(image.cols, texture.tile_size) << entry.path();
+    ++textured;
+  }
+  EXPECT_EQ(textured, int(store->tile_cells("dem").size()));
+  // demo.json names its data by absolute paths: it runs from any working directory.
+  const CliResult again = run_maquette("-q run --dry-run " + dir + "/demo.json");
+  EXPECT_EQ(again.exit_code, 0) << again.err;
 }
 
 }  // namespace

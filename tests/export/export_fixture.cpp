@@ -1,37 +1,18 @@
 #include "export_fixture.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 
 #include "run_cli.h"
+#include "test_tiles.h"
 
 namespace maquette::test {
 namespace {
 
-template <typename T, typename F>
-RawTile make_tile(const Grid& grid, CellId cell, int channels, F value) {
-  const PlaneSquare sq = grid.plane_square(cell);
-  const double pixel = sq.side / kTileSize;
-  std::vector<T> v;
-  for (int r = 0; r < kTileSize; ++r)
-    for (int c = 0; c < kTileSize; ++c)
-      for (int k = 0; k < channels; ++k)
-        v.push_back(T(value(PlanePoint{sq.x_min + (c + 0.5) * pixel, sq.y_max - (r + 0.5) * pixel},
-                            global_col(cell, kTileSize, c), global_row(cell, kTileSize, r), k)));
-  RawTile t{dtype_of<T>(), kTileSize, channels, std::vector<std::byte>(v.size() * sizeof(T))};
-  std::memcpy(t.bytes.data(), v.data(), t.bytes.size());
-  return t;
-}
-
 LayerInfo layer(const std::string& name, DType dtype, int channels) {
-  LayerInfo info;
-  info.name = name;
-  info.dtype = dtype;
-  info.channels = channels;
-  info.tile_size = kTileSize;
-  info.level = kLevel;
-  return info;
+  return layer_info(name, dtype, channels, kTileSize, kLevel);
 }
 
 ExportFixture build() {
@@ -39,8 +20,7 @@ ExportFixture build() {
   const Grid& grid = default_grid();
   ExportFixture f;
   f.store_path = temp_dir() + "/export.maquette";
-  const CellId parent = grid.cell_from_point({10, 10}, kLevel - 1);
-  for (int d = 0; d < 4; ++d) f.dem_cells.push_back(parent.child(d));
+  f.dem_cells = block_of_four(grid, {10, 10}, kLevel);
   f.twofaces_cells = {grid.cell_from_point({-2, 5}, kLevel), grid.cell_from_point({3, 5}, kLevel)};
 
   auto store = Store::open(f.store_path, Store::Mode::Create);
@@ -59,23 +39,23 @@ ExportFixture build() {
 
   Store::Batch batch(*store);
   for (CellId c : f.dem_cells) {
-    batch.put_tile("dem", c, make_tile<float>(grid, c, 1, [](PlanePoint p, auto, auto, int) {
-                     return dem_field(p);
+    batch.put_tile("dem", c, make_tile<float>(grid, c, kTileSize, 1, [](const TileSample& s, int) {
+                     return dem_field(s.plane);
                    }));
     batch.put_tile("landcover", c,
-                   make_tile<uint8_t>(grid, c, 1, [](PlanePoint, int64_t col, int64_t row, int) {
-                     return landcover_class(col, row);
+                   make_tile<uint8_t>(grid, c, kTileSize, 1, [](const TileSample& s, int) {
+                     return landcover_class(s.col, s.row);
                    }));
     // Pseudo-random bytes, roughly uniform in 0..199 in every band.
     batch.put_tile(
-        "rgb", c, make_tile<uint8_t>(grid, c, 3, [](PlanePoint, int64_t col, int64_t row, int k) {
-          return uint8_t(((col * 7919 + row * 104729 + k * 31) * 2654435761LL >> 7) % 200);
+        "rgb", c, make_tile<uint8_t>(grid, c, kTileSize, 3, [](const TileSample& s, int k) {
+          return uint8_t(((s.col * 7919 + s.row * 104729 + k * 31) * 2654435761LL >> 7) % 200);
         }));
   }
   for (CellId c : f.twofaces_cells)
     batch.put_tile("twofaces", c,
-                   make_tile<float>(grid, c, 1, [c](PlanePoint, int64_t col, int64_t row, int) {
-                     return float(c.face() * 1000 + col % 100 + 0.5 * (row % 7));
+                   make_tile<float>(grid, c, kTileSize, 1, [c](const TileSample& s, int) {
+                     return float(c.face() * 1000 + s.col % 100 + 0.5 * (s.row % 7));
                    }));
   batch.commit();
   store->update_overviews("dem");
@@ -94,6 +74,15 @@ double dem_field(PlanePoint p) {
 }
 
 uint8_t landcover_class(int64_t col, int64_t row) { return uint8_t((col / 9 + row / 7) % 3 + 1); }
+
+std::string export_layer(const std::string& format, const std::string& layer,
+                         const std::string& extension, const std::string& extra) {
+  const std::string out = temp_dir() + "/" + layer + "." + extension;
+  const CliResult r = run_maquette("export " + format + " " + export_fixture().store_path +
+                                   " --layer " + layer + " " + out + " " + extra);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return out;
+}
 
 Dataset open_raster(const std::string& path) {
   return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));

@@ -33,6 +33,11 @@ double dem_field(PlanePoint p);
 // The landcover class at a face pixel (global col, row at kPixelLevel).
 uint8_t landcover_class(int64_t col, int64_t row);
 
+// Runs `maquette export FORMAT <the fixture's store> --layer LAYER OUT EXTRA`, OUT a file
+// LAYER.EXTENSION in a fresh directory, expecting success; returns OUT.
+std::string export_layer(const std::string& format, const std::string& layer,
+                         const std::string& extension, const std::string& extra = "");
+
 struct GdalClose {
   void operator()(GDALDataset* ds) const { GDALClose(GDALDataset::ToHandle(ds)); }
 };

@@ -7,17 +7,12 @@
 #include <cstring>
 
 #include "export_fixture.h"
-#include "run_cli.h"
 
 namespace maquette::test {
 namespace {
 
 std::string export_rhealpix(const std::string& layer, const std::string& extra = "") {
-  const std::string out = temp_dir() + "/" + layer + ".tif";
-  const CliResult r = run_maquette("export gtiff " + export_fixture().store_path + " --layer " +
-                                   layer + " " + out + " " + extra);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return out;
+  return export_layer("gtiff", layer, "tif", extra);
 }
 
 // The output must hold each tile at its plane position, sample for sample (bit for bit).

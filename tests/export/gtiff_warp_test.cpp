@@ -17,11 +17,7 @@ namespace maquette::test {
 namespace {
 
 std::string export_to(const std::string& layer, const std::string& crs) {
-  const std::string out = temp_dir() + "/" + layer + ".tif";
-  const CliResult r = run_maquette("export gtiff " + export_fixture().store_path + " --layer " +
-                                   layer + " " + out + " --crs " + crs);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return out;
+  return export_layer("gtiff", layer, "tif", "--crs " + crs);
 }
 
 // Lon/lat of the centre of pixel (col, row) of a geographic raster.
@@ -89,11 +85,7 @@ TEST(GtiffWarp, BilinearFollowsTheSmoothField) {
 void compare_with_gdalwarp(const std::string& layer, const std::string& resampling, double max_mean,
                            double max_max) {
   const std::string ours = export_to(layer, "EPSG:4326");
-  const std::string plane = temp_dir() + "/plane.tif";
-  ASSERT_EQ(run_maquette("export gtiff " + export_fixture().store_path + " --layer " + layer + " " +
-                         plane)
-                .exit_code,
-            0);
+  const std::string plane = export_layer("gtiff", layer, "tif");
   const auto ds = open_raster(ours);
   ASSERT_TRUE(ds);
   double gt[6];

@@ -7,17 +7,12 @@
 #include <set>
 
 #include "export_fixture.h"
-#include "run_cli.h"
 
 namespace maquette::test {
 namespace {
 
 cv::Mat export_png(const std::string& layer, const std::string& extra = "") {
-  const std::string out = temp_dir() + "/" + layer + ".png";
-  const CliResult r = run_maquette("export png " + export_fixture().store_path + " --layer " +
-                                   layer + " " + out + " " + extra);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return cv::imread(out, cv::IMREAD_UNCHANGED);
+  return cv::imread(export_layer("png", layer, "png", extra), cv::IMREAD_UNCHANGED);
 }
 
 // Opaque pixels as RGB triples, with their counts.

@@ -1,4 +1,4 @@
-// A module built against the previous module ABI (1, before operators got the store): the loader
+// A module built against an older module ABI (1, before operators got the store): the loader
 // must refuse it, naming the file.
 #include "runtime/module_abi.h"
 

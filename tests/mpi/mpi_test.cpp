@@ -105,14 +105,14 @@ std::string write_pipeline(const json& blur = json::object()) {
 }
 
 // The stations artifact climate.fit_stations reads from the store: elevations 200..2290 m around
-// (10 E, 45 N), t and p linear in elevation with some scatter.
+// (30 E, 10 S), in the region the tests run on, t and p linear in elevation with some scatter.
 void put_stations(const std::string& store) {
   json stations = json::array();
   for (int i = 0; i < 12; ++i) {
     const double z = 200 + 190 * i;
     stations.push_back({{"id", std::to_string(i)},
-                        {"lon", 10 + 0.5 * (i % 4)},
-                        {"lat", 45 + 0.5 * (i % 3)},
+                        {"lon", 30 + 0.5 * (i % 4)},
+                        {"lat", -10 + 0.5 * (i % 3)},
                         {"elevation", z},
                         {"values",
                          {{"t", 25 - 6.5 * z / 1000 + 0.1 * (i % 3)},
@@ -127,7 +127,8 @@ void put_stations(const std::string& store) {
 
 // Every climate and texture operator on 16 cells of 64 pixels, on a synthesized DEM: the climate
 // chain from a stations artifact put in the store beforehand, and an RGB image rendered by
-// texture.procedural from a hand-made model, clustered, classified, fitted and assessed.
+// texture.procedural from a hand-made model (and 2 levels finer), clustered, classified, fitted and
+// assessed.
 std::string write_module_pipeline() {
   const fs::path dir = new_dir();
   put_stations((dir / "out.mqt").string());
@@ -167,6 +168,11 @@ std::string write_module_pipeline() {
          {"inputs", {{"dem", "dem"}}},
          {"outputs", {{"imagery", "rgb"}, {"classes", "truth"}}},
          {"params", {{"model", model}}}},
+        {{"op", "texture.procedural"},
+         {"inputs", {{"dem", "dem"}}},
+         {"outputs", {{"imagery", "fine_rgb"}}},
+         {"params", {{"model", model}}},
+         {"refine", 2}},
         {{"op", "texture.cluster"},
          {"inputs", {{"rgb", "rgb"}}},
          {"outputs", {{"clusters", "clusters"}}},

@@ -138,6 +138,77 @@ TEST(Pipeline, UnknownLayerIsFoundBeforeAnythingRuns) {
   EXPECT_FALSE(std::filesystem::exists(store));
 }
 
+TEST(Pipeline, RefineOnlyForRefinableCellOperators) {
+  json doc = demo_pipeline();
+  doc["steps"][1]["refine"] = 2;
+  EXPECT_EQ(parse_error(doc),
+            "step 2 (fixture.blur): refine: the operator writes its outputs at its inputs' "
+            "resolution only (not refinable)");
+  doc["steps"][1]["refine"] = 13;
+  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): refine: 13 is outside 0..12");
+  doc["steps"][1]["refine"] = "2";
+  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): refine: expected an integer, got \"2\"");
+  doc["steps"][1]["refine"] = 0;  // allowed everywhere: the inputs' resolution
+  EXPECT_EQ(parse(doc).steps[1].refine, 0);
+}
+
+// {"$artifact": NAME} in params: checked before anything runs, pasted in (and validated) when
+// the step runs.
+TEST(Pipeline, ArtifactReferencesInParams) {
+  test::TempDir dir;
+  json doc = demo_pipeline();
+  json fill = doc["steps"][0];
+  fill["outputs"] = {{"value", "again"}};
+  fill["params"]["weights"] = {{"$artifact", "smooth_sum"}};
+  doc["steps"].push_back(fill);
+  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  RunOptions options;
+  options.quiet = true;
+  // fixture.sum's artifact is {"count": ..., "sum": ...}, not the array of numbers "weights" is.
+  EXPECT_THAT(error_of([&] { run_pipeline(p, options); }),
+              ::testing::MatchesRegex("step 5 \\(fixture.fill\\): params.weights: expected an "
+                                      "array, got \\{\"count\":16384,\"sum\":.*\\}"));
+
+  doc["steps"][4]["params"]["weights"] = {{"$artifact", "smooth_total"}};
+  const Pipeline typo = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  EXPECT_EQ(error_of([&] { run_pipeline(typo, options); }),
+            "step 5 (fixture.fill): params.weights: unknown artifact 'smooth_total' (not in " +
+                dir.file("out.mqt") + " nor written by an earlier step)");
+}
+
+// A part of an artifact: fixture.sum's count as fixture.fill's seed gives the tiles of that seed
+// written as a number; a pointer to nothing is named.
+TEST(Pipeline, ArtifactPartsByJsonPointer) {
+  RunOptions options;
+  options.quiet = true;
+  auto fill_again = [](const json& seed) {
+    json doc = demo_pipeline();
+    json fill = doc["steps"][0];
+    fill["outputs"] = {{"value", "again"}};
+    fill["params"]["seed"] = seed;
+    doc["steps"].push_back(fill);
+    return doc;
+  };
+  test::TempDir by_ref, by_value;
+  run_pipeline(test::load_fixture_pipeline(test::write_pipeline(
+                   by_ref, fill_again({{"$artifact", "smooth_sum"}, {"pointer", "/count"}}))),
+               options);
+  run_pipeline(
+      test::load_fixture_pipeline(test::write_pipeline(by_value, fill_again(64 * 16 * 16))),
+      options);
+  const test::Snapshot a = test::snapshot(by_ref.file("out.mqt"));
+  const test::Snapshot b = test::snapshot(by_value.file("out.mqt"));
+  EXPECT_EQ(test::first_difference(a, b), "");
+  EXPECT_EQ(a.count("again/Q2000"), 1u);
+
+  test::TempDir bad;
+  const Pipeline p = test::load_fixture_pipeline(
+      test::write_pipeline(bad, fill_again({{"$artifact", "smooth_sum"}, {"pointer", "/total"}})));
+  EXPECT_THAT(error_of([&] { run_pipeline(p, options); }),
+              ::testing::StartsWith("step 5 (fixture.fill): params.seed.pointer: \"/total\" in "
+                                    "artifact 'smooth_sum': "));
+}
+
 TEST(Pipeline, DryRunPrintsThePlanAndWritesNothing) {
   test::TempDir dir;
   const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, demo_pipeline()));

@@ -27,7 +27,7 @@ RawTile random_tile(DType dtype, int size, int channels, uint32_t seed) {
 TEST(Codec, RoundTripsEveryDTypeBitExact) {
   for (DType dtype :
        {DType::U8, DType::U16, DType::I16, DType::U32, DType::I32, DType::F32, DType::F64})
-    for (const char* codec : {"raw", "zstd", "zstd:9"})
+    for (const char* codec : {"raw", "zstd", "zstd:3", "zstd:9", "zstd:-5"})
       for (int channels : {1, 3}) {
         const RawTile in = random_tile(dtype, 16, channels, uint32_t(dtype) * 7 + channels);
         const RawTile out = decode_tile(encode_tile(in, parse_codec(codec)));
@@ -75,9 +75,10 @@ TEST(Codec, ZstdShrinksASmoothFloatTile) {
 
 TEST(Codec, ParsesCodecNames) {
   EXPECT_EQ(parse_codec("raw").kind, Codec::Kind::Raw);
-  EXPECT_EQ(parse_codec("zstd").level, 3);
+  EXPECT_EQ(parse_codec("zstd").level, -1);
   EXPECT_EQ(parse_codec("zstd:19").level, 19);
-  for (const char* bad : {"", "lz4", "zstd:", "zstd:0", "zstd:99", "zstd:3x"})
+  EXPECT_EQ(parse_codec("zstd:-7").level, -7);
+  for (const char* bad : {"", "lz4", "zstd:", "zstd:0", "zstd:99", "zstd:3x", "zstd:-8"})
     EXPECT_THROW(parse_codec(bad), Error) << bad;
 }
 

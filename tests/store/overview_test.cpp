@@ -150,6 +150,38 @@ TEST(Overviews, RebuildsOnlyStaleAncestors) {
   EXPECT_EQ(s.levels, (std::vector<int>{0, 1, 2}));
 }
 
+// A batch holding all four children of a parent writes the parent's overview (hand-computed
+// means) and marks the grandparent stale, with no update_overviews; a batch with three of them
+// leaves the parent stale, and its overview to update_overviews.
+TEST(Overviews, BatchOfAllFourChildrenWritesTheirParent) {
+  TempDir dir;
+  auto store = Store::open(dir.file("s.mqs"), Store::Mode::Create);
+  store->create_layer(layer("dem", DType::F32, Semantics::Continuous, 2, std::nullopt));
+  const auto put_children = [&](CellId parent, int count) {
+    Store::Batch batch(*store);
+    for (int d = 0; d < count; ++d) {
+      const float v = float(10 * parent.digit(1) + d);
+      batch.put_tile("dem", parent.child(d), raw_tile<float>(2, 1, {v, v + 1, v + 2, NAN}));
+    }
+    batch.commit();
+  };
+  put_children(cell("Q2"), 4);
+  put_children(cell("Q3"), 3);
+  // Q2's overview is there before any update: per child, the mean of v, v + 1, v + 2 = v + 1.
+  EXPECT_EQ(values_of<float>(*store->get_overview("dem", cell("Q2"))),
+            (std::vector<float>{21, 22, 23, 24}));
+  EXPECT_FALSE(store->get_overview("dem", cell("Q3")));
+  store->update_overviews("dem");
+  const std::vector<float> q3 = values_of<float>(*store->get_overview("dem", cell("Q3")));
+  EXPECT_EQ(q3[0], 31);
+  EXPECT_EQ(q3[2], 33);
+  EXPECT_TRUE(std::isnan(q3[3]));  // Q33 has no tile
+  // Q was stale from both batches: its Q2 and Q3 quadrants are the means of those overviews.
+  const std::vector<float> q = values_of<float>(*store->get_overview("dem", cell("Q")));
+  EXPECT_EQ(q[2], 22.5f);
+  EXPECT_EQ(q[3], 32);  // NaN of Q33 left out
+}
+
 TEST(Overviews, BadArguments) {
   TempDir dir;
   auto store = Store::open(dir.file("s.mqs"), Store::Mode::Create);

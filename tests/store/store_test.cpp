@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "store/codec.h"
 #include "store_test_util.h"
 
 namespace maquette {
@@ -321,6 +322,31 @@ TEST(StoreTiles, CorruptBlobIsReportedWithLayerAndCell) {
   auto store = Store::open(path, Store::Mode::ReadOnly);
   expect_error([&] { store->get_tile("dem", c); }, {"corrupt tile", "layer 'dem'", "Q012", path});
   expect_error([&] { store->scan("dem", c, c, [](CellId, const RawTile&) {}); }, {"Q012"});
+}
+
+// Old stores wrote "zstd" tiles at zstd level 3; the codec string names the format, not the level:
+// such a layer is read, resumed (same definition) and extended at today's level.
+TEST(StoreTiles, ZstdLayerWrittenAtAnotherLevelIsReadAndExtended) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  const CellId old_cell = cell("Q012"), new_cell = cell("Q013");
+  const RawTile old_tile = smooth_tile(16, 1.0), new_tile = smooth_tile(16, 2.0);
+  Store::open(path, Store::Mode::Create)->create_layer(dem_layer());
+  const std::vector<std::byte> level3 = encode_tile(old_tile, parse_codec("zstd:3"));
+  ASSERT_NE(level3, encode_tile(old_tile, parse_codec("zstd")));  // the levels do differ
+  std::string hex;
+  for (std::byte b : level3)
+    hex += {"0123456789abcdef"[int(b) >> 4], "0123456789abcdef"[int(b) & 15]};
+  raw_sql(path, "INSERT INTO tiles(layer, cell, blob) SELECT id, " +
+                    std::to_string(int64_t(old_cell.id())) + ", X'" + hex +
+                    "' FROM layers WHERE name = 'dem'");
+  auto store = Store::open(path, Store::Mode::ReadWrite);
+  store->create_layer(dem_layer());  // resuming: the same definition, codec "zstd"
+  store->put_tile("dem", new_cell, new_tile);
+  store->update_overviews("dem");
+  EXPECT_EQ(store->get_tile("dem", old_cell)->bytes, old_tile.bytes);
+  EXPECT_EQ(store->get_tile("dem", new_cell)->bytes, new_tile.bytes);
+  EXPECT_TRUE(store->get_overview("dem", old_cell.parent()).has_value());
 }
 
 TEST(StoreBatch, RollbackOnExceptionLeavesNothing) {

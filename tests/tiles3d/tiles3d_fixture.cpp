@@ -1,28 +1,18 @@
 #include "tiles3d_fixture.h"
 
 #include <cmath>
-#include <cstring>
 
 #include "gltf/content_layer.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "test_tiles.h"
 
 namespace maquette::test {
 namespace {
 
-template <typename T, typename F>
-RawTile make_tile(const Grid& grid, CellId cell, int channels, F value) {
-  const PlaneSquare sq = grid.plane_square(cell);
-  const double pixel = sq.side / kTileSize;
-  std::vector<T> v;
-  for (int r = 0; r < kTileSize; ++r)
-    for (int c = 0; c < kTileSize; ++c) {
-      const LonLat p = grid.inverse({sq.x_min + (c + 0.5) * pixel, sq.y_max - (r + 0.5) * pixel});
-      for (int k = 0; k < channels; ++k) v.push_back(T(value(p, k)));
-    }
-  RawTile t{dtype_of<T>(), kTileSize, channels, std::vector<std::byte>(v.size() * sizeof(T))};
-  std::memcpy(t.bytes.data(), v.data(), t.bytes.size());
-  return t;
+RawTile dem_tile(const Grid& grid, CellId cell) {
+  return make_tile<float>(grid, cell, kTileSize, 1,
+                          [](const TileSample& s, int) { return dem_field(s.lonlat); });
 }
 
 LonLat centre(const Grid& grid, CellId cell) {
@@ -62,34 +52,25 @@ Tiles3dFixture build() {
   const Grid& grid = default_grid();
   Tiles3dFixture f;
   f.store_path = temp_dir() + "/tiles3d.maquette";
-  const CellId parent = grid.cell_from_point({10, 10}, kLevel - 1);
-  for (int d = 0; d < 4; ++d) f.block.push_back(parent.child(d));
+  f.block = block_of_four(grid, {10, 10}, kLevel);
   f.seam = {grid.cell_from_point({-0.3, 5}, kLevel), grid.cell_from_point({0.3, 5}, kLevel)};
 
   auto store = Store::open(f.store_path, Store::Mode::Create);
-  LayerInfo dem;
-  dem.name = "dem";
-  dem.tile_size = kTileSize;
-  dem.level = kLevel;
+  LayerInfo dem = layer_info("dem", DType::F32, 1, kTileSize, kLevel);
   dem.nodata = -9999;
   dem.units = "m";
-  LayerInfo rgb = dem;
-  rgb.name = "rgb";
-  rgb.dtype = DType::U8;
-  rgb.channels = 3;
-  rgb.nodata.reset();
-  rgb.units = "";
+  const LayerInfo rgb = layer_info("rgb", DType::U8, 3, kTileSize, kLevel);
   store->create_layer(dem);
   store->create_layer(rgb);
   Store::Batch batch(*store);
   std::vector<CellId> all = f.block;
   all.insert(all.end(), f.seam.begin(), f.seam.end());
   for (CellId c : all) {
-    batch.put_tile("dem", c,
-                   make_tile<float>(grid, c, 1, [](LonLat p, int) { return dem_field(p); }));
-    batch.put_tile("rgb", c, make_tile<uint8_t>(grid, c, 3, [](LonLat p, int k) {
-                     return uint8_t(int(std::abs(p.lon * 50 + p.lat * 30 + k * 60)) % 256);
-                   }));
+    batch.put_tile("dem", c, dem_tile(grid, c));
+    batch.put_tile(
+        "rgb", c, make_tile<uint8_t>(grid, c, kTileSize, 3, [](const TileSample& s, int k) {
+          return uint8_t(int(std::abs(s.lonlat.lon * 50 + s.lonlat.lat * 30 + k * 60)) % 256);
+        }));
   }
   put_content(batch, "boxes", f.block[0], box_content(grid, f.block[0]));
   put_content(batch, "trees", f.block[1], tree_content(grid, f.block[1]));
@@ -105,16 +86,11 @@ std::string corner_store(const std::vector<CellId>& cells) {
   const Grid& grid = default_grid();
   const std::string path = temp_dir() + "/corner.maquette";
   auto store = Store::open(path, Store::Mode::Create);
-  LayerInfo dem;
-  dem.name = "dem";
-  dem.tile_size = kTileSize;
-  dem.level = cells.front().level();
+  LayerInfo dem = layer_info("dem", DType::F32, 1, kTileSize, cells.front().level());
   dem.units = "m";
   store->create_layer(dem);
   Store::Batch batch(*store);
-  for (CellId c : cells)
-    batch.put_tile("dem", c,
-                   make_tile<float>(grid, c, 1, [](LonLat p, int) { return dem_field(p); }));
+  for (CellId c : cells) batch.put_tile("dem", c, dem_tile(grid, c));
   batch.commit();
   return path;
 }

@@ -43,7 +43,7 @@ inline CellData run(const std::string& name, CellId cell, int size, CellData dat
   for (const OutputSpec& out : op.spec().outputs)
     if (outputs.empty() || std::find(outputs.begin(), outputs.end(), out.name) != outputs.end())
       data.outputs.emplace(out.name, Tile<float>(size, out.channels));
-  op.run({cell, size, &default_grid(), &full, nullptr}, data);
+  op.run({.cell = cell, .tile_size = size, .grid = &default_grid(), .params = &full}, data);
   return data;
 }
 

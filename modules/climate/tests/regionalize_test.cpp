@@ -103,7 +103,8 @@ json synthetic_stations() {
   return {{"columns", {"t", "p"}}, {"stations", stations}};
 }
 
-const CellId kCell = CellId::FromFaceColRow(1, 6, 20, 20);
+// A cell among the synthetic stations.
+const CellId kCell = default_grid().cell_from_point({-105.5, 39.5}, 6);
 
 TEST_F(Regionalize, OutputsFollowTheRegression) {
   put_json("stations", synthetic_stations());
@@ -202,6 +203,29 @@ TEST_F(Regionalize, Colorado) {
   EXPECT_LT(th.per_km_elevation, -4);
 }
 
+// Missing values as they arrive from the store (NaN is stored as null): left out of the fit and
+// counted; the remaining stations still give the exact regression.
+TEST_F(Regionalize, MissingValuesAreLeftOut) {
+  json stations = synthetic_stations();
+  stations["stations"][0]["values"]["t"] = std::nan("");
+  stations["stations"][1]["elevation"] = nullptr;
+  stations["stations"][2]["values"].erase("t");
+  put_json("stations", stations);
+  const StationFit f = fit({{"stations", "stations"}, {"columns", {"t", "p"}}}, {kCell});
+  EXPECT_EQ(f.fits[0].at("t").stations, 37);
+  EXPECT_EQ(f.fits[0].at("t").missing, 3);
+  EXPECT_EQ(f.fits[0].at("p").missing, 1);
+  EXPECT_NEAR(f.fits[0].at("t").per_km_elevation, -6, 1e-9);
+  // A station off the globe is an error naming it.
+  stations["stations"][3]["lat"] = 95;
+  put_json("stations", stations);
+  EXPECT_EQ(error_of([&] {
+              fit({{"stations", "stations"}, {"columns", {"t"}}}, {kCell});
+            }),
+            "step 1 (climate.fit_stations) failed: climate.fit_stations: params.stations: "
+            "artifact 'stations': station 4 ('3'): lat 95 is outside [-90, 90]");
+}
+
 TEST_F(Regionalize, BadInput) {
   const json base = {{"stations", "stations"}, {"columns", {"t"}}};
   const std::string fit_failed = "step 1 (climate.fit_stations) failed: climate.fit_stations: ";
@@ -222,6 +246,17 @@ TEST_F(Regionalize, BadInput) {
   p["outside_region"] = "drop";
   EXPECT_NE(error_of([&] { fit(p, {small}); }).find("the regression needs at least 3"),
             std::string::npos);
+  // A region away from every station (e.g. a DEM of another area) would get an extrapolated
+  // fit: refused whatever the policy.
+  const CellId alps = default_grid().cell_from_point({10, 47}, 6);
+  for (const char* policy : {"use", "drop"}) {
+    p["outside_region"] = policy;
+    EXPECT_NE(error_of([&] { fit(p, {alps}); })
+                  .find(fit_failed + "params.stations: the 40 stations of 'stations' (lon "
+                                     "-109..-102, lat 37..41) do not overlap the step's region"),
+              std::string::npos)
+        << policy;
+  }
   // A zones layer of points.
   const std::string geojson = (dir_ / "points.geojson").string();
   std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature",

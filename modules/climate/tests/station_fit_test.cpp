@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "climate_module.h"
 
@@ -127,6 +128,55 @@ TEST(StationFit, DegenerateInputsAreErrors) {
               fit_stations(flat, {everything()}, {"t"}, Horizontal::None, "op");
             }).find("do not determine the regression"),
             std::string::npos);
+}
+
+// Zones are fitted separately: one zone with too few stations fails the fit, naming the zone.
+TEST(StationFit, ZoneWithTooFewStationsIsAnError) {
+  auto stations = synthetic(20, -109, -106, {10, -6, 0, 0}, 8);
+  const auto east = synthetic(2, -104, -103, {10, -6, 0, 0}, 9);
+  stations.insert(stations.end(), east.begin(), east.end());
+  EXPECT_EQ(error_of([&] {
+              fit_stations(stations, {box(1, -110, 36, -105, 42), box(2, -105, 36, -101, 42)},
+                           {"t"}, Horizontal::None, "op");
+            }),
+            "op: zone '2': column 't': 2 stations with a value and an elevation, the regression "
+            "needs at least 3");
+}
+
+// The stations artifact as stored: null or absent values and elevations are missing; anything
+// else that is not a finite number, or a position off the globe, is an error naming the station.
+TEST(StationFit, StationsArtifactValues) {
+  const json good = {
+      {"stations",
+       {{{"id", "a"}, {"lon", -105}, {"lat", 39}, {"elevation", 1500}, {"values", {{"t", 10.5}}}},
+        {{"lon", -104}, {"lat", 38}, {"elevation", nullptr}, {"values", {{"t", nullptr}}}},
+        {{"lon", -103}, {"lat", 37}}}}};
+  const auto stations = parse_stations(good, "s");
+  ASSERT_EQ(stations.size(), 3u);
+  EXPECT_EQ(stations[0].id, "a");
+  EXPECT_EQ(stations[1].id, "2");
+  EXPECT_EQ(*station_value(stations[0], "t"), 10.5);
+  EXPECT_FALSE(stations[1].elevation);
+  EXPECT_FALSE(station_value(stations[1], "t"));
+  EXPECT_FALSE(station_value(stations[2], "t"));
+
+  const auto error = [&](const char* field, const json& value, int index = 0) {
+    json bad = good;
+    if (std::string(field) == "t")
+      bad["stations"][index]["values"]["t"] = value;
+    else
+      bad["stations"][index][field] = value;
+    return error_of([&] { parse_stations(bad, "s"); });
+  };
+  EXPECT_EQ(error("lat", 95), "s: station 1 ('a'): lat 95 is outside [-90, 90]");
+  EXPECT_EQ(error("lon", -200.5, 1), "s: station 2: lon -200.5 is outside [-180, 180]");
+  EXPECT_EQ(error("lon", "x"), "s: station 1 ('a'): no numeric 'lon'");
+  EXPECT_EQ(error("elevation", "high"),
+            "s: station 1 ('a'): elevation \"high\" is not a finite number or null");
+  EXPECT_EQ(error("t", "NA"),
+            "s: station 1 ('a'): column 't': \"NA\" is not a finite number or null");
+  EXPECT_EQ(error("t", std::numeric_limits<double>::infinity()),
+            "s: station 1 ('a'): column 't': inf is not a finite number or null");
 }
 
 TEST(StationFit, JsonRoundTrip) {

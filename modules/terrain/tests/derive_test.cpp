@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "../tile_geometry.h"
+#include "core/ecef.h"
 #include "terrain_module.h"
 
 namespace maquette::terrain {
@@ -130,7 +130,7 @@ TEST(Derive, ComputesOnlyTheMappedOutputs) {
   const CellOperator& op = terrain_test::terrain_operator("terrain.derive");
   data.outputs.emplace("slope", Tile<float>());
   const json params = validate_params(op.spec().params_schema, json::object(), "derive");
-  op.run({cell, kSize, &default_grid(), &params, nullptr}, data);
+  op.run({.cell = cell, .tile_size = kSize, .grid = &default_grid(), .params = &params}, data);
   EXPECT_EQ(data.outputs.size(), 1U);
   EXPECT_EQ(data.outputs.at("slope").size(), kSize);
   EXPECT_GT(data.outputs.at("slope").at(3, 3), 0.0f);

@@ -7,8 +7,8 @@
 #include <cstring>
 #include <limits>
 
-#include "../tile_geometry.h"
 #include "../void_fill.h"
+#include "core/ecef.h"
 #include "terrain_module.h"
 
 namespace maquette::terrain {

@@ -31,6 +31,27 @@ TEST(Synthesize, SameBitsOnRepeatedRuns) {
   EXPECT_NE(std::memcmp(a.data().data(), other.data().data(), a.data().size_bytes()), 0);
 }
 
+// Parameters out of range are errors naming the field and the bound, before anything runs.
+TEST(Synthesize, ParamsOutOfRange) {
+  const json& schema = terrain_test::terrain_operator("terrain.synthesize").spec().params_schema;
+  const auto message = [&](const json& params) {
+    try {
+      validate_params(schema, params, "step 1 (terrain.synthesize)");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(
+      message({{"amplitude_m", 30000}}).find("params.amplitude_m: 30000 is above the maximum"),
+      std::string::npos);
+  EXPECT_NE(message({{"octaves", 0}}).find("params.octaves: 0 is below the minimum 1"),
+            std::string::npos);
+  EXPECT_NE(message({{"feature_km", 0}}).find("params.feature_km: 0 is below the minimum"),
+            std::string::npos);
+  EXPECT_EQ(message({{"amplitude_m", 20000}, {"octaves", 24}, {"feature_km", 20000}}), "");
+}
+
 // Tiles along an equatorial-polar seam, the R|O seam and around two cube corners: every pixel,
 // halo included, equals the function evaluated directly at its true position.
 TEST(Synthesize, SeamlessAcrossFaces) {

@@ -31,7 +31,7 @@ inline CellData run(const std::string& name, CellId cell, int size, CellData dat
   const json full = validate_params(op.spec().params_schema, params, name);
   for (const OutputSpec& out : op.spec().outputs)
     data.outputs.emplace(out.name, Tile<float>(size, out.channels));
-  op.run({cell, size, &default_grid(), &full, nullptr}, data);
+  op.run({.cell = cell, .tile_size = size, .grid = &default_grid(), .params = &full}, data);
   return data;
 }
 

@@ -63,6 +63,51 @@ TEST(Classify, SnowBelowMinimalAltitudeAndExcludedLandCover) {
   for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isnan(k.at(3, r)));  // cultivated
 }
 
+// Majority filter (minimum mapping unit): a red 4 x 4 tile with a ring of 2 beyond it, a green
+// pixel inside, a green pair on the border, a grey (unclassified) pixel.
+TEST(Classify, MajorityFilter) {
+  Tile<float> rgb(4, 3, 2);
+  for (int r = -2; r < 6; ++r)
+    for (int c = -2; c < 6; ++c) rgb.at(c, r, 0) = 200, rgb.at(c, r, 1) = 30, rgb.at(c, r, 2) = 20;
+  const auto paint = [&](int c, int r, std::array<float, 3> v) {
+    for (int k = 0; k < 3; ++k) rgb.at(c, r, k) = v[size_t(k)];
+  };
+  paint(1, 1, {30, 90, 40});
+  paint(3, 3, {30, 90, 40});
+  paint(4, 3, {30, 90, 40});  // in the ring: counts, but is not output
+  paint(2, 0, {120, 120, 118});
+  const json boxes =
+      json::parse(R"({"boxes": [{"id": 1, "hue": [340, 20]}, {"id": 2, "hue": [90, 180]}]})");
+  CellData d;
+  d.inputs.emplace("rgb", rgb);
+  const Tile<float> none = classify(d, boxes);
+  EXPECT_EQ(none.at(1, 1), 2);
+  json p = boxes;
+  p["majority_radius"] = 1;
+  const Tile<float> k = classify(d, p);
+  EXPECT_EQ(k.at(1, 1), 1);             // 8 red neighbours of 8 classified
+  EXPECT_EQ(k.at(3, 3), 1);             // 2 green of 9 (one from the ring)
+  EXPECT_TRUE(std::isnan(k.at(2, 0)));  // unclassified stays unclassified
+  EXPECT_EQ(k.at(0, 0), 1);
+  // Ties keep the pixel's own class: around (1, 1), 4 red, 4 green (its own) and a grey.
+  CellData t;
+  paint(1, 1, {30, 90, 40});
+  paint(2, 1, {30, 90, 40});
+  paint(0, 2, {30, 90, 40});
+  paint(1, 2, {30, 90, 40});
+  paint(2, 2, {120, 120, 118});
+  t.inputs.emplace("rgb", rgb);
+  EXPECT_EQ(classify(t, p).at(1, 1), 2);
+  p["majority_radius"] = 3;
+  try {
+    classify(d, p);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "texture.classify: inputs.rgb: halo 2 is narrower than params.majority_radius 3");
+  }
+}
+
 TEST(Classify, ErrorsNameTheParameter) {
   CellData d;
   d.inputs.emplace("rgb", image());

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "../calibration.h"
 #include "../hierarchy.h"
 #include "../noise.h"
 #include "../surface.h"
@@ -155,6 +156,55 @@ TEST(Model, ConstraintFunctionHasMeanHalf) {
   const Table f = constraint_function(flat);
   EXPECT_FLOAT_EQ(f[3], 0.5f);
   EXPECT_GT(sum, 0);
+}
+
+TEST(Model, OddsFunctionByHand) {
+  std::array<uint64_t, kBins> mine{}, all{};
+  mine[3] = 1, all[3] = 4;          // odds 1.5 / 3.5
+  mine[9] = 5, all[9] = 5;          // 5.5 / 0.5 = 11
+  all[10] = 2;                      // 0.5 / 2.5 = 0.2
+  mine[20] = 1000, all[20] = 1000;  // 2001, clamped to 64: the largest
+  all[30] = 1000;                   // 0.5 / 1000.5, clamped to 1 / 64
+  const Table t = odds_function(mine, all);
+  EXPECT_FLOAT_EQ(t[3], float(1.5 / 3.5 / 64));
+  EXPECT_FLOAT_EQ(t[9], float(11.0 / 64));
+  EXPECT_FLOAT_EQ(t[10], float(0.2 / 64));
+  EXPECT_FLOAT_EQ(t[20], 1.0f);
+  EXPECT_FLOAT_EQ(t[30], float(1.0 / 64 / 64));
+  EXPECT_EQ(t[11], 0);  // no pixel
+}
+
+// Calibration by hand: layer "b" (class 1, after "a") has product bin / 255; 10 of 100
+// samples are of class 1, so its threshold is the 10th largest product among all samples.
+TEST(Model, CalibratedBiasMatchesTheObservedArea) {
+  Model m;
+  m.quantities = {{"height", 0, 1}};
+  Table ramp{}, one{};
+  for (int i = 0; i < kBins; ++i) ramp[size_t(i)] = float(i) / 255, one[size_t(i)] = 1;
+  m.layers.resize(3);
+  m.layers[0].class_id = 0, m.layers[0].constraints.resize(1);
+  m.layers[1].parent = 0, m.layers[1].class_id = 0, m.layers[1].constraints = {one};
+  m.layers[2].parent = 0, m.layers[2].class_id = 1, m.layers[2].constraints = {ramp};
+  std::vector<Sample> samples;
+  for (int i = 0; i < 90; ++i) samples.push_back({0, {uint8_t(i)}});
+  for (int i = 0; i < 10; ++i) samples.push_back({1, {uint8_t(200 + i)}});
+  calibrate_biases(m, samples);
+  EXPECT_FLOAT_EQ(m.layers[2].bias, 0.5f / (200.0f / 255));
+  EXPECT_EQ(m.layers[1].bias, 1);  // the first level-1 layer takes the rest
+  // A tiny product: the bias is capped (0.5 / 1e-7 would be 5e6).
+  Table tiny{};
+  tiny[1] = 1e-7f;
+  m.layers[2].constraints = {tiny};
+  samples = {{0, {0}}, {1, {1}}};
+  calibrate_biases(m, samples);
+  EXPECT_EQ(m.layers[2].bias, kMaxBias);
+  samples = {{0, {0}}, {1, {0}}};
+  m.layers[2].bias = 1;
+  calibrate_biases(m, samples);
+  EXPECT_EQ(m.layers[2].bias, 1);  // no sample with a positive product: unchanged
+  samples = {{0, {1}}, {0, {2}}};
+  calibrate_biases(m, samples);
+  EXPECT_EQ(m.layers[2].bias, 1);  // no sample of the class: unchanged
 }
 
 TEST(Noise, CodomainAndDeterminism) {

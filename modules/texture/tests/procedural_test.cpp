@@ -1,5 +1,7 @@
 // texture.procedural through the loaded module: seamless across tile borders and a face seam at
-// levels finer than the DEM, same bits for any thread count, errors naming the missing input.
+// levels finer than the DEM, same bits for any thread count and tiling, errors naming the missing
+// input. Pixels of 9 to 35 m, so the noise (wavelengths 50 to 300 m) is resolved and cached on
+// lattices coarser than the pixels (lattice_noise.h).
 #include <gtest/gtest.h>
 
 #include <thread>
@@ -17,9 +19,9 @@ const json kModel = json::parse(R"({
   "format": "maquette.texture.model", "version": 1,
   "quantities": [{"name": "height", "range": [0, 3000]}, {"name": "slope", "range": [0, 90]}],
   "root": {"colour": [150, 110, 90], "class": 0, "roughness_m": 3,
-           "noise": {"seed": 3, "wavelength_m": 40}, "children": [
+           "noise": {"seed": 3, "wavelength_m": 200}, "children": [
     {"class": 1, "colour": [80, 140, 60], "bias": 1, "noise_scale": 0.4, "roughness_m": 2,
-     "noise": {"seed": 5, "wavelength_m": 60, "octaves": 4},
+     "noise": {"seed": 5, "wavelength_m": 300, "octaves": 4},
      "constraints": {"height": {"hat": [0, 100, 1200, 1400]}}},
     {"class": 2, "colour": [30, 80, 40], "bias": 1, "noise_scale": 0.3,
      "constraints": {"height": {"hat": [1200, 1400, 2200, 2400]}, "slope": {"hat": [0, 0, 25, 35]}}},
@@ -54,9 +56,9 @@ void expect_seamless(const std::vector<float>& a, const std::vector<float>& b, i
 }
 
 TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
-  const int size = 16, refine = 2, level = 10;
-  const CellId a = CellId::FromFaceColRow(2, level, 520, 500),
-               b = CellId::FromFaceColRow(2, level, 521, 500);
+  const int size = 16, refine = 2, level = 14;  // 35 m inputs, 8.8 m pixels
+  const CellId a = CellId::FromFaceColRow(2, level, 8320, 8000),
+               b = CellId::FromFaceColRow(2, level, 8321, 8000);
   const Rendered ra = render(a, size, refine), rb = render(b, size, refine);
   ASSERT_EQ(ra.size, 64);
   expect_seamless(ra.rgb, rb.rgb, ra.size, 3, "rgb");
@@ -65,11 +67,11 @@ TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
 }
 
 TEST(Procedural, SeamlessAcrossFaceSeam) {
-  const int size = 16, refine = 1, level = 9;
+  const int size = 16, refine = 1, level = 13;  // 35 m pixels
   const uint32_t last = (1u << level) - 1;
   // O's last column meets P's first (equatorial faces side by side).
-  const CellId a = CellId::FromFaceColRow(1, level, last, 200),
-               b = CellId::FromFaceColRow(2, level, 0, 200);
+  const CellId a = CellId::FromFaceColRow(1, level, last, 3200),
+               b = CellId::FromFaceColRow(2, level, 0, 3200);
   const Rendered ra = render(a, size, refine), rb = render(b, size, refine);
   expect_seamless(ra.rgb, rb.rgb, ra.size, 3, "rgb");
   expect_seamless(ra.height, rb.height, ra.size, 1, "height");
@@ -78,7 +80,7 @@ TEST(Procedural, SeamlessAcrossFaceSeam) {
 // Finer levels refine the same surface: a pixel of refine 0 and the mean of its 4 children at
 // refine 1 have about the same height.
 TEST(Procedural, LevelsAgree) {
-  const CellId cell = CellId::FromFaceColRow(2, 10, 520, 500);
+  const CellId cell = CellId::FromFaceColRow(2, 14, 8320, 8000);  // 35 and 17.6 m pixels
   const Rendered r0 = render(cell, 16, 0), r1 = render(cell, 16, 1);
   double worst = 0;
   for (int r = 0; r < 16; ++r)
@@ -95,7 +97,7 @@ TEST(Procedural, SameBitsForAnyThreadCount) {
   const int size = 32;
   std::vector<CellId> cells;
   for (uint32_t i = 0; i < 8; ++i)
-    cells.push_back(CellId::FromFaceColRow(2, 10, 520 + i % 4, 500 + i / 4));
+    cells.push_back(CellId::FromFaceColRow(2, 14, 8320 + i % 4, 8000 + i / 4));
   const auto run_all = [&](int threads) {
     std::vector<std::vector<float>> out(cells.size());
     std::vector<std::thread> pool;
@@ -117,6 +119,28 @@ TEST(Procedural, SameBitsForAnyThreadCount) {
   const auto one = run_all(1);
   EXPECT_EQ(one, run_all(2));
   EXPECT_EQ(one, run_all(4));
+}
+
+// A cell rendered whole and as its 4 children one level finer (the same output pixels, the
+// same DEM pixels): the same bits.
+TEST(Procedural, SameBitsForAnyTiling) {
+  const CellId parent = CellId::FromFaceColRow(2, 14, 8320, 8000);
+  const Rendered whole = render(parent, 32, 2);
+  ASSERT_EQ(whole.size, 128);
+  for (uint32_t k = 0; k < 4; ++k) {
+    const Rendered part =
+        render(CellId::FromFaceColRow(2, 15, 2 * 8320 + k % 2, 2 * 8000 + k / 2), 16, 2);
+    ASSERT_EQ(part.size, 64);
+    for (size_t r = 0; r < 64; ++r)
+      for (size_t c = 0; c < 64; ++c) {
+        const size_t p = r * 64 + c, w = (r + 64 * (k / 2)) * 128 + c + 64 * (k % 2);
+        for (size_t i = 0; i < 3; ++i) {
+          ASSERT_EQ(part.rgb[3 * p + i], whole.rgb[3 * w + i]) << k << " " << c << " " << r;
+          ASSERT_EQ(part.normal[3 * p + i], whole.normal[3 * w + i]) << k << " " << c << " " << r;
+        }
+        ASSERT_EQ(part.height[p], whole.height[w]) << k << " " << c << " " << r;
+      }
+  }
 }
 
 TEST(Procedural, ErrorsNameTheInput) {

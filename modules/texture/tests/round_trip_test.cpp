@@ -140,31 +140,53 @@ TEST(RoundTrip, HatModelIsRecovered) {
   EXPECT_GE(assess(s, kHatModel)["kappa"].get<double>(), 0.9);
 }
 
+// The prior-aware fit (class odds, calibrated biases, as the Zion example uses) recovers the
+// hat model too, and each class dominates about as much land as it was observed on.
+const json kPriorAwareFit = {{"ranges", {{"height", {0, 3000}}}},
+                             {"classes", {0, 1, 2, 3}},
+                             {"children", 1},
+                             {"constraints", "odds"},
+                             {"calibrate", true},
+                             {"sample_step", 2}};
+
+TEST(RoundTrip, PriorAwareFitIsRecovered) {
+  Scene s = make_scene(kHatModel);
+  const json report = assess(s, fit(s, kPriorAwareFit));
+  EXPECT_GE(report["kappa"].get<double>(), 0.9);
+  RecordProperty("kappa", std::to_string(report["kappa"].get<double>()));
+  for (const auto& [k, p] : report["proportions"].items())
+    EXPECT_NEAR(p["predicted"].get<double>(), p["observed"].get<double>(), 0.03) << "class " << k;
+}
+
+// Both fits (the calibration sample is concatenated in cell order).
 TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
   const Scene s = make_scene(kHatModel);
-  const json a = fit(s, kFit);
-  EXPECT_EQ(a, fit(s, kFit));
-  // Partials merged pairwise as a tree give the same model as merged in sequence.
-  const auto& op = static_cast<const ReduceOperator&>(texture_operator("texture.fit"));
-  const json params = full_params("texture.fit", kFit);
-  std::vector<json> parts;
-  for (const CellId c : s.cells) {
-    CellData d;
-    d.inputs.emplace("classes", s.classes.at(c));
-    d.inputs.emplace("rgb", s.rgb.at(c));
-    d.inputs.emplace("dem", s.dem_halo(c));
-    parts.push_back(op.map({c, kSize, &default_grid(), &params, nullptr}, d));
+  for (const json& given : {kFit, kPriorAwareFit}) {
+    const json a = fit(s, given);
+    EXPECT_EQ(a, fit(s, given));
+    // Partials merged pairwise as a tree give the same model as merged in sequence.
+    const auto& op = static_cast<const ReduceOperator&>(texture_operator("texture.fit"));
+    const json params = full_params("texture.fit", given);
+    std::vector<json> parts;
+    for (const CellId c : s.cells) {
+      CellData d;
+      d.inputs.emplace("classes", s.classes.at(c));
+      d.inputs.emplace("rgb", s.rgb.at(c));
+      d.inputs.emplace("dem", s.dem_halo(c));
+      parts.push_back(
+          op.map({.cell = c, .tile_size = kSize, .grid = &default_grid(), .params = &params}, d));
+    }
+    while (parts.size() > 1) {
+      std::vector<json> next;
+      for (size_t i = 0; i + 1 < parts.size(); i += 2)
+        next.push_back(op.merge(parts[i], parts[i + 1]));
+      parts = next;
+    }
+    const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
+    EXPECT_EQ(
+        json::parse(std::string(reinterpret_cast<const char*>(tree.data.data()), tree.data.size())),
+        a);
   }
-  while (parts.size() > 1) {
-    std::vector<json> next;
-    for (size_t i = 0; i + 1 < parts.size(); i += 2)
-      next.push_back(op.merge(parts[i], parts[i + 1]));
-    parts = next;
-  }
-  const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
-  EXPECT_EQ(
-      json::parse(std::string(reinterpret_cast<const char*>(tree.data.data()), tree.data.size())),
-      a);
 }
 
 // texture.fit's "out" file, given to texture.procedural as "model_file", renders the same.
@@ -226,6 +248,39 @@ TEST(RoundTrip, BadInputErrors) {
     EXPECT_STREQ(e.what(),
                  "texture.fit: no classified pixel with every quantity known in the region "
                  "(inputs.classes empty, or the quantities missing)");
+  }
+}
+
+// Quantities missing for some cells (documented fallback): their pixels are left out of the
+// fit, so the model is the one fitted on the other cells alone; the assessment refuses a
+// region with no classified pixel (an image that does not overlap the DEM's region).
+TEST(RoundTrip, MissingQuantitiesAndNoOverlap) {
+  const Scene s = make_scene(kHatModel);
+  const std::vector<CellId> half(s.cells.begin() + 8, s.cells.end());
+  const auto inputs = [&](CellId c) {
+    CellData d;
+    d.inputs.emplace("classes", s.classes.at(c));
+    d.inputs.emplace("rgb", s.rgb.at(c));
+    const bool missing = std::find(half.begin(), half.end(), c) == half.end();
+    d.inputs.emplace("dem", missing ? Tile<float>(kSize, 1, kInputHalo, NAN) : s.dem_halo(c));
+    return d;
+  };
+  EXPECT_EQ(run_reduce("texture.fit", s.cells, kSize, inputs, kFit),
+            run_reduce("texture.fit", half, kSize, inputs, kFit));
+  try {
+    run_reduce(
+        "texture.assess", s.cells, kSize,
+        [&](CellId c) {
+          CellData d;
+          d.inputs.emplace("classes", Tile<float>(kSize, 1, 2, NAN));
+          d.inputs.emplace("predicted", s.halo(s.classes, c, 2));
+          return d;
+        },
+        json::object());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "texture.assess: no classified pixel in the region (inputs.classes empty)");
   }
 }
 

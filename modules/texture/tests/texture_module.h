@@ -41,7 +41,7 @@ inline CellData run_cell(const std::string& name, CellId cell, int size, CellDat
   const json full = full_params(name, params);
   for (const OutputSpec& out : op.spec().outputs)
     data.outputs.emplace(out.name, Tile<float>(size, out.channels));
-  op.run({cell, size, &default_grid(), &full, nullptr}, data);
+  op.run({.cell = cell, .tile_size = size, .grid = &default_grid(), .params = &full}, data);
   return data;
 }
 
@@ -54,7 +54,9 @@ inline json run_reduce(const std::string& name, std::vector<CellId> cells, int s
   std::sort(cells.begin(), cells.end());
   json merged;
   for (const CellId c : cells)
-    merged = op.merge(merged, op.map({c, size, &default_grid(), &full, nullptr}, inputs(c)));
+    merged = op.merge(
+        merged, op.map({.cell = c, .tile_size = size, .grid = &default_grid(), .params = &full},
+                       inputs(c)));
   const Artifact a = op.finish(merged, {&default_grid(), &full, nullptr});
   return json::parse(std::string(reinterpret_cast<const char*>(a.data.data()), a.data.size()));
 }

@@ -1,0 +1,93 @@
+#include "cli/export_jobs.h"
+
+#include <spdlog/spdlog.h>
+
+#include "core/error.h"
+#include "core/geojson.h"
+#include "core/grid.h"
+#include "gltf/export_glb.h"
+#include "image/quicklook.h"
+#include "store/store.h"
+
+namespace maquette::cli {
+namespace {
+
+RegionSpec region_of(const RegionOptions& o) {
+  RegionSpec region;
+  if (!o.bbox.empty()) {
+    check_bbox(o.bbox, "--bbox");
+    region.bbox = {o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3]};
+  }
+  for (const std::string& id : o.cells) region.cells.push_back(CellId::Parse(id));
+  return region;
+}
+
+bool metres(const std::string& units) {
+  return units == "m" || units == "metre" || units == "metres" || units == "meter" ||
+         units == "meters";
+}
+
+std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
+  std::vector<CellId> cells;
+  for (const std::string& id : ids) cells.push_back(CellId::Parse(id));
+  return cells;
+}
+
+}  // namespace
+
+void run_export(GtiffJob job) {
+  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  job.spec.region = region_of(job.region);
+  export_geotiff(*store, default_grid(), job.spec, job.out);
+  spdlog::info("wrote {} ({})", job.out, job.spec.crs);
+}
+
+void run_export(const PngJob& o) {
+  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  const Grid& grid = default_grid();
+  const LayerInfo info = store->require_layer(o.layer);
+  QuicklookStyle style;
+  style.ramp = !o.ramp.empty()                            ? parse_ramp(o.ramp)
+               : metres(info.units) && info.channels == 1 ? Ramp::Terrain
+                                                          : Ramp::Grey;
+  if (!o.range.empty()) style.range = std::make_pair(o.range[0], o.range[1]);
+  style.hillshade = o.hillshade;
+  for (int b : o.bands) style.bands.push_back(b - 1);
+  if (info.semantics == Semantics::Categorical) style.classes = class_table(info);
+  const LonLatRaster mosaic = mosaic_layer(
+      *store, grid, o.layer, layer_tile_cells(*store, grid, info, region_of(o.region)), o.max_size);
+  write_quicklook_png(mosaic, style, o.out);
+  spdlog::info("wrote {} ({} x {} px, {:.6f} degrees/px, lon/lat)", o.out, mosaic.width,
+               mosaic.height, mosaic.step);
+}
+
+void run_export(Tiles3dJob job) {
+  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  job.spec.region = region_of(job.region);
+  if (!job.levels.empty()) {
+    const size_t dots = job.levels.find("..");
+    try {
+      if (dots == std::string::npos) throw std::invalid_argument("no ..");
+      job.spec.min_level = std::stoi(job.levels.substr(0, dots));
+      job.spec.max_level = std::stoi(job.levels.substr(dots + 2));
+    } catch (const std::exception&) {
+      throw Error("--levels '" + job.levels + "': expected A..B, e.g. 6..10");
+    }
+  }
+  const int64_t tiles = export_tiles3d(*store, default_grid(), job.spec, job.out);
+  spdlog::info("wrote {}/tileset.json ({} tiles)", job.out, tiles);
+}
+
+void run_glb_export(const MeshJob& job) {
+  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  export_glb(*store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  spdlog::info("wrote {}", job.out);
+}
+
+void run_drc_export(const MeshJob& job) {
+  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  export_drc(*store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  spdlog::info("wrote {}", job.out);
+}
+
+}  // namespace maquette::cli

@@ -1,0 +1,86 @@
+#include "cli/ingest_job.h"
+
+#include <spdlog/spdlog.h>
+
+#include <array>
+
+#include "core/error.h"
+#include "core/region.h"
+#include "vector/vector_ingest.h"
+
+namespace maquette::cli {
+namespace {
+
+void ingest_rasters(const IngestJob& job) {
+  const RasterIngestOptions r = raster_options(job);
+  const RasterIngestReport rep = ingest_raster(job.store, job.sources, r);
+  spdlog::info(
+      "layer {}: {} cells at level {}: {} tiles written, {} without data, {} already done; {} "
+      "in {:.2f} s{}",
+      r.layer, rep.cells, rep.level, rep.written, rep.empty, rep.skipped,
+      resampling_name(rep.resampling), rep.seconds, rep.resumed ? " (resumed)" : "");
+}
+
+void ingest_vectors(const IngestJob& o) {
+  if (o.raster.as == "stations" && o.sources.size() != 1)
+    throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
+  auto store = Store::open(o.store, Store::Mode::Create);
+  if (o.raster.as == "stations") {
+    StationsIngestOptions s;
+    s.layer = o.raster.layer;
+    s.lon_column = o.lon;
+    s.lat_column = o.lat;
+    s.elevation_column = o.elevation;
+    s.value_columns = o.values;
+    const StationsIngestReport rep = ingest_stations(*store, o.sources.front(), s);
+    spdlog::info("artifact {}: {} stations, {} value columns", s.layer, rep.stations,
+                 rep.value_columns.size());
+    return;
+  }
+  FeatureIngestOptions f;
+  f.layer = o.raster.layer;
+  f.level = o.level;
+  f.src_crs = o.raster.src_crs;
+  f.resume = o.raster.resume;
+  // The region as compact cells (at --level, or 8: ~20 km cells, to keep big regions cheap).
+  const int level = o.level.value_or(8);
+  if (!o.bbox.empty()) {
+    check_bbox(o.bbox, "--bbox");
+    f.region = compact(default_grid().cover_bbox(o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3], level,
+                                                 Containment::Overlap));
+  } else if (!o.raster.region.empty()) {
+    f.region = compact(cover_geojson(default_grid(), read_geojson_polygons(o.raster.region), level,
+                                     Containment::Overlap));
+  }
+  const FeatureIngestReport rep = ingest_features(*store, o.sources, f);
+  spdlog::info(
+      "layer {}: {} features at level {} ({} cell entries), {} invalid skipped, {} "
+      "outside the region",
+      f.layer, rep.features, rep.level, rep.cell_entries, rep.invalid_skipped, rep.outside_skipped);
+}
+
+}  // namespace
+
+bool is_raster_job(const IngestJob& job) {
+  return job.raster.as != "features" && job.raster.as != "stations";
+}
+
+RasterIngestOptions raster_options(const IngestJob& job) {
+  RasterIngestOptions r = job.raster;
+  r.level = job.level;
+  if (!job.bbox.empty()) {
+    check_bbox(job.bbox, "--bbox");
+    r.bbox = std::array<double, 4>{job.bbox[0], job.bbox[1], job.bbox[2], job.bbox[3]};
+  }
+  if (!job.resampling.empty()) r.resampling = parse_resampling(job.resampling);
+  return r;
+}
+
+void run_ingest(const IngestJob& job) {
+  if (is_raster_job(job))
+    ingest_rasters(job);
+  else
+    ingest_vectors(job);
+}
+
+}  // namespace maquette::cli

@@ -1,0 +1,199 @@
+// The `export` pipeline step: `maquette export FORMAT` as a task. Params mirror the command's
+// options ("out" relative to the pipeline file; its directory is created); each format takes only
+// its own options.
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "cli/builtin_steps.h"
+#include "cli/export_jobs.h"
+#include "core/error.h"
+#include "runtime/task_operator.h"
+
+namespace maquette::cli {
+namespace {
+
+using json = nlohmann::json;
+
+// The options of each format; those starting with '*' are required.
+const std::map<std::string, std::vector<std::string>>& format_options() {
+  static const std::vector<std::string> terrain = {
+      "*dem", "decimation", "position_bits", "texcoord_bits", "normal_bits", "max_mib", "force"};
+  static const std::map<std::string, std::vector<std::string>> options = [] {
+    std::map<std::string, std::vector<std::string>> o = {
+        {"gtiff", {"*layer", "bbox", "cells", "level", "crs", "resolution"}},
+        {"png", {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size"}},
+        {"tiles3d", {"texture", "draco", "bbox", "cells", "content", "levels"}},
+        {"glb", {"texture", "draco", "*cells"}},
+        {"drc", {"*cells"}}};
+    for (const char* f : {"tiles3d", "glb", "drc"})
+      o[f].insert(o[f].end(), terrain.begin(), terrain.end());
+    return o;
+  }();
+  return options;
+}
+
+json typed(const char* type, const std::string& description) {
+  return {{"type", type}, {"description", description}};
+}
+
+json array_of(const char* type, const std::string& description) {
+  return {{"type", "array"}, {"items", {{"type", type}}}, {"description", description}};
+}
+
+OperatorSpec export_spec() {
+  OperatorSpec s;
+  s.name = "export";
+  s.description =
+      "Write layers out of the store, as `maquette export FORMAT`: GeoTIFF, PNG quicklook, 3D "
+      "Tiles, GLB or Draco terrain";
+  s.kind = OperatorKind::Task;
+  json formats = json::array();
+  for (const auto& [format, options] : format_options()) formats.push_back(format);
+  s.params_schema = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required", {"format", "out"}},
+      {"properties",
+       {{"format", {{"type", "string"}, {"enum", formats}}},
+        {"out", typed("string", "output file (tiles3d, drc: directory), relative to the pipeline")},
+        {"layer", typed("string", "gtiff, png: the layer")},
+        {"bbox", array_of("number", "only tiles overlapping this lon/lat box: W S E N")},
+        {"cells", array_of("string", "only tiles in these cells (glb, drc: the cells written)")},
+        {"level", {{"type", "integer"}, {"minimum", 0}, {"maximum", CellId::kMaxLevel}}},
+        {"crs", typed("string", "gtiff: rhealpix or EPSG:NNNN")},
+        {"resolution", typed("number", "gtiff: pixel size in crs units")},
+        {"ramp", {{"type", "string"}, {"enum", {"grey", "terrain", "slope"}}}},
+        {"range", array_of("number", "png: values drawn as the ramp's ends")},
+        {"bands", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
+        {"hillshade", typed("boolean", "png: multiply by a hillshade")},
+        {"max_size", {{"type", "integer"}, {"minimum", 16}, {"maximum", 65536}}},
+        {"dem", typed("string", "tiles3d, glb, drc: the DEM layer")},
+        {"texture", typed("string", "tiles3d, glb: the imagery layer")},
+        {"decimation", {{"type", "integer"}, {"minimum", 1}}},
+        {"position_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
+        {"texcoord_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
+        {"normal_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
+        {"max_mib", {{"type", "integer"}, {"minimum", 1}}},
+        {"force", typed("boolean", "write into a non-empty output and above max_mib")},
+        {"draco", typed("boolean", "false: plain GLB")},
+        {"content", array_of("string", "tiles3d: 3D content layers")},
+        {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
+  return s;
+}
+
+// Each field given must be an option of the format, and the format's required ones given.
+void check_format_options(const json& p) {
+  const std::string format = p.at("format");
+  const std::vector<std::string>& options = format_options().at(format);
+  std::set<std::string> allowed = {"format", "out"};
+  std::string list;
+  for (const std::string& o : options) {
+    const std::string name = o[0] == '*' ? o.substr(1) : o;
+    allowed.insert(name);
+    list += (list.empty() ? "" : ", ") + name;
+    if (o[0] == '*' && !p.contains(name))
+      throw Error("params: format " + format + " needs \"" + name + "\"");
+  }
+  for (const auto& [key, _] : p.items())
+    if (!allowed.count(key))
+      throw Error("params." + key + ": not an option of format " + format + " (it takes: " + list +
+                  ")");
+  if (p.contains("range") && p.at("range").size() != 2)
+    throw Error("params.range: expected 2 numbers, got " + p.at("range").dump());
+  if (p.contains("bbox") && p.contains("cells"))
+    throw Error("params: give at most one of \"bbox\" and \"cells\"");
+  if (p.contains("cells"))
+    for (size_t i = 0; i < p.at("cells").size(); ++i) {
+      try {
+        CellId::Parse(p.at("cells")[i].get<std::string>());
+      } catch (const Error& e) {
+        throw Error("params.cells[" + std::to_string(i) + "]: " + e.what());
+      }
+    }
+}
+
+RegionOptions region_of(const json& p) {
+  RegionOptions r;
+  read_param(p, "bbox", r.bbox);
+  read_param(p, "cells", r.cells);
+  return r;
+}
+
+TerrainSettings terrain_of(const json& p) {
+  TerrainSettings t;
+  read_param(p, "dem", t.dem);
+  read_param(p, "texture", t.texture);
+  read_param(p, "decimation", t.decimation);
+  read_param(p, "position_bits", t.bits.position);
+  read_param(p, "texcoord_bits", t.bits.texcoord);
+  read_param(p, "normal_bits", t.bits.normal);
+  if (p.contains("max_mib")) t.max_bytes = p.at("max_mib").get<int64_t>() << 20;
+  read_param(p, "force", t.force);
+  read_param(p, "draco", t.draco);
+  return t;
+}
+
+class ExportStep : public TaskOperator {
+ public:
+  const OperatorSpec& spec() const override { return spec_; }
+
+  TaskPlan plan(const TaskContext& ctx) const override {
+    const json& p = *ctx.params;
+    check_format_options(p);
+    TaskPlan plan;
+    for (const char* key : {"layer", "dem", "texture"})
+      if (p.contains(key)) plan.reads.emplace_back(std::string("params.") + key, p.at(key));
+    if (p.contains("content"))
+      for (size_t i = 0; i < p.at("content").size(); ++i)
+        plan.reads.emplace_back("params.content[" + std::to_string(i) + "]", p.at("content")[i]);
+    return plan;
+  }
+
+  void run(const TaskContext& ctx) const override {
+    const json& p = *ctx.params;
+    const std::string format = p.at("format");
+    const std::string out = resolve_path(ctx.base_dir, p.at("out"));
+    if (const auto parent = std::filesystem::path(out).parent_path(); !parent.empty())
+      std::filesystem::create_directories(parent);
+    if (format == "gtiff") {
+      GtiffJob job{ctx.store_path, out, region_of(p), {}};
+      read_param(p, "layer", job.spec.layer);
+      if (p.contains("level")) job.spec.level = p.at("level").get<int>();
+      read_param(p, "crs", job.spec.crs);
+      if (p.contains("resolution")) job.spec.resolution = p.at("resolution").get<double>();
+      run_export(std::move(job));
+    } else if (format == "png") {
+      PngJob job;
+      job.store = ctx.store_path;
+      job.out = out;
+      job.region = region_of(p);
+      read_param(p, "layer", job.layer);
+      read_param(p, "ramp", job.ramp);
+      read_param(p, "range", job.range);
+      read_param(p, "bands", job.bands);
+      read_param(p, "hillshade", job.hillshade);
+      read_param(p, "max_size", job.max_size);
+      run_export(job);
+    } else if (format == "tiles3d") {
+      Tiles3dJob job{ctx.store_path, out, "", region_of(p), {}};
+      read_param(p, "levels", job.levels);
+      job.spec.terrain = terrain_of(p);
+      read_param(p, "content", job.spec.content);
+      run_export(std::move(job));
+    } else {
+      MeshJob job{ctx.store_path, out, {}, terrain_of(p)};
+      read_param(p, "cells", job.cells);
+      (format == "glb" ? run_glb_export : run_drc_export)(job);
+    }
+  }
+
+ private:
+  OperatorSpec spec_ = export_spec();
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_export_step() { return std::make_unique<ExportStep>(); }
+
+}  // namespace maquette::cli
