@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "core/halo.h"
+#include "core/malloc_tuning.h"
 #include "runtime/operator_registry.h"
 #include "runtime/params_schema.h"
 
@@ -210,4 +211,10 @@ BENCHMARK(Fit)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 }  // namespace
 }  // namespace maquette
 
-BENCHMARK_MAIN();
+// With the maquette program's allocator settings.
+int main(int argc, char** argv) {
+  maquette::keep_tile_buffers_mapped();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <exception>
 #include <mutex>
+#include <numeric>
 
 #include "core/error.h"
 #include "core/samples.h"
@@ -34,6 +35,18 @@ std::vector<size_t> sibling_batches(const std::vector<CellId>& cells) {
       starts.push_back(i);
   starts.push_back(cells.size());
   return starts;
+}
+
+// The batches of `starts` (from sibling_batches), those with most cells first, in id order
+// otherwise: handed out one by one in this order, the run ends with the smallest batches rather
+// than with one thread finishing a batch of four cells while the others wait.
+std::vector<size_t> largest_first(const std::vector<size_t>& starts) {
+  std::vector<size_t> order(starts.size() - 1);
+  std::iota(order.begin(), order.end(), size_t(0));
+  const auto size = [&](size_t b) { return starts[b + 1] - starts[b]; };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return size(a) > size(b); });
+  return order;
 }
 
 // from_tile(tile, dtype, nodata) without its per-sample conversion through double and libm's
@@ -98,6 +111,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     }
   }
   if (!report.resumed) run = store->begin_run(plan.run);
+  spdlog::debug("ingest {}: store ready at {:.3f} s", o.layer, seconds());
   spdlog::info(
       "ingest {}: {} cells at level {} ({:.3g} m pixels, sources {:.3g} m, up to {:.3g} "
       "MiB), {}{}",
@@ -121,34 +135,44 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   {
     Progress progress("ingest " + layer.name, int64_t(todo.size()), o.quiet);
     const std::vector<size_t> batches = sibling_batches(todo);
+    const std::vector<size_t> order = largest_first(batches);
+    std::atomic<size_t> next = 0;  // into `order`
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), batches.size() - 1, [&](size_t chunk) {
-        if (failed) return;
-        try {
-          auto& [resampler, tile, raw] = workers.local();
-          if (!resampler)
-            resampler = std::make_unique<TileResampler>(default_grid(), plan.sources,
-                                                        plan.resampling, categorical);
-          Store::Batch batch(*store);
-          const size_t begin = batches[chunk], end = batches[chunk + 1];
-          for (size_t i = begin; i < end; ++i) {
-            if (resampler->make(todo[i], layer.tile_size, tile)) {
-              to_raw(tile, layer.dtype, nodata, raw);
-              batch.put_tile(layer.name, todo[i], raw);
-              ++written;
-            } else {
-              ++empty;
-            }
-            batch.mark_done(run, 0, todo[i]);
+    const auto write_batch = [&](size_t chunk) {
+      try {
+        auto& [resampler, tile, raw] = workers.local();
+        if (!resampler)
+          resampler = std::make_unique<TileResampler>(default_grid(), plan.sources, plan.resampling,
+                                                      categorical);
+        Store::Batch batch(*store);
+        const size_t begin = batches[chunk], end = batches[chunk + 1];
+        for (size_t i = begin; i < end; ++i) {
+          if (resampler->make(todo[i], layer.tile_size, tile)) {
+            to_raw(tile, layer.dtype, nodata, raw);
+            batch.put_tile(layer.name, todo[i], raw);
+            ++written;
+          } else {
+            ++empty;
           }
-          batch.commit();
-          progress.advance(int64_t(end - begin));
-        } catch (...) {
-          std::lock_guard lock(error_mutex);
-          if (!failed.exchange(true)) error = std::current_exception();
+          batch.mark_done(run, 0, todo[i]);
         }
-      });
+        // The batch holds every cell of this parent the ingest writes: fewer than four
+        // children (the footprint's edge) still give the overview here, in parallel.
+        if (layer.level > 0) batch.put_parent_overview(layer.name, todo[begin].parent());
+        batch.commit();
+        progress.advance(int64_t(end - begin));
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+    };
+    arena.execute([&] {
+      tbb::parallel_for(
+          0, arena.max_concurrency(),
+          [&](int) {
+            for (size_t k; !failed && (k = next++) < order.size();) write_batch(order[k]);
+          },
+          tbb::simple_partitioner());
     });
   }
   if (error) {

@@ -1,5 +1,4 @@
 // maquette: ingest, run and export Digital Earth grids. See README.md.
-#include <malloc.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -8,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/malloc_tuning.h"
 
 namespace maquette::cli {
 namespace {
@@ -18,10 +18,7 @@ const GlobalOptions& global_options() { return g_options; }
 
 int main(int argc, char** argv) {
   using namespace maquette::cli;
-  // Tiles are 64 KiB to 16 MiB buffers made and freed per cell: keep glibc from mapping each
-  // one afresh and handing it back to the kernel (measured: half the page faults of an ingest).
-  mallopt(M_MMAP_THRESHOLD, 64 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  maquette::keep_tile_buffers_mapped();
   CLI::App app{
       "maquette: Digital Earth grids on rHEALPix (WGS84, aperture 4).\n"
       "Ingest data into a cell-indexed store, run operators from modules over cell ranges, "

@@ -30,7 +30,13 @@ struct Store::Batch::Pending {
     std::array<std::optional<RawTile>, 4> tiles;  // by child digit
   };
   std::map<std::pair<int64_t, CellId>, Siblings> siblings;  // by layer id and parent
+  // An overview built from fewer than four children: written only if the store holds no other.
+  struct PartialOverview {
+    TileWrite write;
+    int64_t children;
+  };
   std::vector<TileWrite> tiles, overviews;
+  std::vector<PartialOverview> partial_overviews;
   std::vector<FeatureWrite> features;
   std::vector<Artifact> artifacts;
   std::vector<Done> done;
@@ -69,6 +75,26 @@ void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile
       build_overview({&*children[0], &*children[1], &*children[2], &*children[3]}, l);
   pending_->overviews.push_back({e.id, cell.parent(), encode_tile(overview, codec)});
   pending_->siblings.erase(key);
+}
+
+void Store::Batch::put_parent_overview(const std::string& layer, CellId parent) {
+  const LayerEntry e = store_.impl_->require(layer);
+  if (!open_)
+    throw Error("cannot write the overview of layer '" + layer + "' at " + cell_text(parent) +
+                ": batch already committed");
+  const auto it = pending_->siblings.find({e.id, parent});
+  if (it == pending_->siblings.end()) return;  // no child written, or all four (already built)
+  std::array<const RawTile*, 4> children{};
+  int64_t count = 0;
+  for (size_t k = 0; k < 4; ++k)
+    if (const auto& tile = it->second.tiles[k]) {
+      children[k] = &*tile;
+      ++count;
+    }
+  pending_->partial_overviews.push_back(
+      {{e.id, parent, encode_tile(build_overview(children, e.info), parse_codec(e.info.codec))},
+       count});
+  pending_->siblings.erase(it);
 }
 
 void Store::Batch::put_artifact(const Artifact& artifact) {
@@ -111,6 +137,17 @@ void Store::Batch::commit() {
     }
     // After the tiles: writing an overview clears the stale mark its children just set.
     for (const auto& o : p.overviews) write_overview(c, o.layer, o.cell, o.blob);
+    for (const auto& [o, children] : p.partial_overviews) {
+      int64_t stored = 0;
+      {
+        auto q = c.query("SELECT count(*) FROM tiles WHERE layer = ? AND cell BETWEEN ? AND ?");
+        q.bind_int(1, o.layer)
+            .bind_int(2, int64_t(o.cell.range_min().id()))
+            .bind_int(3, int64_t(o.cell.range_max().id()));
+        if (q.step()) stored = q.int64(0);
+      }
+      if (stored == children) write_overview(c, o.layer, o.cell, o.blob);
+    }
     for (const auto& f : p.features) {
       write_feature(c, f);
       layers.insert(f.layer);

@@ -112,6 +112,8 @@ void Store::update_overviews(const std::string& layer, int min_level) {
     throw Error(where + "min level " + std::to_string(min_level) + " not in [0, " +
                 std::to_string(e.info.level) + "]");
   if (e.info.tile_size < 2) throw Error(where + "tiles of 1x1 samples cannot be halved");
+  // The tiles written before this call are on their way to the disk while overviews are built.
+  if (d.checkpointer) d.checkpointer->request();
   for (int level = e.info.level - 1; level >= min_level; --level)
     while (d.rebuild_stale(e, level)) {
     }

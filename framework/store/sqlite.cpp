@@ -119,6 +119,37 @@ Query Connection::query(const char* sql) {
 int64_t Connection::last_insert_rowid() const { return sqlite3_last_insert_rowid(db_); }
 int64_t Connection::changes() const { return sqlite3_changes64(db_); }
 
+void Connection::on_wal_pages(int pages, std::function<void()> wal_full) {
+  wal_pages_ = pages;
+  wal_notified_ = 0;
+  wal_full_ = std::move(wal_full);
+  if (pages > 0)
+    sqlite3_wal_hook(db_, &Connection::wal_hook, this);
+  else
+    sqlite3_wal_autocheckpoint(db_, 1000);  // SQLite's default
+}
+
+int Connection::wal_hook(void* self, sqlite3*, const char*, int pages) {
+  auto& c = *static_cast<Connection*>(self);
+  // `pages` counts the frames in the WAL since it last restarted from its beginning, checkpointed
+  // or not: call again once it has grown by wal_pages_ more, or restarted.
+  if (pages < c.wal_notified_ || pages - c.wal_notified_ >= c.wal_pages_) {
+    c.wal_notified_ = pages;
+    // The commit has succeeded whatever happens here: nothing may unwind through SQLite, and a
+    // checkpoint missed now is made by a later one or at close.
+    try {
+      c.wal_full_();
+    } catch (...) {
+    }
+  }
+  return SQLITE_OK;
+}
+
+bool Connection::checkpoint_passive() noexcept {
+  return sqlite3_wal_checkpoint_v2(db_, nullptr, SQLITE_CHECKPOINT_PASSIVE, nullptr, nullptr) ==
+         SQLITE_OK;
+}
+
 void Connection::fail(int code) const {
   throw Failure(path_ + ": " + sqlite3_errmsg(db_), code & 0xff);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -83,14 +84,25 @@ class Connection {
     }
   }
 
+  // Replaces SQLite's automatic checkpoint: after each commit that has grown the WAL by `pages`
+  // pages since the last call, calls `wal_full` (in the committing thread). `pages` 0 restores the
+  // automatic checkpoint.
+  void on_wal_pages(int pages, std::function<void()> wal_full);
+  // Copies into the database what it can of the WAL without waiting for any lock (a passive
+  // checkpoint); false if it could not run.
+  bool checkpoint_passive() noexcept;
+
   [[noreturn]] void fail(int code) const;
 
  private:
   void rollback() noexcept;
+  static int wal_hook(void* self, sqlite3*, const char*, int pages);
 
   std::string path_;
   sqlite3* db_ = nullptr;
   std::unordered_map<std::string, sqlite3_stmt*> statements_;
+  int wal_pages_ = 0, wal_notified_ = 0;
+  std::function<void()> wal_full_;
 };
 
 }  // namespace maquette::sqlite

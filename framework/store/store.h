@@ -112,6 +112,11 @@ class Store {
     Batch(const Batch&) = delete;
     Batch& operator=(const Batch&) = delete;
     void put_tile(const std::string& layer, CellId cell, const RawTile& tile);
+    // For a writer that puts every tile it writes under `parent` in this batch: builds the
+    // parent's overview from them now (in this thread), and commit() writes it if the store then
+    // holds no other child of `parent` (the same bytes update_overviews would build; otherwise
+    // the parent stays stale for it). A batch holding all four children does this by itself.
+    void put_parent_overview(const std::string& layer, CellId parent);
     void put_artifact(const Artifact& artifact);
     // Writes (or replaces) a feature of a features layer and indexes it in `cells`, which must
     // be at the layer's level; a replaced feature loses its old index entries.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "store/checkpointer.h"
 #include "store/sqlite.h"
 #include "store/store.h"
 
@@ -79,6 +80,8 @@ struct Store::Impl {
   const std::string path;
   const bool read_only;
   std::unique_ptr<sqlite::Connection> writer;  // null when read-only
+  // Declared after `writer`, so destroyed before it: the writer's close checkpoints what is left.
+  std::unique_ptr<Checkpointer> checkpointer;  // with the writer
   std::mutex write_mutex;
   mutable ReadPool readers;
   mutable std::mutex layers_mutex;

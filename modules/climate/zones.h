@@ -1,6 +1,6 @@
-// Zones of a regression: the polygons of a features layer (WKB decoded here: Polygon and
-// MultiPolygon, 2D/Z/M/ZM), or one zone covering everything. A point belongs to the first
-// zone (by fid) whose polygon holds it (even-odd rule, so holes are excluded); zones must not
+// Zones of a regression: the polygons of a features layer (WKB decoded by core/wkb_polygons.h:
+// Polygon and MultiPolygon, 2D/Z/M/ZM), or one zone covering everything. A point belongs to the
+// first zone (by fid) whose polygon holds it (even-odd rule, so holes are excluded); zones must not
 // cross the antimeridian.
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/geojson.h"
+#include "core/wkb_polygons.h"
 
 namespace maquette::climate {
 
@@ -22,9 +23,6 @@ struct Zone {
   std::vector<PolygonRings> polygons;  // empty for the single zone
   std::array<double, 4> bbox{};        // west, south, east, north
 };
-
-// Polygons of a WKB geometry; throws maquette::Error prefixed with `where` for anything else.
-std::vector<PolygonRings> wkb_polygons(std::span<const std::byte> wkb, const std::string& where);
 
 bool zone_contains(const Zone& zone, LonLat p);
 // Index of the first zone holding p, or -1.

@@ -1,10 +1,12 @@
 // texture.classify: surface types of an RGB image in hue-saturation space (paper 5.2.1), with
-// the snow rule (snow below a minimal altitude is cloud, paper 6) and a land-cover exclusion.
+// the snow rule (snow below a minimal altitude is cloud, paper 6) and exclusions by land cover or
+// by the polygons of a features layer.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "core/error.h"
+#include "feature_mask.h"
 #include "hs_classes.h"
 #include "operators.h"
 #include "runtime/params_schema.h"
@@ -22,8 +24,9 @@ OperatorSpec classify_spec() {
   OperatorSpec s;
   s.name = "texture.classify";
   s.description =
-      "Classes of an RGB image from boxes or cluster centres in hue-saturation space, grey "
-      "pixels given a hue, snow below a minimal altitude and excluded land cover removed";
+      "Classes of an RGB image from boxes, polygons or cluster centres in hue-saturation "
+      "space, grey pixels given a hue, snow below a minimal altitude, excluded land cover and "
+      "the polygons of a features layer removed";
   s.kind = OperatorKind::Cell;
   s.inputs = {{"rgb", "RGB image, 0..255", false},
               {"dem", "elevation in metres (snow rule)", true},
@@ -39,6 +42,20 @@ OperatorSpec classify_spec() {
                       {"hue", range_schema(0, 360)},
                       {"saturation", range_schema(0, 1)},
                       {"value", range_schema(0, 1)}}}};
+  // Points are checked further by HsClassifier::from_params (count, hue and saturation ranges).
+  const json polygon = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required", {"id", "points"}},
+      {"properties",
+       {{"id", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
+        {"name", {{"type", "string"}}},
+        {"points",
+         {{"type", "array"},
+          {"items", {{"type", "array"}, {"items", {{"type", "number"}}}}},
+          {"description",
+           "[hue degrees, saturation] vertices, at least 3, joined by straight lines on "
+           "texture.cluster's plot (s cos h, s sin h)"}}}}}};
   const json centre = {{"type", "object"},
                        {"additionalProperties", false},
                        {"required", {"id", "hue", "saturation"}},
@@ -59,11 +76,18 @@ OperatorSpec classify_spec() {
                        "each class pixel takes the most frequent class of the (2r+1)^2 window "
                        "around it (minimum mapping unit; 0: none)")},
         {"boxes", {{"type", "array"}, {"items", box}, {"default", json::array()}}},
+        {"polygons", {{"type", "array"}, {"items", polygon}, {"default", json::array()}}},
         {"centres", {{"type", "array"}, {"items", centre}, {"default", json::array()}}},
         {"snow_class", {{"type", "integer"}, {"minimum", -1}, {"maximum", 254}, {"default", -1}}},
         {"snow_min_altitude_m", {{"type", "number"}, {"default", 0}}},
         {"exclude_landcover",
-         {{"type", "array"}, {"items", {{"type", "integer"}}}, {"default", json::array()}}}}}};
+         {{"type", "array"}, {"items", {{"type", "integer"}}}, {"default", json::array()}}},
+        {"exclude_features",
+         {{"type", "string"},
+          {"default", ""},
+          {"description",
+           "features layer of the store whose polygons are removed (pixel centres inside); "
+           "empty: none"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
   return s;
 }
@@ -104,22 +128,31 @@ std::vector<int> majority(const std::vector<int>& cls, int n, int radius) {
   return out;
 }
 
+// The classes of params, their errors prefixed with the operator like its other errors.
+HsClassifier classifier_of(const json& params) {
+  try {
+    return HsClassifier::from_params(params);
+  } catch (const Error& e) {
+    throw Error(std::string("texture.classify: ") + e.what());
+  }
+}
+
 class Classify : public CellOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const CellContext& ctx, CellData& data) const override {
     const json& p = *ctx.params;
-    if (p.at("boxes").empty() && p.at("centres").empty())
+    if (p.at("boxes").empty() && p.at("polygons").empty() && p.at("centres").empty())
       throw Error(
-          "texture.classify: params: give \"boxes\" or \"centres\" (e.g. from "
-          "texture.cluster)");
+          "texture.classify: params: give \"boxes\", \"polygons\" or \"centres\" (e.g. "
+          "from texture.cluster)");
     for (const char* key : {"hue", "saturation", "value"})
       for (size_t i = 0; i < p.at("boxes").size(); ++i)
         if (p["boxes"][i].contains(key) && p["boxes"][i][key].size() != 2)
           throw Error("texture.classify: params.boxes[" + std::to_string(i) + "]." + key +
                       ": expected [lo, hi]");
-    const HsClassifier classifier = HsClassifier::from_params(p);
+    const HsClassifier classifier = classifier_of(p);
     const Tile<float>& rgb = data.input("rgb");
     if (rgb.channels() != 3)
       throw Error("texture.classify: inputs.rgb: expected 3 channels, got " +
@@ -138,11 +171,19 @@ class Classify : public CellOperator {
     if (rgb.halo() < radius)
       throw Error("texture.classify: inputs.rgb: halo " + std::to_string(rgb.halo()) +
                   " is narrower than params.majority_radius " + std::to_string(radius));
+    std::vector<uint8_t> in_features;  // side x side when params.exclude_features is given
+    if (const std::string layer = p.at("exclude_features"); !layer.empty()) {
+      const std::string where = "texture.classify: params.exclude_features";
+      if (!ctx.store) throw Error(where + ": no store (the layer is read from the run's store)");
+      in_features = features_mask(*ctx.store, layer, where, *ctx.grid, ctx.cell, n, radius);
+    }
     std::vector<int> cls(size_t(side) * size_t(side), -1);
     for (int r = -radius; r < n + radius; ++r)
       for (int c = -radius; c < n + radius; ++c) {
+        const size_t i = size_t(r + radius) * size_t(side) + size_t(c + radius);
         const float R = rgb.at(c, r, 0), G = rgb.at(c, r, 1), B = rgb.at(c, r, 2);
         if (std::isnan(R) || std::isnan(G) || std::isnan(B)) continue;
+        if (!in_features.empty() && in_features[i]) continue;
         if (!excluded.empty() &&
             (std::isnan(lc->at(c, r)) ||
              std::find(excluded.begin(), excluded.end(), int(lc->at(c, r))) != excluded.end()))
@@ -150,7 +191,7 @@ class Classify : public CellOperator {
         const int k = classifier.classify(R, G, B);
         if (k < 0) continue;
         if (k == snow && !(dem->at(c, r) >= snow_min)) continue;  // cloud, or unknown height
-        cls[size_t(r + radius) * size_t(side) + size_t(c + radius)] = k;
+        cls[i] = k;
       }
     const std::vector<int> filtered = majority(cls, n, radius);
     Tile<float>& out = data.output("classes") = Tile<float>(n, 1, 0, NAN);

@@ -74,51 +74,43 @@ Plane slope_degrees(const Plane& h, double pixel_m) {
   return s;
 }
 
-std::vector<Vec3d> pixel_positions(const Grid& grid, CellId cell, int size, int refine, int ring) {
+PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refine, int ring) {
   const int m = size << refine;
   const int level = cell.level() + log2_tile_size(m);
   // Exact every 8th pixel, or 16th or 32nd while that spans <= 300 m (bilinear positions then
   // deviate from the true ones by centimetres at most): the projection is the costly part.
-  int shift = 3;
-  while (shift < 5 && (2 << shift) * grid.level_info(level, 1).pixel_m <= 300) ++shift;
-  const int step = 1 << shift;
-  const int64_t gc0 = int64_t(cell.col()) * m - ring, gr0 = int64_t(cell.row()) * m - ring;
-  const auto floor_div = [shift](int64_t a) { return a >> shift; };
-  const int64_t nc0 = floor_div(gc0), nr0 = floor_div(gr0);
-  const int nodes = (m + 2 * ring) / step + 3;
-  std::vector<Vec3d> node(size_t(nodes) * size_t(nodes));
-  for (int j = 0; j < nodes; ++j)
-    for (int i = 0; i < nodes; ++i) {
-      const int64_t lc = (nc0 + i) * step - int64_t(cell.col()) * m;
-      const int64_t lr = (nr0 + j) * step - int64_t(cell.row()) * m;
+  while (shift_ < 5 && (2 << shift_) * grid.level_info(level, 1).pixel_m <= 300) ++shift_;
+  const int step = 1 << shift_;
+  gc0_ = int64_t(cell.col()) * m;
+  gr0_ = int64_t(cell.row()) * m;
+  nc0_ = (gc0_ - ring) >> shift_;
+  nr0_ = (gr0_ - ring) >> shift_;
+  nodes_ = (m + 2 * ring) / step + 3;
+  node_.resize(size_t(nodes_) * size_t(nodes_));
+  for (int j = 0; j < nodes_; ++j)
+    for (int i = 0; i < nodes_; ++i) {
+      const int64_t lc = (nc0_ + i) * step - gc0_, lr = (nr0_ + j) * step - gr0_;
       const std::optional<FaceCoord> src = pixel_source(grid, cell, m, int(lc), int(lr));
       if (!src) throw Error("texture: tile " + cell.ToText() + " too small for its noise lattice");
       const LonLat p = pixel_centre(grid, *src, level);
       const double lat = p.lat * M_PI / 180, lon = p.lon * M_PI / 180;
-      node[size_t(j) * size_t(nodes) + size_t(i)] = {
+      node_[size_t(j) * size_t(nodes_) + size_t(i)] = {
           kAuthalicRadius * std::cos(lat) * std::cos(lon),
           kAuthalicRadius * std::cos(lat) * std::sin(lon), kAuthalicRadius * std::sin(lat)};
     }
-  const int side = m + 2 * ring;
-  std::vector<Vec3d> out(size_t(side) * size_t(side));
-  for (int r = 0; r < side; ++r) {
-    const int64_t gr = gr0 + r;
-    const int j = int(floor_div(gr) - nr0);
-    const double fy = double(gr - floor_div(gr) * step) / step;
-    for (int c = 0; c < side; ++c) {
-      const int64_t gc = gc0 + c;
-      const int i = int(floor_div(gc) - nc0);
-      const double fx = double(gc - floor_div(gc) * step) / step;
-      const auto n = [&](int a, int b) {
-        return node[size_t(j + b) * size_t(nodes) + size_t(i + a)];
-      };
-      Vec3d& p = out[size_t(r) * size_t(side) + size_t(c)];
-      for (int k = 0; k < 3; ++k)
-        p[size_t(k)] = (1 - fy) * ((1 - fx) * n(0, 0)[size_t(k)] + fx * n(1, 0)[size_t(k)]) +
-                       fy * ((1 - fx) * n(0, 1)[size_t(k)] + fx * n(1, 1)[size_t(k)]);
-    }
-  }
-  return out;
+}
+
+Vec3d PixelPositions::at(int col, int row) const {
+  const int64_t gc = gc0_ + col, gr = gr0_ + row, mask = (int64_t(1) << shift_) - 1;
+  const double step = double(mask + 1), fx = double(gc & mask) / step,
+               fy = double(gr & mask) / step;
+  const Vec3d* n =
+      &node_[size_t((gr >> shift_) - nr0_) * size_t(nodes_) + size_t((gc >> shift_) - nc0_)];
+  const Vec3d &n00 = n[0], &n10 = n[1], &n01 = n[nodes_], &n11 = n[nodes_ + 1];
+  Vec3d p;
+  for (size_t k = 0; k < 3; ++k)
+    p[k] = (1 - fy) * ((1 - fx) * n00[k] + fx * n10[k]) + fy * ((1 - fx) * n01[k] + fx * n11[k]);
+  return p;
 }
 
 }  // namespace maquette::texture

@@ -39,9 +39,23 @@ Plane upsample(const Tile<float>& tile, int refine, int ring);
 // Slope in degrees, with one ring less than `height` (central differences over pixel_m).
 Plane slope_degrees(const Plane& height, double pixel_m);
 
-// Positions (metres, on the sphere of the authalic radius) of the target pixels of `cell` with
-// `ring`: exact on a lattice of every 8th global pixel (16th or 32nd for pixels of <= 9 m),
-// bilinear in between, so neighbouring tiles compute the same values for the same pixel.
-std::vector<Vec3d> pixel_positions(const Grid& grid, CellId cell, int size, int refine, int ring);
+// Positions (metres, on the sphere of the authalic radius) of the target pixels of `cell` and
+// `ring` pixels around, computed on demand: exact on a lattice of every 8th global pixel (16th or
+// 32nd for pixels of <= 9 m), bilinear in between, so neighbouring tiles compute the same values
+// for the same pixel. Only the lattice is stored (the noise needs positions at its own lattice
+// nodes, rarely at every pixel).
+class PixelPositions {
+ public:
+  PixelPositions(const Grid& grid, CellId cell, int size, int refine, int ring);
+  // Of target pixel (col, row), -ring <= col, row < M + ring.
+  Vec3d at(int col, int row) const;
+
+ private:
+  int shift_ = 3;              // node spacing 2^shift pixels
+  int64_t gc0_ = 0, gr0_ = 0;  // global face pixel of target pixel (0, 0)
+  int64_t nc0_ = 0, nr0_ = 0;  // global node coordinates of node[0]
+  int nodes_ = 0;              // a side
+  std::vector<Vec3d> node_;
+};
 
 }  // namespace maquette::texture

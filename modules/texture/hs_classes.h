@@ -1,7 +1,8 @@
 // Surface types in hue-saturation space (paper 5.2.1): near-grey pixels, whose hue is
-// meaningless, get a user-defined hue; classes are boxes in hue-saturation(-value) or the
-// nearest of given cluster centres (texture.classify, from texture.cluster): nearest on the
-// colour wheel (s cos h, s sin h), or in (s cos h, s sin h, v) when the centres give a value.
+// meaningless, get a user-defined hue; classes are boxes in hue-saturation(-value), polygons
+// drawn on the colour wheel (s cos h, s sin h), or the nearest of given cluster centres
+// (texture.classify, from texture.cluster): nearest on the colour wheel, or in
+// (s cos h, s sin h, v) when the centres give a value.
 #pragma once
 
 #include <array>
@@ -19,6 +20,17 @@ struct Box {
   std::array<double, 2> hue{0, 360}, saturation{0, 1}, value{0, 1};  // hue lo > hi wraps
 };
 
+// A class drawn on texture.cluster's density plot: vertices on the colour wheel, so a polygon
+// may enclose the grey point (the origin) or span hue 0 without special cases.
+struct Polygon {
+  int id = 0;
+  std::vector<std::array<double, 2>> vertices;  // wheel(hue, saturation)
+
+  // Even-odd rule (parts of a self-intersecting polygon covered twice are outside), closed:
+  // points on an edge or vertex are inside.
+  bool contains(const std::array<double, 2>& point) const;
+};
+
 struct Centre {
   int id = 0;
   double hue = 0, saturation = 0;
@@ -26,12 +38,15 @@ struct Centre {
 };
 
 struct HsClassifier {
-  double grey_threshold = 10;  // max(R,G,B) - min(R,G,B) at or below: grey
-  double grey_hue = 300;       // hue given to grey pixels (purple: absent from landscapes)
-  std::vector<Box> boxes;      // first match wins
-  std::vector<Centre> centres;
+  double grey_threshold = 10;     // max(R,G,B) - min(R,G,B) at or below: grey
+  double grey_hue = 300;          // hue given to grey pixels (purple: absent from landscapes)
+  std::vector<Box> boxes;         // first match wins
+  std::vector<Polygon> polygons;  // then the first polygon containing the pixel
+  std::vector<Centre> centres;    // then the nearest centre
 
-  // Boxes and centres may be absent; throws maquette::Error when only some centres give a value.
+  // Boxes, polygons and centres may be absent; throws maquette::Error naming the field and value
+  // for a polygon of fewer than 3 points, a point that is not [hue 0..360, saturation 0..1], or
+  // points on one line, and when only some centres give a value.
   static HsClassifier from_params(const nlohmann::json& params);
   Hsv hsv(double r, double g, double b) const;       // with the grey rule
   int classify(double r, double g, double b) const;  // -1: no class

@@ -47,28 +47,60 @@ NoiseField::NoiseField(const NoiseParams& params) : perm_(2 * kPeriod) {
   std::copy(perm_.begin(), perm_.begin() + kPeriod, perm_.begin() + kPeriod);
 }
 
-float NoiseField::gradient_noise(double x, double y, double z) const {
-  const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
-  const auto i = unsigned(int64_t(fx) & (kPeriod - 1)), j = unsigned(int64_t(fy) & (kPeriod - 1)),
-             k = unsigned(int64_t(fz) & (kPeriod - 1));
-  const float dx = float(x - fx), dy = float(y - fy), dz = float(z - fz);
-  const float u = fade(dx), v = fade(dy), w = fade(dz);
-  const uint16_t* P = perm_.data();
-  const unsigned a = P[i] + j, aa = P[a] + k, ab = P[a + 1] + k;
-  const unsigned b = P[i + 1] + j, ba = P[b] + k, bb = P[b + 1] + k;
-  return lerp(
-      lerp(lerp(grad(P[aa], dx, dy, dz), grad(P[ba], dx - 1, dy, dz), u),
-           lerp(grad(P[ab], dx, dy - 1, dz), grad(P[bb], dx - 1, dy - 1, dz), u), v),
-      lerp(lerp(grad(P[aa + 1], dx, dy, dz - 1), grad(P[ba + 1], dx - 1, dy, dz - 1), u),
-           lerp(grad(P[ab + 1], dx, dy - 1, dz - 1), grad(P[bb + 1], dx - 1, dy - 1, dz - 1), u),
-           v),
-      w);
+// Gradient noise at N points, stage by stage across the points: the hashed lookups of all the
+// points first, then their arithmetic, which gives the processor independent work to overlap
+// (texture_benchmark: ~5% faster overall than point by point; the arithmetic on arrays, which GCC
+// then vectorizes, was no faster). The same operations per point whatever N: the same bits.
+template <int N>
+void gradient_noise(const uint16_t* P, const double* x, const double* y, const double* z,
+                    float* out) {
+  float dx[N], dy[N], dz[N];
+  unsigned h[8][N];
+  for (int n = 0; n < N; ++n) {
+    const double fx = std::floor(x[n]), fy = std::floor(y[n]), fz = std::floor(z[n]);
+    const auto i = unsigned(int64_t(fx) & (kPeriod - 1)), j = unsigned(int64_t(fy) & (kPeriod - 1)),
+               k = unsigned(int64_t(fz) & (kPeriod - 1));
+    dx[n] = float(x[n] - fx), dy[n] = float(y[n] - fy), dz[n] = float(z[n] - fz);
+    const unsigned a = P[i] + j, aa = P[a] + k, ab = P[a + 1] + k;
+    const unsigned b = P[i + 1] + j, ba = P[b] + k, bb = P[b + 1] + k;
+    h[0][n] = P[aa], h[1][n] = P[ba], h[2][n] = P[ab], h[3][n] = P[bb];
+    h[4][n] = P[aa + 1], h[5][n] = P[ba + 1], h[6][n] = P[ab + 1], h[7][n] = P[bb + 1];
+  }
+  for (int n = 0; n < N; ++n) {
+    const float X = dx[n], Y = dy[n], Z = dz[n];
+    const float u = fade(X), v = fade(Y), w = fade(Z);
+    out[n] =
+        lerp(lerp(lerp(grad(h[0][n], X, Y, Z), grad(h[1][n], X - 1, Y, Z), u),
+                  lerp(grad(h[2][n], X, Y - 1, Z), grad(h[3][n], X - 1, Y - 1, Z), u), v),
+             lerp(lerp(grad(h[4][n], X, Y, Z - 1), grad(h[5][n], X - 1, Y, Z - 1), u),
+                  lerp(grad(h[6][n], X, Y - 1, Z - 1), grad(h[7][n], X - 1, Y - 1, Z - 1), u), v),
+             w);
+  }
+}
+
+void NoiseField::octave(int o, const Vec3d* p, int n, float* out) const {
+  constexpr int kLanes = 4;  // points per gradient_noise call (8 was no faster)
+  // Octaves shifted apart so their lattices do not line up.
+  const double scale = scale_[size_t(o)], shift = 0.37 * o;
+  for (int first = 0; first < n; first += kLanes) {
+    const int lanes = std::min(kLanes, n - first);
+    double x[kLanes], y[kLanes], z[kLanes];
+    for (int k = 0; k < lanes; ++k) {
+      const Vec3d& q = p[first + k];
+      x[k] = q[0] * scale + shift, y[k] = q[1] * scale + 2 * shift, z[k] = q[2] * scale + 3 * shift;
+    }
+    if (lanes == kLanes)
+      gradient_noise<kLanes>(perm_.data(), x, y, z, out + first);
+    else
+      for (int k = 0; k < lanes; ++k)
+        gradient_noise<1>(perm_.data(), x + k, y + k, z + k, out + first + k);
+  }
 }
 
 float NoiseField::octave(int o, const Vec3d& p) const {
-  // Octaves shifted apart so their lattices do not line up.
-  const double scale = scale_[size_t(o)], shift = 0.37 * o;
-  return gradient_noise(p[0] * scale + shift, p[1] * scale + 2 * shift, p[2] * scale + 3 * shift);
+  float v;
+  octave(o, &p, 1, &v);
+  return v;
 }
 
 float NoiseField::operator()(const Vec3d& p) const {

@@ -28,13 +28,12 @@ class NoiseField {
   // clamp(sum_o amplitude(o) octave(o, p) / norm(), -1, 1).
   int octaves() const { return int(amplitude_.size()); }
   float octave(int o, const Vec3d& position_m) const;
+  void octave(int o, const Vec3d* position_m, int n, float* out) const;  // at n positions
   double wavelength_m(int o) const { return 1 / scale_[size_t(o)]; }
   double amplitude(int o) const { return amplitude_[size_t(o)]; }
   double norm() const { return norm_; }
 
  private:
-  float gradient_noise(double x, double y, double z) const;
-
   std::vector<double> scale_, amplitude_;  // per octave: 1 / wavelength, weight
   double norm_ = 0;
   std::vector<uint16_t> perm_;  // 2 x 4096

@@ -31,25 +31,28 @@ Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size
     planes[q] = upsample(*it->second, refine, 1);
     in.quantities[q] = &planes[q];
   }
-  in.position_ring = 1 + kNoiseLatticeReach;
-  const std::vector<Vec3d> position = pixel_positions(grid, cell, size, refine, in.position_ring);
+  const PixelPositions position(grid, cell, size, refine, in.height.ring + kNoiseLatticeReach);
   in.position = &position;
   in.col0 = global_col(cell, m, 0);
   in.row0 = global_row(cell, m, 0);
   in.pixel_m = pixel_m;
   const Surface s = evaluate(model, in);
 
-  Rendered out{m, std::vector<float>(size_t(m) * size_t(m) * 3),
-               std::vector<float>(size_t(m) * size_t(m)), normals(s.height, pixel_m),
-               std::vector<float>(size_t(m) * size_t(m))};
-  for (int r = 0; r < m; ++r)
-    for (int c = 0; c < m; ++c) {
-      const size_t o = size_t(r) * size_t(m) + size_t(c);
-      const size_t i = size_t(r + 1) * size_t(m + 2) + size_t(c + 1);
-      for (size_t k = 0; k < 3; ++k) out.rgb[3 * o + k] = s.rgb[3 * i + k];
-      out.height[o] = s.height.v[i];
-      out.classes[o] = s.dominant_class.v[i];
-    }
+  // The interior, a row at a time (no zero-filled buffers to overwrite).
+  Rendered out{m, {}, {}, normals(s.height, pixel_m), {}};
+  const size_t n = size_t(m) * size_t(m);
+  out.rgb.reserve(3 * n);
+  out.height.reserve(n);
+  out.classes.reserve(n);
+  for (int r = 0; r < m; ++r) {
+    const size_t i = size_t(r + 1) * size_t(m + 2) + 1;
+    out.rgb.insert(out.rgb.end(), s.rgb.begin() + ptrdiff_t(3 * i),
+                   s.rgb.begin() + ptrdiff_t(3 * (i + size_t(m))));
+    out.height.insert(out.height.end(), s.height.v.begin() + ptrdiff_t(i),
+                      s.height.v.begin() + ptrdiff_t(i + size_t(m)));
+    out.classes.insert(out.classes.end(), s.dominant_class.v.begin() + ptrdiff_t(i),
+                       s.dominant_class.v.begin() + ptrdiff_t(i + size_t(m)));
+  }
   return out;
 }
 

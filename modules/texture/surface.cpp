@@ -10,13 +10,13 @@
 namespace maquette::texture {
 
 float table_coordinate(float unit) {
-  return std::clamp(unit * kBins - 0.5f, 0.0f, float(kBins - 1));
+  return std::isnan(unit) ? float(kBins) : std::clamp(unit * kBins - 0.5f, 0.0f, float(kBins - 1));
 }
 
-float lookup_at(const Table& t, float x) {
-  const int i = std::min(int(x), kBins - 2);
-  const float f = x - float(i);
-  return t[size_t(i)] + f * (t[size_t(i) + 1] - t[size_t(i)]);
+PaddedTable padded(const Table& t) {
+  PaddedTable p{};  // the two zeros at the end
+  std::copy(t.begin(), t.end(), p.begin());
+  return p;
 }
 
 Surface evaluate(const Model& model, const SurfaceInputs& in) {
@@ -28,13 +28,18 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
   const int height_q = model.quantity("height"), slope_q = model.quantity("slope");
   std::vector<int> classes(layers);
   std::vector<float> scale(model.quantities.size()), offset(model.quantities.size());
-  for (size_t l = 0; l < layers; ++l) classes[l] = layer_class(model, int(l));
+  std::vector<std::vector<PaddedTable>> tables(layers);
+  for (size_t l = 0; l < layers; ++l) {
+    classes[l] = layer_class(model, int(l));
+    for (const std::optional<Table>& t : model.layers[l].constraints)
+      tables[l].push_back(t ? padded(*t) : PaddedTable{});
+  }
   for (size_t q = 0; q < model.quantities.size(); ++q) {
     scale[q] = float(1 / (model.quantities[q].hi - model.quantities[q].lo));
     offset[q] = float(-model.quantities[q].lo) * scale[q];
   }
-  const NoiseGeometry geometry{in.height.size, in.height.ring, in.col0,         in.row0,
-                               in.pixel_m,     in.position,    in.position_ring};
+  const NoiseGeometry geometry{in.height.size, in.height.ring, in.col0,
+                               in.row0,        in.pixel_m,     in.position};
   std::vector<NoiseField> fields;
   fields.reserve(layers);  // the lattices keep references
   std::vector<std::optional<LatticeNoise>> noise(layers);
@@ -52,16 +57,15 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
   std::vector<int> dominant(side);
   std::vector<uint32_t> valid(side), lists(layers * side);
   std::vector<size_t> listed(layers);
-  // Per quantity read from a plane (not the displaced height): its table coordinates along the
-  // row, shared by the layers.
-  std::vector<std::vector<float>> coordinate(model.quantities.size());
+  // Per quantity: its table coordinates along the row, shared by the layers (the displaced
+  // height's filled in by each layer that reads it).
+  std::vector<std::vector<float>> coordinate(model.quantities.size(), std::vector<float>(side));
   for (size_t r = 0; r < side; ++r) {
     const size_t row = r * side;
     for (size_t q = 0; q < coordinate.size(); ++q) {
       if (int(q) == height_q) continue;
       const float* plane =
           (int(q) == slope_q ? in.slope.v.data() : in.quantities[q]->v.data()) + row;
-      coordinate[q].resize(side);
       for (size_t c = 0; c < side; ++c)
         coordinate[q][c] = table_coordinate(plane[c] * scale[q] + offset[q]);
     }
@@ -95,14 +99,15 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
       }
       for (size_t q = 0; q < layer.constraints.size() && n > 0; ++q) {
         if (!layer.constraints[q]) continue;
-        const Table& table = *layer.constraints[q];
-        const bool height = int(q) == height_q;
+        const PaddedTable& table = tables[l][q];
+        float* x = coordinate[q].data();
+        if (int(q) == height_q)  // the displaced height, where the layer is still active
+          for (size_t k = 0; k < n; ++k)
+            x[active[k]] = table_coordinate(float(h[active[k]]) * scale[q] + offset[q]);
         size_t kept = 0;
         for (size_t k = 0; k < n; ++k) {
           const uint32_t c = active[k];
-          const float x =
-              height ? table_coordinate(float(h[c]) * scale[q] + offset[q]) : coordinate[q][c];
-          const float p = std::isnan(x) ? 0.0f : product[c] * lookup_at(table, x);
+          const float p = product[c] * lookup_at(table, x[c]);
           product[c] = p;
           active[kept] = c;
           kept += p > 0;

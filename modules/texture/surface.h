@@ -20,12 +20,11 @@ struct SurfaceInputs {
   // Per model quantity: its plane (same size and ring), or nullptr for "height" (the current,
   // displaced height) and "slope".
   std::vector<const Plane*> quantities;
-  // Positions of the planes' pixels for the noise, with `position_ring` extra pixels on every
-  // side (>= ring). With pixel_m > 0, the noise is cached on the global lattice of
-  // lattice_noise.h (then position_ring >= ring + kNoiseLatticeReach), the planes' pixel (0, 0)
-  // being global face pixel (col0, row0); with pixel_m = 0 it is exact at every pixel.
-  const std::vector<Vec3d>* position = nullptr;
-  int position_ring = 0;
+  // Positions of the planes' pixels for the noise. With pixel_m > 0, the noise is cached on the
+  // global lattice of lattice_noise.h (then `position` covers ring + kNoiseLatticeReach pixels
+  // around the planes), the planes' pixel (0, 0) being global face pixel (col0, row0); with
+  // pixel_m = 0 it is exact at every pixel.
+  const PixelPositions* position = nullptr;
   int64_t col0 = 0, row0 = 0;
   double pixel_m = 0;
 };
@@ -37,10 +36,20 @@ struct Surface {
 };
 
 // Constraint table lookup: linear between bin centres, clamped at the ends. In two steps: the
-// coordinate in the table of a value scaled to [0, 1) (NaN stays NaN), and the lookup there.
+// coordinate in a table of a value scaled to [0, 1) (computed once per pixel and quantity, shared
+// by the layers), and the lookup there. A NaN has coordinate kBins, where a padded table holds
+// zeros: the lookup needs no branch.
+using PaddedTable = std::array<float, kBins + 2>;  // a table and two zeros
 float table_coordinate(float unit);
-float lookup_at(const Table& t, float coordinate);
-inline float lookup(const Table& t, float unit) { return lookup_at(t, table_coordinate(unit)); }
+PaddedTable padded(const Table& t);
+inline float lookup_at(const PaddedTable& t, float coordinate) {
+  const int i = int(coordinate);
+  const float* b = &t[size_t(i)];
+  return b[0] + (coordinate - float(i)) * (b[1] - b[0]);
+}
+inline float lookup(const Table& t, float unit) {
+  return lookup_at(padded(t), table_coordinate(unit));
+}
 
 Surface evaluate(const Model& model, const SurfaceInputs& in);
 

@@ -182,6 +182,37 @@ TEST(Overviews, BatchOfAllFourChildrenWritesTheirParent) {
   EXPECT_EQ(q[3], 32);  // NaN of Q33 left out
 }
 
+// put_parent_overview: a batch with two children of Q1 writes Q1's overview at commit
+// (hand-computed means, nodata for the missing quadrants, no update_overviews). For Q2, whose
+// child Q20 an earlier batch stored, it does not: Q2 stays stale and update_overviews builds it
+// from all three children.
+TEST(Overviews, BatchWritesTheParentOfFewerChildrenWhenNoOtherIsStored) {
+  TempDir dir;
+  auto store = Store::open(dir.file("s.mqs"), Store::Mode::Create);
+  store->create_layer(layer("dem", DType::F32, Semantics::Continuous, 2, -9999));
+  const auto put = [&](CellId parent, std::vector<int> digits) {
+    Store::Batch batch(*store);
+    for (int d : digits) {
+      const float v = float(10 * parent.digit(1) + d);
+      batch.put_tile("dem", parent.child(d), raw_tile<float>(2, 1, {v, v, v + 2, v + 2}));
+    }
+    batch.put_parent_overview("dem", parent);
+    batch.commit();
+  };
+  put(cell("Q1"), {0, 3});
+  EXPECT_EQ(values_of<float>(*store->get_overview("dem", cell("Q1"))),
+            (std::vector<float>{11, -9999, -9999, 14}));
+  put(cell("Q2"), {0});
+  put(cell("Q2"), {1, 2});  // Q20 is stored already: this batch's overview is not written
+  EXPECT_EQ(values_of<float>(*store->get_overview("dem", cell("Q2"))),
+            (std::vector<float>{21, -9999, -9999, -9999}));  // the first batch's
+  store->update_overviews("dem");
+  EXPECT_EQ(values_of<float>(*store->get_overview("dem", cell("Q2"))),
+            (std::vector<float>{21, 22, 23, -9999}));
+  EXPECT_EQ(values_of<float>(*store->get_overview("dem", cell("Q1"))),
+            (std::vector<float>{11, -9999, -9999, 14}));
+}
+
 TEST(Overviews, BadArguments) {
   TempDir dir;
   auto store = Store::open(dir.file("s.mqs"), Store::Mode::Create);

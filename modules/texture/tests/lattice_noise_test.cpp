@@ -15,26 +15,23 @@ namespace {
 constexpr int kRing = 1, kPositionRing = kRing + kNoiseLatticeReach;
 
 struct Planes {
-  std::vector<Vec3d> position;
+  PixelPositions position;
   NoiseGeometry geometry;
 };
 
-// The planes of a tile of `size` on `cell` (refine 0), as render_tile lays them out.
+// The planes of a tile of `size` on `cell` (refine 0), as render_tile lays them out (the
+// geometry's `position` is set where it is used: Planes is returned by value).
 Planes planes(CellId cell, int size) {
-  Planes p{pixel_positions(default_grid(), cell, size, 0, kPositionRing), {}};
-  p.geometry = {size,
-                kRing,
-                global_col(cell, size, 0),
-                global_row(cell, size, 0),
-                default_grid().level_info(cell.level(), size).pixel_m,
-                &p.position,
-                kPositionRing};
-  return p;
+  return {PixelPositions(default_grid(), cell, size, 0, kPositionRing),
+          {size, kRing, global_col(cell, size, 0), global_row(cell, size, 0),
+           default_grid().level_info(cell.level(), size).pixel_m, nullptr}};
 }
 
 // Every pixel of the planes, row by row.
 std::vector<float> lattice_noise(const NoiseField& field, const Planes& p) {
-  LatticeNoise noise(field, p.geometry);
+  NoiseGeometry geometry = p.geometry;
+  geometry.position = &p.position;
+  LatticeNoise noise(field, geometry);
   const int side = p.geometry.size + 2 * kRing;
   std::vector<float> out(size_t(side) * size_t(side));
   for (int r = -kRing; r < p.geometry.size + kRing; ++r)
@@ -63,9 +60,7 @@ TEST(LatticeNoise, WithinToleranceOfExactEvaluation) {
     double worst = 0, sum_sq = 0;
     for (int r = 0; r < side; ++r)
       for (int c = 0; c < side; ++c) {
-        const Vec3d& x =
-            p.position[size_t(r + kNoiseLatticeReach) * size_t(64 + 2 * kPositionRing) +
-                       size_t(c + kNoiseLatticeReach)];
+        const Vec3d x = p.position.at(c - kRing, r - kRing);
         const double d =
             cached[size_t(r) * size_t(side) + size_t(c)] - exact(field, x, p.geometry.pixel_m);
         worst = std::max(worst, std::abs(d));
@@ -86,9 +81,25 @@ TEST(LatticeNoise, ExactWithoutPixelSize) {
   const std::vector<float> cached = lattice_noise(field, p);
   for (int r = 0; r < 18; ++r)
     for (int c = 0; c < 18; ++c)
-      ASSERT_EQ(cached[size_t(r) * 18 + size_t(c)],
-                field(p.position[size_t(r + kNoiseLatticeReach) * size_t(16 + 2 * kPositionRing) +
-                                 size_t(c + kNoiseLatticeReach)]));
+      ASSERT_EQ(cached[size_t(r) * 18 + size_t(c)], field(p.position.at(c - kRing, r - kRing)));
+}
+
+// Lattice nodes are evaluated a batch at a time (4 points at once, the rest one by one): every
+// octave gives the same bits at a point whichever batch the point is in.
+TEST(LatticeNoise, SameBitsInABatchAsAlone) {
+  const NoiseField field({9, 3, 300, 0.5});
+  const PixelPositions positions(default_grid(), CellId::FromFaceColRow(2, 14, 7700, 8100), 64, 0,
+                                 0);
+  std::vector<Vec3d> p;
+  for (int k = 0; k < 11; ++k) p.push_back(positions.at(5 * k, 3 * k));
+  for (int o = 0; o < field.octaves(); ++o) {
+    std::vector<float> batch(p.size());
+    field.octave(o, p.data(), int(p.size()), batch.data());
+    for (size_t k = 0; k < p.size(); ++k) {
+      ASSERT_EQ(batch[k], field.octave(o, p[k])) << o << " " << k;
+      ASSERT_NE(batch[k], 0.0f);  // not on a lattice point of the noise: a value to compare
+    }
+  }
 }
 
 // A pixel has the same noise, to the bit, whichever tile computes it: a tile of 64 and the 4

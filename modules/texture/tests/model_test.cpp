@@ -102,12 +102,13 @@ TEST(Model, ErrorsNameFieldAndValue) {
 TEST(Model, CoverageFormulaByHand) {
   const Model m = parse_model(base_model(), "ctx");
   const float h0 = 450, slope = 45;
-  const Vec3d pos{1234.5, -987.25, 6.3e6};
+  const PixelPositions position(default_grid(), CellId::FromFaceColRow(2, 14, 7700, 8100), 16, 0,
+                                0);
+  const Vec3d pos = position.at(0, 0);
   SurfaceInputs in;
   in.height = Plane(1, 0, h0);
   in.slope = Plane(1, 0, slope);
   in.quantities = {nullptr, nullptr};
-  const std::vector<Vec3d> position{pos};
   in.position = &position;
   const Surface s = evaluate(m, in);
 
@@ -130,13 +131,27 @@ TEST(Model, CoverageFormulaByHand) {
   EXPECT_EQ(s.dominant_class.v[0], ca1 >= 0.5 ? 1.0f : 0.0f);
 }
 
+// Linear between bin centres, clamped at both ends; a missing value reads 0 (the padded zeros).
+TEST(Model, TableLookupByHand) {
+  Table t{};
+  for (int i = 0; i < kBins; ++i) t[size_t(i)] = float(i % 7) / 6;
+  EXPECT_EQ(lookup(t, (10 + 0.5f) / kBins), t[10]);  // a bin centre
+  EXPECT_FLOAT_EQ(lookup(t, (10 + 0.75f) / kBins), t[10] + 0.25f * (t[11] - t[10]));
+  EXPECT_EQ(lookup(t, -3), t[0]);
+  EXPECT_EQ(lookup(t, 0.2f / kBins), t[0]);  // below the first centre
+  EXPECT_EQ(lookup(t, 1), t[kBins - 1]);
+  EXPECT_EQ(lookup(t, 5), t[kBins - 1]);
+  EXPECT_EQ(lookup(t, NAN), 0);
+}
+
 TEST(Model, NaNHeightGivesNaN) {
   const Model m = parse_model(base_model(), "ctx");
   SurfaceInputs in;
   in.height = Plane(1, 0, NAN);
   in.slope = Plane(1, 0, 0);
   in.quantities = {nullptr, nullptr};
-  const std::vector<Vec3d> position{{0, 0, 6.3e6}};
+  const PixelPositions position(default_grid(), CellId::FromFaceColRow(2, 14, 7700, 8100), 16, 0,
+                                0);
   in.position = &position;
   const Surface s = evaluate(m, in);
   EXPECT_TRUE(std::isnan(s.rgb[0]));

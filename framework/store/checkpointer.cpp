@@ -1,0 +1,60 @@
+#include "store/checkpointer.h"
+
+#include <fcntl.h>
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include "store/schema.h"
+
+namespace maquette {
+
+Checkpointer::Checkpointer(sqlite::Connection& writer, std::string path)
+    : writer_(writer), path_(std::move(path)) {
+  writer_.on_wal_pages(kCheckpointPages, [this] { request(); });
+}
+
+Checkpointer::~Checkpointer() {
+  writer_.on_wal_pages(0, nullptr);
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+  if (thread_.joinable()) thread_.join();
+}
+
+void Checkpointer::request() {
+  {
+    std::lock_guard lock(mutex_);
+    requested_ = true;
+    if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
+  }
+  wake_.notify_one();
+}
+
+void Checkpointer::run() {
+  // A checkpoint that fails (the disk, another process's checkpoint running) is left to the
+  // next one and to the close, which checkpoints whatever remains.
+  std::unique_ptr<sqlite::Connection> conn;
+  try {
+    conn = std::make_unique<sqlite::Connection>(path_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
+    configure_connection(*conn, true);  // synchronous = NORMAL: the WAL is synced before copying
+  } catch (const Error&) {
+  }
+  // SQLite syncs the database only when a checkpoint reaches the end of the WAL, which one
+  // racing the writers seldom does: syncing it after each checkpoint too writes it out as it
+  // grows, instead of all at the close.
+  const int db = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  std::unique_lock lock(mutex_);
+  while (true) {
+    wake_.wait(lock, [this] { return requested_ || stopping_; });
+    if (stopping_) break;
+    requested_ = false;
+    lock.unlock();
+    if (conn && conn->checkpoint_passive() && db >= 0) ::fdatasync(db);
+    lock.lock();
+  }
+  if (db >= 0) ::close(db);
+}
+
+}  // namespace maquette
