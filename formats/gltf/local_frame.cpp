@@ -1,26 +1,11 @@
 #include "gltf/local_frame.h"
 
-#include <GeographicLib/Geocentric.hpp>
-#include <cmath>
-#include <numbers>
-
 namespace maquette {
-namespace {
 
-Vec3 ecef(LonLat p, double height) {
-  Vec3 v;
-  GeographicLib::Geocentric::WGS84().Forward(p.lat, p.lon, height, v[0], v[1], v[2]);
-  return v;
-}
-
-}  // namespace
-
-LocalFrame::LocalFrame(LonLat origin) : origin_(origin), origin_ecef_(ecef(origin, 0)) {
-  const double lon = origin.lon * std::numbers::pi / 180, lat = origin.lat * std::numbers::pi / 180;
-  axes_[0] = {-std::sin(lon), std::cos(lon), 0};
-  axes_[1] = {-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)};
-  axes_[2] = {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-}
+LocalFrame::LocalFrame(LonLat origin)
+    : origin_(origin),
+      origin_ecef_(ecef(origin)),
+      axes_{east_unit(origin), north_unit(origin), up_unit(origin)} {}
 
 Vec3 LocalFrame::to_gltf(LonLat p, double height) const {
   const Vec3 e = ecef(p, height);

@@ -6,11 +6,10 @@
 
 #include <array>
 
+#include "core/ecef.h"
 #include "core/grid.h"
 
 namespace maquette {
-
-using Vec3 = std::array<double, 3>;
 
 class LocalFrame {
  public:

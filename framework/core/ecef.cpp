@@ -10,9 +10,9 @@ double radians(double degrees) { return degrees * (M_PI / 180); }
 
 }  // namespace
 
-Vec3 ecef(LonLat p) {
+Vec3 ecef(LonLat p, double height) {
   Vec3 r;
-  GeographicLib::Geocentric::WGS84().Forward(p.lat, p.lon, 0, r[0], r[1], r[2]);
+  GeographicLib::Geocentric::WGS84().Forward(p.lat, p.lon, height, r[0], r[1], r[2]);
   return r;
 }
 

@@ -11,8 +11,8 @@ namespace maquette {
 
 using Vec3 = std::array<double, 3>;
 
-// ECEF position (metres) of a point on the ellipsoid (height 0).
-Vec3 ecef(LonLat p);
+// ECEF position (metres) of a point `height` metres above the ellipsoid.
+Vec3 ecef(LonLat p, double height = 0);
 Vec3 east_unit(LonLat p);
 Vec3 north_unit(LonLat p);
 Vec3 up_unit(LonLat p);
