@@ -43,19 +43,14 @@ void put_content(Store::Batch& batch, const std::string& layer, CellId cell, con
       j["instances"].push_back({i.lon, i.lat, i.height, i.scale, i.heading});
   }
   const std::string text = j.dump();
-  Artifact a{content_artifact_name(layer, cell),
-             "application/json",
-             std::vector<std::byte>(text.size()),
-             {{"layer", layer}, {"cell", cell.ToText()}}};
-  std::ranges::transform(text, a.data.begin(), [](char ch) { return std::byte(ch); });
-  batch.put_artifact(a);
+  batch.put_artifact(Artifact::FromText(content_artifact_name(layer, cell), text,
+                                        {{"layer", layer}, {"cell", cell.ToText()}}));
 }
 
 std::optional<ContentTile> get_content(const Store& store, const std::string& layer, CellId cell) {
   const auto a = store.get_artifact(content_artifact_name(layer, cell));
   if (!a) return std::nullopt;
-  const json j = json::parse(reinterpret_cast<const char*>(a->data.data()),
-                             reinterpret_cast<const char*>(a->data.data() + a->data.size()));
+  const json j = json::parse(a->text());
   ContentTile c;
   c.kind = j.at("kind") == "mesh" ? ContentTile::Kind::Mesh : ContentTile::Kind::Instances;
   c.color = j.at("color").get<std::array<double, 3>>();

@@ -130,17 +130,13 @@ StationsIngestReport ingest_stations(Store& store, const std::string& csv_path,
   report.stations = int64_t(stations.size());
   const json doc = {{"columns", report.value_columns}, {"stations", stations}};
   const std::string text = doc.dump();
-  Artifact a;
-  a.name = options.layer;
-  a.data.resize(text.size());
-  std::transform(text.begin(), text.end(), a.data.begin(), [](char c) { return std::byte(c); });
-  a.metadata = {{"kind", "stations"},
-                {"source", csv_path},
-                {"stations", report.stations},
-                {"lon_column", options.lon_column},
-                {"lat_column", options.lat_column},
-                {"elevation_column", options.elevation_column}};
-  store.put_artifact(a);
+  store.put_artifact(Artifact::FromText(options.layer, text,
+                                        {{"kind", "stations"},
+                                         {"source", csv_path},
+                                         {"stations", report.stations},
+                                         {"lon_column", options.lon_column},
+                                         {"lat_column", options.lat_column},
+                                         {"elevation_column", options.elevation_column}}));
   return report;
 }
 

@@ -45,8 +45,7 @@ json paste_artifacts(const json& params, const Store& store, const std::string& 
     const std::string name = ref.at("$artifact").get<std::string>();
     const std::optional<Artifact> artifact = store.get_artifact(name);
     if (!artifact) throw Error(context + ": " + path + ": no artifact '" + name + "' in the store");
-    const std::string text(reinterpret_cast<const char*>(artifact->data.data()),
-                           artifact->data.size());
+    const std::string_view text = artifact->text();
     json doc;
     try {
       doc = json::parse(text);

@@ -3,6 +3,11 @@
 
 namespace maquette {
 
+Artifact Artifact::FromText(std::string name, std::string_view text, nlohmann::json metadata) {
+  const auto* bytes = reinterpret_cast<const std::byte*>(text.data());
+  return {std::move(name), "application/json", {bytes, bytes + text.size()}, std::move(metadata)};
+}
+
 void Store::put_artifact(const Artifact& artifact) {
   Batch batch(*this);
   batch.put_artifact(artifact);

@@ -65,6 +65,13 @@ struct Artifact {
   std::string media_type = "application/json";
   std::vector<std::byte> data;
   nlohmann::json metadata = nlohmann::json::object();
+
+  // An artifact whose data is `text` (e.g. a JSON document's dump), and the text of one.
+  static Artifact FromText(std::string name, std::string_view text,
+                           nlohmann::json metadata = nlohmann::json::object());
+  std::string_view text() const {
+    return {reinterpret_cast<const char*>(data.data()), data.size()};
+  }
 };
 
 class Store {

@@ -97,11 +97,8 @@ class FitStations : public ReduceOperator {
     json report = fit.to_json();
     report["outside_region"] = outside;
     const std::string text = report.dump();
-    Artifact a;
-    a.data.resize(text.size());
-    std::transform(text.begin(), text.end(), a.data.begin(), [](char c) { return std::byte(c); });
-    a.metadata = {{"kind", "climate.station_fit"}, {"stations", name}, {"columns", columns}};
-    return a;
+    return Artifact::FromText(
+        "", text, {{"kind", "climate.station_fit"}, {"stations", name}, {"columns", columns}});
   }
 
  private:

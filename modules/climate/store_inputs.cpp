@@ -19,8 +19,7 @@ nlohmann::json read_json_artifact(const Store& store, const std::string& name,
   if (!artifact)
     throw Error(op + ": params." + field + ": no artifact '" + name + "' in " + store.path());
   try {
-    const auto* bytes = reinterpret_cast<const char*>(artifact->data.data());
-    return nlohmann::json::parse(bytes, bytes + artifact->data.size());
+    return nlohmann::json::parse(artifact->text());
   } catch (const nlohmann::json::exception&) {
     throw Error(op + ": params." + field + ": artifact '" + name + "' is not JSON");
   }

@@ -92,12 +92,8 @@ class Assess : public ReduceOperator {
     const json report = assessment(merged);
     std::cout << assessment_table(report) << std::flush;
     const std::string text = report.dump(1);
-    Artifact a;
-    a.name = "report";
-    a.data.resize(text.size());
-    std::transform(text.begin(), text.end(), a.data.begin(), [](char ch) { return std::byte(ch); });
-    a.metadata = {{"kappa", report["kappa"]}, {"accuracy", report["accuracy"]}};
-    return a;
+    return Artifact::FromText("report", text,
+                              {{"kappa", report["kappa"]}, {"accuracy", report["accuracy"]}});
   }
 
  private:

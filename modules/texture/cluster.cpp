@@ -166,12 +166,7 @@ class ClusterOp : public ReduceOperator {
         throw Error(std::string("texture.cluster: params.plot: ") + e.what());
       }
     }
-    Artifact a;
-    a.name = "clusters";
-    a.data.resize(text.size());
-    std::transform(text.begin(), text.end(), a.data.begin(), [](char ch) { return std::byte(ch); });
-    a.metadata = {{"k", found.centres.size()}};
-    return a;
+    return Artifact::FromText("clusters", text, {{"k", found.centres.size()}});
   }
 
  private:

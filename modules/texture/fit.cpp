@@ -220,12 +220,9 @@ class Fit : public ReduceOperator {
       if (!(file << text << '\n'))
         throw Error(std::string(kOp) + ": params.out: cannot write '" + out + "'");
     }
-    Artifact a;
-    a.name = "model";
-    a.data.resize(text.size());
-    std::transform(text.begin(), text.end(), a.data.begin(), [](char ch) { return std::byte(ch); });
-    a.metadata = {{"format", doc["format"]}, {"version", doc["version"]}, {"classes", summary}};
-    return a;
+    return Artifact::FromText(
+        "model", text,
+        {{"format", doc["format"]}, {"version", doc["version"]}, {"classes", summary}});
   }
 
  private:

@@ -42,8 +42,7 @@ TEST(CliIngest, StationsBecomeAnArtifact) {
   const auto s = Store::open(store, Store::Mode::ReadOnly);
   const auto artifact = s->get_artifact("co");
   ASSERT_TRUE(artifact);
-  const json doc = json::parse(
-      std::string(reinterpret_cast<const char*>(artifact->data.data()), artifact->data.size()));
+  const json doc = json::parse(std::string(artifact->text()));
   EXPECT_EQ(doc["stations"].size(), 376u);
 }
 

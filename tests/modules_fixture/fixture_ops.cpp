@@ -160,11 +160,7 @@ class Sum : public maquette::ReduceOperator {
             {"count", a.at("count").get<int64_t>() + b.at("count").get<int64_t>()}};
   }
   maquette::Artifact finish(const json& merged, const maquette::StepContext&) const override {
-    maquette::Artifact a;
-    const std::string text = merged.dump();
-    for (const char ch : text) a.data.push_back(std::byte(ch));
-    a.metadata = {{"operator", "fixture.sum"}};
-    return a;
+    return maquette::Artifact::FromText("", merged.dump(), {{"operator", "fixture.sum"}});
   }
 };
 

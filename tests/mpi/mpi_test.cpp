@@ -119,10 +119,7 @@ void put_stations(const std::string& store) {
                           {"p", 400 + 300 * z / 1000 + 5.0 * (i % 2)}}}});
   }
   const std::string text = json{{"columns", {"t", "p"}}, {"stations", stations}}.dump();
-  Artifact a;
-  a.name = "stations";
-  for (const char ch : text) a.data.push_back(std::byte(ch));
-  Store::open(store, Store::Mode::Create)->put_artifact(a);
+  Store::open(store, Store::Mode::Create)->put_artifact(Artifact::FromText("stations", text));
 }
 
 // Every climate and texture operator on 16 cells of 64 pixels, on a synthesized DEM: the climate

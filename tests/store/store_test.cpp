@@ -405,6 +405,17 @@ TEST(StoreArtifacts, PutGetOverwrite) {
   EXPECT_FALSE(store->get_artifact("none"));
 }
 
+TEST(StoreArtifacts, FromTextHoldsTheTextsBytes) {
+  const Artifact a = Artifact::FromText("m", "{\"k\":2}", {{"k", 2}});
+  EXPECT_EQ(a.name, "m");
+  EXPECT_EQ(a.media_type, "application/json");
+  EXPECT_EQ(a.data,
+            (std::vector<std::byte>{std::byte{'{'}, std::byte{'"'}, std::byte{'k'}, std::byte{'"'},
+                                    std::byte{':'}, std::byte{'2'}, std::byte{'}'}}));
+  EXPECT_EQ(a.text(), "{\"k\":2}");
+  EXPECT_EQ(a.metadata["k"], 2);
+}
+
 TEST(StoreRuns, ResumeFindsTheUnfinishedRunOfTheSamePipeline) {
   TempDir dir;
   auto store = Store::open(dir.file("s.mqs"), Store::Mode::Create);

@@ -12,7 +12,7 @@ using json = nlohmann::json;
 json artifact_json(const Store& store, const std::string& name) {
   const auto a = store.get_artifact(name);
   if (!a) return nullptr;
-  return json::parse(std::string(reinterpret_cast<const char*>(a->data.data()), a->data.size()));
+  return json::parse(a->text());
 }
 
 StationsIngestOptions stations(const std::string& layer = "stations") {

@@ -85,11 +85,7 @@ Outcome fit_and_assess(int threads) {
   EXPECT_EQ(assess.exit_code, 0) << assess.err;
   const auto store = Store::open(dir + "/zion.mqt", Store::Mode::ReadOnly);
   const auto model = store->get_artifact("model");
-  Outcome o{dir,
-            model
-                ? std::string(reinterpret_cast<const char*>(model->data.data()), model->data.size())
-                : std::string(),
-            assess.out};
+  Outcome o{dir, model ? std::string(model->text()) : std::string(), assess.out};
   std::smatch m;
   if (std::regex_search(o.table, m, std::regex("kappa (-?[0-9.]+)"))) o.kappa = std::stod(m[1]);
   return o;

@@ -49,10 +49,7 @@ std::vector<CellId> make_store(const std::string& path) {
          {"values", {{"t", 25 - 6.5 * z / 1000 + 0.1 * (i % 3)}, {"p", 400 + 300 * z / 1000}}}});
   }
   const std::string text = json{{"columns", {"t", "p"}}, {"stations", stations}}.dump();
-  Artifact a;
-  a.name = "stations";
-  for (char ch : text) a.data.push_back(std::byte(ch));
-  store->put_artifact(a);
+  store->put_artifact(Artifact::FromText("stations", text));
   return cells;
 }
 

@@ -53,8 +53,7 @@ class Regionalize : public ::testing::Test {
         path_, cells, kSize,
         {{{"op", "climate.fit_stations"}, {"outputs", {{"fit", "fit"}}}, {"params", params}}});
     const Artifact a = *store_->get_artifact("fit");
-    const auto* b = reinterpret_cast<const char*>(a.data.data());
-    return StationFit::from_json(json::parse(b, b + a.data.size()), "fit");
+    return StationFit::from_json(json::parse(a.text()), "fit");
   }
 
   // Runs climate.regionalize on `cell` of the DEM tile `dem`, its `outputs` mapped to layers of

@@ -183,9 +183,7 @@ TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
       parts = next;
     }
     const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
-    EXPECT_EQ(
-        json::parse(std::string(reinterpret_cast<const char*>(tree.data.data()), tree.data.size())),
-        a);
+    EXPECT_EQ(json::parse(tree.text()), a);
   }
 }
 

@@ -58,7 +58,7 @@ inline json run_reduce(const std::string& name, std::vector<CellId> cells, int s
         merged, op.map({.cell = c, .tile_size = size, .grid = &default_grid(), .params = &full},
                        inputs(c)));
   const Artifact a = op.finish(merged, {&default_grid(), &full, nullptr});
-  return json::parse(std::string(reinterpret_cast<const char*>(a.data.data()), a.data.size()));
+  return json::parse(a.text());
 }
 
 using Field = std::function<double(LonLat)>;
