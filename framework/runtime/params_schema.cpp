@@ -127,6 +127,10 @@ json number_param(double min, double max, double def, const std::string& descrip
           {"description", description}};
 }
 
+json string_param(const std::string& def, const std::string& description) {
+  return {{"type", "string"}, {"default", def}, {"description", description}};
+}
+
 json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description) {
   return {{"type", "integer"},
           {"minimum", min},

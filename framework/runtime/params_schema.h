@@ -15,8 +15,10 @@ namespace maquette {
 nlohmann::json validate_params(const nlohmann::json& schema, const nlohmann::json& params,
                                const std::string& context);
 
-// Schemas of bounded numeric parameters with a default, for operators' params_schema.
+// Schemas of bounded numeric parameters and of strings with a default, for operators'
+// params_schema.
 nlohmann::json number_param(double min, double max, double def, const std::string& description);
 nlohmann::json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description);
+nlohmann::json string_param(const std::string& def, const std::string& description);
 
 }  // namespace maquette

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "station_fit.h"
 #include "store_inputs.h"
 
@@ -28,9 +29,6 @@ OperatorSpec fit_spec() {
   s.kind = OperatorKind::Reduce;
   s.outputs = {{"fit", "station fit artifact (JSON)", DType::F32, 1, Semantics::Continuous, "",
                 std::nullopt}};
-  const auto text = [](const char* what) {
-    return json{{"type", "string"}, {"default", ""}, {"description", what}};
-  };
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
@@ -41,8 +39,10 @@ OperatorSpec fit_spec() {
          {{"type", "array"},
           {"items", {{"type", "string"}}},
           {"description", "value columns to regress"}}},
-        {"zones", text("features layer of zone polygons in the store; empty: one zone")},
-        {"zone_field", text("zone attribute naming each zone in the report; empty: the fid")},
+        {"zones",
+         string_param("", "features layer of zone polygons in the store; empty: one zone")},
+        {"zone_field",
+         string_param("", "zone attribute naming each zone in the report; empty: the fid")},
         {"horizontal",
          {{"type", "string"},
           {"enum", {"none", "west_east", "south_north", "both"}},

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/halo.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 #include "station_fit.h"
 #include "store_inputs.h"
 
@@ -28,9 +29,6 @@ OperatorSpec regionalize_spec() {
       {"precipitation", "regionalized precipitation column", DType::F32, 1, Semantics::Continuous,
        "mm", std::nullopt},
   };
-  const auto column = [](const char* what) {
-    return json{{"type", "string"}, {"default", ""}, {"description", what}};
-  };
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
@@ -38,8 +36,8 @@ OperatorSpec regionalize_spec() {
       {"properties",
        {{"fit",
          {{"type", "string"}, {"description", "artifact of climate.fit_stations in the store"}}},
-        {"temperature_column", column("fitted column for output 'temperature'")},
-        {"precipitation_column", column("fitted column for output 'precipitation'")}}}};
+        {"temperature_column", string_param("", "fitted column for output 'temperature'")},
+        {"precipitation_column", string_param("", "fitted column for output 'precipitation'")}}}};
   return s;
 }
 

@@ -74,5 +74,29 @@ TEST(ParamsSchema, NullParamsAreEmpty) {
   EXPECT_EQ(validate_params(schema, {{"b", 1}}, kStep), json({{"a", 4}, {"b", 1}}));
 }
 
+TEST(ParamsSchema, HelpersMakeBoundedNumbersAndStringsWithDefaults) {
+  const json schema = {{"type", "object"},
+                       {"additionalProperties", false},
+                       {"properties",
+                        {{"n", number_param(0, 1, 0.5, "a fraction")},
+                         {"i", integer_param(1, 9, 3, "a count")},
+                         {"s", string_param("none", "a name")}}}};
+  EXPECT_EQ(validate_params(schema, json::object(), kStep),
+            json({{"n", 0.5}, {"i", 3}, {"s", "none"}}));
+  EXPECT_EQ(validate_params(schema, {{"s", "zones"}}, kStep).at("s"), "zones");
+  EXPECT_EQ(error_of([&] {
+              validate_params(schema, {{"s", 2}}, kStep);
+            }),
+            "step 2 (terrain.derive): params.s: expected a string, got 2");
+  EXPECT_NE(error_of([&] {
+              validate_params(schema, {{"i", 10}}, kStep);
+            }).find("params.i"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              validate_params(schema, {{"n", 1.5}}, kStep);
+            }).find("params.n"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace maquette
