@@ -26,7 +26,8 @@ if(TARGET zstd::libzstd_shared)
 else()
   set(MAQUETTE_ZSTD zstd::libzstd_static)
 endif()
-# Optional: `maquette run` under mpirun/srun shares a run among ranks (framework/runtime/ranks.h).
+# Optional: `maquette run` under mpirun/srun shares a run among ranks (framework/runtime/ranks.h)
+# through the plug-in libmaquette_mpi.so (framework/plugins), the only target linking MPI.
 # Without MPI the build is single-process only.
 find_package(MPI COMPONENTS CXX)
 if(MPI_CXX_FOUND)

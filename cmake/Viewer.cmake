@@ -1,6 +1,7 @@
 # The web viewer (viewer/) and what `maquette view` needs.
 #
-# - cpp-httplib (Debian libcpp-httplib-dev, through pkg-config) for `maquette view`.
+# - cpp-httplib (Debian libcpp-httplib-dev, through pkg-config) for the server of `maquette view`,
+#   the plug-in libmaquette_view.so (framework/plugins).
 # - When npm is available, the target maquette_viewer (part of ALL) runs `npm ci` on a copy of
 #   viewer/package.json + package-lock.json in the build tree (the source tree stays clean) and
 #   bundles the viewer with esbuild into ${MAQUETTE_VIEWER_DIR} = build/share/maquette/viewer,

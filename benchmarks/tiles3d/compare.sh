@@ -11,7 +11,9 @@
 #   transcoder    sum over files of draco_transcoder (GLB parse, encoding, writing)
 # Each program runs once untimed (warm caches), then RUNS (3) times; medians of wall and CPU
 # (user + sys) time, the largest peak RSS (per process, from wait4, as /usr/bin/time -v reports
-# it), and the total bytes of the GLB files (tileset.json excluded).
+# it), and the total bytes of the GLB files (tileset.json excluded). Then the export's memory per
+# tile in flight: its peak RSS with one worker thread (pinned to one CPU) and with all, against
+# the program's own (`maquette info`).
 # Usage: benchmarks/tiles3d/compare.sh [BUILD_DIR]
 set -eu
 BUILD=${1:-build}
@@ -89,6 +91,14 @@ for i in range(runs + 1):  # the first round warms caches and is not counted
 def med(k, j): return statistics.median(s[j] for s in samples[k])
 def peak(k): return max(s[2] for s in samples[k]) / 1024
 
+# Memory against tiles in flight (one per worker thread): the program alone (`info`), and the
+# Draco export on one CPU (one worker) and on all of this process's CPUs.
+cpus = sorted(os.sched_getaffinity(0))
+alone = run([maquette, "info", store])[2] / 1024
+os.sched_setaffinity(0, cpus[:1])
+one_cpu = max(export(ours_d)[2] for _ in range(runs)) / 1024
+os.sched_setaffinity(0, cpus)
+
 files = glbs(ours_d)
 assert files == glbs(tc_d), "the two exports hold different GLB files"
 sizes = {"ours": size(ours_d), "plain": size(plain_d), "transcoder": size(tc_d)}
@@ -105,4 +115,7 @@ print(f"ratios ours/transcoder: wall {med('ours', 0) / tw:.2f}x, cpu {med('ours'
       f"(whole export); encoding only wall {enc_w / tw:.2f}x, cpu {enc_c / tc:.2f}x; "
       f"size {sizes['ours'] / sizes['transcoder']:.3f}x; "
       f"peak RSS {peak('ours') / peak('transcoder'):.1f}x")
+print(f"peak RSS: program alone {alone:.0f} MiB; Draco export with 1 worker {one_cpu:.0f} MiB, "
+      f"with {len(cpus)} {peak('ours'):.0f} MiB: "
+      f"{(peak('ours') - alone) / len(cpus):.0f} MiB per tile in flight")
 PY

@@ -36,63 +36,78 @@ void PixelMapper::map(CellId cell, int size, PixelMap& out) {
     }
   exact(cell, size, lx, ly);
 
-  std::vector<double> bx, by;
-  for (size_t j = 0; j + 1 < std::max<size_t>(m, 2); ++j) {
+  // The blocks, and the exact transform of the centre of each one that interpolation may fill
+  // (corners valid, wider than one sample), all in one call: PROJ's set-up per call costs more
+  // than a point.
+  struct Block {
+    int c0, c1, r0, r1;
+    size_t k00, k01, k10, k11;
+    bool check;  // its centre is checked against the exact transform
+  };
+  std::vector<Block> blocks;
+  std::vector<double> cx, cy;
+  for (size_t j = 0; j + 1 < std::max<size_t>(m, 2); ++j)
     for (size_t i = 0; i + 1 < std::max<size_t>(m, 2); ++i) {
       const int c0 = ticks[std::min(i, m - 1)], c1 = ticks[std::min(i + 1, m - 1)];
       const int r0 = ticks[std::min(j, m - 1)], r1 = ticks[std::min(j + 1, m - 1)];
       const size_t k00 = std::min(j, m - 1) * m + std::min(i, m - 1);
       const size_t k01 = k00 + (c1 > c0), k10 = k00 + (r1 > r0) * m, k11 = k10 + (c1 > c0);
-      const auto interp = [&](const std::vector<double>& v, double fc, double fr) {
-        return (1 - fr) * ((1 - fc) * v[k00] + fc * v[k01]) +
-               fr * ((1 - fc) * v[k10] + fc * v[k11]);
-      };
-      // Check the block's centre against the exact transform.
-      bool linear = !std::isnan(lx[k00] + lx[k01] + lx[k10] + lx[k11]);
-      if (linear && c1 - c0 > 1) {
-        bx = {0.5 * (c0 + c1)};
-        by = {0.5 * (r0 + r1)};
-        exact(cell, size, bx, by);
-        linear = std::abs(bx[0] - interp(lx, 0.5, 0.5)) <= kMaxError &&
-                 std::abs(by[0] - interp(ly, 0.5, 0.5)) <= kMaxError;
+      const bool check = !std::isnan(lx[k00] + lx[k01] + lx[k10] + lx[k11]) && c1 - c0 > 1;
+      if (check) {
+        cx.push_back(0.5 * (c0 + c1));
+        cy.push_back(0.5 * (r0 + r1));
       }
-      // The block's samples: [c0, c1] x [r0, r1], the last column/row only at the tile's edge.
-      const int ce = c1 == size - 1 ? c1 + 1 : c1, re = r1 == size - 1 ? r1 + 1 : r1;
-      if (linear) {
-        // Bilinear interpolation, stepped along each row from its two ends.
-        const double wc = std::max(1, c1 - c0), wr = std::max(1, r1 - r0);
-        for (int r = r0; r < re; ++r) {
-          const double fr = (r - r0) / wr;
-          const double xl = (1 - fr) * lx[k00] + fr * lx[k10],
-                       xr = (1 - fr) * lx[k01] + fr * lx[k11];
-          const double yl = (1 - fr) * ly[k00] + fr * ly[k10],
-                       yr = (1 - fr) * ly[k01] + fr * ly[k11];
-          const double dx = (xr - xl) / wc, dy = (yr - yl) / wc;
-          double* ox = out.x.data() + size_t(r) * size_t(size);
-          double* oy = out.y.data() + size_t(r) * size_t(size);
-          for (int c = c0; c < ce; ++c) {
-            ox[c] = xl + (c - c0) * dx;
-            oy[c] = yl + (c - c0) * dy;
-          }
-        }
-        continue;
-      }
-      bx.clear();
-      by.clear();
-      for (int r = r0; r < re; ++r)
-        for (int c = c0; c < ce; ++c) {
-          bx.push_back(c);
-          by.push_back(r);
-        }
-      exact(cell, size, bx, by);
-      size_t q = 0;
-      for (int r = r0; r < re; ++r)
-        for (int c = c0; c < ce; ++c, ++q) {
-          const size_t k = size_t(r) * size_t(size) + size_t(c);
-          out.x[k] = bx[q];
-          out.y[k] = by[q];
-        }
+      blocks.push_back({c0, c1, r0, r1, k00, k01, k10, k11, check});
     }
+  if (!cx.empty()) exact(cell, size, cx, cy);
+  std::vector<double> bx, by;
+  size_t centre = 0;
+  for (const Block& b : blocks) {
+    const auto [c0, c1, r0, r1, k00, k01, k10, k11, check] = b;
+    const auto interp = [&](const std::vector<double>& v, double fc, double fr) {
+      return (1 - fr) * ((1 - fc) * v[k00] + fc * v[k01]) + fr * ((1 - fc) * v[k10] + fc * v[k11]);
+    };
+    // Interpolation fills the block when it is within kMaxError of the exact centre.
+    bool linear = !std::isnan(lx[k00] + lx[k01] + lx[k10] + lx[k11]);
+    if (check) {
+      linear = std::abs(cx[centre] - interp(lx, 0.5, 0.5)) <= kMaxError &&
+               std::abs(cy[centre] - interp(ly, 0.5, 0.5)) <= kMaxError;
+      ++centre;
+    }
+    // The block's samples: [c0, c1] x [r0, r1], the last column/row only at the tile's edge.
+    const int ce = c1 == size - 1 ? c1 + 1 : c1, re = r1 == size - 1 ? r1 + 1 : r1;
+    if (linear) {
+      // Bilinear interpolation, stepped along each row from its two ends.
+      const double wc = std::max(1, c1 - c0), wr = std::max(1, r1 - r0);
+      for (int r = r0; r < re; ++r) {
+        const double fr = (r - r0) / wr;
+        const double xl = (1 - fr) * lx[k00] + fr * lx[k10], xr = (1 - fr) * lx[k01] + fr * lx[k11];
+        const double yl = (1 - fr) * ly[k00] + fr * ly[k10], yr = (1 - fr) * ly[k01] + fr * ly[k11];
+        const double dx = (xr - xl) / wc, dy = (yr - yl) / wc;
+        double* ox = out.x.data() + size_t(r) * size_t(size);
+        double* oy = out.y.data() + size_t(r) * size_t(size);
+        for (int c = c0; c < ce; ++c) {
+          ox[c] = xl + (c - c0) * dx;
+          oy[c] = yl + (c - c0) * dy;
+        }
+      }
+      continue;
+    }
+    bx.clear();
+    by.clear();
+    for (int r = r0; r < re; ++r)
+      for (int c = c0; c < ce; ++c) {
+        bx.push_back(c);
+        by.push_back(r);
+      }
+    exact(cell, size, bx, by);
+    size_t q = 0;
+    for (int r = r0; r < re; ++r)
+      for (int c = c0; c < ce; ++c, ++q) {
+        const size_t k = size_t(r) * size_t(size) + size_t(c);
+        out.x[k] = bx[q];
+        out.y[k] = by[q];
+      }
   }
 }
 

@@ -12,8 +12,11 @@
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <future>
 #include <mutex>
 #include <numeric>
+#include <optional>
 
 #include "core/error.h"
 #include "core/samples.h"
@@ -85,10 +88,33 @@ RasterIngestReport ingest_raster(const std::string& store_path,
                                  const std::vector<std::string>& sources,
                                  const RasterIngestOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  const RasterIngestPlan plan = plan_raster_ingest(store_path, sources, o);
   const auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  // A new store is created while the ingest is planned (its schema and fsync overlap the
+  // planning); if the planning refuses the job, the new file is removed again, so that a refused
+  // ingest leaves no store behind, as an existing store is left untouched.
+  std::error_code ec;
+  const bool fresh = !std::filesystem::exists(store_path, ec) && !ec;
+  std::future<std::unique_ptr<Store>> created;
+  if (fresh)
+    created = std::async(std::launch::async,
+                         [&] { return Store::open(store_path, Store::Mode::Create); });
+  std::optional<RasterIngestPlan> planned;
+  try {
+    planned = plan_raster_ingest(store_path, sources, o);
+  } catch (...) {
+    if (fresh) {
+      try {
+        created.get();  // closed before it is removed
+        for (const char* suffix : {"", "-wal", "-shm"})
+          std::filesystem::remove(store_path + suffix, ec);
+      } catch (...) {  // not created: nothing to remove; the planning's error is the one to tell
+      }
+    }
+    throw;
+  }
+  const RasterIngestPlan& plan = *planned;
   spdlog::debug("ingest {}: planned in {:.3f} s", o.layer, seconds());
   const LayerInfo& layer = plan.layer;
   RasterIngestReport report;
@@ -96,7 +122,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   report.cells = int64_t(plan.cells.size());
   report.resampling = plan.resampling;
 
-  auto store = Store::open(store_path, Store::Mode::Create);
+  auto store = fresh ? created.get() : Store::open(store_path, Store::Mode::Create);
   store->create_layer(layer);
   std::vector<CellId> todo = plan.cells;
   int64_t run = 0;

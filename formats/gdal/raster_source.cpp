@@ -48,16 +48,21 @@ GDALDataset* open_dataset(const std::string& path) {
   return ds;
 }
 
-std::string crs_of(GDALDataset& ds, const std::string& path, const std::string& src_crs) {
-  OGRSpatialReference srs;
+std::shared_ptr<const OGRSpatialReference> crs_of(GDALDataset& ds, const std::string& path,
+                                                  const std::string& src_crs) {
+  auto srs = std::make_shared<OGRSpatialReference>();
   if (!src_crs.empty()) {
-    if (srs.SetFromUserInput(src_crs.c_str()) != OGRERR_NONE)
+    if (srs->SetFromUserInput(src_crs.c_str()) != OGRERR_NONE)
       throw Error("--src-crs: '" + src_crs + "' is not a CRS GDAL understands");
   } else if (const OGRSpatialReference* own = ds.GetSpatialRef(); own && !own->IsEmpty()) {
-    srs = *own;
+    *srs = *own;
   } else {
     throw Error(path + ": the raster has no CRS; give one with --src-crs (e.g. EPSG:4326)");
   }
+  return srs;
+}
+
+std::string wkt2(const OGRSpatialReference& srs) {
   char* wkt = nullptr;
   const char* options[] = {"FORMAT=WKT2_2019", nullptr};
   srs.exportToWkt(&wkt, options);
@@ -86,9 +91,9 @@ RasterSource describe_source(const std::string& path, const std::vector<int>& ba
     throw Error(path + ": the raster has no georeferencing (geotransform)");
   if (!GDALInvGeoTransform(s.geotransform.data(), s.inverse.data()))
     throw Error(path + ": the geotransform is not invertible");
-  s.crs_wkt = crs_of(*ds, path, src_crs);
-  OGRSpatialReference srs(s.crs_wkt.c_str());
-  s.geographic = srs.IsGeographic();
+  s.crs = crs_of(*ds, path, src_crs);
+  s.crs_wkt = wkt2(*s.crs);
+  s.geographic = s.crs->IsGeographic();
   const auto& gt = s.geotransform;
   s.wraps = s.geographic && gt[2] == 0 && gt[4] == 0 &&
             std::abs(std::abs(gt[1]) * s.width - 360.0) < 1e-6 * std::abs(gt[1]);

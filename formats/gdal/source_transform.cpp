@@ -24,28 +24,31 @@ void apply(const std::array<double, 6>& gt, double& x, double& y) {
   y = v;
 }
 
-// Creating a transformation searches PROJ's database (~2 ms, a tenth of a small ingest's CPU
-// with one per thread and per planning step); cloning one does not. So one pair per CRS, made
-// once and cloned by every SourceTransform (each thread needs its own).
+// Creating a transformation searches PROJ's database (~2-4 ms, a tenth of a small ingest's CPU
+// with one per thread and per planning step); cloning or inverting one does not. So one pair per
+// CRS, made once and cloned by every SourceTransform (each thread needs its own).
 struct Transforms {
   std::unique_ptr<OGRCoordinateTransformation> forward, backward;
 };
-Transforms cloned_transforms(const std::string& crs_wkt) {
+Transforms cloned_transforms(const RasterSource& source) {
+  const std::string& crs_wkt = source.crs_wkt;
   static std::mutex mutex;
   // Never destroyed: destroying PROJ objects after PROJ's own teardown at exit would crash.
   static auto& prototypes = *new std::map<std::string, Transforms>();
   const std::lock_guard lock(mutex);
   auto it = prototypes.find(crs_wkt);
   if (it == prototypes.end()) {
-    OGRSpatialReference wgs84, src(crs_wkt.c_str());
+    OGRSpatialReference wgs84, src(*source.crs);
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    Transforms t{std::unique_ptr<OGRCoordinateTransformation>(
-                     OGRCreateCoordinateTransformation(&wgs84, &src)),
-                 std::unique_ptr<OGRCoordinateTransformation>(
-                     OGRCreateCoordinateTransformation(&src, &wgs84))};
-    if (!t.forward || !t.backward) return {};
+    // The forward one as the backward one's inverse: the same operation run the other way,
+    // without a second search of the database.
+    Transforms t;
+    t.backward.reset(OGRCreateCoordinateTransformation(&src, &wgs84));
+    if (!t.backward) return {};
+    t.forward.reset(t.backward->GetInverse());
+    if (!t.forward) return {};
     it = prototypes.emplace(crs_wkt, std::move(t)).first;
   }
   return {std::unique_ptr<OGRCoordinateTransformation>(it->second.forward->Clone()),
@@ -55,7 +58,7 @@ Transforms cloned_transforms(const std::string& crs_wkt) {
 }  // namespace
 
 SourceTransform::SourceTransform(const RasterSource& source) : source_(source) {
-  Transforms t = cloned_transforms(source.crs_wkt);
+  Transforms t = cloned_transforms(source);
   forward_ = std::move(t.forward);
   backward_ = std::move(t.backward);
   if (!forward_ || !backward_)

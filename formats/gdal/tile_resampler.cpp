@@ -55,9 +55,10 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
       if (std::isnan(values[i * size_t(channels) + size_t(k)])) return true;
     return false;
   };
-  const auto usable = [&](size_t i) {
-    return !std::isnan(x[i]) && !std::isnan(y[i]) && y[i] >= 0 && y[i] <= H &&
-           (s.info.wraps || (x[i] >= 0 && x[i] <= W));
+  // In the raster (NaN fails every comparison), as locals: the loop below writes x.
+  const bool wraps = s.info.wraps;
+  const auto usable = [W, H, wraps](double xi, double yi) {
+    return yi >= 0 && yi <= H && (wraps ? !std::isnan(xi) : xi >= 0 && xi <= W);
   };
   // Half-sizes of each sample's footprint in source pixels (area kernels only).
   std::vector<double> hx, hy;  // float precision (as the kernels have always seen them)
@@ -87,17 +88,20 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
   // The source window the samples to fill need (usable, some channel still missing); unusable
   // samples get x = NaN, which the kernels skip.
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  double* const xs = x.data();
+  const double* const ys = y.data();
   for (size_t i = 0; i < x.size(); ++i) {
-    if (!usable(i)) {
-      x[i] = std::numeric_limits<double>::quiet_NaN();
+    const double xi = xs[i], yi = ys[i];
+    if (!usable(xi, yi)) {
+      xs[i] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
     if (!missing(i)) continue;
     const double rx = area ? hx[i] + 1 : 2, ry = area ? hy[i] + 1 : 2;
-    x0 = std::min(x0, x[i] - rx);
-    x1 = std::max(x1, x[i] + rx);
-    y0 = std::min(y0, y[i] - ry);
-    y1 = std::max(y1, y[i] + ry);
+    x0 = std::min(x0, xi - rx);
+    x1 = std::max(x1, xi + rx);
+    y0 = std::min(y0, yi - ry);
+    y1 = std::max(y1, yi + ry);
   }
   if (!(x0 < x1)) return;
   if (!s.info.wraps) x0 = std::max(x0, 0.0), x1 = std::min(x1, W);

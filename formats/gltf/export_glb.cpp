@@ -1,5 +1,6 @@
 #include "gltf/export_glb.h"
 
+#include <atomic>
 #include <fstream>
 #include <map>
 
@@ -10,19 +11,16 @@
 namespace maquette {
 namespace {
 
-// The terrain of every cell, level by level (each level has its own lattice).
-std::vector<CellTerrain> build_cells(const TerrainSource& source, const LocalFrame& frame,
-                                     const std::vector<CellId>& cells) {
+// The cells level by level (each level has its own lattice).
+std::map<int, std::vector<CellId>> by_level(const std::vector<CellId>& cells) {
   if (cells.empty()) throw Error("no cells given: pass --cells");
-  std::map<int, std::vector<CellId>> by_level;
-  for (CellId c : cells) by_level[c.level()].push_back(c);
-  std::vector<CellTerrain> out;
-  for (const auto& [level, group] : by_level) {
-    auto built = build_level(source, frame, group);
-    for (auto& t : built) out.push_back(std::move(t));
-  }
-  if (out.empty()) throw Error("layer '" + source.dem.name + "' has no tiles in the given cells");
+  std::map<int, std::vector<CellId>> out;
+  for (CellId c : cells) out[c.level()].push_back(c);
   return out;
+}
+
+Error no_tiles(const TerrainSource& source) {
+  return Error("layer '" + source.dem.name + "' has no tiles in the given cells");
 }
 
 }  // namespace
@@ -37,7 +35,10 @@ void export_glb(const Store& store, const Grid& grid, const TerrainSettings& set
   const TerrainSource source(store, grid, settings);
   source.check_size(int64_t(cells.size()), source.texture ? int64_t(cells.size()) : 0);
   const LocalFrame frame = frame_for(grid, cells);
-  const std::vector<CellTerrain> terrain = build_cells(source, frame, cells);
+  std::vector<CellTerrain> terrain;  // one GLB of every cell: all meshes at once
+  for (const auto& [level, group] : by_level(cells))
+    for (auto& t : build_level(source, frame, group)) terrain.push_back(std::move(t));
+  if (terrain.empty()) throw no_tiles(source);
   std::vector<GlbPrimitive> prims;
   for (const CellTerrain& t : terrain)
     prims.push_back({&t.mesh, settings.draco ? &t.draco : nullptr, t.image ? &*t.image : nullptr,
@@ -51,8 +52,13 @@ void export_drc(const Store& store, const Grid& grid, const TerrainSettings& set
   source.check_size(int64_t(cells.size()), 0);
   prepare_output_dir(out_dir, settings.force);
   const LocalFrame frame = frame_for(grid, cells);
-  for (const CellTerrain& t : build_cells(source, frame, cells))
-    write_file(inside(out_dir, t.cell.ToText() + ".drc").string(), t.draco.data);
+  std::atomic<bool> any = false;
+  for (const auto& [level, group] : by_level(cells))
+    for_each_terrain(source, frame, group, [&](size_t, CellTerrain&& t) {
+      write_file(inside(out_dir, t.cell.ToText() + ".drc").string(), t.draco.data);
+      any = true;
+    });
+  if (!any) throw no_tiles(source);
   std::ofstream(inside(out_dir, "frame.json")) << frame_json(frame).dump(2) << "\n";
 }
 

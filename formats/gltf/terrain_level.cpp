@@ -1,8 +1,12 @@
 #include "gltf/terrain_level.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
+#include <numeric>
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
@@ -53,44 +57,114 @@ LocalFrame frame_for(const Grid& grid, const std::vector<CellId>& cells) {
   return LocalFrame({lon, (b.south + b.north) / 2});
 }
 
+namespace {
+
+// The mesh of `cell` in the export's frame, not yet quantized, with its imagery; nullopt without
+// a DEM tile or without any triangle.
+std::optional<CellTerrain> mesh_cell(const TerrainSource& source, const LocalFrame& frame,
+                                     CellId cell, double skirt) {
+  const auto dem = dem_with_halo(source.store, source.grid, source.dem, cell);
+  if (!dem) return std::nullopt;
+  CellTerrain t{
+      cell,
+      build_terrain_mesh(source.grid, cell, *dem, source.settings.decimation, frame, skirt),
+      {},
+      0,
+      std::nullopt};
+  if (t.mesh.indices.empty()) return std::nullopt;
+  if (source.texture)
+    if (const auto tex = texture_of(source.store, *source.texture, cell))
+      t.image = encode_texture(*tex);
+  return t;
+}
+
+// Snaps the mesh onto `lattice` and encodes it.
+void quantize(CellTerrain& t, const Lattice& lattice, const TerrainSettings& settings) {
+  const auto origin = lattice.origin(t.mesh.positions);
+  lattice.snap(t.mesh.positions, origin);
+  t.lattice_step = lattice.step;
+  if (settings.draco) t.draco = encode_draco(t.mesh, lattice, origin, settings.bits);
+}
+
+// A cheap guess of the extent of `cell`'s mesh: that of its boundary at height 0 (meshes differ
+// mostly by their cell's shape and its tilt in the frame).
+double guessed_extent(const Grid& grid, const LocalFrame& frame, CellId cell) {
+  std::vector<float> ring;
+  for (const LonLat& p : grid.boundary(cell, 2)) {
+    const Vec3 v = frame.to_gltf(p, 0);
+    ring.insert(ring.end(), {float(v[0]), float(v[1]), float(v[2])});
+  }
+  return extent(ring);
+}
+
+// Runs work(0), ..., work(n - 1) on every worker thread, each taking the next index when done:
+// one item per thread in flight, started in index order. The first exception stops the others
+// from taking more and is rethrown.
+void for_each_index(size_t n, const std::function<void(size_t)>& work) {
+  std::atomic<size_t> next = 0;
+  tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [&](int) {
+    for (size_t i = next++; i < n; i = next++) {
+      try {
+        work(i);
+      } catch (...) {
+        next = n;
+        throw;
+      }
+    }
+  });
+}
+
+}  // namespace
+
+void for_each_terrain(const TerrainSource& source, const LocalFrame& frame,
+                      const std::vector<CellId>& cells, const TerrainSink& sink) {
+  if (cells.empty()) return;
+  const double skirt = 2 * source.vertex_spacing(cells.front().level());
+  const int bits = source.settings.bits.position;
+  std::vector<double> extents(cells.size(), 0);  // of each mesh, 0 without terrain
+  std::vector<double> steps(cells.size(), 0);    // of the lattice each cell was quantized on
+  std::atomic<double> widest = 0;                // the widest mesh seen so far
+  // The widest-looking cells first, so that few cells are quantized on a lattice that turns out
+  // too fine.
+  std::vector<double> guesses(cells.size());
+  for (size_t i = 0; i < cells.size(); ++i)
+    guesses[i] = guessed_extent(source.grid, frame, cells[i]);
+  std::vector<size_t> order(cells.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::ranges::stable_sort(order, std::greater{}, [&](size_t i) { return guesses[i]; });
+  for_each_index(cells.size(), [&](size_t k) {
+    const size_t i = order[k];
+    auto t = mesh_cell(source, frame, cells[i], skirt);
+    if (!t) return;
+    extents[i] = extent(t->mesh.positions);
+    double w = widest.load();
+    while (w < extents[i] && !widest.compare_exchange_weak(w, extents[i])) {
+    }
+    const Lattice lattice = Lattice::for_extent(std::max(w, extents[i]), bits);
+    steps[i] = lattice.step;
+    quantize(*t, lattice, source.settings);
+    sink(i, std::move(*t));
+  });
+  // One lattice for the whole level, so shared edges decode identically.
+  const Lattice lattice = Lattice::for_extent(*std::ranges::max_element(extents), bits);
+  std::vector<size_t> stale;
+  for (size_t i = 0; i < cells.size(); ++i)
+    if (steps[i] != 0 && steps[i] != lattice.step) stale.push_back(i);
+  for_each_index(stale.size(), [&](size_t k) {
+    auto t = mesh_cell(source, frame, cells[stale[k]], skirt);  // as the first time
+    quantize(*t, lattice, source.settings);
+    sink(stale[k], std::move(*t));
+  });
+}
+
 std::vector<CellTerrain> build_level(const TerrainSource& source, const LocalFrame& frame,
                                      const std::vector<CellId>& cells) {
-  if (cells.empty()) return {};
-  const int level = cells.front().level();
-  const double skirt = 2 * source.vertex_spacing(level);
   std::vector<std::optional<CellTerrain>> built(cells.size());
-  tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    const auto dem = dem_with_halo(source.store, source.grid, source.dem, cells[i]);
-    if (!dem) return;
-    CellTerrain t{
-        cells[i],
-        build_terrain_mesh(source.grid, cells[i], *dem, source.settings.decimation, frame, skirt),
-        {},
-        0,
-        std::nullopt};
-    if (t.mesh.indices.empty()) return;
-    if (source.texture)
-      if (const auto tex = texture_of(source.store, *source.texture, cells[i]))
-        t.image = encode_texture(*tex);
-    built[i] = std::move(t);
-  });
+  for_each_terrain(source, frame, cells,
+                   [&](size_t i, CellTerrain&& t) { built[i] = std::move(t); });
   std::vector<CellTerrain> out;
-  double max_extent = 0;
   for (auto& t : built)
-    if (t) {
-      max_extent = std::max(max_extent, extent(t->mesh.positions));
-      out.push_back(std::move(*t));
-    }
-  // One lattice for the whole level, so shared edges decode identically.
-  const Lattice lattice = Lattice::for_extent(max_extent, source.settings.bits.position);
-  tbb::parallel_for(size_t(0), out.size(), [&](size_t i) {
-    CellTerrain& t = out[i];
-    const auto origin = lattice.origin(t.mesh.positions);
-    lattice.snap(t.mesh.positions, origin);
-    t.lattice_step = lattice.step;
-    if (source.settings.draco)
-      t.draco = encode_draco(t.mesh, lattice, origin, source.settings.bits);
-  });
+    if (t) out.push_back(std::move(*t));
   return out;
 }
 

@@ -2,6 +2,7 @@
 // onto the level's lattice, Draco-encoded, with their imagery.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,7 +53,20 @@ struct CellTerrain {
 // The export's frame: east-north-up at the centre of the cells' bounds.
 LocalFrame frame_for(const Grid& grid, const std::vector<CellId>& cells);
 
-// Terrain of `cells` (all at one level); cells without a DEM tile are left out.
+// Receives the terrain of cells[index]; called from several threads at once (for different
+// cells).
+using TerrainSink = std::function<void(size_t index, CellTerrain&& terrain)>;
+
+// Streams the terrain of `cells` (all at one level) to `sink`, one cell per worker thread in
+// memory at a time; cells without a DEM tile are left out. The level's lattice depends on the
+// widest mesh of the level, known only at the end: cells are built widest-looking first, each
+// quantized on the lattice of the widest mesh seen so far, and the few cells whose lattice turns
+// out too fine are built and handed to `sink` again, after all others. The last terrain `sink`
+// receives for a cell is the one on the level's lattice (the same whatever the threads).
+void for_each_terrain(const TerrainSource& source, const LocalFrame& frame,
+                      const std::vector<CellId>& cells, const TerrainSink& sink);
+
+// Terrain of `cells` (all at one level), in their order; cells without a DEM tile are left out.
 std::vector<CellTerrain> build_level(const TerrainSource& source, const LocalFrame& frame,
                                      const std::vector<CellId>& cells);
 

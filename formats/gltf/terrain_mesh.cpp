@@ -98,7 +98,11 @@ Vec3 normal_at(CornerField& f, int c, int r) {
 
 class MeshBuilder {
  public:
-  explicit MeshBuilder(TerrainMesh& m) : m_(m) {
+  MeshBuilder(TerrainMesh& m, size_t max_vertices, size_t max_triangles) : m_(m) {
+    m_.positions.reserve(3 * max_vertices);
+    m_.normals.reserve(3 * max_vertices);
+    m_.texcoords.reserve(2 * max_vertices);
+    m_.indices.reserve(3 * max_triangles);
     m_.min_height = std::numeric_limits<double>::max();
     m_.max_height = std::numeric_limits<double>::lowest();
   }
@@ -130,7 +134,10 @@ TerrainMesh build_terrain_mesh(const Grid& grid, CellId cell, const Tile<float>&
   const int n = dem.size(), k = decimation, m = n / k;
   CornerField field(grid, cell, dem, frame);
   TerrainMesh mesh;
-  MeshBuilder b(mesh);
+  // At most: the grid and a lowered copy of its edge loop; two triangles per grid square and
+  // per skirt quad.
+  MeshBuilder b(mesh, size_t(m + 1) * size_t(m + 1) + 4 * size_t(m),
+                2 * size_t(m) * size_t(m) + 8 * size_t(m));
 
   // Grid vertices (only corners with data, so that every vertex is referenced).
   std::vector<uint32_t> id(size_t(m + 1) * size_t(m + 1), kNone);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
@@ -36,6 +37,11 @@ std::array<double, 6> cell_region(const Grid& grid, const CellTerrain& t, double
           mesh.min_height - sag, mesh.max_height + sag};
 }
 
+// A tile's files are OUTDIR/<stem>.glb and OUTDIR/<stem>.<LAYER>.glb.
+std::string tile_stem(int level, CellId cell) {
+  return "tiles/" + std::to_string(level) + "/" + cell.ToText();
+}
+
 std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem) {
   const int hi = spec.max_level < 0 ? dem.level : spec.max_level;
   const int lo = spec.min_level < 0 ? std::max(0, hi - 4) : spec.min_level;
@@ -64,29 +70,34 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
   prepare_output_dir(out_dir, spec.terrain.force);
   const LocalFrame frame = frame_for(grid, cells[lo]);
 
-  // Level by level (one level's meshes in memory at a time), finest first so that a parent's
-  // region can grow to hold its children's.
+  // Level by level, finest first so that a parent's region can grow to hold its children's.
+  // Meshes stream to their files, one per worker thread in memory; each cell's region is kept.
   std::map<CellId, std::unique_ptr<TileNode>> nodes;
   for (int l = hi; l >= lo; --l) {
     const double spacing = source.vertex_spacing(l);
-    for (const CellTerrain& t : build_level(source, frame, cells[l])) {
-      const auto region = cell_region(grid, t, spacing);
-      auto& node = nodes[t.cell];  // may exist already, holding children without a parent tile
-      if (node)
-        extend_region(node->region, region);
-      else
-        node = std::make_unique<TileNode>(TileNode{t.cell, region, 0, {}, {}});
-      node->geometric_error = l < hi ? spacing : 0;
-      const std::string stem = "tiles/" + std::to_string(l) + "/" + t.cell.ToText();
-      node->contents = {stem + ".glb"};
+    std::vector<std::optional<std::array<double, 6>>> regions(cells[l].size());
+    for_each_terrain(source, frame, cells[l], [&](size_t i, CellTerrain&& t) {
+      regions[i] = cell_region(grid, t, spacing);
       const GlbPrimitive prim{&t.mesh, spec.terrain.draco ? &t.draco : nullptr,
                               t.image ? &*t.image : nullptr, t.cell.ToText()};
-      write_file(inside(out_dir, node->contents[0]).string(), make_glb({prim}));
+      write_file(inside(out_dir, tile_stem(l, t.cell) + ".glb").string(), make_glb({prim}));
+    });
+    for (size_t i = 0; i < cells[l].size(); ++i) {
+      if (!regions[i]) continue;
+      const CellId cell = cells[l][i];
+      auto& node = nodes[cell];  // may exist already, holding children without a parent tile
+      if (node)
+        extend_region(node->region, *regions[i]);
+      else
+        node = std::make_unique<TileNode>(TileNode{cell, *regions[i], 0, {}, {}});
+      node->geometric_error = l < hi ? spacing : 0;
+      const std::string stem = tile_stem(l, cell);
+      node->contents = {stem + ".glb"};
       for (const std::string& layer : spec.content) {
-        const auto content = get_content(store, layer, t.cell);
+        const auto content = get_content(store, layer, cell);
         if (!content || content->empty()) continue;
         const ContentGlb glb = content_glb(*content, frame, spec.terrain.bits, spec.terrain.draco,
-                                           layer + " " + t.cell.ToText());
+                                           layer + " " + cell.ToText());
         node->contents.push_back(stem + "." + layer + ".glb");
         write_file(inside(out_dir, node->contents.back()).string(), glb.bytes);
         extend_region(node->region, glb.region);

@@ -2,7 +2,11 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include <cstdlib>
+
 #include "core/error.h"
+#include "plugins/mpi_ranks.h"
+#include "runtime/plugin.h"
 
 namespace maquette {
 namespace {
@@ -14,9 +18,27 @@ class SingleProcess final : public Ranks {
   std::vector<std::string> all_gather(const std::string& bytes) override { return {bytes}; }
 };
 
+// Open MPI's mpirun, MPICH's and Intel's mpiexec (PMI), srun with PMI-2 or PMIx.
+bool started_by_mpi_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
 }  // namespace
 
 std::unique_ptr<Ranks> single_process() { return std::make_unique<SingleProcess>(); }
+
+std::unique_ptr<Ranks> launched_ranks() {
+  if (!started_by_mpi_launcher()) return single_process();
+#ifdef MAQUETTE_WITH_MPI
+  return std::unique_ptr<Ranks>(
+      plugin_function<decltype(maquette_mpi_ranks)>(kMpiPlugin, kMpiRanksEntry)());
+#else
+  // Each process would run the whole pipeline into the same store.
+  throw Error("started by an MPI launcher, but this maquette was built without MPI");
+#endif
+}
 
 std::vector<std::string> exchange(Ranks& ranks, const std::function<std::string()>& fn) {
   if (ranks.size() == 1) return {fn()};

@@ -25,8 +25,10 @@ std::unique_ptr<Ranks> single_process();
 
 // The ranks of the MPI job when this process was started by an MPI launcher (mpirun, mpiexec,
 // srun: it sets OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK), with MPI initialized until the
-// Ranks is destroyed; otherwise, and in a build without MPI, this process alone. A plain
-// `maquette run` thus never initializes MPI.
+// Ranks is destroyed; otherwise this process alone. MPI lives in a plug-in
+// (plugins/mpi_ranks.h) opened only then: a plain `maquette run` never loads nor initializes
+// MPI. Throws maquette::Error, naming the file looked for, when the plug-in cannot be loaded, and
+// when started by a launcher in a build without MPI.
 std::unique_ptr<Ranks> launched_ranks();
 
 // Runs `fn` on every rank, then gives every rank the payloads all ranks' `fn` returned, in rank

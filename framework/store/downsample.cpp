@@ -48,40 +48,55 @@ T mode(const T* v, int n) {
 }
 
 template <typename T>
+T load(const std::byte* p, size_t i) {
+  T v;
+  std::memcpy(&v, p + i * sizeof(T), sizeof(T));
+  return v;
+}
+
+// The overview's samples from the children's bytes, read and written through memcpy (the tiles
+// hold bytes): no copies of whole tiles, one allocation, one pass over each row pair.
+template <typename T, bool kContinuous>
 RawTile build(const std::array<const RawTile*, 4>& children, const LayerInfo& layer) {
   const int n = layer.tile_size, half = n / 2, channels = layer.channels;
   const double* nodata = layer.nodata ? &*layer.nodata : nullptr;
-  std::vector<T> out(size_t(n) * size_t(n) * size_t(channels), fill_value<T>(nodata));
-  std::vector<T> src(out.size());
+  const T fill = fill_value<T>(nodata);
+  const size_t row = size_t(n) * size_t(channels);  // samples per row
+  RawTile tile{layer.dtype, n, channels, std::vector<std::byte>(row * size_t(n) * sizeof(T))};
   for (int digit = 0; digit < 4; ++digit) {
-    if (!children[digit]) continue;
-    std::memcpy(src.data(), children[digit]->bytes.data(), src.size() * sizeof(T));
-    const int col0 = (digit & 1) * half, row0 = (digit >> 1) * half;
-    for (int r = 0; r < half; ++r)
-      for (int c = 0; c < half; ++c)
-        for (int k = 0; k < channels; ++k) {
-          T valid[4];
-          int count = 0;
-          for (int dr = 0; dr < 2; ++dr)
-            for (int dc = 0; dc < 2; ++dc) {
-              const T v = src[(size_t(2 * r + dr) * n + size_t(2 * c + dc)) * channels + k];
+    const std::byte* src = children[digit] ? children[digit]->bytes.data() : nullptr;
+    const size_t col0 = size_t((digit & 1) * half) * size_t(channels);
+    for (int r = 0; r < half; ++r) {
+      std::byte* out =
+          tile.bytes.data() + (size_t((digit >> 1) * half + r) * row + col0) * sizeof(T);
+      const size_t top = size_t(2 * r) * row, bottom = top + row;
+      for (size_t c = 0, i = 0; c < size_t(half); ++c)
+        for (size_t k = 0; k < size_t(channels); ++k, ++i) {
+          const size_t left = 2 * c * size_t(channels) + k, right = left + size_t(channels);
+          T value = fill;
+          if (src) {
+            const T block[4] = {load<T>(src, top + left), load<T>(src, top + right),
+                                load<T>(src, bottom + left), load<T>(src, bottom + right)};
+            T valid[4];
+            int count = 0;
+            for (const T v : block)
               if (!is_missing(v, nodata)) valid[count++] = v;
-            }
-          if (count == 0) continue;  // keeps the fill value
-          out[(size_t(row0 + r) * n + size_t(col0 + c)) * channels + k] =
-              layer.semantics == Semantics::Continuous ? mean(valid, count) : mode(valid, count);
+            if (count > 0) value = kContinuous ? mean(valid, count) : mode(valid, count);
+          }
+          std::memcpy(out + i * sizeof(T), &value, sizeof(T));
         }
+    }
   }
-  RawTile tile{layer.dtype, n, channels, std::vector<std::byte>(out.size() * sizeof(T))};
-  std::memcpy(tile.bytes.data(), out.data(), tile.bytes.size());
   return tile;
 }
 
 }  // namespace
 
 RawTile build_overview(const std::array<const RawTile*, 4>& children, const LayerInfo& layer) {
-  return visit_dtype(layer.dtype,
-                     [&]<typename T>(std::type_identity<T>) { return build<T>(children, layer); });
+  return visit_dtype(layer.dtype, [&]<typename T>(std::type_identity<T>) {
+    return layer.semantics == Semantics::Continuous ? build<T, true>(children, layer)
+                                                    : build<T, false>(children, layer);
+  });
 }
 
 }  // namespace maquette

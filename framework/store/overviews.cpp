@@ -15,6 +15,7 @@ namespace maquette {
 namespace {
 
 constexpr int kCellsPerTransaction = 64;  // bounds memory and lock time
+constexpr size_t kMaxBuiltKept = 64;      // overview tiles kept in memory for the next level
 
 struct ChildBlobs {
   std::array<std::optional<std::vector<std::byte>>, 4> blobs;  // by child digit
@@ -42,7 +43,8 @@ ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell
 
 }  // namespace
 
-bool Store::Impl::rebuild_stale(const LayerEntry& e, int level) {
+bool Store::Impl::rebuild_stale(const LayerEntry& e, int level, const BuiltOverviews& below,
+                                BuiltOverviews& built) {
   bool any = false;
   write([&](sqlite::Connection& c) {
     std::vector<CellId> cells;
@@ -59,6 +61,7 @@ bool Store::Impl::rebuild_stale(const LayerEntry& e, int level) {
     // Decoding, reducing and encoding dominate: done in parallel, without SQLite. Isolated, so
     // that a worker waiting here never picks up an outer task that would take the write lock.
     std::vector<std::vector<std::byte>> blobs(cells.size());
+    std::vector<RawTile> overviews(cells.size());
     const Codec codec = parse_codec(e.info.codec);
     tbb::this_task_arena::isolate([&] {
       tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
@@ -66,14 +69,25 @@ bool Store::Impl::rebuild_stale(const LayerEntry& e, int level) {
         std::array<const RawTile*, 4> ptrs{};
         for (int k = 0; k < 4; ++k)
           if (const auto& blob = children[i].blobs[k]) {
-            tiles[k] = decode(*blob, e, cells[i].child(k));
+            const CellId child = cells[i].child(k);
+            // Built at the level below in this call and stored as is: no need to decode it.
+            if (const auto it = below.find(child.id());
+                it != below.end() && it->second.first == *blob) {
+              ptrs[k] = &it->second.second;
+              continue;
+            }
+            tiles[k] = decode(*blob, e, child);
             ptrs[k] = &*tiles[k];
           }
-        blobs[i] = encode_tile(build_overview(ptrs, e.info), codec);
+        overviews[i] = build_overview(ptrs, e.info);
+        blobs[i] = encode_tile(overviews[i], codec);
       });
     });
 
     for (size_t i = 0; i < cells.size(); ++i) write_overview(c, e.id, cells[i], blobs[i]);
+    for (size_t i = 0; i < cells.size() && built.size() < kMaxBuiltKept; ++i)
+      built.insert_or_assign(cells[i].id(),
+                             std::make_pair(std::move(blobs[i]), std::move(overviews[i])));
   });
   return any;
 }
@@ -114,9 +128,13 @@ void Store::update_overviews(const std::string& layer, int min_level) {
   if (e.info.tile_size < 2) throw Error(where + "tiles of 1x1 samples cannot be halved");
   // The tiles written before this call are on their way to the disk while overviews are built.
   if (d.checkpointer) d.checkpointer->request();
-  for (int level = e.info.level - 1; level >= min_level; --level)
-    while (d.rebuild_stale(e, level)) {
+  Impl::BuiltOverviews below, built;
+  for (int level = e.info.level - 1; level >= min_level; --level) {
+    while (d.rebuild_stale(e, level, below, built)) {
     }
+    below = std::move(built);
+    built.clear();
+  }
 }
 
 std::optional<RawTile> Store::get_overview(const std::string& layer, CellId cell) const {

@@ -88,10 +88,6 @@ int32_t pragma_int(sqlite::Connection& conn, const char* sql) {
   return q.step() ? int32_t(q.int64(0)) : 0;
 }
 
-void set_version(sqlite::Connection& conn) {
-  conn.exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str());
-}
-
 // Brings a version 1 store (no features tables) to the current version.
 void migrate(sqlite::Connection& conn) {
   conn.transaction([&] {
@@ -107,6 +103,10 @@ void migrate(sqlite::Connection& conn) {
 }
 
 }  // namespace
+
+void set_version(sqlite::Connection& conn) {
+  conn.exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str());
+}
 
 void configure_connection(sqlite::Connection& conn, bool writer) {
   conn.exec("PRAGMA mmap_size = 1073741824");

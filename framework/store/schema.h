@@ -13,6 +13,9 @@ constexpr int32_t kStoreApplicationId = 0x4D515354;  // "MQST", PRAGMA applicati
 // migrated when opened for writing.
 constexpr int32_t kStoreSchemaVersion = 2;
 
+// Writes kStoreSchemaVersion as the database's user_version.
+void set_version(sqlite::Connection& conn);
+
 // Sets the per-connection pragmas (memory map; synchronous=NORMAL for writers). Waiting for
 // another connection's lock is the busy handler's job (sqlite.cpp: polls for up to 60 s).
 void configure_connection(sqlite::Connection& conn, bool writer);

@@ -125,6 +125,10 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
           std::make_unique<sqlite::Connection>(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
       configure_connection(*impl->writer, true);
       create_schema(*impl->writer);  // for an existing store: checks, migrates, sets WAL
+      // A new store's first commit writes the WAL's header and syncs it and the directory (~2 ms,
+      // 10-30 ms on a busy disk): a write of the same schema version does it here instead, where
+      // the caller may overlap the opening with other work (ingest plans meanwhile).
+      if (!exists) set_version(*impl->writer);
       impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path);
     }
   } catch (const sqlite::Failure& e) {

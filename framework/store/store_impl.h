@@ -70,9 +70,15 @@ struct Store::Impl {
     writer->transaction([&] { f(*writer); });
   }
 
-  // Rebuilds up to 64 stale overview tiles at `level` in one transaction; false when none
-  // was stale (overviews.cpp).
-  bool rebuild_stale(const LayerEntry& layer, int level);
+  // Overview tiles built by update_overviews at one level, with their blobs, by cell id: the
+  // next level up takes a child from here instead of decoding it when the stored blob is this
+  // one (overviews.cpp).
+  using BuiltOverviews = std::map<uint64_t, std::pair<std::vector<std::byte>, RawTile>>;
+  // Rebuilds up to 64 stale overview tiles at `level` in one transaction, their children taken
+  // from `below` where it holds them; adds what it built to `built` (up to 64 tiles); false when
+  // none was stale (overviews.cpp).
+  bool rebuild_stale(const LayerEntry& layer, int level, const BuiltOverviews& below,
+                     BuiltOverviews& built);
 
   // Decodes a stored blob and checks it against the layer; throws naming layer and cell.
   RawTile decode(std::span<const std::byte> blob, const LayerEntry& layer, CellId cell) const;

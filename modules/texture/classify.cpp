@@ -2,8 +2,10 @@
 // the snow rule (snow below a minimal altitude is cloud, paper 6) and exclusions by land cover or
 // by the polygons of a features layer.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "core/error.h"
 #include "feature_mask.h"
@@ -30,7 +32,11 @@ OperatorSpec classify_spec() {
   s.kind = OperatorKind::Cell;
   s.inputs = {{"rgb", "RGB image, 0..255", false},
               {"dem", "elevation in metres (snow rule)", true},
-              {"landcover", "land-cover classes (exclusion)", true}};
+              {"landcover", "land-cover classes (exclusion)", true},
+              {"hillshade",
+               "terrain.derive's hillshade at the image's sun (1 + 254 cos i; illumination "
+               "correction)",
+               true}};
   s.outputs = {{"classes", "surface type (255: none or excluded)", DType::U8, 1,
                 Semantics::Categorical, "", 255.0}};
   const json box = {{"type", "object"},
@@ -78,6 +84,13 @@ OperatorSpec classify_spec() {
         {"boxes", {{"type", "array"}, {"items", box}, {"default", json::array()}}},
         {"polygons", {{"type", "array"}, {"items", polygon}, {"default", json::array()}}},
         {"centres", {{"type", "array"}, {"items", centre}, {"default", json::array()}}},
+        {"sun_altitude",
+         number_param(0, 90, 0,
+                      "degrees: the image's sun altitude; > 0 scales each pixel's colour by "
+                      "sin(altitude) / max(cos i, min_incidence_cos), i the incidence angle "
+                      "from inputs.hillshade (cosine correction; 0: none)")},
+        {"min_incidence_cos",
+         number_param(0.01, 1, 0.2, "floor of cos i in the illumination correction")},
         {"snow_class", {{"type", "integer"}, {"minimum", -1}, {"maximum", 254}, {"default", -1}}},
         {"snow_min_altitude_m", {{"type", "number"}, {"default", 0}}},
         {"exclude_landcover",
@@ -128,6 +141,21 @@ std::vector<int> majority(const std::vector<int>& cls, int n, int radius) {
   return out;
 }
 
+// Colour of a pixel lit at incidence cos i (terrain.derive's hillshade h = 1 + 254 cos i) as
+// it would look on flat ground, lit at `flat_cos` (the sine of the sun's altitude; the cosine
+// correction: brightness proportional to cos i), scaled by at most what keeps every channel
+// <= 255, so hue and saturation are unchanged. Unknown illumination (NaN) leaves it as it is.
+std::array<float, 3> illumination_corrected(std::array<float, 3> rgb, float hillshade,
+                                            double flat_cos, double min_cos) {
+  if (std::isnan(hillshade)) return rgb;
+  const double cos_i = std::max((double(hillshade) - 1) / 254, min_cos);
+  const double top = std::max({rgb[0], rgb[1], rgb[2]});
+  double f = flat_cos / cos_i;
+  if (top > 0) f = std::min(f, 255 / top);
+  for (float& v : rgb) v = float(v * f);
+  return rgb;
+}
+
 // The classes of params, their errors prefixed with the operator like its other errors.
 HsClassifier classifier_of(const json& params) {
   try {
@@ -165,12 +193,20 @@ class Classify : public CellOperator {
     if (!excluded.empty() && !lc)
       throw Error("texture.classify: params.exclude_landcover needs inputs.landcover");
     if (snow >= 0 && !dem) throw Error("texture.classify: params.snow_class needs inputs.dem");
+    const double sun_altitude = p.at("sun_altitude").get<double>();
+    const double min_cos = p.at("min_incidence_cos").get<double>();
+    const double flat_cos = std::sin(sun_altitude * std::numbers::pi / 180);
+    const Tile<float>* shade =
+        data.inputs.count("hillshade") ? &data.inputs.at("hillshade") : nullptr;
+    if (sun_altitude > 0 && !shade)
+      throw Error("texture.classify: params.sun_altitude needs inputs.hillshade");
     // Classes of the tile and a ring of `radius` pixels (-1: none), then the majority filter.
     const int radius = p.at("majority_radius").get<int>(), n = ctx.tile_size;
     const int side = n + 2 * radius;
-    if (rgb.halo() < radius)
-      throw Error("texture.classify: inputs.rgb: halo " + std::to_string(rgb.halo()) +
-                  " is narrower than params.majority_radius " + std::to_string(radius));
+    for (const auto& [port, tile] : data.inputs)  // every input is read in the ring
+      if (tile.halo() < radius)
+        throw Error("texture.classify: inputs." + port + ": halo " + std::to_string(tile.halo()) +
+                    " is narrower than params.majority_radius " + std::to_string(radius));
     std::vector<uint8_t> in_features;  // side x side when params.exclude_features is given
     if (const std::string layer = p.at("exclude_features"); !layer.empty()) {
       const std::string where = "texture.classify: params.exclude_features";
@@ -181,14 +217,16 @@ class Classify : public CellOperator {
     for (int r = -radius; r < n + radius; ++r)
       for (int c = -radius; c < n + radius; ++c) {
         const size_t i = size_t(r + radius) * size_t(side) + size_t(c + radius);
-        const float R = rgb.at(c, r, 0), G = rgb.at(c, r, 1), B = rgb.at(c, r, 2);
-        if (std::isnan(R) || std::isnan(G) || std::isnan(B)) continue;
+        std::array<float, 3> colour = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
+        if (std::isnan(colour[0]) || std::isnan(colour[1]) || std::isnan(colour[2])) continue;
         if (!in_features.empty() && in_features[i]) continue;
         if (!excluded.empty() &&
             (std::isnan(lc->at(c, r)) ||
              std::find(excluded.begin(), excluded.end(), int(lc->at(c, r))) != excluded.end()))
           continue;
-        const int k = classifier.classify(R, G, B);
+        if (sun_altitude > 0)
+          colour = illumination_corrected(colour, shade->at(c, r), flat_cos, min_cos);
+        const int k = classifier.classify(colour[0], colour[1], colour[2]);
         if (k < 0) continue;
         if (k == snow && !(dem->at(c, r) >= snow_min)) continue;  // cloud, or unknown height
         cls[i] = k;

@@ -32,16 +32,19 @@ Taps taps(int t, int refine) {
 
 }  // namespace
 
-Plane upsample(const Tile<float>& tile, int refine, int ring) {
+// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
+__attribute__((target_clones("avx2", "default"))) void upsample(const Tile<float>& tile, int refine,
+                                                                int ring, Plane& out) {
   const int m = tile.size() << refine;
   if (tile.halo() < kInputHalo)
     throw Error("texture: input tiles need a halo of " + std::to_string(kInputHalo) + " pixels");
-  Plane out(m, ring);
+  out.reshape(m, ring);
   std::vector<Taps> t(size_t(out.side()));
   for (int i = 0; i < out.side(); ++i) t[size_t(i)] = taps(i - ring, refine);
   // Separable: rows of the input first (at target columns), then columns.
   const int rows0 = t.front().first, rows1 = t.back().first + 4;
-  std::vector<double> horizontal(size_t(rows1 - rows0) * size_t(out.side()));
+  thread_local std::vector<double> horizontal;  // reused, every value written
+  horizontal.resize(size_t(rows1 - rows0) * size_t(out.side()));
   for (int r = rows0; r < rows1; ++r)
     for (int c = 0; c < out.side(); ++c) {
       const Taps& tc = t[size_t(c)];
@@ -59,18 +62,35 @@ Plane upsample(const Tile<float>& tile, int refine, int ring) {
       out.v[size_t(r) * size_t(out.side()) + size_t(c)] = float(s);  // NaN taps propagate
     }
   }
+}
+
+Plane upsample(const Tile<float>& tile, int refine, int ring) {
+  Plane out;
+  upsample(tile, refine, ring, out);
   return out;
 }
 
-Plane slope_degrees(const Plane& h, double pixel_m) {
-  Plane s(h.size, h.ring - 1);
+// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
+__attribute__((target_clones("avx2", "default"))) void slope_degrees(const Plane& h, double pixel_m,
+                                                                     Plane& s) {
+  s.reshape(h.size, h.ring - 1);
   const double k = 1 / (2 * pixel_m), deg = 180 / M_PI;
-  for (int r = -s.ring; r < s.size + s.ring; ++r)
-    for (int c = -s.ring; c < s.size + s.ring; ++c) {
-      const double gx = (h.at(c + 1, r) - h.at(c - 1, r)) * k;
-      const double gy = (h.at(c, r + 1) - h.at(c, r - 1)) * k;
-      s.at(c, r) = float(std::atan(std::sqrt(gx * gx + gy * gy)) * deg);  // not hypot: slow
+  const size_t side = size_t(s.side()), h_side = size_t(h.side());
+  for (size_t r = 0; r < side; ++r) {
+    const float* mid = &h.v[(r + 1) * h_side + 1];
+    const float *up = mid - h_side, *down = mid + h_side, *left = mid - 1, *right = mid + 1;
+    float* out = &s.v[r * side];
+    for (size_t c = 0; c < side; ++c) {
+      const double gx = (right[c] - left[c]) * k;
+      const double gy = (down[c] - up[c]) * k;
+      out[c] = float(atan_nonnegative(std::sqrt(gx * gx + gy * gy)) * deg);  // not hypot: slow
     }
+  }
+}
+
+Plane slope_degrees(const Plane& h, double pixel_m) {
+  Plane s;
+  slope_degrees(h, pixel_m, s);
   return s;
 }
 
@@ -98,19 +118,6 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
           kAuthalicRadius * std::cos(lat) * std::cos(lon),
           kAuthalicRadius * std::cos(lat) * std::sin(lon), kAuthalicRadius * std::sin(lat)};
     }
-}
-
-Vec3d PixelPositions::at(int col, int row) const {
-  const int64_t gc = gc0_ + col, gr = gr0_ + row, mask = (int64_t(1) << shift_) - 1;
-  const double step = double(mask + 1), fx = double(gc & mask) / step,
-               fy = double(gr & mask) / step;
-  const Vec3d* n =
-      &node_[size_t((gr >> shift_) - nr0_) * size_t(nodes_) + size_t((gc >> shift_) - nc0_)];
-  const Vec3d &n00 = n[0], &n10 = n[1], &n01 = n[nodes_], &n11 = n[nodes_ + 1];
-  Vec3d p;
-  for (size_t k = 0; k < 3; ++k)
-    p[k] = (1 - fy) * ((1 - fx) * n00[k] + fx * n10[k]) + fy * ((1 - fx) * n01[k] + fx * n11[k]);
-  return p;
 }
 
 }  // namespace maquette::texture

@@ -42,7 +42,22 @@ Table odds_function(const std::array<uint64_t, kBins>& hist,
       top = std::max(top, o[i]);
     }
   if (top == 0) return t;
-  for (size_t i = 0; i < size_t(kBins); ++i) t[i] = float(o[i] / top);
+  // Bins without pixels take the odds of the nearest bin with pixels (the lower on a tie), so
+  // values outside those fitted extrapolate the nearest behaviour seen instead of giving every
+  // class 0, which hands them to the root's class.
+  std::array<double, kBins> filled = o;
+  for (int i = 0; i < kBins; ++i) {
+    if (all[size_t(i)] > 0) continue;
+    for (int d = 1; d < kBins; ++d)
+      if (i - d >= 0 && all[size_t(i - d)] > 0) {
+        filled[size_t(i)] = o[size_t(i - d)];
+        break;
+      } else if (i + d < kBins && all[size_t(i + d)] > 0) {
+        filled[size_t(i)] = o[size_t(i + d)];
+        break;
+      }
+  }
+  for (size_t i = 0; i < size_t(kBins); ++i) t[i] = float(filled[i] / top);
   return t;
 }
 

@@ -3,9 +3,11 @@
 // pixel (the octaves of the same S summed on one lattice) and interpolated by Catmull-Rom splines
 // (bicubic, in float) in between, S the largest power of two <= 8 that samples the octave's
 // wavelength often enough for its error, weighted by its share of the amplitude, to stay under
-// 0.02 (e.g. 5.7, 4 and 2.8 samples per wavelength for 3 octaves of persistence 0.5): within
-// 0.06 of exact evaluation (measured: 0.02, lattice_noise_test.cpp).
-// Since the lattice is aligned to global face pixel coordinates, every tile computes the same
+// 0.02 (e.g. 5.7, 4 and 2.8 samples per wavelength for 3 octaves of persistence 0.5). The
+// lattices of S >= 2 are then summed on the finest of them: the coarser ones interpolated at its
+// nodes, so a pixel interpolates one lattice (two if some octave needs S = 1, evaluated at every
+// pixel). Within 0.06 of exact evaluation (measured: lattice_noise_test.cpp).
+// Since the lattices are aligned to global face pixel coordinates, every tile computes the same
 // value for a pixel, and faces join (a face is a multiple of 8 pixels wide). Octaves shorter than
 // 2 pixels contribute their mean, 0 (anti-aliasing), but keep their share of the normalisation.
 // Lattice nodes are evaluated lazily, once, when a row needs them (the missing ones of a node row
@@ -14,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "field.h"
@@ -21,7 +24,7 @@
 
 namespace maquette::texture {
 
-inline constexpr int kNoiseLatticeReach = 16;  // pixels beyond a pixel its lattice nodes lie
+inline constexpr int kNoiseLatticeReach = 24;  // pixels beyond a pixel its lattice nodes lie
 
 // Where the pixels of a tile's planes lie: plane pixel (c, r), -ring <= c, r < size + ring, is
 // global face pixel (col0 + c, row0 + r), and its position is position->at(c, r) (which covers
@@ -41,17 +44,21 @@ class LatticeNoise {
   void row(int r, int c0, int c1, float* out);
 
  private:
-  static constexpr int kMaxNoiseShift = 3;  // spacing <= 8 pixels: nodes up to 2 x 8 away
-  static_assert(2 << kMaxNoiseShift == kNoiseLatticeReach);
+  // Spacing <= 8 pixels; nodes up to 3 x 8 pixels away (those of a coarser lattice, interpolated
+  // at the finest lattice's outermost nodes).
+  static constexpr int kMaxNoiseShift = 3;
+  static_assert(3 << kMaxNoiseShift == kNoiseLatticeReach);
 
-  // The octaves sharing a spacing, their amplitude-weighted sum cached on one lattice (so a pixel
-  // interpolates once per spacing, not once per octave).
+  // The octaves sharing a spacing, their amplitude-weighted sum cached on one lattice.
   struct Lattice {
     std::vector<int> octaves;
     int shift = 0;                         // spacing 2^shift pixels
     int64_t node_col0 = 0, node_row0 = 0;  // global node coordinates of nodes[0]
     int cols = 0, rows = 0;
-    std::vector<float> nodes;    // NaN until evaluated
+    // Allocated uninitialised; a node row is filled with NaN (not evaluated) when first used, so
+    // the rows a layer never reaches cost nothing.
+    std::unique_ptr<float[]> nodes;
+    std::vector<uint8_t> row_started;
     std::vector<float> weights;  // 4 per offset in 0 .. spacing - 1
   };
 
@@ -59,13 +66,21 @@ class LatticeNoise {
 
   // The weighted sum of the lattice's octaves at n <= kBatch positions.
   void sum(const Lattice& l, const Vec3d* position, int n, float* out) const;
-  // Node row j, its nodes i0 .. i1 evaluated.
+  // Node row j, its nodes i0 .. i1 evaluated (those of the finest lattice with the coarser
+  // lattices interpolated at them added).
   const float* node_row(Lattice& l, int j, int i0, int i1);
+  // Adds the lattice interpolated at plane pixels c0, c0 + step, .. <= c1 of plane row r to
+  // out[0], out[1], ..; step is 1 or a spacing finer than the lattice's, c0 a multiple of it.
+  void add_interpolated(Lattice& l, int r, int c0, int c1, int step, float* out);
 
   const NoiseField& field_;
   NoiseGeometry g_;
-  std::vector<Lattice> lattices_;  // by increasing spacing
-  std::vector<float> sum_, vertical_;
+  // By increasing spacing. Those before `merged_` make the pixels' values: the one of spacing 1
+  // (if any, evaluated at every pixel) and the finest of spacing >= 2, interpolated; those from
+  // `merged_` on are interpolated at the nodes of the finest instead (node_row).
+  std::vector<Lattice> lattices_;
+  size_t merged_ = 0;
+  std::vector<float> sum_, vertical_, horizontal_, coarser_;
 };
 
 }  // namespace maquette::texture

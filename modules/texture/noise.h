@@ -1,23 +1,21 @@
 // Noise with codomain [-1, 1] as a function of the position on the globe (metres, earth-centred
 // on the authalic sphere), so tiles and faces join without seams and every level sees the same
-// field. Deterministic: a seeded permutation table (integer hashing), the same bits on every run
-// and thread.
+// field. Deterministic: gradients picked by a seeded integer hash of the lattice node
+// (gradient_noise.h), the same bits on every run, thread and processor.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "gradient_noise.h"
 #include "model.h"
 
 namespace maquette::texture {
 
-using Vec3d = std::array<double, 3>;
-
-// Fractal gradient noise (improved Perlin noise over a 4096-periodic permutation table seeded
-// by NoiseParams::seed): `octaves` octaves, each of half the wavelength and `persistence` times
-// the amplitude of the previous, normalised by the sum of amplitudes and clamped to [-1, 1].
-// The period is 4096 wavelengths of the coarsest octave (820 km at 200 m).
+// Fractal gradient noise (improved Perlin noise, each octave's lattice hashed with its own seed
+// drawn from NoiseParams::seed): `octaves` octaves, each of half the wavelength and
+// `persistence` times the amplitude of the previous, normalised by the sum of amplitudes and
+// clamped to [-1, 1]. No period on the globe (2^32 wavelengths).
 class NoiseField {
  public:
   explicit NoiseField(const NoiseParams& params);
@@ -35,8 +33,8 @@ class NoiseField {
 
  private:
   std::vector<double> scale_, amplitude_;  // per octave: 1 / wavelength, weight
+  std::vector<uint32_t> seed_;             // per octave: the hash's seed
   double norm_ = 0;
-  std::vector<uint16_t> perm_;  // 2 x 4096
 };
 
 }  // namespace maquette::texture

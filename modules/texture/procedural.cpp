@@ -55,18 +55,19 @@ class Procedural : public CellOperator {
     std::map<std::string, const Tile<float>*> rasters;
     for (const std::string& q : kRasterPorts)
       if (data.inputs.count(q)) rasters[q] = &data.inputs.at(q);
-    const Rendered r = render_tile(*model, *ctx.grid, ctx.cell, ctx.tile_size, ctx.refine,
-                                   data.input("dem"), rasters, spec_.name);
-    const int n = r.size;
-    const auto put = [&](const char* port, const std::vector<float>& v, int channels) {
-      if (!data.wants(port)) return;
-      Tile<float>& t = data.output(port) = Tile<float>(n, channels);
-      std::copy(v.begin(), v.end(), t.data().begin());
+    // Straight into the output tiles (those of the right shape reused: render_tile writes every
+    // pixel).
+    const int n = ctx.tile_size << ctx.refine;
+    const auto target = [&](const char* port, int channels) -> float* {
+      if (!data.wants(port)) return nullptr;
+      Tile<float>& t = data.output(port);
+      if (t.size() != n || t.channels() != channels || t.halo() != 0) t = Tile<float>(n, channels);
+      return t.data().data();
     };
-    put("imagery", r.rgb, 3);
-    put("height", r.height, 1);
-    put("normal", r.normal, 3);
-    put("classes", r.classes, 1);
+    render_tile(
+        *model, *ctx.grid, ctx.cell, ctx.tile_size, ctx.refine, data.input("dem"), rasters,
+        spec_.name,
+        {target("imagery", 3), target("height", 1), target("normal", 3), target("classes", 1)});
   }
 
  private:

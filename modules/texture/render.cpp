@@ -1,5 +1,7 @@
 #include "render.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "field.h"
 #include "lattice_noise.h"
@@ -7,19 +9,27 @@
 
 namespace maquette::texture {
 
-Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size, int refine,
-                     const Tile<float>& dem,
-                     const std::map<std::string, const Tile<float>*>& rasters,
-                     const std::string& context) {
+void render_tile(const Model& model, const Grid& grid, CellId cell, int size, int refine,
+                 const Tile<float>& dem, const std::map<std::string, const Tile<float>*>& rasters,
+                 const std::string& context, const RenderTargets& out) {
   const int m = size << refine;
   const double pixel_m = grid.level_info(cell.level(), m).pixel_m;
-  const Plane wide = upsample(dem, refine, 2);
+  // The planes, a few MB each, are the thread's from tile to tile: every value is overwritten,
+  // so they are neither zero-filled nor page-faulted afresh.
+  struct Buffers {
+    Plane wide, height, slope, displaced;
+    std::vector<Plane> quantities;
+  };
+  thread_local Buffers b;
+  upsample(dem, refine, 2, b.wide);
   SurfaceInputs in;
-  in.slope = slope_degrees(wide, pixel_m);
-  in.height = Plane(m, 1);
-  for (int r = -1; r <= m; ++r)
-    for (int c = -1; c <= m; ++c) in.height.at(c, r) = wide.at(c, r);
-  std::vector<Plane> planes(model.quantities.size());
+  in.slope = std::move(b.slope);  // lent to `in`, given back below
+  in.height = std::move(b.height);
+  slope_degrees(b.wide, pixel_m, in.slope);
+  in.height.reshape(m, 1);
+  for (int r = -1; r <= m; ++r) std::copy_n(&b.wide.at(-1, r), m + 2, &in.height.at(-1, r));
+  std::vector<Plane>& planes = b.quantities;
+  planes.resize(model.quantities.size());
   in.quantities.assign(model.quantities.size(), nullptr);
   for (size_t q = 0; q < model.quantities.size(); ++q) {
     const std::string& name = model.quantities[q].name;
@@ -28,7 +38,7 @@ Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size
     if (it == rasters.end() || !it->second)
       throw Error(context + ": model quantity '" + name + "' has no input raster (map inputs." +
                   name + ")");
-    planes[q] = upsample(*it->second, refine, 1);
+    upsample(*it->second, refine, 1, planes[q]);
     in.quantities[q] = &planes[q];
   }
   const PixelPositions position(grid, cell, size, refine, in.height.ring + kNoiseLatticeReach);
@@ -36,24 +46,29 @@ Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size
   in.col0 = global_col(cell, m, 0);
   in.row0 = global_row(cell, m, 0);
   in.pixel_m = pixel_m;
-  const Surface s = evaluate(model, in);
+  // The displaced height with a ring for the normals; colour and classes straight to `out`.
+  Plane& height = b.displaced;
+  height.reshape(m, 1);
+  evaluate(model, in, {0, out.rgb, out.classes, height.v.data()});
+  if (out.normal) normals(height, pixel_m, out.normal);
+  if (out.height)
+    for (int r = 0; r < m; ++r)
+      std::copy_n(&height.at(0, r), m, out.height + size_t(r) * size_t(m));
+  b.slope = std::move(in.slope);
+  b.height = std::move(in.height);
+}
 
-  // The interior, a row at a time (no zero-filled buffers to overwrite).
-  Rendered out{m, {}, {}, normals(s.height, pixel_m), {}};
+Rendered render_tile(const Model& model, const Grid& grid, CellId cell, int size, int refine,
+                     const Tile<float>& dem,
+                     const std::map<std::string, const Tile<float>*>& rasters,
+                     const std::string& context) {
+  const int m = size << refine;
   const size_t n = size_t(m) * size_t(m);
-  out.rgb.reserve(3 * n);
-  out.height.reserve(n);
-  out.classes.reserve(n);
-  for (int r = 0; r < m; ++r) {
-    const size_t i = size_t(r + 1) * size_t(m + 2) + 1;
-    out.rgb.insert(out.rgb.end(), s.rgb.begin() + ptrdiff_t(3 * i),
-                   s.rgb.begin() + ptrdiff_t(3 * (i + size_t(m))));
-    out.height.insert(out.height.end(), s.height.v.begin() + ptrdiff_t(i),
-                      s.height.v.begin() + ptrdiff_t(i + size_t(m)));
-    out.classes.insert(out.classes.end(), s.dominant_class.v.begin() + ptrdiff_t(i),
-                       s.dominant_class.v.begin() + ptrdiff_t(i + size_t(m)));
-  }
-  return out;
+  Rendered r{m, std::vector<float>(3 * n), std::vector<float>(n), std::vector<float>(3 * n),
+             std::vector<float>(n)};
+  render_tile(model, grid, cell, size, refine, dem, rasters, context,
+              {r.rgb.data(), r.height.data(), r.normal.data(), r.classes.data()});
+  return r;
 }
 
 }  // namespace maquette::texture

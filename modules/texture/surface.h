@@ -3,9 +3,12 @@
 // layer's children, while colour and height go on to the next layer evaluated:
 //   RGB = (1 - C) RGB_in + C RGB_layer,   H' = H + C B N.
 // The displacement map D of Eq. 2 is the layer's own noise N. Evaluated a row at a time, layer by
-// layer over the pixels each layer can still cover (tables and noise only there).
+// layer over the blocks of 8 pixels each layer can still cover (tables and noise only there;
+// layer_kernels.h).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -40,20 +43,37 @@ struct Surface {
 // by the layers), and the lookup there. A NaN has coordinate kBins, where a padded table holds
 // zeros: the lookup needs no branch.
 using PaddedTable = std::array<float, kBins + 2>;  // a table and two zeros
-float table_coordinate(float unit);
+inline float table_coordinate(float unit) {
+  return std::isnan(unit) ? float(kBins) : std::clamp(unit * kBins - 0.5f, 0.0f, float(kBins - 1));
+}
 PaddedTable padded(const Table& t);
-inline float lookup_at(const PaddedTable& t, float coordinate) {
+inline float lookup_at(const float* table, float coordinate) {
   const int i = int(coordinate);
-  const float* b = &t[size_t(i)];
+  const float* b = table + i;
   return b[0] + (coordinate - float(i)) * (b[1] - b[0]);
+}
+inline float lookup_at(const PaddedTable& t, float coordinate) {
+  return lookup_at(t.data(), coordinate);
 }
 inline float lookup(const Table& t, float unit) {
   return lookup_at(padded(t), table_coordinate(unit));
 }
 
+// Where evaluate writes, row-major with nothing between rows: rgb (3 per pixel) and classes over
+// the tile and `ring` (<= the planes' ring) pixels around it, each may be nullptr (not wanted);
+// the displaced height over all of the planes. Every pixel is written (NaN where missing).
+struct SurfaceTargets {
+  int ring = 0;
+  float* rgb = nullptr;
+  float* classes = nullptr;
+  float* height = nullptr;
+};
+void evaluate(const Model& model, const SurfaceInputs& in, const SurfaceTargets& out);
+// Every output over all of the planes.
 Surface evaluate(const Model& model, const SurfaceInputs& in);
 
-// Unit normals (x along columns, y up the rows, z up) of the interior from heights with ring >= 1.
-std::vector<float> normals(const Plane& height, double pixel_m);
+// Unit normals (x along columns, y up the rows, z up) of the interior from heights with ring >= 1,
+// 3 per pixel into `out`.
+void normals(const Plane& height, double pixel_m, float* out);
 
 }  // namespace maquette::texture

@@ -106,6 +106,20 @@ TEST_F(IngestInput, LevelTooFineIsRefusedWithTheEstimate) {
   expect_refused("--as dem --level 19 " + good, "tiles of 256x256x1 float32 at level 19");
 }
 
+// A new store is created while the ingest is planned: a refused ingest must not leave it behind.
+TEST_F(IngestInput, RefusedIngestLeavesNoNewStore) {
+  const std::string fresh = dir + "/fresh.mqt";
+  for (const std::string args : {"--bbox 100 10 101 11 ", "--level 19 "}) {
+    const CliResult r = run_maquette("ingest " + fresh + " --layer a --as dem " + args + good);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    for (const char* suffix : {"", "-wal", "-shm"})
+      EXPECT_FALSE(std::filesystem::exists(fresh + suffix)) << args << suffix;
+  }
+  const CliResult ok = run_maquette("-q ingest " + fresh + " --layer a --as dem " + good);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(fresh));
+}
+
 TEST_F(IngestInput, MismatchedBandCounts) {
   const std::string three = dir + "/three.tif";
   write_raster(three, small_lonlat(8, 3), ramp);

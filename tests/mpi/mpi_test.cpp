@@ -2,7 +2,8 @@
 // overview blobs and artifacts must be bit-identical to a single-process run, for the fixture and
 // terrain operators and for every climate and texture operator (reduce ones included); a failing
 // cell names its rank, step and cell; a rank killed with SIGKILL leaves a valid store that --resume
-// completes (with 3 ranks, or one process) to the same bits.
+// completes (with 3 ranks, or one process) to the same bits. MPI is loaded from its plug-in by
+// launched runs only, and a missing plug-in is named.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -36,12 +37,14 @@ const std::string kEnv =
     std::string("MAQUETTE_MODULE_PATH=") + MAQUETTE_FIXTURE_MODULE_DIR + "/good";
 
 // `maquette run` of DIR/pipeline.json, alone (ranks 0) or under mpirun, one thread per process.
-std::string run_command(const std::string& dir, int ranks, const std::string& extra = "") {
-  const std::string run = kMaquette + " run --threads 1 " + extra + " " + dir + "/pipeline.json";
-  if (ranks == 0) return "env " + kEnv + " " + run;
+// `rank_env` (NAME=value) is set for `program` only, not for mpirun.
+std::string run_command(const std::string& dir, int ranks, const std::string& extra = "",
+                        const std::string& rank_env = "", const std::string& program = kMaquette) {
+  const std::string run = program + " run --threads 1 " + extra + " " + dir + "/pipeline.json";
+  if (ranks == 0) return "env " + kEnv + " " + rank_env + " " + run;
   return "env " + kEnv + " " + MAQUETTE_MPIEXEC +
-         " --oversubscribe --allow-run-as-root -x MAQUETTE_MODULE_PATH -np " +
-         std::to_string(ranks) + " " + run;
+         " --oversubscribe --allow-run-as-root -x MAQUETTE_MODULE_PATH " +
+         (rank_env.empty() ? "" : "-x " + rank_env) + " -np " + std::to_string(ranks) + " " + run;
 }
 
 struct Result {
@@ -49,9 +52,11 @@ struct Result {
   std::string err;
 };
 
-Result run(const std::string& dir, int ranks, const std::string& extra = "") {
+Result run(const std::string& dir, int ranks, const std::string& extra = "",
+           const std::string& rank_env = "", const std::string& program = kMaquette) {
   const std::string err = dir + "/stderr";
-  const int status = std::system((run_command(dir, ranks, extra) + " >/dev/null 2>" + err).c_str());
+  const int status = std::system(
+      (run_command(dir, ranks, extra, rank_env, program) + " >/dev/null 2>" + err).c_str());
   std::ostringstream text;
   text << std::ifstream(err).rdbuf();
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
@@ -277,6 +282,42 @@ TEST(Mpi, PlainRunPrintsNoMpiNoise) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("MPI"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("rank"), std::string::npos) << r.err;
+}
+
+// The dynamic loader's trace (LD_DEBUG=files) names every library a process loads: a plain run
+// loads neither MPI nor the MPI plug-in; a launched one loads the plug-in beside libmaquette, and
+// MPI with it.
+TEST(Mpi, OnlyALaunchedRunLoadsMpi) {
+  const std::string plugin =
+      (fs::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / "libmaquette_mpi.so").string();
+  const std::string plain_dir = write_pipeline();
+  const Result plain = run(plain_dir, 0, "", "LD_DEBUG=files");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_NE(plain.err.find("libmaquette.so"), std::string::npos) << "no loader trace";
+  EXPECT_EQ(plain.err.find("libmpi"), std::string::npos);
+  EXPECT_EQ(plain.err.find("libmaquette_mpi.so"), std::string::npos);
+
+  const std::string dir = write_pipeline();
+  const Result launched = run(dir, 2, "", "LD_DEBUG=files");
+  ASSERT_EQ(launched.exit_code, 0) << launched.err;
+  EXPECT_NE(launched.err.find("file=" + plugin), std::string::npos);
+  EXPECT_NE(launched.err.find("libmpi.so"), std::string::npos);
+  EXPECT_EQ(blobs(dir), blobs(plain_dir));
+}
+
+// A copy of the program in PREFIX/bin without PREFIX/lib, so without its plug-ins: under mpirun it
+// stops before opening the store, naming the plug-in it looked for.
+TEST(Mpi, MissingPluginIsNamed) {
+  const std::string dir = write_pipeline();
+  const fs::path prefix = fs::path(dir) / "prefix";
+  fs::create_directories(prefix / "bin");
+  fs::copy_file(kMaquette, prefix / "bin" / "maquette");
+  const Result r = run(dir, 2, "", "", (prefix / "bin" / "maquette").string());
+  EXPECT_NE(r.exit_code, 0);
+  const std::string looked_for = (prefix / "lib" / "libmaquette_mpi.so").string();
+  EXPECT_NE(r.err.find("maquette: error: cannot load the plug-in " + looked_for), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out.mqt"));
 }
 
 TEST(Mpi, RanksGiveTheSingleProcessBits) {

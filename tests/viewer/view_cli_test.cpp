@@ -1,6 +1,7 @@
 // `maquette view` through the real program: bad input is refused with a message that says what
 // to do; a good OUTDIR is served (tileset and viewer files with the right MIME types) and Ctrl-C
-// stops the server cleanly. The browser test is e2e.mjs (CTest viewer_e2e).
+// stops the server cleanly; the server is a plug-in only `maquette view` loads, and a missing one
+// is named. The browser test is e2e.mjs (CTest viewer_e2e).
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <httplib.h>
@@ -11,6 +12,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -149,4 +151,46 @@ TEST(ViewCli, ServesViewerAndTilesetWithMimeTypesAndStopsOnSigint) {
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
   EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
+// The dynamic loader's trace (LD_DEBUG=files) names every library a process loads: the HTTP
+// library comes with the viewer plug-in, loaded by `maquette view` and by no other command.
+TEST(ViewCli, OnlyViewLoadsTheHttpLibrary) {
+  const auto version = run_maquette("--version", "LD_DEBUG=files");
+  ASSERT_EQ(version.exit_code, 0) << version.err;
+  ASSERT_NE(version.err.find("libmaquette.so"), std::string::npos) << "no loader trace";
+  EXPECT_EQ(version.err.find("libcpp-httplib"), std::string::npos) << version.err;
+  EXPECT_EQ(version.err.find("libmaquette_view.so"), std::string::npos) << version.err;
+
+  // A held port: the plug-in is loaded, then fails to bind.
+  const Dirs d = make_dirs();
+  HeldPort held;
+  ASSERT_GT(held.port, 0);
+  const auto view = run_maquette(
+      "view " + d.outdir + " --viewer " + d.viewer + " --port " + std::to_string(held.port),
+      "LD_DEBUG=files");
+  EXPECT_NE(view.exit_code, 0);
+  EXPECT_NE(view.err.find("in use"), std::string::npos) << view.err;
+  const fs::path plugin = fs::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / "libmaquette_view.so";
+  EXPECT_NE(view.err.find("file=" + plugin.string()), std::string::npos) << view.err;
+  EXPECT_NE(view.err.find("libcpp-httplib"), std::string::npos) << view.err;
+}
+
+// A copy of the program in PREFIX/bin without PREFIX/lib, so without its plug-ins.
+TEST(ViewCli, MissingPluginIsNamed) {
+  const Dirs d = make_dirs();
+  const fs::path prefix = temp_dir();
+  fs::create_directories(prefix / "bin");
+  fs::copy_file(fs::path(MAQUETTE_BIN_DIR) / "maquette", prefix / "bin" / "maquette");
+  const fs::path err = prefix / "stderr";
+  const int status = std::system(((prefix / "bin" / "maquette").string() + " view " + d.outdir +
+                                  " --viewer " + d.viewer + " --port 0 2>" + err.string())
+                                     .c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0);
+  std::ifstream in(err);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(
+      text.find("cannot load the plug-in " + (prefix / "lib" / "libmaquette_view.so").string()),
+      std::string::npos)
+      << text;
 }

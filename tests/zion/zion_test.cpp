@@ -1,10 +1,10 @@
 // The Zion example (examples/texture-zion.json) through the real program on
-// ../shared/data/zion: its ingest steps, its classify and fit steps on the western half of the
-// cells, its procedural and assess steps on the eastern half. Held-out Cohen's kappa >= 0.6
-// (issue 5; the example's value threshold and majority radius were tuned on this eastern half,
-// see modules/texture/README.md), the same model and assessment with 1 and 2 threads, and the
-// texture two levels finer than the DEM without seams between tiles. Skipped when the data is
-// absent.
+// ../shared/data/zion: its ingest and terrain steps, its classify and fit steps on the western
+// half of the cells, its procedural and assess steps on the eastern half. Held-out Cohen's kappa
+// 0.652 >= 0.6 (issue 5), with every choice of the example made on the western cells alone (a
+// north/south cross-validation inside them, modules/texture/README.md "Zion"); the same model
+// and assessment with 1 and 2 threads, and the texture two levels finer than the DEM without
+// seams between tiles. Skipped when the data is absent.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,14 +67,15 @@ struct Outcome {
   double kappa = -1;
 };
 
-// Ingest (the example's steps, whole region), fit west, render and assess east, with `threads`
-// workers.
+// Ingest and the hillshade (the example's steps, whole region), fit west, render and assess east,
+// with `threads` workers.
 Outcome fit_and_assess(int threads) {
   const std::string dir = temp_dir();
   const std::string t = " --threads " + std::to_string(threads) + " ";
   const json whole = json::parse(
       slurp(std::string(MAQUETTE_SOURCE_DIR) + "/examples/texture-zion.json"))["region"];
-  const CliResult ingest = run_maquette("-q run" + t + pipeline(dir, whole, {"ingest"}));
+  const CliResult ingest =
+      run_maquette("-q run" + t + pipeline(dir, whole, {"ingest", "terrain.derive"}));
   EXPECT_EQ(ingest.exit_code, 0) << ingest.err;
   const CliResult fit =
       run_maquette("-q run" + t + pipeline(dir, kWest, {"texture.classify", "texture.fit"}));
@@ -146,7 +147,7 @@ TEST(Zion, HeldOutKappaAndDeterminism) {
     GTEST_SKIP() << "../shared/data/zion is absent";
   const Outcome one = fit_and_assess(1);
   std::cout << one.table;
-  EXPECT_GE(one.kappa, 0.6) << one.table;
+  EXPECT_NEAR(one.kappa, 0.652, 0.005) << one.table;  // measured 0.6517; the goal is 0.6
   const json model = json::parse(one.model);
   ASSERT_EQ(model["fitted_classes"].size(), 2u);  // dark and light, both fitted on the west
   const Outcome two = fit_and_assess(2);

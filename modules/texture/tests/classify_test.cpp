@@ -217,6 +217,50 @@ TEST(Classify, SnowBelowMinimalAltitudeAndExcludedLandCover) {
   for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isnan(k.at(3, r)));  // cultivated
 }
 
+// Illumination correction (cosine correction at the image's sun, altitude 30: sin = 0.5): a
+// pixel's colour times 0.5 / max(cos i, 0.2), cos i = (hillshade - 1) / 254, capped so that no
+// channel passes 255 (hue and saturation kept); unknown illumination leaves the colour as is.
+TEST(Classify, IlluminationCorrection) {
+  const std::array<float, 3> dark = {50, 60, 80}, blue = {100, 150, 200};
+  const float cos_half = 1 + 254 * 0.5f, cos_quarter = 1 + 254 * 0.25f, cos_tiny = 1 + 254 * 0.05f;
+  const struct {
+    std::array<float, 3> rgb;
+    float hillshade;
+    int expected;
+  } cases[] = {
+      {dark, cos_half, 0},     // lit like flat ground: value 80 / 255 = 0.31 stays dark
+      {dark, cos_quarter, 1},  // twice as bright once corrected: 0.63
+      {dark, NAN, 0},          // unknown illumination: uncorrected
+      {blue, cos_half, 1},     // hue 210, value 0.78
+      {blue, cos_tiny, 2},     // floor 0.2: x 2.5, capped at x 1.275: value 1, hue still 210
+      {{250, 250, 250}, cos_quarter, 1},  // grey: x 1.02, value 1
+  };
+  Tile<float> rgb(4, 3), shade(4, 1, 0, 1 + 254 * 0.5f);
+  for (size_t i = 0; i < std::size(cases); ++i) {
+    for (int k = 0; k < 3; ++k) rgb.at(int(i % 4), int(i / 4), k) = cases[i].rgb[size_t(k)];
+    shade.at(int(i % 4), int(i / 4)) = cases[i].hillshade;
+  }
+  CellData d;
+  d.inputs.emplace("rgb", rgb);
+  d.inputs.emplace("hillshade", shade);
+  json p = json::parse(R"({"boxes": [{"id": 2, "hue": [205, 215], "value": [0.999, 1]},
+    {"id": 0, "value": [0, 0.4]}, {"id": 1, "value": [0.4, 1]}], "sun_altitude": 30})");
+  const Tile<float> k = classify(d, p);
+  for (size_t i = 0; i < std::size(cases); ++i)
+    EXPECT_EQ(k.at(int(i % 4), int(i / 4)), cases[i].expected) << "case " << i;
+  p["sun_altitude"] = 0;  // no correction
+  EXPECT_EQ(classify(d, p).at(1, 0), 0);
+  EXPECT_EQ(classify(d, p).at(0, 1), 1);
+  p["sun_altitude"] = 30;
+  d.inputs.erase("hillshade");
+  try {
+    classify(d, p);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "texture.classify: params.sun_altitude needs inputs.hillshade");
+  }
+}
+
 // Majority filter (minimum mapping unit): a red 4 x 4 tile with a ring of 2 beyond it, a green
 // pixel inside, a green pair on the border, a grey (unclassified) pixel.
 TEST(Classify, MajorityFilter) {

@@ -186,7 +186,14 @@ TEST(Model, OddsFunctionByHand) {
   EXPECT_FLOAT_EQ(t[10], float(0.2 / 64));
   EXPECT_FLOAT_EQ(t[20], 1.0f);
   EXPECT_FLOAT_EQ(t[30], float(1.0 / 64 / 64));
-  EXPECT_EQ(t[11], 0);  // no pixel
+  // Bins without pixels take the nearest bin with pixels, the lower on a tie.
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(t[size_t(i)], t[3]);
+  for (int i = 11; i <= 15; ++i) EXPECT_EQ(t[size_t(i)], t[10]) << i;  // 15: 10 and 20 tie
+  EXPECT_EQ(t[16], t[20]);
+  EXPECT_EQ(t[25], t[20]);  // a tie
+  EXPECT_EQ(t[26], t[30]);
+  EXPECT_EQ(t[255], t[30]);
+  EXPECT_EQ(odds_function({}, {}), Table{});  // no pixel at all
 }
 
 // Calibration by hand: layer "b" (class 1, after "a") has product bin / 255; 10 of 100

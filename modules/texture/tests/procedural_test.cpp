@@ -4,6 +4,7 @@
 // lattices coarser than the pixels (lattice_noise.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <thread>
 
 #include "../field.h"
@@ -141,6 +142,28 @@ TEST(Procedural, SameBitsForAnyTiling) {
         ASSERT_EQ(part.height[p], whole.height[w]) << k << " " << c << " " << r;
       }
   }
+}
+
+// The branch-free arc tangent of the slope against std::atan, and the slope of a ramp by hand.
+TEST(Procedural, SlopeArcTangent) {
+  double worst_ulp = 0;
+  for (int i = 1; i <= 200000; ++i) {  // 1e-4 to 10, then up to e^10
+    const double x = i <= 100000 ? i * 1e-4 : 10 * std::exp((i - 100000) * 1e-4);
+    const double a = std::atan(x);
+    worst_ulp =
+        std::max(worst_ulp, std::abs(atan_nonnegative(x) - a) / (std::nextafter(a, 2.0) - a));
+  }
+  EXPECT_LE(worst_ulp, 2);
+  EXPECT_EQ(atan_nonnegative(0), 0);
+  EXPECT_TRUE(std::isnan(atan_nonnegative(NAN)));
+
+  Plane ramp(16, 2);  // rising 3 m per column, pixels of 2 m: gradient 1.5
+  for (int r = -2; r < 18; ++r)
+    for (int c = -2; c < 18; ++c) ramp.at(c, r) = 3.0f * float(c);
+  const Plane s = slope_degrees(ramp, 2);
+  ASSERT_EQ(s.ring, 1);
+  for (int r = -1; r < 17; ++r)
+    for (int c = -1; c < 17; ++c) EXPECT_NEAR(s.at(c, r), 56.3099325, 1e-5) << c << " " << r;
 }
 
 TEST(Procedural, ErrorsNameTheInput) {

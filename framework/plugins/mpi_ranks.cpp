@@ -1,28 +1,17 @@
-// launched_ranks(): MPI_COMM_WORLD when built with MPI and started by an MPI launcher.
-#include <cstdlib>
+// MpiRanks: MPI_COMM_WORLD as the Ranks of a run, in the MPI plug-in.
+#include "plugins/mpi_ranks.h"
 
-#include "core/error.h"
-#include "runtime/ranks.h"
-
-#ifdef MAQUETTE_WITH_MPI
 #include <mpi.h>
 
 #include <chrono>
 #include <numeric>
 #include <thread>
-#endif
+
+#include "core/error.h"
 
 namespace maquette {
 namespace {
 
-// Open MPI's mpirun, MPICH's and Intel's mpiexec (PMI), srun with PMI-2 or PMIx.
-bool started_by_mpi_launcher() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
-    if (std::getenv(name) != nullptr) return true;
-  return false;
-}
-
-#ifdef MAQUETTE_WITH_MPI
 // MPI_COMM_WORLD, initialized for the lifetime of the object. MPI calls keep the default error
 // handler, MPI_ERRORS_ARE_FATAL: a failed collective ends the whole job.
 class MpiRanks final : public Ranks {
@@ -73,18 +62,8 @@ class MpiRanks final : public Ranks {
 
   int rank_ = 0, size_ = 1;
 };
-#endif
 
 }  // namespace
-
-std::unique_ptr<Ranks> launched_ranks() {
-  if (!started_by_mpi_launcher()) return single_process();
-#ifdef MAQUETTE_WITH_MPI
-  return std::make_unique<MpiRanks>();
-#else
-  // Each process would run the whole pipeline into the same store.
-  throw Error("started by an MPI launcher, but this maquette was built without MPI");
-#endif
-}
-
 }  // namespace maquette
+
+extern "C" maquette::Ranks* maquette_mpi_ranks() { return new maquette::MpiRanks(); }

@@ -1,0 +1,108 @@
+// The server of `maquette view`, in the viewer plug-in.
+#include "plugins/view_server.h"
+
+#include <httplib.h>
+#include <signal.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+int g_wake[2] = {-1, -1};
+extern "C" void on_signal(int) {
+  const char c = 's';
+  [[maybe_unused]] const auto n = write(g_wake[1], &c, 1);
+}
+
+void configure(httplib::Server& svr, const ViewServeOptions& o) {
+  // MIME types set explicitly: the library's table lacks some (glb, wasm) that browsers need.
+  const std::pair<const char*, const char*> types[] = {
+      {"html", "text/html; charset=utf-8"},
+      {"js", "text/javascript; charset=utf-8"},
+      {"mjs", "text/javascript; charset=utf-8"},
+      {"css", "text/css; charset=utf-8"},
+      {"json", "application/json"},
+      {"txt", "text/plain; charset=utf-8"},
+      {"glb", "model/gltf-binary"},
+      {"gltf", "model/gltf+json"},
+      {"bin", "application/octet-stream"},
+      {"drc", "application/octet-stream"},
+      {"subtree", "application/octet-stream"},
+      {"wasm", "application/wasm"},
+      {"png", "image/png"},
+      {"jpg", "image/jpeg"},
+      {"jpeg", "image/jpeg"},
+      {"webp", "image/webp"},
+      {"ktx2", "image/ktx2"},
+  };
+  for (const auto& [ext, mime] : types) svr.set_file_extension_and_mimetype_mapping(ext, mime);
+  // Both folders are served at /: the viewer's files first, then the export (so ./tileset.json,
+  // the viewer's default, is OUTDIR/tileset.json). The library refuses paths that leave them.
+  if (!svr.set_mount_point("/", o.viewer)) throw Error("view: cannot serve " + o.viewer);
+  if (!svr.set_mount_point("/", o.outdir)) throw Error("view: cannot serve " + o.outdir);
+  svr.set_default_headers({{"Cache-Control", "no-cache"}});
+  svr.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    spdlog::debug("{} {} -> {}", req.method, req.path, res.status);
+  });
+}
+
+void serve(const ViewServeOptions& o) {
+  httplib::Server svr;
+  configure(svr, o);
+  const std::string host = "127.0.0.1";
+  int port = o.port;
+  if (port == 0) {
+    port = svr.bind_to_any_port(host);
+    if (port <= 0) throw Error("view: cannot bind a port on " + host);
+  } else if (!svr.bind_to_port(host, port)) {
+    throw Error("view: cannot listen on " + host + ":" + std::to_string(port) +
+                " (port in use?); pick another with --port P, or --port 0 for a free one");
+  }
+
+  // Ctrl-C (SIGINT) or SIGTERM stops the server cleanly: the handler (which may run on any
+  // thread) writes to a pipe the main thread waits on; the server thread writes to it too if it
+  // stops by itself.
+  if (pipe(g_wake) != 0) throw Error("view: cannot create a pipe");
+  struct sigaction sa {
+  }, old_int{}, old_term{};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+  std::atomic<bool> listen_failed = false;
+  std::thread server([&] {
+    listen_failed = !svr.listen_after_bind();
+    const char c = 'e';
+    [[maybe_unused]] const auto n = write(g_wake[1], &c, 1);
+  });
+  const std::string url = "http://" + host + ":" + std::to_string(port) + "/";
+  std::printf("Serving the viewer and %s at %s (Ctrl-C to stop)\n", o.outdir.c_str(), url.c_str());
+  std::fflush(stdout);
+  char why = 0;
+  while (read(g_wake[0], &why, 1) < 0 && errno == EINTR) {
+  }
+  svr.stop();
+  server.join();
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  close(g_wake[0]);
+  close(g_wake[1]);
+  if (why == 'e' && listen_failed) throw Error("view: the server on " + url + " stopped");
+  if (!o.quiet) std::printf("Stopped.\n");
+}
+
+}  // namespace
+}  // namespace maquette
+
+extern "C" void maquette_view_serve(const maquette::ViewServeOptions& options) {
+  maquette::serve(options);
+}
