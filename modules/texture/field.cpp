@@ -1,5 +1,7 @@
 #include "field.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -45,13 +47,24 @@ __attribute__((target_clones("avx2", "default"))) void upsample(const Tile<float
   const int rows0 = t.front().first, rows1 = t.back().first + 4;
   thread_local std::vector<double> horizontal;  // reused, every value written
   horizontal.resize(size_t(rows1 - rows0) * size_t(out.side()));
-  for (int r = rows0; r < rows1; ++r)
-    for (int c = 0; c < out.side(); ++c) {
-      const Taps& tc = t[size_t(c)];
-      double s = 0;
-      for (int k = 0; k < 4; ++k) s += tc.w[size_t(k)] * tile.at(tc.first + k, r);
-      horizontal[size_t(r - rows0) * size_t(out.side()) + size_t(c)] = s;
+  // The target columns c of the same phase c mod 2^refine share the weights, their taps step
+  // by one input pixel: a loop per phase (vectorized), over the input row in double.
+  const int phases = std::min(1 << refine, out.side()), cols0 = t.front().first,
+            cols1 = t.back().first + 4;
+  thread_local std::vector<double> input;
+  input.resize(size_t(cols1 - cols0));
+  for (int r = rows0; r < rows1; ++r) {
+    for (int i = cols0; i < cols1; ++i) input[size_t(i - cols0)] = tile.at(i, r);
+    double* h = &horizontal[size_t(r - rows0) * size_t(out.side())];
+    for (int p = 0; p < phases; ++p) {
+      const double w0 = t[size_t(p)].w[0], w1 = t[size_t(p)].w[1], w2 = t[size_t(p)].w[2],
+                   w3 = t[size_t(p)].w[3];
+      const double* x = &input[size_t(t[size_t(p)].first - cols0)];
+      const int count = (out.side() - p + phases - 1) / phases;
+      for (int j = 0; j < count; ++j)  // as a sum from 0 over the taps in order: the same bits
+        h[p + j * phases] = 0 + w0 * x[j] + w1 * x[j + 1] + w2 * x[j + 2] + w3 * x[j + 3];
     }
+  }
   for (int r = 0; r < out.side(); ++r) {
     const Taps& tr = t[size_t(r)];
     for (int c = 0; c < out.side(); ++c) {
@@ -99,7 +112,9 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
   const int level = cell.level() + log2_tile_size(m);
   // Exact every 8th pixel, or 16th or 32nd while that spans <= 300 m (bilinear positions then
   // deviate from the true ones by centimetres at most): the projection is the costly part.
-  while (shift_ < 5 && (2 << shift_) * grid.level_info(level, 1).pixel_m <= 300) ++shift_;
+  while ((1 << shift_) < kMaxNodeSpacing &&
+         (2 << shift_) * grid.level_info(level, 1).pixel_m <= 300)
+    ++shift_;
   const int step = 1 << shift_;
   gc0_ = int64_t(cell.col()) * m;
   gr0_ = int64_t(cell.row()) * m;
@@ -118,6 +133,31 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
           kAuthalicRadius * std::cos(lat) * std::cos(lon),
           kAuthalicRadius * std::cos(lat) * std::sin(lon), kAuthalicRadius * std::sin(lat)};
     }
+}
+
+// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits): the pixels
+// of one lattice cell at a time, whose 4 nodes are then constant, a coordinate at a time.
+__attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row(int col0, int step,
+                                                                                 int n, int row,
+                                                                                 Vec3d* out) const {
+  const int64_t gr = gr0_ + row, mask = (int64_t(1) << shift_) - 1;
+  const double inverse_step = 1 / double(mask + 1);  // exact: a power of two
+  const double fy = double(gr & mask) * inverse_step;
+  const Vec3d* above = &node_[size_t((gr >> shift_) - nr0_) * size_t(nodes_)];
+  std::array<double, kMaxNodeSpacing> fx, value;
+  for (int k = 0; k < n;) {
+    const int64_t gc = gc0_ + col0 + int64_t(k) * step;
+    const Vec3d *a = above + ((gc >> shift_) - nc0_), *b = a + nodes_;
+    const int first = int(gc & mask), count = std::min(n - k, int(mask - first) / step + 1);
+    for (int j = 0; j < count; ++j) fx[size_t(j)] = double(first + j * step) * inverse_step;
+    for (size_t c = 0; c < 3; ++c) {
+      const double a0 = a[0][c], a1 = a[1][c], b0 = b[0][c], b1 = b[1][c];
+      for (int j = 0; j < count; ++j)
+        value[size_t(j)] = bilinear(a0, a1, b0, b1, fx[size_t(j)], fy);
+      for (int j = 0; j < count; ++j) out[k + j][c] = value[size_t(j)];
+    }
+    k += count;
+  }
 }
 
 }  // namespace maquette::texture

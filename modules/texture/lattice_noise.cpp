@@ -32,6 +32,21 @@ double samples_per_wavelength(double share) {
   return k;
 }
 
+// The node intervals 0 .. intervals - 1 of a row of vertically interpolated nodes (interval k
+// from vertical[k + 1] to vertical[k + 2]) at the offsets 0, step, .. < P step from their first
+// node, into h in pixel order: h[k P + t] at offset t step.
+template <int P>
+void interpolate_along(const std::vector<float>& weights, int step, const float* vertical,
+                       int intervals, float* h) {
+  float x[P][4];
+  for (int t = 0; t < P; ++t)
+    for (int i = 0; i < 4; ++i) x[t][i] = weights[4 * size_t(t * step) + size_t(i)];
+  for (int k = 0; k < intervals; ++k)
+    for (int t = 0; t < P; ++t)
+      h[k * P + t] = x[t][0] * vertical[k] + x[t][1] * vertical[k + 1] + x[t][2] * vertical[k + 2] +
+                     x[t][3] * vertical[k + 3];
+}
+
 }  // namespace
 
 LatticeNoise::LatticeNoise(const NoiseField& field, const NoiseGeometry& geometry)
@@ -62,7 +77,7 @@ LatticeNoise::LatticeNoise(const NoiseField& field, const NoiseGeometry& geometr
     l.rows = int(((g_.row0 + g_.size + g_.ring - 1) >> shift) + 1 + margin - l.node_row0 + 1);
     if (shift > 0) {
       l.nodes = std::make_unique_for_overwrite<float[]>(size_t(l.cols) * size_t(l.rows));
-      l.row_started.assign(size_t(l.rows), 0);
+      l.complete.assign(size_t(l.rows), Span{});
     }
     for (int t = 0; t < spacing; ++t)
       for (const double w : catmull_rom(double(t) / spacing)) l.weights.push_back(float(w));
@@ -83,13 +98,25 @@ void LatticeNoise::sum(const Lattice& l, const Vec3d* position, int n, float* ou
 
 const float* LatticeNoise::node_row(Lattice& l, int j, int i0, int i1) {
   float* row = &l.nodes[size_t(j) * size_t(l.cols)];
-  if (!l.row_started[size_t(j)]) {
+  Span& complete = l.complete[size_t(j)];
+  if (complete.first <= i0 && i1 <= complete.last) return row;  // most calls
+  if (complete.first > complete.last) {                         // first use
     std::fill(row, row + l.cols, std::numeric_limits<float>::quiet_NaN());
-    l.row_started[size_t(j)] = 1;
+    evaluate_nodes(l, j, i0, i1, row);
+    complete = {i0, i1};
+    return row;
   }
-  int missing = 0;  // a test without branches first (vectorized): most rows are complete
+  int missing = 0;  // a test without branches (vectorized)
   for (int i = i0; i <= i1; ++i) missing |= row[i] != row[i] ? 1 : 0;
-  if (!missing) return row;
+  if (missing) evaluate_nodes(l, j, i0, i1, row);
+  if (i0 <= complete.last + 1 && complete.first - 1 <= i1)  // overlapping or adjacent
+    complete = {std::min(i0, complete.first), std::max(i1, complete.last)};
+  else if (i1 - i0 > complete.last - complete.first)
+    complete = {i0, i1};
+  return row;
+}
+
+void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row) {
   while (!std::isnan(row[i0])) ++i0;
   while (!std::isnan(row[i1])) --i1;
   const int r = int(((l.node_row0 + j) << l.shift) - g_.row0);
@@ -100,22 +127,17 @@ const float* LatticeNoise::node_row(Lattice& l, int j, int i0, int i1) {
     for (size_t m = merged_; m < lattices_.size(); ++m)
       add_interpolated(lattices_[m], r, column(i0), column(i1), 1 << l.shift, coarser_.data());
   }
-  std::array<int, kBatch> index;
-  std::array<Vec3d, kBatch> position;
+  // All of i0 .. i1 (nodes already there between missing ones get the same bits again): their
+  // positions at once, the noise a batch at a time.
+  position_.resize(size_t(i1 - i0 + 1));
+  g_.position->along_row(column(i0), 1 << l.shift, i1 - i0 + 1, r, position_.data());
   std::array<float, kBatch> value;
-  for (int i = i0; i <= i1;) {  // the missing nodes, a batch at a time
-    int n = 0;
-    for (; i <= i1 && n < kBatch; ++i)
-      if (std::isnan(row[i])) {
-        index[size_t(n)] = i;
-        position[size_t(n++)] = g_.position->at(column(i), r);
-      }
-    sum(l, position.data(), n, value.data());
+  for (int i = i0; i <= i1; i += kBatch) {
+    const int n = std::min(kBatch, i1 - i + 1);
+    sum(l, &position_[size_t(i - i0)], n, value.data());
     for (int k = 0; k < n; ++k)
-      row[index[size_t(k)]] =
-          finest ? value[size_t(k)] + coarser_[size_t(index[size_t(k)] - i0)] : value[size_t(k)];
+      row[i + k] = finest ? value[size_t(k)] + coarser_[size_t(i + k - i0)] : value[size_t(k)];
   }
-  return row;
 }
 
 void LatticeNoise::add_interpolated(Lattice& l, int r, int c0, int c1, int step, float* out) {
@@ -132,26 +154,31 @@ void LatticeNoise::add_interpolated(Lattice& l, int r, int c0, int c1, int step,
   for (int i = i0; i <= i1; ++i)
     vertical[i - i0] = w0 * n0[i] + w1 * n1[i] + w2 * n2[i] + w3 * n3[i];
   // Along the row: the whole node intervals that c0 .. c1 touch, at the offsets from their node
-  // that are multiples of step, offset by offset (loops over the intervals, vectorized), then
-  // picked.
+  // that are multiples of step, in pixel order (offset by offset: loops over the intervals,
+  // vectorized), then the pixels c0 .. c1 added.
   const int intervals = i1 - i0 - 2;  // starting at nodes i0 + 1 ..
-  horizontal_.resize(size_t(intervals) << l.shift);
+  const int per_interval = (1 << l.shift) / step;
+  horizontal_.resize(size_t(intervals) * size_t(per_interval));
   float* h = horizontal_.data();
-  for (int t = 0; t < 1 << l.shift; t += step) {
-    const float* wx = &l.weights[4 * size_t(t)];
-    const float x0 = wx[0], x1 = wx[1], x2 = wx[2], x3 = wx[3];
-    float* ht = h + size_t(t) * size_t(intervals);
-    for (int k = 0; k < intervals; ++k)
-      ht[k] = x0 * vertical[k] + x1 * vertical[k + 1] + x2 * vertical[k + 2] + x3 * vertical[k + 3];
+  switch (per_interval) {  // a power of two <= 8; a constant stride, so the loops vectorize
+    case 1:
+      interpolate_along<1>(l.weights, step, vertical, intervals, h);
+      break;
+    case 2:
+      interpolate_along<2>(l.weights, step, vertical, intervals, h);
+      break;
+    case 4:
+      interpolate_along<4>(l.weights, step, vertical, intervals, h);
+      break;
+    default:
+      interpolate_along<8>(l.weights, step, vertical, intervals, h);
+      break;
   }
-  // Pixel c lies at offset t = p & mask in interval p >> shift, p its column from the first
-  // interval's node.
-  const int64_t p0 = g_.col0 + c0 - ((l.node_col0 + i0 + 1) << l.shift), mask = (1 << l.shift) - 1;
+  // Pixel c0 lies p0 pixels from the first interval's node (p0 a multiple of step).
+  const int64_t p0 = g_.col0 + c0 - ((l.node_col0 + i0 + 1) << l.shift);
+  const float* from = h + p0 / step;
   const int n = (c1 - c0) / step + 1;
-  for (int k = 0; k < n; ++k) {
-    const int64_t p = p0 + int64_t(k) * step;
-    out[k] += h[size_t(p & mask) * size_t(intervals) + size_t(p >> l.shift)];
-  }
+  for (int k = 0; k < n; ++k) out[k] += from[k];
 }
 
 void LatticeNoise::row(int r, int c0, int c1, float* out) {
@@ -164,12 +191,12 @@ void LatticeNoise::row(int r, int c0, int c1, float* out) {
   for (size_t m = 0; m < merged_; ++m) {
     Lattice& l = lattices_[m];
     if (l.shift == 0) {  // every pixel is a node
-      std::array<Vec3d, kBatch> position;
+      position_.resize(n);
+      g_.position->along_row(c0, 1, int(n), r, position_.data());
       std::array<float, kBatch> value;
       for (int c = c0; c <= c1; c += kBatch) {
         const int n = std::min(kBatch, c1 - c + 1);
-        for (int k = 0; k < n; ++k) position[size_t(k)] = g_.position->at(c + k, r);
-        sum(l, position.data(), n, value.data());
+        sum(l, &position_[size_t(c - c0)], n, value.data());
         for (int k = 0; k < n; ++k) sum_[size_t(c - c0 + k)] += value[size_t(k)];
       }
     } else {

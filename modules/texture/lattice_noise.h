@@ -49,6 +49,11 @@ class LatticeNoise {
   static constexpr int kMaxNoiseShift = 3;
   static_assert(3 << kMaxNoiseShift == kNoiseLatticeReach);
 
+  // Nodes first .. last of a node row; empty when first > last.
+  struct Span {
+    int first = 1, last = 0;
+  };
+
   // The octaves sharing a spacing, their amplitude-weighted sum cached on one lattice.
   struct Lattice {
     std::vector<int> octaves;
@@ -58,7 +63,7 @@ class LatticeNoise {
     // Allocated uninitialised; a node row is filled with NaN (not evaluated) when first used, so
     // the rows a layer never reaches cost nothing.
     std::unique_ptr<float[]> nodes;
-    std::vector<uint8_t> row_started;
+    std::vector<Span> complete;  // per node row: nodes known evaluated (none before first use)
     std::vector<float> weights;  // 4 per offset in 0 .. spacing - 1
   };
 
@@ -69,6 +74,8 @@ class LatticeNoise {
   // Node row j, its nodes i0 .. i1 evaluated (those of the finest lattice with the coarser
   // lattices interpolated at them added).
   const float* node_row(Lattice& l, int j, int i0, int i1);
+  // The missing nodes among i0 .. i1 of node row j (NaN) into row.
+  void evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row);
   // Adds the lattice interpolated at plane pixels c0, c0 + step, .. <= c1 of plane row r to
   // out[0], out[1], ..; step is 1 or a spacing finer than the lattice's, c0 a multiple of it.
   void add_interpolated(Lattice& l, int r, int c0, int c1, int step, float* out);
@@ -81,6 +88,7 @@ class LatticeNoise {
   std::vector<Lattice> lattices_;
   size_t merged_ = 0;
   std::vector<float> sum_, vertical_, horizontal_, coarser_;
+  std::vector<Vec3d> position_;  // of the nodes (or pixels) being evaluated
 };
 
 }  // namespace maquette::texture
