@@ -12,7 +12,6 @@ namespace maquette {
 void init_gdal(int cache_mb) {
   static std::once_flag once;
   std::call_once(once, [cache_mb] {
-    GDALAllRegister();
     // Errors become exceptions with the message; GDAL must not print them to stderr itself.
     CPLSetErrorHandler(CPLQuietErrorHandler);
     if (!std::getenv("GDAL_CACHEMAX")) GDALSetCacheMax64(int64_t(cache_mb) << 20);

@@ -7,6 +7,7 @@
 #include <atomic>
 
 #include "core/error.h"
+#include "gdal/gdal_drivers.h"
 #include "gdal/gdal_env.h"
 
 namespace maquette {
@@ -14,6 +15,7 @@ namespace maquette {
 void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
                  const ImageFormat& format, const std::string& path) {
   init_gdal();
+  register_all_gdal_drivers();
   const std::string why = "cannot write " + path;
   if (pixels.size() != size_t(width) * size_t(height) * size_t(bands))
     throw Error(why + ": " + std::to_string(pixels.size()) + " bytes for " + std::to_string(width) +

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "gdal/class_table.h"
+#include "gdal/gdal_drivers.h"
 #include "gdal/gdal_env.h"
 
 namespace maquette {
@@ -37,11 +38,21 @@ DType dtype_from_gdal(GDALDataType t, const std::string& where) {
   }
 }
 
+// Opens with the GTiff driver alone first, and with every driver only when that fails (another
+// format, or a bad file: the message is then the one every driver gives).
 GDALDataset* open_dataset(const std::string& path) {
   init_gdal();
-  CPLErrorReset();
-  auto* ds = GDALDataset::FromHandle(
-      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  register_gtiff_driver();
+  const auto open = [&path] {
+    CPLErrorReset();
+    return GDALDataset::FromHandle(
+        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  };
+  GDALDataset* ds = open();
+  if (!ds) {
+    register_all_gdal_drivers();
+    ds = open();
+  }
   if (!ds)
     throw Error(path + ": cannot read the raster: " +
                 gdal_last_error("not a format GDAL reads, or the file is missing"));

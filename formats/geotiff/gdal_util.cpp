@@ -2,15 +2,13 @@
 
 #include <cpl_error.h>
 
-#include <mutex>
-
 #include "core/error.h"
+#include "gdal/gdal_drivers.h"
 
 namespace maquette {
 
 GdalSession::GdalSession() {
-  static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
+  register_all_gdal_drivers();
   CPLPushErrorHandler(CPLQuietErrorHandler);
   CPLErrorReset();
 }

@@ -3,6 +3,7 @@
 #include <cpl_error.h>
 
 #include "core/error.h"
+#include "gdal/gdal_drivers.h"
 
 namespace maquette {
 namespace {
@@ -15,8 +16,7 @@ std::string gdal_reason() {
 }  // namespace
 
 VectorDataset open_vector(const std::string& path) {
-  static const bool registered = (GDALAllRegister(), true);
-  (void)registered;
+  register_all_gdal_drivers();
   CPLErrorReset();
   VectorDataset ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
   if (!ds) throw Error("cannot open " + path + " as a vector source" + gdal_reason());

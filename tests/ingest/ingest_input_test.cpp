@@ -1,5 +1,6 @@
 // Bad input through the real program (clear message naming the file or option, non-zero exit,
 // store bytes untouched), mosaics, and a killed ingest resumed to the same bits.
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -64,6 +65,29 @@ TEST_F(IngestInput, CorruptFile) {
   const std::string bad = dir + "/corrupt.tif";
   std::ofstream(bad) << "II*\0 this is not a tiff at all";
   expect_refused("--as dem " + bad, bad + ": cannot read the raster");
+}
+
+// A source GDAL reads but not as a GeoTIFF: the program opens sources with the GTiff driver alone
+// and registers every driver only when that fails. The same pixels in ENVI give the same tiles.
+TEST_F(IngestInput, NonGeoTiffSourceGivesTheTilesOfTheGeoTiff) {
+  const std::string envi = dir + "/good.envi";
+  {
+    GDALAllRegister();
+    const GDALDatasetUniquePtr tif(GDALDataset::Open(good.c_str(), GDAL_OF_RASTER));
+    ASSERT_TRUE(tif);
+    const GDALDatasetUniquePtr copy(GetGDALDriverManager()->GetDriverByName("ENVI")->CreateCopy(
+        envi.c_str(), tif.get(), FALSE, nullptr, nullptr, nullptr));
+    ASSERT_TRUE(copy);
+  }
+  const std::string other = dir + "/envi.mqt";
+  const CliResult r = run_maquette("-q ingest " + other + " --layer a --as dem " + envi);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = Store::open(store, Store::Mode::ReadOnly),
+             b = Store::open(other, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = a->tile_cells("a");
+  ASSERT_FALSE(cells.empty());
+  ASSERT_EQ(cells, b->tile_cells("a"));
+  for (CellId c : cells) EXPECT_EQ(a->get_tile("a", c)->bytes, b->get_tile("a", c)->bytes);
 }
 
 TEST_F(IngestInput, RasterWithoutCrsUnlessSrcCrs) {
