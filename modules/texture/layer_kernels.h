@@ -40,14 +40,14 @@ struct ConstrainRow {
 struct BlendRow {
   float bias = 1, noise_scale = 0, roughness_m = 0;
   std::array<float, 3> colour{};
-  int layer = 0;
+  int layer = 0;  // what `dominant` gets where C >= 0.5 (texture.procedural: the layer's class)
   const float* parent = nullptr;   // as in ConstrainRow
   const float* product = nullptr;  // ConstrainRow::product
   const float* noise = nullptr;    // the layer's noise, or nullptr: none (0)
   float* coverage = nullptr;       // out: C = clamp((b + s N) product) parent
   std::array<float*, 3> rgb{};     // in and out, one row per channel
   double* height = nullptr;        // in and out: H + C B N
-  int* dominant = nullptr;         // out: the layer where C >= 0.5
+  int* dominant = nullptr;         // out: `layer` where C >= 0.5
 };
 
 struct LayerKernels {

@@ -25,11 +25,11 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
   // The rows and columns of the planes in the rgb and classes targets.
   const size_t first = size_t(in.height.ring - out.ring), out_side = side - 2 * first;
   const int height_q = model.quantity("height"), slope_q = model.quantity("slope");
-  std::vector<float> class_of(layers + 1, kNaN);  // of dominant layer l at l + 1 (NaN: none)
+  std::vector<int> class_of(layers);  // -1: none (NaN in the classes target)
   std::vector<float> scale(model.quantities.size()), offset(model.quantities.size());
   std::vector<std::vector<PairTable>> tables(layers);
   for (size_t l = 0; l < layers; ++l) {
-    if (const int c = layer_class(model, int(l)); c >= 0) class_of[l + 1] = float(c);
+    class_of[l] = layer_class(model, int(l));
     for (const std::optional<Table>& t : model.layers[l].constraints)
       tables[l].push_back(t ? pair_table(padded(*t)) : PairTable{});
   }
@@ -56,7 +56,7 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
   std::vector<double> h(padded_side, kNaN);  // the padding is a missing height
   std::vector<float> valid(padded_side), rgb(3 * padded_side), coverage(layers * padded_side),
       product(padded_side), n_x(padded_side);
-  std::vector<int> dominant(padded_side);
+  std::vector<int> dominant(padded_side);  // the dominant layer's class (-1: none)
   std::vector<uint16_t> every_block(blocks), lists(layers * blocks);
   for (size_t b = 0; b < blocks; ++b) every_block[b] = uint16_t(b);
   std::vector<size_t> listed(layers);
@@ -139,7 +139,7 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
                      layer.noise_scale,
                      layer.roughness_m,
                      layer.colour,
-                     int(l),
+                     class_of[l],
                      parent,
                      product.data(),
                      noise[l] ? n_x.data() : nullptr,
@@ -158,7 +158,7 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
           out.rgb[3 * (out_row + c) + k] = rgb[k * padded_side + first + c];
     if (out.classes)
       for (size_t c = 0; c < out_side; ++c)
-        out.classes[out_row + c] = class_of[size_t(dominant[first + c] + 1)];
+        out.classes[out_row + c] = dominant[first + c] < 0 ? kNaN : float(dominant[first + c]);
   }
 }
 
