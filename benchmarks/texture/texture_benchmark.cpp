@@ -148,8 +148,10 @@ void Procedural(benchmark::State& state) {
     const double cpu0 = process_cpu_s();
     parallel(cs.size(), [&](size_t i) {
       CellData d = inputs[i];
-      for (const OutputSpec& o : proc.spec().outputs)
-        d.outputs.emplace(o.name, Tile<float>(kSize << kRefine, o.channels));
+      for (const OutputSpec& o : proc.spec().outputs)  // as the runner makes them (StepIO::load)
+        d.outputs.emplace(o.name, proc.spec().writes_all_samples
+                                      ? Tile<float>::uninitialized(kSize << kRefine, o.channels)
+                                      : Tile<float>(kSize << kRefine, o.channels, 0, NAN));
       proc.run({cs[i], kSize, kRefine, &default_grid(), &params, nullptr}, d);
       benchmark::DoNotOptimize(d.outputs);
     });

@@ -9,8 +9,11 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "core/cell_id.h"
@@ -56,15 +59,39 @@ constexpr DType dtype_of<double>() {
   return DType::F64;
 }
 
+// An allocator whose value-less construct() default-initializes (construction from values is
+// std::construct_at's, through std::allocator_traits): a vector<T> of arithmetic T resized with
+// it leaves its samples uninitialized (Tile::uninitialized), instead of zeroing them.
+template <typename T>
+struct DefaultInitAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = DefaultInitAllocator<U>;
+  };
+  using std::allocator<T>::allocator;
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+};
+
 template <typename T>
 class Tile {
  public:
   Tile() = default;
   Tile(int size, int channels, int halo = 0, T fill = T{})
-      : size_(size),
-        channels_(channels),
-        halo_(halo),
-        data_(size_t(size + 2 * halo) * size_t(size + 2 * halo) * size_t(channels), fill) {}
+      : size_(size), channels_(channels), halo_(halo), data_(sample_count(), fill) {}
+
+  // A tile whose samples (halo included) hold indeterminate values: for a caller that writes
+  // every one of them before reading any, and so saves the fill of a large tile.
+  static Tile uninitialized(int size, int channels, int halo = 0) {
+    Tile tile;
+    tile.size_ = size;
+    tile.channels_ = channels;
+    tile.halo_ = halo;
+    tile.data_.resize(tile.sample_count());
+    return tile;
+  }
 
   int size() const { return size_; }
   int channels() const { return channels_; }
@@ -88,6 +115,7 @@ class Tile {
   }
 
  private:
+  size_t sample_count() const { return size_t(stride()) * size_t(stride()) * size_t(channels_); }
   size_t index(int col, int row, int channel) const {
     assert(col >= -halo_ && col < size_ + halo_ && row >= -halo_ && row < size_ + halo_);
     return (size_t(row + halo_) * size_t(stride()) + size_t(col + halo_)) * size_t(channels_) +
@@ -97,7 +125,7 @@ class Tile {
   int size_ = 0;
   int channels_ = 0;
   int halo_ = 0;
-  std::vector<T> data_;
+  std::vector<T, DefaultInitAllocator<T>> data_;
 };
 
 // A tile of any sample type, as the store keeps it (no halo): `bytes` holds

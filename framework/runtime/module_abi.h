@@ -13,7 +13,8 @@
 
 // 2: operators get the run's store (CellContext::store, StepContext for finish() and regions).
 // 3: outputs finer than the inputs (OperatorSpec::refinable, CellContext::refine).
-#define MAQUETTE_ABI_VERSION 3u
+// 4: OperatorSpec::writes_all_samples; Tile's samples in a default-initializing vector.
+#define MAQUETTE_ABI_VERSION 4u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

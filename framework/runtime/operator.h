@@ -56,6 +56,11 @@ struct OperatorSpec {
   // A cell operator that can write its outputs `CellContext::refine` levels finer than its inputs
   // (a step's "refine"): output tiles of tile_size << refine samples on the same cells.
   bool refinable = false;
+  // A cell operator that writes every sample of every output tile it is given (NaN for nodata
+  // included): the runner then hands it uninitialized output tiles instead of NaN-filled ones
+  // (Tile::uninitialized), saving their fill. An operator that leaves a sample unwritten must not
+  // declare it: that sample would be stored with an indeterminate value.
+  bool writes_all_samples = false;
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
   // items, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
@@ -83,7 +88,8 @@ struct StepContext {
 };
 
 // Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
-// float32 (NaN -> the output's nodata), converted to the output dtype by the framework.
+// float32 (NaN -> the output's nodata), converted to the output dtype by the framework. Outputs
+// arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples.
 struct CellData {
   std::map<std::string, Tile<float>> inputs;   // by input port name (absent optional: missing)
   std::map<std::string, Tile<float>> outputs;  // by output port name, only those the step maps

@@ -42,7 +42,8 @@ CellData StepIO::load(CellId cell, int halo) {
     };
     data.inputs[port] = assemble_halo(default_grid(), cell, plan_.tile_size, halo, fetch);
   }
-  data.outputs = blank_outputs();
+  data.outputs =
+      plan_.step->op->spec().writes_all_samples ? uninitialized_outputs() : blank_outputs();
   return data;
 }
 
@@ -50,6 +51,13 @@ TileSet StepIO::blank_outputs(int size) const {
   TileSet tiles;
   for (const auto& [port, layer] : plan_.outputs)
     tiles.emplace(port, Tile<float>(size > 0 ? size : layer.tile_size, layer.channels, 0, NAN));
+  return tiles;
+}
+
+TileSet StepIO::uninitialized_outputs() const {
+  TileSet tiles;
+  for (const auto& [port, layer] : plan_.outputs)
+    tiles.emplace(port, Tile<float>::uninitialized(layer.tile_size, layer.channels));
   return tiles;
 }
 

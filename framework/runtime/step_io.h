@@ -35,7 +35,8 @@ class StepIO {
 
   // The tile of `layer` at `cell` as float (nodata -> NaN), or nullopt.
   std::optional<Tile<float>> read(const LayerInfo& layer, CellId cell) const;
-  // The step's input tiles at `cell` with `halo` pixels, and NaN output tiles for mapped outputs.
+  // The step's input tiles at `cell` with `halo` pixels, and output tiles for mapped outputs: NaN,
+  // or uninitialized for an operator that writes every sample (OperatorSpec::writes_all_samples).
   CellData load(CellId cell, int halo);
   // The run's store, for operators to read (CellContext::store, StepContext::store).
   const Store& store() const { return store_; }
@@ -43,6 +44,8 @@ class StepIO {
   int64_t decoded() const { return decoded_; }
   // NaN tiles for the step's mapped outputs, of `size` pixels (0: of their layers' tile size).
   TileSet blank_outputs(int size = 0) const;
+  // Uninitialized tiles for the step's mapped outputs, of their layers' tile size.
+  TileSet uninitialized_outputs() const;
 
   // One batch: the output tiles of all `cells` and their run records.
   void write(std::span<const CellOutput> cells);

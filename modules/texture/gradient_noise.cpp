@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 // Both paths do the same IEEE operations in the same order on every point (no FMA: the AVX2 path
@@ -12,17 +13,21 @@ namespace maquette::texture {
 namespace {
 
 // Hash of a lattice node: its wrapped coordinates times these odd constants, combined by xor
-// with the seed, then Wellons' lowbias32 finaliser; the gradient is its top 4 bits.
+// with the seed, then Wellons' lowbias32 finaliser; the gradient is its top 4 bits. The
+// finaliser's first xorshift distributes over the xor, so it is applied to each axis' term (6
+// per point instead of 8), and its last (h ^ h >> 16) never reaches the top 16 bits: left out.
 constexpr uint32_t kPrimeX = 0x8da6b343u, kPrimeY = 0xd8163841u, kPrimeZ = 0xcb1ab31fu;
 constexpr uint32_t kMix1 = 0x7feb352du, kMix2 = 0x846ca68bu;
-constexpr double kTwo32 = 4294967296.0, kTwo31 = 2147483648.0;
+constexpr double kCellBits = 6755399441055744.0;  // 1.5 * 2^52: the ulp of x + kCellBits is 1
+constexpr uint32_t kCellOffset = 0x80000000u;
 
+uint32_t spread(uint32_t h) { return h ^ (h >> 16); }
+
+// The rest of the finaliser, on the xor of spread() terms.
 uint32_t mix(uint32_t h) {
-  h ^= h >> 16;
   h *= kMix1;
   h ^= h >> 15;
-  h *= kMix2;
-  return h ^ (h >> 16);
+  return h * kMix2;
 }
 
 // Dot product of one of the 12 cube-edge gradients (Perlin 2002; 16 cases, 4 repeated), picked
@@ -37,8 +42,10 @@ float grad(uint32_t h, float x, float y, float z) {
 float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 float lerp(float a, float b, float t) { return a + t * (b - a); }
 
-// A coordinate in lattice units: its cell, floor(x) mod 2^32 (offset by 2^31, exact in double),
-// and the fraction of the way across it.
+// A coordinate x in lattice units (|x| < 2^51, so any point on the globe): its cell, floor(x)
+// mod 2^32 offset by 2^31, and the fraction of the way across it. floor(x) mod 2^32 is exact as
+// the low 32 bits of floor(x) + kCellBits (a double in [2^52, 2^53), whose bits below its
+// leading one are floor(x) + 2^51).
 struct Axis {
   uint32_t cell;
   float t;
@@ -46,16 +53,16 @@ struct Axis {
 
 Axis axis(double x) {
   const double f = std::floor(x);
-  const double wrapped = f - kTwo32 * std::floor(f * (1 / kTwo32)) - kTwo31;
-  return {uint32_t(int32_t(wrapped)), float(x - f)};
+  return {uint32_t(std::bit_cast<uint64_t>(f + kCellBits)) ^ kCellOffset, float(x - f)};
 }
 
 float noise_at(const Vec3d& p, const GradientNoiseInput& in) {
   const Axis ax = axis(p[0] * in.scale + in.offset[0]), ay = axis(p[1] * in.scale + in.offset[1]),
              az = axis(p[2] * in.scale + in.offset[2]);
-  const uint32_t hx0 = ax.cell * kPrimeX, hx1 = hx0 + kPrimeX;
-  const uint32_t hy0 = ay.cell * kPrimeY, hy1 = hy0 + kPrimeY;
-  const uint32_t hz0 = (az.cell * kPrimeZ) ^ in.seed, hz1 = (az.cell * kPrimeZ + kPrimeZ) ^ in.seed;
+  const uint32_t x0 = ax.cell * kPrimeX, y0 = ay.cell * kPrimeY, z0 = az.cell * kPrimeZ;
+  const uint32_t hx0 = spread(x0), hx1 = spread(x0 + kPrimeX);
+  const uint32_t hy0 = spread(y0), hy1 = spread(y0 + kPrimeY);
+  const uint32_t hz0 = spread(z0 ^ in.seed), hz1 = spread((z0 + kPrimeZ) ^ in.seed);
   const float X = ax.t, Y = ay.t, Z = az.t, X1 = X - 1, Y1 = Y - 1, Z1 = Z - 1;
   const float u = fade(X), v = fade(Y), w = fade(Z);
   return lerp(
@@ -75,16 +82,22 @@ struct Axis8 {
   __m256 t;
 };
 
-AVX2 __m128i wrapped_cell(__m256d f) {
-  const __m256d cells = _mm256_mul_pd(
-      _mm256_set1_pd(kTwo32), _mm256_floor_pd(_mm256_mul_pd(f, _mm256_set1_pd(1 / kTwo32))));
-  return _mm256_cvtpd_epi32(_mm256_sub_pd(_mm256_sub_pd(f, cells), _mm256_set1_pd(kTwo31)));
+// The cells of floor(x) f0 (points 0 .. 3) and f1 (points 4 .. 7): the low halves of the 64-bit
+// lanes of f + kCellBits, gathered in point order.
+AVX2 __m256i cells8(__m256d f0, __m256d f1) {
+  const __m256d bits = _mm256_set1_pd(kCellBits);
+  const __m256 low = _mm256_shuffle_ps(_mm256_castpd_ps(_mm256_add_pd(f0, bits)),
+                                       _mm256_castpd_ps(_mm256_add_pd(f1, bits)),
+                                       _MM_SHUFFLE(2, 0, 2, 0));  // f0 0 1, f1 0 1 | f0 2 3, f1 2 3
+  return _mm256_xor_si256(
+      _mm256_permute4x64_epi64(_mm256_castps_si256(low), _MM_SHUFFLE(3, 1, 2, 0)),
+      _mm256_set1_epi32(int(kCellOffset)));
 }
 
 // Axis a of points p[0 .. 7].
 AVX2 Axis8 axis8(const Vec3d* p, int a, const GradientNoiseInput& in) {
   const __m256d scale = _mm256_set1_pd(in.scale), offset = _mm256_set1_pd(in.offset[size_t(a)]);
-  __m128i cell[2];
+  __m256d f[2];
   __m128 t[2];
   for (int half = 0; half < 2; ++half) {
     const Vec3d* q = p + 4 * half;
@@ -92,19 +105,18 @@ AVX2 Axis8 axis8(const Vec3d* p, int a, const GradientNoiseInput& in) {
                                                                 q[1][size_t(a)], q[0][size_t(a)]),
                                                   scale),
                                     offset);
-    const __m256d f = _mm256_floor_pd(x);
-    cell[half] = wrapped_cell(f);
-    t[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, f));
+    f[half] = _mm256_floor_pd(x);
+    t[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, f[half]));
   }
-  return {_mm256_set_m128i(cell[1], cell[0]), _mm256_set_m128(t[1], t[0])};
+  return {cells8(f[0], f[1]), _mm256_set_m128(t[1], t[0])};
 }
 
+AVX2 __m256i spread8(__m256i h) { return _mm256_xor_si256(h, _mm256_srli_epi32(h, 16)); }
+
 AVX2 __m256i mix8(__m256i h) {
-  h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 16));
   h = _mm256_mullo_epi32(h, _mm256_set1_epi32(int(kMix1)));
   h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 15));
-  h = _mm256_mullo_epi32(h, _mm256_set1_epi32(int(kMix2)));
-  return _mm256_xor_si256(h, _mm256_srli_epi32(h, 16));
+  return _mm256_mullo_epi32(h, _mm256_set1_epi32(int(kMix2)));
 }
 
 // grad() with the cases as masks in the sign bit: bit 31 of h is g & 8, bit 30 g & 4, bit 29
@@ -135,11 +147,12 @@ AVX2 __m256 noise8(const Vec3d* p, const GradientNoiseInput& in) {
   const Axis8 ax = axis8(p, 0, in), ay = axis8(p, 1, in), az = axis8(p, 2, in);
   const __m256i px = _mm256_set1_epi32(int(kPrimeX)), py = _mm256_set1_epi32(int(kPrimeY)),
                 pz = _mm256_set1_epi32(int(kPrimeZ)), seed = _mm256_set1_epi32(int(in.seed));
-  const __m256i hx0 = _mm256_mullo_epi32(ax.cell, px), hx1 = _mm256_add_epi32(hx0, px);
-  const __m256i hy0 = _mm256_mullo_epi32(ay.cell, py), hy1 = _mm256_add_epi32(hy0, py);
-  const __m256i z0 = _mm256_mullo_epi32(az.cell, pz);
-  const __m256i hz0 = _mm256_xor_si256(z0, seed),
-                hz1 = _mm256_xor_si256(_mm256_add_epi32(z0, pz), seed);
+  const __m256i x0 = _mm256_mullo_epi32(ax.cell, px), y0 = _mm256_mullo_epi32(ay.cell, py),
+                z0 = _mm256_mullo_epi32(az.cell, pz);
+  const __m256i hx0 = spread8(x0), hx1 = spread8(_mm256_add_epi32(x0, px));
+  const __m256i hy0 = spread8(y0), hy1 = spread8(_mm256_add_epi32(y0, py));
+  const __m256i hz0 = spread8(_mm256_xor_si256(z0, seed)),
+                hz1 = spread8(_mm256_xor_si256(_mm256_add_epi32(z0, pz), seed));
   const __m256i h00 = _mm256_xor_si256(hx0, hy0), h10 = _mm256_xor_si256(hx1, hy0),
                 h01 = _mm256_xor_si256(hx0, hy1), h11 = _mm256_xor_si256(hx1, hy1);
   const __m256 one = _mm256_set1_ps(1);

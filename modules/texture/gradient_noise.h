@@ -12,7 +12,7 @@ namespace maquette::texture {
 using Vec3d = std::array<double, 3>;
 
 // Noise in [-1, 1] at the n points position * scale + offset (lattice units: one node per unit,
-// period 2^32 along each axis), into out[0 .. n - 1].
+// period 2^32 along each axis; coordinates below 2^51 in magnitude), into out[0 .. n - 1].
 struct GradientNoiseInput {
   const Vec3d* position = nullptr;
   int n = 0;

@@ -33,6 +33,7 @@ OperatorSpec procedural_spec() {
   };
   s.halo = kInputHalo;
   s.refinable = true;  // a step's "refine": levels finer than the DEM (render_tile's refine)
+  s.writes_all_samples = true;  // render_tile writes every pixel, NaN where the DEM is missing
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
@@ -55,13 +56,14 @@ class Procedural : public CellOperator {
     std::map<std::string, const Tile<float>*> rasters;
     for (const std::string& q : kRasterPorts)
       if (data.inputs.count(q)) rasters[q] = &data.inputs.at(q);
-    // Straight into the output tiles (those of the right shape reused: render_tile writes every
-    // pixel).
+    // Straight into the output tiles (those of the right shape reused, the others made without
+    // a fill: render_tile writes every pixel).
     const int n = ctx.tile_size << ctx.refine;
     const auto target = [&](const char* port, int channels) -> float* {
       if (!data.wants(port)) return nullptr;
       Tile<float>& t = data.output(port);
-      if (t.size() != n || t.channels() != channels || t.halo() != 0) t = Tile<float>(n, channels);
+      if (t.size() != n || t.channels() != channels || t.halo() != 0)
+        t = Tile<float>::uninitialized(n, channels);
       return t.data().data();
     };
     render_tile(

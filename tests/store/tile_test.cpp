@@ -55,6 +55,21 @@ TEST(Tile, FromTileDropsTheHalo) {
   EXPECT_EQ(back.at(1, 1, 1), 11.5);
 }
 
+TEST(Tile, UninitializedHasTheShapeOfAFilledTile) {
+  Tile<float> t = Tile<float>::uninitialized(4, 3, 2);
+  const Tile<float> filled(4, 3, 2, 0.0f);
+  EXPECT_EQ(t.size(), 4);
+  EXPECT_EQ(t.channels(), 3);
+  EXPECT_EQ(t.halo(), 2);
+  EXPECT_EQ(t.stride(), 8);
+  EXPECT_EQ(t.data().size(), filled.data().size());
+  EXPECT_EQ(t.data().size(), 8u * 8u * 3u);
+  t.at(-2, -2, 0) = 1;  // the halo's corners are addressable
+  t.at(5, 5, 2) = 2;
+  EXPECT_EQ(t.data().front(), 1.0f);
+  EXPECT_EQ(t.data().back(), 2.0f);
+}
+
 TEST(Tile, RejectsWrongByteCount) {
   RawTile raw{DType::F32, 4, 1, std::vector<std::byte>(10)};
   EXPECT_THROW(to_tile<float>(raw), Error);

@@ -21,8 +21,8 @@ std::vector<float> noise(const std::vector<Vec3d>& p, double scale, const Vec3d&
 
 // Points on the globe (metres, as NoiseField passes them) at wavelengths of 17 m to 300 km, a few
 // exactly on lattice nodes and halfway between, and lattice coordinates beyond 2^31 and below 0
-// (where the cell wraps): the AVX2 path gives the same bits as the portable one, for any count
-// (8 at a time and a padded rest).
+// (where the cell wraps), up to 2^50: the AVX2 path gives the same bits as the portable one, for
+// any count (8 at a time and a padded rest).
 TEST(GradientNoise, SameBitsOnBothPaths) {
   if (!gradient_noise_has_avx2()) GTEST_SKIP() << "this processor has no AVX2: one path only";
   std::vector<Vec3d> p;
@@ -33,6 +33,7 @@ TEST(GradientNoise, SameBitsOnBothPaths) {
   }
   for (int k = -20; k < 20; ++k) p.push_back({k * 0.5, -k * 0.25, k * 1.0});
   p.push_back({3e9, -3e9, 5e9 + 0.75});
+  p.push_back({0x1p50 + 0.25, -0x1p50 + 0.5, 0x1p49 - 0.75});
   for (const double scale : {1 / 17.0, 1 / 50.0, 1 / 300.0, 1 / 3e5, 1.0})
     for (const uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
       const GradientNoiseInput in{p.data(), int(p.size()), scale, {0.37, 0.74, 1.11}, seed};
@@ -89,18 +90,28 @@ TEST(GradientNoise, EdgeGradientsAtTheNodes) {
   EXPECT_GT(differ, 1200);  // most nodes, most axes
 }
 
-// Codomain [-1, 1], used; the same value 2^32 nodes further along each axis (the period), and
-// continuity across a lattice plane.
+// Codomain [-1, 1], used; the same value 2^32 nodes further along each axis (the period) and
+// 2^50 nodes away (the largest lattice coordinates), and continuity across a lattice plane.
 TEST(GradientNoise, RangePeriodAndContinuity) {
   std::vector<Vec3d> p, shifted;
   for (int k = 0; k < 20000; ++k) {
     p.push_back({k * 0.125, k % 7 * 0.375 - 100, k % 13 * 0.625});
     shifted.push_back({p.back()[0] + 4294967296.0, p.back()[1] - 4294967296.0, p.back()[2]});
   }
-  const std::vector<float> v = noise(p, 1, {}, 7), w = noise(shifted, 1, {}, 7);
+  // Quarter nodes, exact 2^50 away too (the ulp there is 1/4).
+  std::vector<Vec3d> quarter, far;
+  for (const Vec3d& x : p) {
+    quarter.push_back(
+        {std::round(4 * x[0]) / 4, std::round(4 * x[1]) / 4, std::round(4 * x[2]) / 4});
+    far.push_back(
+        {quarter.back()[0] + 0x1p50, quarter.back()[1] - 0x1p50, quarter.back()[2] + 0x1p50});
+  }
+  const std::vector<float> v = noise(p, 1, {}, 7), w = noise(shifted, 1, {}, 7),
+                           q = noise(quarter, 1, {}, 7), f = noise(far, 1, {}, 7);
   float lo = 1, hi = -1;
   for (size_t k = 0; k < p.size(); ++k) {
     ASSERT_EQ(v[k], w[k]) << k;
+    ASSERT_EQ(q[k], f[k]) << k;
     lo = std::min(lo, v[k]), hi = std::max(hi, v[k]);
   }
   EXPECT_GE(lo, -1);

@@ -4,6 +4,7 @@
 // lattices coarser than the pixels (lattice_noise.h).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <thread>
 
@@ -164,6 +165,47 @@ TEST(Procedural, SlopeArcTangent) {
   ASSERT_EQ(s.ring, 1);
   for (int r = -1; r < 17; ++r)
     for (int c = -1; c < 17; ++c) EXPECT_NEAR(s.at(c, r), 56.3099325, 1e-5) << c << " " << r;
+}
+
+// Every sample of every output is written, NaN where the DEM is missing (the runner hands
+// texture.procedural uninitialized output tiles, OperatorSpec::writes_all_samples): rendered into
+// tiles pre-filled with a NaN of a payload nothing computes, none of it survives.
+TEST(Procedural, WritesEverySampleOfEveryOutput) {
+  const auto& op = static_cast<const CellOperator&>(texture_operator("texture.procedural"));
+  ASSERT_TRUE(op.spec().writes_all_samples);
+  const json params = full_params("texture.procedural", {{"model", kModel}});
+  const uint32_t sentinel = 0x7fc0dbad;
+  const int size = 16, missing_rows = 6;
+  const CellId cell = CellId::FromFaceColRow(2, 14, 8320, 8000);
+  for (const int refine : {0, 1}) {
+    Tile<float> dem =
+        with_halo(cell, size, kInputHalo, [&](CellId c) { return sample(c, size, relief); });
+    for (int r = -kInputHalo; r < missing_rows; ++r)  // a missing strip along the top
+      for (int c = -kInputHalo; c < size + kInputHalo; ++c) dem.at(c, r) = NAN;
+    CellData d;
+    d.inputs.emplace("dem", std::move(dem));
+    const int m = size << refine;
+    for (const OutputSpec& out : op.spec().outputs)
+      d.outputs.emplace(out.name, Tile<float>(m, out.channels, 0, std::bit_cast<float>(sentinel)));
+    op.run({.cell = cell,
+            .tile_size = size,
+            .refine = refine,
+            .grid = &default_grid(),
+            .params = &params},
+           d);
+    for (const auto& [port, tile] : d.outputs) {
+      ASSERT_EQ(tile.size(), m) << port;
+      size_t left = 0, nan = 0;
+      for (const float v : tile.data()) {
+        left += std::bit_cast<uint32_t>(v) == sentinel;
+        nan += std::isnan(v);
+      }
+      EXPECT_EQ(left, 0u) << port << ", refine " << refine;
+      // NaN over the missing strip, values below it.
+      EXPECT_GE(nan, size_t(missing_rows << refine) * size_t(m) * size_t(tile.channels())) << port;
+      EXPECT_LT(nan, tile.data().size()) << port;
+    }
+  }
 }
 
 TEST(Procedural, ErrorsNameTheInput) {
