@@ -92,8 +92,9 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   // A new store is created while the ingest is planned (its schema and fsync overlap the
-  // planning); if the planning refuses the job, the new file is removed again, so that a refused
-  // ingest leaves no store behind, as an existing store is left untouched.
+  // planning); if the planning refuses the job, a store this process created is removed again,
+  // so that a refused ingest leaves no store behind, as an existing store is left untouched (one
+  // another process created meanwhile included: Store::created).
   std::error_code ec;
   const bool fresh = !std::filesystem::exists(store_path, ec) && !ec;
   std::future<std::unique_ptr<Store>> created;
@@ -106,9 +107,10 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   } catch (...) {
     if (fresh) {
       try {
-        created.get();  // closed before it is removed
-        for (const char* suffix : {"", "-wal", "-shm"})
-          std::filesystem::remove(store_path + suffix, ec);
+        const bool ours = created.get()->created();  // and closed before it is removed
+        if (ours)
+          for (const char* suffix : {"", "-wal", "-shm"})
+            std::filesystem::remove(store_path + suffix, ec);
       } catch (...) {  // not created: nothing to remove; the planning's error is the one to tell
       }
     }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "runtime/plugin.h"
 
 namespace maquette {
 namespace fs = std::filesystem;
@@ -23,9 +24,7 @@ std::vector<std::string> module_search_path() {
       start = end + 1;
     }
   }
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) dirs.push_back((exe.parent_path().parent_path() / "lib" / "maquette").string());
+  dirs.push_back((program_prefix() / "lib" / "maquette").string());
   return dirs;
 }
 

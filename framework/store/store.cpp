@@ -35,7 +35,7 @@ int sync_file(const std::string& path) {
 // Builds a new store under a temporary name and links it into place, so that a process killed
 // at any moment never leaves a file at `path` without the schema (at worst an orphaned
 // PATH.creating.PID next to it).
-void create_store_file(const std::string& path) {
+bool create_store_file(const std::string& path) {
   const std::string tmp = path + ".creating." + std::to_string(::getpid());
   {
     sqlite::Connection conn(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX);
@@ -47,12 +47,13 @@ void create_store_file(const std::string& path) {
     create_schema(conn);
   }  // closing the last connection checkpoints and removes the WAL
   // Whole on the disk before it is linked. link() rather than rename(): if another process
-  // created the store meanwhile, keep theirs.
+  // created the store meanwhile, keep theirs (and return false).
   int err = sync_file(tmp);
   if (err == 0 && ::link(tmp.c_str(), path.c_str()) != 0) err = errno;
   ::unlink(tmp.c_str());
   if (err != 0 && err != EEXIST)
     throw Error("cannot create store " + path + ": " + std::strerror(err));
+  return err == 0;
 }
 
 }  // namespace
@@ -117,7 +118,7 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
 
   auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
   try {
-    if (!exists) create_store_file(path);
+    if (!exists) impl->created = create_store_file(path);
     if (mode == Mode::ReadOnly) {
       check_schema(*impl->readers.borrow());
     } else {
@@ -140,6 +141,7 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
 
 const std::string& Store::path() const { return impl_->path; }
 bool Store::read_only() const { return impl_->read_only; }
+bool Store::created() const { return impl_->created; }
 
 int64_t Store::file_size() const {
   int64_t total = 0;

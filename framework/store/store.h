@@ -87,6 +87,9 @@ class Store {
 
   const std::string& path() const;
   bool read_only() const;
+  // True when this open made the file (Mode::Create on a path where no store was, and no other
+  // process linked one there first): only then may a caller that gives up remove it.
+  bool created() const;
 
   // Layers. create_layer fails if the name exists with a different definition, and is a no-op
   // when it exists with the same one (so re-running a step is idempotent).

@@ -147,6 +147,14 @@ TEST(StoreOpen, ReadOnlyStoreRefusesWrites) {
   expect_error([&] { Store::Batch batch(*store); }, {"read-only"});
 }
 
+TEST(StoreOpen, CreatedOnlyByTheOpenThatMadeTheFile) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  EXPECT_TRUE(Store::open(path, Store::Mode::Create)->created());
+  EXPECT_FALSE(Store::open(path, Store::Mode::Create)->created());
+  EXPECT_FALSE(Store::open(path, Store::Mode::ReadWrite)->created());
+}
+
 TEST(StoreLayers, CreateAndReopen) {
   TempDir dir;
   const std::string path = dir.file("s.mqs");
