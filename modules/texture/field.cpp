@@ -13,16 +13,17 @@ namespace {
 
 constexpr double kAuthalicRadius = 6371007.180918;
 
-// Uniform cubic B-spline weights of taps i-1 .. i+2 at fraction f.
-std::array<double, 4> bspline_weights(double f) {
+// Uniform cubic B-spline weights of taps i-1 .. i+2 at fraction f (exact in double, then
+// rounded: the sums are in float).
+std::array<float, 4> bspline_weights(double f) {
   const double f2 = f * f, f3 = f2 * f;
-  return {(1 - f) * (1 - f) * (1 - f) / 6, (3 * f3 - 6 * f2 + 4) / 6,
-          (-3 * f3 + 3 * f2 + 3 * f + 1) / 6, f3 / 6};
+  return {float((1 - f) * (1 - f) * (1 - f) / 6), float((3 * f3 - 6 * f2 + 4) / 6),
+          float((-3 * f3 + 3 * f2 + 3 * f + 1) / 6), float(f3 / 6)};
 }
 
 struct Taps {
   int first = 0;  // input pixel of the first tap
-  std::array<double, 4> w{};
+  std::array<float, 4> w{};
 };
 
 // Target pixel t (of a tile 2^refine times finer) -> input taps; input pixel centres are at
@@ -34,46 +35,46 @@ Taps taps(int t, int refine) {
 
 }  // namespace
 
-// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
+// In float (heights to a fraction of a millimetre), vectorized for AVX2 where the CPU has it
+// (the same operations, so the same bits).
 __attribute__((target_clones("avx2", "default"))) void upsample(const Tile<float>& tile, int refine,
                                                                 int ring, Plane& out) {
   const int m = tile.size() << refine;
   if (tile.halo() < kInputHalo)
     throw Error("texture: input tiles need a halo of " + std::to_string(kInputHalo) + " pixels");
   out.reshape(m, ring);
-  std::vector<Taps> t(size_t(out.side()));
-  for (int i = 0; i < out.side(); ++i) t[size_t(i)] = taps(i - ring, refine);
+  const size_t side = size_t(out.side());
+  std::vector<Taps> t(side);
+  for (size_t i = 0; i < side; ++i) t[i] = taps(int(i) - ring, refine);
   // Separable: rows of the input first (at target columns), then columns.
   const int rows0 = t.front().first, rows1 = t.back().first + 4;
-  thread_local std::vector<double> horizontal;  // reused, every value written
-  horizontal.resize(size_t(rows1 - rows0) * size_t(out.side()));
+  thread_local std::vector<float> horizontal;  // reused, every value written
+  horizontal.resize(size_t(rows1 - rows0) * side);
   // The target columns c of the same phase c mod 2^refine share the weights, their taps step
-  // by one input pixel: a loop per phase (vectorized), over the input row in double.
-  const int phases = std::min(1 << refine, out.side()), cols0 = t.front().first,
-            cols1 = t.back().first + 4;
-  thread_local std::vector<double> input;
+  // by one input pixel: a loop per phase (vectorized).
+  const size_t phases = std::min(size_t(1) << refine, side);
+  const int cols0 = t.front().first, cols1 = t.back().first + 4;
+  thread_local std::vector<float> input;  // the row's first channel
   input.resize(size_t(cols1 - cols0));
   for (int r = rows0; r < rows1; ++r) {
     for (int i = cols0; i < cols1; ++i) input[size_t(i - cols0)] = tile.at(i, r);
-    double* h = &horizontal[size_t(r - rows0) * size_t(out.side())];
-    for (int p = 0; p < phases; ++p) {
-      const double w0 = t[size_t(p)].w[0], w1 = t[size_t(p)].w[1], w2 = t[size_t(p)].w[2],
-                   w3 = t[size_t(p)].w[3];
-      const double* x = &input[size_t(t[size_t(p)].first - cols0)];
-      const int count = (out.side() - p + phases - 1) / phases;
-      for (int j = 0; j < count; ++j)  // as a sum from 0 over the taps in order: the same bits
-        h[p + j * phases] = 0 + w0 * x[j] + w1 * x[j + 1] + w2 * x[j + 2] + w3 * x[j + 3];
+    float* h = &horizontal[size_t(r - rows0) * side];
+    for (size_t p = 0; p < phases; ++p) {
+      const float w0 = t[p].w[0], w1 = t[p].w[1], w2 = t[p].w[2], w3 = t[p].w[3];
+      const float* x = &input[size_t(t[p].first - cols0)];
+      const size_t count = (side - p + phases - 1) / phases;
+      for (size_t j = 0; j < count; ++j)
+        h[p + j * phases] = w0 * x[j] + w1 * x[j + 1] + w2 * x[j + 2] + w3 * x[j + 3];
     }
   }
-  for (int r = 0; r < out.side(); ++r) {
-    const Taps& tr = t[size_t(r)];
-    for (int c = 0; c < out.side(); ++c) {
-      double s = 0;
-      for (int k = 0; k < 4; ++k)
-        s += tr.w[size_t(k)] *
-             horizontal[size_t(tr.first + k - rows0) * size_t(out.side()) + size_t(c)];
-      out.v[size_t(r) * size_t(out.side()) + size_t(c)] = float(s);  // NaN taps propagate
-    }
+  for (size_t r = 0; r < side; ++r) {
+    const Taps& tr = t[r];
+    const float* h0 = &horizontal[size_t(tr.first - rows0) * side];
+    const float *h1 = h0 + side, *h2 = h1 + side, *h3 = h2 + side;
+    const float w0 = tr.w[0], w1 = tr.w[1], w2 = tr.w[2], w3 = tr.w[3];
+    float* o = &out.v[r * side];
+    for (size_t c = 0; c < side; ++c)  // NaN taps propagate
+      o[c] = w0 * h0[c] + w1 * h1[c] + w2 * h2[c] + w3 * h3[c];
   }
 }
 
@@ -83,20 +84,20 @@ Plane upsample(const Tile<float>& tile, int refine, int ring) {
   return out;
 }
 
-// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
+// In float, vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
 __attribute__((target_clones("avx2", "default"))) void slope_degrees(const Plane& h, double pixel_m,
                                                                      Plane& s) {
   s.reshape(h.size, h.ring - 1);
-  const double k = 1 / (2 * pixel_m), deg = 180 / M_PI;
+  const float k = float(1 / (2 * pixel_m)), deg = float(180 / M_PI);
   const size_t side = size_t(s.side()), h_side = size_t(h.side());
   for (size_t r = 0; r < side; ++r) {
     const float* mid = &h.v[(r + 1) * h_side + 1];
     const float *up = mid - h_side, *down = mid + h_side, *left = mid - 1, *right = mid + 1;
     float* out = &s.v[r * side];
     for (size_t c = 0; c < side; ++c) {
-      const double gx = (right[c] - left[c]) * k;
-      const double gy = (down[c] - up[c]) * k;
-      out[c] = float(atan_nonnegative(std::sqrt(gx * gx + gy * gy)) * deg);  // not hypot: slow
+      const float gx = (right[c] - left[c]) * k;
+      const float gy = (down[c] - up[c]) * k;
+      out[c] = atan_nonnegative(std::sqrt(gx * gx + gy * gy)) * deg;  // not hypot: slow
     }
   }
 }
@@ -137,14 +138,13 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
 
 // Vectorized for AVX2 where the CPU has it (the same operations, so the same bits): the pixels
 // of one lattice cell at a time, whose 4 nodes are then constant, a coordinate at a time.
-__attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row(int col0, int step,
-                                                                                 int n, int row,
-                                                                                 Vec3d* out) const {
+__attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row(
+    int col0, int step, int n, int row, const std::array<double*, 3>& out) const {
   const int64_t gr = gr0_ + row, mask = (int64_t(1) << shift_) - 1;
   const double inverse_step = 1 / double(mask + 1);  // exact: a power of two
   const double fy = double(gr & mask) * inverse_step;
   const Vec3d* above = &node_[size_t((gr >> shift_) - nr0_) * size_t(nodes_)];
-  std::array<double, kMaxNodeSpacing> fx, value;
+  std::array<double, kMaxNodeSpacing> fx;
   for (int k = 0; k < n;) {
     const int64_t gc = gc0_ + col0 + int64_t(k) * step;
     const Vec3d *a = above + ((gc >> shift_) - nc0_), *b = a + nodes_;
@@ -152,9 +152,8 @@ __attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row
     for (int j = 0; j < count; ++j) fx[size_t(j)] = double(first + j * step) * inverse_step;
     for (size_t c = 0; c < 3; ++c) {
       const double a0 = a[0][c], a1 = a[1][c], b0 = b[0][c], b1 = b[1][c];
-      for (int j = 0; j < count; ++j)
-        value[size_t(j)] = bilinear(a0, a1, b0, b1, fx[size_t(j)], fy);
-      for (int j = 0; j < count; ++j) out[k + j][c] = value[size_t(j)];
+      double* o = out[c] + k;
+      for (int j = 0; j < count; ++j) o[j] = bilinear(a0, a1, b0, b1, fx[size_t(j)], fy);
     }
     k += count;
   }

@@ -6,6 +6,7 @@
 // border come from the same values its neighbours compute (no seams).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -43,32 +44,25 @@ struct Plane {
 Plane upsample(const Tile<float>& tile, int refine, int ring);
 void upsample(const Tile<float>& tile, int refine, int ring, Plane& out);  // reusing `out`
 
-// Slope in degrees, with one ring less than `height` (central differences over pixel_m).
-// The arc tangent is atan_nonnegative: vectorizable, unlike std::atan.
+// Slope in degrees, with one ring less than `height` (central differences over pixel_m), in
+// float: the arc tangent is atan_nonnegative (vectorizable, unlike std::atan).
 Plane slope_degrees(const Plane& height, double pixel_m);
 void slope_degrees(const Plane& height, double pixel_m, Plane& out);  // reusing `out`
 
-// The arc tangent of x >= 0 without branches (Cephes' range reduction and rational
-// approximation; within 2 ulp of std::atan, tested). NaN for NaN.
-// Inlined everywhere (also into the AVX2 clones, where it vectorizes).
-[[gnu::always_inline]] inline double atan_nonnegative(double x) {
-  constexpr double kP[] = {-8.750608600031904122785E-1, -1.615753718733365076637E1,
-                           -7.500855792314704667340E1, -1.228866684490136173410E2,
-                           -6.485021904942025371773E1};
-  constexpr double kQ[] = {2.485846490142306297962E1, 1.650270098316988542046E2,
-                           4.328810604912902668951E2, 4.853903996359136964868E2,
-                           1.945506571482613964425E2};
-  constexpr double kTan3PiOver8 = 2.41421356237309504880, kMoreBits = 6.123233995736765886130E-17;
+// The arc tangent of x >= 0 in float without branches (Cephes' atanf: range reduction and a
+// polynomial; within 3 ulp of the exact value, tested). NaN for NaN.
+// Inlined everywhere (also into the AVX2 clones, where it vectorizes 8 lanes wide).
+[[gnu::always_inline]] inline float atan_nonnegative(float x) {
+  constexpr float kTan3PiOver8 = 2.414213562373095f, kTanPiOver8 = 0.4142135623730950f;
   // Every candidate computed, then selected: no branch.
-  const bool big = x > kTan3PiOver8, middle = x > 0.66;
-  const double inverse = -1 / x, shifted = (x - 1) / (x + 1);
-  const double t = big ? inverse : middle ? shifted : x;
-  const double base = big ? M_PI_2 : middle ? M_PI_4 : 0;
-  const double more = big ? kMoreBits : middle ? 0.5 * kMoreBits : 0;
-  const double z = t * t;
-  const double p = (((kP[0] * z + kP[1]) * z + kP[2]) * z + kP[3]) * z + kP[4];
-  const double q = ((((z + kQ[0]) * z + kQ[1]) * z + kQ[2]) * z + kQ[3]) * z + kQ[4];
-  return base + (t * (z * p / q) + t + more);
+  const bool big = x > kTan3PiOver8, middle = x > kTanPiOver8;
+  const float inverse = -1 / x, shifted = (x - 1) / (x + 1);
+  const float t = big ? inverse : middle ? shifted : x;
+  const float base = big ? float(M_PI_2) : middle ? float(M_PI_4) : 0.0f;
+  const float z = t * t;
+  const float p =
+      ((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f;
+  return base + (p * z * t + t);
 }
 
 // Positions (metres, on the sphere of the authalic radius) of the target pixels of `cell` and
@@ -81,9 +75,9 @@ class PixelPositions {
   PixelPositions(const Grid& grid, CellId cell, int size, int refine, int ring);
   // Of target pixel (col, row), -ring <= col, row < M + ring.
   Vec3d at(int col, int row) const;
-  // Of target pixels (col0 + k step, row), k < n, into out[k]: the same bits as at() (the same
-  // formula per pixel), vectorized; the noise's lattice nodes along a node row.
-  void along_row(int col0, int step, int n, int row, Vec3d* out) const;
+  // Of target pixels (col0 + k step, row), k < n, into out[axis][k]: the same bits as at() (the
+  // same formula per pixel), vectorized; the noise's lattice nodes along a node row.
+  void along_row(int col0, int step, int n, int row, const std::array<double*, 3>& out) const;
 
  private:
   // Bilinear between the values a0, a1 (nodes above) and b0, b1 (below) at fractions fx, fy of

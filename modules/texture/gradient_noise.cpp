@@ -56,9 +56,12 @@ Axis axis(double x) {
   return {uint32_t(std::bit_cast<uint64_t>(f + kCellBits)) ^ kCellOffset, float(x - f)};
 }
 
-float noise_at(const Vec3d& p, const GradientNoiseInput& in) {
-  const Axis ax = axis(p[0] * in.scale + in.offset[0]), ay = axis(p[1] * in.scale + in.offset[1]),
-             az = axis(p[2] * in.scale + in.offset[2]);
+// Point k of the input.
+float noise_at(const GradientNoiseInput& in, int k) {
+  const Coordinates& p = in.position;
+  const Axis ax = axis(p[0][k] * in.scale + in.offset[0]),
+             ay = axis(p[1][k] * in.scale + in.offset[1]),
+             az = axis(p[2][k] * in.scale + in.offset[2]);
   const uint32_t x0 = ax.cell * kPrimeX, y0 = ay.cell * kPrimeY, z0 = az.cell * kPrimeZ;
   const uint32_t hx0 = spread(x0), hx1 = spread(x0 + kPrimeX);
   const uint32_t hy0 = spread(y0), hy1 = spread(y0 + kPrimeY);
@@ -94,19 +97,16 @@ AVX2 __m256i cells8(__m256d f0, __m256d f1) {
       _mm256_set1_epi32(int(kCellOffset)));
 }
 
-// Axis a of points p[0 .. 7].
-AVX2 Axis8 axis8(const Vec3d* p, int a, const GradientNoiseInput& in) {
+// Axis a of the 8 points from k on.
+AVX2 Axis8 axis8(const GradientNoiseInput& in, int k, int a) {
   const __m256d scale = _mm256_set1_pd(in.scale), offset = _mm256_set1_pd(in.offset[size_t(a)]);
+  const double* x = in.position[size_t(a)] + k;
   __m256d f[2];
   __m128 t[2];
   for (int half = 0; half < 2; ++half) {
-    const Vec3d* q = p + 4 * half;
-    const __m256d x = _mm256_add_pd(_mm256_mul_pd(_mm256_set_pd(q[3][size_t(a)], q[2][size_t(a)],
-                                                                q[1][size_t(a)], q[0][size_t(a)]),
-                                                  scale),
-                                    offset);
-    f[half] = _mm256_floor_pd(x);
-    t[half] = _mm256_cvtpd_ps(_mm256_sub_pd(x, f[half]));
+    const __m256d v = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(x + 4 * half), scale), offset);
+    f[half] = _mm256_floor_pd(v);
+    t[half] = _mm256_cvtpd_ps(_mm256_sub_pd(v, f[half]));
   }
   return {cells8(f[0], f[1]), _mm256_set_m128(t[1], t[0])};
 }
@@ -143,8 +143,9 @@ AVX2 __m256 lerp8(__m256 a, __m256 b, __m256 t) {
   return _mm256_add_ps(a, _mm256_mul_ps(t, _mm256_sub_ps(b, a)));
 }
 
-AVX2 __m256 noise8(const Vec3d* p, const GradientNoiseInput& in) {
-  const Axis8 ax = axis8(p, 0, in), ay = axis8(p, 1, in), az = axis8(p, 2, in);
+// The 8 points from k on.
+AVX2 __m256 noise8(const GradientNoiseInput& in, int k) {
+  const Axis8 ax = axis8(in, k, 0), ay = axis8(in, k, 1), az = axis8(in, k, 2);
   const __m256i px = _mm256_set1_epi32(int(kPrimeX)), py = _mm256_set1_epi32(int(kPrimeY)),
                 pz = _mm256_set1_epi32(int(kPrimeZ)), seed = _mm256_set1_epi32(int(in.seed));
   const __m256i x0 = _mm256_mullo_epi32(ax.cell, px), y0 = _mm256_mullo_epi32(ay.cell, py),
@@ -171,20 +172,23 @@ AVX2 __m256 noise8(const Vec3d* p, const GradientNoiseInput& in) {
 }  // namespace
 
 void gradient_noise_portable(const GradientNoiseInput& in, float* out) {
-  for (int k = 0; k < in.n; ++k) out[k] = noise_at(in.position[k], in);
+  for (int k = 0; k < in.n; ++k) out[k] = noise_at(in, k);
 }
 
 bool gradient_noise_has_avx2() { return __builtin_cpu_supports("avx2"); }
 
 AVX2 void gradient_noise_avx2(const GradientNoiseInput& in, float* out) {
   int k = 0;
-  for (; k + 8 <= in.n; k += 8) _mm256_storeu_ps(out + k, noise8(in.position + k, in));
+  for (; k + 8 <= in.n; k += 8) _mm256_storeu_ps(out + k, noise8(in, k));
   if (k == in.n) return;
   // The last points, padded with copies of the last one.
-  Vec3d rest[8];
+  std::array<std::array<double, 8>, 3> rest;
+  for (size_t a = 0; a < 3; ++a)
+    for (int m = 0; m < 8; ++m) rest[a][size_t(m)] = in.position[a][std::min(k + m, in.n - 1)];
+  GradientNoiseInput padded = in;
+  padded.position = {rest[0].data(), rest[1].data(), rest[2].data()};
   float value[8];
-  for (int m = 0; m < 8; ++m) rest[m] = in.position[std::min(k + m, in.n - 1)];
-  _mm256_storeu_ps(value, noise8(rest, in));
+  _mm256_storeu_ps(value, noise8(padded, 0));
   std::copy(value, value + (in.n - k), out + k);
 }
 

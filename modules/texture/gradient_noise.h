@@ -5,16 +5,37 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace maquette::texture {
 
 using Vec3d = std::array<double, 3>;
 
+// Points as one array of coordinates per axis (point k is (x[k], y[k], z[k])), so that the
+// kernel loads an axis of 4 points as one vector.
+using Coordinates = std::array<const double*, 3>;
+
+// Points stored that way.
+struct Points {
+  std::array<std::vector<double>, 3> axis;
+
+  size_t size() const { return axis[0].size(); }
+  void resize(size_t n) {
+    for (std::vector<double>& a : axis) a.resize(n);
+  }
+  void push_back(const Vec3d& p) {
+    for (size_t a = 0; a < 3; ++a) axis[a].push_back(p[a]);
+  }
+  Coordinates from(size_t k) const { return {&axis[0][k], &axis[1][k], &axis[2][k]}; }
+  std::array<double*, 3> to(size_t k) { return {&axis[0][k], &axis[1][k], &axis[2][k]}; }
+};
+
 // Noise in [-1, 1] at the n points position * scale + offset (lattice units: one node per unit,
 // period 2^32 along each axis; coordinates below 2^51 in magnitude), into out[0 .. n - 1].
 struct GradientNoiseInput {
-  const Vec3d* position = nullptr;
+  Coordinates position{};
   int n = 0;
   double scale = 1;
   Vec3d offset{};

@@ -87,7 +87,7 @@ LatticeNoise::LatticeNoise(const NoiseField& field, const NoiseGeometry& geometr
   if (!finest) merged_ = lattices_.size();
 }
 
-void LatticeNoise::sum(const Lattice& l, const Vec3d* position, int n, float* out) const {
+void LatticeNoise::sum(const Lattice& l, Coordinates position, int n, float* out) const {
   std::array<float, kBatch> octave;
   std::fill(out, out + n, 0.0f);
   for (const int o : l.octaves) {
@@ -130,11 +130,11 @@ void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row)
   // All of i0 .. i1 (nodes already there between missing ones get the same bits again): their
   // positions at once, the noise a batch at a time.
   position_.resize(size_t(i1 - i0 + 1));
-  g_.position->along_row(column(i0), 1 << l.shift, i1 - i0 + 1, r, position_.data());
+  g_.position->along_row(column(i0), 1 << l.shift, i1 - i0 + 1, r, position_.to(0));
   std::array<float, kBatch> value;
   for (int i = i0; i <= i1; i += kBatch) {
     const int n = std::min(kBatch, i1 - i + 1);
-    sum(l, &position_[size_t(i - i0)], n, value.data());
+    sum(l, position_.from(size_t(i - i0)), n, value.data());
     for (int k = 0; k < n; ++k)
       row[i + k] = finest ? value[size_t(k)] + coarser_[size_t(i + k - i0)] : value[size_t(k)];
   }
@@ -192,11 +192,11 @@ void LatticeNoise::row(int r, int c0, int c1, float* out) {
     Lattice& l = lattices_[m];
     if (l.shift == 0) {  // every pixel is a node
       position_.resize(n);
-      g_.position->along_row(c0, 1, int(n), r, position_.data());
+      g_.position->along_row(c0, 1, int(n), r, position_.to(0));
       std::array<float, kBatch> value;
       for (int c = c0; c <= c1; c += kBatch) {
         const int n = std::min(kBatch, c1 - c + 1);
-        sum(l, &position_[size_t(c - c0)], n, value.data());
+        sum(l, position_.from(size_t(c - c0)), n, value.data());
         for (int k = 0; k < n; ++k) sum_[size_t(c - c0 + k)] += value[size_t(k)];
       }
     } else {

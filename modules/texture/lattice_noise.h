@@ -67,10 +67,10 @@ class LatticeNoise {
     std::vector<float> weights;  // 4 per offset in 0 .. spacing - 1
   };
 
-  static constexpr int kBatch = 16;  // points whose noise is evaluated together (noise.h)
+  static constexpr int kBatch = 64;  // points whose noise is evaluated together (noise.h)
 
   // The weighted sum of the lattice's octaves at n <= kBatch positions.
-  void sum(const Lattice& l, const Vec3d* position, int n, float* out) const;
+  void sum(const Lattice& l, Coordinates position, int n, float* out) const;
   // Node row j, its nodes i0 .. i1 evaluated (those of the finest lattice with the coarser
   // lattices interpolated at them added).
   const float* node_row(Lattice& l, int j, int i0, int i1);
@@ -88,7 +88,7 @@ class LatticeNoise {
   std::vector<Lattice> lattices_;
   size_t merged_ = 0;
   std::vector<float> sum_, vertical_, horizontal_, coarser_;
-  std::vector<Vec3d> position_;  // of the nodes (or pixels) being evaluated
+  Points position_;  // of the nodes (or pixels) being evaluated
 };
 
 }  // namespace maquette::texture

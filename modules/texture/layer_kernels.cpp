@@ -35,10 +35,10 @@ size_t constrain_plain(const ConstrainRow& row, const uint16_t* blocks, size_t n
       if (!any) break;  // the products stay 0
       any = false;
       for (size_t i = 0; i < kBlock; ++i) {
-        const float x = q.coordinate
-                            ? q.coordinate[c0 + i]
-                            : table_coordinate(float(row.height[c0 + i]) * row.height_scale +
-                                               row.height_offset);
+        const float x =
+            q.coordinate
+                ? q.coordinate[c0 + i]
+                : table_coordinate(row.height[c0 + i] * row.height_scale + row.height_offset);
         const int j = int(x);  // lookup_at (surface.h) on the pair
         const float* b = q.pairs + 2 * j;
         p[i] = p[i] * (b[0] + (x - float(j)) * (b[1] - b[0]));
@@ -61,7 +61,7 @@ void blend_plain(const BlendRow& row, const uint16_t* blocks, size_t n) {
                        row.parent[c];
       row.coverage[c] = cv;
       for (size_t i = 0; i < 3; ++i) row.rgb[i][c] = (1 - cv) * row.rgb[i][c] + cv * row.colour[i];
-      row.height[c] += double(cv * row.roughness_m * nx);
+      row.height[c] += cv * row.roughness_m * nx;
       if (cv >= 0.5f) row.dominant[c] = row.layer;
     }
   }
@@ -110,11 +110,8 @@ __attribute__((target("avx2"))) size_t constrain_avx2(const ConstrainRow& row,
       if (q.coordinate) {
         x = _mm256_loadu_ps(q.coordinate + c0);
       } else {  // the height's
-        x = coordinate8(_mm256_add_ps(
-            _mm256_mul_ps(_mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(row.height + c0 + 4)),
-                                          _mm256_cvtpd_ps(_mm256_loadu_pd(row.height + c0))),
-                          scale),
-            offset));
+        x = coordinate8(
+            _mm256_add_ps(_mm256_mul_ps(_mm256_loadu_ps(row.height + c0), scale), offset));
       }
       const __m256i i = _mm256_cvttps_epi32(x);
       // The pairs of pixels 0 to 3 and 4 to 7 (masked gathers: GCC 12 warns about the others'
@@ -163,11 +160,8 @@ __attribute__((target("avx2"))) void blend_avx2(const BlendRow& row, const uint1
                                           _mm256_mul_ps(cv, _mm256_set1_ps(row.colour[i]))));
     }
     const __m256 dh = _mm256_mul_ps(_mm256_mul_ps(cv, roughness), nx);
-    double* h = row.height + c0;
-    _mm256_storeu_pd(
-        h, _mm256_add_pd(_mm256_loadu_pd(h), _mm256_cvtps_pd(_mm256_castps256_ps128(dh))));
-    _mm256_storeu_pd(h + 4, _mm256_add_pd(_mm256_loadu_pd(h + 4),
-                                          _mm256_cvtps_pd(_mm256_extractf128_ps(dh, 1))));
+    float* h = row.height + c0;
+    _mm256_storeu_ps(h, _mm256_add_ps(_mm256_loadu_ps(h), dh));
     __m256i* dominant = reinterpret_cast<__m256i*>(row.dominant + c0);
     _mm256_storeu_si256(dominant, _mm256_castps_si256(_mm256_blendv_ps(
                                       _mm256_castsi256_ps(_mm256_loadu_si256(dominant)), layer,

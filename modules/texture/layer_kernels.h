@@ -23,7 +23,7 @@ PairTable pair_table(const PaddedTable& t);
 
 // One constraint of a layer along the row: its table and the pixels' coordinates in it, or no
 // coordinates: those of the current height, computed here as
-// table_coordinate(float(height) * scale + offset).
+// table_coordinate(height * scale + offset).
 struct ConstraintRow {
   const float* pairs = nullptr;  // a PairTable
   const float* coordinate = nullptr;
@@ -32,7 +32,7 @@ struct ConstraintRow {
 struct ConstrainRow {
   const float* parent = nullptr;  // the parent's coverage (the root: 1 where the height is valid)
   std::span<const ConstraintRow> constraints;
-  const double* height = nullptr;
+  const float* height = nullptr;
   float height_scale = 1, height_offset = 0;
   float* product = nullptr;  // out: [parent > 0] times the product of the constraints
 };
@@ -46,7 +46,7 @@ struct BlendRow {
   const float* noise = nullptr;    // the layer's noise, or nullptr: none (0)
   float* coverage = nullptr;       // out: C = clamp((b + s N) product) parent
   std::array<float*, 3> rgb{};     // in and out, one row per channel
-  double* height = nullptr;        // in and out: H + C B N
+  float* height = nullptr;         // in and out: H + C B N
   int* dominant = nullptr;         // out: `layer` where C >= 0.5
 };
 

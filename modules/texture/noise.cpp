@@ -27,7 +27,7 @@ NoiseField::NoiseField(const NoiseParams& params) {
   }
 }
 
-void NoiseField::octave(int o, const Vec3d* p, int n, float* out) const {
+void NoiseField::octave(int o, Coordinates p, int n, float* out) const {
   // Octaves shifted apart so their lattices do not line up.
   const double shift = 0.37 * o;
   gradient_noise({p, n, scale_[size_t(o)], {shift, 2 * shift, 3 * shift}, seed_[size_t(o)]}, out);
@@ -35,7 +35,7 @@ void NoiseField::octave(int o, const Vec3d* p, int n, float* out) const {
 
 float NoiseField::octave(int o, const Vec3d& p) const {
   float v;
-  octave(o, &p, 1, &v);
+  octave(o, {&p[0], &p[1], &p[2]}, 1, &v);
   return v;
 }
 

@@ -26,7 +26,7 @@ class NoiseField {
   // clamp(sum_o amplitude(o) octave(o, p) / norm(), -1, 1).
   int octaves() const { return int(amplitude_.size()); }
   float octave(int o, const Vec3d& position_m) const;
-  void octave(int o, const Vec3d* position_m, int n, float* out) const;  // at n positions
+  void octave(int o, Coordinates position_m, int n, float* out) const;  // at n positions
   double wavelength_m(int o) const { return 1 / scale_[size_t(o)]; }
   double amplitude(int o) const { return amplitude_[size_t(o)]; }
   double norm() const { return norm_; }

@@ -53,7 +53,7 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
   // contribute more than its parent); coverage is only defined in those blocks.
   const LayerKernels& kernels = fastest_kernels();
   const size_t blocks = (side + kBlock - 1) / kBlock, padded_side = blocks * kBlock;
-  std::vector<double> h(padded_side, kNaN);  // the padding is a missing height
+  std::vector<float> h(padded_side, kNaN);  // the padding is a missing height
   std::vector<float> valid(padded_side), rgb(3 * padded_side), coverage(layers * padded_side),
       product(padded_side), n_x(padded_side);
   std::vector<int> dominant(padded_side);  // the dominant layer's class (-1: none)
@@ -149,7 +149,7 @@ __attribute__((target_clones("avx2", "default"))) void evaluate(const Model& mod
                      dominant.data()},
                     active, n);
     }
-    for (size_t c = 0; c < side; ++c) out.height[row + c] = valid[c] > 0 ? float(h[c]) : kNaN;
+    for (size_t c = 0; c < side; ++c) out.height[row + c] = valid[c] > 0 ? h[c] : kNaN;
     if (r < first || r >= first + out_side) continue;
     const size_t out_row = (r - first) * out_side;
     if (out.rgb)
@@ -169,11 +169,11 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
   return s;
 }
 
-// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits; the sqrt
-// vectorizes since this file does not set errno, CMakeLists.txt).
+// In float, vectorized for AVX2 where the CPU has it (the same operations, so the same bits; the
+// sqrt vectorizes since this file does not set errno, CMakeLists.txt).
 __attribute__((target_clones("avx2", "default"))) void normals(const Plane& h, double pixel_m,
                                                                float* out) {
-  const double k = 1 / (2 * pixel_m);
+  const float k = float(1 / (2 * pixel_m));
   const size_t m = size_t(h.size);
   for (int r = 0; r < h.size; ++r) {
     const size_t side = size_t(h.side());
@@ -181,11 +181,10 @@ __attribute__((target_clones("avx2", "default"))) void normals(const Plane& h, d
     const float *up = mid - side, *down = mid + side, *left = mid - 1, *right = mid + 1;
     float* o = out + size_t(r) * m * 3;
     for (size_t c = 0; c < m; ++c) {
-      const double gx = (right[c] - left[c]) * k;
-      const double gy = (up[c] - down[c]) * k;  // rows grow downwards
-      const double norm = std::sqrt(gx * gx + gy * gy + 1);
-      o[3 * c] = float(-gx / norm), o[3 * c + 1] = float(-gy / norm),
-            o[3 * c + 2] = float(1 / norm);
+      const float gx = (right[c] - left[c]) * k;
+      const float gy = (up[c] - down[c]) * k;  // rows grow downwards
+      const float inverse_norm = 1 / std::sqrt(gx * gx + gy * gy + 1);
+      o[3 * c] = -gx * inverse_norm, o[3 * c + 1] = -gy * inverse_norm, o[3 * c + 2] = inverse_norm;
     }
   }
 }

@@ -53,11 +53,12 @@ TEST(PixelPositions, AlongRowSameBitsAsAt) {
       for (const int step : {1, 2, 4, 8})
         for (int c0 = -kRing; c0 < kSize + kRing; c0 += 7) {
           const int n = std::min(40, (kSize + kRing - 1 - c0) / step + 1);
-          std::vector<Vec3d> row(static_cast<size_t>(n));
-          position.along_row(c0, step, n, r, row.data());
+          Points row;
+          row.resize(size_t(n));
+          position.along_row(c0, step, n, r, row.to(0));
           for (int k = 0; k < n; ++k)
             for (size_t a = 0; a < 3; ++a)
-              ASSERT_EQ(std::bit_cast<uint64_t>(row[size_t(k)][a]),
+              ASSERT_EQ(std::bit_cast<uint64_t>(row.axis[a][size_t(k)]),
                         std::bit_cast<uint64_t>(position.at(c0 + k * step, r)[a]))
                   << cell.ToText() << " row " << r << " col " << c0 + k * step;
         }

@@ -12,10 +12,16 @@
 namespace maquette::texture {
 namespace {
 
+Points points(const std::vector<Vec3d>& p) {
+  Points out;
+  for (const Vec3d& x : p) out.push_back(x);
+  return out;
+}
+
 std::vector<float> noise(const std::vector<Vec3d>& p, double scale, const Vec3d& offset,
                          uint32_t seed) {
   std::vector<float> out(p.size());
-  gradient_noise({p.data(), int(p.size()), scale, offset, seed}, out.data());
+  gradient_noise({points(p).from(0), int(p.size()), scale, offset, seed}, out.data());
   return out;
 }
 
@@ -34,9 +40,10 @@ TEST(GradientNoise, SameBitsOnBothPaths) {
   for (int k = -20; k < 20; ++k) p.push_back({k * 0.5, -k * 0.25, k * 1.0});
   p.push_back({3e9, -3e9, 5e9 + 0.75});
   p.push_back({0x1p50 + 0.25, -0x1p50 + 0.5, 0x1p49 - 0.75});
+  const Points axes = points(p);
   for (const double scale : {1 / 17.0, 1 / 50.0, 1 / 300.0, 1 / 3e5, 1.0})
     for (const uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
-      const GradientNoiseInput in{p.data(), int(p.size()), scale, {0.37, 0.74, 1.11}, seed};
+      const GradientNoiseInput in{axes.from(0), int(p.size()), scale, {0.37, 0.74, 1.11}, seed};
       std::vector<float> portable(p.size()), avx2(p.size());
       gradient_noise_portable(in, portable.data());
       gradient_noise_avx2(in, avx2.data());
@@ -45,7 +52,7 @@ TEST(GradientNoise, SameBitsOnBothPaths) {
             << "point " << k << " scale " << scale << " seed " << seed;
       for (const int n : {1, 7, 9}) {  // fewer than 8 points, or a padded rest
         float v[9];
-        gradient_noise_avx2({p.data(), n, scale, in.offset, seed}, v);
+        gradient_noise_avx2({axes.from(0), n, scale, in.offset, seed}, v);
         for (int k = 0; k < n; ++k)
           ASSERT_EQ(std::bit_cast<uint32_t>(v[k]), std::bit_cast<uint32_t>(portable[size_t(k)]))
               << n << " points";

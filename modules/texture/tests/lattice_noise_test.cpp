@@ -90,13 +90,14 @@ TEST(LatticeNoise, SameBitsInABatchAsAlone) {
   const NoiseField field({9, 3, 300, 0.5});
   const PixelPositions positions(default_grid(), CellId::FromFaceColRow(2, 14, 7700, 8100), 64, 0,
                                  0);
-  std::vector<Vec3d> p;
+  Points p;
   for (int k = 0; k < 11; ++k) p.push_back(positions.at(5 * k, 3 * k));
   for (int o = 0; o < field.octaves(); ++o) {
     std::vector<float> batch(p.size());
-    field.octave(o, p.data(), int(p.size()), batch.data());
+    field.octave(o, p.from(0), int(p.size()), batch.data());
     for (size_t k = 0; k < p.size(); ++k) {
-      ASSERT_EQ(batch[k], field.octave(o, p[k])) << o << " " << k;
+      const Vec3d alone{p.axis[0][k], p.axis[1][k], p.axis[2][k]};
+      ASSERT_EQ(batch[k], field.octave(o, alone)) << o << " " << k;
       ASSERT_NE(batch[k], 0.0f);  // not on a lattice point of the noise: a value to compare
     }
   }

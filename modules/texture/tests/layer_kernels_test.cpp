@@ -22,7 +22,7 @@ struct Row {
   std::vector<PaddedTable> tables;
   std::vector<PairTable> pairs;
   std::vector<float> parent, coordinate, noise, product, coverage, rgb;
-  std::vector<double> height;
+  std::vector<float> height;
   std::vector<int> dominant;
   std::vector<ConstraintRow> constraints;
 
@@ -48,7 +48,7 @@ struct Row {
       const float u = unit(random);
       parent[c] = u < 0.2f ? 0 : u < 0.4f ? 1 : unit(random);
       coordinate[c] = u < 0.1f ? float(kBins) : table_coordinate(unit(random) * 1.2f - 0.1f);
-      height[c] = u > 0.95f ? NAN : double(unit(random)) * 3400 - 200;
+      height[c] = u > 0.95f ? NAN : unit(random) * 3400 - 200;
       noise[c] = unit(random) * 2 - 1;
       for (size_t k = 0; k < 3; ++k) rgb[3 * c + k] = unit(random) * 255;
     }
@@ -144,7 +144,7 @@ TEST(LayerKernels, PlainFollowsTheFormula) {
   size_t checked = 0;
   for (const uint16_t block : kept)
     for (size_t c = size_t(block) * kBlock; c < size_t(block + 1) * kBlock; ++c) {
-      const float x = table_coordinate(float(before.height[c]) * (1.0f / 3000) + 0);
+      const float x = table_coordinate(before.height[c] * (1.0f / 3000) + 0);
       const float p = (before.parent[c] > 0 ? 1.0f : 0.0f) * lookup_at(before.tables[0], x) *
                       lookup_at(before.tables[1], before.coordinate[c]) *
                       lookup_at(before.tables[2], before.coordinate[c + 1]);
@@ -158,7 +158,7 @@ TEST(LayerKernels, PlainFollowsTheFormula) {
       red = (1 - cv2) * red + cv2 * 200;
       EXPECT_EQ(row.rgb[c], red) << c;
       if (!std::isnan(before.height[c])) {
-        EXPECT_EQ(row.height[c], before.height[c] + double(cv1 * 2.5f * before.noise[c])) << c;
+        EXPECT_EQ(row.height[c], before.height[c] + cv1 * 2.5f * before.noise[c]) << c;
       }
       EXPECT_EQ(row.dominant[c], cv1 >= 0.5f || cv2 >= 0.5f ? 3 : -1) << c;
       checked += p > 0;

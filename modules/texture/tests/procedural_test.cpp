@@ -10,6 +10,7 @@
 
 #include "../field.h"
 #include "../render.h"
+#include "../surface.h"
 #include "texture_module.h"
 
 namespace maquette::texture {
@@ -145,17 +146,18 @@ TEST(Procedural, SameBitsForAnyTiling) {
   }
 }
 
-// The branch-free arc tangent of the slope against std::atan, and the slope of a ramp by hand.
-TEST(Procedural, SlopeArcTangent) {
+// The branch-free float arc tangent of the slope against std::atan in double, the slope of a
+// ramp and its normals by hand.
+TEST(Procedural, SlopeArcTangentAndNormals) {
   double worst_ulp = 0;
   for (int i = 1; i <= 200000; ++i) {  // 1e-4 to 10, then up to e^10
-    const double x = i <= 100000 ? i * 1e-4 : 10 * std::exp((i - 100000) * 1e-4);
-    const double a = std::atan(x);
-    worst_ulp =
-        std::max(worst_ulp, std::abs(atan_nonnegative(x) - a) / (std::nextafter(a, 2.0) - a));
+    const float x = float(i <= 100000 ? i * 1e-4 : 10 * std::exp((i - 100000) * 1e-4));
+    const double a = std::atan(double(x));
+    const float ulp = std::nextafter(float(a), 2.0f) - float(a);
+    worst_ulp = std::max(worst_ulp, std::abs(atan_nonnegative(x) - a) / ulp);
   }
-  EXPECT_LE(worst_ulp, 2);
-  EXPECT_EQ(atan_nonnegative(0), 0);
+  EXPECT_LE(worst_ulp, 3);
+  EXPECT_EQ(atan_nonnegative(0.0f), 0);
   EXPECT_TRUE(std::isnan(atan_nonnegative(NAN)));
 
   Plane ramp(16, 2);  // rising 3 m per column, pixels of 2 m: gradient 1.5
@@ -165,6 +167,23 @@ TEST(Procedural, SlopeArcTangent) {
   ASSERT_EQ(s.ring, 1);
   for (int r = -1; r < 17; ++r)
     for (int c = -1; c < 17; ++c) EXPECT_NEAR(s.at(c, r), 56.3099325, 1e-5) << c << " " << r;
+  // Unit normal (-1.5, 0, 1) / sqrt(3.25); then rising 2 m per row downwards, gradient 1 up
+  // the rows: (-1.5, 1, 1) / sqrt(4.25).
+  std::vector<float> n(3 * 16 * 16);
+  normals(ramp, 2, n.data());
+  for (size_t p = 0; p < 16 * 16; ++p) {
+    EXPECT_NEAR(n[3 * p], -1.5 / std::sqrt(3.25), 1e-6) << p;
+    EXPECT_NEAR(n[3 * p + 1], 0, 1e-6) << p;
+    EXPECT_NEAR(n[3 * p + 2], 1 / std::sqrt(3.25), 1e-6) << p;
+  }
+  for (int r = -2; r < 18; ++r)
+    for (int c = -2; c < 18; ++c) ramp.at(c, r) = 3.0f * float(c) + 2.0f * float(r);
+  normals(ramp, 2, n.data());
+  for (size_t p = 0; p < 16 * 16; ++p) {
+    EXPECT_NEAR(n[3 * p], -1.5 / std::sqrt(4.25), 1e-6) << p;
+    EXPECT_NEAR(n[3 * p + 1], 1 / std::sqrt(4.25), 1e-6) << p;
+    EXPECT_NEAR(n[3 * p + 2], 1 / std::sqrt(4.25), 1e-6) << p;
+  }
 }
 
 // Every sample of every output is written, NaN where the DEM is missing (the runner hands
