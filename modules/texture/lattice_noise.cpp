@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <utility>
 
 namespace maquette::texture {
@@ -36,8 +35,9 @@ double samples_per_wavelength(double share) {
 // from vertical[k + 1] to vertical[k + 2]) at the offsets 0, step, .. < P step from their first
 // node, into h in pixel order: h[k P + t] at offset t step.
 template <int P>
-void interpolate_along(const std::vector<float>& weights, int step, const float* vertical,
-                       int intervals, float* h) {
+[[gnu::always_inline]] inline void interpolate_along(const std::vector<float>& weights, int step,
+                                                     const float* vertical, int intervals,
+                                                     float* h) {
   float x[P][4];
   for (int t = 0; t < P; ++t)
     for (int i = 0; i < 4; ++i) x[t][i] = weights[4 * size_t(t * step) + size_t(i)];
@@ -77,7 +77,7 @@ LatticeNoise::LatticeNoise(const NoiseField& field, const NoiseGeometry& geometr
     l.rows = int(((g_.row0 + g_.size + g_.ring - 1) >> shift) + 1 + margin - l.node_row0 + 1);
     if (shift > 0) {
       l.nodes = std::make_unique_for_overwrite<float[]>(size_t(l.cols) * size_t(l.rows));
-      l.complete.assign(size_t(l.rows), Span{});
+      l.evaluated.assign(size_t(l.rows), EvaluatedSpans{});
     }
     for (int t = 0; t < spacing; ++t)
       for (const double w : catmull_rom(double(t) / spacing)) l.weights.push_back(float(w));
@@ -98,27 +98,11 @@ void LatticeNoise::sum(const Lattice& l, Coordinates position, int n, float* out
 
 const float* LatticeNoise::node_row(Lattice& l, int j, int i0, int i1) {
   float* row = &l.nodes[size_t(j) * size_t(l.cols)];
-  Span& complete = l.complete[size_t(j)];
-  if (complete.first <= i0 && i1 <= complete.last) return row;  // most calls
-  if (complete.first > complete.last) {                         // first use
-    std::fill(row, row + l.cols, std::numeric_limits<float>::quiet_NaN());
-    evaluate_nodes(l, j, i0, i1, row);
-    complete = {i0, i1};
-    return row;
-  }
-  int missing = 0;  // a test without branches (vectorized)
-  for (int i = i0; i <= i1; ++i) missing |= row[i] != row[i] ? 1 : 0;
-  if (missing) evaluate_nodes(l, j, i0, i1, row);
-  if (i0 <= complete.last + 1 && complete.first - 1 <= i1)  // overlapping or adjacent
-    complete = {std::min(i0, complete.first), std::max(i1, complete.last)};
-  else if (i1 - i0 > complete.last - complete.first)
-    complete = {i0, i1};
+  l.evaluated[size_t(j)].fill(i0, i1, [&](int a, int b) { evaluate_nodes(l, j, a, b, row); });
   return row;
 }
 
 void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row) {
-  while (!std::isnan(row[i0])) ++i0;
-  while (!std::isnan(row[i1])) --i1;
   const int r = int(((l.node_row0 + j) << l.shift) - g_.row0);
   const auto column = [&](int i) { return int(((l.node_col0 + i) << l.shift) - g_.col0); };
   const bool finest = merged_ < lattices_.size() && &l == &lattices_[merged_ - 1];
@@ -127,8 +111,7 @@ void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row)
     for (size_t m = merged_; m < lattices_.size(); ++m)
       add_interpolated(lattices_[m], r, column(i0), column(i1), 1 << l.shift, coarser_.data());
   }
-  // All of i0 .. i1 (nodes already there between missing ones get the same bits again): their
-  // positions at once, the noise a batch at a time.
+  // Their positions at once, the noise a batch at a time.
   position_.resize(size_t(i1 - i0 + 1));
   g_.position->along_row(column(i0), 1 << l.shift, i1 - i0 + 1, r, position_.to(0));
   std::array<float, kBatch> value;
@@ -140,7 +123,9 @@ void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row)
   }
 }
 
-void LatticeNoise::add_interpolated(Lattice& l, int r, int c0, int c1, int step, float* out) {
+// Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
+__attribute__((target_clones("avx2", "default"))) void LatticeNoise::add_interpolated(
+    Lattice& l, int r, int c0, int c1, int step, float* out) {
   const int64_t gr = g_.row0 + r;
   const float* wy = &l.weights[4 * size_t(gr & ((int64_t(1) << l.shift) - 1))];
   const int j = int((gr >> l.shift) - 1 - l.node_row0);
@@ -181,7 +166,8 @@ void LatticeNoise::add_interpolated(Lattice& l, int r, int c0, int c1, int step,
   for (int k = 0; k < n; ++k) out[k] += from[k];
 }
 
-void LatticeNoise::row(int r, int c0, int c1, float* out) {
+__attribute__((target_clones("avx2", "default"))) void LatticeNoise::row(int r, int c0, int c1,
+                                                                         float* out) {
   if (g_.pixel_m == 0) {  // NoiseField itself
     for (int c = c0; c <= c1; ++c) out[c - c0] = field_(g_.position->at(c, r));
     return;

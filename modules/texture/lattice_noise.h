@@ -19,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "evaluated_spans.h"
 #include "field.h"
 #include "noise.h"
 
@@ -49,22 +50,17 @@ class LatticeNoise {
   static constexpr int kMaxNoiseShift = 3;
   static_assert(3 << kMaxNoiseShift == kNoiseLatticeReach);
 
-  // Nodes first .. last of a node row; empty when first > last.
-  struct Span {
-    int first = 1, last = 0;
-  };
-
   // The octaves sharing a spacing, their amplitude-weighted sum cached on one lattice.
   struct Lattice {
     std::vector<int> octaves;
     int shift = 0;                         // spacing 2^shift pixels
     int64_t node_col0 = 0, node_row0 = 0;  // global node coordinates of nodes[0]
     int cols = 0, rows = 0;
-    // Allocated uninitialised; a node row is filled with NaN (not evaluated) when first used, so
-    // the rows a layer never reaches cost nothing.
+    // Allocated uninitialised, evaluated where first needed: the nodes a layer never reaches
+    // cost nothing.
     std::unique_ptr<float[]> nodes;
-    std::vector<Span> complete;  // per node row: nodes known evaluated (none before first use)
-    std::vector<float> weights;  // 4 per offset in 0 .. spacing - 1
+    std::vector<EvaluatedSpans> evaluated;  // per node row
+    std::vector<float> weights;             // 4 per offset in 0 .. spacing - 1
   };
 
   static constexpr int kBatch = 64;  // points whose noise is evaluated together (noise.h)
@@ -74,7 +70,7 @@ class LatticeNoise {
   // Node row j, its nodes i0 .. i1 evaluated (those of the finest lattice with the coarser
   // lattices interpolated at them added).
   const float* node_row(Lattice& l, int j, int i0, int i1);
-  // The missing nodes among i0 .. i1 of node row j (NaN) into row.
+  // Nodes i0 .. i1 of node row j into row.
   void evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row);
   // Adds the lattice interpolated at plane pixels c0, c0 + step, .. <= c1 of plane row r to
   // out[0], out[1], ..; step is 1 or a spacing finer than the lattice's, c0 a multiple of it.
