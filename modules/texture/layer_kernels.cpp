@@ -96,7 +96,6 @@ __attribute__((target("avx2"))) size_t constrain_avx2(const ConstrainRow& row,
                                                       uint16_t* kept) {
   const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1),
                scale = _mm256_set1_ps(row.height_scale), offset = _mm256_set1_ps(row.height_offset);
-  const __m256d none = _mm256_setzero_pd(), all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
   size_t n_kept = 0;
   for (size_t k = 0; k < n; ++k) {
     const uint16_t block = blocks[k];
@@ -114,13 +113,16 @@ __attribute__((target("avx2"))) size_t constrain_avx2(const ConstrainRow& row,
             _mm256_add_ps(_mm256_mul_ps(_mm256_loadu_ps(row.height + c0), scale), offset));
       }
       const __m256i i = _mm256_cvttps_epi32(x);
-      // The pairs of pixels 0 to 3 and 4 to 7 (masked gathers: GCC 12 warns about the others'
-      // source operand), then the first and second values of each.
+      // The pairs of pixels 0 to 3 and 4 to 7, then the first and second values of each. Loaded
+      // one by one: faster than the gather instructions on the processors measured.
+      alignas(32) int at[kBlock];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(at), i);
       const double* pairs = reinterpret_cast<const double*>(q.pairs);
-      const __m256 low = _mm256_castpd_ps(
-                       _mm256_mask_i32gather_pd(none, pairs, _mm256_castsi256_si128(i), all, 8)),
-                   high = _mm256_castpd_ps(_mm256_mask_i32gather_pd(
-                       none, pairs, _mm256_extracti128_si256(i, 1), all, 8));
+      const auto pair = [&](int a, int b) __attribute__((target("avx2"))) {
+        return _mm_loadh_pd(_mm_load_sd(pairs + at[a]), pairs + at[b]);
+      };
+      const __m256 low = _mm256_castpd_ps(_mm256_set_m128d(pair(2, 3), pair(0, 1))),
+                   high = _mm256_castpd_ps(_mm256_set_m128d(pair(6, 7), pair(4, 5)));
       const __m256 b0 = _mm256_castpd_ps(_mm256_permute4x64_pd(
                        _mm256_castps_pd(_mm256_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0))),
                        _MM_SHUFFLE(3, 1, 2, 0))),
