@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -117,6 +118,8 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
          (2 << shift_) * grid.level_info(level, 1).pixel_m <= 300)
     ++shift_;
   const int step = 1 << shift_;
+  m_ = m;
+  ring_ = ring;
   gc0_ = int64_t(cell.col()) * m;
   gr0_ = int64_t(cell.row()) * m;
   nc0_ = (gc0_ - ring) >> shift_;
@@ -157,6 +160,23 @@ __attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row
     }
     k += count;
   }
+}
+
+Coordinates PixelPositions::along_row_kept(int col0, int step, int n, int row) const {
+  const int shift = std::countr_zero(unsigned(step));
+  if (step != 1 << shift || shift > 3)
+    throw Error("texture: positions kept at steps 1, 2, 4 and 8, not " + std::to_string(step));
+  KeptRow& k = kept_[size_t(shift * kKeptRows + (row & (kKeptRows - 1)))];
+  const int first = col0 - (col0 + ring_) / step * step;  // the row's first pixel in phase
+  if (k.step != step || k.row != row || k.first != first) {
+    k = {row, step, first, {}, std::move(k.position)};
+    k.position.resize(size_t((m_ + ring_ - 1 - first) / step + 1));
+  }
+  const int i0 = (col0 - first) / step;
+  k.computed.fill(i0, i0 + n - 1, [&](int a, int b) {
+    along_row(first + a * step, step, b - a + 1, row, k.position.to(size_t(a)));
+  });
+  return k.position.from(size_t(i0));
 }
 
 }  // namespace maquette::texture

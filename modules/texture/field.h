@@ -13,6 +13,7 @@
 #include "core/cell_id.h"
 #include "core/grid.h"
 #include "core/tile.h"
+#include "evaluated_spans.h"
 #include "noise.h"
 
 namespace maquette::texture {
@@ -78,6 +79,10 @@ class PixelPositions {
   // Of target pixels (col0 + k step, row), k < n, into out[axis][k]: the same bits as at() (the
   // same formula per pixel), vectorized; the noise's lattice nodes along a node row.
   void along_row(int col0, int step, int n, int row, const std::array<double*, 3>& out) const;
+  // The same positions, computed once and kept for the next calls with the same row, step and
+  // phase (the layers of a tile ask for the same noise lattice nodes in turn; the last 8 rows of
+  // each step are kept). step: 1, 2, 4 or 8. Valid until the next call; one thread at a time.
+  Coordinates along_row_kept(int col0, int step, int n, int row) const;
 
  private:
   // Bilinear between the values a0, a1 (nodes above) and b0, b1 (below) at fractions fx, fy of
@@ -93,6 +98,17 @@ class PixelPositions {
   int64_t nc0_ = 0, nr0_ = 0;  // global node coordinates of node[0]
   int nodes_ = 0;              // a side
   std::vector<Vec3d> node_;
+  int m_ = 0, ring_ = 0;
+
+  // Rows of along_row_kept(): position[i] is that of pixel (first + i step, row), known where
+  // `computed` says.
+  struct KeptRow {
+    int row = 0, step = 0, first = 0;  // step 0: none
+    EvaluatedSpans computed;
+    Points position;
+  };
+  static constexpr int kKeptRows = 8;                // per step, by row mod 8
+  mutable std::array<KeptRow, 4 * kKeptRows> kept_;  // steps 1, 2, 4, 8
 };
 
 inline Vec3d PixelPositions::at(int col, int row) const {

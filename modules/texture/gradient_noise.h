@@ -17,6 +17,11 @@ using Vec3d = std::array<double, 3>;
 // kernel loads an axis of 4 points as one vector.
 using Coordinates = std::array<const double*, 3>;
 
+// The points from the k-th on.
+inline Coordinates advanced(const Coordinates& p, size_t k) {
+  return {p[0] + k, p[1] + k, p[2] + k};
+}
+
 // Points stored that way.
 struct Points {
   std::array<std::vector<double>, 3> axis;
@@ -28,7 +33,9 @@ struct Points {
   void push_back(const Vec3d& p) {
     for (size_t a = 0; a < 3; ++a) axis[a].push_back(p[a]);
   }
-  Coordinates from(size_t k) const { return {&axis[0][k], &axis[1][k], &axis[2][k]}; }
+  Coordinates from(size_t k) const {
+    return advanced({axis[0].data(), axis[1].data(), axis[2].data()}, k);
+  }
   std::array<double*, 3> to(size_t k) { return {&axis[0][k], &axis[1][k], &axis[2][k]}; }
 };
 

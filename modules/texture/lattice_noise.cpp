@@ -112,12 +112,12 @@ void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row)
       add_interpolated(lattices_[m], r, column(i0), column(i1), 1 << l.shift, coarser_.data());
   }
   // Their positions at once, the noise a batch at a time.
-  position_.resize(size_t(i1 - i0 + 1));
-  g_.position->along_row(column(i0), 1 << l.shift, i1 - i0 + 1, r, position_.to(0));
+  const Coordinates position =
+      g_.position->along_row_kept(column(i0), 1 << l.shift, i1 - i0 + 1, r);
   std::array<float, kBatch> value;
   for (int i = i0; i <= i1; i += kBatch) {
     const int n = std::min(kBatch, i1 - i + 1);
-    sum(l, position_.from(size_t(i - i0)), n, value.data());
+    sum(l, advanced(position, size_t(i - i0)), n, value.data());
     for (int k = 0; k < n; ++k)
       row[i + k] = finest ? value[size_t(k)] + coarser_[size_t(i + k - i0)] : value[size_t(k)];
   }
@@ -177,12 +177,11 @@ __attribute__((target_clones("avx2", "default"))) void LatticeNoise::row(int r, 
   for (size_t m = 0; m < merged_; ++m) {
     Lattice& l = lattices_[m];
     if (l.shift == 0) {  // every pixel is a node
-      position_.resize(n);
-      g_.position->along_row(c0, 1, int(n), r, position_.to(0));
+      const Coordinates position = g_.position->along_row_kept(c0, 1, int(n), r);
       std::array<float, kBatch> value;
       for (int c = c0; c <= c1; c += kBatch) {
         const int n = std::min(kBatch, c1 - c + 1);
-        sum(l, position_.from(size_t(c - c0)), n, value.data());
+        sum(l, advanced(position, size_t(c - c0)), n, value.data());
         for (int k = 0; k < n; ++k) sum_[size_t(c - c0 + k)] += value[size_t(k)];
       }
     } else {

@@ -84,7 +84,6 @@ class LatticeNoise {
   std::vector<Lattice> lattices_;
   size_t merged_ = 0;
   std::vector<float> sum_, vertical_, horizontal_, coarser_;
-  Points position_;  // of the nodes (or pixels) being evaluated
 };
 
 }  // namespace maquette::texture

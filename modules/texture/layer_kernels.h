@@ -1,6 +1,6 @@
 // The per-pixel work of one layer along a row of the planes (surface.h), on blocks of 8
 // consecutive pixels: the constraint product and the blend. Two implementations with the same
-// bits: plain C++ and AVX2 (8 pixels per instruction, table lookups by gathers), chosen at run
+// bits: plain C++ and AVX2 (8 pixels per instruction, table pairs loaded one by one), chosen at run
 // time (also the table coordinates of a row). No fused multiply-add and the same operation order on
 // both paths (tested).
 #pragma once
@@ -17,7 +17,7 @@ namespace maquette::texture {
 inline constexpr int kBlock = 8;  // pixels of a block; rows are padded to whole blocks
 
 // A constraint table as the kernels read it: entry i holds values i and i + 1 of the padded
-// table (surface.h), so that a lookup reads one pair (one 64-bit gather).
+// table (surface.h), so that a lookup reads one pair (one 64-bit load).
 using PairTable = std::array<float, 2 * (kBins + 1)>;
 PairTable pair_table(const PaddedTable& t);
 

@@ -43,7 +43,7 @@ TEST(Upsample, CubicBSplineAtTheTargetPixels) {
 }
 
 // At 8.8 m (lattice of every 32nd pixel) and 140 m pixels (every 8th): every step the noise
-// uses, runs starting anywhere and crossing lattice cells.
+// uses, runs starting anywhere and crossing lattice cells; the same from the kept rows.
 TEST(PixelPositions, AlongRowSameBitsAsAt) {
   constexpr int kSize = 64, kRing = 25;
   for (const CellId cell :
@@ -56,11 +56,19 @@ TEST(PixelPositions, AlongRowSameBitsAsAt) {
           Points row;
           row.resize(size_t(n));
           position.along_row(c0, step, n, r, row.to(0));
+          // Kept rows: first computed, then found again (the second request inside the first).
+          const Coordinates kept = position.along_row_kept(c0, step, n, r),
+                            again = position.along_row_kept(c0 + step, step, n - 1, r);
           for (int k = 0; k < n; ++k)
-            for (size_t a = 0; a < 3; ++a)
-              ASSERT_EQ(std::bit_cast<uint64_t>(row.axis[a][size_t(k)]),
-                        std::bit_cast<uint64_t>(position.at(c0 + k * step, r)[a]))
+            for (size_t a = 0; a < 3; ++a) {
+              const uint64_t expected = std::bit_cast<uint64_t>(position.at(c0 + k * step, r)[a]);
+              ASSERT_EQ(std::bit_cast<uint64_t>(row.axis[a][size_t(k)]), expected)
                   << cell.ToText() << " row " << r << " col " << c0 + k * step;
+              ASSERT_EQ(std::bit_cast<uint64_t>(kept[a][k]), expected) << "kept";
+              if (k > 0) {
+                ASSERT_EQ(std::bit_cast<uint64_t>(again[a][k - 1]), expected) << "again";
+              }
+            }
         }
   }
 }
