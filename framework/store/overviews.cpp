@@ -14,8 +14,8 @@
 namespace maquette {
 namespace {
 
-constexpr int kCellsPerTransaction = 64;  // bounds memory and lock time
-constexpr size_t kMaxBuiltKept = 64;      // overview tiles kept in memory for the next level
+constexpr size_t kCellsPerTransaction = 64;  // bounds memory and lock time
+constexpr size_t kMaxBuiltKept = 64;         // overview tiles kept in memory for the next level
 
 struct ChildBlobs {
   std::array<std::optional<std::vector<std::byte>>, 4> blobs;  // by child digit
@@ -43,53 +43,50 @@ ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell
 
 }  // namespace
 
-bool Store::Impl::rebuild_stale(const LayerEntry& e, int level, const BuiltOverviews& below,
-                                BuiltOverviews& built) {
-  bool any = false;
-  write([&](sqlite::Connection& c) {
-    std::vector<CellId> cells;
-    {
-      auto q = c.query(
-          "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
-      q.bind_int(1, e.id).bind_int(2, level).bind_int(3, kCellsPerTransaction);
-      while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
-    }
-    any = !cells.empty();
-    std::vector<ChildBlobs> children;
-    for (CellId cell : cells) children.push_back(read_children(c, e, cell));
+size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, int level,
+                                  size_t limit, const BuiltOverviews& below,
+                                  BuiltOverviews& built) {
+  std::vector<CellId> cells;
+  {
+    auto q = c.query(
+        "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
+    q.bind_int(1, e.id).bind_int(2, level).bind_int(3, int64_t(limit));
+    while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
+  }
+  std::vector<ChildBlobs> children;
+  for (CellId cell : cells) children.push_back(read_children(c, e, cell));
 
-    // Decoding, reducing and encoding dominate: done in parallel, without SQLite. Isolated, so
-    // that a worker waiting here never picks up an outer task that would take the write lock.
-    std::vector<std::vector<std::byte>> blobs(cells.size());
-    std::vector<RawTile> overviews(cells.size());
-    const Codec codec = parse_codec(e.info.codec);
-    tbb::this_task_arena::isolate([&] {
-      tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-        std::array<std::optional<RawTile>, 4> tiles;
-        std::array<const RawTile*, 4> ptrs{};
-        for (int k = 0; k < 4; ++k)
-          if (const auto& blob = children[i].blobs[k]) {
-            const CellId child = cells[i].child(k);
-            // Built at the level below in this call and stored as is: no need to decode it.
-            if (const auto it = below.find(child.id());
-                it != below.end() && it->second.first == *blob) {
-              ptrs[k] = &it->second.second;
-              continue;
-            }
-            tiles[k] = decode(*blob, e, child);
-            ptrs[k] = &*tiles[k];
+  // Decoding, reducing and encoding dominate: done in parallel, without SQLite. Isolated, so
+  // that a worker waiting here never picks up an outer task that would take the write lock.
+  std::vector<std::vector<std::byte>> blobs(cells.size());
+  std::vector<RawTile> overviews(cells.size());
+  const Codec codec = parse_codec(e.info.codec);
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
+      std::array<std::optional<RawTile>, 4> tiles;
+      std::array<const RawTile*, 4> ptrs{};
+      for (int k = 0; k < 4; ++k)
+        if (const auto& blob = children[i].blobs[k]) {
+          const CellId child = cells[i].child(k);
+          // Built at the level below in this call and stored as is: no need to decode it.
+          if (const auto it = below.find(child.id());
+              it != below.end() && it->second.first == *blob) {
+            ptrs[k] = &it->second.second;
+            continue;
           }
-        overviews[i] = build_overview(ptrs, e.info);
-        blobs[i] = encode_tile(overviews[i], codec);
-      });
+          tiles[k] = decode(*blob, e, child);
+          ptrs[k] = &*tiles[k];
+        }
+      overviews[i] = build_overview(ptrs, e.info);
+      blobs[i] = encode_tile(overviews[i], codec);
     });
-
-    for (size_t i = 0; i < cells.size(); ++i) write_overview(c, e.id, cells[i], blobs[i]);
-    for (size_t i = 0; i < cells.size() && built.size() < kMaxBuiltKept; ++i)
-      built.insert_or_assign(cells[i].id(),
-                             std::make_pair(std::move(blobs[i]), std::move(overviews[i])));
   });
-  return any;
+
+  for (size_t i = 0; i < cells.size(); ++i) write_overview(c, e.id, cells[i], blobs[i]);
+  for (size_t i = 0; i < cells.size() && built.size() < kMaxBuiltKept; ++i)
+    built.insert_or_assign(cells[i].id(),
+                           std::make_pair(std::move(blobs[i]), std::move(overviews[i])));
+  return cells.size();
 }
 
 void write_overview(sqlite::Connection& conn, int64_t layer_id, CellId cell,
@@ -129,12 +126,22 @@ void Store::update_overviews(const std::string& layer, int min_level) {
   // The tiles written before this call are on their way to the disk while overviews are built.
   if (d.checkpointer) d.checkpointer->request();
   Impl::BuiltOverviews below, built;
-  for (int level = e.info.level - 1; level >= min_level; --level) {
-    while (d.rebuild_stale(e, level, below, built)) {
-    }
-    below = std::move(built);
-    built.clear();
-  }
+  // Up to kCellsPerTransaction tiles per transaction, over as many levels as they take (the
+  // upper levels of a pyramid hold a few tiles each: one transaction for all of them).
+  int level = e.info.level - 1;
+  while (level >= min_level)
+    d.write([&](sqlite::Connection& c) {
+      size_t budget = kCellsPerTransaction;
+      while (level >= min_level && budget > 0) {
+        const size_t rebuilt = d.rebuild_stale(c, e, level, budget, below, built);
+        if (rebuilt < budget) {  // the level is done
+          below = std::move(built);
+          built.clear();
+          --level;
+        }
+        budget -= rebuilt;
+      }
+    });
 }
 
 std::optional<RawTile> Store::get_overview(const std::string& layer, CellId cell) const {

@@ -74,11 +74,12 @@ struct Store::Impl {
   // next level up takes a child from here instead of decoding it when the stored blob is this
   // one (overviews.cpp).
   using BuiltOverviews = std::map<uint64_t, std::pair<std::vector<std::byte>, RawTile>>;
-  // Rebuilds up to 64 stale overview tiles at `level` in one transaction, their children taken
-  // from `below` where it holds them; adds what it built to `built` (up to 64 tiles); false when
-  // none was stale (overviews.cpp).
-  bool rebuild_stale(const LayerEntry& layer, int level, const BuiltOverviews& below,
-                     BuiltOverviews& built);
+  // Rebuilds up to `limit` stale overview tiles at `level` in the writer's transaction, their
+  // children taken from `below` where it holds them; adds what it built to `built` (up to 64
+  // tiles); returns how many it rebuilt: fewer than `limit` when the level is done
+  // (overviews.cpp).
+  size_t rebuild_stale(sqlite::Connection& writer, const LayerEntry& layer, int level, size_t limit,
+                       const BuiltOverviews& below, BuiltOverviews& built);
 
   // Decodes a stored blob and checks it against the layer; throws naming layer and cell.
   RawTile decode(std::span<const std::byte> blob, const LayerEntry& layer, CellId cell) const;
