@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "core/samples.h"
 
@@ -54,6 +55,26 @@ T load(const std::byte* p, size_t i) {
   return v;
 }
 
+// One overview row of a one-channel float layer whose missing samples are NaN (no nodata
+// value): the means mean() gives, without branches so that the loop vectorizes. Adding 0 for a
+// missing sample changes no sum (a sum from +0 is never -0), and a mean of floats is within the
+// float range, so cast_sample is the plain conversion.
+__attribute__((target_clones("avx2", "default"))) void mean_row_nan(const std::byte* top,
+                                                                    const std::byte* bottom,
+                                                                    size_t half, std::byte* out) {
+  for (size_t c = 0; c < half; ++c) {
+    const float a = load<float>(top, 2 * c), b = load<float>(top, 2 * c + 1),
+                d = load<float>(bottom, 2 * c), e = load<float>(bottom, 2 * c + 1);
+    // x == x: x is not NaN (in this form the loop vectorizes).
+    const double n =
+        (a == a ? 1.0 : 0.0) + (b == b ? 1.0 : 0.0) + (d == d ? 1.0 : 0.0) + (e == e ? 1.0 : 0.0);
+    const double sum = 0.0 + (a == a ? double(a) : 0.0) + (b == b ? double(b) : 0.0) +
+                       (d == d ? double(d) : 0.0) + (e == e ? double(e) : 0.0);
+    const float value = n > 0 ? float(sum / n) : std::numeric_limits<float>::quiet_NaN();
+    std::memcpy(out + c * sizeof(float), &value, sizeof(float));
+  }
+}
+
 // The overview's samples from the children's bytes, read and written through memcpy (the tiles
 // hold bytes): no copies of whole tiles, one allocation, one pass over each row pair.
 template <typename T, bool kContinuous>
@@ -70,6 +91,11 @@ RawTile build(const std::array<const RawTile*, 4>& children, const LayerInfo& la
       std::byte* out =
           tile.bytes.data() + (size_t((digit >> 1) * half + r) * row + col0) * sizeof(T);
       const size_t top = size_t(2 * r) * row, bottom = top + row;
+      if constexpr (std::is_same_v<T, float> && kContinuous)
+        if (src && !nodata && channels == 1) {
+          mean_row_nan(src + top * sizeof(T), src + bottom * sizeof(T), size_t(half), out);
+          continue;
+        }
       for (size_t c = 0, i = 0; c < size_t(half); ++c)
         for (size_t k = 0; k < size_t(channels); ++k, ++i) {
           const size_t left = 2 * c * size_t(channels) + k, right = left + size_t(channels);
