@@ -69,8 +69,8 @@ void slope_degrees(const Plane& height, double pixel_m, Plane& out);  // reusing
 // Positions (metres, on the sphere of the authalic radius) of the target pixels of `cell` and
 // `ring` pixels around, computed on demand: exact on a lattice of every 8th global pixel (16th or
 // 32nd for pixels of <= 9 m), bilinear in between, so neighbouring tiles compute the same values
-// for the same pixel. Only the lattice is stored (the noise needs positions at its own lattice
-// nodes, rarely at every pixel).
+// for the same pixel. Only the lattice is stored, and the rows the noise asked for lately (it
+// needs positions at its own lattice nodes, rarely at every pixel).
 class PixelPositions {
  public:
   PixelPositions(const Grid& grid, CellId cell, int size, int refine, int ring);
