@@ -77,18 +77,27 @@ void PixelMapper::map(CellId cell, int size, PixelMap& out) {
     // The block's samples: [c0, c1] x [r0, r1], the last column/row only at the tile's edge.
     const int ce = c1 == size - 1 ? c1 + 1 : c1, re = r1 == size - 1 ? r1 + 1 : r1;
     if (linear) {
-      // Bilinear interpolation, stepped along each row from its two ends.
+      // Bilinear interpolation, stepped along each row from its two ends: the ends and steps of
+      // all rows first (their divisions pipeline, one row's do not wait for the previous
+      // row's), then the rows.
       const double wc = std::max(1, c1 - c0), wr = std::max(1, r1 - r0);
-      for (int r = r0; r < re; ++r) {
-        const double fr = (r - r0) / wr;
-        const double xl = (1 - fr) * lx[k00] + fr * lx[k10], xr = (1 - fr) * lx[k01] + fr * lx[k11];
-        const double yl = (1 - fr) * ly[k00] + fr * ly[k10], yr = (1 - fr) * ly[k01] + fr * ly[k11];
-        const double dx = (xr - xl) / wc, dy = (yr - yl) / wc;
-        double* ox = out.x.data() + size_t(r) * size_t(size);
-        double* oy = out.y.data() + size_t(r) * size_t(size);
+      const double x00 = lx[k00], x01 = lx[k01], x10 = lx[k10], x11 = lx[k11];
+      const double y00 = ly[k00], y01 = ly[k01], y10 = ly[k10], y11 = ly[k11];
+      const int rows = re - r0;
+      double xl[kStep + 1], yl[kStep + 1], dx[kStep + 1], dy[kStep + 1];
+      for (int k = 0; k < rows; ++k) {
+        const double fr = k / wr;
+        xl[k] = (1 - fr) * x00 + fr * x10;
+        yl[k] = (1 - fr) * y00 + fr * y10;
+        dx[k] = ((1 - fr) * x01 + fr * x11 - xl[k]) / wc;
+        dy[k] = ((1 - fr) * y01 + fr * y11 - yl[k]) / wc;
+      }
+      for (int k = 0; k < rows; ++k) {
+        double* ox = out.x.data() + size_t(r0 + k) * size_t(size);
+        double* oy = out.y.data() + size_t(r0 + k) * size_t(size);
         for (int c = c0; c < ce; ++c) {
-          ox[c] = xl + (c - c0) * dx;
-          oy[c] = yl + (c - c0) * dy;
+          ox[c] = xl[k] + (c - c0) * dx[k];
+          oy[c] = yl[k] + (c - c0) * dy[k];
         }
       }
       continue;

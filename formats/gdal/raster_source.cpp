@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <string>
 
 #include "core/error.h"
@@ -138,10 +140,30 @@ RasterSource describe_source(const std::string& path, const std::vector<int>& ba
   return s;
 }
 
-SourceReader::SourceReader(const RasterSource& source)
-    : source_(source), dataset_(open_dataset(source.path)) {}
+struct SourceReader::Handle {
+  GDALDataset* dataset;
+  std::mutex mutex;  // held while the dataset reads
+  explicit Handle(GDALDataset* ds) : dataset(ds) {}
+  ~Handle() { GDALClose(dataset); }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+};
 
-SourceReader::~SourceReader() { GDALClose(dataset_); }
+std::shared_ptr<SourceReader::Handle> SourceReader::shared_handle(const std::string& path) {
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<Handle>> open;
+  const std::lock_guard lock(mutex);
+  std::weak_ptr<Handle>& slot = open[path];
+  if (auto handle = slot.lock()) return handle;
+  auto handle = std::make_shared<Handle>(open_dataset(path));
+  slot = handle;
+  return handle;
+}
+
+SourceReader::SourceReader(const RasterSource& source)
+    : source_(source), handle_(shared_handle(source.path)) {}
+
+SourceReader::~SourceReader() = default;
 
 void SourceReader::read_span(int band, int64_t x0, int64_t y0, int w, int h, int step,
                              bool categorical, float* out, int out_stride) {
@@ -150,7 +172,8 @@ void SourceReader::read_span(int band, int64_t x0, int64_t y0, int w, int h, int
   extra.eResampleAlg = step == 1     ? GRIORA_NearestNeighbour
                        : categorical ? GRIORA_Mode
                                      : GRIORA_Average;
-  GDALRasterBand* b = dataset_->GetRasterBand(source_.bands[size_t(band)]);
+  const std::lock_guard lock(handle_->mutex);
+  GDALRasterBand* b = handle_->dataset->GetRasterBand(source_.bands[size_t(band)]);
   CPLErrorReset();
   if (b->RasterIO(GF_Read, int(x0), int(y0), w * step, h * step, out, w, h, GDT_Float32,
                   sizeof(float), GSpacing(out_stride) * GSpacing(sizeof(float)), &extra) != CE_None)
@@ -195,15 +218,21 @@ void SourceReader::read(int64_t x0, int64_t y0, int w, int h, int step, bool cat
                 plane.data() + size_t(j0) * size_t(w) + size_t(i), w);
       i += n;
     }
+    // Nodata to NaN, then scale and offset, on the rows read (the others are NaN); one loop per
+    // case, so that each is a vector loop.
     const auto& nd = source_.nodata[band];
     const float nodata = nd ? float(*nd) : 0.0f;
     const float scale = float(source_.scale[band]), offset = float(source_.offset[band]);
-    for (float& v : plane) {
-      if (nd && v == nodata)
-        v = std::numeric_limits<float>::quiet_NaN();
-      else if (source_.scaled)
-        v = v * scale + offset;
-    }
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    float* const begin = plane.data() + size_t(j0) * size_t(w);
+    const size_t n = size_t(j1 - j0) * size_t(w);
+    if (nd && source_.scaled)
+      for (size_t k = 0; k < n; ++k)
+        begin[k] = begin[k] == nodata ? kNaN : begin[k] * scale + offset;
+    else if (nd)
+      for (size_t k = 0; k < n; ++k) begin[k] = begin[k] == nodata ? kNaN : begin[k];
+    else if (source_.scaled)
+      for (size_t k = 0; k < n; ++k) begin[k] = begin[k] * scale + offset;
   }
 }
 
@@ -212,7 +241,7 @@ bool SourceReader::any_valid() {
   std::vector<float> buf;
   for (size_t band = 0; band < source_.bands.size(); ++band) {
     int bw = 0, bh = 0;
-    dataset_->GetRasterBand(source_.bands[band])->GetBlockSize(&bw, &bh);
+    handle_->dataset->GetRasterBand(source_.bands[band])->GetBlockSize(&bw, &bh);
     const int rows = std::clamp(bh, 1, 1024);
     for (int y = 0; y < source_.height; y += rows) {
       const int h = std::min(rows, source_.height - y);

@@ -1,6 +1,6 @@
 // A raster source as the ingest sees it: what `describe_source` learns from the file once (size,
-// georeferencing, CRS, selected bands, dtype, nodata, scale/offset), and `SourceReader`, one
-// thread's own GDAL handle on it that reads windows as float samples (NaN = missing).
+// georeferencing, CRS, selected bands, dtype, nodata, scale/offset), and `SourceReader`, which
+// reads windows of it as float samples (NaN = missing).
 #pragma once
 
 #include <array>
@@ -63,9 +63,12 @@ struct Window {
   }
 };
 
+// Readers of the same file share one GDAL handle, and so its block cache: a compressed
+// source's blocks are decompressed once for all threads, not once per thread. Reads through it
+// take turns (a GDAL handle is not thread-safe).
 class SourceReader {
  public:
-  explicit SourceReader(const RasterSource& source);  // its own dataset handle
+  explicit SourceReader(const RasterSource& source);
   ~SourceReader();
   SourceReader(const SourceReader&) = delete;
   SourceReader& operator=(const SourceReader&) = delete;
@@ -79,8 +82,11 @@ class SourceReader {
  private:
   void read_span(int band, int64_t x0, int64_t y0, int w, int h, int step, bool categorical,
                  float* out, int out_stride);
+  struct Handle;
+  // The open handle of a file, or a new one: closed when its last reader goes.
+  static std::shared_ptr<Handle> shared_handle(const std::string& path);
   const RasterSource& source_;
-  GDALDataset* dataset_ = nullptr;
+  std::shared_ptr<Handle> handle_;
 };
 
 }  // namespace maquette

@@ -1,10 +1,64 @@
 #include "gdal/tile_resampler.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace maquette {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The source window's bounds: the smallest and largest x - rx, x + rx, y - ry, y + ry of the
+// samples to fill.
+struct Bounds {
+  double x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
+};
+
+// The window pass of TileResampler::sample over samples [0, n) (n a multiple of 4) of a tile
+// that no source has filled yet, four at a time: unusable samples get x = NaN, the others
+// extend `b` by their radius (hx + 1, hy + 1 with footprints, else 2). Minima and maxima are
+// exact, so the bounds are those of the one-by-one loop.
+__attribute__((target("avx2"))) void window_bounds4(double* x, const double* y, const double* hx,
+                                                    const double* hy, size_t n, double W, double H,
+                                                    bool wraps, Bounds& b) {
+  const __m256d zero = _mm256_setzero_pd(), w = _mm256_set1_pd(W), h = _mm256_set1_pd(H),
+                inf = _mm256_set1_pd(kInf), ninf = _mm256_set1_pd(-kInf), two = _mm256_set1_pd(2),
+                one = _mm256_set1_pd(1),
+                nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  __m256d x0 = inf, y0 = inf, x1 = ninf, y1 = ninf;
+  for (size_t i = 0; i < n; i += 4) {
+    const __m256d xi = _mm256_loadu_pd(x + i), yi = _mm256_loadu_pd(y + i);
+    const __m256d in_y =
+        _mm256_and_pd(_mm256_cmp_pd(yi, zero, _CMP_GE_OQ), _mm256_cmp_pd(yi, h, _CMP_LE_OQ));
+    const __m256d in_x = wraps ? _mm256_cmp_pd(xi, xi, _CMP_ORD_Q)
+                               : _mm256_and_pd(_mm256_cmp_pd(xi, zero, _CMP_GE_OQ),
+                                               _mm256_cmp_pd(xi, w, _CMP_LE_OQ));
+    const __m256d ok = _mm256_and_pd(in_x, in_y);
+    if (_mm256_movemask_pd(ok) != 0xF) _mm256_storeu_pd(x + i, _mm256_blendv_pd(nan, xi, ok));
+    const __m256d rx = hx ? _mm256_add_pd(_mm256_loadu_pd(hx + i), one) : two;
+    const __m256d ry = hy ? _mm256_add_pd(_mm256_loadu_pd(hy + i), one) : two;
+    x0 = _mm256_min_pd(x0, _mm256_blendv_pd(inf, _mm256_sub_pd(xi, rx), ok));
+    x1 = _mm256_max_pd(x1, _mm256_blendv_pd(ninf, _mm256_add_pd(xi, rx), ok));
+    y0 = _mm256_min_pd(y0, _mm256_blendv_pd(inf, _mm256_sub_pd(yi, ry), ok));
+    y1 = _mm256_max_pd(y1, _mm256_blendv_pd(ninf, _mm256_add_pd(yi, ry), ok));
+  }
+  alignas(32) double v[4][4];
+  _mm256_store_pd(v[0], x0);
+  _mm256_store_pd(v[1], y0);
+  _mm256_store_pd(v[2], x1);
+  _mm256_store_pd(v[3], y1);
+  for (int l = 0; l < 4; ++l) {
+    b.x0 = std::min(b.x0, v[0][l]);
+    b.y0 = std::min(b.y0, v[1][l]);
+    b.x1 = std::max(b.x1, v[2][l]);
+    b.y1 = std::max(b.y1, v[3][l]);
+  }
+}
+
+}  // namespace
 
 struct TileResampler::Source {
   const RasterSource& info;
@@ -27,13 +81,13 @@ bool TileResampler::make(CellId cell, int size, Tile<float>& tile) {
     std::ranges::fill(tile.data(), std::numeric_limits<float>::quiet_NaN());
   else
     tile = Tile<float>(size, channels, 0, std::numeric_limits<float>::quiet_NaN());
-  for (auto& s : sources_) sample(*s, cell, tile);
+  for (size_t k = 0; k < sources_.size(); ++k) sample(*sources_[k], cell, tile, k == 0);
   for (float v : tile.data())
     if (!std::isnan(v)) return true;
   return false;
 }
 
-void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
+void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile, bool fresh) {
   s.mapper.map(cell, tile.size(), map_);
   const int n = tile.size(), channels = tile.channels();
   const double W = s.info.width, H = s.info.height;
@@ -87,22 +141,27 @@ void TileResampler::sample(Source& s, CellId cell, Tile<float>& tile) {
   }
   // The source window the samples to fill need (usable, some channel still missing); unusable
   // samples get x = NaN, which the kernels skip.
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  Bounds b;
   double* const xs = x.data();
   const double* const ys = y.data();
-  for (size_t i = 0; i < x.size(); ++i) {
+  size_t i = 0;
+  if (fresh && __builtin_cpu_supports("avx2"))
+    window_bounds4(xs, ys, area ? hx.data() : nullptr, area ? hy.data() : nullptr,
+                   i = x.size() / 4 * 4, W, H, wraps, b);
+  for (; i < x.size(); ++i) {
     const double xi = xs[i], yi = ys[i];
     if (!usable(xi, yi)) {
       xs[i] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
-    if (!missing(i)) continue;
+    if (!fresh && !missing(i)) continue;
     const double rx = area ? hx[i] + 1 : 2, ry = area ? hy[i] + 1 : 2;
-    x0 = std::min(x0, xi - rx);
-    x1 = std::max(x1, xi + rx);
-    y0 = std::min(y0, yi - ry);
-    y1 = std::max(y1, yi + ry);
+    b.x0 = std::min(b.x0, xi - rx);
+    b.x1 = std::max(b.x1, xi + rx);
+    b.y0 = std::min(b.y0, yi - ry);
+    b.y1 = std::max(b.y1, yi + ry);
   }
+  auto [x0, y0, x1, y1] = b;
   if (!(x0 < x1)) return;
   if (!s.info.wraps) x0 = std::max(x0, 0.0), x1 = std::min(x1, W);
   y0 = std::max(y0, 0.0);

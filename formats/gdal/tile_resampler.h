@@ -28,7 +28,8 @@ class TileResampler {
 
  private:
   struct Source;
-  void sample(Source& s, CellId cell, Tile<float>& tile);
+  // `fresh`: no source has filled any sample of the tile yet (every sample is missing).
+  void sample(Source& s, CellId cell, Tile<float>& tile, bool fresh);
   std::vector<std::unique_ptr<Source>> sources_;
   Resampling resampling_;
   bool categorical_;
