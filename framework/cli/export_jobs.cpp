@@ -5,8 +5,9 @@
 #include "core/error.h"
 #include "core/geojson.h"
 #include "core/grid.h"
-#include "gltf/export_glb.h"
 #include "image/quicklook.h"
+#include "plugins/mesh_export.h"
+#include "runtime/plugin.h"
 #include "store/store.h"
 
 namespace maquette::cli {
@@ -74,19 +75,22 @@ void run_export(Tiles3dJob job) {
       throw Error("--levels '" + job.levels + "': expected A..B, e.g. 6..10");
     }
   }
-  const int64_t tiles = export_tiles3d(*store, default_grid(), job.spec, job.out);
+  const int64_t tiles = plugin_function<decltype(maquette_mesh_tiles3d)>(
+      kMeshPlugin, kTiles3dEntry)(*store, default_grid(), job.spec, job.out);
   spdlog::info("wrote {}/tileset.json ({} tiles)", job.out, tiles);
 }
 
 void run_glb_export(const MeshJob& job) {
   const auto store = Store::open(job.store, Store::Mode::ReadOnly);
-  export_glb(*store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  plugin_function<decltype(maquette_mesh_glb)>(kMeshPlugin, kGlbEntry)(
+      *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
   spdlog::info("wrote {}", job.out);
 }
 
 void run_drc_export(const MeshJob& job) {
   const auto store = Store::open(job.store, Store::Mode::ReadOnly);
-  export_drc(*store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  plugin_function<decltype(maquette_mesh_drc)>(kMeshPlugin, kDrcEntry)(
+      *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
   spdlog::info("wrote {}", job.out);
 }
 
