@@ -59,6 +59,14 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
   return r;
 }
 
+CliResult run_maquette_traced(const std::string& args) {
+  return run_maquette(args, "LD_DEBUG=files");
+}
+
+std::string plugin_path(const std::string& file) {
+  return (std::filesystem::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / file).string();
+}
+
 int spawn_maquette(const std::string& args, const std::string& env) {
   const std::string prefix = env.empty() ? "" : "env " + env + " ";
   // exec, so that the pid is maquette's own and SIGKILL reaches it, not a shell.

@@ -15,6 +15,13 @@ struct CliResult {
 // added to the environment.
 CliResult run_maquette(const std::string& args, const std::string& env = "");
 
+// `maquette ARGS` with the dynamic loader's trace (LD_DEBUG=files) in `err`: it names every
+// library the process loads (a plug-in as "file=" + plugin_path(its file)).
+CliResult run_maquette_traced(const std::string& args);
+
+// Where the program finds its plug-in `file`: PREFIX/lib/file for PREFIX/bin/maquette.
+std::string plugin_path(const std::string& file);
+
 // Starts `maquette ARGS` (output discarded) and returns its process id, for tests that kill it.
 int spawn_maquette(const std::string& args, const std::string& env = "");
 

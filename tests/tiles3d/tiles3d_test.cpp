@@ -307,19 +307,18 @@ TEST(Tiles3d, DrcPerCell) {
 
 // Draco is in the mesh plug-in (framework/plugins): loaded by the mesh exports, not at every start.
 TEST(Tiles3d, OnlyMeshExportsLoadDraco) {
-  const auto version = run_maquette("--version", "LD_DEBUG=files");
+  const auto version = run_maquette_traced("--version");
   ASSERT_EQ(version.exit_code, 0) << version.err;
   ASSERT_NE(version.err.find("libmaquette.so"), std::string::npos) << "no loader trace";
   EXPECT_EQ(version.err.find("libdraco"), std::string::npos) << version.err;
   EXPECT_EQ(version.err.find("libmaquette_mesh.so"), std::string::npos) << version.err;
 
   const auto& f = tiles3d_fixture();
-  const auto drc = run_maquette("export drc " + f.store_path + " " + temp_dir() +
-                                    "/drc --dem dem " + "--cells " + f.block[0].ToText(),
-                                "LD_DEBUG=files");
+  const auto drc = run_maquette_traced("export drc " + f.store_path + " " + temp_dir() +
+                                       "/drc --dem dem --cells " + f.block[0].ToText());
   ASSERT_EQ(drc.exit_code, 0) << drc.err;
-  const fs::path plugin = fs::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / "libmaquette_mesh.so";
-  EXPECT_NE(drc.err.find("file=" + plugin.string()), std::string::npos) << drc.err;
+  EXPECT_NE(drc.err.find("file=" + plugin_path("libmaquette_mesh.so")), std::string::npos)
+      << drc.err;
   EXPECT_NE(drc.err.find("libdraco"), std::string::npos) << drc.err;
 }
 

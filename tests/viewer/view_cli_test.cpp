@@ -21,7 +21,9 @@
 #include "run_cli.h"
 
 namespace fs = std::filesystem;
+using maquette::test::plugin_path;
 using maquette::test::run_maquette;
+using maquette::test::run_maquette_traced;
 using maquette::test::spawn_maquette;
 using maquette::test::temp_dir;
 
@@ -91,14 +93,18 @@ TEST(ViewCli, RefusesMissingViewerBundleAndSaysHowToBuildIt) {
   EXPECT_NE(r.err.find("maquette_viewer"), std::string::npos) << r.err;
 }
 
+// Refused after the viewer plug-in, with the HTTP library, is loaded (the loader's trace, as in
+// OnlyViewLoadsTheHttpLibrary below).
 TEST(ViewCli, RefusesPortInUse) {
   const Dirs d = make_dirs();
   HeldPort held;
   ASSERT_GT(held.port, 0);
-  const auto r = run_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port " +
-                              std::to_string(held.port));
+  const auto r = run_maquette_traced("view " + d.outdir + " --viewer " + d.viewer + " --port " +
+                                     std::to_string(held.port));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("in use"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("file=" + plugin_path("libmaquette_view.so")), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("libcpp-httplib"), std::string::npos) << r.err;
 }
 
 TEST(ViewCli, RefusesBadPort) {
@@ -154,26 +160,14 @@ TEST(ViewCli, ServesViewerAndTilesetWithMimeTypesAndStopsOnSigint) {
 }
 
 // The dynamic loader's trace (LD_DEBUG=files) names every library a process loads: the HTTP
-// library comes with the viewer plug-in, loaded by `maquette view` and by no other command.
+// library comes with the viewer plug-in, loaded by `maquette view` (RefusesPortInUse above) and
+// by no other command.
 TEST(ViewCli, OnlyViewLoadsTheHttpLibrary) {
-  const auto version = run_maquette("--version", "LD_DEBUG=files");
+  const auto version = run_maquette_traced("--version");
   ASSERT_EQ(version.exit_code, 0) << version.err;
   ASSERT_NE(version.err.find("libmaquette.so"), std::string::npos) << "no loader trace";
   EXPECT_EQ(version.err.find("libcpp-httplib"), std::string::npos) << version.err;
   EXPECT_EQ(version.err.find("libmaquette_view.so"), std::string::npos) << version.err;
-
-  // A held port: the plug-in is loaded, then fails to bind.
-  const Dirs d = make_dirs();
-  HeldPort held;
-  ASSERT_GT(held.port, 0);
-  const auto view = run_maquette(
-      "view " + d.outdir + " --viewer " + d.viewer + " --port " + std::to_string(held.port),
-      "LD_DEBUG=files");
-  EXPECT_NE(view.exit_code, 0);
-  EXPECT_NE(view.err.find("in use"), std::string::npos) << view.err;
-  const fs::path plugin = fs::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / "libmaquette_view.so";
-  EXPECT_NE(view.err.find("file=" + plugin.string()), std::string::npos) << view.err;
-  EXPECT_NE(view.err.find("libcpp-httplib"), std::string::npos) << view.err;
 }
 
 // A copy of the program in PREFIX/bin without PREFIX/lib, so without its plug-ins.
