@@ -92,7 +92,8 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   // A new store is created while the ingest is planned (its schema and fsync overlap the
-  // planning); if the planning refuses the job, a store this process created is removed again,
+  // planning) and filled in bulk (Store::Mode::CreateBulk: each page written once, not through
+  // the WAL); if the planning refuses the job, a store this process created is removed again,
   // so that a refused ingest leaves no store behind, as an existing store is left untouched (one
   // another process created meanwhile included: Store::created).
   std::error_code ec;
@@ -100,7 +101,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   std::future<std::unique_ptr<Store>> created;
   if (fresh)
     created = std::async(std::launch::async,
-                         [&] { return Store::open(store_path, Store::Mode::Create); });
+                         [&] { return Store::open(store_path, Store::Mode::CreateBulk); });
   std::optional<RasterIngestPlan> planned;
   try {
     planned = plan_raster_ingest(store_path, sources, o);

@@ -130,7 +130,6 @@ void create_schema(sqlite::Connection& conn) {
   }
   check_schema(conn);
   if (pragma_int(conn, "PRAGMA user_version") < kStoreSchemaVersion) migrate(conn);
-  conn.exec("PRAGMA journal_mode = WAL");
 }
 
 void check_schema(sqlite::Connection& conn) {

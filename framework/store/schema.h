@@ -21,8 +21,8 @@ void set_version(sqlite::Connection& conn);
 void configure_connection(sqlite::Connection& conn, bool writer);
 
 // Creates the schema in an empty database (if it is already a Maquette store: migrates an
-// older version) and switches it to WAL. Throws "PATH is not a Maquette store" for a foreign
-// database.
+// older version). Throws "PATH is not a Maquette store" for a foreign database. The journal
+// mode is the caller's (Store::open).
 void create_schema(sqlite::Connection& conn);
 
 // Throws maquette::Error unless the database is a Maquette store of a readable version.

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sqlite3.h>
+#include <spdlog/spdlog.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -34,8 +35,8 @@ int sync_file(const std::string& path) {
 
 // Builds a new store under a temporary name and links it into place, so that a process killed
 // at any moment never leaves a file at `path` without the schema (at worst an orphaned
-// PATH.creating.PID next to it).
-bool create_store_file(const std::string& path) {
+// PATH.creating.PID next to it). In WAL mode unless `bulk` (Mode::CreateBulk).
+bool create_store_file(const std::string& path, bool bulk) {
   const std::string tmp = path + ".creating." + std::to_string(::getpid());
   {
     sqlite::Connection conn(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX);
@@ -45,6 +46,7 @@ bool create_store_file(const std::string& path) {
     conn.exec("PRAGMA journal_mode = OFF");
     conn.exec("PRAGMA synchronous = OFF");
     create_schema(conn);
+    if (!bulk) conn.exec("PRAGMA journal_mode = WAL");
   }  // closing the last connection checkpoints and removes the WAL
   // Whole on the disk before it is linked. link() rather than rename(): if another process
   // created the store meanwhile, keep theirs (and return false).
@@ -54,6 +56,33 @@ bool create_store_file(const std::string& path) {
   if (err != 0 && err != EEXIST)
     throw Error("cannot create store " + path + ": " + std::strerror(err));
   return err == 0;
+}
+
+// A writer killed during a commit in rollback-journal mode (a bulk fill) leaves a hot journal,
+// which only a connection that may write can roll back: read-only connections fail on it
+// ("attempt to write a readonly database"). So a read-only open of a writable store rolls it
+// back first; on a read-only file the open reports SQLite's error.
+void roll_back_hot_journal(const std::string& path) {
+  struct stat st {};
+  if (::stat((path + "-journal").c_str(), &st) != 0 || st.st_size == 0) return;
+  if (::access(path.c_str(), W_OK) != 0) return;
+  try {
+    sqlite::Connection conn(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
+    conn.exec("SELECT count(*) FROM sqlite_schema");  // a read rolls a hot journal back
+  } catch (const sqlite::Failure&) {  // the read-only open reports what is wrong
+  }
+}
+
+// Ends the bulk fill of a store this process created: synchronous = NORMAL makes the switch to
+// WAL (a commit in rollback mode) sync the file, and the switch deletes the rollback journal.
+// A failure leaves a valid store in rollback mode, which its next writer switches.
+void finish_bulk_fill(sqlite::Connection& writer) noexcept {
+  try {
+    writer.exec("PRAGMA synchronous = NORMAL");
+    writer.exec("PRAGMA journal_mode = WAL");
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: left in rollback-journal mode: {}", writer.path(), e.what());
+  }
 }
 
 }  // namespace
@@ -106,31 +135,44 @@ RawTile Store::Impl::decode(std::span<const std::byte> blob, const LayerEntry& l
 }
 
 Store::Store(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-Store::~Store() = default;
+Store::~Store() {
+  if (impl_->bulk) finish_bulk_fill(*impl_->writer);
+}
 
 std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
   struct stat st {};
   const bool exists = ::stat(path.c_str(), &st) == 0;
-  if (!exists && mode != Mode::Create) throw Error("no such store: " + path);
+  const bool create = mode == Mode::Create || mode == Mode::CreateBulk;
+  if (!exists && !create) throw Error("no such store: " + path);
   if (exists && S_ISDIR(st.st_mode)) throw Error(path + " is a directory, not a Maquette store");
   if (exists && mode != Mode::ReadOnly && !writable(path, st))
     throw Error(path + " is read-only: open it read-only or make it writable");
 
   auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
   try {
-    if (!exists) impl->created = create_store_file(path);
+    if (!exists) impl->created = create_store_file(path, mode == Mode::CreateBulk);
+    impl->bulk = impl->created && mode == Mode::CreateBulk;
     if (mode == Mode::ReadOnly) {
+      roll_back_hot_journal(path);
       check_schema(*impl->readers.borrow());
     } else {
       impl->writer =
           std::make_unique<sqlite::Connection>(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
       configure_connection(*impl->writer, true);
-      create_schema(*impl->writer);  // for an existing store: checks, migrates, sets WAL
-      // A new store's first commit writes the WAL's header and syncs it and the directory (~2 ms,
-      // 10-30 ms on a busy disk): a write of the same schema version does it here instead, where
-      // the caller may overlap the opening with other work (ingest plans meanwhile).
-      if (!exists) set_version(*impl->writer);
-      impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path);
+      create_schema(*impl->writer);  // for an existing store: checks, migrates
+      if (impl->bulk) {
+        // TRUNCATE: a commit empties the journal rather than deleting it (one file operation
+        // fewer); the switch to WAL at the close deletes it.
+        impl->writer->exec("PRAGMA journal_mode = TRUNCATE");
+        impl->writer->exec("PRAGMA synchronous = OFF");
+      } else {
+        impl->writer->exec("PRAGMA journal_mode = WAL");
+        // A new store's first commit writes the WAL's header and syncs it and the directory
+        // (~2 ms, 10-30 ms on a busy disk): a write of the same schema version does it here
+        // instead, where the caller may overlap the opening with other work.
+        if (!exists) set_version(*impl->writer);
+        impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path);
+      }
     }
   } catch (const sqlite::Failure& e) {
     if (e.code() == SQLITE_NOTADB) throw Error(path + " is not a Maquette store");

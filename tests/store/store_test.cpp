@@ -155,6 +155,45 @@ TEST(StoreOpen, CreatedOnlyByTheOpenThatMadeTheFile) {
   EXPECT_FALSE(Store::open(path, Store::Mode::ReadWrite)->created());
 }
 
+// The file format's read/write version bytes (offsets 18 and 19): 1 rollback journal, 2 WAL.
+int journal_format(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  file.seekg(18);
+  return file.get();
+}
+
+bool exists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+// A store CreateBulk makes is filled without a WAL, readable meanwhile by other connections,
+// and closed synced in WAL mode with no journal left; CreateBulk on an existing store writes
+// through the WAL as usual.
+TEST(StoreOpen, CreateBulkFillsWithoutWalAndClosesInWalMode) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  auto store = Store::open(path, Store::Mode::CreateBulk);
+  EXPECT_TRUE(store->created());
+  store->create_layer(dem_layer(3, 16));
+  store->put_tile("dem", cell("Q012"), smooth_tile(16, 1));
+  EXPECT_EQ(journal_format(path), 1);
+  EXPECT_FALSE(exists(path + "-wal"));
+  EXPECT_EQ(Store::open(path, Store::Mode::ReadOnly)->tile_cells("dem").size(), 1u);
+  store.reset();
+  EXPECT_EQ(journal_format(path), 2);
+  EXPECT_FALSE(exists(path + "-journal"));
+  EXPECT_FALSE(exists(path + "-wal"));
+  const auto reopened = Store::open(path, Store::Mode::ReadOnly);
+  EXPECT_TRUE(reopened->integrity_ok());
+  EXPECT_EQ(reopened->get_tile("dem", cell("Q012"))->bytes, smooth_tile(16, 1).bytes);
+
+  store = Store::open(path, Store::Mode::CreateBulk);
+  EXPECT_FALSE(store->created());
+  store->put_tile("dem", cell("Q013"), smooth_tile(16, 2));
+  EXPECT_TRUE(exists(path + "-wal"));
+}
+
 TEST(StoreLayers, CreateAndReopen) {
   TempDir dir;
   const std::string path = dir.file("s.mqs");
