@@ -1,4 +1,5 @@
-// Background WAL checkpoints for a writing store.
+// Background checkpoints for a writing store: copying the WAL into the database file, and
+// syncing the file, from a thread of its own.
 //
 // SQLite's automatic checkpoint runs in the thread that commits, which then waits for two fsyncs
 // (the WAL, then the database) while it holds the store's write lock, and whatever is left of the
@@ -6,9 +7,14 @@
 // database from its own thread and connection (passive checkpoints, which never block writers)
 // whenever commits have grown the WAL by `kCheckpointPages`, so that the disk writes overlap
 // the work of the writing threads and the close finds little left to copy.
+//
+// A store filled in bulk (rollback journal, no syncs: Store::Mode::CreateBulk) has no WAL, and
+// its close syncs the whole file: there the thread syncs the file whenever commits have grown it
+// by as much, so that the close's sync finds little left to write.
 #pragma once
 
 #include <condition_variable>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -22,11 +28,13 @@ class Checkpointer {
  public:
   // 4 MiB of 16 KiB pages: a few checkpoints per second of ingest, each two fsyncs.
   static constexpr int kCheckpointPages = 256;
+  static constexpr int64_t kCheckpointBytes = int64_t(kCheckpointPages) * 16384;
 
-  // Installs itself on `writer`, replacing the automatic checkpoint. `path`: the store, for the
-  // checkpoint connection, opened with the thread on the first request. Must be destroyed
-  // before `writer`.
-  Checkpointer(sqlite::Connection& writer, std::string path);
+  enum class Journal { Wal, Rollback };
+
+  // Installs itself on `writer` (Wal: replacing the automatic checkpoint). `path`: the store,
+  // opened by the thread, which starts on the first request. Must be destroyed before `writer`.
+  Checkpointer(sqlite::Connection& writer, std::string path, Journal journal);
   ~Checkpointer();
   Checkpointer(const Checkpointer&) = delete;
   Checkpointer& operator=(const Checkpointer&) = delete;
@@ -35,15 +43,20 @@ class Checkpointer {
   // commits, and by a writer done with a run of writes, so that the copy overlaps what it does
   // next instead of the close.
   void request();
+  // Rollback journal: to be called after each commit; requests a sync when the file has grown by
+  // kCheckpointBytes since the last one.
+  void committed();
 
  private:
   void run();
 
   sqlite::Connection& writer_;
   const std::string path_;
+  const Journal journal_;
   std::mutex mutex_;
   std::condition_variable wake_;
   bool requested_ = false, stopping_ = false;
+  int64_t synced_size_ = 0;  // file size at the last requested sync (Rollback)
   std::thread thread_;
 };
 

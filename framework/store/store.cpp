@@ -136,7 +136,10 @@ RawTile Store::Impl::decode(std::span<const std::byte> blob, const LayerEntry& l
 
 Store::Store(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Store::~Store() {
-  if (impl_->bulk) finish_bulk_fill(*impl_->writer);
+  if (impl_->bulk) {
+    impl_->checkpointer.reset();
+    finish_bulk_fill(*impl_->writer);
+  }
 }
 
 std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
@@ -165,13 +168,16 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
         // fewer); the switch to WAL at the close deletes it.
         impl->writer->exec("PRAGMA journal_mode = TRUNCATE");
         impl->writer->exec("PRAGMA synchronous = OFF");
+        impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path,
+                                                            Checkpointer::Journal::Rollback);
       } else {
         impl->writer->exec("PRAGMA journal_mode = WAL");
         // A new store's first commit writes the WAL's header and syncs it and the directory
         // (~2 ms, 10-30 ms on a busy disk): a write of the same schema version does it here
         // instead, where the caller may overlap the opening with other work.
         if (!exists) set_version(*impl->writer);
-        impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path);
+        impl->checkpointer =
+            std::make_unique<Checkpointer>(*impl->writer, path, Checkpointer::Journal::Wal);
       }
     }
   } catch (const sqlite::Failure& e) {

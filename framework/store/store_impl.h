@@ -66,8 +66,11 @@ struct Store::Impl {
   template <typename F>
   void write(F&& f) {
     require_writable();
-    std::lock_guard lock(write_mutex);
-    writer->transaction([&] { f(*writer); });
+    {
+      std::lock_guard lock(write_mutex);
+      writer->transaction([&] { f(*writer); });
+    }
+    if (bulk) checkpointer->committed();  // outside the lock: it may stat the file
   }
 
   // Overview tiles built by update_overviews at one level, with their blobs, by cell id: the
@@ -90,7 +93,7 @@ struct Store::Impl {
   bool bulk = false;  // filled in bulk until closed (Mode::CreateBulk on a new file)
   std::unique_ptr<sqlite::Connection> writer;  // null when read-only
   // Declared after `writer`, so destroyed before it: the writer's close checkpoints what is left.
-  std::unique_ptr<Checkpointer> checkpointer;  // with the writer
+  std::unique_ptr<Checkpointer> checkpointer;  // with the writer (Rollback when `bulk`)
   std::mutex write_mutex;
   mutable ReadPool readers;
   mutable std::mutex layers_mutex;
