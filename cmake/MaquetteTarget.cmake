@@ -43,3 +43,20 @@ function(maquette_add_subfolders)
     endif()
   endforeach()
 endfunction()
+
+include(${CMAKE_CURRENT_LIST_DIR}/StartupLibraries.cmake)
+# Puts the start-up libraries found on this system (StartupLibraries.cmake) first in `target`'s
+# DT_NEEDED, even those it calls nothing of, so that the loader loads them first and finds most
+# symbols in the first libraries it tries. Call before any other target_link_libraries(target).
+function(maquette_startup_order target)
+  set(paths)
+  foreach(name ${MAQUETTE_STARTUP_LIBRARIES})
+    unset(path)
+    find_library(path NAMES ${name} NO_CACHE)
+    if(path)
+      list(APPEND paths ${path})
+    endif()
+  endforeach()
+  target_link_libraries(${target} PRIVATE "-Wl,--push-state,--no-as-needed" ${paths}
+                                          "-Wl,--pop-state")
+endfunction()
