@@ -3,7 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 files=$(git ls-files '*.cpp' '*.h' 2>/dev/null || find framework grids formats modules tests benchmarks -name '*.cpp' -o -name '*.h')
-bad=$(echo "$files" | xargs clang-format --dry-run 2>&1 | grep -o '^[^:]*: warning' | cut -d: -f1 | sort -u || true)
+bad=$(echo "$files" | xargs clang-format --dry-run 2>&1 | grep -oE '^[^:]+:[0-9]+:[0-9]+: warning' | cut -d: -f1 | sort -u || true)
 if [ -n "$bad" ]; then
   echo "not clang-formatted (run: clang-format -i FILE):"
   echo "$bad"

@@ -11,9 +11,11 @@ out=$root/cmake/StartupLibraries.cmake
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 LD_DEBUG=bindings LD_DEBUG_OUTPUT=$tmp/bindings "$build/bin/maquette" --version >/dev/null
-# "binding file A [0] to B [0]: normal symbol `s'": count the B's, the program's own excluded.
+# "binding file A [0] to B [0]: normal symbol `s'": count the B's (file names), the program's
+# own excluded. A symbol that several libraries define counts for the first loaded, so the
+# counts depend a little on the order in use (the list's own order moves a few entries).
 sed -nE 's/.*binding file .* to ([^ ]+) \[.*/\1/p' "$tmp"/bindings.* |
-  grep -v -e "/bin/maquette$" -e "/libmaquette[^/]*$" | xargs -n1 basename | sort | uniq -c |
+  grep -v -e "/bin/maquette$" -e "/libmaquette[^/]*$" | sed 's|.*/||' | sort | uniq -c |
   sort -rn >"$tmp/counts"
 # Every library with at least 0.5 % of the lookups (together ~95 % of them).
 libraries=$(awk 'NR == FNR { total += $1; next } $1 >= total / 200 { print "  " $2 }' \

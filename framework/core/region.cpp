@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <string>
 
-
 namespace maquette {
 
 std::vector<CellId> normalize(std::vector<CellId> cells) {

@@ -5,8 +5,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "store/schema.h"
-
 namespace maquette {
 
 Checkpointer::Checkpointer(sqlite::Connection& writer, std::string path, Journal journal)

@@ -20,6 +20,7 @@
 #include <string>
 #include <thread>
 
+#include "store/schema.h"
 #include "store/sqlite.h"
 
 namespace maquette {
@@ -28,7 +29,7 @@ class Checkpointer {
  public:
   // 4 MiB of 16 KiB pages: a few checkpoints per second of ingest, each two fsyncs.
   static constexpr int kCheckpointPages = 256;
-  static constexpr int64_t kCheckpointBytes = int64_t(kCheckpointPages) * 16384;
+  static constexpr int64_t kCheckpointBytes = int64_t(kCheckpointPages) * kStorePageSize;
 
   enum class Journal { Wal, Rollback };
 

@@ -116,8 +116,8 @@ void configure_connection(sqlite::Connection& conn, bool writer) {
 
 void create_schema(sqlite::Connection& conn) {
   if (pragma_int(conn, "PRAGMA application_id") == 0) {
-    // Larger pages keep 100 kB tile blobs in fewer overflow pages. Only effective on an empty file.
-    conn.exec("PRAGMA page_size = 16384");
+    // Only effective on an empty file.
+    conn.exec(("PRAGMA page_size = " + std::to_string(kStorePageSize)).c_str());
     conn.transaction([&] {
       // Re-checked under the write lock: another process may have created it meanwhile.
       if (pragma_int(conn, "PRAGMA application_id") != 0) return;

@@ -13,6 +13,9 @@ constexpr int32_t kStoreApplicationId = 0x4D515354;  // "MQST", PRAGMA applicati
 // migrated when opened for writing.
 constexpr int32_t kStoreSchemaVersion = 2;
 
+// Page size of a new store: larger pages keep 100 kB tile blobs in fewer overflow pages.
+constexpr int kStorePageSize = 16384;
+
 // Writes kStoreSchemaVersion as the database's user_version.
 void set_version(sqlite::Connection& conn);
 

@@ -2,8 +2,8 @@
 #include "store/store.h"
 
 #include <fcntl.h>
-#include <sqlite3.h>
 #include <spdlog/spdlog.h>
+#include <sqlite3.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -60,29 +60,58 @@ bool create_store_file(const std::string& path, bool bulk) {
 
 // A writer killed during a commit in rollback-journal mode (a bulk fill) leaves a hot journal,
 // which only a connection that may write can roll back: read-only connections fail on it
-// ("attempt to write a readonly database"). So a read-only open of a writable store rolls it
-// back first; on a read-only file the open reports SQLite's error.
+// ("attempt to write a readonly database"), those already open included. So before a read-only
+// connection is lent, a hot journal of a writable store is rolled back by a connection that may
+// write (a journal that is not hot, a live writer's, is left alone by it); on a file nobody may
+// write the read reports SQLite's error.
 void roll_back_hot_journal(const std::string& path) {
-  struct stat st {};
-  if (::stat((path + "-journal").c_str(), &st) != 0 || st.st_size == 0) return;
-  if (::access(path.c_str(), W_OK) != 0) return;
+  struct stat journal {
+  }, st{};
+  if (::stat((path + "-journal").c_str(), &journal) != 0 || journal.st_size == 0) return;
+  if (::stat(path.c_str(), &st) != 0 || !writable(path, st)) return;
   try {
     sqlite::Connection conn(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
     conn.exec("SELECT count(*) FROM sqlite_schema");  // a read rolls a hot journal back
-  } catch (const sqlite::Failure&) {  // the read-only open reports what is wrong
+  } catch (const sqlite::Failure&) {  // the read-only connection reports what is wrong
   }
 }
 
-// Ends the bulk fill of a store this process created: synchronous = NORMAL makes the switch to
-// WAL (a commit in rollback mode) sync the file, and the switch deletes the rollback journal.
-// A failure leaves a valid store in rollback mode, which its next writer switches.
+// The journal mode a pragma leaves: "wal", "truncate", ...
+std::string set_journal_mode(sqlite::Connection& conn, const std::string& mode) {
+  auto q = conn.query(("PRAGMA journal_mode = " + mode).c_str());
+  return q.step() ? q.text(0) : std::string();
+}
+
+// Starts the bulk fill of a store this open created; false if another process has switched it
+// to WAL meanwhile (opening it for writing does), in which case it is written as usual.
+bool start_bulk_fill(sqlite::Connection& writer) {
+  try {
+    // TRUNCATE: a commit empties the journal rather than deleting it (one file operation
+    // fewer); the switch to WAL at the close deletes it.
+    if (set_journal_mode(writer, "TRUNCATE") != "truncate") return false;
+  } catch (const sqlite::Failure&) {  // leaving WAL needs the only connection: "locked"
+    return false;
+  }
+  writer.exec("PRAGMA synchronous = OFF");
+  return true;
+}
+
+// Ends the bulk fill: synchronous = NORMAL makes the switch to WAL (a commit in rollback mode)
+// sync the file, and the switch deletes the rollback journal. The file and any WAL are synced
+// whatever happened: another process may have switched the store to WAL already (then this
+// writer's last commits went to the WAL unsynced), or the switch may fail (then the store stays
+// valid in rollback mode, and its next writer switches it).
 void finish_bulk_fill(sqlite::Connection& writer) noexcept {
   try {
     writer.exec("PRAGMA synchronous = NORMAL");
-    writer.exec("PRAGMA journal_mode = WAL");
+    if (const std::string mode = set_journal_mode(writer, "WAL"); mode != "wal")
+      spdlog::warn("{}: left in {} journal mode", writer.path(), mode);
   } catch (const std::exception& e) {
     spdlog::warn("{}: left in rollback-journal mode: {}", writer.path(), e.what());
   }
+  for (const std::string& file : {writer.path(), writer.path() + "-wal"})
+    if (const int err = sync_file(file); err != 0 && err != ENOENT)
+      spdlog::warn("{}: cannot sync: {}", file, std::strerror(err));
 }
 
 }  // namespace
@@ -92,6 +121,7 @@ std::string cell_text(CellId cell) {
 }
 
 ReadPool::Lease ReadPool::borrow() {
+  roll_back_hot_journal(path_);
   {
     std::lock_guard lock(mutex_);
     if (!idle_.empty()) {
@@ -154,24 +184,19 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
   auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
   try {
     if (!exists) impl->created = create_store_file(path, mode == Mode::CreateBulk);
-    impl->bulk = impl->created && mode == Mode::CreateBulk;
     if (mode == Mode::ReadOnly) {
-      roll_back_hot_journal(path);
       check_schema(*impl->readers.borrow());
     } else {
       impl->writer =
           std::make_unique<sqlite::Connection>(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
       configure_connection(*impl->writer, true);
       create_schema(*impl->writer);  // for an existing store: checks, migrates
+      impl->bulk = impl->created && mode == Mode::CreateBulk && start_bulk_fill(*impl->writer);
       if (impl->bulk) {
-        // TRUNCATE: a commit empties the journal rather than deleting it (one file operation
-        // fewer); the switch to WAL at the close deletes it.
-        impl->writer->exec("PRAGMA journal_mode = TRUNCATE");
-        impl->writer->exec("PRAGMA synchronous = OFF");
-        impl->checkpointer = std::make_unique<Checkpointer>(*impl->writer, path,
-                                                            Checkpointer::Journal::Rollback);
+        impl->checkpointer =
+            std::make_unique<Checkpointer>(*impl->writer, path, Checkpointer::Journal::Rollback);
       } else {
-        impl->writer->exec("PRAGMA journal_mode = WAL");
+        set_journal_mode(*impl->writer, "WAL");
         // A new store's first commit writes the WAL's header and syncs it and the directory
         // (~2 ms, 10-30 ms on a busy disk): a write of the same schema version does it here
         // instead, where the caller may overlap the opening with other work.

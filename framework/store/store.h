@@ -79,11 +79,13 @@ class Store {
   // ReadOnly, ReadWrite: an existing store. Create: creates the file if absent.
   // CreateBulk: like Create, and a store this open creates is filled in bulk until it is
   // closed: commits go through a rollback journal without syncs instead of the WAL, so each
-  // page is written once rather than twice (WAL, then checkpoint), ~12 % of a first ingest.
+  // new page is written once rather than twice (WAL, then checkpoint), ~12 % of a first ingest.
   // The close syncs the file and switches it to WAL like every store. Until then a killed
-  // process still leaves a valid store (the journal rolls its open transaction back when the
-  // store is next opened), but a power cut may not, and other connections' reads wait while a
-  // commit runs. Meant for one writer filling a new store (ingest).
+  // process still leaves a valid store (its journal rolls the open transaction back when the
+  // store is next read), but a power cut may leave it damaged; a commit waits for the reads
+  // of every connection, so a thread must not commit while it holds a read open (a scan's
+  // visitor must not write); and another process opening the store for writing switches it to
+  // WAL, after which it is written as usual. Meant for one writer filling a new store (ingest).
   enum class Mode { ReadOnly, ReadWrite, Create, CreateBulk };
 
   // Throws maquette::Error naming the path: missing file, not a Maquette store (or a newer

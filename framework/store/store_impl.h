@@ -89,8 +89,8 @@ struct Store::Impl {
 
   const std::string path;
   const bool read_only;
-  bool created = false;                        // this open made the file (Store::created)
-  bool bulk = false;  // filled in bulk until closed (Mode::CreateBulk on a new file)
+  bool created = false;  // this open made the file (Store::created)
+  bool bulk = false;     // filled in bulk until closed (Mode::CreateBulk on a new file)
   std::unique_ptr<sqlite::Connection> writer;  // null when read-only
   // Declared after `writer`, so destroyed before it: the writer's close checkpoints what is left.
   std::unique_ptr<Checkpointer> checkpointer;  // with the writer (Rollback when `bulk`)

@@ -33,6 +33,8 @@ CellId cell_of(int64_t k) {
                                 uint32_t((k / 6) / 1024));
 }
 
+constexpr int64_t kOpened = -1;  // reported once the store is open, before any batch
+
 // Writes batches first_batch, first_batch + 1, ... forever, reporting each after its commit.
 [[noreturn]] void write_until_killed(const std::string& path, Store::Mode mode, int64_t first_batch,
                                      int report_fd) {
@@ -43,6 +45,7 @@ CellId cell_of(int64_t k) {
     l.tile_size = kTileSize;
     l.level = kLevel;
     store->create_layer(l);
+    if (::write(report_fd, &kOpened, sizeof kOpened) != sizeof kOpened) ::_exit(3);
     for (int64_t b = first_batch;; ++b) {
       Store::Batch batch(*store);
       for (int i = 0; i < kTilesPerBatch; ++i) {
@@ -65,7 +68,7 @@ void kill_writers_and_check(Store::Mode mode) {
   const bool bulk = mode == Store::Mode::CreateBulk;
   std::mt19937 rng(20240607);
   std::set<int64_t> reported;  // batches committed to the store of this round
-  size_t committed = 0;         // in all rounds
+  size_t committed = 0;        // in all rounds
   for (int round = 0; round < 6; ++round) {
     const std::string path = dir.file("crash" + std::to_string(bulk ? round : 0) + ".mqs");
     if (bulk) reported.clear();
@@ -78,6 +81,10 @@ void kill_writers_and_check(Store::Mode mode) {
       write_until_killed(path, mode, int64_t(round) * 100000, fds[1]);
     }
     ::close(fds[1]);
+    // The kill lands anywhere after the open (which creates the store in the bulk rounds).
+    int64_t opened = 0;
+    ASSERT_EQ(::read(fds[0], &opened, sizeof opened), ssize_t(sizeof opened)) << "writer failed";
+    ASSERT_EQ(opened, kOpened);
     std::this_thread::sleep_for(std::chrono::milliseconds(30 + rng() % 150));
     ASSERT_EQ(::kill(child, SIGKILL), 0);
     int status = 0;
@@ -108,19 +115,24 @@ void kill_writers_and_check(Store::Mode mode) {
     });
     for (const auto& [batch, count] : tiles_per_batch)
       EXPECT_EQ(count, kTilesPerBatch) << "batch " << batch << " is partial";
-    testing::Test::RecordProperty("round" + std::to_string(round) + "_batches", int(tiles_per_batch.size()));
+    testing::Test::RecordProperty("round" + std::to_string(round) + "_batches",
+                                  int(tiles_per_batch.size()));
   }
   EXPECT_GT(committed, 10u) << "the child wrote too little for the test to mean much";
 }
 
 // A writer killed in the middle of a commit to a store being filled in bulk leaves a hot
 // rollback journal, made here for sure: a second connection spills a transaction that blanks
-// every tile into the file, then the process kills itself. A read-only open (which cannot roll
-// back itself) must still give the tiles as they were committed.
-TEST(StoreCrash, ReadOnlyOpenRollsBackAKilledBulkCommit) {
+// every tile into the file, then the process kills itself. Read-only connections cannot roll it
+// back themselves; both a store opened read-only before the kill and one opened after must
+// still give the tiles as they were committed.
+TEST(StoreCrash, ReadOnlyStoresRollBackAKilledBulkCommit) {
   test::TempDir dir;
   const std::string path = dir.file("hot.mqs");
   constexpr int kTiles = 40;
+  int filled[2], opened[2];  // child -> parent: tiles committed; parent -> child: store opened
+  ASSERT_EQ(::pipe(filled), 0);
+  ASSERT_EQ(::pipe(opened), 0);
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -132,6 +144,8 @@ TEST(StoreCrash, ReadOnlyOpenRollsBackAKilledBulkCommit) {
     store->create_layer(l);
     for (int k = 0; k < kTiles; ++k)
       store->put_tile("dem", cell_of(k), test::smooth_tile(kTileSize, float(k)));
+    char go = 0;
+    if (::write(filled[1], &go, 1) != 1 || ::read(opened[0], &go, 1) != 1) ::_exit(3);
     sqlite3* db = nullptr;
     if (sqlite3_open(path.c_str(), &db) != SQLITE_OK ||
         sqlite3_exec(db,
@@ -141,6 +155,11 @@ TEST(StoreCrash, ReadOnlyOpenRollsBackAKilledBulkCommit) {
       ::_exit(2);
     ::kill(::getpid(), SIGKILL);
   }
+  char go = 0;
+  ASSERT_EQ(::read(filled[0], &go, 1), 1) << "writer failed";
+  const auto before = Store::open(path, Store::Mode::ReadOnly);
+  ASSERT_EQ(before->tile_cells("dem").size(), size_t(kTiles));
+  ASSERT_EQ(::write(opened[1], &go, 1), 1);
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status)) << "child exited with " << WEXITSTATUS(status);
@@ -148,12 +167,14 @@ TEST(StoreCrash, ReadOnlyOpenRollsBackAKilledBulkCommit) {
   ASSERT_EQ(::stat((path + "-journal").c_str(), &journal), 0);
   ASSERT_GT(journal.st_size, 0);
 
-  const auto store = Store::open(path, Store::Mode::ReadOnly);
-  EXPECT_TRUE(store->integrity_ok());
-  ASSERT_EQ(store->tile_cells("dem").size(), size_t(kTiles));
-  for (int k = 0; k < kTiles; ++k)
-    EXPECT_EQ(store->get_tile("dem", cell_of(k))->bytes,
-              test::smooth_tile(kTileSize, float(k)).bytes);
+  const auto after = Store::open(path, Store::Mode::ReadOnly);
+  for (const Store* store : {before.get(), after.get()}) {
+    EXPECT_TRUE(store->integrity_ok());
+    ASSERT_EQ(store->tile_cells("dem").size(), size_t(kTiles));
+    for (int k = 0; k < kTiles; ++k)
+      EXPECT_EQ(store->get_tile("dem", cell_of(k))->bytes,
+                test::smooth_tile(kTileSize, float(k)).bytes);
+  }
 }
 
 TEST(StoreCrash, KilledWriterLeavesAValidStore) { kill_writers_and_check(Store::Mode::Create); }

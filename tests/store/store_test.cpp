@@ -194,6 +194,28 @@ TEST(StoreOpen, CreateBulkFillsWithoutWalAndClosesInWalMode) {
   EXPECT_TRUE(exists(path + "-wal"));
 }
 
+// Another writer opening a store being filled in bulk switches it to WAL; the bulk writer goes
+// on writing through the WAL, and every write of both is there after the closes.
+TEST(StoreOpen, AnotherWriterSwitchesABulkFillToWal) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  auto bulk = Store::open(path, Store::Mode::CreateBulk);
+  bulk->create_layer(dem_layer(3, 16));
+  bulk->put_tile("dem", cell("Q012"), smooth_tile(16, 1));
+  EXPECT_EQ(journal_format(path), 1);
+  auto other = Store::open(path, Store::Mode::ReadWrite);
+  EXPECT_EQ(journal_format(path), 2);
+  other->put_tile("dem", cell("Q013"), smooth_tile(16, 2));
+  bulk->put_tile("dem", cell("Q020"), smooth_tile(16, 3));
+  bulk.reset();
+  other.reset();
+  const auto reopened = Store::open(path, Store::Mode::ReadOnly);
+  EXPECT_TRUE(reopened->integrity_ok());
+  EXPECT_EQ(reopened->tile_cells("dem"),
+            (std::vector<CellId>{cell("Q012"), cell("Q013"), cell("Q020")}));
+  EXPECT_FALSE(exists(path + "-journal"));
+}
+
 TEST(StoreLayers, CreateAndReopen) {
   TempDir dir;
   const std::string path = dir.file("s.mqs");
