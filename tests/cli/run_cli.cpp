@@ -67,6 +67,16 @@ std::string plugin_path(const std::string& file) {
   return (std::filesystem::path(MAQUETTE_BIN_DIR).parent_path() / "lib" / file).string();
 }
 
+std::string install_without_plugins(const std::string& prefix) {
+  namespace fs = std::filesystem;
+  const fs::path build = fs::path(MAQUETTE_BIN_DIR).parent_path(), root(prefix);
+  fs::create_directories(root / "bin");
+  fs::create_directories(root / "lib");
+  fs::copy_file(build / "bin" / "maquette", root / "bin" / "maquette");
+  fs::create_symlink(build / "lib" / "libmaquette.so", root / "lib" / "libmaquette.so");
+  return (root / "bin" / "maquette").string();
+}
+
 int spawn_maquette(const std::string& args, const std::string& env) {
   const std::string prefix = env.empty() ? "" : "env " + env + " ";
   // exec, so that the pid is maquette's own and SIGKILL reaches it, not a shell.

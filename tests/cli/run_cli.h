@@ -22,6 +22,10 @@ CliResult run_maquette_traced(const std::string& args);
 // Where the program finds its plug-in `file`: PREFIX/lib/file for PREFIX/bin/maquette.
 std::string plugin_path(const std::string& file);
 
+// An install of the program without its plug-ins under `prefix`: bin/maquette (a copy) and
+// lib/libmaquette.so (a link to the build's). Returns the program's path.
+std::string install_without_plugins(const std::string& prefix);
+
 // Starts `maquette ARGS` (output discarded) and returns its process id, for tests that kill it.
 int spawn_maquette(const std::string& args, const std::string& env = "");
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <thread>
 
+#include "run_cli.h"
 #include "store/store.h"
 
 extern char** environ;
@@ -310,9 +311,7 @@ TEST(Mpi, OnlyALaunchedRunLoadsMpi) {
 TEST(Mpi, MissingPluginIsNamed) {
   const std::string dir = write_pipeline();
   const fs::path prefix = fs::path(dir) / "prefix";
-  fs::create_directories(prefix / "bin");
-  fs::copy_file(kMaquette, prefix / "bin" / "maquette");
-  const Result r = run(dir, 2, "", "", (prefix / "bin" / "maquette").string());
+  const Result r = run(dir, 2, "", "", test::install_without_plugins(prefix.string()));
   EXPECT_NE(r.exit_code, 0);
   const std::string looked_for = (prefix / "lib" / "libmaquette_mpi.so").string();
   EXPECT_NE(r.err.find("maquette: error: cannot load the plug-in " + looked_for), std::string::npos)

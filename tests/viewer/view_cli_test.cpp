@@ -21,6 +21,7 @@
 #include "run_cli.h"
 
 namespace fs = std::filesystem;
+using maquette::test::install_without_plugins;
 using maquette::test::plugin_path;
 using maquette::test::run_maquette;
 using maquette::test::run_maquette_traced;
@@ -174,12 +175,11 @@ TEST(ViewCli, OnlyViewLoadsTheHttpLibrary) {
 TEST(ViewCli, MissingPluginIsNamed) {
   const Dirs d = make_dirs();
   const fs::path prefix = temp_dir();
-  fs::create_directories(prefix / "bin");
-  fs::copy_file(fs::path(MAQUETTE_BIN_DIR) / "maquette", prefix / "bin" / "maquette");
+  const std::string program = install_without_plugins(prefix);
   const fs::path err = prefix / "stderr";
-  const int status = std::system(((prefix / "bin" / "maquette").string() + " view " + d.outdir +
-                                  " --viewer " + d.viewer + " --port 0 2>" + err.string())
-                                     .c_str());
+  const int status = std::system(
+      (program + " view " + d.outdir + " --viewer " + d.viewer + " --port 0 2>" + err.string())
+          .c_str());
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0);
   std::ifstream in(err);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
