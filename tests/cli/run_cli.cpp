@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace maquette::test {
 namespace {
@@ -61,6 +62,14 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
 
 CliResult run_maquette_traced(const std::string& args) {
   return run_maquette(args, "LD_DEBUG=files");
+}
+
+std::string start_trace() {
+  const CliResult r = run_maquette_traced("--version");
+  if (r.exit_code != 0) throw std::runtime_error("maquette --version failed: " + r.err);
+  if (r.err.find("libmaquette.so") == std::string::npos)
+    throw std::runtime_error("no loader trace: " + r.err);
+  return r.err;
 }
 
 std::string plugin_path(const std::string& file) {

@@ -19,6 +19,10 @@ CliResult run_maquette(const std::string& args, const std::string& env = "");
 // library the process loads (a plug-in as "file=" + plugin_path(its file)).
 CliResult run_maquette_traced(const std::string& args);
 
+// The loader's trace of a plain start (`maquette --version`, traced as above), for tests of what
+// every command loads. Throws std::runtime_error if the program fails or leaves no trace.
+std::string start_trace();
+
 // Where the program finds its plug-in `file`: PREFIX/lib/file for PREFIX/bin/maquette.
 std::string plugin_path(const std::string& file);
 

@@ -307,11 +307,9 @@ TEST(Tiles3d, DrcPerCell) {
 
 // Draco is in the mesh plug-in (framework/plugins): loaded by the mesh exports, not at every start.
 TEST(Tiles3d, OnlyMeshExportsLoadDraco) {
-  const auto version = run_maquette_traced("--version");
-  ASSERT_EQ(version.exit_code, 0) << version.err;
-  ASSERT_NE(version.err.find("libmaquette.so"), std::string::npos) << "no loader trace";
-  EXPECT_EQ(version.err.find("libdraco"), std::string::npos) << version.err;
-  EXPECT_EQ(version.err.find("libmaquette_mesh.so"), std::string::npos) << version.err;
+  const std::string trace = start_trace();
+  EXPECT_EQ(trace.find("libdraco"), std::string::npos) << trace;
+  EXPECT_EQ(trace.find("libmaquette_mesh.so"), std::string::npos) << trace;
 
   const auto& f = tiles3d_fixture();
   const auto drc = run_maquette_traced("export drc " + f.store_path + " " + temp_dir() +
