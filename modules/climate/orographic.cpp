@@ -82,8 +82,10 @@ class Orographic : public CellOperator {
         const PixelFrame& f = frames.at(col, row);
         if (std::isnan(h) || !f.valid) continue;
         const March m = march(f, wind);
-        double sum = 0, weights = 0;
-        for (int k = 0; k * m.metres <= reach; ++k) {
+        // The pixel itself, from its sample: at the edge of the data, bilinear() of even an
+        // integer position reads the NaN beyond it.
+        double sum = h, weights = 1;
+        for (int k = 1; k * m.metres <= reach; ++k) {
           const double z = bilinear(dem, col + k * m.dcol, row + k * m.drow);
           if (std::isnan(z)) break;  // the upwind reach ends at the halo or at no data
           const double w = std::exp(-k * m.metres / decay);

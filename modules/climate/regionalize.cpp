@@ -1,6 +1,7 @@
 // climate.regionalize (cell): applies the station fit of climate.fit_stations to a DEM, giving
 // temperature and precipitation rasters. Each pixel takes the regression of the first zone
 // holding its centre; pixels in no zone, or without elevation, are NaN.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -56,6 +57,8 @@ class Regionalize : public CellOperator {
     struct Target {
       Tile<float>* tile;
       std::string column;
+      double floor;  // precipitation cannot be negative: a regression extrapolated below the
+                     // stations' elevations can be
     };
     std::vector<Target> targets;
     for (const char* port : {"temperature", "precipitation"}) {
@@ -70,7 +73,7 @@ class Regionalize : public CellOperator {
                     "'");
       targets.push_back(
           {&(data.output(port) = Tile<float>(size, 1, 0, std::numeric_limits<float>::quiet_NaN())),
-           column});
+           column, port == std::string("precipitation") ? 0.0 : -HUGE_VAL});
     }
     for (int row = 0; row < size; ++row)
       for (int col = 0; col < size; ++col) {
@@ -83,8 +86,8 @@ class Regionalize : public CellOperator {
         const int zone = zone_of(fit.zones, c);
         if (zone < 0) continue;
         for (const Target& t : targets)
-          t.tile->at(col, row) =
-              float(fit.fits[size_t(zone)].at(t.column).predict(c.lon, c.lat, z));
+          t.tile->at(col, row) = float(
+              std::max(t.floor, fit.fits[size_t(zone)].at(t.column).predict(c.lon, c.lat, z)));
       }
   }
 

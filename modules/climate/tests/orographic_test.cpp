@@ -76,6 +76,33 @@ TEST(Orographic, MassBalance) {
   EXPECT_LT(std::abs(moved) / gross, 1e-3) << moved << " of " << gross;
 }
 
+// Flat ground whose data ends inside the tile (no data east of the ridge's crest line): every
+// pixel with data keeps its precipitation, those at the edge of the data too (they were 0 when
+// the pixel's own term was read by bilinear interpolation, which reaches into the no data).
+TEST(Orographic, EdgeOfTheDataKeepsItsPrecipitation) {
+  const Ridge ridge;
+  const auto flat_west = [&](LonLat p) {
+    return east_m(p, ridge.origin) < 0 ? 1500.0 : std::nan("");
+  };
+  CellData data;
+  data.inputs.emplace("dem", with_halo(kCell, kSize, 64, flat_west));
+  data.inputs.emplace("precipitation", with_halo(kCell, kSize, 64, [](LonLat) { return 800; }));
+  const CellData out = run("climate.orographic", kCell, kSize, data, kParams);
+  const Tile<float>& rain = out.outputs.at("precipitation");
+  const Tile<float> dem = climate_test::sample(kCell, kSize, flat_west);
+  int with_data = 0;
+  for (int row = 0; row < kSize; ++row)
+    for (int col = 0; col < kSize; ++col) {
+      if (std::isnan(dem.at(col, row))) {
+        EXPECT_TRUE(std::isnan(rain.at(col, row)));
+        continue;
+      }
+      ++with_data;
+      EXPECT_NEAR(rain.at(col, row), 800, 1e-3) << col << ", " << row;
+    }
+  EXPECT_GT(with_data, kSize);
+}
+
 TEST(Orographic, NeedsItsHalo) {
   CellData data;
   data.inputs.emplace("dem", with_halo(kCell, kSize, 1, Ridge{}));

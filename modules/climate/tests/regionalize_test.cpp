@@ -127,6 +127,18 @@ TEST_F(Regionalize, OutputsFollowTheRegression) {
     }
 }
 
+// Below the stations' elevations a precipitation regression can extrapolate below 0 (here at
+// z < -1200 m); the layer holds 0 there, temperature follows the regression.
+TEST_F(Regionalize, PrecipitationIsNeverNegative) {
+  put_json("stations", synthetic_stations());
+  fit({{"stations", "stations"}, {"columns", {"t", "p"}}}, {kCell});
+  Tile<float> dem = sample(kCell, kSize, [](LonLat) { return -2000; });
+  const auto out = regionalize(
+      kCell, dem, {{"fit", "fit"}, {"temperature_column", "t"}, {"precipitation_column", "p"}});
+  EXPECT_EQ(out.at("precipitation").at(5, 5), 0.0f);
+  EXPECT_NEAR(out.at("temperature").at(5, 5), 20 + 6 * 2.0, 1e-4);
+}
+
 TEST_F(Regionalize, ZonesFromAFeaturesLayer) {
   // Two zones split at 105.5 W with different lapse rates; one more station far away.
   json stations = synthetic_stations();
@@ -189,7 +201,9 @@ TEST_F(Regionalize, Colorado) {
   EXPECT_GT(t.stations, 300);
   EXPECT_GT(t.per_km_elevation, -7);
   EXPECT_LT(t.per_km_elevation, -5);
-  EXPECT_GT(p.per_km_elevation, 0);
+  // Precipitation in mm: Colorado's gains ~190 mm per km of elevation (in cm it would be ~19).
+  EXPECT_GT(p.per_km_elevation, 100);
+  EXPECT_LT(p.per_km_elevation, 400);
   // With both horizontal gradients the lapse rate stays plausible.
   const StationFit h = fit(
       {{"stations", "co"}, {"columns", {"mean_annual_tmean_C"}}, {"horizontal", "both"}}, region);
