@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/lonlat_bounds.h"
 #include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
 #include "geotiff/gdal_util.h"
@@ -62,6 +63,21 @@ double default_resolution(const Grid& grid, const LayerInfo& layer, int level, C
   return std::hypot(x[1] - x[0], y[1] - y[0]);
 }
 
+// The output's uncompressed size: the plane raster's pixels, scaled by the pixel area ratio when
+// resampled to another resolution; throws above the limit unless forced.
+void check_size(const GeoTiffExport& spec, const LayerInfo& layer, const PlaneExtent& extent,
+                double pixel_ratio) {
+  const double pixels = double(extent.width) * double(extent.height) * pixel_ratio * pixel_ratio;
+  const double bytes = pixels * layer.channels * double(dtype_size(layer.dtype));
+  if (bytes <= double(spec.max_bytes) || spec.force) return;
+  throw Error("the GeoTIFF would hold about " + std::to_string(int64_t(bytes / (1 << 20))) +
+              " MiB before compression (" + std::to_string(int64_t(pixels)) + " pixels x " +
+              std::to_string(layer.channels) + " channels x " +
+              std::to_string(dtype_size(layer.dtype)) + " bytes), above the limit of " +
+              std::to_string(spec.max_bytes >> 20) +
+              " MiB: choose a coarser --level or --resolution, a smaller region, or pass --force");
+}
+
 }  // namespace
 
 void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& spec,
@@ -79,18 +95,28 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
   const std::vector<CellId> cells =
       cells_at_level(layer_tile_cells(store, grid, layer, spec.region), level);
 
+  const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
+
   TempGeoTiff result(out + ".part", out);
   if (crs.rhealpix) {
-    write_plane_geotiff(store, grid, layer, cells, level, result.path());
+    check_size(spec, layer, extent, 1.0);
+    write_plane_geotiff(store, grid, layer, cells, level, extent, result.path());
   } else {
     static std::atomic<int> counter = 0;
     const std::string name =
         "maquette-export-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".tif";
     const TempGeoTiff plane((fs::temp_directory_path() / name).string());
-    write_plane_geotiff(store, grid, layer, cells, level, plane.path());
     WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
-    warp.resolution = spec.resolution.value_or(
-        default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs));
+    const double natural = default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs);
+    warp.resolution = spec.resolution.value_or(natural);
+    check_size(spec, layer, extent, natural / warp.resolution);
+    // GDAL finds the extent from the source's edges, which miss the poles at the centres of the
+    // polar squares: give it the cells' bounds in a geographic CRS.
+    if (!warp.bbox_lonlat && crs.srs.IsGeographic()) {
+      const LonLatBounds b = lonlat_bounds(grid, cells);
+      warp.bbox_lonlat = {b.west, b.south, b.east, b.north};
+    }
+    write_plane_geotiff(store, grid, layer, cells, level, extent, plane.path());
     warp_geotiff(plane.path(), result.path(), warp);
     DatasetPtr ds(GDALDataset::Open(result.path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
     if (!ds) gdal_error("cannot reopen " + result.path());

@@ -9,9 +9,12 @@
 #include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
 #include "geotiff/gdal_util.h"
+#include "image/picture_frame.h"
 
 namespace maquette {
 namespace {
+
+constexpr int kBoxLattice = 129;  // points per side of a box projected to find its plane bounds
 
 struct Placed {
   CellId cell;
@@ -20,10 +23,10 @@ struct Placed {
 
 }  // namespace
 
-void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& layer,
-                         const std::vector<CellId>& cells, int level, const std::string& path) {
-  const int n = layer.tile_size;
-  const double pixel = grid.plane_square(cells.front()).side / n;
+PlaneExtent plane_extent(const Grid& grid, const std::vector<CellId>& cells, int tile_size,
+                         const std::optional<std::array<double, 4>>& bbox) {
+  PlaneExtent e;
+  e.pixel = grid.plane_square(cells.front()).side / tile_size;
   double x_min = INFINITY, y_max = -INFINITY, x_max = -INFINITY, y_min = INFINITY;
   for (CellId c : cells) {
     const PlaneSquare s = grid.plane_square(c);
@@ -32,9 +35,40 @@ void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& 
     x_max = std::max(x_max, s.x_min + s.side);
     y_min = std::min(y_min, s.y_max - s.side);
   }
+  e.x_min = x_min, e.y_max = y_max;
   // Cell corners are multiples of the pixel in the plane, so offsets are exact integers.
-  const int64_t width = std::llround((x_max - x_min) / pixel);
-  const int64_t height = std::llround((y_max - y_min) / pixel);
+  int64_t c0 = 0, r0 = 0, c1 = std::llround((x_max - x_min) / e.pixel),
+          r1 = std::llround((y_max - y_min) / e.pixel);
+  if (bbox) {
+    // The box's points (a lattice, so that parts on several faces all count) in the plane.
+    double bx0 = INFINITY, by1 = -INFINITY, bx1 = -INFINITY, by0 = INFINITY;
+    std::vector<LonLat> points = bbox_points(*bbox, kBoxLattice);
+    if ((*bbox)[3] >= 90) points.push_back({0, 90});
+    if ((*bbox)[1] <= -90) points.push_back({0, -90});
+    for (const LonLat& ll : points) {
+      const PlanePoint p = grid.forward({std::remainder(ll.lon, 360.0), ll.lat});
+      bx0 = std::min(bx0, p.x), bx1 = std::max(bx1, p.x);
+      by0 = std::min(by0, p.y), by1 = std::max(by1, p.y);
+    }
+    // Whole pixels, outwards; 1e-6 pixel of slack keeps exact edges from adding a pixel.
+    c0 = std::max(c0, int64_t(std::floor((bx0 - x_min) / e.pixel + 1e-6)));
+    c1 = std::min(c1, int64_t(std::ceil((bx1 - x_min) / e.pixel - 1e-6)));
+    r0 = std::max(r0, int64_t(std::floor((y_max - by1) / e.pixel + 1e-6)));
+    r1 = std::min(r1, int64_t(std::ceil((y_max - by0) / e.pixel - 1e-6)));
+  }
+  e.x_min += double(c0) * e.pixel;
+  e.y_max -= double(r0) * e.pixel;
+  e.width = std::max<int64_t>(c1 - c0, 1);
+  e.height = std::max<int64_t>(r1 - r0, 1);
+  return e;
+}
+
+void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& layer,
+                         const std::vector<CellId>& cells, int level, const PlaneExtent& extent,
+                         const std::string& path) {
+  const int n = layer.tile_size;
+  const int64_t width = extent.width, height = extent.height;
+  const double pixel = extent.pixel, x_min = extent.x_min, y_max = extent.y_max;
   if (width > INT_MAX || height > INT_MAX)
     throw Error("the region is too large for one GeoTIFF (" + std::to_string(width) + " x " +
                 std::to_string(height) + " pixels): choose a coarser --level or a smaller region");
@@ -73,9 +107,17 @@ void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& 
     if (raw->size != n || raw->channels != layer.channels || raw->dtype != layer.dtype)
       throw Error("tile " + p.cell.ToText() + " of layer '" + layer.name +
                   "' does not match the layer's definition");
-    if (ds->RasterIO(GF_Write, int(p.col), int(p.row), n, n, raw->bytes.data(), n, n, type,
-                     layer.channels, nullptr, GSpacing(sample) * layer.channels,
-                     GSpacing(sample) * layer.channels * n, sample, nullptr) != CE_None)
+    // The part of the tile inside the extent.
+    const int64_t c0 = std::max<int64_t>(p.col, 0), r0 = std::max<int64_t>(p.row, 0);
+    const int64_t c1 = std::min<int64_t>(p.col + n, width),
+                  r1 = std::min<int64_t>(p.row + n, height);
+    if (c1 <= c0 || r1 <= r0) continue;
+    const GSpacing pixel_bytes = GSpacing(sample) * layer.channels;
+    std::byte* first =
+        raw->bytes.data() + (r0 - p.row) * n * pixel_bytes + (c0 - p.col) * pixel_bytes;
+    if (ds->RasterIO(GF_Write, int(c0), int(r0), int(c1 - c0), int(r1 - r0), first, int(c1 - c0),
+                     int(r1 - r0), type, layer.channels, nullptr, pixel_bytes, pixel_bytes * n,
+                     sample, nullptr) != CE_None)
       gdal_error("cannot write " + path);
     ++written;
   }

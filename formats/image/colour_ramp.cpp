@@ -18,6 +18,13 @@ struct Stop {
 constexpr Stop kTerrain[] = {{0.00, {58, 112, 64}},   {0.20, {112, 158, 82}},
                              {0.40, {205, 196, 120}}, {0.60, {170, 120, 72}},
                              {0.80, {140, 110, 100}}, {1.00, {250, 250, 250}}};
+// Atlas tints by height in metres; the sea is drawn from 0 m down.
+constexpr Stop kHypsometric[] = {
+    {-8000, {8, 40, 100}},   {-2000, {30, 90, 160}},  {-200, {90, 150, 205}},
+    {0.0, {160, 200, 230}},  {0.001, {60, 130, 80}},  {200, {120, 170, 95}},
+    {500, {185, 205, 120}},  {1000, {230, 215, 145}}, {1500, {210, 170, 105}},
+    {2000, {180, 130, 80}},  {3000, {145, 100, 80}},  {4000, {165, 155, 150}},
+    {5000, {230, 230, 230}}, {6500, {255, 255, 255}}};
 // Flat white through yellow and red to dark purple for steep slopes.
 constexpr Stop kSlope[] = {{0.00, {255, 255, 255}},
                            {0.25, {255, 230, 110}},
@@ -43,10 +50,13 @@ Ramp parse_ramp(std::string_view name) {
   if (name == "grey" || name == "gray") return Ramp::Grey;
   if (name == "terrain") return Ramp::Terrain;
   if (name == "slope") return Ramp::Slope;
-  throw Error("unknown colour ramp '" + std::string(name) + "' (expected grey, terrain or slope)");
+  if (name == "hypsometric") return Ramp::Hypsometric;
+  throw Error("unknown colour ramp '" + std::string(name) +
+              "' (expected grey, terrain, slope or hypsometric)");
 }
 
 std::array<uint8_t, 3> ramp_colour(Ramp ramp, double t) {
+  if (ramp == Ramp::Hypsometric) return interpolate(kHypsometric, std::isfinite(t) ? t : 0.0);
   t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
   switch (ramp) {
     case Ramp::Terrain:
@@ -54,6 +64,7 @@ std::array<uint8_t, 3> ramp_colour(Ramp ramp, double t) {
     case Ramp::Slope:
       return interpolate(kSlope, t);
     case Ramp::Grey:
+    case Ramp::Hypsometric:
       break;
   }
   const auto g = uint8_t(std::lround(255.0 * t));

@@ -7,10 +7,14 @@
 
 namespace maquette {
 
-enum class Ramp { Grey, Terrain, Slope };
-Ramp parse_ramp(std::string_view name);  // "grey", "terrain", "slope"; throws maquette::Error
+// Grey, Terrain and Slope are stretched between two values (t in [0, 1]); Hypsometric maps
+// heights in metres to fixed atlas tints: blues below sea level (0 m included: sea and water),
+// greens, yellows and browns up to 4000 m, grey and white above.
+enum class Ramp { Grey, Terrain, Slope, Hypsometric };
+// "grey", "terrain", "slope", "hypsometric"; throws maquette::Error.
+Ramp parse_ramp(std::string_view name);
 
-// t in [0, 1] (clamped) to RGB.
+// t in [0, 1] (clamped) to RGB; for Hypsometric t is in metres.
 std::array<uint8_t, 3> ramp_colour(Ramp ramp, double t);
 
 }  // namespace maquette

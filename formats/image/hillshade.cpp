@@ -12,19 +12,24 @@ constexpr double kAuthalicRadius = 6371007.180918;  // metres per radian, close 
 
 }  // namespace
 
-std::vector<float> hillshade(const LonLatRaster& m) {
+std::vector<float> hillshade(const PictureRaster& m) {
+  const PictureFrame& f = m.frame.value();
   const double azimuth = 315.0 * std::numbers::pi / 180.0, altitude = std::numbers::pi / 4;
   // Unit vector towards the sun: x east, y north, z up.
   const double sx = std::cos(altitude) * std::sin(azimuth),
                sy = std::cos(altitude) * std::cos(azimuth);
   const double sz = std::sin(altitude);
-  const double dy = m.step * std::numbers::pi / 180.0 * kAuthalicRadius;
+  const bool lonlat = f.projection == Projection::LonLat;
+  const double radians = lonlat ? std::numbers::pi / 180.0 : 0.0;
+  const double dy = lonlat ? f.y_step * radians * kAuthalicRadius : f.y_step;
 
   std::vector<float> out(size_t(m.width) * size_t(m.height),
                          std::numeric_limits<float>::quiet_NaN());
   for (int r = 0; r < m.height; ++r) {
-    const double lat = (m.north - (r + 0.5) * m.step) * std::numbers::pi / 180.0;
-    const double dx = std::max(dy * std::cos(lat), 1e-3 * dy);
+    const double lat = (f.top - (r + 0.5) * f.y_step) * radians;
+    const double dx =
+        lonlat ? std::max(f.x_step * radians * kAuthalicRadius * std::cos(lat), 1e-3 * dy)
+               : f.x_step;
     for (int c = 0; c < m.width; ++c) {
       const float z0 = m.at(c, r);
       if (!std::isfinite(z0)) continue;

@@ -1,5 +1,7 @@
 #include "image/quicklook.h"
 
+#include <gdal_priv.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -7,12 +9,14 @@
 #include "core/error.h"
 #include "gdal/image_file.h"
 #include "image/hillshade.h"
+#include "image/legend.h"
 
 namespace maquette {
 namespace {
 
-// The 2nd and 98th percentiles of the finite values of one channel.
-std::pair<double, double> percentile_range(const LonLatRaster& m, int channel) {
+// The q0 and q1 quantiles of the finite values of one channel.
+std::pair<double, double> quantile_range(const PictureRaster& m, int channel, double q0,
+                                         double q1) {
   std::vector<float> v;
   v.reserve(size_t(m.width) * size_t(m.height));
   for (int r = 0; r < m.height; ++r)
@@ -24,12 +28,12 @@ std::pair<double, double> percentile_range(const LonLatRaster& m, int channel) {
     std::nth_element(v.begin(), it, v.end());
     return double(*it);
   };
-  const double lo = nth(0.02), hi = nth(0.98);
+  const double lo = nth(q0), hi = nth(q1);
   return {lo, hi > lo ? hi : lo + 1.0};
 }
 
 // The channels drawn: the chosen bands for imagery, else channel 0.
-std::vector<int> drawn_channels(const LonLatRaster& m, const QuicklookStyle& style) {
+std::vector<int> drawn_channels(const PictureRaster& m, const QuicklookStyle& style) {
   if (style.classes || m.channels < 3) return {0};
   std::vector<int> bands = style.bands.empty() ? std::vector<int>{0, 1, 2} : style.bands;
   if (bands.size() != 3) throw Error("--bands needs three bands (R,G,B)");
@@ -40,24 +44,64 @@ std::vector<int> drawn_channels(const LonLatRaster& m, const QuicklookStyle& sty
   return bands;
 }
 
+// The values a stretched channel maps to 0 and 1: the given range or the 2-98 % one.
+std::pair<double, double> stretch_range(const PictureRaster& m, const QuicklookStyle& style,
+                                        int channel) {
+  return style.range ? *style.range : quantile_range(m, channel, 0.02, 0.98);
+}
+
+// The legend of a one-channel or categorical picture; none for imagery.
+std::optional<Legend> legend_of(const PictureRaster& m, const QuicklookStyle& style) {
+  if (style.classes) {
+    std::vector<bool> seen;
+    Legend legend{ClassKey{}};
+    auto& key = std::get<ClassKey>(legend);
+    for (const auto& [value, entry] : *style.classes) {
+      bool present = false;
+      for (size_t i = 0; i < m.values.size() && !present; i += size_t(m.channels))
+        present = std::isfinite(m.values[i]) && std::llround(m.values[i]) == value;
+      if (present)
+        key.push_back({class_colour(*style.classes, value),
+                       entry.name.empty() ? std::to_string(value) : entry.name});
+    }
+    return legend;
+  }
+  if (m.channels >= 3) return std::nullopt;
+  ColourBar bar{style.ramp, 0, 1, style.units};
+  std::tie(bar.low, bar.high) =
+      style.ramp == Ramp::Hypsometric ? quantile_range(m, 0, 0.0, 1.0) : stretch_range(m, style, 0);
+  return Legend{bar};
+}
+
+// Writes the frame as OUT.aux.xml (through GDAL's side-car mechanism, which a read-only PNG
+// keeps there) and as the world file OUT.pgw.
+void write_georeference(const PictureFrame& frame, const std::string& path) {
+  std::array<double, 6> gt = frame.geotransform();
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!ds || ds->SetGeoTransform(gt.data()) != CE_None ||
+      ds->SetProjection(frame.crs_wkt().c_str()) != CE_None)
+    throw Error("cannot georeference " + path + ": " + CPLGetLastErrorMsg());
+  ds.reset();
+  if (!GDALWriteWorldFile(path.c_str(), "pgw", gt.data()))
+    throw Error("cannot write the world file of " + path + ": " + CPLGetLastErrorMsg());
+}
+
 }  // namespace
 
-void write_quicklook_png(const LonLatRaster& m, const QuicklookStyle& style,
-                         const std::string& path) {
+RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style) {
   const std::vector<int> channels = drawn_channels(m, style);
   const bool rgb = channels.size() == 3;
   std::vector<std::pair<double, double>> ranges;
   if (!style.classes)
-    for (int k : channels) ranges.push_back(style.range ? *style.range : percentile_range(m, k));
+    for (int k : channels) ranges.push_back(stretch_range(m, style, k));
   const std::vector<float> shade =
       style.hillshade && !rgb && !style.classes ? hillshade(m) : std::vector<float>{};
 
-  std::vector<uint8_t> image(size_t(m.width) * size_t(m.height) * 4, 0);  // RGBA, transparent
+  RgbaImage image(m.width, m.height);
   for (int r = 0; r < m.height; ++r) {
-    uint8_t* row = image.data() + size_t(r) * size_t(m.width) * 4;
     for (int c = 0; c < m.width; ++c) {
       const float v0 = m.at(c, r, channels[0]);
-      if (!std::isfinite(v0)) continue;
+      if (!std::isfinite(v0)) continue;  // transparent
       auto t = [&](size_t k) {
         return (m.at(c, r, channels[k]) - ranges[k].first) / (ranges[k].second - ranges[k].first);
       };
@@ -68,17 +112,28 @@ void write_quicklook_png(const LonLatRaster& m, const QuicklookStyle& style,
         for (size_t k = 0; k < 3; ++k)
           colour[k] = uint8_t(std::lround(255.0 * std::clamp(t(k), 0.0, 1.0)));
       } else {
-        colour = ramp_colour(style.ramp, t(0));
+        colour = ramp_colour(style.ramp, style.ramp == Ramp::Hypsometric ? v0 : t(0));
       }
       if (!shade.empty()) {
         const float s = shade[size_t(r) * size_t(m.width) + size_t(c)];
         for (auto& x : colour) x = uint8_t(std::lround(x * s));
       }
-      std::copy(colour.begin(), colour.end(), row + 4 * c);
-      row[4 * c + 3] = 255;
+      uint8_t* p = image.at(c, r);
+      std::copy(colour.begin(), colour.end(), p);
+      p[3] = 255;
     }
   }
-  write_image(image, m.width, m.height, 4, {"PNG", {}}, path);
+  return image;
+}
+
+void write_quicklook_png(const PictureRaster& m, const QuicklookStyle& style,
+                         const std::string& path, const Overlay& overlay) {
+  RgbaImage image = render_quicklook(m, style);
+  if (overlay && m.frame) overlay(image, *m.frame);
+  if (style.legend)
+    if (const auto legend = legend_of(m, style)) add_legend(image, *legend);
+  write_image(image.pixels, image.width, image.height, 4, {"PNG", {}}, path);
+  if (m.frame) write_georeference(*m.frame, path);
 }
 
 }  // namespace maquette

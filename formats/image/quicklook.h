@@ -1,9 +1,12 @@
-// PNG quicklooks of a lon/lat raster: class colours for categorical layers, three chosen channels
+// PNG quicklooks of a picture raster: class colours for categorical layers, three chosen channels
 // as RGB (imagery), else one channel through a colour ramp, optionally multiplied by a
-// hillshade of the layer itself. Values are stretched between the given or the 2-98 % range of
-// each drawn channel. No data is transparent.
+// hillshade of the layer itself. Stretched ramps and imagery go between the given or the 2-98 %
+// range of each drawn channel; the hypsometric ramp maps metres to fixed colours. No data is
+// transparent. A legend (colour bar with values and units, or class names) can go below.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,7 +14,8 @@
 
 #include "image/class_table.h"
 #include "image/colour_ramp.h"
-#include "image/lonlat_mosaic.h"
+#include "image/mosaic.h"
+#include "image/rgba_image.h"
 
 namespace maquette {
 
@@ -21,11 +25,24 @@ struct QuicklookStyle {
   bool hillshade = false;                          // one-channel layers: shade the ramp
   std::vector<int> bands = {};  // 0-based channels drawn as R, G, B (3+ channels; default 0 1 2)
   std::optional<ClassTable> classes = std::nullopt;  // set for categorical layers
+  bool legend = false;                               // a legend below the picture
+  std::string units = "";                            // of the values, for the legend
 };
 
-// Writes an RGBA PNG; throws maquette::Error naming the path when it cannot be written or a
-// band is out of range.
-void write_quicklook_png(const LonLatRaster& mosaic, const QuicklookStyle& style,
-                         const std::string& path);
+// The picture of `m` in `style`, without a legend: one image pixel per raster pixel (a legend
+// added later goes below and to the right, so the frame stays valid). Throws
+// maquette::Error when a band is out of range.
+RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style);
+
+// Draws over the map (e.g. vector features) before the legend is added; the frame tells where
+// the pixels lie.
+using Overlay = std::function<void(RgbaImage& map, const PictureFrame& frame)>;
+
+// Writes an RGBA PNG (the overlay drawn when `m` has a frame, then the legend when asked for)
+// and, when `m` has a frame, its georeferencing beside it: OUT.aux.xml (CRS and geotransform,
+// read by GDAL and QGIS) and the world file OUT.pgw. Throws maquette::Error naming the path when
+// it cannot be written.
+void write_quicklook_png(const PictureRaster& m, const QuicklookStyle& style,
+                         const std::string& path, const Overlay& overlay = nullptr);
 
 }  // namespace maquette

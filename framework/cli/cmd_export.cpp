@@ -15,6 +15,14 @@ void add_region_options(CLI::App* cmd, RegionOptions& o) {
       ->excludes(bbox);
 }
 
+// --max-mib (in bytes) and --force: refuse exports estimated above a size unless forced.
+void add_size_guard(CLI::App* cmd, int64_t& max_bytes, bool& force, const std::string& force_help) {
+  cmd->add_option("--max-mib", max_bytes, "Refuse exports estimated above this size (MiB)")
+      ->capture_default_str()
+      ->transform([](std::string v) { return std::to_string(std::stoll(v) << 20); });
+  cmd->add_flag("--force", force, force_help);
+}
+
 void add_gtiff_command(CLI::App* exp) {
   auto o = std::make_shared<GtiffJob>();
   CLI::App* cmd = exp->add_subcommand(
@@ -33,6 +41,8 @@ void add_gtiff_command(CLI::App* exp) {
       ->capture_default_str();
   cmd->add_option("--resolution", o->spec.resolution,
                   "Pixel size in --crs units (default: the layer's pixel at the region centre)");
+  add_size_guard(cmd, o->spec.max_bytes, o->spec.force,
+                 "Write above --max-mib (uncompressed size)");
   cmd->callback([o] { run_export(*o); });
 }
 
@@ -41,12 +51,22 @@ void add_png_command(CLI::App* exp) {
   CLI::App* cmd = exp->add_subcommand(
       "png", "Write a PNG quicklook of a layer (colour ramp, hillshade, class colours, stretch)");
   cmd->add_option("STORE", o->store, "Store file")->required();
-  cmd->add_option("OUT", o->out, "Output PNG file")->required();
+  cmd->add_option("OUT", o->out,
+                  "Output PNG file (its georeferencing in OUT.aux.xml and the world file .pgw)")
+      ->required();
   cmd->add_option("--layer", o->layer, "Layer to draw")->required();
   add_region_options(cmd, o->region);
   cmd->add_option("--ramp", o->ramp,
-                  "Colour ramp for one-channel layers: grey, terrain, slope (default: terrain for "
-                  "heights in metres, else grey)");
+                  "Colour ramp for one-channel layers: hypsometric (atlas tints by metres, water "
+                  "blue), or stretched: terrain, grey, slope (default: hypsometric for heights in "
+                  "metres, else grey)");
+  cmd->add_option("--projection", o->projection,
+                  "lonlat, polar (Lambert azimuthal equal-area on the pole) or auto (polar for "
+                  "a region around one pole)")
+      ->capture_default_str();
+  cmd->add_flag(
+      "--no-legend", [o](int64_t) { o->legend = false; },
+      "No legend (colour bar with values and units, or class names) below the picture");
   cmd->add_flag("--hillshade", o->hillshade, "Multiply the ramp by a hillshade of the layer");
   cmd->add_option("--range", o->range,
                   "Values drawn as the ramp's ends (default: 2-98 % of the data, per band)")
@@ -71,10 +91,7 @@ void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture) {
   cmd->add_option("--texcoord-bits", t.bits.texcoord, "Draco texture coordinate bits")
       ->capture_default_str();
   cmd->add_option("--normal-bits", t.bits.normal, "Draco normal bits")->capture_default_str();
-  cmd->add_option("--max-mib", t.max_bytes, "Refuse exports estimated above this size (MiB)")
-      ->capture_default_str()
-      ->transform([](std::string v) { return std::to_string(std::stoll(v) << 20); });
-  cmd->add_flag("--force", t.force, "Write into a non-empty output and above --max-mib");
+  add_size_guard(cmd, t.max_bytes, t.force, "Write into a non-empty output and above --max-mib");
 }
 
 void add_tiles3d_command(CLI::App* exp) {

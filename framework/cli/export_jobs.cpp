@@ -49,17 +49,24 @@ void run_export(const PngJob& o) {
   const LayerInfo info = store->require_layer(o.layer);
   QuicklookStyle style;
   style.ramp = !o.ramp.empty()                            ? parse_ramp(o.ramp)
-               : metres(info.units) && info.channels == 1 ? Ramp::Terrain
+               : metres(info.units) && info.channels == 1 ? Ramp::Hypsometric
                                                           : Ramp::Grey;
   if (!o.range.empty()) style.range = std::make_pair(o.range[0], o.range[1]);
   style.hillshade = o.hillshade;
+  style.legend = o.legend;
+  style.units = info.units;
   for (int b : o.bands) style.bands.push_back(b - 1);
   if (info.semantics == Semantics::Categorical) style.classes = class_table(info);
-  const LonLatRaster mosaic = mosaic_layer(
-      *store, grid, o.layer, layer_tile_cells(*store, grid, info, region_of(o.region)), o.max_size);
+  const RegionSpec region = region_of(o.region);
+  MosaicSpec spec{region.bbox, parse_projection(o.projection), o.max_size,
+                  info.semantics != Semantics::Categorical};
+  const PictureRaster mosaic =
+      mosaic_layer(*store, grid, o.layer, layer_tile_cells(*store, grid, info, region), spec);
   write_quicklook_png(mosaic, style, o.out);
-  spdlog::info("wrote {} ({} x {} px, {:.6f} degrees/px, lon/lat)", o.out, mosaic.width,
-               mosaic.height, mosaic.step);
+  const PictureFrame& f = *mosaic.frame;
+  spdlog::info("wrote {} ({} x {} px of {:.6g} x {:.6g} {}, {})", o.out, mosaic.width,
+               mosaic.height, f.x_step, f.y_step,
+               f.projection == Projection::LonLat ? "degrees" : "m", f.crs_name());
 }
 
 void run_export(Tiles3dJob job) {

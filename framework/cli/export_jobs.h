@@ -23,11 +23,12 @@ struct GtiffJob {
 };
 
 struct PngJob {
-  std::string store, layer, out, ramp;
+  std::string store, layer, out, ramp, projection = "auto";
   RegionOptions region;
   std::vector<double> range;  // empty or 2
   std::vector<int> bands;     // 1-based
   bool hillshade = false;
+  bool legend = true;
   int max_size = 2048;
 };
 

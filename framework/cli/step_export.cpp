@@ -21,8 +21,10 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
       "*dem", "decimation", "position_bits", "texcoord_bits", "normal_bits", "max_mib", "force"};
   static const std::map<std::string, std::vector<std::string>> options = [] {
     std::map<std::string, std::vector<std::string>> o = {
-        {"gtiff", {"*layer", "bbox", "cells", "level", "crs", "resolution"}},
-        {"png", {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size"}},
+        {"gtiff", {"*layer", "bbox", "cells", "level", "crs", "resolution", "max_mib", "force"}},
+        {"png",
+         {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size",
+          "projection", "legend"}},
         {"tiles3d", {"texture", "draco", "bbox", "cells", "content", "levels"}},
         {"glb", {"texture", "draco", "*cells"}},
         {"drc", {"*cells"}}};
@@ -63,7 +65,9 @@ OperatorSpec export_spec() {
         {"level", {{"type", "integer"}, {"minimum", 0}, {"maximum", CellId::kMaxLevel}}},
         {"crs", typed("string", "gtiff: rhealpix or EPSG:NNNN")},
         {"resolution", typed("number", "gtiff: pixel size in crs units")},
-        {"ramp", {{"type", "string"}, {"enum", {"grey", "terrain", "slope"}}}},
+        {"ramp", {{"type", "string"}, {"enum", {"grey", "terrain", "slope", "hypsometric"}}}},
+        {"projection", {{"type", "string"}, {"enum", {"auto", "lonlat", "polar"}}}},
+        {"legend", typed("boolean", "png: a legend below the picture (default true)")},
         {"range", array_of("number", "png: values drawn as the ramp's ends")},
         {"bands", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
         {"hillshade", typed("boolean", "png: multiply by a hillshade")},
@@ -75,7 +79,7 @@ OperatorSpec export_spec() {
         {"texcoord_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
         {"normal_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
         {"max_mib", {{"type", "integer"}, {"minimum", 1}}},
-        {"force", typed("boolean", "write into a non-empty output and above max_mib")},
+        {"force", typed("boolean", "above max_mib; tiles3d: into a non-empty output")},
         {"draco", typed("boolean", "false: plain GLB")},
         {"content", array_of("string", "tiles3d: 3D content layers")},
         {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
@@ -162,6 +166,8 @@ class ExportStep : public TaskOperator {
       if (p.contains("level")) job.spec.level = p.at("level").get<int>();
       read_param(p, "crs", job.spec.crs);
       if (p.contains("resolution")) job.spec.resolution = p.at("resolution").get<double>();
+      if (p.contains("max_mib")) job.spec.max_bytes = p.at("max_mib").get<int64_t>() << 20;
+      read_param(p, "force", job.spec.force);
       run_export(std::move(job));
     } else if (format == "png") {
       PngJob job;
@@ -174,6 +180,8 @@ class ExportStep : public TaskOperator {
       read_param(p, "bands", job.bands);
       read_param(p, "hillshade", job.hillshade);
       read_param(p, "max_size", job.max_size);
+      read_param(p, "projection", job.projection);
+      read_param(p, "legend", job.legend);
       run_export(job);
     } else if (format == "tiles3d") {
       Tiles3dJob job{ctx.store_path, out, "", region_of(p), {}};

@@ -10,8 +10,13 @@ namespace maquette {
 LonLatBounds lonlat_bounds(const Grid& grid, const std::vector<CellId>& cells) {
   const double lon0 = grid.centre(cells.front()).lon;
   double west = 1e9, east = -1e9, south = 90, north = -90;
+  const CellId north_pole = grid.cell_from_point({0, 90}, CellId::kMaxLevel);
+  const CellId south_pole = grid.cell_from_point({0, -90}, CellId::kMaxLevel);
   // The compacted set has the same outline and far fewer cells.
   for (CellId c : compact(cells)) {
+    // A cell around a pole has no boundary point there.
+    if (c.contains(north_pole)) north = 90;
+    if (c.contains(south_pole)) south = -90;
     for (const LonLat& p : grid.boundary(c, 8)) {
       const double lon = lon0 + std::remainder(p.lon - lon0, 360.0);
       west = std::min(west, lon);

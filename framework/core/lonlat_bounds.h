@@ -13,7 +13,8 @@ struct LonLatBounds {
 
 // Bounds of the cells' boundaries. Longitudes are unwrapped around the first cell, so a set of
 // cells across the antimeridian stays in one piece: west is in [-180, 180) and east may exceed
-// 180 (east - 360 is then the eastern edge). Cells around a pole span all longitudes.
+// 180 (east - 360 is then the eastern edge). Cells around a pole span all longitudes and reach
+// the pole.
 // `cells` must not be empty.
 LonLatBounds lonlat_bounds(const Grid& grid, const std::vector<CellId>& cells);
 

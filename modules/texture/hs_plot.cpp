@@ -31,7 +31,7 @@ std::array<double, 2> plot_position(double hue, double saturation) {
 
 void write_hs_plot(const std::vector<uint64_t>& hs_counts, const std::vector<Hsv>& centres,
                    const std::string& path) {
-  LonLatRaster image;
+  PictureRaster image;
   image.width = image.height = kPlotSize;
   image.channels = 3;
   image.values.assign(size_t(kPlotSize) * kPlotSize * 3, NAN);

@@ -85,6 +85,7 @@ std::string export_layer(const std::string& format, const std::string& layer,
 }
 
 Dataset open_raster(const std::string& path) {
+  GDALAllRegister();
   return Dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
 }
 
