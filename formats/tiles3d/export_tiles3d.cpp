@@ -18,23 +18,32 @@ namespace {
 
 constexpr double kEarthRadius = 6371008.8;
 
-// The cell's region; heights padded by the quantization step and by the sag of a straight edge
-// below the ellipsoid's curve, sides by the quantization step (which moves edge vertices up to
-// that far, in any direction).
+// The cell's region; heights padded by the quantization step (which moves vertices up to that
+// far, in any direction) and below by the sag of a straight edge under the ellipsoid's curve,
+// sides by the quantization step. Longitudes stay within [-pi, pi] with west <= east: a cell across
+// the antimeridian (a polar cell on the 180th meridian) gets every longitude, since not every
+// viewer reads a region with west > east (3d-tiles-renderer does not); so does a cell touching a
+// pole, whose vertex there quantization moves to any longitude.
 std::array<double, 6> cell_region(const Grid& grid, const CellTerrain& t, double spacing) {
   const CellId cell = t.cell;
   const TerrainMesh& mesh = t.mesh;
   const LonLatBounds b = lonlat_bounds(grid, {cell});
-  const double rad = std::numbers::pi / 180;
+  constexpr double kPi = std::numbers::pi, rad = kPi / 180;
   const double dlat = t.lattice_step / kEarthRadius;
   const double max_abs_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north))) * rad;
   const double dlon = dlat / std::cos(max_abs_lat);
-  double east = b.east;
-  if (east > 180) east -= 360;  // regions crossing the antimeridian have west > east
-  const double sag = spacing * spacing / (8 * kEarthRadius) + t.lattice_step;
-  return {b.west * rad - dlon,   std::max(-std::numbers::pi / 2, b.south * rad - dlat),
-          east * rad + dlon,     std::min(std::numbers::pi / 2, b.north * rad + dlat),
-          mesh.min_height - sag, mesh.max_height + sag};
+  const double south = std::max(-kPi / 2, b.south * rad - dlat);
+  const double north = std::min(kPi / 2, b.north * rad + dlat);
+  const bool all_longitudes = b.east > 180 || south == -kPi / 2 || north == kPi / 2;
+  const double west = all_longitudes ? -kPi : std::max(-kPi, b.west * rad - dlon);
+  const double east = all_longitudes ? kPi : std::min(kPi, b.east * rad + dlon);
+  const double sag = spacing * spacing / (8 * kEarthRadius);
+  return {west,
+          south,
+          east,
+          north,
+          mesh.min_height - sag - t.lattice_step,
+          mesh.max_height + t.lattice_step};
 }
 
 // A tile's files are OUTDIR/<stem>.glb and OUTDIR/<stem>.<LAYER>.glb.

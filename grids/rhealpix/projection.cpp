@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <utility>
 
 namespace maquette {
 namespace {
@@ -88,10 +89,18 @@ FacePoint RHealpixProjection::from_plane(PlanePoint p) const {
   const double row = (3 * kPi / 4 - p.y / radius()) / (kPi / 2);
   const double col0 = std::floor(col);
   const double row0 = std::floor(row);
-  // The floor rule; a point on the outer boundary of a face goes to that face.
-  for (const auto& [c, r] : {std::pair{col0, row0}, {col0 - 1, row0}, {col0, row0 - 1}}) {
+  // The floor rule; a point on the outer boundary of a face goes to that face (the faces left,
+  // above, and left and above the floor's square, in that order). So does a point beyond it by
+  // rounding only: a face edge computed in metres (x_min + side) may land a few ulps outside.
+  constexpr double kRounding = 1e-12;  // face widths, 10 micrometres
+  constexpr std::pair<double, double> kOffsets[] = {{0, 0}, {-1, 0}, {0, -1}, {-1, -1}, {1, 0},
+                                                    {0, 1}, {1, 1},  {1, -1}, {-1, 1}};
+  for (const auto& [dc, dr] : kOffsets) {
+    const double c = col0 + dc, r = row0 + dr;
     const auto face = face_at(c, r);
-    if (face && col - c <= 1 && row - r <= 1) return {*face, col - c, row - r};
+    const double u = col - c, v = row - r;
+    if (face && u >= -kRounding && u <= 1 + kRounding && v >= -kRounding && v <= 1 + kRounding)
+      return {*face, std::clamp(u, 0.0, 1.0), std::clamp(v, 0.0, 1.0)};
   }
   throw Error("plane point x " + std::to_string(p.x) + ", y " + std::to_string(p.y) +
               " lies outside the six squares of the rHEALPix plane");

@@ -90,5 +90,36 @@ TEST_F(ProjTest, NearPoles) {
   }
 }
 
+// Points on the boundary of every face, computed as meshes and tiles do (left or top edge plus a
+// multiple of the pixel size, so the outer edges and corners of the plane come out a few ulps
+// either side): all invert, to PROJ's points. A point clearly beyond the plane still throws.
+TEST_F(ProjTest, FaceBoundariesInvert) {
+  const Grid& grid = default_grid();
+  for (int face = 0; face < CellId::kNumFaces; ++face) {
+    const PlaneSquare sq = grid.plane_square(CellId::FromFace(face));
+    for (const int level : {0, 3, 14}) {
+      const int64_t n = int64_t(1) << level;
+      const double pixel = sq.side / double(n);
+      const int64_t stride = std::max<int64_t>(1, n / 64);
+      for (int64_t i = 0; i <= n; i += stride) {
+        const double t = double(i) * pixel;
+        for (const PlanePoint p : {PlanePoint{sq.x_min + t, sq.y_max},
+                                   PlanePoint{sq.x_min + double(n) * pixel, sq.y_max - t},
+                                   PlanePoint{sq.x_min + t, sq.y_max - double(n) * pixel},
+                                   PlanePoint{sq.x_min, sq.y_max - t}}) {
+          LonLat ours;
+          ASSERT_NO_THROW(ours = grid.inverse(p)) << face << " " << p.x << " " << p.y;
+          EXPECT_LT(test::distance_m(ours, proj_inverse(p)), 5e-3) << p.x << " " << p.y;
+        }
+      }
+    }
+  }
+  const double r = 6371007.180918;
+  EXPECT_THROW(grid.inverse({M_PI * r + 1, 0}), Error);                  // right of R
+  EXPECT_THROW(grid.inverse({-M_PI * r - 1, 0}), Error);                 // left of O
+  EXPECT_THROW(grid.inverse({0, -M_PI * r / 4 - 1}), Error);             // below Q
+  EXPECT_THROW(grid.inverse({-M_PI * r, 3 * M_PI * r / 4 + 1}), Error);  // above N
+}
+
 }  // namespace
 }  // namespace maquette

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 
 namespace maquette::test {
 namespace {
@@ -90,6 +91,16 @@ std::vector<float> Glb::floats(int accessor) const {
   EXPECT_EQ(v.size() * 4, view["byteLength"].get<size_t>());
   std::memcpy(v.data(), bin.data() + view["byteOffset"].get<size_t>(), v.size() * 4);
   return v;
+}
+
+size_t shared_vertices(const Glb& a, const Glb& b) {
+  using Pos = std::array<float, 3>;
+  const auto& pa = a.primitives.at(0).positions;
+  const auto& pb = b.primitives.at(0).positions;
+  const std::set<Pos> sa(pa.begin(), pa.end());
+  size_t n = 0;
+  for (const Pos& p : std::set<Pos>(pb.begin(), pb.end())) n += sa.count(p);
+  return n;
 }
 
 }  // namespace maquette::test

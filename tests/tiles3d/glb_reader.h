@@ -26,4 +26,7 @@ struct Glb {
 // Reads and decodes `path`; every mismatch with the accessors is a GoogleTest failure.
 Glb read_glb(const std::string& path);
 
+// How many distinct decoded positions of the first primitives of `a` and `b` are identical.
+size_t shared_vertices(const Glb& a, const Glb& b);
+
 }  // namespace maquette::test
