@@ -4,12 +4,15 @@
 #include <httplib.h>
 #include <signal.h>
 #include <spdlog/spdlog.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <memory>
+#include <string>
 #include <thread>
 
 #include "core/error.h"
@@ -50,14 +53,36 @@ void configure(httplib::Server& svr, const ViewServeOptions& o) {
   if (!svr.set_mount_point("/", o.viewer)) throw Error("view: cannot serve " + o.viewer);
   if (!svr.set_mount_point("/", o.outdir)) throw Error("view: cannot serve " + o.outdir);
   svr.set_default_headers({{"Cache-Control", "no-cache"}});
+  // Files are sent as they are, from a provider of known length, which the library does not
+  // compress: it would compress text types (scripts, JSON) on the fly at brotli's slowest setting,
+  // some 50 s for CesiumJS's 6 MB Cesium.js and seconds for the viewer's app.js, which on
+  // 127.0.0.1 only costs time.
+  svr.set_file_request_handler([](const httplib::Request&, httplib::Response& res) {
+    if (res.body.empty()) return;
+    auto body = std::make_shared<const std::string>(std::move(res.body));
+    res.body.clear();
+    res.set_content_provider(body->size(), res.get_header_value("Content-Type"),
+                             [body](size_t offset, size_t length, httplib::DataSink& sink) {
+                               return sink.write(body->data() + offset, length);
+                             });
+  });
   svr.set_logger([](const httplib::Request& req, const httplib::Response& res) {
     spdlog::debug("{} {} -> {}", req.method, req.path, res.status);
   });
 }
 
+// SO_REUSEADDR only (a restart may bind while the last run's connections linger in TIME_WAIT).
+// The library's default adds SO_REUSEPORT, with which a second server binds a port already
+// served and the two then answer in turn.
+void exclusive_port(socket_t sock) {
+  const int yes = 1;
+  setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+}
+
 void serve(const ViewServeOptions& o) {
   httplib::Server svr;
   configure(svr, o);
+  svr.set_socket_options(exclusive_port);
   const std::string host = "127.0.0.1";
   int port = o.port;
   if (port == 0) {

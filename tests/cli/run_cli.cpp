@@ -46,10 +46,12 @@ std::string temp_dir() {
   return dir.string();
 }
 
-CliResult run_maquette(const std::string& args, const std::string& env) {
+namespace {
+
+// Runs `PREFIX maquette ARGS` through /bin/sh.
+CliResult run_prefixed(const std::string& prefix, const std::string& args) {
   const std::string dir = temp_dir();
   const std::string out = dir + "/stdout", err = dir + "/stderr";
-  const std::string prefix = env.empty() ? "" : "env " + env + " ";
   const std::string cmd =
       prefix + MAQUETTE_BIN_DIR + "/maquette " + args + " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
@@ -58,6 +60,16 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+}  // namespace
+
+CliResult run_maquette(const std::string& args, const std::string& env) {
+  return run_prefixed(env.empty() ? "" : "env " + env + " ", args);
+}
+
+CliResult run_maquette_limited(const std::string& args, int seconds) {
+  return run_prefixed("timeout -s INT " + std::to_string(seconds) + " ", args);
 }
 
 CliResult run_maquette_traced(const std::string& args) {

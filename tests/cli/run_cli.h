@@ -15,6 +15,10 @@ struct CliResult {
 // added to the environment.
 CliResult run_maquette(const std::string& args, const std::string& env = "");
 
+// `maquette ARGS` as run_maquette, stopped with SIGINT if still running after `seconds` (for a
+// command that may not return, such as a server): exit code 124 then.
+CliResult run_maquette_limited(const std::string& args, int seconds);
+
 // `maquette ARGS` with the dynamic loader's trace (LD_DEBUG=files) in `err`: it names every
 // library the process loads (a plug-in as "file=" + plugin_path(its file)).
 CliResult run_maquette_traced(const std::string& args);

@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 using maquette::test::install_without_plugins;
 using maquette::test::plugin_path;
 using maquette::test::run_maquette;
+using maquette::test::run_maquette_limited;
 using maquette::test::run_maquette_traced;
 using maquette::test::spawn_maquette;
 using maquette::test::start_trace;
@@ -69,6 +70,31 @@ struct HeldPort {
   ~HeldPort() { close(fd); }
 };
 
+// A port that was free a moment ago.
+int free_port() {
+  HeldPort probe;
+  return probe.port;
+}
+
+// GET `path` from the server on `port`, retried for up to 5 s while it starts.
+httplib::Result get_when_up(httplib::Client& cli, const std::string& path) {
+  cli.set_connection_timeout(1);
+  auto res = cli.Get(path);
+  for (int i = 0; i < 50 && !res; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    res = cli.Get(path);
+  }
+  return res;
+}
+
+// Stops a `maquette view` with Ctrl-C and returns its wait status.
+int interrupt(int pid) {
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
 }  // namespace
 
 TEST(ViewCli, RefusesOutdirWithoutTileset) {
@@ -109,6 +135,33 @@ TEST(ViewCli, RefusesPortInUse) {
   EXPECT_NE(r.err.find("libcpp-httplib"), std::string::npos) << r.err;
 }
 
+// A second `maquette view` on the port of a running one is refused (cpp-httplib's default socket
+// options share the port with SO_REUSEPORT: both would serve, answering in turn); the first
+// goes on serving.
+TEST(ViewCli, RefusesThePortOfARunningView) {
+  const Dirs d = make_dirs();
+  const int port = free_port();
+  const std::string args =
+      "view " + d.outdir + " --viewer " + d.viewer + " --port " + std::to_string(port);
+  const int pid = spawn_maquette(args);
+  ASSERT_GT(pid, 0);
+  httplib::Client cli("127.0.0.1", port);
+  ASSERT_TRUE(get_when_up(cli, "/tileset.json")) << "maquette view did not answer on " << port;
+
+  const auto second = run_maquette_limited(args, 10);
+  EXPECT_NE(second.exit_code, 0) << second.out;
+  EXPECT_NE(second.err.find("127.0.0.1:" + std::to_string(port) + " (port in use?)"),
+            std::string::npos)
+      << second.err;
+  EXPECT_EQ(second.out.find("Serving"), std::string::npos) << second.out;
+  auto res = cli.Get("/tileset.json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+
+  const int status = interrupt(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+}
+
 TEST(ViewCli, RefusesBadPort) {
   const Dirs d = make_dirs();
   const auto r = run_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port 70000");
@@ -118,21 +171,12 @@ TEST(ViewCli, RefusesBadPort) {
 
 TEST(ViewCli, ServesViewerAndTilesetWithMimeTypesAndStopsOnSigint) {
   const Dirs d = make_dirs();
-  int port = 0;
-  {
-    HeldPort probe;  // a port that was free a moment ago
-    port = probe.port;
-  }
+  const int port = free_port();
   const int pid = spawn_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port " +
                                  std::to_string(port));
   ASSERT_GT(pid, 0);
   httplib::Client cli("127.0.0.1", port);
-  cli.set_connection_timeout(1);
-  auto res = cli.Get("/tileset.json");
-  for (int i = 0; i < 50 && !res; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    res = cli.Get("/tileset.json");
-  }
+  auto res = get_when_up(cli, "/tileset.json");
   ASSERT_TRUE(res) << "maquette view did not answer on port " << port;
   EXPECT_EQ(res->status, 200);
   EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
@@ -154,11 +198,40 @@ TEST(ViewCli, ServesViewerAndTilesetWithMimeTypesAndStopsOnSigint) {
   ASSERT_TRUE(escape);
   EXPECT_NE(escape->status, 200);
 
-  ASSERT_EQ(kill(pid, SIGINT), 0);
-  int status = 0;
-  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  const int status = interrupt(pid);
   EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
   EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
+// Files are sent as they are, even to a browser that accepts compressed ones: the library would
+// compress scripts and JSON on the fly with brotli's slowest setting (some 50 s for CesiumJS's
+// 6 MB Cesium.js, in tests/viewer/cesium.mjs), which on 127.0.0.1 only costs time.
+TEST(ViewCli, SendsFilesUncompressed) {
+  const Dirs d = make_dirs();
+  std::string script;
+  for (int i = 0; script.size() < 300000; ++i)
+    script += "var v" + std::to_string(i) + " = " + std::to_string(i * 7919 % 1000) + ";\n";
+  write_file(fs::path(d.viewer) / "big.js", script);
+  const int port = free_port();
+  const int pid = spawn_maquette("view " + d.outdir + " --viewer " + d.viewer + " --port " +
+                                 std::to_string(port));
+  ASSERT_GT(pid, 0);
+  httplib::Client cli("127.0.0.1", port);
+  cli.set_decompress(false);
+  ASSERT_TRUE(get_when_up(cli, "/tileset.json"));
+  for (const auto& [path, file] :
+       {std::pair{"/big.js", fs::path(d.viewer) / "big.js"},
+        std::pair{"/tileset.json", fs::path(d.outdir) / "tileset.json"}}) {
+    auto res = cli.Get(path, {{"Accept-Encoding", "gzip, deflate, br"}});
+    ASSERT_TRUE(res) << path;
+    EXPECT_EQ(res->status, 200) << path;
+    EXPECT_FALSE(res->has_header("Content-Encoding"))
+        << path << ": " << res->get_header_value("Content-Encoding");
+    std::ifstream in(file, std::ios::binary);
+    EXPECT_EQ(res->body, std::string(std::istreambuf_iterator<char>(in), {})) << path;
+  }
+  const int status = interrupt(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
 }
 
 // The dynamic loader's trace (LD_DEBUG=files) names every library a process loads: the HTTP
