@@ -8,30 +8,19 @@
 //   --tileset-dir: an export of `maquette export tiles3d` (e.g. the demo's); without it a small
 //                  Draco tileset is generated into OUT/tileset (make_tileset.mjs).
 // Exit codes: 0 pass, 1 fail, 77 skipped (no chromium).
-import { spawn, spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-import { tmpdir } from 'node:os';
+import { spawnSync } from 'node:child_process';
+import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import {
+  Checks, launchBrowser, log, parseArgs, requireFrom, shoot, startView, terrainPixels, waitLoaded as waitFor,
+} from './harness.mjs';
 
-const SKIP = 77;
-const t0 = Date.now();
 const here = dirname(fileURLToPath(import.meta.url));
-const args = {};
-for (let i = 2; i < process.argv.length; i += 2) args[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+const args = parseArgs();
 const out = resolve(args.out || 'viewer-e2e-out');
 const nodeModules = resolve(args['node-modules'] || join(here, 'node_modules'));
-const chromiumPath = process.env.MAQUETTE_CHROMIUM || '/usr/bin/chromium';
-const log = (...m) => console.log(`[${((Date.now() - t0) / 1000).toFixed(1)}s]`, ...m);
-
-if (!existsSync(chromiumPath)) {
-  console.log(`SKIPPED: no Chromium at ${chromiumPath} (install the Debian package chromium, or set MAQUETTE_CHROMIUM)`);
-  process.exit(SKIP);
-}
-const require = createRequire(join(nodeModules, '..', 'package.json'));
-const { chromium } = require('playwright-core');
-const { PNG } = require('pngjs');
+const { PNG } = requireFrom(nodeModules)('pngjs');
 
 rmSync(out, { recursive: true, force: true });
 mkdirSync(out, { recursive: true });
@@ -43,69 +32,24 @@ if (generated) {
   if (r.status !== 0) throw new Error('make_tileset.mjs failed');
 }
 
-const failures = [];
-function check(ok, what) {
-  log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-}
+const checks = new Checks();
+const check = checks.check.bind(checks);
+const { failures } = checks;
 
-// --- maquette view --------------------------------------------------------------------------
-const server = spawn(args.maquette, ['view', tilesetDir, '--port', '0', '--viewer', args.viewer],
-  { stdio: ['ignore', 'pipe', 'pipe'] });
-let serverErr = '';
-server.stderr.on('data', (d) => { serverErr += d; });
-const url = await new Promise((resolveUrl, reject) => {
-  let buf = '';
-  const timer = setTimeout(() => reject(new Error(`maquette view printed no URL: ${buf}${serverErr}`)), 10000);
-  server.stdout.on('data', (d) => {
-    buf += d;
-    const m = buf.match(/http:\/\/127\.0\.0\.1:\d+\//);
-    if (m) { clearTimeout(timer); resolveUrl(m[0]); }
-  });
-  server.on('exit', (code) => { clearTimeout(timer); reject(new Error(`maquette view exited (${code}): ${buf}${serverErr}`)); });
-});
-log(`maquette view serves ${tilesetDir} at ${url}`);
-
-// --- the browser ----------------------------------------------------------------------------
-const userDataDir = mkdtempSync(join(tmpdir(), 'maquette-chromium-'));
-let context;
+const view = await startView(args.maquette, tilesetDir, args.viewer);
+const { url } = view;
+const b = await launchBrowser(nodeModules);
+const { page, consoleErrors, requests, badRequests } = b;
 let exitCode = 1;
 try {
-  context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: chromiumPath,
-    headless: true,
-    viewport: { width: 960, height: 640 },
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
-      '--disable-dev-shm-usage'],
-  });
-  const page = context.pages()[0] || await context.newPage();
-  const consoleErrors = [];
-  page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(`${m.text()} ${m.location()?.url || ''}`); });
-  page.on('pageerror', (e) => consoleErrors.push(String(e)));
-  const requests = [];
-  page.on('request', (r) => requests.push(r.url()));
-  const badRequests = [];
-  page.on('requestfailed', (r) => badRequests.push(`${r.url()} (${r.failure()?.errorText})`));
-  page.on('response', (r) => { if (r.status() >= 400 && !/favicon/.test(r.url())) badRequests.push(`${r.url()} (HTTP ${r.status()})`); });
-
   await page.goto(url, { waitUntil: 'load' });
+  // on a timeout, say where it got stuck: the page state, the renderer's tile counts, the camera
   const waitLoaded = async (what) => {
-    try {
-      await page.waitForFunction(() => document.documentElement.dataset.tilesLoaded === 'true'
-        || document.documentElement.dataset.error, null, { timeout: 40000, polling: 100 });
-    } catch (e) {
-      // say where it got stuck: the page state, the renderer's tile counts, the camera
-      const diag = await page.evaluate(() => {
-        const v = window.__maquetteViewer;
-        return { state: window.__maquette, stats: v?.tiles.stats, visibleTiles: v?.tiles.visibleTiles.size,
-          camera: v?.camera.position.toArray(), target: v?.controls.target.toArray() };
-      }).catch((e2) => String(e2));
-      log(`${what}: tiles never loaded: ${JSON.stringify(diag)}`);
-      log(`console errors: ${consoleErrors.slice(0, 5).join(' | ') || 'none'}; failed requests: ${badRequests.slice(0, 5).join(' ') || 'none'}`);
-      await page.screenshot({ path: join(out, `viewer-timeout-${what.replace(/\W+/g, '-')}.png`) }).catch(() => {});
-      throw e;
-    }
+    await waitFor(b, what, out, () => {
+      const v = window.__maquetteViewer;
+      return { state: window.__maquette, stats: v?.tiles.stats, visibleTiles: v?.tiles.visibleTiles.size,
+        camera: v?.camera.position.toArray(), target: v?.controls.target.toArray() };
+    }, 40000);
     const st = await page.evaluate(() => ({ ...window.__maquette }));
     check(!st.errors.length, `${what}: tiles loaded without errors ${st.errors.join('; ')}`);
     return st;
@@ -118,26 +62,11 @@ try {
   check(foreign.length === 0, `the page loads only from maquette view (works offline) ${foreign.slice(0, 3).join(' ')}`);
   check(requests.some((r) => r.includes('/draco/')), 'the Draco decoder is served from the bundle');
 
-  // Pixels of a screenshot: terrain = pixels away from the background colour.
-  const bg = [0x1d, 0x22, 0x29];
-  const shoot = async (name) => {
-    const buf = await page.screenshot({ path: join(out, name) });
-    return PNG.sync.read(buf);
-  };
-  const textured = await shoot('viewer-texture.png');
+  // Terrain: pixels away from the background colour. The panel (top left) is not terrain; it is
+  // small next to the frame.
+  const textured = await shoot(b, out, 'viewer-texture.png', PNG);
   const n = textured.width * textured.height;
-  let terrain = 0, sum = 0, sum2 = 0;
-  const isTerrain = new Uint8Array(n);
-  for (let i = 0; i < n; i++) {
-    const [r, g, b] = [textured.data[4 * i], textured.data[4 * i + 1], textured.data[4 * i + 2]];
-    if (Math.max(Math.abs(r - bg[0]), Math.abs(g - bg[1]), Math.abs(b - bg[2])) > 12) {
-      isTerrain[i] = 1; terrain++;
-      const l = 0.3 * r + 0.59 * g + 0.11 * b; sum += l; sum2 += l * l;
-    }
-  }
-  // The panel (top left) is not terrain; it is small next to the frame.
-  const cover = terrain / n;
-  const sd = terrain ? Math.sqrt(Math.max(sum2 / terrain - (sum / terrain) ** 2, 0)) : 0;
+  const { cover, sd, mask: isTerrain, count: terrain } = terrainPixels(textured, [0x1d, 0x22, 0x29]);
   check(cover > 0.25, `terrain covers ${(100 * cover).toFixed(1)} % of the frame (> 25 %)`);
   check(sd > 8, `terrain pixels vary (luminance s.d. ${sd.toFixed(1)} > 8): not a flat fill`);
 
@@ -164,7 +93,7 @@ try {
   await page.click('#toggle-shading');
   await page.waitForFunction(() => document.documentElement.dataset.shading === 'hillshade', null, { timeout: 5000 });
   await waitLoaded('hillshade');
-  const hill = await shoot('viewer-hillshade.png');
+  const hill = await shoot(b, out, 'viewer-hillshade.png', PNG);
   let diff = 0, changed = 0;
   for (let i = 0; i < n; i++) {
     if (!isTerrain[i]) continue;
@@ -186,11 +115,8 @@ try {
   log(`FAIL ${e.stack || e}`);
   exitCode = 1;
 } finally {
-  if (context) await context.close().catch(() => {});
-  rmSync(userDataDir, { recursive: true, force: true });
-  server.kill('SIGINT');
-  await new Promise((r) => { if (server.exitCode !== null) r(); else server.on('exit', r); setTimeout(r, 3000); });
-  if (server.exitCode !== 0) { log(`FAIL maquette view did not stop cleanly on SIGINT (${server.exitCode}) ${serverErr}`); exitCode = 1; }
+  await b.close();
+  if (!await view.stop()) exitCode = 1;
 }
 log(exitCode ? `viewer e2e FAILED: ${failures.join('; ')}` : `viewer e2e passed; screenshots in ${out}`);
 process.exit(exitCode);

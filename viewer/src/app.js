@@ -4,7 +4,7 @@
 // this folder, so it works offline.
 //
 // Query parameters: ?tileset=URL (default ./tileset.json), &shading=hillshade|texture,
-// &errorTarget=PIXELS (screen-space error, default 6).
+// &errorTarget=PIXELS (screen-space error, default 6), &exaggeration=K (vertical, 1..10).
 //
 // For tests and scripts the page publishes its state in `window.__maquette` and as attributes on
 // <html>: data-tiles-loaded="true" once every tile in view has loaded and a few frames have been
@@ -15,10 +15,18 @@ import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { TilesRenderer } from '3d-tiles-renderer';
 import { GLTFExtensionsPlugin, ReorientationPlugin } from '3d-tiles-renderer/plugins';
+import { MAX_EXAGGERATION, MIN_EXAGGERATION, VerticalExaggeration } from './exaggeration.js';
+import { contentCentre, contentPoints, fitView, tilesetPoints, viewElevation } from './framing.js';
 
 const params = new URLSearchParams(window.location.search);
 const tilesetUrl = new URL(params.get('tileset') || './tileset.json', window.location.href).href;
 const STABLE_FRAMES = 8;  // frames with nothing pending before "loaded" is signalled
+const EXAGGERATION_STEP = 0.5;
+
+function exaggerationParam() {
+  const k = Number(params.get('exaggeration') || 1);
+  return Number.isFinite(k) ? THREE.MathUtils.clamp(k, MIN_EXAGGERATION, MAX_EXAGGERATION) : 1;
+}
 
 const state = {
   tilesLoaded: false,
@@ -27,11 +35,14 @@ const state = {
   tileset: tilesetUrl,
   modelsLoaded: 0,
   extraContentsLoaded: 0,
+  exaggeration: exaggerationParam(),
+  view: null,  // the last framing: lat, lon (radians) and angular radius of the content
   errors: [],
   cell: null,
   lon: null,
   lat: null,
-  height: null,
+  height: null,  // of the terrain, as exported (the exaggerated height divided by the factor)
+  ecef: null,  // the point hit under the mouse, as drawn (exaggerated), in the tileset's frame
 };
 window.__maquette = state;
 const html = document.documentElement;
@@ -39,6 +50,8 @@ const statusEl = document.getElementById('status');
 const cellEl = document.getElementById('cell');
 const lonlatEl = document.getElementById('lonlat');
 const toggleEl = document.getElementById('toggle-shading');
+const exaggerationEl = document.getElementById('exaggeration');
+const exaggerationValueEl = document.getElementById('exaggeration-value');
 
 function setStatus(text) { statusEl.textContent = text; }
 function reportError(message) {
@@ -72,14 +85,19 @@ scene.add(sun);
 scene.add(new THREE.HemisphereLight(0xdfe8f5, 0x3a3227, 0.55));
 
 // --- materials: textured (as exported) or hillshade (lit, untextured) -----------------------
+// Front faces only. An export's materials are double-sided, and glTF lights a back face with its
+// normal reversed: at a seam between two tiles the back of one tile's skirt, which hangs where the
+// neighbour's skirt hangs, then fought with it in the depth buffer and drew dark dotted lines
+// along every seam. A skirt is only needed from outside its tile, where its front face is.
 const hillshadeMaterial = new THREE.MeshStandardMaterial({
-  color: 0xdedad2, roughness: 1.0, metalness: 0.0, side: THREE.DoubleSide,
+  color: 0xdedad2, roughness: 1.0, metalness: 0.0, side: THREE.FrontSide,
 });
 
 function applyShading(root) {
   root.traverse((obj) => {
     if (!obj.isMesh) return;
     if (!obj.userData.maquetteTextured) {
+      obj.material.side = THREE.FrontSide;
       obj.userData.maquetteTextured = obj.material;
       if (!obj.geometry.attributes.normal && obj.geometry.attributes.position) {
         obj.geometry.computeVertexNormals();  // hillshade needs normals
@@ -113,6 +131,7 @@ class MaquetteTilesRenderer extends TilesRenderer {
     // are refined unconditionally), so an export whose root is an empty tile with a large region
     // (a coarse DGGS cell around the data) would otherwise show nothing when framed from afar.
     tile.maquetteEmpty = !tile.content && (tile.children?.length || 0) > 0;
+    if (this.exaggeration.factor !== 1) this.exaggeration.applyToTile(tile);
   }
 
   calculateTileViewError(tile, target) {
@@ -128,14 +147,17 @@ const extraLoader = new GLTFLoader();
 extraLoader.setDRACOLoader(dracoLoader);
 
 const tiles = new MaquetteTilesRenderer(tilesetUrl);
+const exaggeration = new VerticalExaggeration(tiles, state.exaggeration);
+tiles.exaggeration = exaggeration;
+const reorientation = new ReorientationPlugin({ recenter: true });
 tiles.registerPlugin(new GLTFExtensionsPlugin({ dracoLoader, metadata: true }));
-tiles.registerPlugin(new ReorientationPlugin({ recenter: true }));
+tiles.registerPlugin(reorientation);
 tiles.errorTarget = Number(params.get('errorTarget') || 6);
 tiles.setCamera(camera);
 tiles.setResolutionFromRenderer(camera, renderer);
 scene.add(tiles.group);
 // For scripts and debugging in the console.
-window.__maquetteViewer = { THREE, tiles, scene, camera, controls, renderer };
+window.__maquetteViewer = { THREE, tiles, scene, camera, controls, renderer, exaggeration };
 
 let pendingExtras = 0;
 let stableFrames = 0;
@@ -172,12 +194,14 @@ tiles.addEventListener('load-model', ({ scene: model, tile, url }) => {
   state.modelsLoaded++;
   const cell = cellFromObject(model) || cellFromTile(tile, url);
   if (cell) model.userData.maquetteCell = cell;
+  exaggeration.applyToModel(model);
   applyShading(model);
   for (const extra of tile.maquetteExtraContents || []) {
     pendingExtras++;
     const extraUrl = new URL(extra.uri, `${tile.internal.basePath}/`).href;  // as the renderer resolves contents
     extraLoader.loadAsync(extraUrl).then((gltf) => {
       model.add(gltf.scene);
+      exaggeration.applyToModel(model, gltf.scene);
       // the renderer updates tile world matrices itself, not every frame: do it for the new child
       model.updateMatrixWorld(true);
       applyShading(gltf.scene);
@@ -192,102 +216,68 @@ tiles.addEventListener('load-error', ({ url, error }) => {
 });
 tiles.addEventListener('tiles-load-start', () => { stableFrames = 0; });
 
-// Framing, after the reorientation plugin has moved the tileset to the origin with +Y up: looks
-// at a volume from the south, 45 degrees above the horizon, from the distance at which its
-// horizontal extent fills the view. First the root bounding volume, which is all that is known
-// before any content has loaded; then, once the first tiles in view have loaded, the bounding box
-// of the loaded content, since an export's bounding volumes are the cells of the grid, which can
-// be far larger than the data (the root of a small area is a coarse cell hundreds of km wide).
-// `F` frames the content again (the root volume when no content has loaded yet).
-const box = new THREE.Box3();
-const boxFrame = new THREE.Matrix4();
-const sphere = new THREE.Sphere();
-const contentBox = new THREE.Box3();
+// Framing (framing.js): the tileset is reoriented so that +Y is up at the centre of its content
+// (ReorientationPlugin: +X west, +Z north), and the camera looks at the content from above, from
+// the south: first the top tiles' regions, all that is known before any content has loaded; then,
+// once the first tiles in view have loaded, their meshes, since an export's bounding volumes are
+// the cells of the grid, which can be far larger than the data (the top tiles of a continent can
+// be whole faces of the grid). `F` frames the content shown again.
 let contentFramed = false;
+let contentRadius = 1;  // metres, from the framed target: bounds the far clipping plane
 
-const ELEVATION = THREE.MathUtils.degToRad(45);
-
-// Puts the camera at `dist` from `center`, to its south, ELEVATION above the horizon; `radius`
-// bounds what is framed (for the clipping planes).
-function frameAt(center, dist, radius) {
-  const elev = ELEVATION;
-  controls.target.copy(center);
-  camera.position.copy(center).add(new THREE.Vector3(0, Math.sin(elev) * dist, -Math.cos(elev) * dist));
-  camera.near = Math.max(dist / 1000, 0.1);
-  camera.far = dist * 20 + radius * 4;
-  camera.updateProjectionMatrix();
-  controls.maxDistance = Math.max(dist * 8, radius * 4);
+function frameOn(points) {
+  if (!points.length) return false;
+  state.view = contentCentre(tiles.ellipsoid, points, state.view);
+  reorientation.transformLatLonHeightToOrigin(state.view.lat, state.view.lon);
+  tiles.group.updateMatrixWorld(true);
+  const world = points.map((p) => p.applyMatrix4(tiles.group.matrixWorld));
+  const fit = fitView(camera, world, viewElevation(state.view.radius));
+  controls.target.copy(fit.target);
+  camera.position.copy(fit.position);
+  contentRadius = Math.max(fit.radius, 1);
+  // A continent or more is orbited around the globe; less, from above its horizon.
+  const globe = state.view.radius > THREE.MathUtils.degToRad(20);
+  controls.maxPolarAngle = globe ? Math.PI : Math.PI * 0.495;
+  // the camera stays above the surface when the target lies deep under it (a globe's centre)
+  controls.minDistance = Math.max(-ecefHeight(fit.target), 0);
+  controls.maxDistance = Math.max(fit.dist * 8, contentRadius * 4);
   controls.update();
-  camera.updateMatrixWorld();
+  updateClipping();
   state.framed = true;
   stableFrames = 0;
-}
-
-// The root bounding volume.
-function frameRoot() {
-  if (!tiles.root || !tiles.getBoundingSphere(sphere)) return false;
-  tiles.group.updateMatrixWorld(true);
-  sphere.applyMatrix4(tiles.group.matrixWorld);
-  let r = Math.max(sphere.radius, 1);
-  if (tiles.getOrientedBoundingBox(box, boxFrame)) {
-    // half the longest horizontal side of the oriented box, in the reoriented frame
-    boxFrame.premultiply(tiles.group.matrixWorld);
-    const size = box.getSize(new THREE.Vector3());
-    const sx = new THREE.Vector3().setFromMatrixColumn(boxFrame, 0).multiplyScalar(size.x);
-    const sy = new THREE.Vector3().setFromMatrixColumn(boxFrame, 1).multiplyScalar(size.y);
-    const sz = new THREE.Vector3().setFromMatrixColumn(boxFrame, 2).multiplyScalar(size.z);
-    const horiz = (v) => Math.hypot(v.x, v.z);
-    r = Math.max(0.5 * Math.max(horiz(sx), horiz(sy), horiz(sz)), 1);
-  }
-  const halfFov = THREE.MathUtils.degToRad(camera.fov / 2);
-  const halfFovX = Math.atan(Math.tan(halfFov) * camera.aspect);
-  frameAt(sphere.center, r / Math.tan(Math.min(halfFov, halfFovX)) * 1.15, sphere.radius);
-  return true;
-}
-
-// The bounding box (in the scene) of the content of the tiles shown; false when there is none.
-function computeContentBox(target) {
-  target.makeEmpty();
-  tiles.group.updateMatrixWorld(true);
-  for (const tile of tiles.visibleTiles) {
-    const model = tile.engineData?.scene;
-    if (model) target.expandByObject(model);
-  }
-  return !target.isEmpty();
-}
-
-// Frames the content box: the closest camera, on the framing direction, that sees its 8 corners
-// with a small margin.
-function frameContent() {
-  if (contentBox.isEmpty()) return false;
-  const size = contentBox.getSize(new THREE.Vector3());
-  const center = contentBox.getCenter(new THREE.Vector3());
-  const fwd = new THREE.Vector3(0, -Math.sin(ELEVATION), Math.cos(ELEVATION));  // towards the north, looking down
-  const right = new THREE.Vector3().crossVectors(fwd, camera.up).normalize();
-  const up = new THREE.Vector3().crossVectors(right, fwd);
-  const tanY = Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)) / 1.06;
-  const tanX = tanY * camera.aspect;
-  let dist = 1;
-  const v = new THREE.Vector3();
-  for (let i = 0; i < 8; i++) {
-    v.set(i & 1 ? size.x : -size.x, i & 2 ? size.y : -size.y, i & 4 ? size.z : -size.z).multiplyScalar(0.5);
-    const depth = v.dot(fwd);  // the corner is seen at depth dist + depth
-    dist = Math.max(dist, Math.abs(v.dot(right)) / tanX - depth, Math.abs(v.dot(up)) / tanY - depth);
-  }
-  frameAt(center, dist, 0.5 * size.length());
   return true;
 }
 
 function frame() {
-  return frameContent() || frameRoot();
+  return frameOn(contentPoints(tiles)) || frameOn(tilesetPoints(tiles));
+}
+
+// The height above the ellipsoid of a point of the scene.
+const inverseGroup = new THREE.Matrix4();
+const cart = {};
+function ecefOf(world, target) {
+  inverseGroup.copy(tiles.group.matrixWorld).invert();
+  return target.copy(world).applyMatrix4(inverseGroup);
+}
+function ecefHeight(world) {
+  tiles.ellipsoid.getPositionToCartographic(ecefOf(world, new THREE.Vector3()), cart);
+  return cart.height;
+}
+
+// Clipping planes from the camera's distance to the target and its height above the ellipsoid,
+// so that zooming from space down to a valley keeps both the near terrain and the far horizon.
+function updateClipping() {
+  const d = camera.position.distanceTo(controls.target);
+  camera.near = Math.max(Math.min(d, Math.abs(ecefHeight(camera.position))) / 1000, 0.1);
+  camera.far = d + 2 * contentRadius + controls.maxDistance;
+  camera.updateProjectionMatrix();
+  camera.updateMatrixWorld();
 }
 
 // --- readout under the mouse ---------------------------------------------------------------
 const raycaster = new THREE.Raycaster();
 const pointer = new THREE.Vector2();
-const inverseGroup = new THREE.Matrix4();
 const ecef = new THREE.Vector3();
-const cart = {};
 let pointerDirty = false;
 
 function updateReadout() {
@@ -295,19 +285,18 @@ function updateReadout() {
   raycaster.firstHitOnly = true;
   const hit = raycaster.intersectObject(tiles.group, true)[0];
   if (!hit) {
-    state.cell = state.lon = state.lat = state.height = null;
+    state.cell = state.lon = state.lat = state.height = state.ecef = null;
     cellEl.textContent = 'cell —';
     lonlatEl.textContent = 'lon/lat —';
     delete html.dataset.cell;
     return;
   }
   state.cell = cellFromObject(hit.object);
-  inverseGroup.copy(tiles.group.matrixWorld).invert();
-  ecef.copy(hit.point).applyMatrix4(inverseGroup);
-  tiles.ellipsoid.getPositionToCartographic(ecef, cart);
+  tiles.ellipsoid.getPositionToCartographic(ecefOf(hit.point, ecef), cart);
+  state.ecef = ecef.toArray();
   state.lon = THREE.MathUtils.radToDeg(cart.lon);
   state.lat = THREE.MathUtils.radToDeg(cart.lat);
-  state.height = cart.height;
+  state.height = cart.height / exaggeration.factor;
   cellEl.textContent = `cell ${state.cell || '?'}`;
   lonlatEl.textContent = `lon ${state.lon.toFixed(5)}  lat ${state.lat.toFixed(5)}  h ${state.height.toFixed(1)} m`;
   html.dataset.cell = state.cell || '?';
@@ -322,9 +311,26 @@ canvas.addEventListener('pointermove', (e) => {
 // --- UI ------------------------------------------------------------------------------------
 toggleEl.addEventListener('click', () => setShading(state.shading === 'hillshade' ? 'texture' : 'hillshade'));
 document.getElementById('reframe').addEventListener('click', frame);
+
+function setExaggeration(k) {
+  const factor = THREE.MathUtils.clamp(k, MIN_EXAGGERATION, MAX_EXAGGERATION);
+  state.exaggeration = factor;
+  html.dataset.exaggeration = String(factor);
+  exaggerationEl.value = String(factor);
+  exaggerationValueEl.textContent = `×${factor}`;
+  if (factor !== exaggeration.factor) exaggeration.set(factor);
+  stableFrames = 0;
+}
+exaggerationEl.min = String(MIN_EXAGGERATION);
+exaggerationEl.max = String(MAX_EXAGGERATION);
+exaggerationEl.step = String(EXAGGERATION_STEP);
+exaggerationEl.addEventListener('input', () => setExaggeration(Number(exaggerationEl.value)));
 window.addEventListener('keydown', (e) => {
+  if (e.target === exaggerationEl) return;  // the slider has its own keys
   if (e.key === 'h' || e.key === 'H') toggleEl.click();
   if (e.key === 'f' || e.key === 'F') frame();
+  if (e.key === '+' || e.key === '=') setExaggeration(state.exaggeration + EXAGGERATION_STEP);
+  if (e.key === '-' || e.key === '_') setExaggeration(state.exaggeration - EXAGGERATION_STEP);
 });
 window.addEventListener('resize', () => {
   camera.aspect = window.innerWidth / window.innerHeight;
@@ -334,16 +340,17 @@ window.addEventListener('resize', () => {
 });
 controls.addEventListener('change', () => { stableFrames = 0; });
 setShading(state.shading);
+setExaggeration(state.exaggeration);
 
 // --- loop ----------------------------------------------------------------------------------
 function loop() {
   requestAnimationFrame(loop);
   if (!state.framed && tiles.root) {
-    frameRoot();
+    frame();
     setStatus(`${new URL(tilesetUrl).pathname.split('/').pop()}: loading tiles…`);
   }
   controls.update();
-  camera.updateMatrixWorld();
+  updateClipping();
   tiles.update();
   renderer.render(scene, camera);
   if (pointerDirty && state.framed) {
@@ -358,7 +365,7 @@ function loop() {
   if (stableFrames >= STABLE_FRAMES && !contentFramed) {
     // the first tiles in view have loaded: frame what they hold, then wait for that view's tiles
     contentFramed = true;
-    if (computeContentBox(contentBox)) frameContent();
+    frame();
     stableFrames = 0;
   }
   const ready = stableFrames >= STABLE_FRAMES;
