@@ -32,8 +32,9 @@ nlohmann::json frame_json(const LocalFrame& frame) {
 
 void export_glb(const Store& store, const Grid& grid, const TerrainSettings& settings,
                 const std::vector<CellId>& cells, const std::string& out) {
-  const TerrainSource source(store, grid, settings);
+  TerrainSource source(store, grid, settings);
   source.check_size(int64_t(cells.size()), source.texture ? int64_t(cells.size()) : 0);
+  source.fit_texture_stretch(cells);
   const LocalFrame frame = frame_for(grid, cells);
   std::vector<CellTerrain> terrain;  // one GLB of every cell: all meshes at once
   for (const auto& [level, group] : by_level(cells))

@@ -68,8 +68,10 @@ void GlbBuilder::use(const std::string& extension) {
 
 int GlbBuilder::material(const GlbPrimitive& p) {
   const EncodedImage* image = p.image;
-  json m = {{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1}}},
-            {"doubleSided", true}};  // skirts are seen from either side
+  // Single-sided (glTF's default): a double-sided material lights back faces with the normal
+  // reversed, and a terrain tile's own skirt, seen from behind along the tile's edge where it
+  // meets the surface, drew dark dotted lines along every seam.
+  json m = {{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1}}}};
   if (image) {
     images_.push_back({{"bufferView", view(image->bytes.data(), image->bytes.size())},
                        {"mimeType", image->mime_type}});

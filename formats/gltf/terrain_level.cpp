@@ -50,6 +50,32 @@ int64_t TerrainSource::check_size(int64_t tiles_total, int64_t tiles_with_textur
   return bytes;
 }
 
+void TerrainSource::fit_texture_stretch(const std::vector<CellId>& cells) {
+  if (!texture || !settings.stretch) return;
+  const int bands = texture->channels == 4 ? 3 : texture->channels;
+  std::vector<std::vector<float>> values(static_cast<size_t>(bands));
+  for (CellId c : cells) {
+    const auto tile = texture_of(store, *texture, c);
+    if (!tile) continue;
+    for (int r = 0; r < tile->size(); ++r)
+      for (int col = 0; col < tile->size(); ++col)
+        for (int k = 0; k < bands; ++k)
+          if (const uint8_t v = tile->at(col, r, k); !texture->nodata || v != *texture->nodata)
+            values[size_t(k)].push_back(v);
+  }
+  stretch_.clear();
+  for (auto& v : values)
+    stretch_.push_back(quantile_range(v, kDisplayStretch.first, kDisplayStretch.second));
+}
+
+Tile<uint8_t> TerrainSource::displayed(Tile<uint8_t> tile) const {
+  for (int r = 0; r < tile.size(); ++r)
+    for (int c = 0; c < tile.size(); ++c)
+      for (size_t k = 0; k < stretch_.size(); ++k)
+        tile.at(c, r, int(k)) = stretch_byte(tile.at(c, r, int(k)), stretch_[k]);
+  return tile;
+}
+
 LocalFrame frame_for(const Grid& grid, const std::vector<CellId>& cells) {
   const LonLatBounds b = lonlat_bounds(grid, cells);
   double lon = (b.west + b.east) / 2;
@@ -74,7 +100,7 @@ std::optional<CellTerrain> mesh_cell(const TerrainSource& source, const LocalFra
   if (t.mesh.indices.empty()) return std::nullopt;
   if (source.texture)
     if (const auto tex = texture_of(source.store, *source.texture, cell))
-      t.image = encode_texture(*tex);
+      t.image = encode_texture(source.displayed(*tex));
   return t;
 }
 

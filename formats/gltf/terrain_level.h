@@ -11,6 +11,7 @@
 #include "gltf/local_frame.h"
 #include "gltf/terrain_mesh.h"
 #include "gltf/texture_image.h"
+#include "image/stretch.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -21,6 +22,7 @@ struct TerrainSettings {
   int decimation = 1;   // a vertex every K pixels
   QuantizationBits bits;
   bool draco = true;                     // false: plain meshes (for comparisons)
+  bool stretch = true;                   // the texture with the quicklooks' display stretch
   int64_t max_bytes = int64_t(4) << 30;  // refuse larger exports unless forced
   bool force = false;
 };
@@ -40,6 +42,16 @@ struct TerrainSource {
   // Rough output size of `cells` tiles at `level`; throws (naming it) above max_bytes unless
   // forced.
   int64_t check_size(int64_t tiles_total, int64_t tiles_with_texture) const;
+
+  // With settings.stretch, sets the texture's display stretch (image/stretch.h: 2-98 % of each
+  // colour band, alpha left alone) from the texture of `cells`, e.g. an export's coarsest level:
+  // the same look as `export png` of the imagery.
+  void fit_texture_stretch(const std::vector<CellId>& cells);
+  // A cell's texture as the export shows it.
+  Tile<uint8_t> displayed(Tile<uint8_t> texture) const;
+
+ private:
+  std::vector<StretchRange> stretch_;  // per colour band; empty: the values as stored
 };
 
 struct CellTerrain {

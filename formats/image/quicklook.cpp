@@ -10,26 +10,19 @@
 #include "gdal/image_file.h"
 #include "image/hillshade.h"
 #include "image/legend.h"
+#include "image/stretch.h"
 
 namespace maquette {
 namespace {
 
 // The q0 and q1 quantiles of the finite values of one channel.
-std::pair<double, double> quantile_range(const PictureRaster& m, int channel, double q0,
-                                         double q1) {
+std::pair<double, double> channel_quantiles(const PictureRaster& m, int channel, double q0,
+                                            double q1) {
   std::vector<float> v;
   v.reserve(size_t(m.width) * size_t(m.height));
   for (int r = 0; r < m.height; ++r)
-    for (int c = 0; c < m.width; ++c)
-      if (const float x = m.at(c, r, channel); std::isfinite(x)) v.push_back(x);
-  if (v.empty()) return {0.0, 1.0};
-  auto nth = [&](double q) {
-    auto it = v.begin() + std::ptrdiff_t(q * double(v.size() - 1));
-    std::nth_element(v.begin(), it, v.end());
-    return double(*it);
-  };
-  const double lo = nth(q0), hi = nth(q1);
-  return {lo, hi > lo ? hi : lo + 1.0};
+    for (int c = 0; c < m.width; ++c) v.push_back(m.at(c, r, channel));
+  return quantile_range(v, q0, q1);
 }
 
 // The channels drawn: the chosen bands for imagery, else channel 0.
@@ -47,7 +40,8 @@ std::vector<int> drawn_channels(const PictureRaster& m, const QuicklookStyle& st
 // The values a stretched channel maps to 0 and 1: the given range or the 2-98 % one.
 std::pair<double, double> stretch_range(const PictureRaster& m, const QuicklookStyle& style,
                                         int channel) {
-  return style.range ? *style.range : quantile_range(m, channel, 0.02, 0.98);
+  return style.range ? *style.range
+                     : channel_quantiles(m, channel, kDisplayStretch.first, kDisplayStretch.second);
 }
 
 // The legend of a one-channel or categorical picture; none for imagery.
@@ -68,8 +62,8 @@ std::optional<Legend> legend_of(const PictureRaster& m, const QuicklookStyle& st
   }
   if (m.channels >= 3) return std::nullopt;
   ColourBar bar{style.ramp, 0, 1, style.units};
-  std::tie(bar.low, bar.high) =
-      style.ramp == Ramp::Hypsometric ? quantile_range(m, 0, 0.0, 1.0) : stretch_range(m, style, 0);
+  std::tie(bar.low, bar.high) = style.ramp == Ramp::Hypsometric ? channel_quantiles(m, 0, 0.0, 1.0)
+                                                                : stretch_range(m, style, 0);
   return Legend{bar};
 }
 
@@ -109,8 +103,7 @@ RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style) 
       if (style.classes) {
         colour = class_colour(*style.classes, std::llround(v0));
       } else if (rgb) {
-        for (size_t k = 0; k < 3; ++k)
-          colour[k] = uint8_t(std::lround(255.0 * std::clamp(t(k), 0.0, 1.0)));
+        for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(m.at(c, r, channels[k]), ranges[k]);
       } else {
         colour = ramp_colour(style.ramp, style.ramp == Ramp::Hypsometric ? v0 : t(0));
       }

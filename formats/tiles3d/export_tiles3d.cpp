@@ -65,7 +65,7 @@ std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem)
 
 int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport& spec,
                        const std::string& out_dir) {
-  const TerrainSource source(store, grid, spec.terrain);
+  TerrainSource source(store, grid, spec.terrain);
   for (const std::string& layer : spec.content) require_content_layer(store, layer);
   const auto [lo, hi] = level_range(spec, source.dem);
   const std::vector<CellId> tile_cells = layer_tile_cells(store, grid, source.dem, spec.region);
@@ -77,6 +77,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
   }
   source.check_size(total, source.texture ? total : 0);
   prepare_output_dir(out_dir, spec.terrain.force);
+  source.fit_texture_stretch(cells[lo]);
   const LocalFrame frame = frame_for(grid, cells[lo]);
 
   // Level by level, finest first so that a parent's region can grow to hold its children's.

@@ -92,6 +92,10 @@ void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture) {
       ->capture_default_str();
   cmd->add_option("--normal-bits", t.bits.normal, "Draco normal bits")->capture_default_str();
   add_size_guard(cmd, t.max_bytes, t.force, "Write into a non-empty output and above --max-mib");
+  if (texture)
+    cmd->add_flag(
+        "--no-stretch", [&t](int64_t) { t.stretch = false; },
+        "The texture's values as stored (default: stretched like `export png`, 2-98 % per band)");
 }
 
 void add_tiles3d_command(CLI::App* exp) {

@@ -25,8 +25,8 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"png",
          {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size",
           "projection", "legend"}},
-        {"tiles3d", {"texture", "draco", "bbox", "cells", "content", "levels"}},
-        {"glb", {"texture", "draco", "*cells"}},
+        {"tiles3d", {"texture", "stretch", "draco", "bbox", "cells", "content", "levels"}},
+        {"glb", {"texture", "stretch", "draco", "*cells"}},
         {"drc", {"*cells"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
       o[f].insert(o[f].end(), terrain.begin(), terrain.end());
@@ -81,6 +81,7 @@ OperatorSpec export_spec() {
         {"max_mib", {{"type", "integer"}, {"minimum", 1}}},
         {"force", typed("boolean", "above max_mib; tiles3d: into a non-empty output")},
         {"draco", typed("boolean", "false: plain GLB")},
+        {"stretch", typed("boolean", "false: the texture as stored, not stretched 2-98 %")},
         {"content", array_of("string", "tiles3d: 3D content layers")},
         {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
   return s;
@@ -135,6 +136,7 @@ TerrainSettings terrain_of(const json& p) {
   if (p.contains("max_mib")) t.max_bytes = p.at("max_mib").get<int64_t>() << 20;
   read_param(p, "force", t.force);
   read_param(p, "draco", t.draco);
+  read_param(p, "stretch", t.stretch);
   return t;
 }
 

@@ -34,6 +34,9 @@ DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
   EXPECT_EQ(mesh.num_points(), pos_acc["count"].get<uint32_t>());
   EXPECT_EQ(size_t(mesh.num_faces()) * 3, acc[prim["indices"].get<int>()]["count"].get<size_t>());
   out.index_count = size_t(mesh.num_faces()) * 3;
+  for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f)
+    out.faces.push_back(
+        {mesh.face(f)[0].value(), mesh.face(f)[1].value(), mesh.face(f)[2].value()});
   EXPECT_EQ(ext["attributes"].size(), prim["attributes"].size());
   for (const auto& [name, id] : ext["attributes"].items()) {
     const draco::PointAttribute* att = mesh.GetAttributeByUniqueId(id.get<uint32_t>());
@@ -91,6 +94,12 @@ std::vector<float> Glb::floats(int accessor) const {
   EXPECT_EQ(v.size() * 4, view["byteLength"].get<size_t>());
   std::memcpy(v.data(), bin.data() + view["byteOffset"].get<size_t>(), v.size() * 4);
   return v;
+}
+
+std::vector<char> Glb::image(int index) const {
+  const auto& view = json["bufferViews"][json["images"][index]["bufferView"].get<int>()];
+  const auto begin = bin.begin() + view["byteOffset"].get<std::ptrdiff_t>();
+  return {begin, begin + view["byteLength"].get<std::ptrdiff_t>()};
 }
 
 size_t shared_vertices(const Glb& a, const Glb& b) {

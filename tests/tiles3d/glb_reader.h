@@ -11,6 +11,7 @@ namespace maquette::test {
 
 struct DecodedPrimitive {
   std::vector<std::array<float, 3>> positions;  // decoded, glTF frame
+  std::vector<std::array<uint32_t, 3>> faces;   // into positions
   size_t index_count = 0;
 };
 
@@ -21,6 +22,8 @@ struct Glb {
 
   // The values of a plain float accessor (e.g. instance attributes).
   std::vector<float> floats(int accessor) const;
+  // The bytes of image `index` (a PNG or JPEG file).
+  std::vector<char> image(int index) const;
 };
 
 // Reads and decodes `path`; every mismatch with the accessors is a GoogleTest failure.
