@@ -26,9 +26,11 @@ TerrainSource::TerrainSource(const Store& store_, const Grid& grid_, TerrainSett
     throw Error("--decimation " + std::to_string(k) + " must divide the tile size " +
                 std::to_string(dem.tile_size));
   const QuantizationBits& b = settings.bits;
-  if (b.position < 8 || b.position > 24 || b.texcoord < 6 || b.texcoord > 24 || b.normal < 6 ||
+  // Draco quantizes in float, rounding (value - min) / step + 0.5: exact only below 2^23 steps,
+  // beyond which vertices shared by two tiles may decode apart.
+  if (b.position < 8 || b.position > 23 || b.texcoord < 6 || b.texcoord > 24 || b.normal < 6 ||
       b.normal > 24)
-    throw Error("quantization bits out of range: positions 8..24, texcoords and normals 6..24");
+    throw Error("quantization bits out of range: positions 8..23, texcoords and normals 6..24");
 }
 
 double TerrainSource::vertex_spacing(int level) const {

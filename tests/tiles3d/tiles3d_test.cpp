@@ -249,6 +249,7 @@ TEST(Tiles3d, BadInput) {
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --max-mib 0", "would write about");
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --levels 7..8", "--levels");
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --decimation 3", "--decimation");
+  fails("tiles3d " + f.store_path + " " + out + " --dem dem --position-bits 24", "8..23");
   fails("glb " + f.store_path + " " + out + ".glb --dem dem --cells ../../etc", "../../etc");
   fs::create_directories(out);
   std::ofstream(out + "/keep.txt") << "x";
