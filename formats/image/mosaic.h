@@ -31,7 +31,7 @@ struct MosaicSpec {
 
 // Resamples the tiles of `layer` at `cells` (at the layer's level, e.g. from layer_tile_cells)
 // onto a frame covering the box (exactly) or else the cells (cropped to the samples holding
-// data), reading overview levels when the frame's pixels are coarser than the layer's. Bilinear
+// data), reading the coarsest overview level still as fine as the frame's pixels. Bilinear
 // sampling reads across tile and face edges; a pixel whose nearest sample is missing is no data.
 // Throws maquette::Error for an unknown layer or when there are no cells.
 PictureRaster mosaic_layer(const Store& store, const Grid& grid, const std::string& layer,

@@ -75,16 +75,17 @@ Projection choose_projection(const Outline& o) {
   return Projection::LonLat;
 }
 
-// Pixels of `step` (doubled until both spans fit max_side), then stretched a little per axis
-// so that whole pixels cover the spans exactly.
+// Pixels of `step`, or larger so that both spans fit max_side, then stretched a little per axis
+// so that whole pixels cover the spans exactly. `doublings`: how many times the pixel doubled
+// (rounded down), so that overviews that many levels up are at least as fine.
 void fit_pixels(PictureFrame& f, double x_span, double y_span, double step, int max_side,
                 int& doublings) {
-  doublings = 0;
-  while (std::max(x_span, y_span) / step > max_side) step *= 2, ++doublings;
-  auto count = [&](double span) { return std::max(1, int(std::ceil(span / step - 1e-9))); };
+  const double fitted = std::max(step, std::max(x_span, y_span) / max_side);
+  doublings = int(std::floor(std::log2(fitted / step) + 1e-9));
+  auto count = [&](double span) { return std::max(1, int(std::ceil(span / fitted - 1e-9))); };
   f.width = count(x_span), f.height = count(y_span);
-  f.x_step = x_span > 0 ? x_span / f.width : step;
-  f.y_step = y_span > 0 ? y_span / f.height : step;
+  f.x_step = x_span > 0 ? x_span / f.width : fitted;
+  f.y_step = y_span > 0 ? y_span / f.height : fitted;
 }
 
 }  // namespace

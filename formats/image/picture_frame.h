@@ -40,8 +40,8 @@ struct PictureRegion {
   std::vector<CellId> cells;                  // the region's cells when there is no bbox
 };
 
-// The frame covering `region` with pixels of about `pixel_m` metres, coarsened by powers of 2
-// until its longer side fits `max_side` (`doublings` receives how many times). Auto picks a
+// The frame covering `region` with pixels of about `pixel_m` metres, or larger so that its
+// longer side fits `max_side` (`doublings`: log2 of the ratio, rounded down). Auto picks a
 // polar frame for a region around exactly one pole (or poleward of 60 degrees and wider than 90
 // degrees of longitude), else lon/lat. A box gives a frame that covers exactly the box.
 PictureFrame frame_for(const Grid& grid, const PictureRegion& region, Projection projection,
