@@ -24,8 +24,8 @@ class CornerField {
         dem_(dem),
         frame_(frame),
         n_(dem.size()),
-        face_pixels_(int64_t(1) << (cell.level() + log2_tile_size(dem.size()))),
-        face_(grid.plane_square(CellId::FromFace(cell.face()))),
+        pixel_level_(cell.level() + log2_tile_size(dem.size())),
+        face_pixels_(int64_t(1) << pixel_level_),
         cache_(size_t(n_ + 3) * size_t(n_ + 3)) {}
 
   struct Corner {
@@ -35,20 +35,55 @@ class CornerField {
     Vec3 pos{};
   };
 
-  // Corner (c, r) of the tile, c and r in [-1, n + 1]; nullopt beyond the face or without data.
+  // Corner (c, r) of the tile, c and r in [-1, n + 1]; nullptr beyond a face corner or without
+  // data.
   const Corner* at(int c, int r) {
     Corner& k = cache_[size_t(r + 1) * size_t(n_ + 3) + size_t(c + 1)];
     if (!k.done) compute(c, r, k);
     return std::isnan(k.height) ? nullptr : &k;
   }
 
+  // Whether corner (c, r) is a corner of the face, where three faces meet.
+  bool face_corner(int c, int r) const {
+    const int64_t gc = global_col(cell_, n_, c), gr = global_row(cell_, n_, r);
+    return (gc == 0 || gc == face_pixels_) && (gr == 0 || gr == face_pixels_);
+  }
+
+  const LocalFrame& frame() const { return frame_; }
+
  private:
   bool outside(int64_t g) const { return g < 0 || g >= face_pixels_; }
+
+  // Where corner (gc, gr) of the face's pixel grid is on the plane: on the face, or on the face
+  // across the one edge it is beyond (for normals across face seams); nullopt beyond a face
+  // corner. Beyond an edge, the pixels (gc - 1, gr - 1) and (gc, gr) are diagonal neighbours
+  // beyond that edge; wrapped onto the next face (turned as the faces meet), the corner is the
+  // one they share.
+  std::optional<PlanePoint> plane_point(int64_t gc, int64_t gr) const {
+    int face = cell_.face();
+    const bool col_out = gc < 0 || gc > face_pixels_, row_out = gr < 0 || gr > face_pixels_;
+    if (col_out && row_out) return std::nullopt;
+    if (col_out || row_out) {
+      if ((col_out && (gr < 1 || gr >= face_pixels_)) ||
+          (row_out && (gc < 1 || gc >= face_pixels_)))
+        return std::nullopt;
+      const auto a = grid_.wrap({face, gc - 1, gr - 1}, pixel_level_);
+      const auto b = grid_.wrap({face, gc, gr}, pixel_level_);
+      if (!a || !b || a->face != b->face) return std::nullopt;
+      face = a->face;
+      gc = std::max(a->col, b->col);
+      gr = std::max(a->row, b->row);
+    }
+    const PlaneSquare sq = grid_.plane_square(CellId::FromFace(face));
+    const double pixel = sq.side / double(face_pixels_);
+    return PlanePoint{sq.x_min + double(gc) * pixel, sq.y_max - double(gr) * pixel};
+  }
 
   void compute(int c, int r, Corner& k) {
     k.done = true;
     const int64_t gc = global_col(cell_, n_, c), gr = global_row(cell_, n_, r);
-    if (gc < 0 || gr < 0 || gc > face_pixels_ || gr > face_pixels_) return;
+    const auto plane = plane_point(gc, gr);
+    if (!plane) return;
     // Mean of the finite pixels around the corner, summed in sorted order so that every cell
     // sharing the corner (whatever its face's orientation) gets the same bits. A halo pixel
     // beyond both edges of a face is a folded copy of another one (core/halo.h): skipped.
@@ -67,8 +102,7 @@ class CornerField {
     double sum = 0;
     for (int i = 0; i < count; ++i) sum += v[i];
     k.height = sum / count;
-    const double pixel = face_.side / double(face_pixels_);
-    k.lonlat = grid_.inverse({face_.x_min + double(gc) * pixel, face_.y_max - double(gr) * pixel});
+    k.lonlat = grid_.inverse(*plane);
     k.pos = frame_.to_gltf(k.lonlat, k.height);
   }
 
@@ -77,15 +111,23 @@ class CornerField {
   const Tile<float>& dem_;
   const LocalFrame& frame_;
   int n_;
+  int pixel_level_;
   int64_t face_pixels_;
-  PlaneSquare face_;
   std::vector<Corner> cache_;
 };
 
-// Unit normal at corner (c, r) from central differences of the neighbouring pixel corners
-// (one-sided where a neighbour is missing).
+// Unit normal at corner (c, r) from central differences of the neighbouring pixel corners, also
+// across face seams (one-sided where a neighbour has no data).
 Vec3 normal_at(CornerField& f, int c, int r) {
   const Vec3& p = f.at(c, r)->pos;
+  if (f.face_corner(c, r)) {
+    // Three faces meet here, each with its own two neighbours of the vertex: the ellipsoid's
+    // normal, the same from every face.
+    const auto* k = f.at(c, r);
+    const Vec3 up = sub(f.frame().to_gltf(k->lonlat, k->height + 1), p);
+    const double len = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+    return {up[0] / len, up[1] / len, up[2] / len};
+  }
   auto pos = [&](int cc, int rr) {
     const auto* k = f.at(cc, rr);
     return k ? k->pos : p;

@@ -2,7 +2,10 @@
 // the DEM tile (K: decimation), so a cell's edge vertices are corners its neighbours have too.
 // A corner's height is the mean of the (up to 4) pixels around it, read through the tile's halo,
 // and its position is computed from its global corner coordinates on the face: both cells of an
-// edge compute the same values. Skirts hang from the four edges, `skirt_depth` metres down, so
+// edge compute the same values. Normals are central differences of the neighbouring corners,
+// across face seams too (the corners beyond the face are placed on the next face), and the
+// ellipsoid's normal at face corners, where three faces meet: a vertex shared by two cells gets
+// the same normal in both. Skirts hang from the four edges, `skirt_depth` metres down, so
 // that neighbours of different levels never show cracks. Corners without any valid pixel
 // (nodata) are left out with their triangles.
 #pragma once

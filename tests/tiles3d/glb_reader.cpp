@@ -58,6 +58,15 @@ DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
     }
     out.positions.push_back(p);
   }
+  if (ext["attributes"].contains("NORMAL")) {
+    const draco::PointAttribute* nrm =
+        mesh.GetAttributeByUniqueId(ext["attributes"]["NORMAL"].get<uint32_t>());
+    for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+      std::array<float, 3> n;
+      nrm->GetMappedValue(i, n.data());
+      out.normals.push_back(n);
+    }
+  }
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(lo[k], pos_acc["min"][k].get<float>());
     EXPECT_EQ(hi[k], pos_acc["max"][k].get<float>());

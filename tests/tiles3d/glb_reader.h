@@ -11,6 +11,7 @@ namespace maquette::test {
 
 struct DecodedPrimitive {
   std::vector<std::array<float, 3>> positions;  // decoded, glTF frame
+  std::vector<std::array<float, 3>> normals;    // decoded, one per position (if any)
   std::vector<std::array<uint32_t, 3>> faces;   // into positions
   size_t index_count = 0;
 };

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -147,6 +148,35 @@ TEST(Globe, NeighboursShareTheirEdgeVertices) {
         EXPECT_GE(shared_vertices(glb_of(c), glb_of(n)), 1u) << c.ToText() << " + " << n.ToText();
       }
     }
+}
+
+// The normal of a vertex shared by neighbouring cells is the same in both (central differences
+// of the corners around it, also across face seams; the ellipsoid's normal where three faces
+// meet), so that the shading is seamless. Normals differed by 7 degrees along face seams at
+// level 0 (one-sided differences) and by 51 at the cube corners.
+TEST(Globe, SharedVerticesHaveOneNormal) {
+  const Grid& grid = default_grid();
+  double worst = 0;  // degrees
+  for (int level = 0; level <= kLevel; ++level)
+    for (CellId c : cells_of_level(level)) {
+      const DecodedPrimitive& a = glb_of(c).primitives.at(0);
+      std::map<Pos, Pos> normal_at;
+      for (size_t i = 0; i < a.positions.size(); ++i) normal_at[a.positions[i]] = a.normals.at(i);
+      for (CellId n : grid.edge_neighbours(c)) {
+        const DecodedPrimitive& b = glb_of(n).primitives.at(0);
+        for (size_t i = 0; i < b.positions.size(); ++i) {
+          const auto it = normal_at.find(b.positions[i]);
+          if (it == normal_at.end()) continue;
+          const Pos& p = it->second;
+          const Pos& q = b.normals.at(i);
+          const double cos = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+          const double angle = std::acos(std::clamp(cos, -1.0, 1.0)) * 180 / std::numbers::pi;
+          worst = std::max(worst, angle);
+          EXPECT_LT(angle, 0.5) << c.ToText() << " | " << n.ToText();
+        }
+      }
+    }
+  std::cout << "largest angle between the normals of a shared vertex: " << worst << " degrees\n";
 }
 
 TEST(Globe, RootRegionHoldsTheGlobe) {
