@@ -1,8 +1,10 @@
 #include "tiles3d/tileset.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "core/error.h"
 #include "gltf/output_dir.h"
@@ -43,6 +45,14 @@ json tile_json(const std::filesystem::path& dir, const TileNode& n, int depth,
   return t;
 }
 
+// The size (metres, the diagonal on a sphere of the equatorial radius) of a region: the error
+// of drawing nothing in its place.
+double region_extent(const std::array<double, 6>& r) {
+  constexpr double kRadius = 6378137.0;
+  const double east = r[2] < r[0] ? r[2] + 2 * std::numbers::pi : r[2];
+  return kRadius * std::hypot(r[3] - r[1], std::cos(0.5 * (r[1] + r[3])) * (east - r[0]));
+}
+
 }  // namespace
 
 void extend_region(std::array<double, 6>& r, const std::array<double, 6>& o) {
@@ -62,6 +72,10 @@ void write_tilesets(const std::filesystem::path& out_dir, const std::vector<Tile
     extend_region(region, n->region);
     children.push_back(tile_json(out_dir, *n, 1, ""));
   }
+  // The root has no content: drawing it shows nothing, so its error is the size of what it
+  // covers. With the error of its children's content instead, a viewer far enough away to see
+  // the whole region (CesiumJS's zoomTo) stopped at the empty root and drew nothing.
+  root_error = std::max(root_error, region_extent(region));
   const json root = {{"boundingVolume", {{"region", region}}},
                      {"geometricError", root_error},
                      {"refine", "REPLACE"},

@@ -28,8 +28,9 @@ struct TileNode {
 // Grows a region to hold another one.
 void extend_region(std::array<double, 6>& region, const std::array<double, 6>& other);
 
-// Writes OUTDIR/tileset.json (a root tile over `top`, with `transform`) and the external
-// tilesets under OUTDIR/subtrees.
+// Writes OUTDIR/tileset.json (a root tile over `top`, with `transform`; it has no content, so its
+// geometric error is at least the size of its region) and the external tilesets under
+// OUTDIR/subtrees.
 void write_tilesets(const std::filesystem::path& out_dir, const std::vector<TileNode*>& top,
                     double root_error, const std::array<double, 16>& transform);
 

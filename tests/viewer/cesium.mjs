@@ -3,13 +3,16 @@
 // imagery, no geocoder or layer picker) to headless chromium; the test waits until Cesium has
 // loaded every tile in view, then checks that no tile, request or rendering failed, that nothing
 // was asked of another host, and that terrain (pixels away from the background; the globe is
-// hidden) covers at least the given share of the frame. Cesium frames the root's bounding volume
-// (`zoomTo`), a grid cell that can be far larger than the data: the demo's Olinda is about 1 % of
-// its level-5 root cell. Screenshots: OUT/cesium-NAME.png.
+// hidden) covers at least the given share of the frame. The page frames the root's bounding
+// volume (Cesium's `zoomTo`), a grid cell that can be far larger than the data (the demo's Olinda
+// is about 1 % of its level-5 root cell); given the export's STORE, it looks down at the bounding
+// box of the store's `dem` layer instead (`maquette info --json`), as a user flies to their area.
+// Screenshots: OUT/cesium-NAME.png.
 //
 // node cesium.mjs --maquette BIN --page DIR --node-modules DIR --out DIR
-//   --tilesets NAME=DIR=MIN_COVER,...
+//   --tilesets NAME=DIR=MIN_COVER[=STORE],...
 // Exit codes: 0 pass, 1 fail, 77 skipped (no chromium).
+import { execFileSync } from 'node:child_process';
 import { mkdirSync, rmSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import {
@@ -24,15 +27,23 @@ const { PNG } = requireFrom(args['node-modules'])('pngjs');
 const checks = new Checks();
 const check = checks.check.bind(checks);
 
-async function opensInCesium(name, dir, minCover) {
+// The bounding box of STORE's `dem` layer, as the page's ?rect=W,S,E,N.
+function demRect(store) {
+  const info = JSON.parse(execFileSync(args.maquette, ['info', '--json', store], { encoding: 'utf8' }));
+  return `?rect=${info.layers.find((l) => l.name === 'dem').bbox.join(',')}`;
+}
+
+async function opensInCesium(name, dir, minCover, store) {
   const view = await startView(args.maquette, dir, args.page);
   // small: SwiftShader draws Cesium's frames at a few per second, and it processes tiles per frame
   const b = await launchBrowser(args['node-modules'], { width: 640, height: 400 });
   try {
-    await b.page.goto(view.url, { waitUntil: 'load' });
+    await b.page.goto(`${view.url}${store ? demRect(store) : ''}`, { waitUntil: 'load' });
     await waitLoaded(b, name, out, () => ({ error: document.documentElement.dataset.error }), 120000);
     const error = await b.page.evaluate(() => document.documentElement.dataset.error);
     check(!error, `${name}: Cesium loaded the tileset and every tile in view ${error || ''}`);
+    // without Cesium's credits (its logo), which are not terrain
+    await b.page.addStyleTag({ content: '.cesium-viewer-bottom { display: none; }' });
     const { cover, sd } = terrainPixels(await shoot(b, out, `cesium-${name}.png`, PNG), [0x1d, 0x22, 0x29]);
     check(cover > minCover, `${name}: terrain covers ${(100 * cover).toFixed(2)} % of the frame (> ${100 * minCover} %)`);
     check(sd > 2, `${name}: terrain pixels vary (luminance s.d. ${sd.toFixed(1)} > 2): lit or textured, not a flat fill`);
@@ -50,8 +61,8 @@ async function opensInCesium(name, dir, minCover) {
 let exitCode = 1;
 try {
   for (const entry of args.tilesets.split(',')) {
-    const [name, dir, minCover] = entry.split('=');
-    await opensInCesium(name, resolve(dir), Number(minCover));
+    const [name, dir, minCover, store] = entry.split('=');
+    await opensInCesium(name, resolve(dir), Number(minCover), store);
   }
   exitCode = checks.failures.length ? 1 : 0;
 } catch (e) {

@@ -1,7 +1,7 @@
 // Opens ./tileset.json (a `maquette export tiles3d` served by `maquette view --viewer` this
 // folder) in CesiumJS, offline: no Cesium ion (no token, no default imagery or terrain), no base
 // imagery, no geocoder or layer picker; the globe and sky hidden so that only the tileset is
-// drawn, over the background colour #1d2229. Flies to the tileset and signals on <html>:
+// drawn, over the background colour #1d2229. Frames the tileset and signals on <html>:
 // data-tiles-loaded="true" once every tile in view has loaded and a few frames were drawn,
 // data-error="..." when a tile, the tileset or the rendering fails.
 const html = document.documentElement;
@@ -39,7 +39,14 @@ async function main() {
   const tileset = await Cesium.Cesium3DTileset.fromUrl('./tileset.json');
   tileset.tileFailed.addEventListener((e) => fail(`cannot load ${e.url}: ${e.message}`));
   scene.primitives.add(tileset);
-  await viewer.zoomTo(tileset);
+  // zoomTo frames the root's bounding sphere from its radius, which for a whole-globe tileset
+  // puts the camera at the Earth's surface: a tileset about as large as the Earth is shown from
+  // Cesium's home view, the globe from space.
+  // ?rect=W,S,E,N (degrees): the camera looks down at that box instead.
+  const rect = new URLSearchParams(window.location.search).get('rect');
+  if (rect) viewer.camera.setView({ destination: Cesium.Rectangle.fromDegrees(...rect.split(',').map(Number)) });
+  else if (tileset.boundingSphere.radius > 0.5 * Cesium.Ellipsoid.WGS84.maximumRadius) viewer.camera.flyHome(0);
+  else await viewer.zoomTo(tileset);
 
   let stable = 0;
   scene.postRender.addEventListener(() => {
