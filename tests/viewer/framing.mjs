@@ -6,7 +6,7 @@
 // - one cell, a continent: the point under the centre of the frame lies in the content, the view
 //   looks down at it (the angle between the view direction and the downward normal there), and
 //   terrain covers a good part of the frame, with no dark specks along the seams of the tiles
-//   (exports are double-sided, and a back face of a skirt was drawn dark at every seam);
+//   (in double-sided exports the back face of a skirt was drawn dark at every seam);
 // - the globe: the camera is out in space, looking at the Earth's centre, the whole disc in view.
 // Then, on the continent, vertical exaggeration (?exaggeration=3, then back to 1 with the `-`
 // key): the readout under a grid of screen points gives the point drawn (ECEF) and its lon/lat;

@@ -85,10 +85,10 @@ scene.add(sun);
 scene.add(new THREE.HemisphereLight(0xdfe8f5, 0x3a3227, 0.55));
 
 // --- materials: textured (as exported) or hillshade (lit, untextured) -----------------------
-// Front faces only. An export's materials are double-sided, and glTF lights a back face with its
-// normal reversed: at a seam between two tiles the back of one tile's skirt, which hangs where the
-// neighbour's skirt hangs, then fought with it in the depth buffer and drew dark dotted lines
-// along every seam. A skirt is only needed from outside its tile, where its front face is.
+// Front faces only. Exports were double-sided until issue 13 (other tilesets may be), and glTF
+// lights a back face with its normal reversed: the back of a tile's skirt, where it meets its own
+// edge and the neighbour's skirt, drew dark dotted lines along every seam. A skirt is only needed
+// from outside its tile, where its front face is.
 const hillshadeMaterial = new THREE.MeshStandardMaterial({
   color: 0xdedad2, roughness: 1.0, metalness: 0.0, side: THREE.FrontSide,
 });
