@@ -6,7 +6,7 @@
 #include <regex>
 
 #include "core/error.h"
-#include "runtime/json_file.h"
+#include "core/json_file.h"
 
 namespace maquette {
 
@@ -43,14 +43,14 @@ nlohmann::json parse_class_table(const std::string& text_or_path) {
   static const std::regex kColour("#[0-9a-fA-F]{6}"), kKey("-?[0-9]+");
   for (const auto& [key, value] : j.items()) {
     if (!std::regex_match(key, kKey))
-      throw Error(where + ": class key '" + key + "' is not an integer value");
+      throw Error(where + ": class key '" + excerpt(key) + "' is not an integer value");
     if (!value.is_object()) throw Error(where + ": class " + key + ": expected an object");
     if (value.contains("name") && !value["name"].is_string())
       throw Error(where + ": class " + key + ".name: expected a string");
     if (value.contains("color") && (!value["color"].is_string() ||
                                     !std::regex_match(value["color"].get<std::string>(), kColour)))
       throw Error(where + ": class " + key + ".color: expected \"#rrggbb\", got " +
-                  value["color"].dump());
+                  excerpt(value["color"]));
   }
   return j;
 }

@@ -5,7 +5,10 @@
 #include <gdal.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
+
+#include "core/error.h"
 
 namespace maquette {
 
@@ -16,6 +19,28 @@ void init_gdal(int cache_mb) {
     CPLSetErrorHandler(CPLQuietErrorHandler);
     if (!std::getenv("GDAL_CACHEMAX")) GDALSetCacheMax64(int64_t(cache_mb) << 20);
   });
+}
+
+void record_gdal_failure(GdalErrorTrap& trap, int level, const char* msg) {
+  // PAM reports an .aux.xml it could not write as a warning ("Unable to save auxiliary
+  // information in ..."): a lost CRS, so a failure here.
+  const bool failed = level >= CE_Failure || (msg && std::strstr(msg, "Unable to save"));
+  if (failed && trap.failure_.empty()) trap.failure_ = msg && *msg ? msg : "GDAL failed";
+}
+
+namespace {
+
+void CPL_STDCALL trap_handler(CPLErr level, CPLErrorNum, const char* msg) {
+  record_gdal_failure(*static_cast<GdalErrorTrap*>(CPLGetErrorHandlerUserData()), int(level), msg);
+}
+
+}  // namespace
+
+GdalErrorTrap::GdalErrorTrap() { CPLPushErrorHandlerEx(trap_handler, this); }
+GdalErrorTrap::~GdalErrorTrap() { CPLPopErrorHandler(); }
+
+void GdalErrorTrap::check(const std::string& what) const {
+  if (!failure_.empty()) throw Error(what + ": " + failure_);
 }
 
 std::string gdal_last_error(const std::string& fallback) {

@@ -13,4 +13,22 @@ void init_gdal(int cache_mb = 256);
 // GDAL's last error message on this thread, or `fallback` when there is none.
 std::string gdal_last_error(const std::string& fallback);
 
+// Records the failures GDAL reports on this thread while it lives, quietly: also those a driver
+// reports and then clears, or only warns about, while it closes a file (on a full disk a GeoTIFF's
+// last blocks and its .aux.xml are lost so, and GDAL's last error is empty afterwards). Writers
+// keep one around the creation and close of a file, then call check().
+class GdalErrorTrap {
+ public:
+  GdalErrorTrap();
+  ~GdalErrorTrap();
+  GdalErrorTrap(const GdalErrorTrap&) = delete;
+  GdalErrorTrap& operator=(const GdalErrorTrap&) = delete;
+  // Throws maquette::Error "WHAT: <GDAL's first failure>" if there was one.
+  void check(const std::string& what) const;
+
+ private:
+  std::string failure_;
+  friend void record_gdal_failure(GdalErrorTrap&, int, const char*);
+};
+
 }  // namespace maquette

@@ -7,13 +7,18 @@
 #include <atomic>
 
 #include "core/error.h"
+#include "core/output_file.h"
 #include "gdal/gdal_drivers.h"
 #include "gdal/gdal_env.h"
 
 namespace maquette {
 
-void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
-                 const ImageFormat& format, const std::string& path) {
+namespace {
+
+// write_image to any GDAL path (`path`: the one errors name).
+void create_image(std::span<const uint8_t> pixels, int width, int height, int bands,
+                  const ImageFormat& format, const std::string& gdal_path,
+                  const std::string& path) {
   init_gdal();
   register_all_gdal_drivers();
   const std::string why = "cannot write " + path;
@@ -31,9 +36,23 @@ void write_image(std::span<const uint8_t> pixels, int width, int height, int ban
     throw Error(why + ": " + gdal_last_error("GDAL failed"));
   CPLStringList options;
   for (const std::string& o : format.options) options.AddString(o.c_str());
-  const GDALDatasetUniquePtr out(
-      out_driver->CreateCopy(path.c_str(), image.get(), FALSE, options.List(), nullptr, nullptr));
+  GdalErrorTrap trap;
+  GDALDatasetUniquePtr out(out_driver->CreateCopy(gdal_path.c_str(), image.get(), FALSE,
+                                                  options.List(), nullptr, nullptr));
   if (!out) throw Error(why + ": " + gdal_last_error("the " + format.driver + " driver failed"));
+  out.reset();  // closes the file
+  trap.check(why);
+}
+
+}  // namespace
+
+void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
+                 const ImageFormat& format, const std::string& path) {
+  if (path.starts_with("/vsi"))
+    return create_image(pixels, width, height, bands, format, path, path);
+  OutputFile out(path, {".aux.xml"});
+  create_image(pixels, width, height, bands, format, out.temp_path(), path);
+  out.commit();
 }
 
 std::vector<uint8_t> encode_image(std::span<const uint8_t> pixels, int width, int height, int bands,

@@ -15,7 +15,8 @@ struct ImageFormat {
 };
 
 // Writes `pixels` (width x height pixels of `bands` interleaved bytes, row-major) to `path`
-// (any GDAL path, /vsimem/ included); throws maquette::Error naming the path and GDAL's reason.
+// (any GDAL path, /vsimem/ included; a file whole or not at all: core/output_file.h); throws
+// maquette::Error naming the path and GDAL's reason.
 void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
                  const ImageFormat& format, const std::string& path);
 

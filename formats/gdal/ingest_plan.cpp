@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/region.h"
 #include "gdal/class_table.h"
 #include "gdal/footprint.h"
@@ -117,7 +118,9 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
                                     const RasterIngestOptions& o) {
   static const std::vector<std::string> kAs{"dem", "imagery", "climate", "landcover", "raster"};
   if (std::find(kAs.begin(), kAs.end(), o.as) == kAs.end())
-    throw Error("--as '" + o.as + "' is not one of dem, imagery, climate, landcover, raster");
+    throw Error("--as '" + excerpt(o.as) +
+                "' is not one of dem, imagery, climate, landcover, raster (rasters), features, "
+                "stations (vectors)");
   if (sources.empty()) throw Error("no SOURCE given");
   if (o.layer.empty()) throw Error("--layer: a layer name is required");
   log2_tile_size(o.tile_size);

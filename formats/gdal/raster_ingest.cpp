@@ -22,6 +22,7 @@
 #include "core/samples.h"
 #include "gdal/tile_resampler.h"
 #include "runtime/progress.h"
+#include "store/created_store.h"
 
 namespace maquette {
 namespace {
@@ -82,6 +83,22 @@ void to_raw(const Tile<float>& tile, DType dtype, const double* nodata, RawTile&
   });
 }
 
+// A failed ingest leaves the store as it was where it can: a store it created is removed, a
+// layer it created is dropped with its run; a layer that existed before stays marked incomplete
+// (its old tiles may be overwritten), for --resume to finish.
+void undo_failed_ingest(std::unique_ptr<Store> store, const std::string& layer, int64_t run,
+                        bool new_layer) {
+  const std::string path = store->path();
+  try {
+    if (store->created())
+      remove_if_created(std::move(store));
+    else if (new_layer)
+      store->drop_layer(layer, run);
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: could not undo the failed ingest of layer {}: {}", path, layer, e.what());
+  }
+}
+
 }  // namespace
 
 RasterIngestReport ingest_raster(const std::string& store_path,
@@ -96,6 +113,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   // the WAL); if the planning refuses the job, a store this process created is removed again,
   // so that a refused ingest leaves no store behind, as an existing store is left untouched (one
   // another process created meanwhile included: Store::created).
+  Store::check_writable(store_path);  // before the planning, whose size checks read free space
   std::error_code ec;
   const bool fresh = !std::filesystem::exists(store_path, ec) && !ec;
   std::future<std::unique_ptr<Store>> created;
@@ -108,10 +126,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   } catch (...) {
     if (fresh) {
       try {
-        const bool ours = created.get()->created();  // and closed before it is removed
-        if (ours)
-          for (const char* suffix : {"", "-wal", "-shm"})
-            std::filesystem::remove(store_path + suffix, ec);
+        remove_if_created(created.get());
       } catch (...) {  // not created: nothing to remove; the planning's error is the one to tell
       }
     }
@@ -126,6 +141,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   report.resampling = plan.resampling;
 
   auto store = fresh ? created.get() : Store::open(store_path, Store::Mode::Create);
+  const bool new_layer = !store->layer(layer.name);
   store->create_layer(layer);
   std::vector<CellId> todo = plan.cells;
   int64_t run = 0;
@@ -140,6 +156,8 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     }
   }
   if (!report.resumed) run = store->begin_run(plan.run);
+  // Readers refuse the layer until finish_run(run, "ok") (a killed ingest leaves it marked).
+  store->mark_incomplete(layer.name, run);
   spdlog::debug("ingest {}: store ready at {:.3f} s", o.layer, seconds());
   spdlog::info(
       "ingest {}: {} cells at level {} ({:.3g} m pixels, sources {:.3g} m, up to {:.3g} "
@@ -212,6 +230,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
       what = e.what();
     }
     store->finish_run(run, "failed: " + what);
+    undo_failed_ingest(std::move(store), layer.name, run, new_layer);
     std::rethrow_exception(error);
   }
   spdlog::debug("ingest {}: tiles done at {:.3f} s", layer.name, seconds());

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/file_access.h"
 #include "gdal/class_table.h"
 #include "gdal/gdal_drivers.h"
 #include "gdal/gdal_env.h"
@@ -55,9 +56,12 @@ GDALDataset* open_dataset(const std::string& path) {
     register_all_gdal_drivers();
     ds = open();
   }
-  if (!ds)
-    throw Error(path + ": cannot read the raster: " +
-                gdal_last_error("not a format GDAL reads, or the file is missing"));
+  if (!ds) {
+    if (const auto problem = file_access_problem(path))
+      throw Error(path + ": cannot read the raster: " + *problem);
+    throw Error(path + ": cannot read the raster: not a raster GDAL can read: " +
+                gdal_last_error("unknown format"));
+  }
   return ds;
 }
 
@@ -233,6 +237,9 @@ void SourceReader::read(int64_t x0, int64_t y0, int w, int h, int step, bool cat
       for (size_t k = 0; k < n; ++k) begin[k] = begin[k] == nodata ? kNaN : begin[k];
     else if (source_.scaled)
       for (size_t k = 0; k < n; ++k) begin[k] = begin[k] * scale + offset;
+    // +-Inf (in a float source, or out of float's range after scaling) is missing like NaN.
+    if (source_.dtype == DType::F32 || source_.dtype == DType::F64 || source_.scaled)
+      for (size_t k = 0; k < n; ++k) begin[k] = std::isfinite(begin[k]) ? begin[k] : kNaN;
   }
 }
 
@@ -251,7 +258,7 @@ bool SourceReader::any_valid() {
         read_span(int(band), x, y, w, h, 1, false, buf.data(), w);
         const auto& nd = source_.nodata[band];
         for (float v : buf)
-          if (!std::isnan(v) && !(nd && v == float(*nd))) return true;
+          if (std::isfinite(v) && !(nd && v == float(*nd))) return true;
       }
     }
   }

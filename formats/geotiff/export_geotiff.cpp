@@ -1,13 +1,12 @@
 #include "geotiff/export_geotiff.h"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
+#include "core/output_file.h"
+#include "gdal/gdal_env.h"
 #include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
 #include "geotiff/gdal_util.h"
@@ -18,32 +17,6 @@ namespace maquette {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A GeoTIFF and its .aux.xml written under a temporary name; removed unless renamed to
-// `final` by commit().
-class TempGeoTiff {
- public:
-  TempGeoTiff(std::string path, std::string final = "")
-      : path_(std::move(path)), final_(std::move(final)) {}
-  ~TempGeoTiff() {
-    std::error_code ec;
-    fs::remove(path_, ec);
-    fs::remove(path_ + ".aux.xml", ec);
-  }
-  TempGeoTiff(const TempGeoTiff&) = delete;
-  TempGeoTiff& operator=(const TempGeoTiff&) = delete;
-  const std::string& path() const { return path_; }
-  void commit() {
-    std::error_code ec;
-    fs::remove(final_ + ".aux.xml", ec);  // a stale one would describe another image
-    if (fs::exists(path_ + ".aux.xml")) fs::rename(path_ + ".aux.xml", final_ + ".aux.xml", ec);
-    if (!ec) fs::rename(path_, final_, ec);
-    if (ec) throw Error("cannot write " + final_ + ": " + ec.message());
-  }
-
- private:
-  std::string path_, final_;
-};
 
 // The layer's ground pixel (metres, mean over the cell) in target units at the region centre:
 // the distance in the target CRS that a pixel-long step north covers there.
@@ -97,15 +70,14 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
 
   const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
 
-  TempGeoTiff result(out + ".part", out);
+  OutputFile result(out, {".aux.xml"});
   if (crs.rhealpix) {
     check_size(spec, layer, extent, 1.0);
-    write_plane_geotiff(store, grid, layer, cells, level, extent, result.path());
+    write_plane_geotiff(store, grid, layer, cells, level, extent, result.temp_path());
   } else {
-    static std::atomic<int> counter = 0;
-    const std::string name =
-        "maquette-export-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".tif";
-    const TempGeoTiff plane((fs::temp_directory_path() / name).string());
+    // A scratch file, removed by the OutputFile that is never committed.
+    const OutputFile plane((fs::temp_directory_path() / "maquette-export.tif").string(),
+                           {".aux.xml"});
     WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
     const double natural = default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs);
     warp.resolution = spec.resolution.value_or(natural);
@@ -116,13 +88,14 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
       const LonLatBounds b = lonlat_bounds(grid, cells);
       warp.bbox_lonlat = {b.west, b.south, b.east, b.north};
     }
-    write_plane_geotiff(store, grid, layer, cells, level, extent, plane.path());
-    warp_geotiff(plane.path(), result.path(), warp);
-    DatasetPtr ds(GDALDataset::Open(result.path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
-    if (!ds) gdal_error("cannot reopen " + result.path());
+    write_plane_geotiff(store, grid, layer, cells, level, extent, plane.temp_path());
+    GdalErrorTrap trap;
+    warp_geotiff(plane.temp_path(), result.temp_path(), warp);
+    DatasetPtr ds(GDALDataset::Open(result.temp_path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
+    if (!ds) gdal_error("cannot reopen " + result.temp_path());
     describe_bands(*ds, layer, level);
     ds.reset();
-    if (CPLGetLastErrorType() == CE_Failure) gdal_error("cannot write " + out);
+    trap.check("cannot write " + out);
   }
   result.commit();
 }

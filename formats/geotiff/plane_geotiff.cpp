@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "gdal/gdal_env.h"
 #include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
 #include "geotiff/gdal_util.h"
@@ -84,6 +85,7 @@ void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& 
     return std::tie(a.row, a.col) < std::tie(b.row, b.col);
   });
 
+  GdalErrorTrap trap;  // GDAL may lose blocks on a full disk and only say so while closing
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   const GDALDataType type = gdal_type(layer.dtype);
   DatasetPtr ds(driver->Create(
@@ -125,7 +127,7 @@ void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& 
     throw Error("layer '" + layer.name + "' has no " + (base ? "tiles" : "overview tiles") +
                 " at level " + std::to_string(level) + " in the region");
   ds.reset();  // flushes the last blocks
-  if (CPLGetLastErrorType() == CE_Failure) gdal_error("cannot write " + path);
+  trap.check("cannot write " + path);
 }
 
 }  // namespace maquette

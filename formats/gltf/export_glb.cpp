@@ -1,10 +1,10 @@
 #include "gltf/export_glb.h"
 
 #include <atomic>
-#include <fstream>
 #include <map>
 
 #include "core/error.h"
+#include "core/output_file.h"
 #include "gltf/glb_writer.h"
 #include "gltf/output_dir.h"
 
@@ -60,7 +60,7 @@ void export_drc(const Store& store, const Grid& grid, const TerrainSettings& set
       any = true;
     });
   if (!any) throw no_tiles(source);
-  std::ofstream(inside(out_dir, "frame.json")) << frame_json(frame).dump(2) << "\n";
+  write_file_whole(inside(out_dir, "frame.json").string(), frame_json(frame).dump(2) + "\n");
 }
 
 }  // namespace maquette

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <limits>
 
 #include "core/error.h"
+#include "core/output_file.h"
 
 namespace maquette {
 namespace {
@@ -194,9 +194,7 @@ std::vector<char> make_glb(const std::vector<GlbPrimitive>& primitives, const js
 }
 
 void write_file(const std::string& path, const std::vector<char>& bytes) {
-  std::ofstream f(path, std::ios::binary);
-  f.write(bytes.data(), std::streamsize(bytes.size()));
-  if (!f) throw Error("could not write " + path);
+  write_file_whole(path, bytes);
 }
 
 }  // namespace maquette

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "core/error.h"
+#include "core/output_file.h"
 #include "gltf/output_dir.h"
 
 namespace maquette {
@@ -17,9 +17,7 @@ using nlohmann::json;
 json asset() { return {{"version", "1.1"}, {"generator", "maquette"}}; }
 
 void write_json(const std::filesystem::path& path, const json& j) {
-  std::ofstream f(path);
-  f << j.dump(1) << "\n";
-  if (!f) throw Error("could not write " + path.string());
+  write_file_whole(path.string(), j.dump(1) + "\n");
 }
 
 // A tile's JSON; `depth` counts levels below the top of the file being written, `prefix` leads

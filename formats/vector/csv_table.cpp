@@ -1,19 +1,13 @@
 #include "vector/csv_table.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "core/error.h"
+#include "core/json_file.h"
 
 namespace maquette {
 namespace {
 
 std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
+  std::string s = read_text_file(path);
   if (s.starts_with("\xEF\xBB\xBF")) s.erase(0, 3);
   return s;
 }

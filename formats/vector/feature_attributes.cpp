@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <string>
 
+#include "core/error.h"
+#include "core/json_file.h"
+
 namespace maquette {
 namespace {
 
@@ -58,8 +61,10 @@ json field_value(const OGRFeature& f, int i, const OGRFieldDefn& defn) {
     case OFTString: {
       const char* text = f.GetFieldAsString(i);
       if (defn.GetSubType() == OFSTJSON) {
-        json parsed = json::parse(text, nullptr, false);
-        if (!parsed.is_discarded()) return parsed;
+        try {
+          return parse_json(text, "");  // nesting bounded, as every JSON the program reads
+        } catch (const Error&) {        // not JSON (or too deep): kept as text
+        }
       }
       return text;
     }

@@ -249,11 +249,14 @@ FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>
   const int level = options.level ? *options.level : default_level(default_grid(), src);
   const json key = ingest_key(sources, options, level);
   json provenance = {{"ingest", key}};
+  const bool new_layer = !store.layer(options.layer);
   create_features_layer(store, options.layer, level, provenance);
 
   std::optional<int64_t> run;
   if (options.resume) run = store.latest_unfinished_run(key);
   if (!run) run = store.begin_run(key);
+  // Readers refuse the layer until finish_run(run, "ok") (a killed ingest leaves it marked).
+  store.mark_incomplete(options.layer, *run);
   Writer writer(store, options, *run, level, progress);
   try {
     json layers = json::array();
@@ -269,6 +272,8 @@ FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>
     create_features_layer(store, options.layer, level, provenance);
   } catch (const std::exception& e) {
     store.finish_run(*run, std::string("failed: ") + e.what());
+    // A layer this ingest created is removed again; an older one stays marked for --resume.
+    if (new_layer) store.drop_layer(options.layer, *run);
     throw;
   }
   store.finish_run(*run, "ok");

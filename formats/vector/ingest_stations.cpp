@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <map>
 
 #include "core/error.h"
 #include "vector/csv_table.h"
@@ -116,7 +117,15 @@ StationsIngestReport ingest_stations(Store& store, const std::string& csv_path,
   if (t.rows().empty()) throw Error(csv_path + ": no stations (only a header line)");
 
   json stations = json::array();
+  std::map<std::string, int> id_lines;  // station id -> line where it is first given
   for (const CsvRow& row : t.rows()) {
+    if (id && !trimmed(row.fields[*id]).empty()) {
+      const std::string key = trimmed(row.fields[*id]);
+      if (const auto [it, fresh] = id_lines.emplace(key, row.line); !fresh)
+        throw Error(csv_path + " line " + std::to_string(row.line) + ": column '" +
+                    options.id_column + "': station id '" + key + "' is already given on line " +
+                    std::to_string(it->second));
+    }
     json v = json::object();
     for (size_t i = 0; i < values.size(); ++i)
       v[report.value_columns[i]] = or_null(t.number(row, values[i]));

@@ -3,6 +3,7 @@
 #include <cpl_error.h>
 
 #include "core/error.h"
+#include "core/file_access.h"
 #include "gdal/gdal_drivers.h"
 
 namespace maquette {
@@ -19,7 +20,11 @@ VectorDataset open_vector(const std::string& path) {
   register_all_gdal_drivers();
   CPLErrorReset();
   VectorDataset ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  if (!ds) throw Error("cannot open " + path + " as a vector source" + gdal_reason());
+  if (!ds) {
+    if (const auto problem = file_access_problem(path))
+      throw Error("cannot open " + path + ": " + *problem);
+    throw Error("cannot open " + path + ": not a vector format GDAL reads" + gdal_reason());
+  }
   if (ds->GetLayerCount() == 0) throw Error(path + " holds no vector layer");
   return ds;
 }

@@ -1,4 +1,6 @@
 // maquette cells: the grid from the command line (point to cell, cell info, cover, levels).
+#include <spdlog/spdlog.h>
+
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -72,13 +74,19 @@ void print_cover(const CellsOptions& o) {
   const Containment mode = parse_mode(o.mode);
   std::vector<CellId> cells;
   if (!o.geojson.empty()) {
-    cells = cover_geojson(grid, read_geojson_polygons(o.geojson), o.level, mode);
+    const auto polygons = read_geojson_polygons(o.geojson);
+    check_cover_size(polygons, o.level, o.geojson);
+    cells = cover_geojson(grid, polygons, o.level, mode);
   } else if (o.bbox.size() == 4) {
-    check_bbox(o.bbox, "--bbox");
-    cells = grid.cover_bbox(o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3], o.level, mode);
+    cells = cover_box(grid, o.bbox, o.level, mode, "--bbox");
   } else {
     throw Error("cells cover needs --bbox W S E N or --geojson FILE");
   }
+  if (cells.empty())
+    spdlog::warn("no cell at level {} {} the region", o.level,
+                 mode == Containment::Full      ? "lies wholly inside"
+                 : mode == Containment::Overlap ? "overlaps"
+                                                : "has its centre in");
   if (o.compact) cells = compact(cells);
   if (o.json_out) {
     json ids = json::array();

@@ -8,7 +8,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,6 +15,7 @@
 #include "cli/builtin_steps.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/output_file.h"
 #include "demo_pipelines.h"
 #include "runtime/runner.h"
 
@@ -74,7 +74,7 @@ void run_demo(const DemoOptions& o) {
         data, kDemDataFile, kImageryDataFile);
 
   const std::string pipeline_file = (fs::path(o.output) / "demo.json").string();
-  std::ofstream(pipeline_file) << demo_pipeline(real, data).dump(2) << "\n";
+  write_file_whole(pipeline_file, demo_pipeline(real, data).dump(2) + "\n");
   const Pipeline pipeline = load_pipeline(pipeline_file, program_registry());
   remove_store(pipeline.store_path);  // a demo always starts afresh
   std::string written;                // the exports, which replace earlier ones

@@ -2,9 +2,13 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <span>
 #include <string>
 
 #include "cli/commands.h"
@@ -24,11 +28,35 @@ json cells_bbox(const std::vector<CellId>& cells) {
   return json::array({b.west, b.south, b.east > 180.0 ? b.east - 360.0 : b.east, b.north});
 }
 
-// W S E N of a features layer: the union of its features' boxes.
-json features_bbox(const Store& store, const std::string& layer) {
+// The name of a WKB geometry type (ISO codes: 1..7, +1000 Z, +2000 M, +3000 ZM).
+std::string wkb_type_name(std::span<const std::byte> wkb) {
+  static constexpr const char* kNames[] = {
+      "Geometry",   "Point",           "LineString",   "Polygon",
+      "MultiPoint", "MultiLineString", "MultiPolygon", "GeometryCollection"};
+  if (wkb.size() < 5) return "invalid";
+  uint32_t type = 0;
+  std::memcpy(&type, wkb.data() + 1, 4);
+  if (wkb[0] == std::byte{0}) type = __builtin_bswap32(type);  // big endian
+  const uint32_t base = type % 1000, dims = type / 1000;
+  if (base > 7 || dims > 3) return "type " + std::to_string(type);
+  return std::string(kNames[base]) + (dims == 1 ? " Z" : dims == 2 ? " M" : dims == 3 ? " ZM" : "");
+}
+
+// A features layer: the union of its features' boxes (W S E N), the count of each geometry type
+// and the attribute names.
+void describe_features(const Store& store, const std::string& layer, json& j) {
   const auto features = store.features_in(layer, CellId::FromFace(0).range_min(),
                                           CellId::FromFace(CellId::kNumFaces - 1).range_max());
-  if (features.empty()) return nullptr;
+  std::map<std::string, int64_t> types;
+  std::set<std::string> attributes;
+  for (const Feature& f : features) {
+    ++types[wkb_type_name(f.wkb)];
+    for (const auto& [key, _] : f.attributes.items()) attributes.insert(key);
+  }
+  j["geometry_types"] = types;
+  j["attributes"] = attributes;
+  j["bbox"] = nullptr;
+  if (features.empty()) return;
   std::array<double, 4> b = features.front().bbox;
   for (const Feature& f : features) {
     b[0] = std::min(b[0], f.bbox[0]);
@@ -36,7 +64,7 @@ json features_bbox(const Store& store, const std::string& layer) {
     b[2] = std::max(b[2], f.bbox[2]);
     b[3] = std::max(b[3], f.bbox[3]);
   }
-  return json::array({b[0], b[1], b[2], b[3]});
+  j["bbox"] = json::array({b[0], b[1], b[2], b[3]});
 }
 
 json layer_json(const Store& store, const LayerInfo& l) {
@@ -55,9 +83,13 @@ json layer_json(const Store& store, const LayerInfo& l) {
             {"units", l.units},
             {"codec", l.codec},
             {"nodata", l.nodata ? json(*l.nodata) : json(nullptr)},
-            {"bbox", l.kind == LayerKind::Features ? features_bbox(store, l.name)
-                                                   : cells_bbox(store.tile_cells(l.name))},
             {"provenance", l.provenance}};
+  const auto why = store.incomplete(l.name);
+  j["incomplete"] = why ? json(*why) : json(nullptr);
+  if (l.kind == LayerKind::Features)
+    describe_features(store, l.name, j);
+  else
+    j["bbox"] = cells_bbox(store.tile_cells(l.name));
   if (l.level >= 0 && l.tile_size > 0)
     j["pixel_m"] = default_grid().level_info(l.level, l.tile_size).pixel_m;
   return j;
@@ -79,21 +111,34 @@ void print_info(const std::string& path, bool as_json) {
               double(store->file_size()) / 1048576.0);
   std::printf("layers    %zu\n", layers.size());
   for (const json& l : layers) {
-    std::printf("\n  %s: %s %s x%d, %d px tiles at level %d (%.3f m/px), %s%s%s\n",
-                l["name"].get<std::string>().c_str(), l["kind"].get<std::string>().c_str(),
-                l["dtype"].get<std::string>().c_str(), l["channels"].get<int>(),
-                l["tile_size"].get<int>(), l["level"].get<int>(), l.value("pixel_m", 0.0),
-                l["semantics"].get<std::string>().c_str(),
-                l["units"].get<std::string>().empty() ? "" : ", units ",
-                l["units"].get<std::string>().c_str());
-    if (l["kind"] == "features")
-      std::printf("    features %lld indexed in %lld cells (%.1f MiB)\n",
-                  l["features"].get<long long>(), l["tiles"].get<long long>(),
+    if (l["kind"] == "features") {
+      std::string types;
+      for (const auto& [type, count] : l["geometry_types"].items())
+        types += (types.empty() ? "" : ", ") + type + " " + count.dump();
+      std::printf("\n  %s: features indexed in cells at level %d\n",
+                  l["name"].get<std::string>().c_str(), l["level"].get<int>());
+      std::printf("    features %lld (%s) in %lld cells (%.1f MiB)\n",
+                  l["features"].get<long long>(), types.c_str(), l["tiles"].get<long long>(),
                   l["bytes"].get<double>() / 1048576.0);
-    else
+      std::string attributes;
+      for (const json& a : l["attributes"])
+        attributes += (attributes.empty() ? "" : ", ") + a.get<std::string>();
+      std::printf("    attributes %s\n", attributes.empty() ? "none" : attributes.c_str());
+    } else {
+      std::printf("\n  %s: %s %s x%d, %d px tiles at level %d (%.3f m/px), %s%s%s\n",
+                  l["name"].get<std::string>().c_str(), l["kind"].get<std::string>().c_str(),
+                  l["dtype"].get<std::string>().c_str(), l["channels"].get<int>(),
+                  l["tile_size"].get<int>(), l["level"].get<int>(), l.value("pixel_m", 0.0),
+                  l["semantics"].get<std::string>().c_str(),
+                  l["units"].get<std::string>().empty() ? "" : ", units ",
+                  l["units"].get<std::string>().c_str());
       std::printf("    tiles  %lld (%.1f MiB compressed), levels %s\n", l["tiles"].get<long long>(),
                   l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
+    }
     std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
+    if (!l["incomplete"].is_null())
+      std::printf("    INCOMPLETE: %s; readers refuse it until it is finished (--resume)\n",
+                  l["incomplete"].get<std::string>().c_str());
   }
   if (!report["artifacts"].empty())
     std::printf("\nartifacts %s\n", report["artifacts"].dump().c_str());

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <filesystem>
+
 #include "core/error.h"
 #include "core/geojson.h"
 #include "core/grid.h"
@@ -26,6 +28,25 @@ RegionSpec region_of(const RegionOptions& o) {
 bool metres(const std::string& units) {
   return units == "m" || units == "metre" || units == "metres" || units == "meter" ||
          units == "meters";
+}
+
+// Runs an export writing files into the directory `dir`. Each file is written whole or not at all
+// (core/output_file.h); if the export fails, the files it wrote into a directory that did not
+// exist or was empty are removed again, so that a failed export leaves nothing behind.
+template <typename Export>
+void into_directory(const std::string& dir, Export&& write) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const bool existed = fs::is_directory(dir, ec);
+  const bool fresh = !existed || fs::is_empty(dir, ec);
+  try {
+    write();
+  } catch (...) {
+    if (fresh && !existed) fs::remove_all(dir, ec);
+    if (fresh && existed)
+      for (const auto& entry : fs::directory_iterator(dir, ec)) fs::remove_all(entry.path(), ec);
+    throw;
+  }
 }
 
 std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
@@ -82,8 +103,11 @@ void run_export(Tiles3dJob job) {
       throw Error("--levels '" + job.levels + "': expected A..B, e.g. 6..10");
     }
   }
-  const int64_t tiles = plugin_function<decltype(maquette_mesh_tiles3d)>(
-      kMeshPlugin, kTiles3dEntry)(*store, default_grid(), job.spec, job.out);
+  int64_t tiles = 0;
+  into_directory(job.out, [&] {
+    tiles = plugin_function<decltype(maquette_mesh_tiles3d)>(kMeshPlugin, kTiles3dEntry)(
+        *store, default_grid(), job.spec, job.out);
+  });
   spdlog::info("wrote {}/tileset.json ({} tiles)", job.out, tiles);
 }
 
@@ -96,8 +120,10 @@ void run_glb_export(const MeshJob& job) {
 
 void run_drc_export(const MeshJob& job) {
   const auto store = Store::open(job.store, Store::Mode::ReadOnly);
-  plugin_function<decltype(maquette_mesh_drc)>(kMeshPlugin, kDrcEntry)(
-      *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  into_directory(job.out, [&] {
+    plugin_function<decltype(maquette_mesh_drc)>(kMeshPlugin, kDrcEntry)(
+        *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+  });
   spdlog::info("wrote {}", job.out);
 }
 

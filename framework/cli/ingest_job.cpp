@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/region.h"
+#include "store/created_store.h"
 #include "vector/vector_ingest.h"
 
 namespace maquette::cli {
@@ -21,10 +22,8 @@ void ingest_rasters(const IngestJob& job) {
       resampling_name(rep.resampling), rep.seconds, rep.resumed ? " (resumed)" : "");
 }
 
-void ingest_vectors(const IngestJob& o) {
-  if (o.raster.as == "stations" && o.sources.size() != 1)
-    throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
-  auto store = Store::open(o.store, Store::Mode::Create);
+// Stations or features into an open store.
+void ingest_vectors_into(Store& store, const IngestJob& o) {
   if (o.raster.as == "stations") {
     StationsIngestOptions s;
     s.layer = o.raster.layer;
@@ -32,7 +31,7 @@ void ingest_vectors(const IngestJob& o) {
     s.lat_column = o.lat;
     s.elevation_column = o.elevation;
     s.value_columns = o.values;
-    const StationsIngestReport rep = ingest_stations(*store, o.sources.front(), s);
+    const StationsIngestReport rep = ingest_stations(store, o.sources.front(), s);
     spdlog::info("artifact {}: {} stations, {} value columns", s.layer, rep.stations,
                  rep.value_columns.size());
     return;
@@ -45,18 +44,29 @@ void ingest_vectors(const IngestJob& o) {
   // The region as compact cells (at --level, or 8: ~20 km cells, to keep big regions cheap).
   const int level = o.level.value_or(8);
   if (!o.bbox.empty()) {
-    check_bbox(o.bbox, "--bbox");
-    f.region = compact(default_grid().cover_bbox(o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3], level,
-                                                 Containment::Overlap));
+    f.region = compact(cover_box(default_grid(), o.bbox, level, Containment::Overlap, "--bbox"));
   } else if (!o.raster.region.empty()) {
-    f.region = compact(cover_geojson(default_grid(), read_geojson_polygons(o.raster.region), level,
-                                     Containment::Overlap));
+    const auto polygons = read_geojson_polygons(o.raster.region);
+    check_cover_size(polygons, level, o.raster.region);
+    f.region = compact(cover_geojson(default_grid(), polygons, level, Containment::Overlap));
   }
-  const FeatureIngestReport rep = ingest_features(*store, o.sources, f);
+  const FeatureIngestReport rep = ingest_features(store, o.sources, f);
   spdlog::info(
       "layer {}: {} features at level {} ({} cell entries), {} invalid skipped, {} "
       "outside the region",
       f.layer, rep.features, rep.level, rep.cell_entries, rep.invalid_skipped, rep.outside_skipped);
+}
+
+void ingest_vectors(const IngestJob& o) {
+  if (o.raster.as == "stations" && o.sources.size() != 1)
+    throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
+  auto store = Store::open(o.store, Store::Mode::Create);
+  try {
+    ingest_vectors_into(*store, o);
+  } catch (...) {
+    remove_if_created(std::move(store));  // a failed ingest leaves no new store
+    throw;
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "cli/builtin_steps.h"
 #include "cli/export_jobs.h"
 #include "core/error.h"
+#include "core/json_file.h"
 #include "runtime/task_operator.h"
 
 namespace maquette::cli {
@@ -105,7 +106,7 @@ void check_format_options(const json& p) {
       throw Error("params." + key + ": not an option of format " + format + " (it takes: " + list +
                   ")");
   if (p.contains("range") && p.at("range").size() != 2)
-    throw Error("params.range: expected 2 numbers, got " + p.at("range").dump());
+    throw Error("params.range: expected 2 numbers, got " + excerpt(p.at("range")));
   if (p.contains("bbox") && p.contains("cells"))
     throw Error("params: give at most one of \"bbox\" and \"cells\"");
   if (p.contains("cells"))

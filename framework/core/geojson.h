@@ -19,14 +19,27 @@ std::vector<PolygonRings> geojson_polygons(const nlohmann::json& geojson, const 
 // Reads a GeoJSON file and returns its polygons.
 std::vector<PolygonRings> read_geojson_polygons(const std::string& path);
 
+// A cover lists every cell, so regions whose cells at the level would not fit in memory are
+// refused first, with an estimate of the count from their lon/lat area.
+inline constexpr double kMaxCoverCells = 2e7;
+
+// Throws maquette::Error naming `what` with the estimate when the polygons' bounding box holds
+// more than kMaxCoverCells cells at the level.
+void check_cover_size(const std::vector<PolygonRings>& polygons, int level,
+                      const std::string& what);
 // Cells at `level` covering every polygon of the GeoJSON, sorted and unique.
 std::vector<CellId> cover_geojson(const Grid& grid, const std::vector<PolygonRings>& polygons,
                                   int level, Containment mode);
+// Cells at `level` covering a lon/lat box W S E N (checked by check_bbox, naming `option`),
+// sorted; refused over kMaxCoverCells, with the estimate.
+std::vector<CellId> cover_box(const Grid& grid, const std::vector<double>& bbox, int level,
+                              Containment mode, const std::string& option);
 
 // The cell's boundary as a GeoJSON Polygon geometry (counter-clockwise ring).
 nlohmann::json cell_boundary_geojson(const Grid& grid, CellId cell, int points_per_edge);
 
-// Throws maquette::Error naming `option` unless bbox is W S E N with latitudes in +-90 and S <= N.
+// Throws maquette::Error naming `option` unless bbox is W S E N with latitudes in +-90, S < N and
+// W != E (a box with area; W > E crosses the antimeridian).
 void check_bbox(const std::vector<double>& bbox, const std::string& option);
 
 }  // namespace maquette

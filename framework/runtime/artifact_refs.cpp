@@ -1,6 +1,7 @@
 #include "runtime/artifact_refs.h"
 
 #include "core/error.h"
+#include "core/json_file.h"
 
 namespace maquette {
 namespace {
@@ -46,13 +47,8 @@ json paste_artifacts(const json& params, const Store& store, const std::string& 
     const std::optional<Artifact> artifact = store.get_artifact(name);
     if (!artifact) throw Error(context + ": " + path + ": no artifact '" + name + "' in the store");
     const std::string_view text = artifact->text();
-    json doc;
-    try {
-      doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-      throw Error(context + ": " + path + ": artifact '" + name + "' (" + artifact->media_type +
-                  ") is not JSON: " + e.what());
-    }
+    const json doc = parse_json(
+        text, context + ": " + path + ": artifact '" + name + "' (" + artifact->media_type + ")");
     if (!ref.contains("pointer")) return doc;
     const std::string pointer = ref.at("pointer");
     try {

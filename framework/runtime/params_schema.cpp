@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "runtime/artifact_refs.h"
 
 namespace maquette {
@@ -51,12 +52,12 @@ class Validator {
     else if (type == "integer") {
       ok = value.is_number_integer() || (value.is_number_float() && is_whole(value));
       if (ok && !fits_int64(value))
-        fail(path, value.dump() + " is outside the 64-bit integer range");
+        fail(path, excerpt(value) + " is outside the 64-bit integer range");
       if (ok && value.is_number_float()) value = int64_t(value.get<double>());
     } else {
       fail(path, "the operator's schema has an unsupported type '" + type + "'");
     }
-    if (!ok) fail(path, "expected " + article(type) + ", got " + value.dump());
+    if (!ok) fail(path, "expected " + article(type) + ", got " + excerpt(value));
   }
 
   static bool is_whole(const json& value) {
@@ -79,15 +80,15 @@ class Validator {
   void check_enum(const json& allowed, const json& value, const std::string& path) const {
     for (const auto& a : allowed)
       if (a == value) return;
-    fail(path, value.dump() + " is not one of " + allowed.dump());
+    fail(path, excerpt(value) + " is not one of " + allowed.dump());
   }
 
   void check_range(const json& schema, const json& value, const std::string& path) const {
     const double v = value.get<double>();
     if (schema.contains("minimum") && v < schema.at("minimum").get<double>())
-      fail(path, value.dump() + " is below the minimum " + schema.at("minimum").dump());
+      fail(path, excerpt(value) + " is below the minimum " + schema.at("minimum").dump());
     if (schema.contains("maximum") && v > schema.at("maximum").get<double>())
-      fail(path, value.dump() + " is above the maximum " + schema.at("maximum").dump());
+      fail(path, excerpt(value) + " is above the maximum " + schema.at("maximum").dump());
   }
 
   void check_object(const json& schema, json& value, const std::string& path) const {
@@ -95,7 +96,7 @@ class Validator {
     const json& props = schema.contains("properties") ? schema.at("properties") : empty;
     if (schema.contains("additionalProperties") && schema.at("additionalProperties") == false) {
       for (const auto& [key, _] : value.items())
-        if (!props.contains(key)) fail(path, "unknown field '" + key + "'");
+        if (!props.contains(key)) fail(path, "unknown field '" + excerpt(key) + "'");
     }
     if (schema.contains("required")) {
       for (const auto& key : schema.at("required"))

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/tile.h"
-#include "runtime/json_file.h"
 #include "runtime/params_schema.h"
 #include "runtime/pipeline_region.h"
 
@@ -27,18 +27,19 @@ constexpr int kMaxRefine = 12;
 void check_fields(const json& obj, const std::set<std::string>& known, const std::string& context,
                   const std::string& path) {
   for (const auto& [key, _] : obj.items())
-    if (!known.count(key)) fail(context, path, "unknown field '" + key + "'");
+    if (!known.count(key)) fail(context, path, "unknown field '" + excerpt(key) + "'");
 }
 
 // An integer field within lo..hi (lo <= 0 <= hi). JSON integers are 64-bit, positive ones
 // unsigned: they are compared as such, not truncated to int first.
 int integer(const json& obj, const char* key, int lo, int hi, const std::string& context) {
   const json& v = obj.at(key);
-  if (!v.is_number_integer()) fail(context, key, "expected an integer, got " + v.dump());
+  if (!v.is_number_integer()) fail(context, key, "expected an integer, got " + excerpt(v));
   const bool in_range = v.is_number_unsigned() ? v.get<uint64_t>() <= uint64_t(hi)
                                                : v.get<int64_t>() >= lo && v.get<int64_t>() <= hi;
   if (!in_range)
-    fail(context, key, v.dump() + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+    fail(context, key,
+         excerpt(v) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
   return int(v.get<int64_t>());
 }
 
@@ -49,10 +50,11 @@ std::map<std::string, std::string> port_map(const json& step, const char* key,
   if (!step.contains(key)) return out;
   const json& ports = step.at(key);
   if (!ports.is_object())
-    fail(label, key, "expected an object of port: layer, got " + ports.dump());
+    fail(label, key, "expected an object of port: layer, got " + excerpt(ports));
   for (const auto& [port, layer] : ports.items()) {
     if (!layer.is_string() || layer.get<std::string>().empty())
-      fail(label, std::string(key) + "." + port, "expected a layer name, got " + layer.dump());
+      fail(label, std::string(key) + "." + excerpt(port),
+           "expected a layer name, got " + excerpt(layer));
     out[port] = layer.get<std::string>();
   }
   return out;
@@ -93,7 +95,7 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   PipelineStep step;
   step.index = index;
   const std::string where = "step " + std::to_string(index);
-  if (!s.is_object()) fail(where, "", "expected an object, got " + s.dump());
+  if (!s.is_object()) fail(where, "", "expected an object, got " + excerpt(s));
   if (!s.contains("op") || !s.at("op").is_string()) fail(where, "op", "missing operator name");
   step.op_name = s.at("op").get<std::string>();
   const std::string label = step.label();
@@ -101,7 +103,7 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   step.op = registry.find(step.op_name);
   if (step.op == nullptr)
     fail(label, "op",
-         "unknown operator '" + step.op_name +
+         "unknown operator '" + excerpt(step.op_name) +
              "' (no loaded module has it; see `maquette modules`)");
   const MaquetteModuleInfo& module = *registry.module_of(step.op_name)->info;
   step.module = std::string(module.name) + " " + module.version;
@@ -133,7 +135,7 @@ void check_distinct_outputs(const std::vector<PipelineStep>& steps) {
 }  // namespace
 
 std::string PipelineStep::label() const {
-  return "step " + std::to_string(index) + " (" + op_name + ")";
+  return "step " + std::to_string(index) + " (" + excerpt(op_name) + ")";
 }
 
 Pipeline parse_pipeline(std::string_view text, const std::string& source,
@@ -149,7 +151,7 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
     if (!doc.contains(key)) fail(source, key, "missing required field");
 
   if (!doc.at("store").is_string())
-    fail(source, "store", "expected a path, got " + doc.at("store").dump());
+    fail(source, "store", "expected a path, got " + excerpt(doc.at("store")));
   p.store_path = (std::filesystem::path(base_dir) / doc.at("store").get<std::string>()).string();
   p.level = integer(doc, "level", 0, CellId::kMaxLevel, source);
   if (doc.contains("tile_size")) {

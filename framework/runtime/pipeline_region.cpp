@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/geojson.h"
 #include "core/grid.h"
+#include "core/json_file.h"
 #include "core/region.h"
 
 namespace maquette {
@@ -16,11 +17,10 @@ std::vector<CellId> bbox_cells(const json& v, int level, const std::string& wher
   std::vector<double> bbox;
   if (v.is_array())
     for (const auto& x : v) {
-      if (!x.is_number()) throw Error(where + ": expected a number, got " + x.dump());
+      if (!x.is_number()) throw Error(where + ": expected a number, got " + excerpt(x));
       bbox.push_back(x.get<double>());
     }
-  check_bbox(bbox, where);
-  return default_grid().cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], level, Containment::Overlap);
+  return cover_box(default_grid(), bbox, level, Containment::Overlap, where);
 }
 
 std::vector<CellId> geojson_cells(const json& v, int level, const std::string& base_dir,
@@ -29,11 +29,12 @@ std::vector<CellId> geojson_cells(const json& v, int level, const std::string& b
       v.is_string()
           ? read_geojson_polygons((std::filesystem::path(base_dir) / v.get<std::string>()).string())
           : geojson_polygons(v, where);
+  check_cover_size(polygons, level, where);
   return cover_geojson(default_grid(), polygons, level, Containment::Overlap);
 }
 
 std::vector<CellId> listed_cells(const json& v, int level, const std::string& where) {
-  if (!v.is_array()) throw Error(where + ": expected an array of cell ids, got " + v.dump());
+  if (!v.is_array()) throw Error(where + ": expected an array of cell ids, got " + excerpt(v));
   std::vector<CellId> cells;
   for (size_t i = 0; i < v.size(); ++i) {
     std::optional<CellId> cell;
@@ -41,7 +42,7 @@ std::vector<CellId> listed_cells(const json& v, int level, const std::string& wh
     if (v[i].is_number_unsigned() && CellId(v[i].get<uint64_t>()).is_valid())
       cell = CellId(v[i].get<uint64_t>());
     if (!cell)
-      throw Error(where + "[" + std::to_string(i) + "]: " + v[i].dump() +
+      throw Error(where + "[" + std::to_string(i) + "]: " + excerpt(v[i]) +
                   " is not a valid cell id");
     cells.push_back(*cell);
   }
@@ -55,7 +56,7 @@ std::vector<CellId> region_cells(const json& region, int level, const std::strin
   if (!region.is_object() || region.size() != 1)
     throw Error(context +
                 ": region: expected {\"bbox\": ...}, {\"geojson\": ...} or {\"cells\": ...}, got " +
-                region.dump());
+                excerpt(region));
   const std::string key = region.begin().key();
   const json& value = region.begin().value();
   const std::string where = context + ": region." + key;
@@ -67,7 +68,7 @@ std::vector<CellId> region_cells(const json& region, int level, const std::strin
   else if (key == "cells")
     cells = listed_cells(value, level, where);
   else
-    throw Error(context + ": region: unknown field '" + key +
+    throw Error(context + ": region: unknown field '" + excerpt(key) +
                 "' (expected bbox, geojson or cells)");
   if (cells.empty()) throw Error(where + ": the region covers no cells");
   return cells;

@@ -27,6 +27,12 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Whether no step writes to the store (every operator is one without outputs: exports).
+bool reads_only(const Pipeline& pipeline) {
+  return std::all_of(pipeline.steps.begin(), pipeline.steps.end(),
+                     [](const PipelineStep& s) { return s.op->spec().outputs.empty(); });
+}
+
 // The pipeline's store, or null when it does not exist yet.
 std::unique_ptr<Store> open_existing(const Pipeline& pipeline, Store::Mode mode) {
   if (!std::filesystem::exists(pipeline.store_path)) return nullptr;
@@ -109,7 +115,7 @@ class Runner {
       throw;
     }
     exchange(ranks_, [&] {
-      if (ranks_.root()) store_->finish_run(summary.run_id, "ok");
+      if (ranks_.root() && summary.run_id != 0) store_->finish_run(summary.run_id, "ok");
       return "";
     });
     summary.seconds = seconds_since(start);
@@ -119,6 +125,18 @@ class Runner {
  private:
   // On the root: the store, its output layers and the run record. Returns the run for join().
   std::string prepare(RunPlan& plan, RunSummary& summary) {
+    // A pipeline that only reads (exports) runs on a store it cannot write, without run records
+    // (run 0): e.g. a store on a read-only file system.
+    if (reads_only(pipeline_) && std::filesystem::exists(pipeline_.store_path)) {
+      try {
+        Store::check_writable(pipeline_.store_path);
+      } catch (const Error& e) {
+        if (!quiet_) spdlog::info("{}; the pipeline only reads it: no run record", e.what());
+        store_ = Store::open(pipeline_.store_path, Store::Mode::ReadOnly);
+        plan = plan_run(pipeline_, store_.get(), threads_);
+        return nlohmann::json{{"run", 0}, {"resumed", false}}.dump();
+      }
+    }
     // Everything is validated before the store is created or written.
     store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
@@ -148,6 +166,10 @@ class Runner {
       }
     }
     if (!summary.resumed) summary.run_id = store_->begin_run(identity);
+    // Readers refuse the output layers until their step is done (a killed run leaves them so).
+    for (const auto& sp : plan.steps)
+      for (const auto& [port, layer] : sp.outputs)
+        store_->mark_incomplete(layer.name, summary.run_id);
     return nlohmann::json{{"run", summary.run_id}, {"resumed", summary.resumed}}.dump();
   }
 
@@ -156,7 +178,8 @@ class Runner {
     const nlohmann::json j = nlohmann::json::parse(run);
     summary.run_id = j.at("run").get<int64_t>();
     summary.resumed = j.at("resumed").get<bool>();
-    store_ = Store::open(pipeline_.store_path, Store::Mode::ReadWrite);
+    store_ = Store::open(pipeline_.store_path,
+                         summary.run_id == 0 ? Store::Mode::ReadOnly : Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
   }
 
@@ -182,6 +205,13 @@ class Runner {
   StepSummary run_step(const StepPlan& sp, const std::vector<CellId>& done, int64_t run_id) {
     const auto start = Clock::now();
     StepSummary s{sp.step->label(), int64_t(sp.cells.size()), 0, 0, 0.0};
+    for (const auto& [port, layer] : sp.step->inputs) {
+      try {
+        if (store_->layer(layer)) store_->require_layer(layer);  // refuses an incomplete one
+      } catch (const Error& e) {
+        throw Error(sp.step->label() + ": inputs." + port + ": " + e.what());
+      }
+    }
     StepIO io(*store_, sp, run_id);
     const OperatorKind kind = sp.step->op->spec().kind;
     if (kind == OperatorKind::Cell) {
@@ -202,7 +232,7 @@ class Runner {
         run_reduce(sp, io);
       else if (kind == OperatorKind::Task)
         exchange(ranks_, [&] {
-          if (ranks_.root()) run_task(sp, io);
+          if (ranks_.root()) run_task(sp, io, run_id);
           return "";
         });
       else
@@ -218,6 +248,11 @@ class Runner {
     s.skipped = s.cells - s.computed;
     exchange(ranks_, [&] {
       update_overviews(sp);
+      return "";
+    });
+    exchange(ranks_, [&] {
+      if (ranks_.root())
+        for (const auto& [port, layer] : sp.outputs) store_->mark_complete(layer.name);
       return "";
     });
     s.seconds = seconds_since(start);
@@ -246,7 +281,7 @@ class Runner {
   }
 
   // A task runs on the root (an ingest writes its layer with its own threads).
-  void run_task(const StepPlan& sp, StepIO& io) const {
+  void run_task(const StepPlan& sp, StepIO& io, int64_t run_id) const {
     TaskContext ctx = task_context(pipeline_, *sp.step);
     ctx.params = &sp.params;
     ctx.threads = threads_;
@@ -257,7 +292,7 @@ class Runner {
     } catch (const std::exception& e) {
       throw Error(sp.step->label() + " failed: " + e.what());
     }
-    io.write_done(sp.cells.cells());
+    if (run_id != 0) io.write_done(sp.cells.cells());
   }
 
   // The step's output layers are shared out among the ranks (each layer's overviews depend on

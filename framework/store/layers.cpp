@@ -99,8 +99,12 @@ std::optional<LayerInfo> Store::layer(const std::string& name) const {
 }
 
 LayerInfo Store::require_layer(const std::string& name) const {
-  if (auto l = layer(name)) return *l;
-  throw Error("unknown layer '" + name + "' in " + impl_->path);
+  auto l = layer(name);
+  if (!l) throw Error("unknown layer '" + name + "' in " + impl_->path);
+  if (const auto why = incomplete(name))
+    throw Error("layer '" + name + "' in " + impl_->path + " is incomplete (" + *why +
+                "): finish it with --resume, or write it again");
+  return *l;
 }
 
 std::vector<LayerInfo> Store::layers() const {

@@ -66,6 +66,8 @@ void Store::finish_run(int64_t run_id, const std::string& status) {
         .bind_int(2, run_id)
         .run();
     if (c.changes() == 0) throw Error("no run " + std::to_string(run_id) + " in " + impl_->path);
+    if (status == "ok")
+      c.query("DELETE FROM incomplete_layers WHERE run = ?").bind_int(1, run_id).run();
   });
 }
 

@@ -83,17 +83,28 @@ CREATE TABLE feature_cells(
   PRIMARY KEY(layer, cell, fid)) WITHOUT ROWID;
 )sql";
 
+// Version 3: the layers being written (marked before their first tile, cleared when done), so
+// that readers refuse a layer that a failed or killed command left partial.
+constexpr const char* kIncompleteSchema = R"sql(
+CREATE TABLE IF NOT EXISTS incomplete_layers(
+  layer INTEGER PRIMARY KEY,
+  run INTEGER NOT NULL);
+)sql";
+
 int32_t pragma_int(sqlite::Connection& conn, const char* sql) {
   auto q = conn.query(sql);
   return q.step() ? int32_t(q.int64(0)) : 0;
 }
 
-// Brings a version 1 store (no features tables) to the current version.
+// Brings a version 1 store (no features tables) or 2 (no incomplete marks) to the current
+// version.
 void migrate(sqlite::Connection& conn) {
   conn.transaction([&] {
     // Re-checked under the write lock: another process may have migrated it meanwhile.
-    if (pragma_int(conn, "PRAGMA user_version") >= kStoreSchemaVersion) return;
-    conn.exec(kFeaturesSchema);
+    const int32_t version = pragma_int(conn, "PRAGMA user_version");
+    if (version >= kStoreSchemaVersion) return;
+    if (version < 2) conn.exec(kFeaturesSchema);
+    conn.exec(kIncompleteSchema);
     set_version(conn);
   });
 }
@@ -124,6 +135,7 @@ void create_schema(sqlite::Connection& conn) {
       if (pragma_int(conn, "SELECT count(*) FROM sqlite_schema") != 0) not_a_store(conn);
       conn.exec(kSchema);
       conn.exec(kFeaturesSchema);
+      conn.exec(kIncompleteSchema);
       conn.exec(("PRAGMA application_id = " + std::to_string(kStoreApplicationId)).c_str());
       set_version(conn);
     });

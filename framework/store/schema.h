@@ -9,9 +9,9 @@
 namespace maquette {
 
 constexpr int32_t kStoreApplicationId = 0x4D515354;  // "MQST", PRAGMA application_id
-// PRAGMA user_version. 2 added features layers; version 1 stores are read as they are and
-// migrated when opened for writing.
-constexpr int32_t kStoreSchemaVersion = 2;
+// PRAGMA user_version. 2 added features layers, 3 the marks of incomplete layers; older stores
+// are read as they are and migrated when opened for writing.
+constexpr int32_t kStoreSchemaVersion = 3;
 
 // Page size of a new store: larger pages keep 100 kB tile blobs in fewer overflow pages.
 constexpr int kStorePageSize = 16384;

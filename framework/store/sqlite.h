@@ -59,8 +59,9 @@ class Query {
 
 class Connection {
  public:
-  // `flags` are sqlite3_open_v2 flags.
-  Connection(std::string path, int flags);
+  // `flags` are sqlite3_open_v2 flags. `immutable`: the file is read as one nobody changes
+  // (SQLite's immutable=1: no locks, no -shm or -wal), for a store on a read-only file system.
+  Connection(std::string path, int flags, bool immutable = false);
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;

@@ -5,10 +5,13 @@
 #include <spdlog/spdlog.h>
 #include <sqlite3.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 
 #include "store/codec.h"
 #include "store/schema.h"
@@ -76,6 +79,38 @@ void roll_back_hot_journal(const std::string& path) {
   }
 }
 
+// Why a store cannot be written at `path` (an existing file, or a new one in its directory), or
+// nothing. Root may write to any file, so the mode bits of an existing file are checked too: a
+// store made read-only (chmod a-w) is refused for writing whoever opens it.
+std::optional<std::string> write_problem(const std::string& path) {
+  struct stat st {};
+  const bool exists = ::stat(path.c_str(), &st) == 0;
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  if (dir.empty()) dir = ".";
+  struct statvfs fs {};
+  if (::statvfs(exists ? path.c_str() : dir.c_str(), &fs) == 0 && (fs.f_flag & ST_RDONLY))
+    return "it is on a read-only file system";
+  if (exists && !writable(path, st))
+    return "no write permission (open it read-only or make it writable)";
+  if (::access(dir.c_str(), W_OK) != 0)
+    return "its directory " + dir + " is not writable (" + std::strerror(errno) + ")";
+  return std::nullopt;
+}
+
+// A store on a read-only file system (or in a directory this user may not write) cannot have the
+// -shm file SQLite's WAL mode reads through; the file is then read as immutable: nobody can
+// change it there. A WAL left with changes cannot be read so, which is said.
+bool read_in_place_impossible(const std::string& path) {
+  if (!write_problem(path + "-shm")) return false;
+  struct stat wal {};
+  if (::stat((path + "-wal").c_str(), &wal) == 0 && wal.st_size > 0)
+    spdlog::warn(
+        "{}-wal holds changes that cannot be read where the store is ({}): they are "
+        "left out",
+        path, *write_problem(path + "-shm"));
+  return true;
+}
+
 // The journal mode a pragma leaves: "wal", "truncate", ...
 std::string set_journal_mode(sqlite::Connection& conn, const std::string& mode) {
   auto q = conn.query(("PRAGMA journal_mode = " + mode).c_str());
@@ -121,7 +156,12 @@ std::string cell_text(CellId cell) {
 }
 
 ReadPool::Lease ReadPool::borrow() {
-  roll_back_hot_journal(path_);
+  bool immutable = false;
+  {
+    std::lock_guard lock(mutex_);
+    immutable = immutable_;
+  }
+  if (!immutable) roll_back_hot_journal(path_);  // an immutable file has no journal to read
   {
     std::lock_guard lock(mutex_);
     if (!idle_.empty()) {
@@ -130,9 +170,15 @@ ReadPool::Lease ReadPool::borrow() {
       return Lease(*this, std::move(conn));
     }
   }
-  auto conn = std::make_unique<sqlite::Connection>(path_, kReadFlags);
+  auto conn = std::make_unique<sqlite::Connection>(path_, kReadFlags, immutable);
   configure_connection(*conn, false);
   return Lease(*this, std::move(conn));
+}
+
+void ReadPool::read_immutable() {
+  std::lock_guard lock(mutex_);
+  immutable_ = true;
+  idle_.clear();
 }
 
 void ReadPool::give_back(std::unique_ptr<sqlite::Connection> conn) {
@@ -178,14 +224,19 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
   const bool create = mode == Mode::Create || mode == Mode::CreateBulk;
   if (!exists && !create) throw Error("no such store: " + path);
   if (exists && S_ISDIR(st.st_mode)) throw Error(path + " is a directory, not a Maquette store");
-  if (exists && mode != Mode::ReadOnly && !writable(path, st))
-    throw Error(path + " is read-only: open it read-only or make it writable");
+  if (mode != Mode::ReadOnly) check_writable(path);
 
   auto impl = std::make_unique<Impl>(path, mode == Mode::ReadOnly);
   try {
     if (!exists) impl->created = create_store_file(path, mode == Mode::CreateBulk);
     if (mode == Mode::ReadOnly) {
-      check_schema(*impl->readers.borrow());
+      try {
+        check_schema(*impl->readers.borrow());
+      } catch (const sqlite::Failure& e) {
+        if (e.code() == SQLITE_NOTADB || !read_in_place_impossible(path)) throw;
+        impl->readers.read_immutable();
+        check_schema(*impl->readers.borrow());
+      }
     } else {
       impl->writer =
           std::make_unique<sqlite::Connection>(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX);
@@ -210,6 +261,13 @@ std::unique_ptr<Store> Store::open(const std::string& path, Mode mode) {
     throw;
   }
   return std::unique_ptr<Store>(new Store(std::move(impl)));
+}
+
+void Store::check_writable(const std::string& path) {
+  if (const auto problem = write_problem(path))
+    throw Error((std::filesystem::exists(path) ? path + " is read-only: "
+                                               : "cannot create the store " + path + ": ") +
+                *problem);
 }
 
 const std::string& Store::path() const { return impl_->path; }

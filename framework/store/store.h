@@ -89,8 +89,13 @@ class Store {
   enum class Mode { ReadOnly, ReadWrite, Create, CreateBulk };
 
   // Throws maquette::Error naming the path: missing file, not a Maquette store (or a newer
-  // schema), read-only file opened for writing.
+  // schema), read-only file opened for writing. A store on a read-only file system is read as
+  // immutable (SQLite cannot make its -shm file there).
   static std::unique_ptr<Store> open(const std::string& path, Mode mode);
+  // Throws maquette::Error saying why a store cannot be written (or created) at `path`: a
+  // read-only file system, a file without write permission, a directory that is not writable.
+  // Store::open checks it for every mode but ReadOnly; a command checks it before its work.
+  static void check_writable(const std::string& path);
   ~Store();
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;
@@ -106,7 +111,9 @@ class Store {
   // when it exists with the same one (so re-running a step is idempotent).
   void create_layer(const LayerInfo& info);
   std::optional<LayerInfo> layer(const std::string& name) const;
-  LayerInfo require_layer(const std::string& name) const;  // throws "unknown layer 'x' in STORE"
+  // For readers: throws "unknown layer 'x' in STORE", and for a layer marked incomplete (below)
+  // "layer 'x' in STORE is incomplete: ...", naming the run and how to finish it.
+  LayerInfo require_layer(const std::string& name) const;
   std::vector<LayerInfo> layers() const;
   LayerStats stats(const std::string& layer) const;
 
@@ -180,6 +187,19 @@ class Store {
   std::vector<CellId> done_cells(int64_t run_id, int step) const;
   std::vector<int64_t> done_keys(int64_t run_id, int step) const;  // ascending
   void finish_run(int64_t run_id, const std::string& status);      // "ok" | "failed: ..."
+
+  // Incomplete layers: a writer marks a layer before it writes its first tile and clears the
+  // mark when the layer is whole, so that a command that fails or is killed midway leaves the
+  // layer marked until a later run (`--resume`) finishes it; require_layer refuses it meanwhile.
+  // finish_run(id, "ok") clears the marks of that run.
+  void mark_incomplete(const std::string& layer, int64_t run_id);
+  void mark_complete(const std::string& layer);
+  // Why the layer is incomplete ("run 3 failed: ...", "run 3 is running or was interrupted"),
+  // or nothing when it is complete (or unknown).
+  std::optional<std::string> incomplete(const std::string& layer) const;
+  // Undoes a failed write: removes the layer with its tiles, overviews and features, and the run
+  // with its records, in one transaction (for a command that created the layer it failed to fill).
+  void drop_layer(const std::string& layer, int64_t run_id);
 
   int64_t file_size() const;
   bool integrity_ok() const;  // PRAGMA integrity_check == "ok"

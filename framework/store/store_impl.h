@@ -44,11 +44,15 @@ class ReadPool {
 
   explicit ReadPool(std::string path) : path_(std::move(path)) {}
   Lease borrow();
+  // From now on, connections read the file as immutable (a store on a read-only file system,
+  // whose -shm file SQLite cannot create); idle connections are closed.
+  void read_immutable();
 
  private:
   void give_back(std::unique_ptr<sqlite::Connection> conn);
 
   std::string path_;
+  bool immutable_ = false;
   std::mutex mutex_;
   std::vector<std::unique_ptr<sqlite::Connection>> idle_;
 };

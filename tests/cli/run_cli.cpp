@@ -68,6 +68,10 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
   return run_prefixed(env.empty() ? "" : "env " + env + " ", args);
 }
 
+CliResult run_maquette_under(const std::string& wrapper, const std::string& args) {
+  return run_prefixed(wrapper + " ", args);
+}
+
 CliResult run_maquette_limited(const std::string& args, int seconds) {
   return run_prefixed("timeout -s INT " + std::to_string(seconds) + " ", args);
 }

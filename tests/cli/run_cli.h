@@ -15,6 +15,10 @@ struct CliResult {
 // added to the environment.
 CliResult run_maquette(const std::string& args, const std::string& env = "");
 
+// `WRAPPER maquette ARGS`: the program run by another, e.g. "prlimit --as=N" (a memory cap) or
+// "setpriv --reuid=65534 ..." (another user).
+CliResult run_maquette_under(const std::string& wrapper, const std::string& args);
+
 // `maquette ARGS` as run_maquette, stopped with SIGINT if still running after `seconds` (for a
 // command that may not return, such as a server): exit code 124 then.
 CliResult run_maquette_limited(const std::string& args, int seconds);

@@ -75,6 +75,16 @@ void write_raster(const std::string& path, const RasterSpec& spec, const PixelVa
   GDALClose(ds);
 }
 
+RasterSpec lonlat_raster(double west, double north, int size, double pixel,
+                         const std::string& type) {
+  RasterSpec s;
+  s.width = s.height = size;
+  s.geotransform = {west, pixel, 0, north, 0, -pixel};
+  s.crs = "EPSG:4326";
+  s.type = type;
+  return s;
+}
+
 double sphere_field(double lon, double lat) {
   constexpr double d = std::numbers::pi / 180;
   const double x = std::cos(lat * d) * std::cos(lon * d), y = std::cos(lat * d) * std::sin(lon * d),

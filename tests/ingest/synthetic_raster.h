@@ -22,6 +22,11 @@ struct RasterSpec {
   double scale = 1, offset = 0;         // of every band
 };
 
+// A north-up lon/lat (EPSG:4326) raster of size x size pixels of `pixel` degrees, its top-left
+// corner at (west, north), of GDAL type `type`, no nodata.
+RasterSpec lonlat_raster(double west, double north, int size, double pixel,
+                         const std::string& type);
+
 // value(band, x, y) with x, y the pixel centre in the raster's CRS.
 using PixelValue = std::function<double(int band, double x, double y)>;
 
