@@ -11,6 +11,7 @@ packages=(
   libsqlite3-dev sqlite3 libzstd-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev
   libcpp-httplib-dev chromium
+  grass-core  # test oracle only (r.sun, run as a separate process): never linked
 )
 # The viewer is built with npm; Debian's node is enough where the machine has none of its own.
 command -v npm >/dev/null || packages+=(nodejs npm)

@@ -1,5 +1,7 @@
 #include "horizon.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace maquette::climate {
@@ -7,29 +9,59 @@ namespace maquette::climate {
 HorizonAngles::HorizonAngles(int directions, double max_distance_m)
     : directions_(directions), max_distance_(max_distance_m) {}
 
-void HorizonAngles::compute(const Tile<float>& dem, const PixelFrame& frame, int col, int row,
-                            double z0, std::vector<double>& out) const {
-  out.assign(size_t(directions_), -M_PI / 2);
+void HorizonAngles::compute(const Tile<float>& dem, float zmax, const std::vector<char>& used,
+                            const PixelFrame& frame, int col0, int row0,
+                            std::vector<float>& out) const {
+  constexpr int B = kBlock;
+  const int h = dem.halo(), n = dem.size();
+  out.assign(size_t(B) * B * size_t(directions_), float(-M_PI / 2));
+  // Per pixel: its height, the tangent of the highest elevation angle so far, and 1 while its
+  // march goes on (0 once it has left the halo or met a sample without data).
+  std::array<float, B * B> z0, best, alive;
+  for (int r = 0; r < B; ++r)
+    for (int c = 0; c < B; ++c) z0[size_t(r * B + c)] = dem.at(col0 + c, row0 + r);
   for (int k = 0; k < directions_; ++k) {
+    if (!used[size_t(k)]) continue;
     const March m = march(frame, 360.0 * k / directions_);
-    double best_tan = -INFINITY;  // tangent of the highest elevation angle so far
+    best.fill(-INFINITY);
+    for (int i = 0; i < B * B; ++i) alive[size_t(i)] = std::isnan(z0[size_t(i)]) ? 0.f : 1.f;
     for (int step = 1; step * m.metres <= max_distance_; ++step) {
-      const double z = bilinear(dem, col + step * m.dcol, row + step * m.drow);
-      if (std::isnan(z)) break;  // beyond the halo or no data
+      const double x = step * m.dcol, y = step * m.drow, fx = std::floor(x), fy = std::floor(y);
+      const int dc = int(fx), dr = int(fy);
+      const float tx = float(x - fx), ty = float(y - fy);
       const double d = step * m.metres;
-      const double t = (z - d * d / (2 * kEarthRadius) - z0) / d;
-      if (t > best_tan) best_tan = t;
+      const float drop = float(d * d / (2 * kEarthRadius)), inv_d = float(1 / d);
+      // Block columns whose four samples lie in the tile and its halo; others stop.
+      const int c_lo = std::max(0, -h - col0 - dc), c_hi = std::min(B, n + h - 1 - col0 - dc);
+      bool any = false;
+      for (int r = 0; r < B; ++r) {
+        const int row = row0 + r + dr;
+        float* __restrict on = &alive[size_t(r * B)];
+        if (row < -h || row + 1 >= n + h || c_lo >= c_hi) {
+          std::fill(on, on + B, 0.f);
+          continue;
+        }
+        std::fill(on, on + c_lo, 0.f);
+        std::fill(on + std::max(c_lo, c_hi), on + B, 0.f);
+        const float* __restrict top = &dem.at(col0 + dc, row);
+        const float* __restrict bottom = &dem.at(col0 + dc, row + 1);
+        const float* __restrict z_0 = &z0[size_t(r * B)];
+        float* __restrict b = &best[size_t(r * B)];
+        for (int c = c_lo; c < c_hi; ++c) {
+          const float z = (1 - ty) * ((1 - tx) * top[c] + tx * top[c + 1]) +
+                          ty * ((1 - tx) * bottom[c] + tx * bottom[c + 1]);
+          const float a = on[c] * float(z == z);  // no data: the march ends there
+          on[c] = a;
+          const float t = (z - drop - z_0[c]) * inv_d;
+          b[c] = (a > 0.f) & (t > b[c]) ? t : b[c];
+        }
+        for (int c = 0; c < B; ++c) any |= (on[c] > 0.f) & ((zmax - drop - z_0[c]) * inv_d > b[c]);
+      }
+      if (!any) break;
     }
-    out[size_t(k)] = std::atan(best_tan);  // atan(-inf) = -pi/2
+    for (int i = 0; i < B * B; ++i)
+      out[size_t(i) * size_t(directions_) + size_t(k)] = std::atan(best[size_t(i)]);
   }
-}
-
-double HorizonAngles::at(const std::vector<double>& angles, double azimuth) const {
-  double x = azimuth / (2 * M_PI) * directions_;
-  x -= std::floor(x / directions_) * directions_;
-  const int i = int(x) % directions_;
-  const double t = x - std::floor(x);
-  return (1 - t) * angles[size_t(i)] + t * angles[size_t((i + 1) % directions_)];
 }
 
 }  // namespace maquette::climate

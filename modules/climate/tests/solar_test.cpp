@@ -42,7 +42,7 @@ TEST(Sun, HorizontalPlaneMatchesTheExtraterrestrialIntegral) {
     const SolarOptions o = clear(1, 365, 2);
     double expected = 0;
     for (int day = 1; day <= 365; ++day) expected += analytic_day(lat, day, 1367);
-    const double got = potential_radiation(sun_samples(o), o, lat, 0, 0, 0);
+    const double got = SolarModel(o).radiation(lat, 0, 0, 0);
     EXPECT_NEAR(got / expected, 1, 2e-5);
   }
   // Day sampling: every 5th day weighted by 5 stays within 0.1 % over a year at the equator.
@@ -50,32 +50,31 @@ TEST(Sun, HorizontalPlaneMatchesTheExtraterrestrialIntegral) {
   coarse.day_step = 5;
   double year = 0;
   for (int day = 1; day <= 365; ++day) year += analytic_day(0, day, 1367);
-  EXPECT_NEAR(potential_radiation(sun_samples(coarse), coarse, 0, 0, 0, 0) / year, 1, 1e-3);
+  EXPECT_NEAR(SolarModel(coarse).radiation(0, 0, 0, 0) / year, 1, 1e-3);
 }
 
 TEST(Sun, SouthSlopeEqualsHorizontalPlaneNearerTheEquator) {
   // While the declination is positive the sun is above the horizon whenever it is in front of
   // the slope, so the integrands are identical.
   const SolarOptions o = clear(100, 240, 10);
-  const auto sun = sun_samples(o);
+  const SolarModel model(o);
   for (const double slope : {10.0, 25.0, 40.0}) {
     const double phi = 46;
-    const double tilted = potential_radiation(sun, o, phi, 0, std::tan(slope * kRad), 0);
-    const double level = potential_radiation(sun, o, phi - slope, 0, 0, 0);
+    const double tilted = model.radiation(phi, 0, std::tan(slope * kRad), 0);
+    const double level = model.radiation(phi - slope, 0, 0, 0);
     EXPECT_NEAR(tilted / level, 1, 1e-12) << slope;
     // Facing north instead: far less.
-    EXPECT_LT(potential_radiation(sun, o, phi, 0, -std::tan(slope * kRad), 0), tilted);
+    EXPECT_LT(model.radiation(phi, 0, -std::tan(slope * kRad), 0), tilted);
   }
 }
 
 TEST(Sun, AtmosphereAttenuatesLessAtAltitude) {
   SolarOptions o = clear(1, 365, 15);
   o.transmissivity = 0.7;
-  const auto sun = sun_samples(o);
-  const double sea = potential_radiation(sun, o, 40, 0, 0, 0);
-  const double high = potential_radiation(sun, o, 40, 0, 0, 3000);
-  const double top =
-      potential_radiation(sun_samples(clear(1, 365, 15)), clear(1, 365, 15), 40, 0, 0, 0);
+  const SolarModel model(o);
+  const double sea = model.radiation(40, 0, 0, 0);
+  const double high = model.radiation(40, 0, 0, 3000);
+  const double top = SolarModel(clear(1, 365, 15)).radiation(40, 0, 0, 0);
   EXPECT_LT(sea, high);
   EXPECT_LT(high, top);
   EXPECT_GT(sea / top, 0.4);
@@ -104,7 +103,7 @@ TEST(SolarOperator, TiltedPlane) {
   o.transmissivity = 0.75;
   o.day_step = 10;
   o.minutes = 20;
-  const double expected = potential_radiation(sun_samples(o), o, origin.lat, ge, gn, 1000);
+  const double expected = SolarModel(o).radiation(origin.lat, ge, gn, 1000);
   const float got = open.outputs.at("radiation").at(kSize / 2, kSize / 2);
   EXPECT_NEAR(got / expected, 1, 2e-3);
   // A plane shades nothing but itself, which the incidence angle already accounts for.
