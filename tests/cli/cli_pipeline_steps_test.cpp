@@ -167,7 +167,7 @@ TEST_F(PipelineSteps, BadParamsNameTheStepFieldAndValue) {
   e = error_with([](json& d) { d["steps"][2]["params"]["ramp"] = "grey"; });
   EXPECT_TRUE(contains(e,
                        "step 3 (export): params.ramp: not an option of format gtiff (it takes: "
-                       "layer, bbox, cells, level, crs, resolution)"))
+                       "layer, bbox, cells, level, crs, resolution, max_mib, force)"))
       << e;
   e = error_with([](json& d) { d["steps"][3]["params"]["layer"] = "slop"; });
   EXPECT_TRUE(contains(e, "step 4 (export): params.layer: unknown layer 'slop' in " + store)) << e;

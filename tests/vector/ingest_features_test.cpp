@@ -239,18 +239,24 @@ TEST(IngestFeatures, AnInterruptedIngestResumesToTheSameResult) {
 
   auto store = new_store(dir);
   int batches = 0;
-  EXPECT_THROW(ingest_features(*store, {path}, o,
-                               [&](const FeatureIngestReport&) {
-                                 if (++batches == 2) throw Error("killed");
-                               }),
-               Error);
-  EXPECT_EQ(store->feature_count("things"), 6);  // two committed batches
+  const auto interrupted = [&](const FeatureIngestReport&) {
+    if (++batches == 2) throw Error("killed");
+  };
+  // A failed ingest of a new layer removes it again.
+  EXPECT_THROW(ingest_features(*store, {path}, o, interrupted), Error);
+  EXPECT_FALSE(store->layer("things"));
 
+  // Into a layer that exists, it leaves the layer marked incomplete for resume to finish.
+  ingest_features(*store, {path}, o);
+  batches = 0;
+  EXPECT_THROW(ingest_features(*store, {path}, o, interrupted), Error);
+  EXPECT_TRUE(store->incomplete("things"));
   o.resume = true;
   const auto resumed = ingest_features(*store, {path}, o);
-  EXPECT_EQ(resumed.batches_resumed, 2);
+  EXPECT_EQ(resumed.batches_resumed, 2);  // two committed batches
   EXPECT_EQ(resumed.features, 4);
   EXPECT_EQ(store->feature_count("things"), 10);
+  EXPECT_FALSE(store->incomplete("things"));
 
   auto fresh = new_store(dir, "fresh.mqt");
   o.resume = false;
