@@ -94,7 +94,7 @@ std::vector<double> nice_ticks(double low, double high, int max_ticks) {
 }
 
 void add_legend(RgbaImage& image, const Legend& legend) {
-  const int s = image.width >= 400 ? 2 : 1;
+  const int s = std::min(4, 1 + image.width / 400);
   if (const auto* bar = std::get_if<ColourBar>(&legend))
     draw_bar(image, *bar, s);
   else

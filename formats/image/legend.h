@@ -22,7 +22,7 @@ using ClassKey = std::vector<std::pair<Rgb, std::string>>;  // swatch colour, cl
 using Legend = std::variant<ColourBar, ClassKey>;
 
 // Adds the legend below the image, widening it (transparent to the right of the map) when the
-// legend needs more room. Text is 2x the font's size on images at least 400 pixels wide.
+// legend needs more room. The font's pixels grow with the image: 1 + width / 400, at most 4.
 void add_legend(RgbaImage& image, const Legend& legend);
 
 // Tick values for a bar from low to high: multiples of 1, 2 or 5 x 10^k, at most `max_ticks`.

@@ -25,7 +25,9 @@ LonLatBounds lonlat_bounds(const Grid& grid, const std::vector<CellId>& cells) {
       north = std::max(north, p.lat);
     }
   }
-  if (east - west >= 360.0 - 1e-9) return {-180.0, south, 180.0, north};
+  // Around a pole every longitude is in (the boundary's points may miss some).
+  if (east - west >= 360.0 - 1e-9 || north >= 90 || south <= -90)
+    return {-180.0, south, 180.0, north};
   const double shift = 360.0 * std::floor((west + 180.0) / 360.0);
   return {west - shift, south, east - shift, north};
 }

@@ -145,6 +145,22 @@ TEST(PngGlobe, PolarCapsInPolarLambertAzimuthal) {
   }
 }
 
+TEST(PngGlobe, ProjectionCanBeChosen) {
+  if (world_tif().empty()) GTEST_SKIP() << "../shared/data/global/world.tif is absent";
+  // The south cap forced into lon/lat: all longitudes, from the pole to the face's edge.
+  const Png lonlat = export_png(world_store(1), "world", "--cells S --projection lonlat");
+  ASSERT_TRUE(lonlat.ds);
+  EXPECT_NEAR(lonlat.gt[0], -180, 1e-6);
+  EXPECT_NEAR(lonlat.gt[0] + lonlat.width * lonlat.gt[1], 180, 1e-6);
+  EXPECT_NEAR(lonlat.gt[3] + lonlat.height * lonlat.gt[5], -90, 1e-6);
+  EXPECT_NEAR(lonlat.gt[3], -41.94, 0.05);  // the polar squares end at 41.94 degrees (geodetic)
+  // A box of the northern tropics forced into the north polar frame.
+  const Png polar = export_png(world_store(1), "world", "--bbox 0 0 20 20 --projection polar");
+  ASSERT_TRUE(polar.ds);
+  const auto [x, y] = Projector(wkt(polar), "EPSG:4326")(0, 0);
+  EXPECT_NEAR(y, 90, 1e-6);  // the frame's origin is the north pole
+}
+
 TEST(PngGlobe, PipelineBboxAroundTheSouthPoleIsClippedToTheBox) {
   if (world_tif().empty()) GTEST_SKIP() << "../shared/data/global/world.tif is absent";
   const std::string dir = temp_dir();
