@@ -184,11 +184,18 @@ TerrainMesh build_terrain_mesh(const Grid& grid, CellId cell, const Tile<float>&
   // Grid vertices (only corners with data, so that every vertex is referenced).
   std::vector<uint32_t> id(size_t(m + 1) * size_t(m + 1), kNone);
   auto vid = [&](int i, int j) -> uint32_t& { return id[size_t(j) * size_t(m + 1) + size_t(i)]; };
+  const double lon0 = grid.centre(cell).lon;
+  LonLatBounds& where = mesh.lonlat;
   for (int j = 0; j <= m; ++j)
     for (int i = 0; i <= m; ++i)
-      if (const auto* c = field.at(i * k, j * k))
+      if (const auto* c = field.at(i * k, j * k)) {
         vid(i, j) = b.add(c->pos, normal_at(field, i * k, j * k), float(i) / float(m),
                           float(j) / float(m), c->height);
+        const double lon = lon0 + std::remainder(c->lonlat.lon - lon0, 360.0);
+        where = {std::min(where.west, lon), std::min(where.south, c->lonlat.lat),
+                 std::max(where.east, lon), std::max(where.north, c->lonlat.lat)};
+        mesh.at_pole = mesh.at_pole || std::abs(c->lonlat.lat) == 90;
+      }
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < m; ++i) {
       const uint32_t a = vid(i, j), r = vid(i + 1, j), d = vid(i, j + 1), dr = vid(i + 1, j + 1);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "core/lonlat_bounds.h"
 #include "core/tile.h"
 #include "gltf/local_frame.h"
 
@@ -27,6 +28,10 @@ struct TerrainMesh {
       texcoords;  // into the cell's imagery tile (0, 0 at its top-left), 2 per vertex
   std::vector<uint32_t> indices;          // triangles, counter-clockwise seen from above
   double min_height = 0, max_height = 0;  // above the ellipsoid, skirts included
+  // Where a terrain mesh's vertices lie (degrees), longitudes unwrapped around the cell's centre
+  // (west < -180 or east > 180 across the antimeridian); at_pole when one is at a pole.
+  LonLatBounds lonlat{1e9, 90, -1e9, -90};
+  bool at_pole = false;
 
   size_t vertex_count() const { return positions.size() / 3; }
 };

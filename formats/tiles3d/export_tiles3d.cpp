@@ -18,23 +18,26 @@ namespace {
 
 constexpr double kEarthRadius = 6371008.8;
 
-// The cell's region; heights padded by the quantization step (which moves vertices up to that
-// far, in any direction) and below by the sag of a straight edge under the ellipsoid's curve,
-// sides by the quantization step. Longitudes stay within [-pi, pi] with west <= east: a cell across
-// the antimeridian (a polar cell on the 180th meridian) gets every longitude, since not every
-// viewer reads a region with west > east (3d-tiles-renderer does not); so does a cell touching a
-// pole, whose vertex there quantization moves to any longitude.
-std::array<double, 6> cell_region(const Grid& grid, const CellTerrain& t, double spacing) {
-  const CellId cell = t.cell;
+// The region of a cell's terrain: its vertices' bounds (a tile of a coarse level may hold data
+// in a small part of its cell), padded sideways and in height by the quantization step (which
+// moves vertices up to that far, in any direction), in latitude by the bulge of a straight edge
+// towards the pole, and below by its sag under the ellipsoid's curve. Longitudes stay within
+// [-pi, pi] with west <= east: a mesh across the antimeridian (a polar cell on the 180th meridian)
+// gets every longitude, since not every viewer reads a region with west > east
+// (3d-tiles-renderer does not); so does one reaching a pole, whose vertex there quantization
+// moves to any longitude.
+std::array<double, 6> cell_region(const CellTerrain& t, double spacing) {
   const TerrainMesh& mesh = t.mesh;
-  const LonLatBounds b = lonlat_bounds(grid, {cell});
+  const LonLatBounds& b = mesh.lonlat;
   constexpr double kPi = std::numbers::pi, rad = kPi / 180;
-  const double dlat = t.lattice_step / kEarthRadius;
   const double max_abs_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north))) * rad;
-  const double dlon = dlat / std::cos(max_abs_lat);
+  const double chord = spacing / kEarthRadius;
+  const double dlat = t.lattice_step / kEarthRadius + chord * chord / 8 * std::tan(max_abs_lat);
+  const double dlon = t.lattice_step / kEarthRadius / std::cos(max_abs_lat);
   const double south = std::max(-kPi / 2, b.south * rad - dlat);
   const double north = std::min(kPi / 2, b.north * rad + dlat);
-  const bool all_longitudes = b.east > 180 || south == -kPi / 2 || north == kPi / 2;
+  const bool all_longitudes =
+      mesh.at_pole || b.west < -180 || b.east > 180 || south == -kPi / 2 || north == kPi / 2;
   const double west = all_longitudes ? -kPi : std::max(-kPi, b.west * rad - dlon);
   const double east = all_longitudes ? kPi : std::min(kPi, b.east * rad + dlon);
   const double sag = spacing * spacing / (8 * kEarthRadius);
@@ -78,7 +81,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
   source.check_size(total, source.texture ? total : 0);
   prepare_output_dir(out_dir, spec.terrain.force);
   source.fit_texture_stretch(cells[lo]);
-  const LocalFrame frame = frame_for(grid, cells[lo]);
+  const LocalFrame frame = frame_for(grid, tile_cells);  // the data's centre
 
   // Level by level, finest first so that a parent's region can grow to hold its children's.
   // Meshes stream to their files, one per worker thread in memory; each cell's region is kept.
@@ -87,7 +90,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
     const double spacing = source.vertex_spacing(l);
     std::vector<std::optional<std::array<double, 6>>> regions(cells[l].size());
     for_each_terrain(source, frame, cells[l], [&](size_t i, CellTerrain&& t) {
-      regions[i] = cell_region(grid, t, spacing);
+      regions[i] = cell_region(t, spacing);
       const GlbPrimitive prim{&t.mesh, spec.terrain.draco ? &t.draco : nullptr,
                               t.image ? &*t.image : nullptr, t.cell.ToText()};
       write_file(inside(out_dir, tile_stem(l, t.cell) + ".glb").string(), make_glb({prim}));

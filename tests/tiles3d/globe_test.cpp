@@ -25,7 +25,7 @@ namespace {
 constexpr int kTile = 16, kLevel = 2;
 
 struct Globe {
-  std::string store;
+  std::string raster, store;  // the EPSG:4326 DEM, the store of the whole globe
   Export tiles;
 };
 
@@ -40,6 +40,7 @@ const Globe& globe() {
     write_raster(dir + "/globe.tif", spec,
                  [](int, double lon, double lat) { return sphere_field(lon, lat); });
     Globe out;
+    out.raster = dir + "/globe.tif";
     out.store = dir + "/globe.mqt";
     const auto in = run_maquette("ingest " + out.store + " --layer dem --as dem " + dir +
                                  "/globe.tif --level " + std::to_string(kLevel) + " --tile-size " +
@@ -190,6 +191,35 @@ TEST(Globe, RootRegionHoldsTheGlobe) {
   EXPECT_LT(r[4].get<double>(), -374);
   EXPECT_GT(r[5].get<double>(), 374);
   EXPECT_LT(r[5].get<double>(), 374 + 50);
+}
+
+// A continent on three faces (N, O, P): every tile's region bounds its terrain, not its cell, so
+// the root is the continent's data (`maquette info`'s box) grown by at most about a pixel of the
+// coarsest level (90 / 16 degrees), where the overviews hold the data's edge. It spanned the
+// northern hemisphere: the level-0 and 1 cells of face N hold the pole, not their data.
+TEST(Globe, RegionsOfAContinentHoldItsTerrainOnly) {
+  const std::string dir = temp_dir();
+  const std::string store = dir + "/continent.mqt";
+  const auto r = run_maquette("ingest " + store + " --layer dem --as dem " + globe().raster +
+                              " --level " + std::to_string(kLevel) + " --tile-size " +
+                              std::to_string(kTile) + " --bbox -125 24 -66 50");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto ex = run_maquette("export tiles3d " + store + " " + dir +
+                               "/tiles --dem dem --levels 0.." + std::to_string(kLevel));
+  ASSERT_EQ(ex.exit_code, 0) << ex.err;
+  const Export continent = read_export(dir + "/tiles");  // every vertex inside its tile's region
+  const auto info = run_maquette("info " + store + " --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto box = nlohmann::json::parse(info.out)["layers"][0]["bbox"].get<std::vector<double>>();
+  const auto& root = continent.tileset["root"]["boundingVolume"]["region"];
+  const double rad = std::numbers::pi / 180, margin = 90.0 / kTile * 1.2;
+  for (int k = 0; k < 4; ++k) {
+    const double edge = root[k].get<double>() / rad, data = box[size_t(k)];
+    EXPECT_LE(std::abs(edge - data), margin) << "side " << k << ": " << edge << " vs " << data;
+    // Holds the data.
+    EXPECT_TRUE(k < 2 ? edge <= data : edge >= data)
+        << "side " << k << ": " << edge << " vs " << data;
+  }
 }
 
 TEST(Globe, GltfValidator) {
