@@ -1,5 +1,7 @@
 #include "runtime/pipeline_region.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "core/error.h"
@@ -46,6 +48,14 @@ std::vector<CellId> listed_cells(const json& v, int level, const std::string& wh
                   " is not a valid cell id");
     cells.push_back(*cell);
   }
+  // Listed at `level`, a coarse cell is 4^(level - its level) cells: refused as a cover would be.
+  double count = 0;
+  for (const CellId c : cells) count += std::ldexp(1.0, 2 * std::max(0, level - c.level()));
+  if (count > kMaxCoverCells)
+    throw Error(where + ": the cells hold " + std::to_string(int64_t(std::min(count, 9e18))) +
+                " cells at level " + std::to_string(level) + ", over the limit of " +
+                std::to_string(int64_t(kMaxCoverCells)) +
+                " cells a region lists: use a coarser level or finer cells");
   return uncompact(cells, level);
 }
 

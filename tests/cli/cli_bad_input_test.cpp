@@ -184,6 +184,14 @@ TEST(BadInput, CoverTooFineIsRefusedWithTheEstimateUnderAMemoryCap) {
   expect_error(
       run_maquette_under(cap, "cells cover --geojson " + dir + "/globe.geojson --level 20"),
       "holds about 6.6e+12 cells at level 20");
+  // A pipeline region listing a face, at level 29.
+  const json pipeline = {{"store", dir + "/s.mqt"},
+                         {"region", {{"cells", {"N"}}}},
+                         {"level", 29},
+                         {"steps", {{{"op", "terrain.synthesize"}, {"outputs", {{"dem", "d"}}}}}}};
+  write_file(dir + "/p.json", pipeline.dump());
+  expect_error(run_maquette_under(cap, "run " + dir + "/p.json"),
+               "region.cells: the cells hold 288230376151711744 cells at level 29");
   // Just under the limit it lists them: the whole globe at level 8 (393216 cells).
   const CliResult ok = run_maquette_under(cap, "cells cover --bbox -180 -90 180 90 --level 8");
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
