@@ -15,6 +15,7 @@
 #include "gdal/class_table.h"
 #include "gdal/footprint.h"
 #include "gdal/raster_ingest.h"
+#include "gdal/vertical_datum.h"
 
 namespace maquette {
 namespace {
@@ -41,10 +42,11 @@ std::string crs_name(const std::string& wkt) {
   return out;
 }
 
-std::string vertical_datum(const std::string& wkt) {
-  OGRSpatialReference srs(wkt.c_str());
-  const char* v = srs.IsCompound() ? srs.GetAttrValue("VERT_DATUM") : nullptr;
-  return v ? v : "unspecified by the source";
+// A DEM's vertical datum: --vertical-datum, else the first source's CRS, else the default.
+VerticalDatum dem_vertical_datum(const RasterIngestOptions& o, const RasterSource& first) {
+  if (!o.vertical_datum.empty()) return parse_vertical_datum(o.vertical_datum, "--vertical-datum");
+  if (auto stated = source_vertical_datum(first.crs_wkt, first.path)) return *stated;
+  return default_dem_vertical_datum();
 }
 
 std::string dem_units(const std::string& unit_type) {
@@ -121,6 +123,8 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
     throw Error("--as '" + excerpt(o.as) +
                 "' is not one of dem, imagery, climate, landcover, raster (rasters), features, "
                 "stations (vectors)");
+  if (!o.vertical_datum.empty() && o.as != "dem")
+    throw Error("--vertical-datum is for height layers (--as dem), not --as " + o.as);
   if (sources.empty()) throw Error("no SOURCE given");
   if (o.layer.empty()) throw Error("--layer: a layer name is required");
   log2_tile_size(o.tile_size);
@@ -226,7 +230,7 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
                   {"source_pixel_m", p.source_pixel_m},
                   {"pixel_m", p.target_pixel_m}};
   if (!o.src_crs.empty()) l.provenance["src_crs"] = o.src_crs;
-  if (o.as == "dem") l.provenance["vertical_datum"] = vertical_datum(first.crs_wkt);
+  if (o.as == "dem") l.provenance["vertical_datum"] = dem_vertical_datum(o, first).to_json();
   if (categorical) l.provenance["classes"] = classes.is_null() ? first.classes : classes;
 
   nlohmann::json region;

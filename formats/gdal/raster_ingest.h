@@ -24,6 +24,7 @@ struct RasterIngestOptions {
   std::optional<std::array<double, 4>> bbox;  // W S E N (W > E crosses the antimeridian)
   std::string region;                         // GeoJSON file
   std::string src_crs;                        // for sources without a CRS
+  std::string vertical_datum;                 // dem: egm96 | egm2008 | ellipsoid | a CRS; "": auto
   std::optional<Resampling> resampling;       // default: by semantics and scale
   int tile_size = 256;
   std::string classes;  // --classes: inline JSON or a file

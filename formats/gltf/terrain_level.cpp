@@ -19,7 +19,8 @@ TerrainSource::TerrainSource(const Store& store_, const Grid& grid_, TerrainSett
     : store(store_),
       grid(grid_),
       settings(std::move(s)),
-      dem(require_dem_layer(store, settings.dem)) {
+      dem(require_dem_layer(store, settings.dem)),
+      heights(ellipsoidal_heights(dem)) {
   if (!settings.texture.empty()) texture = require_texture_layer(store, settings.texture);
   const int k = settings.decimation;
   if (k < 1 || k > dem.tile_size || dem.tile_size % k != 0)
@@ -93,12 +94,12 @@ std::optional<CellTerrain> mesh_cell(const TerrainSource& source, const LocalFra
                                      CellId cell, double skirt) {
   const auto dem = dem_with_halo(source.store, source.grid, source.dem, cell);
   if (!dem) return std::nullopt;
-  CellTerrain t{
-      cell,
-      build_terrain_mesh(source.grid, cell, *dem, source.settings.decimation, frame, skirt),
-      {},
-      0,
-      std::nullopt};
+  CellTerrain t{cell,
+                build_terrain_mesh(source.grid, cell, *dem, source.settings.decimation, frame,
+                                   skirt, source.heights),
+                {},
+                0,
+                std::nullopt};
   if (t.mesh.indices.empty()) return std::nullopt;
   if (source.texture)
     if (const auto tex = texture_of(source.store, *source.texture, cell))

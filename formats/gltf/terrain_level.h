@@ -36,6 +36,7 @@ struct TerrainSource {
   TerrainSettings settings;
   LayerInfo dem;
   std::optional<LayerInfo> texture;
+  EllipsoidalHeights heights;  // the DEM's vertical datum to the ellipsoid
 
   // Distance between vertices at `level` (metres, mean).
   double vertex_spacing(int level) const;

@@ -18,11 +18,13 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
 // The pixel corners of a tile (with one corner of margin for normals), computed on demand.
 class CornerField {
  public:
-  CornerField(const Grid& grid, CellId cell, const Tile<float>& dem, const LocalFrame& frame)
+  CornerField(const Grid& grid, CellId cell, const Tile<float>& dem, const LocalFrame& frame,
+              const EllipsoidalHeights& heights)
       : grid_(grid),
         cell_(cell),
         dem_(dem),
         frame_(frame),
+        heights_(heights),
         n_(dem.size()),
         pixel_level_(cell.level() + log2_tile_size(dem.size())),
         face_pixels_(int64_t(1) << pixel_level_),
@@ -101,8 +103,8 @@ class CornerField {
     if (count == 0) return;
     double sum = 0;
     for (int i = 0; i < count; ++i) sum += v[i];
-    k.height = sum / count;
     k.lonlat = grid_.inverse(*plane);
+    k.height = heights_(k.lonlat, sum / count);
     k.pos = frame_.to_gltf(k.lonlat, k.height);
   }
 
@@ -110,6 +112,7 @@ class CornerField {
   CellId cell_;
   const Tile<float>& dem_;
   const LocalFrame& frame_;
+  const EllipsoidalHeights& heights_;
   int n_;
   int pixel_level_;
   int64_t face_pixels_;
@@ -172,9 +175,10 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 }  // namespace
 
 TerrainMesh build_terrain_mesh(const Grid& grid, CellId cell, const Tile<float>& dem,
-                               int decimation, const LocalFrame& frame, double skirt_depth) {
+                               int decimation, const LocalFrame& frame, double skirt_depth,
+                               const EllipsoidalHeights& heights) {
   const int n = dem.size(), k = decimation, m = n / k;
-  CornerField field(grid, cell, dem, frame);
+  CornerField field(grid, cell, dem, frame, heights);
   TerrainMesh mesh;
   // At most: the grid and a lowered copy of its edge loop; two triangles per grid square and
   // per skirt quad.

@@ -7,7 +7,8 @@
 // ellipsoid's normal at face corners, where three faces meet: a vertex shared by two cells gets
 // the same normal in both. Skirts hang from the four edges, `skirt_depth` metres down, so
 // that neighbours of different levels never show cracks. Corners without any valid pixel
-// (nodata) are left out with their triangles.
+// (nodata) are left out with their triangles. Heights are converted to the ellipsoid (`heights`)
+// at the corners.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include "core/grid.h"
 #include "core/lonlat_bounds.h"
 #include "core/tile.h"
+#include "gdal/vertical_datum.h"
 #include "gltf/local_frame.h"
 
 namespace maquette {
@@ -36,8 +38,10 @@ struct TerrainMesh {
   size_t vertex_count() const { return positions.size() / 3; }
 };
 
-// `dem` has a halo of at least 2 pixels; `decimation` divides its size.
+// `dem` has a halo of at least 2 pixels; `decimation` divides its size; `heights` takes the DEM's
+// heights to heights above the ellipsoid.
 TerrainMesh build_terrain_mesh(const Grid& grid, CellId cell, const Tile<float>& dem,
-                               int decimation, const LocalFrame& frame, double skirt_depth);
+                               int decimation, const LocalFrame& frame, double skirt_depth,
+                               const EllipsoidalHeights& heights);
 
 }  // namespace maquette

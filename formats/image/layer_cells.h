@@ -17,6 +17,10 @@ struct RegionSpec {
   std::vector<CellId> cells;                  // used when there is no bbox; none: the whole layer
 };
 
+// The region as compacted cells at `level` or coarser: a box's cells at `level` overlapping it;
+// given cells (a cell finer than `level` as its ancestor at `level`); without either, the faces.
+std::vector<CellId> region_cells(const Grid& grid, int level, const RegionSpec& region);
+
 // The layer's full-resolution tile cells inside the region (cells overlapping the box; cells
 // inside or holding a region cell), sorted; throws maquette::Error when there is none.
 std::vector<CellId> layer_tile_cells(const Store& store, const Grid& grid, const LayerInfo& layer,

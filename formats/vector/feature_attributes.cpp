@@ -2,7 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
+#include <vector>
+
+#include "core/error.h"
 
 #include "core/error.h"
 #include "core/json_file.h"
@@ -103,7 +107,96 @@ json field_value(const OGRFeature& f, int i, const OGRFieldDefn& defn) {
   }
 }
 
+// A JSON array into a list field of `type`; other fields get the array as JSON text.
+void set_list(OGRFeature& f, int i, OGRFieldType type, const json& a) {
+  if (type == OFTIntegerList) {
+    std::vector<int> v;
+    for (const json& x : a) v.push_back(x.is_boolean() ? int(x.get<bool>()) : x.get<int>());
+    f.SetField(i, int(v.size()), v.data());
+  } else if (type == OFTInteger64List) {
+    const auto v = a.get<std::vector<GIntBig>>();
+    f.SetField(i, int(v.size()), v.data());
+  } else if (type == OFTRealList) {
+    std::vector<double> v;
+    for (const json& x : a)
+      v.push_back(x.is_null() ? std::numeric_limits<double>::quiet_NaN() : x.get<double>());
+    f.SetField(i, int(v.size()), v.data());
+  } else if (type == OFTStringList) {
+    CPLStringList v;
+    for (const json& x : a)
+      v.AddString(x.is_string() ? x.get<std::string>().c_str() : x.dump().c_str());
+    f.SetField(i, v.List());
+  } else {
+    f.SetField(i, a.dump().c_str());
+  }
+}
+
+// `v` into field i; OGR converts between numbers and text as the field's type asks (dates and
+// hex binary from their text).
+void set_field(OGRFeature& f, int i, const json& v) {
+  if (v.is_null())
+    f.SetFieldNull(i);
+  else if (v.is_boolean())
+    f.SetField(i, int(v.get<bool>()));
+  else if (v.is_number_integer())
+    f.SetField(i, GIntBig(v.get<int64_t>()));
+  else if (v.is_number())
+    f.SetField(i, v.get<double>());
+  else if (v.is_string())
+    f.SetField(i, v.get_ref<const std::string&>().c_str());
+  else if (v.is_array())
+    set_list(f, i, f.GetFieldDefnRef(i)->GetType(), v);
+  else
+    f.SetField(i, v.dump().c_str());
+}
+
+template <typename T, typename NameOf>
+T by_name(const std::string& name, int max, NameOf name_of, const char* what) {
+  for (int t = 0; t <= max; ++t)
+    if (name == name_of(T(t))) return T(t);
+  throw Error("unknown OGR field " + std::string(what) + " '" + name + "'");
+}
+
 }  // namespace
+
+json field_definitions(const OGRFeatureDefn& defn) {
+  json out = json::array();
+  for (int i = 0; i < defn.GetFieldCount(); ++i) {
+    const OGRFieldDefn& f = *defn.GetFieldDefn(i);
+    out.push_back({{"name", f.GetNameRef()},
+                   {"type", OGRFieldDefn::GetFieldTypeName(f.GetType())},
+                   {"subtype", OGRFieldDefn::GetFieldSubTypeName(f.GetSubType())}});
+  }
+  return out;
+}
+
+std::unique_ptr<OGRFieldDefn> field_definition(const json& d) {
+  auto f = std::make_unique<OGRFieldDefn>(
+      d.at("name").get<std::string>().c_str(),
+      by_name<OGRFieldType>(d.at("type").get<std::string>(), OFTMaxType,
+                            OGRFieldDefn::GetFieldTypeName, "type"));
+  f->SetSubType(by_name<OGRFieldSubType>(d.value("subtype", "None"), OFSTMaxSubType,
+                                         OGRFieldDefn::GetFieldSubTypeName, "subtype"));
+  return f;
+}
+
+std::unique_ptr<OGRFieldDefn> inferred_field(const std::string& name, const json& value) {
+  const OGRFieldType type = value.is_boolean()          ? OFTInteger
+                            : value.is_number_integer() ? OFTInteger64
+                            : value.is_number()         ? OFTReal
+                                                        : OFTString;
+  auto f = std::make_unique<OGRFieldDefn>(name.c_str(), type);
+  if (value.is_boolean()) f->SetSubType(OFSTBoolean);
+  if (value.is_object() || value.is_array()) f->SetSubType(OFSTJSON);
+  return f;
+}
+
+void set_feature_attributes(OGRFeature& feature, const json& attributes) {
+  for (auto it = attributes.begin(); it != attributes.end(); ++it) {
+    const int i = feature.GetFieldIndex(it.key().c_str());
+    if (i >= 0) set_field(feature, i, it.value());
+  }
+}
 
 json feature_attributes(const OGRFeature& feature) {
   json out = json::object();

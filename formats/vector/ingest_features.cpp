@@ -266,7 +266,8 @@ FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>
       layers.push_back({{"source", l.source},
                         {"layer", l.layer->GetName()},
                         {"first_fid", first_fid},
-                        {"features", count}});
+                        {"features", count},
+                        {"fields", field_definitions(*l.layer->GetLayerDefn())}});
     }
     provenance["layers"] = layers;
     create_features_layer(store, options.layer, level, provenance);

@@ -1,5 +1,5 @@
-// maquette export gtiff|png|tiles3d|glb|drc: layers out of a store as GeoTIFF, PNG quicklooks,
-// 3D Tiles, GLB or Draco terrain meshes.
+// maquette export gtiff|png|geojson|gpkg|tiles3d|glb|drc: layers out of a store as GeoTIFF, PNG
+// quicklooks, GeoJSON or GeoPackage features, 3D Tiles, GLB or Draco terrain meshes.
 #include <memory>
 
 #include "cli/commands.h"
@@ -81,6 +81,24 @@ void add_png_command(CLI::App* exp) {
   cmd->callback([o] { run_export(*o); });
 }
 
+void add_features_command(CLI::App* exp, const std::string& name, FeatureFormat format) {
+  auto o = std::make_shared<FeaturesJob>();
+  o->format = format;
+  CLI::App* cmd = exp->add_subcommand(
+      name, "Write a features layer as " +
+                std::string(format == FeatureFormat::GeoJson ? "GeoJSON" : "a GeoPackage") +
+                " (geometry in lon/lat and attributes as ingested)");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("OUT", o->out, "Output file")->required();
+  cmd->add_option("--layer", o->layer, "Features layer to write")->required();
+  auto* bbox =
+      cmd->add_option("--bbox", o->region.bbox, "Only features meeting this lon/lat box: W S E N")
+          ->expected(4);
+  cmd->add_option("--cells", o->region.cells, "Only features indexed in these cells (text ids)")
+      ->excludes(bbox);
+  cmd->callback([o] { run_export(*o); });
+}
+
 void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture) {
   cmd->add_option("--dem", t.dem, "DEM layer (one-channel heights in metres)")->required();
   if (texture) cmd->add_option("--texture", t.texture, "Imagery layer (uint8, 1, 3 or 4 channels)");
@@ -148,6 +166,8 @@ void add_export_command(CLI::App& app) {
   exp->require_subcommand(1);
   add_gtiff_command(exp);
   add_png_command(exp);
+  add_features_command(exp, "geojson", FeatureFormat::GeoJson);
+  add_features_command(exp, "gpkg", FeatureFormat::GeoPackage);
   add_tiles3d_command(exp);
   add_glb_command(exp);
   add_drc_command(exp);

@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "core/grid.h"
 #include "core/lonlat_bounds.h"
+#include "gdal/vertical_datum.h"
 #include "store/store.h"
 
 namespace maquette::cli {
@@ -90,6 +91,7 @@ json layer_json(const Store& store, const LayerInfo& l) {
     describe_features(store, l.name, j);
   else
     j["bbox"] = cells_bbox(store.tile_cells(l.name));
+  if (const auto datum = layer_vertical_datum(l)) j["vertical_datum"] = datum->describe();
   if (l.level >= 0 && l.tile_size > 0)
     j["pixel_m"] = default_grid().level_info(l.level, l.tile_size).pixel_m;
   return j;
@@ -139,6 +141,8 @@ void print_info(const std::string& path, bool as_json) {
     if (!l["incomplete"].is_null())
       std::printf("    INCOMPLETE: %s; readers refuse it until it is finished (--resume)\n",
                   l["incomplete"].get<std::string>().c_str());
+    if (l.contains("vertical_datum"))
+      std::printf("    heights above %s\n", l["vertical_datum"].get<std::string>().c_str());
   }
   if (!report["artifacts"].empty())
     std::printf("\nartifacts %s\n", report["artifacts"].dump().c_str());

@@ -35,6 +35,9 @@ void add_ingest_command(CLI::App& app) {
       ->excludes(bbox);
   cmd->add_option("--src-crs", o->raster.src_crs,
                   "CRS of sources that have none (EPSG:4326, WKT or PROJ string)");
+  cmd->add_option("--vertical-datum", o->raster.vertical_datum,
+                  "dem: what the heights are measured from: egm96 | egm2008 | ellipsoid | a "
+                  "vertical CRS (EPSG:5703); default: from the source's CRS, else egm96");
   cmd->add_option("--resampling", o->resampling,
                   "nearest | bilinear | cubic | mode | average (default: bilinear, or nearest "
                   "for landcover; average/mode when the tiles are coarser than the source)");

@@ -90,6 +90,15 @@ void run_export(const PngJob& o) {
                f.projection == Projection::LonLat ? "degrees" : "m", f.crs_name());
 }
 
+void run_export(const FeaturesJob& job) {
+  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const LayerInfo layer = store->require_layer(job.layer);
+  const std::vector<Feature> features =
+      features_in_region(*store, default_grid(), layer, region_of(job.region));
+  write_features(layer, features, job.format, job.out);
+  spdlog::info("wrote {} ({} features)", job.out, features.size());
+}
+
 void run_export(Tiles3dJob job) {
   const auto store = Store::open(job.store, Store::Mode::ReadOnly);
   job.spec.region = region_of(job.region);

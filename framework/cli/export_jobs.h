@@ -8,6 +8,7 @@
 #include "gltf/terrain_level.h"
 #include "image/layer_cells.h"
 #include "tiles3d/export_tiles3d.h"
+#include "vector/export_features.h"
 
 namespace maquette::cli {
 
@@ -32,6 +33,12 @@ struct PngJob {
   int max_size = 2048;
 };
 
+struct FeaturesJob {  // geojson, gpkg
+  std::string store, layer, out;
+  RegionOptions region;
+  FeatureFormat format = FeatureFormat::GeoJson;
+};
+
 struct Tiles3dJob {
   std::string store, out, levels;  // levels: "A..B" or ""
   RegionOptions region;
@@ -47,6 +54,7 @@ struct MeshJob {  // glb, drc
 // Each writes its files, then logs them. Throws maquette::Error.
 void run_export(GtiffJob job);
 void run_export(const PngJob& job);
+void run_export(const FeaturesJob& job);
 void run_export(Tiles3dJob job);
 void run_glb_export(const MeshJob& job);
 void run_drc_export(const MeshJob& job);

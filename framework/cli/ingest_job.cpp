@@ -60,6 +60,8 @@ void ingest_vectors_into(Store& store, const IngestJob& o) {
 void ingest_vectors(const IngestJob& o) {
   if (o.raster.as == "stations" && o.sources.size() != 1)
     throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
+  if (!o.raster.vertical_datum.empty())
+    throw Error("--vertical-datum is for height layers (--as dem), not --as " + o.raster.as);
   auto store = Store::open(o.store, Store::Mode::Create);
   try {
     ingest_vectors_into(*store, o);

@@ -26,6 +26,8 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"png",
          {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size",
           "projection", "legend"}},
+        {"geojson", {"*layer", "bbox", "cells"}},
+        {"gpkg", {"*layer", "bbox", "cells"}},
         {"tiles3d", {"texture", "stretch", "draco", "bbox", "cells", "content", "levels"}},
         {"glb", {"texture", "stretch", "draco", "*cells"}},
         {"drc", {"*cells"}}};
@@ -48,8 +50,8 @@ OperatorSpec export_spec() {
   OperatorSpec s;
   s.name = "export";
   s.description =
-      "Write layers out of the store, as `maquette export FORMAT`: GeoTIFF, PNG quicklook, 3D "
-      "Tiles, GLB or Draco terrain";
+      "Write layers out of the store, as `maquette export FORMAT`: GeoTIFF, PNG quicklook, "
+      "GeoJSON or GeoPackage features, 3D Tiles, GLB or Draco terrain";
   s.kind = OperatorKind::Task;
   json formats = json::array();
   for (const auto& [format, options] : format_options()) formats.push_back(format);
@@ -60,7 +62,7 @@ OperatorSpec export_spec() {
       {"properties",
        {{"format", {{"type", "string"}, {"enum", formats}}},
         {"out", typed("string", "output file (tiles3d, drc: directory), relative to the pipeline")},
-        {"layer", typed("string", "gtiff, png: the layer")},
+        {"layer", typed("string", "gtiff, png, geojson, gpkg: the layer")},
         {"bbox", array_of("number", "only tiles overlapping this lon/lat box: W S E N")},
         {"cells", array_of("string", "only tiles in these cells (glb, drc: the cells written)")},
         {"level", {{"type", "integer"}, {"minimum", 0}, {"maximum", CellId::kMaxLevel}}},
@@ -185,6 +187,10 @@ class ExportStep : public TaskOperator {
       read_param(p, "max_size", job.max_size);
       read_param(p, "projection", job.projection);
       read_param(p, "legend", job.legend);
+      run_export(job);
+    } else if (format == "geojson" || format == "gpkg") {
+      FeaturesJob job{ctx.store_path, p.at("layer"), out, region_of(p),
+                      format == "gpkg" ? FeatureFormat::GeoPackage : FeatureFormat::GeoJson};
       run_export(job);
     } else if (format == "tiles3d") {
       Tiles3dJob job{ctx.store_path, out, "", region_of(p), {}};

@@ -51,6 +51,9 @@ OperatorSpec ingest_spec() {
           {"description", "only this lon/lat box: W S E N"}}},
         {"region", {{"type", "string"}, {"description", "only this GeoJSON (Multi)Polygon file"}}},
         {"src_crs", {{"type", "string"}, {"description", "CRS of sources that have none"}}},
+        {"vertical_datum",
+         {{"type", "string"},
+          {"description", "dem: egm96 | egm2008 | ellipsoid | a vertical CRS (EPSG:5703)"}}},
         {"resampling",
          {{"type", "string"}, {"enum", {"nearest", "bilinear", "cubic", "mode", "average"}}}},
         {"tile_size", {{"type", "integer"}, {"minimum", 1}, {"maximum", 4096}}},
@@ -103,6 +106,7 @@ class IngestStep : public TaskOperator {
     if (!job.bbox.empty() && !job.raster.region.empty())
       throw Error("params: give at most one of \"bbox\" and \"region\"");
     read_param(p, "src_crs", job.raster.src_crs);
+    read_param(p, "vertical_datum", job.raster.vertical_datum);
     read_param(p, "resampling", job.resampling);
     read_param(p, "tile_size", job.raster.tile_size);
     if (p.contains("classes")) job.raster.classes = p.at("classes").dump();

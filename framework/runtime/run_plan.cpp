@@ -12,6 +12,15 @@
 namespace maquette {
 namespace {
 
+// Heights made from heights keep their vertical datum (formats/gdal/vertical_datum.h): an output
+// takes the datum of the input of the same port name and units (terrain.fill_voids' "dem").
+void inherit_vertical_datum(const std::vector<std::pair<std::string, LayerInfo>>& inputs,
+                            const std::string& port, LayerInfo& output) {
+  for (const auto& [name, in] : inputs)
+    if (name == port && in.units == output.units && in.provenance.contains("vertical_datum"))
+      output.provenance["vertical_datum"] = in.provenance["vertical_datum"];
+}
+
 class Planner {
  public:
   Planner(const Pipeline& pipeline, const Store* store, int threads)
@@ -61,6 +70,7 @@ class Planner {
       info.semantics = out.semantics;
       info.units = out.units;
       info.provenance = {{"operator", step.op_name}, {"params", step.params}};
+      inherit_vertical_datum(sp.inputs, out.name, info);
       sp.outputs.emplace(out.name, info);
       produced_[info.name] = {info, cells};
     }

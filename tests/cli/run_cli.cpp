@@ -102,6 +102,12 @@ std::string install_without_plugins(const std::string& prefix) {
   return (root / "bin" / "maquette").string();
 }
 
+std::string shell_output(const std::string& command) {
+  const std::string out = temp_dir() + "/stdout";
+  [[maybe_unused]] const int status = std::system((command + " >" + out).c_str());  // see output
+  return slurp(out);
+}
+
 int spawn_maquette(const std::string& args, const std::string& env) {
   const std::string prefix = env.empty() ? "" : "env " + env + " ";
   // exec, so that the pid is maquette's own and SIGKILL reaches it, not a shell.

@@ -41,6 +41,9 @@ std::string install_without_plugins(const std::string& prefix);
 // Starts `maquette ARGS` (output discarded) and returns its process id, for tests that kill it.
 int spawn_maquette(const std::string& args, const std::string& env = "");
 
+// The standard output of a shell command (an oracle such as cs2cs or ogrinfo).
+std::string shell_output(const std::string& command);
+
 // A fresh empty directory under the system temp dir, removed at process exit.
 std::string temp_dir();
 

@@ -42,9 +42,10 @@ const Globe& globe() {
     Globe out;
     out.raster = dir + "/globe.tif";
     out.store = dir + "/globe.mqt";
+    // The analytic heights are above the ellipsoid (no geoid conversion at export).
     const auto in = run_maquette("ingest " + out.store + " --layer dem --as dem " + dir +
-                                 "/globe.tif --level " + std::to_string(kLevel) + " --tile-size " +
-                                 std::to_string(kTile));
+                                 "/globe.tif --vertical-datum ellipsoid --level " +
+                                 std::to_string(kLevel) + " --tile-size " + std::to_string(kTile));
     EXPECT_EQ(in.exit_code, 0) << in.err;
     // 20-bit positions: a lattice step of 16 m for a level-0 cell, a quarter of the globe.
     const auto ex =

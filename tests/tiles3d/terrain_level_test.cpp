@@ -23,8 +23,8 @@ namespace {
 // The extent of `cell`'s mesh before quantization.
 double unquantized_extent(const TerrainSource& source, const LocalFrame& frame, CellId cell) {
   const auto dem = dem_with_halo(source.store, source.grid, source.dem, cell);
-  const TerrainMesh mesh = build_terrain_mesh(source.grid, cell, *dem, 1, frame,
-                                              2 * source.vertex_spacing(cell.level()));
+  const TerrainMesh mesh = build_terrain_mesh(
+      source.grid, cell, *dem, 1, frame, 2 * source.vertex_spacing(cell.level()), source.heights);
   return extent(mesh.positions);
 }
 
