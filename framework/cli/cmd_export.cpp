@@ -54,7 +54,11 @@ void add_png_command(CLI::App* exp) {
   cmd->add_option("OUT", o->out,
                   "Output PNG file (its georeferencing in OUT.aux.xml and the world file .pgw)")
       ->required();
-  cmd->add_option("--layer", o->layer, "Layer to draw")->required();
+  cmd->add_option("--layer", o->layer,
+                  "Layer to draw (a features layer: its features on a plain background)")
+      ->required();
+  cmd->add_option("--overlay", o->overlay,
+                  "Features layer drawn over the picture (outlines, lines and points)");
   add_region_options(cmd, o->region);
   cmd->add_option("--ramp", o->ramp,
                   "Colour ramp for one-channel layers: hypsometric (atlas tints by metres, water "

@@ -11,6 +11,7 @@
 #include "plugins/mesh_export.h"
 #include "runtime/plugin.h"
 #include "store/store.h"
+#include "vector/draw_features.h"
 
 namespace maquette::cli {
 namespace {
@@ -79,11 +80,31 @@ void run_export(const PngJob& o) {
   for (int b : o.bands) style.bands.push_back(b - 1);
   if (info.semantics == Semantics::Categorical) style.classes = class_table(info);
   const RegionSpec region = region_of(o.region);
-  MosaicSpec spec{region.bbox, parse_projection(o.projection), o.max_size,
-                  info.semantics != Semantics::Categorical};
+  // A features layer is drawn alone on a plain background; --overlay draws one over a raster.
+  const bool features_alone = info.kind == LayerKind::Features;
+  if (features_alone && !o.overlay.empty())
+    throw Error("--overlay draws features over a raster layer; '" + o.layer +
+                "' is a features layer (drawn alone)");
+  const std::vector<Feature> features =
+      features_alone ? features_in_region(*store, grid, info, region)
+      : o.overlay.empty()
+          ? std::vector<Feature>{}
+          : features_in_region(*store, grid, store->require_layer(o.overlay), region);
+  Overlay overlay;
+  if (!features.empty())
+    overlay = [&](RgbaImage& map, const PictureFrame& frame) {
+      if (features_alone) fill_background(map);
+      draw_features(map, frame, features);
+    };
+  if (features_alone) style.legend = false;  // nothing but the features to explain
+  const Projection projection = parse_projection(o.projection);
   const PictureRaster mosaic =
-      mosaic_layer(*store, grid, o.layer, layer_tile_cells(*store, grid, info, region), spec);
-  write_quicklook_png(mosaic, style, o.out);
+      features_alone
+          ? blank_picture(grid, region, features, projection, o.max_size)
+          : mosaic_layer(
+                *store, grid, o.layer, layer_tile_cells(*store, grid, info, region),
+                {region.bbox, projection, o.max_size, info.semantics != Semantics::Categorical});
+  write_quicklook_png(mosaic, style, o.out, overlay);
   const PictureFrame& f = *mosaic.frame;
   spdlog::info("wrote {} ({} x {} px of {:.6g} x {:.6g} {}, {})", o.out, mosaic.width,
                mosaic.height, f.x_step, f.y_step,

@@ -25,6 +25,7 @@ struct GtiffJob {
 
 struct PngJob {
   std::string store, layer, out, ramp, projection = "auto";
+  std::string overlay;  // features layer drawn over the picture, or ""
   RegionOptions region;
   std::vector<double> range;  // empty or 2
   std::vector<int> bands;     // 1-based

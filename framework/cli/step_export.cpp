@@ -25,7 +25,7 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"gtiff", {"*layer", "bbox", "cells", "level", "crs", "resolution", "max_mib", "force"}},
         {"png",
          {"*layer", "bbox", "cells", "ramp", "range", "bands", "hillshade", "max_size",
-          "projection", "legend"}},
+          "projection", "legend", "overlay"}},
         {"geojson", {"*layer", "bbox", "cells"}},
         {"gpkg", {"*layer", "bbox", "cells"}},
         {"tiles3d", {"texture", "stretch", "draco", "bbox", "cells", "content", "levels"}},
@@ -71,6 +71,7 @@ OperatorSpec export_spec() {
         {"ramp", {{"type", "string"}, {"enum", {"grey", "terrain", "slope", "hypsometric"}}}},
         {"projection", {{"type", "string"}, {"enum", {"auto", "lonlat", "polar"}}}},
         {"legend", typed("boolean", "png: a legend below the picture (default true)")},
+        {"overlay", typed("string", "png: a features layer drawn over the picture")},
         {"range", array_of("number", "png: values drawn as the ramp's ends")},
         {"bands", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
         {"hillshade", typed("boolean", "png: multiply by a hillshade")},
@@ -151,7 +152,7 @@ class ExportStep : public TaskOperator {
     const json& p = *ctx.params;
     check_format_options(p);
     TaskPlan plan;
-    for (const char* key : {"layer", "dem", "texture"})
+    for (const char* key : {"layer", "dem", "texture", "overlay"})
       if (p.contains(key)) plan.reads.emplace_back(std::string("params.") + key, p.at(key));
     if (p.contains("content"))
       for (size_t i = 0; i < p.at("content").size(); ++i)
@@ -187,6 +188,7 @@ class ExportStep : public TaskOperator {
       read_param(p, "max_size", job.max_size);
       read_param(p, "projection", job.projection);
       read_param(p, "legend", job.legend);
+      read_param(p, "overlay", job.overlay);
       run_export(job);
     } else if (format == "geojson" || format == "gpkg") {
       FeaturesJob job{ctx.store_path, p.at("layer"), out, region_of(p),

@@ -1,15 +1,21 @@
 // `maquette export geojson|gpkg` through the real program: features out as ingested, read back
 // with GDAL and compared with the source (geometry, field types and values), and the region
-// filters compared with OGR's own spatial filter (ogrinfo -spat).
+// filters compared with OGR's own spatial filter (ogrinfo -spat); `export png` drawing features
+// over a quicklook and alone, checked where the PNG's georeferencing (read by GDAL) puts them.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 #include "run_cli.h"
@@ -248,6 +254,107 @@ TEST(CliFeaturesExport, PipelineStepAndBadLayer) {
   r = run_maquette("export geojson " + dir + "/p.mqt --layer dem " + dir + "/dem.geojson");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("not a features layer"), std::string::npos) << r.err;
+}
+
+// The pixels of a PNG quicklook, and where they lie: the geotransform GDAL reads from its
+// georeferencing (.aux.xml / .pgw) beside it.
+struct Picture {
+  cv::Mat rgba;
+  std::array<double, 6> gt{};
+  // Whether the overlay's magenta core is within `radius` pixels of the point.
+  bool drawn_near(double lon, double lat, int radius) const {
+    const int c = int((lon - gt[0]) / gt[1]), r = int((lat - gt[3]) / gt[5]);
+    for (int y = std::max(0, r - radius); y <= std::min(rgba.rows - 1, r + radius); ++y)
+      for (int x = std::max(0, c - radius); x <= std::min(rgba.cols - 1, c + radius); ++x) {
+        const cv::Vec4b p = rgba.at<cv::Vec4b>(y, x);  // B G R A
+        if (p[2] > 230 && p[1] < 60 && p[0] > 170) return true;
+      }
+    return false;
+  }
+};
+
+Picture read_picture(const std::string& png) {
+  Picture p;
+  GDALAllRegister();
+  p.rgba = cv::imread(png, cv::IMREAD_UNCHANGED);
+  EXPECT_EQ(p.rgba.type(), CV_8UC4) << png;
+  const Dataset ds(GDALDataset::Open(png.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  EXPECT_TRUE(ds && ds->GetGeoTransform(p.gt.data()) == CE_None) << png << " not georeferenced";
+  return p;
+}
+
+// The park boundary's vertices in lon/lat, as ogr2ogr transforms them.
+std::vector<std::pair<double, double>> zion_vertices(const std::string& dir) {
+  shell_output("ogr2ogr -t_srs EPSG:4326 " + dir + "/ref.gpkg " + kZion);
+  const Dataset ds = open_vector(dir + "/ref.gpkg");
+  OGRFeatureUniquePtr f(ds->GetLayer(0)->GetNextFeature());
+  return points_of(*f->GetGeometryRef());
+}
+
+// --overlay draws the Zion boundary over the DEM quicklook: magenta at every vertex of the
+// boundary (placed by the PNG's own georeferencing), and every changed pixel near the boundary.
+TEST(CliFeaturesExport, OverlayDrawsTheBoundaryWhereItLies) {
+  if (!fs::exists(kZion)) GTEST_SKIP() << "no ../shared/data (" << kZion << ")";
+  const std::string dir = temp_dir(), store = ingest(kZion, "zion");
+  ASSERT_EQ(run_maquette("-q ingest " + store + " --layer dem --as dem " + kShared +
+                         "/data/zion/srtm.tif")
+                .exit_code,
+            0);
+  CliResult r = run_maquette("export png " + store + " --layer dem " + dir + "/plain.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_maquette("export png " + store + " --layer dem --overlay zion " + dir + "/over.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Picture plain = read_picture(dir + "/plain.png"), over = read_picture(dir + "/over.png");
+  ASSERT_EQ(plain.rgba.size(), over.rgba.size());
+  const auto vertices = zion_vertices(dir);
+  ASSERT_GT(vertices.size(), 100u);
+  size_t drawn = 0;
+  for (const auto& [lon, lat] : vertices) drawn += over.drawn_near(lon, lat, 1);
+  EXPECT_EQ(drawn, vertices.size());
+  size_t plain_magenta = 0;
+  for (const auto& [lon, lat] : vertices) plain_magenta += plain.drawn_near(lon, lat, 1);
+  EXPECT_EQ(plain_magenta, 0u) << "the overlay's colour must stand out from the quicklook";
+  // Changed pixels lie within a few pixels of the boundary's segments.
+  size_t changed = 0, far = 0;
+  for (int y = 0; y < over.rgba.rows; ++y)
+    for (int x = 0; x < over.rgba.cols; ++x) {
+      if (over.rgba.at<cv::Vec4b>(y, x) == plain.rgba.at<cv::Vec4b>(y, x)) continue;
+      ++changed;
+      const double lon = over.gt[0] + (x + 0.5) * over.gt[1];
+      const double lat = over.gt[3] + (y + 0.5) * over.gt[5];
+      double nearest = 1e9;  // pixels to the closest segment of the boundary
+      for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+        const double ax = (vertices[i].first - lon) / over.gt[1];
+        const double ay = (vertices[i].second - lat) / over.gt[5];
+        const double dx = (vertices[i + 1].first - vertices[i].first) / over.gt[1];
+        const double dy = (vertices[i + 1].second - vertices[i].second) / over.gt[5];
+        const double len2 = dx * dx + dy * dy;
+        const double t = len2 > 0 ? std::clamp(-(ax * dx + ay * dy) / len2, 0.0, 1.0) : 0.0;
+        nearest = std::min(nearest, std::hypot(ax + t * dx, ay + t * dy));
+      }
+      far += nearest > 5;  // the casing is 2.2 px wide on either side
+    }
+  EXPECT_GT(changed, vertices.size());
+  EXPECT_EQ(far, 0u);
+}
+
+// A features layer alone: its features on a plain background, framed around them.
+TEST(CliFeaturesExport, FeaturesLayerAloneIsDrawnOnAPlainBackground) {
+  if (!fs::exists(kZion)) GTEST_SKIP() << "no ../shared/data (" << kZion << ")";
+  const std::string dir = temp_dir(), store = ingest(kZion, "zion");
+  const CliResult r = run_maquette("export png " + store + " --layer zion " + dir + "/zion.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Picture p = read_picture(dir + "/zion.png");
+  EXPECT_EQ(std::max(p.rgba.cols, p.rgba.rows) <= 2048, true);
+  EXPECT_GT(std::max(p.rgba.cols, p.rgba.rows), 500);
+  for (const auto& [lon, lat] : zion_vertices(dir)) EXPECT_TRUE(p.drawn_near(lon, lat, 1));
+  const cv::Vec4b corner = p.rgba.at<cv::Vec4b>(0, 0);
+  EXPECT_EQ(corner, cv::Vec4b(230, 236, 236, 255));  // opaque light grey (B G R A)
+  const CliResult bad =
+      run_maquette("export png " + store + " --layer zion --overlay zion " + dir + "/x.png");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("--overlay draws features over a raster layer"), std::string::npos)
+      << bad.err;
 }
 
 }  // namespace
