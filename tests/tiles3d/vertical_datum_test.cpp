@@ -79,9 +79,9 @@ void expect_geoid_shift(const std::string& tile, double lon, double lat, double 
   int k = 0;
   for (const char* datum : {"egm96", "ellipsoid"}) {
     const std::string glb = dir + "/" + datum + ".glb";
-    // Plain float positions on a fine lattice (24 bits: under a millimetre over the cell).
+    // Plain float positions on a fine lattice (23 bits: under a millimetre over the cell).
     const auto r = run_maquette("export glb " + dir + "/s.mqt " + glb +
-                                " --no-draco --position-bits 24 --dem " + datum + " --cells " +
+                                " --no-draco --position-bits 23 --dem " + datum + " --cells " +
                                 cell.substr(0, cell.find('\n')));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     v[k++] = glb_vertices(glb);
