@@ -137,8 +137,8 @@ Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const Pyra
   const int pixel_level = cell.level() + log2_tile_size(n);
   const int top_level = std::clamp(pixel_level - kCoarsestPixelLevel, 0, cell.level());
 
-  // Climb until a level holds no void where its fill must be exact (its fill is then its data)
-  // or there is no coarser level.
+  // Climb until a level holds no void where its fill must be exact, nor next to it on a coarser
+  // level (its fill is then its data, which no sweep would change), or there is no coarser level.
   std::vector<Level> levels;
   Rect exact{int64_t(cell.col()) * n, int64_t(cell.row()) * n, int64_t(cell.col() + 1) * n,
              int64_t(cell.row() + 1) * n};
@@ -152,7 +152,7 @@ Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const Pyra
       levels.push_back(
           {exact, extract(tile, int64_t(ancestor.col()) * n, int64_t(ancestor.row()) * n, window)});
     }
-    if (!levels.back().data.has_nan(exact) || k == top_level) break;
+    if (!levels.back().data.has_nan(k == 0 ? exact : exact.grown(1)) || k == top_level) break;
     exact = window.coarse_cover();
   }
 
