@@ -73,7 +73,8 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
   OutputFile result(out, {".aux.xml"});
   if (crs.rhealpix) {
     check_size(spec, layer, extent, 1.0);
-    write_plane_geotiff(store, grid, layer, cells, level, extent, result.temp_path());
+    write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
+                        result.temp_path());
   } else {
     // A scratch file, removed by the OutputFile that is never committed.
     const OutputFile plane((fs::temp_directory_path() / "maquette-export.tif").string(),
@@ -88,7 +89,8 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
       const LonLatBounds b = lonlat_bounds(grid, cells);
       warp.bbox_lonlat = {b.west, b.south, b.east, b.north};
     }
-    write_plane_geotiff(store, grid, layer, cells, level, extent, plane.temp_path());
+    write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
+                        plane.temp_path());
     GdalErrorTrap trap;
     warp_geotiff(plane.temp_path(), result.temp_path(), warp);
     DatasetPtr ds(GDALDataset::Open(result.temp_path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));

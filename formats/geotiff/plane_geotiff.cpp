@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <tuple>
 
 #include "core/error.h"
+#include "core/samples.h"
 #include "gdal/gdal_env.h"
 #include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
@@ -21,6 +23,25 @@ struct Placed {
   CellId cell;
   int64_t col = 0, row = 0;  // top-left pixel in the output
 };
+
+// Sets every sample of `raw` (the tile of a cell with plane square `sq`) whose pixel centre lies
+// outside the box to `nodata`: a box is curved in the plane on the polar faces.
+void mask_outside(RawTile& raw, const Grid& grid, const PlaneSquare& sq,
+                  const std::array<double, 4>& bbox, double nodata) {
+  const int n = raw.size;
+  const double step = sq.side / n;
+  visit_dtype(raw.dtype, [&]<typename T>(std::type_identity<T>) {
+    const T value = cast_sample<T>(nodata);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        const LonLat p = grid.inverse({sq.x_min + (c + 0.5) * step, sq.y_max - (r + 0.5) * step});
+        if (in_bbox(bbox, p)) continue;
+        for (int k = 0; k < raw.channels; ++k)
+          std::memcpy(raw.bytes.data() + ((size_t(r) * n + c) * raw.channels + k) * sizeof(T),
+                      &value, sizeof(T));
+      }
+  });
+}
 
 }  // namespace
 
@@ -66,6 +87,7 @@ PlaneExtent plane_extent(const Grid& grid, const std::vector<CellId>& cells, int
 
 void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& layer,
                          const std::vector<CellId>& cells, int level, const PlaneExtent& extent,
+                         const std::optional<std::array<double, 4>>& bbox,
                          const std::string& path) {
   const int n = layer.tile_size;
   const int64_t width = extent.width, height = extent.height;
@@ -114,6 +136,8 @@ void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& 
     const int64_t c1 = std::min<int64_t>(p.col + n, width),
                   r1 = std::min<int64_t>(p.row + n, height);
     if (c1 <= c0 || r1 <= r0) continue;
+    if (const auto nodata = export_nodata(layer); bbox && nodata)
+      mask_outside(*raw, grid, grid.plane_square(p.cell), *bbox, *nodata);
     const GSpacing pixel_bytes = GSpacing(sample) * layer.channels;
     std::byte* first =
         raw->bytes.data() + (r0 - p.row) * n * pixel_bytes + (c0 - p.col) * pixel_bytes;

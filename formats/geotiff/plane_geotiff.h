@@ -27,9 +27,10 @@ PlaneExtent plane_extent(const Grid& grid, const std::vector<CellId>& cells, int
 
 // Writes the tiles of `cells` (all at `level`: the layer's level, or a coarser one whose
 // overview tiles are read), each cut to `extent`, to a tiled, compressed GeoTIFF at `path` with
-// the layer's metadata. Throws maquette::Error when none of the cells has a tile or GDAL fails.
+// the layer's metadata; with a box, samples outside it are nodata (when the layer has one). Throws
+// maquette::Error when none of the cells has a tile or GDAL fails.
 void write_plane_geotiff(const Store& store, const Grid& grid, const LayerInfo& layer,
                          const std::vector<CellId>& cells, int level, const PlaneExtent& extent,
-                         const std::string& path);
+                         const std::optional<std::array<double, 4>>& bbox, const std::string& path);
 
 }  // namespace maquette

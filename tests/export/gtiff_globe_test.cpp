@@ -102,7 +102,42 @@ TEST(GtiffGlobe, RhealpixBboxIsClippedToTheBox) {
   EXPECT_LT(g.gt[3], y1 + pixel);
   EXPECT_LE(g.gt[3] + g.height * g.gt[5], y0 + 1e-6);
   EXPECT_GT(g.gt[3] + g.height * g.gt[5], y0 - pixel);
-  for (double v : g.values) ASSERT_TRUE(std::isfinite(v));
+  // Data exactly at the pixels whose centres lie in the box (a pixel's width of doubt at edges).
+  const Projector to_lonlat(kRhealpix, "EPSG:4326");
+  int inside = 0, wrong = 0;
+  for (int row = 0; row < g.height; ++row)
+    for (int col = 0; col < g.width; ++col) {
+      const auto [lon, lat] =
+          to_lonlat(g.gt[0] + (col + 0.5) * g.gt[1], g.gt[3] + (row + 0.5) * g.gt[5]);
+      const bool data = std::isfinite(g.values[size_t(row) * g.width + col]);
+      const double margin = 1e-6;
+      if (lon > 10 + margin && lon < 30 - margin && lat > 20 + margin && lat < 40 - margin)
+        ++inside, wrong += !data;
+      else if (lon < 10 - margin || lon > 30 + margin || lat < 20 - margin || lat > 40 + margin)
+        wrong += data;
+    }
+  EXPECT_GE(inside, (g.width - 2) * (g.height - 2));
+  EXPECT_EQ(wrong, 0);
+}
+
+// Around a pole the box is a disc in the plane: its square's corners hold no data.
+TEST(GtiffGlobe, RhealpixPolarBoxKeepsOnlyTheBox) {
+  const Geotiff g = export_gtiff("--bbox -180 60 180 90");
+  ASSERT_TRUE(g.ds);
+  const Projector to_lonlat(kRhealpix, "EPSG:4326");
+  int inside = 0, outside_with_data = 0, inside_without_data = 0;
+  for (int row = 0; row < g.height; ++row)
+    for (int col = 0; col < g.width; ++col) {
+      const auto [lon, lat] =
+          to_lonlat(g.gt[0] + (col + 0.5) * g.gt[1], g.gt[3] + (row + 0.5) * g.gt[5]);
+      const bool data = std::isfinite(g.values[size_t(row) * g.width + col]);
+      // Half a pixel of tolerance at the circle (PROJ and the grid may round differently).
+      if (lat >= 60.01) ++inside, inside_without_data += !data;
+      if (lat < 59.99) outside_with_data += data;
+    }
+  EXPECT_GT(inside, g.width * g.height / 2);
+  EXPECT_EQ(inside_without_data, 0);
+  EXPECT_EQ(outside_with_data, 0);
 }
 
 TEST(GtiffGlobe, MaxMibRefusesWithAnEstimate) {
