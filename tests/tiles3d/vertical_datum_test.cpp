@@ -219,7 +219,8 @@ TEST(VerticalDatum, PipelineIngestAndFilledDemKeepTheDatum) {
          {"params", {{"sources", {dem}}, {"as", "dem"}, {"vertical_datum", "ellipsoid"}}}},
         {{"op", "terrain.fill_voids"},
          {"inputs", {{"dem", "dem"}}},
-         {"outputs", {{"dem", "filled"}}}}}}};
+         {"outputs", {{"dem", "filled"}}},
+         {"params", {{"pyramid", "dem"}}}}}}};
   const auto r = run_maquette("run " + dir + "/p.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(info_layer(dir + "/p.mqt", "dem")["provenance"]["vertical_datum"]["crs"], "ellipsoid");
