@@ -72,6 +72,8 @@ void TerrainSource::fit_texture_stretch(const std::vector<CellId>& cells) {
 }
 
 Tile<uint8_t> TerrainSource::displayed(Tile<uint8_t> tile) const {
+  if (const auto nodata = texture->nodata; nodata && *nodata >= 0 && *nodata <= 255)
+    pad_no_data(tile, uint8_t(*nodata));
   for (int r = 0; r < tile.size(); ++r)
     for (int c = 0; c < tile.size(); ++c)
       for (size_t k = 0; k < stretch_.size(); ++k)

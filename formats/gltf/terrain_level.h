@@ -48,7 +48,7 @@ struct TerrainSource {
   // colour band, alpha left alone) from the texture of `cells`, e.g. an export's coarsest level:
   // the same look as `export png` of the imagery.
   void fit_texture_stretch(const std::vector<CellId>& cells);
-  // A cell's texture as the export shows it.
+  // A cell's texture as the export shows it: no-data texels padded (texture_image.h), stretched.
   Tile<uint8_t> displayed(Tile<uint8_t> texture) const;
 
  private:

@@ -1,12 +1,14 @@
 // How exported terrain looks: single-sided materials whose skirts face outwards (a double-sided
 // material lights a skirt seen from behind with its normal reversed: the dark dotted lines along
 // every tile seam of issue 13), and textures with the display stretch of `export png` (2-98 % of
-// each band), or as stored with --no-stretch.
+// each band), or as stored with --no-stretch; texels beyond the texture's data padded with the
+// data's colours (a skirt along the data's edge drew them black).
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "glb_reader.h"
@@ -27,6 +29,40 @@ Vec unit_cross(const Vec& a, const Vec& b) {
   const Vec c = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   const double n = std::sqrt(dot(c, c));
   return {c[0] / n, c[1] / n, c[2] / n};
+}
+
+// The grey PNG texture `i` of `glb`, decoded by GDAL (empty if it is not one).
+std::vector<uint8_t> grey_texture(const Glb& glb, int i) {
+  GDALAllRegister();
+  const std::vector<char> png = glb.image(i);
+  const std::string mem = "/vsimem/appearance_" + std::to_string(i) + ".png";
+  VSIFCloseL(VSIFileFromMemBuffer(mem.c_str(), (GByte*)png.data(), png.size(), FALSE));
+  GDALDatasetUniquePtr ds(GDALDataset::Open(mem.c_str(), GDAL_OF_RASTER));
+  std::vector<uint8_t> px(size_t(kTileSize) * kTileSize);
+  if (!ds || ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, kTileSize, kTileSize, px.data(),
+                                            kTileSize, kTileSize, GDT_Byte, 0, 0) != CE_None)
+    px.clear();
+  ds.reset();
+  VSIUnlink(mem.c_str());
+  return px;
+}
+
+// A store with `dem` (0 m) and `grey` (uint8, value(sample), nodata 0) on the fixture's block.
+std::string grey_store(const std::function<int(const TileSample&, int)>& value) {
+  const Grid& grid = default_grid();
+  const std::string store = temp_dir() + "/grey.maquette";
+  auto st = Store::open(store, Store::Mode::Create);
+  st->create_layer(layer_info("dem", DType::F32, 1, kTileSize, kLevel));
+  LayerInfo grey = layer_info("grey", DType::U8, 1, kTileSize, kLevel);
+  grey.nodata = 0;
+  st->create_layer(grey);
+  Store::Batch batch(*st);
+  for (CellId c : tiles3d_fixture().block) {
+    batch.put_tile("dem", c, make_tile<float>(grid, c, kTileSize, 1, [](auto&, int) { return 0; }));
+    batch.put_tile("grey", c, make_tile<uint8_t>(grid, c, kTileSize, 1, value));
+  }
+  batch.commit();
+  return store;
 }
 
 TEST(Appearance, SingleSidedSkirtsFaceOutwards) {
@@ -66,22 +102,8 @@ TEST(Appearance, SingleSidedSkirtsFaceOutwards) {
 TEST(Appearance, TexturesHaveTheDisplayStretch) {
   const Grid& grid = default_grid();
   const auto& f = tiles3d_fixture();
-  const std::string store = temp_dir() + "/grey.maquette";
   auto value = [](const TileSample& s, int) { return 40 + (s.col * 7 + s.row * 3) % 40; };
-  {
-    auto st = Store::open(store, Store::Mode::Create);
-    LayerInfo dem = layer_info("dem", DType::F32, 1, kTileSize, kLevel);
-    st->create_layer(dem);
-    st->create_layer(layer_info("grey", DType::U8, 1, kTileSize, kLevel));
-    Store::Batch batch(*st);
-    for (CellId c : f.block) {
-      batch.put_tile("dem", c,
-                     make_tile<float>(grid, c, kTileSize, 1, [](auto&, int) { return 0; }));
-      batch.put_tile("grey", c, make_tile<uint8_t>(grid, c, kTileSize, 1, value));
-    }
-    batch.commit();
-  }
-  GDALAllRegister();  // to read the PNG textures
+  const std::string store = grey_store(value);
   // The oracle: the 2nd and 98th percentiles of every value of the cells, by a full sort.
   std::vector<int> all;
   for (CellId c : f.block)
@@ -100,17 +122,8 @@ TEST(Appearance, TexturesHaveTheDisplayStretch) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const Glb glb = read_glb(out);
     for (size_t i = 0; i < f.block.size(); ++i) {
-      const std::vector<char> png = glb.image(int(i));
-      const std::string mem = "/vsimem/appearance_" + std::to_string(i) + ".png";
-      VSIFCloseL(VSIFileFromMemBuffer(mem.c_str(), (GByte*)png.data(), png.size(), FALSE));
-      GDALDatasetUniquePtr ds(GDALDataset::Open(mem.c_str(), GDAL_OF_RASTER));
-      ASSERT_TRUE(ds) << "texture " << i << " is not a PNG";
-      std::vector<uint8_t> px(size_t(kTileSize) * kTileSize);
-      ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, kTileSize, kTileSize, px.data(),
-                                               kTileSize, kTileSize, GDT_Byte, 0, 0),
-                CE_None);
-      ds.reset();
-      VSIUnlink(mem.c_str());
+      const std::vector<uint8_t> px = grey_texture(glb, int(i));
+      ASSERT_EQ(px.size(), size_t(kTileSize) * kTileSize) << "texture " << i << " is not a PNG";
       const auto samples = tile_samples(grid, f.block[i], kTileSize);
       for (size_t k = 0; k < px.size(); ++k) {
         const double v = value(samples[k], 0);
@@ -118,6 +131,36 @@ TEST(Appearance, TexturesHaveTheDisplayStretch) {
             stretch ? std::round(255 * std::clamp((v - lo) / (hi - lo), 0.0, 1.0)) : v;
         ASSERT_EQ(px[k], want) << "cell " << i << " pixel " << k << " value " << v;
       }
+    }
+  }
+}
+
+// The grey layer's left half of every tile is no data (0): the texture there takes the colours of
+// the data (40..79), not black; the data's texels are unchanged.
+TEST(Appearance, TexturesArePaddedBeyondTheirData) {
+  const auto& f = tiles3d_fixture();
+  auto value = [](const TileSample& s, int) {
+    return s.col % kTileSize < kTileSize / 2 ? 0 : 40 + (s.col * 7 + s.row * 3) % 40;
+  };
+  const std::string store = grey_store(value);
+  std::string cells;
+  for (CellId c : f.block) cells += " " + c.ToText();
+  const std::string out = temp_dir() + "/padded.glb";
+  const auto r = run_maquette("export glb " + store + " " + out +
+                              " --dem dem --texture grey --no-stretch --cells" + cells);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Glb glb = read_glb(out);
+  for (size_t i = 0; i < f.block.size(); ++i) {
+    const std::vector<uint8_t> px = grey_texture(glb, int(i));
+    ASSERT_EQ(px.size(), size_t(kTileSize) * kTileSize) << "texture " << i << " is not a PNG";
+    const auto samples = tile_samples(default_grid(), f.block[i], kTileSize);
+    for (size_t k = 0; k < px.size(); ++k) {
+      const int v = value(samples[k], 0);
+      if (v != 0)
+        ASSERT_EQ(px[k], v) << "cell " << i << " pixel " << k;
+      else
+        ASSERT_TRUE(px[k] >= 40 && px[k] <= 79)
+            << "cell " << i << " pixel " << k << ": " << int(px[k]);
     }
   }
 }
