@@ -5,6 +5,7 @@
 #include <gdal_priv.h>
 
 #include <atomic>
+#include <mutex>
 
 #include "core/error.h"
 #include "core/output_file.h"
@@ -34,6 +35,14 @@ void create_image(std::span<const uint8_t> pixels, int width, int height, int ba
                                 width, height, GDT_Byte, bands, nullptr, bands,
                                 GSpacing(bands) * width, 1, nullptr) != CE_None)
     throw Error(why + ": " + gdal_last_error("GDAL failed"));
+  {
+    // GDAL's JPEG driver builds its creation option list on the first request, unguarded: a
+    // thread validating options against it while another builds it parses half a list (an
+    // error the trap below reports). Built once, under a lock, before any CreateCopy.
+    static std::mutex first_request;
+    const std::lock_guard lock(first_request);
+    out_driver->GetMetadataItem(GDAL_DMD_CREATIONOPTIONLIST);
+  }
   CPLStringList options;
   for (const std::string& o : format.options) options.AddString(o.c_str());
   GdalErrorTrap trap;

@@ -7,8 +7,6 @@
 #include <vector>
 
 #include "core/error.h"
-
-#include "core/error.h"
 #include "core/json_file.h"
 
 namespace maquette {
