@@ -8,9 +8,9 @@
 namespace maquette::cli {
 namespace {
 
-void add_region_options(CLI::App* cmd, RegionOptions& o) {
-  auto* bbox = cmd->add_option("--bbox", o.bbox, "Only tiles overlapping this lon/lat box: W S E N")
-                   ->expected(4);
+// --bbox (`bbox_help` says what the export does with the box) or --cells.
+void add_region_options(CLI::App* cmd, RegionOptions& o, const std::string& bbox_help) {
+  auto* bbox = cmd->add_option("--bbox", o.bbox, bbox_help + ": W S E N")->expected(4);
   cmd->add_option("--cells", o.cells, "Only tiles in these cells (text ids, any levels)")
       ->excludes(bbox);
 }
@@ -31,7 +31,7 @@ void add_gtiff_command(CLI::App* exp) {
   cmd->add_option("OUT", o->out, "Output GeoTIFF (its CRS and class names also in OUT.aux.xml)")
       ->required();
   cmd->add_option("--layer", o->spec.layer, "Layer to write")->required();
-  add_region_options(cmd, o->region);
+  add_region_options(cmd, o->region, "The lon/lat box the GeoTIFF is clipped to");
   cmd->add_option(
       "--level", o->spec.level,
       "Cell level of the tiles written (default: the layer's; coarser reads overviews)");
@@ -59,7 +59,7 @@ void add_png_command(CLI::App* exp) {
       ->required();
   cmd->add_option("--overlay", o->overlay,
                   "Features layer drawn over the picture (outlines, lines and points)");
-  add_region_options(cmd, o->region);
+  add_region_options(cmd, o->region, "The lon/lat box the picture shows");
   cmd->add_option("--ramp", o->ramp,
                   "Colour ramp for one-channel layers: hypsometric (atlas tints by metres, water "
                   "blue), or stretched: terrain, grey, slope (default: hypsometric for heights in "
@@ -128,7 +128,7 @@ void add_tiles3d_command(CLI::App* exp) {
   cmd->add_option("OUTDIR", o->out, "Output directory (tileset.json, tiles/, subtrees/)")
       ->required();
   add_terrain_options(cmd, o->spec.terrain, true);
-  add_region_options(cmd, o->region);
+  add_region_options(cmd, o->region, "Only tiles overlapping this lon/lat box");
   cmd->add_option("--content", o->spec.content,
                   "3D content layers (meshes, instances) added to the tiles of their cells");
   cmd->add_option("--levels", o->levels,
