@@ -121,13 +121,14 @@ class Solar : public CellOperator {
     float zmax = -INFINITY;
     for (const float z : dem.data())
       if (z > zmax) zmax = z;  // NaN compares false
+    const DilatedDem surfaces(dem, distance > 0 ? HorizonAngles::kLevels : 0);
     // Blocks in parallel: each pixel is computed alone, so the bits do not depend on threads.
     const int B = HorizonAngles::kBlock, blocks = size / B;
     tbb::parallel_for(0, blocks * blocks, [&](int block) {
       const int col0 = block % blocks * B, row0 = block / blocks * B;
       std::vector<float> angles;
       if (distance > 0)
-        horizons.compute(dem, zmax, used, block_frame(frames, col0, row0), col0, row0, angles);
+        horizons.compute(surfaces, zmax, used, block_frame(frames, col0, row0), col0, row0, angles);
       const int n = horizons.directions();
       for (int r = 0; r < B; ++r)
         for (int c = 0; c < B; ++c) {
