@@ -1,13 +1,9 @@
 #include "geotiff/export_geotiff.h"
 
 #include <cmath>
-#include <filesystem>
 
 #include "core/error.h"
-#include "core/lonlat_bounds.h"
 #include "core/output_file.h"
-#include "gdal/gdal_env.h"
-#include "geotiff/band_metadata.h"
 #include "geotiff/export_crs.h"
 #include "geotiff/gdal_util.h"
 #include "geotiff/plane_geotiff.h"
@@ -15,8 +11,6 @@
 
 namespace maquette {
 namespace {
-
-namespace fs = std::filesystem;
 
 // The layer's ground pixel (metres, mean over the cell) in target units at the region centre:
 // the distance in the target CRS that a pixel-long step north covers there.
@@ -36,11 +30,8 @@ double default_resolution(const Grid& grid, const LayerInfo& layer, int level, C
   return std::hypot(x[1] - x[0], y[1] - y[0]);
 }
 
-// The output's uncompressed size: the plane raster's pixels, scaled by the pixel area ratio when
-// resampled to another resolution; throws above the limit unless forced.
-void check_size(const GeoTiffExport& spec, const LayerInfo& layer, const PlaneExtent& extent,
-                double pixel_ratio) {
-  const double pixels = double(extent.width) * double(extent.height) * pixel_ratio * pixel_ratio;
+// Throws, with the output's uncompressed size, when it is above the limit unless forced.
+void check_size(const GeoTiffExport& spec, const LayerInfo& layer, double pixels) {
   const double bytes = pixels * layer.channels * double(dtype_size(layer.dtype));
   if (bytes <= double(spec.max_bytes) || spec.force) return;
   throw Error("the GeoTIFF would hold about " + std::to_string(int64_t(bytes / (1 << 20))) +
@@ -68,36 +59,19 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
   const std::vector<CellId> cells =
       cells_at_level(layer_tile_cells(store, grid, layer, spec.region), level);
 
-  const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
-
   OutputFile result(out, {".aux.xml"});
   if (crs.rhealpix) {
-    check_size(spec, layer, extent, 1.0);
+    const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
+    check_size(spec, layer, double(extent.width) * double(extent.height));
     write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
                         result.temp_path());
   } else {
-    // A scratch file, removed by the OutputFile that is never committed.
-    const OutputFile plane((fs::temp_directory_path() / "maquette-export.tif").string(),
-                           {".aux.xml"});
     WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
-    const double natural = default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs);
-    warp.resolution = spec.resolution.value_or(natural);
-    check_size(spec, layer, extent, natural / warp.resolution);
-    // GDAL finds the extent from the source's edges, which miss the poles at the centres of the
-    // polar squares: give it the cells' bounds in a geographic CRS.
-    if (!warp.bbox_lonlat && crs.srs.IsGeographic()) {
-      const LonLatBounds b = lonlat_bounds(grid, cells);
-      warp.bbox_lonlat = {b.west, b.south, b.east, b.north};
-    }
-    write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
-                        plane.temp_path());
-    GdalErrorTrap trap;
-    warp_geotiff(plane.temp_path(), result.temp_path(), warp);
-    DatasetPtr ds(GDALDataset::Open(result.temp_path().c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
-    if (!ds) gdal_error("cannot reopen " + result.temp_path());
-    describe_bands(*ds, layer, level);
-    ds.reset();
-    trap.check("cannot write " + out);
+    warp.resolution = spec.resolution.value_or(
+        default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs));
+    const WarpGrid pixels = warp_grid(grid, cells, warp);
+    check_size(spec, layer, double(pixels.width) * double(pixels.height));
+    write_warped_geotiff(store, grid, layer, cells, level, warp, pixels, result.temp_path());
   }
   result.commit();
 }

@@ -59,11 +59,12 @@ TEST(GtiffGlobe, Epsg4326ReachesBothPoles) {
     }
   EXPECT_EQ(missing, 0);
   std::sort(errors.begin(), errors.end());
-  // Bilinear sampling in the plane reads one side only of the faces' seams where they are not
-  // side by side in the plane, and the 0.5-degree source has no row beyond 89.75 degrees: the
-  // worst pixels are there.
-  EXPECT_LT(errors[errors.size() * 99 / 100], 8.0);
-  EXPECT_LT(errors.back(), 30);
+  // Each pixel is sampled through the grid, across face seams (sampling the rHEALPix plane raster
+  // read one side only of the seams that are not side by side in the plane: 5.0 m at the 99th
+  // percentile, 25 m at worst). What is left is the ingest's and the export's interpolation of the
+  // 0.5-degree source, which has no row beyond 89.75 degrees: 1.2 m and 7.2 m.
+  EXPECT_LT(errors[errors.size() * 99 / 100], 2.0);
+  EXPECT_LT(errors.back(), 10);
 }
 
 TEST(GtiffGlobe, RhealpixPlaneHoldsTheSixFaces) {

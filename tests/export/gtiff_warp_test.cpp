@@ -1,6 +1,6 @@
 // export gtiff --crs EPSG:4326: nearest sampling checked pixel by pixel against the grid's own
 // point-to-cell, bilinear against the smooth field the tiles sample, and both against gdalwarp
-// run on our rHEALPix-plane export.
+// run on our rHEALPix-plane export (ours samples the smooth field more closely: no widened kernel).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,20 +102,27 @@ void compare_with_gdalwarp(const std::string& layer, const std::string& resampli
   const std::vector<double> a = read_band(*ds), b = read_band(*ref);
   ASSERT_EQ(a.size(), b.size());
   const double nodata = ds->GetRasterBand(1)->GetNoDataValue();
-  double sum = 0, max_diff = 0;
+  double sum = 0, max_diff = 0, ours_off = 0, theirs_off = 0;
   int n = 0;
   for (size_t i = 0; i < a.size(); ++i) {
     if (a[i] == nodata || b[i] == nodata) continue;
     const double d = std::abs(a[i] - b[i]);
     sum += d, max_diff = std::max(max_diff, d), ++n;
+    if (layer != "dem") continue;
+    const int col = int(i % size_t(w)), row = int(i / size_t(w));
+    const double truth = dem_field(default_grid().forward(pixel_centre(gt, col, row)));
+    ours_off += std::abs(a[i] - truth), theirs_off += std::abs(b[i] - truth);
   }
   ASSERT_GT(n, int(a.size() / 2));
   EXPECT_LE(sum / n, max_mean);
   EXPECT_LE(max_diff, max_max);
+  // gdalwarp widens its kernel where an output pixel covers more than one source pixel, which
+  // smooths the field; sampling at the pixel centre keeps closer to it.
+  EXPECT_LE(ours_off, theirs_off);
 }
 
 TEST(GtiffWarp, AgreesWithGdalwarpOnOurRhealpixExport) {
-  compare_with_gdalwarp("dem", "bilinear", 0.05, 1.0);
+  compare_with_gdalwarp("dem", "bilinear", 0.2, 1.0);
   // gdalwarp's default approximate transformer may move a pixel centre across a class edge.
   compare_with_gdalwarp("landcover", "near", 0.02, 2.0);
 }

@@ -1,0 +1,53 @@
+// A layer's tiles at one level sampled at points of the globe: the tile of the cell holding a
+// point, padded with a one-pixel halo from its neighbours (across faces too, core/halo.h), is
+// read bilinearly (or nearest), so sampling never stops at a tile edge or a face seam. Shared by
+// the quicklooks and the GeoTIFF exports to other CRSs.
+#pragma once
+
+#include <map>
+#include <optional>
+
+#include "core/grid.h"
+#include "core/tile.h"
+#include "store/store.h"
+
+namespace maquette {
+
+class LayerSampler {
+ public:
+  // Reads `layer`'s tiles at `level` (the layer's level, or a coarser one's overview tiles).
+  LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
+               bool bilinear);
+
+  // Writes the layer's channels at `p` to out[0 .. channels - 1]; `cell` is the cell at the
+  // sampler's level holding `p` (Grid::cells_from_points). Bilinear sampling leaves out missing
+  // samples (weights renormalized); a point whose nearest sample is missing gets NaN. Returns
+  // false, writing nothing, when the cell has no tile.
+  bool sample(LonLat p, CellId cell, float* out);
+
+  // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
+  // a large region.
+  void forget_unused();
+
+ private:
+  struct Halo {
+    std::optional<Tile<float>> tile;  // none when the cell has no tile
+    PlaneSquare square;
+    bool used = true;
+  };
+  struct Raw {
+    std::optional<Tile<float>> tile;
+    bool used = true;
+  };
+  const Halo& halo(CellId cell);
+  const std::optional<Tile<float>>& raw(CellId cell);
+
+  const Store& store_;
+  const Grid& grid_;
+  const LayerInfo& layer_;
+  bool base_, bilinear_;
+  std::map<CellId, Raw> raw_;
+  std::map<CellId, Halo> halo_;
+};
+
+}  // namespace maquette
