@@ -1,7 +1,8 @@
 // texture.assess (reduce): agreement between a classified image and a model's dominant class
 // per pixel (confusion matrix, accuracy, Cohen's kappa, class-area proportions), and the
-// CIEDE2000 difference between the image and the synthesized texture after a 5 x 5 box blur
-// (the noise's detail is not meant to match pixel by pixel). Prints a table to stdout.
+// CIEDE2000 difference between the image and the synthesized texture after a Gaussian blur (the
+// noise's detail is not meant to match pixel by pixel), and per class the mean colour and colour
+// spread of the image's pixels of the class and of the texture's. Prints a table to stdout.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -9,43 +10,76 @@
 #include "assessment.h"
 #include "colour.h"
 #include "core/error.h"
+#include "illumination.h"
 #include "operators.h"
 
 namespace maquette::texture {
 namespace {
 
-constexpr int kBlur = 2;
+constexpr double kSigma = 4;  // pixels: the texture's noise detail is not meant to match
+constexpr int kBlur = 3 * int(kSigma);
 
 OperatorSpec assess_spec() {
   OperatorSpec s;
   s.name = "texture.assess";
   s.description =
       "Confusion matrix, accuracy, Cohen's kappa and class areas between classified image and "
-      "model's dominant class; CIEDE2000 after a 5x5 blur";
+      "model's dominant class; CIEDE2000 after a Gaussian blur (sigma 4 px); each class's mean "
+      "colour and colour spread in the image and in the texture";
   s.kind = OperatorKind::Reduce;
   s.inputs = {{"classes", "observed surface types (texture.classify)", false},
               {"predicted", "dominant class of the model (texture.procedural classes)", false},
               {"rgb", "the observed image", true},
-              {"synthesized", "the synthesized image (texture.procedural imagery)", true}};
+              {"synthesized", "the synthesized image (texture.procedural imagery)", true},
+              {"hillshade",
+               "terrain.derive's hillshade at the image's sun: the image compared with its "
+               "illumination removed (as texture.fit's colours)",
+               true}};
   s.outputs = {{"report", "assessment (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
   s.halo = kBlur;
   s.params_schema = {
       {"type", "object"}, {"additionalProperties", false}, {"properties", json::object()}};
+  s.params_schema["properties"].update(illumination_params_schema());
   return s;
 }
 
-// Box mean of the 5 x 5 window; false when a sample is missing.
-bool blurred(const Tile<float>& t, int c, int r, std::array<double, 3>& out) {
-  out = {0, 0, 0};
-  for (int dr = -kBlur; dr <= kBlur; ++dr)
-    for (int dc = -kBlur; dc <= kBlur; ++dc)
-      for (int k = 0; k < 3; ++k) {
-        const float v = t.at(c + dc, r + dr, k);
-        if (std::isnan(v)) return false;
-        out[size_t(k)] += v;
-      }
-  for (double& v : out) v /= (2 * kBlur + 1) * (2 * kBlur + 1);
-  return true;
+// The n x n pixels of `t` (3 channels, halo >= kBlur) after a Gaussian blur of kSigma,
+// separable, truncated at kBlur; NaN where a sample of the window is missing.
+std::vector<std::array<double, 3>> blurred(const Tile<float>& t, int n) {
+  std::array<double, 2 * kBlur + 1> w{};
+  double sum = 0;
+  for (int d = -kBlur; d <= kBlur; ++d)
+    sum += w[size_t(d + kBlur)] = std::exp(-d * d / (2 * kSigma * kSigma));
+  for (double& v : w) v /= sum;
+  const int side = n + 2 * kBlur;
+  std::vector<std::array<double, 3>> rows(size_t(side) * size_t(n));  // along rows first
+  for (int r = -kBlur; r < n + kBlur; ++r)
+    for (int c = 0; c < n; ++c) {
+      std::array<double, 3> acc{};
+      for (int d = -kBlur; d <= kBlur; ++d)
+        for (int k = 0; k < 3; ++k) acc[size_t(k)] += w[size_t(d + kBlur)] * t.at(c + d, r, k);
+      rows[size_t(r + kBlur) * size_t(n) + size_t(c)] = acc;
+    }
+  std::vector<std::array<double, 3>> out(size_t(n) * size_t(n));
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      std::array<double, 3> acc{};
+      for (int d = -kBlur; d <= kBlur; ++d)
+        for (size_t k = 0; k < 3; ++k)
+          acc[k] += w[size_t(d + kBlur)] * rows[size_t(r + d + kBlur) * size_t(n) + size_t(c)][k];
+      out[size_t(r) * size_t(n) + size_t(c)] = acc;  // NaN propagates
+    }
+  return out;
+}
+
+// Colour moments of a set of pixels: [n, sum R, G, B, sum of squares R, G, B].
+void add_moments(json& m, const std::array<float, 3>& x) {
+  if (m.is_null()) m = std::vector<double>(7, 0.0);
+  m[0] = m[0].get<double>() + 1;
+  for (size_t k = 0; k < 3; ++k) {
+    m[1 + k] = m[1 + k].get<double>() + x[k];
+    m[4 + k] = m[4 + k].get<double>() + double(x[k]) * x[k];
+  }
 }
 
 class Assess : public ReduceOperator {
@@ -56,23 +90,49 @@ class Assess : public ReduceOperator {
     const Tile<float>& obs = data.input("classes");
     const Tile<float>& pred = data.input("predicted");
     const bool colour = data.inputs.count("rgb") && data.inputs.count("synthesized");
+    const int n = ctx.tile_size;
     std::map<std::string, uint64_t> confusion;
     double de = 0;
     uint64_t de_n = 0;
-    for (int r = 0; r < ctx.tile_size; ++r)
-      for (int c = 0; c < ctx.tile_size; ++c) {
-        if (!std::isnan(obs.at(c, r)))
-          ++confusion[std::to_string(int(obs.at(c, r))) + "," +
-                      (std::isnan(pred.at(c, r)) ? "-1" : std::to_string(int(pred.at(c, r))))];
-        std::array<double, 3> a, b;
-        if (colour && blurred(data.inputs.at("rgb"), c, r, a) &&
-            blurred(data.inputs.at("synthesized"), c, r, b)) {
-          de += ciede2000(srgb_to_lab(a[0], a[1], a[2]), srgb_to_lab(b[0], b[1], b[2]));
-          ++de_n;
-        }
+    json moments = json::object();  // class -> {"image": moments, "texture": moments}
+    Tile<float> scene;              // the image, its illumination removed when asked
+    std::vector<std::array<double, 3>> a, b;
+    if (colour) {
+      scene = data.inputs.at("rgb");
+      if (const auto light = illumination_of(*ctx.params, data, "texture.assess"))
+        for (int r = -kBlur; r < n + kBlur; ++r)
+          for (int c = -kBlur; c < n + kBlur; ++c) {
+            const auto x =
+                light->corrected({scene.at(c, r, 0), scene.at(c, r, 1), scene.at(c, r, 2)}, c, r);
+            for (int k = 0; k < 3; ++k) scene.at(c, r, k) = x[size_t(k)];
+          }
+      a = blurred(scene, n), b = blurred(data.inputs.at("synthesized"), n);
+    }
+    const auto pixel = [](const Tile<float>& t, int c, int r) {
+      return std::array<float, 3>{t.at(c, r, 0), t.at(c, r, 1), t.at(c, r, 2)};
+    };
+    const auto known = [](const std::array<float, 3>& x) {
+      return !std::isnan(x[0]) && !std::isnan(x[1]) && !std::isnan(x[2]);
+    };
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        const float o = obs.at(c, r), p = pred.at(c, r);
+        if (!std::isnan(o))
+          ++confusion[std::to_string(int(o)) + "," +
+                      (std::isnan(p) ? "-1" : std::to_string(int(p)))];
+        if (!colour) continue;
+        if (const auto x = pixel(scene, c, r); !std::isnan(o) && known(x))
+          add_moments(moments[std::to_string(int(o))]["image"], x);
+        if (const auto x = pixel(data.inputs.at("synthesized"), c, r); !std::isnan(p) && known(x))
+          add_moments(moments[std::to_string(int(p))]["texture"], x);
+        const auto& u = a[size_t(r) * size_t(n) + size_t(c)];
+        const auto& v = b[size_t(r) * size_t(n) + size_t(c)];
+        if (std::isnan(u[0] + u[1] + u[2] + v[0] + v[1] + v[2])) continue;
+        de += ciede2000(srgb_to_lab(u[0], u[1], u[2]), srgb_to_lab(v[0], v[1], v[2]));
+        ++de_n;
       }
     if (confusion.empty() && de_n == 0) return nullptr;
-    return {{"confusion", confusion}, {"de_sum", de}, {"de_n", de_n}};
+    return {{"confusion", confusion}, {"de_sum", de}, {"de_n", de_n}, {"moments", moments}};
   }
 
   json merge(const json& a, const json& b) const override {
@@ -83,6 +143,12 @@ class Assess : public ReduceOperator {
       out["confusion"][k] = out["confusion"].value(k, uint64_t(0)) + n.get<uint64_t>();
     out["de_sum"] = a["de_sum"].get<double>() + b["de_sum"].get<double>();
     out["de_n"] = a["de_n"].get<uint64_t>() + b["de_n"].get<uint64_t>();
+    for (const auto& [k, sets] : b.at("moments").items())
+      for (const auto& [which, m] : sets.items()) {
+        json& o = out["moments"][k][which];
+        if (o.is_null()) o = std::vector<double>(7, 0.0);
+        for (size_t i = 0; i < 7; ++i) o[i] = o[i].get<double>() + m[i].get<double>();
+      }
     return out;
   }
 

@@ -1,11 +1,50 @@
 #include "assessment.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
 #include <vector>
 
+#include "colour.h"
+
 namespace maquette::texture {
+
+namespace {
+
+// Mean RGB and spread (root mean of the channels' variances) of moments [n, sums, squares].
+std::pair<std::array<double, 3>, double> mean_and_sd(const nlohmann::json& m) {
+  const double n = m[0].get<double>();
+  std::array<double, 3> mean{};
+  double var = 0;
+  for (size_t k = 0; k < 3; ++k) {
+    mean[k] = m[1 + k].get<double>() / n;
+    var += std::max(0.0, m[4 + k].get<double>() / n - mean[k] * mean[k]) / 3;
+  }
+  return {mean, std::sqrt(var)};
+}
+
+// Per class with pixels in both: the mean colours, their CIEDE2000, the spreads and their ratio.
+nlohmann::json class_colours(const nlohmann::json& moments) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [k, sets] : moments.items()) {
+    if (!sets.contains("image") || !sets.contains("texture")) continue;
+    const auto [im, isd] = mean_and_sd(sets["image"]);
+    const auto [tm, tsd] = mean_and_sd(sets["texture"]);
+    out[k] = {{"image_mean", im},
+              {"texture_mean", tm},
+              {"ciede2000",
+               ciede2000(srgb_to_lab(im[0], im[1], im[2]), srgb_to_lab(tm[0], tm[1], tm[2]))},
+              {"image_sd", isd},
+              {"texture_sd", tsd},
+              {"sd_ratio", isd > 0 ? nlohmann::json(tsd / isd) : nlohmann::json()}};
+  }
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json assessment(const nlohmann::json& merged) {
   std::map<std::pair<int, int>, double> count;
@@ -37,10 +76,12 @@ nlohmann::json assessment(const nlohmann::json& merged) {
     matrix.push_back(line);
   }
   double expected = 0;
-  nlohmann::json proportions = nlohmann::json::object();
+  nlohmann::json proportions = nlohmann::json::object(), producers = nlohmann::json::object();
   for (const int k : classes) {
     expected += row[k] * col[k] / (total * total);
     proportions[std::to_string(k)] = {{"observed", row[k] / total}, {"predicted", col[k] / total}};
+    if (row[k] > 0)  // the share of the class's observed pixels predicted as the class
+      producers[std::to_string(k)] = (count.count({k, k}) ? count.at({k, k}) : 0) / row[k];
   }
   const double accuracy = agree / total;
   const double kappa = expected < 1 ? (accuracy - expected) / (1 - expected) : 1.0;
@@ -51,6 +92,8 @@ nlohmann::json assessment(const nlohmann::json& merged) {
           {"accuracy", accuracy},
           {"kappa", kappa},
           {"proportions", proportions},
+          {"producers_accuracy", producers},
+          {"class_colours", class_colours(merged.value("moments", nlohmann::json::object()))},
           {"ciede2000_mean",
            de_n > 0 ? nlohmann::json(merged.at("de_sum").get<double>() / de_n) : nlohmann::json()}};
 }
@@ -59,7 +102,7 @@ std::string assessment_table(const nlohmann::json& r) {
   std::string s = "texture.assess: observed (rows) x predicted (columns)\n  class";
   char buf[64];
   for (const int k : r.at("classes")) std::snprintf(buf, sizeof buf, " %9d", k), s += buf;
-  s += "      none   observed%  predicted%\n";
+  s += "      none   observed%  predicted%  producer's\n";
   const auto& classes = r.at("classes");
   for (size_t i = 0; i < classes.size(); ++i) {
     std::snprintf(buf, sizeof buf, "  %5d", classes[i].get<int>());
@@ -67,8 +110,10 @@ std::string assessment_table(const nlohmann::json& r) {
     for (const auto& n : r.at("confusion")[i])
       std::snprintf(buf, sizeof buf, " %9llu", (unsigned long long)n.get<uint64_t>()), s += buf;
     const auto& p = r.at("proportions")[std::to_string(classes[i].get<int>())];
-    std::snprintf(buf, sizeof buf, "   %8.2f  %10.2f\n", 100 * p["observed"].get<double>(),
-                  100 * p["predicted"].get<double>());
+    const std::string id = std::to_string(classes[i].get<int>());
+    std::snprintf(buf, sizeof buf, "   %8.2f  %10.2f  %10.3f\n", 100 * p["observed"].get<double>(),
+                  100 * p["predicted"].get<double>(),
+                  r["producers_accuracy"].value(id, nlohmann::json(0.0)).get<double>());
     s += buf;
   }
   std::snprintf(buf, sizeof buf, "  accuracy %.4f  kappa %.4f", r["accuracy"].get<double>(),
@@ -77,7 +122,22 @@ std::string assessment_table(const nlohmann::json& r) {
   if (!r["ciede2000_mean"].is_null())
     std::snprintf(buf, sizeof buf, "  CIEDE2000 (blurred) %.2f", r["ciede2000_mean"].get<double>()),
         s += buf;
-  return s + "\n";
+  s += "\n";
+  if (r["class_colours"].empty()) return s;
+  s += "  class  image RGB        texture RGB      CIEDE2000  image sd  texture sd  ratio\n";
+  for (const auto& [k, c] : r["class_colours"].items()) {
+    const auto& a = c["image_mean"];
+    const auto& b = c["texture_mean"];
+    std::snprintf(buf, sizeof buf, "  %5s  %4.0f %4.0f %4.0f   %4.0f %4.0f %4.0f", k.c_str(),
+                  a[0].get<double>(), a[1].get<double>(), a[2].get<double>(), b[0].get<double>(),
+                  b[1].get<double>(), b[2].get<double>());
+    s += buf;
+    std::snprintf(buf, sizeof buf, "   %9.2f  %8.1f  %10.1f  %5.2f\n", c["ciede2000"].get<double>(),
+                  c["image_sd"].get<double>(), c["texture_sd"].get<double>(),
+                  c["sd_ratio"].is_null() ? 0.0 : c["sd_ratio"].get<double>());
+    s += buf;
+  }
+  return s;
 }
 
 }  // namespace maquette::texture

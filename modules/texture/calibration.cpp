@@ -1,6 +1,7 @@
 #include "calibration.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace maquette::texture {
@@ -30,6 +31,22 @@ void calibrate_biases(Model& model, const std::vector<Sample>& samples) {
     layer.bias = std::min(kMaxBias, 0.5f / free[k]);
     for (size_t s = 0; s < samples.size(); ++s)
       if (layer.bias * products[s] >= 0.5f) taken[s] = true;
+  }
+}
+
+void sharpen_coverage(Model& model, double power) {
+  for (Layer& layer : model.layers) {
+    if (layer.parent != 0 ||
+        std::none_of(layer.constraints.begin(), layer.constraints.end(),
+                     [](const std::optional<Table>& t) { return t.has_value(); }))
+      continue;
+    // The power is lowered where the bias would pass kMaxSharpenedBias (float's range).
+    const double b = 2.0 * layer.bias;
+    const double p = b > 1 ? std::min(power, std::log(2 * kMaxSharpenedBias) / std::log(b)) : power;
+    for (std::optional<Table>& t : layer.constraints)
+      if (t)
+        for (float& v : *t) v = float(std::pow(double(v), p));
+    layer.bias = float(0.5 * std::pow(b, p));
   }
 }
 

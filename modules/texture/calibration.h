@@ -25,4 +25,14 @@ inline constexpr float kMaxBias = 1e6;  // odds tables scaled to 1 make small pr
 // Sets the biases of the level-1 layers (children of the root) of `model`.
 void calibrate_biases(Model& model, const std::vector<Sample>& samples);
 
+// Raises each constrained level-1 layer's tables to the power `power` and its bias b to
+// 0.5 (2 b)^power: the pixels where b P >= 0.5 (P the product of the tables) are the same
+// (noise aside), so is the dominant class, but below that the coverage falls off as P^power
+// instead of linearly, so a class's colour bleeds less into the land of the others (odds tables
+// are never 0: every layer partly covered every pixel, pulling each class's colour toward the
+// mean of all).
+// The power is lowered for a layer whose bias would exceed kMaxSharpenedBias.
+inline constexpr double kMaxSharpenedBias = 1e30;
+void sharpen_coverage(Model& model, double power);
+
 }  // namespace maquette::texture

@@ -5,11 +5,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 
 #include "core/error.h"
 #include "feature_mask.h"
 #include "hs_classes.h"
+#include "illumination.h"
 #include "operators.h"
 #include "runtime/params_schema.h"
 
@@ -84,13 +84,6 @@ OperatorSpec classify_spec() {
         {"boxes", {{"type", "array"}, {"items", box}, {"default", json::array()}}},
         {"polygons", {{"type", "array"}, {"items", polygon}, {"default", json::array()}}},
         {"centres", {{"type", "array"}, {"items", centre}, {"default", json::array()}}},
-        {"sun_altitude",
-         number_param(0, 90, 0,
-                      "degrees: the image's sun altitude; > 0 scales each pixel's colour by "
-                      "sin(altitude) / max(cos i, min_incidence_cos), i the incidence angle "
-                      "from inputs.hillshade (cosine correction; 0: none)")},
-        {"min_incidence_cos",
-         number_param(0.01, 1, 0.2, "floor of cos i in the illumination correction")},
         {"snow_class", {{"type", "integer"}, {"minimum", -1}, {"maximum", 254}, {"default", -1}}},
         {"snow_min_altitude_m", {{"type", "number"}, {"default", 0}}},
         {"exclude_landcover",
@@ -102,6 +95,7 @@ OperatorSpec classify_spec() {
            "features layer of the store whose polygons are removed (pixel centres inside); "
            "empty: none"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
+  s.params_schema["properties"].update(illumination_params_schema());
   return s;
 }
 
@@ -141,21 +135,6 @@ std::vector<int> majority(const std::vector<int>& cls, int n, int radius) {
   return out;
 }
 
-// Colour of a pixel lit at incidence cos i (terrain.derive's hillshade h = 1 + 254 cos i) as
-// it would look on flat ground, lit at `flat_cos` (the sine of the sun's altitude; the cosine
-// correction: brightness proportional to cos i), scaled by at most what keeps every channel
-// <= 255, so hue and saturation are unchanged. Unknown illumination (NaN) leaves it as it is.
-std::array<float, 3> illumination_corrected(std::array<float, 3> rgb, float hillshade,
-                                            double flat_cos, double min_cos) {
-  if (std::isnan(hillshade)) return rgb;
-  const double cos_i = std::max((double(hillshade) - 1) / 254, min_cos);
-  const double top = std::max({rgb[0], rgb[1], rgb[2]});
-  double f = flat_cos / cos_i;
-  if (top > 0) f = std::min(f, 255 / top);
-  for (float& v : rgb) v = float(v * f);
-  return rgb;
-}
-
 // The classes of params, their errors prefixed with the operator like its other errors.
 HsClassifier classifier_of(const json& params) {
   try {
@@ -193,13 +172,7 @@ class Classify : public CellOperator {
     if (!excluded.empty() && !lc)
       throw Error("texture.classify: params.exclude_landcover needs inputs.landcover");
     if (snow >= 0 && !dem) throw Error("texture.classify: params.snow_class needs inputs.dem");
-    const double sun_altitude = p.at("sun_altitude").get<double>();
-    const double min_cos = p.at("min_incidence_cos").get<double>();
-    const double flat_cos = std::sin(sun_altitude * std::numbers::pi / 180);
-    const Tile<float>* shade =
-        data.inputs.count("hillshade") ? &data.inputs.at("hillshade") : nullptr;
-    if (sun_altitude > 0 && !shade)
-      throw Error("texture.classify: params.sun_altitude needs inputs.hillshade");
+    const std::optional<Illumination> light = illumination_of(p, data, "texture.classify");
     // Classes of the tile and a ring of `radius` pixels (-1: none), then the majority filter.
     const int radius = p.at("majority_radius").get<int>(), n = ctx.tile_size;
     const int side = n + 2 * radius;
@@ -224,8 +197,7 @@ class Classify : public CellOperator {
             (std::isnan(lc->at(c, r)) ||
              std::find(excluded.begin(), excluded.end(), int(lc->at(c, r))) != excluded.end()))
           continue;
-        if (sun_altitude > 0)
-          colour = illumination_corrected(colour, shade->at(c, r), flat_cos, min_cos);
+        if (light) colour = light->corrected(colour, c, r);
         const int k = classifier.classify(colour[0], colour[1], colour[2]);
         if (k < 0) continue;
         if (k == snow && !(dem->at(c, r) >= snow_min)) continue;  // cloud, or unknown height

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "hs_classes.h"
 #include "hs_plot.h"
+#include "illumination.h"
 #include "operators.h"
 #include "runtime/params_schema.h"
 
@@ -25,7 +26,11 @@ OperatorSpec cluster_spec() {
       "k-means or Gaussian mixture with k given or chosen (centres for texture.classify), and "
       "its density plot";
   s.kind = OperatorKind::Reduce;
-  s.inputs = {{"rgb", "RGB image, 0..255", false}};
+  s.inputs = {{"rgb", "RGB image, 0..255", false},
+              {"hillshade",
+               "terrain.derive's hillshade at the image's sun (illumination correction, as "
+               "texture.classify's)",
+               true}};
   s.outputs = {
       {"clusters", "centres and histogram (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
   s.params_schema = {
@@ -49,6 +54,7 @@ OperatorSpec cluster_spec() {
           {"default", ""},
           {"description", "write the hue-saturation density plot to this PNG file"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
+  s.params_schema["properties"].update(illumination_params_schema());
   return s;
 }
 
@@ -125,12 +131,14 @@ class ClusterOp : public ReduceOperator {
       throw Error("texture.cluster: inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
     std::vector<uint64_t> hist(size_t(histogram_bins(space)), 0);
+    const std::optional<Illumination> light = illumination_of(*ctx.params, data, "texture.cluster");
     bool any = false;
     for (int r = 0; r < ctx.tile_size; ++r)
       for (int c = 0; c < ctx.tile_size; ++c) {
-        const float R = rgb.at(c, r, 0), G = rgb.at(c, r, 1), B = rgb.at(c, r, 2);
-        if (std::isnan(R) || std::isnan(G) || std::isnan(B)) continue;
-        ++hist[size_t(colour_bin(grey.hsv(R, G, B), space))];
+        std::array<float, 3> x = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
+        if (std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2])) continue;
+        if (light) x = light->corrected(x, c, r);
+        ++hist[size_t(colour_bin(grey.hsv(x[0], x[1], x[2]), space))];
         any = true;
       }
     return any ? json(hist) : json();

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "fit_inputs.h"
 #include "hierarchy.h"
+#include "illumination.h"
 #include "operators.h"
 #include "runtime/params_schema.h"
 
@@ -25,7 +26,11 @@ OperatorSpec fit_spec() {
   s.kind = OperatorKind::Reduce;
   s.inputs = {{"classes", "surface types (texture.classify)", false},
               {"rgb", "the image the classes come from (layer colours)", false},
-              {"dem", "elevation in metres", false}};
+              {"dem", "elevation in metres", false},
+              {"hillshade",
+               "terrain.derive's hillshade at the image's sun: colours fitted on the image with "
+               "its illumination removed (as texture.classify's correction)",
+               true}};
   for (const std::string& q : kRasterPorts)
     s.inputs.push_back({q, "raster of the quantity '" + q + "'", true});
   s.outputs = {{"model", "model document (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
@@ -52,8 +57,14 @@ OperatorSpec fit_spec() {
         {"noise_scale", {{"type", "number"}, {"default", 0.1}}},
         {"noise_wavelength_m", {{"type", "number"}, {"minimum", 0.001}, {"default", 200}}},
         {"noise_octaves", {{"type", "integer"}, {"minimum", 1}, {"maximum", 12}, {"default", 3}}},
-        {"large_fraction", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}, {"default", 0.25}}},
-        {"children", {{"type", "integer"}, {"minimum", 0}, {"maximum", 8}, {"default", 2}}},
+        {"variation",
+         {{"type", "boolean"},
+          {"default", true},
+          {"description",
+           "each class drawn between two colours on its principal colour axis, mixed by a "
+           "noise child, with the class's mean and standard deviation along that axis"}}},
+        {"variation_noise_scale",
+         number_param(0.01, 10, 2, "noise scale of the variation child's coverage")},
         {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 1}}},
         {"constraints",
          {{"type", "string"},
@@ -68,12 +79,17 @@ OperatorSpec fit_spec() {
           {"description",
            "choose level-1 biases so that each class dominates as much land as it is observed "
            "on (calibration.h)"}}},
+        {"coverage_power",
+         number_param(1, 16, 1,
+                      "level-1 tables raised to this power, biases adjusted so that the same "
+                      "pixels reach coverage 0.5: sharper class edges (calibration.h)")},
         {"sample_step",
          integer_param(1, 64, 4, "calibration sample: every n-th pixel of every n-th row")},
         {"out",
          {{"type", "string"},
           {"default", ""},
           {"description", "also write the model document to this file (for model_file)"}}}}}};
+  s.params_schema["properties"].update(illumination_params_schema());
   return s;
 }
 
@@ -100,8 +116,9 @@ class Fit : public ReduceOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
 
-  // Partial: {"<class>": {"n": pixels, "sum": [3], "sum_sq": [3], "hist": [[256] per quantity],
-  // "sample": [bins of the calibration sample's pixels, one per quantity, pixel after pixel]}}.
+  // Partial: {"<class>": {"n": pixels, "pixel_m": the level's pixel size, "sum": [3], "sum_sq":
+  // [3], "sum_cross": [RG, RB, GB], "hist": [[256] per quantity], "sample": [bins of the
+  // calibration sample's pixels, one per quantity, pixel after pixel]}}.
   json map(const CellContext& ctx, const CellData& data) const override {
     const std::vector<Quantity> qs = quantities(*ctx.params);
     std::vector<std::string> names;
@@ -112,6 +129,7 @@ class Fit : public ReduceOperator {
     if (rgb.channels() != 3)
       throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
+    const std::optional<Illumination> light = illumination_of(*ctx.params, data, kOp);
     std::map<int, ClassStats> stats;
     std::map<int, std::vector<int>> sample;
     const int step =
@@ -126,9 +144,12 @@ class Fit : public ReduceOperator {
         ClassStats& s = stats[int(k)];
         if (s.hist.empty()) s.hist.resize(qs.size(), {});
         ++s.pixels;
+        std::array<float, 3> x = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
+        if (light) x = light->corrected(x, c, r);
         for (size_t ch = 0; ch < 3; ++ch) {
-          const double v = rgb.at(c, r, int(ch));
+          const double v = x[ch];
           s.sum[ch] += v, s.sum_sq[ch] += v * v;
+          s.sum_cross[ch] += double(x[kCrossPairs[ch][0]]) * double(x[kCrossPairs[ch][1]]);
         }
         const bool sampled = step > 0 && r % step == 0 && c % step == 0;
         for (size_t q = 0; q < qs.size(); ++q) {
@@ -138,13 +159,13 @@ class Fit : public ReduceOperator {
         }
       }
     if (stats.empty()) return nullptr;
+    const double pixel_m = ctx.grid->level_info(ctx.cell.level(), ctx.tile_size).pixel_m;
     json out = json::object();
     for (const auto& [id, s] : stats)
-      out[std::to_string(id)] = {{"n", s.pixels},
-                                 {"sum", s.sum},
-                                 {"sum_sq", s.sum_sq},
-                                 {"hist", s.hist},
-                                 {"sample", sample[id]}};
+      out[std::to_string(id)] = {
+          {"n", s.pixels},       {"pixel_m", pixel_m},       {"sum", s.sum},
+          {"sum_sq", s.sum_sq},  {"sum_cross", s.sum_cross}, {"hist", s.hist},
+          {"sample", sample[id]}};
     return out;
   }
 
@@ -162,6 +183,7 @@ class Fit : public ReduceOperator {
       for (size_t ch = 0; ch < 3; ++ch) {
         o["sum"][ch] = o["sum"][ch].get<double>() + s["sum"][ch].get<double>();
         o["sum_sq"][ch] = o["sum_sq"][ch].get<double>() + s["sum_sq"][ch].get<double>();
+        o["sum_cross"][ch] = o["sum_cross"][ch].get<double>() + s["sum_cross"][ch].get<double>();
       }
       for (const json& b : s.at("sample")) o["sample"].push_back(b);
       for (size_t q = 0; q < s["hist"].size(); ++q)
@@ -183,6 +205,7 @@ class Fit : public ReduceOperator {
         c.pixels = s.at("n").get<uint64_t>();
         c.sum = s.at("sum").get<std::array<double, 3>>();
         c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
+        c.sum_cross = s.at("sum_cross").get<std::array<double, 3>>();
         c.hist = s.at("hist").get<std::vector<std::array<uint64_t, kBins>>>();
         const std::vector<uint8_t> bins = s.at("sample").get<std::vector<uint8_t>>();
         for (size_t i = 0; i + qs.size() <= bins.size(); i += qs.size())
@@ -204,12 +227,14 @@ class Fit : public ReduceOperator {
     h.noise_scale = params.at("noise_scale").get<double>();
     h.noise.wavelength_m = params.at("noise_wavelength_m").get<double>();
     h.noise.octaves = params.at("noise_octaves").get<int>();
-    h.large_fraction = params.at("large_fraction").get<double>();
-    h.children = params.at("children").get<int>();
+    h.variation = params.at("variation").get<bool>();
+    h.variation_noise_scale = params.at("variation_noise_scale").get<double>();
+    h.pixel_m = merged.is_null() ? 0 : merged.begin()->value("pixel_m", 0.0);
     h.seed = params.at("seed").get<uint64_t>();
     h.odds = params.at("constraints").get<std::string>() == "odds";
     Model model = build_model(qs, classes, h);
     if (params.at("calibrate").get<bool>()) calibrate_biases(model, samples);
+    sharpen_coverage(model, params.at("coverage_power").get<double>());
     json doc = model_to_json(model);
     json summary = json::array();
     for (const ClassStats& c : classes) summary.push_back({{"class", c.id}, {"pixels", c.pixels}});

@@ -4,15 +4,10 @@
 #include <cmath>
 #include <numeric>
 
+#include "noise.h"
+
 namespace maquette::texture {
 namespace {
-
-// Deterministic uniform in [-1, 1] from (seed, a, b, c).
-double jitter(uint64_t seed, uint64_t a, uint64_t b, uint64_t c) {
-  uint64_t x = seed ^ (a * 0x9E3779B97F4A7C15ULL) ^ (b * 0xC2B2AE3D27D4EB4FULL) ^ (c + 1);
-  x ^= x >> 30, x *= 0xbf58476d1ce4e5b9ULL, x ^= x >> 27, x *= 0x94d049bb133111ebULL, x ^= x >> 31;
-  return double(x >> 11) / double(1ULL << 52) - 1;
-}
 
 std::array<float, 3> mean_colour(const ClassStats& c) {
   std::array<float, 3> m{};
@@ -21,6 +16,56 @@ std::array<float, 3> mean_colour(const ClassStats& c) {
 }
 
 }  // namespace
+
+ColourSpread colour_spread(const ClassStats& c) {
+  ColourSpread out;
+  const double n = double(c.pixels);
+  for (size_t k = 0; k < 3; ++k) out.mean[k] = c.sum[k] / n;
+  std::array<std::array<double, 3>, 3> cov{};
+  for (size_t k = 0; k < 3; ++k) cov[k][k] = c.sum_sq[k] / n - out.mean[k] * out.mean[k];
+  for (size_t i = 0; i < 3; ++i) {
+    const auto [a, b] = kCrossPairs[i];
+    cov[a][b] = cov[b][a] = c.sum_cross[i] / n - out.mean[a] * out.mean[b];
+  }
+  // Power iteration from the grey axis (usually close: brightness varies most).
+  std::array<double, 3> e = {1, 1, 1};
+  double lambda = 0;
+  for (int it = 0; it < 200; ++it) {
+    std::array<double, 3> f{};
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t b = 0; b < 3; ++b) f[a] += cov[a][b] * e[b];
+    const double norm = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    if (!(norm > 0)) break;
+    for (size_t a = 0; a < 3; ++a) e[a] = f[a] / norm;
+    lambda = norm;
+  }
+  const double norm = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  const double sign = e[0] + e[1] + e[2] < 0 ? -1 : 1;  // + is lighter
+  for (size_t a = 0; a < 3; ++a) out.axis[a] = sign * e[a] / norm;
+  out.sd = std::sqrt(std::max(0.0, lambda));
+  return out;
+}
+
+double coverage_sd(const NoiseParams& noise, double scale, double pixel_m) {
+  // 64 x 64 points 1/7.3 of a wavelength apart (off the lattice) on the plane tangent to the
+  // globe at (0 N, 0 E): 8.8 wavelengths across.
+  const NoiseField field(noise);
+  const double step = noise.wavelength_m / 7.3;
+  double sum = 0, sum_sq = 0;
+  constexpr int kSide = 64;
+  for (int i = 0; i < kSide; ++i)
+    for (int j = 0; j < kSide; ++j) {
+      const Vec3d x = {6371007.2, step * i, step * j};
+      double n = 0;
+      for (int o = 0; o < field.octaves(); ++o)
+        if (field.wavelength_m(o) >= 2 * pixel_m) n += field.amplitude(o) * field.octave(o, x);
+      n = std::clamp(n / field.norm(), -1.0, 1.0);
+      const double cov = std::clamp(0.5 + scale * n, 0.0, 1.0);
+      sum += cov, sum_sq += cov * cov;
+    }
+  const double n = kSide * kSide, mean = sum / n;
+  return std::sqrt(std::max(0.0, sum_sq / n - mean * mean));
+}
 
 Table constraint_function(const std::array<uint64_t, kBins>& hist) {
   const double total = double(std::accumulate(hist.begin(), hist.end(), uint64_t(0)));
@@ -67,13 +112,10 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return classes[a].pixels > classes[b].pixels; });
-  uint64_t total = 0;
   std::vector<std::array<uint64_t, kBins>> all(quantities.size(), std::array<uint64_t, kBins>{});
-  for (const ClassStats& c : classes) {
-    total += c.pixels;
+  for (const ClassStats& c : classes)
     for (size_t q = 0; q < quantities.size(); ++q)
       for (size_t i = 0; i < size_t(kBins); ++i) all[q][i] += c.hist[q][i];
-  }
 
   Model m;
   m.quantities = quantities;
@@ -94,32 +136,43 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
     l.noise_scale = float(p.noise_scale);
     l.noise = p.noise;
     l.noise.seed = p.seed * 1000 + uint64_t(c.id);
-    for (size_t q = 0; q < quantities.size(); ++q)
-      l.constraints.push_back(p.odds ? odds_function(c.hist[q], all[q])
-                                     : constraint_function(c.hist[q]));
+    if (i == order.front()) {
+      // The most widespread type is the base material, like the root: it covers whatever the
+      // later layers leave (it is the root's class there anyway), with its own colours and
+      // variation instead of the root's flat colour where its constraints would be low.
+      l.noise_scale = 0;
+      l.constraints.resize(quantities.size());
+    } else {
+      for (size_t q = 0; q < quantities.size(); ++q)
+        l.constraints.push_back(p.odds ? odds_function(c.hist[q], all[q])
+                                       : constraint_function(c.hist[q]));
+    }
     const int self = int(m.layers.size());
     m.layers.push_back(l);
-    if (double(c.pixels) < p.large_fraction * double(total)) continue;
-    for (int k = 0; k < p.children; ++k) {
-      Layer child;
-      child.name = l.name + "." + std::to_string(k);
-      child.parent = self;
-      child.bias = float(p.child_bias);
-      child.noise_scale = float(p.child_noise_scale);
-      child.noise = p.noise;
-      child.noise.seed = l.noise.seed * 100 + uint64_t(k) + 1;
-      child.noise.wavelength_m =
-          p.noise.wavelength_m * (1 + 0.25 * jitter(p.seed, uint64_t(c.id), uint64_t(k), 3));
-      for (size_t ch = 0; ch < 3; ++ch) {
-        const double mean = c.sum[ch] / double(c.pixels);
-        const double sd = std::sqrt(std::max(0.0, c.sum_sq[ch] / double(c.pixels) - mean * mean));
-        child.colour[ch] = float(std::clamp(
-            mean + p.colour_spread * sd * jitter(p.seed, uint64_t(c.id), uint64_t(k), ch), 0.0,
-            255.0));
-      }
-      child.constraints.resize(quantities.size());
-      m.layers.push_back(child);
+    if (!p.variation) continue;
+    Layer v;
+    v.name = l.name + ".variation";
+    v.parent = self;
+    v.bias = 0.5f;
+    v.noise_scale = float(p.variation_noise_scale);
+    v.noise = p.noise;
+    v.noise.seed = l.noise.seed * 100 + 1;
+    v.constraints.resize(quantities.size());
+    // The colour is mean - a e + 2 a e C: mean m where C averages 0.5 (N is symmetric), and
+    // a standard deviation of 2 a sd(C) along e, the class's sd when a = sd / (2 sd(C)); a is
+    // kept so that both ends are colours (0..255), else clamping would move the mean.
+    const ColourSpread spread = colour_spread(c);
+    const double mixed = coverage_sd(v.noise, p.variation_noise_scale, p.pixel_m);
+    double a = mixed > 0 ? spread.sd / (2 * mixed) : 0;
+    for (size_t k = 0; k < 3; ++k)
+      if (spread.axis[k] != 0)
+        a = std::min(a, std::min(spread.mean[k], 255 - spread.mean[k]) / std::abs(spread.axis[k]));
+    for (size_t k = 0; k < 3; ++k) {
+      m.layers[size_t(self)].colour[k] =
+          float(std::clamp(spread.mean[k] - a * spread.axis[k], 0.0, 255.0));  // rounding
+      v.colour[k] = float(std::clamp(spread.mean[k] + a * spread.axis[k], 0.0, 255.0));
     }
+    m.layers.push_back(v);
   }
   return m;
 }

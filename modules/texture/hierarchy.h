@@ -1,7 +1,8 @@
 // The layer hierarchy of a fitted model (paper 5.2.2 and 5.2.3): a root with the colour of the
 // most widespread class, one level-1 layer per class with its mean colour and one constraint
-// function per quantity (the class's histogram scaled to mean 0.5, clamped to [0, 1], or the
-// class's odds per bin), and diversified children for the large classes.
+// function per quantity (none for the most widespread class: the base material everywhere) (the
+// class's histogram scaled to mean 0.5, clamped to [0, 1], or the class's odds per bin), and a
+// variation child per class that gives it the colour spread of the imagery.
 #pragma once
 
 #include <array>
@@ -12,24 +13,28 @@
 
 namespace maquette::texture {
 
+inline constexpr std::array<std::array<size_t, 2>, 3> kCrossPairs = {{{0, 1}, {0, 2}, {1, 2}}};
+
 struct ClassStats {
   int id = 0;
   uint64_t pixels = 0;
   std::array<double, 3> sum{}, sum_sq{};          // RGB
+  std::array<double, 3> sum_cross{};              // products of the kCrossPairs channels
   std::vector<std::array<uint64_t, kBins>> hist;  // per quantity
 };
 
 struct HierarchyParams {
-  double noise_scale = 0.1;      // level-1 layers
-  NoiseParams noise;             // level-1 layers (seed varied per layer)
-  double large_fraction = 0.25;  // classes with at least this share of pixels get children
-  int children = 2;
-  double child_bias = 0.5, child_noise_scale = 0.6;  // children cover noise-shaped patches
-  double colour_spread = 1;  // child colours: mean +- spread * standard deviation
+  double noise_scale = 0.1;  // level-1 layers
+  NoiseParams noise;         // level-1 layers (seed varied per layer)
+  // Variation: each class is drawn between two colours on its principal colour axis, mean -+ a
+  // (the level-1 layer and its child), mixed by the child's coverage clamp(0.5 + s N): the mean
+  // stays the class's, and a is chosen so the spread along the axis is the class's.
+  bool variation = true;
+  double variation_noise_scale = 2;  // s
+  double pixel_m = 0;                // of the fitted image: the resolution sd(C) is taken at
   uint64_t seed = 1;
   bool odds = false;  // constraint functions: class odds per bin instead of scaled density
 };
-
 // Constraint function of a histogram: scaled so its mean is 0.5, clamped to [0, 1].
 Table constraint_function(const std::array<uint64_t, kBins>& hist);
 
@@ -41,6 +46,20 @@ Table odds_function(const std::array<uint64_t, kBins>& hist,
 
 // `classes` in increasing id, each with pixels > 0. Level-1 layers in decreasing pixel count
 // (ties: lower id first), so rarer types are evaluated later and overwrite where they fit.
+// The mean colour and the principal axis of the class's colours: unit vector e and standard
+// deviation along it (sqrt of the covariance's largest eigenvalue).
+struct ColourSpread {
+  std::array<double, 3> mean{}, axis{};
+  double sd = 0;
+};
+ColourSpread colour_spread(const ClassStats& c);
+
+// Standard deviation of clamp(0.5 + scale N(x)) over positions x, N the noise of `noise` as
+// texture.procedural evaluates it on pixels of `pixel_m` (octaves shorter than 2 pixels left
+// out, their mean 0; pixel_m 0: every octave): how much of a colour difference a variation child
+// with this noise passes on at that resolution.
+double coverage_sd(const NoiseParams& noise, double scale, double pixel_m);
+
 Model build_model(const std::vector<Quantity>& quantities, const std::vector<ClassStats>& classes,
                   const HierarchyParams& p);
 

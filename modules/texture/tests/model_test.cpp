@@ -229,6 +229,37 @@ TEST(Model, CalibratedBiasMatchesTheObservedArea) {
   EXPECT_EQ(m.layers[2].bias, 1);  // no sample of the class: unchanged
 }
 
+// Sharpened coverage by hand: the ramp table to the 4th power, the bias 0.5 (2 b)^4, so the
+// pixels at coverage >= 0.5 are the same while coverage below falls off as the 4th power; the
+// root and unconstrained layers are unchanged.
+TEST(Model, SharpenedCoverageKeepsTheDominantPixels) {
+  Model m;
+  m.quantities = {{"height", 0, 1}};
+  Table ramp{};
+  for (int i = 0; i < kBins; ++i) ramp[size_t(i)] = float(i) / 255;
+  m.layers.resize(3);
+  m.layers[0].constraints.resize(1);
+  m.layers[1].parent = 0, m.layers[1].constraints.resize(1), m.layers[1].bias = 2;
+  m.layers[2].parent = 0, m.layers[2].constraints = {ramp}, m.layers[2].bias = 3;
+  const Model before = m;
+  sharpen_coverage(m, 4);
+  EXPECT_EQ(m.layers[0].bias, 1);
+  EXPECT_EQ(m.layers[1].bias, 2);
+  EXPECT_FLOAT_EQ(m.layers[2].bias, 0.5f * 6 * 6 * 6 * 6);
+  for (size_t i = 0; i < size_t(kBins); ++i) {
+    const float p = float(i) / 255, was = std::min(1.0f, 3 * p);
+    const float now = std::min(1.0f, m.layers[2].bias * (*m.layers[2].constraints[0])[i]);
+    EXPECT_NEAR((*m.layers[2].constraints[0])[i], p * p * p * p, 1e-7f);
+    EXPECT_EQ(now >= 0.5f, was >= 0.5f) << i;  // 0.5 / 3 = 0.1667: bin 43 on
+    if (was < 0.5f) {
+      EXPECT_LE(now, was);
+    }
+  }
+  sharpen_coverage(m = before, 1);
+  EXPECT_EQ(m.layers[2].bias, 3);
+  EXPECT_EQ(*m.layers[2].constraints[0], ramp);
+}
+
 TEST(Noise, CodomainAndDeterminism) {
   const NoiseParams p{9, 4, 100, 0.5};
   float lo = 1, hi = -1;

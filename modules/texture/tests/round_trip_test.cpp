@@ -2,6 +2,8 @@
 // image in hue-saturation space, fit a model to it, render that, and assess the agreement.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <map>
 
 #include "../field.h"
@@ -13,6 +15,7 @@ namespace {
 using namespace texture_test;
 
 constexpr int kSize = 64, kLevel = 10;
+constexpr int kAssessHalo = 12;  // texture.assess: its blur of sigma 4 pixels, to 3 sigma
 
 const json kHatModel = json::parse(R"({
   "format": "maquette.texture.model", "version": 1,
@@ -35,7 +38,7 @@ const json kClassify = json::parse(R"({"boxes": [
   {"id": 1, "hue": [60, 180], "value": [0.45, 1]},
   {"id": 2, "hue": [60, 180], "value": [0, 0.45]}]})");
 
-const json kFit = {{"ranges", {{"height", {0, 3000}}}}, {"classes", {0, 1, 2, 3}}, {"children", 1}};
+const json kFit = {{"ranges", {{"height", {0, 3000}}}}, {"classes", {0, 1, 2, 3}}};
 
 struct Scene {
   std::vector<CellId> cells;
@@ -102,10 +105,10 @@ json assess(Scene& s, const json& model) {
       "texture.assess", s.cells, kSize,
       [&](CellId c) {
         CellData d;
-        d.inputs.emplace("classes", s.halo(s.classes, c, 2));
-        d.inputs.emplace("predicted", s.halo(s.predicted, c, 2));
-        d.inputs.emplace("rgb", s.halo(s.rgb, c, 2));
-        d.inputs.emplace("synthesized", s.halo(s.synthesized, c, 2));
+        d.inputs.emplace("classes", s.halo(s.classes, c, kAssessHalo));
+        d.inputs.emplace("predicted", s.halo(s.predicted, c, kAssessHalo));
+        d.inputs.emplace("rgb", s.halo(s.rgb, c, kAssessHalo));
+        d.inputs.emplace("synthesized", s.halo(s.synthesized, c, kAssessHalo));
         return d;
       },
       json::object());
@@ -118,6 +121,7 @@ TEST(RoundTrip, HatModelIsRecovered) {
   const Model m = parse_model(model, "fitted");
   for (const Layer& l : m.layers) {
     if (l.parent != 0 || !kHeightPlateau.count(l.class_id)) continue;
+    if (!l.constraints[0]) continue;  // the most widespread class: the base material
     const Table& t = *l.constraints[0];
     double sum = 0, centre = 0;
     for (int i = 0; i < kBins; ++i)
@@ -140,11 +144,60 @@ TEST(RoundTrip, HatModelIsRecovered) {
   EXPECT_GE(assess(s, kHatModel)["kappa"].get<double>(), 0.9);
 }
 
+// Each class's colours given a spread along a known axis e (a checkerboard of -+ 20 along e
+// around the rendered colour): the fit finds the axis (the class layer and its variation child
+// differ along e) and the synthesized texture has each class's mean colour and spread.
+TEST(RoundTrip, VariationGivesEachClassItsMeanAndSpread) {
+  Scene s = make_scene(kHatModel);
+  const std::array<double, 3> e = {2 / 3.0, 1 / 3.0, 2 / 3.0};  // unit
+  for (const CellId c : s.cells)
+    for (int r = 0; r < kSize; ++r)
+      for (int col = 0; col < kSize; ++col)
+        for (int k = 0; k < 3; ++k)
+          if (!std::isnan(s.classes[c].at(col, r)))
+            s.rgb[c].at(col, r, k) += float(((col + r) % 2 ? 20 : -20) * e[size_t(k)]);
+  // Noise of 2 km: its 3 octaves are longer than 2 pixels of 153 m (level 10, 64-pixel tiles),
+  // so none is left out as too fine to show.
+  json given = kFit;
+  given["noise_wavelength_m"] = 2000;
+  const json model = fit(s, given);
+  const Model m = parse_model(model, "fitted");
+  int variations = 0;
+  for (const Layer& l : m.layers) {
+    if (l.parent <= 0) continue;
+    const Layer& p = m.layers[size_t(l.parent)];
+    if (p.parent != 0) continue;
+    std::array<double, 3> d{};
+    double norm = 0, along = 0;
+    for (size_t k = 0; k < 3; ++k) d[k] = l.colour[k] - p.colour[k], norm += d[k] * d[k];
+    for (size_t k = 0; k < 3; ++k) along += d[k] * e[k];
+    // The child is lighter, along e (within 18 degrees: the classes' edges blend colours too).
+    EXPECT_GT(along / std::sqrt(norm), 0.95) << l.name;
+    ++variations;
+  }
+  EXPECT_EQ(variations, 4);  // one per class
+  const json report = assess(s, model);
+  for (const auto& [k, c] : report["class_colours"].items()) {
+    EXPECT_LT(c["ciede2000"].get<double>(), 3) << "class " << k << ": " << c;
+    EXPECT_GT(c["sd_ratio"].get<double>(), 0.67) << "class " << k << ": " << c;
+    EXPECT_LT(c["sd_ratio"].get<double>(), 1.5) << "class " << k << ": " << c;
+  }
+  // Without the variation, one colour per class (spread only where classes blend): less spread,
+  // on the whole (the white class, near 255, has little room for its variation).
+  given["variation"] = false;
+  const json plain = assess(s, fit(s, given));
+  double with = 0, without = 0;
+  for (const auto& [k, c] : plain["class_colours"].items()) {
+    without += c["texture_sd"].get<double>() / 4;
+    with += report["class_colours"][k]["texture_sd"].get<double>() / 4;
+  }
+  EXPECT_GT(with, without + 3) << plain["class_colours"];
+}
+
 // The prior-aware fit (class odds, calibrated biases, as the Zion example uses) recovers the
 // hat model too, and each class dominates about as much land as it was observed on.
 const json kPriorAwareFit = {{"ranges", {{"height", {0, 3000}}}},
                              {"classes", {0, 1, 2, 3}},
-                             {"children", 1},
                              {"constraints", "odds"},
                              {"calibrate", true},
                              {"sample_step", 2}};
@@ -271,7 +324,7 @@ TEST(RoundTrip, MissingQuantitiesAndNoOverlap) {
         [&](CellId c) {
           CellData d;
           d.inputs.emplace("classes", Tile<float>(kSize, 1, 2, NAN));
-          d.inputs.emplace("predicted", s.halo(s.classes, c, 2));
+          d.inputs.emplace("predicted", s.halo(s.classes, c, kAssessHalo));
           return d;
         },
         json::object());

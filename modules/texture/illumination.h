@@ -1,0 +1,34 @@
+// The scene's illumination removed from its colours (albedo): the cosine correction shared by
+// texture.cluster, texture.classify, texture.fit and texture.assess, so that classes, fitted
+// colours and the assessment all see the same unshaded scene.
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "runtime/operator.h"
+
+namespace maquette::texture {
+
+struct Illumination {
+  const Tile<float>* hillshade = nullptr;  // terrain.derive's hillshade at the scene's sun
+  double flat_cos = 1;                     // sin(sun altitude): the incidence on flat ground
+  double min_cos = 0.2;                    // floor of cos i
+
+  // Colour of a pixel lit at incidence cos i (hillshade h = 1 + 254 cos i) as it would look on
+  // flat ground (brightness proportional to cos i), scaled by at most what keeps every channel
+  // <= 255, so hue and saturation are unchanged. Unknown illumination (NaN) leaves it as is.
+  std::array<float, 3> corrected(std::array<float, 3> rgb, int c, int r) const;
+};
+
+// The parameters "sun_altitude" (degrees, 0: no correction) and "min_incidence_cos".
+nlohmann::json illumination_params_schema();
+
+// The correction asked for by params, reading inputs.hillshade; nullopt when sun_altitude is 0.
+// Throws naming `op` when the hillshade input is not mapped.
+std::optional<Illumination> illumination_of(const nlohmann::json& params, const CellData& data,
+                                            const std::string& op);
+
+}  // namespace maquette::texture
