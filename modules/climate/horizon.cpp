@@ -44,7 +44,7 @@ void HorizonAngles::compute(const DilatedDem& surfaces, float zmax, const std::v
       const int c_lo = std::max(0, -h - col0 - dc), c_hi = std::min(B, n + h - 1 - col0 - dc);
       // Whether a march may still rise, checked at every 4th sample (the check costs as much).
       const bool check = ++samples % 4 == 0;
-      bool any = !check;
+      int any = !check;  // an int: its reduction vectorizes
       for (int r = 0; r < B; ++r) {
         const int row = row0 + r + dr;
         float* __restrict on = &alive[size_t(r * B)];
@@ -68,7 +68,7 @@ void HorizonAngles::compute(const DilatedDem& surfaces, float zmax, const std::v
         }
         if (check)
           for (int c = 0; c < B; ++c)
-            any |= (on[c] > 0.f) & ((zmax - drop - z_0[c]) * inv_d > b[c]);
+            any |= int(on[c] > 0.f) & int((zmax - drop - z_0[c]) * inv_d > b[c]);
       }
       if (!any) break;
     }
