@@ -21,7 +21,7 @@ TerrainMesh prototype(const std::string& name) {
   if (name == "box") {
     for (int i = 0; i < 8; ++i)
       m.positions.insert(m.positions.end(),
-                         {i & 1 ? 0.5f : -0.5f, i & 2 ? 1.f : 0.f, i & 4 ? 0.5f : -0.5f});
+                         {i & 1 ? 0.5 : -0.5, i & 2 ? 1. : 0., i & 4 ? 0.5 : -0.5});
     m.indices = {0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
                  1, 3, 7, 1, 7, 5, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
     return m;
@@ -30,7 +30,7 @@ TerrainMesh prototype(const std::string& name) {
   m.positions = {0, 1, 0, 0, 0, 0};  // apex, base centre
   for (int i = 0; i < kSides; ++i) {
     const double a = 2 * std::numbers::pi * i / kSides;
-    m.positions.insert(m.positions.end(), {float(0.5 * std::cos(a)), 0, float(-0.5 * std::sin(a))});
+    m.positions.insert(m.positions.end(), {0.5 * std::cos(a), 0, -0.5 * std::sin(a)});
     const uint32_t v = 2 + uint32_t(i), w = 2 + uint32_t((i + 1) % kSides);
     m.indices.insert(m.indices.end(), {0, v, w, 1, w, v});
   }
@@ -108,18 +108,25 @@ ContentGlb content_glb(const ContentTile& content, const LocalFrame& frame,
     const auto& p = content.positions;
     for (size_t i = 0; i + 2 < p.size(); i += 3) {
       const Vec3 v = frame.to_gltf({p[i], p[i + 1]}, p[i + 2]);
-      mesh.positions.insert(mesh.positions.end(), {float(v[0]), float(v[1]), float(v[2])});
+      mesh.positions.insert(mesh.positions.end(), v.begin(), v.end());
       extend(out.region, p[i], p[i + 1], p[i + 2], 0, 0);
     }
     mesh.indices = content.indices;
   } else {
     mesh = prototype(content.prototype);
+    // Instances are placed from the first one, the node's translation (the mesh's offset), so
+    // that their float translations stay precise far from the export frame's origin.
+    if (!content.instances.empty()) {
+      const ContentInstance& first = content.instances.front();
+      mesh.offset = frame.to_gltf({first.lon, first.lat}, first.height);
+    }
     const double radius = content.prototype == "box" ? std::sqrt(0.5) : 0.5;
     for (const ContentInstance& i : content.instances) {
       const Vec3 t = frame.to_gltf({i.lon, i.lat}, i.height);
       const auto q = instance_rotation(frame, i);
       instances.translation.insert(instances.translation.end(),
-                                   {float(t[0]), float(t[1]), float(t[2])});
+                                   {float(t[0] - mesh.offset[0]), float(t[1] - mesh.offset[1]),
+                                    float(t[2] - mesh.offset[2])});
       instances.rotation.insert(instances.rotation.end(), q.begin(), q.end());
       instances.scale.insert(instances.scale.end(),
                              {float(i.scale), float(i.scale), float(i.scale)});
@@ -127,11 +134,10 @@ ContentGlb content_glb(const ContentTile& content, const LocalFrame& frame,
     }
   }
   DracoPrimitive compressed;
-  if (draco && content.kind == ContentTile::Kind::Mesh) {
+  if (content.kind == ContentTile::Kind::Mesh) {  // measured from an offset at the mesh
     const Lattice lattice = Lattice::for_extent(extent(mesh.positions), bits.position);
-    const auto origin = lattice.origin(mesh.positions);
-    lattice.snap(mesh.positions, origin);
-    compressed = encode_draco(mesh, lattice, origin, bits);
+    lattice.rebase(mesh);
+    if (draco) compressed = encode_draco(mesh, lattice, bits);
   }
   GlbPrimitive prim{&mesh,         compressed.data.empty() ? nullptr : &compressed,
                     nullptr,       name,

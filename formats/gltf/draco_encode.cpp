@@ -28,11 +28,12 @@ int add_attribute(draco::Mesh& mesh, draco::GeometryAttribute::Type type, int co
 }  // namespace
 
 DracoPrimitive encode_draco(const TerrainMesh& mesh, const Lattice& lattice,
-                            const std::array<float, 3>& origin, const QuantizationBits& bits) {
+                            const QuantizationBits& bits) {
   draco::Mesh dm;
   dm.set_num_points(uint32_t(mesh.vertex_count()));
   DracoPrimitive out;
-  out.position_id = add_attribute(dm, draco::GeometryAttribute::POSITION, 3, mesh.positions);
+  const std::vector<float> positions(mesh.positions.begin(), mesh.positions.end());  // exact
+  out.position_id = add_attribute(dm, draco::GeometryAttribute::POSITION, 3, positions);
   if (!mesh.normals.empty())
     out.normal_id = add_attribute(dm, draco::GeometryAttribute::NORMAL, 3, mesh.normals);
   if (!mesh.texcoords.empty())
@@ -43,8 +44,9 @@ DracoPrimitive encode_draco(const TerrainMesh& mesh, const Lattice& lattice,
 
   draco::Encoder encoder;
   encoder.SetSpeedOptions(kSpeed, kSpeed);
+  const float origin[3] = {0, 0, 0};  // the mesh's offset
   encoder.SetAttributeExplicitQuantization(draco::GeometryAttribute::POSITION, lattice.bits, 3,
-                                           origin.data(), lattice.range());
+                                           origin, lattice.range());
   encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, bits.normal);
   encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, bits.texcoord);
   draco::EncoderBuffer buffer;

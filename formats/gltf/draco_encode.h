@@ -21,8 +21,8 @@ struct DracoPrimitive {
   int position_id = -1, normal_id = -1, texcoord_id = -1;
 };
 
-// Encodes `mesh` (whose positions must already be snapped onto `lattice` at `origin`).
+// Encodes `mesh` (already rebased onto `lattice`: Lattice::rebase).
 DracoPrimitive encode_draco(const TerrainMesh& mesh, const Lattice& lattice,
-                            const std::array<float, 3>& origin, const QuantizationBits& bits);
+                            const QuantizationBits& bits);
 
 }  // namespace maquette

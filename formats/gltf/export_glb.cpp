@@ -1,7 +1,7 @@
 #include "gltf/export_glb.h"
 
-#include <atomic>
 #include <map>
+#include <mutex>
 
 #include "core/error.h"
 #include "core/output_file.h"
@@ -53,14 +53,18 @@ void export_drc(const Store& store, const Grid& grid, const TerrainSettings& set
   source.check_size(int64_t(cells.size()), 0);
   prepare_output_dir(out_dir, settings.force);
   const LocalFrame frame = frame_for(grid, cells);
-  std::atomic<bool> any = false;
+  std::mutex offsets_lock;
+  nlohmann::json offsets = nlohmann::json::object();  // where each cell's positions start from
   for (const auto& [level, group] : by_level(cells))
     for_each_terrain(source, frame, group, [&](size_t, CellTerrain&& t) {
       write_file(inside(out_dir, t.cell.ToText() + ".drc").string(), t.draco.data);
-      any = true;
+      const std::lock_guard lock(offsets_lock);
+      offsets[t.cell.ToText()] = t.mesh.offset;
     });
-  if (!any) throw no_tiles(source);
-  write_file_whole(inside(out_dir, "frame.json").string(), frame_json(frame).dump(2) + "\n");
+  if (offsets.empty()) throw no_tiles(source);
+  nlohmann::json frame_file = frame_json(frame);
+  frame_file["offsets"] = offsets;
+  write_file_whole(inside(out_dir, "frame.json").string(), frame_file.dump(2) + "\n");
 }
 
 }  // namespace maquette

@@ -1,7 +1,9 @@
 // `maquette export glb` (the terrain of a few cells in one GLB) and `maquette export drc`
 // (one raw Draco mesh per cell, OUTDIR/<CELL>.drc, and OUTDIR/frame.json giving the frame).
 // Cells are exported at their own levels (coarser than the DEM: its overviews); all meshes share
-// one east-north-up frame (glTF axes: x east, y up, z south), named in the asset's extras.
+// one east-north-up frame (glTF axes: x east, y up, z south), named in the asset's extras, each
+// measured from an offset in it at the mesh (its node's translation; for drc, frame.json's
+// "offsets": {"CELL": [x, y, z]}).
 #pragma once
 
 #include <string>

@@ -87,11 +87,12 @@ int GlbBuilder::material(const GlbPrimitive& p) {
 void GlbBuilder::add(const GlbPrimitive& p) {
   const TerrainMesh& m = *p.mesh;
   const size_t n = m.vertex_count();
+  const std::vector<float> positions(m.positions.begin(), m.positions.end());
   json pos = {{"componentType", kFloat},
               {"count", n},
               {"type", "VEC3"},
-              {"min", bounds(m.positions, false)},
-              {"max", bounds(m.positions, true)}};
+              {"min", bounds(positions, false)},
+              {"max", bounds(positions, true)}};
   json idx = {{"componentType", kUint32}, {"count", m.indices.size()}, {"type", "SCALAR"}};
   // The attributes present: name, values, draco id, accessor.
   struct Attribute {
@@ -100,8 +101,7 @@ void GlbBuilder::add(const GlbPrimitive& p) {
     int draco_id;
     json accessor;
   };
-  std::vector<Attribute> atts = {
-      {"POSITION", m.positions, p.draco ? p.draco->position_id : -1, pos}};
+  std::vector<Attribute> atts = {{"POSITION", positions, p.draco ? p.draco->position_id : -1, pos}};
   if (!m.normals.empty())
     atts.push_back({"NORMAL",
                     m.normals,
@@ -129,6 +129,7 @@ void GlbBuilder::add(const GlbPrimitive& p) {
   prim["material"] = material(p);
   meshes_.push_back({{"name", p.name}, {"primitives", json::array({prim})}});
   json node = {{"name", p.name}, {"mesh", meshes_.size() - 1}};
+  if (m.offset != Vec3{}) node["translation"] = m.offset;  // in double: precise far away
   if (p.instances) {
     use("EXT_mesh_gpu_instancing");
     node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {

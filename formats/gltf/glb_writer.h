@@ -2,7 +2,7 @@
 // (KHR_draco_mesh_compression: attribute accessors without bufferViews, as the extension
 // specifies) or plain, each textured with its embedded image (or of one colour), optionally
 // drawn once per instance (EXT_mesh_gpu_instancing). Normals and texture coordinates are
-// optional (left out when empty).
+// optional (left out when empty). A mesh's offset is its node's translation.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -109,21 +109,20 @@ std::optional<CellTerrain> mesh_cell(const TerrainSource& source, const LocalFra
   return t;
 }
 
-// Snaps the mesh onto `lattice` and encodes it.
+// Snaps the mesh onto `lattice`, measured from its offset, and encodes it.
 void quantize(CellTerrain& t, const Lattice& lattice, const TerrainSettings& settings) {
-  const auto origin = lattice.origin(t.mesh.positions);
-  lattice.snap(t.mesh.positions, origin);
+  lattice.rebase(t.mesh);
   t.lattice_step = lattice.step;
-  if (settings.draco) t.draco = encode_draco(t.mesh, lattice, origin, settings.bits);
+  if (settings.draco) t.draco = encode_draco(t.mesh, lattice, settings.bits);
 }
 
 // A cheap guess of the extent of `cell`'s mesh: that of its boundary at height 0 (meshes differ
 // mostly by their cell's shape and its tilt in the frame).
 double guessed_extent(const Grid& grid, const LocalFrame& frame, CellId cell) {
-  std::vector<float> ring;
+  std::vector<double> ring;
   for (const LonLat& p : grid.boundary(cell, 2)) {
     const Vec3 v = frame.to_gltf(p, 0);
-    ring.insert(ring.end(), {float(v[0]), float(v[1]), float(v[2])});
+    ring.insert(ring.end(), v.begin(), v.end());
   }
   return extent(ring);
 }

@@ -153,7 +153,7 @@ class MeshBuilder {
   }
   uint32_t add(const Vec3& p, const Vec3& n, float u, float v, double height) {
     for (int i = 0; i < 3; ++i) {
-      m_.positions.push_back(float(p[size_t(i)]));
+      m_.positions.push_back(p[size_t(i)]);
       m_.normals.push_back(float(n[size_t(i)]));
     }
     m_.texcoords.push_back(u);

@@ -24,8 +24,13 @@ namespace maquette {
 
 // Also the geometry of content meshes, which may leave normals and texcoords empty.
 struct TerrainMesh {
-  std::vector<float> positions;  // glTF frame, 3 per vertex
-  std::vector<float> normals;    // unit, 3 per vertex
+  // glTF axes (x east, y up, z south), metres from `offset`, 3 per vertex. Far from the export
+  // frame's origin floats keep only ~1 m (at 10^7 m), so each mesh is written relative to an
+  // offset at the mesh, its glTF node's translation (a double in the JSON); until quantized
+  // (Lattice::rebase) the offset is 0 and positions are in the export's frame.
+  std::vector<double> positions;
+  Vec3 offset{};               // in the export's frame
+  std::vector<float> normals;  // unit, 3 per vertex
   std::vector<float>
       texcoords;  // into the cell's imagery tile (0, 0 at its top-left), 2 per vertex
   std::vector<uint32_t> indices;          // triangles, counter-clockwise seen from above

@@ -21,9 +21,7 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-Vec sub(const std::array<float, 3>& a, const std::array<float, 3>& b) {
-  return {double(a[0]) - b[0], double(a[1]) - b[1], double(a[2]) - b[2]};
-}
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec unit_cross(const Vec& a, const Vec& b) {
   const Vec c = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -89,7 +87,7 @@ TEST(Appearance, SingleSidedSkirtsFaceOutwards) {
       continue;
     }
     ++skirt;
-    const Vec out_of_cell = sub(a, {float(centre[0]), float(centre[1]), float(centre[2])});
+    const Vec out_of_cell = sub(a, centre);
     EXPECT_LT(std::abs(n[1]), 0.1) << "a skirt is vertical";
     EXPECT_GT(n[0] * out_of_cell[0] + n[2] * out_of_cell[2], 0) << "a skirt faces outwards";
   }

@@ -19,7 +19,7 @@ uint32_t u32(const std::vector<char>& b, size_t at) {
 }
 
 DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
-                        const nlohmann::json& prim) {
+                        const nlohmann::json& prim, const std::array<double, 3>& translation) {
   DecodedPrimitive out;
   const auto& ext = prim["extensions"]["KHR_draco_mesh_compression"];
   const auto& view = j["bufferViews"][ext["bufferView"].get<int>()];
@@ -56,7 +56,7 @@ DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
       lo[k] = std::min(lo[k], p[k]);
       hi[k] = std::max(hi[k], p[k]);
     }
-    out.positions.push_back(p);
+    out.positions.push_back({translation[0] + p[0], translation[1] + p[1], translation[2] + p[2]});
   }
   if (ext["attributes"].contains("NORMAL")) {
     const draco::PointAttribute* nrm =
@@ -88,11 +88,18 @@ Glb read_glb(const std::string& path) {
   glb.json = nlohmann::json::parse(b.begin() + 20, b.begin() + 20 + json_len);
   const size_t bin_at = 20 + json_len + 8;
   glb.bin.assign(b.begin() + long(bin_at), b.end());
-  for (const auto& mesh : glb.json["meshes"])
-    for (const auto& prim : mesh["primitives"])
+  std::map<int, std::array<double, 3>> mesh_translation;
+  for (size_t n = 0; n < glb.json["nodes"].size(); ++n)
+    mesh_translation[glb.json["nodes"][n]["mesh"].get<int>()] = glb.translation(int(n));
+  for (size_t m = 0; m < glb.json["meshes"].size(); ++m)
+    for (const auto& prim : glb.json["meshes"][m]["primitives"])
       if (prim.contains("extensions"))  // Draco: plain primitives are read through floats()
-        glb.primitives.push_back(decode(glb.json, glb.bin, prim));
+        glb.primitives.push_back(decode(glb.json, glb.bin, prim, mesh_translation[int(m)]));
   return glb;
+}
+
+std::array<double, 3> Glb::translation(int node) const {
+  return json["nodes"][node].value("translation", std::array<double, 3>{0, 0, 0});
 }
 
 std::vector<float> Glb::floats(int accessor) const {
@@ -112,7 +119,7 @@ std::vector<char> Glb::image(int index) const {
 }
 
 size_t shared_vertices(const Glb& a, const Glb& b) {
-  using Pos = std::array<float, 3>;
+  using Pos = std::array<double, 3>;
   const auto& pa = a.primitives.at(0).positions;
   const auto& pb = b.primitives.at(0).positions;
   const std::set<Pos> sa(pa.begin(), pa.end());

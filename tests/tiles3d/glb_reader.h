@@ -10,9 +10,10 @@
 namespace maquette::test {
 
 struct DecodedPrimitive {
-  std::vector<std::array<float, 3>> positions;  // decoded, glTF frame
-  std::vector<std::array<float, 3>> normals;    // decoded, one per position (if any)
-  std::vector<std::array<uint32_t, 3>> faces;   // into positions
+  // Decoded, plus the translation of the mesh's node: the export's frame (glTF axes).
+  std::vector<std::array<double, 3>> positions;
+  std::vector<std::array<float, 3>> normals;   // decoded, one per position (if any)
+  std::vector<std::array<uint32_t, 3>> faces;  // into positions
   size_t index_count = 0;
 };
 
@@ -21,6 +22,8 @@ struct Glb {
   std::vector<char> bin;
   std::vector<DecodedPrimitive> primitives;  // the Draco-compressed ones
 
+  // A node's translation (0 when it has none).
+  std::array<double, 3> translation(int node = 0) const;
   // The values of a plain float accessor (e.g. instance attributes).
   std::vector<float> floats(int accessor) const;
   // The bytes of image `index` (a PNG or JPEG file).

@@ -162,15 +162,15 @@ TEST(Globe, SharedVerticesHaveOneNormal) {
   for (int level = 0; level <= kLevel; ++level)
     for (CellId c : cells_of_level(level)) {
       const DecodedPrimitive& a = glb_of(c).primitives.at(0);
-      std::map<Pos, Pos> normal_at;
+      std::map<Pos, std::array<float, 3>> normal_at;
       for (size_t i = 0; i < a.positions.size(); ++i) normal_at[a.positions[i]] = a.normals.at(i);
       for (CellId n : grid.edge_neighbours(c)) {
         const DecodedPrimitive& b = glb_of(n).primitives.at(0);
         for (size_t i = 0; i < b.positions.size(); ++i) {
           const auto it = normal_at.find(b.positions[i]);
           if (it == normal_at.end()) continue;
-          const Pos& p = it->second;
-          const Pos& q = b.normals.at(i);
+          const auto& p = it->second;
+          const auto& q = b.normals.at(i);
           const double cos = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
           const double angle = std::acos(std::clamp(cos, -1.0, 1.0)) * 180 / std::numbers::pi;
           worst = std::max(worst, angle);

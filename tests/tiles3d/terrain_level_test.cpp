@@ -101,11 +101,11 @@ TEST(Tiles3d, LatticeOfTheWidestMeshWhateverTheOrder) {
       EXPECT_EQ(a[c]->lattice_step, step);
       EXPECT_EQ(b[c]->lattice_step, step);
       EXPECT_EQ(a[c]->mesh.positions, b[c]->mesh.positions);
+      EXPECT_EQ(a[c]->mesh.offset, b[c]->mesh.offset);
       EXPECT_EQ(a[c]->draco.data, b[c]->draco.data);
-      for (float v : a[c]->mesh.positions) {  // on the lattice: multiples of the step
-        const double q = double(v) / step;
-        ASSERT_EQ(q, std::round(q)) << v;
-      }
+      // On the lattice: multiples of the step, measured from an offset that is one too.
+      for (double v : a[c]->mesh.positions) ASSERT_EQ(v / step, std::round(v / step)) << v;
+      for (double v : a[c]->mesh.offset) ASSERT_EQ(v / step, std::round(v / step)) << v;
     }
   }
   // Whichever cell is built first, the flat one came first in one of the runs: quantized on its

@@ -98,7 +98,8 @@ TEST(Tiles3d, InstancesDecodeAsWritten) {
   const LonLat c = grid.inverse({sq.x_min + sq.side / 2, sq.y_max - sq.side / 2});
   for (int i = 0; i < kTreeCount; ++i) {
     const LonLat want{c.lon + 0.01 * i, c.lat - 0.01 * i};
-    const Pos base = {t[3 * i], t[3 * i + 1], t[3 * i + 2]};
+    const Pos o = trees.translation();
+    const Pos base = {o[0] + t[3 * i], o[1] + t[3 * i + 1], o[2] + t[3 * i + 2]};
     const auto g = geodetic(m, base);
     EXPECT_NEAR(g[0], want.lon, 1e-6);
     EXPECT_NEAR(g[1], want.lat, 1e-6);
@@ -114,8 +115,7 @@ TEST(Tiles3d, InstancesDecodeAsWritten) {
       const std::array<double, 3> uuv = {u[1] * uv[2] - u[2] * uv[1], u[2] * uv[0] - u[0] * uv[2],
                                          u[0] * uv[1] - u[1] * uv[0]};
       for (int k = 0; k < 3; ++k) v[k] += 2 * (w * uv[k] + uuv[k]);
-      return Pos{float(base[0] + 50 * v[0]), float(base[1] + 50 * v[1]),
-                 float(base[2] + 50 * v[2])};
+      return Pos{base[0] + 50 * v[0], base[1] + 50 * v[1], base[2] + 50 * v[2]};
     };
     const auto top = geodetic(m, rotate({0, 1, 0}));
     EXPECT_NEAR(top[0], g[0], 1e-6);
@@ -216,7 +216,10 @@ TEST(Tiles3d, DrcPerCell) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir + "/" + f.block[0].ToText() + ".drc"));
   EXPECT_TRUE(fs::exists(dir + "/" + f.seam[1].ToText() + ".drc"));
-  EXPECT_TRUE(fs::exists(dir + "/frame.json"));
+  ASSERT_TRUE(fs::exists(dir + "/frame.json"));
+  // Each cell's positions are measured from its offset in the frame.
+  const json offsets = json::parse(std::ifstream(dir + "/frame.json"))["offsets"];
+  for (CellId c : {f.block[0], f.seam[1]}) EXPECT_EQ(offsets[c.ToText()].size(), 3u) << c.ToText();
 }
 
 // Draco is in the mesh plug-in (framework/plugins): loaded by the mesh exports, not at every start.

@@ -14,7 +14,7 @@
 
 namespace maquette::test {
 
-using Pos = std::array<float, 3>;
+using Pos = std::array<double, 3>;  // the export's frame (glTF axes)
 
 struct Export {
   std::string dir;

@@ -31,15 +31,19 @@ std::vector<Vertex> glb_vertices(const std::string& path) {
   const GeographicLib::LocalCartesian enu(origin["lat"].get<double>(), origin["lon"].get<double>(),
                                           0);
   std::vector<Vertex> out;
-  for (const auto& mesh : glb.json["meshes"])
-    for (const auto& prim : mesh["primitives"]) {
+  for (size_t n = 0; n < glb.json["nodes"].size(); ++n) {
+    const auto t = glb.translation(int(n));  // positions are measured from it
+    for (const auto& prim :
+         glb.json["meshes"][glb.json["nodes"][n]["mesh"].get<int>()]["primitives"]) {
       const std::vector<float> p = glb.floats(prim["attributes"]["POSITION"].get<int>());
       for (size_t i = 0; i + 2 < p.size(); i += 3) {
         Vertex v{};
-        enu.Reverse(p[i], -p[i + 2], p[i + 1], v.lat, v.lon, v.h);  // x east, y up, z south
+        // x east, y up, z south
+        enu.Reverse(t[0] + p[i], -(t[2] + p[i + 2]), t[1] + p[i + 1], v.lat, v.lon, v.h);
         out.push_back(v);
       }
     }
+  }
   return out;
 }
 
