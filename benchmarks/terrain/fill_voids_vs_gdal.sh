@@ -9,9 +9,7 @@
 #  - the mean difference of neighbouring filled samples across tile edges and elsewhere (seams).
 # Both fills are compared on the store's grid: GDAL's fill of the source is ingested like the
 # source. Writes the Everest picture (voids | terrain.fill_voids | GDAL) as OUT/everest.jpg.
-# A void that swallows whole tiles leaves them unfilled: the ingest writes no tile without data
-# and a step runs on its input's tiles only; TILE=512 (tile size of the ingests, default 256)
-# keeps a 500-pixel void inside tiles.
+# TILE: tile size of the ingests (default 256; the fill is the same bits for any).
 # Usage: [TILE=256] benchmarks/terrain/fill_voids_vs_gdal.sh [OUT]   (after scripts/build.sh)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 
+#include "core/data_footprint.h"
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/region.h"
@@ -88,6 +89,22 @@ std::vector<CellId> region_cells(const Grid& grid, const RasterIngestOptions& o,
     return grid.cover_bbox(b[0], b[1], b[2], b[3], level, Containment::Overlap);
   }
   return cover_geojson(grid, read_geojson_polygons(o.region), level, Containment::Overlap);
+}
+
+// Where the layer's samples come from: the sources' outlines, within the --bbox or --region.
+DataFootprint data_footprint(const std::vector<Footprint>& footprints,
+                             const RasterIngestOptions& o) {
+  std::vector<PolygonRings> sources, region;
+  for (const Footprint& f : footprints)
+    sources.insert(sources.end(), f.polygons.begin(), f.polygons.end());
+  if (o.bbox) {
+    const auto& b = *o.bbox;
+    const double east = b[2] < b[0] ? b[2] + 360 : b[2];  // across the antimeridian
+    region.push_back({{{b[0], b[1]}, {east, b[1]}, {east, b[3]}, {b[0], b[3]}, {b[0], b[1]}}});
+  } else if (!o.region.empty()) {
+    region = read_geojson_polygons(o.region);
+  }
+  return DataFootprint(std::move(sources), std::move(region));
 }
 
 // Refuses a job of `tiles` tiles (unless force), with the estimate.
@@ -228,7 +245,8 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
                   {"sources", srcs},
                   {"resampling", resampling_name(p.resampling)},
                   {"source_pixel_m", p.source_pixel_m},
-                  {"pixel_m", p.target_pixel_m}};
+                  {"pixel_m", p.target_pixel_m},
+                  {"footprint", data_footprint(footprints, o).to_json()}};
   if (!o.src_crs.empty()) l.provenance["src_crs"] = o.src_crs;
   if (o.as == "dem") l.provenance["vertical_datum"] = dem_vertical_datum(o, first).to_json();
   if (categorical) l.provenance["classes"] = classes.is_null() ? first.classes : classes;

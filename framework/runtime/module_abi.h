@@ -14,7 +14,7 @@
 // 2: operators get the run's store (CellContext::store, StepContext for finish() and regions).
 // 3: outputs finer than the inputs (OperatorSpec::refinable, CellContext::refine).
 // 4: OperatorSpec::writes_all_samples; Tile's samples in a default-initializing vector.
-#define MAQUETTE_ABI_VERSION 4u
+#define MAQUETTE_ABI_VERSION 5u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -61,6 +61,12 @@ struct OperatorSpec {
   // (Tile::uninitialized), saving their fill. An operator that leaves a sample unwritten must not
   // declare it: that sample would be stored with an indeterminate value.
   bool writes_all_samples = false;
+  // A cell operator that also writes cells where its first input has no tile, within that
+  // input's footprint (core/data_footprint.h: where its sources have data), e.g. a void filler
+  // for voids that swallow whole tiles (the ingest writes no tile without data). The runner then
+  // runs it on the region's cells overlapping the footprint too, with an all-NaN input tile (and
+  // the neighbours' halo); on the input's tiles only when the input has no footprint.
+  bool fills_footprint = false;
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
   // items, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};

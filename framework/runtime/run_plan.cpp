@@ -4,6 +4,7 @@
 #include <optional>
 #include <set>
 
+#include "core/data_footprint.h"
 #include "core/error.h"
 #include "core/region.h"
 #include "core/tile.h"
@@ -12,13 +13,15 @@
 namespace maquette {
 namespace {
 
-// Heights made from heights keep their vertical datum (formats/gdal/vertical_datum.h): an output
-// takes the datum of the input of the same port name and units (terrain.fill_voids' "dem").
-void inherit_vertical_datum(const std::vector<std::pair<std::string, LayerInfo>>& inputs,
-                            const std::string& port, LayerInfo& output) {
+// Heights made from heights keep their vertical datum (formats/gdal/vertical_datum.h) and the
+// footprint of their sources (core/data_footprint.h): an output takes those of the input of the
+// same port name and units (terrain.fill_voids' "dem").
+void inherit_source_description(const std::vector<std::pair<std::string, LayerInfo>>& inputs,
+                                const std::string& port, LayerInfo& output) {
   for (const auto& [name, in] : inputs)
-    if (name == port && in.units == output.units && in.provenance.contains("vertical_datum"))
-      output.provenance["vertical_datum"] = in.provenance["vertical_datum"];
+    if (name == port && in.units == output.units)
+      for (const char* key : {"vertical_datum", "footprint"})
+        if (in.provenance.contains(key)) output.provenance[key] = in.provenance[key];
 }
 
 class Planner {
@@ -47,6 +50,8 @@ class Planner {
     }
     std::vector<CellId> cells =
         sp.inputs.empty() ? pipeline_.region : tiles_in_region(sp.inputs.front().second);
+    if (spec.fills_footprint && !sp.inputs.empty())
+      cells = with_footprint_cells(std::move(cells), sp.inputs.front().second);
     if (spec.kind == OperatorKind::Region) {
       check_one_face(step, cells);
       sp.mosaic = mosaic_box(step, cells, sp.tile_size);
@@ -70,7 +75,7 @@ class Planner {
       info.semantics = out.semantics;
       info.units = out.units;
       info.provenance = {{"operator", step.op_name}, {"params", step.params}};
-      inherit_vertical_datum(sp.inputs, out.name, info);
+      inherit_source_description(sp.inputs, out.name, info);
       sp.outputs.emplace(out.name, info);
       produced_[info.name] = {info, cells};
     }
@@ -110,6 +115,21 @@ class Planner {
     }
     sp.cells = CellPlan(std::move(cells), 1);
     return sp;
+  }
+
+  // `cells` (sorted, at the layer's level) and the region's cells overlapping the layer's
+  // footprint (OperatorSpec::fills_footprint).
+  std::vector<CellId> with_footprint_cells(std::vector<CellId> cells,
+                                           const LayerInfo& layer) const {
+    const std::optional<DataFootprint> footprint =
+        DataFootprint::from_provenance(layer.provenance, layer.name);
+    if (!footprint) return cells;
+    const std::vector<CellId> inside =
+        within_region(footprint->cover(default_grid(), layer.level), layer.level);
+    std::vector<CellId> merged;
+    std::set_union(cells.begin(), cells.end(), inside.begin(), inside.end(),
+                   std::back_inserter(merged));
+    return merged;
   }
 
   // The cells of `cells` (sorted, at `level`) overlapping the region.

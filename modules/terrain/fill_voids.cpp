@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/data_footprint.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "operators.h"
 #include "pyramid_fill.h"
 #include "runtime/params_schema.h"
+#include "store/downsample.h"
 #include "void_fill.h"
 
 namespace maquette::terrain {
@@ -36,6 +38,7 @@ OperatorSpec fill_voids_spec() {
        std::nullopt},
   };
   s.halo = kHalo;
+  s.fills_footprint = true;
   s.params_schema = {
       {"type", "object"},
       {"additionalProperties", false},
@@ -73,10 +76,14 @@ class FillVoids : public CellOperator {
     Tile<float> filled = fill_voids(dem, {method, kHalo - 1}).interior();
     if (std::any_of(filled.data().begin(), filled.data().end(),
                     [](float v) { return std::isnan(v); })) {
-      const Tile<float> large = fill_through_pyramid(dem, ctx.cell, pyramid(ctx, dem));
-      for (int row = 0; row < size; ++row)
-        for (int col = 0; col < size; ++col)
-          if (std::isnan(filled.at(col, row))) filled.at(col, row) = large.at(col, row);
+      const Pyramid p = pyramid(ctx, dem);
+      const FootprintTest inside = footprint_test(ctx, p.footprint);
+      if (!inside || left_inside(filled, inside)) {
+        const Tile<float> large = fill_through_pyramid(dem, ctx.cell, p.fetch, inside);
+        for (int row = 0; row < size; ++row)
+          for (int col = 0; col < size; ++col)
+            if (std::isnan(filled.at(col, row))) filled.at(col, row) = large.at(col, row);
+      }
     }
 
     if (data.wants("filled")) {
@@ -90,9 +97,15 @@ class FillVoids : public CellOperator {
   }
 
  private:
-  // The overview tiles around the cell of params.pyramid, once it is checked to be the input's
-  // layer: same level and tile size, and the same samples at the cell.
-  static PyramidFetch pyramid(const CellContext& ctx, const Tile<float>& dem) {
+  struct Pyramid {
+    PyramidFetch fetch;
+    std::optional<DataFootprint> footprint;  // of the layer's sources, if it records one
+  };
+
+  // The overview tiles around the cell of params.pyramid and its footprint, once it is checked to
+  // be the input's layer: same level and tile size, and the same samples at the cell (all NaN
+  // where it has no tile: a cell within the footprint, OperatorSpec::fills_footprint).
+  static Pyramid pyramid(const CellContext& ctx, const Tile<float>& dem) {
     const std::string name = ctx.params->at("pyramid");
     const std::string where = "terrain.fill_voids: cell " + ctx.cell.ToText();
     if (name.empty())
@@ -103,19 +116,60 @@ class FillVoids : public CellOperator {
     const LayerInfo layer = ctx.store->require_layer(name);
     const std::optional<RawTile> raw = ctx.store->get_tile(name, ctx.cell);
     const std::optional<double> nodata = layer.nodata;
-    if (layer.level != ctx.cell.level() || layer.tile_size != ctx.tile_size || !raw ||
-        !same_samples(to_tile<float>(*raw, nodata ? &*nodata : nullptr), dem))
+    if (layer.level != ctx.cell.level() || layer.tile_size != ctx.tile_size ||
+        !same_samples(raw ? to_tile<float>(*raw, nodata ? &*nodata : nullptr)
+                          : Tile<float>(ctx.tile_size, 1, 0, NAN),
+                      dem))
       throw Error(where + ": params.pyramid: layer '" + name +
                   "' is not the layer of input 'dem' (its tile differs)");
-    return [&ctx, name, nodata](int levels_up, int halo) {
-      const CellId ancestor = ctx.cell.parent(ctx.cell.level() - levels_up);
-      return assemble_halo(*ctx.grid, ancestor, ctx.tile_size, halo,
-                           [&](CellId c) -> std::optional<Tile<float>> {
-                             const std::optional<RawTile> tile = ctx.store->get_overview(name, c);
-                             if (!tile) return std::nullopt;
-                             return to_tile<float>(*tile, nodata ? &*nodata : nullptr);
-                           });
+    PyramidFetch fetch = [&ctx, layer](int levels_up, int halo) {
+      const PyramidTile t = pyramid_tile(ctx.cell, ctx.tile_size, levels_up);
+      const int halvings = std::max(0, levels_up - ctx.cell.level());
+      return assemble_halo(
+          *ctx.grid, t.cell, t.size, halo, [&](CellId c) -> std::optional<Tile<float>> {
+            std::optional<RawTile> tile = c.level() == layer.level
+                                              ? ctx.store->get_tile(layer.name, c)
+                                              : ctx.store->get_overview(layer.name, c);
+            if (!tile) return std::nullopt;
+            for (int i = 0; i < halvings; ++i) tile = halved(*tile, layer);
+            return to_tile<float>(*tile, layer.nodata ? &*layer.nodata : nullptr);
+          });
     };
+    return {std::move(fetch), DataFootprint::from_provenance(layer.provenance, name)};
+  }
+
+  // A face's tile at half resolution, by the store's own overview rule (so the same bits as the
+  // overview a tiling of smaller tiles keeps for that level).
+  static RawTile halved(const RawTile& tile, LayerInfo layer) {
+    layer.tile_size = tile.size;
+    const RawTile quadrants = build_overview({&tile, nullptr, nullptr, nullptr}, layer);
+    RawTile out{tile.dtype, tile.size / 2, tile.channels, {}};
+    const size_t row_bytes = size_t(out.size) * tile.channels * dtype_size(tile.dtype);
+    for (int row = 0; row < out.size; ++row) {
+      const auto first = quadrants.bytes.begin() + ptrdiff_t(row * 2 * row_bytes);
+      out.bytes.insert(out.bytes.end(), first, first + ptrdiff_t(row_bytes));
+    }
+    return out;
+  }
+
+  // Whether a pixel of a pyramid level lies in the footprint (empty without a footprint).
+  static FootprintTest footprint_test(const CellContext& ctx,
+                                      const std::optional<DataFootprint>& footprint) {
+    if (!footprint) return {};
+    return [&ctx, &footprint](int levels_up, int col, int row) {
+      const PyramidTile t = pyramid_tile(ctx.cell, ctx.tile_size, levels_up);
+      const std::optional<FaceCoord> pixel = pixel_source(*ctx.grid, t.cell, t.size, col, row);
+      return pixel && footprint->contains(
+                          pixel_centre(*ctx.grid, *pixel, t.cell.level() + log2_tile_size(t.size)));
+    };
+  }
+
+  // Whether a NaN sample of `tile` lies inside the footprint.
+  static bool left_inside(const Tile<float>& tile, const FootprintTest& inside) {
+    for (int row = 0; row < tile.size(); ++row)
+      for (int col = 0; col < tile.size(); ++col)
+        if (std::isnan(tile.at(col, row)) && inside(0, col, row)) return true;
+    return false;
   }
 
   // Same bits at every sample of `tile` and the interior of `window` (NaN equal to NaN).

@@ -37,12 +37,6 @@ struct Field {
     return size_t((y - rect.y0) * rect.width() + (x - rect.x0));
   }
   float at(int64_t x, int64_t y) const { return v[index(x, y)]; }
-  bool has_nan(const Rect& r) const {
-    for (int64_t y = r.y0; y < r.y1; ++y)
-      for (int64_t x = r.x0; x < r.x1; ++x)
-        if (std::isnan(at(x, y))) return true;
-    return false;
-  }
 };
 
 // `rect` of a tile (with its halo) whose first interior pixel is global pixel (ox, oy).
@@ -106,36 +100,68 @@ void smooth(Field& f, const std::vector<char>& fixed) {
   }
 }
 
-// The samples a level's fill keeps: those with data, except, on coarser levels, those next to a
-// void, whose means mix in less of their block where it is void and so lean away from the void's
-// side.
-std::vector<char> fixed_samples(const Field& data, bool coarser) {
-  const int64_t w = data.rect.width(), h = data.rect.height();
-  std::vector<char> fixed(data.v.size());
-  for (int64_t y = 0; y < h; ++y)
-    for (int64_t x = 0; x < w; ++x) {
-      const size_t i = size_t(y * w + x);
-      const auto known = [&](bool inside, size_t j) { return !inside || !std::isnan(data.v[j]); };
-      fixed[i] = !std::isnan(data.v[i]) &&
-                 (!coarser || (known(x > 0, i - 1) && known(x + 1 < w, i + 1) &&
-                               known(y > 0, i - size_t(w)) && known(y + 1 < h, i + size_t(w))));
-    }
-  return fixed;
-}
-
 // One level of the pyramid as the fill uses it.
 struct Level {
   Rect exact;          // where the fill of this level must be exact
   Field data;          // the level's samples over `exact` grown by kPyramidSweeps + 1
   Field fill{Rect{}};  // the fill over the same rectangle
+  // Per sample of `data`: inside the footprint, or holding data (empty: no footprint, all are).
+  std::vector<char> domain;
+
+  bool in_domain(size_t i) const { return domain.empty() || domain[i]; }
+  bool is_void(size_t i) const { return std::isnan(data.v[i]) && in_domain(i); }
+  bool has_void(const Rect& r) const {
+    for (int64_t y = r.y0; y < r.y1; ++y)
+      for (int64_t x = r.x0; x < r.x1; ++x)
+        if (is_void(data.index(x, y))) return true;
+    return false;
+  }
+
+  // The samples the fill keeps: those with data, except, on coarser levels, those next to a void,
+  // whose means mix in less of their block where it is void and so lean away from the void's
+  // side; and those outside the footprint, NaN, which take no part.
+  std::vector<char> fixed_samples(bool coarser) const {
+    const int64_t w = data.rect.width(), h = data.rect.height();
+    std::vector<char> fixed(data.v.size());
+    for (int64_t y = 0; y < h; ++y)
+      for (int64_t x = 0; x < w; ++x) {
+        const size_t i = size_t(y * w + x);
+        const auto known = [&](bool inside, size_t j) { return !inside || !is_void(j); };
+        fixed[i] = !in_domain(i) ||
+                   (!std::isnan(data.v[i]) &&
+                    (!coarser || (known(x > 0, i - 1) && known(x + 1 < w, i + 1) &&
+                                  known(y > 0, i - size_t(w)) && known(y + 1 < h, i + size_t(w)))));
+      }
+    return fixed;
+  }
 };
+
+// The domain of a level's samples (Level::domain) over `rect`, its tile's first interior pixel
+// at global pixel (ox, oy).
+std::vector<char> footprint_domain(const Field& data, int levels_up, int64_t ox, int64_t oy,
+                                   const FootprintTest& inside) {
+  std::vector<char> domain(data.v.size());
+  const Rect& r = data.rect;
+  for (int64_t y = r.y0; y < r.y1; ++y)
+    for (int64_t x = r.x0; x < r.x1; ++x) {
+      const size_t i = data.index(x, y);
+      domain[i] = !std::isnan(data.v[i]) || inside(levels_up, int(x - ox), int(y - oy));
+    }
+  return domain;
+}
 
 }  // namespace
 
-Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const PyramidFetch& fetch) {
+PyramidTile pyramid_tile(CellId cell, int size, int levels_up) {
+  if (levels_up <= cell.level()) return {cell.parent(cell.level() - levels_up), size};
+  return {cell.parent(0), size >> (levels_up - cell.level())};
+}
+
+Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const PyramidFetch& fetch,
+                                 const FootprintTest& inside) {
   const int n = dem.size();
   const int pixel_level = cell.level() + log2_tile_size(n);
-  const int top_level = std::clamp(pixel_level - kCoarsestPixelLevel, 0, cell.level());
+  const int top_level = std::max(0, pixel_level - kCoarsestPixelLevel);
 
   // Climb until a level holds no void where its fill must be exact, nor next to it on a coarser
   // level (its fill is then its data, which no sweep would change), or there is no coarser level.
@@ -144,15 +170,13 @@ Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const Pyra
              int64_t(cell.row() + 1) * n};
   for (int k = 0;; ++k) {
     const Rect window = exact.grown(kPyramidSweeps + 1);
-    if (k == 0) {
-      levels.push_back({exact, extract(dem, exact.x0, exact.y0, window)});
-    } else {
-      const CellId ancestor = cell.parent(cell.level() - k);
-      const Tile<float> tile = fetch(k, kPyramidHalo);
-      levels.push_back(
-          {exact, extract(tile, int64_t(ancestor.col()) * n, int64_t(ancestor.row()) * n, window)});
-    }
-    if (!levels.back().data.has_nan(k == 0 ? exact : exact.grown(1)) || k == top_level) break;
+    const PyramidTile t = pyramid_tile(cell, n, k);
+    const int64_t ox = int64_t(t.cell.col()) * t.size, oy = int64_t(t.cell.row()) * t.size;
+    levels.push_back(
+        {exact, extract(k == 0 ? dem : fetch(k, kPyramidHalo), ox, oy, window), Field{Rect{}}, {}});
+    Level& level = levels.back();
+    if (inside) level.domain = footprint_domain(level.data, k, ox, oy, inside);
+    if (!level.has_void(k == 0 ? exact : exact.grown(1)) || k == top_level) break;
     exact = window.coarse_cover();
   }
 
@@ -164,14 +188,14 @@ Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const Pyra
     const Rect& r = level.data.rect;
     for (int64_t y = r.y0; y < r.y1; ++y)
       for (int64_t x = r.x0; x < r.x1; ++x) {
-        float& v = level.fill.v[level.fill.index(x, y)];
-        if (std::isnan(v)) v = upsample(levels[k + 1].fill, x, y);
+        const size_t i = level.fill.index(x, y);
+        if (level.is_void(i)) level.fill.v[i] = upsample(levels[k + 1].fill, x, y);
       }
-    smooth(level.fill, fixed_samples(level.data, k > 0));
+    smooth(level.fill, level.fixed_samples(k > 0));
   }
 
-  // A void sample is filled where, at some coarser level, data lie within kReach pixels of its
-  // own pixel there in each of the four axis directions.
+  // Without a footprint, a void sample is filled where, at some coarser level, data lie within
+  // kReach pixels of its own pixel there in each of the four axis directions.
   const auto data_towards = [&](const Field& data, int64_t cx, int64_t cy, int dx, int dy) {
     for (int d = 1; d <= kReach; ++d)
       if (!std::isnan(data.at(cx + d * dx, cy + d * dy))) return true;
@@ -193,7 +217,8 @@ Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const Pyra
     for (int col = 0; col < n; ++col) {
       const int64_t x = fine.exact.x0 + col, y = fine.exact.y0 + row;
       const float v = dem.at(col, row);
-      out.at(col, row) = !std::isnan(v) || !enclosed(x, y) ? v : fine.fill.at(x, y);
+      const bool filled = inside ? fine.is_void(fine.data.index(x, y)) : enclosed(x, y);
+      out.at(col, row) = std::isnan(v) && filled ? fine.fill.at(x, y) : v;
     }
   return out;
 }

@@ -17,20 +17,36 @@ namespace maquette::terrain {
 inline constexpr int kPyramidSweeps = 24;
 // Halo of the coarse levels' tiles: their windows reach at most this far beyond the tile.
 inline constexpr int kPyramidHalo = 64;
-// Pixel level of the coarsest level (256 pixels along a face, ~39 km): the tile of a face for
-// the default tile size, so that tilings of up to 256-pixel tiles climb to the same level (larger
-// tiles stop at their faces' tiles: pixel level log2(tile size)).
+// Pixel level of the coarsest level (256 pixels along a face, ~39 km), whatever the tile size: a
+// pyramid tile finer than that climbs to the cell's face and then halves the face's tile.
 inline constexpr int kCoarsestPixelLevel = 8;
 
-// Level `levels_up` (>= 1) of the pyramid around a cell: the overview tile of its ancestor that
-// many levels up, with a halo of `halo` pixels (nodata as NaN; core/halo.h's assembly).
-using PyramidFetch = std::function<Tile<float>(int levels_up, int halo)>;
+// The tile of level `levels_up` of the pyramid around a cell of tile size `size`: its ancestor
+// that many levels up, or, above its face, the face with its tile halved (levels_up - cell level)
+// times (size >> that).
+struct PyramidTile {
+  CellId cell;
+  int size = 0;
+};
+PyramidTile pyramid_tile(CellId cell, int size, int levels_up);
 
-// The tile of `cell` (its samples, no halo) with every NaN sample that the pyramid encloses
-// filled: one whose pixel at some coarser level has data within 16 pixels in each of the four
-// axis directions (so voids of any size inside the data are filled, and nothing is extrapolated
-// beyond the edge of convex data). `dem` is the cell's tile with a halo of at least kPyramidSweeps
-// + 1 pixels. Samples that are not NaN are copied; NaN samples not enclosed stay NaN.
-Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const PyramidFetch& fetch);
+// Level `levels_up` (>= 1) of the pyramid around a cell: the tile of pyramid_tile (the overview
+// of the ancestor, the face's overview halved above the face), with a halo of `halo` pixels
+// (nodata as NaN; core/halo.h's assembly).
+using PyramidFetch = std::function<Tile<float>(int levels_up, int halo)>;
+// Whether pixel (col, row) of the tile of level `levels_up` (pyramid_tile; 0: the cell's own;
+// halo pixels included) lies inside the footprint of the input's sources (core/data_footprint.h).
+using FootprintTest = std::function<bool(int levels_up, int col, int row)>;
+
+// The tile of `cell` (its samples, no halo) with NaN samples filled. With a footprint test
+// (`inside` not empty), every NaN sample inside the footprint: samples outside it take no part
+// (the membrane's border there is free: no flux across the edge of the data). Without one, the
+// NaN samples that the pyramid encloses: one whose pixel at some coarser level has data within
+// 16 pixels in each of the four axis directions (so voids of any size inside the data are
+// filled, and nothing is extrapolated beyond the edge of convex data). `dem` is the cell's tile
+// with a halo of at least kPyramidSweeps + 1 pixels. Samples that are not NaN are copied; NaN
+// samples not filled stay NaN.
+Tile<float> fill_through_pyramid(const Tile<float>& dem, CellId cell, const PyramidFetch& fetch,
+                                 const FootprintTest& inside);
 
 }  // namespace maquette::terrain

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 
+#include "core/data_footprint.h"
 #include "ingest_fixture.h"
 
 namespace maquette::test {
@@ -50,6 +51,44 @@ TEST(IngestSharedData, MtRainierSrtmKeepsVoids) {
   EXPECT_GT(top, 4000.0f);  // the summit, 4392 m
   EXPECT_LT(top, 4400.0f);
   EXPECT_TRUE(store->get_overview("dem", store->tile_cells("dem").front().parent()));
+}
+
+// The layer records where its samples come from: the source's outline (its pixels' outer edges,
+// from its geotransform) within --bbox. Every sample with data lies inside it.
+TEST(IngestSharedData, MtRainierFootprintIsRecorded) {
+  REQUIRE_SHARED(tif, "srtm3/mt_rainier_90m.tif");
+  RasterIngestOptions o;
+  o.layer = "dem";
+  o.as = "dem";
+  o.bbox = std::array<double, 4>{-121.6, 46.3, -121.2, 46.7};
+  const auto store = ingest(temp_dir(), "rainier", {tif}, o);
+  const std::optional<DataFootprint> footprint =
+      DataFootprint::from_provenance(store->require_layer("dem").provenance, "dem");
+  ASSERT_TRUE(footprint);
+  EXPECT_TRUE(footprint->contains({-121.4, 46.5}));
+  EXPECT_FALSE(footprint->contains({-121.7, 46.5}));  // in the source, beyond the box
+  EXPECT_FALSE(footprint->contains({-121.4, 46.8}));
+  // The source's edge: 1201 pixels of 3" from -122.00042, 47.00042.
+  o.bbox.reset();
+  o.layer = "whole";
+  const auto whole = ingest(temp_dir(), "rainier", {tif}, o);
+  const std::optional<DataFootprint> outline =
+      DataFootprint::from_provenance(whole->require_layer("whole").provenance, "whole");
+  ASSERT_TRUE(outline);
+  constexpr double kWest = -122.0 - 1.5 / 3600, kNorth = 47.0 + 1.5 / 3600, kSide = 1201.0 / 1200;
+  for (const double f : {0.001, 0.5, 0.999}) {
+    EXPECT_TRUE(outline->contains({kWest + 1e-6, kNorth - f * kSide}));
+    EXPECT_FALSE(outline->contains({kWest - 1e-6, kNorth - f * kSide}));
+    EXPECT_TRUE(outline->contains({kWest + f * kSide, kNorth - kSide + 1e-6}));
+    EXPECT_FALSE(outline->contains({kWest + f * kSide, kNorth - kSide - 1e-6}));
+  }
+  int64_t with_data = 0;
+  for_each_sample(*whole, "whole", [&](CellId, LonLat p, const float* v) {
+    if (std::isnan(v[0])) return;
+    ++with_data;
+    EXPECT_TRUE(outline->contains(p)) << p.lon << ", " << p.lat;
+  });
+  EXPECT_GT(with_data, 1000000);
 }
 
 TEST(IngestSharedData, ZionLandCoverKeepsItsClassTable) {
