@@ -64,7 +64,7 @@ OperatorSpec fit_spec() {
            "each class drawn between two colours on its principal colour axis, mixed by a "
            "noise child, with the class's mean and standard deviation along that axis"}}},
         {"variation_noise_scale",
-         number_param(0.01, 10, 2, "noise scale of the variation child's coverage")},
+         number_param(0.01, 10, 1.5, "noise scale of the variation child's coverage")},
         {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 1}}},
         {"constraints",
          {{"type", "string"},

@@ -46,25 +46,34 @@ ColourSpread colour_spread(const ClassStats& c) {
   return out;
 }
 
-double coverage_sd(const NoiseParams& noise, double scale, double pixel_m) {
-  // 64 x 64 points 1/7.3 of a wavelength apart (off the lattice) on the plane tangent to the
-  // globe at (0 N, 0 E): 8.8 wavelengths across.
+std::vector<double> noise_samples(const NoiseParams& noise, double pixel_m) {
+  // 256 x 256 points 1/7.3 of a wavelength apart (off the lattice) on the plane tangent to the
+  // globe at (0 N, 0 E): 35 wavelengths across, so that the tails of N (which a bias far from
+  // 0.5 reads) are sampled too (with 64 x 64, Zion's darkest class came out CIEDE2000 7 lighter).
   const NoiseField field(noise);
   const double step = noise.wavelength_m / 7.3;
-  double sum = 0, sum_sq = 0;
-  constexpr int kSide = 64;
+  constexpr int kSide = 256;
+  std::vector<double> out;
   for (int i = 0; i < kSide; ++i)
     for (int j = 0; j < kSide; ++j) {
       const Vec3d x = {6371007.2, step * i, step * j};
       double n = 0;
       for (int o = 0; o < field.octaves(); ++o)
         if (field.wavelength_m(o) >= 2 * pixel_m) n += field.amplitude(o) * field.octave(o, x);
-      n = std::clamp(n / field.norm(), -1.0, 1.0);
-      const double cov = std::clamp(0.5 + scale * n, 0.0, 1.0);
-      sum += cov, sum_sq += cov * cov;
+      out.push_back(std::clamp(n / field.norm(), -1.0, 1.0));
     }
-  const double n = kSide * kSide, mean = sum / n;
-  return std::sqrt(std::max(0.0, sum_sq / n - mean * mean));
+  return out;
+}
+
+std::array<double, 2> coverage_moments(const std::vector<double>& noise, double bias,
+                                       double scale) {
+  double sum = 0, sum_sq = 0;
+  for (const double n : noise) {
+    const double c = std::clamp(bias + scale * n, 0.0, 1.0);
+    sum += c, sum_sq += c * c;
+  }
+  const double k = double(noise.size()), mean = sum / k;
+  return {mean, std::sqrt(std::max(0.0, sum_sq / k - mean * mean))};
 }
 
 Table constraint_function(const std::array<uint64_t, kBins>& hist) {
@@ -153,24 +162,48 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
     Layer v;
     v.name = l.name + ".variation";
     v.parent = self;
-    v.bias = 0.5f;
     v.noise_scale = float(p.variation_noise_scale);
     v.noise = p.noise;
     v.noise.seed = l.noise.seed * 100 + 1;
     v.constraints.resize(quantities.size());
-    // The colour is mean - a e + 2 a e C: mean m where C averages 0.5 (N is symmetric), and
-    // a standard deviation of 2 a sd(C) along e, the class's sd when a = sd / (2 sd(C)); a is
-    // kept so that both ends are colours (0..255), else clamping would move the mean.
+    // The colour is L + D C along e, C the child's coverage of mean mu and deviation sigma: the
+    // class's mean m and deviation sd along e when D = sd / sigma and L = m - D mu. The child's
+    // bias sets mu: 0.5 where both ends are colours; a dark class (a bright tail) needs a lower
+    // one, a light class a higher one, so the ends stay in 0..255 (a clamped end would move the
+    // mean). Biases from 0.5 outwards; when none fits, 0.5 with D shrunk until the ends fit.
     const ColourSpread spread = colour_spread(c);
-    const double mixed = coverage_sd(v.noise, p.variation_noise_scale, p.pixel_m);
-    double a = mixed > 0 ? spread.sd / (2 * mixed) : 0;
-    for (size_t k = 0; k < 3; ++k)
-      if (spread.axis[k] != 0)
-        a = std::min(a, std::min(spread.mean[k], 255 - spread.mean[k]) / std::abs(spread.axis[k]));
+    const std::vector<double> noise = noise_samples(v.noise, p.pixel_m);
+    const auto ends = [&](double bias, double shrink) {
+      const auto [mu, sigma] = coverage_moments(noise, bias, p.variation_noise_scale);
+      const double d = sigma > 0 ? shrink * spread.sd / sigma : 0;
+      std::array<std::array<double, 3>, 2> e{};
+      for (size_t k = 0; k < 3; ++k) {
+        e[0][k] = spread.mean[k] - d * mu * spread.axis[k];
+        e[1][k] = spread.mean[k] + d * (1 - mu) * spread.axis[k];
+      }
+      return e;
+    };
+    const auto fits = [](const std::array<std::array<double, 3>, 2>& e) {
+      for (const auto& end : e)
+        for (const double x : end)
+          if (x < 0 || x > 255) return false;
+      return true;
+    };
+    double bias = 0.5, shrink = 1;
+    for (int step = 0; step <= 36; ++step) {  // 0.5, 0.475, 0.525, 0.45, ... 0.05, 0.95
+      const double b = 0.5 + (step % 2 ? -1 : 1) * 0.025 * ((step + 1) / 2);
+      if (fits(ends(b, 1))) {
+        bias = b;
+        break;
+      }
+      if (step == 36)
+        while (shrink > 0 && !fits(ends(0.5, shrink))) shrink -= 0.01;
+    }
+    v.bias = float(bias);
+    const auto e = ends(bias, std::max(shrink, 0.0));
     for (size_t k = 0; k < 3; ++k) {
-      m.layers[size_t(self)].colour[k] =
-          float(std::clamp(spread.mean[k] - a * spread.axis[k], 0.0, 255.0));  // rounding
-      v.colour[k] = float(std::clamp(spread.mean[k] + a * spread.axis[k], 0.0, 255.0));
+      m.layers[size_t(self)].colour[k] = float(std::clamp(e[0][k], 0.0, 255.0));  // rounding
+      v.colour[k] = float(std::clamp(e[1][k], 0.0, 255.0));
     }
     m.layers.push_back(v);
   }

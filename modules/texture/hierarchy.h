@@ -26,12 +26,12 @@ struct ClassStats {
 struct HierarchyParams {
   double noise_scale = 0.1;  // level-1 layers
   NoiseParams noise;         // level-1 layers (seed varied per layer)
-  // Variation: each class is drawn between two colours on its principal colour axis, mean -+ a
-  // (the level-1 layer and its child), mixed by the child's coverage clamp(0.5 + s N): the mean
-  // stays the class's, and a is chosen so the spread along the axis is the class's.
+  // Variation: each class is drawn between two colours on its principal colour axis (the
+  // level-1 layer and its child), mixed by the child's coverage clamp(b + s N): the ends and b
+  // are chosen so that the mean and the spread along the axis are the class's.
   bool variation = true;
-  double variation_noise_scale = 2;  // s
-  double pixel_m = 0;                // of the fitted image: the resolution sd(C) is taken at
+  double variation_noise_scale = 1.5;  // s
+  double pixel_m = 0;                  // of the fitted image: the resolution sd(C) is taken at
   uint64_t seed = 1;
   bool odds = false;  // constraint functions: class odds per bin instead of scaled density
 };
@@ -54,11 +54,14 @@ struct ColourSpread {
 };
 ColourSpread colour_spread(const ClassStats& c);
 
-// Standard deviation of clamp(0.5 + scale N(x)) over positions x, N the noise of `noise` as
-// texture.procedural evaluates it on pixels of `pixel_m` (octaves shorter than 2 pixels left
-// out, their mean 0; pixel_m 0: every octave): how much of a colour difference a variation child
-// with this noise passes on at that resolution.
-double coverage_sd(const NoiseParams& noise, double scale, double pixel_m);
+// N(x) at 256 x 256 positions x, N the noise of `noise` as texture.procedural evaluates it on
+// pixels of `pixel_m` (octaves shorter than 2 pixels left out, their mean 0; pixel_m 0: every
+// octave).
+std::vector<double> noise_samples(const NoiseParams& noise, double pixel_m);
+
+// Mean and standard deviation of the coverage clamp(bias + scale N) over `noise` samples: how
+// much of a colour difference a variation child with this noise passes on, and how.
+std::array<double, 2> coverage_moments(const std::vector<double>& noise, double bias, double scale);
 
 Model build_model(const std::vector<Quantity>& quantities, const std::vector<ClassStats>& classes,
                   const HierarchyParams& p);
