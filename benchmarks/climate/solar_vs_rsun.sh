@@ -32,7 +32,8 @@ read -r ours_wall ours_user ours_sys < <({ /usr/bin/time -f "%e %U %S" "$bin/maq
   run "$out/solar.json" --threads "$threads"; } 2>&1)
 mq export gtiff "$out/zion.mqt" "$out/dem.tif" --layer dem --crs EPSG:32612 --resolution 70
 mq export gtiff "$out/zion.mqt" "$out/beam.tif" --layer beam --crs EPSG:32612 --resolution 70
-mean() { gdalinfo -stats "$1" | awk -F= '/STATISTICS_MEAN/ {print $2}'; }
+# (statistics left in an .aux.xml by an earlier run would be read back as they are)
+mean() { rm -f "$1.aux.xml" && gdalinfo -stats "$1" | awk -F= '/STATISTICS_MEAN/ {print $2}'; }
 rsun_wall=0 rsun_cpu=0 rsun_mean=0 runs=0
 for ((day = first; day <= last; day += step)); do
   read -r wall user sys < <("$root/benchmarks/climate/rsun_beam.sh" "$out/dem.tif" \
