@@ -2,7 +2,7 @@
 # terrain.fill_voids side by side with GDAL's FillNodata (gdal_fillnodata.py, inverse-distance
 # interpolation, max distance raised to 2000 pixels so that it fills every void, no smoothing
 # passes: its defaults otherwise) on SRTM tiles of ../shared/data/srtm3:
-#  - Everest (9 % voids, -32768): the voids terrain.fill_voids leaves (GDAL leaves none) and the
+#  - Everest (9 % voids, -32768): the voids terrain.fill_voids leaves (none: GDAL neither) and the
 #    RMSE between the two fills;
 #  - Rainier with a square void of 50, 200 or 500 pixels punched at its centre: the RMSE
 #    and largest error of each method against the heights removed;
