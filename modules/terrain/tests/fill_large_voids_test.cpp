@@ -1,8 +1,9 @@
 // terrain.fill_voids on voids larger than its halo, filled through the overview pyramid of a real
 // store: a linear field (an exact solution of the membrane) is recovered in a disc of 201 pixels
 // and a strip of 320, nothing is extrapolated beyond the data's edge, and tilings of 64- and
-// 128-pixel tiles give the same bits (so no seams between tiles either); a void across the seam
-// of faces P and N is filled with no step across the seam.
+// 128-pixel tiles give the same bits (so no seams between tiles either); with the data's
+// footprint recorded, the void open to the data's edge is filled too; a void across the seam of
+// faces P and N is filled with no step across the seam.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -12,6 +13,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/data_footprint.h"
 #include "core/ecef.h"
 #include "core/halo.h"
 #include "store/store.h"
@@ -38,14 +40,37 @@ float sample(int64_t x, int64_t y) {
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// A layer of `size`-pixel tiles holding sample() over the data's square, with its overviews.
-LayerInfo write_layer(Store& store, const std::string& name, int size) {
+// The lon/lat outline of the data's square: its pixels' outer edges, each point midway between
+// the centres of a pixel on the square's border and of the pixel beyond it (every 8 pixels:
+// straight edges in degrees stay well within half a pixel of the square's).
+DataFootprint square_footprint() {
+  std::vector<LonLat> ring;
+  const auto centre = [](int64_t c, int64_t r) {
+    return pixel_centre(default_grid(), FaceCoord{kFace, kOrigin + c, kOrigin + r}, 16);
+  };
+  const auto at = [&](int64_t c, int64_t r) {  // (c, r) beyond the square, next to it
+    const LonLat a = centre(c, r), b = centre(std::clamp<int64_t>(c, 0, kSide - 1),
+                                              std::clamp<int64_t>(r, 0, kSide - 1));
+    ring.push_back({(a.lon + b.lon) / 2, (a.lat + b.lat) / 2});
+  };
+  for (int64_t i = -1; i < kSide; i += 8) at(i, -1);
+  for (int64_t i = -1; i < kSide; i += 8) at(kSide, i);
+  for (int64_t i = kSide; i > -1; i -= 8) at(i, kSide);
+  for (int64_t i = kSide; i > -1; i -= 8) at(-1, i);
+  ring.push_back(ring.front());
+  return DataFootprint({{ring}}, {});
+}
+
+// A layer of `size`-pixel tiles holding sample() over the data's square, with its overviews, and
+// the square's footprint in its provenance if `footprint`.
+LayerInfo write_layer(Store& store, const std::string& name, int size, bool footprint = false) {
   const int level = 16 - log2_tile_size(size);
   LayerInfo info;
   info.name = name;
   info.tile_size = size;
   info.level = level;
   info.units = "m";
+  if (footprint) info.provenance["footprint"] = square_footprint().to_json();
   store.create_layer(info);
   for (int64_t row = kOrigin / size; row < (kOrigin + kSide) / size; ++row)
     for (int64_t col = kOrigin / size; col < (kOrigin + kSide) / size; ++col) {
@@ -138,6 +163,36 @@ TEST_F(FillLargeVoids, RecoversALinearFieldAndStopsAtTheDataEdge) {
   RecordProperty("largest_error_m", std::to_string(worst));
   // The field rises 270 m across the disc: the membrane's solution is the field itself.
   EXPECT_LT(worst, 0.5);
+}
+
+// With the footprint, the notch open to the data's edge is filled to the edge, within the range
+// of the heights around it (a membrane's maximum principle; its border along the data's edge is
+// free, so it does not continue the field's slope there); the other voids are filled as closely
+// as without (the footprint moves the coarse levels' fixed samples along the data's edge).
+TEST_F(FillLargeVoids, FillsToTheFootprintsEdge) {
+  EXPECT_TRUE(square_footprint().contains(
+      pixel_centre(default_grid(), FaceCoord{kFace, kOrigin, kOrigin + 80}, 16)));
+  EXPECT_FALSE(square_footprint().contains(
+      pixel_centre(default_grid(), FaceCoord{kFace, kOrigin - 1, kOrigin + 80}, 16)));
+  const auto with = fill(*store_, write_layer(*store_, "with", 64, true));
+  // The notch's border: columns 0..40 of rows 59 and 120, and column 40 between them.
+  const float low = linear(kOrigin, kOrigin + 120), high = linear(kOrigin + 40, kOrigin + 59);
+  int notch_samples = 0;
+  for (const auto& [xy, v] : with) {
+    const int64_t c = xy.first - kOrigin, r = xy.second - kOrigin;
+    if (disc(c, r) || strip(c, r)) {
+      ASSERT_LT(std::abs(v - linear(xy.first, xy.second)), 0.5) << c << "," << r;
+      continue;
+    }
+    if (!notch(c, r)) {
+      ASSERT_TRUE(same_bits(v, sample(xy.first, xy.second))) << c << "," << r;
+      continue;
+    }
+    ++notch_samples;
+    ASSERT_FALSE(std::isnan(v)) << c << "," << r;
+    ASSERT_TRUE(v >= low - 1 && v <= high + 1) << v << " at " << c << "," << r;
+  }
+  EXPECT_EQ(notch_samples, 40 * 60);
 }
 
 TEST_F(FillLargeVoids, SameBitsForAnyTiling) {
