@@ -18,6 +18,7 @@
 #include <numeric>
 #include <optional>
 
+#include "core/data_footprint.h"
 #include "core/error.h"
 #include "core/samples.h"
 #include "gdal/tile_resampler.h"
@@ -99,6 +100,20 @@ void undo_failed_ingest(std::unique_ptr<Store> store, const std::string& layer, 
   }
 }
 
+// An ingest into an existing layer adds its footprint to the layer's (core/data_footprint.h); a
+// layer ingested before footprints were recorded gets none, since where its earlier sources lie
+// is not known.
+LayerInfo with_earlier_footprint(LayerInfo layer, const std::optional<LayerInfo>& existing) {
+  if (!existing) return layer;
+  const auto earlier = DataFootprint::from_provenance(existing->provenance, layer.name);
+  const auto now = DataFootprint::from_provenance(layer.provenance, layer.name);
+  if (earlier && now)
+    layer.provenance["footprint"] = earlier->united(*now).to_json();
+  else
+    layer.provenance.erase("footprint");
+  return layer;
+}
+
 }  // namespace
 
 RasterIngestReport ingest_raster(const std::string& store_path,
@@ -141,8 +156,9 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   report.resampling = plan.resampling;
 
   auto store = fresh ? created.get() : Store::open(store_path, Store::Mode::Create);
-  const bool new_layer = !store->layer(layer.name);
-  store->create_layer(layer);
+  const std::optional<LayerInfo> existing = store->layer(layer.name);
+  const bool new_layer = !existing;
+  store->create_layer(with_earlier_footprint(layer, existing));
   std::vector<CellId> todo = plan.cells;
   int64_t run = 0;
   if (o.resume) {

@@ -54,20 +54,31 @@ TEST(IngestSharedData, MtRainierSrtmKeepsVoids) {
 }
 
 // The layer records where its samples come from: the source's outline (its pixels' outer edges,
-// from its geotransform) within --bbox. Every sample with data lies inside it.
+// from its geotransform) within --bbox, and a later ingest into the layer adds its own. Every
+// sample with data lies inside it.
 TEST(IngestSharedData, MtRainierFootprintIsRecorded) {
   REQUIRE_SHARED(tif, "srtm3/mt_rainier_90m.tif");
   RasterIngestOptions o;
   o.layer = "dem";
   o.as = "dem";
   o.bbox = std::array<double, 4>{-121.6, 46.3, -121.2, 46.7};
-  const auto store = ingest(temp_dir(), "rainier", {tif}, o);
-  const std::optional<DataFootprint> footprint =
-      DataFootprint::from_provenance(store->require_layer("dem").provenance, "dem");
-  ASSERT_TRUE(footprint);
-  EXPECT_TRUE(footprint->contains({-121.4, 46.5}));
-  EXPECT_FALSE(footprint->contains({-121.7, 46.5}));  // in the source, beyond the box
-  EXPECT_FALSE(footprint->contains({-121.4, 46.8}));
+  const std::string dir = temp_dir();
+  const auto footprint = [&] {
+    return DataFootprint::from_provenance(
+        ingest(dir, "rainier", {tif}, o)->require_layer("dem").provenance, "dem");
+  };
+  const std::optional<DataFootprint> box = footprint();
+  ASSERT_TRUE(box);
+  EXPECT_TRUE(box->contains({-121.4, 46.5}));
+  EXPECT_FALSE(box->contains({-121.7, 46.5}));  // in the source, beyond the box
+  EXPECT_FALSE(box->contains({-121.4, 46.8}));
+  o.bbox = std::array<double, 4>{-121.9, 46.75, -121.7, 46.9};
+  const std::optional<DataFootprint> boxes = footprint();
+  ASSERT_TRUE(boxes);
+  EXPECT_TRUE(boxes->contains({-121.4, 46.5}));
+  EXPECT_TRUE(boxes->contains({-121.8, 46.8}));
+  EXPECT_FALSE(boxes->contains({-121.7, 46.5}));
+  EXPECT_EQ(footprint()->to_json(), boxes->to_json());  // the same ingest again adds nothing
   // The source's edge: 1201 pixels of 3" from -122.00042, 47.00042.
   o.bbox.reset();
   o.layer = "whole";
