@@ -72,7 +72,10 @@ double Horizon::towards(double azimuth) const {
 }
 
 SolarModel::SolarModel(const SolarOptions& options)
-    : options_(options), sun_(sun_samples(options)), air_mass_(kAirMassSamples) {
+    : options_(options),
+      sun_(sun_samples(options)),
+      air_mass_(kAirMassSamples),
+      log_transmissivity_(std::log(options.transmissivity)) {
   for (int i = 0; i < kAirMassSamples; ++i)
     air_mass_[size_t(i)] =
         sea_level_air_mass(options.atmosphere, double(i) / (kAirMassSamples - 1));
@@ -89,7 +92,7 @@ double SolarModel::beam(double up, double pressure) const {
   const double m = pressure * air_mass(up);
   if (options_.atmosphere == Atmosphere::Linke)
     return std::exp(-0.8662 * options_.linke_turbidity * m * rayleigh_thickness(m));
-  return options_.transmissivity == 1 ? 1 : std::exp(std::log(options_.transmissivity) * m);
+  return options_.transmissivity == 1 ? 1 : std::exp(log_transmissivity_ * m);
 }
 
 void SolarModel::mark_directions(double lat_deg, std::vector<char>& used) const {

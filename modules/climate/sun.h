@@ -75,6 +75,7 @@ class SolarModel {
   SolarOptions options_;
   std::vector<SunSample> sun_;
   std::vector<double> air_mass_;  // at up = i / (size - 1)
+  double log_transmissivity_;     // once, not per sun position
 };
 
 }  // namespace maquette::climate
