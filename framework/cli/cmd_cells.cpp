@@ -2,6 +2,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -30,6 +31,7 @@ struct CellsOptions {
   bool compact = false;
   int tile_size = 256;
   int edge_points = 16;
+  double max_cells = 1e9;
 };
 
 Containment parse_mode(const std::string& mode) {
@@ -68,33 +70,66 @@ void print_cell_info(const CellsOptions& o) {
   std::printf("boundary  %s\n", boundary.dump().c_str());
 }
 
+// Prints cells as they come: one id a line, or the items of one JSON array.
+class CellPrinter {
+ public:
+  explicit CellPrinter(bool json) : json_(json) {}
+  void operator()(CellId cell) {
+    const std::string id = cell.ToText();
+    if (json_)
+      std::printf(count_ == 0 ? "[\"%s\"" : ",\"%s\"", id.c_str());
+    else
+      std::printf("%s\n", id.c_str());
+    ++count_;
+  }
+  void finish() const {
+    if (json_) std::printf(count_ == 0 ? "[]\n" : "]\n");
+  }
+  int64_t count() const { return count_; }
+
+ private:
+  bool json_;
+  int64_t count_ = 0;
+};
+
+// Streams the cover: cells are printed as the grid finds them, so that any cover within
+// --max-cells is listed in bounded memory.
 void print_cover(const CellsOptions& o) {
   CellId::CheckLevel(o.level);
   const Grid& grid = default_grid();
   const Containment mode = parse_mode(o.mode);
-  std::vector<CellId> cells;
+  std::vector<PolygonRings> polygons;
   if (!o.geojson.empty()) {
-    const auto polygons = read_geojson_polygons(o.geojson);
-    check_cover_size(polygons, o.level, o.geojson);
-    cells = cover_geojson(grid, polygons, o.level, mode);
+    polygons = read_geojson_polygons(o.geojson);
   } else if (o.bbox.size() == 4) {
-    cells = cover_box(grid, o.bbox, o.level, mode, "--bbox");
+    check_bbox(o.bbox, "--bbox");
   } else {
     throw Error("cells cover needs --bbox W S E N or --geojson FILE");
   }
-  if (cells.empty())
+  check_cover_size(polygons.empty() ? cover_size_estimate(o.bbox, o.level)
+                                    : cover_size_estimate(polygons, o.level),
+                   o.max_cells, o.level, polygons.empty() ? "--bbox" : o.geojson,
+                   "use a coarser level or a smaller region, or raise --max-cells");
+
+  CellPrinter print(o.json_out);
+  StreamCompactor compactor(std::ref(print));
+  const std::function<void(CellId)> visit = [&](CellId cell) {
+    if (o.compact)
+      compactor.add(cell);
+    else
+      for_each_at_level(cell, o.level, std::ref(print));
+  };
+  if (polygons.empty())
+    grid.visit_cover_bbox(o.bbox[0], o.bbox[1], o.bbox[2], o.bbox[3], o.level, mode, visit);
+  else
+    grid.visit_cover_polygons(polygons, o.level, mode, visit);
+  compactor.finish();
+  print.finish();
+  if (print.count() == 0)
     spdlog::warn("no cell at level {} {} the region", o.level,
                  mode == Containment::Full      ? "lies wholly inside"
                  : mode == Containment::Overlap ? "overlaps"
                                                 : "has its centre in");
-  if (o.compact) cells = compact(cells);
-  if (o.json_out) {
-    json ids = json::array();
-    for (CellId c : cells) ids.push_back(c.ToText());
-    std::cout << ids.dump() << "\n";
-    return;
-  }
-  for (CellId c : cells) std::printf("%s\n", c.ToText().c_str());
 }
 
 void print_levels(const CellsOptions& o) {
@@ -168,6 +203,11 @@ void add_cells_command(CLI::App& app) {
   cover->add_flag("--compact", opts->compact,
                   "Replace complete sets of 4 siblings by their parent");
   cover->add_flag("--json", opts->json_out, "Print a JSON array");
+  cover
+      ->add_option("--max-cells", opts->max_cells,
+                   "Refuse regions holding more cells at the level than this (estimated from "
+                   "their lon/lat area; cells are streamed, so only the output's size bounds it)")
+      ->capture_default_str();
   cover->callback([opts] { print_cover(*opts); });
 
   CLI::App* levels =

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/region.h"
 
 namespace maquette {
 namespace {
@@ -92,28 +93,13 @@ double cells_in_box(double west, double south, double east, double north, int le
   return share * CellId::kNumFaces * std::ldexp(1.0, 2 * level);
 }
 
-void check_cover_size(double cells, int level, const std::string& what) {
-  if (cells <= kMaxCoverCells) return;
-  char text[64];
-  std::snprintf(text, sizeof text, "%.3g", cells);
-  throw Error(what + " holds about " + text + " cells at level " + std::to_string(level) +
-              ", over the limit of " + std::to_string(int64_t(kMaxCoverCells)) +
-              " cells a cover lists: use a coarser level or a smaller region");
-}
-
 }  // namespace
 
-std::vector<CellId> cover_box(const Grid& grid, const std::vector<double>& bbox, int level,
-                              Containment mode, const std::string& option) {
-  check_bbox(bbox, option);
-  CellId::CheckLevel(level);
-  check_cover_size(cells_in_box(bbox[0], bbox[1], bbox[2], bbox[3], level), level, option);
-  return grid.cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], level, mode);
+double cover_size_estimate(const std::vector<double>& bbox, int level) {
+  return cells_in_box(bbox[0], bbox[1], bbox[2], bbox[3], level);
 }
 
-void check_cover_size(const std::vector<PolygonRings>& polygons, int level,
-                      const std::string& what) {
-  CellId::CheckLevel(level);
+double cover_size_estimate(const std::vector<PolygonRings>& polygons, int level) {
   double west = 180, south = 90, east = -180, north = -90;
   for (const PolygonRings& p : polygons)
     for (const LonLat& q : p.front()) {
@@ -122,20 +108,39 @@ void check_cover_size(const std::vector<PolygonRings>& polygons, int level,
       south = std::min(south, q.lat);
       north = std::max(north, q.lat);
     }
-  if (!polygons.empty())
-    check_cover_size(cells_in_box(west, south, std::min(east, west + 360), north, level), level,
-                     what);
+  return polygons.empty() ? 0 : cells_in_box(west, south, std::min(east, west + 360), north, level);
+}
+
+void check_cover_size(double cells, double limit, int level, const std::string& what,
+                      const std::string& advice) {
+  if (cells <= limit) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g", cells);
+  throw Error(what + " holds about " + text + " cells at level " + std::to_string(level) +
+              ", over the limit of " + std::to_string(int64_t(limit)) +
+              " cells a cover lists: " + advice);
+}
+
+std::vector<CellId> cover_box(const Grid& grid, const std::vector<double>& bbox, int level,
+                              Containment mode, const std::string& option) {
+  check_bbox(bbox, option);
+  CellId::CheckLevel(level);
+  check_cover_size(cover_size_estimate(bbox, level), kMaxCoverCells, level, option);
+  return grid.cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], level, mode);
+}
+
+void check_cover_size(const std::vector<PolygonRings>& polygons, int level,
+                      const std::string& what) {
+  CellId::CheckLevel(level);
+  check_cover_size(cover_size_estimate(polygons, level), kMaxCoverCells, level, what);
 }
 
 std::vector<CellId> cover_geojson(const Grid& grid, const std::vector<PolygonRings>& polygons,
                                   int level, Containment mode) {
   std::vector<CellId> cells;
-  for (const PolygonRings& p : polygons) {
-    const auto c = grid.cover_polygon(p, level, mode);
-    cells.insert(cells.end(), c.begin(), c.end());
-  }
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  grid.visit_cover_polygons(polygons, level, mode, [&cells, level](CellId cell) {
+    for_each_at_level(cell, level, [&cells](CellId c) { cells.push_back(c); });
+  });
   return cells;
 }
 

@@ -23,6 +23,12 @@ std::vector<PolygonRings> read_geojson_polygons(const std::string& path);
 // refused first, with an estimate of the count from their lon/lat area.
 inline constexpr double kMaxCoverCells = 2e7;
 
+// Estimates of the cells at `level` in a box W S E N, and in the polygons' bounding box.
+double cover_size_estimate(const std::vector<double>& bbox, int level);
+double cover_size_estimate(const std::vector<PolygonRings>& polygons, int level);
+// Throws maquette::Error naming `what`, the estimate `cells` and `advice` when it is over `limit`.
+void check_cover_size(double cells, double limit, int level, const std::string& what,
+                      const std::string& advice = "use a coarser level or a smaller region");
 // Throws maquette::Error naming `what` with the estimate when the polygons' bounding box holds
 // more than kMaxCoverCells cells at the level.
 void check_cover_size(const std::vector<PolygonRings>& polygons, int level,

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -96,6 +97,16 @@ class Grid {
   // Cells covering a polygon given as rings (first the outer ring, then holes) of lon/lat.
   virtual std::vector<CellId> cover_polygon(const std::vector<std::vector<LonLat>>& rings,
                                             int level, Containment mode) const = 0;
+  // The covers above visited in id order without being held, for covers too large to hold: a
+  // cell coarser than `level` stands for all its descendants at `level` (it lies inside the
+  // region); each cell at `level` is visited once, in one of these or as itself. The polygons'
+  // cover is that of their union.
+  virtual void visit_cover_bbox(double west, double south, double east, double north, int level,
+                                Containment mode,
+                                const std::function<void(CellId)>& visit) const = 0;
+  virtual void visit_cover_polygons(const std::vector<std::vector<std::vector<LonLat>>>& polygons,
+                                    int level, Containment mode,
+                                    const std::function<void(CellId)>& visit) const = 0;
 };
 
 // The default grid: rHEALPix on WGS84 (see grids/rhealpix).

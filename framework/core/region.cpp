@@ -20,21 +20,36 @@ std::vector<CellId> normalize(std::vector<CellId> cells) {
   return out;
 }
 
+void StreamCompactor::add(CellId cell) {
+  // Held cells may still merge only if this cell starts where the last one's next sibling does.
+  const bool continues = !held_.empty() && cell.range_min() == held_.back().next().range_min();
+  if (!continues) finish();
+  if (!continues && (cell.is_face() || cell.parent().range_min() != cell.range_min()))
+    return emit_(cell);  // not the first of its siblings: never merged
+  held_.push_back(cell);
+  // Four complete siblings are the last four held, in digit order.
+  while (held_.size() >= 4 && !held_.back().is_face()) {
+    const CellId parent = held_.back().parent();
+    const auto first = held_.end() - 4;
+    bool complete = true;
+    for (int d = 0; d < 4; ++d) complete = complete && first[d] == parent.child(d);
+    if (!complete) break;
+    held_.erase(first, held_.end());
+    held_.push_back(parent);
+  }
+  if (held_.back().is_face()) finish();
+}
+
+void StreamCompactor::finish() {
+  for (const CellId cell : held_) emit_(cell);
+  held_.clear();
+}
+
 std::vector<CellId> compact(std::vector<CellId> cells) {
   std::vector<CellId> out;
-  for (const CellId cell : normalize(std::move(cells))) {
-    out.push_back(cell);
-    // Sorted disjoint cells: four complete siblings are the last four pushed, in digit order.
-    while (out.size() >= 4 && !out.back().is_face()) {
-      const CellId parent = out.back().parent();
-      const auto first = out.end() - 4;
-      bool complete = true;
-      for (int d = 0; d < 4; ++d) complete = complete && first[d] == parent.child(d);
-      if (!complete) break;
-      out.erase(first, out.end());
-      out.push_back(parent);
-    }
-  }
+  StreamCompactor compactor([&out](CellId cell) { out.push_back(cell); });
+  for (const CellId cell : normalize(std::move(cells))) compactor.add(cell);
+  compactor.finish();
   return out;
 }
 
@@ -45,10 +60,8 @@ std::vector<CellId> uncompact(std::span<const CellId> cells, int level) {
   for (const CellId cell : cells)
     coarse.push_back(cell.level() > level ? cell.parent(level) : cell);
   std::vector<CellId> out;
-  for (const CellId cell : normalize(std::move(coarse))) {
-    const CellId end = cell.range_max().parent(level).next();
-    for (CellId c = cell.range_min().parent(level); c != end; c = c.next()) out.push_back(c);
-  }
+  for (const CellId cell : normalize(std::move(coarse)))
+    for_each_at_level(cell, level, [&out](CellId c) { out.push_back(c); });
   return out;
 }
 

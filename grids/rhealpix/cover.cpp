@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+
+#include "core/region.h"
 
 namespace maquette {
 namespace {
@@ -97,54 +100,70 @@ std::vector<LonLat> inset_ring(const RHealpixProjection& projection, CellId cell
 
 class Coverer {
  public:
-  Coverer(const RHealpixProjection& projection, const LonLatPolygon& region, int level,
-          Containment mode)
-      : projection_(projection), region_(region), level_(level), mode_(mode) {}
+  Coverer(const RHealpixProjection& projection, std::span<const LonLatPolygon> regions, int level,
+          Containment mode, const std::function<void(CellId)>& visit)
+      : projection_(projection), regions_(regions), level_(level), mode_(mode), visit_(visit) {}
 
-  std::vector<CellId> run() {
-    std::vector<uint32_t> edges(region_.num_edges());
-    std::iota(edges.begin(), edges.end(), 0U);
-    for (int face = 0; face < CellId::kNumFaces; ++face) refine(CellId::FromFace(face), edges);
-    return std::move(out_);
+  void run() {
+    Candidates all(regions_.size());
+    for (size_t i = 0; i < regions_.size(); ++i) {
+      all[i].emplace(regions_[i].num_edges());
+      std::iota(all[i]->begin(), all[i]->end(), 0U);
+    }
+    for (int face = 0; face < CellId::kNumFaces; ++face) refine(CellId::FromFace(face), all);
   }
 
  private:
-  void refine(CellId cell, const std::vector<uint32_t>& candidates) {
-    std::vector<uint32_t> crossing;
-    const Relation relation = region_.relate(cell_rect(projection_, cell), candidates, crossing);
-    if (relation == Relation::Inside) {
-      const CellId end = cell.range_max().parent(level_).next();
-      for (CellId c = cell.range_min().parent(level_); c != end; c = c.next()) out_.push_back(c);
-    } else if (relation == Relation::Crosses && cell.level() < level_) {
-      for (int d = 0; d < 4; ++d) refine(cell.child(d), crossing);
-    } else if (relation == Relation::Crosses && in_boundary_cell(cell, crossing)) {
-      out_.push_back(cell);
+  // Per region, the edges that may cross a cell; empty optional: the region is disjoint from it.
+  using Candidates = std::vector<std::optional<std::vector<uint32_t>>>;
+
+  void refine(CellId cell, const Candidates& candidates) {
+    const LonLatRect rect = cell_rect(projection_, cell);
+    Candidates crossing(regions_.size());
+    bool crosses = false;
+    for (size_t i = 0; i < regions_.size(); ++i) {
+      if (!candidates[i]) continue;
+      std::vector<uint32_t> edges;
+      const Relation relation = regions_[i].relate(rect, *candidates[i], edges);
+      if (relation == Relation::Inside) return visit_(cell);
+      if (relation == Relation::Crosses) {
+        crossing[i] = std::move(edges);
+        crosses = true;
+      }
     }
+    if (!crosses) return;
+    if (cell.level() < level_) {
+      for (int d = 0; d < 4; ++d) refine(cell.child(d), crossing);
+      return;
+    }
+    for (size_t i = 0; i < regions_.size(); ++i)
+      if (crossing[i] && in_boundary_cell(regions_[i], cell, *crossing[i])) return visit_(cell);
   }
 
   // A cell at the target level whose rectangle crosses the region's boundary (`crossing`: the
   // region edges meeting the rectangle). When the cell is its rectangle, an edge crosses its
   // interior: it overlaps the region and is not inside it. Other cells (polar) are tested by
   // their densified boundary.
-  bool in_boundary_cell(CellId cell, const std::vector<uint32_t>& crossing) const {
+  bool in_boundary_cell(const LonLatPolygon& region, CellId cell,
+                        const std::vector<uint32_t>& crossing) const {
     switch (mode_) {
       case Containment::Centre:
-        return region_.contains(projection_.from_face(cell_point(cell, 0.5, 0.5)));
+        return region.contains(projection_.from_face(cell_point(cell, 0.5, 0.5)));
       case Containment::Overlap:
         return is_lonlat_rectangle(cell) ||
-               region_.relate_ring(inset_ring(projection_, cell), crossing) != Relation::Disjoint;
+               region.relate_ring(inset_ring(projection_, cell), crossing) != Relation::Disjoint;
       case Containment::Full:
         return !is_lonlat_rectangle(cell) &&
-               region_.relate_ring(inset_ring(projection_, cell), crossing) == Relation::Inside;
+               region.relate_ring(inset_ring(projection_, cell), crossing) == Relation::Inside;
     }
     return false;
   }
 
   const RHealpixProjection& projection_;
-  const LonLatPolygon& region_;
+  const std::span<const LonLatPolygon> regions_;
   const int level_;
   const Containment mode_;
-  std::vector<CellId> out_;
+  const std::function<void(CellId)>& visit_;
 };
 
 }  // namespace
@@ -160,7 +179,16 @@ LonLatRect cell_rect(const RHealpixProjection& projection, CellId cell) {
 
 std::vector<CellId> cover(const RHealpixProjection& projection, const LonLatPolygon& region,
                           int level, Containment mode) {
-  return Coverer(projection, region, level, mode).run();
+  std::vector<CellId> out;
+  visit_cover(projection, std::span(&region, 1), level, mode, [&out, level](CellId cell) {
+    for_each_at_level(cell, level, [&out](CellId c) { out.push_back(c); });
+  });
+  return out;
+}
+
+void visit_cover(const RHealpixProjection& projection, std::span<const LonLatPolygon> regions,
+                 int level, Containment mode, const std::function<void(CellId)>& visit) {
+  Coverer(projection, regions, level, mode, visit).run();
 }
 
 }  // namespace maquette

@@ -3,6 +3,8 @@
 // disjoint from it none, and only cells crossing the region's boundary are split.
 #pragma once
 
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "core/grid.h"
@@ -23,5 +25,10 @@ LonLatRect cell_rect(const RHealpixProjection& projection, CellId cell);
 // boundary passes that close to theirs.
 std::vector<CellId> cover(const RHealpixProjection& projection, const LonLatPolygon& region,
                           int level, Containment mode);
+// The cover of the union of `regions`, visited in id order without being held: a cell coarser
+// than `level` stands for all its descendants at `level` (it lies inside a region); each cell at
+// `level` is visited once, in one of these or as itself.
+void visit_cover(const RHealpixProjection& projection, std::span<const LonLatPolygon> regions,
+                 int level, Containment mode, const std::function<void(CellId)>& visit);
 
 }  // namespace maquette

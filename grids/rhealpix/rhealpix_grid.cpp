@@ -159,8 +159,12 @@ std::vector<CellId> RHealpixGrid::vertex_neighbours(CellId cell) const {
   return out;
 }
 
-std::vector<CellId> RHealpixGrid::cover_bbox(double west, double south, double east, double north,
-                                             int level, Containment mode) const {
+namespace {
+
+// A lon/lat box as a polygon's ring with continuous longitudes (east beyond 180 across the
+// antimeridian, [-180, 540) for every longitude: wide enough to hold every cell's unwrapped
+// range).
+std::vector<LonLat> box_ring(double west, double south, double east, double north, int level) {
   CellId::CheckLevel(level);
   if (!(south >= -90 && north <= 90 && south <= north) || !std::isfinite(west) ||
       !std::isfinite(east)) {
@@ -169,19 +173,41 @@ std::vector<CellId> RHealpixGrid::cover_bbox(double west, double south, double e
                 ": expected finite longitudes and -90 <= south <= north <= 90");
   }
   if (east - west >= 360) {
-    // Every longitude: wide enough to hold every cell's unwrapped range, [-180, 540).
     west = -180;
     east = 540;
   } else if (west > east) {
-    east += 360;  // across the antimeridian
+    east += 360;
   }
-  return cover_polygon({{{west, south}, {east, south}, {east, north}, {west, north}}}, level, mode);
+  return {{west, south}, {east, south}, {east, north}, {west, north}};
+}
+
+}  // namespace
+
+std::vector<CellId> RHealpixGrid::cover_bbox(double west, double south, double east, double north,
+                                             int level, Containment mode) const {
+  return cover_polygon({box_ring(west, south, east, north, level)}, level, mode);
 }
 
 std::vector<CellId> RHealpixGrid::cover_polygon(const std::vector<std::vector<LonLat>>& rings,
                                                 int level, Containment mode) const {
   CellId::CheckLevel(level);
   return cover(projection_, LonLatPolygon(rings), level, mode);
+}
+
+void RHealpixGrid::visit_cover_bbox(double west, double south, double east, double north, int level,
+                                    Containment mode,
+                                    const std::function<void(CellId)>& visit) const {
+  const LonLatPolygon box({box_ring(west, south, east, north, level)});
+  maquette::visit_cover(projection_, std::span(&box, 1), level, mode, visit);
+}
+
+void RHealpixGrid::visit_cover_polygons(
+    const std::vector<std::vector<std::vector<LonLat>>>& polygons, int level, Containment mode,
+    const std::function<void(CellId)>& visit) const {
+  CellId::CheckLevel(level);
+  std::vector<LonLatPolygon> regions;
+  for (const auto& rings : polygons) regions.emplace_back(rings);
+  maquette::visit_cover(projection_, regions, level, mode, visit);
 }
 
 const Grid& default_grid() {

@@ -37,6 +37,11 @@ class RHealpixGrid final : public Grid {
                                  Containment mode) const override;
   std::vector<CellId> cover_polygon(const std::vector<std::vector<LonLat>>& rings, int level,
                                     Containment mode) const override;
+  void visit_cover_bbox(double west, double south, double east, double north, int level,
+                        Containment mode, const std::function<void(CellId)>& visit) const override;
+  void visit_cover_polygons(const std::vector<std::vector<std::vector<LonLat>>>& polygons,
+                            int level, Containment mode,
+                            const std::function<void(CellId)>& visit) const override;
 
   const RHealpixProjection& projection() const { return projection_; }
 
