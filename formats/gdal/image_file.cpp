@@ -60,8 +60,13 @@ void write_image(std::span<const uint8_t> pixels, int width, int height, int ban
   if (path.starts_with("/vsi"))
     return create_image(pixels, width, height, bands, format, path, path);
   OutputFile out(path, {".aux.xml"});
-  create_image(pixels, width, height, bands, format, out.temp_path(), path);
+  write_image(pixels, width, height, bands, format, out);
   out.commit();
+}
+
+void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
+                 const ImageFormat& format, const OutputFile& out) {
+  create_image(pixels, width, height, bands, format, out.temp_path(), out.path());
 }
 
 std::vector<uint8_t> encode_image(std::span<const uint8_t> pixels, int width, int height, int bands,

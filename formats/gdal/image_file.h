@@ -9,6 +9,8 @@
 
 namespace maquette {
 
+class OutputFile;
+
 struct ImageFormat {
   std::string driver;                // a GDAL driver with CreateCopy: "PNG", "JPEG"
   std::vector<std::string> options;  // its creation options, "KEY=VALUE"
@@ -19,6 +21,10 @@ struct ImageFormat {
 // maquette::Error naming the path and GDAL's reason.
 void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
                  const ImageFormat& format, const std::string& path);
+
+// The same into the temporary file of `out`, for a writer that adds sidecars before committing it.
+void write_image(std::span<const uint8_t> pixels, int width, int height, int bands,
+                 const ImageFormat& format, const OutputFile& out);
 
 // The same, encoded into memory: the file's bytes.
 std::vector<uint8_t> encode_image(std::span<const uint8_t> pixels, int width, int height, int bands,

@@ -60,19 +60,21 @@ void export_geotiff(const Store& store, const Grid& grid, const GeoTiffExport& s
       cells_at_level(layer_tile_cells(store, grid, layer, spec.region), level);
 
   OutputFile result(out, {".aux.xml"});
-  if (crs.rhealpix) {
-    const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
-    check_size(spec, layer, double(extent.width) * double(extent.height));
-    write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
-                        result.temp_path());
-  } else {
-    WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
-    warp.resolution = spec.resolution.value_or(
-        default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs));
-    const WarpGrid pixels = warp_grid(grid, cells, warp);
-    check_size(spec, layer, double(pixels.width) * double(pixels.height));
-    write_warped_geotiff(store, grid, layer, cells, level, warp, pixels, result.temp_path());
-  }
+  result.write([&] {
+    if (crs.rhealpix) {
+      const PlaneExtent extent = plane_extent(grid, cells, layer.tile_size, spec.region.bbox);
+      check_size(spec, layer, double(extent.width) * double(extent.height));
+      write_plane_geotiff(store, grid, layer, cells, level, extent, spec.region.bbox,
+                          result.temp_path());
+    } else {
+      WarpSpec warp{&crs.srs, 0, layer.semantics == Semantics::Categorical, spec.region.bbox};
+      warp.resolution = spec.resolution.value_or(
+          default_resolution(grid, layer, level, cells[cells.size() / 2], crs.srs));
+      const WarpGrid pixels = warp_grid(grid, cells, warp);
+      check_size(spec, layer, double(pixels.width) * double(pixels.height));
+      write_warped_geotiff(store, grid, layer, cells, level, warp, pixels, result.temp_path());
+    }
+  });
   result.commit();
 }
 

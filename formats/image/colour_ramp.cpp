@@ -32,6 +32,20 @@ constexpr Stop kSlope[] = {{0.00, {255, 255, 255}},
                            {0.75, {190, 40, 50}},
                            {1.00, {70, 10, 80}}};
 
+// Matplotlib's viridis (CC0), every 15th of its 256 entries.
+constexpr Stop kViridis[] = {
+    {0 / 17.0, {68, 1, 84}},     {1 / 17.0, {72, 23, 105}},   {2 / 17.0, {71, 42, 122}},
+    {3 / 17.0, {67, 61, 132}},   {4 / 17.0, {61, 78, 138}},   {5 / 17.0, {53, 94, 141}},
+    {6 / 17.0, {46, 109, 142}},  {7 / 17.0, {41, 123, 142}},  {8 / 17.0, {35, 137, 142}},
+    {9 / 17.0, {31, 151, 139}},  {10 / 17.0, {33, 165, 133}}, {11 / 17.0, {46, 179, 124}},
+    {12 / 17.0, {70, 192, 111}}, {13 / 17.0, {101, 203, 94}}, {14 / 17.0, {137, 213, 72}},
+    {15 / 17.0, {176, 221, 47}}, {16 / 17.0, {216, 226, 25}}, {17 / 17.0, {253, 231, 37}}};
+// ColorBrewer's RdBu (11 classes) from blue to red, near-white in the middle.
+constexpr Stop kDiverging[] = {
+    {0.0, {5, 48, 97}},     {0.1, {33, 102, 172}},  {0.2, {67, 147, 195}},  {0.3, {146, 197, 222}},
+    {0.4, {209, 229, 240}}, {0.5, {247, 247, 247}}, {0.6, {253, 219, 199}}, {0.7, {244, 165, 130}},
+    {0.8, {214, 96, 77}},   {0.9, {178, 24, 43}},   {1.0, {103, 0, 31}}};
+
 template <size_t N>
 std::array<uint8_t, 3> interpolate(const Stop (&stops)[N], double t) {
   size_t i = 1;
@@ -48,17 +62,23 @@ std::array<uint8_t, 3> interpolate(const Stop (&stops)[N], double t) {
 
 Ramp parse_ramp(std::string_view name) {
   if (name == "grey" || name == "gray") return Ramp::Grey;
+  if (name == "viridis") return Ramp::Viridis;
+  if (name == "diverging") return Ramp::Diverging;
   if (name == "terrain") return Ramp::Terrain;
   if (name == "slope") return Ramp::Slope;
   if (name == "hypsometric") return Ramp::Hypsometric;
   throw Error("unknown colour ramp '" + std::string(name) +
-              "' (expected grey, terrain, slope or hypsometric)");
+              "' (expected grey, viridis, diverging, terrain, slope or hypsometric)");
 }
 
 std::array<uint8_t, 3> ramp_colour(Ramp ramp, double t) {
   if (ramp == Ramp::Hypsometric) return interpolate(kHypsometric, std::isfinite(t) ? t : 0.0);
   t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
   switch (ramp) {
+    case Ramp::Viridis:
+      return interpolate(kViridis, t);
+    case Ramp::Diverging:
+      return interpolate(kDiverging, t);
     case Ramp::Terrain:
       return interpolate(kTerrain, t);
     case Ramp::Slope:

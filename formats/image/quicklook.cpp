@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "core/output_file.h"
+#include "gdal/gdal_env.h"
 #include "gdal/image_file.h"
 #include "image/hillshade.h"
 #include "image/legend.h"
@@ -14,6 +18,8 @@
 
 namespace maquette {
 namespace {
+
+namespace fs = std::filesystem;
 
 // The q0 and q1 quantiles of the finite values of one channel.
 std::pair<double, double> channel_quantiles(const PictureRaster& m, int channel, double q0,
@@ -44,6 +50,27 @@ std::pair<double, double> stretch_range(const PictureRaster& m, const QuicklookS
                      : channel_quantiles(m, channel, kDisplayStretch.first, kDisplayStretch.second);
 }
 
+// How a one-channel picture is coloured: the style's ramp, or one chosen by the values (a
+// diverging ramp when they span both signs, else viridis), between the values mapped to its ends:
+// symmetric around 0 for a diverging ramp, so that 0 gets its middle colour; the full range of
+// heights for the hypsometric ramp's legend (it maps metres, not a stretch).
+struct RampScale {
+  Ramp ramp = Ramp::Grey;
+  double low = 0, high = 1;
+};
+
+RampScale ramp_scale(const PictureRaster& m, const QuicklookStyle& style) {
+  if (style.ramp == Ramp::Hypsometric) {
+    const auto [low, high] = channel_quantiles(m, 0, 0.0, 1.0);
+    return {Ramp::Hypsometric, low, high};
+  }
+  const auto [low, high] = stretch_range(m, style, 0);
+  const Ramp ramp = style.ramp.value_or(low < 0 && high > 0 ? Ramp::Diverging : Ramp::Viridis);
+  if (ramp != Ramp::Diverging) return {ramp, low, high};
+  const double reach = std::max(std::abs(low), std::abs(high));
+  return {ramp, -reach, reach};
+}
+
 // The legend of a one-channel or categorical picture; none for imagery.
 std::optional<Legend> legend_of(const PictureRaster& m, const QuicklookStyle& style) {
   if (style.classes) {
@@ -61,23 +88,33 @@ std::optional<Legend> legend_of(const PictureRaster& m, const QuicklookStyle& st
     return legend;
   }
   if (m.channels >= 3) return std::nullopt;
-  ColourBar bar{style.ramp, 0, 1, style.units};
-  std::tie(bar.low, bar.high) = style.ramp == Ramp::Hypsometric ? channel_quantiles(m, 0, 0.0, 1.0)
-                                                                : stretch_range(m, style, 0);
-  return Legend{bar};
+  const RampScale scale = ramp_scale(m, style);
+  return Legend{ColourBar{scale.ramp, scale.low, scale.high, style.units}};
 }
 
-// Writes the frame as OUT.aux.xml (through GDAL's side-car mechanism, which a read-only PNG
-// keeps there) and as the world file OUT.pgw.
-void write_georeference(const PictureFrame& frame, const std::string& path) {
+// Writes the frame beside the PNG being written: as its .aux.xml (through GDAL's side-car
+// mechanism, which a read-only PNG keeps there) and as the world file OUT.pgw.
+void write_georeference(const PictureFrame& frame, OutputFile& png) {
   std::array<double, 6> gt = frame.geotransform();
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-  if (!ds || ds->SetGeoTransform(gt.data()) != CE_None ||
-      ds->SetProjection(frame.crs_wkt().c_str()) != CE_None)
-    throw Error("cannot georeference " + path + ": " + CPLGetLastErrorMsg());
-  ds.reset();
-  if (!GDALWriteWorldFile(path.c_str(), "pgw", gt.data()))
-    throw Error("cannot write the world file of " + path + ": " + CPLGetLastErrorMsg());
+  {
+    const GdalErrorTrap trap;
+    GDALDatasetUniquePtr ds(
+        GDALDataset::Open(png.temp_path().c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    if (!ds || ds->SetGeoTransform(gt.data()) != CE_None ||
+        ds->SetProjection(frame.crs_wkt().c_str()) != CE_None)
+      throw Error("cannot georeference " + png.path() + ": " + CPLGetLastErrorMsg());
+    ds.reset();  // writes the .aux.xml
+    trap.check("cannot georeference " + png.path());
+  }
+  std::ostringstream text;
+  text.precision(17);
+  // The world file's order: x and y pixel sizes with the rotations between, then the centre of
+  // the top-left pixel.
+  for (const double v :
+       {gt[1], gt[4], gt[2], gt[5], gt[0] + gt[1] / 2 + gt[2] / 2, gt[3] + gt[4] / 2 + gt[5] / 2})
+    text << v << "\n";
+  const std::string world = fs::path(png.path()).replace_extension("pgw").string();
+  write_new_file(png.add_sidecar(world), text.str());
 }
 
 }  // namespace
@@ -86,8 +123,9 @@ RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style) 
   const std::vector<int> channels = drawn_channels(m, style);
   const bool rgb = channels.size() == 3;
   std::vector<std::pair<double, double>> ranges;
-  if (!style.classes)
+  if (rgb)
     for (int k : channels) ranges.push_back(stretch_range(m, style, k));
+  const RampScale scale = rgb || style.classes ? RampScale{} : ramp_scale(m, style);
   const std::vector<float> shade =
       style.hillshade && !rgb && !style.classes ? hillshade(m) : std::vector<float>{};
 
@@ -96,16 +134,15 @@ RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style) 
     for (int c = 0; c < m.width; ++c) {
       const float v0 = m.at(c, r, channels[0]);
       if (!std::isfinite(v0)) continue;  // transparent
-      auto t = [&](size_t k) {
-        return (m.at(c, r, channels[k]) - ranges[k].first) / (ranges[k].second - ranges[k].first);
-      };
       Rgb colour{};
       if (style.classes) {
         colour = class_colour(*style.classes, std::llround(v0));
       } else if (rgb) {
         for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(m.at(c, r, channels[k]), ranges[k]);
       } else {
-        colour = ramp_colour(style.ramp, style.ramp == Ramp::Hypsometric ? v0 : t(0));
+        colour = ramp_colour(scale.ramp, scale.ramp == Ramp::Hypsometric
+                                             ? v0
+                                             : (v0 - scale.low) / (scale.high - scale.low));
       }
       if (!shade.empty()) {
         const float s = shade[size_t(r) * size_t(m.width) + size_t(c)];
@@ -125,8 +162,12 @@ void write_quicklook_png(const PictureRaster& m, const QuicklookStyle& style,
   if (overlay && m.frame) overlay(image, *m.frame);
   if (style.legend)
     if (const auto legend = legend_of(m, style)) add_legend(image, *legend);
-  write_image(image.pixels, image.width, image.height, 4, {"PNG", {}}, path);
-  if (m.frame) write_georeference(*m.frame, path);
+  OutputFile png(path, {".aux.xml"});
+  png.write([&] {
+    write_image(image.pixels, image.width, image.height, 4, {"PNG", {}}, png);
+    if (m.frame) write_georeference(*m.frame, png);
+  });
+  png.commit();
 }
 
 }  // namespace maquette

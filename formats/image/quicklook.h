@@ -20,7 +20,9 @@
 namespace maquette {
 
 struct QuicklookStyle {
-  Ramp ramp = Ramp::Grey;
+  // One-channel layers; none: chosen by the values (diverging when they span both signs, else
+  // viridis).
+  std::optional<Ramp> ramp = std::nullopt;
   std::optional<std::pair<double, double>> range;  // value mapped to 0 and to 1
   bool hillshade = false;                          // one-channel layers: shade the ramp
   std::vector<int> bands = {};  // 0-based channels drawn as R, G, B (3+ channels; default 0 1 2)

@@ -1,15 +1,19 @@
 #include "vector/export_features.h"
 
 #include <cpl_error.h>
+#include <cpl_vsi.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
 
+#include <atomic>
 #include <map>
 #include <set>
+#include <span>
 
 #include "core/error.h"
 #include "core/output_file.h"
 #include "gdal/gdal_drivers.h"
+#include "gdal/gdal_env.h"
 #include "vector/feature_attributes.h"
 
 namespace maquette {
@@ -73,6 +77,27 @@ struct DatasetCloser {
   void operator()(GDALDataset* d) const { GDALClose(d); }
 };
 
+// A /vsimem/ file, unlinked when it goes.
+class MemoryFile {
+ public:
+  MemoryFile() {
+    static std::atomic<uint64_t> serial = 0;
+    path_ = "/vsimem/maquette_features_" + std::to_string(serial++) + ".geojson";
+  }
+  ~MemoryFile() { VSIUnlink(path_.c_str()); }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  const std::string& path() const { return path_; }
+  std::span<const char> bytes() const {
+    vsi_l_offset size = 0;
+    const GByte* data = VSIGetMemFileBuffer(path_.c_str(), &size, FALSE);
+    return {reinterpret_cast<const char*>(data), size_t(size)};
+  }
+
+ private:
+  std::string path_;
+};
+
 }  // namespace
 
 std::vector<Feature> features_in_region(const Store& store, const Grid& grid,
@@ -93,6 +118,7 @@ std::vector<Feature> features_in_region(const Store& store, const Grid& grid,
 
 void write_features(const LayerInfo& layer, const std::vector<Feature>& features,
                     FeatureFormat format, const std::string& out) {
+  init_gdal();  // GDAL's errors become ours, not lines on stderr
   register_all_gdal_drivers();
   const bool geojson = format == FeatureFormat::GeoJson;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(geojson ? "GeoJSON" : "GPKG");
@@ -103,38 +129,45 @@ void write_features(const LayerInfo& layer, const std::vector<Feature>& features
   for (const Feature& f : features) geometries.push_back(geometry_of(f, layer.name));
 
   OutputFile file(out);
-  CPLErrorReset();
-  std::unique_ptr<GDALDataset, DatasetCloser> ds;
-  {
-    // The GeoPackage driver warns about the temporary name's extension.
-    CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
-    ds.reset(driver->Create(file.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-  }
-  if (!ds) write_error(out, "cannot create it");
-  OGRSpatialReference wgs84;
-  wgs84.importFromEPSG(4326);
-  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  // GeoJSON: every digit of the stored doubles, so that a read gives back the same coordinates.
-  const char* geojson_options[] = {"SIGNIFICANT_FIGURES=17", nullptr};
-  OGRLayer* ol = ds->CreateLayer(layer.name.c_str(), &wgs84, common_type(geometries),
-                                 const_cast<char**>(geojson ? geojson_options : nullptr));
-  if (!ol) write_error(out, "cannot create layer '" + layer.name + "'");
-  for (const auto& field : fields_of(layer, features))
-    if (ol->CreateField(field.get()) != OGRERR_NONE)
-      write_error(out, std::string("cannot create field '") + field->GetNameRef() + "'");
-  if (!geojson && ds->StartTransaction() != OGRERR_NONE) write_error(out, "cannot start writing");
-  for (size_t i = 0; i < features.size(); ++i) {
-    OGRFeature f(ol->GetLayerDefn());
-    f.SetFID(features[i].fid);
-    f.SetGeometryDirectly(geometries[i].release());
-    set_feature_attributes(f, features[i].attributes);
-    if (ol->CreateFeature(&f) != OGRERR_NONE)
-      write_error(out, "feature " + std::to_string(features[i].fid));
-  }
-  if (!geojson && ds->CommitTransaction() != OGRERR_NONE) write_error(out, "cannot commit");
-  CPLErrorReset();
-  ds.reset();  // closes, flushing the file
-  if (CPLGetLastErrorType() >= CE_Failure) write_error(out, "cannot close it");
+  // GeoJSON is written in memory first, then to the file with every write checked: its driver
+  // does not report failed writes (on a full disk: a truncated file, and success).
+  const MemoryFile memory;
+  const std::string& target = geojson ? memory.path() : file.temp_path();
+  file.write([&] {
+    CPLErrorReset();
+    std::unique_ptr<GDALDataset, DatasetCloser> ds;
+    {
+      // The GeoPackage driver warns about the temporary name's extension.
+      CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
+      ds.reset(driver->Create(target.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    }
+    if (!ds) write_error(out, "cannot create it");
+    OGRSpatialReference wgs84;
+    wgs84.importFromEPSG(4326);
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    // GeoJSON: every digit of the stored doubles, so that a read gives back the same coordinates.
+    const char* geojson_options[] = {"SIGNIFICANT_FIGURES=17", nullptr};
+    OGRLayer* ol = ds->CreateLayer(layer.name.c_str(), &wgs84, common_type(geometries),
+                                   const_cast<char**>(geojson ? geojson_options : nullptr));
+    if (!ol) write_error(out, "cannot create layer '" + layer.name + "'");
+    for (const auto& field : fields_of(layer, features))
+      if (ol->CreateField(field.get()) != OGRERR_NONE)
+        write_error(out, std::string("cannot create field '") + field->GetNameRef() + "'");
+    if (!geojson && ds->StartTransaction() != OGRERR_NONE) write_error(out, "cannot start writing");
+    for (size_t i = 0; i < features.size(); ++i) {
+      OGRFeature f(ol->GetLayerDefn());
+      f.SetFID(features[i].fid);
+      f.SetGeometryDirectly(geometries[i].release());
+      set_feature_attributes(f, features[i].attributes);
+      if (ol->CreateFeature(&f) != OGRERR_NONE)
+        write_error(out, "feature " + std::to_string(features[i].fid));
+    }
+    if (!geojson && ds->CommitTransaction() != OGRERR_NONE) write_error(out, "cannot commit");
+    CPLErrorReset();
+    ds.reset();  // closes, flushing the file
+    if (CPLGetLastErrorType() >= CE_Failure) write_error(out, "cannot close it");
+    if (geojson) write_new_file(file.temp_path(), memory.bytes());
+  });
   file.commit();
 }
 

@@ -62,8 +62,9 @@ void add_png_command(CLI::App* exp) {
   add_region_options(cmd, o->region, "The lon/lat box the picture shows");
   cmd->add_option("--ramp", o->ramp,
                   "Colour ramp for one-channel layers: hypsometric (atlas tints by metres, water "
-                  "blue), or stretched: terrain, grey, slope (default: hypsometric for heights in "
-                  "metres, else grey)");
+                  "blue), or stretched: viridis, diverging (blue-white-red, centred on 0), grey, "
+                  "terrain, slope (default: hypsometric for heights in metres, else diverging for "
+                  "values of both signs, viridis for the others)");
   cmd->add_option("--projection", o->projection,
                   "lonlat, polar (Lambert azimuthal equal-area on the pole) or auto (polar for "
                   "a region around one pole)")

@@ -70,9 +70,10 @@ void run_export(const PngJob& o) {
   const Grid& grid = default_grid();
   const LayerInfo info = store->require_layer(o.layer);
   QuicklookStyle style;
-  style.ramp = !o.ramp.empty()                            ? parse_ramp(o.ramp)
-               : metres(info.units) && info.channels == 1 ? Ramp::Hypsometric
-                                                          : Ramp::Grey;
+  if (!o.ramp.empty())
+    style.ramp = parse_ramp(o.ramp);
+  else if (metres(info.units) && info.channels == 1)
+    style.ramp = Ramp::Hypsometric;
   if (!o.range.empty()) style.range = std::make_pair(o.range[0], o.range[1]);
   style.hillshade = o.hillshade;
   style.legend = o.legend;

@@ -27,33 +27,59 @@ int sync_file(const std::string& path) {
 
 }  // namespace
 
-OutputFile::OutputFile(std::string path, std::vector<std::string> sidecars)
-    : path_(std::move(path)), sidecars_(std::move(sidecars)) {
+OutputFile::OutputFile(std::string path, std::vector<std::string> suffixes)
+    : path_(std::move(path)) {
   static std::atomic<int> serial = 0;
   temp_ = path_ + ".part." + std::to_string(::getpid()) + "." + std::to_string(serial++);
+  for (const std::string& s : suffixes) sidecars_.push_back({path_ + s, temp_ + s});
 }
 
 OutputFile::~OutputFile() {
   if (committed_) return;
   ::unlink(temp_.c_str());
-  for (const std::string& s : sidecars_) ::unlink((temp_ + s).c_str());
+  for (const Sidecar& s : sidecars_) ::unlink(s.temp.c_str());
+}
+
+std::string OutputFile::add_sidecar(const std::string& final_path) {
+  sidecars_.push_back({final_path, final_path + temp_.substr(path_.size())});
+  return sidecars_.back().temp;
+}
+
+std::string OutputFile::with_final_names(std::string message) const {
+  const auto replace = [&message](const std::string& from, const std::string& to) {
+    for (size_t at = message.find(from); at != std::string::npos;
+         at = message.find(from, at + to.size()))
+      message.replace(at, from.size(), to);
+  };
+  for (const Sidecar& s : sidecars_) replace(s.temp, s.path);
+  replace(temp_, path_);
+  return message;
 }
 
 void OutputFile::commit(bool sync) {
-  if (const int err = sync ? sync_file(temp_) : 0; err != 0) fail(path_, err);
-  for (const std::string& s : sidecars_) {
-    ::unlink((path_ + s).c_str());  // a stale one would describe another file
-    if (::access((temp_ + s).c_str(), F_OK) != 0) continue;
-    if (const int err = sync ? sync_file(temp_ + s) : 0; err != 0) fail(path_ + s, err);
-    if (::rename((temp_ + s).c_str(), (path_ + s).c_str()) != 0) fail(path_ + s, errno);
+  if (sync) {
+    if (const int err = sync_file(temp_); err != 0) fail(path_, err);
+    for (const Sidecar& s : sidecars_)
+      if (::access(s.temp.c_str(), F_OK) == 0)
+        if (const int err = sync_file(s.temp); err != 0) fail(s.path, err);
   }
-  if (::rename(temp_.c_str(), path_.c_str()) != 0) fail(path_, errno);
+  std::vector<const std::string*> renamed;
+  const auto rename = [&renamed](const std::string& from, const std::string& to) {
+    if (::rename(from.c_str(), to.c_str()) == 0) return renamed.push_back(&to);
+    const int err = errno;
+    for (const std::string* done : renamed) ::unlink(done->c_str());
+    fail(to, err);
+  };
+  for (const Sidecar& s : sidecars_) {
+    ::unlink(s.path.c_str());  // a stale one would describe another file
+    if (::access(s.temp.c_str(), F_OK) == 0) rename(s.temp, s.path);
+  }
+  rename(temp_, path_);
   committed_ = true;
 }
 
-void write_file_whole(const std::string& path, std::span<const char> bytes) {
-  OutputFile out(path);
-  const int fd = ::open(out.temp_path().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+void write_new_file(const std::string& path, std::span<const char> bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(path, errno);
   for (size_t done = 0; done < bytes.size();) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
@@ -66,6 +92,11 @@ void write_file_whole(const std::string& path, std::span<const char> bytes) {
     done += size_t(n);
   }
   if (::close(fd) != 0) fail(path, errno);
+}
+
+void write_file_whole(const std::string& path, std::span<const char> bytes) {
+  OutputFile out(path);
+  out.write([&] { write_new_file(out.temp_path(), bytes); });
   out.commit(false);
 }
 

@@ -12,6 +12,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "run_cli.h"
 #include "synthetic_raster.h"
@@ -91,12 +93,29 @@ TEST(FileSystems, StoreOnAReadOnlyFileSystemIsReadAndNotWritten) {
   }
 }
 
-// Every writer onto a full file system: an error naming the file, and no file (nor a temporary
-// one, nor an .aux.xml) left behind.
+// 300 squares of 0.01 degrees around 7.5 E 45.5 N, as GeoJSON features.
+std::string squares(const std::string& dir) {
+  json features = json::array();
+  for (int i = 0; i < 300; ++i) {
+    const double w = 7.3 + 0.02 * (i % 20), s = 45.3 + 0.02 * (i / 20);
+    const json ring = {{w, s}, {w + 0.01, s}, {w + 0.01, s + 0.01}, {w, s + 0.01}, {w, s}};
+    features.push_back({{"type", "Feature"},
+                        {"properties", {{"n", i}}},
+                        {"geometry", {{"type", "Polygon"}, {"coordinates", {ring}}}}});
+  }
+  const std::string path = dir + "/squares.geojson";
+  std::ofstream(path) << json{{"type", "FeatureCollection"}, {"features", features}}.dump();
+  return path;
+}
+
+// Every writer onto a full file system: an error naming the file the user gave (not the
+// temporary one written), and no file (nor a temporary one, nor a sidecar) left behind.
 TEST(FileSystems, ExportsOntoAFullFileSystemFailAndLeaveNothing) {
   const std::string dir = temp_dir(), full = dir + "/full";
   const std::string store = dir + "/s.mqt";
   ASSERT_EQ(run_maquette("-q ingest " + store + " --layer d --as dem " + dem(dir)).exit_code, 0);
+  ASSERT_EQ(
+      run_maquette("-q ingest " + store + " --layer f --as features " + squares(dir)).exit_code, 0);
   const auto mount = Mount::make("mount -t tmpfs -o size=1m tmpfs " + full, full);
   if (!mount) GTEST_SKIP() << "cannot mount a tmpfs here (root needed)";
   // Filled but for 4 kB: every export below needs more.
@@ -104,18 +123,51 @@ TEST(FileSystems, ExportsOntoAFullFileSystemFailAndLeaveNothing) {
   const std::string s = store + " --layer d ";
   std::string cell = run_maquette("cells from-point 7.5 45.5 --level 8").out;
   cell.erase(cell.find_last_not_of("\n") + 1);
-  for (const std::string& args :
-       {"export gtiff " + s + full + "/d.tif",
-        "export gtiff " + s + full + "/d.tif --crs EPSG:4326", "export png " + s + full + "/d.png",
-        "export tiles3d " + store + " " + full + "/t --dem d",
-        "export glb " + store + " " + full + "/d.glb --dem d --cells " + cell,
-        "export drc " + store + " " + full + "/drc --dem d --cells " + cell}) {
-    const CliResult r = run_maquette(args);
+  for (const auto& [args, out] : std::vector<std::pair<std::string, std::string>>{
+           {"export gtiff " + s, "d.tif"},
+           {"export gtiff " + s + "--crs EPSG:4326 ", "d.tif"},
+           {"export png " + s, "d.png"},
+           {"export geojson " + store + " --layer f ", "f.geojson"},
+           {"export gpkg " + store + " --layer f ", "f.gpkg"},
+           {"export tiles3d " + store + " --dem d ", "t"},
+           {"export glb " + store + " --dem d --cells " + cell + " ", "d.glb"},
+           {"export drc " + store + " --dem d --cells " + cell + " ", "drc"}}) {
+    const CliResult r = run_maquette(args + full + "/" + out);
     EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.err;
-    EXPECT_NE(r.err.find(full), std::string::npos) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(full + "/" + out), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.find(".part."), std::string::npos) << args << "\n" << r.err;
     for (const auto& e : fs::recursive_directory_iterator(full))
       EXPECT_TRUE(e.is_directory() || e.path().filename() == "filler") << args << ": " << e.path();
   }
+}
+
+// A georeferenced PNG and its sidecars (.aux.xml, .pgw) appear together or not at all, whatever
+// room the file system has left: from none to more than all need.
+TEST(FileSystems, PngAndItsSidecarsAppearTogetherOrNotAtAll) {
+  const std::string dir = temp_dir(), full = dir + "/full";
+  const std::string store = dir + "/s.mqt";
+  ASSERT_EQ(run_maquette("-q ingest " + store + " --layer d --as dem " + dem(dir)).exit_code, 0);
+  const auto mount = Mount::make("mount -t tmpfs -o size=1m tmpfs " + full, full);
+  if (!mount) GTEST_SKIP() << "cannot mount a tmpfs here (root needed)";
+  const std::string png = full + "/d.png";
+  bool some_failed = false, some_written = false;
+  for (int free_pages = 0; free_pages <= 8; ++free_pages) {
+    sh("dd if=/dev/zero of=" + full + "/filler bs=4k count=" + std::to_string(256 - free_pages));
+    const CliResult r =
+        run_maquette("-q export png " + store + " --layer d " + png + " --max-size 96");
+    const bool written = r.exit_code == 0;
+    (written ? some_written : some_failed) = true;
+    for (const std::string& file : {png, png + ".aux.xml", full + "/d.pgw"})
+      EXPECT_EQ(fs::exists(file), written) << free_pages << " pages free: " << file << r.err;
+    for (const auto& e : fs::directory_iterator(full))
+      EXPECT_EQ(e.path().string().find(".part."), std::string::npos) << e.path();
+    if (written) {
+      EXPECT_NE(shell_output("gdalinfo " + png).find("Pixel Size"), std::string::npos);
+      EXPECT_GT(fs::file_size(full + "/d.pgw"), 0U);
+    }
+    sh("rm -f " + full + "/d.* " + full + "/filler");
+  }
+  EXPECT_TRUE(some_failed && some_written) << "the room tried never split the files";
 }
 
 }  // namespace
