@@ -5,6 +5,18 @@
 #include <cmath>
 
 namespace maquette::climate {
+namespace {
+
+// A march's sample `z` for a pixel at height z0: its march ends at a sample without data, else
+// its best tangent rises to the sample's.
+inline void take(float z, float z0, float drop, float inv_d, float& alive, float& best) {
+  const float a = alive * float(z == z);
+  alive = a;
+  const float t = (z - drop - z0) * inv_d;
+  best = (a > 0.f) & (t > best) ? t : best;
+}
+
+}  // namespace
 
 HorizonAngles::HorizonAngles(int directions, double max_distance_m)
     : directions_(directions), max_distance_(max_distance_m) {}
@@ -58,14 +70,14 @@ void HorizonAngles::compute(const DilatedDem& surfaces, float zmax, const std::v
         const float* __restrict bottom = &surface.at(col0 + dc, row + 1);
         const float* __restrict z_0 = &z0[size_t(r * B)];
         float* __restrict b = &best[size_t(r * B)];
-        for (int c = c_lo; c < c_hi; ++c) {
-          const float z = (1 - ty) * ((1 - tx) * top[c] + tx * top[c + 1]) +
-                          ty * ((1 - tx) * bottom[c] + tx * bottom[c + 1]);
-          const float a = on[c] * float(z == z);  // no data: the march ends there
-          on[c] = a;
-          const float t = (z - drop - z_0[c]) * inv_d;
-          b[c] = (a > 0.f) & (t > b[c]) ? t : b[c];
-        }
+        // Steps are whole pixels along the longer axis (march(): +-1), so the bilinear sample
+        // is linear across it: between two rows, or along one.
+        if (axis == Axis::Col)
+          for (int c = c_lo; c < c_hi; ++c)
+            take((1 - ty) * top[c] + ty * bottom[c], z_0[c], drop, inv_d, on[c], b[c]);
+        else
+          for (int c = c_lo; c < c_hi; ++c)
+            take((1 - tx) * top[c] + tx * top[c + 1], z_0[c], drop, inv_d, on[c], b[c]);
         if (check)
           for (int c = 0; c < B; ++c)
             any |= int(on[c] > 0.f) & int((zmax - drop - z_0[c]) * inv_d > b[c]);
