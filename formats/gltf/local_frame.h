@@ -1,7 +1,8 @@
-// The local east-north-up frame of an export: every mesh of an export is written in one frame
+// The local east-north-up frame of an export: every mesh of an export is placed in one frame
 // (so vertices shared by neighbouring cells, also across face seams, get identical coordinates),
-// with glTF's y-up axes (x east, y up, z south); 3D Tiles turns y-up content to z-up, then the
-// root tile's transform (enu_to_ecef) places the frame on the globe.
+// measured from an offset at the mesh, its node's translation (gltf/lattice.h), with glTF's y-up
+// axes (x east, y up, z south); 3D Tiles turns y-up content to z-up, then the root tile's
+// transform (enu_to_ecef) places the frame on the globe.
 #pragma once
 
 #include <array>
