@@ -1,9 +1,11 @@
 // Store throughput with 256x256 float32 tiles of smooth, terrain-like data (a sum of sines):
-// codec alone, batched writes, point reads, range scans and overview rebuilds. Bytes processed
-// are raw tile bytes (256 KiB per tile), so MB/s compares directly with the raw data rate.
+// codec alone, batched writes, point reads, range scans and overview rebuilds; and the codec alone
+// on the unit normals of those surfaces (float32 x 3). Bytes processed are raw tile bytes (256 KiB
+// per tile, 768 KiB for normals), so MB/s compares directly with the raw data rate.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -60,47 +62,77 @@ struct TempStore {
   std::unique_ptr<Store> store;
 };
 
+// The unit normals (east, north, up) of smooth_tile(seed) as a surface of 30 m pixels:
+// float32 x 3, what terrain.derive writes.
+RawTile normal_tile(int64_t seed) {
+  const RawTile dem = smooth_tile(seed);
+  std::vector<float> h(size_t(kSize) * kSize), n(3 * h.size());
+  std::memcpy(h.data(), dem.bytes.data(), dem.bytes.size());
+  const auto at = [&](int c, int r) {
+    return h[size_t(std::clamp(r, 0, kSize - 1)) * kSize + size_t(std::clamp(c, 0, kSize - 1))];
+  };
+  for (int r = 0; r < kSize; ++r)
+    for (int c = 0; c < kSize; ++c) {
+      const double ge = (at(c + 1, r) - at(c - 1, r)) / 60.0;
+      const double gn = (at(c, r - 1) - at(c, r + 1)) / 60.0;
+      const double k = 1 / std::sqrt(1 + ge * ge + gn * gn);
+      float* p = &n[3 * (size_t(r) * kSize + size_t(c))];
+      p[0] = float(-ge * k);
+      p[1] = float(-gn * k);
+      p[2] = float(k);
+    }
+  RawTile t{DType::F32, kSize, 3, std::vector<std::byte>(n.size() * 4)};
+  std::memcpy(t.bytes.data(), n.data(), t.bytes.size());
+  return t;
+}
+
 // A few distinct tiles, so that compression does not see the same bytes every time.
-const std::vector<RawTile>& sample_tiles() {
+template <RawTile (*make)(int64_t)>
+const std::vector<RawTile>& distinct_tiles() {
   static const std::vector<RawTile> tiles = [] {
     std::vector<RawTile> out;
-    for (int i = 0; i < 16; ++i) out.push_back(smooth_tile(i));
+    for (int i = 0; i < 16; ++i) out.push_back(make(i));
     return out;
   }();
   return tiles;
 }
+const std::vector<RawTile>& sample_tiles() { return distinct_tiles<smooth_tile>(); }
+const std::vector<RawTile>& sample_normal_tiles() { return distinct_tiles<normal_tile>(); }
+using TileSet = const std::vector<RawTile>& (*)();
 
-void report(benchmark::State& state, int64_t tiles, const TempStore* store = nullptr) {
-  state.SetBytesProcessed(tiles * kTileBytes);
+void report(benchmark::State& state, int64_t tiles, const TempStore* store = nullptr,
+            int64_t tile_bytes = kTileBytes) {
+  state.SetBytesProcessed(tiles * tile_bytes);
   state.SetItemsProcessed(tiles);
   if (store)
     state.counters["ratio"] = double(store->store->stats("dem").bytes) /
                               double(store->store->stats("dem").tile_count * kTileBytes);
 }
 
-void BM_Encode(benchmark::State& state, const char* codec_name) {
+void BM_Encode(benchmark::State& state, const char* codec_name, TileSet tiles = sample_tiles) {
   const Codec codec = parse_codec(codec_name);
+  const int64_t tile_bytes = int64_t(tiles()[0].bytes.size());
   int64_t n = 0, bytes = 0;
   for (auto _ : state) {
-    auto blob = encode_tile(sample_tiles()[n % 16], codec);
+    auto blob = encode_tile(tiles()[n % 16], codec);
     bytes += int64_t(blob.size());
     benchmark::DoNotOptimize(blob.data());
     ++n;
   }
-  report(state, n);
-  state.counters["ratio"] = double(bytes) / double(n * kTileBytes);
+  report(state, n, nullptr, tile_bytes);
+  state.counters["ratio"] = double(bytes) / double(n * tile_bytes);
 }
 
-void BM_Decode(benchmark::State& state, const char* codec_name) {
+void BM_Decode(benchmark::State& state, const char* codec_name, TileSet tiles = sample_tiles) {
   std::vector<std::vector<std::byte>> blobs;
-  for (const auto& t : sample_tiles()) blobs.push_back(encode_tile(t, parse_codec(codec_name)));
+  for (const auto& t : tiles()) blobs.push_back(encode_tile(t, parse_codec(codec_name)));
   int64_t n = 0;
   for (auto _ : state) {
     auto tile = decode_tile(blobs[n % 16]);
     benchmark::DoNotOptimize(tile.bytes.data());
     ++n;
   }
-  report(state, n);
+  report(state, n, nullptr, int64_t(tiles()[0].bytes.size()));
 }
 
 // Writes batches of state.range(0) tiles, each batch one transaction, to fresh cells.
@@ -181,6 +213,12 @@ BENCHMARK_CAPTURE(BM_Encode, zstd3, "zstd:3");  // the level stores were written
 BENCHMARK_CAPTURE(BM_Encode, raw, "raw");
 BENCHMARK_CAPTURE(BM_Decode, zstd, "zstd");
 BENCHMARK_CAPTURE(BM_Decode, zstd3, "zstd:3");
+// Normals (float32 x 3, 768 KiB per tile): zstd against normal_oct at its default level and -1.
+BENCHMARK_CAPTURE(BM_Encode, normals_zstd, "zstd", sample_normal_tiles);
+BENCHMARK_CAPTURE(BM_Encode, normals_oct, "normal_oct", sample_normal_tiles);
+BENCHMARK_CAPTURE(BM_Encode, normals_oct_fast, "normal_oct:-1", sample_normal_tiles);
+BENCHMARK_CAPTURE(BM_Decode, normals_zstd, "zstd", sample_normal_tiles);
+BENCHMARK_CAPTURE(BM_Decode, normals_oct, "normal_oct", sample_normal_tiles);
 BENCHMARK_CAPTURE(BM_Write, zstd, "zstd")->Arg(1)->Arg(16)->Arg(64)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Write, raw, "raw")->Arg(16)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Read, zstd, "zstd")->UseRealTime();

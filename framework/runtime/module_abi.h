@@ -14,7 +14,9 @@
 // 2: operators get the run's store (CellContext::store, StepContext for finish() and regions).
 // 3: outputs finer than the inputs (OperatorSpec::refinable, CellContext::refine).
 // 4: OperatorSpec::writes_all_samples; Tile's samples in a default-initializing vector.
-#define MAQUETTE_ABI_VERSION 5u
+// 5: OperatorSpec::fills_footprint.
+// 6: OutputSpec::codec.
+#define MAQUETTE_ABI_VERSION 6u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -74,6 +74,7 @@ class Planner {
       info.nodata = out.nodata;
       info.semantics = out.semantics;
       info.units = out.units;
+      info.codec = out.codec;
       info.provenance = {{"operator", step.op_name}, {"params", step.params}};
       inherit_source_description(sp.inputs, out.name, info);
       sp.outputs.emplace(out.name, info);

@@ -69,7 +69,9 @@ void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile
   if (l.level == 0 || l.tile_size < 2) return;  // no parent, or tiles that cannot be halved
   const auto key = std::make_pair(e.id, cell.parent());
   auto& children = pending_->siblings[key].tiles;
-  children[cell.digit(l.level)] = tile;
+  // The overview is built from the tile as stored, as update_overviews would build it.
+  children[cell.digit(l.level)] =
+      codec.lossless() ? tile : decode_tile(pending_->tiles.back().blob);
   if (!std::ranges::all_of(children, [](const auto& t) { return t.has_value(); })) return;
   const RawTile overview =
       build_overview({&*children[0], &*children[1], &*children[2], &*children[3]}, l);

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "store/normal_oct.h"
 
 namespace maquette {
 namespace {
@@ -30,6 +31,8 @@ struct ZstdContexts {
   std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> c{ZSTD_createCCtx(), &ZSTD_freeCCtx};
   std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> d{ZSTD_createDCtx(), &ZSTD_freeDCtx};
   std::vector<std::byte> shuffled, frame;
+  std::vector<float> normals;   // normal_oct: a tile's normals
+  std::vector<uint16_t> codes;  // normal_oct: their predicted, zigzag-mapped codes
 };
 ZstdContexts& zstd_contexts() {
   thread_local ZstdContexts contexts;
@@ -48,17 +51,27 @@ uint32_t get_u32(const std::byte* p) {
 Codec parse_codec(std::string_view text) {
   if (text == "raw") return {Codec::Kind::Raw, 0};
   if (text == "zstd") return {};
-  if (text.starts_with("zstd:")) {
-    const std::string_view digits = text.substr(5);
+  if (text == "normal_oct") return {Codec::Kind::NormalOct, Codec::kNormalOctLevel};
+  for (const auto& [prefix, kind] :
+       {std::pair{std::string_view("zstd:"), Codec::Kind::Zstd},
+        std::pair{std::string_view("normal_oct:"), Codec::Kind::NormalOct}}) {
+    if (!text.starts_with(prefix)) continue;
+    const std::string_view digits = text.substr(prefix.size());
     int level = 0;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), level);
     if (ec == std::errc() && end == digits.data() + digits.size() && level != 0 &&
         level >= Codec::kMinLevel && level <= ZSTD_maxCLevel())
-      return {Codec::Kind::Zstd, level};
+      return {kind, level};
   }
-  throw Error("unknown codec '" + std::string(text) + "' (expected raw, zstd or zstd:LEVEL with " +
-              "LEVEL in " + std::to_string(Codec::kMinLevel) + "..-1 or 1.." +
-              std::to_string(ZSTD_maxCLevel()) + ")");
+  throw Error("unknown codec '" + std::string(text) + "' (expected raw, zstd, zstd:LEVEL, " +
+              "normal_oct or normal_oct:LEVEL with LEVEL in " + std::to_string(Codec::kMinLevel) +
+              "..-1 or 1.." + std::to_string(ZSTD_maxCLevel()) + ")");
+}
+
+void check_codec_holds(const Codec& codec, DType dtype, int channels) {
+  if (codec.kind == Codec::Kind::NormalOct && (dtype != DType::F32 || channels != 3))
+    throw Error("codec normal_oct holds unit normals, float32 with 3 channels, not " +
+                std::string(dtype_name(dtype)) + " with " + std::to_string(channels));
 }
 
 namespace {
@@ -98,12 +111,53 @@ void unshuffle_bytes(std::span<const std::byte> in, size_t width, std::span<std:
   });
 }
 
+namespace {
+
+// Appends `samples` (each `width` bytes) to `blob`, byte shuffled and compressed as one zstd frame
+// with its content size and a checksum.
+void append_zstd(std::span<const std::byte> samples, size_t width, int level,
+                 std::vector<std::byte>& blob) {
+  ZstdContexts& z = zstd_contexts();
+  if (z.shuffled.size() < samples.size()) z.shuffled.resize(samples.size());
+  const std::span<std::byte> shuffled(z.shuffled.data(), samples.size());
+  shuffle_bytes(samples, width, shuffled);
+  ZSTD_CCtx* cctx = z.c.get();
+  ZSTD_CCtx_reset(cctx, ZSTD_reset_session_and_parameters);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, level);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
+  const size_t bound = ZSTD_compressBound(samples.size());
+  if (z.frame.size() < bound) z.frame.resize(bound);
+  const size_t n =
+      ZSTD_compress2(cctx, z.frame.data(), z.frame.size(), shuffled.data(), shuffled.size());
+  if (ZSTD_isError(n)) throw Error(std::string("zstd compression failed: ") + ZSTD_getErrorName(n));
+  blob.insert(blob.end(), z.frame.begin(), z.frame.begin() + std::ptrdiff_t(n));
+}
+
+// The samples (each `width` bytes) of a frame append_zstd wrote, into `out`, which the frame must
+// fill exactly.
+void read_zstd(std::span<const std::byte> payload, size_t width, std::span<std::byte> out) {
+  if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != out.size() ||
+      ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size())
+    throw Error("zstd frame does not hold " + std::to_string(out.size()) + " bytes");
+  ZstdContexts& z = zstd_contexts();
+  if (z.shuffled.size() < out.size()) z.shuffled.resize(out.size());
+  const std::span<std::byte> shuffled(z.shuffled.data(), out.size());
+  const size_t n =
+      ZSTD_decompressDCtx(z.d.get(), shuffled.data(), out.size(), payload.data(), payload.size());
+  if (ZSTD_isError(n)) throw Error(std::string("zstd: ") + ZSTD_getErrorName(n));
+  if (n != out.size()) throw Error("zstd frame decoded to " + std::to_string(n) + " bytes");
+  unshuffle_bytes(shuffled, width, out);
+}
+
+}  // namespace
+
 std::vector<std::byte> encode_tile(const RawTile& tile, const Codec& codec) {
   const size_t width = dtype_size(tile.dtype);
   const size_t raw_size = tile.sample_count() * width;
   if (tile.bytes.size() != raw_size)
     throw Error("tile holds " + std::to_string(tile.bytes.size()) + " bytes, expected " +
                 std::to_string(raw_size));
+  check_codec_holds(codec, tile.dtype, tile.channels);
 
   std::vector<std::byte> blob(kHeaderSize);
   std::memcpy(blob.data(), kMagic, 4);
@@ -114,23 +168,24 @@ std::vector<std::byte> encode_tile(const RawTile& tile, const Codec& codec) {
   put_u32(blob.data() + 8, uint32_t(tile.size));
   put_u32(blob.data() + 12, uint32_t(tile.channels));
 
-  if (codec.kind == Codec::Kind::Raw) {
-    blob.resize(kHeaderSize + raw_size);
-    std::memcpy(blob.data() + kHeaderSize, tile.bytes.data(), raw_size);
-    return blob;
+  switch (codec.kind) {
+    case Codec::Kind::Raw:
+      blob.resize(kHeaderSize + raw_size);
+      std::memcpy(blob.data() + kHeaderSize, tile.bytes.data(), raw_size);
+      break;
+    case Codec::Kind::Zstd:
+      append_zstd(tile.bytes, width, codec.level, blob);
+      break;
+    case Codec::Kind::NormalOct: {
+      ZstdContexts& z = zstd_contexts();
+      z.normals.resize(tile.sample_count());
+      std::memcpy(z.normals.data(), tile.bytes.data(), raw_size);
+      z.codes.resize(2 * size_t(tile.size) * size_t(tile.size));
+      oct_encode_tile(z.normals, tile.size, z.codes);
+      append_zstd(std::as_bytes(std::span(z.codes)), sizeof(uint16_t), codec.level, blob);
+      break;
+    }
   }
-  ZstdContexts& z = zstd_contexts();
-  if (z.shuffled.size() < raw_size) z.shuffled.resize(raw_size);
-  const std::span<std::byte> shuffled(z.shuffled.data(), raw_size);
-  shuffle_bytes(tile.bytes, width, shuffled);
-  ZSTD_CCtx* cctx = z.c.get();
-  ZSTD_CCtx_reset(cctx, ZSTD_reset_session_and_parameters);
-  ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, codec.level);
-  ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
-  if (z.frame.size() < ZSTD_compressBound(raw_size)) z.frame.resize(ZSTD_compressBound(raw_size));
-  const size_t n = ZSTD_compress2(cctx, z.frame.data(), z.frame.size(), shuffled.data(), raw_size);
-  if (ZSTD_isError(n)) throw Error(std::string("zstd compression failed: ") + ZSTD_getErrorName(n));
-  blob.insert(blob.end(), z.frame.begin(), z.frame.begin() + std::ptrdiff_t(n));
   return blob;
 }
 
@@ -142,7 +197,8 @@ RawTile decode_tile(std::span<const std::byte> blob) {
     throw Error("blob format version " + std::to_string(int(blob[4])) + " (expected 1)");
   const auto codec = uint8_t(blob[5]);
   const auto dtype = uint8_t(blob[6]);
-  if (codec > uint8_t(Codec::Kind::Zstd)) throw Error("unknown codec " + std::to_string(codec));
+  if (codec > uint8_t(Codec::Kind::NormalOct))
+    throw Error("unknown codec " + std::to_string(codec));
   if (dtype > uint8_t(DType::F64)) throw Error("unknown dtype " + std::to_string(dtype));
   if (blob[7] != std::byte{0}) throw Error("reserved header byte is not 0");
   const uint32_t size = get_u32(blob.data() + 8);
@@ -151,30 +207,35 @@ RawTile decode_tile(std::span<const std::byte> blob) {
     throw Error("tile size " + std::to_string(size) + " is not a power of two in [1, 4096]");
   if (channels == 0 || channels > kMaxChannels)
     throw Error("channel count " + std::to_string(channels) + " out of range");
+  const Codec::Kind kind = Codec::Kind(codec);
+  check_codec_holds({kind, 0}, DType(dtype), int(channels));
 
   RawTile tile{DType(dtype), int(size), int(channels), {}};
   const size_t width = dtype_size(tile.dtype);
   const size_t raw_size = tile.sample_count() * width;
   const auto payload = blob.subspan(kHeaderSize);
-  if (Codec::Kind(codec) == Codec::Kind::Raw) {
-    if (payload.size() != raw_size)
-      throw Error("raw payload of " + std::to_string(payload.size()) + " bytes, expected " +
-                  std::to_string(raw_size));
-    tile.bytes.assign(payload.begin(), payload.end());
-    return tile;
+  switch (kind) {
+    case Codec::Kind::Raw:
+      if (payload.size() != raw_size)
+        throw Error("raw payload of " + std::to_string(payload.size()) + " bytes, expected " +
+                    std::to_string(raw_size));
+      tile.bytes.assign(payload.begin(), payload.end());
+      break;
+    case Codec::Kind::Zstd:
+      tile.bytes.resize(raw_size);
+      read_zstd(payload, width, tile.bytes);
+      break;
+    case Codec::Kind::NormalOct: {
+      ZstdContexts& z = zstd_contexts();
+      z.codes.resize(2 * size_t(size) * size_t(size));
+      read_zstd(payload, sizeof(uint16_t), std::as_writable_bytes(std::span(z.codes)));
+      z.normals.resize(tile.sample_count());
+      oct_decode_tile(z.codes, tile.size, z.normals);
+      tile.bytes.resize(raw_size);
+      std::memcpy(tile.bytes.data(), z.normals.data(), raw_size);
+      break;
+    }
   }
-  if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != raw_size ||
-      ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size())
-    throw Error("zstd frame does not hold " + std::to_string(raw_size) + " bytes");
-  ZstdContexts& z = zstd_contexts();
-  if (z.shuffled.size() < raw_size) z.shuffled.resize(raw_size);
-  const std::span<std::byte> shuffled(z.shuffled.data(), raw_size);
-  const size_t n =
-      ZSTD_decompressDCtx(z.d.get(), shuffled.data(), raw_size, payload.data(), payload.size());
-  if (ZSTD_isError(n)) throw Error(std::string("zstd: ") + ZSTD_getErrorName(n));
-  if (n != raw_size) throw Error("zstd frame decoded to " + std::to_string(n) + " bytes");
-  tile.bytes.resize(raw_size);
-  unshuffle_bytes(shuffled, width, tile.bytes);
   return tile;
 }
 

@@ -47,7 +47,7 @@ LayerInfo normalized_layer(const LayerInfo& info) {
     throw Error(where + "channels " + std::to_string(info.channels) + " not in [1, 1024]");
   try {
     log2_tile_size(info.tile_size);
-    parse_codec(info.codec);
+    check_codec_holds(parse_codec(info.codec), info.dtype, info.channels);
   } catch (const Error& e) {
     throw Error(where + e.what());
   }

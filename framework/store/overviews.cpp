@@ -79,6 +79,8 @@ size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, in
         }
       overviews[i] = build_overview(ptrs, e.info);
       blobs[i] = encode_tile(overviews[i], codec);
+      // Kept for the next level as the tile stored (what decoding the blob gives).
+      if (!codec.lossless()) overviews[i] = decode_tile(blobs[i]);
     });
   });
 

@@ -32,7 +32,7 @@ OperatorSpec derive_spec() {
       {"hillshade", "1 + 254 * cos(incidence) clamped at 1 (0 = nodata)", DType::U8, 1,
        Semantics::Continuous, "", 0.0},
       {"normal", "unit surface normal, east-north-up", DType::F32, 3, Semantics::Continuous, "",
-       std::nullopt},
+       std::nullopt, "normal_oct"},
   };
   s.halo = 1;
   s.params_schema = {

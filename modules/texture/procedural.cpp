@@ -27,7 +27,7 @@ OperatorSpec procedural_spec() {
       {"height", "DEM displaced by the layers' roughness", DType::F32, 1, Semantics::Continuous,
        "m", std::nullopt},
       {"normal", "unit normal of the displaced height (x columns, y up, z up)", DType::F32, 3,
-       Semantics::Continuous, "", std::nullopt},
+       Semantics::Continuous, "", std::nullopt, "normal_oct"},
       {"classes", "class of the dominant layer (coverage >= 0.5)", DType::U8, 1,
        Semantics::Categorical, "", 255.0},
   };

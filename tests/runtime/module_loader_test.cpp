@@ -35,9 +35,9 @@ TEST(ModuleLoader, FirstFileOfANameWins) {
 TEST(ModuleLoader, RefusesAnotherAbiNamingTheFile) {
   const std::string file = fixture_dir("bad_abi") + "/libfixture_bad_abi.so";
   EXPECT_EQ(error_of([&] { load_module(file); }),
-            file + " was built for module ABI 1, this maquette has ABI 5: rebuild it");
+            file + " was built for module ABI 1, this maquette has ABI 6: rebuild it");
   EXPECT_EQ(error_of([&] { OperatorRegistry::load({fixture_dir("bad_abi")}); }),
-            file + " was built for module ABI 1, this maquette has ABI 5: rebuild it");
+            file + " was built for module ABI 1, this maquette has ABI 6: rebuild it");
 }
 
 TEST(ModuleLoader, RefusesALibraryWithoutEntryPoint) {
