@@ -13,6 +13,10 @@ namespace {
 
 double sign_not_zero(double v) { return v >= 0 ? 1.0 : -1.0; }
 
+// Euclidean length (std::hypot's care for overflow is not needed here: components of floats or
+// of the unit square, squared in double).
+double length(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
+
 // The point of the square [-1, 1]^2 for integers (a, b), unfolded onto the octahedron.
 std::array<double, 3> octahedron_point(int a, int b) {
   const double u = double(a) / kOctMax, v = double(b) / kOctMax;
@@ -23,7 +27,7 @@ std::array<double, 3> octahedron_point(int a, int b) {
 
 // Cosine of the angle between `n` (unit) and the direction of `p`.
 double cosine(const std::array<double, 3>& n, const std::array<double, 3>& p) {
-  return (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / std::hypot(p[0], p[1], p[2]);
+  return (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / length(p[0], p[1], p[2]);
 }
 
 // Wrapping differences, zigzag-mapped, and back.
@@ -50,11 +54,11 @@ int predict(const int16_t* plane, int size, int col, int row) {
 std::array<int16_t, 2> oct_encode(std::array<float, 3> normal) {
   if (std::isnan(normal[0]) || std::isnan(normal[1]) || std::isnan(normal[2]))
     return {kOctMissing, kOctMissing};
-  const double length = std::hypot(double(normal[0]), double(normal[1]), double(normal[2]));
-  if (!(length > 0) || std::isinf(length))
+  const double norm = length(normal[0], normal[1], normal[2]);
+  if (!(norm > 0) || std::isinf(norm))
     throw Error("normal (" + std::to_string(normal[0]) + ", " + std::to_string(normal[1]) + ", " +
                 std::to_string(normal[2]) + ") has no direction");
-  const std::array<double, 3> n = {normal[0] / length, normal[1] / length, normal[2] / length};
+  const std::array<double, 3> n = {normal[0] / norm, normal[1] / norm, normal[2] / norm};
   const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
   double u = n[0] / l1, v = n[1] / l1;
   if (n[2] < 0) {
@@ -86,8 +90,8 @@ std::array<float, 3> oct_decode(std::array<int16_t, 2> code) {
     throw Error("octahedral normal (" + std::to_string(code[0]) + ", " + std::to_string(code[1]) +
                 ") out of [-" + std::to_string(kOctMax) + ", " + std::to_string(kOctMax) + "]");
   const std::array<double, 3> p = octahedron_point(code[0], code[1]);
-  const double length = std::hypot(p[0], p[1], p[2]);
-  return {float(p[0] / length), float(p[1] / length), float(p[2] / length)};
+  const double norm = length(p[0], p[1], p[2]);
+  return {float(p[0] / norm), float(p[1] / norm), float(p[2] / norm)};
 }
 
 void oct_encode_tile(std::span<const float> normals, int size, std::span<uint16_t> out) {

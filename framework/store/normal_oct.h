@@ -7,8 +7,9 @@
 // is folded over the square's corners. u and v are stored as integers in [-kOctMax, kOctMax]
 // (kOctBits bits each, sign included). Of the four integer points around (u, v) * kOctMax the
 // encoder keeps the one whose direction is nearest to the normal ("precise" in the paper), which
-// bounds the angular error by ~0.04 degrees (tests/store/normal_oct_test.cpp; rounding to the
-// nearest point gives up to 0.06). A missing normal (NaN) is kOctMissing in both integers.
+// bounds the angular error by ~0.04 degrees (0.0393 over 10^6 directions spread over the sphere,
+// tests/store/normal_oct_test.cpp; rounding u and v gives up to 0.059, benchmarks/README.md).
+// A missing normal (NaN) is kOctMissing in both integers.
 #pragma once
 
 #include <array>
