@@ -42,6 +42,21 @@ std::vector<float> read_band(const std::string& path, int& width, int& height) {
   return v;
 }
 
+// Band 1 of two rasters of the same size.
+struct BandPair {
+  std::vector<float> first, second;
+  int width = 0, height = 0;
+};
+BandPair read_pair(const std::string& first, const std::string& second) {
+  BandPair pair;
+  int width = 0, height = 0;
+  pair.first = read_band(first, pair.width, pair.height);
+  pair.second = read_band(second, width, height);
+  if (width != pair.width || height != pair.height)
+    throw std::runtime_error(first + " and " + second + " differ in size");
+  return pair;
+}
+
 // climate.solar's clear-sky beam in the r.sun configuration (Linke turbidity 3, half-hour steps)
 // over `bbox` into layer `output`, with `params` added.
 nlohmann::json solar_pipeline(const std::string& store, const std::vector<double>& bbox,
@@ -81,11 +96,10 @@ TEST(SolarRsun, BeamOfJune21MatchesRsunWithin2Percent) {
                            dir + "/dem.tif " + dir + "/rsun.tif 172 0.5 3 > /dev/null";
   ASSERT_EQ(std::system(rsun.c_str()), 0);
 
-  int w = 0, h = 0, w2 = 0, h2 = 0;
-  const std::vector<float> ours = read_band(dir + "/beam.tif", w, h);
-  const std::vector<float> theirs = read_band(dir + "/rsun.tif", w2, h2);
-  ASSERT_EQ(w, w2);
-  ASSERT_EQ(h, h2);
+  const BandPair pair = read_pair(dir + "/beam.tif", dir + "/rsun.tif");
+  const std::vector<float>& ours = pair.first;
+  const std::vector<float>& theirs = pair.second;
+  const int w = pair.width, h = pair.height;
   // Pixels at least 10 from the edges, where both have a value (r.sun's slope needs neighbours).
   double sum_ours = 0, sum_theirs = 0;
   std::vector<double> relative;
@@ -133,11 +147,9 @@ TEST(SolarRsun, SameBitsForAnyThreadCountAndRegion) {
                      layer + " --bbox -113.1 37.2 -113.04 37.32");
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  int w = 0, h = 0, w2 = 0, h2 = 0;
-  const std::vector<float> all = read_band(dir + "/all.tif", w, h);
-  const std::vector<float> west_half = read_band(dir + "/west.tif", w2, h2);
-  ASSERT_EQ(w, w2);
-  ASSERT_EQ(h, h2);
+  const BandPair pair = read_pair(dir + "/all.tif", dir + "/west.tif");
+  const std::vector<float>& all = pair.first;
+  const std::vector<float>& west_half = pair.second;
   size_t compared = 0, different = 0;
   for (size_t i = 0; i < all.size(); ++i) {
     if (std::isnan(all[i]) || std::isnan(west_half[i])) continue;
