@@ -2,8 +2,8 @@
 // samples of the DEM and its halo, lowered by the earth's curvature d^2 / 2R) along evenly spaced
 // azimuths, up to a maximum distance, the edge of the halo or the first sample without data.
 // Samples are one pixel apart up to kFineSteps pixels, then ever sparser (the spacing doubles
-// every time the distance does) and read the DEM's running maxima over their spacing
-// (dilated_dem.h): a far ridge subtends a small angle, and its peak is found anyway.
+// every time the distance does) and read the DEM's maxima over squares reaching halfway to the
+// neighbouring samples (dilated_dem.h): a far peak subtends a small angle, and is found anyway.
 // Computed for square blocks of pixels at once: the pixels of a block march along the same
 // steps (those of the block's centre pixel's frame), so every step reads the same offsets for the
 // whole block and the inner loop runs along contiguous samples (vectorized).
