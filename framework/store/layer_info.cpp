@@ -86,7 +86,6 @@ std::string layer_difference(const LayerInfo& a, const LayerInfo& b) {
   if (a.semantics != b.semantics)
     return differ("semantics", semantics_name(a.semantics), semantics_name(b.semantics));
   if (a.units != b.units) return differ("units", "'" + a.units + "'", "'" + b.units + "'");
-  if (a.codec != b.codec) return differ("codec", a.codec, b.codec);
   return {};
 }
 

@@ -57,6 +57,8 @@ LayerEntry Store::Impl::require(const std::string& name) const {
 void Store::create_layer(const LayerInfo& info) {
   const LayerInfo def = normalized_layer(info);
   impl_->write([&](sqlite::Connection& c) {
+    // An existing layer keeps its codec: each blob names its own format, so a layer written
+    // before a codec existed (normals before normal_oct) or at another level resumes as it is.
     if (auto old = load_layer(c, def.name)) {
       if (const std::string diff = layer_difference(old->info, def); !diff.empty())
         throw Error("layer '" + def.name + "' already exists in " + impl_->path +

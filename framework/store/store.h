@@ -40,7 +40,7 @@ struct LayerInfo {
   std::optional<double> nodata;
   Semantics semantics = Semantics::Continuous;
   std::string units;
-  std::string codec = "zstd";                            // "zstd" (byte-shuffled) or "raw"
+  std::string codec = "zstd";  // "zstd" (byte-shuffled), "zstd:LEVEL", "raw", "normal_oct[:LEVEL]"
   nlohmann::json provenance = nlohmann::json::object();  // free-form: source, operator, params
 };
 
@@ -108,7 +108,8 @@ class Store {
   bool created() const;
 
   // Layers. create_layer fails if the name exists with a different definition, and is a no-op
-  // when it exists with the same one (so re-running a step is idempotent).
+  // when it exists with the same one (so re-running a step is idempotent); an existing layer
+  // keeps its codec, whatever `info` asks (older stores resume).
   void create_layer(const LayerInfo& info);
   std::optional<LayerInfo> layer(const std::string& name) const;
   // For readers: throws "unknown layer 'x' in STORE", and for a layer marked incomplete (below)

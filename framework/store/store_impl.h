@@ -109,7 +109,7 @@ struct Store::Impl {
 // float layer (NaN is always missing there).
 LayerInfo normalized_layer(const LayerInfo& info);
 // The first field where two definitions differ, as "dtype float32 vs uint16"; empty if none.
-// Provenance is not part of the definition.
+// Provenance and codec are not part of the definition (an existing layer keeps its codec).
 std::string layer_difference(const LayerInfo& a, const LayerInfo& b);
 
 // A feature checked against its layer and ready to write (features.cpp).

@@ -52,11 +52,10 @@ std::vector<float> read_bands(const std::string& path, int expected_bands, int& 
   return v;
 }
 
-TEST(CliNormals, DeriveStoresNormalsCompactlyWithinFourHundredthsOfADegree) {
-  if (!std::filesystem::exists(kSrtm)) GTEST_SKIP() << "no " << kSrtm;
-  const std::string dir = temp_dir();
+// Ingests the Zion SRTM into `store` and derives its slope, aspect and normals.
+void write_derive_pipeline(const std::string& path, const std::string& store) {
   const json pipeline = {
-      {"store", dir + "/z.mqt"},
+      {"store", store},
       {"region", {{"bbox", {-113.10, 37.25, -112.98, 37.35}}}},
       {"level", 10},
       {"steps",
@@ -66,7 +65,13 @@ TEST(CliNormals, DeriveStoresNormalsCompactlyWithinFourHundredthsOfADegree) {
         {{"op", "terrain.derive"},
          {"inputs", {{"dem", "dem"}}},
          {"outputs", {{"slope", "slope"}, {"aspect", "aspect"}, {"normal", "normal"}}}}}}};
-  std::ofstream(dir + "/p.json") << pipeline.dump(1);
+  std::ofstream(path) << pipeline.dump(1);
+}
+
+TEST(CliNormals, DeriveStoresNormalsCompactlyWithinFourHundredthsOfADegree) {
+  if (!std::filesystem::exists(kSrtm)) GTEST_SKIP() << "no " << kSrtm;
+  const std::string dir = temp_dir();
+  write_derive_pipeline(dir + "/p.json", dir + "/z.mqt");
   const CliResult r = run_maquette("-q run " + dir + "/p.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
@@ -126,6 +131,44 @@ TEST(CliNormals, DeriveStoresNormalsCompactlyWithinFourHundredthsOfADegree) {
   std::cout << "normal tiles: " << stored << " bytes as normal_oct, " << as_float
             << " as float32 zstd\n";
   EXPECT_LT(stored * 4, as_float);
+}
+
+// A store whose normals layer was written before codec normal_oct existed (codec zstd) runs the
+// pipeline again: the layer keeps its codec and holds the float normals themselves, the ones a
+// new store compresses (encoding them as normal_oct gives that store's tiles).
+TEST(CliNormals, NormalsLayerOfAnOlderStoreKeepsItsCodec) {
+  if (!std::filesystem::exists(kSrtm)) GTEST_SKIP() << "no " << kSrtm;
+  const std::string dir = temp_dir();
+  write_derive_pipeline(dir + "/new.json", dir + "/new.mqt");
+  ASSERT_EQ(run_maquette("-q run " + dir + "/new.json").exit_code, 0);
+  const auto fresh = Store::open(dir + "/new.mqt", Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = fresh->tile_cells("normal");
+  ASSERT_FALSE(cells.empty());
+  {
+    // The older store: the same normals layer in zstd, holding (here) the decoded normal_oct tiles.
+    const auto old = Store::open(dir + "/old.mqt", Store::Mode::Create);
+    LayerInfo info = fresh->require_layer("normal");
+    info.codec = "zstd";
+    old->create_layer(info);
+    for (CellId cell : cells) old->put_tile("normal", cell, *fresh->get_tile("normal", cell));
+  }
+  write_derive_pipeline(dir + "/old.json", dir + "/old.mqt");
+  for (const char* resume : {"", " --resume"}) {
+    const CliResult r = run_maquette(std::string("-q run") + resume + " " + dir + "/old.json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const auto old = Store::open(dir + "/old.mqt", Store::Mode::ReadOnly);
+  EXPECT_EQ(old->require_layer("normal").codec, "zstd");
+  EXPECT_EQ(old->tile_cells("normal"), cells);
+  size_t rewritten = 0;
+  for (CellId cell : cells) {
+    const RawTile exact = *old->get_tile("normal", cell),
+                  compact = *fresh->get_tile("normal", cell);
+    EXPECT_EQ(decode_tile(encode_tile(exact, parse_codec("normal_oct"))).bytes, compact.bytes)
+        << cell.ToText();
+    if (exact.bytes != compact.bytes) ++rewritten;
+  }
+  EXPECT_EQ(rewritten, cells.size());
 }
 
 }  // namespace
