@@ -70,11 +70,15 @@ void OutputFile::commit(bool sync) {
     for (const std::string* done : renamed) ::unlink(done->c_str());
     fail(to, err);
   };
-  for (const Sidecar& s : sidecars_) {
-    ::unlink(s.path.c_str());  // a stale one would describe another file
-    if (::access(s.temp.c_str(), F_OK) == 0) rename(s.temp, s.path);
-  }
+  // The file first: if it cannot be replaced, the old one keeps its sidecars (an rHEALPix
+  // GeoTIFF's CRS is in its .aux.xml).
   rename(temp_, path_);
+  for (const Sidecar& s : sidecars_) {
+    if (::access(s.temp.c_str(), F_OK) == 0)
+      rename(s.temp, s.path);
+    else
+      ::unlink(s.path.c_str());  // a stale one would describe another file
+  }
   committed_ = true;
 }
 

@@ -40,8 +40,9 @@ class OutputFile {
   }
   // Syncs the temporary file and its sidecars to the disk (a delayed write error shows here;
   // `sync` false: for a writer that checked every write and its close itself, and writes many
-  // small files), then renames them into place, the file last: they appear together, or a
-  // failure removes those already renamed. Throws maquette::Error naming the final path and the
+  // small files), then renames them into place, the file first (an old file it cannot replace
+  // keeps its sidecars), removing the file's stale sidecars: a failure removes those already
+  // renamed. Throws maquette::Error naming the final path and the
   // reason.
   void commit(bool sync = true);
 

@@ -1,7 +1,8 @@
 // Stores and outputs on hostile file systems, through the real program: a store on a read-only
 // file system is read (info, export, a pipeline that only exports) and writing to it says the
-// file system is read-only; exports onto a full file system fail and leave no file behind. The
-// file systems are mounted by the test (root only; skipped otherwise).
+// file system is read-only; exports onto a full file system fail and leave no file behind, and
+// one that cannot replace its output leaves the old one's sidecar. The file systems are mounted by
+// the test (root only; skipped otherwise).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -168,6 +169,22 @@ TEST(FileSystems, PngAndItsSidecarsAppearTogetherOrNotAtAll) {
     sh("rm -f " + full + "/d.* " + full + "/filler");
   }
   EXPECT_TRUE(some_failed && some_written) << "the room tried never split the files";
+}
+
+// An rHEALPix GeoTIFF that cannot replace what is at OUT (here a directory) leaves OUT's sidecar
+// as it was: the .aux.xml holds the CRS of the GeoTIFF it describes.
+TEST(FileSystems, AnOutputThatCannotBeReplacedKeepsItsSidecar) {
+  const std::string dir = temp_dir(), store = dir + "/s.mqt", out = dir + "/d.tif";
+  ASSERT_EQ(run_maquette("-q ingest " + store + " --layer d --as dem " + dem(dir)).exit_code, 0);
+  fs::create_directories(out + "/inside");
+  std::ofstream(out + ".aux.xml") << "<PAMDataset/>\n";
+  const CliResult r = run_maquette("-q export gtiff " + store + " --layer d " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(out + ".aux.xml")) << r.err;
+  EXPECT_EQ(fs::file_size(out + ".aux.xml"), 14U);
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().string().find(".part."), std::string::npos) << e.path();
 }
 
 }  // namespace
