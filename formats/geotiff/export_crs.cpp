@@ -32,4 +32,12 @@ ExportCrs parse_export_crs(const std::string& text) {
   return crs;
 }
 
+std::string crs_name(const OGRSpatialReference& srs) {
+  const char* authority = srs.GetAuthorityName(nullptr);
+  const char* code = srs.GetAuthorityCode(nullptr);
+  if (authority && code) return std::string(authority) + ":" + code;
+  const char* name = srs.GetName();
+  return name ? name : "(unnamed)";
+}
+
 }  // namespace maquette

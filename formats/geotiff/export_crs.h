@@ -20,4 +20,7 @@ struct ExportCrs {
 // "rhealpix" or "EPSG:NNNN" (case-insensitive prefix); throws maquette::Error naming the value.
 ExportCrs parse_export_crs(const std::string& text);
 
+// The CRS as errors name it: "EPSG:NNNN", or else its name.
+std::string crs_name(const OGRSpatialReference& srs);
+
 }  // namespace maquette

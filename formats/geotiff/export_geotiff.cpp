@@ -26,7 +26,8 @@ double default_resolution(const Grid& grid, const LayerInfo& layer, int level, C
       OGRCreateCoordinateTransformation(&wgs84, &target));
   double x[2] = {c.lon, c.lon}, y[2] = {std::max(c.lat - dlat / 2, -90.0), 0};
   y[1] = y[0] + dlat;
-  if (!ct || !ct->Transform(2, x, y)) gdal_error("cannot transform the region centre to --crs");
+  if (!ct || !ct->Transform(2, x, y))
+    gdal_error("cannot transform the region centre to --crs " + crs_name(target));
   return std::hypot(x[1] - x[0], y[1] - y[0]);
 }
 

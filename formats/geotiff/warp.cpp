@@ -45,7 +45,7 @@ class StripSampler {
     std::sort(region_.begin(), region_.end());
     const OGRSpatialReference wgs84 = lonlat_crs();
     to_lonlat_.reset(OGRCreateCoordinateTransformation(spec.crs, &wgs84));
-    if (!to_lonlat_) gdal_error("cannot transform --crs to lon/lat");
+    if (!to_lonlat_) gdal_error("cannot transform --crs " + crs_name(*spec.crs) + " to lon/lat");
   }
 
   bool sample(int row0, int rows, std::vector<float>& values) {
@@ -94,6 +94,27 @@ class StripSampler {
   std::vector<CellId> cells_;
 };
 
+// Samples reach the GeoTIFF through float32 (LayerSampler), which holds integers up to 2^24
+// exactly: a uint32 or int32 layer holding a larger value in the region is refused rather than
+// exported with another value.
+void check_float32_exact(const Store& store, const LayerInfo& layer,
+                         const std::vector<CellId>& cells, int level) {
+  if (layer.dtype != DType::U32 && layer.dtype != DType::I32) return;
+  constexpr double kExact = 1 << 24;
+  const double* nodata = layer.nodata ? &*layer.nodata : nullptr;
+  for (CellId cell : cells) {
+    const auto raw = level == layer.level ? store.get_tile(layer.name, cell)
+                                          : store.get_overview(layer.name, cell);
+    if (!raw) continue;
+    for (double v : to_tile<double>(*raw, nodata).data())
+      if (std::abs(v) > kExact)
+        throw Error("layer '" + layer.name + "' holds " + std::string(dtype_name(layer.dtype)) +
+                    " value " + std::to_string(int64_t(v)) + " in cell " + cell.ToText() +
+                    ", beyond 2^24: an export to an EPSG CRS samples through float32 and would " +
+                    "change it; export it with --crs rhealpix (exact)");
+  }
+}
+
 }  // namespace
 
 WarpGrid warp_grid(const Grid& grid, const std::vector<CellId>& cells, const WarpSpec& spec) {
@@ -110,7 +131,7 @@ WarpGrid warp_grid(const Grid& grid, const std::vector<CellId>& cells, const War
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   if (!to_target || !to_target->TransformBounds(box[0], box[1], box[2], box[3], &x0, &y0, &x1, &y1,
                                                 kDensifyPoints))
-    gdal_error("cannot transform the region's bounds to --crs");
+    gdal_error("cannot transform the region's bounds to --crs " + crs_name(target));
   if (target.IsGeographic() && x0 > x1) x1 += 360;  // across the antimeridian: east beyond 180
   WarpGrid t{x0, y1, spec.resolution, 0, 0};
   const double width = (x1 - x0 + spec.resolution / 2) / spec.resolution,
@@ -126,6 +147,7 @@ WarpGrid warp_grid(const Grid& grid, const std::vector<CellId>& cells, const War
 void write_warped_geotiff(const Store& store, const Grid& grid, const LayerInfo& layer,
                           const std::vector<CellId>& cells, int level, const WarpSpec& spec,
                           const WarpGrid& target, const std::string& path) {
+  check_float32_exact(store, layer, cells, level);
   GdalErrorTrap trap;  // GDAL may lose blocks on a full disk and only say so while closing
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   const GDALDataType type = gdal_type(layer.dtype);

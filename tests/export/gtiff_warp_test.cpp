@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
 #include "export_fixture.h"
 #include "run_cli.h"
+#include "test_tiles.h"
 
 namespace maquette::test {
 namespace {
@@ -125,6 +127,41 @@ TEST(GtiffWarp, AgreesWithGdalwarpOnOurRhealpixExport) {
   compare_with_gdalwarp("dem", "bilinear", 0.2, 1.0);
   // gdalwarp's default approximate transformer may move a pixel centre across a class edge.
   compare_with_gdalwarp("landcover", "near", 0.02, 2.0);
+}
+
+// A store of one cell of `info`'s layer, its tile from `value(sample)`; returns its path.
+template <typename T, typename F>
+std::string one_cell_store(const LayerInfo& info, F value) {
+  const std::string path = temp_dir() + "/one.maquette";
+  const CellId cell = export_fixture().dem_cells[0];
+  auto store = Store::open(path, Store::Mode::Create);
+  store->create_layer(info);
+  store->put_tile(info.name, cell,
+                  make_tile<T>(default_grid(), cell, kTileSize, 1,
+                               [&](const TileSample& s, int) { return value(s); }));
+  return path;
+}
+
+// float32 holds integers up to 2^24 exactly: an EPSG export of a uint32 layer beyond is refused
+// (it would write 16777216 for 16777217), while the rHEALPix export writes it bit for bit.
+TEST(GtiffWarp, RefusesIntegersFloat32CannotHold) {
+  LayerInfo info = layer_info("count", DType::U32, 1, kTileSize, kLevel);
+  info.semantics = Semantics::Categorical;  // nearest sampling
+  const std::string store = one_cell_store<uint32_t>(
+      info, [](const TileSample& s) { return 16777216 + uint32_t(s.col % 2); });
+  const std::string out = temp_dir() + "/count.tif";
+  const CliResult r =
+      run_maquette("export gtiff " + store + " --layer count " + out + " --crs EPSG:4326");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("layer 'count' holds uint32 value 16777217"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--crs rhealpix"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  ASSERT_EQ(run_maquette("export gtiff " + store + " --layer count " + out).exit_code, 0);
+  const auto ds = open_raster(out);
+  ASSERT_TRUE(ds);
+  const std::vector<double> v = read_band(*ds);
+  EXPECT_EQ(*std::max_element(v.begin(), v.end()), 16777217.0);
 }
 
 }  // namespace
