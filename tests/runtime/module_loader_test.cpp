@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include <sstream>
+#include <string>
 
 #include "runtime/operator_registry.h"
 #include "test_util.h"
@@ -34,10 +35,10 @@ TEST(ModuleLoader, FirstFileOfANameWins) {
 
 TEST(ModuleLoader, RefusesAnotherAbiNamingTheFile) {
   const std::string file = fixture_dir("bad_abi") + "/libfixture_bad_abi.so";
-  EXPECT_EQ(error_of([&] { load_module(file); }),
-            file + " was built for module ABI 1, this maquette has ABI 6: rebuild it");
-  EXPECT_EQ(error_of([&] { OperatorRegistry::load({fixture_dir("bad_abi")}); }),
-            file + " was built for module ABI 1, this maquette has ABI 6: rebuild it");
+  const std::string expected = file + " was built for module ABI 1, this maquette has ABI " +
+                               std::to_string(MAQUETTE_ABI_VERSION) + ": rebuild it";
+  EXPECT_EQ(error_of([&] { load_module(file); }), expected);
+  EXPECT_EQ(error_of([&] { OperatorRegistry::load({fixture_dir("bad_abi")}); }), expected);
 }
 
 TEST(ModuleLoader, RefusesALibraryWithoutEntryPoint) {
