@@ -35,6 +35,11 @@ TEST(ExportBadInput, BadCrs) {
   expect_refused("--layer dem --crs EPSG:99999999", "no such EPSG code");
 }
 
+TEST(ExportBadInput, CrsWithoutTransformationIsNamed) {
+  // EGM96 height: a vertical CRS, no transformation from it to lon/lat.
+  expect_refused("--layer dem --crs EPSG:5773", "cannot transform --crs EPSG:5773 to lon/lat");
+}
+
 TEST(ExportBadInput, LevelFinerThanTheLayer) {
   expect_refused("--layer dem --level 9", "--level 9 must be in 0..6");
 }
