@@ -187,7 +187,7 @@ std::string write_module_pipeline() {
         {{"op", "texture.fit"},
          {"inputs", {{"classes", "classes"}, {"rgb", "rgb"}, {"dem", "dem"}}},
          {"outputs", {{"model", "model"}}},
-         {"params", {{"ranges", {{"height", {-500, 4000}}}}, {"children", 1}}}},
+         {"params", {{"ranges", {{"height", {-500, 4000}}}}}}},
         {{"op", "texture.assess"},
          {"inputs",
           {{"classes", "classes"}, {"predicted", "truth"}, {"rgb", "rgb"}, {"synthesized", "rgb"}}},
