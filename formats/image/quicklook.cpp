@@ -52,8 +52,9 @@ std::pair<double, double> stretch_range(const PictureRaster& m, const QuicklookS
 
 // How a one-channel picture is coloured: the style's ramp, or one chosen by the values (a
 // diverging ramp when they span both signs, else viridis), between the values mapped to its ends:
-// symmetric around 0 for a diverging ramp, so that 0 gets its middle colour; the full range of
-// heights for the hypsometric ramp's legend (it maps metres, not a stretch).
+// symmetric around 0 for a diverging ramp unless --range gave them, so that 0 gets its middle
+// colour; the full range of heights for the hypsometric ramp's legend (it maps metres, not a
+// stretch).
 struct RampScale {
   Ramp ramp = Ramp::Grey;
   double low = 0, high = 1;
@@ -66,7 +67,7 @@ RampScale ramp_scale(const PictureRaster& m, const QuicklookStyle& style) {
   }
   const auto [low, high] = stretch_range(m, style, 0);
   const Ramp ramp = style.ramp.value_or(low < 0 && high > 0 ? Ramp::Diverging : Ramp::Viridis);
-  if (ramp != Ramp::Diverging) return {ramp, low, high};
+  if (ramp != Ramp::Diverging || style.range) return {ramp, low, high};  // an asked range as is
   const double reach = std::max(std::abs(low), std::abs(high));
   return {ramp, -reach, reach};
 }

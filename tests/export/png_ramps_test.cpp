@@ -162,6 +162,27 @@ TEST(PngRamps, SignedQuantitiesGetADivergingRampCentredOnZero) {
   EXPECT_GT(bar.back()[0] - bar.back()[2], 50);
 }
 
+TEST(PngRamps, AnAskedRangeIsTheDivergingRampsEnds) {
+  // -10 .. 30 drawn with --range -30 70: 20 gets the middle colour, not 0 (the ramp is not widened
+  // to +-70 around 0).
+  const std::string store = store_of(temp_dir(), [](double lon) { return 40 * (lon - 7) - 10; });
+  const Picture p = export_png(store, "--ramp diverging --range -30 70 --no-legend");
+  ASSERT_FALSE(p.png.empty());
+  int middle = 0, low = 0;
+  each_pixel(p, [&](double lon, const Rgb& rgb) {
+    const double v = 40 * (lon - 7) - 10;
+    if (std::abs(v - 20) < 1) {
+      ++middle;
+      EXPECT_GE(std::min({rgb[0], rgb[1], rgb[2]}), 235) << "v " << v;
+    } else if (v < 0) {
+      ++low;
+      EXPECT_GT(rgb[2] - rgb[0], 20) << "v " << v << ": blue";
+    }
+  });
+  EXPECT_GT(middle, 5);
+  EXPECT_GT(low, 50);
+}
+
 TEST(PngRamps, GreyOnRequest) {
   const std::string store = store_of(temp_dir(), [](double lon) { return 100 * (lon - 7); });
   const Picture p = export_png(store, "--ramp grey --range 0 100 --no-legend");
