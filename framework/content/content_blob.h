@@ -1,0 +1,36 @@
+// The envelope of a content blob (store/README.md): what the store's tiles and overviews tables
+// hold for layers of kind mesh, instances and volume. A 64-byte header, then the payload:
+//
+//   0  magic "MQCT"         4  format version (u16 LE, 1)   6  kind (ContentKind)
+//   7  encoding (1: mesh GLB, instances columnar zstd, volume VDB stream)
+//   8  origin lon (f64 LE, degrees)  16  origin lat (f64 LE)  24  origin height (f64 LE, metres)
+//   32 objects (u64 LE)      40  triangles (u64 LE)          48  voxels (u64 LE)
+//   56 payload bytes (u64 LE)
+//
+// The header is all `maquette info` reads (SQLite substr of the blob), and the ENU origin is kept
+// in double precision beside payloads that hold float32 positions.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "content/content.h"
+
+namespace maquette {
+
+inline constexpr size_t kContentHeaderBytes = 64;
+
+struct ContentEnvelope {
+  ContentKind kind = ContentKind::Mesh;
+  uint8_t encoding = 1;
+  EnuOrigin origin;
+  ContentStats stats;
+};
+
+std::string wrap_content(const ContentEnvelope& envelope, std::string_view payload);
+// Throws maquette::Error naming `where` (e.g. "layer buildings, cell N3021") and what is wrong:
+// too short, bad magic, unknown version, kind or encoding, payload size disagreeing.
+ContentEnvelope read_content_envelope(std::string_view blob, const std::string& where);
+std::string_view content_payload(std::string_view blob);  // after read_content_envelope
+
+}  // namespace maquette
