@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <map>
 
 #include "core/error.h"
 #include "core/output_file.h"
@@ -12,7 +13,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kFloat = 5126, kUint32 = 5125;
+constexpr int kFloat = 5126, kUint32 = 5125, kUint8 = 5121;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
 class GlbBuilder {
@@ -44,6 +45,7 @@ class GlbBuilder {
        nodes_ = json::array(), materials_ = json::array(), images_ = json::array(),
        textures_ = json::array();
   std::vector<std::string> extensions_;
+  std::map<const InstanceTransforms*, json> instancing_;  // the accessors written for each
 };
 
 json bounds(const std::vector<float>& pos, bool max) {
@@ -132,10 +134,20 @@ void GlbBuilder::add(const GlbPrimitive& p) {
   if (m.offset != Vec3{}) node["translation"] = m.offset;  // in double: precise far away
   if (p.instances) {
     use("EXT_mesh_gpu_instancing");
-    node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
-        {"TRANSLATION", floats(p.instances->translation, 3, "VEC3")},
-        {"ROTATION", floats(p.instances->rotation, 4, "VEC4")},
-        {"SCALE", floats(p.instances->scale, 3, "VEC3")}};
+    json& attributes = instancing_[p.instances];
+    if (attributes.is_null()) {
+      const InstanceTransforms& t = *p.instances;
+      attributes = {{"TRANSLATION", floats(t.translation, 3, "VEC3")},
+                    {"ROTATION", floats(t.rotation, 4, "VEC4")},
+                    {"SCALE", floats(t.scale, 3, "VEC3")}};
+      if (!t.colour.empty())
+        attributes["_COLOR_0"] = accessor({{"componentType", kUint8},
+                                           {"normalized", true},
+                                           {"count", t.colour.size() / 4},
+                                           {"type", "VEC4"},
+                                           {"bufferView", view(t.colour.data(), t.colour.size())}});
+    }
+    node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = attributes;
   }
   nodes_.push_back(node);
 }

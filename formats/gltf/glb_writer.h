@@ -20,6 +20,7 @@ struct InstanceTransforms {
   std::vector<float> translation;  // 3 per instance
   std::vector<float> rotation;     // unit quaternions (x, y, z, w)
   std::vector<float> scale;        // 3 per instance
+  std::vector<uint8_t> colour;     // RGBA8 per instance (linear, multiplies), or empty: _COLOR_0
 };
 
 struct GlbPrimitive {
@@ -27,8 +28,8 @@ struct GlbPrimitive {
   const DracoPrimitive* draco = nullptr;  // nullptr: plain vertex buffers
   const EncodedImage* image = nullptr;    // nullptr: untextured
   std::string name;
-  std::array<double, 3> color{0.6, 0.6, 0.6};  // without an image
-  const InstanceTransforms* instances = nullptr;
+  std::array<double, 3> color{0.6, 0.6, 0.6};     // without an image
+  const InstanceTransforms* instances = nullptr;  // primitives given the same one share it
 };
 
 // The GLB bytes; `extras` goes to the asset's extras (e.g. the frame's origin).

@@ -1,0 +1,31 @@
+// One cell's instances (content.h: InstancesContent) as a GLB: each prototype's objects written
+// once, each drawn once per instance of that prototype in the cell (EXT_mesh_gpu_instancing,
+// in extensionsRequired: TRANSLATION, ROTATION, SCALE, and the instance's colour as `_COLOR_0`,
+// RGBA8 normalized, multiplying the object's material as glTF's COLOR_0 does). The objects of one
+// prototype share one set of instance accessors. Prototypes with no instance in the cell are left
+// out.
+//
+// The frame is the content's east-north-up frame with glTF's axes (x east, y up, z south), named
+// in the asset's extras as export_glb's frames are ({"origin": {"lon", "lat", "height"},
+// "axes"}); positions are floats from the cell's origin, so they need no node translation.
+//
+// Prototype meshes are plain floats, not Draco: a prototype has a few hundred to two thousand
+// vertices and is written once per cell however many instances draw it, so Draco would save a
+// few kilobytes per file and cost a decoder in every viewer; the instance columns, the bulk of
+// the bytes, cannot be Draco-compressed anyway.
+#pragma once
+
+#include <vector>
+
+#include "content/content.h"
+
+namespace maquette {
+
+// `prototypes[i]` is the model of `content.prototypes[i]` (e.g. builtin_prototype(name)), in its
+// own frame (x east, y north, z up, base at the origin), untextured. Throws maquette::Error when
+// the columns' sizes disagree with the instance count, an instance names a prototype index out of
+// range, or a prototype is missing or textured.
+std::vector<char> instances_glb(const InstancesContent& content,
+                                const std::vector<const MeshContent*>& prototypes);
+
+}  // namespace maquette
