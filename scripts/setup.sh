@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev
   libcpp-httplib-dev chromium
   grass-core  # test oracle only (r.sun, run as a separate process): never linked
+  libopenmesh-dev  # test oracle only (tests/instances: closed, oriented meshes; BSD-3)
 )
 # The viewer is built with npm; Debian's node is enough where the machine has none of its own.
 command -v npm >/dev/null || packages+=(nodejs npm)
