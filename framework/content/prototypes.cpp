@@ -220,7 +220,7 @@ MeshContent finish(const Model& m, const std::string& name, Material bark, Mater
 
 MeshContent conifer() {
   Model m;
-  trunk(m, 0.3, 0.04, 0.028, 10);
+  trunk(m, 0.3, 0.032, 0.022, 10);
   struct Tier {
     double base, apex, radius;
   };
@@ -245,18 +245,19 @@ MeshContent broadleaf() {
                         {{-0.14, 0, 0.78}, 0.17}};
   for (size_t i = 0; i < std::size(lobes); ++i) lobe(m, lobes[i], 1, 0.1, 101 + i);
   return finish(m, "builtin:broadleaf", colour("bark", 0.1f, 0.07f, 0.045f),
-                colour("leaves", 0.06f, 0.2f, 0.03f));
+                colour("leaves", 0.06f, 0.22f, 0.03f));
 }
 
 MeshContent shrub() {
   Model m;
   trunk(m, 0.15, 0.06, 0.05, 8);
-  const Lobe lobes[] = {{{0, 0, 0.40}, 0.40},       {{0.35, 0.1, 0.3}, 0.32},
-                        {{-0.3, 0.2, 0.3}, 0.32},   {{-0.1, -0.33, 0.28}, 0.3},
-                        {{0.2, -0.28, 0.32}, 0.28}, {{0.1, 0.35, 0.3}, 0.28}};
+  // The lowest lobes reach below the ground, flattened onto it.
+  const Lobe lobes[] = {{{0, 0, 0.36}, 0.40},       {{0.35, 0.1, 0.26}, 0.32},
+                        {{-0.3, 0.2, 0.26}, 0.32},  {{-0.1, -0.33, 0.24}, 0.3},
+                        {{0.2, -0.28, 0.28}, 0.28}, {{0.1, 0.35, 0.26}, 0.28}};
   for (size_t i = 0; i < std::size(lobes); ++i) lobe(m, lobes[i], 0.8, 0.1, 201 + i);
   return finish(m, "builtin:shrub", colour("bark", 0.1f, 0.07f, 0.045f),
-                colour("leaves", 0.1f, 0.2f, 0.04f));
+                colour("leaves", 0.13f, 0.2f, 0.035f));
 }
 
 }  // namespace

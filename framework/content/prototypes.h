@@ -9,8 +9,8 @@
 // (0: bark, 1: foliage, PBR colours in linear RGB) and two objects (trunk, crown) using them in
 // that order; per-vertex unit normals; each object closed once vertices at the same position are
 // merged (normals split at creases), triangles counter-clockwise seen from outside; fewer than
-// 2,000 vertices in all. Crown diameters: conifer about 0.5 m, broadleaf about 0.8 m, shrub about
-// 1.6 m. Made once, the same bytes on every call and every run (fixed seeds, no state).
+// 2,000 vertices in all. Crown diameters: conifer about 0.5 m, broadleaf about 0.7 m, shrub about
+// 1.9 m. Made once, the same bytes on every call and every run (fixed seeds, no state).
 #pragma once
 
 #include <string_view>

@@ -145,7 +145,7 @@ TEST(InstancesGlb, WritesTheGroveOfThePicture) {
   for (int i = 0; i < 4; ++i)
     plant(0, -10.5f + 7 * float(i), 10 + float(i % 2), firs[i], float(i), 0xffffffff);
   const float broadleaves[] = {8, 10, 7};
-  const uint32_t leaf_tints[] = {0xffffffff, 0xffc0ffff, 0xffffe0d0};
+  const uint32_t leaf_tints[] = {0xffffffff, 0xff40c0ff, 0xffffe8d8};  // olive, bluish
   for (int i = 0; i < 3; ++i)
     plant(1, -8 + 8 * float(i), 2 + float(i % 2), broadleaves[i], float(i), leaf_tints[i]);
   for (int i = 0; i < 6; ++i)

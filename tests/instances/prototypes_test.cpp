@@ -82,8 +82,8 @@ TEST_P(Prototype, FacesOutwardWithUnitNormalsOnTheSideOfTheirTriangles) {
 TEST_P(Prototype, HasItsBoundingBox) {
   const std::map<std::string, std::pair<double, double>> crown = {
       {"builtin:conifer", {0.4, 0.65}},
-      {"builtin:broadleaf", {0.65, 0.95}},
-      {"builtin:shrub", {1.4, 2.0}}};
+      {"builtin:broadleaf", {0.6, 0.85}},
+      {"builtin:shrub", {1.6, 2.2}}};
   const MeshContent& m = builtin_prototype(GetParam());
   std::array<double, 3> lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
   size_t vertices = 0;
