@@ -78,10 +78,12 @@ void trunk(Model& m, double top, double r0, double r1, int n) {
   m.add(0, disc(top, r1, n, true));
 }
 
-// A conifer's tier: a cone from a jagged rim (2n points, branch tips at `radius` hanging `droop`
-// below `base`, notches between them) up to `apex`, closed below by a shallow upward cone (the
-// tier's underside, as the branches seen from below).
-void tier(Model& m, double base, double apex, double radius, double droop, int n, double turn) {
+// A conifer's tier: a cone from a jagged rim (2n points, branch tips at `radius` hanging below
+// `base` by an eighth of the tier's height, notches between them) up to `apex`, closed below by a
+// shallow upward cone (the tier's underside, as the branches seen from below). `turn` (radians)
+// sets the tips apart from those of the tier below.
+void tier(Model& m, double base, double apex, double radius, int n, double turn) {
+  const double droop = (apex - base) / 8;
   std::vector<P3> rim;
   for (int i = 0; i < 2 * n; ++i) {
     const bool tip = i % 2 == 0;
@@ -230,8 +232,7 @@ MeshContent conifer() {
                         {0.62, 0.92, 0.12},
                         {0.76, 1.00, 0.07}};
   for (size_t i = 0; i < std::size(tiers); ++i)
-    tier(m, tiers[i].base, tiers[i].apex, tiers[i].radius,
-         0.25 * (tiers[i].apex - tiers[i].base) / 2, 11, 0.9 * double(i));
+    tier(m, tiers[i].base, tiers[i].apex, tiers[i].radius, 11, 0.9 * double(i));
   return finish(m, "builtin:conifer", colour("bark", 0.14f, 0.06f, 0.025f),
                 colour("needles", 0.018f, 0.085f, 0.03f));
 }

@@ -7,10 +7,14 @@
 //     --out grove.png
 //
 // (--node-modules: playwright-core, installed by the viewer tests' npm step; --three: three.js,
-// installed by the viewer's.) The page is served from memory through playwright's routing.
+// installed by the viewer's; --camera X,Y,Z places the camera elsewhere than in front, glTF axes.)
+// The page is served from memory through playwright's routing. It fails (exit 1) unless the six
+// instanced meshes are drawn without console errors and the crowns rise above the horizon: at
+// least 3 % of the sky above it, seen from the default camera, is foliage, green above red and
+// blue (prototypes lying down or upside down, wrong axes, would leave the sky empty).
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { launchBrowser, log, parseArgs } from '../viewer/harness.mjs';
+import { launchBrowser, log, parseArgs, requireFrom } from '../viewer/harness.mjs';
 
 const args = parseArgs();
 const page = `<!doctype html><html><body style="margin:0">
@@ -39,7 +43,7 @@ ground.rotation.x = -Math.PI / 2;
 ground.receiveShadow = true;
 scene.add(ground);
 const camera = new THREE.PerspectiveCamera(38, innerWidth / innerHeight, 0.5, 500);
-camera.position.set(0, 7, 34);
+camera.position.set(${args.camera || '0, 7, 34'});
 camera.lookAt(0, 4.5, 0);
 new GLTFLoader().load('/grove.glb', (gltf) => {
   gltf.scene.traverse((o) => { if (o.isMesh) { o.castShadow = true; o.receiveShadow = true; } });
@@ -68,6 +72,18 @@ if (error || b.consoleErrors.length) {
   await b.close();
   process.exit(1);
 }
-await b.page.screenshot({ path: args.out });
-log(`${instanced} instanced meshes drawn; saved ${args.out}`);
+const { PNG } = requireFrom(args['node-modules'])('pngjs');
+const png = PNG.sync.read(await b.page.screenshot({ path: args.out }));
 await b.close();
+log(`${instanced} instanced meshes drawn; saved ${args.out}`);
+// The horizon of the default camera (7 m up, looking 2.5 m down over 34 m) is at 40 % of the
+// height; above it, the sky (0xbcd4e6) or the crowns.
+const horizon = Math.floor(png.height * 0.4);
+let foliage = 0;
+for (let i = 0; i < png.width * horizon; i++) {
+  const [r, g, bl] = [png.data[4 * i], png.data[4 * i + 1], png.data[4 * i + 2]];
+  foliage += g > r && g > bl;
+}
+const share = foliage / (png.width * horizon);
+log(`foliage above the horizon: ${(100 * share).toFixed(1)} % of the sky`);
+if (instanced !== '6' || (!args.camera && share < 0.03)) process.exit(1);
