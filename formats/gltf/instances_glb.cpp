@@ -52,6 +52,7 @@ InstanceTransforms transforms_of(const InstancesContent& c, size_t p) {
 std::vector<char> instances_glb(const InstancesContent& content,
                                 const std::vector<const MeshContent*>& prototypes) {
   const size_t n = content.size();
+  if (n == 0) throw Error("instances content: no instances (a cell without any has no content)");
   check_column(content.position, 3, n, "position");
   check_column(content.rotation, 4, n, "rotation");
   check_column(content.scale, 3, n, "scale");

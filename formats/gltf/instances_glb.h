@@ -23,8 +23,8 @@ namespace maquette {
 
 // `prototypes[i]` is the model of `content.prototypes[i]` (e.g. builtin_prototype(name)), in its
 // own frame (x east, y north, z up, base at the origin), untextured. Throws maquette::Error when
-// the columns' sizes disagree with the instance count, an instance names a prototype index out of
-// range, or a prototype is missing or textured.
+// there is no instance (glTF has no empty scene), the columns' sizes disagree with the count, an
+// instance names a prototype index out of range, or a prototype is missing or textured.
 std::vector<char> instances_glb(const InstancesContent& content,
                                 const std::vector<const MeshContent*>& prototypes);
 

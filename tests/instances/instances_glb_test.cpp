@@ -59,7 +59,8 @@ TEST(InstancesGlb, AThousandInstancesPassTheValidatorAndTheInstancingChecker) {
   EXPECT_LT(bytes.size(), geometry + 1000 * 44 + 8000);
 }
 
-// Instance values come through in glTF's axes: translation (x, z, -y), the colour's bytes.
+// Instance values come through in glTF's axes: translation (x, z, -y), the rotation's axis as a
+// vector, scales swapped as the axes are, the colour's bytes.
 TEST(InstancesGlb, KeepsEachInstancesValuesInGltfAxes) {
   const InstancesContent c = forest(300, 2);
   const GlbChunks glb = split_glb(view(builtin_instances_glb(c)));
@@ -75,8 +76,15 @@ TEST(InstancesGlb, KeepsEachInstancesValuesInGltfAxes) {
     EXPECT_EQ(t[3 * k], x[0]);
     EXPECT_EQ(t[3 * k + 1], x[2]);
     EXPECT_EQ(t[3 * k + 2], -x[1]);
-    EXPECT_EQ(q[4 * k + 3], c.rotation[4 * i + 3]);
-    EXPECT_EQ(s[3 * k + 1], c.scale[3 * i + 2]);
+    const float* r = &c.rotation[4 * i];
+    EXPECT_EQ(q[4 * k], r[0]);
+    EXPECT_EQ(q[4 * k + 1], r[2]);
+    EXPECT_EQ(q[4 * k + 2], -r[1]);
+    EXPECT_EQ(q[4 * k + 3], r[3]);
+    const float* z = &c.scale[3 * i];
+    EXPECT_EQ(s[3 * k], z[0]);
+    EXPECT_EQ(s[3 * k + 1], z[2]);
+    EXPECT_EQ(s[3 * k + 2], z[1]);
     for (int b = 0; b < 4; ++b)
       EXPECT_EQ(std::lround(colour[4 * k + size_t(b)] * 255), long((c.colour[i] >> (8 * b)) & 255));
   }
@@ -195,6 +203,8 @@ TEST(InstancesGlb, InconsistentContentIsAClearError) {
   EXPECT_EQ(error_of(c),
             "unknown prototype 'builtin:palm' (built in: builtin:conifer, builtin:broadleaf, "
             "builtin:shrub)");
+  EXPECT_EQ(error_of(forest(0, 5)),
+            "instances content: no instances (a cell without any has no content)");
   MeshContent textured = builtin_prototype("builtin:shrub");
   textured.materials[1].image = "\x89PNG";
   EXPECT_THROW(instances_glb(forest(5, 5), {&textured, &textured, &textured}), Error);
