@@ -33,3 +33,15 @@ find_package(MPI COMPONENTS CXX)
 if(MPI_CXX_FOUND)
   set(MAQUETTE_WITH_MPI ON)
 endif()
+# OpenVDB, for formats/vdb and the plug-in libmaquette_vdb.so only. Debian's find module
+# (cmake/OpenVDB/FindOpenVDB.cmake) demands Boost.Iostreams' development files, which
+# libopenvdb-dev does not bring and nothing here needs: the headers and the library are enough
+# (libopenvdb.so names its own dependencies), as for libs2 above, with the two libraries its
+# headers call: oneTBB and Imath (Debian's build takes its half floats from Imath).
+find_package(Imath REQUIRED CONFIG)
+find_library(OPENVDB_LIBRARY openvdb REQUIRED)
+find_path(OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+add_library(OpenVDB::openvdb UNKNOWN IMPORTED)
+set_target_properties(OpenVDB::openvdb PROPERTIES IMPORTED_LOCATION ${OPENVDB_LIBRARY}
+                      INTERFACE_INCLUDE_DIRECTORIES ${OPENVDB_INCLUDE_DIR}
+                      INTERFACE_LINK_LIBRARIES "TBB::tbb;Imath::Imath")

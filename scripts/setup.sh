@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config ccache git ca-certificates clang-format
   libgeographiclib-dev libeigen3-dev libproj-dev proj-bin proj-data libgdal-dev gdal-bin
-  libopenvdb-dev libdraco-dev draco libopencv-dev
+  libopenvdb-dev libboost-dev libdraco-dev draco libopencv-dev
   libspdlog-dev libfmt-dev libtbb-dev libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3 libzstd-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev

@@ -1,0 +1,26 @@
+// The volume plug-in, libmaquette_vdb.so: volume blobs' payloads (VDB streams, formats/vdb)
+// meshed for export and counted for the store, opened by the commands that need them only, so no
+// other command loads OpenVDB.
+#pragma once
+
+#include <string>
+
+#include "content/content.h"
+#include "vdb/volume_mesh.h"
+
+namespace maquette {
+
+inline constexpr const char* kVdbPlugin = "libmaquette_vdb.so";
+inline constexpr const char* kVdbMeshEntry = "maquette_vdb_mesh";
+inline constexpr const char* kVdbStatsEntry = "maquette_vdb_stats";
+
+}  // namespace maquette
+
+// volume_to_mesh (vdb/volume_mesh.h) into `mesh`. Errors name `where` (e.g. "layer lakes, cell
+// N3021").
+extern "C" void maquette_vdb_mesh(const maquette::VolumeContent& volume,
+                                  const maquette::VolumeMeshSettings& settings,
+                                  const std::string& where, maquette::MeshContent& mesh);
+// volume_stats (vdb/volume_vdb.h) of the decoded volume into `stats`.
+extern "C" void maquette_vdb_stats(const maquette::VolumeContent& volume, const std::string& where,
+                                   maquette::ContentStats& stats);
