@@ -16,7 +16,9 @@
 // 4: OperatorSpec::writes_all_samples; Tile's samples in a default-initializing vector.
 // 5: OperatorSpec::fills_footprint.
 // 6: OutputSpec::codec.
-#define MAQUETTE_ABI_VERSION 6u
+// 7: features ports (InputSpec::kind, reach_m; CellData::features, Mosaic::features) and content
+//    output ports (OutputSpec::kind).
+#define MAQUETTE_ABI_VERSION 7u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

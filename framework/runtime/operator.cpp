@@ -24,6 +24,12 @@ const Tile<float>& CellData::input(const std::string& port) const {
   return it->second;
 }
 
+const FeatureList& CellData::features_of(const std::string& port) const {
+  const auto it = features.find(port);
+  if (it == features.end()) throw Error("no features for port '" + port + "'");
+  return it->second;
+}
+
 Tile<float>& CellData::output(const std::string& port) {
   const auto it = outputs.find(port);
   if (it == outputs.end()) throw Error("no output tile for port '" + port + "'");

@@ -18,6 +18,7 @@
 #include "core/cell_id.h"
 #include "core/grid.h"
 #include "core/tile.h"
+#include "runtime/vector_feature.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -27,10 +28,14 @@ using json = nlohmann::json;
 enum class OperatorKind { Cell, Reduce, Region, Task };
 std::string_view operator_kind_name(OperatorKind k);
 
+// An input port: a raster layer (tiles with the operator's halo, CellData::inputs) or a features
+// layer (CellData::features: the features whose geometry comes within reach_m of the cell).
 struct InputSpec {
   std::string name;
   std::string description;
   bool optional = false;
+  LayerKind kind = LayerKind::Raster;  // Raster or Features
+  double reach_m = 0;                  // features ports: metres around the cell (>= 0)
 };
 
 // An output port. The layer it writes gets dtype/channels/semantics/units/codec from here and its
@@ -47,6 +52,10 @@ struct OutputSpec {
   // How its tiles are stored (store/codec.h): "normal_oct" for unit normals (float32 x 3), ~4-10x
   // fewer bytes than zstd for at most 0.04 degrees.
   std::string codec = "zstd";
+  // The kind of layer it writes: Raster, or 3D content (Mesh, Volume; Instances once the store
+  // has it). Content ports are declared only for now: a step mapping one is refused before
+  // anything runs ("content outputs are not written yet").
+  LayerKind kind = LayerKind::Raster;
 };
 
 struct OperatorSpec {
@@ -98,13 +107,17 @@ struct StepContext {
 
 // Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
 // float32 (NaN -> the output's nodata), converted to the output dtype by the framework. Outputs
-// arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples.
+// arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples. Features
+// ports get the features within their reach_m of the cell (core/geo_distance.h), sorted by id;
+// the pointers are valid while the operator runs.
 struct CellData {
-  std::map<std::string, Tile<float>> inputs;   // by input port name (absent optional: missing)
-  std::map<std::string, Tile<float>> outputs;  // by output port name, only those the step maps
+  std::map<std::string, Tile<float>> inputs;    // by input port name (absent optional: missing)
+  std::map<std::string, FeatureList> features;  // by features port name (absent optional: missing)
+  std::map<std::string, Tile<float>> outputs;   // by output port name, only those the step maps
 
-  const Tile<float>& input(const std::string& port) const;  // throws naming the port
-  Tile<float>& output(const std::string& port);             // throws naming the port
+  const Tile<float>& input(const std::string& port) const;        // throws naming the port
+  const FeatureList& features_of(const std::string& port) const;  // throws naming the port
+  Tile<float>& output(const std::string& port);                   // throws naming the port
   bool wants(const std::string& output_port) const { return outputs.count(output_port) != 0; }
 };
 
@@ -137,6 +150,9 @@ struct Mosaic {
   int level = 0;  // pixel level: cell level + log2(tile size)
   int64_t origin_col = 0, origin_row = 0;
   std::map<std::string, Tile<float>> layers;  // square or not: width = height = tile.size()
+  // Input mosaics only: by features port, the features within its reach_m of any of the region's
+  // cells, sorted by id (valid while the operator runs).
+  std::map<std::string, FeatureList> features;
 };
 
 class RegionOperator : public Operator {

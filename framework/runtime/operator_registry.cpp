@@ -1,5 +1,7 @@
 #include "runtime/operator_registry.h"
 
+#include <cmath>
+
 #include "core/error.h"
 #include "runtime/task_operator.h"
 
@@ -20,11 +22,41 @@ bool kind_matches(const Operator& op) {
   return false;
 }
 
+// Ports the runner can serve: inputs of raster or features layers (features with a finite reach
+// >= 0, not for tasks), outputs of raster or 3D content layers (content for cell and region
+// operators only). Returns what is wrong, or "".
+std::string port_error(const OperatorSpec& spec) {
+  for (const auto& in : spec.inputs) {
+    const std::string where = "input '" + in.name + "' ";
+    if (in.kind != LayerKind::Raster && in.kind != LayerKind::Features)
+      return where + "takes " + std::string(layer_kind_name(in.kind)) +
+             " layers (ports take raster or features layers)";
+    if (in.kind == LayerKind::Features && !(in.reach_m >= 0 && std::isfinite(in.reach_m)))
+      return where + "has reach_m " + std::to_string(in.reach_m) + " (a distance >= 0 is needed)";
+    if (in.kind == LayerKind::Features && spec.kind == OperatorKind::Task)
+      return where + "takes features, which tasks are not given";
+  }
+  for (const auto& out : spec.outputs) {
+    if (out.kind == LayerKind::Features || out.kind == LayerKind::Artifact)
+      return "output '" + out.name + "' writes " + std::string(layer_kind_name(out.kind)) +
+             " layers (outputs write raster or 3D content layers)";
+    if (out.kind != LayerKind::Raster && spec.kind != OperatorKind::Cell &&
+        spec.kind != OperatorKind::Region)
+      return "output '" + out.name + "' writes 3D content, which only cell and region operators do";
+  }
+  return "";
+}
+
 nlohmann::json operator_json(const OperatorSpec& spec) {
   nlohmann::json inputs = nlohmann::json::array();
-  for (const auto& in : spec.inputs)
-    inputs.push_back(
-        {{"name", in.name}, {"description", in.description}, {"optional", in.optional}});
+  for (const auto& in : spec.inputs) {
+    nlohmann::json i = {{"name", in.name},
+                        {"description", in.description},
+                        {"optional", in.optional},
+                        {"kind", layer_kind_name(in.kind)}};
+    if (in.kind == LayerKind::Features) i["reach_m"] = in.reach_m;
+    inputs.push_back(i);
+  }
   nlohmann::json outputs = nlohmann::json::array();
   for (const auto& out : spec.outputs) {
     nlohmann::json o = {{"name", out.name},
@@ -32,7 +64,8 @@ nlohmann::json operator_json(const OperatorSpec& spec) {
                         {"dtype", dtype_name(out.dtype)},
                         {"channels", out.channels},
                         {"semantics", semantics_name(out.semantics)},
-                        {"units", out.units}};
+                        {"units", out.units},
+                        {"kind", layer_kind_name(out.kind)}};
     if (out.nodata) o["nodata"] = *out.nodata;
     outputs.push_back(o);
   }
@@ -85,6 +118,8 @@ void OperatorRegistry::add(const LoadedModule& module) {
     if (!kind_matches(*op))
       throw Error(module.file + ": operator '" + name + "' declares kind " +
                   std::string(operator_kind_name(op->spec().kind)) + " but is not of that class");
+    if (const std::string what = port_error(op->spec()); !what.empty())
+      throw Error(module.file + ": operator '" + name + "': " + what);
     operators_.emplace(name, Entry{std::move(op), module});
   }
   modules_.push_back(module);
@@ -127,8 +162,11 @@ void OperatorRegistry::print(std::ostream& out) const {
       if (s.halo > 0) out << ", halo " << s.halo;
       out << "): " << s.description << "\n";
       for (const auto& in : s.inputs)
-        out << "    input  " << in.name << (in.optional ? " (optional)" : "") << ": "
-            << in.description << "\n";
+        out << "    input  " << in.name << (in.optional ? " (optional)" : "")
+            << (in.kind == LayerKind::Features
+                    ? " (features within " + nlohmann::json(in.reach_m).dump() + " m)"
+                    : std::string())
+            << ": " << in.description << "\n";
       for (const auto& o : s.outputs) {
         if (s.kind == OperatorKind::Task) {  // the layer's type comes from the task's params
           out << "    output " << o.name << ": " << o.description << "\n";

@@ -41,6 +41,10 @@ class Planner {
     for (const auto& in : spec.inputs) {
       const auto it = step.inputs.find(in.name);
       if (it == step.inputs.end()) continue;
+      if (in.kind == LayerKind::Features) {
+        sp.features.push_back(features_port(step, in, it->second));
+        continue;
+      }
       const LayerInfo info = input_layer(step, in.name, it->second, sp);
       if (sp.inputs.empty()) {
         sp.level = info.level;
@@ -49,7 +53,7 @@ class Planner {
       sp.inputs.emplace_back(in.name, info);
     }
     std::vector<CellId> cells =
-        sp.inputs.empty() ? pipeline_.region : tiles_in_region(sp.inputs.front().second);
+        sp.inputs.empty() ? cells_near(sp.features) : tiles_in_region(sp.inputs.front().second);
     if (spec.fills_footprint && !sp.inputs.empty())
       cells = with_footprint_cells(std::move(cells), sp.inputs.front().second);
     if (spec.kind == OperatorKind::Region) {
@@ -75,11 +79,13 @@ class Planner {
       info.semantics = out.semantics;
       info.units = out.units;
       info.codec = out.codec;
+      info.kind = out.kind;
       info.provenance = {{"operator", step.op_name}, {"params", step.params}};
       inherit_source_description(sp.inputs, out.name, info);
       sp.outputs.emplace(out.name, info);
       produced_[info.name] = {info, cells};
     }
+    refuse_content_outputs(sp);
     const size_t chunk = default_chunk_size(cells.size(), threads_);
     sp.cells = CellPlan(std::move(cells), chunk);
     return sp;
@@ -161,24 +167,60 @@ class Planner {
                     pipeline_.store_path + " nor written by an earlier step)");
   }
 
-  LayerInfo input_layer(const PipelineStep& step, const std::string& port, const std::string& name,
-                        const StepPlan& sp) const {
-    const std::string where = step.label() + ": inputs." + port + ": ";
+  // The layer `name` given to a port taking `kind` layers, written by an earlier step or in the
+  // store; `where` is "step 2 (op): inputs.PORT: ".
+  LayerInfo port_layer(const std::string& where, const std::string& name, LayerKind kind) const {
     std::optional<LayerInfo> info;
     if (const auto it = produced_.find(name); it != produced_.end())
       info = it->second.info;
     else if (store_ != nullptr)
       info = store_->layer(name);
     if (!info) throw Error(where + "unknown layer '" + name + "' in " + pipeline_.store_path);
-    if (info->kind != LayerKind::Raster)
+    if (info->kind != kind)
       throw Error(where + "layer '" + name + "' is a " + std::string(layer_kind_name(info->kind)) +
-                  " layer, not a raster");
-    if (!sp.inputs.empty() && (info->level != sp.level || info->tile_size != sp.tile_size))
-      throw Error(where + "layer '" + name + "' has level " + std::to_string(info->level) +
-                  " and tile size " + std::to_string(info->tile_size) +
+                  " layer, but the port takes a " + std::string(layer_kind_name(kind)) + " layer");
+    return *info;
+  }
+
+  // A features port: its features are read now, unless an earlier step (a task) writes the
+  // layer, whose features are then read when the step starts.
+  FeaturePort features_port(const PipelineStep& step, const InputSpec& in,
+                            const std::string& name) const {
+    FeaturePort fp{in.name, name, in.reach_m, nullptr};
+    if (written_.count(name)) return fp;
+    const std::string where = step.label() + ": inputs." + in.name;
+    port_layer(where + ": ", name, LayerKind::Features);
+    fp.index = std::make_shared<const FeatureIndex>(*store_, name, where);
+    return fp;
+  }
+
+  // The region's cells within reach of a feature of any port: all of them when the features of
+  // a port are not known yet (written by an earlier step), or when there is no port.
+  std::vector<CellId> cells_near(const std::vector<FeaturePort>& ports) const {
+    if (ports.empty() ||
+        std::any_of(ports.begin(), ports.end(), [](const FeaturePort& p) { return !p.index; }))
+      return pipeline_.region;
+    std::vector<CellId> cells;
+    for (const CellId c : pipeline_.region) {
+      const CellOutline outline(default_grid(), c);
+      if (std::any_of(ports.begin(), ports.end(), [&](const FeaturePort& p) {
+            return !p.index->within(outline, p.reach_m).empty();
+          }))
+        cells.push_back(c);
+    }
+    return cells;
+  }
+
+  LayerInfo input_layer(const PipelineStep& step, const std::string& port, const std::string& name,
+                        const StepPlan& sp) const {
+    const std::string where = step.label() + ": inputs." + port + ": ";
+    const LayerInfo info = port_layer(where, name, LayerKind::Raster);
+    if (!sp.inputs.empty() && (info.level != sp.level || info.tile_size != sp.tile_size))
+      throw Error(where + "layer '" + name + "' has level " + std::to_string(info.level) +
+                  " and tile size " + std::to_string(info.tile_size) +
                   ", unlike the first input '" + sp.inputs.front().second.name + "' (level " +
                   std::to_string(sp.level) + ", tile size " + std::to_string(sp.tile_size) + ")");
-    return *info;
+    return info;
   }
 
   // The layer's tiles (stored, or written by an earlier step) intersecting the region.
@@ -224,6 +266,15 @@ class Planner {
                   " levels finer than " + std::to_string(tile_size) + "-sample tiles: " + e.what());
     }
     return size;
+  }
+
+  // Outputs of 3D content are declared (OutputSpec::kind) but not written yet.
+  static void refuse_content_outputs(const StepPlan& sp) {
+    for (const auto& [port, layer] : sp.outputs)
+      if (layer.kind != LayerKind::Raster)
+        throw Error(sp.step->label() + ": outputs." + port + ": layer '" + layer.name + "' is a " +
+                    std::string(layer_kind_name(layer.kind)) +
+                    " layer: content outputs are not written yet");
   }
 
   static void check_one_face(const PipelineStep& step, const std::vector<CellId>& cells) {
@@ -297,6 +348,9 @@ void print_plan(const Pipeline& pipeline, const RunPlan& plan, std::ostream& out
         << "\n";
     for (const auto& [port, layer] : sp.inputs)
       out << "  reads  " << layer.name << " (" << port << ")\n";
+    for (const FeaturePort& f : sp.features)
+      out << "  reads  " << f.layer << " (" << f.port << ": features within " << f.reach_m
+          << " m)\n";
     for (const auto& [port, layer] : sp.outputs)
       out << "  writes " << layer.name << " (" << port << ": " << dtype_name(layer.dtype) << " x"
           << layer.channels << ", " << sp.cells.size() << " tiles of " << layer.tile_size

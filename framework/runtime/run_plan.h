@@ -4,11 +4,13 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "runtime/cell_plan.h"
+#include "runtime/feature_index.h"
 #include "runtime/pipeline.h"
 #include "runtime/task_operator.h"
 #include "store/store.h"
@@ -22,6 +24,16 @@ struct MosaicBox {
   int64_t cells = 0;
 };
 
+// A features port of a step and the features layer mapped to it.
+struct FeaturePort {
+  std::string port;
+  std::string layer;
+  double reach_m = 0;
+  // Its features: read when planning if the layer is in the store and no earlier step writes it
+  // (its features then decide the step's cells), else by the runner when the step starts.
+  std::shared_ptr<const FeatureIndex> index;
+};
+
 // The largest mosaic side in samples a region step may allocate (16384^2 floats: 1 GiB a channel).
 inline constexpr int64_t kMaxMosaicSide = 16384;
 
@@ -32,12 +44,15 @@ struct StepPlan {
   json params;
   int level = 0;  // level of the cells (and tiles) the step reads and writes
   int tile_size = 0;
-  std::vector<std::pair<std::string, LayerInfo>> inputs;  // port -> layer, in the spec's order
+  std::vector<std::pair<std::string, LayerInfo>> inputs;  // raster ports, in the spec's order
+  std::vector<FeaturePort> features;                      // features ports, in the spec's order
   std::map<std::string, LayerInfo> outputs;               // port -> raster layer (cell, region)
   std::string artifact;                                   // reduce: the artifact written
-  // A step with inputs processes the first input's tiles within the region; one without, the
-  // region's cells at the pipeline level; a task its raster layer's tiles, or the region's cells
-  // (its run records).
+  // A step with raster inputs processes the first one's tiles within the region; one whose
+  // inputs are all features layers, the region's cells within reach of a feature (all the
+  // region's cells when an earlier step writes a features layer it reads); one without inputs,
+  // the region's cells at the pipeline level; a task its raster layer's tiles, or the region's
+  // cells (its run records).
   CellPlan cells;
   MosaicBox mosaic;  // region steps
 };
@@ -50,9 +65,10 @@ struct RunPlan {
 TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 
 // Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
-// store does not exist yet) nor written by an earlier step, inputs of one step at different
-// levels or tile sizes, a region operator over cells of several faces or with a mosaic side above
-// kMaxMosaicSide.
+// store does not exist yet) nor written by an earlier step, a layer of the wrong kind for its port
+// (a raster layer given to a features port, or the reverse), raster inputs of one step at
+// different levels or tile sizes, a region operator over cells of several faces or with a mosaic
+// side above kMaxMosaicSide, an output port of 3D content (not written yet).
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
 
 // The dry-run report: steps, cell counts and the layers to be written.

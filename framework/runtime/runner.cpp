@@ -103,6 +103,7 @@ class Runner {
       for (size_t i = 0; i < plan.steps.size(); ++i) {
         exchange(ranks_, [&] {  // every rank reads the artifacts; a failure fails all
           paste_artifacts(plan.steps[i]);
+          read_features(plan.steps[i]);
           return "";
         });
         summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
@@ -200,6 +201,14 @@ class Runner {
     sp.params = validate_params(step.op->spec().params_schema,
                                 maquette::paste_artifacts(step.params, *store_, step.label()),
                                 step.label());
+  }
+
+  // The features of the ports whose layers an earlier step has written in this run.
+  void read_features(StepPlan& sp) const {
+    for (FeaturePort& f : sp.features)
+      if (!f.index)
+        f.index = std::make_shared<const FeatureIndex>(*store_, f.layer,
+                                                       sp.step->label() + ": inputs." + f.port);
   }
 
   StepSummary run_step(const StepPlan& sp, const std::vector<CellId>& done, int64_t run_id) {

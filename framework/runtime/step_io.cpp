@@ -42,6 +42,11 @@ CellData StepIO::load(CellId cell, int halo) {
     };
     data.inputs[port] = assemble_halo(default_grid(), cell, plan_.tile_size, halo, fetch);
   }
+  if (!plan_.features.empty()) {
+    const CellOutline outline(default_grid(), cell);
+    for (const FeaturePort& f : plan_.features)
+      data.features[f.port] = f.index->within(outline, f.reach_m);
+  }
   data.outputs =
       plan_.step->op->spec().writes_all_samples ? uninitialized_outputs() : blank_outputs();
   return data;

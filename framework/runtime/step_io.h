@@ -35,8 +35,10 @@ class StepIO {
 
   // The tile of `layer` at `cell` as float (nodata -> NaN), or nullopt.
   std::optional<Tile<float>> read(const LayerInfo& layer, CellId cell) const;
-  // The step's input tiles at `cell` with `halo` pixels, and output tiles for mapped outputs: NaN,
-  // or uninitialized for an operator that writes every sample (OperatorSpec::writes_all_samples).
+  // The step's input tiles at `cell` with `halo` pixels, the features of its features ports
+  // within their reach of the cell (their indexes read: StepPlan::features), and output tiles for
+  // mapped outputs: NaN, or uninitialized for an operator that writes every sample
+  // (OperatorSpec::writes_all_samples).
   CellData load(CellId cell, int halo);
   // The run's store, for operators to read (CellContext::store, StepContext::store).
   const Store& store() const { return store_; }

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <map>
 
 #include "core/error.h"
 #include "runtime/step_exec.h"
@@ -19,6 +20,17 @@ void cut(const Tile<float>& src, Tile<float>& dst, int64_t col, int64_t row) {
     for (int c = 0; c < dst.size(); ++c)
       for (int k = 0; k < dst.channels(); ++k)
         dst.at(c, r, k) = src.at(int(col) + c, int(row) + r, k);
+}
+
+// The features of the port within its reach of any of `cells`, by id.
+FeatureList near_any(const FeaturePort& port, const std::vector<CellId>& cells) {
+  std::map<int64_t, const VectorFeature*> by_id;
+  for (const CellId c : cells)
+    for (const VectorFeature* f : port.index->within(CellOutline(default_grid(), c), port.reach_m))
+      by_id.emplace(f->id, f);
+  FeatureList out;
+  for (const auto& [id, f] : by_id) out.push_back(f);
+  return out;
 }
 
 }  // namespace
@@ -47,6 +59,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
         paste(*tile, mosaic, offset(c).first, offset(c).second);
     input.layers.emplace(port, std::move(mosaic));
   }
+  for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);
   output.layers = io.blank_outputs(side);
   try {
     op.run({&default_grid(), &plan.params, &io.store()}, input, output);

@@ -2,7 +2,8 @@
 //   fixture.fill         cell, no input: a value of the global pixel coordinates and a seed;
 //   fixture.blur         cell, halo 1: 3x3 NaN-aware mean, so a result depends on neighbours;
 //   fixture.sum          reduce: float sum of a layer, merged in float, so merge order shows;
-//   fixture.region_scan  region: a running sum along each mosaic row (depends on the whole row).
+//   fixture.region_scan  region: a running sum along each mosaic row (depends on the whole row);
+//   and the operators on features of fixture_features.cpp.
 // fill and blur take sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
 // they throw on it and its descendants) and fail_with ("exception": a std::runtime_error, "int":
 // an int). They record the threads they run on: fixture_thread_count() (a C entry point the tests
@@ -16,6 +17,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "fixture_features.h"
 #include "runtime/module_abi.h"
 
 namespace {
@@ -195,7 +197,10 @@ std::unique_ptr<maquette::Operator> make() {
 
 MAQUETTE_MODULE("fixture", "0.0.1", "Operators for the runtime tests",
                 {"fixture.fill", &make<Fill>}, {"fixture.blur", &make<Blur>},
-                {"fixture.sum", &make<Sum>}, {"fixture.region_scan", &make<RegionScan>})
+                {"fixture.sum", &make<Sum>}, {"fixture.region_scan", &make<RegionScan>},
+                {"fixture.near_features", &make_near_features},
+                {"fixture.region_features", &make_region_features},
+                {"fixture.mesh_out", &make_mesh_out})
 
 extern "C" __attribute__((visibility("default"))) size_t fixture_thread_count() {
   std::lock_guard lock(threads_mutex);
