@@ -4,6 +4,7 @@
 //                            in every sample of its 3 channels; an optional raster input "src"
 //                            decides the cells when mapped;
 //   fixture.region_features  region: the count of the region's features, in every sample;
+//   fixture.features_total   reduce: the sum over the cells of the count of their features;
 //   fixture.mesh_out         cell: declares a mesh output (content outputs are not written yet).
 #include "fixture_features.h"
 
@@ -14,6 +15,7 @@ namespace {
 using maquette::CellContext;
 using maquette::CellData;
 using maquette::FeatureList;
+using maquette::json;
 using maquette::LayerKind;
 using maquette::OperatorSpec;
 
@@ -81,6 +83,24 @@ class RegionFeatures : public maquette::RegionOperator {
   }
 };
 
+class FeaturesTotal : public maquette::ReduceOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s =
+        make_spec("fixture.features_total", maquette::OperatorKind::Reduce, 1);
+    return s;
+  }
+  json map(const CellContext&, const CellData& data) const override {
+    return data.features_of("strokes").size();
+  }
+  json merge(const json& a, const json& b) const override {
+    return a.get<int64_t>() + b.get<int64_t>();
+  }
+  maquette::Artifact finish(const json& merged, const maquette::StepContext&) const override {
+    return maquette::Artifact::FromText("", merged.dump());
+  }
+};
+
 class MeshOut : public maquette::CellOperator {
  public:
   const OperatorSpec& spec() const override {
@@ -107,5 +127,8 @@ std::unique_ptr<maquette::Operator> make_near_features() {
 }
 std::unique_ptr<maquette::Operator> make_region_features() {
   return std::make_unique<RegionFeatures>();
+}
+std::unique_ptr<maquette::Operator> make_features_total() {
+  return std::make_unique<FeaturesTotal>();
 }
 std::unique_ptr<maquette::Operator> make_mesh_out() { return std::make_unique<MeshOut>(); }

@@ -10,4 +10,5 @@ inline constexpr double kFixtureReachM = 1000;
 
 std::unique_ptr<maquette::Operator> make_near_features();
 std::unique_ptr<maquette::Operator> make_region_features();
+std::unique_ptr<maquette::Operator> make_features_total();
 std::unique_ptr<maquette::Operator> make_mesh_out();

@@ -200,6 +200,7 @@ MAQUETTE_MODULE("fixture", "0.0.1", "Operators for the runtime tests",
                 {"fixture.sum", &make<Sum>}, {"fixture.region_scan", &make<RegionScan>},
                 {"fixture.near_features", &make_near_features},
                 {"fixture.region_features", &make_region_features},
+                {"fixture.features_total", &make_features_total},
                 {"fixture.mesh_out", &make_mesh_out})
 
 extern "C" __attribute__((visibility("default"))) size_t fixture_thread_count() {

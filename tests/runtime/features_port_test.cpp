@@ -355,6 +355,20 @@ TEST(FeaturesPort, RegionOperatorsGetTheRegionsFeatures) {
     EXPECT_EQ(v[0], float(oracle().near_region.size())) << cell.ToText();
 }
 
+TEST(FeaturesPort, ReduceOperatorsMapTheCellsFeatures) {
+  StoreDir s;
+  ingest(s);
+  const CliResult r = run(s, json::array({{{"op", "fixture.features_total"},
+                                           {"inputs", {{"strokes", "strokes"}}},
+                                           {"outputs", {{"near", "total"}}}}}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  double expected = 0;
+  for (const auto& [cell, e] : oracle().cells) expected += e.count;
+  const auto artifact = Store::open(s.store, Store::Mode::ReadOnly)->get_artifact("total");
+  ASSERT_TRUE(artifact);
+  EXPECT_EQ(json::parse(artifact->text()), expected);
+}
+
 TEST(FeaturesPort, ThreadsAndRanksGiveTheSameBits) {
   StoreDir one;
   ingest(one);

@@ -77,7 +77,7 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_EQ(j[0]["name"], "fixture");
   EXPECT_EQ(j[0]["version"], "0.0.1");
   EXPECT_EQ(j[0]["file"], fixture_dir("good") + "/libfixture_ops.so");
-  ASSERT_EQ(j[0]["operators"].size(), 4u);
+  ASSERT_EQ(j[0]["operators"].size(), 8u);
   const auto& blur = j[0]["operators"][1];
   EXPECT_EQ(blur["name"], "fixture.blur");
   EXPECT_EQ(blur["kind"], "cell");
@@ -87,6 +87,12 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_EQ(blur["outputs"][0]["semantics"], "continuous");
   EXPECT_EQ(blur["outputs"][0]["nodata"], -9999);
   EXPECT_EQ(blur["params"]["properties"]["sleep_ms"]["default"], 0);
+  EXPECT_EQ(blur["inputs"][0]["kind"], "raster");
+  const auto& near = j[0]["operators"][4];
+  EXPECT_EQ(near["name"], "fixture.near_features");
+  EXPECT_EQ(near["inputs"][0]["kind"], "features");
+  EXPECT_EQ(near["inputs"][0]["reach_m"], 1000);
+  EXPECT_EQ(j[0]["operators"][7]["outputs"][0]["kind"], "mesh");
 
   std::ostringstream text;
   r.print(text);
@@ -94,6 +100,7 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_THAT(text.str(), HasSubstr("fixture.blur (cell, halo 1)"));
   EXPECT_THAT(text.str(), HasSubstr("output dst float32 x1 continuous nodata -9999.0: the result"));
   EXPECT_THAT(text.str(), HasSubstr("fixture.sum (reduce)"));
+  EXPECT_THAT(text.str(), HasSubstr("input  strokes (features within 1000.0 m): features layer"));
   EXPECT_THAT(text.str(), HasSubstr("seed number (required)"));
   EXPECT_THAT(text.str(), HasSubstr("sleep_ms integer = 0 [0..10000]"));
 }
