@@ -342,6 +342,21 @@ TEST(FeaturesPort, ARasterInputDecidesTheCells) {
   expect_matches_oracle(got);
 }
 
+// Features ingested by an earlier step of the same pipeline are not known when planning: the step
+// runs on all the region's cells and reads them when it starts.
+TEST(FeaturesPort, FeaturesIngestedByAnEarlierStep) {
+  StoreDir s;
+  std::ofstream(s.dir.file("strokes.geojson")) << strokes().collection.dump();
+  const json ingest_step = {{"op", "ingest"},
+                            {"outputs", {{"layer", "strokes"}}},
+                            {"params", {{"sources", {"strokes.geojson"}}, {"as", "features"}}}};
+  const CliResult r = run(s, json::array({ingest_step, kNearStep}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto got = tile_values(s.store, "near");
+  EXPECT_EQ(got.size(), region_cells().size());
+  expect_matches_oracle(got);
+}
+
 TEST(FeaturesPort, RegionOperatorsGetTheRegionsFeatures) {
   StoreDir s;
   ingest(s);
