@@ -27,10 +27,20 @@ struct ContentEnvelope {
   ContentStats stats;
 };
 
+// "mesh", "instances", "volume": also the names of the store's layer kinds that hold them.
+std::string_view content_kind_name(ContentKind kind);
+
+// Throws maquette::Error for an unknown kind or encoding, or an origin that is not finite or
+// outside [-180, 180] x [-90, 90].
 std::string wrap_content(const ContentEnvelope& envelope, std::string_view payload);
 // Throws maquette::Error naming `where` (e.g. "layer buildings, cell N3021") and what is wrong:
-// too short, bad magic, unknown version, kind or encoding, payload size disagreeing.
+// too short, bad magic, unknown version, kind or encoding, an origin wrap_content refuses, payload
+// size disagreeing.
 ContentEnvelope read_content_envelope(std::string_view blob, const std::string& where);
 std::string_view content_payload(std::string_view blob);  // after read_content_envelope
+// The same checks from the blob's first bytes (at least its header) and its size, for a reader
+// that does not fetch the payload (Store::content_stats).
+ContentEnvelope read_content_header(std::string_view head, uint64_t blob_bytes,
+                                    const std::string& where);
 
 }  // namespace maquette
