@@ -1,4 +1,6 @@
-// maquette info STORE: layers, levels, tile counts, bounding box, size on disk.
+// maquette info STORE: layers, levels, tile counts, bounding box, size on disk; for content layers
+// (mesh, instances, volume) the cells, objects, triangles, instances and voxels their blobs'
+// headers count.
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -68,6 +70,17 @@ void describe_features(const Store& store, const std::string& layer, json& j) {
   j["bbox"] = json::array({b[0], b[1], b[2], b[3]});
 }
 
+// A content layer: what its blobs' headers count at the layer's level (Store::content_stats).
+void describe_content(const Store& store, const LayerInfo& l, json& j) {
+  const ContentLayerStats st = store.content_stats(l.name);
+  j["cells"] = st.cells;
+  j["objects"] = st.content.objects;
+  j["triangles"] = st.content.triangles;
+  j["instances"] = l.kind == LayerKind::Instances ? st.content.objects : 0;
+  j["voxels"] = st.content.voxels;
+  j["bbox"] = cells_bbox(store.content_cells(l.name));
+}
+
 json layer_json(const Store& store, const LayerInfo& l) {
   const LayerStats st = store.stats(l.name);
   json j = {{"name", l.name},
@@ -87,12 +100,15 @@ json layer_json(const Store& store, const LayerInfo& l) {
             {"provenance", l.provenance}};
   const auto why = store.incomplete(l.name);
   j["incomplete"] = why ? json(*why) : json(nullptr);
+  const bool content = layer_content_kind(l.kind).has_value();
   if (l.kind == LayerKind::Features)
     describe_features(store, l.name, j);
+  else if (content)
+    describe_content(store, l, j);
   else
     j["bbox"] = cells_bbox(store.tile_cells(l.name));
   if (const auto datum = layer_vertical_datum(l)) j["vertical_datum"] = datum->describe();
-  if (l.level >= 0 && l.tile_size > 0)
+  if (!content && l.level >= 0 && l.tile_size > 0)
     j["pixel_m"] = default_grid().level_info(l.level, l.tile_size).pixel_m;
   return j;
 }
@@ -126,6 +142,16 @@ void print_info(const std::string& path, bool as_json) {
       for (const json& a : l["attributes"])
         attributes += (attributes.empty() ? "" : ", ") + a.get<std::string>();
       std::printf("    attributes %s\n", attributes.empty() ? "none" : attributes.c_str());
+    } else if (l.contains("objects")) {
+      std::printf("\n  %s: %s content in cells at level %d\n", l["name"].get<std::string>().c_str(),
+                  l["kind"].get<std::string>().c_str(), l["level"].get<int>());
+      std::printf(
+          "    cells  %lld, objects %llu, triangles %llu, instances %llu, voxels %llu "
+          "(%.1f MiB), levels %s\n",
+          l["cells"].get<long long>(), l["objects"].get<unsigned long long>(),
+          l["triangles"].get<unsigned long long>(), l["instances"].get<unsigned long long>(),
+          l["voxels"].get<unsigned long long>(), l["bytes"].get<double>() / 1048576.0,
+          l["levels"].dump().c_str());
     } else {
       std::printf("\n  %s: %s %s x%d, %d px tiles at level %d (%.3f m/px), %s%s%s\n",
                   l["name"].get<std::string>().c_str(), l["kind"].get<std::string>().c_str(),

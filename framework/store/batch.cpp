@@ -37,6 +37,7 @@ struct Store::Batch::Pending {
   };
   std::vector<TileWrite> tiles, overviews;
   std::vector<PartialOverview> partial_overviews;
+  std::vector<ContentWrite> contents;
   std::vector<FeatureWrite> features;
   std::vector<Artifact> artifacts;
   std::vector<Done> done;
@@ -55,6 +56,9 @@ void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile
   const std::string where =
       "cannot write layer '" + layer + "' at " + cell_text(cell) + " in " + d.path + ": ";
   if (!open_) throw Error(where + "the batch is already committed");
+  if (layer_content_kind(l.kind))
+    throw Error(where + "it holds " + std::string(layer_kind_name(l.kind)) +
+                " content (put_content), not raster tiles");
   if (!cell.is_valid() || cell.level() != l.level)
     throw Error(where + "the layer's tiles are at level " + std::to_string(l.level));
   if (tile.dtype != l.dtype || tile.size != l.tile_size || tile.channels != l.channels ||
@@ -114,6 +118,14 @@ void Store::Batch::put_feature(const std::string& layer, const Feature& feature,
   pending_->features.push_back(feature_write(d.require(layer), d.path, feature, cells));
 }
 
+void Store::Batch::put_content(const std::string& layer, CellId cell, std::string_view blob) {
+  const Impl& d = *store_.impl_;
+  if (!open_)
+    throw Error("cannot write content of layer '" + layer + "' at " + cell_text(cell) +
+                ": batch already committed");
+  pending_->contents.push_back(content_write(d.require(layer), d.path, cell, blob));
+}
+
 void Store::Batch::mark_done(int64_t run_id, int step, CellId cell) {
   mark_done(run_id, step, int64_t(cell.id()));
 }
@@ -153,6 +165,10 @@ void Store::Batch::commit() {
     for (const auto& f : p.features) {
       write_feature(c, f);
       layers.insert(f.layer);
+    }
+    for (const auto& w : p.contents) {
+      write_content(c, w);
+      layers.insert(w.layer);
     }
     for (int64_t id : layers)
       c.query("UPDATE layers SET updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")

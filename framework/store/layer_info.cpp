@@ -10,7 +10,8 @@
 namespace maquette {
 namespace {
 
-constexpr std::string_view kKindNames[] = {"raster", "mesh", "volume", "features", "artifact"};
+constexpr std::string_view kKindNames[] = {"raster",   "mesh",     "volume",
+                                           "features", "artifact", "instances"};
 constexpr std::string_view kSemanticsNames[] = {"continuous", "categorical"};
 
 std::string nodata_text(const std::optional<double>& v) {
@@ -29,7 +30,20 @@ LayerKind parse_layer_kind(std::string_view name) {
   for (size_t i = 0; i < std::size(kKindNames); ++i)
     if (kKindNames[i] == name) return LayerKind(i);
   throw Error("unknown layer kind '" + std::string(name) +
-              "' (expected raster, mesh, volume, features or artifact)");
+              "' (expected raster, mesh, instances, volume, features or artifact)");
+}
+
+std::optional<ContentKind> layer_content_kind(LayerKind k) {
+  switch (k) {
+    case LayerKind::Mesh:
+      return ContentKind::Mesh;
+    case LayerKind::Instances:
+      return ContentKind::Instances;
+    case LayerKind::Volume:
+      return ContentKind::Volume;
+    default:
+      return std::nullopt;
+  }
 }
 
 std::string_view semantics_name(Semantics s) { return kSemanticsNames[size_t(s)]; }
@@ -43,6 +57,20 @@ Semantics parse_semantics(std::string_view name) {
 LayerInfo normalized_layer(const LayerInfo& info) {
   const std::string where = "layer '" + info.name + "': ";
   if (info.name.empty()) throw Error("a layer needs a name");
+  if (info.level < 0 || info.level > CellId::kMaxLevel)
+    throw Error(where + "level " + std::to_string(info.level) + " not in [0, 29]");
+  if (layer_content_kind(info.kind)) {
+    // Blobs of content name their own format (content_blob.h): no raster field applies.
+    LayerInfo out;
+    out.name = info.name;
+    out.kind = info.kind;
+    out.level = info.level;
+    out.dtype = DType::U8;
+    out.tile_size = 1;
+    out.codec = kContentCodec;
+    out.provenance = info.provenance;
+    return out;
+  }
   if (info.channels < 1 || info.channels > 1024)
     throw Error(where + "channels " + std::to_string(info.channels) + " not in [1, 1024]");
   try {
@@ -51,8 +79,6 @@ LayerInfo normalized_layer(const LayerInfo& info) {
   } catch (const Error& e) {
     throw Error(where + e.what());
   }
-  if (info.level < 0 || info.level > CellId::kMaxLevel)
-    throw Error(where + "level " + std::to_string(info.level) + " not in [0, 29]");
 
   LayerInfo out = info;
   if (!out.nodata) return out;

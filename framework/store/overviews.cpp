@@ -124,6 +124,9 @@ void Store::update_overviews(const std::string& layer, int min_level) {
   if (min_level < 0 || min_level > e.info.level)
     throw Error(where + "min level " + std::to_string(min_level) + " not in [0, " +
                 std::to_string(e.info.level) + "]");
+  if (layer_content_kind(e.info.kind))
+    throw Error(where + "the coarser levels of its " + std::string(layer_kind_name(e.info.kind)) +
+                " content hold what its writer simplified (put_content)");
   if (e.info.tile_size < 2) throw Error(where + "tiles of 1x1 samples cannot be halved");
   // The tiles written before this call are on their way to the disk while overviews are built.
   if (d.checkpointer) d.checkpointer->request();
@@ -147,7 +150,7 @@ void Store::update_overviews(const std::string& layer, int min_level) {
 }
 
 std::optional<RawTile> Store::get_overview(const std::string& layer, CellId cell) const {
-  const LayerEntry e = impl_->require(layer);
+  const LayerEntry e = impl_->require_tiles(layer);
   if (!cell.is_valid() || cell.level() >= e.info.level)
     throw Error("no overview of layer '" + layer + "' at " + cell_text(cell) + " in " +
                 impl_->path + ": overviews are at levels below " + std::to_string(e.info.level));

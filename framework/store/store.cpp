@@ -190,6 +190,15 @@ void Store::Impl::require_writable() const {
   if (read_only) throw Error(path + " is open read-only: cannot write to it");
 }
 
+LayerEntry Store::Impl::require_tiles(const std::string& name) const {
+  LayerEntry e = require(name);
+  if (layer_content_kind(e.info.kind))
+    throw Error("layer '" + name + "' in " + path + " holds " +
+                std::string(layer_kind_name(e.info.kind)) +
+                " content (get_content), not raster tiles");
+  return e;
+}
+
 RawTile Store::Impl::decode(std::span<const std::byte> blob, const LayerEntry& layer,
                             CellId cell) const {
   const std::string where = "corrupt tile of layer '" + layer.info.name + "' at " +

@@ -3,7 +3,8 @@
 // records. Tile blobs are compressed by the layer's codec (core: "zstd" with byte shuffling).
 // Every write is one transaction; a process killed at any moment leaves a store that opens
 // and passes PRAGMA integrity_check. A Store may be used from many threads at once: reads use
-// a pool of read-only connections and run in parallel; commits are serialised. See
+// a pool of read-only connections and run in parallel; commits are serialised. Layers of kind
+// mesh, instances and volume hold 3D content, one blob per cell (content/content_blob.h). See
 // framework/store/README.md for the schema and blob encoding.
 #pragma once
 
@@ -17,19 +18,27 @@
 #include <string>
 #include <vector>
 
+#include "content/content.h"
 #include "core/cell_id.h"
 #include "core/tile.h"
 
 namespace maquette {
 
-enum class LayerKind { Raster, Mesh, Volume, Features, Artifact };
+enum class LayerKind { Raster, Mesh, Volume, Features, Artifact, Instances };
 enum class Semantics { Continuous, Categorical };
 
 std::string_view layer_kind_name(LayerKind k);
 LayerKind parse_layer_kind(std::string_view name);  // throws maquette::Error
 std::string_view semantics_name(Semantics s);
 Semantics parse_semantics(std::string_view name);  // throws maquette::Error
+// The content a layer of this kind holds (mesh, instances, volume), or nothing (raster,
+// features, artifact).
+std::optional<ContentKind> layer_content_kind(LayerKind k);
 
+// A layer's definition. Content layers (kinds mesh, instances, volume) are defined by name, kind
+// and level only: the store keeps dtype uint8, 1 channel, tile size 1, no nodata, continuous,
+// no units and codec "mqct" for them, whatever is asked (so a definition asked again with other
+// raster fields is the same layer).
 struct LayerInfo {
   std::string name;
   LayerKind kind = LayerKind::Raster;
@@ -50,6 +59,15 @@ struct LayerStats {
   int64_t bytes = 0;                  // compressed blob bytes, overview tiles included
   std::vector<int> levels;            // levels holding tiles (overviews, then base), ascending
   std::optional<CellId> first, last;  // first and last full-resolution tile (or indexed cell)
+};
+
+// Store::content_stats: read from the blobs' headers, without decoding a payload.
+struct ContentLayerStats {
+  // Summed over the cells at the layer's level (coarser levels hold simplified copies of the
+  // same objects).
+  ContentStats content;
+  int64_t cells = 0;  // cells holding content at the layer's level
+  int64_t bytes = 0;  // blob bytes, coarser levels included
 };
 
 // A vector feature of a `features` layer: stored once, indexed in every cell it touches.
@@ -118,7 +136,7 @@ class Store {
   std::vector<LayerInfo> layers() const;
   LayerStats stats(const std::string& layer) const;
 
-  // Tiles (full-resolution tiles at the layer's level).
+  // Tiles (full-resolution tiles at the layer's level) of raster layers.
   std::optional<RawTile> get_tile(const std::string& layer, CellId cell) const;
   bool has_tile(const std::string& layer, CellId cell) const;
   // Cells holding tiles with ids in [first, last], ascending (pass a cell's range_min/max).
@@ -151,6 +169,12 @@ class Store {
     // be at the layer's level; a replaced feature loses its old index entries.
     void put_feature(const std::string& layer, const Feature& feature,
                      std::span<const CellId> cells);
+    // Writes (or replaces) the content of `cell` in a layer of kind mesh, instances or volume:
+    // its objects at the layer's level, or their simplified copy at a coarser level. `blob` is
+    // an envelope (content/content_blob.h) of the layer's content kind; throws maquette::Error
+    // naming the layer and cell for another kind, a corrupt envelope, a cell finer than the
+    // layer's level, or a layer that is not a content layer. The payload is not decoded.
+    void put_content(const std::string& layer, CellId cell, std::string_view blob);
     void mark_done(int64_t run_id, int step, CellId cell);  // run record progress
     // Progress of work not keyed by cells (e.g. a batch of features), in the same records.
     void mark_done(int64_t run_id, int step, int64_t key);
@@ -169,6 +193,17 @@ class Store {
   std::vector<Feature> features_in(const std::string& layer, CellId first, CellId last) const;
   std::vector<CellId> feature_cells(const std::string& layer, int64_t fid) const;  // ascending
   int64_t feature_count(const std::string& layer) const;
+
+  // Content layers (kinds mesh, instances, volume; Batch::put_content). get_content gives the
+  // blob of `cell`, at the layer's level or a coarser one, its envelope checked (throws naming
+  // layer and cell when corrupt); content_cells the cells holding content at `level` (default:
+  // the layer's) with ids in [first, last], ascending. Throws for a layer of another kind.
+  std::optional<std::string> get_content(const std::string& layer, CellId cell) const;
+  std::vector<CellId> content_cells(const std::string& layer, int level, CellId first,
+                                    CellId last) const;
+  std::vector<CellId> content_cells(const std::string& layer, int level) const;
+  std::vector<CellId> content_cells(const std::string& layer) const;
+  ContentLayerStats content_stats(const std::string& layer) const;
 
   // Overviews: coarser levels down to `min_level`, mean (continuous) or mode (categorical),
   // nodata-aware. Built on demand; tiles written since mark their ancestors stale, and

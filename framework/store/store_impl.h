@@ -63,6 +63,8 @@ struct Store::Impl {
   // Layer lookup (cached: layers are never dropped or redefined). Throws for unknown names.
   LayerEntry require(const std::string& name) const;
   std::optional<LayerEntry> find(const std::string& name) const;
+  // require(), for readers of raster tiles: throws for a content layer, whose blobs are no tiles.
+  LayerEntry require_tiles(const std::string& name) const;
 
   // Throws unless the store was opened for writing.
   void require_writable() const;
@@ -105,6 +107,8 @@ struct Store::Impl {
 };
 
 // Layer definitions (layer_info.cpp).
+// The codec recorded for content layers: their blobs are content envelopes (content_blob.h).
+inline constexpr const char* kContentCodec = "mqct";
 // Checks a definition (throws maquette::Error naming the field) and drops a NaN nodata of a
 // float layer (NaN is always missing there).
 LayerInfo normalized_layer(const LayerInfo& info);
@@ -126,6 +130,20 @@ FeatureWrite feature_write(const LayerEntry& layer, const std::string& store_pat
 void write_feature(sqlite::Connection& conn, const FeatureWrite& write);
 // Store::stats of a features layer: indexed cells as tiles, bytes of features and cell lists.
 LayerStats feature_stats(sqlite::Connection& conn, const LayerEntry& layer);
+
+// A content blob checked against its layer and ready to write (content.cpp).
+struct ContentWrite {
+  int64_t layer = 0;
+  CellId cell;
+  bool coarser = false;  // above the layer's level: simplified content, kept in overviews
+  std::string blob;
+};
+// Throws maquette::Error naming the layer and cell unless the layer holds content of the blob's
+// kind, the envelope is sound and the cell is at the layer's level or coarser.
+ContentWrite content_write(const LayerEntry& layer, const std::string& store_path, CellId cell,
+                           std::string_view blob);
+// Writes (or replaces) the blob: in tiles at the layer's level, in overviews at a coarser one.
+void write_content(sqlite::Connection& conn, const ContentWrite& write);
 
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);

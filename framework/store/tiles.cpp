@@ -4,7 +4,7 @@
 namespace maquette {
 
 std::optional<RawTile> Store::get_tile(const std::string& layer, CellId cell) const {
-  const LayerEntry e = impl_->require(layer);
+  const LayerEntry e = impl_->require_tiles(layer);
   auto conn = impl_->readers.borrow();
   auto q = conn->query("SELECT blob FROM tiles WHERE layer = ? AND cell = ?");
   if (!q.bind_int(1, e.id).bind_int(2, int64_t(cell.id())).step()) return std::nullopt;
@@ -35,7 +35,7 @@ std::vector<CellId> Store::tile_cells(const std::string& layer) const {
 
 void Store::scan(const std::string& layer, CellId first, CellId last,
                  const std::function<void(CellId, const RawTile&)>& visit) const {
-  const LayerEntry e = impl_->require(layer);
+  const LayerEntry e = impl_->require_tiles(layer);
   auto conn = impl_->readers.borrow();
   auto q = conn->query(
       "SELECT cell, blob FROM tiles WHERE layer = ? AND cell BETWEEN ? AND ? ORDER BY cell");

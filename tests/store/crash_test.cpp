@@ -1,9 +1,9 @@
 // Crash safety: a child process writing small batches is SIGKILLed at random moments; every
 // time, the store must open, pass integrity_check, and hold every batch the child reported
-// committed, completely, with tiles that decode to what was written. Both for a store written
-// through the WAL and for new stores filled in bulk (Mode::CreateBulk: a rollback journal, which
-// a read-only open must roll back first). Its own executable, so that fork() happens in a
-// process without other threads.
+// committed, completely, with tiles (or content blobs) equal to what was written. Both for a
+// store written through the WAL and for new stores filled in bulk (Mode::CreateBulk: a rollback
+// journal, which a read-only open must roll back first). Its own executable, so that fork() happens
+// in a process without other threads.
 #include <fcntl.h>
 #include <signal.h>
 #include <sqlite3.h>
@@ -18,6 +18,7 @@
 #include <set>
 #include <thread>
 
+#include "content/instances_codec.h"
 #include "store/store.h"
 #include "store_test_util.h"
 
@@ -35,13 +36,32 @@ CellId cell_of(int64_t k) {
 
 constexpr int64_t kOpened = -1;  // reported once the store is open, before any batch
 
+// What the writer puts: raster tiles in layer "dem", or instances content in layer "trees".
+enum class Writes { Tiles, Content };
+
+// The content blob of cell k: 1 to 40 instances whose values depend on k.
+std::string content_blob(int64_t k) {
+  InstancesContent c;
+  c.origin = {double(k % 360) - 180, 0.5, 100};
+  c.prototypes = {"builtin:shrub"};
+  for (int64_t i = 0; i <= k % 40; ++i) {
+    c.prototype.push_back(0);
+    c.position.insert(c.position.end(), {float(i), float(k % 1000), 0.25f});
+    c.rotation.insert(c.rotation.end(), {0, 0, 0, 1});
+    c.scale.insert(c.scale.end(), {1, 1, float(1 + i % 3)});
+    c.colour.push_back(uint32_t(k * 2654435761u));
+  }
+  return wrap_instances(c);
+}
+
 // Writes batches first_batch, first_batch + 1, ... forever, reporting each after its commit.
 [[noreturn]] void write_until_killed(const std::string& path, Store::Mode mode, int64_t first_batch,
-                                     int report_fd) {
+                                     int report_fd, Writes writes) {
   try {
     auto store = Store::open(path, mode);
     LayerInfo l;
-    l.name = "dem";
+    l.name = writes == Writes::Tiles ? "dem" : "trees";
+    l.kind = writes == Writes::Tiles ? LayerKind::Raster : LayerKind::Instances;
     l.tile_size = kTileSize;
     l.level = kLevel;
     store->create_layer(l);
@@ -50,7 +70,10 @@ constexpr int64_t kOpened = -1;  // reported once the store is open, before any 
       Store::Batch batch(*store);
       for (int i = 0; i < kTilesPerBatch; ++i) {
         const int64_t k = b * kTilesPerBatch + i;
-        batch.put_tile("dem", cell_of(k), test::smooth_tile(kTileSize, float(k)));
+        if (writes == Writes::Tiles)
+          batch.put_tile("dem", cell_of(k), test::smooth_tile(kTileSize, float(k)));
+        else
+          batch.put_content("trees", cell_of(k), content_blob(k));
       }
       batch.commit();
       if (::write(report_fd, &b, sizeof b) != sizeof b) ::_exit(3);
@@ -63,7 +86,7 @@ constexpr int64_t kOpened = -1;  // reported once the store is open, before any 
 
 // Six rounds of writing and killing: CreateBulk fills a new store each round, Create goes on
 // writing the same one.
-void kill_writers_and_check(Store::Mode mode) {
+void kill_writers_and_check(Store::Mode mode, Writes writes = Writes::Tiles) {
   test::TempDir dir;
   const bool bulk = mode == Store::Mode::CreateBulk;
   std::mt19937 rng(20240607);
@@ -78,7 +101,7 @@ void kill_writers_and_check(Store::Mode mode) {
     ASSERT_GE(child, 0);
     if (child == 0) {
       ::close(fds[0]);
-      write_until_killed(path, mode, int64_t(round) * 100000, fds[1]);
+      write_until_killed(path, mode, int64_t(round) * 100000, fds[1], writes);
     }
     ::close(fds[1]);
     // The kill lands anywhere after the open (which creates the store in the bulk rounds).
@@ -100,19 +123,31 @@ void kill_writers_and_check(Store::Mode mode) {
     auto store = Store::open(path, Store::Mode::ReadOnly);
     ASSERT_TRUE(store->integrity_ok()) << "round " << round;
     std::map<int64_t, int> tiles_per_batch;
-    const auto cells = store->tile_cells("dem");
+    const auto cells =
+        writes == Writes::Tiles ? store->tile_cells("dem") : store->content_cells("trees");
     std::set<CellId> present(cells.begin(), cells.end());
     for (int64_t batch : reported)
       for (int i = 0; i < kTilesPerBatch; ++i)
         ASSERT_TRUE(present.count(cell_of(batch * kTilesPerBatch + i)))
             << "committed batch " << batch << " lost in round " << round;
-    // Every stored tile decodes to what was written; batches are all or nothing.
-    store->scan("dem", CellId(0), CellId(uint64_t(INT64_MAX)), [&](CellId c, const RawTile& t) {
+    const auto key_of = [](CellId c) {
       const int64_t k = int64_t(c.face()) + 6 * (int64_t(c.row()) * 1024 + c.col());
-      ASSERT_EQ(cell_of(k), c);
-      EXPECT_EQ(t.bytes, test::smooth_tile(kTileSize, float(k)).bytes) << c.ToText();
-      ++tiles_per_batch[k / kTilesPerBatch];
-    });
+      EXPECT_EQ(cell_of(k), c);
+      return k;
+    };
+    // Every stored tile or blob is what was written; batches are all or nothing.
+    if (writes == Writes::Tiles)
+      store->scan("dem", CellId(0), CellId(uint64_t(INT64_MAX)), [&](CellId c, const RawTile& t) {
+        const int64_t k = key_of(c);
+        EXPECT_EQ(t.bytes, test::smooth_tile(kTileSize, float(k)).bytes) << c.ToText();
+        ++tiles_per_batch[k / kTilesPerBatch];
+      });
+    else
+      for (CellId c : cells) {
+        const int64_t k = key_of(c);
+        EXPECT_EQ(store->get_content("trees", c), content_blob(k)) << c.ToText();
+        ++tiles_per_batch[k / kTilesPerBatch];
+      }
     for (const auto& [batch, count] : tiles_per_batch)
       EXPECT_EQ(count, kTilesPerBatch) << "batch " << batch << " is partial";
     testing::Test::RecordProperty("round" + std::to_string(round) + "_batches",
@@ -178,6 +213,10 @@ TEST(StoreCrash, ReadOnlyStoresRollBackAKilledBulkCommit) {
 }
 
 TEST(StoreCrash, KilledWriterLeavesAValidStore) { kill_writers_and_check(Store::Mode::Create); }
+
+TEST(StoreCrash, KilledContentWriterLeavesAValidStore) {
+  kill_writers_and_check(Store::Mode::Create, Writes::Content);
+}
 
 TEST(StoreCrash, KilledBulkFillLeavesAValidStore) {
   kill_writers_and_check(Store::Mode::CreateBulk);

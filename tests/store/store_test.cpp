@@ -17,32 +17,11 @@
 namespace maquette {
 namespace {
 
+using test::expect_error;
+using test::raw_sql;
 using test::raw_tile;
 using test::smooth_tile;
 using test::TempDir;
-
-// Expects `f` to throw a maquette::Error whose message contains every one of `parts`.
-template <typename F>
-void expect_error(F&& f, std::initializer_list<std::string> parts) {
-  try {
-    f();
-    ADD_FAILURE() << "no error; expected one mentioning " << *parts.begin();
-  } catch (const Error& e) {
-    for (const auto& part : parts)
-      EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
-          << "'" << e.what() << "' does not mention '" << part << "'";
-  }
-}
-
-// Runs SQL on a store file directly, as a foreign program (or a disk fault) would.
-void raw_sql(const std::string& path, const std::string& sql) {
-  sqlite3* db = nullptr;
-  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
-  char* err = nullptr;
-  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
-  sqlite3_free(err);
-  sqlite3_close(db);
-}
 
 // Flips bytes in the middle of every tile blob of a store file.
 void corrupt_tiles(const std::string& path) {

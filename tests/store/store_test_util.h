@@ -1,14 +1,18 @@
-// Helpers for the store tests: a temporary directory and tiles with known contents.
+// Helpers for the store tests: a temporary directory, tiles with known contents, expected
+// errors, and SQL run on a store file behind its back.
 #pragma once
 
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
+#include "core/error.h"
 #include "core/tile.h"
 
 namespace maquette::test {
@@ -51,6 +55,29 @@ inline RawTile smooth_tile(int size, float seed = 0) {
                                 80.0f * std::cos(0.047f * r - seed) +
                                 15.0f * std::sin(0.11f * (c + r) + 2 * seed);
   return raw_tile<float>(size, 1, v);
+}
+
+// Expects `f` to throw a maquette::Error whose message contains every one of `parts`.
+template <typename F>
+void expect_error(F&& f, std::initializer_list<std::string> parts) {
+  try {
+    f();
+    ADD_FAILURE() << "no error; expected one mentioning " << *parts.begin();
+  } catch (const Error& e) {
+    for (const auto& part : parts)
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+          << "'" << e.what() << "' does not mention '" << part << "'";
+  }
+}
+
+// Runs SQL on a store file directly, as a foreign program (or a disk fault) would.
+inline void raw_sql(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  char* err = nullptr;
+  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
+  sqlite3_free(err);
+  sqlite3_close(db);
 }
 
 }  // namespace maquette::test
