@@ -180,7 +180,7 @@ void add_info_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
   CLI::App* info = app.add_subcommand(
-      "info", "Describe a store: layers, levels, tile counts, bounding box, size");
+      "info", "Describe a store: layers, levels, tile and content counts, bounding box, size");
   info->add_option("STORE", *path, "Store file")->required();
   info->add_flag("--json", *as_json, "Print JSON");
   info->callback([path, as_json] { print_info(*path, *as_json); });

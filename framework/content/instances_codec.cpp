@@ -126,7 +126,6 @@ std::string decompress(std::string_view frame, const std::string& where) {
     fail(std::to_string(frame.size() - size) + " bytes after the zstd frame");
   const std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> d(ZSTD_createDCtx(), &ZSTD_freeDCtx);
   std::string out;
-  out.reserve(size_t(std::min<unsigned long long>(declared, 1 << 24)));
   ZSTD_inBuffer in{frame.data(), frame.size(), 0};
   const size_t chunk = ZSTD_DStreamOutSize();
   for (;;) {
