@@ -18,19 +18,6 @@ constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
 class GlbBuilder {
  public:
-  int view(const void* data, size_t size, int target = 0) {
-    while (bin_.size() % 4) bin_.push_back(0);
-    json v = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
-    if (target) v["target"] = target;
-    const char* p = static_cast<const char*>(data);
-    bin_.insert(bin_.end(), p, p + size);
-    views_.push_back(v);
-    return int(views_.size() - 1);
-  }
-  int accessor(json a) {
-    accessors_.push_back(std::move(a));
-    return int(accessors_.size() - 1);
-  }
   void add(const GlbPrimitive& p);
   std::vector<char> finish(const json& extras);
 
@@ -40,10 +27,9 @@ class GlbBuilder {
   int floats(const std::vector<float>& values, int components, const char* type);
   void use(const std::string& extension);
 
-  std::vector<char> bin_;
-  json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(),
-       nodes_ = json::array(), materials_ = json::array(), images_ = json::array(),
-       textures_ = json::array();
+  GlbBuffer buffer_;
+  json meshes_ = json::array(), nodes_ = json::array(), materials_ = json::array(),
+       images_ = json::array(), textures_ = json::array();
   std::vector<std::string> extensions_;
   std::map<const InstanceTransforms*, json> instancing_;  // the accessors written for each
 };
@@ -57,10 +43,10 @@ json bounds(const std::vector<float>& pos, bool max) {
 }
 
 int GlbBuilder::floats(const std::vector<float>& values, int components, const char* type) {
-  return accessor({{"componentType", kFloat},
-                   {"count", values.size() / size_t(components)},
-                   {"type", type},
-                   {"bufferView", view(values.data(), values.size() * 4)}});
+  return buffer_.accessor({{"componentType", kFloat},
+                           {"count", values.size() / size_t(components)},
+                           {"type", type},
+                           {"bufferView", buffer_.view(values.data(), values.size() * 4)}});
 }
 
 void GlbBuilder::use(const std::string& extension) {
@@ -75,7 +61,7 @@ int GlbBuilder::material(const GlbPrimitive& p) {
   // meets the surface, drew dark dotted lines along every seam.
   json m = {{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1}}}};
   if (image) {
-    images_.push_back({{"bufferView", view(image->bytes.data(), image->bytes.size())},
+    images_.push_back({{"bufferView", buffer_.view(image->bytes.data(), image->bytes.size())},
                        {"mimeType", image->mime_type}});
     textures_.push_back({{"sampler", 0}, {"source", images_.size() - 1}});
     m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", textures_.size() - 1}};
@@ -120,14 +106,15 @@ void GlbBuilder::add(const GlbPrimitive& p) {
     json ids;
     for (const Attribute& a : atts) ids[a.name] = a.draco_id;
     prim["extensions"]["KHR_draco_mesh_compression"] = {
-        {"bufferView", view(p.draco->data.data(), p.draco->data.size())}, {"attributes", ids}};
+        {"bufferView", buffer_.view(p.draco->data.data(), p.draco->data.size())},
+        {"attributes", ids}};
   } else {
     for (Attribute& a : atts)
-      a.accessor["bufferView"] = view(a.values.data(), a.values.size() * 4, kArrayBuffer);
-    idx["bufferView"] = view(m.indices.data(), m.indices.size() * 4, kElementArrayBuffer);
+      a.accessor["bufferView"] = buffer_.view(a.values.data(), a.values.size() * 4, kArrayBuffer);
+    idx["bufferView"] = buffer_.view(m.indices.data(), m.indices.size() * 4, kElementArrayBuffer);
   }
-  for (const Attribute& a : atts) prim["attributes"][a.name] = accessor(a.accessor);
-  prim["indices"] = accessor(idx);
+  for (const Attribute& a : atts) prim["attributes"][a.name] = buffer_.accessor(a.accessor);
+  prim["indices"] = buffer_.accessor(idx);
   prim["material"] = material(p);
   meshes_.push_back({{"name", p.name}, {"primitives", json::array({prim})}});
   json node = {{"name", p.name}, {"mesh", meshes_.size() - 1}};
@@ -141,21 +128,16 @@ void GlbBuilder::add(const GlbPrimitive& p) {
                     {"ROTATION", floats(t.rotation, 4, "VEC4")},
                     {"SCALE", floats(t.scale, 3, "VEC3")}};
       if (!t.colour.empty())
-        attributes["_COLOR_0"] = accessor({{"componentType", kUint8},
-                                           {"normalized", true},
-                                           {"count", t.colour.size() / 4},
-                                           {"type", "VEC4"},
-                                           {"bufferView", view(t.colour.data(), t.colour.size())}});
+        attributes["_COLOR_0"] =
+            buffer_.accessor({{"componentType", kUint8},
+                              {"normalized", true},
+                              {"count", t.colour.size() / 4},
+                              {"type", "VEC4"},
+                              {"bufferView", buffer_.view(t.colour.data(), t.colour.size())}});
     }
     node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = attributes;
   }
   nodes_.push_back(node);
-}
-
-void append_u32(std::vector<char>& out, uint32_t v) {
-  char b[4];
-  std::memcpy(b, &v, 4);  // GLB is little-endian, as is every platform Maquette builds on
-  out.insert(out.end(), b, b + 4);
 }
 
 std::vector<char> GlbBuilder::finish(const json& extras) {
@@ -166,9 +148,7 @@ std::vector<char> GlbBuilder::finish(const json& extras) {
                {"scenes", {{{"nodes", nodes_of_scene}}}},
                {"nodes", nodes_},
                {"meshes", meshes_},
-               {"materials", materials_},
-               {"accessors", accessors_},
-               {"bufferViews", views_}};
+               {"materials", materials_}};
   if (!extras.is_null()) gltf["asset"]["extras"] = extras;
   if (!images_.empty()) {
     gltf["images"] = images_;
@@ -180,25 +160,54 @@ std::vector<char> GlbBuilder::finish(const json& extras) {
     gltf["extensionsUsed"] = extensions_;
     gltf["extensionsRequired"] = extensions_;
   }
+  return buffer_.finish(std::move(gltf));
+}
+
+void append_u32(std::vector<char>& out, uint32_t v) {
+  char b[4];
+  std::memcpy(b, &v, 4);  // GLB is little-endian, as is every platform Maquette builds on
+  out.insert(out.end(), b, b + 4);
+}
+
+}  // namespace
+
+int GlbBuffer::view(const void* data, size_t size, int target, size_t alignment) {
+  while (bin_.size() % alignment) bin_.push_back(0);
+  json v = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
+  if (target) v["target"] = target;
+  const char* p = static_cast<const char*>(data);
+  bin_.insert(bin_.end(), p, p + size);
+  views_.push_back(v);
+  return int(views_.size() - 1);
+}
+
+int GlbBuffer::accessor(json a) {
+  accessors_.push_back(std::move(a));
+  return int(accessors_.size() - 1);
+}
+
+std::vector<char> GlbBuffer::finish(json gltf) {
+  if (!accessors_.empty()) gltf["accessors"] = accessors_;
+  if (!views_.empty()) gltf["bufferViews"] = views_;
   while (bin_.size() % 4) bin_.push_back(0);
-  gltf["buffers"] = {{{"byteLength", bin_.size()}}};
+  if (!bin_.empty()) gltf["buffers"] = {{{"byteLength", bin_.size()}}};
   std::string text = gltf.dump();
   while (text.size() % 4) text.push_back(' ');
 
   std::vector<char> out;
   append_u32(out, 0x46546C67);  // "glTF"
   append_u32(out, 2);
-  append_u32(out, uint32_t(12 + 8 + text.size() + 8 + bin_.size()));
+  append_u32(out, uint32_t(12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size())));
   append_u32(out, uint32_t(text.size()));
   append_u32(out, 0x4E4F534A);  // "JSON"
   out.insert(out.end(), text.begin(), text.end());
-  append_u32(out, uint32_t(bin_.size()));
-  append_u32(out, 0x004E4942);  // "BIN\0"
-  out.insert(out.end(), bin_.begin(), bin_.end());
+  if (!bin_.empty()) {
+    append_u32(out, uint32_t(bin_.size()));
+    append_u32(out, 0x004E4942);  // "BIN\0"
+    out.insert(out.end(), bin_.begin(), bin_.end());
+  }
   return out;
 }
-
-}  // namespace
 
 std::vector<char> make_glb(const std::vector<GlbPrimitive>& primitives, const json& extras) {
   GlbBuilder b;

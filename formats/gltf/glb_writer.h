@@ -32,6 +32,22 @@ struct GlbPrimitive {
   const InstanceTransforms* instances = nullptr;  // primitives given the same one share it
 };
 
+// The binary chunk, bufferViews and accessors of a GLB being built, and its framing.
+class GlbBuffer {
+ public:
+  // A bufferView of a copy of `size` bytes, at an offset that is a multiple of `alignment` (4;
+  // 8 for 64-bit columns of EXT_structural_metadata).
+  int view(const void* data, size_t size, int target = 0, size_t alignment = 4);
+  int accessor(nlohmann::json accessor);
+  // The GLB bytes: `gltf` with the accessors, bufferViews and buffer added (none when empty),
+  // then the BIN chunk (left out when empty).
+  std::vector<char> finish(nlohmann::json gltf);
+
+ private:
+  std::vector<char> bin_;
+  nlohmann::json views_ = nlohmann::json::array(), accessors_ = nlohmann::json::array();
+};
+
 // The GLB bytes; `extras` goes to the asset's extras (e.g. the frame's origin).
 std::vector<char> make_glb(const std::vector<GlbPrimitive>& primitives,
                            const nlohmann::json& extras = nullptr);

@@ -1,0 +1,193 @@
+// Outside models (gltf/gltf_model.h): a .gltf with its buffer and image beside it, one with data
+// URIs, a GLB, a Draco GLB (mesh_glb's own output), node transforms composed (checked against
+// the transforms worked out by hand), and each bad input refused naming the file and the fault.
+#include "gltf/gltf_model.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "content_fixture.h"
+#include "core/error.h"
+#include "gltf/mesh_glb.h"
+#include "model_files.h"
+
+namespace maquette::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class GltfModel : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = (fs::temp_directory_path() /
+            ("maquette_gltf_model_" +
+             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())))
+               .string();
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void expect_refused(const std::string& path, const std::string& fault) {
+    try {
+      read_gltf_model(path);
+      ADD_FAILURE() << "read: " << fault;
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(path), std::string::npos) << message;
+      EXPECT_NE(message.find(fault), std::string::npos) << message;
+    }
+  }
+
+  std::string dir_;
+};
+
+// The quad's vertex p (glTF axes) where node 1 puts it, in ENU: T (10, 20, 30) after a rotation
+// of 90 degrees about y ((x, y, z) -> (z, y, -x)) after a scale of 2, then (x, -z, y).
+std::array<float, 3> placed_by_node1(std::array<float, 3> p) {
+  return {10 + 2 * p[2], -(30 - 2 * p[0]), 20 + 2 * p[1]};
+}
+
+void expect_quad(const MeshContent& c, const ModelFile& m) {
+  ASSERT_EQ(c.objects.size(), 2u);  // node 1 (below node 0), node 2
+  ASSERT_EQ(c.materials.size(), 1u);
+  EXPECT_EQ(c.materials[0].name, "quad");
+  EXPECT_EQ(c.materials[0].base_colour, (std::array<float, 4>{0.5f, 0.25f, 1, 1}));
+  EXPECT_EQ(c.materials[0].metallic, 1.f);  // glTF's default
+  EXPECT_EQ(c.materials[0].roughness, 0.5f);
+  EXPECT_EQ(c.materials[0].image, m.image);
+  EXPECT_EQ(c.materials[0].image_mime, "image/png");
+  const std::array<std::array<float, 3>, 4> quad = {{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}};
+  const MeshObject &a = c.objects[0], &b = c.objects[1];
+  ASSERT_EQ(a.positions.size(), 12u);
+  ASSERT_EQ(b.positions.size(), 12u);
+  for (size_t v = 0; v < 4; ++v) {
+    const auto expected = placed_by_node1(quad[v]);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.positions[v * 3 + k], expected[k], 1e-5) << v;
+    // Node 2 mirrors x: (-x, y, z), in ENU (-x, -z, y).
+    EXPECT_EQ(b.positions[v * 3], -quad[v][0]);
+    EXPECT_EQ(b.positions[v * 3 + 1], -quad[v][2]);
+    EXPECT_EQ(b.positions[v * 3 + 2], quad[v][1]);
+    for (const MeshObject* o : {&a, &b}) {  // up stays up
+      EXPECT_NEAR(o->normals[v * 3], 0, 1e-6);
+      EXPECT_NEAR(o->normals[v * 3 + 1], 0, 1e-6);
+      EXPECT_NEAR(o->normals[v * 3 + 2], 1, 1e-6);
+    }
+  }
+  EXPECT_EQ(a.uvs, (std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}));  // normalized unsigned shorts
+  EXPECT_EQ(a.indices, (std::vector<uint32_t>{0, 3, 2, 0, 2, 1}));
+  EXPECT_EQ(b.indices, (std::vector<uint32_t>{0, 2, 3, 0, 1, 2}));  // the mirror keeps the winding
+  EXPECT_EQ(a.provenance.object_id, 0u);
+  EXPECT_EQ(b.provenance.object_id, 1u);
+  EXPECT_EQ(b.provenance.attributes["node"], 2);
+}
+
+TEST_F(GltfModel, ExternalBufferAndImage) {
+  const ModelFile m = quad_model();
+  expect_quad(read_gltf_model(write_external(m, dir_, "quad")), m);
+}
+
+TEST_F(GltfModel, DataUris) {
+  const ModelFile m = quad_model();
+  expect_quad(read_gltf_model(write_data_uris(m, dir_, "quad")), m);
+}
+
+TEST_F(GltfModel, Glb) {
+  const ModelFile m = quad_model();
+  expect_quad(read_gltf_model(write_glb(m, dir_, "quad")), m);
+}
+
+TEST_F(GltfModel, DracoGlbOfMeshContent) {
+  MeshContent c;
+  c.materials.push_back({"a", {1, 0, 0, 1}, 0.f, 1.f, "", "", false});
+  c.objects.push_back(box({1, 2, 3}, {4, 5, 6}));
+  c.objects.push_back(sphere({-3, 0, 2}, 1.5f, 12, 6));
+  c.objects[0].material = 0;
+  const std::string glb = encode_mesh_glb(c);
+  write_bytes(dir_ + "/content.glb", glb);
+  const MeshContent model = read_gltf_model(dir_ + "/content.glb");
+  const MeshContent decoded = decode_mesh_glb(glb, c.origin, "content.glb");
+  ASSERT_EQ(model.objects.size(), 2u);  // one per primitive: here one per object
+  EXPECT_EQ(model.materials, decoded.materials);
+  for (size_t i = 0; i < 2; ++i) {
+    const MeshDifference d = compare_meshes(decoded.objects[i], model.objects[i]);
+    EXPECT_EQ(d.position, 0);   // the same decoded floats, the same axes
+    EXPECT_LT(d.normal, 1e-6);  // the model reader normalizes them again
+    EXPECT_LE(compare_meshes(c.objects[i], model.objects[i]).position, 0.0005);
+  }
+}
+
+TEST_F(GltfModel, NotGltf) {
+  write_bytes(dir_ + "/text.gltf", "hello, world");
+  expect_refused(dir_ + "/text.gltf", "not glTF");
+  write_bytes(dir_ + "/magic.glb", std::string("glTX\2\0\0\0\40\0\0\0", 12) + std::string(20, 'x'));
+  expect_refused(dir_ + "/magic.glb", "not glTF");
+  write_bytes(dir_ + "/v1.gltf", R"({"asset": {"version": "1.0"}})");
+  expect_refused(dir_ + "/v1.gltf", "not glTF 2.0");
+  expect_refused(dir_ + "/absent.glb", "no such file");
+}
+
+TEST_F(GltfModel, NoMesh) {
+  ModelFile m = quad_model();
+  m.gltf.erase("meshes");
+  m.gltf["nodes"][1].erase("mesh");
+  m.gltf["nodes"][2].erase("mesh");
+  expect_refused(write_glb(m, dir_, "empty"), "no mesh");
+}
+
+TEST_F(GltfModel, BufferOfTwoGigabytesIsRefusedBeforeReading) {
+  ModelFile m = quad_model();
+  m.gltf["buffers"][0]["byteLength"] = 2147483648u;
+  expect_refused(write_external(m, dir_, "huge"),
+                 "buffers[0] declares 2147483648 bytes, more than the 1073741824 (1 GiB) read");
+}
+
+TEST_F(GltfModel, AccessorOutOfItsBufferView) {
+  ModelFile m = quad_model();
+  m.gltf["accessors"][0]["count"] = 5;
+  expect_refused(write_external(m, dir_, "oob"),
+                 "accessors[0]: 5 elements of 12 bytes from byte 0 (stride 16) are out of its "
+                 "bufferView of 64 bytes");
+  m = quad_model();
+  m.gltf["bufferViews"][3]["byteOffset"] = 1000;
+  expect_refused(write_external(m, dir_, "view"), "bufferViews[3]: bytes 1000..1006 are out of");
+}
+
+TEST_F(GltfModel, IndexOutOfTheVertices) {
+  ModelFile m = quad_model();
+  m.bin[m.gltf["bufferViews"][3]["byteOffset"].get<size_t>() + 4] = char(200);
+  expect_refused(write_external(m, dir_, "index"), "index 200 is out of its 4 vertices");
+}
+
+TEST_F(GltfModel, LinesAreNotTriangles) {
+  ModelFile m = quad_model();
+  m.gltf["meshes"][0]["primitives"][0]["mode"] = 1;
+  expect_refused(write_external(m, dir_, "lines"),
+                 "meshes[0].primitives[0] has mode 1: only triangles (mode 4) are read");
+}
+
+TEST_F(GltfModel, MissingFiles) {
+  const ModelFile m = quad_model();
+  const std::string path = write_external(m, dir_, "quad");
+  fs::remove(dir_ + "/quad.png");
+  expect_refused(path, "images[0]: cannot read '" + dir_ + "/quad.png': no such file");
+  fs::remove(dir_ + "/quad.bin");
+  expect_refused(path, "buffers[0]: cannot read '" + dir_ + "/quad.bin': no such file");
+}
+
+TEST_F(GltfModel, BufferShorterThanDeclared) {
+  ModelFile m = quad_model();
+  m.gltf["buffers"][0]["byteLength"] = m.bin.size() + 100;
+  expect_refused(write_external(m, dir_, "short"), "holds " + std::to_string(m.bin.size()));
+}
+
+TEST_F(GltfModel, UnknownRequiredExtension) {
+  ModelFile m = quad_model();
+  m.gltf["extensionsRequired"] = {"EXT_meshopt_compression"};
+  expect_refused(write_external(m, dir_, "meshopt"),
+                 "requires the extension \"EXT_meshopt_compression\", which is not read");
+}
+
+}  // namespace
+}  // namespace maquette::test
