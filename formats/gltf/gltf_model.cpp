@@ -146,21 +146,7 @@ class ModelReader {
   MeshContent content_;
 };
 
-}  // namespace
-
-MeshContent read_gltf_model(const std::string& path) {
-  if (const auto problem = file_access_problem(path))
-    throw Error("model file " + path + ": " + *problem);
-  const uint64_t size = std::filesystem::file_size(path);
-  if (size > kMaxGltfBufferBytes)
-    throw Error("model file " + path + ": " + std::to_string(size) +
-                " bytes, more than the 1 GiB read");
-  std::string bytes(size, '\0');
-  std::ifstream in(path, std::ios::binary);
-  if (!in.read(bytes.data(), std::streamsize(size)))
-    throw Error("model file " + path + ": cannot be read");
-  const GltfDocument doc =
-      parse_gltf(bytes, "model file " + path, std::filesystem::path(path).parent_path());
+MeshContent read_model(const GltfDocument& doc) {
   if (doc.json.value("meshes", json::array()).empty())
     throw Error(doc.where + ": no mesh (a glTF without geometry)");
   ModelReader reader(doc);
@@ -183,6 +169,27 @@ MeshContent read_gltf_model(const std::string& path) {
   MeshContent content = reader.take();
   if (content.objects.empty()) throw Error(doc.where + ": no mesh drawn by a node of its scene");
   return content;
+}
+
+}  // namespace
+
+MeshContent read_gltf_model(const std::string& path) {
+  if (const auto problem = file_access_problem(path))
+    throw Error("model file " + path + ": " + *problem);
+  const uint64_t size = std::filesystem::file_size(path);
+  if (size > kMaxGltfBufferBytes)
+    throw Error("model file " + path + ": " + std::to_string(size) +
+                " bytes, more than the 1 GiB read");
+  std::string bytes(size, '\0');
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(bytes.data(), std::streamsize(size)))
+    throw Error("model file " + path + ": cannot be read");
+  try {
+    return read_model(
+        parse_gltf(bytes, "model file " + path, std::filesystem::path(path).parent_path()));
+  } catch (const json::exception& e) {
+    throw Error("model file " + path + ": malformed glTF: " + e.what());
+  }
 }
 
 }  // namespace maquette

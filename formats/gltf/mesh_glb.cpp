@@ -206,6 +206,19 @@ class PrimitiveWriter {
   std::vector<draco::Mesh::Face> faces_;
 };
 
+void check_material(const Material& m, size_t i) {
+  const auto fault = [&](const std::string& what) {
+    throw Error("mesh content: material " + std::to_string(i) + " (" + m.name + "): " + what);
+  };
+  for (float f : {m.base_colour[0], m.base_colour[1], m.base_colour[2], m.base_colour[3],
+                  m.metallic, m.roughness})
+    if (!(f >= 0 && f <= 1)) fault("a factor of " + std::to_string(f) + ", not within 0..1");
+  if (!m.image.empty() && m.image_mime != "image/jpeg" && m.image_mime != "image/png" &&
+      m.image_mime != "image/webp")
+    fault("an image of type '" + m.image_mime + "', not image/jpeg, image/png or image/webp");
+}
+
+// A WebP image is a texture's source through EXT_texture_webp (glTF's core has JPEG and PNG).
 json material_json(const Material& m, GlbBuffer& buffer, json& images, json& textures) {
   json pbr = {{"baseColorFactor", m.base_colour},
               {"metallicFactor", m.metallic},
@@ -213,7 +226,12 @@ json material_json(const Material& m, GlbBuffer& buffer, json& images, json& tex
   if (!m.image.empty()) {
     images.push_back(
         {{"bufferView", buffer.view(m.image.data(), m.image.size())}, {"mimeType", m.image_mime}});
-    textures.push_back({{"sampler", 0}, {"source", images.size() - 1}});
+    json texture = {{"sampler", 0}};
+    if (m.image_mime == "image/webp")
+      texture["extensions"]["EXT_texture_webp"]["source"] = images.size() - 1;
+    else
+      texture["source"] = images.size() - 1;
+    textures.push_back(texture);
     pbr["baseColorTexture"] = {{"index", textures.size() - 1}};
   }
   json out = {{"pbrMetallicRoughness", pbr}};
@@ -369,8 +387,12 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
   for (size_t i = 0; i < content.objects.size(); ++i) check_object(content, i);
   GlbBuffer buffer;
   json images = json::array(), textures = json::array(), materials = json::array();
-  for (const Material& m : content.materials)
-    materials.push_back(material_json(m, buffer, images, textures));
+  bool webp = false;
+  for (size_t i = 0; i < content.materials.size(); ++i) {
+    check_material(content.materials[i], i);
+    materials.push_back(material_json(content.materials[i], buffer, images, textures));
+    webp |= content.materials[i].image_mime == "image/webp";
+  }
   PrimitiveWriter writer(content, settings, buffer);
   json primitives = json::array();
   for (const Group& g : groups_of(content)) primitives.push_back(writer.write(g));
@@ -382,6 +404,10 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
                {"extensionsUsed",
                 {"EXT_mesh_features", "EXT_structural_metadata", "KHR_draco_mesh_compression"}},
                {"extensionsRequired", {"KHR_draco_mesh_compression"}}};
+  if (webp) {  // no fallback image: required
+    gltf["extensionsUsed"].push_back("EXT_texture_webp");
+    gltf["extensionsRequired"].push_back("EXT_texture_webp");
+  }
   if (!materials.empty()) gltf["materials"] = materials;
   if (!images.empty()) {
     gltf["images"] = images;
@@ -394,7 +420,7 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
 }
 
 MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
-                            const std::string& where) {
+                            const std::string& where) try {
   const GltfDocument doc = parse_gltf(glb, where, {});
   MeshContent out{origin, read_materials(doc), {}};
   const std::vector<ObjectProvenance> provenance = read_metadata(doc);
@@ -418,6 +444,8 @@ MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
       throw Error(where + ": object " + std::to_string(i) +
                   " of the property table has no triangles");
   return out;
+} catch (const json::exception& e) {
+  throw Error(where + ": malformed glTF: " + e.what());
 }
 
 }  // namespace maquette

@@ -7,7 +7,8 @@
 //   (KHR_draco_mesh_compression, required): positions quantized to a step of at most
 //   `position_error` (bits from the primitive's extent), normals and uvs to their bits;
 // - PBR metallic-roughness materials, base-colour images embedded as they were given
-//   (bufferView and mimeType); objects without a material get glTF's default one;
+//   (bufferView and mimeType; WebP through EXT_texture_webp, then required); objects without a
+//   material get glTF's default one;
 // - per-object provenance: each vertex's _FEATURE_ID_0 (EXT_mesh_features) is its object's row
 //   in the GLB's one property table (EXT_structural_metadata, class "object": object_id UINT64,
 //   feature_id INT64 (no data: -1), tool STRING, attributes STRING holding the JSON object).
@@ -29,7 +30,8 @@ struct MeshGlbSettings {
 
 // Throws maquette::Error naming the object (index and id) at fault: positions not a whole number
 // of finite vertices, normals or uvs not one per vertex, indices not whole triangles or out of
-// range, no triangles, a material out of range, more than 2^24 objects.
+// range, no triangles, a material out of range, more than 2^24 objects; and the material at
+// fault: a factor outside 0..1, an image neither JPEG, PNG nor WebP.
 std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& settings = {});
 
 // The content back: objects in their order with their materials and provenance; each object's

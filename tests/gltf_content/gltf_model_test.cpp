@@ -182,6 +182,12 @@ TEST_F(GltfModel, BufferShorterThanDeclared) {
   expect_refused(write_external(m, dir_, "short"), "holds " + std::to_string(m.bin.size()));
 }
 
+TEST_F(GltfModel, FieldOfTheWrongType) {
+  ModelFile m = quad_model();
+  m.gltf["meshes"][0]["primitives"][0]["material"] = "zero";
+  expect_refused(write_external(m, dir_, "type"), "malformed glTF");
+}
+
 TEST_F(GltfModel, UnknownRequiredExtension) {
   ModelFile m = quad_model();
   m.gltf["extensionsRequired"] = {"EXT_meshopt_compression"};

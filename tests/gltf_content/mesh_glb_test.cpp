@@ -65,6 +65,13 @@ MeshContent town() {
   return c;
 }
 
+// The GLB's JSON and BIN chunks.
+std::pair<json, std::string> chunks(const std::string& glb) {
+  uint32_t json_bytes;
+  std::memcpy(&json_bytes, glb.data() + 12, 4);
+  return {json::parse(glb.substr(20, json_bytes)), glb.substr(20 + json_bytes + 8)};
+}
+
 void expect_round_trip(const MeshContent& in, const MeshGlbSettings& settings = {}) {
   const std::string glb = encode_mesh_glb(in, settings);
   const MeshContent out = decode_mesh_glb(glb, in.origin, "test blob");
@@ -96,6 +103,18 @@ TEST(MeshGlb, CoarserQuantizationStaysWithinItsStep) {
   expect_round_trip(town(), coarse);
 }
 
+TEST(MeshGlb, WebpImagesGoThroughExtTextureWebp) {
+  MeshContent c = textured_box();
+  c.materials[0].image = encoded_image("WEBP", 16, 16);
+  c.materials[0].image_mime = "image/webp";
+  expect_round_trip(c);
+  const json j = chunks(encode_mesh_glb(c)).first;
+  EXPECT_EQ(j["textures"][0]["extensions"]["EXT_texture_webp"]["source"], 0);
+  EXPECT_FALSE(j["textures"][0].contains("source"));
+  EXPECT_EQ(j["extensionsRequired"],
+            json::array({"KHR_draco_mesh_compression", "EXT_texture_webp"}));
+}
+
 TEST(MeshGlb, PositionBitsKeepTheStepWithinTheError) {
   const MeshGlbSettings s;
   EXPECT_EQ(position_bits(2000, s), 21);  // 2000 / (2^21 - 1) = 0.95 mm
@@ -113,13 +132,6 @@ TEST(MeshGlb, SameContentSameBytes) {
   EXPECT_EQ(encode_mesh_glb(town()), encode_mesh_glb(town()));
   const std::string a = encode_mesh_glb(textured_box());
   EXPECT_EQ(a, encode_mesh_glb(textured_box()));
-}
-
-// The GLB's JSON and BIN chunks.
-std::pair<json, std::string> chunks(const std::string& glb) {
-  uint32_t json_bytes;
-  std::memcpy(&json_bytes, glb.data() + 12, 4);
-  return {json::parse(glb.substr(20, json_bytes)), glb.substr(20 + json_bytes + 8)};
 }
 
 TEST(MeshGlb, LayoutIsOnePrimitivePerMaterialWithFeatureIdsAndOnePropertyTable) {
@@ -233,6 +245,12 @@ TEST(MeshGlb, BadContentIsRefusedNamingTheObject) {
   c.objects[3].indices.clear();
   expect_refused(c, "indices are not one or more triangles");
   expect_refused(MeshContent{}, "no objects");
+  c = town();
+  c.materials[1].roughness = 1.5f;
+  expect_refused(c, "material 1 (metal): a factor of 1.500000, not within 0..1");
+  c = town();
+  c.materials[0].image_mime = "image/gif";
+  expect_refused(c, "material 0 (roof): an image of type 'image/gif'");
 }
 
 TEST(MeshGlb, BadBlobsAreRefusedNamingWhere) {
