@@ -18,11 +18,15 @@ constexpr uint32_t kGlbMagic = 0x46546C67, kJsonChunk = 0x4E4F534A, kBinChunk = 
 constexpr int kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
               kUnsignedInt = 5125, kFloat = 5126;
 
-uint32_t u32(std::string_view bytes, size_t at) {
-  uint32_t v;
-  std::memcpy(&v, bytes.data() + at, 4);  // GLB is little-endian, as every platform we build on
-  return v;
+template <class T>
+T load(const char* p) {
+  T x;
+  std::memcpy(&x, p, sizeof x);
+  return x;
 }
+
+// GLB is little-endian, as every platform Maquette builds on.
+uint32_t u32(std::string_view bytes, size_t at) { return load<uint32_t>(bytes.data() + at); }
 
 [[noreturn]] void fail(const GltfDocument& doc, const std::string& what) {
   throw Error(doc.where + ": " + what);
@@ -151,6 +155,24 @@ size_t components_of(const std::string& type) {
   return 0;
 }
 
+// One component at `p` (normalized integers mapped to [0, 1] or [-1, 1] as glTF specifies).
+double component(const char* p, int type, bool normalized) {
+  switch (type) {
+    case kByte:
+      return normalized ? std::max(load<int8_t>(p) / 127.0, -1.0) : load<int8_t>(p);
+    case kUnsignedByte:
+      return load<uint8_t>(p) / (normalized ? 255.0 : 1.0);
+    case kShort:
+      return normalized ? std::max(load<int16_t>(p) / 32767.0, -1.0) : load<int16_t>(p);
+    case kUnsignedShort:
+      return load<uint16_t>(p) / (normalized ? 65535.0 : 1.0);
+    case kUnsignedInt:
+      return load<uint32_t>(p);
+    default:
+      return load<float>(p);
+  }
+}
+
 // The values of accessor `index` as doubles, with `components` each (normalized integers mapped
 // to [0, 1] or [-1, 1] as glTF specifies).
 std::vector<double> read_accessor(const GltfDocument& doc, const json& index, size_t components) {
@@ -181,42 +203,7 @@ std::vector<double> read_accessor(const GltfDocument& doc, const json& index, si
   for (size_t e = 0; e < count; ++e)
     for (size_t c = 0; c < n; ++c) {
       const char* p = view.data() + offset + e * stride + c * size;
-      double value = 0;
-      switch (type) {
-        case kByte:
-          value = normalized ? std::max(*reinterpret_cast<const int8_t*>(p) / 127.0, -1.0)
-                             : *reinterpret_cast<const int8_t*>(p);
-          break;
-        case kUnsignedByte: {
-          const uint8_t x = uint8_t(*p);
-          value = normalized ? x / 255.0 : x;
-          break;
-        }
-        case kShort: {
-          int16_t x;
-          std::memcpy(&x, p, 2);
-          value = normalized ? std::max(x / 32767.0, -1.0) : x;
-          break;
-        }
-        case kUnsignedShort: {
-          uint16_t x;
-          std::memcpy(&x, p, 2);
-          value = normalized ? x / 65535.0 : x;
-          break;
-        }
-        case kUnsignedInt: {
-          uint32_t x;
-          std::memcpy(&x, p, 4);
-          value = x;
-          break;
-        }
-        default: {
-          float x;
-          std::memcpy(&x, p, 4);
-          value = x;
-        }
-      }
-      out[e * n + c] = value;
+      out[e * n + c] = component(p, type, normalized);
     }
   return out;
 }
@@ -304,7 +291,6 @@ GltfDocument parse_gltf(std::string_view bytes, const std::string& where,
     if (at + 8 <= end && u32(bytes, at + 4) == kBinChunk) {
       if (at + 8 + uint64_t(u32(bytes, at)) > end) fail(doc, "a GLB whose BIN chunk is cut short");
       bin = bytes.substr(at + 8, u32(bytes, at));
-      if (bin.data() == nullptr) bin = std::string_view(bytes.data() + at + 8, 0);
     }
   }
   doc.json = json::parse(text, nullptr, false);

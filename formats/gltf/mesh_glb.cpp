@@ -92,6 +92,7 @@ class PrimitiveWriter {
     draco::Mesh mesh;
     std::vector<float> positions, normals, uvs, feature_float;
     std::vector<uint16_t> feature_short;
+    std::vector<draco::Mesh::Face> faces;
     const bool short_ids = content_.objects.size() <= 65536;
     for (size_t i : g.objects) {
       const MeshObject& o = content_.objects[i];
@@ -106,9 +107,9 @@ class PrimitiveWriter {
       }
       uvs.insert(uvs.end(), o.uvs.begin(), o.uvs.end());
       for (size_t t = 0; t < o.indices.size(); t += 3)
-        faces_.push_back({draco::PointIndex(base + o.indices[t]),
-                          draco::PointIndex(base + o.indices[t + 1]),
-                          draco::PointIndex(base + o.indices[t + 2])});
+        faces.push_back({draco::PointIndex(base + o.indices[t]),
+                         draco::PointIndex(base + o.indices[t + 1]),
+                         draco::PointIndex(base + o.indices[t + 2])});
     }
     mesh.set_num_points(uint32_t(positions.size() / 3));
     json ids;
@@ -124,8 +125,7 @@ class PrimitiveWriter {
                                                      draco::DT_UINT16, 1, feature_short)
                                      : add_attribute(mesh, draco::GeometryAttribute::GENERIC,
                                                      draco::DT_FLOAT32, 1, feature_float);
-    for (const draco::Mesh::Face& f : faces_) mesh.AddFace(f);
-    faces_.clear();
+    for (const draco::Mesh::Face& f : faces) mesh.AddFace(f);
 
     const std::string stream = encode(mesh, positions);
     // The accessors describe the decoded stream (Draco may split vertices): decode it.
@@ -203,7 +203,6 @@ class PrimitiveWriter {
   const MeshContent& content_;
   const MeshGlbSettings& settings_;
   GlbBuffer& buffer_;
-  std::vector<draco::Mesh::Face> faces_;
 };
 
 void check_material(const Material& m, size_t i) {
