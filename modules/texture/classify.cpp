@@ -27,7 +27,8 @@ OperatorSpec classify_spec() {
   s.name = "texture.classify";
   s.description =
       "Classes of an RGB image from boxes, polygons or cluster centres in hue-saturation "
-      "space, grey pixels given a hue, snow below a minimal altitude, excluded land cover and "
+      "space (or centres in CIELAB), grey pixels given a hue, snow below a minimal altitude, "
+      "excluded land cover and "
       "the polygons of a features layer removed";
   s.kind = OperatorKind::Cell;
   s.inputs = {{"rgb", "RGB image, 0..255", false},
@@ -64,13 +65,16 @@ OperatorSpec classify_spec() {
            "texture.cluster's plot (s cos h, s sin h)"}}}}}};
   const json centre = {{"type", "object"},
                        {"additionalProperties", false},
-                       {"required", {"id", "hue", "saturation"}},
+                       {"required", {"id"}},
                        {"properties",
                         {{"id", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
                          {"name", {{"type", "string"}}},
                          {"hue", {{"type", "number"}, {"minimum", 0}, {"maximum", 360}}},
                          {"saturation", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
                          {"value", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
+                         {"L", {{"type", "number"}, {"minimum", 0}, {"maximum", 100}}},
+                         {"a", {{"type", "number"}}},
+                         {"b", {{"type", "number"}}},
                          {"pixels", {{"type", "integer"}}}}}};
   s.halo = kMaxMajorityRadius;
   s.params_schema = {

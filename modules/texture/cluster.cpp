@@ -1,7 +1,7 @@
 // texture.cluster (reduce): the colour histogram of an image (hue x saturation, or x value; grey
-// pixels given a hue, paper 5.2.1), surface-type clusters found in it (k-means or a Gaussian
-// mixture, k given or chosen; colour_clusters.h) and optionally its density plot as a PNG. The
-// artifact's "centres" are the "centres" parameter of texture.classify.
+// pixels given a hue, paper 5.2.1; or CIELAB), surface-type clusters found in it (k-means or a
+// Gaussian mixture, k given or chosen; colour_clusters.h) and optionally its density plot as a PNG.
+// The artifact's "centres" are the "centres" parameter of texture.classify.
 #include <algorithm>
 #include <fstream>
 
@@ -22,7 +22,8 @@ OperatorSpec cluster_spec() {
   OperatorSpec s;
   s.name = "texture.cluster";
   s.description =
-      "Hue-saturation(-value) histogram of an RGB image, surface-type clusters by deterministic "
+      "Hue-saturation(-value) or CIELAB histogram of an RGB image, surface-type clusters by "
+      "deterministic "
       "k-means or Gaussian mixture with k given or chosen (centres for texture.classify), and "
       "its density plot";
   s.kind = OperatorKind::Reduce;
@@ -44,7 +45,7 @@ OperatorSpec cluster_spec() {
           {"description", "number of clusters, or \"auto\" to choose up to k_max"}}},
         {"k_max", integer_param(2, kMaxK, 8, "largest k tried when k is \"auto\"")},
         {"method", {{"type", "string"}, {"enum", {"kmeans", "gmm"}}, {"default", "kmeans"}}},
-        {"space", {{"type", "string"}, {"enum", {"hs", "hsv"}}, {"default", "hs"}}},
+        {"space", {{"type", "string"}, {"enum", {"hs", "hsv", "lab"}}, {"default", "hs"}}},
         {"out",
          {{"type", "string"},
           {"default", ""},
@@ -52,7 +53,8 @@ OperatorSpec cluster_spec() {
         {"plot",
          {{"type", "string"},
           {"default", ""},
-          {"description", "write the hue-saturation density plot to this PNG file"}}}}}};
+          {"description",
+           "write the hue-saturation density plot to this PNG file (\"hs\", \"hsv\")"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
   s.params_schema["properties"].update(illumination_params_schema());
   return s;
@@ -62,6 +64,10 @@ ClusterRequest parse_request(const json& p) {
   ClusterRequest r{parse_cluster_method(p.at("method").get<std::string>()),
                    parse_colour_space(p.at("space").get<std::string>()), 0,
                    p.at("k_max").get<int>()};
+  if (r.space == ColourSpace::Lab && !p.at("plot").get<std::string>().empty())
+    throw Error(
+        "texture.cluster: params.plot: the density plot is drawn in \"hs\" or \"hsv\", "
+        "not in space \"lab\"");
   if (const json& k = p.at("k"); k.is_number_integer())
     r.k = k.get<int>();
   else if (k != "auto")
@@ -81,20 +87,31 @@ json matrix(const Matrix& m, int dims) {
 // components, how k was chosen, the histogram.
 json clusters_document(const ClusterRequest& request, const ColourClusters& found,
                        const std::vector<uint64_t>& histogram) {
-  const bool hsv = request.space == ColourSpace::Hsv;
+  const bool hsv = request.space == ColourSpace::Hsv, lab = request.space == ColourSpace::Lab;
   json centres = json::array();
   for (size_t c = 0; c < found.centres.size(); ++c) {
-    const Hsv x = point_colour(found.centres[c]);
-    json centre = {{"id", c}, {"hue", x.h}, {"saturation", x.s}};
-    if (hsv) centre["value"] = x.v;
+    json centre = {{"id", c}};
+    if (lab) {
+      const auto x = point_lab(found.centres[c]);
+      centre.update({{"L", x[0]}, {"a", x[1]}, {"b", x[2]}});
+    } else {
+      const Hsv x = point_colour(found.centres[c]);
+      centre.update({{"hue", x.h}, {"saturation", x.s}});
+      if (hsv) centre["value"] = x.v;
+    }
     centre["pixels"] = found.pixels[c];
     centres.push_back(centre);
   }
-  json hist = {{"hue_bins", kHueBins}, {"saturation_bins", kSatBins}};
+  json hist = lab ? json{{"lightness_bins", kLightnessBins},
+                         {"chroma_bins", kChromaBins},
+                         {"chroma_range", {-kChromaLimit, kChromaLimit}}}
+                  : json{{"hue_bins", kHueBins}, {"saturation_bins", kSatBins}};
   if (hsv) hist["value_bins"] = kValueBins;
   hist["counts"] = histogram;
   json doc = {{"method", request.method == ClusterMethod::Gmm ? "gmm" : "kmeans"},
-              {"space", hsv ? "hsv" : "hs"},
+              {"space", lab   ? "lab"
+                        : hsv ? "hsv"
+                              : "hs"},
               {"k", found.centres.size()},
               {"centres", centres},
               {"histogram", hist}};
@@ -138,7 +155,9 @@ class ClusterOp : public ReduceOperator {
         std::array<float, 3> x = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
         if (std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2])) continue;
         if (light) x = light->corrected(x, c, r);
-        ++hist[size_t(colour_bin(grey.hsv(x[0], x[1], x[2]), space))];
+        const int bin = space == ColourSpace::Lab ? lab_bin(srgb_to_lab(x[0], x[1], x[2]))
+                                                  : colour_bin(grey.hsv(x[0], x[1], x[2]), space);
+        ++hist[size_t(bin)];
         any = true;
       }
     return any ? json(hist) : json();

@@ -12,6 +12,8 @@ struct Hsv {
   double v = 0;  // [0, 1]
 };
 
+using Lab = std::array<double, 3>;  // L* 0..100, a*, b*
+
 Hsv rgb_to_hsv(double r, double g, double b);                     // components 0..255
 std::array<double, 3> srgb_to_lab(double r, double g, double b);  // components 0..255
 double ciede2000(const std::array<double, 3>& lab1, const std::array<double, 3>& lab2);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "hs_histogram.h"
 
 namespace maquette::texture {
 namespace {
@@ -119,13 +120,30 @@ HsClassifier HsClassifier::from_params(const nlohmann::json& p) {
     c.boxes.push_back({b.at("id").get<int>(), pair(b, "hue", {0, 360}),
                        pair(b, "saturation", {0, 1}), pair(b, "value", {0, 1})});
   c.polygons = parse_polygons(p.value("polygons", nlohmann::json::array()));
-  for (const auto& z : p.value("centres", nlohmann::json::array()))
-    c.centres.push_back({z.at("id").get<int>(), z.at("hue").get<double>(),
-                         z.at("saturation").get<double>(), z.value("value", double(NAN))});
-  for (const Centre& z : c.centres)
-    if (std::isnan(z.value) != std::isnan(c.centres.front().value))
+  for (const auto& z : p.value("centres", nlohmann::json::array())) {
+    const int id = z.at("id").get<int>();
+    if (z.contains("L") && z.contains("a") && z.contains("b") && !z.contains("hue") &&
+        !z.contains("saturation") && !z.contains("value"))
+      c.centres.push_back(
+          {id, 0, 0, NAN, Lab{z["L"].get<double>(), z["a"].get<double>(), z["b"].get<double>()}});
+    else if (z.contains("hue") && z.contains("saturation") && !z.contains("L") &&
+             !z.contains("a") && !z.contains("b"))
+      c.centres.push_back({id, z["hue"].get<double>(), z["saturation"].get<double>(),
+                           z.value("value", double(NAN)), std::nullopt});
+    else
+      throw Error("params.centres: centre id " + std::to_string(id) +
+                  ": give \"hue\" and \"saturation\" (and \"value\"), or \"L\", \"a\" and "
+                  "\"b\", got " +
+                  z.dump());
+  }
+  for (const Centre& z : c.centres) {
+    if (z.lab.has_value() != c.centres.front().lab.has_value())
+      throw Error("params.centres: give CIELAB colours for every centre or for none (centre id " +
+                  std::to_string(z.id) + ")");
+    if (std::isnan(z.value) != std::isnan(c.centres.front().value) && !z.lab)
       throw Error("params.centres: give \"value\" for every centre or for none (centre id " +
                   std::to_string(z.id) + ")");
+  }
   return c;
 }
 
@@ -145,6 +163,13 @@ int HsClassifier::classify(double r, double g, double b) const {
     if (polygon.contains(p)) return polygon.id;
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
+  if (!centres.empty() && centres.front().lab) {
+    const Point here = lab_point(srgb_to_lab(r, g, b));
+    for (const Centre& z : centres)
+      if (const double d = squared_distance(here, lab_point(*z.lab)); d < best_d)
+        best_d = d, best = z.id;
+    return best;
+  }
   for (const Centre& z : centres) {
     const auto q = wheel(z.hue, z.saturation);
     const double dv = std::isnan(z.value) ? 0 : x.v - z.value;

@@ -2,13 +2,15 @@
 // meaningless, get a user-defined hue; classes are boxes in hue-saturation(-value), polygons
 // drawn on the colour wheel (s cos h, s sin h), or the nearest of given cluster centres
 // (texture.classify, from texture.cluster): nearest on the colour wheel, or in
-// (s cos h, s sin h, v) when the centres give a value.
+// (s cos h, s sin h, v) when the centres give a value, or in texture.cluster's "lab" points
+// (a*, b*, w L*) when they are CIELAB colours.
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "colour.h"
@@ -34,7 +36,8 @@ struct Polygon {
 struct Centre {
   int id = 0;
   double hue = 0, saturation = 0;
-  double value = NAN;  // NaN: not given (every centre gives it, or none)
+  double value = NAN;      // NaN: not given (every centre gives it, or none)
+  std::optional<Lab> lab;  // a CIELAB centre instead (every centre is, or none)
 };
 
 struct HsClassifier {
@@ -46,7 +49,8 @@ struct HsClassifier {
 
   // Boxes, polygons and centres may be absent; throws maquette::Error naming the field and value
   // for a polygon of fewer than 3 points, a point that is not [hue 0..360, saturation 0..1], or
-  // points on one line, and when only some centres give a value.
+  // points on one line, when only some centres give a value, a centre that gives neither hue
+  // and saturation nor L, a and b, and when only some centres are CIELAB colours.
   static HsClassifier from_params(const nlohmann::json& params);
   Hsv hsv(double r, double g, double b) const;       // with the grey rule
   int classify(double r, double g, double b) const;  // -1: no class

@@ -11,13 +11,30 @@ namespace maquette::texture {
 ColourSpace parse_colour_space(const std::string& name) {
   if (name == "hs") return ColourSpace::Hs;
   if (name == "hsv") return ColourSpace::Hsv;
-  throw Error("unknown colour space '" + name + "' (expected hs or hsv)");
+  if (name == "lab") return ColourSpace::Lab;
+  throw Error("unknown colour space '" + name + "' (expected hs, hsv or lab)");
 }
 
 int histogram_dims(ColourSpace space) { return space == ColourSpace::Hs ? 2 : 3; }
 
 int histogram_bins(ColourSpace space) {
+  if (space == ColourSpace::Lab) return kLightnessBins * kChromaBins * kChromaBins;
   return kHueBins * kSatBins * (space == ColourSpace::Hs ? 1 : kValueBins);
+}
+
+int lab_bin(const Lab& lab) {
+  const int l = std::clamp(int(lab[0] / 100 * kLightnessBins), 0, kLightnessBins - 1);
+  const auto chroma = [](double x) {
+    return std::clamp(int(std::floor((x + kChromaLimit) / (2 * kChromaLimit) * kChromaBins)), 0,
+                      kChromaBins - 1);
+  };
+  return (l * kChromaBins + chroma(lab[1])) * kChromaBins + chroma(lab[2]);
+}
+
+Lab point_lab(const Point& p) { return {p[2] / kLabLightnessWeight * 100, p[0] * 100, p[1] * 100}; }
+
+Point lab_point(const Lab& lab) {
+  return {lab[1] / 100, lab[2] / 100, kLabLightnessWeight * lab[0] / 100};
 }
 
 int colour_bin(const Hsv& x, ColourSpace space) {
@@ -29,6 +46,7 @@ int colour_bin(const Hsv& x, ColourSpace space) {
 }
 
 std::vector<uint64_t> hs_marginal(const std::vector<uint64_t>& histogram, ColourSpace space) {
+  if (space == ColourSpace::Lab) throw Error("no hue-saturation marginal of a CIELAB histogram");
   const size_t per_hs = space == ColourSpace::Hs ? 1 : kValueBins;
   std::vector<uint64_t> out(size_t(kHueBins * kSatBins), 0);
   for (size_t i = 0; i < histogram.size(); ++i) out[i / per_hs] += histogram[i];
@@ -37,7 +55,19 @@ std::vector<uint64_t> hs_marginal(const std::vector<uint64_t>& histogram, Colour
 
 namespace {
 
+BinPoint lab_bin_point(size_t i, uint64_t count) {
+  const double dl = 100.0 / kLightnessBins, dc = 2 * kChromaLimit / kChromaBins;
+  const int b = int(i) % kChromaBins, a = int(i) / kChromaBins % kChromaBins,
+            l = int(i) / (kChromaBins * kChromaBins);
+  const Point x =
+      lab_point({(l + 0.5) * dl, (a + 0.5) * dc - kChromaLimit, (b + 0.5) * dc - kChromaLimit});
+  const double sc = dc / 100, sl = kLabLightnessWeight * dl / 100;
+  const Matrix spread = {{{sc * sc / 12, 0, 0}, {0, sc * sc / 12, 0}, {0, 0, sl * sl / 12}}};
+  return {x, double(count), spread, sc * sc * sl};
+}
+
 BinPoint bin_point(size_t i, ColourSpace space, uint64_t count) {
+  if (space == ColourSpace::Lab) return lab_bin_point(i, count);
   const bool hsv = space == ColourSpace::Hsv;
   const int hs = int(i) / (hsv ? kValueBins : 1);
   const double hue = (hs / kSatBins + 0.5) * 360.0 / kHueBins;

@@ -1,7 +1,7 @@
 // Colour classification (paper 5.2.1): grey rule, hue boxes that wrap, polygons on the colour
 // wheel, the order boxes -> polygons -> centres, the snow rule, the land-cover exclusion,
 // exclusion by the polygons of a features layer (and its index, core/polygon_set.h), automatic
-// k-means clusters; and CIEDE2000 against Sharma et al.'s data.
+// k-means clusters in hue-saturation and CIELAB; and CIEDE2000 against Sharma et al.'s data.
 #include <gtest/gtest.h>
 #include <ogr_geometry.h>
 #include <unistd.h>
@@ -618,6 +618,72 @@ TEST(Cluster, KMeansFindsTheColoursAndClassifies) {
   EXPECT_NE(k.at(0, 1), k.at(0, 2));
   EXPECT_EQ(k.at(0, 2), k.at(0, 3));
   EXPECT_EQ(k.at(0, 0), k.at(3, 0));
+}
+
+// Zion's surface types as "lab" clusters: red rock and cream sandstone have nearly the same
+// hue-saturation-value brightness band apart from their chroma; lit and shaded forest differ in
+// lightness only. The centres are the bins' CIELAB colours (within half a bin of each colour:
+// 1.5 in a* and b*, 2.5 in L*), and texture.classify with them gives each colour its class.
+TEST(Cluster, LabCentresAreTheColoursAndClassify) {
+  const std::vector<std::array<float, 3>> colours = {
+      {176, 98, 66}, {214, 200, 170}, {52, 66, 44}, {40, 50, 34}};  // rock, sandstone, forest
+  Tile<float> rgb(4, 3);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 3; ++k) rgb.at(c, r, k) = colours[size_t(r)][size_t(k)];
+  const json clusters = run_reduce("texture.cluster", {kCell}, 4,
+                                   [&](CellId) {
+                                     CellData d;
+                                     d.inputs.emplace("rgb", rgb);
+                                     return d;
+                                   },
+                                   {{"k", 3}, {"space", "lab"}});
+  EXPECT_EQ(clusters.at("space"), "lab");
+  const json& c = clusters.at("centres");
+  ASSERT_EQ(c.size(), 3u);
+  std::vector<int> found;
+  for (size_t i = 0; i < 2; ++i) {  // rock and sandstone: one cluster each, at the bin's centre
+    const Lab lab = srgb_to_lab(colours[i][0], colours[i][1], colours[i][2]);
+    bool matched = false;
+    for (const auto& z : c)
+      matched = matched || (std::abs(z["L"].get<double>() - lab[0]) <= 2.5 &&
+                            std::abs(z["a"].get<double>() - lab[1]) <= 1.5 &&
+                            std::abs(z["b"].get<double>() - lab[2]) <= 1.5);
+    EXPECT_TRUE(matched) << i << " " << c;
+  }
+  CellData d;
+  d.inputs.emplace("rgb", rgb);
+  const Tile<float> k = classify(d, {{"centres", c}});
+  EXPECT_NE(k.at(0, 0), k.at(0, 1));
+  EXPECT_NE(k.at(0, 0), k.at(0, 2));
+  EXPECT_NE(k.at(0, 1), k.at(0, 2));
+  EXPECT_EQ(k.at(0, 2), k.at(0, 3));  // lit and shaded forest: one class
+}
+
+// Nearest CIELAB centre by hand, in (a*, b*, L* / 2): a grey pixel of L* 60 is nearer a centre
+// of L* 40 (distance 10) than one of a* 12 (12), and nearer one of L* 55, a* 6
+// (sqrt(2.5^2 + 6^2) = 6.5) than one of L* 80 (10). Errors name the centre.
+TEST(Classify, LabCentresNearestWithLightnessWeighted) {
+  const Lab grey = srgb_to_lab(145, 145, 145);  // L* 60.0
+  const auto centre = [](int id, double l, double a, double b) {
+    return json{{"id", id}, {"L", l}, {"a", a}, {"b", b}};
+  };
+  const float g = 145;
+  EXPECT_NEAR(grey[0], 60, 0.2);
+  EXPECT_EQ(classes_of({{g, g, g}},
+                       {{"centres", {centre(1, grey[0] - 20, 0, 0), centre(2, grey[0], 12, 0)}}}),
+            std::vector<int>{1});
+  EXPECT_EQ(
+      classes_of({{g, g, g}},
+                 {{"centres", {centre(1, grey[0] + 20, 0, 0), centre(2, grey[0] - 5, 6, 0)}}}),
+      std::vector<int>{2});
+  EXPECT_EQ(
+      error_of({{"centres", {centre(1, 50, 0, 0), {{"id", 2}, {"hue", 10}, {"saturation", 0.5}}}}}),
+      "texture.classify: params.centres: give CIELAB colours for every centre or for none "
+      "(centre id 2)");
+  EXPECT_EQ(error_of({{"centres", {{{"id", 3}, {"L", 50}, {"a", 0}}}}}),
+            "texture.classify: params.centres: centre id 3: give \"hue\" and \"saturation\" (and "
+            "\"value\"), or \"L\", \"a\" and \"b\", got {\"L\":50,\"a\":0,\"id\":3}");
 }
 
 // Test pairs 1, 7, 17 and 25 of Sharma, Wu and Dalal (2005).

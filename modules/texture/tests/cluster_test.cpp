@@ -324,8 +324,11 @@ TEST(Cluster, ErrorsNameFieldAndValue) {
             "texture.cluster: params.k_max: 1 is below the minimum 2");
   EXPECT_EQ(error({{"k", 2}, {"method", "em"}}),
             "texture.cluster: params.method: \"em\" is not one of [\"kmeans\",\"gmm\"]");
-  EXPECT_EQ(error({{"k", 2}, {"space", "lab"}}),
-            "texture.cluster: params.space: \"lab\" is not one of [\"hs\",\"hsv\"]");
+  EXPECT_EQ(error({{"k", 2}, {"space", "rgb"}}),
+            "texture.cluster: params.space: \"rgb\" is not one of [\"hs\",\"hsv\",\"lab\"]");
+  EXPECT_EQ(error({{"k", 2}, {"space", "lab"}, {"plot", "plot.png"}}),
+            "texture.cluster: params.plot: the density plot is drawn in \"hs\" or \"hsv\", not "
+            "in space \"lab\"");
   EXPECT_EQ(error({{"k", 2}, {"plot", "/nonexistent-dir/plot.png"}})
                 .rfind("texture.cluster: params.plot: cannot write /nonexistent-dir/plot.png", 0),
             0u);
