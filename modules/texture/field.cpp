@@ -85,6 +85,21 @@ Plane upsample(const Tile<float>& tile, int refine, int ring) {
   return out;
 }
 
+void nearest(const Tile<float>& tile, int refine, int ring, Plane& out) {
+  if (tile.halo() < kInputHalo)
+    throw Error("texture: input tiles need a halo of " + std::to_string(kInputHalo) + " pixels");
+  out.reshape(tile.size() << refine, ring);
+  for (int r = -ring; r < out.size + ring; ++r)
+    for (int c = -ring; c < out.size + ring; ++c)
+      out.at(c, r) = tile.at(c >> refine, r >> refine);  // floor division, also below 0
+}
+
+Plane nearest(const Tile<float>& tile, int refine, int ring) {
+  Plane out;
+  nearest(tile, refine, ring, out);
+  return out;
+}
+
 // In float, vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
 __attribute__((target_clones("avx2", "default"))) void slope_degrees(const Plane& h, double pixel_m,
                                                                      Plane& s) {

@@ -45,6 +45,12 @@ struct Plane {
 Plane upsample(const Tile<float>& tile, int refine, int ring);
 void upsample(const Tile<float>& tile, int refine, int ring, Plane& out);  // reusing `out`
 
+// Nearest neighbour of `tile` (halo >= kInputHalo) at the target pixels of a tile `refine`
+// levels finer, with `ring` (<= 2) extra pixels: each target pixel takes the input pixel it lies
+// in (categorical rasters, whose codes must not be blended).
+void nearest(const Tile<float>& tile, int refine, int ring, Plane& out);
+Plane nearest(const Tile<float>& tile, int refine, int ring);
+
 // Slope in degrees, with one ring less than `height` (central differences over pixel_m), in
 // float: the arc tangent is atan_nonnegative (vectorizable, unlike std::atan).
 Plane slope_degrees(const Plane& height, double pixel_m);

@@ -44,11 +44,14 @@ OperatorSpec fit_spec() {
          {{"type", "array"},
           {"items",
            {{"type", "string"},
-            {"enum", {"height", "slope", "temperature", "rainfall", "radiation", "extra"}}}},
+            {"enum",
+             {"height", "slope", "temperature", "rainfall", "radiation", "extra", "landcover"}}}},
           {"default", {"height", "slope"}}}},
         {"ranges",
          {{"type", "object"},
-          {"description", "quantity -> [lo, hi]: its values are scaled to [0, 1) over this"}}},
+          {"description",
+           "quantity -> [lo, hi]: its values are scaled to [0, 1) over this (landcover: "
+           "[-0.5, 255.5], a bin per code)"}}},
         {"classes",
          {{"type", "array"},
           {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
@@ -98,11 +101,19 @@ std::vector<Quantity> quantities(const json& params) {
   const json& ranges = params.at("ranges");
   for (const std::string& name : params.at("quantities").get<std::vector<std::string>>()) {
     const std::string path = std::string(kOp) + ": params.ranges." + name;
-    json r = ranges.contains(name) ? ranges.at(name) : name == "slope" ? json{0, 90} : json();
+    json r = ranges.contains(name)  ? ranges.at(name)
+             : name == "slope"      ? json{0, 90}
+             : is_categorical(name) ? json{kCategoricalLo, kCategoricalHi}
+                                    : json();
     if (r.is_null()) throw Error(path + ": missing (give [lo, hi] of the region's values)");
     if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
         !(r[1].get<double>() > r[0].get<double>()))
       throw Error(path + ": expected [lo, hi] with lo < hi, got " + r.dump());
+    if (is_categorical(name) && r != json{kCategoricalLo, kCategoricalHi})
+      throw Error(path +
+                  ": the categorical quantity has the range [-0.5, 255.5] (a bin per "
+                  "code), got " +
+                  r.dump());
     out.push_back({name, r[0].get<double>(), r[1].get<double>()});
   }
   return out;

@@ -1,6 +1,7 @@
 #include "fit_inputs.h"
 
 #include "core/error.h"
+#include "model.h"
 
 namespace maquette::texture {
 
@@ -19,7 +20,8 @@ std::vector<Plane> quantity_planes(const CellContext& ctx, const CellData& data,
       const double pixel_m = ctx.grid->level_info(ctx.cell.level(), ctx.tile_size).pixel_m;
       out.push_back(slope_degrees(upsample(input("dem"), 0, 1), pixel_m));
     } else {
-      out.push_back(upsample(input(q == "height" ? "dem" : q), 0, 0));
+      out.push_back(is_categorical(q) ? nearest(input(q), 0, 0)
+                                      : upsample(input(q == "height" ? "dem" : q), 0, 0));
     }
   }
   return out;

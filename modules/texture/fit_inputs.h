@@ -1,6 +1,7 @@
 // The per-pixel samples texture.fit and texture.assess read from a cell: the quantities of the
 // model at the inputs' resolution, computed exactly as texture.procedural computes them at
-// refine 0 (B-spline of the DEM, slope from it), so a fitted model sees what it was fitted on.
+// refine 0 (B-spline of the DEM, slope from it; the categorical land cover as it is), so a fitted
+// model sees what it was fitted on.
 #pragma once
 
 #include <string>

@@ -85,17 +85,27 @@ Table constraint_function(const std::array<uint64_t, kBins>& hist) {
   return t;
 }
 
-Table odds_function(const std::array<uint64_t, kBins>& hist,
-                    const std::array<uint64_t, kBins>& all) {
+Table odds_function(const std::array<uint64_t, kBins>& hist, const std::array<uint64_t, kBins>& all,
+                    bool categorical) {
   Table t{};
   double top = 0;
   std::array<double, kBins> o{};
+  const auto odds = [](double n, double others) {
+    return std::clamp((n + 0.5) / (others + 0.5), 1.0 / 64, 64.0);
+  };
+  double n = 0, others = 0;
   for (size_t i = 0; i < size_t(kBins); ++i)
     if (all[i] > 0) {
-      o[i] = std::clamp((double(hist[i]) + 0.5) / (double(all[i] - hist[i]) + 0.5), 1.0 / 64, 64.0);
+      o[i] = odds(double(hist[i]), double(all[i] - hist[i]));
       top = std::max(top, o[i]);
+      n += double(hist[i]), others += double(all[i] - hist[i]);
     }
   if (top == 0) return t;
+  if (categorical) {
+    for (size_t i = 0; i < size_t(kBins); ++i)
+      t[i] = float((all[i] > 0 ? o[i] : std::min(odds(n, others), top)) / top);
+    return t;
+  }
   // Bins without pixels take the odds of the nearest bin with pixels (the lower on a tie), so
   // values outside those fitted extrapolate the nearest behaviour seen instead of giving every
   // class 0, which hands them to the root's class.
@@ -153,8 +163,9 @@ Model build_model(const std::vector<Quantity>& quantities, const std::vector<Cla
       l.constraints.resize(quantities.size());
     } else {
       for (size_t q = 0; q < quantities.size(); ++q)
-        l.constraints.push_back(p.odds ? odds_function(c.hist[q], all[q])
-                                       : constraint_function(c.hist[q]));
+        l.constraints.push_back(
+            p.odds ? odds_function(c.hist[q], all[q], is_categorical(quantities[q].name))
+                   : constraint_function(c.hist[q]));
     }
     const int self = int(m.layers.size());
     m.layers.push_back(l);

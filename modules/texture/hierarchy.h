@@ -39,10 +39,12 @@ struct HierarchyParams {
 Table constraint_function(const std::array<uint64_t, kBins>& hist);
 
 // Constraint function as the class's odds per bin, (n + 0.5) / (others + 0.5) clamped to
-// [1/64, 64], divided by its largest value (0 where no class has pixels): prior-aware, and the
-// product over quantities is proportional to the naive-Bayes odds of the class.
-Table odds_function(const std::array<uint64_t, kBins>& hist,
-                    const std::array<uint64_t, kBins>& all);
+// [1/64, 64], divided by its largest value: prior-aware, and the product over quantities is
+// proportional to the naive-Bayes odds of the class. A bin where no class has pixels takes the
+// odds of the nearest bin with pixels, or for a categorical quantity (an unseen code says
+// nothing) the class's odds over all bins.
+Table odds_function(const std::array<uint64_t, kBins>& hist, const std::array<uint64_t, kBins>& all,
+                    bool categorical = false);
 
 // `classes` in increasing id, each with pixels > 0. Level-1 layers in decreasing pixel count
 // (ties: lower id first), so rarer types are evaluated later and overwrite where they fit.

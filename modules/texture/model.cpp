@@ -145,6 +145,8 @@ class Parser {
 
 }  // namespace
 
+bool is_categorical(const std::string& quantity) { return quantity == kCategoricalQuantity; }
+
 int Model::quantity(const std::string& name) const {
   for (size_t i = 0; i < quantities.size(); ++i)
     if (quantities[i].name == name) return int(i);
@@ -189,6 +191,11 @@ Model parse_model(const json& doc, const std::string& context) {
                       number(q["range"][1], context, p + ".range")};
     if (!(quantity.hi > quantity.lo))
       fail(context, p + ".range", "expected lo < hi, got " + q.at("range").dump());
+    if (is_categorical(quantity.name) &&
+        (quantity.lo != kCategoricalLo || quantity.hi != kCategoricalHi))
+      fail(context, p + ".range",
+           "the categorical quantity '" + quantity.name +
+               "' has the range [-0.5, 255.5] (a bin per code), got " + q.at("range").dump());
     if (model.quantity(quantity.name) >= 0)
       fail(context, p + ".name", "quantity '" + quantity.name + "' declared twice");
     model.quantities.push_back(quantity);

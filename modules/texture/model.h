@@ -24,6 +24,13 @@ struct Quantity {
   double lo = 0, hi = 1;
 };
 
+// The quantity "landcover" is categorical: codes 0..255 (e.g. NLCD classes), one table bin per
+// code over the range [-0.5, 255.5] (code c at bin c's centre, so tables are read without
+// interpolation between codes), upsampled by nearest neighbour instead of the B-spline.
+inline constexpr const char* kCategoricalQuantity = "landcover";
+inline constexpr double kCategoricalLo = -0.5, kCategoricalHi = 255.5;
+bool is_categorical(const std::string& quantity);
+
 // Fractal 3D gradient noise of the position on the globe (see noise.h).
 struct NoiseParams {
   uint64_t seed = 1;

@@ -10,8 +10,9 @@
 
 namespace maquette::texture {
 
+// Input rasters of model quantities; "landcover" is categorical (model.h).
 inline const std::vector<std::string> kRasterPorts = {"temperature", "rainfall", "radiation",
-                                                      "extra"};
+                                                      "extra", "landcover"};
 
 std::unique_ptr<Operator> make_procedural();
 std::unique_ptr<Operator> make_classify();

@@ -38,7 +38,10 @@ void render_tile(const Model& model, const Grid& grid, CellId cell, int size, in
     if (it == rasters.end() || !it->second)
       throw Error(context + ": model quantity '" + name + "' has no input raster (map inputs." +
                   name + ")");
-    upsample(*it->second, refine, 1, planes[q]);
+    if (is_categorical(name))
+      nearest(*it->second, refine, 1, planes[q]);
+    else
+      upsample(*it->second, refine, 1, planes[q]);
     in.quantities[q] = &planes[q];
   }
   const PixelPositions position(grid, cell, size, refine, in.height.ring + kNoiseLatticeReach);

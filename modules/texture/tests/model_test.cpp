@@ -196,6 +196,29 @@ TEST(Model, OddsFunctionByHand) {
   EXPECT_EQ(odds_function({}, {}), Table{});  // no pixel at all
 }
 
+// A categorical quantity: a bin per code, unseen codes at the class's odds over all codes.
+TEST(Model, OddsFunctionOfCodes) {
+  std::array<uint64_t, kBins> mine{}, all{};
+  mine[42] = 9, all[42] = 10;  // 9.5 / 1.5
+  mine[52] = 1, all[52] = 10;  // 1.5 / 9.5
+  const Table t = odds_function(mine, all, true);
+  EXPECT_FLOAT_EQ(t[42], 1.0f);
+  EXPECT_FLOAT_EQ(t[52], float((1.5 / 9.5) / (9.5 / 1.5)));
+  const double overall = 10.5 / 10.5;  // 10 of the 20 pixels
+  for (const size_t i : {size_t(0), size_t(43), size_t(51), size_t(255)})
+    EXPECT_FLOAT_EQ(t[i], float(overall / (9.5 / 1.5))) << i;
+}
+
+TEST(Model, CategoricalQuantityHasABinPerCode) {
+  json doc = base_model();
+  doc["quantities"].push_back({{"name", "landcover"}, {"range", {0, 256}}});
+  EXPECT_EQ(parse_error(doc),
+            "ctx: model.quantities[2].range: the categorical quantity 'landcover' has the range "
+            "[-0.5, 255.5] (a bin per code), got [0,256]");
+  doc["quantities"][2]["range"] = {-0.5, 255.5};
+  EXPECT_EQ(parse_model(doc, "ctx").quantities[2].lo, kCategoricalLo);
+}
+
 // Calibration by hand: layer "b" (class 1, after "a") has product bin / 255; 10 of 100
 // samples are of class 1, so its threshold is the 10th largest product among all samples.
 TEST(Model, CalibratedBiasMatchesTheObservedArea) {

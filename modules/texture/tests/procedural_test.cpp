@@ -6,6 +6,7 @@
 
 #include <bit>
 #include <cmath>
+#include <set>
 #include <thread>
 
 #include "../field.h"
@@ -67,6 +68,40 @@ TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
   expect_seamless(ra.rgb, rb.rgb, ra.size, 3, "rgb");
   expect_seamless(ra.height, rb.height, ra.size, 1, "height");
   expect_seamless(ra.normal, rb.normal, ra.size, 3, "normal");
+}
+
+// The categorical land cover: each 8.8 m pixel reads the code of the 35 m input pixel it lies in
+// (nearest neighbour, no blend at code borders) and its table's bin for that code exactly.
+TEST(Procedural, CategoricalQuantityReadsItsCodeExactly) {
+  json doc = json::parse(R"({"format": "maquette.texture.model", "version": 1,
+    "quantities": [{"name": "landcover", "range": [-0.5, 255.5]}],
+    "root": {"colour": [0, 0, 0], "class": 0, "children": [
+      {"class": 1, "colour": [255, 255, 255], "bias": 1, "constraints": {"landcover": {}}}]}})");
+  json table = json::array();
+  for (int i = 0; i < kBins; ++i) table.push_back(i == 42 ? 1.0 : i == 52 ? 0.25 : (i % 5) / 8.0);
+  doc["root"]["children"][0]["constraints"]["landcover"]["table"] = table;
+  const int size = 16, refine = 2;
+  const CellId cell = CellId::FromFaceColRow(2, 14, 8320, 8000);
+  const auto codes = [](LonLat p) {  // stripes of three codes across the tile
+    const int k = (int(std::floor(p.lon / 0.0011)) % 3 + 3) % 3;
+    return k == 0 ? 42.0 : k == 1 ? 52.0 : 71.0;
+  };
+  const Tile<float> landcover =
+      with_halo(cell, size, kInputHalo, [&](CellId c) { return sample(c, size, codes); });
+  const Rendered r = render_tile(
+      parse_model(doc, "test"), default_grid(), cell, size, refine,
+      with_halo(cell, size, kInputHalo, [&](CellId c) { return sample(c, size, relief); }),
+      {{"landcover", &landcover}}, "test");
+  std::set<float> seen;
+  for (int row = 0; row < r.size; ++row)
+    for (int col = 0; col < r.size; ++col) {
+      const float code = landcover.at(col >> refine, row >> refine);
+      const float expected = 255 * table[size_t(code)].get<float>();
+      ASSERT_EQ(r.rgb[(size_t(row) * size_t(r.size) + size_t(col)) * 3], expected)
+          << col << " " << row << " code " << code;
+      seen.insert(code);
+    }
+  EXPECT_EQ(seen.size(), 3u);
 }
 
 TEST(Procedural, SeamlessAcrossFaceSeam) {
