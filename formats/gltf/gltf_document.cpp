@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "core/error.h"
 #include "core/file_access.h"
@@ -187,13 +188,18 @@ std::vector<double> read_accessor(const GltfDocument& doc, const json& index, si
                   "' where " + std::to_string(components) + " components are read");
   if (!a.contains("bufferView")) fail(doc, what + " has no bufferView");
   const json& v = element(doc, "bufferViews", a["bufferView"]);
-  const std::string_view view = buffer_view(doc, a["bufferView"].get<int>());
+  const std::string_view view = buffer_view(doc, gltf_index(doc, a["bufferView"], what));
   const uint64_t count = unsigned_field(doc, a, "count", what, 0);
   const uint64_t offset = unsigned_field(doc, a, "byteOffset", what, 0);
-  const uint64_t stride = unsigned_field(doc, v, "byteStride", what, n * size);
   const uint64_t element_bytes = n * size;
+  const uint64_t stride = unsigned_field(doc, v, "byteStride", what, element_bytes);
+  // glTF: a stride is 4..252 and a multiple of 4; the bounds are compared without overflow.
+  if (v.contains("byteStride") && (stride < 4 || stride > 252 || stride % 4 != 0))
+    fail(doc, what + ": its bufferView's byteStride " + std::to_string(stride) +
+                  " is not a multiple of 4 in 4..252");
   if (count > 0 &&
-      (stride < element_bytes || offset + stride * (count - 1) + element_bytes > view.size()))
+      (stride < element_bytes || offset > view.size() || element_bytes > view.size() - offset ||
+       count - 1 > (view.size() - offset - element_bytes) / stride))
     fail(doc, what + ": " + std::to_string(count) + " elements of " +
                   std::to_string(element_bytes) + " bytes from byte " + std::to_string(offset) +
                   " (stride " + std::to_string(stride) + ") are out of its bufferView of " +
@@ -211,6 +217,19 @@ std::vector<double> read_accessor(const GltfDocument& doc, const json& index, si
 template <class T>
 std::vector<T> cast(const std::vector<double>& values) {
   return std::vector<T>(values.begin(), values.end());
+}
+
+// Vertex indices or feature ids: each value finite, integral and in [0, 2^32) before the cast.
+std::vector<uint32_t> integers(const GltfDocument& doc, const std::vector<double>& values,
+                               const std::string& what) {
+  std::vector<uint32_t> out(values.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i];
+    if (!(v >= 0 && v < 4294967296.0) || v != std::floor(v))
+      fail(doc, what + " holds " + std::to_string(v) + ", not an integer in [0, 2^32)");
+    out[i] = uint32_t(v);
+  }
+  return out;
 }
 
 // The named attributes of a Draco-compressed primitive, decoded.
@@ -244,7 +263,9 @@ void decode_draco(const GltfDocument& doc, const json& draco, const std::string&
   values("POSITION", 3, out.positions);
   values("NORMAL", 3, out.normals);
   values("TEXCOORD_0", 2, out.uvs);
-  values("_FEATURE_ID_0", 1, out.feature_ids);
+  std::vector<double> feature_ids;
+  values("_FEATURE_ID_0", 1, feature_ids);
+  out.feature_ids = integers(doc, feature_ids, what + ": _FEATURE_ID_0");
   out.indices.reserve(mesh.num_faces() * 3);
   for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f)
     for (int c = 0; c < 3; ++c) out.indices.push_back(mesh.face(f)[c].value());
@@ -260,6 +281,13 @@ std::string sniff_mime(std::string_view bytes) {
 
 }  // namespace
 
+int gltf_index(const GltfDocument& doc, const json& value, const std::string& what) {
+  if (!value.is_number_integer() || value.get<int64_t>() < 0 ||
+      value.get<int64_t>() > std::numeric_limits<int32_t>::max())
+    fail(doc, what + " is " + value.dump() + ", not an index");
+  return value.get<int>();
+}
+
 std::string_view buffer_view(const GltfDocument& doc, int view) {
   const json& v = element(doc, "bufferViews", view);
   const std::string what = "bufferViews[" + std::to_string(view) + "]";
@@ -269,8 +297,8 @@ std::string_view buffer_view(const GltfDocument& doc, int view) {
   const std::string& buffer = doc.buffers[b.get<size_t>()];
   const uint64_t offset = unsigned_field(doc, v, "byteOffset", what, 0);
   const uint64_t length = unsigned_field(doc, v, "byteLength", what, 0);
-  if (offset + length > buffer.size())
-    fail(doc, what + ": bytes " + std::to_string(offset) + ".." + std::to_string(offset + length) +
+  if (length > buffer.size() || offset > buffer.size() - length)
+    fail(doc, what + ": " + std::to_string(length) + " bytes from byte " + std::to_string(offset) +
                   " are out of its buffer of " + std::to_string(buffer.size()) + " bytes");
   return std::string_view(buffer).substr(offset, length);
 }
@@ -322,7 +350,7 @@ GltfPrimitive read_primitive(const GltfDocument& doc, int mesh, int primitive) {
   const json& atts = p.value("attributes", json::object());
   if (!atts.contains("POSITION")) fail(doc, what + " has no POSITION");
   GltfPrimitive out;
-  out.material = p.contains("material") ? p["material"].get<int>() : -1;
+  out.material = p.contains("material") ? gltf_index(doc, p["material"], what + ".material") : -1;
   const json* draco = p.contains("extensions") && p["extensions"].is_object() &&
                               p["extensions"].contains("KHR_draco_mesh_compression")
                           ? &p["extensions"]["KHR_draco_mesh_compression"]
@@ -335,9 +363,15 @@ GltfPrimitive read_primitive(const GltfDocument& doc, int mesh, int primitive) {
     if (atts.contains("TEXCOORD_0"))
       out.uvs = cast<float>(read_accessor(doc, atts["TEXCOORD_0"], 2));
     if (atts.contains("_FEATURE_ID_0"))
-      out.feature_ids = cast<uint32_t>(read_accessor(doc, atts["_FEATURE_ID_0"], 1));
+      out.feature_ids =
+          integers(doc, read_accessor(doc, atts["_FEATURE_ID_0"], 1), what + ": _FEATURE_ID_0");
     if (p.contains("indices")) {
-      out.indices = cast<uint32_t>(read_accessor(doc, p["indices"], 1));
+      const json& a = element(doc, "accessors", p["indices"]);
+      const int type = a.value("componentType", 0);
+      if (type != 5121 && type != 5123 && type != 5125)
+        fail(doc, what + ": indices of componentType " + std::to_string(type) +
+                      " (glTF: unsigned byte, short or int)");
+      out.indices = integers(doc, read_accessor(doc, p["indices"], 1), what + ": indices");
     } else {
       out.indices.resize(out.positions.size() / 3);
       for (size_t i = 0; i < out.indices.size(); ++i) out.indices[i] = uint32_t(i);
@@ -381,7 +415,7 @@ std::vector<Material> read_materials(const GltfDocument& doc) {
       const json& image = element(doc, "images", source);
       const std::string what = "images[" + source.dump() + "]";
       mat.image = image.contains("bufferView")
-                      ? std::string(buffer_view(doc, image["bufferView"].get<int>()))
+                      ? std::string(buffer_view(doc, gltf_index(doc, image["bufferView"], what)))
                       : read_uri(doc, image.value("uri", ""), what, kMaxGltfBufferBytes);
       mat.image_mime = image.value("mimeType", sniff_mime(mat.image));
       if (mat.image_mime.empty())

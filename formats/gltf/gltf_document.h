@@ -52,6 +52,10 @@ GltfPrimitive read_primitive(const GltfDocument& doc, int mesh, int primitive);
 // their URI). Throws on an image that is missing or of an unknown type.
 std::vector<Material> read_materials(const GltfDocument& doc);
 
+// `value` as an index into a glTF array: an unsigned integer below 2^31, else an error naming
+// `what` (e.g. "meshes[0].primitives[1].material") and the value.
+int gltf_index(const GltfDocument& doc, const nlohmann::json& value, const std::string& what);
+
 // The bytes of bufferView `view` (checked within its buffer).
 std::string_view buffer_view(const GltfDocument& doc, int view);
 

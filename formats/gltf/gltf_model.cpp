@@ -75,22 +75,28 @@ class ModelReader {
     content_.materials = read_materials(doc);
   }
 
-  void visit(size_t node, const Matrix& parent, size_t depth) {
+  // Draws the tree under the root `root` (a node without a parent: check_node_tree), with an
+  // explicit stack so that a deep chain of nodes cannot overflow the call stack.
+  void visit_tree(int root) {
     const json& nodes = doc_.json.value("nodes", json::array());
-    if (node >= nodes.size() || depth > nodes.size())
-      throw Error(doc_.where + ": nodes[" + std::to_string(node) +
-                  "] does not exist or is its own ancestor");
-    const json& n = nodes[node];
-    const Matrix world = multiply(parent, local_transform(n));
-    if (n.contains("mesh")) add_mesh(node, n["mesh"].get<int>(), world);
-    for (const json& child : n.value("children", json::array()))
-      visit(child.get<size_t>(), world, depth + 1);
+    std::vector<std::pair<int, Matrix>> stack{{root, kIdentity}};
+    while (!stack.empty()) {
+      const auto [node, parent] = stack.back();
+      stack.pop_back();
+      const json& n = nodes[size_t(node)];
+      const Matrix world = multiply(parent, local_transform(n));
+      const std::string what = "nodes[" + std::to_string(node) + "]";
+      if (n.contains("mesh")) add_mesh(node, gltf_index(doc_, n["mesh"], what + ".mesh"), world);
+      const json& children = n.value("children", json::array());
+      for (auto child = children.rbegin(); child != children.rend(); ++child)  // first on top
+        stack.emplace_back(gltf_index(doc_, *child, what + ".children"), world);
+    }
   }
 
   MeshContent take() { return std::move(content_); }
 
  private:
-  void add_mesh(size_t node, int mesh, const Matrix& m) {
+  void add_mesh(int node, int mesh, const Matrix& m) {
     const json& meshes = doc_.json.value("meshes", json::array());
     if (mesh < 0 || size_t(mesh) >= meshes.size())
       throw Error(doc_.where + ": nodes[" + std::to_string(node) + "] draws mesh " +
@@ -146,25 +152,48 @@ class ModelReader {
   MeshContent content_;
 };
 
+// Whether each node is a child of another: throws unless the nodes form a forest as glTF
+// requires (every node at most one parent, children that exist), which also rules out cycles
+// reachable from the roots (a node of a cycle always has a parent).
+std::vector<bool> check_node_tree(const GltfDocument& doc) {
+  const json& nodes = doc.json.value("nodes", json::array());
+  std::vector<bool> has_parent(nodes.size(), false);
+  for (size_t i = 0; i < nodes.size(); ++i)
+    for (const json& c : nodes[i].value("children", json::array())) {
+      const std::string what = "nodes[" + std::to_string(i) + "].children";
+      const int child = gltf_index(doc, c, what);
+      if (size_t(child) >= nodes.size())
+        throw Error(doc.where + ": " + what + " lists node " + std::to_string(child) +
+                    ", which does not exist");
+      if (has_parent[size_t(child)])
+        throw Error(doc.where + ": nodes[" + std::to_string(child) +
+                    "] has more than one parent (glTF's nodes form trees)");
+      has_parent[size_t(child)] = true;
+    }
+  return has_parent;
+}
+
 MeshContent read_model(const GltfDocument& doc) {
   if (doc.json.value("meshes", json::array()).empty())
     throw Error(doc.where + ": no mesh (a glTF without geometry)");
   ModelReader reader(doc);
+  const std::vector<bool> has_parent = check_node_tree(doc);
   const json& scenes = doc.json.value("scenes", json::array());
   if (!scenes.empty()) {
-    const size_t scene = doc.json.value("scene", size_t(0));
-    if (scene >= scenes.size())
+    const int scene = doc.json.contains("scene") ? gltf_index(doc, doc.json["scene"], "scene") : 0;
+    if (size_t(scene) >= scenes.size())
       throw Error(doc.where + ": scene " + std::to_string(scene) + " does not exist");
-    for (const json& node : scenes[scene].value("nodes", json::array()))
-      reader.visit(node.get<size_t>(), kIdentity, 0);
+    const std::string what = "scenes[" + std::to_string(scene) + "].nodes";
+    for (const json& n : scenes[size_t(scene)].value("nodes", json::array())) {
+      const int node = gltf_index(doc, n, what);
+      if (size_t(node) >= has_parent.size() || has_parent[size_t(node)])
+        throw Error(doc.where + ": " + what + " lists node " + std::to_string(node) +
+                    ", which does not exist or is not a root");
+      reader.visit_tree(node);
+    }
   } else {  // no scene: every root node
-    const json& nodes = doc.json.value("nodes", json::array());
-    std::vector<bool> child(nodes.size(), false);
-    for (const json& n : nodes)
-      for (const json& c : n.value("children", json::array()))
-        if (c.get<size_t>() < child.size()) child[c.get<size_t>()] = true;
-    for (size_t i = 0; i < nodes.size(); ++i)
-      if (!child[i]) reader.visit(i, kIdentity, 0);
+    for (size_t i = 0; i < has_parent.size(); ++i)
+      if (!has_parent[i]) reader.visit_tree(int(i));
   }
   MeshContent content = reader.take();
   if (content.objects.empty()) throw Error(doc.where + ": no mesh drawn by a node of its scene");
@@ -186,7 +215,7 @@ MeshContent read_gltf_model(const std::string& path) {
     throw Error("model file " + path + ": cannot be read");
   try {
     return read_model(
-        parse_gltf(bytes, "model file " + path, std::filesystem::path(path).parent_path()));
+        parse_gltf(bytes, "model file " + path, std::filesystem::absolute(path).parent_path()));
   } catch (const json::exception& e) {
     throw Error("model file " + path + ": malformed glTF: " + e.what());
   }

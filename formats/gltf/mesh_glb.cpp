@@ -291,8 +291,9 @@ json metadata(const MeshContent& c, GlbBuffer& buffer) {
 template <class T>
 std::vector<T> fixed_column(const GltfDocument& doc, const json& property, size_t count,
                             const std::string& name) {
-  const std::string_view bytes = buffer_view(doc, property.value("values", -1));
-  if (bytes.size() != count * sizeof(T))
+  const std::string_view bytes =
+      buffer_view(doc, gltf_index(doc, property.value("values", json()), name + ".values"));
+  if (bytes.size() % sizeof(T) != 0 || bytes.size() / sizeof(T) != count)
     throw Error(doc.where + ": metadata column " + name + " holds " + std::to_string(bytes.size()) +
                 " bytes for " + std::to_string(count) + " objects");
   std::vector<T> out(count);
@@ -302,9 +303,10 @@ std::vector<T> fixed_column(const GltfDocument& doc, const json& property, size_
 
 std::vector<std::string> string_values(const GltfDocument& doc, const json& property, size_t count,
                                        const std::string& name) {
-  const std::string_view bytes = buffer_view(doc, property.value("values", -1));
+  const std::string_view bytes =
+      buffer_view(doc, gltf_index(doc, property.value("values", json()), name + ".values"));
   const std::vector<uint32_t> offsets = fixed_column<uint32_t>(
-      doc, {{"values", property.value("stringOffsets", -1)}}, count + 1, name + " offsets");
+      doc, {{"values", property.value("stringOffsets", json())}}, count + 1, name + " offsets");
   std::vector<std::string> out;
   for (size_t i = 0; i < count; ++i) {
     if (offsets[i] > offsets[i + 1] || offsets[i + 1] > bytes.size())
@@ -320,9 +322,9 @@ std::vector<ObjectProvenance> read_metadata(const GltfDocument& doc) {
   if (ext.contains("EXT_structural_metadata") &&
       !ext["EXT_structural_metadata"].value("propertyTables", json::array()).empty())
     table = &ext["EXT_structural_metadata"]["propertyTables"][0];
-  if (!table || !(*table)["count"].is_number_unsigned())
+  if (!table || !table->is_object() || !table->value("count", json()).is_number_unsigned())
     throw Error(doc.where + ": not mesh content: no EXT_structural_metadata property table");
-  const size_t n = (*table)["count"].get<size_t>();
+  const size_t n = table->at("count").get<size_t>();
   const json& p = table->value("properties", json::object());
   for (const char* name : {"object_id", "feature_id", "tool", "attributes"})
     if (!p.contains(name)) throw Error(doc.where + ": no metadata column " + name);

@@ -70,7 +70,7 @@ struct MeshContent {
 struct InstancesContent {
   EnuOrigin origin;
   // Prototype names: "builtin:conifer", "builtin:broadleaf", "builtin:shrub", or a model layer
-  // ingested with `maquette ingest --as model`.
+  // to be ingested with the coming `maquette ingest --as model`.
   std::vector<std::string> prototypes;
   std::vector<uint16_t> prototype;           // index into prototypes
   std::vector<float> position;               // x, y, z, metres in the ENU frame (the base)

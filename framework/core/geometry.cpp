@@ -73,14 +73,18 @@ class WkbReader {
     if (h.type == 2) g.lines.push_back(path(h));
     if (h.type == 3) {
       GeoPolygon polygon;
-      polygon.rings.resize(u32());
+      const uint32_t rings = u32();
+      need(size_t(rings) * 4);  // each ring's count at least: no allocation from a claimed size
+      polygon.rings.resize(rings);
       for (GeoPath& ring : polygon.rings) ring = path(h);
       g.polygons.push_back(std::move(polygon));
     }
   }
 
   GeoPath path(const Header& h) {
-    GeoPath p(u32());
+    const uint32_t points = u32();
+    need(size_t(points) * 8 * size_t(h.dims));  // the points' bytes, before allocating for them
+    GeoPath p(points);
     for (GeoPoint& q : p) q = point(h);
     return p;
   }

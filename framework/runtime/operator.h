@@ -52,9 +52,9 @@ struct OutputSpec {
   // How its tiles are stored (store/codec.h): "normal_oct" for unit normals (float32 x 3), ~4-10x
   // fewer bytes than zstd for at most 0.04 degrees.
   std::string codec = "zstd";
-  // The kind of layer it writes: Raster, or 3D content (Mesh, Volume; Instances once the store
-  // has it). Content ports are declared only for now: a step mapping one is refused before
-  // anything runs ("content outputs are not written yet").
+  // The kind of layer it writes: Raster, or 3D content (Mesh, Instances, Volume). Content ports are
+  // declared only for now: a step mapping one is refused before anything runs ("content outputs are
+  // not written yet").
   LayerKind kind = LayerKind::Raster;
 };
 

@@ -151,7 +151,34 @@ TEST_F(GltfModel, AccessorOutOfItsBufferView) {
                  "bufferView of 64 bytes");
   m = quad_model();
   m.gltf["bufferViews"][3]["byteOffset"] = 1000;
-  expect_refused(write_external(m, dir_, "view"), "bufferViews[3]: bytes 1000..1006 are out of");
+  expect_refused(write_external(m, dir_, "view"),
+                 "bufferViews[3]: 6 bytes from byte 1000 are out of");
+  // Sizes that wrap around 2^64 when added or multiplied are out of range too.
+  m = quad_model();
+  m.gltf["accessors"][0]["byteOffset"] = 18446744073709551612u;
+  expect_refused(write_external(m, dir_, "wrap"), "from byte 18446744073709551612");
+  m = quad_model();
+  m.gltf["bufferViews"][0]["byteStride"] = 9223372036854775808u;
+  expect_refused(write_external(m, dir_, "stride"),
+                 "byteStride 9223372036854775808 is not a multiple of 4 in 4..252");
+}
+
+TEST_F(GltfModel, NodesMustFormTrees) {
+  ModelFile m = quad_model();
+  m.gltf["nodes"][2]["children"] = {1};  // node 1 is node 0's child already
+  expect_refused(write_external(m, dir_, "two_parents"), "nodes[1] has more than one parent");
+  m = quad_model();
+  m.gltf["nodes"][0]["children"] = {7};
+  expect_refused(write_external(m, dir_, "no_child"), "nodes[0].children lists node 7");
+}
+
+TEST_F(GltfModel, RelativePathFindsItsFiles) {
+  const std::string path = write_external(quad_model(), dir_, "quad");
+  const fs::path before = fs::current_path();
+  fs::current_path(dir_);
+  const MeshContent content = read_gltf_model(fs::path(path).filename().string());
+  fs::current_path(before);
+  EXPECT_EQ(content.objects.size(), 2u);
 }
 
 TEST_F(GltfModel, IndexOutOfTheVertices) {
@@ -185,7 +212,12 @@ TEST_F(GltfModel, BufferShorterThanDeclared) {
 TEST_F(GltfModel, FieldOfTheWrongType) {
   ModelFile m = quad_model();
   m.gltf["meshes"][0]["primitives"][0]["material"] = "zero";
-  expect_refused(write_external(m, dir_, "type"), "malformed glTF");
+  expect_refused(write_external(m, dir_, "type"),
+                 "meshes[0].primitives[0].material is \"zero\", not an index");
+  m = quad_model();
+  m.gltf["meshes"][0]["primitives"][0]["material"] = -7;
+  expect_refused(write_external(m, dir_, "negative"),
+                 "meshes[0].primitives[0].material is -7, not an index");
 }
 
 TEST_F(GltfModel, UnknownRequiredExtension) {
