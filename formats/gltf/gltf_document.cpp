@@ -2,6 +2,7 @@
 
 #include <draco/compression/decode.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -83,6 +84,29 @@ std::string base64_decode(const GltfDocument& doc, std::string_view text, const 
 
 // The bytes a URI names: a data URI, or a file relative to the document's base_dir, at most `limit`
 // bytes.
+std::string percent_decoded(const GltfDocument& doc, const std::string& uri,
+                            const std::string& what) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] != '%') {
+      out += uri[i];
+      continue;
+    }
+    const auto hex = [&](size_t at) {
+      const char c = at < uri.size() ? uri[at] : '\0';
+      if (c >= '0' && c <= '9') return c - '0';
+      if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+      if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+      fail(doc, what + ": the URI '" + uri + "' has a bad percent-encoding");
+    };
+    const int value = hex(i + 1) * 16 + hex(i + 2);
+    if (value == 0) fail(doc, what + ": the URI '" + uri + "' encodes a NUL byte");
+    out += char(value);
+    i += 2;
+  }
+  return out;
+}
+
 std::string read_uri(const GltfDocument& doc, const std::string& uri, const std::string& what,
                      uint64_t limit) {
   if (uri.starts_with("data:")) {
@@ -93,7 +117,13 @@ std::string read_uri(const GltfDocument& doc, const std::string& uri, const std:
   }
   if (doc.base_dir.empty()) fail(doc, what + ": an external URI '" + uri + "' where none may be");
   if (uri.find("://") != std::string::npos) fail(doc, what + ": a remote URI '" + uri + "'");
-  const std::string path = (doc.base_dir / uri).string();
+  // glTF's URIs are relative references, percent-encoded (RFC 3986); a model reads files of its
+  // own folder and below only, so a file it names cannot point anywhere else on the machine.
+  const std::filesystem::path relative = percent_decoded(doc, uri, what);
+  if (relative.empty() || relative.is_absolute() ||
+      std::any_of(relative.begin(), relative.end(), [](const auto& part) { return part == ".."; }))
+    fail(doc, what + ": the URI '" + uri + "' leaves the model's folder");
+  const std::string path = (doc.base_dir / relative).string();
   if (const auto problem = file_access_problem(path))
     fail(doc, what + ": cannot read '" + path + "': " + *problem);
   const uint64_t size = std::filesystem::file_size(path);

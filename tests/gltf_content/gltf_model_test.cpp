@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "content_fixture.h"
 #include "core/error.h"
@@ -170,6 +171,27 @@ TEST_F(GltfModel, NodesMustFormTrees) {
   m = quad_model();
   m.gltf["nodes"][0]["children"] = {7};
   expect_refused(write_external(m, dir_, "no_child"), "nodes[0].children lists node 7");
+}
+
+// Rewrites the buffer's and the image's URIs of the .gltf at `path`.
+void set_uris(const std::string& path, const std::string& buffer, const std::string& image) {
+  std::ifstream in(path);
+  json j = json::parse(in);
+  j["buffers"][0]["uri"] = buffer;
+  j["images"][0]["uri"] = image;
+  std::ofstream(path) << j.dump();
+}
+
+TEST_F(GltfModel, UrisArePercentDecodedAndStayInTheModelsFolder) {
+  const std::string path = write_external(quad_model(), dir_, "my quad");
+  set_uris(path, "my%20quad.bin", "my%20quad.png");
+  expect_quad(read_gltf_model(path), quad_model());
+  set_uris(path, "../my%20quad.bin", "my%20quad.png");
+  expect_refused(path, "buffers[0]: the URI '../my%20quad.bin' leaves the model's folder");
+  set_uris(path, "my%20quad.bin", dir_ + "/my%20quad.png");
+  expect_refused(path, "images[0]: the URI '" + dir_ + "/my%20quad.png' leaves the model's folder");
+  set_uris(path, "my%2quad.bin", "my%20quad.png");
+  expect_refused(path, "buffers[0]: the URI 'my%2quad.bin' has a bad percent-encoding");
 }
 
 TEST_F(GltfModel, RelativePathFindsItsFiles) {
