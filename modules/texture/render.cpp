@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "categorical_warp.h"
 #include "core/error.h"
 #include "field.h"
 #include "lattice_noise.h"
@@ -39,7 +40,8 @@ void render_tile(const Model& model, const Grid& grid, CellId cell, int size, in
       throw Error(context + ": model quantity '" + name + "' has no input raster (map inputs." +
                   name + ")");
     if (is_categorical(name))
-      nearest(*it->second, refine, 1, planes[q]);
+      nearest_warped(*it->second, global_col(cell, size, 0), global_row(cell, size, 0), refine, 1,
+                     planes[q]);
     else
       upsample(*it->second, refine, 1, planes[q]);
     in.quantities[q] = &planes[q];

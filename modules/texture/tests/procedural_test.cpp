@@ -9,6 +9,7 @@
 #include <set>
 #include <thread>
 
+#include "../categorical_warp.h"
 #include "../field.h"
 #include "../render.h"
 #include "../surface.h"
@@ -70,8 +71,9 @@ TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
   expect_seamless(ra.normal, rb.normal, ra.size, 3, "normal");
 }
 
-// The categorical land cover: each 8.8 m pixel reads the code of the 35 m input pixel it lies in
-// (nearest neighbour, no blend at code borders) and its table's bin for that code exactly.
+// The categorical land cover: each 8.8 m pixel reads the code of the 35 m input pixel its warped
+// centre lies in (categorical_warp.h: no blend at code borders) and its table's bin for that
+// code exactly.
 TEST(Procedural, CategoricalQuantityReadsItsCodeExactly) {
   json doc = json::parse(R"({"format": "maquette.texture.model", "version": 1,
     "quantities": [{"name": "landcover", "range": [-0.5, 255.5]}],
@@ -95,7 +97,10 @@ TEST(Procedural, CategoricalQuantityReadsItsCodeExactly) {
   std::set<float> seen;
   for (int row = 0; row < r.size; ++row)
     for (int col = 0; col < r.size; ++col) {
-      const float code = landcover.at(col >> refine, row >> refine);
+      const double x = (col + 0.5) / (1 << refine), y = (row + 0.5) / (1 << refine);
+      const auto [dx, dy] = categorical_warp(double(global_col(cell, size, 0)) + x,
+                                             double(global_row(cell, size, 0)) + y);
+      const float code = landcover.at(int(std::floor(x + dx)), int(std::floor(y + dy)));
       const float expected = 255 * table[size_t(code)].get<float>();
       ASSERT_EQ(r.rgb[(size_t(row) * size_t(r.size) + size_t(col)) * 3], expected)
           << col << " " << row << " code " << code;
