@@ -34,6 +34,10 @@ OperatorSpec assess_spec() {
               {"hillshade",
                "terrain.derive's hillshade at the image's sun: the image compared with its "
                "illumination removed (as texture.fit's colours)",
+               true},
+              {"colour_classes",
+               "each pixel's own class (as texture.fit's): a class's image colour from its "
+               "pixels whose own class it is",
                true}};
   s.outputs = {{"report", "assessment (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
   s.halo = kBlur;
@@ -90,6 +94,8 @@ class Assess : public ReduceOperator {
     const Tile<float>& obs = data.input("classes");
     const Tile<float>& pred = data.input("predicted");
     const bool colour = data.inputs.count("rgb") && data.inputs.count("synthesized");
+    const Tile<float>* own =
+        data.inputs.count("colour_classes") ? &data.inputs.at("colour_classes") : nullptr;
     const int n = ctx.tile_size;
     std::map<std::string, uint64_t> confusion;
     double de = 0;
@@ -121,7 +127,8 @@ class Assess : public ReduceOperator {
           ++confusion[std::to_string(int(o)) + "," +
                       (std::isnan(p) ? "-1" : std::to_string(int(p)))];
         if (!colour) continue;
-        if (const auto x = pixel(scene, c, r); !std::isnan(o) && known(x))
+        if (const auto x = pixel(scene, c, r);
+            !std::isnan(o) && known(x) && (!own || own->at(c, r) == o))
           add_moments(moments[std::to_string(int(o))]["image"], x);
         if (const auto x = pixel(data.inputs.at("synthesized"), c, r); !std::isnan(p) && known(x))
           add_moments(moments[std::to_string(int(p))]["texture"], x);

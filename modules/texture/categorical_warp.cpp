@@ -45,8 +45,8 @@ std::array<double, 2> categorical_warp(double x, double y) {
   std::array<double, 2> d{0, 0};
   for (uint64_t axis = 0; axis < 2; ++axis)
     for (uint64_t o = 0; o < std::size(kOctaves); ++o)
-      d[axis] += kOctaves[o].amplitude * value_noise(x / kOctaves[o].spacing,
-                                                     y / kOctaves[o].spacing, 2 * o + axis);
+      d[axis] += kOctaves[o].amplitude *
+                 value_noise(x / kOctaves[o].spacing, y / kOctaves[o].spacing, 2 * o + axis);
   return d;
 }
 
@@ -63,8 +63,8 @@ void nearest_warped(const Tile<float>& tile, int64_t col0, int64_t row0, int ref
     for (int c = -ring; c < out.size + ring; ++c) {
       const double x = double(col0) + (c + 0.5) * step;
       const auto [dx, dy] = categorical_warp(x, y);
-      out.at(c, r) = tile.at(int(int64_t(std::floor(x + dx)) - col0),
-                             int(int64_t(std::floor(y + dy)) - row0));
+      out.at(c, r) =
+          tile.at(int(int64_t(std::floor(x + dx)) - col0), int(int64_t(std::floor(y + dy)) - row0));
     }
   }
 }

@@ -30,6 +30,11 @@ OperatorSpec fit_spec() {
               {"hillshade",
                "terrain.derive's hillshade at the image's sun: colours fitted on the image with "
                "its illumination removed (as texture.classify's correction)",
+               true},
+              {"colour_classes",
+               "each pixel's own class (texture.classify without the majority filter): a class's "
+               "colours from its pixels whose own class it is, not from the other types its "
+               "majority filter took in",
                true}};
   for (const std::string& q : kRasterPorts)
     s.inputs.push_back({q, "raster of the quantity '" + q + "'", true});
@@ -127,9 +132,10 @@ class Fit : public ReduceOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
 
-  // Partial: {"<class>": {"n": pixels, "pixel_m": the level's pixel size, "sum": [3], "sum_sq":
-  // [3], "sum_cross": [RG, RB, GB], "hist": [[256] per quantity], "sample": [bins of the
-  // calibration sample's pixels, one per quantity, pixel after pixel]}}.
+  // Partial: {"<class>": {"n": pixels, "colour_n": pixels of the colour sums, "pixel_m": the
+  // level's pixel size, "sum": [3], "sum_sq": [3], "sum_cross": [RG, RB, GB], "hist": [[256] per
+  // quantity], "sample": [bins of the calibration sample's pixels, one per quantity, pixel after
+  // pixel]}}.
   json map(const CellContext& ctx, const CellData& data) const override {
     const std::vector<Quantity> qs = quantities(*ctx.params);
     std::vector<std::string> names;
@@ -137,6 +143,8 @@ class Fit : public ReduceOperator {
     const std::vector<Plane> planes = quantity_planes(ctx, data, names, kOp);
     const Tile<float>& cls = data.input("classes");
     const Tile<float>& rgb = data.input("rgb");
+    const Tile<float>* own =
+        data.inputs.count("colour_classes") ? &data.inputs.at("colour_classes") : nullptr;
     if (rgb.channels() != 3)
       throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
@@ -155,9 +163,11 @@ class Fit : public ReduceOperator {
         ClassStats& s = stats[int(k)];
         if (s.hist.empty()) s.hist.resize(qs.size(), {});
         ++s.pixels;
+        const bool colour = !own || own->at(c, r) == k;
         std::array<float, 3> x = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
         if (light) x = light->corrected(x, c, r);
-        for (size_t ch = 0; ch < 3; ++ch) {
+        s.colour_pixels += colour;
+        for (size_t ch = 0; ch < 3 && colour; ++ch) {
           const double v = x[ch];
           s.sum[ch] += v, s.sum_sq[ch] += v * v;
           s.sum_cross[ch] += double(x[kCrossPairs[ch][0]]) * double(x[kCrossPairs[ch][1]]);
@@ -173,10 +183,10 @@ class Fit : public ReduceOperator {
     const double pixel_m = ctx.grid->level_info(ctx.cell.level(), ctx.tile_size).pixel_m;
     json out = json::object();
     for (const auto& [id, s] : stats)
-      out[std::to_string(id)] = {
-          {"n", s.pixels},       {"pixel_m", pixel_m},       {"sum", s.sum},
-          {"sum_sq", s.sum_sq},  {"sum_cross", s.sum_cross}, {"hist", s.hist},
-          {"sample", sample[id]}};
+      out[std::to_string(id)] = {{"n", s.pixels},      {"colour_n", s.colour_pixels},
+                                 {"pixel_m", pixel_m}, {"sum", s.sum},
+                                 {"sum_sq", s.sum_sq}, {"sum_cross", s.sum_cross},
+                                 {"hist", s.hist},     {"sample", sample[id]}};
     return out;
   }
 
@@ -191,6 +201,7 @@ class Fit : public ReduceOperator {
       }
       json& o = out[id];
       o["n"] = o["n"].get<uint64_t>() + s["n"].get<uint64_t>();
+      o["colour_n"] = o["colour_n"].get<uint64_t>() + s["colour_n"].get<uint64_t>();
       for (size_t ch = 0; ch < 3; ++ch) {
         o["sum"][ch] = o["sum"][ch].get<double>() + s["sum"][ch].get<double>();
         o["sum_sq"][ch] = o["sum_sq"][ch].get<double>() + s["sum_sq"][ch].get<double>();
@@ -214,6 +225,10 @@ class Fit : public ReduceOperator {
         ClassStats c;
         c.id = std::stoi(id);
         c.pixels = s.at("n").get<uint64_t>();
+        c.colour_pixels = s.at("colour_n").get<uint64_t>();
+        if (c.colour_pixels == 0)
+          throw Error(std::string(kOp) + ": class " + id +
+                      ": no pixel whose own class (inputs.colour_classes) it is: no colour");
         c.sum = s.at("sum").get<std::array<double, 3>>();
         c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
         c.sum_cross = s.at("sum_cross").get<std::array<double, 3>>();

@@ -11,7 +11,7 @@ namespace {
 
 std::array<float, 3> mean_colour(const ClassStats& c) {
   std::array<float, 3> m{};
-  for (size_t k = 0; k < 3; ++k) m[k] = float(c.sum[k] / double(c.pixels));
+  for (size_t k = 0; k < 3; ++k) m[k] = float(c.sum[k] / double(c.colour_pixels));
   return m;
 }
 
@@ -19,7 +19,7 @@ std::array<float, 3> mean_colour(const ClassStats& c) {
 
 ColourSpread colour_spread(const ClassStats& c) {
   ColourSpread out;
-  const double n = double(c.pixels);
+  const double n = double(c.colour_pixels);
   for (size_t k = 0; k < 3; ++k) out.mean[k] = c.sum[k] / n;
   std::array<std::array<double, 3>, 3> cov{};
   for (size_t k = 0; k < 3; ++k) cov[k][k] = c.sum_sq[k] / n - out.mean[k] * out.mean[k];

@@ -18,6 +18,9 @@ inline constexpr std::array<std::array<size_t, 2>, 3> kCrossPairs = {{{0, 1}, {0
 struct ClassStats {
   int id = 0;
   uint64_t pixels = 0;
+  // The colour sums are over colour_pixels of them (all, or those whose own colour class is
+  // this class: texture.fit's inputs.colour_classes).
+  uint64_t colour_pixels = 0;
   std::array<double, 3> sum{}, sum_sq{};          // RGB
   std::array<double, 3> sum_cross{};              // products of the kCrossPairs channels
   std::vector<std::array<uint64_t, kBins>> hist;  // per quantity

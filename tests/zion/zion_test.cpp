@@ -2,9 +2,11 @@
 // ../shared/data/zion: its ingest and terrain steps, its cluster, classify and fit steps on the
 // western half of the cells, its procedural and assess steps on the eastern half. Gates of issue
 // 14 on the eastern half: at least 4 surface types found by texture.cluster (CIELAB) and kept by
-// the fit, on height, slope and the categorical NLCD land cover; and, for the goals not met
-// (modules/texture/README.md "Zion"), the measured values as floors against regressions: kappa,
-// blurred CIEDE2000, each class's spread. The rest of the assessment printed.
+// the fit, on height, slope and the categorical NLCD land cover; each class's colour spread
+// within 50-150 % of the scene's (class colours from the pixels whose own colour class it is);
+// and, for the goals not met (modules/texture/README.md "Zion"), the measured values as floors
+// against regressions: kappa, blurred CIEDE2000, the classes within CIEDE2000 5. The rest of the
+// assessment printed.
 // The same model and assessment with 1 and 2 threads, and the texture two levels finer than the
 // DEM without seams between tiles.
 // Skipped when the data is absent.
@@ -157,16 +159,19 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   const json& r = one.report;
   ASSERT_TRUE(r.is_object()) << one.table;
   EXPECT_GE(r["class_colours"].size(), 4u) << "classes kept by the fit, predicted in the east";
-  // Issue 14's goals not met (README "Zion": kappa >= 0.6, blurred CIEDE2000 <= 6, spreads
-  // within 50-150 %, class means within CIEDE2000 5, producer's accuracies >= 0.5), held at
-  // what the example reaches (kappa 0.369, blurred 10.98, spreads 0.37-0.82): the former
-  // hue-saturation-value classes gave kappa 0.30 and 13.8.
+  // Issue 14's goals not met (README "Zion": kappa >= 0.6, blurred CIEDE2000 <= 6, class means
+  // within CIEDE2000 5, producer's accuracies >= 0.5), held at what the example reaches (kappa
+  // 0.369, blurred 10.94, 3 of 5 classes within 5): the former hue-saturation-value classes
+  // gave kappa 0.30 and 13.8.
   EXPECT_GE(r["kappa"].get<double>(), 0.35) << one.table;
-  EXPECT_LE(r["ciede2000_mean"].get<double>(), 11.5) << one.table;
+  EXPECT_LE(r["ciede2000_mean"].get<double>(), 11.0) << one.table;
+  int close = 0;
   for (const auto& [k, c] : r["class_colours"].items()) {
-    EXPECT_GE(c["sd_ratio"].get<double>(), 0.33) << "class " << k << ": " << c;
+    EXPECT_GE(c["sd_ratio"].get<double>(), 0.5) << "class " << k << ": " << c;
     EXPECT_LE(c["sd_ratio"].get<double>(), 1.5) << "class " << k << ": " << c;
+    close += c["ciede2000"].get<double>() <= 5;
   }
+  EXPECT_GE(close, 3) << one.table;
   const Outcome two = fit_and_assess(2);
   EXPECT_EQ(one.model, two.model);  // same bits
   EXPECT_EQ(one.table, two.table);  // same confusion matrix, kappa and colour difference

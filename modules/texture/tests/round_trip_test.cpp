@@ -4,9 +4,11 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "../field.h"
+#include "core/error.h"
 #include "texture_module.h"
 
 namespace maquette::texture {
@@ -238,6 +240,56 @@ TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
     const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
     EXPECT_EQ(json::parse(tree.text()), a);
   }
+}
+
+// inputs.colour_classes: a class's colours come only from the pixels whose own class it is. Every
+// other pixel of the scene (not its own class) painted blue: the model is the same, bit for bit,
+// as with those pixels left as they were, and differs without colour_classes; a class with no
+// pixel of its own is an error naming it.
+TEST(RoundTrip, ColourClassesKeepOtherPixelsOutOfTheColours) {
+  const Scene s = make_scene(kHatModel);
+  Scene painted = s;
+  std::map<CellId, Tile<float>> own;
+  for (const CellId c : s.cells) {
+    own[c] = s.classes.at(c);
+    for (int r = 0; r < kSize; ++r)
+      for (int col = 0; col < kSize; ++col)
+        if ((col + 2 * r) % 3 == 0) {
+          own[c].at(col, r) = std::numeric_limits<float>::quiet_NaN();
+          for (int k = 0; k < 3; ++k) painted.rgb[c].at(col, r, k) = k == 2 ? 255.0f : 0.0f;
+        }
+  }
+  const auto fit_with = [&](const Scene& scene, const std::map<CellId, Tile<float>>* colour) {
+    return run_reduce(
+        "texture.fit", scene.cells, kSize,
+        [&](CellId c) {
+          CellData d;
+          d.inputs.emplace("classes", scene.classes.at(c));
+          d.inputs.emplace("rgb", scene.rgb.at(c));
+          d.inputs.emplace("dem", scene.dem_halo(c));
+          if (colour) d.inputs.emplace("colour_classes", colour->at(c));
+          return d;
+        },
+        kFit);
+  };
+  EXPECT_EQ(fit_with(painted, &own), fit_with(s, &own));
+  EXPECT_NE(fit(painted, kFit), fit(s, kFit));
+  std::map<CellId, Tile<float>> none = own;
+  for (auto& [c, t] : none)
+    for (float& v : t.data())
+      if (v == 3) v = 1;  // no pixel is class 3's own
+  EXPECT_THROW(
+      {
+        try {
+          fit_with(s, &none);
+        } catch (const Error& e) {
+          EXPECT_STREQ(e.what(),
+                       "texture.fit: class 3: no pixel whose own class (inputs.colour_classes) it "
+                       "is: no colour");
+          throw;
+        }
+      },
+      Error);
 }
 
 // texture.fit's "out" file, given to texture.procedural as "model_file", renders the same.
