@@ -127,13 +127,22 @@ class Assess : public ReduceOperator {
           ++confusion[std::to_string(int(o)) + "," +
                       (std::isnan(p) ? "-1" : std::to_string(int(p)))];
         if (!colour) continue;
-        if (const auto x = pixel(scene, c, r);
-            !std::isnan(o) && known(x) && (!own || own->at(c, r) == o))
-          add_moments(moments[std::to_string(int(o))]["image"], x);
-        if (const auto x = pixel(data.inputs.at("synthesized"), c, r); !std::isnan(p) && known(x))
-          add_moments(moments[std::to_string(int(p))]["texture"], x);
         const auto& u = a[size_t(r) * size_t(n) + size_t(c)];
         const auto& v = b[size_t(r) * size_t(n) + size_t(c)];
+        const auto as_float = [](const std::array<double, 3>& x) {
+          return std::array<float, 3>{float(x[0]), float(x[1]), float(x[2])};
+        };
+        if (const auto x = pixel(scene, c, r);
+            !std::isnan(o) && known(x) && (!own || own->at(c, r) == o)) {
+          add_moments(moments[std::to_string(int(o))]["image"], x);
+          if (known(as_float(u)))
+            add_moments(moments[std::to_string(int(o))]["image_blurred"], as_float(u));
+        }
+        if (const auto x = pixel(data.inputs.at("synthesized"), c, r); !std::isnan(p) && known(x)) {
+          add_moments(moments[std::to_string(int(p))]["texture"], x);
+          if (known(as_float(v)))
+            add_moments(moments[std::to_string(int(p))]["texture_blurred"], as_float(v));
+        }
         if (std::isnan(u[0] + u[1] + u[2] + v[0] + v[1] + v[2])) continue;
         de += ciede2000(srgb_to_lab(u[0], u[1], u[2]), srgb_to_lab(v[0], v[1], v[2]));
         ++de_n;

@@ -8,7 +8,8 @@ namespace maquette::texture {
 
 // {"classes", "confusion" (rows observed, columns predicted, last column: none), "accuracy",
 //  "producers_accuracy" {class: share of its observed pixels predicted as it}, "class_colours"
-//  {class: image and texture mean RGB, their CIEDE2000, spreads and ratio} (with moments),
+//  {class: image and texture mean RGB, their CIEDE2000, spreads and ratio, and the ratio of
+//  spreads after the blur (with moments "image_blurred" and "texture_blurred")} (with moments),
 //  "kappa" (Cohen's), "proportions" {class: {observed, predicted}}, "ciede2000_mean", "pixels"}.
 nlohmann::json assessment(const nlohmann::json& merged);
 std::string assessment_table(const nlohmann::json& report);

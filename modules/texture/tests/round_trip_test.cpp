@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -240,6 +241,51 @@ TEST(RoundTrip, FitIsDeterministicAndMergesAssociatively) {
     const Artifact tree = op.finish(parts[0], {&default_grid(), &params, nullptr});
     EXPECT_EQ(json::parse(tree.text()), a);
   }
+}
+
+// The spread after the blur tells speckle from variation at the scene's scales: one class over
+// 4 x 4 cells, the image a smooth wave across the columns (period 50 pixels), the texture either
+// the same wave or a checkerboard of the same spread. Both have the image's spread; blurred, the
+// wave keeps it and the checkerboard loses it.
+TEST(RoundTrip, BlurredSpreadRatioRejectsSpeckle) {
+  const Scene s = make_scene(kHatModel);
+  const auto wave = [](int64_t col, int64_t) { return 100 + 40 * std::sin(col * 2 * M_PI / 50); };
+  const auto checker = [](int64_t col, int64_t row) {
+    return 100 + ((col + row) % 2 ? 40 : -40) / std::sqrt(2.0);
+  };
+  const auto report = [&](const std::function<double(int64_t, int64_t)>& texture) {
+    Scene t = s;
+    for (const CellId c : s.cells) {
+      Tile<float> classes(kSize, 1, 0), rgb(kSize, 3, 0), synthesized(kSize, 3, 0);
+      for (int r = 0; r < kSize; ++r)
+        for (int col = 0; col < kSize; ++col) {
+          const int64_t gc = global_col(c, kSize, col), gr = global_row(c, kSize, r);
+          classes.at(col, r) = 0;
+          for (int k = 0; k < 3; ++k) {
+            rgb.at(col, r, k) = float(wave(gc, gr));
+            synthesized.at(col, r, k) = float(texture(gc, gr));
+          }
+        }
+      t.classes[c] = classes, t.predicted[c] = classes, t.rgb[c] = rgb;
+      t.synthesized[c] = synthesized;
+    }
+    return run_reduce(
+        "texture.assess", t.cells, kSize,
+        [&](CellId c) {
+          CellData d;
+          d.inputs.emplace("classes", t.halo(t.classes, c, kAssessHalo));
+          d.inputs.emplace("predicted", t.halo(t.predicted, c, kAssessHalo));
+          d.inputs.emplace("rgb", t.halo(t.rgb, c, kAssessHalo));
+          d.inputs.emplace("synthesized", t.halo(t.synthesized, c, kAssessHalo));
+          return d;
+        },
+        json::object())["class_colours"]["0"];
+  };
+  const json same = report(wave), speckle = report(checker);
+  EXPECT_NEAR(same["sd_ratio"].get<double>(), 1, 1e-6) << same;
+  EXPECT_NEAR(same["sd_ratio_blurred"].get<double>(), 1, 1e-6) << same;
+  EXPECT_NEAR(speckle["sd_ratio"].get<double>(), 1, 0.02) << speckle;
+  EXPECT_LT(speckle["sd_ratio_blurred"].get<double>(), 0.05) << speckle;
 }
 
 // inputs.colour_classes: a class's colours come only from the pixels whose own class it is. Every
