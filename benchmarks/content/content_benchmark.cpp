@@ -67,9 +67,10 @@ struct TempStore {
   std::unique_ptr<Store> store;
 };
 
-void per_object_counters(benchmark::State& state, size_t objects, size_t blob_bytes,
+void per_object_counters(benchmark::State& state, size_t cells, size_t objects, size_t blob_bytes,
                          size_t file_bytes) {
   const double n = double(objects);
+  state.counters["cells"] = double(cells);
   state.counters["objects"] = n;
   state.counters["time_per_object"] = benchmark::Counter(
       n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
@@ -85,7 +86,7 @@ void encode(benchmark::State& state, const std::map<CellId, Content>& cells, siz
     bytes = 0;
     for (const auto& [cell, content] : cells) bytes += wrap(content).size();
   }
-  per_object_counters(state, objects, bytes, 0);
+  per_object_counters(state, cells.size(), objects, bytes, 0);
 }
 
 template <class Content, class Wrap>
@@ -112,7 +113,7 @@ void write(benchmark::State& state, const std::map<CellId, Content>& cells, size
     file = std::filesystem::file_size(t.path);
     state.ResumeTiming();
   }
-  per_object_counters(state, objects, bytes, file);
+  per_object_counters(state, cells.size(), objects, bytes, file);
 }
 
 size_t instance_count() {
