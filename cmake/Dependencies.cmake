@@ -13,6 +13,8 @@ find_package(SQLite3 REQUIRED)
 find_package(zstd REQUIRED)
 find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
 find_package(Eigen3 REQUIRED NO_MODULE)
+# meshoptimizer (MIT): simplifying meshes for content layers' coarser levels (formats/gltf).
+find_package(meshoptimizer REQUIRED CONFIG)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
 # libs2 (only for the side-by-side grid benchmark) has neither a config file nor a .pc file.

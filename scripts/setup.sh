@@ -13,6 +13,7 @@ packages=(
   libcpp-httplib-dev chromium
   grass-core  # test oracle only (r.sun, run as a separate process): never linked
   libopenmesh-dev  # test oracle only (tests/instances: closed, oriented meshes; BSD-3)
+  libmeshoptimizer-dev  # mesh layers' coarser levels (formats/gltf/mesh_simplify; MIT)
 )
 # The viewer is built with npm; Debian's node is enough where the machine has none of its own.
 command -v npm >/dev/null || packages+=(nodejs npm)

@@ -3,9 +3,12 @@
 // other command loads OpenVDB.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "content/content.h"
+#include "content/content_overviews.h"
 #include "vdb/volume_mesh.h"
 
 namespace maquette {
@@ -13,6 +16,7 @@ namespace maquette {
 inline constexpr const char* kVdbPlugin = "libmaquette_vdb.so";
 inline constexpr const char* kVdbMeshEntry = "maquette_vdb_mesh";
 inline constexpr const char* kVdbStatsEntry = "maquette_vdb_stats";
+inline constexpr const char* kVdbOverviewEntry = "maquette_vdb_overview";
 
 }  // namespace maquette
 
@@ -24,3 +28,9 @@ extern "C" void maquette_vdb_mesh(const maquette::VolumeContent& volume,
 // volume_stats (vdb/volume_vdb.h) of the decoded volume into `stats`.
 extern "C" void maquette_vdb_stats(const maquette::VolumeContent& volume, const std::string& where,
                                    maquette::ContentStats& stats);
+// A ContentOverviewBuilder (content/content_overviews.h): the children's volume blobs merged and
+// resampled (vdb/volume_coarsen.h), encoded in the envelope of level.origin (grids and active
+// voxels counted); nullopt when no grid is left.
+extern "C" void maquette_vdb_overview(const std::vector<std::string>& children,
+                                      const maquette::ContentLevel& level, const std::string& where,
+                                      std::optional<std::string>& overview);

@@ -56,7 +56,8 @@ ContentWrite content_write(const LayerEntry& e, const std::string& store_path, C
 
 void write_content(sqlite::Connection& c, const ContentWrite& w) {
   const auto blob = std::as_bytes(std::span(w.blob));
-  // No stale marks: the coarser levels are the writer's (simplified content), not built here.
+  // A cell at the layer's level marks its parent stale for update_content_overviews
+  // (content/content_overviews.h); a coarser one is an overview the writer put itself.
   if (w.coarser)
     c.query("INSERT OR REPLACE INTO overviews(layer, level, cell, blob) VALUES(?, ?, ?, ?)")
         .bind_int(1, w.layer)
@@ -64,12 +65,14 @@ void write_content(sqlite::Connection& c, const ContentWrite& w) {
         .bind_int(3, int64_t(w.cell.id()))
         .bind_blob(4, blob)
         .run();
-  else
+  else {
     c.query("INSERT OR REPLACE INTO tiles(layer, cell, blob) VALUES(?, ?, ?)")
         .bind_int(1, w.layer)
         .bind_int(2, int64_t(w.cell.id()))
         .bind_blob(3, blob)
         .run();
+    mark_parent_stale(c, w.layer, w.cell);
+  }
 }
 
 std::optional<std::string> Store::get_content(const std::string& layer, CellId cell) const {

@@ -205,6 +205,23 @@ class Store {
   std::vector<CellId> content_cells(const std::string& layer) const;
   ContentLayerStats content_stats(const std::string& layer) const;
 
+  // Content overviews (built by content/content_overviews.h): writing a content layer's cell at
+  // its level marks the parent stale, as tiles do. rebuild_stale_content takes up to `limit`
+  // stale cells at `level` (ascending ids) and, in one write transaction, gives `build` each
+  // cell with the stored blobs of its four children (by child digit: base tiles or overviews
+  // one level finer); `build` fills `overviews` (one per cell, in parallel if it likes, without
+  // touching the store), and each cell's overview is written (or removed, when nullopt: its
+  // children hold nothing), its mark cleared and its parent marked stale. Returns the number of
+  // cells taken: fewer than `limit` when the level has no marks left. Throws naming the layer
+  // for a layer that is not a content layer, a level not below the layer's, or a blob of
+  // another kind than the layer's.
+  using ContentChildren = std::array<std::optional<std::string>, 4>;
+  using BuildContentOverviews =
+      std::function<void(std::span<const CellId> cells, std::span<const ContentChildren> children,
+                         std::span<std::optional<std::string>> overviews)>;
+  size_t rebuild_stale_content(const std::string& layer, int level, size_t limit,
+                               const BuildContentOverviews& build);
+
   // Overviews: coarser levels down to `min_level`, mean (continuous) or mode (categorical),
   // nodata-aware. Built on demand; tiles written since mark their ancestors stale, and
   // update_overviews rebuilds only those.

@@ -1,0 +1,143 @@
+#include "gltf/mesh_simplify.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "content/enu_transform.h"
+#include "core/error.h"
+
+namespace maquette {
+namespace {
+
+std::string image_extension(const std::string& mime, const std::string& where) {
+  if (mime == "image/jpeg") return ".jpg";
+  if (mime == "image/png") return ".png";
+  if (mime == "image/webp") return ".webp";
+  throw Error(where + ": cannot halve an image of type '" + mime + "'");
+}
+
+// The object in the parent's frame, all its vertices kept.
+MeshObject reframed(const MeshObject& o, const EnuTransform& to_parent) {
+  MeshObject out = o;
+  for (size_t v = 0; v + 2 < o.positions.size(); v += 3) {
+    const auto p = to_parent.point(o.positions[v], o.positions[v + 1], o.positions[v + 2]);
+    for (int k = 0; k < 3; ++k) out.positions[v + k] = float(p[k]);
+  }
+  for (size_t v = 0; v + 2 < o.normals.size(); v += 3) {
+    const auto n = to_parent.direction(o.normals[v], o.normals[v + 1], o.normals[v + 2]);
+    const double length = std::hypot(n[0], n[1], n[2]);
+    for (int k = 0; k < 3; ++k) out.normals[v + k] = float(length > 0 ? n[k] / length : n[k]);
+  }
+  return out;
+}
+
+double bbox_diagonal(const std::vector<float>& positions) {
+  std::array<float, 3> lo, hi;
+  lo.fill(std::numeric_limits<float>::infinity());
+  hi.fill(-std::numeric_limits<float>::infinity());
+  for (size_t v = 0; v < positions.size(); ++v) {
+    lo[v % 3] = std::min(lo[v % 3], positions[v]);
+    hi[v % 3] = std::max(hi[v % 3], positions[v]);
+  }
+  if (positions.empty()) return 0;
+  return std::hypot(double(hi[0]) - lo[0], double(hi[1]) - lo[1], double(hi[2]) - lo[2]);
+}
+
+// `o` with the triangles `indices` (into its vertices) only, its vertices renumbered in the
+// order they are first used.
+MeshObject with_triangles(const MeshObject& o, const std::vector<uint32_t>& indices) {
+  MeshObject out;
+  out.provenance = o.provenance;
+  out.material = o.material;
+  std::vector<uint32_t> remap(o.positions.size() / 3, UINT32_MAX);
+  for (uint32_t old : indices) {
+    if (remap[old] == UINT32_MAX) {
+      remap[old] = uint32_t(out.positions.size() / 3);
+      const auto copy = [old](const std::vector<float>& from, std::vector<float>& to, int n) {
+        if (!from.empty()) to.insert(to.end(), &from[n * old], &from[n * old + n]);
+      };
+      copy(o.positions, out.positions, 3);
+      copy(o.normals, out.normals, 3);
+      copy(o.uvs, out.uvs, 2);
+    }
+    out.indices.push_back(remap[old]);
+  }
+  return out;
+}
+
+MeshObject simplified(const MeshObject& o, double max_error_m) {
+  const size_t vertices = o.positions.size() / 3;
+  const float scale = meshopt_simplifyScale(o.positions.data(), vertices, 3 * sizeof(float));
+  // A quarter of the triangles, but not below 4 (a tetrahedron): an object larger than the
+  // sample does not vanish.
+  const size_t target = std::max(o.indices.size() / 12 * 3, std::min<size_t>(12, o.indices.size()));
+  std::vector<uint32_t> indices(o.indices.size());
+  const float relative_error = scale > 0 ? float(max_error_m / scale) : 0.f;
+  float achieved = 0;
+  indices.resize(meshopt_simplify(indices.data(), o.indices.data(), o.indices.size(),
+                                  o.positions.data(), vertices, 3 * sizeof(float), target,
+                                  relative_error, 0, &achieved));
+  return with_triangles(o, indices);
+}
+
+}  // namespace
+
+std::string halve_image(const std::string& image, const std::string& mime,
+                        const std::string& where) {
+  const std::string extension = image_extension(mime, where);
+  const cv::Mat bytes(1, int(image.size()), CV_8U, const_cast<char*>(image.data()));
+  const cv::Mat decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  if (decoded.empty()) throw Error(where + ": the " + mime + " image does not decode");
+  cv::Mat half;
+  cv::resize(decoded, half, cv::Size(std::max(1, decoded.cols / 2), std::max(1, decoded.rows / 2)),
+             0, 0, cv::INTER_AREA);
+  std::vector<uchar> out;
+  if (!cv::imencode(extension, half, out))
+    throw Error(where + ": cannot encode the halved " + mime + " image");
+  return {reinterpret_cast<const char*>(out.data()), out.size()};
+}
+
+MeshContent simplify_mesh_children(std::span<const MeshContent> children,
+                                   const ContentLevel& level) {
+  MeshContent out;
+  out.origin = level.origin;
+  std::vector<Material> originals;  // out.materials before their images are halved
+  for (const MeshContent& child : children) {
+    const EnuTransform to_parent(child.origin, level.origin);
+    std::vector<int> material(child.materials.size());
+    for (size_t m = 0; m < child.materials.size(); ++m) {
+      const auto it = std::find(originals.begin(), originals.end(), child.materials[m]);
+      material[m] = int(it - originals.begin());
+      if (it == originals.end()) originals.push_back(child.materials[m]);
+    }
+    for (const MeshObject& object : child.objects) {
+      MeshObject o = reframed(object, to_parent);
+      if (bbox_diagonal(o.positions) < level.sample_m) continue;
+      o = simplified(o, level.sample_m / 2);
+      if (o.indices.empty()) continue;
+      if (o.material >= 0) o.material = material[size_t(o.material)];
+      out.objects.push_back(std::move(o));
+    }
+  }
+  // Only the materials of objects kept, in their order.
+  std::vector<int> kept(originals.size(), -1);
+  for (MeshObject& o : out.objects) {
+    if (o.material < 0) continue;
+    int& index = kept[size_t(o.material)];
+    if (index < 0) {
+      index = int(out.materials.size());
+      out.materials.push_back(originals[size_t(o.material)]);
+    }
+    o.material = index;
+  }
+  for (Material& m : out.materials)
+    if (!m.image.empty()) m.image = halve_image(m.image, m.image_mime, "material '" + m.name + "'");
+  return out;
+}
+
+}  // namespace maquette

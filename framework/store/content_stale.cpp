@@ -1,0 +1,78 @@
+// Stale marks of content layers: the store's half of update_content_overviews
+// (content/content_overviews.h), which builds the simplified content itself.
+#include "store/store_impl.h"
+
+namespace maquette {
+namespace {
+
+// The stored blobs of `cell`'s children: at the layer's level in tiles, else in overviews.
+Store::ContentChildren read_content_children(sqlite::Connection& c, const LayerEntry& e,
+                                             CellId cell) {
+  const int child_level = cell.level() + 1;
+  auto q = child_level == e.info.level
+               ? c.query("SELECT cell, blob FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4")
+               : c.query(
+                     "SELECT cell, blob FROM overviews WHERE layer = ?1 AND level = ?2 AND cell "
+                     "BETWEEN ?3 AND ?4");
+  q.bind_int(1, e.id)
+      .bind_int(2, child_level)
+      .bind_int(3, int64_t(cell.range_min().id()))
+      .bind_int(4, int64_t(cell.range_max().id()));
+  Store::ContentChildren out;
+  while (q.step()) {
+    const auto blob = q.blob(1);
+    out[CellId(uint64_t(q.int64(0))).digit(child_level)].emplace(
+        reinterpret_cast<const char*>(blob.data()), blob.size());
+  }
+  return out;
+}
+
+}  // namespace
+
+size_t Store::rebuild_stale_content(const std::string& layer, int level, size_t limit,
+                                    const BuildContentOverviews& build) {
+  Impl& d = *impl_;
+  const LayerEntry e = d.require(layer);
+  const std::string where = "cannot build overviews of layer '" + layer + "' in " + d.path + ": ";
+  if (!layer_content_kind(e.info.kind))
+    throw Error(where + "it is of kind " + std::string(layer_kind_name(e.info.kind)) +
+                ", not a content layer (mesh, instances or volume)");
+  if (level < 0 || level >= e.info.level)
+    throw Error(where + "level " + std::to_string(level) + " not in [0, " +
+                std::to_string(e.info.level - 1) + "]");
+  size_t taken = 0;
+  d.write([&](sqlite::Connection& c) {
+    std::vector<CellId> cells;
+    {
+      auto q = c.query(
+          "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
+      q.bind_int(1, e.id).bind_int(2, level).bind_int(3, int64_t(limit));
+      while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
+    }
+    std::vector<ContentChildren> children;
+    for (CellId cell : cells) children.push_back(read_content_children(c, e, cell));
+    std::vector<std::optional<std::string>> overviews(cells.size());
+    build(cells, children, overviews);
+    for (size_t i = 0; i < cells.size(); ++i) {
+      if (overviews[i]) {
+        write_content(c, content_write(e, d.path, cells[i], *overviews[i]));
+      } else {
+        c.query("DELETE FROM overviews WHERE layer = ? AND level = ? AND cell = ?")
+            .bind_int(1, e.id)
+            .bind_int(2, level)
+            .bind_int(3, int64_t(cells[i].id()))
+            .run();
+      }
+      c.query("DELETE FROM stale_overviews WHERE layer = ? AND level = ? AND cell = ?")
+          .bind_int(1, e.id)
+          .bind_int(2, level)
+          .bind_int(3, int64_t(cells[i].id()))
+          .run();
+      mark_parent_stale(c, e.id, cells[i]);
+    }
+    taken = cells.size();
+  });
+  return taken;
+}
+
+}  // namespace maquette

@@ -1,0 +1,173 @@
+// Coarser levels of an instances layer (content/content_overviews.h, instances_thin.h): exactly
+// the instances the rule keeps, bit for bit but re-origined, whatever order cells are written in.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <bit>
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "../store/store_test_util.h"
+#include "content/content_blob.h"
+#include "content/content_overviews.h"
+#include "content/instances_codec.h"
+#include "content/instances_thin.h"
+#include "core/grid.h"
+#include "lod_fixture.h"
+
+namespace maquette::test {
+namespace {
+
+constexpr size_t kPerCell = 625;  // 10,000 instances over the 16 cells
+
+// The instances of one base cell: random positions within 150 m of its centre, provenance with
+// random object ids (`provenance` false: none, thinned by their bits).
+InstancesContent cell_instances(CellId cell, bool provenance) {
+  std::mt19937_64 random(cell.id());
+  std::uniform_real_distribution<float> xy(-150, 150), z(-5, 40), unit(-1, 1);
+  InstancesContent c;
+  c.origin = base_origin(cell);
+  c.prototypes = {"builtin:conifer", "builtin:broadleaf", "builtin:shrub"};
+  for (size_t i = 0; i < kPerCell; ++i) {
+    c.prototype.push_back(uint16_t(random() % 3));
+    c.position.insert(c.position.end(), {xy(random), xy(random), z(random)});
+    const float angle = unit(random) * 3.14159f;
+    c.rotation.insert(c.rotation.end(), {0, 0, std::sin(angle / 2), std::cos(angle / 2)});
+    const float s = 0.5f + 0.5f * std::abs(unit(random));
+    c.scale.insert(c.scale.end(), {s, s, s * 1.5f});
+    c.colour.push_back(uint32_t(random()));
+    if (provenance) c.provenance.push_back({random(), int64_t(i), "test.trees", {{"n", i}}});
+  }
+  return c;
+}
+
+void write_cells(Store& store, const std::vector<CellId>& cells, bool provenance) {
+  Store::Batch batch(store);
+  for (CellId cell : cells)
+    batch.put_content("trees", cell, wrap_instances(cell_instances(cell, provenance)));
+  batch.commit();
+}
+
+InstancesContent read(const Store& store, CellId cell) {
+  return unwrap_instances(*store.get_content("trees", cell), "trees " + cell.ToText());
+}
+
+// Keeps an instance of the base (with provenance) at `depth` levels above: the rule of
+// instances_thin.h, recomputed from its definition.
+bool kept(uint64_t object_id, int depth) {
+  for (int d = 1; d <= depth; ++d)
+    if (!instance_survives(object_id, d)) return false;
+  return true;
+}
+
+TEST(InstancesLod, LevelsKeepExactlyTheRulesInstancesBitForBit) {
+  TempDir dir;
+  auto store = content_store(dir.file("a.mqs"), "trees", LayerKind::Instances);
+  write_cells(*store, base_cells(), true);
+  update_content_overviews(*store, "trees");
+
+  std::set<uint64_t> stored;
+  for (CellId cell : base_cells()) stored.insert(cell.id());
+  // Expected kept fractions: 1/4 per level (random ids), within statistical noise.
+  size_t below = base_cells().size() * kPerCell;
+  for (int level = kBaseLevel - 1; level >= 0; --level) {
+    const int depth = kBaseLevel - level;
+    size_t total = 0;
+    for (CellId cell : store->content_cells("trees", level)) {
+      const InstancesContent got = read(*store, cell);
+      // The parent's origin: its centre at the mean of its children's heights.
+      const LonLat centre = default_grid().centre(cell);
+      EXPECT_DOUBLE_EQ(got.origin.lon, centre.lon);
+      EXPECT_DOUBLE_EQ(got.origin.lat, centre.lat);
+      // The expected instances, in base cell order, then their order.
+      size_t n = 0;
+      for (CellId base : base_cells_under(cell)) {
+        if (!stored.contains(base.id())) continue;
+        const InstancesContent original = cell_instances(base, true);
+        for (size_t i = 0; i < original.size(); ++i) {
+          if (!kept(original.provenance[i].object_id, depth)) continue;
+          ASSERT_LT(n, got.size()) << cell.ToText();
+          ASSERT_EQ(got.provenance[n], original.provenance[i]) << "level " << level << " n " << n;
+          EXPECT_EQ(got.prototypes[got.prototype[n]], original.prototypes[original.prototype[i]]);
+          for (int k = 0; k < 4; ++k)
+            EXPECT_EQ(std::bit_cast<uint32_t>(got.rotation[4 * n + k]),
+                      std::bit_cast<uint32_t>(original.rotation[4 * i + k]));
+          for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(std::bit_cast<uint32_t>(got.scale[3 * n + k]),
+                      std::bit_cast<uint32_t>(original.scale[3 * i + k]));
+          EXPECT_EQ(got.colour[n], original.colour[i]);
+          const auto p = reframe(original.origin, got.origin,
+                                 {original.position[3 * i], original.position[3 * i + 1],
+                                  original.position[3 * i + 2]});
+          for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.position[3 * n + k], p[k], 1e-3);
+          ++n;
+        }
+      }
+      EXPECT_EQ(n, got.size()) << cell.ToText();
+      total += got.size();
+    }
+    if (below >= 400) {
+      const double ratio = double(total) / double(below);
+      EXPECT_GT(ratio, 0.2) << "level " << level;
+      EXPECT_LT(ratio, 0.3) << "level " << level;
+    }
+    if (total == 0) {
+      EXPECT_TRUE(store->content_cells("trees", level).empty());
+    }
+    below = total;
+  }
+  // `maquette info` counts the layer's level only.
+  EXPECT_EQ(store->content_stats("trees").content.objects, base_cells().size() * kPerCell);
+}
+
+TEST(InstancesLod, SameBlobsForAnyOrderOfCellsAndThreads) {
+  TempDir dir;
+  auto a = content_store(dir.file("a.mqs"), "trees", LayerKind::Instances);
+  write_cells(*a, base_cells(), true);
+  update_content_overviews(*a, "trees");
+
+  // Written in reverse order, half then the other half with an update between (only the stale
+  // marks of the second half rebuild), on one thread.
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  auto b = content_store(dir.file("b.mqs"), "trees", LayerKind::Instances);
+  std::vector<CellId> cells = base_cells();
+  std::reverse(cells.begin(), cells.end());
+  write_cells(*b, {cells.begin(), cells.begin() + 5}, true);
+  update_content_overviews(*b, "trees");
+  for (CellId c : std::vector<CellId>(cells.begin() + 5, cells.end())) write_cells(*b, {c}, true);
+  update_content_overviews(*b, "trees");
+
+  const auto blobs = overview_blobs(*a, "trees");
+  EXPECT_EQ(blobs.size(), overview_blobs(*b, "trees").size());
+  EXPECT_TRUE(blobs == overview_blobs(*b, "trees"));
+  EXPECT_GE(blobs.size(), 6u);  // 10,000 / 4^6 = 2.4 instances are left 6 levels up
+}
+
+TEST(InstancesLod, WithoutProvenanceThinnedByTheirBits) {
+  TempDir dir;
+  auto store = content_store(dir.file("a.mqs"), "trees", LayerKind::Instances);
+  write_cells(*store, base_cells(), false);
+  update_content_overviews(*store, "trees");
+  // One level up: each child's instances whose stored bits the rule keeps.
+  for (CellId cell : store->content_cells("trees", kBaseLevel - 1)) {
+    const InstancesContent got = read(*store, cell);
+    EXPECT_TRUE(got.provenance.empty());
+    size_t n = 0;
+    for (int k = 0; k < 4; ++k) {
+      const InstancesContent child = cell_instances(cell.child(k), false);
+      for (size_t i = 0; i < child.size(); ++i)
+        if (instance_survives(instance_key(child, i), 1)) {
+          ASSERT_LT(n, got.size());
+          EXPECT_EQ(got.colour[n], child.colour[i]);
+          ++n;
+        }
+    }
+    EXPECT_EQ(n, got.size());
+    EXPECT_GT(n, 4 * kPerCell / 5);
+    EXPECT_LT(n, 4 * kPerCell * 3 / 10);
+  }
+}
+
+}  // namespace
+}  // namespace maquette::test
