@@ -5,7 +5,8 @@
 //
 // An object belongs to exactly one cell at its layer's level: the cell holding its anchor (a
 // mesh object's first vertex, an instance's position), whatever it overlaps; the cell's tile
-// then has a bounding volume grown to hold it. Coarser levels hold simplified content.
+// then has a bounding volume grown to hold it. Coarser levels hold simplified content
+// (content_overviews.h).
 //
 // This header is the data model only: encodings are in content_blob.h (the envelope),
 // instances_codec.h (instances, lossless), gltf/mesh_glb.h (meshes as GLB, Draco) and

@@ -23,10 +23,13 @@ std::string cell_where(const std::string& layer, CellId cell) {
   return "layer '" + layer + "', cell " + cell.ToText();
 }
 
+// `wheres`: each child's place, for errors.
 std::optional<std::string> instances_overview(const std::vector<std::string>& children,
-                                              const ContentLevel& level, const std::string& where) {
+                                              const std::vector<std::string>& wheres,
+                                              const ContentLevel& level) {
   std::vector<InstancesContent> decoded;
-  for (const std::string& blob : children) decoded.push_back(unwrap_instances(blob, where));
+  for (size_t i = 0; i < children.size(); ++i)
+    decoded.push_back(unwrap_instances(children[i], wheres[i]));
   const InstancesContent thinned = thin_instances(decoded, level.origin, level.depth);
   if (thinned.size() == 0) return std::nullopt;
   return wrap_instances(thinned);
@@ -47,7 +50,10 @@ ContentLevel content_level(CellId parent, int layer_level, const std::vector<Enu
 }
 
 void update_content_overviews(Store& store, const std::string& layer) {
-  const LayerInfo info = store.require_layer(layer);
+  // Not require_layer: a writer builds the overviews before it marks its layer complete.
+  const auto found = store.layer(layer);
+  if (!found) throw Error("unknown layer '" + layer + "' in " + store.path());
+  const LayerInfo& info = *found;
   const auto kind = layer_content_kind(info.kind);
   if (!kind)
     throw Error("cannot build content overviews of layer '" + layer + "' in " + store.path() +
@@ -66,22 +72,22 @@ void update_content_overviews(Store& store, const std::string& layer) {
     // store's write lock, held by this call.
     tbb::this_task_arena::isolate([&] {
       tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-        std::vector<std::string> blobs;
+        std::vector<std::string> blobs, wheres;
         std::vector<EnuOrigin> origins;
         for (int k = 0; k < 4; ++k)
           if (const auto& blob = children[i][k]) {
-            const std::string where = cell_where(layer, cells[i].child(k));
-            origins.push_back(read_content_envelope(*blob, where).origin);
+            wheres.push_back(cell_where(layer, cells[i].child(k)));
+            origins.push_back(read_content_envelope(*blob, wheres.back()).origin);
             blobs.push_back(*blob);
           }
         const ContentLevel level = content_level(cells[i], info.level, origins);
-        const std::string where = cell_where(layer, cells[i]) + " (children)";
         if (blobs.empty())
           overviews[i].reset();
         else if (plugin)
-          plugin(blobs, level, where, overviews[i]);
+          plugin(blobs, level, "layer '" + layer + "', a child of cell " + cells[i].ToText(),
+                 overviews[i]);
         else
-          overviews[i] = instances_overview(blobs, level, where);
+          overviews[i] = instances_overview(blobs, wheres, level);
       });
     });
   };

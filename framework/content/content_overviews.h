@@ -50,8 +50,10 @@ using ContentOverviewBuilder = void(const std::vector<std::string>& children,
 
 // Rebuilds the overviews of layer `layer` (kind mesh, instances or volume) above every cell
 // written since the last call (the store's stale marks: Store::rebuild_stale_content), level by
-// level down to 0. Throws maquette::Error naming the layer for another kind, or a child blob
-// that does not decode (naming its cell).
+// level down to 0; a layer still marked incomplete (its writer calls this before it is whole)
+// is built too. Throws maquette::Error naming the layer for an unknown layer or one of another
+// kind, or a child blob that does not decode (naming its cell; nothing of that transaction is
+// written).
 void update_content_overviews(Store& store, const std::string& layer);
 
 }  // namespace maquette

@@ -169,5 +169,36 @@ TEST(InstancesLod, WithoutProvenanceThinnedByTheirBits) {
   }
 }
 
+TEST(InstancesLod, BuiltForAnIncompleteLayerRefusedForOtherKindsAndCorruptChildren) {
+  TempDir dir;
+  auto store = content_store(dir.file("a.mqs"), "trees", LayerKind::Instances);
+  // A run writing the layer builds its overviews before it marks the layer complete.
+  store->mark_incomplete("trees", store->begin_run({{"steps", 1}}));
+  write_cells(*store, base_cells(), true);
+  update_content_overviews(*store, "trees");
+  EXPECT_FALSE(store->content_cells("trees", kBaseLevel - 1).empty());
+
+  LayerInfo raster;
+  raster.name = "dem";
+  raster.level = 5;
+  store->create_layer(raster);
+  expect_error([&] { update_content_overviews(*store, "dem"); }, {"'dem'", "not a content layer"});
+  expect_error([&] { update_content_overviews(*store, "nope"); }, {"unknown layer 'nope'"});
+
+  // A child whose payload is not instances: an error naming its cell, nothing written.
+  const CellId bad = base_cells()[5];
+  const auto before = overview_blobs(*store, "trees");
+  ContentEnvelope e;
+  e.kind = ContentKind::Instances;
+  e.origin = base_origin(bad);
+  {
+    Store::Batch batch(*store);
+    batch.put_content("trees", bad, wrap_content(e, "not zstd"));
+    batch.commit();
+  }
+  expect_error([&] { update_content_overviews(*store, "trees"); }, {"cell " + bad.ToText()});
+  EXPECT_TRUE(overview_blobs(*store, "trees") == before);
+}
+
 }  // namespace
 }  // namespace maquette::test
