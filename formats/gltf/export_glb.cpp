@@ -5,6 +5,8 @@
 
 #include "core/error.h"
 #include "core/output_file.h"
+#include "gltf/cell_content.h"
+#include "gltf/glb_merge.h"
 #include "gltf/glb_writer.h"
 #include "gltf/output_dir.h"
 
@@ -19,8 +21,27 @@ std::map<int, std::vector<CellId>> by_level(const std::vector<CellId>& cells) {
   return out;
 }
 
+constexpr std::array<double, 16> kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
 Error no_tiles(const TerrainSource& source) {
   return Error("layer '" + source.dem.name + "' has no tiles in the given cells");
+}
+
+// The terrain of `cells` as one GLB in `frame`, a mesh per cell.
+std::vector<char> terrain_glb(const Store& store, const Grid& grid, const TerrainSettings& settings,
+                              const std::vector<CellId>& cells, const LocalFrame& frame) {
+  TerrainSource source(store, grid, settings);
+  source.check_size(int64_t(cells.size()), source.texture ? int64_t(cells.size()) : 0);
+  source.fit_texture_stretch(cells);
+  std::vector<CellTerrain> terrain;  // one GLB of every cell: all meshes at once
+  for (const auto& [level, group] : by_level(cells))
+    for (auto& t : build_level(source, frame, group)) terrain.push_back(std::move(t));
+  if (terrain.empty()) throw no_tiles(source);
+  std::vector<GlbPrimitive> prims;
+  for (const CellTerrain& t : terrain)
+    prims.push_back({&t.mesh, settings.draco ? &t.draco : nullptr, t.image ? &*t.image : nullptr,
+                     t.cell.ToText()});
+  return make_glb(prims, {{"maquette_frame", frame_json(frame)}});
 }
 
 }  // namespace
@@ -30,21 +51,28 @@ nlohmann::json frame_json(const LocalFrame& frame) {
           {"axes", "x east, y up, z south (metres)"}};
 }
 
-void export_glb(const Store& store, const Grid& grid, const TerrainSettings& settings,
+void export_glb(const Store& store, const Grid& grid, const GlbExport& spec,
                 const std::vector<CellId>& cells, const std::string& out) {
-  TerrainSource source(store, grid, settings);
-  source.check_size(int64_t(cells.size()), source.texture ? int64_t(cells.size()) : 0);
-  source.fit_texture_stretch(cells);
+  if (spec.terrain.dem.empty() && spec.content.empty())
+    throw Error("nothing to export: pass --dem, --content or both");
+  by_level(cells);  // refuses an empty list
+  for (const std::string& layer : spec.content) require_content_layer(store, layer);
   const LocalFrame frame = frame_for(grid, cells);
-  std::vector<CellTerrain> terrain;  // one GLB of every cell: all meshes at once
-  for (const auto& [level, group] : by_level(cells))
-    for (auto& t : build_level(source, frame, group)) terrain.push_back(std::move(t));
-  if (terrain.empty()) throw no_tiles(source);
-  std::vector<GlbPrimitive> prims;
-  for (const CellTerrain& t : terrain)
-    prims.push_back({&t.mesh, settings.draco ? &t.draco : nullptr, t.image ? &*t.image : nullptr,
-                     t.cell.ToText()});
-  write_file(out, make_glb(prims, {{"maquette_frame", frame_json(frame)}}));
+  std::vector<char> terrain;
+  if (!spec.terrain.dem.empty()) terrain = terrain_glb(store, grid, spec.terrain, cells, frame);
+  if (spec.content.empty()) return write_file(out, terrain);
+
+  CellContentReader reader(store);
+  std::vector<std::pair<std::string, CellContent>> contents;  // by layer, then cell
+  for (const std::string& layer : spec.content)
+    for (CellId cell : cells)
+      if (auto c = reader.read(layer, cell)) contents.emplace_back(layer + " " + cell.ToText(), *c);
+  std::vector<GlbPart> parts;
+  if (!terrain.empty()) parts.push_back({{terrain.data(), terrain.size()}, kIdentity, "terrain"});
+  for (const auto& [name, c] : contents)
+    parts.push_back({c.glb, frame_to_frame(c.origin, frame), name});
+  if (parts.empty()) throw Error("the given cells hold no content of the layers given");
+  write_file(out, merge_glbs(parts, {{"maquette_frame", frame_json(frame)}}, "export glb " + out));
 }
 
 void export_drc(const Store& store, const Grid& grid, const TerrainSettings& settings,

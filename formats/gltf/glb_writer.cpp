@@ -173,10 +173,13 @@ void append_u32(std::vector<char>& out, uint32_t v) {
 
 int GlbBuffer::view(const void* data, size_t size, int target, size_t alignment) {
   while (bin_.size() % alignment) bin_.push_back(0);
-  json v = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
+  // glTF requires byteLength >= 1: an empty column (e.g. EXT_structural_metadata strings that are
+  // all empty) is one zero byte that nothing reads.
+  json v = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", std::max<size_t>(size, 1)}};
   if (target) v["target"] = target;
   const char* p = static_cast<const char*>(data);
   bin_.insert(bin_.end(), p, p + size);
+  if (size == 0) bin_.push_back(0);
   views_.push_back(v);
   return int(views_.size() - 1);
 }
@@ -191,20 +194,26 @@ std::vector<char> GlbBuffer::finish(json gltf) {
   if (!views_.empty()) gltf["bufferViews"] = views_;
   while (bin_.size() % 4) bin_.push_back(0);
   if (!bin_.empty()) gltf["buffers"] = {{{"byteLength", bin_.size()}}};
+  return glb_file(gltf, {bin_.data(), bin_.size()});
+}
+
+std::vector<char> glb_file(const json& gltf, std::string_view bin) {
   std::string text = gltf.dump();
   while (text.size() % 4) text.push_back(' ');
+  const size_t bin_padded = (bin.size() + 3) / 4 * 4;
 
   std::vector<char> out;
   append_u32(out, 0x46546C67);  // "glTF"
   append_u32(out, 2);
-  append_u32(out, uint32_t(12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size())));
+  append_u32(out, uint32_t(12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin_padded)));
   append_u32(out, uint32_t(text.size()));
   append_u32(out, 0x4E4F534A);  // "JSON"
   out.insert(out.end(), text.begin(), text.end());
-  if (!bin_.empty()) {
-    append_u32(out, uint32_t(bin_.size()));
+  if (!bin.empty()) {
+    append_u32(out, uint32_t(bin_padded));
     append_u32(out, 0x004E4942);  // "BIN\0"
-    out.insert(out.end(), bin_.begin(), bin_.end());
+    out.insert(out.end(), bin.begin(), bin.end());
+    out.resize(out.size() + bin_padded - bin.size(), 0);
   }
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gltf/draco_encode.h"
@@ -51,6 +52,10 @@ class GlbBuffer {
 // The GLB bytes; `extras` goes to the asset's extras (e.g. the frame's origin).
 std::vector<char> make_glb(const std::vector<GlbPrimitive>& primitives,
                            const nlohmann::json& extras = nullptr);
+
+// A GLB of `gltf` (its JSON chunk, padded with spaces) and `bin` (its BIN chunk, padded with zeros;
+// left out when empty). `gltf` must already declare the buffer's byteLength.
+std::vector<char> glb_file(const nlohmann::json& gltf, std::string_view bin);
 
 void write_file(const std::string& path, const std::vector<char>& bytes);
 

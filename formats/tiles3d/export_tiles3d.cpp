@@ -8,7 +8,8 @@
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
-#include "gltf/content_glb.h"
+#include "gltf/cell_content.h"
+#include "gltf/glb_merge.h"
 #include "gltf/glb_writer.h"
 #include "gltf/output_dir.h"
 #include "tiles3d/tileset.h"
@@ -64,13 +65,25 @@ std::pair<int, int> level_range(const Tiles3dExport& spec, const LayerInfo& dem)
   return {lo, hi};
 }
 
+// Content is shown at the levels its layer holds (its own and the simplified copies at coarser
+// ones): a tile finer than the layer's level would replace (REPLACE refinement) the tile holding
+// the content with tiles holding none.
+void require_content_levels(const Store& store, const std::string& layer, int finest) {
+  require_content_layer(store, layer);
+  const int level = store.require_layer(layer).level;
+  if (finest > level)
+    throw Error("content layer '" + layer + "' is at level " + std::to_string(level) +
+                ", coarser than the finest tiles (level " + std::to_string(finest) +
+                "): pass --levels A.." + std::to_string(level));
+}
+
 }  // namespace
 
 int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport& spec,
                        const std::string& out_dir) {
   TerrainSource source(store, grid, spec.terrain);
-  for (const std::string& layer : spec.content) require_content_layer(store, layer);
   const auto [lo, hi] = level_range(spec, source.dem);
+  for (const std::string& layer : spec.content) require_content_levels(store, layer, hi);
   const std::vector<CellId> tile_cells = layer_tile_cells(store, grid, source.dem, spec.region);
   std::map<int, std::vector<CellId>> cells;
   int64_t total = 0;
@@ -82,6 +95,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
   prepare_output_dir(out_dir, spec.terrain.force);
   source.fit_texture_stretch(cells[lo]);
   const LocalFrame frame = frame_for(grid, tile_cells);  // the data's centre
+  CellContentReader content_reader(store);
 
   // Level by level, finest first so that a parent's region can grow to hold its children's.
   // Meshes stream to their files, one per worker thread in memory; each cell's region is kept.
@@ -107,13 +121,15 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
       const std::string stem = tile_stem(l, cell);
       node->contents = {stem + ".glb"};
       for (const std::string& layer : spec.content) {
-        const auto content = get_content(store, layer, cell);
-        if (!content || content->empty()) continue;
-        const ContentGlb glb = content_glb(*content, frame, spec.terrain.bits, spec.terrain.draco,
-                                           layer + " " + cell.ToText());
+        const std::optional<CellContent> content = content_reader.read(layer, cell);
+        if (!content) continue;
         node->contents.push_back(stem + "." + layer + ".glb");
-        write_file(inside(out_dir, node->contents.back()).string(), glb.bytes);
-        extend_region(node->region, glb.region);
+        // Placed in the export's frame by a node matrix around the GLB's own scene.
+        const std::string name = layer + " " + cell.ToText();
+        write_file(inside(out_dir, node->contents.back()).string(),
+                   merge_glbs({{content->glb, frame_to_frame(content->origin, frame), name}},
+                              nullptr, "content " + name));
+        extend_region(node->region, content->region);
       }
     }
     // Children (level l) under their parents (level l - 1) when those exist.

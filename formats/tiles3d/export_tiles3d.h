@@ -15,8 +15,9 @@ namespace maquette {
 
 struct Tiles3dExport {
   TerrainSettings terrain;
-  // 3D content layers (gltf/content_layer.h): a cell's content becomes an additional content of
-  // its tile, OUTDIR/tiles/<LEVEL>/<CELL>.<LAYER>.glb (cells without a terrain tile are skipped).
+  // 3D content layers (kinds mesh, instances, volume; tiles3d/content_tile.h): a cell's content
+  // becomes an additional content of its tile, OUTDIR/tiles/<LEVEL>/<CELL>.<LAYER>.glb (cells
+  // without a terrain tile are skipped; coarser tiles get the layer's simplified copies).
   std::vector<std::string> content;
   RegionSpec region;
   int min_level = -1, max_level = -1;  // -1: the DEM's level, and 4 levels above it

@@ -104,8 +104,10 @@ void add_features_command(CLI::App* exp, const std::string& name, FeatureFormat 
   cmd->callback([o] { run_export(*o); });
 }
 
-void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture) {
-  cmd->add_option("--dem", t.dem, "DEM layer (one-channel heights in metres)")->required();
+void add_terrain_options(CLI::App* cmd, TerrainSettings& t, bool texture,
+                         bool dem_required = true) {
+  cmd->add_option("--dem", t.dem, "DEM layer (one-channel heights in metres)")
+      ->required(dem_required);
   if (texture) cmd->add_option("--texture", t.texture, "Imagery layer (uint8, 1, 3 or 4 channels)");
   cmd->add_option("--decimation", t.decimation, "A vertex every K DEM pixels")
       ->capture_default_str();
@@ -131,7 +133,8 @@ void add_tiles3d_command(CLI::App* exp) {
   add_terrain_options(cmd, o->spec.terrain, true);
   add_region_options(cmd, o->region, "Only tiles overlapping this lon/lat box");
   cmd->add_option("--content", o->spec.content,
-                  "3D content layers (meshes, instances) added to the tiles of their cells");
+                  "3D content layers (kinds mesh, instances, volume) added to the tiles of "
+                  "their cells");
   cmd->add_option("--levels", o->levels,
                   "Cell levels A..B (default: the DEM's level and 4 above; coarser levels read "
                   "overviews)");
@@ -143,12 +146,15 @@ void add_tiles3d_command(CLI::App* exp) {
 
 void add_glb_command(CLI::App* exp) {
   auto o = std::make_shared<MeshJob>();
-  CLI::App* cmd =
-      exp->add_subcommand("glb", "Write the terrain of a few cells into one Draco-compressed GLB");
+  CLI::App* cmd = exp->add_subcommand(
+      "glb", "Write the terrain and 3D content of a few cells into one Draco-compressed GLB");
   cmd->add_option("STORE", o->store, "Store file")->required();
   cmd->add_option("OUT", o->out, "Output .glb file")->required();
   cmd->add_option("--cells", o->cells, "Cells (text ids), each at its own level")->required();
-  add_terrain_options(cmd, o->terrain, true);
+  add_terrain_options(cmd, o->terrain, true, false);
+  cmd->add_option("--content", o->content,
+                  "3D content layers (kinds mesh, instances, volume) of the cells, each cell's "
+                  "content under a node of its own (with --dem, over the terrain)");
   cmd->add_flag(
       "--no-draco", [o](int64_t) { o->terrain.draco = false; }, "Plain (uncompressed) GLB");
   cmd->callback([o] { run_glb_export(*o); });

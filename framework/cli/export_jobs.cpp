@@ -145,7 +145,7 @@ void run_export(Tiles3dJob job) {
 void run_glb_export(const MeshJob& job) {
   const auto store = Store::open(job.store, Store::Mode::ReadOnly);
   plugin_function<decltype(maquette_mesh_glb)>(kMeshPlugin, kGlbEntry)(
-      *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);
+      *store, default_grid(), GlbExport{job.terrain, job.content}, parse_cells(job.cells), job.out);
   spdlog::info("wrote {}", job.out);
 }
 

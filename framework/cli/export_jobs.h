@@ -49,7 +49,8 @@ struct Tiles3dJob {
 struct MeshJob {  // glb, drc
   std::string store, out;
   std::vector<std::string> cells;
-  TerrainSettings terrain;
+  TerrainSettings terrain;           // glb: terrain.dem empty for content only
+  std::vector<std::string> content;  // glb only: 3D content layers
 };
 
 // Each writes its files, then logs them. Throws maquette::Error.

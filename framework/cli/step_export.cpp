@@ -29,10 +29,11 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"geojson", {"*layer", "bbox", "cells"}},
         {"gpkg", {"*layer", "bbox", "cells"}},
         {"tiles3d", {"texture", "stretch", "draco", "bbox", "cells", "content", "levels"}},
-        {"glb", {"texture", "stretch", "draco", "*cells"}},
+        {"glb", {"texture", "stretch", "draco", "*cells", "content", "dem"}},
         {"drc", {"*cells"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
-      o[f].insert(o[f].end(), terrain.begin(), terrain.end());
+      for (const std::string& option : terrain)
+        if (!(f == std::string("glb") && option == "*dem")) o[f].push_back(option);
     return o;
   }();
   return options;
@@ -88,7 +89,7 @@ OperatorSpec export_spec() {
         {"force", typed("boolean", "above max_mib; tiles3d: into a non-empty output")},
         {"draco", typed("boolean", "false: plain GLB")},
         {"stretch", typed("boolean", "false: the texture as stored, not stretched 2-98 %")},
-        {"content", array_of("string", "tiles3d: 3D content layers")},
+        {"content", array_of("string", "tiles3d, glb: 3D content layers")},
         {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
   return s;
 }
@@ -203,8 +204,9 @@ class ExportStep : public TaskOperator {
       read_param(p, "content", job.spec.content);
       run_export(std::move(job));
     } else {
-      MeshJob job{ctx.store_path, out, {}, terrain_of(p)};
+      MeshJob job{ctx.store_path, out, {}, terrain_of(p), {}};
       read_param(p, "cells", job.cells);
+      read_param(p, "content", job.content);
       (format == "glb" ? run_glb_export : run_drc_export)(job);
     }
   }

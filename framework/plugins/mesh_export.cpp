@@ -9,9 +9,9 @@ int64_t maquette_mesh_tiles3d(const maquette::Store& store, const maquette::Grid
 }
 
 void maquette_mesh_glb(const maquette::Store& store, const maquette::Grid& grid,
-                       const maquette::TerrainSettings& settings,
-                       const std::vector<maquette::CellId>& cells, const std::string& out) {
-  maquette::export_glb(store, grid, settings, cells, out);
+                       const maquette::GlbExport& spec, const std::vector<maquette::CellId>& cells,
+                       const std::string& out) {
+  maquette::export_glb(store, grid, spec, cells, out);
 }
 
 void maquette_mesh_drc(const maquette::Store& store, const maquette::Grid& grid,

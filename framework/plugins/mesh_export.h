@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "gltf/export_glb.h"
 #include "gltf/terrain_level.h"
 #include "tiles3d/export_tiles3d.h"
 
@@ -24,7 +25,7 @@ extern "C" int64_t maquette_mesh_tiles3d(const maquette::Store& store, const maq
                                          const std::string& out_dir);
 // export_glb and export_drc (gltf/export_glb.h).
 extern "C" void maquette_mesh_glb(const maquette::Store& store, const maquette::Grid& grid,
-                                  const maquette::TerrainSettings& settings,
+                                  const maquette::GlbExport& spec,
                                   const std::vector<maquette::CellId>& cells,
                                   const std::string& out);
 extern "C" void maquette_mesh_drc(const maquette::Store& store, const maquette::Grid& grid,

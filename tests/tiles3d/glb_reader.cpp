@@ -19,7 +19,7 @@ uint32_t u32(const std::vector<char>& b, size_t at) {
 }
 
 DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
-                        const nlohmann::json& prim, const std::array<double, 3>& translation) {
+                        const nlohmann::json& prim, const Glb& glb, int node) {
   DecodedPrimitive out;
   const auto& ext = prim["extensions"]["KHR_draco_mesh_compression"];
   const auto& view = j["bufferViews"][ext["bufferView"].get<int>()];
@@ -56,7 +56,7 @@ DecodedPrimitive decode(const nlohmann::json& j, const std::vector<char>& bin,
       lo[k] = std::min(lo[k], p[k]);
       hi[k] = std::max(hi[k], p[k]);
     }
-    out.positions.push_back({translation[0] + p[0], translation[1] + p[1], translation[2] + p[2]});
+    out.positions.push_back(glb.place(node, {p[0], p[1], p[2]}));
   }
   if (ext["attributes"].contains("NORMAL")) {
     const draco::PointAttribute* nrm =
@@ -88,18 +88,35 @@ Glb read_glb(const std::string& path) {
   glb.json = nlohmann::json::parse(b.begin() + 20, b.begin() + 20 + json_len);
   const size_t bin_at = 20 + json_len + 8;
   glb.bin.assign(b.begin() + long(bin_at), b.end());
-  std::map<int, std::array<double, 3>> mesh_translation;
+  std::map<int, int> mesh_node;
   for (size_t n = 0; n < glb.json["nodes"].size(); ++n)
-    mesh_translation[glb.json["nodes"][n]["mesh"].get<int>()] = glb.translation(int(n));
+    if (glb.json["nodes"][n].contains("mesh"))
+      mesh_node[glb.json["nodes"][n]["mesh"].get<int>()] = int(n);
   for (size_t m = 0; m < glb.json["meshes"].size(); ++m)
     for (const auto& prim : glb.json["meshes"][m]["primitives"])
       if (prim.contains("extensions"))  // Draco: plain primitives are read through floats()
-        glb.primitives.push_back(decode(glb.json, glb.bin, prim, mesh_translation[int(m)]));
+        glb.primitives.push_back(decode(glb.json, glb.bin, prim, glb, mesh_node.at(int(m))));
   return glb;
 }
 
 std::array<double, 3> Glb::translation(int node) const {
   return json["nodes"][node].value("translation", std::array<double, 3>{0, 0, 0});
+}
+
+std::array<double, 3> Glb::place(int node, const std::array<double, 3>& p) const {
+  const auto& n = json["nodes"][node];
+  std::array<double, 3> q = p;
+  if (n.contains("matrix")) {
+    const auto m = n["matrix"].get<std::array<double, 16>>();
+    for (int r = 0; r < 3; ++r) q[r] = m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r];
+  } else {
+    const auto t = translation(node);
+    for (int r = 0; r < 3; ++r) q[r] += t[r];
+  }
+  for (size_t parent = 0; parent < json["nodes"].size(); ++parent)
+    for (const auto& child : json["nodes"][parent].value("children", nlohmann::json::array()))
+      if (child.get<int>() == node) return place(int(parent), q);
+  return q;
 }
 
 std::vector<float> Glb::floats(int accessor) const {

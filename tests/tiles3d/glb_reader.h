@@ -10,7 +10,8 @@
 namespace maquette::test {
 
 struct DecodedPrimitive {
-  // Decoded, plus the translation of the mesh's node: the export's frame (glTF axes).
+  // Decoded, then placed by the mesh's node and its parents (matrix or translation): the
+  // export's frame (glTF axes).
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<float, 3>> normals;   // decoded, one per position (if any)
   std::vector<std::array<uint32_t, 3>> faces;  // into positions
@@ -24,6 +25,9 @@ struct Glb {
 
   // A node's translation (0 when it has none).
   std::array<double, 3> translation(int node = 0) const;
+  // A point of a node's frame in the scene's: through the node's and its parents' matrix or
+  // translation (the transforms the exports write).
+  std::array<double, 3> place(int node, const std::array<double, 3>& p) const;
   // The values of a plain float accessor (e.g. instance attributes).
   std::vector<float> floats(int accessor) const;
   // The bytes of image `index` (a PNG or JPEG file).

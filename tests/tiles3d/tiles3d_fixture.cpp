@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "gltf/content_layer.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "test_tiles.h"
@@ -13,39 +12,6 @@ namespace {
 RawTile dem_tile(const Grid& grid, CellId cell) {
   return make_tile<float>(grid, cell, kTileSize, 1,
                           [](const TileSample& s, int) { return dem_field(s.lonlat); });
-}
-
-LonLat centre(const Grid& grid, CellId cell) {
-  const PlaneSquare sq = grid.plane_square(cell);
-  return grid.inverse({sq.x_min + sq.side / 2, sq.y_max - sq.side / 2});
-}
-
-// A 100 m box standing on the terrain at the cell's centre (8 corners, 12 triangles).
-ContentTile box_content(const Grid& grid, CellId cell) {
-  const LonLat c = centre(grid, cell);
-  const double dlat = 50 / 111320.0, dlon = dlat / std::cos(c.lat * M_PI / 180);
-  ContentTile box;
-  for (int i = 0; i < 8; ++i)
-    box.positions.insert(box.positions.end(),
-                         {c.lon + (i & 1 ? dlon : -dlon), c.lat + (i & 4 ? -dlat : dlat),
-                          dem_field(c) + (i & 2 ? 100 : 0)});
-  box.indices = {0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
-                 1, 3, 7, 1, 7, 5, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
-  box.color = {0.8, 0.3, 0.2};
-  return box;
-}
-
-ContentTile tree_content(const Grid& grid, CellId cell) {
-  const LonLat c = centre(grid, cell);
-  ContentTile trees;
-  trees.kind = ContentTile::Kind::Instances;
-  trees.prototype = "cone";
-  trees.color = {0.2, 0.5, 0.2};
-  for (int i = 0; i < kTreeCount; ++i) {
-    const LonLat p{c.lon + 0.01 * i, c.lat - 0.01 * i};
-    trees.instances.push_back({p.lon, p.lat, dem_field(p), 20.0 + i, 30.0 * i});
-  }
-  return trees;
 }
 
 Tiles3dFixture build() {
@@ -72,8 +38,6 @@ Tiles3dFixture build() {
           return uint8_t(int(std::abs(s.lonlat.lon * 50 + s.lonlat.lat * 30 + k * 60)) % 256);
         }));
   }
-  put_content(batch, "boxes", f.block[0], box_content(grid, f.block[0]));
-  put_content(batch, "trees", f.block[1], tree_content(grid, f.block[1]));
   batch.commit();
   store->update_overviews("dem");
   store->update_overviews("rgb");

@@ -1,8 +1,6 @@
 // A small store for the 3D Tiles tests: `dem` (float32 metres, a smooth field of lon/lat) and
 // `rgb` (uint8 imagery) on a 2 x 2 block of level-6 cells and on two cells either side of the
-// P/Q face seam, 32 x 32 samples per tile, overviews built; 3D content layers `boxes` (a 100 m
-// box on the terrain at the centre of block[0]) and `trees` (kTreeCount cones on block[1],
-// instance i: 0.01 degrees east and south of the centre per i, scale 20 + i m, heading 30 i).
+// P/Q face seam, 32 x 32 samples per tile, overviews built.
 #pragma once
 
 #include <string>
@@ -14,7 +12,6 @@ namespace maquette::test {
 
 inline constexpr int kTileSize = 32;
 inline constexpr int kLevel = 6;
-inline constexpr int kTreeCount = 5;
 
 struct Tiles3dFixture {
   std::string store_path;

@@ -21,13 +21,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool is_terrain(const std::string& uri) { return !fs::path(uri).stem().has_extension(); }
-
 const Export& tiles3d_export() {
   static const Export e = [] {
     const std::string dir = temp_dir() + "/tiles";
     const auto r = run_maquette("export tiles3d " + tiles3d_fixture().store_path + " " + dir +
-                                " --dem dem --texture rgb --levels 4..6 --content boxes trees");
+                                " --dem dem --texture rgb --levels 4..6");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_export(dir);
   }();
@@ -44,87 +42,10 @@ TEST(Tiles3d, TilesetTreeAndContents) {
   // 6 cells at level 6, their parents at 5 and 4 (the seam cells have distinct ancestors).
   EXPECT_GE(e.glbs.size(), 6u + 3u + 3u);
   for (const auto& [uri, glb] : e.glbs) {
-    if (!is_terrain(uri)) continue;
     ASSERT_EQ(glb.primitives.size(), 1u) << uri;
     EXPECT_GT(glb.primitives[0].index_count, 0u);
     EXPECT_EQ(glb.json["extensionsRequired"][0], "KHR_draco_mesh_compression");
     EXPECT_EQ(glb.json["images"][0]["mimeType"], "image/jpeg");
-  }
-}
-
-const Glb& content_of(CellId c, const std::string& layer) {
-  return tiles3d_export().glbs.at("tiles/" + std::to_string(c.level()) + "/" + c.ToText() + "." +
-                                  layer + ".glb");
-}
-
-TEST(Tiles3d, ContentLayersAreExtraContents) {
-  const Export& e = tiles3d_export();
-  const auto& f = tiles3d_fixture();
-  size_t contents = 0;
-  for (const auto& [uri, glb] : e.glbs) contents += !is_terrain(uri);
-  EXPECT_EQ(contents, 2u);  // only the cells holding content
-  const Glb& boxes = content_of(f.block[0], "boxes");
-  ASSERT_EQ(boxes.primitives.size(), 1u);
-  EXPECT_EQ(boxes.primitives[0].positions.size(), 8u);
-  EXPECT_EQ(boxes.primitives[0].index_count, 36u);
-  EXPECT_EQ(boxes.json["extensionsRequired"], json({"KHR_draco_mesh_compression"}));
-  EXPECT_FALSE(instancing(boxes));
-  // 100 m wide and high, tilted in the export frame (the accessor's bounds are the decoded ones:
-  // glb_reader checks).
-  const auto& pos =
-      boxes.json["accessors"]
-                [boxes.json["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<int>()];
-  for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(pos["max"][k].get<double>() - pos["min"][k].get<double>(), 107, 7) << k;
-}
-
-TEST(Tiles3d, InstancesDecodeAsWritten) {
-  const Export& e = tiles3d_export();
-  const auto& f = tiles3d_fixture();
-  const Glb& trees = content_of(f.block[1], "trees");
-  EXPECT_EQ(trees.json["extensionsUsed"], json({"EXT_mesh_gpu_instancing"}));
-  EXPECT_EQ(trees.json["extensionsRequired"], trees.json["extensionsUsed"]);
-  const auto& cone = trees.json["meshes"][0]["primitives"][0];
-  EXPECT_EQ(trees.floats(cone["attributes"]["POSITION"]).size(), 3u * 18);  // apex, centre, 16
-  const auto inst = instancing(trees);
-  ASSERT_TRUE(inst);
-  const auto t = trees.floats((*inst)["TRANSLATION"]), q = trees.floats((*inst)["ROTATION"]),
-             sc = trees.floats((*inst)["SCALE"]);
-  ASSERT_EQ(t.size(), size_t(3 * kTreeCount));
-  ASSERT_EQ(q.size(), size_t(4 * kTreeCount));
-  const auto m = e.tileset["root"]["transform"].get<std::vector<double>>();
-  const Grid& grid = default_grid();
-  const PlaneSquare sq = grid.plane_square(f.block[1]);
-  const LonLat c = grid.inverse({sq.x_min + sq.side / 2, sq.y_max - sq.side / 2});
-  for (int i = 0; i < kTreeCount; ++i) {
-    const LonLat want{c.lon + 0.01 * i, c.lat - 0.01 * i};
-    const Pos o = trees.translation();
-    const Pos base = {o[0] + t[3 * i], o[1] + t[3 * i + 1], o[2] + t[3 * i + 2]};
-    const auto g = geodetic(m, base);
-    EXPECT_NEAR(g[0], want.lon, 1e-6);
-    EXPECT_NEAR(g[1], want.lat, 1e-6);
-    EXPECT_NEAR(g[2], dem_field(want), 0.05);
-    EXPECT_FLOAT_EQ(sc[3 * i], 20.0f + float(i));
-    // The prototype's up (0, 1, 0) and north (0, 0, -1) turned by the quaternion: up points up
-    // and north points at the heading, measured in the instance's local frame.
-    auto rotate = [&](std::array<double, 3> v) {
-      const double x = q[4 * i], y = q[4 * i + 1], z = q[4 * i + 2], w = q[4 * i + 3];
-      const std::array<double, 3> u = {x, y, z};
-      const std::array<double, 3> uv = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                                        u[0] * v[1] - u[1] * v[0]};
-      const std::array<double, 3> uuv = {u[1] * uv[2] - u[2] * uv[1], u[2] * uv[0] - u[0] * uv[2],
-                                         u[0] * uv[1] - u[1] * uv[0]};
-      for (int k = 0; k < 3; ++k) v[k] += 2 * (w * uv[k] + uuv[k]);
-      return Pos{base[0] + 50 * v[0], base[1] + 50 * v[1], base[2] + 50 * v[2]};
-    };
-    const auto top = geodetic(m, rotate({0, 1, 0}));
-    EXPECT_NEAR(top[0], g[0], 1e-6);
-    EXPECT_NEAR(top[1], g[1], 1e-6);
-    EXPECT_NEAR(top[2] - g[2], 50, 0.05);
-    const auto ahead = geodetic(m, rotate({0, 0, -1}));
-    // (on a sphere: the ellipsoid's radii of curvature differ by under 1 %)
-    const double de = (ahead[0] - g[0]) * std::cos(g[1] * M_PI / 180), dn = ahead[1] - g[1];
-    EXPECT_NEAR(std::atan2(de, dn) * 180 / M_PI, 30.0 * i, 0.5) << i;
   }
 }
 
@@ -183,15 +104,6 @@ TEST(Tiles3d, EdgesMatchAtACubeCorner) {
   EXPECT_GE(shared_vertices(gn, go), size_t(kTileSize + 1)) << "N/O seam";
   EXPECT_GE(shared_vertices(gn, gp), size_t(kTileSize + 1)) << "N/P seam";
   EXPECT_GE(shared_vertices(go, gp), size_t(kTileSize + 1)) << "O/P seam";
-}
-
-TEST(Tiles3d, UnknownContentLayerIsRefused) {
-  const std::string dir = temp_dir() + "/nocontent";
-  const auto r = run_maquette("export tiles3d " + tiles3d_fixture().store_path + " " + dir +
-                              " --dem dem --content shrubs");
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("shrubs"), std::string::npos) << r.err;
-  EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir)) << "wrote into " << dir;
 }
 
 TEST(Tiles3d, GltfValidator) {

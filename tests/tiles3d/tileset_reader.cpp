@@ -73,9 +73,8 @@ void walk(const fs::path& file, const json& tile, const json* parent, Export& ou
     Glb glb = read_glb(uri.string());
     if (const auto inst = instancing(glb)) {  // the prototypes' bases and tops
       const auto t = glb.floats((*inst)["TRANSLATION"]), sc = glb.floats((*inst)["SCALE"]);
-      const Pos o = glb.translation();
       for (size_t i = 0; i < sc.size() / 3; ++i)
-        expect_inside(r, geodetic(m, {o[0] + t[3 * i], o[1] + t[3 * i + 1], o[2] + t[3 * i + 2]}),
+        expect_inside(r, geodetic(m, glb.place(0, {t[3 * i], t[3 * i + 1], t[3 * i + 2]})),
                       sc[3 * i], uri);
     } else {
       for (const auto& prim : glb.primitives)

@@ -103,7 +103,9 @@ function applyShading(root) {
         obj.geometry.computeVertexNormals();  // hillshade needs normals
       }
     }
-    obj.material = state.shading === 'hillshade' ? hillshadeMaterial : obj.userData.maquetteTextured;
+    // 3D content (a tile's extra contents) keeps its own colours: the hillshade is the terrain's.
+    const hillshade = state.shading === 'hillshade' && !obj.userData.maquetteContent;
+    obj.material = hillshade ? hillshadeMaterial : obj.userData.maquetteTextured;
   });
 }
 
@@ -204,6 +206,7 @@ tiles.addEventListener('load-model', ({ scene: model, tile, url }) => {
       exaggeration.applyToModel(model, gltf.scene);
       // the renderer updates tile world matrices itself, not every frame: do it for the new child
       model.updateMatrixWorld(true);
+      gltf.scene.traverse((o) => { o.userData.maquetteContent = true; });
       applyShading(gltf.scene);
       state.extraContentsLoaded++;
     }).catch((e) => reportError(`cannot load ${extraUrl}: ${e.message || e}`))

@@ -1,0 +1,211 @@
+#include "gltf/cell_content.h"
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+
+#include "content/content_blob.h"
+#include "content/instances_codec.h"
+#include "core/error.h"
+#include "gltf/glb_merge.h"
+#include "gltf/instances_glb.h"
+#include "gltf/mesh_glb.h"
+#include "plugins/vdb_content.h"
+#include "runtime/plugin.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using Box = std::array<Vec3, 2>;  // min, max corners in a content's ENU frame (metres)
+
+constexpr double kPad = 0.01;  // metres around a content's box in its region
+constexpr double kEarthRadius = 6371008.8;
+
+Vec3 enu_of_gltf(const Vec3& g) { return {g[0], -g[2], g[1]}; }
+Vec3 gltf_of_enu(const Vec3& v) { return {v[0], v[2], -v[1]}; }
+
+Box empty_box() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  return {Vec3{kInf, kInf, kInf}, Vec3{-kInf, -kInf, -kInf}};
+}
+
+void extend(Box& b, const Vec3& lo, const Vec3& hi) {
+  for (size_t k = 0; k < 3; ++k) {
+    b[0][k] = std::min(b[0][k], lo[k]);
+    b[1][k] = std::max(b[1][k], hi[k]);
+  }
+}
+
+// The region of a box in the ENU frame at `o`: its corners and the point of its bottom nearest
+// the origin's vertical (where the bottom is lowest above the curved ellipsoid), padded. A box
+// across the antimeridian or reaching a pole gets every longitude (tileset.h's regions keep
+// west <= east).
+std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
+  const GeographicLib::LocalCartesian enu(o.lat, o.lon, o.height);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 8; ++i) points.push_back({b[i & 1][0], b[(i >> 1) & 1][1], b[i >> 2][2]});
+  points.push_back({std::clamp(0.0, b[0][0], b[1][0]), std::clamp(0.0, b[0][1], b[1][1]), b[0][2]});
+  constexpr double kPi = std::numbers::pi, rad = kPi / 180;
+  std::array<double, 6> r = {kPi,
+                             kPi,
+                             -kPi,
+                             -kPi,
+                             std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()};
+  double lon_lo = 360, lon_hi = -360;  // from the origin's longitude, unwrapped
+  for (const Vec3& p : points) {
+    double lat, lon, h;
+    enu.Reverse(p[0], p[1], p[2], lat, lon, h);
+    const double dlon = std::remainder(lon - o.lon, 360.0);
+    lon_lo = std::min(lon_lo, dlon);
+    lon_hi = std::max(lon_hi, dlon);
+    r[1] = std::min(r[1], lat * rad);
+    r[3] = std::max(r[3], lat * rad);
+    r[4] = std::min(r[4], h - kPad);
+    r[5] = std::max(r[5], h + kPad);
+  }
+  const double dlat = kPad / kEarthRadius;
+  r[1] = std::max(-kPi / 2, r[1] - dlat);
+  r[3] = std::min(kPi / 2, r[3] + dlat);
+  const double dlon = dlat / std::max(1e-9, std::cos(std::max(std::abs(r[1]), std::abs(r[3]))));
+  const double west = (o.lon + lon_lo) * rad - dlon, east = (o.lon + lon_hi) * rad + dlon;
+  const bool all_longitudes = west < -kPi || east > kPi || r[1] == -kPi / 2 || r[3] == kPi / 2;
+  r[0] = all_longitudes ? -kPi : west;
+  r[2] = all_longitudes ? kPi : east;
+  return r;
+}
+
+// The box of every primitive's POSITION bounds (glTF requires them), in ENU: mesh_glb's one node
+// has no transform.
+Box mesh_box(const json& gltf, const std::string& where) {
+  Box box = empty_box();
+  try {
+    for (const json& mesh : gltf.at("meshes"))
+      for (const json& prim : mesh.at("primitives")) {
+        const json& a = gltf.at("accessors").at(prim.at("attributes").at("POSITION").get<size_t>());
+        const Vec3 lo = a.at("min").get<Vec3>(), hi = a.at("max").get<Vec3>();
+        // glTF (x, y, z) = (east, up, -north): north spans -max z .. -min z.
+        extend(box, {lo[0], -hi[2], lo[1]}, {hi[0], -lo[2], hi[1]});
+      }
+  } catch (const json::exception& e) {
+    throw Error("content GLB (" + where + "): no POSITION bounds (" + e.what() + ")");
+  }
+  return box;
+}
+
+CellContent mesh_content(std::string glb, const EnuOrigin& origin, const std::string& where) {
+  const Box box = mesh_box(split_glb(glb, "content GLB (" + where + ")").gltf, where);
+  return {std::move(glb), origin, box_region(origin, box)};
+}
+
+// The largest distance of a model's vertex from its origin (a sphere holding it, any rotation).
+double model_radius(const MeshContent& model) {
+  double r2 = 0;
+  for (const MeshObject& o : model.objects)
+    for (size_t i = 0; i + 2 < o.positions.size(); i += 3)
+      r2 = std::max(r2, double(o.positions[i]) * o.positions[i] +
+                            double(o.positions[i + 1]) * o.positions[i + 1] +
+                            double(o.positions[i + 2]) * o.positions[i + 2]);
+  return std::sqrt(r2);
+}
+
+std::optional<CellContent> instances_content(const InstancesContent& c,
+                                             const std::vector<const MeshContent*>& models) {
+  if (c.size() == 0) return std::nullopt;
+  std::vector<double> radius;
+  for (const MeshContent* m : models) radius.push_back(model_radius(*m));
+  Box box = empty_box();
+  for (size_t i = 0; i < c.size(); ++i) {
+    const float* s = &c.scale[3 * i];
+    const double r =
+        radius[c.prototype[i]] * std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2])});
+    const Vec3 p = {c.position[3 * i], c.position[3 * i + 1], c.position[3 * i + 2]};
+    extend(box, {p[0] - r, p[1] - r, p[2] - r}, {p[0] + r, p[1] + r, p[2] + r});
+  }
+  const std::vector<char> glb = instances_glb(c, models);
+  return CellContent{{glb.begin(), glb.end()}, c.origin, box_region(c.origin, box)};
+}
+
+std::optional<CellContent> volume_content(const VolumeContent& volume, const std::string& where) {
+  static auto* const mesh_volume =
+      plugin_function<decltype(maquette_vdb_mesh)>(kVdbPlugin, kVdbMeshEntry);
+  MeshContent mesh;
+  mesh_volume(volume, VolumeMeshSettings{}, where, mesh);
+  std::erase_if(mesh.objects, [](const MeshObject& o) { return o.indices.empty(); });
+  if (mesh.objects.empty()) return std::nullopt;
+  mesh.origin = volume.origin;
+  return mesh_content(encode_mesh_glb(mesh), volume.origin, where);
+}
+
+}  // namespace
+
+std::array<double, 16> frame_to_frame(const EnuOrigin& from, const LocalFrame& to) {
+  const std::array<double, 16> a = LocalFrame({from.lon, from.lat}).enu_to_ecef();
+  const std::array<double, 16> b = to.enu_to_ecef();
+  auto column = [](const std::array<double, 16>& m, size_t c) {
+    return Vec3{m[4 * c], m[4 * c + 1], m[4 * c + 2]};
+  };
+  // ECEF vector d in `to`'s ENU axes (the columns of b are its unit axes).
+  auto to_enu = [&](const Vec3& d) {
+    Vec3 v;
+    for (size_t k = 0; k < 3; ++k) {
+      const Vec3 axis = column(b, k);
+      v[k] = axis[0] * d[0] + axis[1] * d[1] + axis[2] * d[2];
+    }
+    return v;
+  };
+  auto from_axes = [&](const Vec3& enu) {  // `from`'s ENU vector in ECEF
+    Vec3 d{};
+    for (size_t k = 0; k < 3; ++k)
+      for (size_t r = 0; r < 3; ++r) d[r] += column(a, k)[r] * enu[k];
+    return d;
+  };
+  std::array<double, 16> m{};
+  for (size_t j = 0; j < 3; ++j) {
+    Vec3 g{};
+    g[j] = 1;
+    const Vec3 c = gltf_of_enu(to_enu(from_axes(enu_of_gltf(g))));
+    for (size_t r = 0; r < 3; ++r) m[4 * j + r] = c[r];
+  }
+  // The origin, `from.height` above the ellipsoid along its up axis.
+  const Vec3 up = column(a, 2);
+  Vec3 d;
+  for (size_t r = 0; r < 3; ++r) d[r] = a[12 + r] + from.height * up[r] - b[12 + r];
+  const Vec3 t = gltf_of_enu(to_enu(d));
+  for (size_t r = 0; r < 3; ++r) m[12 + r] = t[r];
+  m[15] = 1;
+  return m;
+}
+
+void require_content_layer(const Store& store, const std::string& layer) {
+  const auto info = store.layer(layer);
+  if (!info || !layer_content_kind(info->kind))
+    throw Error("no content layer '" + layer + "' in " + store.path() + " (" +
+                (info ? "it is a " + std::string(layer_kind_name(info->kind)) + " layer"
+                      : "no such layer") +
+                "; content layers are of kind mesh, instances or volume)");
+}
+
+std::optional<CellContent> CellContentReader::read(const std::string& layer, CellId cell) {
+  const std::optional<std::string> blob = store_.get_content(layer, cell);
+  if (!blob) return std::nullopt;
+  const std::string where = "layer " + layer + ", cell " + cell.ToText();
+  const ContentEnvelope e = read_content_envelope(*blob, where);
+  switch (e.kind) {
+    case ContentKind::Mesh:
+      return mesh_content(std::string(content_payload(*blob)), e.origin, where);
+    case ContentKind::Instances: {
+      const InstancesContent c = unwrap_instances(*blob, where);
+      return instances_content(c, prototypes_.models(c, where));
+    }
+    case ContentKind::Volume:
+      return volume_content({e.origin, std::string(content_payload(*blob))}, where);
+  }
+  return std::nullopt;
+}
+
+}  // namespace maquette
