@@ -3,7 +3,7 @@
 // instances (instances layer, EXT_mesh_gpu_instancing with per-instance colour) and a lake
 // (volume layer) on grey untextured terrain) opened in Chromium; the screenshot must show red
 // around where the box's top projects and not around the trees, and green around each tree and
-// not around the box.
+// not around the box, also with the hillshade shading (which is the terrain's only).
 //
 // node content.mjs --maquette BIN --viewer DIR --node-modules DIR --out DIR --tileset-dir DIR
 //   --expect FILE (make_content_store's JSON: lon, lat, height of the box's top and the trees)
@@ -76,6 +76,13 @@ try {
     check(green > 5, `green around tree ${i} (${green} pixels)`);
     check(around(png, t, radius, isRed) === 0, `no red around tree ${i}`);
   });
+  // The hillshade is the terrain's: content keeps its colours.
+  await b.page.click('#toggle-shading');
+  await b.page.waitForFunction(() => document.documentElement.dataset.shading === 'hillshade', null, { timeout: 5000 });
+  await waitLoaded(b, 'hillshade', out, () => ({ state: window.__maquette }), 60000);
+  const hill = await shoot(b, out, 'viewer-content-hillshade.png', PNG);
+  check(around(hill, box, radius, isRed) > 20, `hillshade: red around the box's top (${around(hill, box, radius, isRed)} pixels)`);
+  check(around(hill, trees[0], radius, isGreen) > 5, `hillshade: green around tree 0 (${around(hill, trees[0], radius, isGreen)} pixels)`);
   exitCode = checks.failures.length ? 1 : 0;
 } catch (e) {
   log(`FAIL ${e.stack || e}`);
