@@ -3,9 +3,9 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "content/content_blob.h"
 #include "content/instances_codec.h"
@@ -40,15 +40,18 @@ void extend(Box& b, const Vec3& lo, const Vec3& hi) {
   }
 }
 
-// The region of a box in the ENU frame at `o`: its corners and the point of its bottom nearest
-// the origin's vertical (where the bottom is lowest above the curved ellipsoid), padded. A box
-// across the antimeridian or reaching a pole gets every longitude (tileset.h's regions keep
-// west <= east).
+// The region of a box in the ENU frame at `o`, padded: the box's points at x and y of its sides
+// and of the origin's vertical (clamped to the box), at its bottom and top. Those hold the
+// extremes: the ellipsoid curves away from the frame's plane, so the bottom is lowest (and a
+// north or south side reaches farthest in latitude) nearest the origin's vertical, and the top
+// highest at its corners. A box across the antimeridian or reaching a pole gets every longitude
+// (tileset.h's regions keep west <= east).
 std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
   const GeographicLib::LocalCartesian enu(o.lat, o.lon, o.height);
   std::vector<Vec3> points;
-  for (int i = 0; i < 8; ++i) points.push_back({b[i & 1][0], b[(i >> 1) & 1][1], b[i >> 2][2]});
-  points.push_back({std::clamp(0.0, b[0][0], b[1][0]), std::clamp(0.0, b[0][1], b[1][1]), b[0][2]});
+  for (const double x : {b[0][0], std::clamp(0.0, b[0][0], b[1][0]), b[1][0]})
+    for (const double y : {b[0][1], std::clamp(0.0, b[0][1], b[1][1]), b[1][1]})
+      for (const double z : {b[0][2], b[1][2]}) points.push_back({x, y, z});
   constexpr double kPi = std::numbers::pi, rad = kPi / 180;
   std::array<double, 6> r = {kPi,
                              kPi,

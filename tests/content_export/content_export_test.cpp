@@ -272,6 +272,10 @@ TEST(ContentExport, BadInput) {
         "layer orchard, cell " + s.block[3].ToText() + ": unknown prototype 'oak'");
   fails("--content shrubs", "no content layer 'shrubs'");
   fails("--content dem", "no content layer 'dem'");
+  // Tiles finer than a content layer's level would replace the tiles holding its content.
+  fails("--content parks", "content layer 'parks' is at level " + std::to_string(kLevel - 1) +
+                               ", coarser than the finest tiles (level " + std::to_string(kLevel) +
+                               ")");
   const std::string glb = temp_dir() + "/bad.glb";
   const auto none =
       run_maquette("export glb " + s.path + " " + glb + " --cells " + s.block[0].ToText());

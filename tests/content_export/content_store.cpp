@@ -14,11 +14,11 @@
 namespace maquette::test {
 namespace {
 
-LayerInfo content_layer(const std::string& name, LayerKind kind) {
+LayerInfo content_layer(const std::string& name, LayerKind kind, int level = kLevel) {
   LayerInfo l;
   l.name = name;
   l.kind = kind;
-  l.level = kLevel;
+  l.level = level;
   return l;
 }
 
@@ -95,6 +95,7 @@ ContentStore write_content_store(const std::string& path) {
   store->create_layer(content_layer("trees", LayerKind::Instances));
   store->create_layer(content_layer("lakes", LayerKind::Volume));
   store->create_layer(content_layer("orchard", LayerKind::Instances));
+  store->create_layer(content_layer("parks", LayerKind::Mesh, kLevel - 1));
   Store::Batch batch(*store);
   for (CellId c : s.block)
     batch.put_tile(

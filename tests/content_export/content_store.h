@@ -6,7 +6,8 @@
 // - `trees` (instances), block[1]: kTreeCount green builtin:conifer instances, instance i at
 //   tree_offset(i) metres east and north of the centre, kTreeHeight high, turned by 30 i degrees;
 // - `lakes` (volume), block[2]: a fog volume box of water, 80 m x 80 m x 20 m from the centre up;
-// - `orchard` (instances), block[3]: one instance of an unknown prototype "oak".
+// - `orchard` (instances), block[3]: one instance of an unknown prototype "oak";
+// - `parks` (mesh) at level kLevel - 1, empty.
 #pragma once
 
 #include <array>
