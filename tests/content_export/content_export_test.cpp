@@ -13,7 +13,9 @@
 #include <set>
 
 #include "content/content_blob.h"
+#include "content_fixture.h"
 #include "content_store.h"
+#include "gltf/mesh_glb.h"
 #include "gpu_instancing_check.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -25,8 +27,37 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// Adds a textured mesh layer `roofs` on block[3]: a 40 m box with a PNG texture
+// (tests/gltf_content's box), for merging several mesh GLBs with their textures and metadata.
+void add_roofs(const ContentStore& s) {
+  MeshContent m;
+  m.origin = s.origins[3];
+  m.materials.push_back(
+      {"tiles", {1, 1, 1, 1}, 0.f, 0.9f, encoded_image("PNG", 16, 16), "image/png", false});
+  m.objects.push_back(box({-20, -20, 0}, {40, 40, 30}));
+  m.objects[0].material = 0;
+  m.objects[0].provenance = {7, 3, "structures.roofs", {{"height", 30}}};
+  ContentEnvelope e;
+  e.kind = ContentKind::Mesh;
+  e.origin = m.origin;
+  e.stats = {1, 12, 0};
+  auto store = Store::open(s.path, Store::Mode::ReadWrite);
+  LayerInfo roofs;
+  roofs.name = "roofs";
+  roofs.kind = LayerKind::Mesh;
+  roofs.level = kLevel;
+  store->create_layer(roofs);
+  Store::Batch batch(*store);
+  batch.put_content("roofs", s.block[3], wrap_content(e, encode_mesh_glb(m)));
+  batch.commit();
+}
+
 const ContentStore& content_store() {
-  static const ContentStore s = write_content_store(temp_dir() + "/content.maquette");
+  static const ContentStore s = [] {
+    const ContentStore written = write_content_store(temp_dir() + "/content.maquette");
+    add_roofs(written);
+    return written;
+  }();
   return s;
 }
 
@@ -248,6 +279,41 @@ TEST(ContentExport, GlbOfTwoCells) {
                                  s.block[2].ToText() + " --content lakes");
   ASSERT_EQ(lake.exit_code, 0) << lake.err;
   EXPECT_EQ(read_glb(dir + "/lake.glb").primitives.size(), 1u);
+  const auto ok = gltf_validator_passes(dir);
+  if (!ok) GTEST_SKIP() << "gltf-validator not installed";
+  EXPECT_TRUE(*ok);
+}
+
+// Two mesh GLBs in one: the textured one's image, texture and property table follow the first's.
+TEST(ContentExport, GlbOfTwoMeshLayersKeepsTexturesAndMetadata) {
+  const auto& s = content_store();
+  const std::string dir = temp_dir() + "/content_glb_meshes";
+  fs::create_directories(dir);
+  const std::string out = dir + "/meshes.glb";
+  const auto r =
+      run_maquette("export glb " + s.path + " " + out + " --cells " + s.block[0].ToText() + " " +
+                   s.block[3].ToText() + " --content buildings roofs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Glb glb = read_glb(out);
+  const json& j = glb.json;
+  ASSERT_EQ(j["materials"].size(), 2u);
+  EXPECT_EQ(j["images"].size(), 1u);
+  EXPECT_EQ(j["images"][0]["mimeType"], "image/png");
+  EXPECT_EQ(j["materials"][1]["pbrMetallicRoughness"]["baseColorTexture"]["index"], 0);
+  const json& tables = j["extensions"]["EXT_structural_metadata"]["propertyTables"];
+  ASSERT_EQ(tables.size(), 2u);
+  const int roofs = node_under(glb, "roofs " + s.block[3].ToText(), false);
+  ASSERT_GE(roofs, 0);
+  const json& prim = j["meshes"][j["nodes"][roofs]["mesh"].get<int>()]["primitives"][0];
+  EXPECT_EQ(prim["material"], 1);
+  EXPECT_EQ(prim["extensions"]["EXT_mesh_features"]["featureIds"][0]["propertyTable"], 1);
+  // The roofs' tool string, read through the second table's bufferViews.
+  const auto& tool = tables[1]["properties"]["tool"];
+  const auto& view = j["bufferViews"][tool["values"].get<int>()];
+  const std::string text(
+      glb.bin.begin() + view["byteOffset"].get<long>(),
+      glb.bin.begin() + view["byteOffset"].get<long>() + view["byteLength"].get<long>());
+  EXPECT_EQ(text, "structures.roofs");
   const auto ok = gltf_validator_passes(dir);
   if (!ok) GTEST_SKIP() << "gltf-validator not installed";
   EXPECT_TRUE(*ok);
