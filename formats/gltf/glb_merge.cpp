@@ -112,46 +112,50 @@ std::vector<char> merge_glbs(const std::vector<GlbPart>& parts, const json& extr
   json used = json::array(), required = json::array();
   for (size_t i = 0; i < parts.size(); ++i) {
     const std::string part_where = where + ", part '" + parts[i].name + "'";
-    GlbChunks c = split_glb(parts[i].glb, part_where);
-    json& g = c.gltf;
-    if (!g.contains("scenes") || g["scenes"].size() != 1)
-      throw Error(part_where + ": expected one scene");
-    Offsets o;
-    o.accessors = count(out, "accessors");
-    o.views = count(out, "bufferViews");
-    o.images = count(out, "images");
-    o.samplers = count(out, "samplers");
-    o.textures = count(out, "textures");
-    o.materials = count(out, "materials");
-    o.meshes = count(out, "meshes");
-    o.nodes = count(out, "nodes");
-    o.tables = metadata.is_null() ? 0 : metadata["propertyTables"].size();
-    while (bin.size() % 8) bin.push_back(0);
-    const size_t bin_at = bin.size();
-    bin.append(c.bin);
-    for (json& v : g["bufferViews"]) v["byteOffset"] = v.value("byteOffset", size_t(0)) + bin_at;
-    if (g.contains("extensions") && g["extensions"].contains("EXT_structural_metadata")) {
-      json m = g["extensions"]["EXT_structural_metadata"];
-      for (json& t : m["propertyTables"])
-        for (auto& [name, p] : t["properties"].items())
-          for (const char* key : {"values", "arrayOffsets", "stringOffsets"})
-            if (p.contains(key)) shift(p[key], o.views);
-      if (metadata.is_null()) {
-        metadata = m;
-      } else if (m["schema"] != metadata["schema"]) {
-        throw Error(part_where + ": its EXT_structural_metadata schema differs from the others'");
-      } else {
-        for (json& t : m["propertyTables"]) metadata["propertyTables"].push_back(std::move(t));
-      }
-    }
-    for (const json& e : g.value("extensionsUsed", json::array()))
-      if (std::find(used.begin(), used.end(), e) == used.end()) used.push_back(e);
-    for (const json& e : g.value("extensionsRequired", json::array()))
-      if (std::find(required.begin(), required.end(), e) == required.end()) required.push_back(e);
     json children = json::array();
-    for (const json& n : g["scenes"][0].value("nodes", json::array()))
-      children.push_back(n.get<size_t>() + o.nodes);
-    append_part(std::move(g), o, out, part_where);
+    try {
+      GlbChunks c = split_glb(parts[i].glb, part_where);
+      json& g = c.gltf;
+      if (!g.contains("scenes") || g["scenes"].size() != 1)
+        throw Error(part_where + ": expected one scene");
+      Offsets o;
+      o.accessors = count(out, "accessors");
+      o.views = count(out, "bufferViews");
+      o.images = count(out, "images");
+      o.samplers = count(out, "samplers");
+      o.textures = count(out, "textures");
+      o.materials = count(out, "materials");
+      o.meshes = count(out, "meshes");
+      o.nodes = count(out, "nodes");
+      o.tables = metadata.is_null() ? 0 : metadata["propertyTables"].size();
+      while (bin.size() % 8) bin.push_back(0);
+      const size_t bin_at = bin.size();
+      bin.append(c.bin);
+      for (json& v : g["bufferViews"]) v["byteOffset"] = v.value("byteOffset", size_t(0)) + bin_at;
+      if (g.contains("extensions") && g["extensions"].contains("EXT_structural_metadata")) {
+        json m = g["extensions"]["EXT_structural_metadata"];
+        for (json& t : m["propertyTables"])
+          for (auto& [name, p] : t["properties"].items())
+            for (const char* key : {"values", "arrayOffsets", "stringOffsets"})
+              if (p.contains(key)) shift(p[key], o.views);
+        if (metadata.is_null()) {
+          metadata = m;
+        } else if (m["schema"] != metadata["schema"]) {
+          throw Error(part_where + ": its EXT_structural_metadata schema differs from the others'");
+        } else {
+          for (json& t : m["propertyTables"]) metadata["propertyTables"].push_back(std::move(t));
+        }
+      }
+      for (const json& e : g.value("extensionsUsed", json::array()))
+        if (std::find(used.begin(), used.end(), e) == used.end()) used.push_back(e);
+      for (const json& e : g.value("extensionsRequired", json::array()))
+        if (std::find(required.begin(), required.end(), e) == required.end()) required.push_back(e);
+      for (const json& n : g["scenes"][0].value("nodes", json::array()))
+        children.push_back(n.get<size_t>() + o.nodes);
+      append_part(std::move(g), o, out, part_where);
+    } catch (const json::exception& e) {
+      throw Error(part_where + ": malformed glTF (" + e.what() + ")");
+    }
     part_nodes.push_back(
         {{"name", parts[i].name}, {"matrix", parts[i].matrix}, {"children", children}});
   }

@@ -34,9 +34,10 @@ struct GlbPart {
 // at a multiple of 8 bytes), so one part's bytes are kept as they are (its BIN chunk and its
 // objects, with no index shifted, when it is the only part). extensionsUsed and
 // extensionsRequired are the union of the parts'; EXT_structural_metadata's schema must be the
-// same in every part that has one. `extras` becomes the asset's extras. Throws maquette::Error
-// naming `where` and the part for a GLB that is not one, a part of other than one scene, sparse
-// accessors or morph targets (which no export writes), or schemas that differ.
+// same in every part that has one. `extras` becomes the asset's extras. Parts are GLBs whose one
+// buffer is their BIN chunk (as the exports write them). Throws maquette::Error naming `where`
+// and the part for a GLB that is not one, malformed glTF JSON, a part of other than one scene,
+// sparse accessors or morph targets (which no export writes), or schemas that differ.
 std::vector<char> merge_glbs(const std::vector<GlbPart>& parts, const nlohmann::json& extras,
                              const std::string& where);
 
