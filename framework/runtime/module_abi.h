@@ -18,7 +18,9 @@
 // 6: OutputSpec::codec.
 // 7: features ports (InputSpec::kind, reach_m; CellData::features, Mosaic::features) and content
 //    output ports (OutputSpec::kind).
-#define MAQUETTE_ABI_VERSION 7u
+// 8: content outputs written (CellContent in CellData::content and Mosaic::content,
+//    CellContext::owns).
+#define MAQUETTE_ABI_VERSION 8u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

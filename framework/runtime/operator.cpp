@@ -30,6 +30,38 @@ const FeatureList& CellData::features_of(const std::string& port) const {
   return it->second;
 }
 
+bool CellContext::owns(LonLat anchor) const {
+  return grid->cell_from_point(anchor, cell.level()) == cell;
+}
+
+namespace {
+
+template <class Content>
+Content& content_of(std::map<std::string, Content>& by_port, const std::string& port,
+                    const char* kind) {
+  const auto it = by_port.find(port);
+  if (it == by_port.end())
+    throw Error("no " + std::string(kind) + " content for port '" + port +
+                "' (not a mapped port of that kind)");
+  return it->second;
+}
+
+}  // namespace
+
+MeshContent& CellContent::mesh(const std::string& port) { return content_of(meshes, port, "mesh"); }
+
+InstancesContent& CellContent::instances_of(const std::string& port) {
+  return content_of(instances, port, "instances");
+}
+
+VolumeContent& CellContent::volume(const std::string& port) {
+  return content_of(volumes, port, "volume");
+}
+
+bool CellContent::wants(const std::string& port) const {
+  return meshes.count(port) != 0 || instances.count(port) != 0 || volumes.count(port) != 0;
+}
+
 Tile<float>& CellData::output(const std::string& port) {
   const auto it = outputs.find(port);
   if (it == outputs.end()) throw Error("no output tile for port '" + port + "'");

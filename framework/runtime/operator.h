@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "content/content.h"
 #include "core/cell_id.h"
 #include "core/grid.h"
 #include "core/tile.h"
@@ -52,9 +53,8 @@ struct OutputSpec {
   // How its tiles are stored (store/codec.h): "normal_oct" for unit normals (float32 x 3), ~4-10x
   // fewer bytes than zstd for at most 0.04 degrees.
   std::string codec = "zstd";
-  // The kind of layer it writes: Raster, or 3D content (Mesh, Instances, Volume). Content ports are
-  // declared only for now: a step mapping one is refused before anything runs ("content outputs are
-  // not written yet").
+  // The kind of layer it writes: Raster, or 3D content (Mesh, Instances, Volume: CellContent; only
+  // name, description and kind apply, the layer is at the step's level).
   LayerKind kind = LayerKind::Raster;
 };
 
@@ -95,6 +95,11 @@ struct CellContext {
   const Grid* grid = nullptr;
   const json* params = nullptr;  // validated, defaults filled in
   const Store* store = nullptr;  // read-only (see above)
+
+  // Whether this cell owns an object anchored at `anchor` (content/content.h: a mesh object's
+  // first vertex, an instance's position): the cell at its level holding the point. Features
+  // near several cells are delivered to each; each writes only the objects it owns.
+  bool owns(LonLat anchor) const;
 };
 
 // What a reduce operator's finish() and a region operator see of their step: as CellContext,
@@ -110,15 +115,48 @@ struct StepContext {
 // arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples. Features
 // ports get the features within their reach_m of the cell (core/geo_distance.h), sorted by id;
 // the pointers are valid while the operator runs.
+// The 3D content an operator writes for one cell, by content output port (OutputSpec::kind Mesh,
+// Instances or Volume), only the ports the step maps. The runner hands each one empty with its
+// origin at the cell's centre, height 0 (the operator may move it: any finite origin); a content
+// left empty (no object, no instance, no VDB bytes) writes nothing for the cell.
+//
+// Contract, checked by the runner before anything of the cell is written (a fault fails the cell,
+// naming the step, the cell, the port, and the object with its feature id):
+// - anchors in the cell: each mesh object's first vertex and each instance's position, taken back
+//   to lon/lat from the origin, lie in the cell (CellContext::owns), within kAnchorToleranceM for
+//   the rounding of float32 positions near its edge;
+// - meshes: finite positions, 3 per vertex, one normal (unit) and uv per vertex or none,
+//   indices in range and whole triangles (at least one), materials in range;
+// - instances: content/instances_codec.h's check_instances, finite positions, prototypes
+//   "builtin:conifer|broadleaf|shrub" (content/prototypes.h);
+// - volumes: a VDB stream the volume plug-in reads (vdb/volume_vdb.h).
+// Meshes are stored as formats/gltf/mesh_glb.h's GLB (positions quantized to at most 1 mm),
+// instances losslessly (instances_codec.h), volumes as given.
+struct CellContent {
+  std::map<std::string, MeshContent> meshes;          // by mesh port
+  std::map<std::string, InstancesContent> instances;  // by instances port
+  std::map<std::string, VolumeContent> volumes;       // by volume port
+
+  MeshContent& mesh(const std::string& port);               // throws naming the port
+  InstancesContent& instances_of(const std::string& port);  // throws naming the port
+  VolumeContent& volume(const std::string& port);           // throws naming the port
+  bool wants(const std::string& port) const;
+};
+
+inline constexpr double kAnchorToleranceM = 0.01;
+
 struct CellData {
   std::map<std::string, Tile<float>> inputs;    // by input port name (absent optional: missing)
   std::map<std::string, FeatureList> features;  // by features port name (absent optional: missing)
-  std::map<std::string, Tile<float>> outputs;   // by output port name, only those the step maps
+  std::map<std::string, Tile<float>> outputs;   // by raster output port, only those the step maps
+  CellContent content;                          // by content output port (see CellContent)
 
   const Tile<float>& input(const std::string& port) const;        // throws naming the port
   const FeatureList& features_of(const std::string& port) const;  // throws naming the port
   Tile<float>& output(const std::string& port);                   // throws naming the port
-  bool wants(const std::string& output_port) const { return outputs.count(output_port) != 0; }
+  bool wants(const std::string& output_port) const {
+    return outputs.count(output_port) != 0 || content.wants(output_port);
+  }
 };
 
 class Operator {
@@ -153,6 +191,10 @@ struct Mosaic {
   // Input mosaics only: by features port, the features within its reach_m of any of the region's
   // cells, sorted by id (valid while the operator runs).
   std::map<std::string, FeatureList> features;
+  // Output mosaics only: the content of each of the step's cells (CellContent, prepared by the
+  // runner for every cell). A region operator puts each object in the cell that owns its anchor
+  // (Grid::cell_from_point at the cells' level).
+  std::map<CellId, CellContent> content;
 };
 
 class RegionOperator : public Operator {

@@ -85,7 +85,6 @@ class Planner {
       sp.outputs.emplace(out.name, info);
       produced_[info.name] = {info, cells};
     }
-    refuse_content_outputs(sp);
     const size_t chunk = default_chunk_size(cells.size(), threads_);
     sp.cells = CellPlan(std::move(cells), chunk);
     return sp;
@@ -268,15 +267,6 @@ class Planner {
     return size;
   }
 
-  // Outputs of 3D content are declared (OutputSpec::kind) but not written yet.
-  static void refuse_content_outputs(const StepPlan& sp) {
-    for (const auto& [port, layer] : sp.outputs)
-      if (layer.kind != LayerKind::Raster)
-        throw Error(sp.step->label() + ": outputs." + port + ": layer '" + layer.name + "' is a " +
-                    std::string(layer_kind_name(layer.kind)) +
-                    " layer: content outputs are not written yet");
-  }
-
   static void check_one_face(const PipelineStep& step, const std::vector<CellId>& cells) {
     if (!cells.empty() && cells.front().face() != cells.back().face())
       throw Error(step.label() +
@@ -352,9 +342,13 @@ void print_plan(const Pipeline& pipeline, const RunPlan& plan, std::ostream& out
       out << "  reads  " << f.layer << " (" << f.port << ": features within " << f.reach_m
           << " m)\n";
     for (const auto& [port, layer] : sp.outputs)
-      out << "  writes " << layer.name << " (" << port << ": " << dtype_name(layer.dtype) << " x"
-          << layer.channels << ", " << sp.cells.size() << " tiles of " << layer.tile_size
-          << "px)\n";
+      if (layer.kind == LayerKind::Raster)
+        out << "  writes " << layer.name << " (" << port << ": " << dtype_name(layer.dtype) << " x"
+            << layer.channels << ", " << sp.cells.size() << " tiles of " << layer.tile_size
+            << "px)\n";
+      else
+        out << "  writes " << layer.name << " (" << port << ": " << layer_kind_name(layer.kind)
+            << " content of up to " << sp.cells.size() << " cells)\n";
     if (!sp.artifact.empty()) out << "  writes artifact " << sp.artifact << "\n";
   }
 }

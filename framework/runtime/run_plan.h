@@ -46,8 +46,8 @@ struct StepPlan {
   int tile_size = 0;
   std::vector<std::pair<std::string, LayerInfo>> inputs;  // raster ports, in the spec's order
   std::vector<FeaturePort> features;                      // features ports, in the spec's order
-  std::map<std::string, LayerInfo> outputs;               // port -> raster layer (cell, region)
-  std::string artifact;                                   // reduce: the artifact written
+  std::map<std::string, LayerInfo> outputs;  // port -> raster or content layer (cell, region)
+  std::string artifact;                      // reduce: the artifact written
   // A step with raster inputs processes the first one's tiles within the region; one whose
   // inputs are all features layers, the region's cells within reach of a feature (all the
   // region's cells when an earlier step writes a features layer it reads); one without inputs,
@@ -68,7 +68,7 @@ TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 // store does not exist yet) nor written by an earlier step, a layer of the wrong kind for its port
 // (a raster layer given to a features port, or the reverse), raster inputs of one step at
 // different levels or tile sizes, a region operator over cells of several faces or with a mosaic
-// side above kMaxMosaicSide, an output port of 3D content (not written yet).
+// side above kMaxMosaicSide.
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
 
 // The dry-run report: steps, cell counts and the layers to be written.

@@ -304,13 +304,15 @@ class Runner {
     if (run_id != 0) io.write_done(sp.cells.cells());
   }
 
-  // The step's output layers are shared out among the ranks (each layer's overviews depend on
-  // its tiles only). In the arena, so that the overviews' parallel loops use `threads` threads.
+  // The step's raster output layers are shared out among the ranks (each layer's overviews
+  // depend on its tiles only). In the arena, so that the overviews' parallel loops use `threads`
+  // threads. Content layers' coarser levels (simplified content) are not built yet.
   void update_overviews(const StepPlan& sp) {
     int i = 0;
     arena_.execute([&] {
       for (const auto& [port, layer] : sp.outputs)
-        if (i++ % ranks_.size() == ranks_.rank()) store_->update_overviews(layer.name);
+        if (layer.kind == LayerKind::Raster && i++ % ranks_.size() == ranks_.rank())
+          store_->update_overviews(layer.name);
     });
   }
 

@@ -18,7 +18,7 @@ void run_cell_step(const StepPlan& plan, const CellPlan& todo, StepIO& io, Progr
   for_each_cell(todo, arena, plan.step->label(), [&](size_t, CellId cell) {
     CellData data = io.load(cell, halo);
     op.run(context(plan, io, cell), data);
-    const CellOutput out{cell, &data.outputs};
+    const CellOutput out{cell, &data.outputs, io.encode_content(cell, data.content)};
     io.write({&out, 1});
     progress.advance();
   });

@@ -49,33 +49,67 @@ CellData StepIO::load(CellId cell, int halo) {
   }
   data.outputs =
       plan_.step->op->spec().writes_all_samples ? uninitialized_outputs() : blank_outputs();
+  data.content = blank_content(cell);
   return data;
 }
 
 TileSet StepIO::blank_outputs(int size) const {
   TileSet tiles;
   for (const auto& [port, layer] : plan_.outputs)
-    tiles.emplace(port, Tile<float>(size > 0 ? size : layer.tile_size, layer.channels, 0, NAN));
+    if (layer.kind == LayerKind::Raster)
+      tiles.emplace(port, Tile<float>(size > 0 ? size : layer.tile_size, layer.channels, 0, NAN));
   return tiles;
 }
 
 TileSet StepIO::uninitialized_outputs() const {
   TileSet tiles;
   for (const auto& [port, layer] : plan_.outputs)
-    tiles.emplace(port, Tile<float>::uninitialized(layer.tile_size, layer.channels));
+    if (layer.kind == LayerKind::Raster)
+      tiles.emplace(port, Tile<float>::uninitialized(layer.tile_size, layer.channels));
   return tiles;
+}
+
+CellContent StepIO::blank_content(CellId cell) const {
+  CellContent content;
+  const LonLat centre = default_grid().centre(cell);
+  const EnuOrigin origin{centre.lon, centre.lat, 0};
+  for (const auto& [port, layer] : plan_.outputs) {
+    if (layer.kind == LayerKind::Mesh) content.meshes[port].origin = origin;
+    if (layer.kind == LayerKind::Instances) content.instances[port].origin = origin;
+    if (layer.kind == LayerKind::Volume) content.volumes[port].origin = origin;
+  }
+  return content;
+}
+
+std::vector<ContentBlob> StepIO::encode_content(CellId cell, const CellContent& content) const {
+  // The operator may have added ports to the maps: each must be a mapped output of that kind.
+  const auto check = [&](const auto& by_port, LayerKind kind) {
+    for (const auto& entry : by_port) {
+      const auto it = plan_.outputs.find(entry.first);
+      if (it == plan_.outputs.end() || it->second.kind != kind)
+        throw Error("outputs." + entry.first + ": not a mapped " +
+                    std::string(layer_kind_name(kind)) + " output of the step");
+    }
+  };
+  check(content.meshes, LayerKind::Mesh);
+  check(content.instances, LayerKind::Instances);
+  check(content.volumes, LayerKind::Volume);
+  return encode_cell_content(content, cell, default_grid());
 }
 
 void StepIO::write(std::span<const CellOutput> cells) {
   Store::Batch batch(store_);
-  for (const auto& [cell, tiles] : cells) {
+  for (const auto& [cell, tiles, content] : cells) {
     for (const auto& [port, layer] : plan_.outputs) {
+      if (layer.kind != LayerKind::Raster) continue;
       const Tile<float>& tile = tiles->at(port);
       if (tile.size() != layer.tile_size || tile.channels() != layer.channels || tile.halo() != 0)
         throw Error("output '" + port + "' is not a " + std::to_string(layer.tile_size) +
                     "-pixel tile of " + std::to_string(layer.channels) + " channel(s)");
       batch.put_tile(layer.name, cell, from_tile(tile, layer.dtype, nodata_ptr(layer)));
     }
+    for (const ContentBlob& c : content)
+      batch.put_content(plan_.outputs.at(c.port).name, cell, c.blob);
     batch.mark_done(run_id_, plan_.step->index, cell);
   }
   batch.commit();

@@ -1,9 +1,9 @@
 // The store access of one running step, from any thread: reading input tiles as float with the
-// operator's halo, and writing each cell's output tiles together with its run record in one
-// batch, so a killed run leaves no cell half-written. The store is the single writer: batches are
-// encoded in the calling thread and committed one at a time under its write mutex. Input tiles
-// read for a halo go through a TileCache of at most kTileCacheBytes of decoded tiles (and at least
-// 4 tiles), so each is decoded about once per step.
+// operator's halo, and writing each cell's output tiles and content together with its run record
+// in one batch, so a killed run leaves no cell half-written. The store is the single writer:
+// batches are encoded in the calling thread and committed one at a time under its write mutex.
+// Input tiles read for a halo go through a TileCache of at most kTileCacheBytes of decoded tiles
+// (and at least 4 tiles), so each is decoded about once per step.
 #pragma once
 
 #include <atomic>
@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 
+#include "runtime/content_output.h"
 #include "runtime/operator.h"
 #include "runtime/run_plan.h"
 #include "runtime/tile_cache.h"
@@ -24,7 +25,8 @@ using TileSet = std::map<std::string, Tile<float>>;  // by port name
 
 struct CellOutput {
   CellId cell;
-  const TileSet* tiles;
+  const TileSet* tiles;                   // the raster outputs
+  std::vector<ContentBlob> content = {};  // encode_content's blobs
 };
 
 inline constexpr size_t kTileCacheBytes = size_t(256) << 20;
@@ -48,8 +50,12 @@ class StepIO {
   TileSet blank_outputs(int size = 0) const;
   // Uninitialized tiles for the step's mapped outputs, of their layers' tile size.
   TileSet uninitialized_outputs() const;
+  // Empty content for the step's mapped content outputs, the origin at the cell's centre.
+  CellContent blank_content(CellId cell) const;
+  // The cell's content checked and encoded (content_output.h), for write().
+  std::vector<ContentBlob> encode_content(CellId cell, const CellContent& content) const;
 
-  // One batch: the output tiles of all `cells` and their run records.
+  // One batch: the output tiles and content of all `cells` and their run records.
   void write(std::span<const CellOutput> cells);
   // One batch: the run records of all `cells` (a task's, a reduce's with its artifact).
   void write_done(std::span<const CellId> cells, const Artifact* artifact = nullptr);

@@ -61,6 +61,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);
   output.layers = io.blank_outputs(side);
+  for (const CellId c : cells) output.content.emplace(c, io.blank_content(c));
   try {
     op.run({&default_grid(), &plan.params, &io.store()}, input, output);
   } catch (const std::exception& e) {
@@ -69,18 +70,27 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     throw Error(plan.step->label() + " failed on the region's mosaic: unknown exception");
   }
   for (const auto& [port, layer] : plan.outputs) {
+    if (layer.kind != LayerKind::Raster) continue;
     const Tile<float>& m = output.layers.at(port);
     if (m.size() != side || m.channels() != layer.channels)
       throw Error(plan.step->label() + ": the operator changed the size of output mosaic '" + port +
                   "'");
   }
 
+  if (output.content.size() != cells.size())  // the runner prepared one entry per cell
+    throw Error(plan.step->label() + ": the operator added content for cells not of the step");
+
   std::vector<TileSet> tiles(cells.size(), io.blank_outputs(n));
   std::vector<CellOutput> outputs;
   for (size_t i = 0; i < cells.size(); ++i) {
     for (auto& [port, tile] : tiles[i])
       cut(output.layers.at(port), tile, offset(cells[i]).first, offset(cells[i]).second);
-    outputs.push_back({cells[i], &tiles[i]});
+    try {
+      outputs.push_back(
+          {cells[i], &tiles[i], io.encode_content(cells[i], output.content.at(cells[i]))});
+    } catch (const std::exception& e) {
+      throw Error(plan.step->label() + " failed on cell " + cells[i].ToText() + ": " + e.what());
+    }
   }
   io.write(outputs);
   progress.advance(int64_t(cells.size()));

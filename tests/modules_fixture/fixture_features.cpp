@@ -4,8 +4,7 @@
 //                            in every sample of its 3 channels; an optional raster input "src"
 //                            decides the cells when mapped;
 //   fixture.region_features  region: the count of the region's features, in every sample;
-//   fixture.features_total   reduce: the sum over the cells of the count of their features;
-//   fixture.mesh_out         cell: declares a mesh output (content outputs are not written yet).
+//   fixture.features_total   reduce: the sum over the cells of the count of their features.
 #include "fixture_features.h"
 
 #include <string>
@@ -101,25 +100,6 @@ class FeaturesTotal : public maquette::ReduceOperator {
   }
 };
 
-class MeshOut : public maquette::CellOperator {
- public:
-  const OperatorSpec& spec() const override {
-    static const OperatorSpec s = [] {
-      OperatorSpec s;
-      s.name = "fixture.mesh_out";
-      s.description = "declares a mesh output";
-      maquette::OutputSpec out;
-      out.name = "mesh";
-      out.description = "a mesh layer";
-      out.kind = LayerKind::Mesh;
-      s.outputs.push_back(out);
-      return s;
-    }();
-    return s;
-  }
-  void run(const CellContext&, CellData&) const override {}
-};
-
 }  // namespace
 
 std::unique_ptr<maquette::Operator> make_near_features() {
@@ -131,4 +111,3 @@ std::unique_ptr<maquette::Operator> make_region_features() {
 std::unique_ptr<maquette::Operator> make_features_total() {
   return std::make_unique<FeaturesTotal>();
 }
-std::unique_ptr<maquette::Operator> make_mesh_out() { return std::make_unique<MeshOut>(); }

@@ -201,7 +201,8 @@ MAQUETTE_MODULE("fixture", "0.0.1", "Operators for the runtime tests",
                 {"fixture.near_features", &make_near_features},
                 {"fixture.region_features", &make_region_features},
                 {"fixture.features_total", &make_features_total},
-                {"fixture.mesh_out", &make_mesh_out})
+                {"fixture.content", &make_content},
+                {"fixture.region_content", &make_region_content})
 
 extern "C" __attribute__((visibility("default"))) size_t fixture_thread_count() {
   std::lock_guard lock(threads_mutex);

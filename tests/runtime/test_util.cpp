@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <stdexcept>
 
 #include "store/store.h"
@@ -78,6 +79,15 @@ Snapshot snapshot(const std::string& store_path) {
   Snapshot out;
   const auto store = Store::open(store_path, Store::Mode::ReadOnly);
   for (const LayerInfo& layer : store->layers()) {
+    if (layer_content_kind(layer.kind)) {  // content blobs at every level that holds some
+      for (int level = layer.level; level >= 0; --level)
+        for (const CellId cell : store->content_cells(layer.name, level)) {
+          const std::string blob = *store->get_content(layer.name, cell);
+          const auto bytes = std::as_bytes(std::span(blob));
+          out[layer.name + "/content/" + cell.ToText()].assign(bytes.begin(), bytes.end());
+        }
+      continue;
+    }
     for (const CellId cell : store->tile_cells(layer.name)) {
       out[layer.name + "/" + cell.ToText()] = store->get_tile(layer.name, cell)->bytes;
       // The overview tiles: every ancestor of a tile, down to level 0.

@@ -44,7 +44,8 @@ std::string write_pipeline(const TempDir& dir, const nlohmann::json& doc);
 Pipeline load_fixture_pipeline(const std::string& path);
 
 // "layer/cell" -> tile bytes for every tile, "layer/overview/cell" -> bytes for every overview
-// tile, "artifact/name" -> data for every artifact.
+// tile, "layer/content/cell" -> the blob of every content cell (any level), "artifact/name" ->
+// data for every artifact.
 using Snapshot = std::map<std::string, std::vector<std::byte>>;
 Snapshot snapshot(const std::string& store_path);
 // The first key where the snapshots differ, or "" when they are equal.

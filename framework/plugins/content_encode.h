@@ -1,0 +1,22 @@
+// The mesh plug-in's encoding of a cell's mesh content for the store (issue 15): the blob the
+// runner writes with Batch::put_content, built here because the GLB is Draco-compressed and
+// libmaquette does not link Draco.
+#pragma once
+
+#include <string>
+
+#include "content/content.h"
+
+namespace maquette {
+
+// The mesh plug-in's file, mesh_export.h's kMeshPlugin, named here too since mesh_export.h brings
+// the exports' headers (Draco's among them) that libmaquette must not include.
+inline constexpr const char* kMeshContentPlugin = "libmaquette_mesh.so";
+inline constexpr const char* kMeshContentEntry = "maquette_mesh_content_blob";
+
+}  // namespace maquette
+
+// `content` as a mesh layer's blob: the envelope (content/content_blob.h: kind mesh, the content's
+// origin, objects and triangles counted) around encode_mesh_glb's GLB (gltf/mesh_glb.h, default
+// settings: positions quantized to at most 1 mm). Throws maquette::Error as encode_mesh_glb does.
+extern "C" void maquette_mesh_content_blob(const maquette::MeshContent& content, std::string& blob);
