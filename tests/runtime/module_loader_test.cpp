@@ -77,7 +77,7 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_EQ(j[0]["name"], "fixture");
   EXPECT_EQ(j[0]["version"], "0.0.1");
   EXPECT_EQ(j[0]["file"], fixture_dir("good") + "/libfixture_ops.so");
-  ASSERT_EQ(j[0]["operators"].size(), 8u);
+  ASSERT_EQ(j[0]["operators"].size(), 9u);
   const auto& blur = j[0]["operators"][1];
   EXPECT_EQ(blur["name"], "fixture.blur");
   EXPECT_EQ(blur["kind"], "cell");
@@ -92,7 +92,12 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_EQ(near["name"], "fixture.near_features");
   EXPECT_EQ(near["inputs"][0]["kind"], "features");
   EXPECT_EQ(near["inputs"][0]["reach_m"], 1000);
-  EXPECT_EQ(j[0]["operators"][7]["outputs"][0]["kind"], "mesh");
+  const auto& content = j[0]["operators"][7];
+  EXPECT_EQ(content["name"], "fixture.content");
+  EXPECT_EQ(content["outputs"][0]["kind"], "mesh");
+  EXPECT_EQ(content["outputs"][1]["kind"], "instances");
+  EXPECT_EQ(content["outputs"][2]["kind"], "volume");
+  EXPECT_EQ(j[0]["operators"][8]["kind"], "region");
 
   std::ostringstream text;
   r.print(text);
