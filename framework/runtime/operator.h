@@ -110,11 +110,10 @@ struct StepContext {
   const Store* store = nullptr;  // read-only, as in CellContext
 };
 
-// Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
-// float32 (NaN -> the output's nodata), converted to the output dtype by the framework. Outputs
-// arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples. Features
-// ports get the features within their reach_m of the cell (core/geo_distance.h), sorted by id;
-// the pointers are valid while the operator runs.
+// How far beyond its cell an anchor may be found (metres): float32 positions near an edge may
+// round across it.
+inline constexpr double kAnchorToleranceM = 0.01;
+
 // The 3D content an operator writes for one cell, by content output port (OutputSpec::kind Mesh,
 // Instances or Volume), only the ports the step maps. The runner hands each one empty with its
 // origin at the cell's centre, height 0 (the operator may move it: any finite origin); a content
@@ -125,7 +124,7 @@ struct StepContext {
 // - anchors in the cell: each mesh object's first vertex and each instance's position, taken back
 //   to lon/lat from the origin, lie in the cell (CellContext::owns), within kAnchorToleranceM for
 //   the rounding of float32 positions near its edge;
-// - meshes: finite positions, 3 per vertex, one normal (unit) and uv per vertex or none,
+// - meshes: finite positions, 3 per vertex, one normal and one uv per vertex or none,
 //   indices in range and whole triangles (at least one), materials in range;
 // - instances: content/instances_codec.h's check_instances, finite positions, prototypes
 //   "builtin:conifer|broadleaf|shrub" (content/prototypes.h);
@@ -143,8 +142,11 @@ struct CellContent {
   bool wants(const std::string& port) const;
 };
 
-inline constexpr double kAnchorToleranceM = 0.01;
-
+// Input tiles as float32 (nodata -> NaN) with the operator's halo; outputs without halo, as
+// float32 (NaN -> the output's nodata), converted to the output dtype by the framework. Outputs
+// arrive NaN-filled, or uninitialized for an operator that declares writes_all_samples. Features
+// ports get the features within their reach_m of the cell (core/geo_distance.h), sorted by id;
+// the pointers are valid while the operator runs.
 struct CellData {
   std::map<std::string, Tile<float>> inputs;    // by input port name (absent optional: missing)
   std::map<std::string, FeatureList> features;  // by features port name (absent optional: missing)
