@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "content/content_overviews.h"
 #include "core/error.h"
 #include "runtime/artifact_refs.h"
 #include "runtime/params_schema.h"
@@ -304,15 +305,19 @@ class Runner {
     if (run_id != 0) io.write_done(sp.cells.cells());
   }
 
-  // The step's raster output layers are shared out among the ranks (each layer's overviews
-  // depend on its tiles only). In the arena, so that the overviews' parallel loops use `threads`
-  // threads. Content layers' coarser levels (simplified content) are not built yet.
+  // The step's output layers are shared out among the ranks (each layer's overviews depend on
+  // its own tiles or content only). In the arena, so that the overviews' parallel loops use
+  // `threads` threads. Content layers get simplified content (content/content_overviews.h).
   void update_overviews(const StepPlan& sp) {
     int i = 0;
     arena_.execute([&] {
-      for (const auto& [port, layer] : sp.outputs)
-        if (layer.kind == LayerKind::Raster && i++ % ranks_.size() == ranks_.rank())
+      for (const auto& [port, layer] : sp.outputs) {
+        if (i++ % ranks_.size() != ranks_.rank()) continue;
+        if (layer.kind == LayerKind::Raster)
           store_->update_overviews(layer.name);
+        else
+          update_content_overviews(*store_, layer.name);
+      }
     });
   }
 

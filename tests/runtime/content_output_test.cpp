@@ -208,6 +208,9 @@ TEST(ContentOutput, StoredContentMatchesAnIndependentComputation) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto store = Store::open(s.store, Store::Mode::ReadOnly);
   const std::set<CellId> region = region_cells();
+  // The runner built the coarser levels of every content output (content/content_overviews.h).
+  for (const char* layer : {"prisms", "trees", "spheres"})
+    EXPECT_FALSE(store->content_cells(layer, kLevel - 1).empty()) << layer;
 
   // Every feature anchored in a region cell is stored once, in that cell; no other is.
   std::map<int64_t, CellId> expected_owner;
