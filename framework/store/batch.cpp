@@ -38,6 +38,7 @@ struct Store::Batch::Pending {
   std::vector<TileWrite> tiles, overviews;
   std::vector<PartialOverview> partial_overviews;
   std::vector<ContentWrite> contents;
+  std::vector<ModelWrite> models;
   std::vector<FeatureWrite> features;
   std::vector<Artifact> artifacts;
   std::vector<Done> done;
@@ -56,9 +57,9 @@ void Store::Batch::put_tile(const std::string& layer, CellId cell, const RawTile
   const std::string where =
       "cannot write layer '" + layer + "' at " + cell_text(cell) + " in " + d.path + ": ";
   if (!open_) throw Error(where + "the batch is already committed");
-  if (layer_content_kind(l.kind))
-    throw Error(where + "it holds " + std::string(layer_kind_name(l.kind)) +
-                " content (put_content), not raster tiles");
+  if (holds_content(l.kind))
+    throw Error(where + "it holds " + std::string(layer_kind_name(l.kind)) + " content (" +
+                (l.kind == LayerKind::Model ? "put_model" : "put_content") + "), not raster tiles");
   if (!cell.is_valid() || cell.level() != l.level)
     throw Error(where + "the layer's tiles are at level " + std::to_string(l.level));
   if (tile.dtype != l.dtype || tile.size != l.tile_size || tile.channels != l.channels ||
@@ -126,6 +127,13 @@ void Store::Batch::put_content(const std::string& layer, CellId cell, std::strin
   pending_->contents.push_back(content_write(d.require(layer), d.path, cell, blob));
 }
 
+void Store::Batch::put_model(const std::string& name, std::string_view blob,
+                             const nlohmann::json& provenance) {
+  const Impl& d = *store_.impl_;
+  if (!open_) throw Error("cannot write model '" + name + "': batch already committed");
+  pending_->models.push_back(model_write(d.find(name), d.path, name, blob, provenance));
+}
+
 void Store::Batch::mark_done(int64_t run_id, int step, CellId cell) {
   mark_done(run_id, step, int64_t(cell.id()));
 }
@@ -170,6 +178,7 @@ void Store::Batch::commit() {
       write_content(c, w);
       layers.insert(w.layer);
     }
+    for (const auto& m : p.models) write_model(c, store_.impl_->path, m);
     for (int64_t id : layers)
       c.query("UPDATE layers SET updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")
           .bind_int(1, id)

@@ -10,8 +10,8 @@
 namespace maquette {
 namespace {
 
-constexpr std::string_view kKindNames[] = {"raster",   "mesh",     "volume",
-                                           "features", "artifact", "instances"};
+constexpr std::string_view kKindNames[] = {"raster",   "mesh",      "volume", "features",
+                                           "artifact", "instances", "model"};
 constexpr std::string_view kSemanticsNames[] = {"continuous", "categorical"};
 
 std::string nodata_text(const std::optional<double>& v) {
@@ -30,7 +30,7 @@ LayerKind parse_layer_kind(std::string_view name) {
   for (size_t i = 0; i < std::size(kKindNames); ++i)
     if (kKindNames[i] == name) return LayerKind(i);
   throw Error("unknown layer kind '" + std::string(name) +
-              "' (expected raster, mesh, instances, volume, features or artifact)");
+              "' (expected raster, mesh, instances, volume, model, features or artifact)");
 }
 
 std::optional<ContentKind> layer_content_kind(LayerKind k) {
@@ -59,12 +59,13 @@ LayerInfo normalized_layer(const LayerInfo& info) {
   if (info.name.empty()) throw Error("a layer needs a name");
   if (info.level < 0 || info.level > CellId::kMaxLevel)
     throw Error(where + "level " + std::to_string(info.level) + " not in [0, 29]");
-  if (layer_content_kind(info.kind)) {
-    // Blobs of content name their own format (content_blob.h): no raster field applies.
+  if (holds_content(info.kind)) {
+    // Blobs of content name their own format (content_blob.h): no raster field applies. A
+    // model is in no cell: its layer is at level 0.
     LayerInfo out;
     out.name = info.name;
     out.kind = info.kind;
-    out.level = info.level;
+    out.level = info.kind == LayerKind::Model ? 0 : info.level;
     out.dtype = DType::U8;
     out.tile_size = 1;
     out.codec = kContentCodec;

@@ -26,6 +26,8 @@ LayerEntry read_layer(const sqlite::Query& q) {
   return e;
 }
 
+}  // namespace
+
 std::optional<LayerEntry> load_layer(sqlite::Connection& conn, const std::string& name) {
   static const std::string sql = std::string(kSelectLayer) + " WHERE name = ?";
   auto q = conn.query(sql.c_str());
@@ -34,7 +36,37 @@ std::optional<LayerEntry> load_layer(sqlite::Connection& conn, const std::string
   return read_layer(q);
 }
 
-}  // namespace
+int64_t insert_layer(sqlite::Connection& c, const LayerInfo& def) {
+  auto q = c.query(
+      "INSERT INTO layers(name, kind, dtype, channels, tile_size, level, nodata, semantics, "
+      "units, codec, provenance, created, updated) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+      "strftime('%Y-%m-%dT%H:%M:%fZ'), strftime('%Y-%m-%dT%H:%M:%fZ'))");
+  q.bind_text(1, def.name)
+      .bind_text(2, layer_kind_name(def.kind))
+      .bind_text(3, dtype_name(def.dtype))
+      .bind_int(4, def.channels)
+      .bind_int(5, def.tile_size)
+      .bind_int(6, def.level)
+      .bind_text(8, semantics_name(def.semantics))
+      .bind_text(9, def.units)
+      .bind_text(10, def.codec)
+      .bind_text(11, def.provenance.dump());
+  if (def.nodata)
+    q.bind_real(7, *def.nodata);
+  else
+    q.bind_null(7);
+  q.run();
+  return c.last_insert_rowid();
+}
+
+void update_provenance(sqlite::Connection& c, const LayerEntry& layer,
+                       const nlohmann::json& provenance) {
+  if (layer.info.provenance == provenance) return;
+  c.query("UPDATE layers SET provenance = ?, updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")
+      .bind_text(1, provenance.dump())
+      .bind_int(2, layer.id)
+      .run();
+}
 
 std::optional<LayerEntry> Store::Impl::find(const std::string& name) const {
   {
@@ -63,34 +95,10 @@ void Store::create_layer(const LayerInfo& info) {
       if (const std::string diff = layer_difference(old->info, def); !diff.empty())
         throw Error("layer '" + def.name + "' already exists in " + impl_->path +
                     " with another definition: " + diff + " (stored vs requested)");
-      if (old->info.provenance != def.provenance)
-        c.query(
-             "UPDATE layers SET provenance = ?, updated = strftime('%Y-%m-%dT%H:%M:%fZ') "
-             "WHERE id = ?")
-            .bind_text(1, def.provenance.dump())
-            .bind_int(2, old->id)
-            .run();
+      update_provenance(c, *old, def.provenance);
       return;
     }
-    auto q = c.query(
-        "INSERT INTO layers(name, kind, dtype, channels, tile_size, level, nodata, semantics, "
-        "units, codec, provenance, created, updated) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-        "strftime('%Y-%m-%dT%H:%M:%fZ'), strftime('%Y-%m-%dT%H:%M:%fZ'))");
-    q.bind_text(1, def.name)
-        .bind_text(2, layer_kind_name(def.kind))
-        .bind_text(3, dtype_name(def.dtype))
-        .bind_int(4, def.channels)
-        .bind_int(5, def.tile_size)
-        .bind_int(6, def.level)
-        .bind_text(8, semantics_name(def.semantics))
-        .bind_text(9, def.units)
-        .bind_text(10, def.codec)
-        .bind_text(11, def.provenance.dump());
-    if (def.nodata)
-      q.bind_real(7, *def.nodata);
-    else
-      q.bind_null(7);
-    q.run();
+    insert_layer(c, def);
   });
 }
 

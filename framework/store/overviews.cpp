@@ -124,6 +124,7 @@ void Store::update_overviews(const std::string& layer, int min_level) {
   if (min_level < 0 || min_level > e.info.level)
     throw Error(where + "min level " + std::to_string(min_level) + " not in [0, " +
                 std::to_string(e.info.level) + "]");
+  if (e.info.kind == LayerKind::Model) throw Error(where + "a model has no coarser levels");
   if (layer_content_kind(e.info.kind))
     throw Error(where + "the coarser levels of its " + std::string(layer_kind_name(e.info.kind)) +
                 " content hold what its writer simplified (put_content)");

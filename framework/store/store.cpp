@@ -192,10 +192,11 @@ void Store::Impl::require_writable() const {
 
 LayerEntry Store::Impl::require_tiles(const std::string& name) const {
   LayerEntry e = require(name);
-  if (layer_content_kind(e.info.kind))
+  if (holds_content(e.info.kind))
     throw Error("layer '" + name + "' in " + path + " holds " +
-                std::string(layer_kind_name(e.info.kind)) +
-                " content (get_content), not raster tiles");
+                std::string(layer_kind_name(e.info.kind)) + " content (" +
+                (e.info.kind == LayerKind::Model ? "get_model" : "get_content") +
+                "), not raster tiles");
   return e;
 }
 

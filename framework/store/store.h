@@ -4,7 +4,8 @@
 // Every write is one transaction; a process killed at any moment leaves a store that opens
 // and passes PRAGMA integrity_check. A Store may be used from many threads at once: reads use
 // a pool of read-only connections and run in parallel; commits are serialised. Layers of kind
-// mesh, instances and volume hold 3D content, one blob per cell (content/content_blob.h). See
+// mesh, instances and volume hold 3D content, one blob per cell (content/content_blob.h); a layer
+// of kind model holds one model (a mesh content blob in the model's own frame). See
 // framework/store/README.md for the schema and blob encoding.
 #pragma once
 
@@ -24,21 +25,22 @@
 
 namespace maquette {
 
-enum class LayerKind { Raster, Mesh, Volume, Features, Artifact, Instances };
+enum class LayerKind { Raster, Mesh, Volume, Features, Artifact, Instances, Model };
 enum class Semantics { Continuous, Categorical };
 
 std::string_view layer_kind_name(LayerKind k);
 LayerKind parse_layer_kind(std::string_view name);  // throws maquette::Error
 std::string_view semantics_name(Semantics s);
 Semantics parse_semantics(std::string_view name);  // throws maquette::Error
-// The content a layer of this kind holds (mesh, instances, volume), or nothing (raster,
-// features, artifact).
+// The content a layer of this kind holds in its cells (mesh, instances, volume), or nothing
+// (raster, features, artifact, and model: one blob that is in no cell).
 std::optional<ContentKind> layer_content_kind(LayerKind k);
 
 // A layer's definition. Content layers (kinds mesh, instances, volume) are defined by name, kind
 // and level only: the store keeps dtype uint8, 1 channel, tile size 1, no nodata, continuous,
 // no units and codec "mqct" for them, whatever is asked (so a definition asked again with other
 // raster fields is the same layer).
+// Model layers (kind model) are defined by their name alone, like content layers (level 0).
 struct LayerInfo {
   std::string name;
   LayerKind kind = LayerKind::Raster;
@@ -59,6 +61,13 @@ struct LayerStats {
   int64_t bytes = 0;                  // compressed blob bytes, overview tiles included
   std::vector<int> levels;            // levels holding tiles (overviews, then base), ascending
   std::optional<CellId> first, last;  // first and last full-resolution tile (or indexed cell)
+};
+
+// Store::model_stats: from the blob's envelope header and its GLB's JSON chunk (no Draco).
+struct ModelStats {
+  ContentStats content;   // objects and triangles
+  int64_t materials = 0;  // the GLB's materials
+  int64_t bytes = 0;      // of the blob
 };
 
 // Store::content_stats: read from the blobs' headers, without decoding a payload.
@@ -175,6 +184,14 @@ class Store {
     // naming the layer and cell for another kind, a corrupt envelope, a cell finer than the
     // layer's level, or a layer that is not a content layer. The payload is not decoded.
     void put_content(const std::string& layer, CellId cell, std::string_view blob);
+    // Writes (or replaces) the model `name`: creates the model layer if absent (with
+    // `provenance`; a replaced model's layer takes the new one), all in commit()'s transaction.
+    // `blob` is a mesh content envelope (content/content_blob.h) whose payload is a mesh GLB in
+    // the model's frame (metres, x east, y north, z up, base at z = 0) and whose origin is zero.
+    // Throws maquette::Error naming the model for a layer of that name of another kind, a
+    // corrupt envelope, another content kind or a non-zero origin. The payload is not decoded.
+    void put_model(const std::string& name, std::string_view blob,
+                   const nlohmann::json& provenance = nlohmann::json::object());
     void mark_done(int64_t run_id, int step, CellId cell);  // run record progress
     // Progress of work not keyed by cells (e.g. a batch of features), in the same records.
     void mark_done(int64_t run_id, int step, int64_t key);
@@ -221,6 +238,12 @@ class Store {
                          std::span<std::optional<std::string>> overviews)>;
   size_t rebuild_stale_content(const std::string& layer, int level, size_t limit,
                                const BuildContentOverviews& build);
+
+  // Model layers (Batch::put_model). get_model: the model's blob, its envelope checked; nothing
+  // when the store has no layer of that name. Throws naming the model for a layer of another
+  // kind or a corrupt blob.
+  std::optional<std::string> get_model(const std::string& name) const;
+  ModelStats model_stats(const std::string& name) const;  // throws as get_model, and if absent
 
   // Overviews: coarser levels down to `min_level`, mean (continuous) or mode (categorical),
   // nodata-aware. Built on demand; tiles written since mark their ancestors stale, and

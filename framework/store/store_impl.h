@@ -115,6 +115,16 @@ LayerInfo normalized_layer(const LayerInfo& info);
 // The first field where two definitions differ, as "dtype float32 vs uint16"; empty if none.
 // Provenance and codec are not part of the definition (an existing layer keeps its codec).
 std::string layer_difference(const LayerInfo& a, const LayerInfo& b);
+// Layers whose blobs are content envelopes rather than raster tiles: content layers (by cell)
+// and model layers (one blob).
+inline bool holds_content(LayerKind k) { return layer_content_kind(k) || k == LayerKind::Model; }
+
+// Layer rows (layers.cpp), inside the caller's transaction: the layer named `name` if any; a new
+// layer of a normalized definition (returns its id); a layer's provenance replaced.
+std::optional<LayerEntry> load_layer(sqlite::Connection& conn, const std::string& name);
+int64_t insert_layer(sqlite::Connection& conn, const LayerInfo& definition);
+void update_provenance(sqlite::Connection& conn, const LayerEntry& layer,
+                       const nlohmann::json& provenance);
 
 // A feature checked against its layer and ready to write (features.cpp).
 struct FeatureWrite {
@@ -145,6 +155,20 @@ ContentWrite content_write(const LayerEntry& layer, const std::string& store_pat
 // Writes (or replaces) the blob: in tiles at the layer's level, in overviews at a coarser one.
 void write_content(sqlite::Connection& conn, const ContentWrite& write);
 
+// A model checked and ready to write (model.cpp).
+struct ModelWrite {
+  std::string name;
+  std::string blob;
+  nlohmann::json provenance;
+};
+// Throws maquette::Error naming the model unless `blob` is a sound mesh envelope with a zero
+// origin and `existing` (the layer of that name, if any) is a model layer.
+ModelWrite model_write(const std::optional<LayerEntry>& existing, const std::string& store_path,
+                       const std::string& name, std::string_view blob,
+                       const nlohmann::json& provenance);
+// Writes (or replaces) the model, creating its layer if absent, inside the caller's transaction;
+// throws as model_write if a layer of another kind took the name meanwhile.
+void write_model(sqlite::Connection& conn, const std::string& store_path, const ModelWrite& write);
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
 // Writes (or replaces) the overview tile of `cell`, which is then no longer stale, and marks its
