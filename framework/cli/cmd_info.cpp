@@ -1,6 +1,6 @@
 // maquette info STORE: layers, levels, tile counts, bounding box, size on disk; for content layers
 // (mesh, instances, volume) the cells, objects, triangles, instances and voxels their blobs'
-// headers count.
+// headers count; for models the objects, triangles and materials.
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -81,6 +81,16 @@ void describe_content(const Store& store, const LayerInfo& l, json& j) {
   j["bbox"] = cells_bbox(store.content_cells(l.name));
 }
 
+// A model layer: its one blob's objects, triangles and materials (Store::model_stats).
+void describe_model(const Store& store, const LayerInfo& l, json& j) {
+  const ModelStats st = store.model_stats(l.name);
+  j["objects"] = st.content.objects;
+  j["triangles"] = st.content.triangles;
+  j["materials"] = st.materials;
+  j["bytes"] = st.bytes;
+  j["bbox"] = nullptr;  // in its own frame: placed by the instances that use it
+}
+
 json layer_json(const Store& store, const LayerInfo& l) {
   const LayerStats st = store.stats(l.name);
   json j = {{"name", l.name},
@@ -100,9 +110,11 @@ json layer_json(const Store& store, const LayerInfo& l) {
             {"provenance", l.provenance}};
   const auto why = store.incomplete(l.name);
   j["incomplete"] = why ? json(*why) : json(nullptr);
-  const bool content = layer_content_kind(l.kind).has_value();
+  const bool content = layer_content_kind(l.kind).has_value() || l.kind == LayerKind::Model;
   if (l.kind == LayerKind::Features)
     describe_features(store, l.name, j);
+  else if (l.kind == LayerKind::Model)
+    describe_model(store, l, j);
   else if (content)
     describe_content(store, l, j);
   else
@@ -142,6 +154,14 @@ void print_info(const std::string& path, bool as_json) {
       for (const json& a : l["attributes"])
         attributes += (attributes.empty() ? "" : ", ") + a.get<std::string>();
       std::printf("    attributes %s\n", attributes.empty() ? "none" : attributes.c_str());
+    } else if (l["kind"] == "model") {
+      std::printf("\n  %s: model (own frame: metres, z up, base at z = 0)\n",
+                  l["name"].get<std::string>().c_str());
+      std::printf("    objects %llu, triangles %llu, materials %lld (%.1f kB)\n",
+                  l["objects"].get<unsigned long long>(), l["triangles"].get<unsigned long long>(),
+                  l["materials"].get<long long>(), l["bytes"].get<double>() / 1024.0);
+      if (l["provenance"].contains("source"))
+        std::printf("    source %s\n", l["provenance"]["source"].dump().c_str());
     } else if (l.contains("objects")) {
       std::printf("\n  %s: %s content in cells at level %d\n", l["name"].get<std::string>().c_str(),
                   l["kind"].get<std::string>().c_str(), l["level"].get<int>());
@@ -163,7 +183,7 @@ void print_info(const std::string& path, bool as_json) {
       std::printf("    tiles  %lld (%.1f MiB compressed), levels %s\n", l["tiles"].get<long long>(),
                   l["bytes"].get<double>() / 1048576.0, l["levels"].dump().c_str());
     }
-    std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
+    if (l["kind"] != "model") std::printf("    bbox   %s (W S E N)\n", l["bbox"].dump().c_str());
     if (!l["incomplete"].is_null())
       std::printf("    INCOMPLETE: %s; readers refuse it until it is finished (--resume)\n",
                   l["incomplete"].get<std::string>().c_str());

@@ -1,5 +1,6 @@
 // maquette ingest STORE --layer NAME --as KIND SOURCE...: rasters through GDAL (formats/gdal),
-// vector features and station tables through OGR (formats/vector).
+// vector features and station tables through OGR (formats/vector), glTF models (the mesh
+// plug-in).
 #include <memory>
 
 #include "cli/commands.h"
@@ -12,7 +13,8 @@ void add_ingest_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "ingest",
       "Ingest sources into a store layer: rasters (any GDAL format and CRS, mosaicked and "
-      "resampled onto the grid), OGR vector features, CSV station tables");
+      "resampled onto the grid), OGR vector features, CSV station tables, glTF models (prototypes "
+      "of instances)");
   cmd->add_option("STORE", o->store, "Store file (created if absent)")->required();
   cmd->add_option("SOURCE", o->sources,
                   "Input files; rasters are mosaicked in order (a later "
@@ -20,7 +22,9 @@ void add_ingest_command(CLI::App& app) {
       ->required();
   cmd->add_option("--layer", o->raster.layer, "Layer (or stations artifact) to write")->required();
   cmd->add_option("--as", o->raster.as,
-                  "dem | imagery | climate | landcover | raster | features | stations")
+                  "dem | imagery | climate | landcover | raster | features | stations | model "
+                  "(one .glb or .gltf, its y up turned to z up, its lowest point moved to z = 0, "
+                  "its origin kept in x and y; written again, it replaces the model)")
       ->required();
   cmd->add_option("--bands", o->raster.bands, "Bands to read, 1-based, in channel order (4,3,2)")
       ->delimiter(',');

@@ -6,6 +6,9 @@
 
 #include "core/error.h"
 #include "core/region.h"
+#include "plugins/mesh_export.h"
+#include "plugins/model_ingest.h"
+#include "runtime/plugin.h"
 #include "store/created_store.h"
 #include "vector/vector_ingest.h"
 
@@ -71,10 +74,38 @@ void ingest_vectors(const IngestJob& o) {
   }
 }
 
+// One glTF model into a model layer: read and encoded (mesh plug-in) before the store is opened,
+// then written, or replaced, in one transaction, so a bad file stores nothing.
+void ingest_model(const IngestJob& o) {
+  if (o.sources.size() != 1)
+    throw Error("--as model takes one .glb or .gltf file, got " + std::to_string(o.sources.size()));
+  if (o.level || !o.bbox.empty() || !o.raster.region.empty() || !o.raster.bands.empty() ||
+      !o.raster.vertical_datum.empty())
+    throw Error(
+        "--as model takes none of --level, --bbox, --region, --bands, --vertical-datum: a model "
+        "is in its own frame");
+  const std::string& file = o.sources.front();
+  Store::check_writable(o.store);
+  std::string blob;
+  plugin_function<decltype(maquette_mesh_model)>(kMeshPlugin, kModelIngestEntry)(file, blob);
+  auto store = Store::open(o.store, Store::Mode::Create);
+  try {
+    Store::Batch batch(*store);
+    batch.put_model(o.raster.layer, blob, {{"source", file}});
+    batch.commit();
+  } catch (...) {
+    remove_if_created(std::move(store));  // a failed ingest leaves no new store
+    throw;
+  }
+  const ModelStats st = store->model_stats(o.raster.layer);
+  spdlog::info("model {}: {} objects, {} triangles, {} materials, {} bytes", o.raster.layer,
+               st.content.objects, st.content.triangles, st.materials, st.bytes);
+}
+
 }  // namespace
 
 bool is_raster_job(const IngestJob& job) {
-  return job.raster.as != "features" && job.raster.as != "stations";
+  return job.raster.as != "features" && job.raster.as != "stations" && job.raster.as != "model";
 }
 
 RasterIngestOptions raster_options(const IngestJob& job) {
@@ -91,6 +122,8 @@ RasterIngestOptions raster_options(const IngestJob& job) {
 void run_ingest(const IngestJob& job) {
   if (is_raster_job(job))
     ingest_rasters(job);
+  else if (job.raster.as == "model")
+    ingest_model(job);
   else
     ingest_vectors(job);
 }

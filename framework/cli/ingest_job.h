@@ -1,6 +1,6 @@
 // One ingest, as `maquette ingest` options or an `ingest` pipeline step's params describe it:
 // rasters through GDAL (formats/gdal), vector features and station tables through OGR
-// (formats/vector).
+// (formats/vector), glTF models through the mesh plug-in (plugins/model_ingest.h).
 #pragma once
 
 #include <optional>
@@ -22,7 +22,8 @@ struct IngestJob {
   std::vector<std::string> values;                             // stations: value columns
 };
 
-// features and stations go through OGR, the other kinds through GDAL.
+// features and stations go through OGR, models through the mesh plug-in, the other kinds through
+// GDAL.
 bool is_raster_job(const IngestJob& job);
 // The raster ingest's options (bbox, level and resampling checked and converted).
 RasterIngestOptions raster_options(const IngestJob& job);

@@ -21,11 +21,11 @@ OperatorSpec ingest_spec() {
   s.name = "ingest";
   s.description =
       "Ingest sources into a layer, as `maquette ingest`: rasters through GDAL, OGR features, "
-      "CSV station tables";
+      "CSV station tables, glTF models";
   s.kind = OperatorKind::Task;
   OutputSpec layer;  // dtype, channels and the rest come from the sources and "as"
   layer.name = "layer";
-  layer.description = "the layer written (stations: the artifact)";
+  layer.description = "the layer written (stations: the artifact; model: the model layer)";
   s.outputs = {layer};
   s.params_schema = {
       {"type", "object"},
@@ -35,7 +35,8 @@ OperatorSpec ingest_spec() {
        {{"sources", string_array("input files, relative to the pipeline file, mosaicked in order")},
         {"as",
          {{"type", "string"},
-          {"enum", {"dem", "imagery", "climate", "landcover", "raster", "features", "stations"}}}},
+          {"enum",
+           {"dem", "imagery", "climate", "landcover", "raster", "features", "stations", "model"}}}},
         {"bands",
          {{"type", "array"},
           {"items", {{"type", "integer"}, {"minimum", 1}}},
