@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <set>
 
 #include "core/error.h"
@@ -44,6 +46,50 @@ Sources open_sources(const std::vector<std::string>& paths, const std::string& s
       s.layers.push_back({path, layer, lonlat_transform(*layer, path, src_crs)});
   }
   return s;
+}
+
+// Stops at the first coordinate that is not finite (NaN or infinite), recording it.
+class NonFiniteFinder : public OGRDefaultConstGeometryVisitor {
+ public:
+  using OGRDefaultConstGeometryVisitor::visit;
+  void visit(const OGRPoint* p) override {
+    if (found_) return;
+    const double c[] = {p->getX(), p->getY(), p->Is3D() ? p->getZ() : 0.0};
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+      found_ = "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) +
+               (p->Is3D() ? ", " + std::to_string(c[2]) : "") + ")";
+  }
+  const std::optional<std::string>& found() const { return found_; }
+
+ private:
+  std::optional<std::string> found_;
+};
+
+// Why a feature's geometry cannot be a stroke, or nothing when it can: none, empty, a coordinate
+// that is not finite, or one GEOS rejects (OGRGeometry::IsValid: self-intersections, ...).
+std::optional<std::string> geometry_fault(const OGRFeature& f) {
+  const OGRGeometry* g = f.GetGeometryRef();
+  if (!g) return "has no geometry";
+  if (g->IsEmpty()) return "has an empty geometry";
+  NonFiniteFinder finder;
+  g->accept(&finder);
+  if (finder.found()) return "has a coordinate that is not a number: " + *finder.found();
+  // GEOS reports why a geometry is invalid as a GDAL error, quoted here.
+  CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
+  CPLErrorReset();
+  if (g->IsValid()) return std::nullopt;
+  const std::string why = CPLGetLastErrorMsg();
+  return "has an invalid geometry" + (why.empty() ? std::string() : " (" + why + ")");
+}
+
+// Throws maquette::Error naming the source, layer and feature id of the first feature whose
+// geometry is at fault (geometry_fault), before anything is written.
+void check_geometries(const Sources& sources) {
+  for (const SourceLayer& l : sources.layers) {
+    l.layer->ResetReading();
+    for (const auto& f : *l.layer)
+      if (const auto fault = geometry_fault(*f)) throw Error(l.where(f->GetFID()) + " " + *fault);
+  }
 }
 
 // A feature's size: the larger side of its lon/lat bounding box, in metres; nullopt for
@@ -96,22 +142,8 @@ struct Prepared {
 
 Prepared prepare(const OGRFeature& f, const SourceLayer& l, const Grid& grid, int level) {
   Prepared p;
-  const OGRGeometry* source = f.GetGeometryRef();
-  if (!source || source->IsEmpty()) {
-    p.invalid = "empty geometry";
-    return p;
-  }
-  {
-    // GEOS reports why a geometry is invalid as a GDAL error; the warning below says it once.
-    CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
-    CPLErrorReset();
-    if (!source->IsValid()) {
-      p.invalid = "invalid geometry";
-      if (const std::string why = CPLGetLastErrorMsg(); !why.empty()) p.invalid += " (" + why + ")";
-      return p;
-    }
-  }
-  std::unique_ptr<OGRGeometry> g(source->clone());
+  // check_geometries has checked the geometry.
+  std::unique_ptr<OGRGeometry> g(f.GetGeometryRef()->clone());
   if (g->transform(l.to_lonlat.get()) != OGRERR_NONE) {
     p.invalid = "cannot be transformed to WGS84";
     return p;
@@ -246,6 +278,7 @@ FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>
                                     const FeatureIngestProgress& progress) {
   if (options.batch_size < 1) throw Error("the batch size must be at least 1");
   const Sources src = open_sources(sources, options.src_crs);
+  check_geometries(src);
   const int level = options.level ? *options.level : default_level(default_grid(), src);
   const json key = ingest_key(sources, options, level);
   json provenance = {{"ingest", key}};

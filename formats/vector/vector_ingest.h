@@ -26,7 +26,7 @@ struct FeatureIngestOptions {
 // committed are skipped (not re-read into the counts) and counted in batches_resumed.
 struct FeatureIngestReport {
   int64_t features = 0;         // stored
-  int64_t invalid_skipped = 0;  // invalid or empty geometries, reported and skipped
+  int64_t invalid_skipped = 0;  // not transformable to lon/lat, or off the grid: reported, skipped
   int64_t outside_skipped = 0;  // outside the region
   int64_t cell_entries = 0;     // (cell, feature) index entries
   int64_t batches_resumed = 0;  // batches already committed by the interrupted run
@@ -37,7 +37,10 @@ struct FeatureIngestReport {
 using FeatureIngestProgress = std::function<void(const FeatureIngestReport&)>;
 
 // Throws maquette::Error naming the source (and feature id) for unreadable input. Every source
-// is opened and its CRS checked before anything is written. See formats/vector/README.md.
+// is opened, its CRS checked and every geometry checked before anything is written: a feature
+// without geometry, with an empty one, a coordinate that is not finite (NaN) or a geometry GEOS
+// finds invalid (a self-intersecting polygon, ...) is an error naming the source, layer and
+// feature id. See formats/vector/README.md.
 FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>& sources,
                                     const FeatureIngestOptions& options,
                                     const FeatureIngestProgress& progress = {});

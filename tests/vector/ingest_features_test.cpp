@@ -1,5 +1,6 @@
 // ingest_features on files the tests write: GeoJSON, a GeoPackage in a projected CRS, a
-// Shapefile; invalid geometries, regions, the default level, resume and re-ingest.
+// Shapefile; geometries at fault refused before anything is written, regions, the default level,
+// resume and re-ingest.
 #include <algorithm>
 #include <cmath>
 
@@ -33,15 +34,13 @@ const json kBowtie = {
     {"type", "Polygon"},
     {"coordinates", {{{12, 45}, {12.1, 45.1}, {12.1, 45}, {12, 45.1}, {12, 45}}}}};
 
-// A square, a line, a point, a self-intersecting bowtie and a feature without geometry.
+// A square, a line and a point.
 std::string mixed_geojson(const TempDir& dir) {
   const std::string path = dir.file("mixed.geojson");
   write_text(path, collection({
                        geojson_feature(kSquare, {{"n", 3}, {"x", 1.5}, {"name", "square"}}),
                        geojson_feature(kLine, {{"n", 4}, {"ok", true}, {"name", "line"}}),
                        geojson_feature(kPoint, {{"n", 5}, {"name", nullptr}}),
-                       geojson_feature(kBowtie, {{"n", 6}}),
-                       geojson_feature(nullptr, {{"n", 7}}),
                    }));
   return path;
 }
@@ -58,7 +57,7 @@ TEST(IngestFeatures, GeoJsonPolygonsLinesAndPointsAreIndexedInTheCellsTheyTouch)
   auto store = new_store(dir);
   const FeatureIngestReport r = ingest_features(*store, {mixed_geojson(dir)}, at_level(10));
   EXPECT_EQ(r.features, 3);
-  EXPECT_EQ(r.invalid_skipped, 2);  // the bowtie and the empty geometry
+  EXPECT_EQ(r.invalid_skipped, 0);
   EXPECT_EQ(r.level, 10);
   EXPECT_EQ(store->feature_count("things"), 3);
   const Grid& grid = default_grid();
@@ -92,6 +91,69 @@ TEST(IngestFeatures, GeoJsonPolygonsLinesAndPointsAreIndexedInTheCellsTheyTouch)
   EXPECT_NEAR(all[0].bbox[0], 9.8, 1e-12);
   EXPECT_NEAR(all[0].bbox[3], 45.2, 1e-12);
   EXPECT_EQ(store->stats("things").feature_count, 3);
+}
+
+// A GeoPackage of a point and of a line whose second vertex's longitude is NaN (which WKT
+// cannot write), feature ids 1 and 2.
+void write_nan_line(const std::string& path) {
+  write_vector(path, "GPKG", 4326,
+               {{"POINT (11 45)", 1, "a"}, {"LINESTRING (10 45, 10.5 45.1)", 2, "b"}});
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE));
+  ASSERT_NE(ds, nullptr);
+  OGRLayer* layer = ds->GetLayer(0);
+  OGRFeatureUniquePtr f(layer->GetFeature(2));
+  ASSERT_NE(f, nullptr);
+  f->GetGeometryRef()->toLineString()->setPoint(1, std::nan(""), 45.1);
+  ASSERT_EQ(layer->SetFeature(f.get()), OGRERR_NONE);
+}
+
+// Strokes at fault: each an error naming the file, layer and feature id, before anything is
+// written, whether the layer is new or holds features already.
+TEST(IngestFeatures, GeometriesAtFaultAreErrorsAndStoreNothing) {
+  TempDir dir;
+  auto store = new_store(dir);
+  ingest_features(*store, {mixed_geojson(dir)}, at_level(10));
+  const auto before = store->features_in("things", CellId(0), CellId(uint64_t(INT64_MAX)));
+  const auto fid_17 = [](const json& geometry) {
+    json f = geojson_feature(geometry, {{"n", 17}});
+    f["id"] = 17;
+    return f;
+  };
+  struct Case {
+    std::string file, fault;
+  };
+  std::vector<Case> cases;
+  const auto add_geojson = [&](const std::string& name, const json& geometry,
+                               const std::string& fault) {
+    const std::string path = dir.file(name + ".geojson");
+    write_text(path, collection({geojson_feature(kPoint, {{"n", 1}}), fid_17(geometry)}));
+    cases.push_back({path, fault});
+  };
+  add_geojson("bowtie", kBowtie, "has an invalid geometry (Self-intersection");
+  add_geojson("none", nullptr, "has no geometry");
+  // GeoJSON reads an empty geometry as none, and cannot hold NaN: GeoPackages can.
+  const std::string empty_path = dir.file("empty.gpkg");
+  write_vector(empty_path, "GPKG", 4326, {{"POINT (11 45)", 1, "a"}, {"POLYGON EMPTY", 2, "b"}});
+  cases.push_back({empty_path, "feature 2 has an empty geometry"});
+  const std::string nan_path = dir.file("nan.gpkg");
+  write_nan_line(nan_path);
+  cases.push_back({nan_path, "feature 2 has a coordinate that is not a number: (nan, 45.1"});
+  for (const Case& c : cases) {
+    for (const std::string layer : {"things", "fresh"})
+      expect_error([&] { ingest_features(*store, {c.file}, at_level(10, layer)); },
+                   {c.file, "feature", c.fault});
+    EXPECT_FALSE(store->layer("fresh")) << c.file;
+    EXPECT_FALSE(store->incomplete("things")) << c.file;
+    const auto after = store->features_in("things", CellId(0), CellId(uint64_t(INT64_MAX)));
+    ASSERT_EQ(after.size(), before.size());
+    for (size_t i = 0; i < after.size(); ++i) {
+      EXPECT_EQ(after[i].fid, before[i].fid);
+      EXPECT_EQ(after[i].wkb, before[i].wkb);
+    }
+  }
+  // The GeoJSON features at fault carry the id 17.
+  expect_error([&] { ingest_features(*store, {cases[0].file}, at_level(10, "fresh")); },
+               {"feature 17 has an invalid geometry"});
 }
 
 TEST(IngestFeatures, GeoPackageInAProjectedCrsIsTransformedToLonLat) {
@@ -162,16 +224,16 @@ TEST(IngestFeatures, SeveralSourcesGetDistinctFidsAndARegionFilters) {
   FeatureIngestOptions o = at_level(10);
   o.region = {default_grid().cell_from_point({11.0, 45.5}, 10)};  // holds the point only
   const auto r = ingest_features(*store, {mixed_geojson(dir), shp}, o);
-  EXPECT_EQ(r.features, 2);  // fid 3 (GeoJSON point) and fid 6 (the Shapefile's point)
+  EXPECT_EQ(r.features, 2);  // fid 3 (GeoJSON point) and fid 4 (the Shapefile's point)
   EXPECT_EQ(r.outside_skipped, 2);
-  EXPECT_EQ(r.invalid_skipped, 2);
+  EXPECT_EQ(r.invalid_skipped, 0);
   const auto all = store->features_in("things", CellId(0), CellId(uint64_t(INT64_MAX)));
   ASSERT_EQ(all.size(), 2u);
   EXPECT_EQ(all[0].fid, 3);
-  EXPECT_EQ(all[1].fid, 6);
+  EXPECT_EQ(all[1].fid, 4);
   const auto layers = store->require_layer("things").provenance["layers"];
   ASSERT_EQ(layers.size(), 2u);
-  EXPECT_EQ(layers[1]["first_fid"], 6);
+  EXPECT_EQ(layers[1]["first_fid"], 4);
   EXPECT_EQ(layers[1]["features"], 1);
 }
 
