@@ -33,17 +33,6 @@ const std::map<CellId, MeshContent>& buildings() {
 
 std::string wrap_instances_blob(const InstancesContent& c) { return wrap_instances(c); }
 
-std::string wrap_mesh_blob(const MeshContent& c) {
-  ContentEnvelope e;
-  e.kind = ContentKind::Mesh;
-  e.origin = c.origin;
-  for (const MeshObject& o : c.objects) {
-    ++e.stats.objects;
-    e.stats.triangles += o.indices.size() / 3;
-  }
-  return wrap_content(e, encode_mesh_glb(c));
-}
-
 // A store file in the temp directory, deleted (with its WAL) afterwards.
 struct TempStore {
   TempStore(const std::string& layer, LayerKind kind, int level)
@@ -130,11 +119,11 @@ void BM_InstancesWrite(benchmark::State& state) {
         wrap_instances_blob);
 }
 void BM_MeshesEncode(benchmark::State& state) {
-  encode(state, buildings(), mesh_stats(buildings()).objects, wrap_mesh_blob);
+  encode(state, buildings(), mesh_stats(buildings()).objects, mesh_content_blob);
 }
 void BM_MeshesWrite(benchmark::State& state) {
   write(state, buildings(), mesh_stats(buildings()).objects, LayerKind::Mesh, CitySettings{}.level,
-        wrap_mesh_blob);
+        mesh_content_blob);
 }
 
 BENCHMARK(BM_InstancesEncode)->Unit(benchmark::kMillisecond);

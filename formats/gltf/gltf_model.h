@@ -1,4 +1,4 @@
-// Outside models (for the coming `maquette ingest --as model`): a .glb, or a .gltf whose buffers
+// Outside models (for `maquette ingest --as model`): a .glb, or a .gltf whose buffers
 // and images are files beside it or data URIs, plain or Draco-compressed, read into MeshContent.
 // Every node of the default scene (all root nodes when there is none) is drawn with its transforms
 // composed (matrix or translation, rotation, scale), in double; each primitive a node draws is one

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 
+#include "content/content_blob.h"
 #include "core/error.h"
 #include "gltf/enu_axes.h"
 #include "gltf/glb_writer.h"
@@ -452,6 +453,15 @@ MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
   return out;
 } catch (const json::exception& e) {
   throw Error(where + ": malformed glTF: " + e.what());
+}
+
+std::string mesh_content_blob(const MeshContent& content) {
+  ContentEnvelope envelope;
+  envelope.kind = ContentKind::Mesh;
+  envelope.origin = content.origin;
+  envelope.stats.objects = content.objects.size();
+  for (const MeshObject& o : content.objects) envelope.stats.triangles += o.indices.size() / 3;
+  return wrap_content(envelope, encode_mesh_glb(content));
 }
 
 }  // namespace maquette

@@ -34,6 +34,11 @@ struct MeshGlbSettings {
 // fault: a factor outside 0..1, an image neither JPEG, PNG nor WebP.
 std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& settings = {});
 
+// `content` as the store's blob of a mesh or model layer: the envelope (content/content_blob.h:
+// kind mesh, the content's origin, objects and triangles counted) around encode_mesh_glb's GLB
+// at the default settings. Throws as encode_mesh_glb and wrap_content do.
+std::string mesh_content_blob(const MeshContent& content);
+
 // The content back: objects in their order with their materials and provenance; each object's
 // vertices in the order its triangles first use them (Draco reorders triangles and vertices, so
 // they come back as the same triangles, not the same index lists). Throws maquette::Error naming

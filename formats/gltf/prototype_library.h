@@ -1,8 +1,8 @@
 // The models of an instances content's prototype names (content/content.h: InstancesContent),
 // for an export: "builtin:*" names are the built-in prototypes (content/prototypes.h); any other
-// name will be a model layer of the same store (`maquette ingest --as model`; the store's model
-// layers are not readable yet, so such a name is refused as unknown). Each model is made or read
-// once per library, so one library serves a whole export.
+// name is a model layer of the same store (`maquette ingest --as model`: a mesh GLB in the
+// model's frame, decoded here). Each model is made or read once per library, so one library
+// serves a whole export.
 #pragma once
 
 #include <map>
@@ -26,6 +26,7 @@ class PrototypeLibrary {
  private:
   const Store& store_;
   std::map<std::string, const MeshContent*> models_;
+  std::map<std::string, MeshContent> decoded_;  // the model layers read so far
 };
 
 }  // namespace maquette

@@ -71,7 +71,7 @@ struct MeshContent {
 struct InstancesContent {
   EnuOrigin origin;
   // Prototype names: "builtin:conifer", "builtin:broadleaf", "builtin:shrub", or a model layer
-  // to be ingested with the coming `maquette ingest --as model`.
+  // (`maquette ingest --as model`, store/README.md "Model layers").
   std::vector<std::string> prototypes;
   std::vector<uint16_t> prototype;           // index into prototypes
   std::vector<float> position;               // x, y, z, metres in the ENU frame (the base)

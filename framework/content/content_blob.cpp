@@ -26,7 +26,8 @@ const char* kind_name(uint8_t kind) {
   return nullptr;
 }
 
-// Empty when the origin is a point of the globe, else what is wrong with it.
+}  // namespace
+
 std::string origin_fault(const EnuOrigin& o) {
   if (!std::isfinite(o.lon) || !std::isfinite(o.lat) || !std::isfinite(o.height))
     return "origin is not finite";
@@ -35,8 +36,6 @@ std::string origin_fault(const EnuOrigin& o) {
            " is outside [-180, 180] x [-90, 90]";
   return {};
 }
-
-}  // namespace
 
 std::string_view content_kind_name(ContentKind kind) {
   const char* name = kind_name(uint8_t(kind));

@@ -30,6 +30,10 @@ struct ContentEnvelope {
 // "mesh", "instances", "volume": also the names of the store's layer kinds that hold them.
 std::string_view content_kind_name(ContentKind kind);
 
+// What is wrong with an ENU origin (not finite, or lon/lat outside [-180, 180] x [-90, 90]), or
+// nothing: an empty string.
+std::string origin_fault(const EnuOrigin& origin);
+
 // Throws maquette::Error for an unknown kind or encoding, or an origin that is not finite or
 // outside [-180, 180] x [-90, 90].
 std::string wrap_content(const ContentEnvelope& envelope, std::string_view payload);

@@ -6,7 +6,8 @@
 //   children's origin heights (summed in child digit order); every position is re-expressed
 //   through ECEF in double (enu_transform.h) and rounded to float once.
 // - Instances (instances_thin.h): the children's instances that the thinning rule keeps at the
-//   parent's depth, bit for bit but for their re-origined positions.
+//   parent's depth, bit for bit but for their positions and rotations, re-expressed in the parent
+//   frame.
 // - Meshes (plug-in libmaquette_mesh.so, gltf/mesh_simplify.h): each object simplified to about
 //   a quarter of its triangles within half the level's sample, objects smaller than the sample
 //   dropped, textures halved.

@@ -1,5 +1,7 @@
 #include "content/enu_transform.h"
 
+#include <cmath>
+
 #include "core/ecef.h"
 
 namespace maquette {
@@ -26,6 +28,34 @@ std::array<double, 3> EnuTransform::direction(double x, double y, double z) cons
   for (int i = 0; i < 3; ++i)
     out[i] = rotation_[i][0] * x + rotation_[i][1] * y + rotation_[i][2] * z;
   return out;
+}
+
+std::array<double, 4> EnuTransform::rotation(double x, double y, double z, double w) const {
+  // The frames' rotation as a quaternion (Shepperd's method: the largest of the four
+  // candidates keeps the division well away from zero).
+  const auto& r = rotation_;
+  const double trace = r[0][0] + r[1][1] + r[2][2];
+  double a, b, c, d;  // x, y, z, w
+  if (trace >= r[0][0] && trace >= r[1][1] && trace >= r[2][2]) {
+    d = 0.5 * std::sqrt(1 + trace);
+    a = (r[2][1] - r[1][2]) / (4 * d), b = (r[0][2] - r[2][0]) / (4 * d);
+    c = (r[1][0] - r[0][1]) / (4 * d);
+  } else if (r[0][0] >= r[1][1] && r[0][0] >= r[2][2]) {
+    a = 0.5 * std::sqrt(1 + r[0][0] - r[1][1] - r[2][2]);
+    b = (r[0][1] + r[1][0]) / (4 * a), c = (r[0][2] + r[2][0]) / (4 * a);
+    d = (r[2][1] - r[1][2]) / (4 * a);
+  } else if (r[1][1] >= r[2][2]) {
+    b = 0.5 * std::sqrt(1 - r[0][0] + r[1][1] - r[2][2]);
+    a = (r[0][1] + r[1][0]) / (4 * b), c = (r[1][2] + r[2][1]) / (4 * b);
+    d = (r[0][2] - r[2][0]) / (4 * b);
+  } else {
+    c = 0.5 * std::sqrt(1 - r[0][0] - r[1][1] + r[2][2]);
+    a = (r[0][2] + r[2][0]) / (4 * c), b = (r[1][2] + r[2][1]) / (4 * c);
+    d = (r[1][0] - r[0][1]) / (4 * c);
+  }
+  // (a, b, c, d) * (x, y, z, w): the instance's rotation first, then the frames'.
+  return {d * x + a * w + b * z - c * y, d * y - a * z + b * w + c * x,
+          d * z + a * y - b * x + c * w, d * w - a * x - b * y - c * z};
 }
 
 std::array<double, 3> EnuTransform::point(double x, double y, double z) const {

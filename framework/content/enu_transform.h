@@ -16,6 +16,9 @@ class EnuTransform {
   std::array<double, 3> point(double x, double y, double z) const;
   // A direction (no translation), e.g. a normal.
   std::array<double, 3> direction(double x, double y, double z) const;
+  // A rotation of the `from` frame (unit quaternion x, y, z, w, glTF order) as the same
+  // rotation of the `to` frame: the frames' rotation composed before it.
+  std::array<double, 4> rotation(double x, double y, double z, double w) const;
   // 4x4 row-major matrix of `point` (last row 0 0 0 1), for libraries taking affine maps.
   std::array<double, 16> matrix() const;
 

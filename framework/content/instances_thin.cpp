@@ -58,7 +58,8 @@ InstancesContent thin_instances(std::span<const InstancesContent> children, cons
       const auto p =
           to_parent.point(c.position[3 * i], c.position[3 * i + 1], c.position[3 * i + 2]);
       for (double v : p) out.position.push_back(float(v));
-      out.rotation.insert(out.rotation.end(), &c.rotation[4 * i], &c.rotation[4 * i + 4]);
+      const float* q = &c.rotation[4 * i];
+      for (double v : to_parent.rotation(q[0], q[1], q[2], q[3])) out.rotation.push_back(float(v));
       out.scale.insert(out.scale.end(), &c.scale[3 * i], &c.scale[3 * i + 3]);
       out.colour.push_back(c.colour[i]);
       if (provenance)

@@ -16,7 +16,6 @@ inline constexpr const char* kMeshContentEntry = "maquette_mesh_content_blob";
 
 }  // namespace maquette
 
-// `content` as a mesh layer's blob: the envelope (content/content_blob.h: kind mesh, the content's
-// origin, objects and triangles counted) around encode_mesh_glb's GLB (gltf/mesh_glb.h, default
-// settings: positions quantized to at most 1 mm). Throws maquette::Error as encode_mesh_glb does.
+// `content` as a mesh layer's blob: gltf/mesh_glb.h's mesh_content_blob (positions quantized to
+// at most 1 mm). Throws maquette::Error as it does.
 extern "C" void maquette_mesh_content_blob(const maquette::MeshContent& content, std::string& blob);

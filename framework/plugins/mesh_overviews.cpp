@@ -17,10 +17,5 @@ void maquette_mesh_overview(const std::vector<std::string>& children,
   const MeshContent parent = simplify_mesh_children(decoded, level);
   overview.reset();
   if (parent.objects.empty()) return;
-  ContentEnvelope envelope;
-  envelope.kind = ContentKind::Mesh;
-  envelope.origin = parent.origin;
-  envelope.stats.objects = parent.objects.size();
-  for (const MeshObject& o : parent.objects) envelope.stats.triangles += o.indices.size() / 3;
-  overview = wrap_content(envelope, encode_mesh_glb(parent));
+  overview = mesh_content_blob(parent);
 }

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "content/content_blob.h"
 #include "core/error.h"
 #include "gltf/gltf_model.h"
 #include "gltf/mesh_glb.h"
@@ -26,12 +25,8 @@ void maquette_mesh_model(const std::string& path, std::string& blob) {
   using namespace maquette;
   MeshContent model = read_gltf_model(path);
   place_base_at_zero(model);
-  ContentEnvelope envelope;
-  envelope.kind = ContentKind::Mesh;
-  envelope.stats.objects = model.objects.size();
-  for (const MeshObject& o : model.objects) envelope.stats.triangles += o.indices.size() / 3;
   try {
-    blob = wrap_content(envelope, encode_mesh_glb(model));
+    blob = mesh_content_blob(model);  // the model's origin fields stay zero
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }

@@ -5,6 +5,7 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "content/content_blob.h"
 #include "content/instances_codec.h"
@@ -87,15 +88,17 @@ void check_mesh(const MeshContent& c, CellId cell, const Grid& grid) {
   }
 }
 
-// Prototype names must be built in: model layers (`maquette ingest --as model`) are not in the
-// store yet.
-void check_prototypes(const InstancesContent& c) {
+// Prototype names must be built in or name a model layer (`maquette ingest --as model`).
+void check_prototypes(const InstancesContent& c, const std::set<std::string>& models) {
   const auto& builtin = builtin_prototype_names();
   for (size_t p = 0; p < c.prototypes.size(); ++p) {
-    if (std::find(builtin.begin(), builtin.end(), c.prototypes[p]) != builtin.end()) continue;
+    if (std::find(builtin.begin(), builtin.end(), c.prototypes[p]) != builtin.end() ||
+        models.count(c.prototypes[p]))
+      continue;
     const auto user = std::find(c.prototype.begin(), c.prototype.end(), uint16_t(p));
     std::string known;
     for (const std::string& name : builtin) known += (known.empty() ? "" : ", ") + name;
+    for (const std::string& name : models) known += ", " + name;
     throw Error((user == c.prototype.end() ? "prototype " + std::to_string(p)
                                            : instance_text(c, size_t(user - c.prototype.begin()))) +
                 ": unknown prototype '" + c.prototypes[p] + "' (known: " + known + ")");
@@ -121,9 +124,10 @@ std::string mesh_blob(const MeshContent& c, CellId cell, const Grid& grid) {
   return blob;
 }
 
-std::string instances_blob(const InstancesContent& c, CellId cell, const Grid& grid) {
+std::string instances_blob(const InstancesContent& c, CellId cell, const Grid& grid,
+                           const std::set<std::string>& models) {
   check_instances(c, "instances content");  // the columns first: the positions below are then there
-  check_prototypes(c);
+  check_prototypes(c, models);
   check_instance_positions(c, cell, grid);
   return wrap_instances(c);
 }
@@ -158,16 +162,27 @@ LonLat enu_to_lonlat(const EnuOrigin& origin, const float* xyz) {
 }
 
 std::vector<ContentBlob> encode_cell_content(const CellContent& content, CellId cell,
-                                             const Grid& grid) {
+                                             const Grid& grid,
+                                             const std::set<std::string>& models) {
   std::vector<ContentBlob> blobs;
+  // The origin first: the anchors' checks go through it.
+  const auto origin_ok = [](const auto& c) {
+    if (const std::string fault = origin_fault(c.origin); !fault.empty()) throw Error(fault);
+  };
   encode_port(content.meshes, blobs, [&](const MeshContent& c) {
-    return c.objects.empty() ? std::string() : mesh_blob(c, cell, grid);
+    if (c.objects.empty()) return std::string();
+    origin_ok(c);
+    return mesh_blob(c, cell, grid);
   });
   encode_port(content.instances, blobs, [&](const InstancesContent& c) {
-    return c.size() == 0 ? std::string() : instances_blob(c, cell, grid);
+    if (c.size() == 0) return std::string();
+    origin_ok(c);
+    return instances_blob(c, cell, grid, models);
   });
   encode_port(content.volumes, blobs, [&](const VolumeContent& c) {
-    return c.vdb.empty() ? std::string() : volume_blob(c);
+    if (c.vdb.empty()) return std::string();
+    origin_ok(c);
+    return volume_blob(c);
   });
   return blobs;
 }

@@ -5,6 +5,7 @@
 // run without content outputs loads neither.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,11 @@ struct ContentBlob {
 
 // The blobs of `content`'s non-empty contents (an empty one writes nothing), by port. Throws
 // maquette::Error "outputs.PORT: ..." naming the object or instance at fault with its feature id,
-// for any breach of CellContent's contract (`cell` at its layer's level, on `grid`).
+// for any breach of CellContent's contract (`cell` at its layer's level, on `grid`). Instances'
+// prototypes are built-in names or among `models`, the store's model layers.
 std::vector<ContentBlob> encode_cell_content(const CellContent& content, CellId cell,
-                                             const Grid& grid);
+                                             const Grid& grid,
+                                             const std::set<std::string>& models = {});
 
 // The lon/lat of a position of a content's ENU frame (content/content.h).
 LonLat enu_to_lonlat(const EnuOrigin& origin, const float* xyz);

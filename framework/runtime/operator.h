@@ -126,8 +126,9 @@ inline constexpr double kAnchorToleranceM = 0.01;
 //   the rounding of float32 positions near its edge;
 // - meshes: finite positions, 3 per vertex, one normal and one uv per vertex or none,
 //   indices in range and whole triangles (at least one), materials in range;
+// - a finite origin on the globe (lon in [-180, 180], lat in [-90, 90]);
 // - instances: content/instances_codec.h's check_instances, finite positions, prototypes
-//   "builtin:conifer|broadleaf|shrub" (content/prototypes.h);
+//   "builtin:conifer|broadleaf|shrub" (content/prototypes.h) or a model layer of the store;
 // - volumes: a VDB stream the volume plug-in reads (vdb/volume_vdb.h).
 // Meshes are stored as formats/gltf/mesh_glb.h's GLB (positions quantized to at most 1 mm),
 // instances losslessly (instances_codec.h), volumes as given.

@@ -37,7 +37,7 @@ std::string port_error(const OperatorSpec& spec) {
       return where + "takes features, which tasks are not given";
   }
   for (const auto& out : spec.outputs) {
-    if (out.kind == LayerKind::Features || out.kind == LayerKind::Artifact)
+    if (out.kind != LayerKind::Raster && !layer_content_kind(out.kind))
       return "output '" + out.name + "' writes " + std::string(layer_kind_name(out.kind)) +
              " layers (outputs write raster or 3D content layers)";
     if (out.kind != LayerKind::Raster && spec.kind != OperatorKind::Cell &&

@@ -23,7 +23,10 @@ size_t cache_capacity(const StepPlan& plan) {
 }  // namespace
 
 StepIO::StepIO(Store& store, const StepPlan& plan, int64_t run_id)
-    : store_(store), plan_(plan), run_id_(run_id), cache_(cache_capacity(plan)) {}
+    : store_(store), plan_(plan), run_id_(run_id), cache_(cache_capacity(plan)) {
+  for (const LayerInfo& layer : store.layers())
+    if (layer.kind == LayerKind::Model) models_.insert(layer.name);
+}
 
 std::optional<Tile<float>> StepIO::read(const LayerInfo& layer, CellId cell) const {
   const std::optional<RawTile> raw = store_.get_tile(layer.name, cell);
@@ -94,7 +97,7 @@ std::vector<ContentBlob> StepIO::encode_content(CellId cell, const CellContent& 
   check(content.meshes, LayerKind::Mesh);
   check(content.instances, LayerKind::Instances);
   check(content.volumes, LayerKind::Volume);
-  return encode_cell_content(content, cell, default_grid());
+  return encode_cell_content(content, cell, default_grid(), models_);
 }
 
 void StepIO::write(std::span<const CellOutput> cells) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 
@@ -64,6 +65,7 @@ class StepIO {
   Store& store_;
   const StepPlan& plan_;
   int64_t run_id_;
+  std::set<std::string> models_;  // the store's model layers: instances' prototypes
   TileCache cache_;
   mutable std::atomic<int64_t> decoded_{0};
 };

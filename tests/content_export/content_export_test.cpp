@@ -185,6 +185,43 @@ TEST(ContentExport, InstancesUseThePrototypesMaterialsAndColours) {
   }
 }
 
+// A model layer (store/README.md, "Model layers") is a prototype: once the store holds a model
+// named "oak", the orchard's instance (refused in BadInput) is drawn with that model's mesh and
+// material.
+TEST(ContentExport, ModelLayersArePrototypes) {
+  const ContentStore s = write_content_store(temp_dir() + "/models.maquette");
+  MeshContent oak;
+  oak.materials.push_back({"leaves", {0.2f, 0.5f, 0.1f, 1}, 0.f, 0.8f, "", "", false});
+  oak.objects.push_back(box({-2, -2, 0}, {4, 4, 12}));
+  oak.objects[0].material = 0;
+  ContentEnvelope model;
+  model.kind = ContentKind::Mesh;
+  model.stats = {1, 12, 0};
+  {
+    auto store = Store::open(s.path, Store::Mode::ReadWrite);
+    Store::Batch batch(*store);
+    batch.put_model("oak", wrap_content(model, encode_mesh_glb(oak)));
+    batch.commit();
+  }
+  const std::string dir = temp_dir() + "/model_tiles";
+  fs::remove_all(dir);
+  const auto r =
+      run_maquette("export tiles3d " + s.path + " " + dir + " --dem dem --content orchard");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string u = uri(s.block[3], "orchard");
+  EXPECT_EQ(gpu_instancing_problems(split_glb(file_bytes(dir + "/" + u))),
+            std::vector<std::string>{});
+  const Export x = read_export(dir);
+  const Glb& glb = x.glbs.at(u);
+  ASSERT_EQ(glb.json["meshes"].size(), 1u);
+  EXPECT_EQ(glb.json["meshes"][0]["name"], "oak leaves");
+  const auto colour = glb.json["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"];
+  EXPECT_NEAR(colour[1].get<double>(), 0.5, 1e-6);
+  EXPECT_EQ(glb.json["accessors"][glb.json["meshes"][0]["primitives"][0]["indices"].get<size_t>()]
+                    ["count"],
+            36);
+}
+
 TEST(ContentExport, VolumesAreMeshed) {
   const Export& e = content_export();
   const auto& s = content_store();

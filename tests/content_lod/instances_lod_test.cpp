@@ -1,5 +1,6 @@
 // Coarser levels of an instances layer (content/content_overviews.h, instances_thin.h): exactly
-// the instances the rule keeps, bit for bit but re-origined, whatever order cells are written in.
+// the instances the rule keeps, bit for bit but re-origined (positions and rotations), whatever
+// order cells are written in.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -55,6 +56,18 @@ InstancesContent read(const Store& store, CellId cell) {
 
 // Keeps an instance of the base (with provenance) at `depth` levels above: the rule of
 // instances_thin.h, recomputed from its definition.
+// `v` turned by the unit quaternion q (x, y, z, w): v + 2w (q x v) + 2 q x (q x v).
+std::array<double, 3> rotate(const float* q, const std::array<double, 3>& v) {
+  const auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                                 a[0] * b[1] - a[1] * b[0]};
+  };
+  const std::array<double, 3> u{q[0], q[1], q[2]};
+  const auto t = cross(u, v), tt = cross(u, t);
+  return {v[0] + 2 * q[3] * t[0] + 2 * tt[0], v[1] + 2 * q[3] * t[1] + 2 * tt[1],
+          v[2] + 2 * q[3] * t[2] + 2 * tt[2]};
+}
+
 bool kept(uint64_t object_id, int depth) {
   for (int d = 1; d <= depth; ++d)
     if (!instance_survives(object_id, d)) return false;
@@ -90,9 +103,15 @@ TEST(InstancesLod, LevelsKeepExactlyTheRulesInstancesBitForBit) {
           ASSERT_LT(n, got.size()) << cell.ToText();
           ASSERT_EQ(got.provenance[n], original.provenance[i]) << "level " << level << " n " << n;
           EXPECT_EQ(got.prototypes[got.prototype[n]], original.prototypes[original.prototype[i]]);
-          for (int k = 0; k < 4; ++k)
-            EXPECT_EQ(std::bit_cast<uint32_t>(got.rotation[4 * n + k]),
-                      std::bit_cast<uint32_t>(original.rotation[4 * i + k]));
+          // The rotation turned with the frame: each axis the original turns, carried into the
+          // parent frame through GeographicLib, is the axis the stored rotation turns.
+          for (const std::array<double, 3>& axis : {std::array<double, 3>{1, 0, 0}, {0, 0, 1}}) {
+            const auto was = rotate(&original.rotation[4 * i], axis);
+            const auto zero = reframe(original.origin, got.origin, {0, 0, 0});
+            const auto tip = reframe(original.origin, got.origin, {was[0], was[1], was[2]});
+            const auto now = rotate(&got.rotation[4 * n], axis);
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(now[k], tip[k] - zero[k], 1e-6);
+          }
           for (int k = 0; k < 3; ++k)
             EXPECT_EQ(std::bit_cast<uint32_t>(got.scale[3 * n + k]),
                       std::bit_cast<uint32_t>(original.scale[3 * i + k]));

@@ -97,18 +97,9 @@ MeshContent cell_mesh(CellId cell) {
   return c;
 }
 
-std::string mesh_blob(const MeshContent& c) {
-  ContentEnvelope e;
-  e.kind = ContentKind::Mesh;
-  e.origin = c.origin;
-  e.stats.objects = c.objects.size();
-  for (const auto& o : c.objects) e.stats.triangles += o.indices.size() / 3;
-  return wrap_content(e, encode_mesh_glb(c));
-}
-
 void write_cells(Store& store, const std::vector<CellId>& cells) {
   Store::Batch batch(store);
-  for (CellId cell : cells) batch.put_content("domes", cell, mesh_blob(cell_mesh(cell)));
+  for (CellId cell : cells) batch.put_content("domes", cell, mesh_content_blob(cell_mesh(cell)));
   batch.commit();
 }
 

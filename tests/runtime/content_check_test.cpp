@@ -63,6 +63,30 @@ TEST(ContentCheck, AnchorsJustBeyondTheEdgeWithinTheTolerance) {
   EXPECT_EQ(encode_cell_content(one_tree({10, -20, 3}), kCell, default_grid()).size(), 1u);
 }
 
+// The origin is checked before the anchors are taken through it.
+TEST(ContentCheck, OriginsOffTheGlobeAreRefused) {
+  CellContent content = one_tree({10, -20, 3});
+  content.instances["trees"].origin.lat = NAN;
+  EXPECT_EQ(test::error_of([&] { encode_cell_content(content, kCell, default_grid()); }),
+            "outputs.trees: origin is not finite");
+  content.instances["trees"].origin.lat = 91;
+  EXPECT_NE(test::error_of([&] {
+              encode_cell_content(content, kCell, default_grid());
+            }).find("outputs.trees: origin lon "),
+            std::string::npos);
+}
+
+// A prototype is a built-in name or one of the store's model layers, which the runner passes.
+TEST(ContentCheck, PrototypesAreBuiltInOrModelLayers) {
+  CellContent content = one_tree({10, -20, 3});
+  content.instances["trees"].prototypes = {"oak"};
+  EXPECT_EQ(encode_cell_content(content, kCell, default_grid(), {"oak"}).size(), 1u);
+  EXPECT_NE(test::error_of([&] { encode_cell_content(content, kCell, default_grid(), {"elm"}); })
+                .find("instance 0 (feature 7): unknown prototype 'oak' (known: builtin:conifer, "
+                      "builtin:broadleaf, builtin:shrub, elm)"),
+            std::string::npos);
+}
+
 TEST(ContentCheck, MeshFaultsNameTheObjectAndFeature) {
   const auto with = [](auto change) {
     CellContent content;
