@@ -52,6 +52,13 @@ TEST(ModuleLoader, RefusesAFileThatIsNoLibrary) {
               HasSubstr("cannot load module /nonexistent/libx.so"));
 }
 
+TEST(OperatorRegistry, RefusesAnOutputOfKindModelNamingFileAndPort) {
+  const std::string file = fixture_dir("bad_port") + "/libfixture_bad_port.so";
+  EXPECT_EQ(error_of([] { OperatorRegistry::load({fixture_dir("bad_port")}); }),
+            file + ": operator 'fixture.writes_model': output 'prototype' writes model layers " +
+                "(outputs write raster or 3D content layers)");
+}
+
 TEST(OperatorRegistry, RejectsDuplicateOperatorNamingBothFiles) {
   const std::string message = error_of([] {
     OperatorRegistry::load({fixture_dir("good"), fixture_dir("dup")});
