@@ -1,0 +1,130 @@
+// deform.features (region): the DEM deformed to feature strokes (paper 002 §3.2, base level).
+//
+// A region operator, not a cell operator: a feature's least squares couples every vertex of its
+// field of influence, whose width comes from the stroke (its cross_section), so no halo fixed in
+// the operator's spec can cover it. The system is defined in global face pixels (unknowns sorted
+// by sample, positions from the grid, the tangent plane at the first stroke's first point), so a
+// sample's result depends on the strokes and the DEM, not on the tiling of the region; it runs
+// once on one rank, so not on threads or ranks either.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "deform_solve.h"
+#include "height_field.h"
+#include "mosaic_frame.h"
+#include "operators.h"
+#include "stroke.h"
+#include "stroke_constraints.h"
+
+namespace maquette::deform {
+namespace {
+
+OperatorSpec features_spec() {
+  OperatorSpec s;
+  s.name = "deform.features";
+  s.description =
+      "Deforms the DEM to feature strokes (control curve, elevation, cross section: rivers, "
+      "roads, cliffs, ridges) by the weighted least squares of paper 002 §3.2 on its triangulated "
+      "height field; heights outside the fields of influence are unchanged";
+  s.kind = OperatorKind::Region;
+  s.inputs = {
+      {"dem", "elevation (m)", false},
+      {"strokes", "features layer with strokes of tool 'feature'", false, LayerKind::Features, 0}};
+  s.outputs = {
+      {"dem", "the deformed elevation", DType::F32, 1, Semantics::Continuous, "m", std::nullopt}};
+  s.params_schema = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"properties",
+       {{"energy_weight",
+         {{"type", "number"},
+          {"minimum", 1e-6},
+          {"maximum", 1},
+          {"default", 0.01},
+          {"description",
+           "weight of the Laplace-Beltrami energy rows against the positional constraints "
+           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}}}}};
+  return s;
+}
+
+// The metres between a sample and its right and lower neighbours, the smaller of the two, at the
+// sample nearest `p` (clamped into the mosaic).
+double sample_spacing(const MosaicFrame& frame, int size, LonLat p) {
+  const auto s = frame.sample(p);
+  const int c = s ? std::clamp(int(std::lround((*s)[0])), 0, size - 2) : 0;
+  const int r = s ? std::clamp(int(std::lround((*s)[1])), 0, size - 2) : 0;
+  const EastNorth2 a = frame.local(frame.sample_lonlat(c, r));
+  const EastNorth2 b = frame.local(frame.sample_lonlat(c + 1, r));
+  const EastNorth2 d = frame.local(frame.sample_lonlat(c, r + 1));
+  return std::min(std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(d[0] - a[0], d[1] - a[1]));
+}
+
+// Fills the horizontal positions of the constraints' vertices and their neighbours.
+void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constraints,
+                    HeightField& field) {
+  auto place = [&](size_t v) {
+    if (!std::isnan(field.east[v])) return;
+    const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
+    const EastNorth2 p = frame.local(frame.sample_lonlat(c, r));
+    field.east[v] = p[0];
+    field.north[v] = p[1];
+  };
+  for (const auto* list : {&constraints.control, &constraints.section})
+    for (const HeightConstraint& h : *list)
+      for (const size_t v : h.at.vertex) {
+        const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
+        place(v);
+        for (const auto& n : kNeighbours) place(field.index(c + n[0], r + n[1]));
+      }
+}
+
+class Features : public RegionOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = features_spec();
+    return s;
+  }
+
+  void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
+    const Tile<float>& dem = input.layers.at("dem");
+    Tile<float>& out = output.layers.at("dem");
+    out = dem;
+    const std::vector<FeatureStroke> strokes =
+        feature_strokes(input.features.at("strokes"), "strokes");
+    if (strokes.empty()) return;
+
+    const int size = dem.size();
+    HeightField field;
+    field.width = field.height = size;
+    field.z.resize(size_t(size) * size_t(size));
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < size; ++c) field.z[field.index(c, r)] = dem.at(c, r);
+    field.east.assign(field.z.size(), NAN);
+    field.north.assign(field.z.size(), NAN);
+
+    const LonLat reference = strokes.front().curve.front();
+    const MosaicFrame frame(*ctx.grid, input.face, input.level, input.origin_col, input.origin_row,
+                            reference);
+    // Half a sample: every triangle the curve or a cross section crosses holds a constraint.
+    const double step_m = 0.5 * sample_spacing(frame, size, reference);
+    StrokeConstraints constraints;
+    for (const FeatureStroke& stroke : strokes)
+      add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
+    place_vertices(frame, constraints, field);
+    deform_heights(field, constraints.control, constraints.section,
+                   ctx.params->at("energy_weight").get<double>());
+
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < size; ++c) {
+        const double z = field.z[field.index(c, r)];
+        if (!std::isnan(z) && z != double(dem.at(c, r))) out.at(c, r) = float(z);
+      }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_features() { return std::make_unique<Features>(); }
+
+}  // namespace maquette::deform

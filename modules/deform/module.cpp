@@ -1,0 +1,7 @@
+#include "operators.h"
+#include "runtime/module_abi.h"
+
+MAQUETTE_MODULE("deform", "0.1.0",
+                "Terrain deformation from feature strokes (paper 002 §3): rivers, roads, cliffs, "
+                "ridges cut into the DEM by least squares",
+                {"deform.features", &maquette::deform::make_features})

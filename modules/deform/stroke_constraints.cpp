@@ -1,0 +1,144 @@
+#include "stroke_constraints.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "rmf.h"
+
+namespace maquette::deform {
+namespace {
+
+std::string at_text(LonLat p) {
+  std::ostringstream s;
+  s.precision(8);
+  s << "lon " << p.lon << ", lat " << p.lat;
+  return s.str();
+}
+
+double cross(EastNorth2 a, EastNorth2 b) { return a[0] * b[1] - a[1] * b[0]; }
+EastNorth2 minus(EastNorth2 a, EastNorth2 b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+// Whether segments ab and cd share a point.
+bool segments_meet(EastNorth2 a, EastNorth2 b, EastNorth2 c, EastNorth2 d) {
+  const double d1 = cross(minus(b, a), minus(c, a)), d2 = cross(minus(b, a), minus(d, a));
+  const double d3 = cross(minus(d, c), minus(a, c)), d4 = cross(minus(d, c), minus(b, c));
+  return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) &&
+         ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0) && !(d1 == 0 && d2 == 0 && d3 == 0);
+}
+
+// Locates points of one stroke on the mosaic, with the checks the least squares needs.
+class Locator {
+ public:
+  Locator(const MosaicFrame& frame, const HeightField& field, std::string where)
+      : frame_(frame), field_(field), where_(std::move(where)) {}
+
+  SurfacePoint operator()(EastNorth2 p, const char* what) const {
+    const LonLat ll = frame_.lonlat(p);
+    const auto s = frame_.sample(ll);
+    if (!s)
+      throw Error(where_ + ": its " + what + " crosses onto another face of the grid at " +
+                  at_text(ll) + " (face seams are not supported yet: split the stroke there)");
+    const double col = (*s)[0], row = (*s)[1];
+    // The triangle's vertices and their neighbours must lie in the mosaic.
+    if (!(col >= 1 && row >= 1 && col < field_.width - 2 && row < field_.height - 2))
+      throw Error(where_ + ": its " + what + " leaves the DEM (the step's region) at " +
+                  at_text(ll));
+    const SurfacePoint sp = locate(field_, col, row);
+    for (const size_t v : sp.vertex) {
+      const int c = int(v % size_t(field_.width)), r = int(v / size_t(field_.width));
+      bool finite = std::isfinite(field_.z[v]);
+      for (const auto& n : kNeighbours)
+        finite = finite && std::isfinite(field_.z[field_.index(c + n[0], r + n[1])]);
+      if (!finite) throw Error(where_ + ": its " + what + " crosses nodata at " + at_text(ll));
+    }
+    return sp;
+  }
+
+ private:
+  const MosaicFrame& frame_;
+  const HeightField& field_;
+  std::string where_;
+};
+
+}  // namespace
+
+void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& frame,
+                            const HeightField& field, double step_m, const std::string& where,
+                            StrokeConstraints& out) {
+  const std::string feature = where + ": feature " + std::to_string(stroke.id);
+  const Locator locator(frame, field, feature);
+  // The curve's vertices in metres (consecutive repeats dropped) with their Z and distance along.
+  std::vector<EastNorth2> vertex;
+  std::vector<double> vertex_z, along;
+  for (size_t i = 0; i < stroke.curve.size(); ++i) {
+    const EastNorth2 p = frame.local(stroke.curve[i]);
+    if (!vertex.empty() && p == vertex.back()) continue;
+    along.push_back(vertex.empty() ? 0
+                                   : along.back() + std::hypot(p[0] - vertex.back()[0],
+                                                               p[1] - vertex.back()[1]));
+    vertex.push_back(p);
+    vertex_z.push_back(stroke.z.empty() ? NAN : stroke.z[i]);
+  }
+  for (size_t i = 0; i + 1 < vertex.size(); ++i)
+    for (size_t j = i + 2; j + 1 < vertex.size(); ++j)
+      if (segments_meet(vertex[i], vertex[i + 1], vertex[j], vertex[j + 1]))
+        throw Error(feature + ": the control curve crosses itself (segments " +
+                    std::to_string(i + 1) + " and " + std::to_string(j + 1) + ")");
+  const double length = along.back();
+  if (!stroke.profile.empty() &&
+      (stroke.profile.front()[0] > 0.01 * length || stroke.profile.back()[0] < 0.99 * length))
+    throw Error(feature + ": profile covers " + std::to_string(stroke.profile.front()[0]) + ".." +
+                std::to_string(stroke.profile.back()[0]) + " m, the curve is " +
+                std::to_string(length) + " m long");
+
+  // The curve resampled every step_m at most, with elevations.
+  const size_t n = size_t(std::ceil(length / step_m));
+  std::vector<Vec3d> points(n + 1);
+  std::vector<SurfacePoint> located(n + 1);
+  std::vector<double> z(n + 1);
+  size_t segment = 0;
+  for (size_t k = 0; k <= n; ++k) {
+    const double s = length * double(k) / double(n);
+    while (segment + 2 < vertex.size() && along[segment + 1] < s) ++segment;
+    const double t =
+        std::clamp((s - along[segment]) / (along[segment + 1] - along[segment]), 0.0, 1.0);
+    const EastNorth2 a = vertex[segment], b = vertex[segment + 1];
+    points[k] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), 0};
+    located[k] = locator({points[k][0], points[k][1]}, "control curve");
+    if (!stroke.z.empty())
+      z[k] = vertex_z[segment] + t * (vertex_z[segment + 1] - vertex_z[segment]);
+    else if (!stroke.profile.empty())
+      z[k] = piecewise_linear(stroke.profile, s);
+    else
+      z[k] = height_at(field, located[k]);
+    out.control.push_back({located[k], z[k]});
+  }
+
+  // Frames along the horizontal trace; the reference starts on the right of the first tangent.
+  std::vector<Vec3d> tangents(n + 1);
+  for (size_t k = 0; k <= n; ++k) {
+    const Vec3d& a = points[k == 0 ? 0 : k - 1];
+    const Vec3d& b = points[k == n ? n : k + 1];
+    const double norm = std::hypot(b[0] - a[0], b[1] - a[1]);
+    tangents[k] = {(b[0] - a[0]) / norm, (b[1] - a[1]) / norm, 0};
+  }
+  const std::vector<Frame> frames =
+      rotation_minimizing_frames(points, tangents, {tangents[0][1], -tangents[0][0], 0});
+
+  const double o_min = stroke.cross_section.front()[0], o_max = stroke.cross_section.back()[0];
+  const size_t m = size_t(std::ceil((o_max - o_min) / step_m));
+  for (size_t k = 0; k <= n; ++k) {
+    const Vec3d& r = frames[k].reference;
+    const double norm = std::hypot(r[0], r[1]);
+    for (size_t j = 0; j <= m; ++j) {
+      const double o = o_min + (o_max - o_min) * double(j) / double(m);
+      const EastNorth2 p{points[k][0] + o * r[0] / norm, points[k][1] + o * r[1] / norm};
+      out.section.push_back(
+          {locator(p, "cross section"), z[k] + piecewise_linear(stroke.cross_section, o)});
+    }
+  }
+}
+
+}  // namespace maquette::deform

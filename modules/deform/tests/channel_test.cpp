@@ -1,0 +1,244 @@
+// deform.features on a region mosaic of the real grid (rHEALPix, 256 samples of ~1.2 m near
+// Zion): a straight trapezoidal channel cut into a plane and into a sinusoidal surface, compared
+// with its closed form (control curve: surface - depth along the line; cross section: that
+// elevation plus the trapezoid's dz at the offset), heights outside the field of influence
+// bit-identical to the input, the same bits on two tilings of the region, and the errors of
+// strokes that leave the DEM, cross nodata or cross themselves.
+#include <gtest/gtest.h>
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <numbers>
+
+#include "../height_field.h"
+#include "../mosaic_frame.h"
+#include "../operators.h"
+#include "core/error.h"
+#include "core/halo.h"
+
+namespace maquette::deform {
+namespace {
+
+constexpr int kCellLevel = 15, kTile = 256, kPixelLevel = kCellLevel + 8;
+const CellId kCell = default_grid().cell_from_point({-113.0, 37.2}, kCellLevel);
+const LonLat kSite = default_grid().centre(kCell);  // the tangent plane's origin
+constexpr double kDepth = 5, kBottom = 6, kTop = 20, kLength = 150;
+constexpr double kHeading = 30 * std::numbers::pi / 180;  // of the channel, from east
+
+using Surface = std::function<double(double east, double north)>;
+
+struct Fixture {
+  GeographicLib::LocalCartesian plane{kSite.lat, kSite.lon, 0};
+  Surface surface;
+  double e0 = -40, n0 = -30;  // the channel's start (m from the site)
+
+  LonLat lonlat(double e, double n) const {
+    double lat = 0, lon = 0, h = 0;
+    plane.Reverse(e, n, -(e * e + n * n) / 12742017.6, lat, lon, h);
+    return {lon, lat};
+  }
+  std::array<double, 2> local(LonLat p) const {
+    double e = 0, n = 0, u = 0;
+    plane.Forward(p.lat, p.lon, 0, e, n, u);
+    return {e, n};
+  }
+  double curve_z(double s) const {
+    return surface(e0 + s * std::cos(kHeading), n0 + s * std::sin(kHeading)) - kDepth;
+  }
+  static double trapezoid(double o) {
+    const double a = std::abs(o);
+    return a <= kBottom ? 0 : kDepth * std::min(1.0, (a - kBottom) / (kTop - kBottom));
+  }
+  // The mosaic of `extra` samples more on each side than the site's cell.
+  Mosaic dem(int extra) const {
+    const CellId cell = kCell;
+    Mosaic m;
+    m.face = cell.face();
+    m.level = kPixelLevel;
+    m.origin_col = int64_t(cell.col()) * kTile - extra;
+    m.origin_row = int64_t(cell.row()) * kTile - extra;
+    const int size = kTile + 2 * extra;
+    Tile<float> t(size, 1);
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < size; ++c) {
+        const auto p = local(pixel_centre(
+            default_grid(), {m.face, m.origin_col + c, m.origin_row + r}, kPixelLevel));
+        t.at(c, r) = float(surface(p[0], p[1]));
+      }
+    m.layers.emplace("dem", std::move(t));
+    return m;
+  }
+  VectorFeature channel() const {
+    VectorFeature f;
+    f.id = 1;
+    f.geometry.type = GeometryType::LineString;
+    const LonLat a = lonlat(e0, n0);
+    const LonLat b = lonlat(e0 + kLength * std::cos(kHeading), n0 + kLength * std::sin(kHeading));
+    f.geometry.lines = {{{a.lon, a.lat}, {b.lon, b.lat}}};
+    nlohmann::json profile = nlohmann::json::array();
+    for (double s = 0; s <= kLength + 0.25; s += 0.5) profile.push_back({s, curve_z(s)});
+    f.attributes = {
+        {"tool", "feature"},
+        {"profile", profile},
+        {"cross_section", {{-kTop, kDepth}, {-kBottom, 0}, {kBottom, 0}, {kTop, kDepth}}}};
+    return f;
+  }
+};
+
+// Runs deform.features on `input` with `strokes`; returns the output mosaic's DEM.
+Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes) {
+  input.features["strokes"] = strokes;
+  Mosaic output = input;
+  output.features.clear();
+  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size(), 1, 0, NAN);
+  const json params = {{"energy_weight", 0.01}};
+  const auto op = make_features();
+  static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
+  return output.layers.at("dem");
+}
+
+struct Errors {
+  double control_rms = 0, section_rms = 0;
+};
+
+// The deformed surface against the closed form, at points other than the constraints'.
+Errors compare(const Fixture& fx, const Mosaic& input, const Tile<float>& out) {
+  const MosaicFrame frame(default_grid(), input.face, input.level, input.origin_col,
+                          input.origin_row, kSite);
+  HeightField field;
+  field.width = field.height = out.size();
+  for (int r = 0; r < out.size(); ++r)
+    for (int c = 0; c < out.size(); ++c) field.z.push_back(out.at(c, r));
+  auto height = [&](double e, double n) {
+    const auto s = frame.sample(fx.lonlat(e, n));
+    return height_at(field, locate(field, (*s)[0], (*s)[1]));
+  };
+  const double ce = std::cos(kHeading), sn = std::sin(kHeading);
+  double sum = 0;
+  int count = 0;
+  for (double s = 0.13; s < kLength; s += 0.37, ++count) {
+    const double d = height(fx.e0 + s * ce, fx.n0 + s * sn) - fx.curve_z(s);
+    sum += d * d;
+  }
+  Errors e;
+  e.control_rms = std::sqrt(sum / count);
+  sum = 0;
+  count = 0;
+  for (double s = 0.4; s < kLength; s += 1.3)
+    for (double o = -kTop + 0.05; o < kTop; o += 0.7, ++count) {
+      // Positive offsets on the right of the direction of travel.
+      const double d = height(fx.e0 + s * ce + o * sn, fx.n0 + s * sn - o * ce) -
+                       (fx.curve_z(s) + Fixture::trapezoid(o));
+      sum += d * d;
+    }
+  e.section_rms = std::sqrt(sum / count);
+  return e;
+}
+
+// Samples farther than `margin` metres beyond the field of influence keep their input bits.
+int changed_outside(const Fixture& fx, const Mosaic& input, const Tile<float>& out, double margin) {
+  const Tile<float>& dem = input.layers.at("dem");
+  const double ce = std::cos(kHeading), sn = std::sin(kHeading);
+  int changed = 0;
+  for (int r = 0; r < dem.size(); ++r)
+    for (int c = 0; c < dem.size(); ++c) {
+      const auto p = fx.local(pixel_centre(
+          default_grid(), {input.face, input.origin_col + c, input.origin_row + r}, kPixelLevel));
+      const double de = p[0] - fx.e0, dn = p[1] - fx.n0;
+      const double s = std::clamp(de * ce + dn * sn, 0.0, kLength);
+      const double dist = std::hypot(de - s * ce, dn - s * sn);
+      if (dist > kTop + margin && std::memcmp(&dem.at(c, r), &out.at(c, r), sizeof(float)) != 0)
+        ++changed;
+    }
+  return changed;
+}
+
+TEST(DeformFeatures, TrapezoidalChannelInAPlane) {
+  Fixture fx;
+  fx.surface = [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; };
+  const Mosaic input = fx.dem(0);
+  const VectorFeature channel = fx.channel();
+  const Tile<float> out = deform_run(input, {&channel});
+  const Errors e = compare(fx, input, out);
+  std::printf("plane: control-curve RMS %.2f mm, cross-section RMS %.3f %% of the depth\n",
+              e.control_rms * 1000, 100 * e.section_rms / kDepth);
+  EXPECT_LE(e.control_rms, 0.010);
+  EXPECT_LE(e.section_rms, 0.02 * kDepth);
+  EXPECT_EQ(changed_outside(fx, input, out, 2.5), 0);
+}
+
+TEST(DeformFeatures, TrapezoidalChannelInASinusoidalSurface) {
+  Fixture fx;
+  fx.surface = [](double e, double n) {
+    return 1500 +
+           3 * std::sin(2 * std::numbers::pi * e / 80) * std::cos(2 * std::numbers::pi * n / 110);
+  };
+  const Mosaic input = fx.dem(0);
+  const VectorFeature channel = fx.channel();
+  const Tile<float> out = deform_run(input, {&channel});
+  const Errors e = compare(fx, input, out);
+  std::printf("sinusoid: control-curve RMS %.2f mm, cross-section RMS %.3f %% of the depth\n",
+              e.control_rms * 1000, 100 * e.section_rms / kDepth);
+  EXPECT_LE(e.control_rms, 0.010);
+  EXPECT_LE(e.section_rms, 0.02 * kDepth);
+  EXPECT_EQ(changed_outside(fx, input, out, 2.5), 0);
+
+  // Another tiling: the same samples inside a mosaic 64 samples larger on every side.
+  const Mosaic wide = fx.dem(64);
+  const Tile<float> wide_out = deform_run(wide, {&channel});
+  int differ = 0;
+  for (int r = 0; r < kTile; ++r)
+    for (int c = 0; c < kTile; ++c)
+      differ += std::memcmp(&out.at(c, r), &wide_out.at(c + 64, r + 64), sizeof(float)) != 0;
+  EXPECT_EQ(differ, 0);
+}
+
+std::string error_of(const Mosaic& input, const VectorFeature& f) {
+  try {
+    deform_run(input, {&f});
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(DeformFeatures, StrokesLeavingTheDemCrossingNodataOrThemselvesAreErrors) {
+  Fixture fx;
+  fx.surface = [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; };
+  Mosaic input = fx.dem(0);
+  VectorFeature f = fx.channel();
+  f.attributes.erase("profile");  // draped
+
+  VectorFeature away = f;
+  const LonLat far = fx.lonlat(400, 0);
+  away.geometry.lines[0][1] = {far.lon, far.lat};
+  EXPECT_NE(error_of(input, away)
+                .find("inputs.strokes: feature 1: its control curve leaves the DEM (the step's "
+                      "region) at lon"),
+            std::string::npos)
+      << error_of(input, away);
+
+  VectorFeature crossing = f;
+  for (const auto& [e, n] : std::vector<std::array<double, 2>>{{40, -30}, {0, 20}, {0, -30}}) {
+    const LonLat p = fx.lonlat(e, n);
+    crossing.geometry.lines[0].push_back({p.lon, p.lat});
+  }
+  EXPECT_EQ(error_of(input, crossing),
+            "inputs.strokes: feature 1: the control curve crosses itself (segments 1 and 3)");
+
+  const MosaicFrame frame(default_grid(), input.face, input.level, input.origin_col,
+                          input.origin_row, kSite);
+  const auto hole =
+      frame.sample(fx.lonlat(fx.e0 + 50 * std::cos(kHeading), fx.n0 + 50 * std::sin(kHeading)));
+  input.layers.at("dem").at(int((*hole)[0]), int((*hole)[1])) = NAN;
+  EXPECT_NE(
+      error_of(input, f).find("inputs.strokes: feature 1: its control curve crosses nodata at lon"),
+      std::string::npos)
+      << error_of(input, f);
+}
+
+}  // namespace
+}  // namespace maquette::deform
