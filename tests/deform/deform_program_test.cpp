@@ -1,0 +1,185 @@
+// deform.features run by the real program as a user would: a DEM of a plane (written to the
+// store at two tilings of the same samples: 64-sample tiles at level 17 and 128-sample tiles at
+// level 16), a channel stroke ingested from GeoJSON with `maquette ingest --as features`, and
+// `maquette run`. The deformed layer has the same bits for both tilings and for 1 and 2 threads,
+// the channel's bottom is 5 m below the plane on the curve, the samples far from it keep the
+// input's bits, and a stroke leaving the region fails the run naming the step and feature.
+#include <gtest/gtest.h>
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "core/grid.h"
+#include "core/halo.h"
+#include "core/tile.h"
+#include "run_cli.h"
+#include "store/store.h"
+
+namespace maquette {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const LonLat kSite = default_grid().centre(default_grid().cell_from_point({-113.0, 37.2}, 15));
+constexpr double kHalfLat = 0.0015, kHalfLon = 0.0019;  // the region: about 330 x 330 m
+
+const GeographicLib::LocalCartesian& tangent_plane() {
+  static const GeographicLib::LocalCartesian p(kSite.lat, kSite.lon, 0);
+  return p;
+}
+
+double plane_height(LonLat p) {
+  double e = 0, n = 0, u = 0;
+  tangent_plane().Forward(p.lat, p.lon, 0, e, n, u);
+  return 1500 + 0.05 * e - 0.03 * n;
+}
+
+LonLat lonlat(double e, double n) {
+  double lat = 0, lon = 0, h = 0;
+  tangent_plane().Reverse(e, n, 0, lat, lon, h);
+  return {lon, lat};
+}
+
+struct Case {
+  fs::path dir;
+  std::string store() const { return (dir / "s.mqt").string(); }
+};
+
+// A store with the plane DEM ("dem") at `level` in tiles of `tile` samples and the strokes.
+Case make_case(const std::string& name, int level, int tile, const json& strokes) {
+  Case c{fs::temp_directory_path() / ("deform_program_" + name + std::to_string(::getpid()))};
+  fs::remove_all(c.dir);
+  fs::create_directories(c.dir);
+  {
+    const auto store = Store::open(c.store(), Store::Mode::Create);
+    LayerInfo dem;
+    dem.name = "dem";
+    dem.tile_size = tile;
+    dem.level = level;
+    dem.units = "m";
+    store->create_layer(dem);
+    for (const CellId cell : default_grid().cover_bbox(
+             kSite.lon - 2 * kHalfLon, kSite.lat - 2 * kHalfLat, kSite.lon + 2 * kHalfLon,
+             kSite.lat + 2 * kHalfLat, level, Containment::Overlap))
+      store->put_tile(
+          "dem", cell,
+          from_tile(sample_field(default_grid(), cell, tile, plane_height), DType::F32));
+  }
+  std::ofstream(c.dir / "strokes.geojson") << strokes.dump();
+  const test::CliResult r =
+      test::run_maquette("-q ingest " + c.store() + " --layer strokes --as features " +
+                         (c.dir / "strokes.geojson").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const json pipeline = {{"store", "s.mqt"},
+                         {"region",
+                          {{"bbox",
+                            {kSite.lon - kHalfLon, kSite.lat - kHalfLat, kSite.lon + kHalfLon,
+                             kSite.lat + kHalfLat}}}},
+                         {"level", level},
+                         {"steps",
+                          {{{"op", "deform.features"},
+                            {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+                            {"outputs", {{"dem", "carved"}}}}}}};
+  std::ofstream(c.dir / "pipeline.json") << pipeline.dump(2);
+  return c;
+}
+
+test::CliResult run(const Case& c, int threads) {
+  return test::run_maquette("-q run --threads " + std::to_string(threads) + " " +
+                            (c.dir / "pipeline.json").string());
+}
+
+// A channel 150 m long, 5 m below the plane, Z on its two points (the plane makes Z linear).
+json channel(double e1 = 90, double n1 = 45) {
+  json coordinates = json::array();
+  for (const auto& [e, n] : {std::pair{-40.0, -30.0}, std::pair{e1, n1}}) {
+    const LonLat p = lonlat(e, n);
+    coordinates.push_back({p.lon, p.lat, plane_height(p) - 5});
+  }
+  return {{"type", "FeatureCollection"},
+          {"features",
+           {{{"type", "Feature"},
+             {"properties",
+              {{"tool", "feature"}, {"cross_section", {{-20, 5}, {-6, 0}, {6, 0}, {20, 5}}}}},
+             {"geometry", {{"type", "LineString"}, {"coordinates", coordinates}}}}}}};
+}
+
+std::map<CellId, Tile<float>> tiles(const Case& c, const std::string& layer) {
+  const auto store = Store::open(c.store(), Store::Mode::ReadOnly);
+  std::map<CellId, Tile<float>> out;
+  for (const CellId cell : store->tile_cells(layer))
+    if (cell.level() == store->layer(layer)->level)
+      out.emplace(cell, to_tile<float>(*store->get_tile(layer, cell)));
+  return out;
+}
+
+TEST(DeformProgram, SameBitsForTwoTilingsAndThreadCounts) {
+  const Case fine = make_case("fine", 17, 64, channel());
+  const Case fine2 = make_case("fine2", 17, 64, channel());
+  const Case coarse = make_case("coarse", 16, 128, channel());
+  for (const auto& [c, threads] :
+       {std::pair{&fine, 1}, std::pair{&fine2, 2}, std::pair{&coarse, 1}}) {
+    const test::CliResult r = run(*c, threads);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const auto a = tiles(fine, "carved"), a2 = tiles(fine2, "carved"), b = tiles(coarse, "carved");
+  const auto input = tiles(fine, "dem");
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), a2.size());
+  int compared = 0, differ = 0, lowered = 0, kept = 0;
+  for (const auto& [cell, t] : a) {
+    EXPECT_EQ(std::memcmp(t.data().data(), a2.at(cell).data().data(), t.data().size_bytes()), 0)
+        << cell.ToText();
+    const CellId parent = cell.parent(16);
+    const auto it = b.find(parent);
+    if (it == b.end()) continue;
+    const int dc = int(cell.col() - 2 * parent.col()) * 64,
+              dr = int(cell.row() - 2 * parent.row()) * 64;
+    const Tile<float>& in = input.at(cell);
+    for (int r = 0; r < 64; ++r)
+      for (int col = 0; col < 64; ++col) {
+        ++compared;
+        differ += std::memcmp(&t.at(col, r), &it->second.at(col + dc, r + dr), sizeof(float)) != 0;
+        if (in.at(col, r) - t.at(col, r) > 4.5) ++lowered;
+        // Samples the band cannot reach: more than 20 m + 3 samples from the channel's segment.
+        const LonLat p = pixel_centre(
+            default_grid(),
+            {cell.face(), int64_t(cell.col()) * 64 + col, int64_t(cell.row()) * 64 + r}, 23);
+        double e = 0, n = 0, u = 0;
+        tangent_plane().Forward(p.lat, p.lon, 0, e, n, u);
+        const double ce = 130 / std::hypot(130.0, 75.0), sn = 75 / std::hypot(130.0, 75.0);
+        const double s = std::clamp((e + 40) * ce + (n + 30) * sn, 0.0, std::hypot(130.0, 75.0));
+        if (std::hypot(e + 40 - s * ce, n + 30 - s * sn) > 24)
+          kept += std::memcmp(&t.at(col, r), &in.at(col, r), sizeof(float)) == 0 ? 1 : -1000000;
+      }
+  }
+  std::printf("%d samples compared, %d lowered by the channel, %d far ones kept\n", compared,
+              lowered, kept);
+  EXPECT_GT(compared, 64 * 64 * 4);
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(lowered, 800);  // the bottom: 150 m by 12 m, ~1250 samples of ~1.2 m
+  EXPECT_GT(kept, 0);       // and every sample beyond the band unchanged (else negative)
+  for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
+}
+
+TEST(DeformProgram, StrokeLeavingTheRegionFailsTheRun) {
+  const Case c = make_case("leaving", 17, 64, channel(400, 45));
+  const test::CliResult r = run(c, 1);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("step 1 (deform.features) failed on the region's mosaic: inputs.strokes: "
+                       "feature 1: its control curve leaves the DEM (the step's region) at lon"),
+            std::string::npos)
+      << r.err;
+  fs::remove_all(c.dir);
+}
+
+}  // namespace
+}  // namespace maquette
