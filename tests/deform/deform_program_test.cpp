@@ -4,9 +4,11 @@
 // `maquette run`. The deformed layer has the same bits for both tilings and for 1 and 2 threads,
 // the channel's bottom is 5 m below the plane on the curve, the samples far from it keep the
 // input's bits, and a stroke leaving the region fails the run naming the step and feature.
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <GeographicLib/UTMUPS.hpp>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -36,9 +38,16 @@ const GeographicLib::LocalCartesian& tangent_plane() {
   return p;
 }
 
-double plane_height(LonLat p) {
+std::array<double, 2> east_north(LonLat p) {
   double e = 0, n = 0, u = 0;
   tangent_plane().Forward(p.lat, p.lon, 0, e, n, u);
+  return {e, n};
+}
+
+using Surface = double (*)(LonLat);
+
+double plane_height(LonLat p) {
+  const auto [e, n] = east_north(p);
   return 1500 + 0.05 * e - 0.03 * n;
 }
 
@@ -53,8 +62,9 @@ struct Case {
   std::string store() const { return (dir / "s.mqt").string(); }
 };
 
-// A store with the plane DEM ("dem") at `level` in tiles of `tile` samples and the strokes.
-Case make_case(const std::string& name, int level, int tile, const json& strokes) {
+// A store with the DEM ("dem") of `surface` at `level` in tiles of `tile` samples and the strokes.
+Case make_case(const std::string& name, int level, int tile, const json& strokes,
+               Surface surface = plane_height, const json& params = json::object()) {
   Case c{fs::temp_directory_path() / ("deform_program_" + name + std::to_string(::getpid()))};
   fs::remove_all(c.dir);
   fs::create_directories(c.dir);
@@ -69,9 +79,8 @@ Case make_case(const std::string& name, int level, int tile, const json& strokes
     for (const CellId cell : default_grid().cover_bbox(
              kSite.lon - 2 * kHalfLon, kSite.lat - 2 * kHalfLat, kSite.lon + 2 * kHalfLon,
              kSite.lat + 2 * kHalfLat, level, Containment::Overlap))
-      store->put_tile(
-          "dem", cell,
-          from_tile(sample_field(default_grid(), cell, tile, plane_height), DType::F32));
+      store->put_tile("dem", cell,
+                      from_tile(sample_field(default_grid(), cell, tile, surface), DType::F32));
   }
   std::ofstream(c.dir / "strokes.geojson") << strokes.dump();
   const test::CliResult r =
@@ -87,7 +96,8 @@ Case make_case(const std::string& name, int level, int tile, const json& strokes
                          {"steps",
                           {{{"op", "deform.features"},
                             {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-                            {"outputs", {{"dem", "carved"}}}}}}};
+                            {"outputs", {{"dem", "carved"}}},
+                            {"params", params}}}}};
   std::ofstream(c.dir / "pipeline.json") << pipeline.dump(2);
   return c;
 }
@@ -153,8 +163,7 @@ TEST(DeformProgram, SameBitsForTwoTilingsAndThreadCounts) {
         const LonLat p = pixel_centre(
             default_grid(),
             {cell.face(), int64_t(cell.col()) * 64 + col, int64_t(cell.row()) * 64 + r}, 23);
-        double e = 0, n = 0, u = 0;
-        tangent_plane().Forward(p.lat, p.lon, 0, e, n, u);
+        const auto [e, n] = east_north(p);
         const double ce = 130 / std::hypot(130.0, 75.0), sn = 75 / std::hypot(130.0, 75.0);
         const double s = std::clamp((e + 40) * ce + (n + 30) * sn, 0.0, std::hypot(130.0, 75.0));
         if (std::hypot(e + 40 - s * ce, n + 30 - s * sn) > 24)
@@ -178,6 +187,134 @@ TEST(DeformProgram, StrokeLeavingTheRegionFailsTheRun) {
                        "feature 1: its control curve leaves the DEM (the step's region) at lon"),
             std::string::npos)
       << r.err;
+  fs::remove_all(c.dir);
+}
+
+// Sloping 1 mm/m eastwards: r.carve lowers its bed to the lowest sample within the width
+// (measured: 8 cm deeper than asked on a 2 % slope), here by less than 0.5 cm.
+double gentle_slope(LonLat p) { return 1500 - 0.001 * east_north(p)[0]; }
+
+constexpr double kHalfWidth = 5, kTrenchDepth = 3;
+
+// A stream eastwards from -60 to 60 m, a rectangular trench 10 m wide and 3 m deep.
+json rectangular_channel() {
+  json coordinates = json::array();
+  for (const double e : {-60.0, 60.0}) {
+    const LonLat p = lonlat(e, 0);
+    coordinates.push_back({p.lon, p.lat, gentle_slope(p) - kTrenchDepth});
+  }
+  const double w = kHalfWidth, d = kTrenchDepth;
+  return {{"type", "FeatureCollection"},
+          {"features",
+           {{{"type", "Feature"},
+             {"properties",
+              {{"tool", "feature"},
+               {"cross_section",
+                {{-2 * w, d}, {-w - 0.01, d}, {-w, 0}, {w, 0}, {w + 0.01, d}, {2 * w, d}}}}},
+             {"geometry", {{"type", "LineString"}, {"coordinates", coordinates}}}}}}};
+}
+
+struct Raster {
+  int width = 0, height = 0;
+  std::array<double, 6> transform{};
+  std::vector<float> values;
+  float at(int col, int row) const { return values[size_t(row) * size_t(width) + size_t(col)]; }
+};
+
+Raster read_raster(const std::string& path) {
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  EXPECT_TRUE(ds) << path;
+  Raster r;
+  if (!ds) return r;
+  r.width = ds->GetRasterXSize();
+  r.height = ds->GetRasterYSize();
+  ds->GetGeoTransform(r.transform.data());
+  r.values.resize(size_t(r.width) * size_t(r.height));
+  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.width, r.height, r.values.data(),
+                                           r.width, r.height, GDT_Float32, 0, 0),
+            CE_None);
+  return r;
+}
+
+// Side by side with GRASS r.carve: the DEM and the deformed DEM exported to UTM 12N at 1 m, and
+// r.carve run on that DEM with the same stream, width and depth. Per column across the stream's
+// middle 90 m: the trench (samples lowered by more than half the depth) has the same width
+// within one sample, and the same depth on the stream within 1 cm. Not asserted, printed: the
+// least squares of the cross section's points cannot follow a vertical wall within a triangle
+// and rings beside it (the Gibbs effect of a least-squares fit of a step; measured 18 cm on the
+// 3 m wall, where r.carve's trench is exact).
+TEST(DeformProgram, RectangularTrenchMatchesGrassRCarve) {
+  if (std::system("command -v grass >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no GRASS (scripts/setup.sh installs grass-core)";
+  const Case c = make_case("rcarve", 17, 64, rectangular_channel(), gentle_slope);
+  ASSERT_EQ(run(c, 1).exit_code, 0);
+  const std::string bbox =
+      " --bbox " + std::to_string(kSite.lon - 0.001) + " " + std::to_string(kSite.lat - 0.0003) +
+      " " + std::to_string(kSite.lon + 0.001) + " " + std::to_string(kSite.lat + 0.0003);
+  for (const std::string layer : {"dem", "carved"}) {
+    const test::CliResult r =
+        test::run_maquette("-q export gtiff " + c.store() + " " + (c.dir / layer).string() +
+                           ".tif --layer " + layer + " --crs EPSG:32612 --resolution 1" + bbox);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  json coordinates = json::array();
+  for (const double e : {-60.0, 60.0}) {
+    const LonLat p = lonlat(e, 0);
+    int zone = 0;
+    bool north = false;
+    double x = 0, y = 0;
+    GeographicLib::UTMUPS::Forward(p.lat, p.lon, zone, north, x, y, 12);
+    coordinates.push_back({x, y});
+  }
+  std::ofstream(c.dir / "stream.geojson")
+      << json{{"type", "Feature"},
+              {"properties", json::object()},
+              {"geometry", {{"type", "LineString"}, {"coordinates", coordinates}}}}
+             .dump();
+  const std::string rcarve =
+      std::string(MAQUETTE_SOURCE_DIR) + "/tests/deform/rcarve.sh " + (c.dir / "dem.tif").string() +
+      " " + (c.dir / "stream.geojson").string() + " " + (c.dir / "rcarve.tif").string() + " " +
+      std::to_string(2 * kHalfWidth) + " " + std::to_string(kTrenchDepth);
+  ASSERT_EQ(std::system(rcarve.c_str()), 0);
+
+  const Raster dem = read_raster((c.dir / "dem.tif").string());
+  const Raster ours = read_raster((c.dir / "carved.tif").string());
+  const Raster grass = read_raster((c.dir / "rcarve.tif").string());
+  ASSERT_EQ(ours.width, dem.width);
+  ASSERT_EQ(grass.width, dem.width);
+  ASSERT_EQ(grass.height, dem.height);
+  const double x0 = coordinates[0][0].get<double>() + 15, x1 = coordinates[1][0].get<double>() - 15;
+  const double y0 = coordinates[0][1].get<double>(), y1 = coordinates[1][1].get<double>();
+  int columns = 0, width_off = 0;
+  double worst_width = 0, worst_depth = 0, worst_overshoot = 0;
+  for (int col = 0; col < dem.width; ++col) {
+    const double x = dem.transform[0] + (col + 0.5) * dem.transform[1];
+    if (x < x0 || x > x1) continue;
+    ++columns;
+    // The row holding the stream at this column (the UTM grid is turned ~1.2 degrees from east).
+    const double y = y0 + (y1 - y0) * (x - (x0 - 15)) / (x1 - x0 + 30);
+    const int centre = int(std::floor((y - dem.transform[3]) / dem.transform[5]));
+    int ours_width = 0, grass_width = 0;
+    for (int row = 0; row < dem.height; ++row) {
+      const double a = dem.at(col, row) - ours.at(col, row);
+      ours_width += a > kTrenchDepth / 2;
+      grass_width += dem.at(col, row) - grass.at(col, row) > kTrenchDepth / 2;
+      worst_overshoot = std::max(worst_overshoot, std::abs(a - std::clamp(a, 0.0, kTrenchDepth)));
+    }
+    worst_width = std::max(worst_width, std::abs(double(ours_width - grass_width)));
+    worst_depth =
+        std::max(worst_depth, std::abs(double(dem.at(col, centre) - ours.at(col, centre)) -
+                                       (dem.at(col, centre) - grass.at(col, centre))));
+    width_off += ours_width != grass_width;
+  }
+  std::printf(
+      "%d columns: width differs in %d by at most %.0f sample, depth on the stream by at most "
+      "%.1f mm; ours rings by up to %.0f mm beside the walls\n",
+      columns, width_off, worst_width, worst_depth * 1000, worst_overshoot * 1000);
+  EXPECT_GT(columns, 80);
+  EXPECT_LE(worst_width, 1);
+  EXPECT_LE(worst_depth, 0.01);
   fs::remove_all(c.dir);
 }
 
