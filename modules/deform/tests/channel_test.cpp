@@ -156,35 +156,36 @@ int changed_outside(const Fixture& fx, const Mosaic& input, const Tile<float>& o
   return changed;
 }
 
-TEST(DeformFeatures, TrapezoidalChannelInAPlane) {
+// Cuts the channel into `surface` and checks it against the closed form; returns the output.
+Tile<float> expect_channel(const char* name, const Surface& surface) {
   Fixture fx;
-  fx.surface = [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; };
+  fx.surface = surface;
   const Mosaic input = fx.dem(0);
   const VectorFeature channel = fx.channel();
   const Tile<float> out = deform_run(input, {&channel});
   const Errors e = compare(fx, input, out);
-  std::printf("plane: control-curve RMS %.2f mm, cross-section RMS %.3f %% of the depth\n",
+  std::printf("%s: control-curve RMS %.2f mm, cross-section RMS %.3f %% of the depth\n", name,
               e.control_rms * 1000, 100 * e.section_rms / kDepth);
   EXPECT_LE(e.control_rms, 0.010);
   EXPECT_LE(e.section_rms, 0.02 * kDepth);
   EXPECT_EQ(changed_outside(fx, input, out, 2.5), 0);
+  return out;
+}
+
+double sinusoid(double e, double n) {
+  return 1500 +
+         3 * std::sin(2 * std::numbers::pi * e / 80) * std::cos(2 * std::numbers::pi * n / 110);
+}
+
+TEST(DeformFeatures, TrapezoidalChannelInAPlane) {
+  expect_channel("plane", [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; });
 }
 
 TEST(DeformFeatures, TrapezoidalChannelInASinusoidalSurface) {
+  const Tile<float> out = expect_channel("sinusoid", sinusoid);
   Fixture fx;
-  fx.surface = [](double e, double n) {
-    return 1500 +
-           3 * std::sin(2 * std::numbers::pi * e / 80) * std::cos(2 * std::numbers::pi * n / 110);
-  };
-  const Mosaic input = fx.dem(0);
+  fx.surface = sinusoid;
   const VectorFeature channel = fx.channel();
-  const Tile<float> out = deform_run(input, {&channel});
-  const Errors e = compare(fx, input, out);
-  std::printf("sinusoid: control-curve RMS %.2f mm, cross-section RMS %.3f %% of the depth\n",
-              e.control_rms * 1000, 100 * e.section_rms / kDepth);
-  EXPECT_LE(e.control_rms, 0.010);
-  EXPECT_LE(e.section_rms, 0.02 * kDepth);
-  EXPECT_EQ(changed_outside(fx, input, out, 2.5), 0);
 
   // Another tiling: the same samples inside a mosaic 64 samples larger on every side.
   const Mosaic wide = fx.dem(64);
