@@ -241,5 +241,27 @@ TEST(DeformFeatures, StrokesLeavingTheDemCrossingNodataOrThemselvesAreErrors) {
       << error_of(input, f);
 }
 
+TEST(DeformFeatures, StrokeOntoAnotherFaceIsAnError) {
+  // Longitude 0 is the seam of rHEALPix's equatorial faces P and Q.
+  const LonLat west{-0.0004, 10}, east{0.0004, 10};
+  const CellId cell = default_grid().cell_from_point(west, kCellLevel);
+  ASSERT_NE(cell.face(), default_grid().cell_from_point(east, kCellLevel).face());
+  Mosaic input;
+  input.face = cell.face();
+  input.level = kPixelLevel;
+  input.origin_col = int64_t(cell.col()) * kTile;
+  input.origin_row = int64_t(cell.row()) * kTile;
+  input.layers.emplace("dem", Tile<float>(kTile, 1, 0, 100.0f));
+  VectorFeature f;
+  f.id = 4;
+  f.geometry.type = GeometryType::LineString;
+  const LonLat start = default_grid().centre(cell);
+  f.geometry.lines = {{{start.lon, start.lat}, {east.lon, east.lat}}};
+  f.attributes = {{"tool", "feature"}, {"cross_section", {{-5, 0}, {5, 0}}}};
+  EXPECT_EQ(error_of(input, f),
+            "inputs.strokes: feature 4: its control curve crosses onto another face of the grid "
+            "at lon 0.0004, lat 10 (face seams are not supported yet: split the stroke there)");
+}
+
 }  // namespace
 }  // namespace maquette::deform
