@@ -161,6 +161,7 @@ AdaptiveLoop adaptive_loop_subdivide(const TriangleMesh& base, const std::vector
     fine_levels.insert(fine_levels.end(), zone.size(), level + 1);
     out.meshes.push_back(std::move(fine));
     out.subdivisions.push_back(std::move(refinement.subdivision));
+    out.new_vertex_ends.push_back(std::move(refinement.new_vertex_ends));
     out.triangle_levels.push_back(std::move(fine_levels));
   }
   return out;

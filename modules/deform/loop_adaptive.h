@@ -18,6 +18,8 @@ struct AdaptiveLoop {
   // written on the unknowns of meshes[j] through subdivisions[j], as with uniform subdivision.
   std::vector<TriangleMesh> meshes;
   std::vector<Eigen::SparseMatrix<double>> subdivisions;
+  // Per step j and new vertex (meshes[j]'s vertex count + i): the ends of the edge it is on.
+  std::vector<std::vector<std::array<int, 2>>> new_vertex_ends;
   // Per triangle of meshes[j]: its level (0 for a base triangle, ..., j).
   std::vector<std::vector<int>> triangle_levels;
 };

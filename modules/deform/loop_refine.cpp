@@ -27,8 +27,12 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
     if (!refined[t]) continue;
     for (std::size_t i = 0; i < 3; ++i) {
       even[static_cast<std::size_t>(triangles[t][i])] = true;
-      int& split = out.edge_vertex[static_cast<std::size_t>(edges.triangle_edges[t][i])];
-      if (split < 0) split = next_vertex++;
+      const int split_edge_index = edges.triangle_edges[t][i];
+      int& split = out.edge_vertex[static_cast<std::size_t>(split_edge_index)];
+      if (split < 0) {
+        split = next_vertex++;
+        out.new_vertex_ends.push_back(edges.vertices[static_cast<std::size_t>(split_edge_index)]);
+      }
     }
   }
 

@@ -18,6 +18,8 @@ struct LoopRefinement {
   std::vector<std::array<int, 3>> children;
   // Per edge of the mesh: the new vertex on it, -1 when no refined triangle has it.
   std::vector<int> edge_vertex;
+  // Per new vertex (vertex_count + i): the ends of the edge it is on.
+  std::vector<std::array<int, 2>> new_vertex_ends;
   // (vertex_count + new vertices) x vertex_count: fine = subdivision * coarse. Vertices of the
   // refined triangles (even) take Loop's vertex mask, new edge vertices (odd) the edge mask, any
   // other vertex is kept (identity row). New vertices are numbered from vertex_count in the order

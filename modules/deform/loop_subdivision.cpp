@@ -22,6 +22,7 @@ LoopLevel loop_subdivide(const TriangleMesh& coarse) {
   fine.mesh.vertices = refinement.subdivision * coarse.vertices;
   fine.mesh.triangles = std::move(refinement.children);
   fine.subdivision = std::move(refinement.subdivision);
+  fine.new_vertex_ends = std::move(refinement.new_vertex_ends);
   return fine;
 }
 

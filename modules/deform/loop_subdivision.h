@@ -15,6 +15,8 @@ struct LoopLevel {
   // vertices (same indices, moved by the vertex masks), then one new vertex per edge, in the order
   // the triangles reach their edges (loop_edges.h).
   Eigen::SparseMatrix<double> subdivision;
+  // Per new vertex (the coarser vertex count + i): the ends of the coarser edge it is on.
+  std::vector<std::array<int, 2>> new_vertex_ends;
 };
 
 // One level of Loop subdivision of the whole mesh (masks and the children's order: loop_refine.h):

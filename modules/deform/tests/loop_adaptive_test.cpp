@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 
+#include "../loop_grid.h"
 #include "../loop_marking.h"
 #include "../loop_subdivision.h"
 
@@ -108,36 +109,40 @@ Feature one_km_feature(const HeightField& field, double band, double cx = -1.0, 
 }
 
 // Subdivides `feature` adaptively and uniformly 3 levels and compares them level by level.
-void expect_conforming_and_equal_to_uniform(const Feature& feature) {
+void expect_conforming_and_equal_to_uniform(const Feature& feature, int columns, int rows) {
   const int levels = 3;
   const AdaptiveLoop adaptive = adaptive_loop_subdivide(feature.base, feature.marked, levels);
   ASSERT_EQ(adaptive.meshes.size(), static_cast<std::size_t>(levels + 1));
   TriangleMesh uniform = feature.base;
+  GridNodes uniform_nodes = height_field_nodes(columns, rows);
+  GridNodes adaptive_nodes = uniform_nodes;
   for (int level = 1; level <= levels; ++level) {
-    uniform = loop_subdivide(uniform).mesh;
+    LoopLevel uniform_level = loop_subdivide(uniform);
+    uniform = std::move(uniform_level.mesh);
+    uniform_nodes = finer_nodes(uniform_nodes, uniform_level.new_vertex_ends);
+    adaptive_nodes =
+        finer_nodes(adaptive_nodes, adaptive.new_vertex_ends[static_cast<std::size_t>(level - 1)]);
     const TriangleMesh& mesh = adaptive.meshes[static_cast<std::size_t>(level)];
     const auto& triangle_levels = adaptive.triangle_levels[static_cast<std::size_t>(level)];
     expect_conforming_disc(mesh);
     expect_levels_one_apart(mesh, triangle_levels);
 
-    // Vertices of the finest triangles against the uniform mesh's vertex at the same (x, y)
-    // (the grid's x and y stay on the grid away from the region's corners).
-    std::map<std::pair<long, long>, Eigen::Index> uniform_at;
-    for (Eigen::Index v = 0; v < uniform.vertices.rows(); ++v) {
-      uniform_at[{std::lround(uniform.vertices(v, 0) * 1e6),
-                  std::lround(uniform.vertices(v, 1) * 1e6)}] = v;
-    }
+    // Vertices of the finest triangles against the uniform mesh's vertex at the same node of
+    // the level's grid (nodes from the topology: loop_grid.h).
+    std::map<std::array<int, 2>, std::size_t> uniform_at;
+    for (std::size_t v = 0; v < uniform_nodes.size(); ++v) uniform_at[uniform_nodes[v]] = v;
+    ASSERT_EQ(uniform_at.size(), uniform_nodes.size());
     double largest = 0.0;
     std::size_t finest = 0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       if (triangle_levels[t] != level) continue;
       ++finest;
       for (const int v : mesh.triangles[t]) {
-        const auto found = uniform_at.find(
-            {std::lround(mesh.vertices(v, 0) * 1e6), std::lround(mesh.vertices(v, 1) * 1e6)});
+        const auto found = uniform_at.find(adaptive_nodes[static_cast<std::size_t>(v)]);
         ASSERT_NE(found, uniform_at.end()) << "vertex " << v << " at level " << level;
-        largest =
-            std::max(largest, (mesh.vertices.row(v) - uniform.vertices.row(found->second)).norm());
+        largest = std::max(largest, (mesh.vertices.row(v) -
+                                     uniform.vertices.row(static_cast<Eigen::Index>(found->second)))
+                                        .norm());
       }
     }
     const auto marked =
@@ -157,13 +162,14 @@ void expect_conforming_and_equal_to_uniform(const Feature& feature) {
 
 TEST(AdaptiveLoop, ConformingAndEqualToUniformInsideTheRefinedZone) {
   // 1.5 km x 1.2 km at 30 m: the feature's band and its rings stay off the region's border.
-  expect_conforming_and_equal_to_uniform(one_km_feature(rolling_terrain(51, 41, 30.0), 40.0));
+  expect_conforming_and_equal_to_uniform(one_km_feature(rolling_terrain(51, 41, 30.0), 40.0), 51,
+                                         41);
 }
 
 TEST(AdaptiveLoop, ConformingAndEqualToUniformAcrossTheBorder) {
   // The feature leaves the region through its west side (border masks in the refined zone).
   expect_conforming_and_equal_to_uniform(
-      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, 100.0, 600.0));
+      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, 100.0, 600.0), 51, 41);
 }
 
 TEST(AdaptiveLoop, OneKilometreFeatureOnTenKilometresKeepsFewTriangles) {

@@ -12,6 +12,8 @@
 #include <set>
 #include <utility>
 
+#include "../loop_grid.h"
+
 namespace maquette::deform {
 namespace {
 
@@ -175,6 +177,35 @@ TEST(LoopSubdivision, HeightFieldTriangulation) {
   EXPECT_EQ(mesh.triangles[square], (std::array<int, 3>{9, 10, 17}));
   EXPECT_EQ(mesh.triangles[square + 1], (std::array<int, 3>{9, 17, 16}));
   EXPECT_EQ(mesh.vertices.row(17), Eigen::RowVector3d(90.0, 40.0, mesh.vertices(17, 2)));
+}
+
+TEST(LoopSubdivision, HeightFieldVerticesOnTheFinerGrids) {
+  // 7 x 5 samples, 30 m x 20 m; 3 levels: a 49 x 33 grid of 3.75 m x 2.5 m.
+  TriangleMesh mesh = sample_height_field();
+  GridNodes nodes = height_field_nodes(7, 5);
+  for (int level = 1; level <= 3; ++level) {
+    LoopLevel fine = loop_subdivide(mesh);
+    nodes = finer_nodes(nodes, fine.new_vertex_ends);
+    mesh = std::move(fine.mesh);
+  }
+  ASSERT_EQ(nodes.size(), 49u * 33u);
+  std::set<std::array<int, 2>> distinct(nodes.begin(), nodes.end());
+  EXPECT_EQ(distinct.size(), nodes.size());
+  EXPECT_EQ(*distinct.begin(), (std::array<int, 2>{0, 0}));
+  EXPECT_EQ(*distinct.rbegin(), (std::array<int, 2>{48, 32}));
+  int exact = 0;
+  for (std::size_t v = 0; v < nodes.size(); ++v) {
+    const auto [c, r] = nodes[v];
+    // More than two samples (16 nodes) from the nearest corner: exactly on the grid.
+    if (std::min(c, 48 - c) <= 16 && std::min(r, 32 - r) <= 16) continue;
+    ++exact;
+    EXPECT_NEAR(mesh.vertices(static_cast<Eigen::Index>(v), 0), c * 3.75, 1e-9);
+    EXPECT_NEAR(mesh.vertices(static_cast<Eigen::Index>(v), 1), r * 2.5, 1e-9);
+  }
+  EXPECT_EQ(exact, 15 * 33);  // columns 17-31, all rows
+  // The corner vertex is pulled inwards by the border masks (limit: (1/6, 1/6) of a sample).
+  EXPECT_GT(mesh.vertices(0, 0), 4.0);
+  EXPECT_GT(mesh.vertices(0, 1), 2.0);
 }
 
 TEST(LoopSubdivision, RefusesBadInput) {
