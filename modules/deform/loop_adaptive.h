@@ -3,7 +3,6 @@
 // stay at most one level apart, joined without T-junctions by transition triangles.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <vector>
 
 #include "loop_mesh.h"
@@ -17,7 +16,7 @@ struct AdaptiveLoop {
   // the zone, then the new edge vertices (loop_refine.h), so a constraint on meshes[j + 1] is
   // written on the unknowns of meshes[j] through subdivisions[j], as with uniform subdivision.
   std::vector<TriangleMesh> meshes;
-  std::vector<Eigen::SparseMatrix<double>> subdivisions;
+  std::vector<SubdivisionMatrix> subdivisions;
   // Per step j and new vertex (meshes[j]'s vertex count + i): the ends of the edge it is on.
   std::vector<std::vector<std::array<int, 2>>> new_vertex_ends;
   // Per triangle of meshes[j]: its level (0 for a base triangle, ..., j).

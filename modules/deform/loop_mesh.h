@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
@@ -13,6 +14,10 @@ struct TriangleMesh {
   Eigen::MatrixX3d vertices;
   std::vector<std::array<int, 3>> triangles;
 };
+
+// A level of subdivision as a linear map, fine vertices = matrix * coarse vertices; stored by
+// rows, since a constraint on the fine surface combines rows (paper 002, Eq. 4).
+using SubdivisionMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 // Heights sampled on a regular grid: sample (column c, row r) is at x = c * spacing_x,
 // y = r * spacing_y, z = heights[r * columns + c] (rows go towards +y: a north-up raster is passed

@@ -1,5 +1,6 @@
 #include "loop_refine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -23,6 +24,7 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
   LoopRefinement out;
   out.edge_vertex.assign(edges.vertices.size(), -1);
   int next_vertex = vertex_count;
+  std::vector<int> split_edges;  // per new vertex
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!refined[t]) continue;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -31,6 +33,7 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
       int& split = out.edge_vertex[static_cast<std::size_t>(split_edge_index)];
       if (split < 0) {
         split = next_vertex++;
+        split_edges.push_back(split_edge_index);
         out.new_vertex_ends.push_back(edges.vertices[static_cast<std::size_t>(split_edge_index)]);
       }
     }
@@ -54,56 +57,96 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
     }
   }
 
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(vertices + 7 * static_cast<std::size_t>(next_vertex - vertex_count) * 2);
-  std::vector<double> neighbour_weight(vertices, 0.0);
+  // The edges at each even vertex (compressed lists, by vertex).
+  std::vector<int> first_incident(vertices + 1, 0);
+  for (const auto& ends : edges.vertices) {
+    for (const int v : ends) {
+      if (even[static_cast<std::size_t>(v)]) ++first_incident[static_cast<std::size_t>(v) + 1];
+    }
+  }
+  for (std::size_t v = 0; v < vertices; ++v) first_incident[v + 1] += first_incident[v];
+  std::vector<int> incident(static_cast<std::size_t>(first_incident.back()));
+  {
+    std::vector<int> cursor(first_incident.begin(), first_incident.end() - 1);
+    for (std::size_t e = 0; e < edges.vertices.size(); ++e) {
+      for (const int v : edges.vertices[e]) {
+        const auto vi = static_cast<std::size_t>(v);
+        if (even[vi]) incident[static_cast<std::size_t>(cursor[vi]++)] = static_cast<int>(e);
+      }
+    }
+  }
+
+  // Rows in order, each sorted by column, written straight into the compressed matrix.
+  out.subdivision.resize(next_vertex, vertex_count);
+  out.subdivision.resizeNonZeros(static_cast<Eigen::Index>(
+      vertices + incident.size() + 4 * (static_cast<std::size_t>(next_vertex) - vertices)));
+  int* const outer = out.subdivision.outerIndexPtr();
+  int* const inner = out.subdivision.innerIndexPtr();
+  double* const value = out.subdivision.valuePtr();
+  int written = 0;
+  std::vector<std::pair<int, double>> row;
+  const auto write_row = [&](int r) {
+    std::sort(row.begin(), row.end());
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (i > 0 && row[i].first == row[i - 1].first) {
+        value[written - 1] += row[i].second;  // an edge's two opposite corners may coincide
+        continue;
+      }
+      inner[written] = row[i].first;
+      value[written++] = row[i].second;
+    }
+    outer[r + 1] = written;
+    row.clear();
+  };
+  outer[0] = 0;
   for (std::size_t v = 0; v < vertices; ++v) {
     const int vi = static_cast<int>(v);
+    const std::span<const int> around(incident.data() + first_incident[v],
+                                      incident.data() + first_incident[v + 1]);
+    const auto other_end = [&](int e) {
+      const auto& ends = edges.vertices[static_cast<std::size_t>(e)];
+      return ends[0] == vi ? ends[1] : ends[0];
+    };
     if (!even[v]) {
-      entries.emplace_back(vi, vi, 1.0);
+      row.emplace_back(vi, 1.0);
     } else if (border_edges[v] == 0) {
-      neighbour_weight[v] = inner_neighbour_weight(valence[v]);
-      entries.emplace_back(vi, vi, 1.0 - valence[v] * neighbour_weight[v]);
+      const double weight = inner_neighbour_weight(valence[v]);
+      row.emplace_back(vi, 1.0 - valence[v] * weight);
+      for (const int e : around) row.emplace_back(other_end(e), weight);
     } else if (border_edges[v] == 2) {
-      entries.emplace_back(vi, vi, 3.0 / 4.0);
+      row.emplace_back(vi, 3.0 / 4.0);
+      for (const int e : around) {
+        if (on_border[static_cast<std::size_t>(e)]) row.emplace_back(other_end(e), 1.0 / 8.0);
+      }
     } else {
       throw std::invalid_argument("mesh: vertex " + std::to_string(v) + " has " +
                                   std::to_string(border_edges[v]) +
                                   " border edges (a border vertex needs exactly 2)");
     }
+    write_row(vi);
   }
-  for (std::size_t e = 0; e < edges.vertices.size(); ++e) {
+  for (int split = vertex_count; split < next_vertex; ++split) {
+    const auto e =
+        static_cast<std::size_t>(split_edges[static_cast<std::size_t>(split - vertex_count)]);
     const auto [a, b] = edges.vertices[e];
-    for (const auto [v, other] : {std::array{a, b}, std::array{b, a}}) {
-      const auto vi = static_cast<std::size_t>(v);
-      if (!even[vi]) continue;
-      if (border_edges[vi] == 0) {
-        entries.emplace_back(v, other, neighbour_weight[vi]);
-      } else if (on_border[e]) {
-        entries.emplace_back(v, other, 1.0 / 8.0);
-      }
-    }
-    const int split = out.edge_vertex[e];
-    if (split < 0) continue;
     if (on_border[e]) {
-      entries.emplace_back(split, a, 0.5);
-      entries.emplace_back(split, b, 0.5);
-      continue;
-    }
-    entries.emplace_back(split, a, 3.0 / 8.0);
-    entries.emplace_back(split, b, 3.0 / 8.0);
-    for (const int t : edges.triangles[e]) {
-      const auto& tri_edges = edges.triangle_edges[static_cast<std::size_t>(t)];
-      for (std::size_t i = 0; i < 3; ++i) {
-        if (tri_edges[i] == static_cast<int>(e)) {
-          entries.emplace_back(split, triangles[static_cast<std::size_t>(t)][(i + 2) % 3],
-                               1.0 / 8.0);
+      row.emplace_back(a, 0.5);
+      row.emplace_back(b, 0.5);
+    } else {
+      row.emplace_back(a, 3.0 / 8.0);
+      row.emplace_back(b, 3.0 / 8.0);
+      for (const int t : edges.triangles[e]) {
+        const auto& tri_edges = edges.triangle_edges[static_cast<std::size_t>(t)];
+        for (std::size_t i = 0; i < 3; ++i) {
+          if (tri_edges[i] == static_cast<int>(e)) {
+            row.emplace_back(triangles[static_cast<std::size_t>(t)][(i + 2) % 3], 1.0 / 8.0);
+          }
         }
       }
     }
+    write_row(split);
   }
-  out.subdivision.resize(next_vertex, vertex_count);
-  out.subdivision.setFromTriplets(entries.begin(), entries.end());
+  out.subdivision.resizeNonZeros(written);
 
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!refined[t]) continue;

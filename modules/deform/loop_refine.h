@@ -2,12 +2,12 @@
 // shared by the uniform (loop_subdivision.h) and the adaptive (loop_adaptive.h) subdivisions.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <array>
 #include <span>
 #include <vector>
 
 #include "loop_edges.h"
+#include "loop_mesh.h"
 
 namespace maquette::deform {
 
@@ -24,7 +24,7 @@ struct LoopRefinement {
   // refined triangles (even) take Loop's vertex mask, new edge vertices (odd) the edge mask, any
   // other vertex is kept (identity row). New vertices are numbered from vertex_count in the order
   // the refined triangles reach their edges.
-  Eigen::SparseMatrix<double> subdivision;
+  SubdivisionMatrix subdivision;
 };
 
 // Loop's masks (Loop 1987; the weights of Warren's and OpenMesh's LoopT):

@@ -3,8 +3,6 @@
 // the vertices of level k.
 #pragma once
 
-#include <Eigen/SparseCore>
-
 #include "loop_mesh.h"
 
 namespace maquette::deform {
@@ -14,7 +12,7 @@ struct LoopLevel {
   // mesh.vertices == subdivision * (the coarser mesh's vertices); rows: the coarser mesh's
   // vertices (same indices, moved by the vertex masks), then one new vertex per edge, in the order
   // the triangles reach their edges (loop_edges.h).
-  Eigen::SparseMatrix<double> subdivision;
+  SubdivisionMatrix subdivision;
   // Per new vertex (the coarser vertex count + i): the ends of the coarser edge it is on.
   std::vector<std::array<int, 2>> new_vertex_ends;
 };

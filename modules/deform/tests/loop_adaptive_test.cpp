@@ -189,7 +189,7 @@ TEST(AdaptiveLoop, OneKilometreFeatureOnTenKilometresKeepsFewTriangles) {
 TEST(AdaptiveLoop, KeptVerticesHaveIdentityRows) {
   const Feature feature = one_km_feature(rolling_terrain(51, 41, 30.0), 40.0);
   const AdaptiveLoop adaptive = adaptive_loop_subdivide(feature.base, feature.marked, 1);
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> s = adaptive.subdivisions[0];
+  const SubdivisionMatrix& s = adaptive.subdivisions[0];
   // Far from the feature (the region's corner vertex 0) the row is the identity; on it, not.
   EXPECT_EQ(s.row(0).nonZeros(), 1);
   EXPECT_EQ(s.coeff(0, 0), 1.0);
