@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "../loop_grid.h"
@@ -95,15 +96,15 @@ struct Feature {
   std::vector<bool> marked;
 };
 
-// A straight 1 km feature (a river, say) centred at (cx, cy) (by default the region's middle),
+// A straight 1 km feature (a river, say) centred at `centre` (by default the region's middle),
 // triangles within `band` metres of it marked.
-Feature one_km_feature(const HeightField& field, double band, double cx = -1.0, double cy = -1.0) {
+Feature one_km_feature(const HeightField& field, double band,
+                       std::optional<Eigen::Vector2d> centre = std::nullopt) {
   Feature feature{height_field_mesh(field), {}};
-  if (cx < 0.0) cx = 0.5 * (field.columns - 1) * field.spacing_x;
-  if (cy < 0.0) cy = 0.5 * (field.rows - 1) * field.spacing_y;
+  const Eigen::Vector2d middle = centre.value_or(Eigen::Vector2d(
+      0.5 * (field.columns - 1) * field.spacing_x, 0.5 * (field.rows - 1) * field.spacing_y));
   const Eigen::Vector2d half(0.5 * 1000.0 * std::cos(0.4), 0.5 * 1000.0 * std::sin(0.4));
-  const std::vector<Eigen::Vector2d> line{Eigen::Vector2d(cx, cy) - half,
-                                          Eigen::Vector2d(cx, cy) + half};
+  const std::vector<Eigen::Vector2d> line{middle - half, middle + half};
   feature.marked = triangles_near_polyline(feature.base, line, band);
   return feature;
 }
@@ -167,9 +168,12 @@ TEST(AdaptiveLoop, ConformingAndEqualToUniformInsideTheRefinedZone) {
 }
 
 TEST(AdaptiveLoop, ConformingAndEqualToUniformAcrossTheBorder) {
-  // The feature leaves the region through its west side (border masks in the refined zone).
+  // The feature leaves the region through its west side, then through its south-west corner
+  // (border masks, and the corner's vertices pulled off the grid, in the refined zone).
   expect_conforming_and_equal_to_uniform(
-      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, 100.0, 600.0), 51, 41);
+      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(100.0, 600.0)), 51, 41);
+  expect_conforming_and_equal_to_uniform(
+      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(0.0, 1.0)), 51, 41);
 }
 
 TEST(AdaptiveLoop, OneKilometreFeatureOnTenKilometresKeepsFewTriangles) {
