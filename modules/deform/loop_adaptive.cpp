@@ -72,22 +72,43 @@ AdaptiveLoop adaptive_loop_subdivide(const TriangleMesh& base, const std::vector
   out.meshes.push_back(base);
   out.triangle_levels.emplace_back(base.triangles.size(), 0);
 
-  // The zone: the triangles of the current level (all base triangles, then the children of the
-  // last refined ones); per triangle edge, whether it is on the border of the whole surface.
-  std::vector<std::array<int, 3>> zone = base.triangles;
-  std::vector<std::array<bool, 3>> zone_border(zone.size());
-  {
-    const MeshEdges edges = mesh_edges(zone, static_cast<int>(base.vertices.rows()));
-    for (std::size_t t = 0; t < zone.size(); ++t) {
-      for (std::size_t i = 0; i < 3; ++i) {
-        zone_border[t][i] =
-            edges.triangles[static_cast<std::size_t>(edges.triangle_edges[t][i])][1] < 0;
-      }
-    }
-  }
-  std::vector<bool> wanted = marked;
+  // The zone: the triangles of the current level (the marked base triangles grown by `levels`
+  // rings, then the children of the last refined ones); per triangle edge, whether it is on the
+  // border of the whole surface. Step 0's refinement and red closure stay inside the first zone
+  // (they touch only vertices of the marked triangles grown by levels - 1 rings); the other base
+  // triangles are final. A zone edge with no other triangle in one ring more is on the border.
+  const auto base_vertices = static_cast<int>(base.vertices.rows());
+  std::vector<bool> in_zone = marked;
+  for (int ring = 0; ring < levels; ++ring)
+    grow_by_one_ring(base.triangles, base_vertices, in_zone);
+  std::vector<bool> in_halo = in_zone;
+  grow_by_one_ring(base.triangles, base_vertices, in_halo);
+  std::vector<std::array<int, 3>> halo;
+  std::vector<std::size_t> halo_base;        // base index of each halo triangle
   std::vector<std::array<int, 3>> finished;  // triangles of coarser levels, no more refined
-  std::vector<int> finished_levels;
+  for (std::size_t t = 0; t < base.triangles.size(); ++t) {
+    if (in_halo[t]) {
+      halo.push_back(base.triangles[t]);
+      halo_base.push_back(t);
+    }
+    if (!in_zone[t]) finished.push_back(base.triangles[t]);
+  }
+  std::vector<int> finished_levels(finished.size(), 0);
+  std::vector<std::array<int, 3>> zone;
+  std::vector<std::array<bool, 3>> zone_border;
+  std::vector<bool> wanted;
+  const MeshEdges halo_edges = mesh_edges(halo, base_vertices);
+  for (std::size_t h = 0; h < halo.size(); ++h) {
+    if (!in_zone[halo_base[h]]) continue;
+    zone.push_back(halo[h]);
+    wanted.push_back(marked[halo_base[h]]);
+    std::array<bool, 3> border{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      border[i] =
+          halo_edges.triangles[static_cast<std::size_t>(halo_edges.triangle_edges[h][i])][1] < 0;
+    }
+    zone_border.push_back(border);
+  }
 
   for (int level = 0; level < levels; ++level) {
     const TriangleMesh& coarse = out.meshes.back();

@@ -32,7 +32,8 @@ struct AdaptiveLoop {
 // the new vertex of that edge (green, transition triangle, of its own level). Each vertex takes
 // the position of the finest level it belongs to, so shared vertices are one vertex: no crack.
 // Preconditions (std::invalid_argument otherwise): levels >= 1, marked.size() equal to the
-// number of base triangles, and the base mesh as for loop_subdivide.
+// number of base triangles, and the base mesh as for loop_subdivide (checked around the marked
+// triangles: the others are returned as they are).
 AdaptiveLoop adaptive_loop_subdivide(const TriangleMesh& base, const std::vector<bool>& marked,
                                      int levels);
 

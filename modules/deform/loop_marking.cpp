@@ -1,5 +1,6 @@
 #include "loop_marking.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -58,12 +59,20 @@ std::vector<bool> triangles_near_polyline(const TriangleMesh& mesh,
     throw std::invalid_argument("feature distance must be finite and >= 0, got " +
                                 std::to_string(distance));
   }
+  // Triangles whose bounding box is farther than `distance` from the polyline's are not near.
+  Eigen::AlignedBox2d reach;
+  for (const auto& p : polyline) reach.extend(p);
+  reach.min().array() -= distance;
+  reach.max().array() += distance;
   std::vector<bool> near(mesh.triangles.size(), false);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     std::array<Eigen::Vector2d, 3> corner;
+    Eigen::AlignedBox2d box;
     for (std::size_t i = 0; i < 3; ++i) {
       corner[i] = mesh.vertices.row(mesh.triangles[t][i]).head<2>().transpose();
+      box.extend(corner[i]);
     }
+    if (!box.intersects(reach)) continue;
     double closest = inside_triangle(polyline[0], corner) ? 0.0 : distance + 1.0;
     for (std::size_t s = 0; s + 1 < polyline.size() && closest > distance; ++s) {
       for (std::size_t i = 0; i < 3; ++i) {
