@@ -204,6 +204,19 @@ TEST(AdaptiveLoop, KeptVerticesHaveIdentityRows) {
   EXPECT_GT(s.rows(), s.cols());
 }
 
+TEST(AdaptiveLoop, NothingMarkedKeepsTheBase) {
+  const TriangleMesh base = height_field_mesh(rolling_terrain(9, 7, 30.0));
+  const AdaptiveLoop adaptive =
+      adaptive_loop_subdivide(base, std::vector<bool>(base.triangles.size(), false), 2);
+  for (const TriangleMesh& mesh : adaptive.meshes) {
+    EXPECT_EQ(mesh.triangles, base.triangles);
+    EXPECT_EQ(mesh.vertices, base.vertices);
+  }
+  for (const SubdivisionMatrix& s : adaptive.subdivisions) {
+    EXPECT_EQ(Eigen::MatrixXd(s), Eigen::MatrixXd::Identity(s.rows(), s.cols()));
+  }
+}
+
 TEST(AdaptiveLoop, RefusesBadInput) {
   const Feature feature = one_km_feature(rolling_terrain(51, 41, 30.0), 40.0);
   EXPECT_THROW(adaptive_loop_subdivide(feature.base, feature.marked, 0), std::invalid_argument);
