@@ -39,15 +39,16 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
     }
   }
 
-  // Valences and border edges of the even vertices; a gap in a vertex's fan (an edge with one
-  // triangle that is not on the surface's border) means its mask would miss neighbours.
-  std::vector<int> valence(vertices, 0);
+  // The edges at each even vertex (compressed lists, by vertex: their counts are the valences)
+  // and its border edges; a gap in a vertex's fan (an edge with one triangle that is not on the
+  // surface's border) means its mask would miss neighbours.
+  std::vector<int> first_incident(vertices + 1, 0);
   std::vector<int> border_edges(vertices, 0);
   for (std::size_t e = 0; e < edges.vertices.size(); ++e) {
     for (const int v : edges.vertices[e]) {
       const auto vi = static_cast<std::size_t>(v);
       if (!even[vi]) continue;
-      ++valence[vi];
+      ++first_incident[vi + 1];
       if (on_border[e]) {
         ++border_edges[vi];
       } else if (edges.triangles[e][1] < 0) {
@@ -57,13 +58,6 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
     }
   }
 
-  // The edges at each even vertex (compressed lists, by vertex).
-  std::vector<int> first_incident(vertices + 1, 0);
-  for (const auto& ends : edges.vertices) {
-    for (const int v : ends) {
-      if (even[static_cast<std::size_t>(v)]) ++first_incident[static_cast<std::size_t>(v) + 1];
-    }
-  }
   for (std::size_t v = 0; v < vertices; ++v) first_incident[v + 1] += first_incident[v];
   std::vector<int> incident(static_cast<std::size_t>(first_incident.back()));
   {
@@ -110,8 +104,9 @@ LoopRefinement refine_loop(std::span<const std::array<int, 3>> triangles, const 
     if (!even[v]) {
       row.emplace_back(vi, 1.0);
     } else if (border_edges[v] == 0) {
-      const double weight = inner_neighbour_weight(valence[v]);
-      row.emplace_back(vi, 1.0 - valence[v] * weight);
+      const auto valence = static_cast<int>(around.size());
+      const double weight = inner_neighbour_weight(valence);
+      row.emplace_back(vi, 1.0 - valence * weight);
       for (const int e : around) row.emplace_back(other_end(e), weight);
     } else if (border_edges[v] == 2) {
       row.emplace_back(vi, 3.0 / 4.0);
