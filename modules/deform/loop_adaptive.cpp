@@ -55,6 +55,107 @@ void close_red(const MeshEdges& edges, std::vector<bool>& refined) {
   }
 }
 
+// The triangles of the level being refined; per triangle edge, whether it is on the border of
+// the whole surface; per triangle, whether it descends from a marked base triangle.
+struct Zone {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<bool, 3>> border;
+  std::vector<bool> wanted;
+};
+
+// Triangles of coarser levels, no more refined, and their levels.
+struct Finished {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> levels;
+};
+
+// The marked base triangles grown by `levels` rings: step 0's refinement and red closure touch
+// only vertices of the marked triangles grown by levels - 1 rings, so they stay inside. The other
+// base triangles are final (added to `finished`). A zone edge with no other triangle in one ring
+// more is on the surface's border.
+Zone first_zone(const TriangleMesh& base, const std::vector<bool>& marked, int levels,
+                Finished& finished) {
+  const auto base_vertices = static_cast<int>(base.vertices.rows());
+  std::vector<bool> in_zone = marked;
+  for (int ring = 0; ring < levels; ++ring) {
+    grow_by_one_ring(base.triangles, base_vertices, in_zone);
+  }
+  std::vector<bool> in_halo = in_zone;
+  grow_by_one_ring(base.triangles, base_vertices, in_halo);
+  std::vector<std::array<int, 3>> halo;
+  std::vector<std::size_t> halo_base;  // base index of each halo triangle
+  for (std::size_t t = 0; t < base.triangles.size(); ++t) {
+    if (in_halo[t]) {
+      halo.push_back(base.triangles[t]);
+      halo_base.push_back(t);
+    }
+    if (!in_zone[t]) finished.triangles.push_back(base.triangles[t]);
+  }
+  finished.levels.assign(finished.triangles.size(), 0);
+  Zone zone;
+  const MeshEdges halo_edges = mesh_edges(halo, base_vertices);
+  for (std::size_t h = 0; h < halo.size(); ++h) {
+    if (!in_zone[halo_base[h]]) continue;
+    zone.triangles.push_back(halo[h]);
+    zone.wanted.push_back(marked[halo_base[h]]);
+    std::array<bool, 3> border{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto e = static_cast<std::size_t>(halo_edges.triangle_edges[h][i]);
+      border[i] = halo_edges.triangles[e][1] < 0;
+    }
+    zone.border.push_back(border);
+  }
+  return zone;
+}
+
+// Adds the zone's triangles left unrefined to `finished`: as they are, or halved through the new
+// vertex of their one split edge (green).
+void finish_unrefined(const Zone& zone, const MeshEdges& edges, const std::vector<bool>& refined,
+                      const LoopRefinement& refinement, int level, Finished& finished) {
+  for (std::size_t t = 0; t < zone.triangles.size(); ++t) {
+    if (refined[t]) continue;
+    const auto& triangle = zone.triangles[t];
+    int split_edges = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int m = refinement.edge_vertex[static_cast<std::size_t>(edges.triangle_edges[t][i])];
+      if (m < 0) continue;
+      if (++split_edges > 1) {
+        throw std::logic_error("adaptive Loop subdivision: red closure left a triangle with " +
+                               std::to_string(split_edges) + " split edges");
+      }
+      // Halves through m on edge (a, b), towards the opposite corner o.
+      const int a = triangle[i];
+      const int b = triangle[(i + 1) % 3];
+      const int o = triangle[(i + 2) % 3];
+      finished.triangles.push_back({a, m, o});
+      finished.triangles.push_back({m, b, o});
+      finished.levels.insert(finished.levels.end(), 2, level);
+    }
+    if (split_edges == 0) {
+      finished.triangles.push_back(triangle);
+      finished.levels.push_back(level);
+    }
+  }
+}
+
+// The next zone: the children of the refined triangles (loop_refine.h's order), their border
+// edges those on their parent's border edges.
+Zone children_zone(const Zone& zone, const std::vector<bool>& refined,
+                   std::vector<std::array<int, 3>> children) {
+  Zone next;
+  next.triangles = std::move(children);
+  for (std::size_t t = 0; t < zone.triangles.size(); ++t) {
+    if (!refined[t]) continue;
+    const auto [ab, bc, ca] = zone.border[t];
+    next.border.push_back({ab, false, ca});
+    next.border.push_back({ab, bc, false});
+    next.border.push_back({false, bc, ca});
+    next.border.push_back({false, false, false});
+    next.wanted.insert(next.wanted.end(), 4, zone.wanted[t]);
+  }
+  return next;
+}
+
 }  // namespace
 
 AdaptiveLoop adaptive_loop_subdivide(const TriangleMesh& base, const std::vector<bool>& marked,
@@ -71,115 +172,37 @@ AdaptiveLoop adaptive_loop_subdivide(const TriangleMesh& base, const std::vector
   AdaptiveLoop out;
   out.meshes.push_back(base);
   out.triangle_levels.emplace_back(base.triangles.size(), 0);
-
-  // The zone: the triangles of the current level (the marked base triangles grown by `levels`
-  // rings, then the children of the last refined ones); per triangle edge, whether it is on the
-  // border of the whole surface. Step 0's refinement and red closure stay inside the first zone
-  // (they touch only vertices of the marked triangles grown by levels - 1 rings); the other base
-  // triangles are final. A zone edge with no other triangle in one ring more is on the border.
-  const auto base_vertices = static_cast<int>(base.vertices.rows());
-  std::vector<bool> in_zone = marked;
-  for (int ring = 0; ring < levels; ++ring)
-    grow_by_one_ring(base.triangles, base_vertices, in_zone);
-  std::vector<bool> in_halo = in_zone;
-  grow_by_one_ring(base.triangles, base_vertices, in_halo);
-  std::vector<std::array<int, 3>> halo;
-  std::vector<std::size_t> halo_base;        // base index of each halo triangle
-  std::vector<std::array<int, 3>> finished;  // triangles of coarser levels, no more refined
-  for (std::size_t t = 0; t < base.triangles.size(); ++t) {
-    if (in_halo[t]) {
-      halo.push_back(base.triangles[t]);
-      halo_base.push_back(t);
-    }
-    if (!in_zone[t]) finished.push_back(base.triangles[t]);
-  }
-  std::vector<int> finished_levels(finished.size(), 0);
-  std::vector<std::array<int, 3>> zone;
-  std::vector<std::array<bool, 3>> zone_border;
-  std::vector<bool> wanted;
-  const MeshEdges halo_edges = mesh_edges(halo, base_vertices);
-  for (std::size_t h = 0; h < halo.size(); ++h) {
-    if (!in_zone[halo_base[h]]) continue;
-    zone.push_back(halo[h]);
-    wanted.push_back(marked[halo_base[h]]);
-    std::array<bool, 3> border{};
-    for (std::size_t i = 0; i < 3; ++i) {
-      border[i] =
-          halo_edges.triangles[static_cast<std::size_t>(halo_edges.triangle_edges[h][i])][1] < 0;
-    }
-    zone_border.push_back(border);
-  }
+  Finished finished;
+  Zone zone = first_zone(base, marked, levels, finished);
 
   for (int level = 0; level < levels; ++level) {
     const TriangleMesh& coarse = out.meshes.back();
     const auto vertex_count = static_cast<int>(coarse.vertices.rows());
-    const MeshEdges edges = mesh_edges(zone, vertex_count);
+    const MeshEdges edges = mesh_edges(zone.triangles, vertex_count);
     std::vector<bool> on_border(edges.vertices.size(), false);
-    for (std::size_t t = 0; t < zone.size(); ++t) {
+    for (std::size_t t = 0; t < zone.triangles.size(); ++t) {
       for (std::size_t i = 0; i < 3; ++i) {
-        if (zone_border[t][i])
+        if (zone.border[t][i]) {
           on_border[static_cast<std::size_t>(edges.triangle_edges[t][i])] = true;
-      }
-    }
-    std::vector<bool> refined = wanted;
-    for (int ring = 0; ring < levels - 1 - level; ++ring) {
-      grow_by_one_ring(zone, vertex_count, refined);
-    }
-    close_red(edges, refined);
-    LoopRefinement refinement = refine_loop(zone, edges, on_border, refined, vertex_count);
-
-    for (std::size_t t = 0; t < zone.size(); ++t) {
-      if (refined[t]) continue;
-      int split_edge = -1;
-      int split_edges = 0;
-      for (int i = 0; i < 3; ++i) {
-        const int e = edges.triangle_edges[t][static_cast<std::size_t>(i)];
-        if (refinement.edge_vertex[static_cast<std::size_t>(e)] >= 0) {
-          split_edge = i;
-          ++split_edges;
         }
       }
-      if (split_edges > 1) {
-        throw std::logic_error("adaptive Loop subdivision: red closure left a triangle with " +
-                               std::to_string(split_edges) + " split edges");
-      }
-      if (split_edge < 0) {
-        finished.push_back(zone[t]);
-        finished_levels.push_back(level);
-        continue;
-      }
-      // Green: halves through the new vertex m of edge (a, b), towards the opposite corner o.
-      const auto i = static_cast<std::size_t>(split_edge);
-      const int a = zone[t][i];
-      const int b = zone[t][(i + 1) % 3];
-      const int o = zone[t][(i + 2) % 3];
-      const int m = refinement.edge_vertex[static_cast<std::size_t>(edges.triangle_edges[t][i])];
-      finished.push_back({a, m, o});
-      finished.push_back({m, b, o});
-      finished_levels.insert(finished_levels.end(), 2, level);
     }
-
-    std::vector<std::array<bool, 3>> children_border;
-    std::vector<bool> children_wanted;
-    for (std::size_t t = 0; t < zone.size(); ++t) {
-      if (!refined[t]) continue;
-      const auto [ab, bc, ca] = zone_border[t];
-      children_border.push_back({ab, false, ca});
-      children_border.push_back({ab, bc, false});
-      children_border.push_back({false, bc, ca});
-      children_border.push_back({false, false, false});
-      children_wanted.insert(children_wanted.end(), 4, wanted[t]);
+    std::vector<bool> refined = zone.wanted;
+    for (int ring = 0; ring < levels - 1 - level; ++ring) {
+      grow_by_one_ring(zone.triangles, vertex_count, refined);
     }
-    zone = std::move(refinement.children);
-    zone_border = std::move(children_border);
-    wanted = std::move(children_wanted);
+    close_red(edges, refined);
+    LoopRefinement refinement =
+        refine_loop(zone.triangles, edges, on_border, refined, vertex_count);
+    finish_unrefined(zone, edges, refined, refinement, level, finished);
+    zone = children_zone(zone, refined, std::move(refinement.children));
 
     TriangleMesh fine;
     fine.vertices = refinement.subdivision * coarse.vertices;
-    fine.triangles = finished;
-    fine.triangles.insert(fine.triangles.end(), zone.begin(), zone.end());
-    std::vector<int> fine_levels = finished_levels;
-    fine_levels.insert(fine_levels.end(), zone.size(), level + 1);
+    fine.triangles = finished.triangles;
+    fine.triangles.insert(fine.triangles.end(), zone.triangles.begin(), zone.triangles.end());
+    std::vector<int> fine_levels = finished.levels;
+    fine_levels.insert(fine_levels.end(), zone.triangles.size(), level + 1);
     out.meshes.push_back(std::move(fine));
     out.subdivisions.push_back(std::move(refinement.subdivision));
     out.new_vertex_ends.push_back(std::move(refinement.new_vertex_ends));
