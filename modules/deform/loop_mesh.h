@@ -20,8 +20,8 @@ struct TriangleMesh {
 using SubdivisionMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 // Heights sampled on a regular grid: sample (column c, row r) is at x = c * spacing_x,
-// y = r * spacing_y, z = heights[r * columns + c] (rows go towards +y: a north-up raster is passed
-// with its rows reversed, or its y negated by the caller after triangulation).
+// y = r * spacing_y, z = heights[r * columns + c]. Rows go towards +y: a north-up raster (row 0
+// at the north) is passed with its rows in reverse order.
 struct HeightField {
   int columns = 0;
   int rows = 0;
