@@ -14,7 +14,7 @@ namespace {
 using namespace maquette::deform;
 
 TriangleMesh height_field(int samples) {
-  HeightField field{samples, samples, 30.0, 30.0, {}};
+  RegularHeightField field{samples, samples, 30.0, 30.0, {}};
   for (int r = 0; r < field.rows; ++r) {
     for (int c = 0; c < field.columns; ++c) {
       field.heights.push_back(1500.0 + 80.0 * std::sin(c / 23.0) * std::cos(r / 15.0));

@@ -6,7 +6,7 @@
 
 namespace maquette::deform {
 
-TriangleMesh height_field_mesh(const HeightField& field) {
+TriangleMesh height_field_mesh(const RegularHeightField& field) {
   if (field.columns < 2 || field.rows < 2) {
     throw std::invalid_argument("height field: columns and rows must be >= 2, got " +
                                 std::to_string(field.columns) + " x " + std::to_string(field.rows));

@@ -22,7 +22,7 @@ using SubdivisionMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 // Heights sampled on a regular grid: sample (column c, row r) is at x = c * spacing_x,
 // y = r * spacing_y, z = heights[r * columns + c]. Rows go towards +y: a north-up raster (row 0
 // at the north) is passed with its rows in reverse order.
-struct HeightField {
+struct RegularHeightField {
   int columns = 0;
   int rows = 0;
   double spacing_x = 0.0;
@@ -37,6 +37,6 @@ struct HeightField {
 // square, so the mesh has valence 6 inside and the subdivision treats the grid the same everywhere.
 // Preconditions: columns >= 2, rows >= 2, spacings > 0, heights.size() == columns * rows, finite
 // heights (std::invalid_argument naming the field otherwise).
-TriangleMesh height_field_mesh(const HeightField& field);
+TriangleMesh height_field_mesh(const RegularHeightField& field);
 
 }  // namespace maquette::deform

@@ -19,8 +19,8 @@
 namespace maquette::deform {
 namespace {
 
-HeightField rolling_terrain(int columns, int rows, double spacing) {
-  HeightField field{columns, rows, spacing, spacing, {}};
+RegularHeightField rolling_terrain(int columns, int rows, double spacing) {
+  RegularHeightField field{columns, rows, spacing, spacing, {}};
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < columns; ++c) {
       const double x = c * spacing;
@@ -98,7 +98,7 @@ struct Feature {
 
 // A straight 1 km feature (a river, say) centred at `centre` (by default the region's middle),
 // triangles within `band` metres of it marked.
-Feature one_km_feature(const HeightField& field, double band,
+Feature one_km_feature(const RegularHeightField& field, double band,
                        std::optional<Eigen::Vector2d> centre = std::nullopt) {
   Feature feature{height_field_mesh(field), {}};
   const Eigen::Vector2d middle = centre.value_or(Eigen::Vector2d(

@@ -121,7 +121,7 @@ double largest_difference_to_openmesh(const TriangleMesh& base, int levels) {
 }
 
 TriangleMesh sample_height_field() {
-  HeightField field{7, 5, 30.0, 20.0, {}};
+  RegularHeightField field{7, 5, 30.0, 20.0, {}};
   for (int r = 0; r < field.rows; ++r) {
     for (int c = 0; c < field.columns; ++c) {
       field.heights.push_back(1200.0 + 35.0 * std::sin(0.9 * c) * std::cos(1.3 * r) + 4.0 * c * r);
@@ -221,7 +221,7 @@ TEST(LoopSubdivision, RefusesBadInput) {
         }
       },
       std::invalid_argument);
-  HeightField field{3, 2, 10.0, 10.0, {1.0, 2.0, 3.0, 4.0, std::nan(""), 6.0}};
+  RegularHeightField field{3, 2, 10.0, 10.0, {1.0, 2.0, 3.0, 4.0, std::nan(""), 6.0}};
   EXPECT_THROW(height_field_mesh(field), std::invalid_argument);
   field.heights.pop_back();
   EXPECT_THROW(height_field_mesh(field), std::invalid_argument);
