@@ -23,14 +23,18 @@ class GlbBuilder {
 
  private:
   int material(const GlbPrimitive& p);
+  int content_material_index(const Material& m);
+  // The index of `sampler` in the file, added on first use.
+  int sampler(const json& sampler);
   // A float accessor of its own bufferView (instance attributes).
   int floats(const std::vector<float>& values, int components, const char* type);
   void use(const std::string& extension);
 
   GlbBuffer buffer_;
   json meshes_ = json::array(), nodes_ = json::array(), materials_ = json::array(),
-       images_ = json::array(), textures_ = json::array();
+       images_ = json::array(), textures_ = json::array(), samplers_ = json::array();
   std::vector<std::string> extensions_;
+  std::map<const Material*, int> content_materials_;      // the index written for each
   std::map<const InstanceTransforms*, json> instancing_;  // the accessors written for each
 };
 
@@ -54,7 +58,25 @@ void GlbBuilder::use(const std::string& extension) {
     extensions_.push_back(extension);
 }
 
+int GlbBuilder::sampler(const json& sampler) {
+  auto it = std::ranges::find(samplers_, sampler);
+  if (it != samplers_.end()) return int(it - samplers_.begin());
+  samplers_.push_back(sampler);
+  return int(samplers_.size() - 1);
+}
+
+int GlbBuilder::content_material_index(const Material& m) {
+  auto [it, added] = content_materials_.emplace(&m, int(materials_.size()));
+  if (added) {
+    const int s = m.image.empty() ? 0 : sampler(content_sampler());
+    materials_.push_back(content_material(m, buffer_, images_, textures_, s));
+    if (m.image_mime == "image/webp") use("EXT_texture_webp");
+  }
+  return it->second;
+}
+
 int GlbBuilder::material(const GlbPrimitive& p) {
+  if (p.material) return content_material_index(*p.material);
   const EncodedImage* image = p.image;
   // Single-sided (glTF's default): a double-sided material lights back faces with the normal
   // reversed, and a terrain tile's own skirt, seen from behind along the tile's edge where it
@@ -63,7 +85,10 @@ int GlbBuilder::material(const GlbPrimitive& p) {
   if (image) {
     images_.push_back({{"bufferView", buffer_.view(image->bytes.data(), image->bytes.size())},
                        {"mimeType", image->mime_type}});
-    textures_.push_back({{"sampler", 0}, {"source", images_.size() - 1}});
+    // Clamped, not mipmapped: a terrain tile's texture ends at the tile's edge.
+    const int s =
+        sampler({{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}});
+    textures_.push_back({{"sampler", s}, {"source", images_.size() - 1}});
     m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", textures_.size() - 1}};
   } else {
     m["pbrMetallicRoughness"]["baseColorFactor"] = {p.color[0], p.color[1], p.color[2], 1.0};
@@ -153,10 +178,9 @@ std::vector<char> GlbBuilder::finish(const json& extras) {
   if (!images_.empty()) {
     gltf["images"] = images_;
     gltf["textures"] = textures_;
-    gltf["samplers"] = {
-        {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}}};
+    gltf["samplers"] = samplers_;
   }
-  if (!extensions_.empty()) {  // both extensions are required to draw the content correctly
+  if (!extensions_.empty()) {  // each is required to draw the content correctly
     gltf["extensionsUsed"] = extensions_;
     gltf["extensionsRequired"] = extensions_;
   }
@@ -170,6 +194,30 @@ void append_u32(std::vector<char>& out, uint32_t v) {
 }
 
 }  // namespace
+
+json content_material(const Material& m, GlbBuffer& buffer, json& images, json& textures,
+                      int sampler) {
+  json pbr = {{"baseColorFactor", m.base_colour},
+              {"metallicFactor", m.metallic},
+              {"roughnessFactor", m.roughness}};
+  if (!m.image.empty()) {
+    images.push_back(
+        {{"bufferView", buffer.view(m.image.data(), m.image.size())}, {"mimeType", m.image_mime}});
+    json texture = {{"sampler", sampler}};
+    if (m.image_mime == "image/webp")
+      texture["extensions"]["EXT_texture_webp"]["source"] = images.size() - 1;
+    else
+      texture["source"] = images.size() - 1;
+    textures.push_back(texture);
+    pbr["baseColorTexture"] = {{"index", textures.size() - 1}};
+  }
+  json out = {{"pbrMetallicRoughness", pbr}};
+  if (!m.name.empty()) out["name"] = m.name;
+  if (m.double_sided) out["doubleSided"] = true;
+  return out;
+}
+
+json content_sampler() { return {{"magFilter", 9729}, {"minFilter", 9987}}; }
 
 int GlbBuffer::view(const void* data, size_t size, int target, size_t alignment) {
   while (bin_.size() % alignment) bin_.push_back(0);

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "content/content.h"
 #include "gltf/draco_encode.h"
 #include "gltf/terrain_mesh.h"
 #include "gltf/texture_image.h"
@@ -29,7 +30,10 @@ struct GlbPrimitive {
   const DracoPrimitive* draco = nullptr;  // nullptr: plain vertex buffers
   const EncodedImage* image = nullptr;    // nullptr: untextured
   std::string name;
-  std::array<double, 3> color{0.6, 0.6, 0.6};     // without an image
+  std::array<double, 3> color{0.6, 0.6, 0.6};  // without an image
+  // A content material (its factors and image) instead of `image` and `color`; primitives given
+  // the same one share it, so its image is written once.
+  const Material* material = nullptr;
   const InstanceTransforms* instances = nullptr;  // primitives given the same one share it
 };
 
@@ -48,6 +52,15 @@ class GlbBuffer {
   std::vector<char> bin_;
   nlohmann::json views_ = nlohmann::json::array(), accessors_ = nlohmann::json::array();
 };
+
+// `m` as glTF's material: PBR metallic-roughness factors, name, doubleSided, and its image (if
+// any) appended to `images` in a bufferView of `buffer`, drawn through a texture appended to
+// `textures` with sampler `sampler`. A WebP image is the texture's source through
+// EXT_texture_webp (glTF's core has JPEG and PNG), which the caller declares.
+nlohmann::json content_material(const Material& m, GlbBuffer& buffer, nlohmann::json& images,
+                                nlohmann::json& textures, int sampler);
+// The sampler of content textures: linear, mipmapped, repeating (glTF's default wrap).
+nlohmann::json content_sampler();
 
 // The GLB bytes; `extras` goes to the asset's extras (e.g. the frame's origin).
 std::vector<char> make_glb(const std::vector<GlbPrimitive>& primitives,

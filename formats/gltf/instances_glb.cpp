@@ -18,7 +18,7 @@ void check_column(const std::vector<T>& column, size_t per, size_t count, const 
                 " instances (" + std::to_string(per) + " per instance)");
 }
 
-// An object's geometry in glTF's axes: (east, north, up) -> (east, up, -north).
+// An object's geometry in glTF's axes: (east, north, up) -> (east, up, -north); uvs as they are.
 TerrainMesh gltf_mesh(const MeshObject& o) {
   TerrainMesh m;
   for (size_t i = 0; i + 2 < o.positions.size(); i += 3)
@@ -26,6 +26,7 @@ TerrainMesh gltf_mesh(const MeshObject& o) {
                        {o.positions[i], o.positions[i + 2], -o.positions[i + 1]});
   for (size_t i = 0; i + 2 < o.normals.size(); i += 3)
     m.normals.insert(m.normals.end(), {o.normals[i], o.normals[i + 2], -o.normals[i + 1]});
+  m.texcoords = o.uvs;
   m.indices = o.indices;
   return m;
 }
@@ -78,14 +79,10 @@ std::vector<char> instances_glb(const InstancesContent& content,
     for (const MeshObject& o : model.objects) {
       const Material* material =
           o.material >= 0 ? &model.materials.at(size_t(o.material)) : nullptr;
-      if (material && !material->image.empty())
-        throw Error("instances content: prototype '" + name + "' is textured (material '" +
-                    material->name + "'), which instances do not support yet");
       GlbPrimitive prim;
       prim.mesh = &meshes.emplace_back(gltf_mesh(o));
       prim.name = name + (material ? " " + material->name : "");
-      if (material)
-        prim.color = {material->base_colour[0], material->base_colour[1], material->base_colour[2]};
+      prim.material = material;  // its image written once, whatever the objects drawing it
       prim.instances = &transforms.back();
       primitives.push_back(prim);
     }

@@ -1,9 +1,11 @@
 // One cell's instances (content.h: InstancesContent) as a GLB: each prototype's objects written
 // once, each drawn once per instance of that prototype in the cell (EXT_mesh_gpu_instancing,
 // in extensionsRequired: TRANSLATION, ROTATION, SCALE, and the instance's colour as `_COLOR_0`,
-// RGBA8 normalized, multiplying the object's material as glTF's COLOR_0 does). The objects of one
-// prototype share one set of instance accessors. Prototypes with no instance in the cell are left
-// out.
+// RGBA8 normalized, multiplying the object's material as glTF's COLOR_0 does, base-colour texture
+// included). The objects of one prototype share one set of instance accessors, and each of its
+// materials is written once with its base-colour image (JPEG, PNG, or WebP through
+// EXT_texture_webp, then required) and the content's sampler (gltf/glb_writer.h). Prototypes with
+// no instance in the cell are left out.
 //
 // The frame is the content's east-north-up frame with glTF's axes (x east, y up, z south), named
 // in the asset's extras as export_glb's frames are ({"origin": {"lon", "lat", "height"},
@@ -25,9 +27,10 @@
 namespace maquette {
 
 // `prototypes[i]` is the model of `content.prototypes[i]` (e.g. builtin_prototype(name)), in its
-// own frame (x east, y north, z up, base at the origin), untextured. Throws maquette::Error when
-// there is no instance (glTF has no empty scene), the columns' sizes disagree with the count, an
-// instance names a prototype index out of range, or a prototype is missing or textured.
+// own frame (x east, y north, z up, base at the origin), with its materials (checked as
+// gltf/mesh_glb.h's encoder checks them: e.g. decoded from a model layer). Throws
+// maquette::Error when there is no instance (glTF has no empty scene), the columns' sizes disagree
+// with the count, an instance names a prototype index out of range, or a prototype is missing.
 std::vector<char> instances_glb(const InstancesContent& content,
                                 const std::vector<const MeshContent*>& prototypes);
 

@@ -143,7 +143,7 @@ class PrimitiveWriter {
     const size_t n = d.num_points();
     json min = json::array(), max = json::array();
     bounds(d, ids["POSITION"].get<int>(), min, max);
-    json prim = {{"mode", 4}};
+    json prim;  // mode: triangles, glTF's default
     prim["attributes"]["POSITION"] = buffer_.accessor(
         {{"componentType", kFloat}, {"count", n}, {"type", "VEC3"}, {"min", min}, {"max", max}});
     if (g.normals)
@@ -223,29 +223,21 @@ void check_material(const Material& m, size_t i) {
     fault("an image of type '" + m.image_mime + "', not image/jpeg, image/png or image/webp");
 }
 
-// A WebP image is a texture's source through EXT_texture_webp (glTF's core has JPEG and PNG).
-json material_json(const Material& m, GlbBuffer& buffer, json& images, json& textures) {
-  json pbr = {{"baseColorFactor", m.base_colour},
-              {"metallicFactor", m.metallic},
-              {"roughnessFactor", m.roughness}};
-  if (!m.image.empty()) {
-    images.push_back(
-        {{"bufferView", buffer.view(m.image.data(), m.image.size())}, {"mimeType", m.image_mime}});
-    json texture = {{"sampler", 0}};
-    if (m.image_mime == "image/webp")
-      texture["extensions"]["EXT_texture_webp"]["source"] = images.size() - 1;
-    else
-      texture["source"] = images.size() - 1;
-    textures.push_back(texture);
-    pbr["baseColorTexture"] = {{"index", textures.size() - 1}};
-  }
-  json out = {{"pbrMetallicRoughness", pbr}};
-  if (!m.name.empty()) out["name"] = m.name;
-  if (m.double_sided) out["doubleSided"] = true;
-  return out;
+// A column of unsigned integers in the fewest bytes holding `largest` (UINT8, UINT16, UINT32),
+// and the type's name.
+std::pair<int, std::string> unsigned_column(const std::vector<uint32_t>& values, uint32_t largest,
+                                            GlbBuffer& buffer) {
+  const auto narrow = [&]<class T>(T) {
+    const std::vector<T> v(values.begin(), values.end());
+    return buffer.view(v.data(), v.size() * sizeof(T));
+  };
+  if (largest <= UINT8_MAX) return {narrow(uint8_t()), "UINT8"};
+  if (largest <= UINT16_MAX) return {narrow(uint16_t()), "UINT16"};
+  return {buffer.view(values.data(), values.size() * 4), "UINT32"};
 }
 
-// A STRING column: the strings' bytes and their offsets (UINT32, one more than strings).
+// A STRING column: the strings' bytes and their offsets (one more than strings) in the fewest
+// bytes, UINT32 (the extension's default, then not written) only past 64 KiB of strings.
 json string_column(const std::vector<std::string>& strings, GlbBuffer& buffer) {
   std::string bytes;
   std::vector<uint32_t> offsets = {0};
@@ -255,11 +247,15 @@ json string_column(const std::vector<std::string>& strings, GlbBuffer& buffer) {
       throw Error("mesh content: its metadata strings exceed 4 GiB");
     offsets.push_back(uint32_t(bytes.size()));
   }
-  return {{"values", buffer.view(bytes.data(), bytes.size())},
-          {"stringOffsets", buffer.view(offsets.data(), offsets.size() * 4)},
-          {"stringOffsetType", "UINT32"}};
+  const auto [view, type] = unsigned_column(offsets, offsets.back(), buffer);
+  json out = {{"values", buffer.view(bytes.data(), bytes.size())}, {"stringOffsets", view}};
+  if (type != "UINT32") out["stringOffsetType"] = type;
+  return out;
 }
 
+// Lean on purpose (each cell's GLB carries it): defaults and descriptions left out, a short
+// schema id (benchmarks/README.md, "3D content"). The schema is the same for every content, as
+// gltf/glb_merge.h requires of the GLBs it merges.
 json metadata(const MeshContent& c, GlbBuffer& buffer) {
   std::vector<uint64_t> object_ids;
   std::vector<int64_t> feature_ids;
@@ -270,18 +266,6 @@ json metadata(const MeshContent& c, GlbBuffer& buffer) {
     tools.push_back(o.provenance.tool);
     attributes.push_back(o.provenance.attributes.dump());  // keys sorted: the same bytes
   }
-  const json schema = {
-      {"id", "maquette_content"},
-      {"classes",
-       {{"object",
-         {{"properties",
-           {{"object_id", {{"type", "SCALAR"}, {"componentType", "UINT64"}, {"required", true}}},
-            {"feature_id", {{"type", "SCALAR"}, {"componentType", "INT64"}, {"noData", -1}}},
-            {"tool", {{"type", "STRING"}, {"required", true}}},
-            {"attributes",
-             {{"type", "STRING"},
-              {"required", true},
-              {"description", "the object's attributes, a JSON object"}}}}}}}}}};
   const json table = {
       {"class", "object"},
       {"count", c.objects.size()},
@@ -290,6 +274,15 @@ json metadata(const MeshContent& c, GlbBuffer& buffer) {
         {"feature_id", {{"values", buffer.view(feature_ids.data(), feature_ids.size() * 8, 0, 8)}}},
         {"tool", string_column(tools, buffer)},
         {"attributes", string_column(attributes, buffer)}}}};
+  const json schema = {
+      {"id", "mq"},
+      {"classes",
+       {{"object",
+         {{"properties",
+           {{"object_id", {{"type", "SCALAR"}, {"componentType", "UINT64"}}},
+            {"feature_id", {{"type", "SCALAR"}, {"componentType", "INT64"}, {"noData", -1}}},
+            {"tool", {{"type", "STRING"}}},
+            {"attributes", {{"type", "STRING"}}}}}}}}}};
   return {{"schema", schema}, {"propertyTables", {table}}};
 }
 
@@ -307,12 +300,28 @@ std::vector<T> fixed_column(const GltfDocument& doc, const json& property, size_
   return out;
 }
 
+// A column of UINT8, UINT16 or UINT32 values (`type`) widened.
+std::vector<uint32_t> unsigned_values(const GltfDocument& doc, const json& values, size_t count,
+                                      const std::string& type, const std::string& name) {
+  const json property = {{"values", values}};
+  const auto widen = [&]<class T>(T) {
+    const std::vector<T> v = fixed_column<T>(doc, property, count, name);
+    return std::vector<uint32_t>(v.begin(), v.end());
+  };
+  if (type == "UINT8") return widen(uint8_t());
+  if (type == "UINT16") return widen(uint16_t());
+  if (type == "UINT32") return widen(uint32_t());
+  throw Error(doc.where + ": metadata column " + name + " has type '" + type +
+              "', not UINT8, UINT16 or UINT32");
+}
+
 std::vector<std::string> string_values(const GltfDocument& doc, const json& property, size_t count,
                                        const std::string& name) {
   const std::string_view bytes =
       buffer_view(doc, gltf_index(doc, property.value("values", json()), name + ".values"));
-  const std::vector<uint32_t> offsets = fixed_column<uint32_t>(
-      doc, {{"values", property.value("stringOffsets", json())}}, count + 1, name + " offsets");
+  const std::vector<uint32_t> offsets =
+      unsigned_values(doc, property.value("stringOffsets", json()), count + 1,
+                      property.value("stringOffsetType", "UINT32"), name + " offsets");
   std::vector<std::string> out;
   for (size_t i = 0; i < count; ++i) {
     if (offsets[i] > offsets[i + 1] || offsets[i + 1] > bytes.size())
@@ -397,7 +406,7 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
   bool webp = false;
   for (size_t i = 0; i < content.materials.size(); ++i) {
     check_material(content.materials[i], i);
-    materials.push_back(material_json(content.materials[i], buffer, images, textures));
+    materials.push_back(content_material(content.materials[i], buffer, images, textures, 0));
     webp |= content.materials[i].image_mime == "image/webp";
   }
   PrimitiveWriter writer(content, settings, buffer);
@@ -419,7 +428,7 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
   if (!images.empty()) {
     gltf["images"] = images;
     gltf["textures"] = textures;
-    gltf["samplers"] = {{{"magFilter", 9729}, {"minFilter", 9987}}};  // linear, mipmapped; repeat
+    gltf["samplers"] = {content_sampler()};
   }
   gltf["extensions"]["EXT_structural_metadata"] = metadata(content, buffer);
   const std::vector<char> glb = buffer.finish(std::move(gltf));

@@ -11,7 +11,8 @@
 //   material get glTF's default one;
 // - per-object provenance: each vertex's _FEATURE_ID_0 (EXT_mesh_features) is its object's row
 //   in the GLB's one property table (EXT_structural_metadata, class "object": object_id UINT64,
-//   feature_id INT64 (no data: -1), tool STRING, attributes STRING holding the JSON object).
+//   feature_id INT64 (no data: -1), tool STRING, attributes STRING holding the JSON object;
+//   string offsets UINT8, UINT16 or UINT32, the fewest bytes holding them).
 // The same content gives the same bytes.
 #pragma once
 

@@ -169,17 +169,24 @@ TEST(MeshGlb, PropertyTableFollowsExtStructuralMetadata) {
   EXPECT_EQ(fid_offset % 8, 0u);
   ASSERT_EQ(ids.size(), 8 * c.objects.size());
   ASSERT_EQ(fids.size(), 8 * c.objects.size());
+  // Unsigned integers of `type` (UINT8, UINT16, UINT32: the fewest bytes holding them).
+  const auto integers = [&](const json& index, const std::string& type, size_t count) {
+    const size_t size = type == "UINT8" ? 1 : type == "UINT16" ? 2 : 4;
+    const std::string bytes = view(index).second;
+    EXPECT_EQ(bytes.size(), size * count);
+    std::vector<uint32_t> out(count, 0);
+    for (size_t i = 0; i < count && bytes.size() == size * count; ++i)
+      std::memcpy(&out[i], bytes.data() + size * i, size);  // little-endian
+    return out;
+  };
+  // 4 objects' short strings: offsets of one byte.
   const auto strings = [&](const char* name) {
-    EXPECT_EQ(properties[name]["stringOffsetType"], "UINT32");
+    EXPECT_EQ(properties[name]["stringOffsetType"], "UINT8");
     const std::string values = view(properties[name]["values"]).second;
-    const std::string offsets = view(properties[name]["stringOffsets"]).second;
-    EXPECT_EQ(offsets.size(), 4 * (c.objects.size() + 1));
+    const auto offsets = integers(properties[name]["stringOffsets"], "UINT8", c.objects.size() + 1);
     std::vector<std::string> out;
-    for (size_t i = 0; i < c.objects.size(); ++i) {
-      uint32_t at[2];
-      std::memcpy(at, offsets.data() + 4 * i, 8);
-      out.push_back(values.substr(at[0], at[1] - at[0]));
-    }
+    for (size_t i = 0; i < c.objects.size(); ++i)
+      out.push_back(values.substr(offsets[i], offsets[i + 1] - offsets[i]));
     return out;
   };
   const auto tools = strings("tool"), attributes = strings("attributes");

@@ -122,7 +122,8 @@ std::array<double, 3> Glb::place(int node, const std::array<double, 3>& p) const
 std::vector<float> Glb::floats(int accessor) const {
   const auto& a = json["accessors"][accessor];
   const auto& view = json["bufferViews"][a["bufferView"].get<int>()];
-  const std::map<std::string, size_t> components = {{"SCALAR", 1}, {"VEC3", 3}, {"VEC4", 4}};
+  const std::map<std::string, size_t> components = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}};
   std::vector<float> v(a["count"].get<size_t>() * components.at(a["type"]));
   EXPECT_EQ(v.size() * 4, view["byteLength"].get<size_t>());
   std::memcpy(v.data(), bin.data() + view["byteOffset"].get<size_t>(), v.size() * 4);
