@@ -16,7 +16,9 @@
 # it runs on the cells where ours took 16, and its files must equal the library run's.
 # Each side runs once untimed (warm caches), then RUNS (3) times alternately; medians of wall and
 # CPU (user + sys) seconds; GLB bytes by part (Draco streams, images, JSON chunk, the rest of the
-# binary chunk: our EXT_structural_metadata property table).
+# binary chunk: our EXT_structural_metadata property table), and our per-object metadata alone
+# (its JSON and property table: gltf-transform drops extensions it does not know, so it is
+# compared without it, and the metadata's bytes are shown apart).
 # Usage: benchmarks/content/compare_gltf_transform.sh [BUILD_DIR]
 set -eu
 BUILD=$(cd "${1:-build}" && pwd)
@@ -80,8 +82,25 @@ def parts(path):
     draco = b"".join(view(p["extensions"]["KHR_draco_mesh_compression"]["bufferView"])
                      for mesh in j["meshes"] for p in mesh["primitives"])
     image = sum(views[i["bufferView"]]["byteLength"] for i in j.get("images", []))
+    # The per-object metadata (ours only: gltf-transform drops extensions it does not know):
+    # its JSON (the compact dump with and without it) and its property table's bufferViews.
+    stripped = json.loads(json.dumps(j))
+    ext = stripped.get("extensions", {}).pop("EXT_structural_metadata", None)
+    for mesh in stripped["meshes"]:
+        for p in mesh["primitives"]:
+            p.get("extensions", {}).pop("EXT_mesh_features", None)
+    stripped["extensionsUsed"] = [e for e in stripped.get("extensionsUsed", [])
+                                  if e not in ("EXT_structural_metadata", "EXT_mesh_features")]
+    meta_views = [v for t in (ext or {}).get("propertyTables", [])
+                  for c in t["properties"].values() for k, v in c.items()
+                  if k in ("values", "stringOffsets")]
+    dump = lambda x: len(json.dumps(x, separators=(",", ":")))
+    # (the JSON of the table's bufferViews too, each with its comma)
+    meta = dump(j) - dump(stripped) + sum(views[i]["byteLength"] + dump(views[i]) + 1
+                                          for i in meta_views)
     return {"GLB": len(b), "Draco": len(draco), "images": image, "JSON": n,
-            "rest": len(b) - 20 - n - len(draco) - image}, draco
+            "rest": len(b) - 20 - n - len(draco) - image, "metadata": meta,
+            "GLB-metadata": len(b) - meta}, draco
 
 d = os.path.join(tmp, "run")
 manifest = json.load(open(os.path.join(d, "cells.json")))
@@ -134,6 +153,7 @@ for side, label in (("ours", "ours"), ("peer", "peer")):
 print(f"{'per object':<10}" + "".join(f"{v / n:12.1f}" for v in total["ours"].values()) + "  (ours)")
 print(f"ratios ours/peer: cpu {oc / pc:.2f}x (peer with reading {oc / (pc + rc):.2f}x), "
       f"wall {ow / pw:.2f}x; GLB bytes {total['ours']['GLB'] / total['peer']['GLB']:.3f}x, "
+      f"without the metadata {total['ours']['GLB-metadata'] / total['peer']['GLB']:.3f}x, "
       f"Draco streams {total['ours']['Draco'] / total['peer']['Draco']:.3f}x "
       f"(equal length in {same_size} of {len(cells)} cells)")
 if cli_cells:

@@ -197,9 +197,10 @@ void append_u32(std::vector<char>& out, uint32_t v) {
 
 json content_material(const Material& m, GlbBuffer& buffer, json& images, json& textures,
                       int sampler) {
-  json pbr = {{"baseColorFactor", m.base_colour},
-              {"metallicFactor", m.metallic},
-              {"roughnessFactor", m.roughness}};
+  json pbr = json::object();  // glTF's defaults (1) left out: every cell's GLB repeats them
+  if (m.base_colour != std::array<float, 4>{1, 1, 1, 1}) pbr["baseColorFactor"] = m.base_colour;
+  if (m.metallic != 1) pbr["metallicFactor"] = m.metallic;
+  if (m.roughness != 1) pbr["roughnessFactor"] = m.roughness;
   if (!m.image.empty()) {
     images.push_back(
         {{"bufferView", buffer.view(m.image.data(), m.image.size())}, {"mimeType", m.image_mime}});

@@ -53,7 +53,8 @@ class GlbBuffer {
   nlohmann::json views_ = nlohmann::json::array(), accessors_ = nlohmann::json::array();
 };
 
-// `m` as glTF's material: PBR metallic-roughness factors, name, doubleSided, and its image (if
+// `m` as glTF's material: PBR metallic-roughness factors (those other than glTF's default, 1),
+// name, doubleSided, and its image (if
 // any) appended to `images` in a bufferView of `buffer`, drawn through a texture appended to
 // `textures` with sampler `sampler`. A WebP image is the texture's source through
 // EXT_texture_webp (glTF's core has JPEG and PNG), which the caller declares.
