@@ -6,8 +6,9 @@
 // Writes OUT_DIR/plain/CELL.glb: the cell's objects as one primitive (they share the building
 // material), glTF axes as mesh_glb's, plain float32 POSITION, NORMAL and TEXCOORD_0, uint16
 // _FEATURE_ID_0 (the object's row) and uint32 indices, the JPEG embedded: what mesh_glb's Draco
-// stream holds, without its property table (which gltf-transform would drop as an unknown
-// extension). OUT_DIR/ours/CELL.glb: encode_mesh_glb of the same content (1 mm positions).
+// stream holds, with the same per-object metadata (mesh_metadata's property table, which
+// gltf-transform keeps). OUT_DIR/ours/CELL.glb: encode_mesh_glb of the same content (1 mm
+// positions).
 // OUT_DIR/cells.json: per cell, the Draco position bits mesh_glb chose (for the peer to use the
 // same); and the totals and our times (encode + write, excluding making the content): wall and
 // CPU seconds of this process. Files are written unsynced, as the peer writes them.
@@ -99,6 +100,7 @@ std::vector<char> plain_glb(const MeshContent& c, const Vertices& v) {
   };
   const Bounds b = bounds(v.positions);
   json prim = {{"mode", 4}, {"material", 0}};
+  prim["extensions"]["EXT_mesh_features"] = mesh_feature_ids(c.objects.size());
   prim["attributes"]["POSITION"] = buffer.accessor(
       {{"bufferView", buffer.view(v.positions.data(), v.positions.size() * 4, kArrayBuffer)},
        {"componentType", kFloat},
@@ -130,7 +132,9 @@ std::vector<char> plain_glb(const MeshContent& c, const Vertices& v) {
                     {"baseColorTexture", {{"index", 0}}}}}}}},
                {"images", {{{"bufferView", image}, {"mimeType", m.image_mime}}}},
                {"textures", {{{"sampler", 0}, {"source", 0}}}},
-               {"samplers", {{{"magFilter", 9729}, {"minFilter", 9987}}}}};
+               {"samplers", {{{"magFilter", 9729}, {"minFilter", 9987}}}},
+               {"extensionsUsed", {"EXT_mesh_features", "EXT_structural_metadata"}}};
+  gltf["extensions"]["EXT_structural_metadata"] = mesh_metadata(c, buffer);
   return buffer.finish(std::move(gltf));
 }
 

@@ -161,8 +161,7 @@ class PrimitiveWriter {
     if (g.material >= 0) prim["material"] = g.material;
     prim["extensions"]["KHR_draco_mesh_compression"] = {
         {"bufferView", buffer_.view(stream.data(), stream.size())}, {"attributes", ids}};
-    prim["extensions"]["EXT_mesh_features"]["featureIds"] = {
-        {{"featureCount", g.objects.size()}, {"attribute", 0}, {"propertyTable", 0}}};
+    prim["extensions"]["EXT_mesh_features"] = mesh_feature_ids(g.objects.size());
     return prim;
   }
 
@@ -256,7 +255,9 @@ json string_column(const std::vector<std::string>& strings, GlbBuffer& buffer) {
 // Lean on purpose (each cell's GLB carries it): defaults and descriptions left out, a short
 // schema id (benchmarks/README.md, "3D content"). The schema is the same for every content, as
 // gltf/glb_merge.h requires of the GLBs it merges.
-json metadata(const MeshContent& c, GlbBuffer& buffer) {
+}  // namespace
+
+json mesh_metadata(const MeshContent& c, GlbBuffer& buffer) {
   std::vector<uint64_t> object_ids;
   std::vector<int64_t> feature_ids;
   std::vector<std::string> tools, attributes;
@@ -285,6 +286,12 @@ json metadata(const MeshContent& c, GlbBuffer& buffer) {
             {"attributes", {{"type", "STRING"}}}}}}}}}};
   return {{"schema", schema}, {"propertyTables", {table}}};
 }
+
+json mesh_feature_ids(size_t count) {
+  return {{"featureIds", {{{"featureCount", count}, {"attribute", 0}, {"propertyTable", 0}}}}};
+}
+
+namespace {
 
 // Decoding: the property table's columns.
 template <class T>
@@ -430,7 +437,7 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
     gltf["textures"] = textures;
     gltf["samplers"] = {content_sampler()};
   }
-  gltf["extensions"]["EXT_structural_metadata"] = metadata(content, buffer);
+  gltf["extensions"]["EXT_structural_metadata"] = mesh_metadata(content, buffer);
   const std::vector<char> glb = buffer.finish(std::move(gltf));
   return std::string(glb.begin(), glb.end());
 }

@@ -35,6 +35,17 @@ struct MeshGlbSettings {
 // fault: a factor outside 0..1, an image neither JPEG, PNG nor WebP.
 std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& settings = {});
 
+class GlbBuffer;  // gltf/glb_writer.h
+
+// The GLB's EXT_structural_metadata object (schema and property table, its columns appended to
+// `buffer`) as encode_mesh_glb writes it, for GLBs of the same content written otherwise
+// (benchmarks/content's plain GLBs given to gltf-transform). Each primitive then declares its
+// `_FEATURE_ID_0` with mesh_feature_ids.
+nlohmann::json mesh_metadata(const MeshContent& content, GlbBuffer& buffer);
+// A primitive's EXT_mesh_features object: `_FEATURE_ID_0` holds rows of property table 0,
+// `count` of them drawn by the primitive.
+nlohmann::json mesh_feature_ids(size_t count);
+
 // `content` as the store's blob of a mesh or model layer: the envelope (content/content_blob.h:
 // kind mesh, the content's origin, objects and triangles counted) around encode_mesh_glb's GLB
 // at the default settings. Throws as encode_mesh_glb and wrap_content do.
