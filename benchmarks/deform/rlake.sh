@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# GRASS r.lake's lake for a DEM GeoTIFF in a projected CRS (metres): the water depth of the cells
+# below LEVEL connected to the seed (X, Y in the DEM's CRS), run in a temporary GRASS location as
+# a separate process (GRASS is GPL: a test oracle only, never linked). Writes OUT (Float64
+# GeoTIFF, depth in metres, nodata where dry) and prints "r.lake seconds WALL cpu USER SYS" for
+# r.lake alone (not the import and export).
+# Usage: rlake.sh DEM OUT LEVEL X Y
+set -euo pipefail
+dem=$(realpath "$1")
+out=$(realpath -m "$2")
+level=$3 x=$4 y=$5
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/job.sh" <<JOB
+set -e
+r.in.gdal --quiet input="$dem" output=dem
+g.region raster=dem
+TIMEFORMAT='r.lake seconds %R cpu %U %S'
+time r.lake --quiet elevation=dem water_level=$level lake=lake coordinates=$x,$y
+r.out.gdal --quiet -f input=lake output="$out" format=GTiff type=Float64
+JOB
+rm -f "$out"
+# grass --exec does not pass the job's exit status on: the output tells whether it ran.
+HOME=$tmp grass --tmp-location "$dem" --exec bash "$tmp/job.sh" 2>"$tmp/stderr" | grep seconds ||
+  grep seconds "$tmp/stderr"
+[ -f "$out" ] || { cat "$tmp/stderr" >&2; exit 1; }

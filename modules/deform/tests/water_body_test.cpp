@@ -1,0 +1,210 @@
+// fill_basin and water_level (water_body.h) against an analytic paraboloid basin and against
+// GRASS r.lake (benchmarks/deform/rlake.sh, a separate process) on the same DEM: identical wet
+// mask, the volume equal to the discrete sum of r.lake's depths, and a leak where r.lake's lake
+// leaves the stroke.
+#include "../water_body.h"
+
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace maquette::deform {
+namespace {
+
+// A raster of `width` x `height` pixels of `pixel_m` metres with its stroke's mask.
+struct Basin {
+  int width = 0, height = 0;
+  double pixel_m = 1;
+  std::vector<float> terrain;
+  std::vector<uint8_t> inside;
+  BasinRaster raster() const { return {width, height, terrain, inside, pixel_m * pixel_m}; }
+};
+
+// The paraboloid z = (x^2 + y^2) / 1000 (metres, centred) inside a disk of radius 450 m.
+Basin paraboloid() {
+  Basin b{1000, 1000, 1.0, {}, {}};
+  for (int r = 0; r < b.height; ++r)
+    for (int c = 0; c < b.width; ++c) {
+      const double x = c + 0.5 - 500, y = r + 0.5 - 500;
+      b.terrain.push_back(float((x * x + y * y) / 1000));
+      b.inside.push_back(x * x + y * y <= 450.0 * 450.0);
+    }
+  return b;
+}
+
+TEST(WaterBody, ParaboloidVolumeWithinHalfAPercentOfTheClosedForm) {
+  const Basin b = paraboloid();
+  const double level = 100;  // the shore at radius sqrt(1000 * 100) = 316 m
+  const WaterBody body = fill_basin(b.raster(), level);
+  ASSERT_FALSE(body.leak);
+  // z = r^2 / a with a = 1000: V = pi a h^2 / 2, area pi a h.
+  const double a = 1000;
+  EXPECT_NEAR(body.volume_m3, std::numbers::pi * a * level * level / 2,
+              0.005 * std::numbers::pi * a * level * level / 2);
+  EXPECT_NEAR(body.area_m2, std::numbers::pi * a * level, 0.005 * std::numbers::pi * a * level);
+  double sum = 0;
+  for (size_t k = 0; k < body.wet.size(); ++k) {
+    sum += level - double(b.terrain[size_t(body.wet[k])]);
+    EXPECT_LT(b.terrain[size_t(body.wet[k])], level);
+  }
+  EXPECT_NEAR(body.volume_m3, sum, 1e-6 * sum);
+}
+
+TEST(WaterBody, SpillLevelIsTheLowestBoundaryHeight) {
+  const Basin b = paraboloid();
+  double lowest = INFINITY;
+  for (int r = 0; r < b.height; ++r)
+    for (int c = 0; c < b.width; ++c) {
+      const size_t i = size_t(r) * size_t(b.width) + size_t(c);
+      bool edge = false;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          edge = edge || !b.inside[size_t(r + dr) * size_t(b.width) + size_t(c + dc)];
+      if (b.inside[i] && edge) lowest = std::min(lowest, double(b.terrain[i]));
+    }
+  EXPECT_EQ(water_level(b.raster(), {}), lowest);
+  // The disk's rim, in its last ring of pixels (1.5 pixels wide on a diagonal).
+  EXPECT_GT(lowest, 448.5 * 448.5 / 1000);
+  EXPECT_LE(lowest, 450.0 * 450.0 / 1000);
+  EXPECT_GT(water_level(b.raster(), {WaterLevel::Rule::Percentile, 90}), lowest);
+  const WaterBody body = fill_basin(b.raster(), lowest);
+  EXPECT_FALSE(body.leak);
+  EXPECT_GT(body.area_m2, std::numbers::pi * 440 * 440);
+}
+
+TEST(WaterBody, LevelAboveTheRimLeaks) {
+  const Basin b = paraboloid();
+  const WaterBody body = fill_basin(b.raster(), 250);  // the rim is at 202.5 m
+  ASSERT_TRUE(body.leak);
+  EXPECT_FALSE(b.inside[size_t(*body.leak)]);
+  EXPECT_TRUE(body.wet.empty());
+  EXPECT_EQ(body.volume_m3, 0);
+}
+
+TEST(WaterBody, LevelFromAttributes) {
+  using R = WaterLevel::Rule;
+  EXPECT_EQ(WaterLevel::from_attributes({}, "f").rule, R::Spill);
+  EXPECT_EQ(WaterLevel::from_attributes({{"level", 12.5}}, "f").value, 12.5);
+  const WaterLevel p = WaterLevel::from_attributes({{"level_rule", "percentile:10"}}, "f");
+  EXPECT_EQ(p.rule, R::Percentile);
+  EXPECT_EQ(p.value, 10);
+  for (const auto& bad :
+       {nlohmann::json{{"level_rule", "percentile:110"}}, nlohmann::json{{"level_rule", "median"}},
+        nlohmann::json{{"level_rule", "percentile:5x"}}, nlohmann::json{{"level", "high"}}}) {
+    try {
+      WaterLevel::from_attributes(bad, "feature 7 (tool water)");
+      ADD_FAILURE() << "accepted " << bad.dump();
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("feature 7 (tool water): field 'level"),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find(bad.begin()->dump()), std::string::npos) << e.what();
+    }
+  }
+}
+
+// A 600 x 500 DEM of 30 m pixels in UTM zone 12: a bowl with hills and islands, the stroke an
+// ellipse. Written as a GeoTIFF for r.lake.
+constexpr double kX0 = 300000, kY0 = 4100000, kPixelM = 30;
+Basin hills() {
+  Basin b{600, 500, kPixelM, {}, {}};
+  for (int r = 0; r < b.height; ++r)
+    for (int c = 0; c < b.width; ++c) {
+      const double x = (c + 0.5) * kPixelM, y = (r + 0.5) * kPixelM;
+      const double u = (c - 300) / 250.0, v = (r - 250) / 200.0;
+      b.terrain.push_back(float(1000 + 60 * (u * u + v * v) +
+                                15 * std::sin(x / 300) * std::cos(y / 410) +
+                                8 * std::sin((x + 2 * y) / 170)));
+      b.inside.push_back(u * u + v * v <= 1);
+    }
+  return b;
+}
+
+void write_geotiff(const Basin& b, const std::string& path) {
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      path.c_str(), b.width, b.height, 1, GDT_Float32, nullptr));
+  double transform[6] = {kX0, kPixelM, 0, kY0, 0, -kPixelM};
+  ds->SetGeoTransform(transform);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(32612);
+  ds->SetSpatialRef(&srs);
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, b.width, b.height,
+                                           const_cast<float*>(b.terrain.data()), b.width, b.height,
+                                           GDT_Float32, 0, 0),
+            CE_None);
+}
+
+// r.lake's depths (NaN: dry) at `level` from the seed pixel.
+std::vector<double> rlake(const Basin& b, double level, int64_t seed) {
+  const std::string dir = testing::TempDir() + "/water_rlake";
+  std::filesystem::create_directories(dir);
+  write_geotiff(b, dir + "/dem.tif");
+  char x[64], y[64], l[64];
+  std::snprintf(x, sizeof x, "%.3f", kX0 + (double(seed % b.width) + 0.5) * kPixelM);
+  std::snprintf(y, sizeof y, "%.3f", kY0 - (double(seed / b.width) + 0.5) * kPixelM);
+  std::snprintf(l, sizeof l, "%.9g", level);
+  const std::string cmd = std::string(MAQUETTE_SOURCE_DIR) + "/benchmarks/deform/rlake.sh " + dir +
+                          "/dem.tif " + dir + "/lake.tif " + l + " " + x + " " + y;
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open((dir + "/lake.tif").c_str(), GDAL_OF_RASTER));
+  std::vector<double> depth(size_t(b.width) * size_t(b.height), NAN);
+  if (!ds) return depth;
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  EXPECT_EQ(band->RasterIO(GF_Read, 0, 0, b.width, b.height, depth.data(), b.width, b.height,
+                           GDT_Float64, 0, 0),
+            CE_None);
+  int has = 0;
+  const double nodata = band->GetNoDataValue(&has);
+  for (double& d : depth)
+    if (has && d == nodata) d = NAN;
+  return depth;
+}
+
+bool have_grass() { return std::system("command -v grass >/dev/null 2>&1") == 0; }
+
+TEST(WaterBody, SameLakeAsGrassRLake) {
+  if (!have_grass()) GTEST_SKIP() << "no GRASS (scripts/setup.sh installs grass-core)";
+  const Basin b = hills();
+  const double level = water_level(b.raster(), {});
+  const WaterBody body = fill_basin(b.raster(), level);
+  ASSERT_FALSE(body.leak);
+  ASSERT_GT(body.wet.size(), 10000u);
+  const std::vector<double> theirs = rlake(b, level, body.seed);
+  std::vector<uint8_t> ours(theirs.size(), 0);
+  for (const int64_t i : body.wet) ours[size_t(i)] = 1;
+  size_t differ = 0;
+  double sum = 0;
+  for (size_t i = 0; i < theirs.size(); ++i) {
+    const bool wet = !std::isnan(theirs[i]) && theirs[i] > 0;
+    differ += wet != bool(ours[i]);
+    if (wet) sum += theirs[i];
+  }
+  EXPECT_EQ(differ, 0u) << "of " << body.wet.size() << " wet pixels";
+  EXPECT_NEAR(body.volume_m3, sum * kPixelM * kPixelM, 1e-6 * sum * kPixelM * kPixelM);
+  for (size_t k = 0; k < body.wet.size(); ++k)
+    EXPECT_NEAR(body.depth[k], theirs[size_t(body.wet[k])], 1e-4);
+}
+
+TEST(WaterBody, LeakWhereGrassRLakeLeavesTheStroke) {
+  if (!have_grass()) GTEST_SKIP() << "no GRASS (scripts/setup.sh installs grass-core)";
+  const Basin b = hills();
+  const double level = water_level(b.raster(), {WaterLevel::Rule::Percentile, 50});
+  const WaterBody body = fill_basin(b.raster(), level);
+  ASSERT_TRUE(body.leak);
+  const std::vector<double> theirs = rlake(b, level, body.seed);
+  EXPECT_TRUE(theirs[size_t(*body.leak)] > 0);  // r.lake's water is there too, outside
+  EXPECT_FALSE(b.inside[size_t(*body.leak)]);
+}
+
+}  // namespace
+}  // namespace maquette::deform

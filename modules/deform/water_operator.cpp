@@ -1,0 +1,128 @@
+#include "water_operator.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/halo.h"
+#include "core/polygon_set.h"
+#include "water_body.h"
+
+namespace maquette::deform {
+namespace {
+
+OperatorSpec water_spec() {
+  OperatorSpec s;
+  s.name = "deform.water";
+  s.description =
+      "Bodies of water in closed strokes (tool 'water'): the lake below the spill level, a given "
+      "level or a boundary percentile, as a water-depth raster";
+  s.kind = OperatorKind::Region;
+  InputSpec dem;
+  dem.name = "dem";
+  dem.description = "terrain heights (m)";
+  s.inputs.push_back(dem);
+  InputSpec strokes;
+  strokes.name = "strokes";
+  strokes.description = "features layer: Polygon strokes with tool 'water'";
+  strokes.kind = LayerKind::Features;
+  s.inputs.push_back(strokes);
+  OutputSpec depth;
+  depth.name = "depth";
+  depth.description = "water depth (m): 0 on dry land, nodata where the DEM has none";
+  depth.units = "m";
+  s.outputs.push_back(depth);
+  s.params_schema = {
+      {"type", "object"}, {"properties", json::object()}, {"additionalProperties", false}};
+  return s;
+}
+
+std::string describe(const VectorFeature& f) {
+  return "feature " + std::to_string(f.id) + " (tool water)";
+}
+
+std::string lon_lat(LonLat p) {
+  std::ostringstream s;
+  s.precision(8);
+  s << "lon " << p.lon << ", lat " << p.lat;
+  return s.str();
+}
+
+// The pixels of `mosaic` whose centres lie in the stroke's polygon; the stroke must not reach
+// the mosaic's edge (its water could leave the region unseen).
+std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<LonLat>& centres,
+                                   int side) {
+  if (f.geometry.type != GeometryType::Polygon)
+    throw std::runtime_error(describe(f) + " is a " +
+                             std::string(geometry_type_name(f.geometry.type)) +
+                             ", not a Polygon around a basin");
+  PolygonRings rings;
+  for (const GeoPath& ring : f.geometry.polygons.front().rings) {
+    rings.emplace_back();
+    for (const GeoPoint& p : ring) rings.back().push_back({p.lon, p.lat});
+  }
+  const PolygonSet polygon({rings});
+  std::vector<uint8_t> inside(centres.size());
+  for (size_t i = 0; i < centres.size(); ++i) inside[i] = polygon.contains(centres[i]);
+  for (int k = 0; k < side; ++k)
+    for (const size_t i : {size_t(k), size_t(side - 1) * size_t(side) + size_t(k),
+                           size_t(k) * size_t(side), size_t(k) * size_t(side) + size_t(side - 1)})
+      if (inside[i])
+        throw std::runtime_error(describe(f) + " reaches the edge of the region's DEM at " +
+                                 lon_lat(centres[i]) + ": the region must hold the whole stroke");
+  return inside;
+}
+
+class Water : public RegionOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = water_spec();
+    return s;
+  }
+
+  void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
+    const Tile<float>& dem = input.layers.at("dem");
+    const int side = dem.size();
+    Tile<float>& depth = output.layers.at("depth");
+    for (int r = 0; r < side; ++r)
+      for (int c = 0; c < side; ++c) depth.at(c, r) = std::isnan(dem.at(c, r)) ? NAN : 0.0f;
+
+    const FeatureList& strokes = input.features.at("strokes");
+    std::vector<LonLat> centres;
+    std::vector<float> terrain;
+    for (const VectorFeature* f : strokes) {
+      const auto tool = f->attributes.find("tool");
+      if (tool == f->attributes.end() || *tool != "water") continue;
+      if (centres.empty()) {  // once, for the first water stroke
+        for (int r = 0; r < side; ++r)
+          for (int c = 0; c < side; ++c) {
+            centres.push_back(pixel_centre(
+                *ctx.grid, {input.face, input.origin_col + c, input.origin_row + r}, input.level));
+            terrain.push_back(dem.at(c, r));
+          }
+      }
+      const std::vector<uint8_t> inside = inside_pixels(*f, centres, side);
+      // rHEALPix pixels are equal-area: the face's area over its pixel count.
+      const BasinRaster basin{side, side, terrain, inside,
+                              ctx.grid->area(0) / std::ldexp(1.0, 2 * input.level)};
+      const std::string where = describe(*f);
+      const WaterBody body =
+          fill_basin(basin, water_level(basin, WaterLevel::from_attributes(f->attributes, where)));
+      if (body.leak)
+        throw std::runtime_error(where + ": at level " + std::to_string(body.level) +
+                                 " m the water leaks out of the stroke at " +
+                                 lon_lat(centres[size_t(*body.leak)]) +
+                                 ": lower the level or draw the stroke around the basin");
+      for (size_t k = 0; k < body.wet.size(); ++k) {
+        float& d = depth.at(int(body.wet[k] % side), int(body.wet[k] / side));
+        d = std::max(d, body.depth[k]);  // overlapping strokes: the deeper water
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_water() { return std::make_unique<Water>(); }
+
+}  // namespace maquette::deform
