@@ -48,6 +48,13 @@ std::string lon_lat(LonLat p) {
   return s.str();
 }
 
+std::string metres(double v) {
+  std::ostringstream s;
+  s.precision(9);
+  s << v << " m";
+  return s.str();
+}
+
 // The pixels of `mosaic` whose centres lie in the stroke's polygon; the stroke must not reach
 // the mosaic's edge (its water could leave the region unseen).
 std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<LonLat>& centres,
@@ -109,8 +116,8 @@ class Water : public RegionOperator {
       const WaterBody body =
           fill_basin(basin, water_level(basin, WaterLevel::from_attributes(f->attributes, where)));
       if (body.leak)
-        throw std::runtime_error(where + ": at level " + std::to_string(body.level) +
-                                 " m the water leaks out of the stroke at " +
+        throw std::runtime_error(where + ": at level " + metres(body.level) +
+                                 " the water leaks out of the stroke at " +
                                  lon_lat(centres[size_t(*body.leak)]) +
                                  ": lower the level or draw the stroke around the basin");
       for (size_t k = 0; k < body.wet.size(); ++k) {

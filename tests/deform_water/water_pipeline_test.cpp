@@ -1,0 +1,167 @@
+// deform.water through the real program, as a user runs it: a paraboloid basin z = r^2 / a
+// (r: metres from its centre in the local tangent plane, GeographicLib) written as a lon/lat
+// GeoTIFF and ingested as a DEM, a circular stroke (tool "water") ingested as features, the
+// pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
+// wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %; a level
+// above the rim fails naming the feature and the leak, writing nothing.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <ogr_spatialref.h>
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "core/grid.h"
+#include "run_cli.h"
+#include "store/store.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using test::CliResult;
+using test::run_maquette;
+
+constexpr double kLon = -112.0, kLat = 37.0;  // the basin's centre
+constexpr double kA = 22500;                  // z = 1000 + r^2 / kA: 100 m deep at 1500 m
+constexpr double kHalfDeg = 0.04;             // the DEM: +-0.04 degrees (~3.5 x 4.4 km)
+constexpr double kSourcePixelDeg = 1e-4;      // ~10 m
+constexpr int kLevel = 12, kTileSize = 64;    // pixels of ~35 m
+
+void write_dem(const std::string& path) {
+  const int n = int(std::lround(2 * kHalfDeg / kSourcePixelDeg));
+  const GeographicLib::LocalCartesian frame(kLat, kLon, 0);
+  std::vector<float> z;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      double x = 0, y = 0, h = 0;
+      frame.Forward(kLat + kHalfDeg - (r + 0.5) * kSourcePixelDeg,
+                    kLon - kHalfDeg + (c + 0.5) * kSourcePixelDeg, 0, x, y, h);
+      z.push_back(float(1000 + (x * x + y * y) / kA));
+    }
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      path.c_str(), n, n, 1, GDT_Float32, nullptr));
+  double transform[6] = {kLon - kHalfDeg, kSourcePixelDeg, 0, kLat + kHalfDeg, 0, -kSourcePixelDeg};
+  ds->SetGeoTransform(transform);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(4326);
+  ds->SetSpatialRef(&srs);
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, n, n, z.data(), n, n, GDT_Float32, 0, 0),
+            CE_None);
+}
+
+// A circle of `radius_m` around the basin's centre, tool "water", with `properties` added.
+json stroke(double radius_m, const json& properties) {
+  const GeographicLib::LocalCartesian frame(kLat, kLon, 0);
+  json ring = json::array();
+  for (int k = 0; k <= 72; ++k) {
+    const double t = 2 * std::numbers::pi * (k % 72) / 72;
+    double lat = 0, lon = 0, h = 0;
+    frame.Reverse(radius_m * std::cos(t), radius_m * std::sin(t), 0, lat, lon, h);
+    ring.push_back({lon, lat});
+  }
+  json props = {{"tool", "water"}};
+  props.update(properties);
+  return {{"type", "FeatureCollection"},
+          {"features",
+           {{{"type", "Feature"},
+             {"properties", props},
+             {"geometry", {{"type", "Polygon"}, {"coordinates", {ring}}}}}}}};
+}
+
+// A store with the basin's DEM and the stroke, and the pipeline running deform.water on it.
+struct Basin {
+  std::string dir = test::temp_dir();
+  std::string store = dir + "/basin.mqt";
+
+  explicit Basin(const json& strokes) {
+    write_dem(dir + "/dem.tif");
+    std::ofstream(dir + "/strokes.geojson") << strokes.dump();
+    const json pipeline = {
+        {"store", store},
+        {"region",
+         {{"bbox", {kLon - kHalfDeg, kLat - kHalfDeg, kLon + kHalfDeg, kLat + kHalfDeg}}}},
+        {"level", kLevel},
+        {"steps",
+         {{{"op", "deform.water"},
+           {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+           {"outputs", {{"depth", "water_depth"}}}}}}};
+    std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
+    for (const std::string& args :
+         {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
+              "ellipsoid --level " + std::to_string(kLevel) + " --tile-size " +
+              std::to_string(kTileSize),
+          "ingest " + store + " " + dir + "/strokes.geojson --layer strokes --as features"}) {
+      const CliResult r = run_maquette("-q " + args);
+      EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    }
+  }
+  CliResult run() const { return run_maquette("-q run " + dir + "/pipeline.json"); }
+};
+
+Tile<float> tile(const Store& st, const std::string& layer, CellId cell) {
+  const auto info = st.require_layer(layer);
+  const auto raw = st.get_tile(layer, cell);
+  return raw ? to_tile<float>(*raw, info.nodata ? &*info.nodata : nullptr)
+             : Tile<float>(kTileSize, 1, 0, NAN);
+}
+
+TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
+  const double level = 1100;  // the shore at r = 1500 m, the stroke at 2000 m
+  const Basin basin(stroke(2000, {{"level", level}}));
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+  const double pixel_area = default_grid().area(0) / std::ldexp(1.0, 2 * (kLevel + 6));
+  double volume = 0;
+  size_t wet = 0;
+  for (const CellId cell : st->tile_cells("dem")) {
+    const Tile<float> dem = tile(*st, "dem", cell), depth = tile(*st, "water_depth", cell);
+    for (int row = 0; row < kTileSize; ++row)
+      for (int col = 0; col < kTileSize; ++col) {
+        const float z = dem.at(col, row), d = depth.at(col, row);
+        ASSERT_EQ(std::isnan(d), std::isnan(z)) << cell.ToText();  // 0 on dry known terrain
+        if (std::isnan(z)) continue;
+        if (d > 0) {
+          ++wet;
+          volume += d;
+          EXPECT_NEAR(d, level - z, 1e-4);
+        } else {
+          EXPECT_EQ(d, 0);
+          EXPECT_GE(z, level);  // the basin has one lake: every pixel below the level is wet
+        }
+      }
+  }
+  volume *= pixel_area;
+  const double h = level - 1000, expected = std::numbers::pi * kA * h * h / 2;
+  EXPECT_GT(wet, 5000u);
+  EXPECT_NEAR(volume, expected, 0.005 * expected);
+}
+
+TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {
+  const Basin basin(stroke(2000, {{"level", 1250}}));  // the rim is at ~1178 m
+  const CliResult r = basin.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("feature 1 (tool water): at level 1250"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("leaks out of the stroke at lon -112."), std::string::npos) << r.err;
+  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+  EXPECT_FALSE(st->layer("water_depth") && !st->tile_cells("water_depth").empty());
+}
+
+TEST(DeformWater, BadLevelRuleNamesTheFieldAndValue) {
+  const Basin basin(stroke(2000, {{"level_rule", "percentile:x"}}));
+  const CliResult r = basin.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("feature 1 (tool water): field 'level_rule'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\"percentile:x\""), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace maquette
