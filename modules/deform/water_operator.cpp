@@ -1,5 +1,6 @@
 #include "water_operator.h"
 
+#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -7,6 +8,7 @@
 #include "core/halo.h"
 #include "core/polygon_set.h"
 #include "water_body.h"
+#include "water_mesh.h"
 
 namespace maquette::deform {
 namespace {
@@ -32,6 +34,11 @@ OperatorSpec water_spec() {
   depth.description = "water depth (m): 0 on dry land, nodata where the DEM has none";
   depth.units = "m";
   s.outputs.push_back(depth);
+  OutputSpec mesh;
+  mesh.name = "mesh";
+  mesh.description = "one closed mesh per lake: top at the level, walls, bottom on the terrain";
+  mesh.kind = LayerKind::Mesh;
+  s.outputs.push_back(mesh);
   s.params_schema = {
       {"type", "object"}, {"properties", json::object()}, {"additionalProperties", false}};
   return s;
@@ -80,6 +87,46 @@ std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<Lon
   return inside;
 }
 
+// The lake's closed mesh (water_mesh.h) in the content of the cell owning its first vertex, in
+// that content's east-north-up frame; its provenance carries the level, area and volume. Heights
+// are the DEM's, taken as heights above the ellipsoid.
+void add_mesh(const StepContext& ctx, const Mosaic& input, Mosaic& output, const VectorFeature& f,
+              const BasinRaster& basin, const WaterBody& body) {
+  const LakeMesh lake = lake_mesh(basin, body);
+  // Corner (col, row) of the mosaic in the grid's plane, from any of the step's cells.
+  const CellId cell = output.content.begin()->first;
+  const PlaneSquare square = ctx.grid->plane_square(cell);
+  const int64_t tile = int64_t(1) << (input.level - cell.level());
+  const double pixel = square.side / double(tile);
+  const double col0 = double(input.origin_col - int64_t(cell.col()) * tile);
+  const double row0 = double(input.origin_row - int64_t(cell.row()) * tile);
+  const auto corner_lon_lat = [&](const LakeVertex& v) {
+    return ctx.grid->inverse(
+        {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
+  };
+  const LonLat anchor = corner_lon_lat(lake.vertices.front());
+  const auto owner = output.content.find(ctx.grid->cell_from_point(anchor, cell.level()));
+  if (owner == output.content.end())
+    throw std::runtime_error(describe(f) + ": the lake's mesh is anchored at " + lon_lat(anchor) +
+                             ", outside the step's cells");
+  MeshContent& mesh = owner->second.mesh("mesh");
+  const GeographicLib::LocalCartesian frame(mesh.origin.lat, mesh.origin.lon, mesh.origin.height);
+  MeshObject object;
+  object.provenance = {
+      uint64_t(f.id),
+      f.id,
+      "deform.water",
+      {{"level", body.level}, {"area_m2", body.area_m2}, {"volume_m3", body.volume_m3}}};
+  for (const LakeVertex& v : lake.vertices) {
+    const LonLat p = corner_lon_lat(v);
+    double x = 0, y = 0, z = 0;
+    frame.Forward(p.lat, p.lon, v.height, x, y, z);
+    object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
+  }
+  object.indices = lake.indices;
+  mesh.objects.push_back(std::move(object));
+}
+
 class Water : public RegionOperator {
  public:
   const OperatorSpec& spec() const override {
@@ -90,9 +137,11 @@ class Water : public RegionOperator {
   void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
     const Tile<float>& dem = input.layers.at("dem");
     const int side = dem.size();
-    Tile<float>& depth = output.layers.at("depth");
-    for (int r = 0; r < side; ++r)
-      for (int c = 0; c < side; ++c) depth.at(c, r) = std::isnan(dem.at(c, r)) ? NAN : 0.0f;
+    const auto depth = output.layers.find("depth");  // when the step maps it
+    if (depth != output.layers.end())
+      for (int r = 0; r < side; ++r)
+        for (int c = 0; c < side; ++c)
+          depth->second.at(c, r) = std::isnan(dem.at(c, r)) ? NAN : 0.0f;
 
     const FeatureList& strokes = input.features.at("strokes");
     std::vector<LonLat> centres;
@@ -120,8 +169,11 @@ class Water : public RegionOperator {
                                  " the water leaks out of the stroke at " +
                                  lon_lat(centres[size_t(*body.leak)]) +
                                  ": lower the level or draw the stroke around the basin");
-      for (size_t k = 0; k < body.wet.size(); ++k) {
-        float& d = depth.at(int(body.wet[k] % side), int(body.wet[k] / side));
+      if (!body.wet.empty() && !output.content.empty() &&
+          output.content.begin()->second.wants("mesh"))
+        add_mesh(ctx, input, output, *f, basin, body);
+      for (size_t k = 0; depth != output.layers.end() && k < body.wet.size(); ++k) {
+        float& d = depth->second.at(int(body.wet[k] % side), int(body.wet[k] / side));
         d = std::max(d, body.depth[k]);  // overlapping strokes: the deeper water
       }
     }

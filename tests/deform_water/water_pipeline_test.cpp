@@ -2,7 +2,8 @@
 // (r: metres from its centre in the local tangent plane, GeographicLib) written as a lon/lat
 // GeoTIFF and ingested as a DEM, a circular stroke (tool "water") ingested as features, the
 // pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
-// wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %; a level
+// wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %, the
+// lake's mesh stored once; a level
 // above the rim fails naming the feature and the leak, writing nothing.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
@@ -91,7 +92,7 @@ struct Basin {
         {"steps",
          {{{"op", "deform.water"},
            {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", {{"depth", "water_depth"}}}}}}};
+           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
@@ -143,6 +144,11 @@ TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
   const double h = level - 1000, expected = std::numbers::pi * kA * h * h / 2;
   EXPECT_GT(wet, 5000u);
   EXPECT_NEAR(volume, expected, 0.005 * expected);
+  // One closed mesh (water_mesh_test.cpp checks its shape), stored once, in its owner cell.
+  const ContentLayerStats mesh = st->content_stats("water_mesh");
+  EXPECT_EQ(mesh.cells, 1u);
+  EXPECT_EQ(mesh.content.objects, 1u);
+  EXPECT_GT(mesh.content.triangles, 2 * wet);  // the bottom's two per pixel, walls and top
 }
 
 TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {

@@ -2,8 +2,6 @@
 // GRASS r.lake (benchmarks/deform/rlake.sh, a separate process) on the same DEM: identical wet
 // mask, the volume equal to the discrete sum of r.lake's depths, and a leak where r.lake's lake
 // leaves the stroke.
-#include "../water_body.h"
-
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -16,29 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "water_basins.h"
+
 namespace maquette::deform {
 namespace {
-
-// A raster of `width` x `height` pixels of `pixel_m` metres with its stroke's mask.
-struct Basin {
-  int width = 0, height = 0;
-  double pixel_m = 1;
-  std::vector<float> terrain;
-  std::vector<uint8_t> inside;
-  BasinRaster raster() const { return {width, height, terrain, inside, pixel_m * pixel_m}; }
-};
-
-// The paraboloid z = (x^2 + y^2) / 1000 (metres, centred) inside a disk of radius 450 m.
-Basin paraboloid() {
-  Basin b{1000, 1000, 1.0, {}, {}};
-  for (int r = 0; r < b.height; ++r)
-    for (int c = 0; c < b.width; ++c) {
-      const double x = c + 0.5 - 500, y = r + 0.5 - 500;
-      b.terrain.push_back(float((x * x + y * y) / 1000));
-      b.inside.push_back(x * x + y * y <= 450.0 * 450.0);
-    }
-  return b;
-}
 
 TEST(WaterBody, ParaboloidVolumeWithinHalfAPercentOfTheClosedForm) {
   const Basin b = paraboloid();
@@ -109,23 +88,6 @@ TEST(WaterBody, LevelFromAttributes) {
       EXPECT_NE(std::string(e.what()).find(bad.begin()->dump()), std::string::npos) << e.what();
     }
   }
-}
-
-// A 600 x 500 DEM of 30 m pixels in UTM zone 12: a bowl with hills and islands, the stroke an
-// ellipse. Written as a GeoTIFF for r.lake.
-constexpr double kX0 = 300000, kY0 = 4100000, kPixelM = 30;
-Basin hills() {
-  Basin b{600, 500, kPixelM, {}, {}};
-  for (int r = 0; r < b.height; ++r)
-    for (int c = 0; c < b.width; ++c) {
-      const double x = (c + 0.5) * kPixelM, y = (r + 0.5) * kPixelM;
-      const double u = (c - 300) / 250.0, v = (r - 250) / 200.0;
-      b.terrain.push_back(float(1000 + 60 * (u * u + v * v) +
-                                15 * std::sin(x / 300) * std::cos(y / 410) +
-                                8 * std::sin((x + 2 * y) / 170)));
-      b.inside.push_back(u * u + v * v <= 1);
-    }
-  return b;
 }
 
 void write_geotiff(const Basin& b, const std::string& path) {

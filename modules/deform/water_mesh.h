@@ -1,0 +1,34 @@
+// The closed triangle mesh of a lake (water_body.h) on its raster: the water's top surface at
+// the level, triangulated from the shoreline polygon (GEOS: the coverage union of the wet
+// pixels' squares, then its constrained Delaunay triangulation: no vertex inside the lake), walls
+// down from the shoreline to the terrain, and a bottom following the terrain, one quad per wet
+// pixel. Vertices are in pixel-corner coordinates (col, row: the raster's corner lattice, row
+// down; a top triangle whose shoreline edge spans several pixel sides is fanned from its centroid
+// so that the walls' vertices are all on it), each bottom corner at the mean terrain of the wet
+// pixels around it.
+//
+// Contract: a non-empty body of `basin` (fill_basin). The mesh is closed and consistently
+// oriented: each edge is in exactly two triangles, once in each direction; triangles are
+// counter-clockwise seen from outside in the right-handed frame (col, -row, height).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "water_body.h"
+
+namespace maquette::deform {
+
+struct LakeVertex {
+  double col = 0, row = 0;  // pixel-corner lattice: pixel (c, r) spans [c, c + 1] x [r, r + 1]
+  double height = 0;        // metres
+};
+
+struct LakeMesh {
+  std::vector<LakeVertex> vertices;
+  std::vector<uint32_t> indices;  // triangles
+};
+
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body);
+
+}  // namespace maquette::deform
