@@ -1,8 +1,14 @@
-// Basins shared by the deform.water tests: an analytic paraboloid and a bowl of hills.
+// Basins shared by the deform.water tests and benchmark: an analytic paraboloid and a bowl of
+// hills, which r.lake reads as a GeoTIFF.
 #pragma once
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "../water_body.h"
@@ -45,6 +51,23 @@ inline Basin hills(int width = 600, int height = 500) {
       b.inside.push_back(u * u + v * v <= 1);
     }
   return b;
+}
+
+// Writes `b` (a hills() basin) as a Float32 GeoTIFF at (kX0, kY0) in UTM zone 12; false when
+// GDAL fails.
+inline bool write_geotiff(const Basin& b, const std::string& path) {
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      path.c_str(), b.width, b.height, 1, GDT_Float32, nullptr));
+  if (!ds) return false;
+  double transform[6] = {kX0, b.pixel_m, 0, kY0, 0, -b.pixel_m};
+  ds->SetGeoTransform(transform);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(32612);
+  ds->SetSpatialRef(&srs);
+  return ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, b.width, b.height,
+                                        const_cast<float*>(b.terrain.data()), b.width, b.height,
+                                        GDT_Float32, 0, 0) == CE_None;
 }
 
 }  // namespace maquette::deform

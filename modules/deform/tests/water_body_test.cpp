@@ -4,7 +4,6 @@
 // leaves the stroke.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_spatialref.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -90,26 +89,11 @@ TEST(WaterBody, LevelFromAttributes) {
   }
 }
 
-void write_geotiff(const Basin& b, const std::string& path) {
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), b.width, b.height, 1, GDT_Float32, nullptr));
-  double transform[6] = {kX0, kPixelM, 0, kY0, 0, -kPixelM};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(32612);
-  ds->SetSpatialRef(&srs);
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, b.width, b.height,
-                                           const_cast<float*>(b.terrain.data()), b.width, b.height,
-                                           GDT_Float32, 0, 0),
-            CE_None);
-}
-
 // r.lake's depths (NaN: dry) at `level` from the seed pixel.
 std::vector<double> rlake(const Basin& b, double level, int64_t seed) {
   const std::string dir = testing::TempDir() + "/water_rlake";
   std::filesystem::create_directories(dir);
-  write_geotiff(b, dir + "/dem.tif");
+  EXPECT_TRUE(write_geotiff(b, dir + "/dem.tif"));
   char x[64], y[64], l[64];
   std::snprintf(x, sizeof x, "%.3f", kX0 + (double(seed % b.width) + 0.5) * kPixelM);
   std::snprintf(y, sizeof y, "%.3f", kY0 - (double(seed / b.width) + 0.5) * kPixelM);
