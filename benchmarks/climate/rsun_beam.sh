@@ -21,8 +21,4 @@ time r.sun --quiet elevation=dem slope=slope aspect=aspect linke_value=$linke da
   step=$step beam_rad=beam nprocs=$nprocs
 r.out.gdal --quiet -f input=beam output="$out" format=GTiff type=Float32
 JOB
-rm -f "$out"
-# grass --exec does not pass the job's exit status on: the output tells whether it ran.
-HOME=$tmp grass --tmp-location "$dem" --exec bash "$tmp/job.sh" 2>"$tmp/stderr" | grep seconds ||
-  grep seconds "$tmp/stderr"
-[ -f "$out" ] || { cat "$tmp/stderr" >&2; exit 1; }
+"$(dirname "$0")/../grass_job.sh" "$dem" "$tmp/job.sh" "$out"

@@ -19,8 +19,4 @@ TIMEFORMAT='r.lake seconds %R cpu %U %S'
 time r.lake --quiet elevation=dem water_level=$level lake=lake coordinates=$x,$y
 r.out.gdal --quiet -f input=lake output="$out" format=GTiff type=Float64
 JOB
-rm -f "$out"
-# grass --exec does not pass the job's exit status on: the output tells whether it ran.
-HOME=$tmp grass --tmp-location "$dem" --exec bash "$tmp/job.sh" 2>"$tmp/stderr" | grep seconds ||
-  grep seconds "$tmp/stderr"
-[ -f "$out" ] || { cat "$tmp/stderr" >&2; exit 1; }
+"$(dirname "$0")/../grass_job.sh" "$dem" "$tmp/job.sh" "$out"

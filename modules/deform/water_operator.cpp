@@ -18,7 +18,7 @@ OperatorSpec water_spec() {
   s.name = "deform.water";
   s.description =
       "Bodies of water in closed strokes (tool 'water'): the lake below the spill level, a given "
-      "level or a boundary percentile, as a water-depth raster";
+      "level or a boundary percentile, as a water-depth raster and closed meshes";
   s.kind = OperatorKind::Region;
   InputSpec dem;
   dem.name = "dem";
