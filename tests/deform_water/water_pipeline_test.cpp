@@ -3,8 +3,8 @@
 // GeoTIFF and ingested as a DEM, a circular stroke (tool "water") ingested as features, the
 // pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
 // wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %, the
-// lake's mesh stored once; a level
-// above the rim fails naming the feature and the leak, writing nothing.
+// lake's mesh stored once; a level above the rim fails naming the feature and the leak, writing
+// nothing; the same bits for 1 and 2 threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "core/grid.h"
 #include "run_cli.h"
@@ -103,7 +104,9 @@ struct Basin {
       EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
     }
   }
-  CliResult run() const { return run_maquette("-q run " + dir + "/pipeline.json"); }
+  CliResult run(const std::string& options = "") const {
+    return run_maquette("-q run " + options + " " + dir + "/pipeline.json");
+  }
 };
 
 Tile<float> tile(const Store& st, const std::string& layer, CellId cell) {
@@ -149,6 +152,22 @@ TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
   EXPECT_EQ(mesh.cells, 1u);
   EXPECT_EQ(mesh.content.objects, 1u);
   EXPECT_GT(mesh.content.triangles, 2 * wet);  // the bottom's two per pixel, walls and top
+}
+
+TEST(DeformWater, SameBitsForOneAndTwoThreads) {
+  const Basin one(stroke(2000, json::object())), two(stroke(2000, json::object()));  // spill
+  ASSERT_EQ(one.run("-t 1").exit_code, 0);
+  ASSERT_EQ(two.run("-t 2").exit_code, 0);
+  const auto a = Store::open(one.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(two.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = a->tile_cells("water_depth");
+  ASSERT_EQ(cells, b->tile_cells("water_depth"));
+  for (const CellId cell : cells)
+    EXPECT_EQ(a->get_tile("water_depth", cell)->bytes, b->get_tile("water_depth", cell)->bytes);
+  const std::vector<CellId> content = a->content_cells("water_mesh");
+  ASSERT_EQ(content.size(), 1u);
+  ASSERT_EQ(content, b->content_cells("water_mesh"));
+  EXPECT_EQ(a->get_content("water_mesh", content[0]), b->get_content("water_mesh", content[0]));
 }
 
 TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {
