@@ -9,16 +9,10 @@ set -euo pipefail
 dem=$(realpath "$1")
 out=$(realpath -m "$2")
 day=$3 step=$4 linke=$5 nprocs=${6:-1}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cat >"$tmp/job.sh" <<JOB
-set -e
-r.in.gdal --quiet input="$dem" output=dem
-g.region raster=dem
+"$(dirname "$0")/../grass_job.sh" "$dem" "$out" <<JOB
 r.slope.aspect --quiet elevation=dem slope=slope aspect=aspect
 TIMEFORMAT='r.sun seconds %R cpu %U %S'
 time r.sun --quiet elevation=dem slope=slope aspect=aspect linke_value=$linke day=$day \
   step=$step beam_rad=beam nprocs=$nprocs
 r.out.gdal --quiet -f input=beam output="$out" format=GTiff type=Float32
 JOB
-"$(dirname "$0")/../grass_job.sh" "$dem" "$tmp/job.sh" "$out"

@@ -9,14 +9,8 @@ set -euo pipefail
 dem=$(realpath "$1")
 out=$(realpath -m "$2")
 level=$3 x=$4 y=$5
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cat >"$tmp/job.sh" <<JOB
-set -e
-r.in.gdal --quiet input="$dem" output=dem
-g.region raster=dem
+"$(dirname "$0")/../grass_job.sh" "$dem" "$out" <<JOB
 TIMEFORMAT='r.lake seconds %R cpu %U %S'
 time r.lake --quiet elevation=dem water_level=$level lake=lake coordinates=$x,$y
 r.out.gdal --quiet -f input=lake output="$out" format=GTiff type=Float64
 JOB
-"$(dirname "$0")/../grass_job.sh" "$dem" "$tmp/job.sh" "$out"
