@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "core/halo.h"
-#include "core/polygon_set.h"
 #include "water_body.h"
 #include "water_mesh.h"
+#include "water_stroke.h"
 
 namespace maquette::deform {
 namespace {
@@ -44,10 +44,6 @@ OperatorSpec water_spec() {
   return s;
 }
 
-std::string describe(const VectorFeature& f) {
-  return "feature " + std::to_string(f.id) + " (tool water)";
-}
-
 std::string lon_lat(LonLat p) {
   std::ostringstream s;
   s.precision(8);
@@ -66,16 +62,7 @@ std::string metres(double v) {
 // the mosaic's edge (its water could leave the region unseen).
 std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<LonLat>& centres,
                                    int side) {
-  if (f.geometry.type != GeometryType::Polygon)
-    throw std::runtime_error(describe(f) + " is a " +
-                             std::string(geometry_type_name(f.geometry.type)) +
-                             ", not a Polygon around a basin");
-  PolygonRings rings;
-  for (const GeoPath& ring : f.geometry.polygons.front().rings) {
-    rings.emplace_back();
-    for (const GeoPoint& p : ring) rings.back().push_back({p.lon, p.lat});
-  }
-  const PolygonSet polygon({rings});
+  const PolygonSet polygon = stroke_polygon(f);
   std::vector<uint8_t> inside(centres.size());
   for (size_t i = 0; i < centres.size(); ++i) inside[i] = polygon.contains(centres[i]);
   for (int k = 0; k < side; ++k)
@@ -147,8 +134,7 @@ class Water : public RegionOperator {
     std::vector<LonLat> centres;
     std::vector<float> terrain;
     for (const VectorFeature* f : strokes) {
-      const auto tool = f->attributes.find("tool");
-      if (tool == f->attributes.end() || *tool != "water") continue;
+      if (!is_water_stroke(*f)) continue;
       if (centres.empty()) {  // once, for the first water stroke
         for (int r = 0; r < side; ++r)
           for (int c = 0; c < side; ++c) {

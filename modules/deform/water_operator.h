@@ -1,5 +1,7 @@
 // deform.water: the bodies of water of closed strokes (tool "water"), a region operator (a lake
-// spans cells). See README-water.md.
+// spans cells); deform.water_bodies: each body's level, area and volume from deform.water's
+// depth, as an artifact (a reduce operator: region operators have no artifact output). See
+// README-water.md.
 #pragma once
 
 #include <memory>
@@ -9,5 +11,6 @@
 namespace maquette::deform {
 
 std::unique_ptr<Operator> make_water();
+std::unique_ptr<Operator> make_water_bodies();
 
 }  // namespace maquette::deform

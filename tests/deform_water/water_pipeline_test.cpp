@@ -3,8 +3,8 @@
 // GeoTIFF and ingested as a DEM, a circular stroke (tool "water") ingested as features, the
 // pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
 // wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %, the
-// lake's mesh stored once; a level above the rim fails naming the feature and the leak, writing
-// nothing; the same bits for 1 and 2 threads.
+// lake's mesh stored once, the bodies' artifact agreeing; a level above the rim fails naming the
+// feature and the leak, writing nothing; the same bits for 1 and 2 threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -93,7 +93,10 @@ struct Basin {
         {"steps",
          {{{"op", "deform.water"},
            {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}}}}};
+           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}},
+          {{"op", "deform.water_bodies"},
+           {"inputs", {{"dem", "dem"}, {"depth", "water_depth"}, {"strokes", "strokes"}}},
+           {"outputs", {{"bodies", "water_bodies"}}}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
@@ -147,6 +150,13 @@ TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
   const double h = level - 1000, expected = std::numbers::pi * kA * h * h / 2;
   EXPECT_GT(wet, 5000u);
   EXPECT_NEAR(volume, expected, 0.005 * expected);
+  // The artifact of deform.water_bodies: the level within float32 rounding of the depths.
+  const json bodies = json::parse(st->get_artifact("water_bodies")->text());
+  ASSERT_EQ(bodies.size(), 1u) << bodies.dump();
+  EXPECT_EQ(bodies[0]["feature"], 1);
+  EXPECT_NEAR(bodies[0]["level"].get<double>(), level, 1e-3);
+  EXPECT_NEAR(bodies[0]["area_m2"].get<double>(), double(wet) * pixel_area, 1e-6);
+  EXPECT_NEAR(bodies[0]["volume_m3"].get<double>(), volume, 1e-9 * volume);
   // One closed mesh (water_mesh_test.cpp checks its shape), stored once, in its owner cell.
   const ContentLayerStats mesh = st->content_stats("water_mesh");
   EXPECT_EQ(mesh.cells, 1u);
