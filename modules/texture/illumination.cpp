@@ -14,7 +14,7 @@ std::array<float, 3> Illumination::corrected(std::array<float, 3> rgb, int c, in
   if (std::isnan(h)) return rgb;
   const double cos_i = std::max((double(h) - 1) / 254, min_cos);
   const double top = std::max({rgb[0], rgb[1], rgb[2]});
-  double f = flat_cos / cos_i;
+  double f = (flat_cos + c_correction) / (cos_i + c_correction);
   if (top > 0) f = std::min(f, 255 / top);
   for (float& v : rgb) v = float(v * f);
   return rgb;
@@ -27,7 +27,12 @@ nlohmann::json illumination_params_schema() {
                         "sin(altitude) / max(cos i, min_incidence_cos), i the incidence angle "
                         "from inputs.hillshade (cosine correction; 0: none)")},
           {"min_incidence_cos",
-           number_param(0.01, 1, 0.2, "floor of cos i in the illumination correction")}};
+           number_param(0.01, 1, 0.2, "floor of cos i in the illumination correction")},
+          {"c_correction",
+           number_param(0, 10, 0,
+                        "c of the C-correction: the factor becomes (sin(altitude) + c) / "
+                        "(max(cos i, min_incidence_cos) + c), c the intercept / slope of the "
+                        "scene's brightness regressed on cos i (0: the cosine correction)")}};
 }
 
 std::optional<Illumination> illumination_of(const nlohmann::json& params, const CellData& data,
@@ -37,7 +42,8 @@ std::optional<Illumination> illumination_of(const nlohmann::json& params, const 
   if (!data.inputs.count("hillshade"))
     throw Error(op + ": params.sun_altitude needs inputs.hillshade");
   return Illumination{&data.inputs.at("hillshade"), std::sin(altitude * std::numbers::pi / 180),
-                      params.at("min_incidence_cos").get<double>()};
+                      params.at("min_incidence_cos").get<double>(),
+                      params.at("c_correction").get<double>()};
 }
 
 }  // namespace maquette::texture

@@ -1,4 +1,5 @@
-// The scene's illumination removed from its colours (albedo): the cosine correction shared by
+// The scene's illumination removed from its colours (albedo): the C-correction (the cosine
+// correction when c is 0) shared by
 // texture.cluster, texture.classify, texture.fit and texture.assess, so that classes, fitted
 // colours and the assessment all see the same unshaded scene.
 #pragma once
@@ -16,14 +17,20 @@ struct Illumination {
   const Tile<float>* hillshade = nullptr;  // terrain.derive's hillshade at the scene's sun
   double flat_cos = 1;                     // sin(sun altitude): the incidence on flat ground
   double min_cos = 0.2;                    // floor of cos i
+  double c_correction = 0;  // the C-correction's c (0: the cosine correction)
 
   // Colour of a pixel lit at incidence cos i (hillshade h = 1 + 254 cos i) as it would look on
-  // flat ground (brightness proportional to cos i), scaled by at most what keeps every channel
-  // <= 255, so hue and saturation are unchanged. Unknown illumination (NaN) leaves it as is.
+  // flat ground, brightness taken as proportional to cos i + c (Teillet et al. 1982: c the
+  // intercept / slope of the regression of brightness on cos i; diffuse light and the
+  // non-Lambertian canopy make shaded slopes brighter than cos i alone says, so c = 0
+  // over-corrects them): scaled by (flat_cos + c) / (max(cos i, min_cos) + c), at most what
+  // keeps every channel <= 255, so hue and saturation are unchanged. Unknown illumination (NaN)
+  // leaves it as is.
   std::array<float, 3> corrected(std::array<float, 3> rgb, int c, int r) const;
 };
 
-// The parameters "sun_altitude" (degrees, 0: no correction) and "min_incidence_cos".
+// The parameters "sun_altitude" (degrees, 0: no correction), "min_incidence_cos" and
+// "c_correction".
 nlohmann::json illumination_params_schema();
 
 // The correction asked for by params, reading inputs.hillshade; nullopt when sun_altitude is 0.

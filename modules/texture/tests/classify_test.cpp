@@ -11,6 +11,7 @@
 #include "../colour.h"
 #include "../hs_classes.h"
 #include "../hs_plot.h"
+#include "../illumination.h"
 #include "core/polygon_set.h"
 #include "texture_module.h"
 
@@ -259,6 +260,33 @@ TEST(Classify, IlluminationCorrection) {
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "texture.classify: params.sun_altitude needs inputs.hillshade");
   }
+}
+
+// The C-correction (c_correction c > 0) by hand, altitude 30 (sin = 0.5), c = 0.5: colours
+// times (0.5 + 0.5) / (max(cos i, 0.2) + 0.5): x 4/3 at cos i = 0.25 (the cosine correction: x
+// 2), x 1/0.7 at the floor, x 1 on flat ground, the cap at 255 as before; c = 0 is the cosine
+// correction.
+TEST(Classify, CCorrectionByHand) {
+  Tile<float> shade(3, 1, 0, 1 + 254 * 0.5f);
+  shade.at(1, 0) = 1 + 254 * 0.25f;
+  shade.at(2, 0) = 1 + 254 * 0.05f;
+  CellData d;
+  d.inputs.emplace("hillshade", shade);
+  json p = {{"sun_altitude", 30}, {"min_incidence_cos", 0.2}, {"c_correction", 0.5}};
+  const std::optional<Illumination> light = illumination_of(p, d, "test");
+  ASSERT_TRUE(light);
+  const std::array<float, 3> rgb = {30, 60, 90};
+  const auto expect_scaled = [&](int c, double f, const std::array<float, 3>& v) {
+    const std::array<float, 3> out = light->corrected(v, c, 0);
+    for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(out[k], v[k] * f, 1e-3) << "column " << c;
+  };
+  expect_scaled(0, 1, rgb);
+  expect_scaled(1, 1 / 0.75, rgb);
+  expect_scaled(2, 1 / 0.7, rgb);
+  expect_scaled(2, 255.0 / 200, {100, 150, 200});  // x 1.43 capped at x 1.275
+  p["c_correction"] = 0;
+  const std::optional<Illumination> cosine = illumination_of(p, d, "test");
+  EXPECT_NEAR(cosine->corrected(rgb, 1, 0)[2], 90 * 2, 1e-3);
 }
 
 // Majority filter (minimum mapping unit): a red 4 x 4 tile with a ring of 2 beyond it, a green
