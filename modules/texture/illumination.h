@@ -17,7 +17,7 @@ struct Illumination {
   const Tile<float>* hillshade = nullptr;  // terrain.derive's hillshade at the scene's sun
   double flat_cos = 1;                     // sin(sun altitude): the incidence on flat ground
   double min_cos = 0.2;                    // floor of cos i
-  double c_correction = 0;  // the C-correction's c (0: the cosine correction)
+  double c_correction = 0;                 // the C-correction's c (0: the cosine correction)
 
   // Colour of a pixel lit at incidence cos i (hillshade h = 1 + 254 cos i) as it would look on
   // flat ground, brightness taken as proportional to cos i + c (Teillet et al. 1982: c the

@@ -6,8 +6,8 @@
 // within 50-150 % of the scene's, at its pixels and after a blur of 4 pixels (class colours
 // from the pixels whose own colour class it is);
 // and, for the goals not met (modules/texture/README.md "Zion"), the measured values as floors
-// against regressions: kappa, blurred CIEDE2000, the classes within CIEDE2000 5. The rest of the
-// assessment printed.
+// against regressions: kappa, blurred CIEDE2000, the classes within CIEDE2000 5, the classes
+// with a producer's accuracy of 0.5. The rest of the assessment printed.
 // The same model and assessment with 1 and 2 threads, and the texture two levels finer than the
 // DEM without seams between tiles.
 // Skipped when the data is absent.
@@ -162,10 +162,10 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   EXPECT_GE(r["class_colours"].size(), 4u) << "classes kept by the fit, predicted in the east";
   // Issue 14's goals not met (README "Zion": kappa >= 0.6, blurred CIEDE2000 <= 6, class means
   // within CIEDE2000 5, producer's accuracies >= 0.5), held at what the example reaches (kappa
-  // 0.369, blurred 10.94, 3 of 5 classes within 5): the former hue-saturation-value classes
-  // gave kappa 0.30 and 13.8.
-  EXPECT_GE(r["kappa"].get<double>(), 0.35) << one.table;
-  EXPECT_LE(r["ciede2000_mean"].get<double>(), 11.0) << one.table;
+  // 0.369, blurred 10.72 with the colours' C-correction, 3 of 5 classes within 5): the former
+  // hue-saturation-value classes gave kappa 0.30 and 13.8, the cosine correction 10.94.
+  EXPECT_GE(r["kappa"].get<double>(), 0.36) << one.table;
+  EXPECT_LE(r["ciede2000_mean"].get<double>(), 10.8) << one.table;
   int close = 0;
   for (const auto& [k, c] : r["class_colours"].items()) {
     EXPECT_GE(c["sd_ratio"].get<double>(), 0.5) << "class " << k << ": " << c;
@@ -176,6 +176,11 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
     close += c["ciede2000"].get<double>() <= 5;
   }
   EXPECT_GE(close, 3) << one.table;
+  // Producer's accuracy >= 0.5 for 3 of the 5 classes (0.57, 0.51, 0.76; the red rock 0.23, the
+  // white sandstone 0: README "Zion").
+  int found = 0;
+  for (const auto& [k, a] : r["producers_accuracy"].items()) found += a.get<double>() >= 0.5;
+  EXPECT_GE(found, 3) << one.table;
   const Outcome two = fit_and_assess(2);
   EXPECT_EQ(one.model, two.model);  // same bits
   EXPECT_EQ(one.table, two.table);  // same confusion matrix, kappa and colour difference
