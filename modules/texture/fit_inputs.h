@@ -1,8 +1,8 @@
 // The per-pixel samples texture.fit and texture.assess read from a cell: the quantities of the
 // model at the inputs' resolution, computed exactly as texture.procedural computes them at
 // refine 0 (B-spline of the DEM, slope from it), so a fitted model sees what it was fitted on;
-// the categorical land cover as it is (texture.procedural reads it at a warped position,
-// categorical_warp.h, which at refine 0 moves about 2 % of the lookups to a neighbouring pixel).
+// the categorical land cover as it is (texture.procedural interpolates each layer's table values
+// through the input pixels, categorical_values.h: at refine 0 they are read back within 3 %).
 #pragma once
 
 #include <string>

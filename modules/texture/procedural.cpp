@@ -3,6 +3,7 @@
 // dominant class.
 #include <limits>
 
+#include "categorical_values.h"
 #include "core/error.h"
 #include "field.h"
 #include "model_params.h"
@@ -31,7 +32,7 @@ OperatorSpec procedural_spec() {
       {"classes", "class of the dominant layer (coverage >= 0.5)", DType::U8, 1,
        Semantics::Categorical, "", 255.0},
   };
-  s.halo = kInputHalo;
+  s.halo = kInputHalo + kPrefilterReach;  // categorical_values.h
   s.refinable = true;  // a step's "refine": levels finer than the DEM (render_tile's refine)
   s.writes_all_samples = true;  // render_tile writes every pixel, NaN where the DEM is missing
   s.params_schema = {

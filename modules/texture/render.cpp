@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "categorical_warp.h"
+#include "categorical_values.h"
 #include "core/error.h"
 #include "field.h"
 #include "lattice_noise.h"
@@ -10,7 +10,7 @@
 
 namespace maquette::texture {
 
-void render_tile(const Model& model, const Grid& grid, CellId cell, int size, int refine,
+void render_tile(const Model& given, const Grid& grid, CellId cell, int size, int refine,
                  const Tile<float>& dem, const std::map<std::string, const Tile<float>*>& rasters,
                  const std::string& context, const RenderTargets& out) {
   const int m = size << refine;
@@ -22,6 +22,8 @@ void render_tile(const Model& model, const Grid& grid, CellId cell, int size, in
     std::vector<Plane> quantities;
   };
   thread_local Buffers b;
+  const CategoricalSplit split = split_categorical(given);
+  const Model& model = split.model;
   upsample(dem, refine, 2, b.wide);
   SurfaceInputs in;
   in.slope = std::move(b.slope);  // lent to `in`, given back below
@@ -32,16 +34,18 @@ void render_tile(const Model& model, const Grid& grid, CellId cell, int size, in
   std::vector<Plane>& planes = b.quantities;
   planes.resize(model.quantities.size());
   in.quantities.assign(model.quantities.size(), nullptr);
+  const size_t first_split = model.quantities.size() - split.tables.size();
   for (size_t q = 0; q < model.quantities.size(); ++q) {
-    const std::string& name = model.quantities[q].name;
+    const std::string& name =
+        q < first_split ? model.quantities[q].name : split.source[q - first_split];
     if (name == "height" || name == "slope") continue;
     const auto it = rasters.find(name);
     if (it == rasters.end() || !it->second)
       throw Error(context + ": model quantity '" + name + "' has no input raster (map inputs." +
                   name + ")");
-    if (is_categorical(name))
-      nearest_warped(*it->second, global_col(cell, size, 0), global_row(cell, size, 0), refine, 1,
-                     planes[q]);
+    if (q >= first_split)
+      upsample(categorical_values(*it->second, split.tables[q - first_split]), refine, 1,
+               planes[q]);
     else
       upsample(*it->second, refine, 1, planes[q]);
     in.quantities[q] = &planes[q];

@@ -9,7 +9,7 @@
 #include <set>
 #include <thread>
 
-#include "../categorical_warp.h"
+#include "../categorical_values.h"
 #include "../field.h"
 #include "../render.h"
 #include "../surface.h"
@@ -71,10 +71,14 @@ TEST(Procedural, SeamlessAcrossTilesTwoLevelsFiner) {
   expect_seamless(ra.normal, rb.normal, ra.size, 3, "normal");
 }
 
-// The categorical land cover: each 8.8 m pixel reads the code of the 35 m input pixel its warped
-// centre lies in (categorical_warp.h: no blend at code borders) and its table's bin for that
-// code exactly.
-TEST(Procedural, CategoricalQuantityReadsItsCodeExactly) {
+// The categorical land cover (categorical_values.h): a layer's table values at the input
+// pixels, interpolated (as logs) by the cubic B-spline. At the input's level each pixel reads its
+// code's value (within 3 %: the prefilter's truncation and the log table's steps); two levels
+// finer, pixels whose 4 x 4 input neighbours share a code read its value too (within 6 %: the
+// interpolating spline rings from the codes beyond), every pixel lies
+// between the values around it (within the spline's overshoot, a quarter), and the largest step
+// between neighbouring pixels is a fraction of the step between codes (a curve, not a staircase).
+TEST(Procedural, CategoricalQuantityInterpolatesItsValues) {
   json doc = json::parse(R"({"format": "maquette.texture.model", "version": 1,
     "quantities": [{"name": "landcover", "range": [-0.5, 255.5]}],
     "root": {"colour": [0, 0, 0], "class": 0, "children": [
@@ -82,31 +86,57 @@ TEST(Procedural, CategoricalQuantityReadsItsCodeExactly) {
   json table = json::array();
   for (int i = 0; i < kBins; ++i) table.push_back(i == 42 ? 1.0 : i == 52 ? 0.25 : (i % 5) / 8.0);
   doc["root"]["children"][0]["constraints"]["landcover"]["table"] = table;
-  const int size = 16, refine = 2;
+  const int size = 16;
   const CellId cell = CellId::FromFaceColRow(2, 14, 8320, 8000);
-  const auto codes = [](LonLat p) {  // stripes of three codes across the tile
-    const int k = (int(std::floor(p.lon / 0.0011)) % 3 + 3) % 3;
+  const auto codes = [](LonLat p) {  // stripes of three codes across the tile, ~4 pixels wide
+    const int k = (int(std::floor(p.lon / 0.0017)) % 3 + 3) % 3;
     return k == 0 ? 42.0 : k == 1 ? 52.0 : 71.0;
   };
+  const int halo = kInputHalo + kPrefilterReach;
   const Tile<float> landcover =
-      with_halo(cell, size, kInputHalo, [&](CellId c) { return sample(c, size, codes); });
-  const Rendered r = render_tile(
-      parse_model(doc, "test"), default_grid(), cell, size, refine,
-      with_halo(cell, size, kInputHalo, [&](CellId c) { return sample(c, size, relief); }),
-      {{"landcover", &landcover}}, "test");
+      with_halo(cell, size, halo, [&](CellId c) { return sample(c, size, codes); });
+  const Tile<float> dem =
+      with_halo(cell, size, halo, [&](CellId c) { return sample(c, size, relief); });
+  const Model model = parse_model(doc, "test");
+  const auto value = [&](int c, int r) { return table[size_t(landcover.at(c, r))].get<double>(); };
+  const Rendered r0 =
+      render_tile(model, default_grid(), cell, size, 0, dem, {{"landcover", &landcover}}, "test");
   std::set<float> seen;
-  for (int row = 0; row < r.size; ++row)
-    for (int col = 0; col < r.size; ++col) {
-      const double x = (col + 0.5) / (1 << refine), y = (row + 0.5) / (1 << refine);
-      const auto [dx, dy] = categorical_warp(double(global_col(cell, size, 0)) + x,
-                                             double(global_row(cell, size, 0)) + y);
-      const float code = landcover.at(int(std::floor(x + dx)), int(std::floor(y + dy)));
-      const float expected = 255 * table[size_t(code)].get<float>();
-      ASSERT_EQ(r.rgb[(size_t(row) * size_t(r.size) + size_t(col)) * 3], expected)
-          << col << " " << row << " code " << code;
-      seen.insert(code);
+  double step0 = 0;
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
+      const double got = r0.rgb[(size_t(row) * size_t(size) + size_t(col)) * 3] / 255;
+      ASSERT_NEAR(got, value(col, row), 0.03 * value(col, row)) << col << " " << row;
+      seen.insert(landcover.at(col, row));
+      if (col > 0) step0 = std::max(step0, std::abs(value(col, row) - value(col - 1, row)));
     }
   EXPECT_EQ(seen.size(), 3u);
+  const int refine = 2, m = size << refine;
+  const Rendered r2 = render_tile(model, default_grid(), cell, size, refine, dem,
+                                  {{"landcover", &landcover}}, "test");
+  int uniform = 0;
+  double step2 = 0;
+  for (int row = 0; row < m; ++row)
+    for (int col = 0; col < m; ++col) {
+      const double got = r2.rgb[(size_t(row) * size_t(m) + size_t(col)) * 3] / 255;
+      const int c0 = int(std::floor((col + 0.5) / (1 << refine) - 0.5)),
+                r0_ = int(std::floor((row + 0.5) / (1 << refine) - 0.5));
+      double lo = 1, hi = 0;
+      for (int j = -1; j <= 2; ++j)
+        for (int i = -1; i <= 2; ++i)
+          lo = std::min(lo, value(c0 + i, r0_ + j)), hi = std::max(hi, value(c0 + i, r0_ + j));
+      if (lo == hi) {
+        ++uniform;
+        ASSERT_NEAR(got, lo, 0.06 * lo) << col << " " << row;
+      }
+      EXPECT_GE(got, 0.75 * lo) << col << " " << row;
+      EXPECT_LE(got, std::min(1.0, 1.25 * hi)) << col << " " << row;
+      if (col > 0)
+        step2 = std::max(
+            step2, std::abs(got - r2.rgb[(size_t(row) * size_t(m) + size_t(col - 1)) * 3] / 255));
+    }
+  EXPECT_GT(uniform, m * m / 10);
+  EXPECT_LT(step2, 0.5 * step0);
 }
 
 TEST(Procedural, SeamlessAcrossFaceSeam) {
