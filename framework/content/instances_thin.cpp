@@ -4,17 +4,10 @@
 #include <map>
 
 #include "content/enu_transform.h"
+#include "core/splitmix64.h"
 
 namespace maquette {
 namespace {
-
-uint64_t mix(uint64_t x) {
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 // FNV-1a 64 over bytes, for instances without an object id.
 uint64_t fnv1a(uint64_t h, const void* data, size_t bytes) {
@@ -37,7 +30,7 @@ uint64_t instance_key(const InstancesContent& c, size_t i) {
 
 bool instance_survives(uint64_t key, int depth) {
   const int pair = (depth - 1) % 32, round = (depth - 1) / 32;
-  return ((mix(key + uint64_t(round) * 0x9e3779b97f4a7c15ULL) >> (2 * pair)) & 3) == 0;
+  return ((splitmix64_mix(key + uint64_t(round) * kSplitMix64Gamma) >> (2 * pair)) & 3) == 0;
 }
 
 InstancesContent thin_instances(std::span<const InstancesContent> children, const EnuOrigin& origin,

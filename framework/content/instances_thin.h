@@ -5,7 +5,7 @@
 // The rule: an instance's key is its object id when the content has provenance, else a hash of
 // its bits as its child cell stores them (prototype name, position, rotation, scale, colour).
 // It survives into the level `depth` levels above the layer's iff bits 2(depth-1) and
-// 2(depth-1)+1 of mix(key) (SplitMix64's finalizer; keys re-mixed every 32 levels) are both
+// 2(depth-1)+1 of splitmix64_mix(key) (core/splitmix64.h; keys re-mixed every 32 levels) are both
 // zero. With object ids the key never changes, so the instances of a level are exactly those
 // whose first `depth` bit pairs are all zero, 4^-depth of the layer's, and a subset of the
 // level below.

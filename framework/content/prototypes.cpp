@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/splitmix64.h"
 
 namespace maquette {
 namespace {
@@ -152,10 +153,7 @@ Surface icosphere(int levels) {
 
 // A deterministic value in [-1, 1] for (seed, i): splitmix64.
 double jitter(uint64_t seed, uint64_t i) {
-  uint64_t z = seed * 0x9E3779B97F4A7C15ull + i + 1;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
+  const uint64_t z = splitmix64_mix(seed * kSplitMix64Gamma + i + 1);
   return double(z >> 11) / double(1ull << 52) - 1;
 }
 

@@ -3,22 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/splitmix64.h"
+
 namespace maquette::terrain {
 namespace {
 
 constexpr double kAuthalicRadius = 6371007.180918;
 
-// SplitMix64's finaliser: a stateless integer hash.
-uint64_t mix(uint64_t x) {
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
 uint64_t hash(int64_t x, int64_t y, int64_t z, uint64_t seed) {
-  return mix(mix(mix(mix(seed) ^ uint64_t(x)) ^ uint64_t(y)) ^ uint64_t(z));
+  return splitmix64_mix(
+      splitmix64_mix(splitmix64_mix(splitmix64_mix(seed) ^ uint64_t(x)) ^ uint64_t(y)) ^
+      uint64_t(z));
 }
 
 // Dot product of the lattice point's pseudo-random gradient (one of the 12 cube edge
@@ -95,7 +90,7 @@ double synthetic_elevation(const Vec3& up, const TerrainParams& params) {
   // One lattice unit per feature wavelength on the globe's surface.
   const double k = kAuthalicRadius / (params.feature_km * 1000);
   const Vec3 p{up[0] * k, up[1] * k, up[2] * k};
-  const uint64_t seed = mix(uint64_t(params.seed));
+  const uint64_t seed = splitmix64_mix(uint64_t(params.seed));
   const double continents = 2 * fractal(p, params.octaves, seed, [](double n) { return n; });
   // Mountain ranges with ridges, inland only.
   const Vec3 q{2 * p[0] + 17.5, 2 * p[1] - 3.25, 2 * p[2] + 9.75};

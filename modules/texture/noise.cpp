@@ -2,17 +2,9 @@
 
 #include <algorithm>
 
+#include "core/splitmix64.h"
+
 namespace maquette::texture {
-namespace {
-
-uint64_t splitmix(uint64_t& state) {
-  uint64_t x = (state += 0x9E3779B97F4A7C15ULL);
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-}  // namespace
 
 NoiseField::NoiseField(const NoiseParams& params) {
   double amplitude = 1, scale = 1 / params.wavelength_m;
@@ -20,7 +12,7 @@ NoiseField::NoiseField(const NoiseParams& params) {
   for (int o = 0; o < params.octaves; ++o) {
     scale_.push_back(scale);
     amplitude_.push_back(amplitude);
-    seed_.push_back(uint32_t(splitmix(state) >> 32));
+    seed_.push_back(uint32_t(splitmix64_next(state) >> 32));
     norm_ += amplitude;
     amplitude *= params.persistence;
     scale *= 2;
