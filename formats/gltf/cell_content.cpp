@@ -1,6 +1,5 @@
 #include "gltf/cell_content.h"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,6 +7,7 @@
 #include <vector>
 
 #include "content/content_blob.h"
+#include "content/enu_transform.h"
 #include "content/instances_codec.h"
 #include "core/error.h"
 #include "gltf/glb_merge.h"
@@ -24,9 +24,6 @@ using Box = std::array<Vec3, 2>;  // min, max corners in a content's ENU frame (
 
 constexpr double kPad = 0.01;  // metres around a content's box in its region
 constexpr double kEarthRadius = 6371008.8;
-
-Vec3 enu_of_gltf(const Vec3& g) { return {g[0], -g[2], g[1]}; }
-Vec3 gltf_of_enu(const Vec3& v) { return {v[0], v[2], -v[1]}; }
 
 Box empty_box() {
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -47,7 +44,7 @@ void extend(Box& b, const Vec3& lo, const Vec3& hi) {
 // highest at its corners. A box across the antimeridian or reaching a pole gets every longitude
 // (tileset.h's regions keep west <= east).
 std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
-  const GeographicLib::LocalCartesian enu(o.lat, o.lon, o.height);
+  const EnuToGeodetic geodetic(o);
   std::vector<Vec3> points;
   for (const double x : {b[0][0], std::clamp(0.0, b[0][0], b[1][0]), b[1][0]})
     for (const double y : {b[0][1], std::clamp(0.0, b[0][1], b[1][1]), b[1][1]})
@@ -61,15 +58,14 @@ std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
                              -std::numeric_limits<double>::infinity()};
   double lon_lo = 360, lon_hi = -360;  // from the origin's longitude, unwrapped
   for (const Vec3& p : points) {
-    double lat, lon, h;
-    enu.Reverse(p[0], p[1], p[2], lat, lon, h);
-    const double dlon = std::remainder(lon - o.lon, 360.0);
+    const GeodeticPoint g = geodetic(p[0], p[1], p[2]);
+    const double dlon = std::remainder(g.lon - o.lon, 360.0);
     lon_lo = std::min(lon_lo, dlon);
     lon_hi = std::max(lon_hi, dlon);
-    r[1] = std::min(r[1], lat * rad);
-    r[3] = std::max(r[3], lat * rad);
-    r[4] = std::min(r[4], h - kPad);
-    r[5] = std::max(r[5], h + kPad);
+    r[1] = std::min(r[1], g.lat * rad);
+    r[3] = std::max(r[3], g.lat * rad);
+    r[4] = std::min(r[4], g.height - kPad);
+    r[5] = std::max(r[5], g.height + kPad);
   }
   const double dlat = kPad / kEarthRadius;
   r[1] = std::max(-kPi / 2, r[1] - dlat);
@@ -147,39 +143,17 @@ std::optional<CellContent> volume_content(const VolumeContent& volume, const std
 }  // namespace
 
 std::array<double, 16> frame_to_frame(const EnuOrigin& from, const LocalFrame& to) {
-  const std::array<double, 16> a = LocalFrame({from.lon, from.lat}).enu_to_ecef();
-  const std::array<double, 16> b = to.enu_to_ecef();
-  auto column = [](const std::array<double, 16>& m, size_t c) {
-    return Vec3{m[4 * c], m[4 * c + 1], m[4 * c + 2]};
-  };
-  // ECEF vector d in `to`'s ENU axes (the columns of b are its unit axes).
-  auto to_enu = [&](const Vec3& d) {
-    Vec3 v;
-    for (size_t k = 0; k < 3; ++k) {
-      const Vec3 axis = column(b, k);
-      v[k] = axis[0] * d[0] + axis[1] * d[1] + axis[2] * d[2];
-    }
-    return v;
-  };
-  auto from_axes = [&](const Vec3& enu) {  // `from`'s ENU vector in ECEF
-    Vec3 d{};
-    for (size_t k = 0; k < 3; ++k)
-      for (size_t r = 0; r < 3; ++r) d[r] += column(a, k)[r] * enu[k];
-    return d;
-  };
+  const std::array<double, 16> enu =
+      EnuTransform(from, {to.origin().lon, to.origin().lat, 0}).matrix();  // row-major, ENU axes
+  // glTF axis k is ENU axis kAxis[k] times kSign[k] (x east, y up, z south).
+  constexpr std::array<size_t, 3> kAxis = {0, 2, 1};
+  constexpr std::array<double, 3> kSign = {1, 1, -1};
   std::array<double, 16> m{};
-  for (size_t j = 0; j < 3; ++j) {
-    Vec3 g{};
-    g[j] = 1;
-    const Vec3 c = gltf_of_enu(to_enu(from_axes(enu_of_gltf(g))));
-    for (size_t r = 0; r < 3; ++r) m[4 * j + r] = c[r];
+  for (size_t r = 0; r < 3; ++r) {
+    for (size_t c = 0; c < 3; ++c)
+      m[4 * c + r] = kSign[r] * kSign[c] * enu[4 * kAxis[r] + kAxis[c]];
+    m[12 + r] = kSign[r] * enu[4 * kAxis[r] + 3];  // the translation
   }
-  // The origin, `from.height` above the ellipsoid along its up axis.
-  const Vec3 up = column(a, 2);
-  Vec3 d;
-  for (size_t r = 0; r < 3; ++r) d[r] = a[12 + r] + from.height * up[r] - b[12 + r];
-  const Vec3 t = gltf_of_enu(to_enu(d));
-  for (size_t r = 0; r < 3; ++r) m[12 + r] = t[r];
   m[15] = 1;
   return m;
 }

@@ -49,7 +49,7 @@ void require_content_layer(const Store& store, const std::string& layer);
 
 // The column-major 4x4 matrix taking glTF coordinates (x east, y up, z south) of the
 // east-north-up frame at `from` to those of the frame `to`, computed in double precision through
-// ECEF (the frames' origins and axes): centimetres hold for content anywhere on the globe.
+// ECEF (content/enu_transform.h, in glTF axes): centimetres hold for content anywhere on the globe.
 std::array<double, 16> frame_to_frame(const EnuOrigin& from, const LocalFrame& to);
 
 }  // namespace maquette

@@ -1,11 +1,17 @@
 // Moving content between two east-north-up frames (content.h, EnuOrigin): both are rigid
 // frames of ECEF, so a point's coordinates in one map to the other by a rotation and a
-// translation, computed here in double precision from the two origins (core/ecef.h).
+// translation, computed here in double precision from the two origins (core/ecef.h); and the
+// geodetic coordinates of a frame's points (EnuToGeodetic).
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include "content/content.h"
+
+namespace GeographicLib {
+class LocalCartesian;
+}
 
 namespace maquette {
 
@@ -25,6 +31,25 @@ class EnuTransform {
  private:
   std::array<std::array<double, 3>, 3> rotation_{};  // rows: to's axes in from's frame
   std::array<double, 3> translation_{};
+};
+
+// A point given by its geodetic coordinates.
+struct GeodeticPoint {
+  double lon = 0, lat = 0;  // degrees
+  double height = 0;        // metres above the ellipsoid
+};
+
+// The geodetic coordinates of the points of the east-north-up frame at an origin: the reverse of
+// GeographicLib::LocalCartesian (exact, no series), the frame set up once for many points.
+class EnuToGeodetic {
+ public:
+  explicit EnuToGeodetic(const EnuOrigin& origin);
+  ~EnuToGeodetic();
+  // The point (x east, y north, z up, metres) of the frame.
+  GeodeticPoint operator()(double x, double y, double z) const;
+
+ private:
+  std::unique_ptr<const GeographicLib::LocalCartesian> frame_;
 };
 
 }  // namespace maquette

@@ -2,12 +2,12 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "content/content_blob.h"
+#include "content/enu_transform.h"
 #include "content/instances_codec.h"
 #include "content/prototypes.h"
 #include "core/error.h"
@@ -36,11 +36,10 @@ bool finite3(const float* p) {
 // float32 positions near an edge may round across it.
 void check_anchor(const EnuOrigin& origin, const float* xyz, CellId cell, const Grid& grid,
                   const std::string& what) {
-  const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
+  const EnuToGeodetic geodetic(origin);
   const auto cell_at = [&](double dx, double dy) {
-    double lat = 0, lon = 0, h = 0;
-    frame.Reverse(double(xyz[0]) + dx, double(xyz[1]) + dy, double(xyz[2]), lat, lon, h);
-    return grid.cell_from_point({lon, lat}, cell.level());
+    const GeodeticPoint p = geodetic(double(xyz[0]) + dx, double(xyz[1]) + dy, double(xyz[2]));
+    return grid.cell_from_point({p.lon, p.lat}, cell.level());
   };
   const CellId at = cell_at(0, 0);
   if (at == cell) return;
@@ -48,7 +47,7 @@ void check_anchor(const EnuOrigin& origin, const float* xyz, CellId cell, const 
   for (const double dx : {-t, 0.0, t})
     for (const double dy : {-t, 0.0, t})
       if (cell_at(dx, dy) == cell) return;
-  const LonLat p = enu_to_lonlat(origin, xyz);
+  const GeodeticPoint p = geodetic(xyz[0], xyz[1], xyz[2]);
   throw Error(
       fmt::format("{}: its anchor at lon {:.8f}, lat {:.8f} lies in cell {}, not in this "
                   "cell (each cell writes only the objects it owns: CellContext::owns)",
@@ -153,13 +152,6 @@ void encode_port(const std::map<std::string, Content>& by_port, std::vector<Cont
 }
 
 }  // namespace
-
-LonLat enu_to_lonlat(const EnuOrigin& origin, const float* xyz) {
-  double lat = 0, lon = 0, h = 0;
-  GeographicLib::LocalCartesian(origin.lat, origin.lon, origin.height)
-      .Reverse(xyz[0], xyz[1], xyz[2], lat, lon, h);
-  return {lon, lat};
-}
 
 std::vector<ContentBlob> encode_cell_content(const CellContent& content, CellId cell,
                                              const Grid& grid,

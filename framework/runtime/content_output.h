@@ -27,7 +27,4 @@ std::vector<ContentBlob> encode_cell_content(const CellContent& content, CellId 
                                              const Grid& grid,
                                              const std::set<std::string>& models = {});
 
-// The lon/lat of a position of a content's ENU frame (content/content.h).
-LonLat enu_to_lonlat(const EnuOrigin& origin, const float* xyz);
-
 }  // namespace maquette

@@ -53,7 +53,11 @@ TEST(ContentCheck, AnchorsJustBeyondTheEdgeWithinTheTolerance) {
   const auto outside_tolerance = beyond_edge(5 * kAnchorToleranceM);
   for (const auto& p : {inside_tolerance, outside_tolerance}) {  // both outside the cell
     const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
-    EXPECT_NE(default_grid().cell_from_point(enu_to_lonlat(cell_origin(), xyz), 12), kCell);
+    const EnuOrigin o = cell_origin();
+    double lat = 0, lon = 0, h = 0;
+    GeographicLib::LocalCartesian(o.lat, o.lon, o.height)
+        .Reverse(xyz[0], xyz[1], xyz[2], lat, lon, h);
+    EXPECT_NE(default_grid().cell_from_point({lon, lat}, 12), kCell);
   }
   EXPECT_EQ(encode_cell_content(one_tree(inside_tolerance), kCell, default_grid()).size(), 1u);
   EXPECT_NE(test::error_of([&] {
