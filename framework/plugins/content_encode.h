@@ -6,12 +6,10 @@
 #include <string>
 
 #include "content/content.h"
+#include "plugins/mesh_plugin.h"
 
 namespace maquette {
 
-// The mesh plug-in's file, mesh_export.h's kMeshPlugin, named here too since mesh_export.h brings
-// the exports' headers (Draco's among them) that libmaquette must not include.
-inline constexpr const char* kMeshContentPlugin = "libmaquette_mesh.so";
 inline constexpr const char* kMeshContentEntry = "maquette_mesh_content_blob";
 
 }  // namespace maquette

@@ -8,11 +8,11 @@
 
 #include "gltf/export_glb.h"
 #include "gltf/terrain_level.h"
+#include "plugins/mesh_plugin.h"
 #include "tiles3d/export_tiles3d.h"
 
 namespace maquette {
 
-inline constexpr const char* kMeshPlugin = "libmaquette_mesh.so";
 inline constexpr const char* kTiles3dEntry = "maquette_mesh_tiles3d";
 inline constexpr const char* kGlbEntry = "maquette_mesh_glb";
 inline constexpr const char* kDrcEntry = "maquette_mesh_drc";

@@ -117,7 +117,7 @@ void check_instance_positions(const InstancesContent& c, CellId cell, const Grid
 std::string mesh_blob(const MeshContent& c, CellId cell, const Grid& grid) {
   check_mesh(c, cell, grid);
   static auto* const encode =
-      plugin_function<decltype(maquette_mesh_content_blob)>(kMeshContentPlugin, kMeshContentEntry);
+      plugin_function<decltype(maquette_mesh_content_blob)>(kMeshPlugin, kMeshContentEntry);
   std::string blob;
   encode(c, blob);
   return blob;
