@@ -8,6 +8,7 @@
 
 #include "content/content_blob.h"
 #include "content/enu_transform.h"
+#include "content/glb_chunks.h"
 #include "content/instances_codec.h"
 #include "core/error.h"
 #include "gltf/glb_merge.h"

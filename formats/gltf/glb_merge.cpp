@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "content/glb_chunks.h"
 #include "core/error.h"
 #include "gltf/glb_writer.h"
 
@@ -9,12 +10,6 @@ namespace maquette {
 namespace {
 
 using nlohmann::json;
-
-uint32_t u32(std::string_view b, size_t at) {
-  uint32_t v = 0;
-  for (size_t k = 0; k < 4; ++k) v |= uint32_t(uint8_t(b[at + k])) << (8 * k);
-  return v;
-}
 
 // Where each array of the merged glTF stands before a part's entries are appended.
 struct Offsets {
@@ -82,25 +77,6 @@ void append_part(json part, const Offsets& o, json& out, const std::string& wher
 }
 
 }  // namespace
-
-GlbChunks split_glb(std::string_view glb, const std::string& where) {
-  auto fail = [&](const std::string& what) { return Error(where + ": " + what); };
-  if (glb.size() < 20 || u32(glb, 0) != 0x46546C67 || u32(glb, 8) != glb.size())
-    throw fail("not a GLB (its magic or length)");
-  const size_t json_len = u32(glb, 12);
-  if (u32(glb, 16) != 0x4E4F534A || json_len > glb.size() - 20)
-    throw fail("no JSON chunk of its stated length");
-  GlbChunks parts;
-  parts.gltf = json::parse(glb.substr(20, json_len), nullptr, false);
-  if (!parts.gltf.is_object()) throw fail("its JSON chunk is not a JSON object");
-  const size_t at = 20 + json_len;
-  if (at < glb.size()) {
-    if (glb.size() - at < 8 || u32(glb, at + 4) != 0x004E4942 || u32(glb, at) > glb.size() - at - 8)
-      throw fail("no BIN chunk of its stated length");
-    parts.bin = glb.substr(at + 8, u32(glb, at));
-  }
-  return parts;
-}
 
 std::vector<char> merge_glbs(const std::vector<GlbPart>& parts, const json& extras,
                              const std::string& where) {

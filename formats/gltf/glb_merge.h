@@ -9,17 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "content/glb_chunks.h"  // split_glb, which reads each part
+
 namespace maquette {
-
-// A GLB's two chunks (the BIN chunk empty when it has none).
-struct GlbChunks {
-  nlohmann::json gltf;
-  std::string_view bin;
-};
-
-// Throws maquette::Error naming `where` when `glb` is not a GLB (header, chunk types and lengths,
-// a JSON chunk that does not parse to an object).
-GlbChunks split_glb(std::string_view glb, const std::string& where);
 
 struct GlbPart {
   std::string_view glb;

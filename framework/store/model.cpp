@@ -1,9 +1,9 @@
 // Model layers: one model per layer, a mesh content blob in the model's own frame, kept in the
 // `tiles` table at cell id 0 (no valid cell has that id, so no reader of cells takes it for a
 // tile; stats and drop_layer count and remove it with the layer's other rows).
-#include <cstring>
 
 #include "content/content_blob.h"
+#include "content/glb_chunks.h"
 #include "store/store_impl.h"
 
 namespace maquette {
@@ -32,22 +32,12 @@ void check_model_blob(std::string_view blob, const std::string& where) {
                 "): its origin is not zero (a model is in its own frame)");
 }
 
-// The materials of a GLB from its JSON chunk (glTF 2.0: a 12-byte header "glTF", version,
-// length, then the chunk's length and type "JSON"). Read here, not by formats/gltf, which
-// libmaquette cannot link (it links Draco).
+// The materials of a model's GLB (its JSON chunk's "materials").
 int64_t glb_materials(std::string_view glb, const std::string& where) {
-  const auto fault = [&](const std::string& what) {
-    return Error("corrupt model blob (" + where + "): its payload is not a GLB: " + what);
-  };
-  if (glb.size() < 20 || glb.substr(0, 4) != "glTF") throw fault("no glTF header");
-  uint32_t chunk = 0;
-  std::memcpy(&chunk, glb.data() + 12, 4);
-  if (glb.substr(16, 4) != "JSON" || chunk > glb.size() - 20) throw fault("no JSON chunk");
-  const auto json =
-      nlohmann::json::parse(glb.begin() + 20, glb.begin() + 20 + chunk, nullptr, false);
-  if (json.is_discarded() || !json.is_object()) throw fault("its JSON chunk is not an object");
-  const auto materials = json.find("materials");
-  return materials != json.end() && materials->is_array() ? int64_t(materials->size()) : 0;
+  const nlohmann::json gltf =
+      split_glb(glb, "corrupt model blob (" + where + "), its payload").gltf;
+  const auto materials = gltf.find("materials");
+  return materials != gltf.end() && materials->is_array() ? int64_t(materials->size()) : 0;
 }
 
 }  // namespace

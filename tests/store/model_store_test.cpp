@@ -142,7 +142,7 @@ TEST(ModelStore, ADamagedModelBlobIsNamed) {
     batch.put_model("rock", wrap_content(e, "not a glb, but the store decodes no payload"));
     batch.put_model("oak", model_blob({3, 120, 0}, 2));
     batch.commit();
-    expect_error([&] { store->model_stats("rock"); }, {"model 'rock'", "its payload is not a GLB"});
+    expect_error([&] { store->model_stats("rock"); }, {"model 'rock'", "its payload: not a GLB"});
   }
   raw_sql(path,
           "UPDATE tiles SET blob = x'4d514354' WHERE layer = "
