@@ -31,6 +31,25 @@ std::string base64(const std::string& bytes) {
 
 }  // namespace
 
+json one_primitive_gltf(const json& nodes, const json& roots, const json& material,
+                        const json& accessors, const json& views, size_t buffer_bytes) {
+  return {{"asset", {{"version", "2.0"}}},
+          {"scene", 0},
+          {"scenes", {{{"nodes", roots}}}},
+          {"nodes", nodes},
+          {"meshes",
+           {{{"primitives",
+              {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+                {"indices", 3},
+                {"material", 0}}}}}}},
+          {"materials", {material}},
+          {"textures", {{{"source", 0}}}},
+          {"images", {json::object()}},
+          {"accessors", accessors},
+          {"bufferViews", views},
+          {"buffers", {{{"byteLength", buffer_bytes}}}}};
+}
+
 ModelFile quad_model() {
   ModelFile m;
   // Positions, 16 bytes apart (x, y, z, padding).
@@ -44,47 +63,34 @@ ModelFile quad_model() {
   append<uint8_t>(m.bin, {0, 3, 2, 0, 2, 1});  // counter-clockwise seen from +y
   while (m.bin.size() % 4) m.bin.push_back(0);
   m.image = encoded_image("PNG", 8, 8);
-  m.gltf = {
-      {"asset", {{"version", "2.0"}}},
-      {"scene", 0},
-      {"scenes", {{{"nodes", {0, 2}}}}},
-      {"nodes",
-       {{{"translation", {10, 20, 30}}, {"children", {1}}},
-        {{"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}, {"scale", {2, 2, 2}}, {"mesh", 0}},
-        {{"scale", {-1, 1, 1}}, {"mesh", 0}}}},
-      {"meshes",
-       {{{"primitives",
-          {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
-            {"indices", 3},
-            {"material", 0}}}}}}},
-      {"materials",
-       {{{"name", "quad"},
-         {"pbrMetallicRoughness",
-          {{"baseColorFactor", {0.5, 0.25, 1, 1}},
-           {"roughnessFactor", 0.5},
-           {"baseColorTexture", {{"index", 0}}}}}}}},
-      {"textures", {{{"source", 0}}}},
-      {"images", {json::object()}},
-      {"accessors",
-       {{{"bufferView", 0},
-         {"componentType", 5126},
-         {"count", 4},
-         {"type", "VEC3"},
-         {"min", {0, 0, 0}},
-         {"max", {1, 0, 1}}},
-        {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-        {{"bufferView", 2},
-         {"componentType", 5123},
-         {"normalized", true},
-         {"count", 4},
-         {"type", "VEC2"}},
-        {{"bufferView", 3}, {"componentType", 5121}, {"count", 6}, {"type", "SCALAR"}}}},
-      {"bufferViews",
-       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", normals}, {"byteStride", 16}},
-        {{"buffer", 0}, {"byteOffset", normals}, {"byteLength", uvs - normals}},
-        {{"buffer", 0}, {"byteOffset", uvs}, {"byteLength", indices - uvs}},
-        {{"buffer", 0}, {"byteOffset", indices}, {"byteLength", 6}}}},
-      {"buffers", {{{"byteLength", m.bin.size()}}}}};
+  m.gltf = one_primitive_gltf(
+      {{{"translation", {10, 20, 30}}, {"children", {1}}},
+       {{"rotation", {0, std::sqrt(0.5), 0, std::sqrt(0.5)}}, {"scale", {2, 2, 2}}, {"mesh", 0}},
+       {{"scale", {-1, 1, 1}}, {"mesh", 0}}},
+      {0, 2},
+      {{"name", "quad"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.5, 0.25, 1, 1}},
+         {"roughnessFactor", 0.5},
+         {"baseColorTexture", {{"index", 0}}}}}},
+      {{{"bufferView", 0},
+        {"componentType", 5126},
+        {"count", 4},
+        {"type", "VEC3"},
+        {"min", {0, 0, 0}},
+        {"max", {1, 0, 1}}},
+       {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+       {{"bufferView", 2},
+        {"componentType", 5123},
+        {"normalized", true},
+        {"count", 4},
+        {"type", "VEC2"}},
+       {{"bufferView", 3}, {"componentType", 5121}, {"count", 6}, {"type", "SCALAR"}}},
+      {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", normals}, {"byteStride", 16}},
+       {{"buffer", 0}, {"byteOffset", normals}, {"byteLength", uvs - normals}},
+       {{"buffer", 0}, {"byteOffset", uvs}, {"byteLength", indices - uvs}},
+       {{"buffer", 0}, {"byteOffset", indices}, {"byteLength", 6}}},
+      m.bin.size());
   return m;
 }
 

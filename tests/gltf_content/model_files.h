@@ -13,6 +13,14 @@ struct ModelFile {
   std::string image;    // a PNG
 };
 
+// The glTF of a model drawing one mesh of one primitive with one material (`material`, its base
+// colour texture image 0, whose uri or bufferView is left for the writer): POSITION, NORMAL,
+// TEXCOORD_0 and the indices are accessors 0 to 3 (`accessors`), on the bufferViews `views` of
+// buffer 0 (`buffer_bytes` long); scene 0 draws `roots` of `nodes`.
+nlohmann::json one_primitive_gltf(const nlohmann::json& nodes, const nlohmann::json& roots,
+                                  const nlohmann::json& material, const nlohmann::json& accessors,
+                                  const nlohmann::json& views, size_t buffer_bytes);
+
 // A unit quad in glTF's xz plane facing +y (positions at a 16-byte stride, normals, uvs as
 // normalized unsigned shorts, unsigned byte indices), drawn by node 1 (rotated 90 degrees about
 // y, scaled by 2) child of node 0 (translated by (10, 20, 30)), and by node 2 (mirrored in x).
