@@ -29,6 +29,10 @@ const OperatorRegistry& program_registry() {
   return registry;
 }
 
+nlohmann::json array_schema(const char* item_type, const std::string& description) {
+  return {{"type", "array"}, {"items", {{"type", item_type}}}, {"description", description}};
+}
+
 std::string resolve_path(const std::string& base_dir, const std::string& path) {
   return (std::filesystem::path(base_dir) / path).lexically_normal().string();
 }

@@ -21,6 +21,9 @@ const OperatorRegistry& program_registry();
 // `path` resolved against the pipeline file's directory `base_dir` (absolute paths unchanged).
 std::string resolve_path(const std::string& base_dir, const std::string& path);
 
+// The JSON Schema of a step param: an array of `item_type` ("string", "number"...).
+nlohmann::json array_schema(const char* item_type, const std::string& description);
+
 // params[key] into `into` when present (params are validated against the step's schema).
 template <typename T>
 void read_param(const nlohmann::json& params, const char* key, T& into) {

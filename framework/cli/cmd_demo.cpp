@@ -121,8 +121,7 @@ void add_demo_command(CLI::App& app) {
   demo->add_option("--data", o->data,
                    "Directory holding olinda_dem_utm25s.tif and L7_ETMs.tif (default: "
                    "demo-data next to the program's bin/)");
-  demo->add_option("-t,--threads", o->threads, "Worker threads (0: all cores)")
-      ->capture_default_str();
+  add_threads_option(demo, o->threads);
   demo->callback([o] { run_demo(*o); });
 }
 

@@ -50,9 +50,7 @@ void add_ingest_command(CLI::App& app) {
   cmd->add_option("--classes", o->raster.classes,
                   "Land-cover classes, inline JSON or file: {\"11\": {\"name\": \"Open water\", "
                   "\"color\": \"#466b9f\"}, ...} (default: from the source)");
-  cmd->add_option("-t,--threads", o->raster.threads, "Worker threads (0: all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
+  add_threads_option(cmd, o->raster.threads);
   cmd->add_flag("--resume", o->raster.resume,
                 "Finish the latest unfinished ingest of the same sources and options");
   cmd->add_flag("--force", o->raster.force, "Write even when the job is over the size limits");

@@ -38,9 +38,7 @@ void add_run_command(CLI::App& app) {
       "runs; results are identical for any thread count, and under mpirun or srun for any number "
       "of ranks");
   run->add_option("PIPELINE", o->pipeline, "Pipeline JSON file")->required();
-  run->add_option("-t,--threads", o->run.threads, "Worker threads (0: all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
+  add_threads_option(run, o->run.threads);
   run->add_flag(
       "--resume", o->run.resume,
       "Finish the latest unfinished run of the same pipeline, skipping cells it completed");

@@ -14,6 +14,9 @@ void add_demo_command(CLI::App& app);
 void add_ingest_command(CLI::App& app);
 void add_view_command(CLI::App& app);
 
+// -t,--threads into `threads`: worker threads, 0 for all cores (at most 1024).
+void add_threads_option(CLI::App* cmd, int& threads);
+
 // Global options shared by every subcommand.
 struct GlobalOptions {
   bool quiet = false;

@@ -14,6 +14,12 @@ namespace {
 GlobalOptions g_options;
 }
 const GlobalOptions& global_options() { return g_options; }
+
+void add_threads_option(CLI::App* cmd, int& threads) {
+  cmd->add_option("-t,--threads", threads, "Worker threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+}
 }  // namespace maquette::cli
 
 int main(int argc, char** argv) {

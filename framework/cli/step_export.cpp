@@ -43,10 +43,6 @@ json typed(const char* type, const std::string& description) {
   return {{"type", type}, {"description", description}};
 }
 
-json array_of(const char* type, const std::string& description) {
-  return {{"type", "array"}, {"items", {{"type", type}}}, {"description", description}};
-}
-
 OperatorSpec export_spec() {
   OperatorSpec s;
   s.name = "export";
@@ -64,8 +60,9 @@ OperatorSpec export_spec() {
        {{"format", {{"type", "string"}, {"enum", formats}}},
         {"out", typed("string", "output file (tiles3d, drc: directory), relative to the pipeline")},
         {"layer", typed("string", "gtiff, png, geojson, gpkg: the layer")},
-        {"bbox", array_of("number", "only tiles overlapping this lon/lat box: W S E N")},
-        {"cells", array_of("string", "only tiles in these cells (glb, drc: the cells written)")},
+        {"bbox", array_schema("number", "only tiles overlapping this lon/lat box: W S E N")},
+        {"cells",
+         array_schema("string", "only tiles in these cells (glb, drc: the cells written)")},
         {"level", {{"type", "integer"}, {"minimum", 0}, {"maximum", CellId::kMaxLevel}}},
         {"crs", typed("string", "gtiff: rhealpix or EPSG:NNNN")},
         {"resolution", typed("number", "gtiff: pixel size in crs units")},
@@ -75,7 +72,7 @@ OperatorSpec export_spec() {
         {"projection", {{"type", "string"}, {"enum", {"auto", "lonlat", "polar"}}}},
         {"legend", typed("boolean", "png: a legend below the picture (default true)")},
         {"overlay", typed("string", "png: a features layer drawn over the picture")},
-        {"range", array_of("number", "png: values drawn as the ramp's ends")},
+        {"range", array_schema("number", "png: values drawn as the ramp's ends")},
         {"bands", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
         {"hillshade", typed("boolean", "png: multiply by a hillshade")},
         {"max_size", {{"type", "integer"}, {"minimum", 16}, {"maximum", 65536}}},
@@ -89,7 +86,7 @@ OperatorSpec export_spec() {
         {"force", typed("boolean", "above max_mib; tiles3d: into a non-empty output")},
         {"draco", typed("boolean", "false: plain GLB")},
         {"stretch", typed("boolean", "false: the texture as stored, not stretched 2-98 %")},
-        {"content", array_of("string", "tiles3d, glb: 3D content layers")},
+        {"content", array_schema("string", "tiles3d, glb: 3D content layers")},
         {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
   return s;
 }

@@ -12,10 +12,6 @@ namespace {
 
 using json = nlohmann::json;
 
-json string_array(const std::string& description) {
-  return {{"type", "array"}, {"items", {{"type", "string"}}}, {"description", description}};
-}
-
 OperatorSpec ingest_spec() {
   OperatorSpec s;
   s.name = "ingest";
@@ -32,7 +28,8 @@ OperatorSpec ingest_spec() {
       {"additionalProperties", false},
       {"required", {"sources", "as"}},
       {"properties",
-       {{"sources", string_array("input files, relative to the pipeline file, mosaicked in order")},
+       {{"sources",
+         array_schema("string", "input files, relative to the pipeline file, mosaicked in order")},
         {"as",
          {{"type", "string"},
           {"enum",
@@ -65,7 +62,8 @@ OperatorSpec ingest_spec() {
         {"lon", {{"type", "string"}, {"description", "stations: longitude column"}}},
         {"lat", {{"type", "string"}, {"description", "stations: latitude column"}}},
         {"elevation", {{"type", "string"}, {"description", "stations: elevation column"}}},
-        {"values", string_array("stations: value columns (default: every other numeric one)")}}}};
+        {"values",
+         array_schema("string", "stations: value columns (default: every other numeric one)")}}}};
   return s;
 }
 
