@@ -16,9 +16,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
 #include "local_frame.h"
 #include "operators.h"
+#include "runtime/input_halo.h"
 #include "runtime/params_schema.h"
 
 namespace maquette::climate {
@@ -57,12 +57,9 @@ class Orographic : public CellOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const CellContext& ctx, CellData& data) const override {
-    const Tile<float>& dem = data.input("dem");
+    const Tile<float>& dem = input_with_halo(kOp, ctx, data, "dem", kHalo);
     const Tile<float>& rain = data.input("precipitation");
     const int size = ctx.tile_size;
-    if (dem.halo() < kHalo || dem.size() != size)
-      throw Error(kOp + ": input 'dem' of cell " + ctx.cell.ToText() + " needs a halo of " +
-                  std::to_string(kHalo) + " pixels and tile size " + std::to_string(size));
     const json& p = *ctx.params;
     const double wind = p.at("wind_direction").get<double>();
     const double strength = p.at("strength").get<double>();

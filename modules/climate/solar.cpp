@@ -10,6 +10,7 @@
 #include "horizon.h"
 #include "local_frame.h"
 #include "operators.h"
+#include "runtime/input_halo.h"
 #include "runtime/params_schema.h"
 #include "sun.h"
 
@@ -91,11 +92,8 @@ class Solar : public CellOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const CellContext& ctx, CellData& data) const override {
-    const Tile<float>& dem = data.input("dem");
+    const Tile<float>& dem = input_with_halo("climate.solar", ctx, data, "dem", kHalo);
     const int size = ctx.tile_size;
-    if (dem.halo() < kHalo || dem.size() != size)
-      throw Error("climate.solar: input 'dem' of cell " + ctx.cell.ToText() + " needs a halo of " +
-                  std::to_string(kHalo) + " pixels and tile size " + std::to_string(size));
     const json& p = *ctx.params;
     const SolarModel model(options(p));
     const double distance = p.at("max_shadow_distance").get<double>();

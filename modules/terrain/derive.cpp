@@ -3,9 +3,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
 #include "neighbourhood.h"
 #include "operators.h"
+#include "runtime/input_halo.h"
 #include "runtime/params_schema.h"
 #include "surface_fit.h"
 #include "surface_measures.h"
@@ -56,11 +56,8 @@ class Derive : public CellOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const CellContext& ctx, CellData& data) const override {
-    const Tile<float>& dem = data.input("dem");
+    const Tile<float>& dem = input_with_halo("terrain.derive", ctx, data, "dem", 1);
     const int size = ctx.tile_size;
-    if (dem.halo() < 1 || dem.size() != size)
-      throw Error("terrain.derive: input 'dem' of cell " + ctx.cell.ToText() +
-                  " needs a halo of 1 pixel and tile size " + std::to_string(size));
     const json& params = *ctx.params;
     const Light light{params.at("azimuth").get<double>(), params.at("altitude").get<double>(),
                       params.at("z_factor").get<double>()};

@@ -10,6 +10,7 @@
 #include "core/halo.h"
 #include "operators.h"
 #include "pyramid_fill.h"
+#include "runtime/input_halo.h"
 #include "runtime/params_schema.h"
 #include "store/downsample.h"
 #include "void_fill.h"
@@ -65,12 +66,8 @@ class FillVoids : public CellOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const CellContext& ctx, CellData& data) const override {
-    const Tile<float>& dem = data.input("dem");
+    const Tile<float>& dem = input_with_halo("terrain.fill_voids", ctx, data, "dem", kHalo);
     const int size = ctx.tile_size;
-    if (dem.halo() < kHalo || dem.size() != size)
-      throw Error("terrain.fill_voids: input 'dem' of cell " + ctx.cell.ToText() +
-                  " needs a halo of " + std::to_string(kHalo) + " pixels and tile size " +
-                  std::to_string(size));
     const FillMethod method =
         ctx.params->at("method") == "laplace" ? FillMethod::Laplace : FillMethod::Biharmonic;
     Tile<float> filled = fill_voids(dem, {method, kHalo - 1}).interior();
