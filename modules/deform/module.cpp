@@ -1,6 +1,5 @@
 #include "operators.h"
 #include "runtime/module_abi.h"
-#include "water_operator.h"
 
 MAQUETTE_MODULE("deform", "0.1.0",
                 "Terrain deformation from feature strokes (paper 002 §3): rivers, roads, cliffs, "

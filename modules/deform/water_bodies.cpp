@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/halo.h"
-#include "water_operator.h"
+#include "operators.h"
 #include "water_stroke.h"
 
 namespace maquette::deform {

@@ -1,4 +1,4 @@
-#include "water_operator.h"
+#include "operators.h"
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
