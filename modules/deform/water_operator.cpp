@@ -1,11 +1,10 @@
-#include "operators.h"
-
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/halo.h"
+#include "operators.h"
 #include "water_body.h"
 #include "water_mesh.h"
 #include "water_stroke.h"
