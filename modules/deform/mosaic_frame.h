@@ -26,7 +26,6 @@ class MosaicFrame {
   LonLat sample_lonlat(int col, int row) const;  // the centre of mosaic sample (col, row)
   // Fractional mosaic sample coordinates (col, row) of `p`; nullopt when it lies on another face.
   std::optional<std::array<double, 2>> sample(LonLat p) const;
-  int face() const { return face_; }
 
  private:
   const Grid& grid_;

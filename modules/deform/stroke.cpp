@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
@@ -31,6 +32,13 @@ Knots parse_knots(const nlohmann::json& value, const std::string& where) {
 }
 
 }  // namespace
+
+std::string lonlat_text(LonLat p) {
+  std::ostringstream s;
+  s.precision(8);
+  s << "lon " << p.lon << ", lat " << p.lat;
+  return s.str();
+}
 
 double piecewise_linear(const Knots& knots, double x) {
   if (x <= knots.front()[0]) return knots.front()[1];

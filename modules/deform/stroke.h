@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/grid.h"
@@ -34,6 +35,9 @@ struct FeatureStroke {
 // geometry other than a LineString, fewer than two distinct points, a missing or malformed
 // cross_section or profile (not [[number, number]...] of finite numbers with strictly increasing
 // first members, fewer than two pairs), or both Z values and a profile.
+// "lon X, lat Y" to 8 significant digits, for messages naming where a stroke is at fault.
+std::string lonlat_text(LonLat p);
+
 std::vector<FeatureStroke> feature_strokes(const FeatureList& features, const std::string& port);
 
 }  // namespace maquette::deform

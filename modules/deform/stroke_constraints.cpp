@@ -2,20 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "core/error.h"
 #include "rmf.h"
 
 namespace maquette::deform {
 namespace {
-
-std::string at_text(LonLat p) {
-  std::ostringstream s;
-  s.precision(8);
-  s << "lon " << p.lon << ", lat " << p.lat;
-  return s.str();
-}
 
 double cross(EastNorth2 a, EastNorth2 b) { return a[0] * b[1] - a[1] * b[0]; }
 EastNorth2 minus(EastNorth2 a, EastNorth2 b) { return {a[0] - b[0], a[1] - b[1]}; }
@@ -29,8 +21,8 @@ bool segments_meet(EastNorth2 a, EastNorth2 b, EastNorth2 c, EastNorth2 d) {
 }
 
 Error seam_error(const std::string& where, const std::string& what, LonLat p) {
-  return Error(where + ": its " + what + " crosses onto another face of the grid at " + at_text(p) +
-               " (face seams are not supported yet: split the stroke there)");
+  return Error(where + ": its " + what + " crosses onto another face of the grid at " +
+               lonlat_text(p) + " (face seams are not supported yet: split the stroke there)");
 }
 
 // Locates points of one stroke on the mosaic, with the checks the least squares needs.
@@ -47,14 +39,14 @@ class Locator {
     // The triangle's vertices and their neighbours must lie in the mosaic.
     if (!(col >= 1 && row >= 1 && col < field_.width - 2 && row < field_.height - 2))
       throw Error(where_ + ": its " + what + " leaves the DEM (the step's region) at " +
-                  at_text(ll));
+                  lonlat_text(ll));
     const SurfacePoint sp = locate(field_, col, row);
     for (const size_t v : sp.vertex) {
       const int c = int(v % size_t(field_.width)), r = int(v / size_t(field_.width));
       bool finite = std::isfinite(field_.z[v]);
       for (const auto& n : kNeighbours)
         finite = finite && std::isfinite(field_.z[field_.index(c + n[0], r + n[1])]);
-      if (!finite) throw Error(where_ + ": its " + what + " crosses nodata at " + at_text(ll));
+      if (!finite) throw Error(where_ + ": its " + what + " crosses nodata at " + lonlat_text(ll));
     }
     return sp;
   }

@@ -56,7 +56,10 @@ double water_level(const BasinRaster& basin, const WaterLevel& rule) {
       if (basin.inside[i] && !std::isnan(basin.terrain[i]) && is_boundary(basin, col, row))
         heights.push_back(basin.terrain[i]);
     }
-  if (heights.empty()) throw std::runtime_error("no terrain height known on the stroke's boundary");
+  if (heights.empty())
+    throw std::runtime_error(
+        "no terrain height known on the stroke's boundary (its pixels there are nodata, or it "
+        "holds no pixel centre: draw it around the basin)");
   if (rule.rule == WaterLevel::Rule::Spill)
     return *std::min_element(heights.begin(), heights.end());
   // Nearest rank: the smallest height with at least P % of the boundary at or below it.

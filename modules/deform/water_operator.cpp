@@ -5,6 +5,7 @@
 
 #include "core/halo.h"
 #include "operators.h"
+#include "stroke.h"
 #include "water_body.h"
 #include "water_mesh.h"
 #include "water_stroke.h"
@@ -43,13 +44,6 @@ OperatorSpec water_spec() {
   return s;
 }
 
-std::string lon_lat(LonLat p) {
-  std::ostringstream s;
-  s.precision(8);
-  s << "lon " << p.lon << ", lat " << p.lat;
-  return s.str();
-}
-
 std::string metres(double v) {
   std::ostringstream s;
   s.precision(9);
@@ -69,7 +63,8 @@ std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<Lon
                            size_t(k) * size_t(side), size_t(k) * size_t(side) + size_t(side - 1)})
       if (inside[i])
         throw std::runtime_error(describe(f) + " reaches the edge of the region's DEM at " +
-                                 lon_lat(centres[i]) + ": the region must hold the whole stroke");
+                                 lonlat_text(centres[i]) +
+                                 ": the region must hold the whole stroke");
   return inside;
 }
 
@@ -93,8 +88,8 @@ void add_mesh(const StepContext& ctx, const Mosaic& input, Mosaic& output, const
   const LonLat anchor = corner_lon_lat(lake.vertices.front());
   const auto owner = output.content.find(ctx.grid->cell_from_point(anchor, cell.level()));
   if (owner == output.content.end())
-    throw std::runtime_error(describe(f) + ": the lake's mesh is anchored at " + lon_lat(anchor) +
-                             ", outside the step's cells");
+    throw std::runtime_error(describe(f) + ": the lake's mesh is anchored at " +
+                             lonlat_text(anchor) + ", outside the step's cells");
   MeshContent& mesh = owner->second.mesh("mesh");
   const GeographicLib::LocalCartesian frame(mesh.origin.lat, mesh.origin.lon, mesh.origin.height);
   MeshObject object;
@@ -147,12 +142,19 @@ class Water : public RegionOperator {
       const BasinRaster basin{side, side, terrain, inside,
                               ctx.grid->area(0) / std::ldexp(1.0, 2 * input.level)};
       const std::string where = describe(*f);
-      const WaterBody body =
-          fill_basin(basin, water_level(basin, WaterLevel::from_attributes(f->attributes, where)));
+      const WaterLevel rule = WaterLevel::from_attributes(f->attributes, where);
+      const double level = [&] {
+        try {
+          return water_level(basin, rule);
+        } catch (const std::runtime_error& e) {
+          throw std::runtime_error(where + ": " + e.what());
+        }
+      }();
+      const WaterBody body = fill_basin(basin, level);
       if (body.leak)
         throw std::runtime_error(where + ": at level " + metres(body.level) +
                                  " the water leaks out of the stroke at " +
-                                 lon_lat(centres[size_t(*body.leak)]) +
+                                 lonlat_text(centres[size_t(*body.leak)]) +
                                  ": lower the level or draw the stroke around the basin");
       if (!body.wet.empty() && !output.content.empty() &&
           output.content.begin()->second.wants("mesh"))

@@ -198,5 +198,14 @@ TEST(DeformWater, BadLevelRuleNamesTheFieldAndValue) {
   EXPECT_NE(r.err.find("\"percentile:x\""), std::string::npos) << r.err;
 }
 
+TEST(DeformWater, StrokeHoldingNoPixelCentreNamesTheFeature) {
+  const Basin basin(stroke(0.01, json::object()));  // 1 cm around the centre; pixels of 35 m
+  const CliResult r = basin.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("feature 1 (tool water): no terrain height known on the stroke's boundary"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace maquette

@@ -91,7 +91,9 @@ TEST(WaterBody, LevelFromAttributes) {
 
 // r.lake's depths (NaN: dry) at `level` from the seed pixel.
 std::vector<double> rlake(const Basin& b, double level, int64_t seed) {
-  const std::string dir = testing::TempDir() + "/water_rlake";
+  // One directory per test: ctest runs the tests of this file in parallel.
+  const std::string dir = testing::TempDir() + "/water_rlake_" +
+                          testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::create_directories(dir);
   EXPECT_TRUE(write_geotiff(b, dir + "/dem.tif"));
   char x[64], y[64], l[64];
