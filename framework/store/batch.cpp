@@ -127,6 +127,14 @@ void Store::Batch::put_content(const std::string& layer, CellId cell, std::strin
   pending_->contents.push_back(content_write(d.require(layer), d.path, cell, blob));
 }
 
+void Store::Batch::remove_content(const std::string& layer, CellId cell) {
+  const Impl& d = *store_.impl_;
+  if (!open_)
+    throw Error("cannot remove content of layer '" + layer + "' at " + cell_text(cell) +
+                ": batch already committed");
+  pending_->contents.push_back(content_write(d.require(layer), d.path, cell, std::nullopt));
+}
+
 void Store::Batch::put_model(const std::string& name, std::string_view blob,
                              const nlohmann::json& provenance) {
   const Impl& d = *store_.impl_;

@@ -1,5 +1,6 @@
-// Content layers (kinds mesh, instances, volume): one envelope blob per cell, in tiles at the
-// layer's level and in overviews at the coarser levels that hold simplified content.
+// Content layers (kinds mesh, instances, volume): one envelope blob per cell, in the content
+// table (content_rows.cpp) at the layer's level and at the coarser levels that hold simplified
+// content.
 #include "content/content_blob.h"
 #include "store/store_impl.h"
 
@@ -42,37 +43,48 @@ ContentEnvelope stored_envelope(const LayerEntry& e, ContentKind kind, CellId ce
 }  // namespace
 
 ContentWrite content_write(const LayerEntry& e, const std::string& store_path, CellId cell,
-                           std::string_view blob) {
+                           std::optional<std::string_view> blob) {
   const ContentKind kind = check_content_layer(e, store_path);
-  const std::string where = "cannot write content of layer '" + e.info.name + "' at " +
-                            cell_text(cell) + " in " + store_path + ": ";
+  const std::string where = "cannot " + std::string(blob ? "write" : "remove") +
+                            " content of layer '" + e.info.name + "' at " + cell_text(cell) +
+                            " in " + store_path + ": ";
   check_content_cell(e, cell, where);
-  const ContentEnvelope envelope = read_content_envelope(blob, content_where(e, cell, store_path));
+  const bool coarser = cell.level() < e.info.level;
+  if (!blob) return {e.id, cell, coarser, std::nullopt};
+  const ContentEnvelope envelope = read_content_envelope(*blob, content_where(e, cell, store_path));
   if (envelope.kind != kind)
     throw Error(where + "the blob holds " + std::string(content_kind_name(envelope.kind)) +
                 " content, the layer " + std::string(content_kind_name(kind)));
-  return {e.id, cell, cell.level() < e.info.level, std::string(blob)};
+  return {e.id, cell, coarser, std::string(*blob)};
 }
 
 void write_content(sqlite::Connection& c, const ContentWrite& w) {
-  const auto blob = std::as_bytes(std::span(w.blob));
+  const int64_t cell = int64_t(w.cell.id());
+  bool changed = true;
+  if (w.blob)
+    write_content_blob(c, w.layer, w.cell.level(), cell, *w.blob);
+  else
+    changed = delete_content_blob(c, w.layer, w.cell.level(), cell);
   // A cell at the layer's level marks its parent stale for update_content_overviews
   // (content/content_overviews.h); a coarser one is an overview the writer put itself.
-  if (w.coarser)
-    c.query("INSERT OR REPLACE INTO overviews(layer, level, cell, blob) VALUES(?, ?, ?, ?)")
-        .bind_int(1, w.layer)
-        .bind_int(2, w.cell.level())
-        .bind_int(3, int64_t(w.cell.id()))
-        .bind_blob(4, blob)
-        .run();
-  else {
-    c.query("INSERT OR REPLACE INTO tiles(layer, cell, blob) VALUES(?, ?, ?)")
-        .bind_int(1, w.layer)
-        .bind_int(2, int64_t(w.cell.id()))
-        .bind_blob(3, blob)
-        .run();
-    mark_parent_stale(c, w.layer, w.cell);
+  if (changed && !w.coarser) mark_parent_stale(c, w.layer, w.cell);
+}
+
+LayerStats content_layer_stats(sqlite::Connection& c, const LayerEntry& e) {
+  LayerStats s;
+  auto q = c.query(
+      "SELECT level, sum(part = 0), sum(length(data)), min(cell), max(cell) FROM content "
+      "WHERE layer = ? GROUP BY level ORDER BY level");
+  q.bind_int(1, e.id);
+  while (q.step()) {
+    s.levels.push_back(int(q.int64(0)));
+    s.bytes += q.int64(2);
+    if (s.levels.back() != e.info.level) continue;
+    s.tile_count = q.int64(1);
+    s.first = CellId(uint64_t(q.int64(3)));
+    s.last = CellId(uint64_t(q.int64(4)));
   }
+  return s;
 }
 
 std::optional<std::string> Store::get_content(const std::string& layer, CellId cell) const {
@@ -82,15 +94,11 @@ std::optional<std::string> Store::get_content(const std::string& layer, CellId c
       e, cell,
       "no content of layer '" + layer + "' at " + cell_text(cell) + " in " + impl_->path + ": ");
   auto conn = impl_->readers.borrow();
-  auto q =
-      cell.level() == e.info.level
-          ? conn->query("SELECT blob FROM tiles WHERE layer = ?1 AND cell = ?3")
-          : conn->query("SELECT blob FROM overviews WHERE layer = ?1 AND level = ?2 AND cell = ?3");
-  q.bind_int(1, e.id).bind_int(2, cell.level()).bind_int(3, int64_t(cell.id()));
-  if (!q.step()) return std::nullopt;
-  const auto blob = q.blob(0);
-  stored_envelope(e, kind, cell, blob, int64_t(blob.size()), impl_->path);
-  return std::string(reinterpret_cast<const char*>(blob.data()), blob.size());
+  auto blob = read_content_blob(*conn, e.id, cell.level(), int64_t(cell.id()));
+  if (blob)
+    stored_envelope(e, kind, cell, std::as_bytes(std::span(*blob)), int64_t(blob->size()),
+                    impl_->path);
+  return blob;
 }
 
 std::vector<CellId> Store::content_cells(const std::string& layer, int level, CellId first,
@@ -102,13 +110,9 @@ std::vector<CellId> Store::content_cells(const std::string& layer, int level, Ce
                 std::to_string(level) + ": its content is at levels 0 to " +
                 std::to_string(e.info.level));
   auto conn = impl_->readers.borrow();
-  auto q = level == e.info.level
-               ? conn->query(
-                     "SELECT cell FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4 "
-                     "ORDER BY cell")
-               : conn->query(
-                     "SELECT cell FROM overviews WHERE layer = ?1 AND level = ?2 AND cell "
-                     "BETWEEN ?3 AND ?4 ORDER BY cell");
+  auto q = conn->query(
+      "SELECT cell FROM content WHERE layer = ? AND level = ? AND cell BETWEEN ? AND ? AND "
+      "part = 0 ORDER BY cell");
   q.bind_int(1, e.id)
       .bind_int(2, level)
       .bind_int(3, int64_t(first.id()))
@@ -131,25 +135,36 @@ ContentLayerStats Store::content_stats(const std::string& layer) const {
   const ContentKind kind = check_content_layer(e, impl_->path);
   auto conn = impl_->readers.borrow();
   ContentLayerStats s;
-  {
-    // The header alone (content_blob.h), not the payload: length() reads no blob either.
-    auto q =
-        conn->query("SELECT cell, substr(blob, 1, ?2), length(blob) FROM tiles WHERE layer = ?1");
-    q.bind_int(1, e.id).bind_int(2, int64_t(kContentHeaderBytes));
-    while (q.step()) {
-      const int64_t length = q.int64(2);
-      const ContentEnvelope envelope =
-          stored_envelope(e, kind, CellId(uint64_t(q.int64(0))), q.blob(1), length, impl_->path);
-      s.content.objects += envelope.stats.objects;
-      s.content.triangles += envelope.stats.triangles;
-      s.content.voxels += envelope.stats.voxels;
-      ++s.cells;
-      s.bytes += length;
+  // The header (content_blob.h) from the first part, not the payload; length() reads no blob.
+  auto q = conn->query(
+      "SELECT level, cell, part, substr(data, 1, ?2), length(data) FROM content WHERE layer = ?1 "
+      "ORDER BY level, cell, part");
+  q.bind_int(1, e.id).bind_int(2, int64_t(kContentHeaderBytes));
+  std::vector<std::byte> head;
+  int64_t cell = 0, bytes = 0;
+  const auto add_cell = [&] {
+    const ContentEnvelope envelope =
+        stored_envelope(e, kind, CellId(uint64_t(cell)), head, bytes, impl_->path);
+    s.content.objects += envelope.stats.objects;
+    s.content.triangles += envelope.stats.triangles;
+    s.content.voxels += envelope.stats.voxels;
+    ++s.cells;
+  };
+  bool base = false;  // the cell at `cell` is at the layer's level
+  while (q.step()) {
+    const int64_t length = q.int64(4);
+    s.bytes += length;
+    if (q.int64(2) == 0) {  // a cell's first part
+      if (base) add_cell();
+      base = q.int64(0) == e.info.level;
+      cell = q.int64(1);
+      const auto h = q.blob(3);
+      head.assign(h.begin(), h.end());
+      bytes = 0;
     }
+    bytes += length;
   }
-  auto q = conn->query("SELECT coalesce(sum(length(blob)), 0) FROM overviews WHERE layer = ?");
-  q.bind_int(1, e.id).step();
-  s.bytes += q.int64(0);
+  if (base) add_cell();
   return s;
 }
 

@@ -3,31 +3,6 @@
 #include "store/store_impl.h"
 
 namespace maquette {
-namespace {
-
-// The stored blobs of `cell`'s children: at the layer's level in tiles, else in overviews.
-Store::ContentChildren read_content_children(sqlite::Connection& c, const LayerEntry& e,
-                                             CellId cell) {
-  const int child_level = cell.level() + 1;
-  auto q = child_level == e.info.level
-               ? c.query("SELECT cell, blob FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4")
-               : c.query(
-                     "SELECT cell, blob FROM overviews WHERE layer = ?1 AND level = ?2 AND cell "
-                     "BETWEEN ?3 AND ?4");
-  q.bind_int(1, e.id)
-      .bind_int(2, child_level)
-      .bind_int(3, int64_t(cell.range_min().id()))
-      .bind_int(4, int64_t(cell.range_max().id()));
-  Store::ContentChildren out;
-  while (q.step()) {
-    const auto blob = q.blob(1);
-    out[CellId(uint64_t(q.int64(0))).digit(child_level)].emplace(
-        reinterpret_cast<const char*>(blob.data()), blob.size());
-  }
-  return out;
-}
-
-}  // namespace
 
 size_t Store::rebuild_stale_content(const std::string& layer, int level, size_t limit,
                                     const BuildContentOverviews& build) {
@@ -50,19 +25,14 @@ size_t Store::rebuild_stale_content(const std::string& layer, int level, size_t 
       while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
     }
     std::vector<ContentChildren> children;
-    for (CellId cell : cells) children.push_back(read_content_children(c, e, cell));
+    for (CellId cell : cells) children.push_back(read_children(c, e, cell));
     std::vector<std::optional<std::string>> overviews(cells.size());
     build(cells, children, overviews);
     for (size_t i = 0; i < cells.size(); ++i) {
-      if (overviews[i]) {
-        write_content(c, content_write(e, d.path, cells[i], *overviews[i]));
-      } else {
-        c.query("DELETE FROM overviews WHERE layer = ? AND level = ? AND cell = ?")
-            .bind_int(1, e.id)
-            .bind_int(2, level)
-            .bind_int(3, int64_t(cells[i].id()))
-            .run();
-      }
+      // Nothing: its children hold nothing, and an overview it had goes.
+      write_content(c, content_write(e, d.path, cells[i],
+                                     overviews[i] ? std::optional<std::string_view>(*overviews[i])
+                                                  : std::nullopt));
       c.query("DELETE FROM stale_overviews WHERE layer = ? AND level = ? AND cell = ?")
           .bind_int(1, e.id)
           .bind_int(2, level)

@@ -51,8 +51,8 @@ void Store::drop_layer(const std::string& layer, int64_t run_id) {
   impl_->write([&](sqlite::Connection& c) {
     for (const char* sql :
          {"DELETE FROM tiles WHERE layer = ?", "DELETE FROM overviews WHERE layer = ?",
-          "DELETE FROM stale_overviews WHERE layer = ?", "DELETE FROM features WHERE layer = ?",
-          "DELETE FROM feature_cells WHERE layer = ?",
+          "DELETE FROM content WHERE layer = ?", "DELETE FROM stale_overviews WHERE layer = ?",
+          "DELETE FROM features WHERE layer = ?", "DELETE FROM feature_cells WHERE layer = ?",
           "DELETE FROM incomplete_layers WHERE layer = ?", "DELETE FROM layers WHERE id = ?"})
       c.query(sql).bind_int(1, e.id).run();
     for (const char* sql : {"DELETE FROM run_cells WHERE run = ?", "DELETE FROM runs WHERE id = ?"})

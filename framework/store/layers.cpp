@@ -130,6 +130,7 @@ LayerStats Store::stats(const std::string& layer) const {
   const LayerEntry e = impl_->require(layer);
   auto conn = impl_->readers.borrow();
   if (e.info.kind == LayerKind::Features) return feature_stats(*conn, e);
+  if (holds_content(e.info.kind)) return content_layer_stats(*conn, e);
   LayerStats s;
   {
     auto q = conn->query(

@@ -1,6 +1,7 @@
 // Model layers: one model per layer, a mesh content blob in the model's own frame, kept in the
-// `tiles` table at cell id 0 (no valid cell has that id, so no reader of cells takes it for a
-// tile; stats and drop_layer count and remove it with the layer's other rows).
+// `content` table at level 0 and cell id 0 (no valid cell has that id, so no reader of cells
+// takes it for a cell's content; stats and drop_layer count and remove it with the layer's other
+// rows).
 
 #include "content/content_blob.h"
 #include "content/glb_chunks.h"
@@ -64,11 +65,7 @@ void write_model(sqlite::Connection& c, const std::string& store_path, const Mod
     info.provenance = w.provenance;
     id = insert_layer(c, normalized_layer(info));
   }
-  c.query("INSERT OR REPLACE INTO tiles(layer, cell, blob) VALUES(?, ?, ?)")
-      .bind_int(1, id)
-      .bind_int(2, kModelCell)
-      .bind_blob(3, std::as_bytes(std::span(w.blob)))
-      .run();
+  write_content_blob(c, id, 0, kModelCell, w.blob);
   c.query("UPDATE layers SET updated = strftime('%Y-%m-%dT%H:%M:%fZ') WHERE id = ?")
       .bind_int(1, id)
       .run();
@@ -79,11 +76,8 @@ std::optional<std::string> Store::get_model(const std::string& name) const {
   if (!e) return std::nullopt;
   check_model_layer(*e, impl_->path);
   auto conn = impl_->readers.borrow();
-  auto q = conn->query("SELECT blob FROM tiles WHERE layer = ? AND cell = ?");
-  if (!q.bind_int(1, e->id).bind_int(2, kModelCell).step()) return std::nullopt;
-  const auto bytes = q.blob(0);
-  std::string blob(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  check_model_blob(blob, model_where(name, impl_->path));
+  auto blob = read_content_blob(*conn, e->id, 0, kModelCell);
+  if (blob) check_model_blob(*blob, model_where(name, impl_->path));
   return blob;
 }
 

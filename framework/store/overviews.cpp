@@ -7,6 +7,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+
 #include "store/codec.h"
 #include "store/downsample.h"
 #include "store/store_impl.h"
@@ -16,30 +18,6 @@ namespace {
 
 constexpr size_t kCellsPerTransaction = 64;  // bounds memory and lock time
 constexpr size_t kMaxBuiltKept = 64;         // overview tiles kept in memory for the next level
-
-struct ChildBlobs {
-  std::array<std::optional<std::vector<std::byte>>, 4> blobs;  // by child digit
-};
-
-// The stored tiles of `cell`'s children: base tiles if they sit at the layer's level, else
-// overview tiles one level below `cell`.
-ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell) {
-  const int child_level = cell.level() + 1;
-  const bool base = child_level == e.info.level;
-  auto q = c.query(base ? "SELECT cell, blob FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4"
-                        : "SELECT cell, blob FROM overviews WHERE layer = ?1 AND level = ?2 AND "
-                          "cell BETWEEN ?3 AND ?4");
-  q.bind_int(1, e.id)
-      .bind_int(2, child_level)
-      .bind_int(3, int64_t(cell.range_min().id()))
-      .bind_int(4, int64_t(cell.range_max().id()));
-  ChildBlobs out;
-  while (q.step()) {
-    const auto blob = q.blob(1);
-    out.blobs[CellId(uint64_t(q.int64(0))).digit(child_level)].emplace(blob.begin(), blob.end());
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -66,15 +44,16 @@ size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, in
       std::array<std::optional<RawTile>, 4> tiles;
       std::array<const RawTile*, 4> ptrs{};
       for (int k = 0; k < 4; ++k)
-        if (const auto& blob = children[i].blobs[k]) {
+        if (const auto& blob = children[i][k]) {
           const CellId child = cells[i].child(k);
+          const auto bytes = std::as_bytes(std::span(*blob));
           // Built at the level below in this call and stored as is: no need to decode it.
           if (const auto it = below.find(child.id());
-              it != below.end() && it->second.first == *blob) {
+              it != below.end() && std::ranges::equal(it->second.first, bytes)) {
             ptrs[k] = &it->second.second;
             continue;
           }
-          tiles[k] = decode(*blob, e, child);
+          tiles[k] = decode(bytes, e, child);
           ptrs[k] = &*tiles[k];
         }
       overviews[i] = build_overview(ptrs, e.info);
@@ -89,6 +68,29 @@ size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, in
     built.insert_or_assign(cells[i].id(),
                            std::make_pair(std::move(blobs[i]), std::move(overviews[i])));
   return cells.size();
+}
+
+ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell) {
+  const int child_level = cell.level() + 1;
+  const int64_t first = int64_t(cell.range_min().id()), last = int64_t(cell.range_max().id());
+  ChildBlobs out;
+  const auto keep = [&](int64_t child, std::string&& blob) {
+    out[CellId(uint64_t(child)).digit(child_level)] = std::move(blob);
+  };
+  if (holds_content(e.info.kind)) {
+    read_content_blobs(c, e.id, child_level, first, last, keep);
+    return out;
+  }
+  auto q = c.query(child_level == e.info.level
+                       ? "SELECT cell, blob FROM tiles WHERE layer = ?1 AND cell BETWEEN ?3 AND ?4"
+                       : "SELECT cell, blob FROM overviews WHERE layer = ?1 AND level = ?2 AND "
+                         "cell BETWEEN ?3 AND ?4");
+  q.bind_int(1, e.id).bind_int(2, child_level).bind_int(3, first).bind_int(4, last);
+  while (q.step()) {
+    const auto blob = q.blob(1);
+    keep(q.int64(0), std::string(reinterpret_cast<const char*>(blob.data()), blob.size()));
+  }
+  return out;
 }
 
 void write_overview(sqlite::Connection& conn, int64_t layer_id, CellId cell,

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "store/store_impl.h"
+
 namespace maquette {
 namespace {
 
@@ -91,13 +93,27 @@ CREATE TABLE IF NOT EXISTS incomplete_layers(
   run INTEGER NOT NULL);
 )sql";
 
+// Version 4: the blobs of content layers (by level and cell) and model layers (level 0, cell 0),
+// each split into parts (content_rows.cpp) so that blobs of a few kB fill whole pages; version 3
+// kept them in tiles and overviews, where a WITHOUT ROWID row spills what exceeds ~4 kB into
+// overflow pages of its own, partly empty (the file held 2-2.4x the blobs' bytes).
+constexpr const char* kContentSchema = R"sql(
+CREATE TABLE IF NOT EXISTS content(
+  layer INTEGER NOT NULL,
+  level INTEGER NOT NULL,
+  cell INTEGER NOT NULL,
+  part INTEGER NOT NULL,
+  data BLOB NOT NULL,
+  PRIMARY KEY(layer, level, cell, part)) WITHOUT ROWID;
+)sql";
+
 int32_t pragma_int(sqlite::Connection& conn, const char* sql) {
   auto q = conn.query(sql);
   return q.step() ? int32_t(q.int64(0)) : 0;
 }
 
-// Brings a version 1 store (no features tables) or 2 (no incomplete marks) to the current
-// version.
+// Brings a version 1 store (no features tables), 2 (no incomplete marks) or 3 (content blobs in
+// tiles and overviews) to the current version.
 void migrate(sqlite::Connection& conn) {
   conn.transaction([&] {
     // Re-checked under the write lock: another process may have migrated it meanwhile.
@@ -105,6 +121,8 @@ void migrate(sqlite::Connection& conn) {
     if (version >= kStoreSchemaVersion) return;
     if (version < 2) conn.exec(kFeaturesSchema);
     conn.exec(kIncompleteSchema);
+    conn.exec(kContentSchema);
+    move_content_rows(conn);
     set_version(conn);
   });
 }
@@ -123,6 +141,10 @@ void configure_connection(sqlite::Connection& conn, bool writer) {
   conn.exec("PRAGMA mmap_size = 1073741824");
   // In WAL mode NORMAL loses no committed transaction when the process dies (only on power loss).
   if (writer) conn.exec("PRAGMA synchronous = NORMAL");
+  const int32_t version = pragma_int(conn, "PRAGMA user_version");
+  if (!writer && version >= 1 && version < 4 &&
+      pragma_int(conn, "PRAGMA application_id") == kStoreApplicationId)
+    view_content_rows(conn);
 }
 
 void create_schema(sqlite::Connection& conn) {
@@ -136,6 +158,7 @@ void create_schema(sqlite::Connection& conn) {
       conn.exec(kSchema);
       conn.exec(kFeaturesSchema);
       conn.exec(kIncompleteSchema);
+      conn.exec(kContentSchema);
       conn.exec(("PRAGMA application_id = " + std::to_string(kStoreApplicationId)).c_str());
       set_version(conn);
     });
@@ -151,8 +174,9 @@ void check_schema(sqlite::Connection& conn) {
   if (pragma_int(conn, "PRAGMA application_id") != kStoreApplicationId) not_a_store(conn);
   const int32_t version = pragma_int(conn, "PRAGMA user_version");
   if (version > kStoreSchemaVersion)
-    throw Error(conn.path() + " has store schema version " + std::to_string(version) +
-                "; this Maquette reads up to version " + std::to_string(kStoreSchemaVersion));
+    throw Error(conn.path() + " is a newer store (schema version " + std::to_string(version) +
+                "): this Maquette reads up to version " + std::to_string(kStoreSchemaVersion) +
+                "; use a newer Maquette");
 }
 
 }  // namespace maquette

@@ -184,6 +184,10 @@ class Store {
     // naming the layer and cell for another kind, a corrupt envelope, a cell finer than the
     // layer's level, or a layer that is not a content layer. The payload is not decoded.
     void put_content(const std::string& layer, CellId cell, std::string_view blob);
+    // Removes the content of `cell` (at the layer's level or coarser) if it has any, marking its
+    // parent stale as put_content does (a writer whose cell came out empty on a re-run). Throws
+    // as put_content for a layer that is not a content layer or a cell finer than its level.
+    void remove_content(const std::string& layer, CellId cell);
     // Writes (or replaces) the model `name`: creates the model layer if absent (with
     // `provenance`; a replaced model's layer takes the new one), all in commit()'s transaction.
     // `blob` is a mesh content envelope (content/content_blob.h) whose payload is a mesh GLB in
@@ -225,13 +229,12 @@ class Store {
   // Content overviews (built by content/content_overviews.h): writing a content layer's cell at
   // its level marks the parent stale, as tiles do. rebuild_stale_content takes up to `limit`
   // stale cells at `level` (ascending ids) and, in one write transaction, gives `build` each
-  // cell with the stored blobs of its four children (by child digit: base tiles or overviews
-  // one level finer); `build` fills `overviews` (one per cell, in parallel if it likes, without
-  // touching the store), and each cell's overview is written (or removed, when nullopt: its
-  // children hold nothing), its mark cleared and its parent marked stale. Returns the number of
-  // cells taken: fewer than `limit` when the level has no marks left. Throws naming the layer
-  // for a layer that is not a content layer, a level not below the layer's, or a blob of
-  // another kind than the layer's.
+  // cell with the stored blobs of its four children (by child digit, one level finer); `build`
+  // fills `overviews` (one per cell, in parallel if it likes, without touching the store), and each
+  // cell's overview is written (or removed, when nullopt: its children hold nothing), its mark
+  // cleared and its parent marked stale. Returns the number of cells taken: fewer than `limit` when
+  // the level has no marks left. Throws naming the layer for a layer that is not a content layer, a
+  // level not below the layer's, or a blob of another kind than the layer's.
   using ContentChildren = std::array<std::optional<std::string>, 4>;
   using BuildContentOverviews =
       std::function<void(std::span<const CellId> cells, std::span<const ContentChildren> children,

@@ -6,9 +6,11 @@
 // run in parallel (and decode outside any lock) while another thread commits.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -141,18 +143,43 @@ void write_feature(sqlite::Connection& conn, const FeatureWrite& write);
 // Store::stats of a features layer: indexed cells as tiles, bytes of features and cell lists.
 LayerStats feature_stats(sqlite::Connection& conn, const LayerEntry& layer);
 
-// A content blob checked against its layer and ready to write (content.cpp).
+// The blobs of content layers (by level and cell) and model layers (level 0, cell 0) in the
+// `content` table, each split into parts (content_rows.cpp), inside the caller's transaction.
+// write_content_blob writes (or replaces) one; delete_content_blob removes one (true if it was
+// there); read_content_blob gives one; read_content_blobs visits those of the cells with ids in
+// [first, last] at `level`, in ascending id order.
+void write_content_blob(sqlite::Connection& conn, int64_t layer, int level, int64_t cell,
+                        std::string_view blob);
+bool delete_content_blob(sqlite::Connection& conn, int64_t layer, int level, int64_t cell);
+std::optional<std::string> read_content_blob(sqlite::Connection& conn, int64_t layer, int level,
+                                             int64_t cell);
+void read_content_blobs(sqlite::Connection& conn, int64_t layer, int level, int64_t first,
+                        int64_t last,
+                        const std::function<void(int64_t cell, std::string&& blob)>& visit);
+// Schema version 4 (schema.cpp): moves the blobs of content and model layers from tiles and
+// overviews into `content`; view_content_rows gives a reader of an older store a temporary view
+// `content` of them where they are.
+void move_content_rows(sqlite::Connection& conn);
+void view_content_rows(sqlite::Connection& conn);
+
+// A content blob checked against its layer and ready to write, or a cell's content to remove
+// (content.cpp).
 struct ContentWrite {
   int64_t layer = 0;
   CellId cell;
-  bool coarser = false;  // above the layer's level: simplified content, kept in overviews
-  std::string blob;
+  bool coarser = false;             // above the layer's level: simplified content
+  std::optional<std::string> blob;  // nothing: remove the cell's content
 };
 // Throws maquette::Error naming the layer and cell unless the layer holds content of the blob's
-// kind, the envelope is sound and the cell is at the layer's level or coarser.
+// kind, the envelope is sound and the cell is at the layer's level or coarser (for a removal,
+// `blob` nothing: a content layer and such a cell).
 ContentWrite content_write(const LayerEntry& layer, const std::string& store_path, CellId cell,
-                           std::string_view blob);
-// Writes (or replaces) the blob: in tiles at the layer's level, in overviews at a coarser one.
+                           std::optional<std::string_view> blob);
+// Store::stats of a content or model layer: cells at the layer's level as tiles, every level's
+// bytes.
+LayerStats content_layer_stats(sqlite::Connection& conn, const LayerEntry& layer);
+// Writes (or replaces, or removes) the cell's content; a change at the layer's level marks the
+// parent stale.
 void write_content(sqlite::Connection& conn, const ContentWrite& write);
 
 // A model checked and ready to write (model.cpp).
@@ -169,6 +196,11 @@ ModelWrite model_write(const std::optional<LayerEntry>& existing, const std::str
 // Writes (or replaces) the model, creating its layer if absent, inside the caller's transaction;
 // throws as model_write if a layer of another kind took the name meanwhile.
 void write_model(sqlite::Connection& conn, const std::string& store_path, const ModelWrite& write);
+// The stored blobs of `cell`'s children by child digit, for raster and content overviews
+// (overviews.cpp): one level below `cell`, in tiles (at the layer's level) or overviews for a
+// raster layer, in the content table for a content layer.
+using ChildBlobs = Store::ContentChildren;
+ChildBlobs read_children(sqlite::Connection& conn, const LayerEntry& layer, CellId cell);
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
 // Writes (or replaces) the overview tile of `cell`, which is then no longer stale, and marks its

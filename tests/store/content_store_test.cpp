@@ -16,6 +16,7 @@ namespace maquette {
 namespace {
 
 using test::expect_error;
+using test::raw_int;
 using test::raw_sql;
 using test::TempDir;
 
@@ -49,24 +50,32 @@ InstancesContent trees(size_t n, uint32_t seed) {
   return c;
 }
 
-// Replaces the blob of `cell` in the tiles of `layer`, as a foreign program (or a disk fault)
-// would.
-void set_blob(const std::string& path, const std::string& layer, CellId cell,
-              const std::string& blob) {
+// Runs `sql` on a store file directly, ?1 bound to `blob`, ?2 to `cell`, ?3 to `layer`.
+void raw_blob_sql(const std::string& path, const char* sql, const std::string& blob, CellId cell,
+                  const std::string& layer) {
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
   sqlite3_stmt* q = nullptr;
-  sqlite3_prepare_v2(db,
-                     "UPDATE tiles SET blob = ?1 WHERE cell = ?2 AND "
-                     "layer = (SELECT id FROM layers WHERE name = ?3)",
-                     -1, &q, nullptr);
+  ASSERT_EQ(sqlite3_prepare_v2(db, sql, -1, &q, nullptr), SQLITE_OK) << sql;
   sqlite3_bind_blob(q, 1, blob.data(), int(blob.size()), SQLITE_TRANSIENT);
   sqlite3_bind_int64(q, 2, int64_t(cell.id()));
   sqlite3_bind_text(q, 3, layer.c_str(), -1, SQLITE_TRANSIENT);
   EXPECT_EQ(sqlite3_step(q), SQLITE_DONE);
-  EXPECT_EQ(sqlite3_changes(db), 1);
+  EXPECT_EQ(sqlite3_changes(db), 1) << sql;
   sqlite3_finalize(q);
   sqlite3_close(db);
+}
+
+// Replaces the blob of `cell` in the content of `layer` (schema version 4: its parts, here one
+// part holding it all), as a foreign program (or a disk fault) would.
+void set_blob(const std::string& path, const std::string& layer, CellId cell,
+              const std::string& blob) {
+  raw_sql(path, "DELETE FROM content WHERE part > 0 AND cell = " + std::to_string(cell.id()) +
+                    " AND layer = (SELECT id FROM layers WHERE name = '" + layer + "')");
+  raw_blob_sql(path,
+               "UPDATE content SET data = ?1 WHERE cell = ?2 AND part = 0 AND "
+               "layer = (SELECT id FROM layers WHERE name = ?3)",
+               blob, cell, layer);
 }
 
 // An envelope of `kind` whose payload is not an encoding at all: the store must not decode it.
@@ -195,6 +204,70 @@ TEST(StoreContent, ARewrittenCellHoldsTheNewBlob) {
   EXPECT_EQ(store->content_stats("trees").cells, 1);
 }
 
+// A blob of many parts replaced by a short one leaves none of its parts; removing a cell's content
+// leaves nothing of it and marks its parent stale, like a write; removing what is not there is no
+// change.
+TEST(StoreContent, RewrittenAndRemovedCellsLeaveNoParts) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  auto store = Store::open(path, Store::Mode::Create);
+  store->create_layer(content_layer("trees", LayerKind::Instances, 7));
+  const CellId a = cell("S0000000"), b = cell("S0000001"), parent = cell("S000000");
+  const std::string big = wrap_instances(trees(1000, 1)), small = wrap_instances(trees(2, 2));
+  ASSERT_GT(big.size(), 8 * small.size());
+  {
+    Store::Batch batch(*store);
+    batch.put_content("trees", a, big);
+    batch.put_content("trees", b, big);
+    batch.commit();
+  }
+  const auto rebuild =
+      [&] {  // the stale cells at level 6 with their children, as the builder sees them
+        std::vector<std::pair<CellId, Store::ContentChildren>> seen;
+        store->rebuild_stale_content(
+            "trees", 6, 64,
+            [&](std::span<const CellId> cells, std::span<const Store::ContentChildren> children,
+                std::span<std::optional<std::string>> overviews) {
+              for (size_t i = 0; i < cells.size(); ++i) {
+                seen.emplace_back(cells[i], children[i]);
+                for (const auto& child : children[i])
+                  if (child) overviews[i] = *child;  // any blob of the layer's kind will do
+              }
+            });
+        return seen;
+      };
+  ASSERT_EQ(rebuild().size(), 1u);
+  EXPECT_TRUE(store->get_content("trees", parent).has_value());
+  {
+    Store::Batch batch(*store);
+    batch.put_content("trees", a, small);
+    batch.remove_content("trees", b);
+    batch.remove_content("trees", cell("S0000002"));  // holds nothing: no change
+    batch.commit();
+  }
+  EXPECT_EQ(*store->get_content("trees", a), small);
+  EXPECT_FALSE(store->get_content("trees", b).has_value());
+  EXPECT_EQ(store->content_cells("trees"), std::vector<CellId>{a});
+  EXPECT_EQ(store->content_stats("trees").bytes,
+            int64_t(small.size()) + int64_t(store->get_content("trees", parent)->size()));
+  const auto seen = rebuild();
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_EQ(seen[0].first, parent);
+  EXPECT_EQ(seen[0].second[a.digit(7)], small);
+  EXPECT_FALSE(seen[0].second[b.digit(7)].has_value());
+  {
+    Store::Batch batch(*store);
+    batch.remove_content("trees", a);
+    batch.commit();
+  }
+  EXPECT_EQ(rebuild().size(), 1u);  // its parent was marked: its overview goes
+  EXPECT_TRUE(store->content_cells("trees", 6).empty());
+  EXPECT_EQ(store->content_stats("trees").bytes, 0);
+  EXPECT_EQ(raw_int(path, "SELECT count(*) FROM content"), 0);
+  expect_error([&] { Store::Batch(*store).remove_content("trees", cell("S00000000")); },
+               {"cannot remove content of layer 'trees'", "S00000000", "level 7"});
+}
+
 TEST(StoreContent, StatsComeFromTheHeadersWithoutDecoding) {
   TempDir dir;
   const std::string path = dir.file("s.mqs");
@@ -235,8 +308,9 @@ TEST(StoreContent, StatsComeFromTheHeadersWithoutDecoding) {
                {"corrupt content blob", "layer 'buildings'", "R012301231", path, "no MQCT magic"});
   expect_error([&] { store->get_content("buildings", b); },
                {"corrupt content blob", "layer 'buildings'", "R012301231", "no MQCT magic"});
-  raw_sql(path,
-          "UPDATE tiles SET blob = substr(blob, 1, 70) WHERE cell = " + std::to_string(a.id()));
+  raw_sql(path, "DELETE FROM content WHERE part > 0 AND cell = " + std::to_string(a.id()) +
+                    "; UPDATE content SET data = substr(data, 1, 70) WHERE cell = " +
+                    std::to_string(a.id()));
   expect_error([&] { store->get_content("buildings", cell("R012301230")); },
                {"header says 200000 payload bytes, the blob holds 6"});
 }
@@ -307,6 +381,86 @@ TEST(StoreContent, WrongKindsAreRefusedAndNothingIsStored) {
            [&] { store->get_content("trees", a); }, [&] { store->content_stats("trees"); }})
     expect_error(read, {"corrupt content blob (layer 'trees', cell Q0120120, in " + path,
                         "it holds volume content, the layer instances"});
+}
+
+// A store of schema version 3 (content and model blobs in tiles and overviews; made here from a
+// new store's layers with raw SQL) is read as it is by a read-only open, which leaves it version
+// 3, and upgraded to version 4 when opened for writing: the same blobs, now in parts of the
+// content table, none left in tiles and overviews, raster tiles untouched.
+TEST(StoreContent, Version3StoresAreReadAndUpgradedWhenOpenedForWriting) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  const CellId a = cell("N0123012"), coarse = cell("N012301");
+  const std::string base = wrap_instances(trees(400, 1)), overview = wrap_instances(trees(100, 2));
+  const std::string model = wrap_content(ContentEnvelope{}, std::string(5000, 'g'));  // a mesh
+  {
+    auto store = Store::open(path, Store::Mode::Create);
+    store->create_layer(content_layer("trees", LayerKind::Instances, 7));
+    LayerInfo dem;
+    dem.name = "dem";
+    dem.tile_size = 2;
+    dem.level = 7;
+    store->create_layer(dem);
+    store->put_tile("dem", a, test::raw_tile<float>(2, 1, {1, 2, 3, 4}));
+    Store::Batch batch(*store);
+    batch.put_model("oak", model);  // its layer row is kept, its blob goes with the table
+    batch.commit();
+  }
+  raw_sql(path, "DROP TABLE content; PRAGMA user_version = 3");
+  raw_blob_sql(path,
+               "INSERT INTO tiles(layer, cell, blob) SELECT id, ?2, ?1 FROM layers WHERE name = ?3",
+               base, a, "trees");
+  raw_blob_sql(path,
+               "INSERT INTO overviews(layer, level, cell, blob) SELECT id, 6, ?2, ?1 FROM layers "
+               "WHERE name = ?3",
+               overview, coarse, "trees");
+  raw_blob_sql(path,
+               "INSERT INTO tiles(layer, cell, blob) SELECT id, ?2, ?1 FROM layers WHERE name = ?3",
+               model, CellId(0), "oak");
+
+  const auto check = [&](const Store& store) {
+    EXPECT_EQ(store.get_content("trees", a), base);
+    EXPECT_EQ(store.get_content("trees", coarse), overview);
+    EXPECT_EQ(store.content_cells("trees"), std::vector<CellId>{a});
+    EXPECT_EQ(store.content_cells("trees", 6), std::vector<CellId>{coarse});
+    EXPECT_EQ(store.content_stats("trees").content.objects, 400u);
+    EXPECT_EQ(store.content_stats("trees").bytes, int64_t(base.size() + overview.size()));
+    EXPECT_EQ(store.stats("trees").levels, (std::vector<int>{6, 7}));
+    EXPECT_EQ(store.stats("oak").tile_count, 1);
+    EXPECT_EQ(store.get_model("oak"), model);
+    EXPECT_EQ(test::values_of<float>(*store.get_tile("dem", a)), (std::vector<float>{1, 2, 3, 4}));
+  };
+  check(*Store::open(path, Store::Mode::ReadOnly));
+  EXPECT_EQ(raw_int(path, "PRAGMA user_version"), 3);  // reading changes nothing
+  {
+    const auto store = Store::open(path, Store::Mode::ReadWrite);
+    EXPECT_TRUE(store->integrity_ok());
+    check(*store);
+  }
+  EXPECT_EQ(raw_int(path, "PRAGMA user_version"), 4);
+  EXPECT_EQ(raw_int(path, "SELECT count(*) FROM tiles"), 1);  // the dem's tile alone
+  EXPECT_EQ(raw_int(path, "SELECT count(*) FROM overviews"), 0);
+  EXPECT_GT(raw_int(path, "SELECT count(*) FROM content WHERE part > 0"), 2);  // in parts now
+  check(*Store::open(path, Store::Mode::ReadOnly));
+}
+
+// Version 4 came with model layers: a store holding one is version 4, so a Maquette that reads
+// up to version 3 refuses it as a newer store before it meets the layer kind it does not know,
+// as this one refuses a store of version 5.
+TEST(StoreContent, StoresWithModelsAreVersion4AndNewerOnesAreRefused) {
+  TempDir dir;
+  const std::string path = dir.file("s.mqs");
+  {
+    auto store = Store::open(path, Store::Mode::Create);
+    Store::Batch batch(*store);
+    batch.put_model("oak", wrap_content(ContentEnvelope{}, "glb"));
+    batch.commit();
+  }
+  EXPECT_EQ(raw_int(path, "PRAGMA user_version"), 4);
+  raw_sql(path, "PRAGMA user_version = 5");
+  for (const auto mode : {Store::Mode::ReadOnly, Store::Mode::ReadWrite})
+    expect_error([&] { Store::open(path, mode); },
+                 {path, "is a newer store (schema version 5)", "reads up to version 4"});
 }
 
 }  // namespace

@@ -145,7 +145,8 @@ TEST(ModelStore, ADamagedModelBlobIsNamed) {
     expect_error([&] { store->model_stats("rock"); }, {"model 'rock'", "its payload: not a GLB"});
   }
   raw_sql(path,
-          "UPDATE tiles SET blob = x'4d514354' WHERE layer = "
+          "DELETE FROM content WHERE part > 0 AND layer = (SELECT id FROM layers WHERE name = "
+          "'oak'); UPDATE content SET data = x'4d514354' WHERE layer = "
           "(SELECT id FROM layers WHERE name = 'oak')");
   auto store = Store::open(path, Store::Mode::ReadOnly);
   expect_error([&] { store->get_model("oak"); }, {"model 'oak'", path, "corrupt content blob"});

@@ -80,4 +80,16 @@ inline void raw_sql(const std::string& path, const std::string& sql) {
   sqlite3_close(db);
 }
 
+// The integer the first row of a query gives, read from a store file directly (0 without a row).
+inline int64_t raw_int(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* q = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &q, nullptr), SQLITE_OK) << sql;
+  const int64_t v = sqlite3_step(q) == SQLITE_ROW ? sqlite3_column_int64(q, 0) : 0;
+  sqlite3_finalize(q);
+  sqlite3_close(db);
+  return v;
+}
+
 }  // namespace maquette::test
