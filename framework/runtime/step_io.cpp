@@ -111,8 +111,15 @@ void StepIO::write(std::span<const CellOutput> cells) {
                     "-pixel tile of " + std::to_string(layer.channels) + " channel(s)");
       batch.put_tile(layer.name, cell, from_tile(tile, layer.dtype, nodata_ptr(layer)));
     }
-    for (const ContentBlob& c : content)
-      batch.put_content(plan_.outputs.at(c.port).name, cell, c.blob);
+    for (const auto& [port, layer] : plan_.outputs) {
+      if (!layer_content_kind(layer.kind)) continue;
+      // A port the operator left empty removes what an earlier run wrote there.
+      const auto blob = std::ranges::find(content, port, &ContentBlob::port);
+      if (blob == content.end())
+        batch.remove_content(layer.name, cell);
+      else
+        batch.put_content(layer.name, cell, blob->blob);
+    }
     batch.mark_done(run_id_, plan_.step->index, cell);
   }
   batch.commit();

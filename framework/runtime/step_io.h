@@ -56,7 +56,8 @@ class StepIO {
   // The cell's content checked and encoded (content_output.h), for write().
   std::vector<ContentBlob> encode_content(CellId cell, const CellContent& content) const;
 
-  // One batch: the output tiles and content of all `cells` and their run records.
+  // One batch: the output tiles and content of all `cells` and their run records. A mapped
+  // content output without a blob (the operator left it empty) removes the cell's content there.
   void write(std::span<const CellOutput> cells);
   // One batch: the run records of all `cells` (a task's, a reduce's with its artifact).
   void write_done(std::span<const CellId> cells, const Artifact* artifact = nullptr);

@@ -12,6 +12,8 @@
 // only for the features the cell owns (CellContext::owns of the anchor).
 // An attribute "fault" breaks an object to test the runner's checks: "outside" moves it 50 km
 // east (its anchor out of the cell), "nan" makes its first coordinate NaN.
+// Both leave out the features whose "height" is below params.min_height (default 0: none), so a
+// re-run can empty cells.
 //   fixture.content          cell operator (params.sleep_ms: a pause per cell, for kill tests);
 //   fixture.region_content   region operator, each object in the content of the cell owning it,
 //                            with fixture.content's provenance (the same objects, the same blobs).
@@ -57,10 +59,11 @@ OperatorSpec content_spec(const std::string& name, maquette::OperatorKind kind) 
   in.kind = LayerKind::Features;
   in.reach_m = kFixtureReachM;
   s.inputs.push_back(in);
-  s.params_schema = {
-      {"type", "object"},
-      {"properties", {{"sleep_ms", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}}},
-      {"additionalProperties", false}};
+  s.params_schema = {{"type", "object"},
+                     {"properties",
+                      {{"sleep_ms", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}},
+                       {"min_height", {{"type", "number"}, {"default", 0}}}}},
+                     {"additionalProperties", false}};
   s.outputs.push_back(content_port("mesh", LayerKind::Mesh));
   s.outputs.push_back(content_port("trees", LayerKind::Instances));
   s.outputs.push_back(content_port("volume", LayerKind::Volume));
@@ -140,8 +143,10 @@ LonLat anchor(const VectorFeature& f) {
   return {p.lon, p.lat};
 }
 
-bool has_object(const VectorFeature& f) {
-  return f.geometry.type == GeometryType::Polygon || f.geometry.type == GeometryType::Point;
+// A polygon or point at least params.min_height high.
+bool has_object(const VectorFeature& f, const nlohmann::json& params) {
+  return (f.geometry.type == GeometryType::Polygon || f.geometry.type == GeometryType::Point) &&
+         attribute(f, "height", 10.0) >= params.at("min_height").get<double>();
 }
 
 class Content : public maquette::CellOperator {
@@ -153,7 +158,8 @@ class Content : public maquette::CellOperator {
   void run(const maquette::CellContext& ctx, maquette::CellData& data) const override {
     std::this_thread::sleep_for(std::chrono::milliseconds(ctx.params->at("sleep_ms").get<int>()));
     for (const VectorFeature* f : data.features_of("strokes"))
-      if (has_object(*f) && ctx.owns(anchor(*f))) add_object(*f, spec().name, data.content);
+      if (has_object(*f, *ctx.params) && ctx.owns(anchor(*f)))
+        add_object(*f, spec().name, data.content);
   }
 };
 
@@ -169,7 +175,7 @@ class RegionContent : public maquette::RegionOperator {
     if (output.content.empty()) return;
     const int level = output.content.begin()->first.level();
     for (const VectorFeature* f : input.features.at("strokes")) {
-      if (!has_object(*f)) continue;
+      if (!has_object(*f, *ctx.params)) continue;
       const auto owner = output.content.find(ctx.grid->cell_from_point(anchor(*f), level));
       // The tool of fixture.content: the same objects, so that the tests compare the blobs.
       if (owner != output.content.end()) add_object(*f, "fixture.content", owner->second);

@@ -321,6 +321,71 @@ TEST(ContentOutput, StoredContentMatchesAnIndependentComputation) {
   EXPECT_GT(across, 0u);
 }
 
+// A re-run whose parameters empty cells (fixture params.min_height 25: no tree, the lower
+// buildings gone) removes what the first run wrote in them, in every content layer and at the
+// coarser levels: the store then holds what a first run with those parameters writes.
+TEST(ContentOutput, ReRunThatEmptiesCellsRemovesTheirContent) {
+  constexpr double kMinHeight = 25;  // trees are 3-22 m, buildings 5-44 m
+  const Strokes strokes = make_strokes();
+  StoreDir s;
+  ingest(s, strokes);
+  ASSERT_EQ(run(s, content_step(), "--threads 1").exit_code, 0);
+  const auto cells = [&](const char* layer, int level) {
+    const auto store = Store::open(s.store, Store::Mode::ReadOnly);
+    const auto list = store->content_cells(layer, level);
+    return std::set<CellId>(list.begin(), list.end());
+  };
+  const std::set<CellId> first_prisms = cells("prisms", kLevel);
+  std::set<int> built;  // the levels the runner built overviews at
+  for (int level = 0; level < kLevel; ++level)
+    if (!cells("prisms", level).empty()) built.insert(level);
+  ASSERT_TRUE(built.count(kLevel - 1));
+  ASSERT_FALSE(cells("trees", kLevel).empty());
+  ASSERT_FALSE(cells("spheres", kLevel - 1).empty());
+
+  json step = content_step();
+  step["params"] = {{"min_height", kMinHeight}};
+  const CliResult r = run(s, step, "--threads 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  // The buildings of at least kMinHeight, in their owner cells; every other cell emptied.
+  const std::set<CellId> region = region_cells();
+  std::map<CellId, size_t> expected;
+  for (const Feature& f : strokes.features)
+    if (const CellId owner = default_grid().cell_from_point(f.corners.front(), kLevel);
+        f.polygon && f.height >= kMinHeight && region.count(owner))
+      ++expected[owner];
+  std::set<CellId> expected_cells;
+  for (const auto& [cell, n] : expected) expected_cells.insert(cell);
+  ASSERT_FALSE(expected_cells.empty());
+  ASSERT_LT(expected_cells.size(), first_prisms.size()) << "the re-run should empty some cells";
+  EXPECT_EQ(cells("prisms", kLevel), expected_cells);
+  {
+    const auto store = Store::open(s.store, Store::Mode::ReadOnly);
+    for (const auto& [cell, n] : expected) {
+      const std::string blob = *store->get_content("prisms", cell);
+      const MeshContent mesh = decode_mesh_glb(
+          content_payload(blob), read_content_envelope(blob, "prisms").origin, "prisms");
+      EXPECT_EQ(mesh.objects.size(), n) << cell.ToText();
+      for (const MeshObject& o : mesh.objects)
+        EXPECT_GE(o.provenance.attributes.at("height").get<double>(), kMinHeight);
+    }
+  }
+  for (int level = kLevel; level >= 0; --level) {
+    SCOPED_TRACE("level " + std::to_string(level));
+    std::set<CellId> parents;
+    if (built.count(level))
+      for (const CellId cell : expected_cells) parents.insert(cell.parent(level));
+    EXPECT_EQ(cells("prisms", level), level < kLevel ? parents : expected_cells);
+    EXPECT_TRUE(cells("trees", level).empty());
+    EXPECT_TRUE(cells("spheres", level).empty());
+  }
+  StoreDir fresh;
+  ingest(fresh, strokes);
+  ASSERT_EQ(run(fresh, step, "--threads 1").exit_code, 0);
+  EXPECT_EQ(test::first_difference(test::snapshot(s.store), test::snapshot(fresh.store)), "");
+}
+
 TEST(ContentOutput, ThreadsRanksAndRegionOperatorsGiveTheSameBits) {
   const Strokes strokes = make_strokes();
   StoreDir one;
