@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "content/prototypes.h"
 #include "core/error.h"
 #include "core/region.h"
 #include "plugins/mesh_export.h"
@@ -85,6 +86,11 @@ void ingest_model(const IngestJob& o) {
         "--as model takes none of --level, --bbox, --region, --bands, --vertical-datum: a model "
         "is in its own frame");
   const std::string& file = o.sources.front();
+  // Instances name their prototypes: a model called like a built-in one would be mistaken for it.
+  if (o.raster.layer.starts_with(kBuiltinPrototypePrefix))
+    throw Error(file + ": cannot ingest a model as layer '" + o.raster.layer +
+                "': names beginning '" + std::string(kBuiltinPrototypePrefix) +
+                "' are the built-in prototypes");
   Store::check_writable(o.store);
   std::string blob;
   plugin_function<decltype(maquette_mesh_model)>(kMeshPlugin, kModelIngestEntry)(file, blob);

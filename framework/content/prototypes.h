@@ -30,4 +30,7 @@ MeshContent make_builtin_prototype(std::string_view name);
 // "builtin:conifer", "builtin:broadleaf", "builtin:shrub".
 const std::vector<std::string>& builtin_prototype_names();
 
+// The names of built-in prototypes begin so; no model layer may (maquette ingest --as model).
+inline constexpr std::string_view kBuiltinPrototypePrefix = "builtin:";
+
 }  // namespace maquette

@@ -207,6 +207,28 @@ TEST(ModelIngest, BadModelsAreNamedAndStoreNothing) {
   EXPECT_FALSE(std::filesystem::exists(fresh));
 }
 
+// Instances name their prototypes: a model layer named like a built-in prototype (or in their
+// namespace) is refused before the file is read, naming the file and the name; nothing is
+// stored, and no store is created.
+TEST(ModelIngest, BuiltinNamesAreRefused) {
+  const std::string dir = temp_dir(), store_path = dir + "/town.mqs";
+  const std::string file = write_external(box_model(kOchre), dir, "box");
+  ASSERT_EQ(ingest_model(store_path, "box", file).exit_code, 0);
+  const Snapshot before = snapshot(store_path);
+  for (const std::string layer : {"builtin:conifer", "builtin:oak"}) {
+    const CliResult r = ingest_model(store_path, layer, file);
+    EXPECT_NE(r.exit_code, 0) << layer;
+    EXPECT_NE(r.err.find(file + ": cannot ingest a model as layer '" + layer + "'"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("built-in prototypes"), std::string::npos) << r.err;
+    EXPECT_EQ(snapshot(store_path), before) << layer;
+  }
+  const std::string fresh = dir + "/fresh.mqs";
+  EXPECT_NE(ingest_model(fresh, "builtin:shrub", file).exit_code, 0);
+  EXPECT_FALSE(std::filesystem::exists(fresh));
+}
+
 TEST(ModelIngest, ALayerOfAnotherKindIsNotReplaced) {
   const std::string dir = temp_dir(), store_path = dir + "/town.mqs";
   {
