@@ -50,6 +50,15 @@ InstancesContent trees(size_t n, uint32_t seed) {
   return c;
 }
 
+// A raster layer "dem" at level 7, beside the content layers.
+LayerInfo dem_layer(int tile_size) {
+  LayerInfo dem;
+  dem.name = "dem";
+  dem.tile_size = tile_size;
+  dem.level = 7;
+  return dem;
+}
+
 // Runs `sql` on a store file directly, ?1 bound to `blob`, ?2 to `cell`, ?3 to `layer`.
 void raw_blob_sql(const std::string& path, const char* sql, const std::string& blob, CellId cell,
                   const std::string& layer) {
@@ -320,11 +329,7 @@ TEST(StoreContent, WrongKindsAreRefusedAndNothingIsStored) {
   const std::string path = dir.file("s.mqs");
   auto store = Store::open(path, Store::Mode::Create);
   store->create_layer(content_layer("trees", LayerKind::Instances, 7));
-  LayerInfo dem;
-  dem.name = "dem";
-  dem.tile_size = 16;
-  dem.level = 7;
-  store->create_layer(dem);
+  store->create_layer(dem_layer(16));
   const CellId a = cell("Q0120120"), b = cell("Q0120121");
   const std::string good = wrap_instances(trees(4, 9));
   const int64_t run = store->begin_run({{"step", "trees"}});
@@ -396,11 +401,7 @@ TEST(StoreContent, Version3StoresAreReadAndUpgradedWhenOpenedForWriting) {
   {
     auto store = Store::open(path, Store::Mode::Create);
     store->create_layer(content_layer("trees", LayerKind::Instances, 7));
-    LayerInfo dem;
-    dem.name = "dem";
-    dem.tile_size = 2;
-    dem.level = 7;
-    store->create_layer(dem);
+    store->create_layer(dem_layer(2));
     store->put_tile("dem", a, test::raw_tile<float>(2, 1, {1, 2, 3, 4}));
     Store::Batch batch(*store);
     batch.put_model("oak", model);  // its layer row is kept, its blob goes with the table
