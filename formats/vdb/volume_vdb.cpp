@@ -73,6 +73,20 @@ openvdb::GridPtrVec decode_volume(const VolumeContent& volume, const std::string
   return grids ? *grids : openvdb::GridPtrVec{};
 }
 
+std::vector<std::optional<std::array<double, 3>>> volume_anchors(const openvdb::GridPtrVec& grids) {
+  std::vector<std::optional<std::array<double, 3>>> anchors;
+  for (const auto& grid : grids) {
+    const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
+    if (grid->activeVoxelCount() == 0 || box.empty()) {
+      anchors.emplace_back();
+      continue;
+    }
+    const openvdb::Vec3d centre = grid->indexToWorld(box.getCenter());
+    anchors.push_back(std::array<double, 3>{centre.x(), centre.y(), centre.z()});
+  }
+  return anchors;
+}
+
 ContentStats volume_stats(const openvdb::GridPtrVec& grids) {
   ContentStats stats;
   stats.objects = grids.size();

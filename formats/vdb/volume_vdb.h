@@ -6,7 +6,10 @@
 
 #include <openvdb/openvdb.h>
 
+#include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "content/content.h"
 
@@ -35,5 +38,10 @@ openvdb::GridPtrVec decode_volume(const VolumeContent& volume, const std::string
 // What `maquette info` counts: grids as objects, their active voxels (active tiles counted
 // voxel by voxel); no triangles.
 ContentStats volume_stats(const openvdb::GridPtrVec& grids);
+
+// Each grid's anchor (content/content.h): the centre of the bounding box of its active voxels,
+// in the volume's frame (metres, through the grid's transform), or nothing for a grid without
+// active voxels.
+std::vector<std::optional<std::array<double, 3>>> volume_anchors(const openvdb::GridPtrVec& grids);
 
 }  // namespace maquette

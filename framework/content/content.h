@@ -4,7 +4,8 @@
 // anywhere on the globe (1 cm at 10 km from the origin is 2^-20 relative: float32 has 2^-24).
 //
 // An object belongs to exactly one cell at its layer's level: the cell holding its anchor (a
-// mesh object's first vertex, an instance's position), whatever it overlaps; the cell's tile
+// mesh object's first vertex, an instance's position, a volume grid's centre: the centre of the
+// bounding box of its active voxels), whatever it overlaps; the cell's tile
 // then has a bounding volume grown to hold it. Coarser levels hold simplified content
 // (content_overviews.h).
 //

@@ -16,6 +16,11 @@ void maquette_vdb_stats(const maquette::VolumeContent& volume, const std::string
   stats = maquette::volume_stats(maquette::decode_volume(volume, where));
 }
 
+void maquette_vdb_anchors(const maquette::VolumeContent& volume, const std::string& where,
+                          std::vector<std::optional<std::array<double, 3>>>& anchors) {
+  anchors = maquette::volume_anchors(maquette::decode_volume(volume, where));
+}
+
 void maquette_vdb_overview(const std::vector<std::string>& children,
                            const maquette::ContentLevel& level, const std::string& where,
                            std::optional<std::string>& overview) {

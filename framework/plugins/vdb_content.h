@@ -3,6 +3,7 @@
 // other command loads OpenVDB.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ namespace maquette {
 inline constexpr const char* kVdbPlugin = "libmaquette_vdb.so";
 inline constexpr const char* kVdbMeshEntry = "maquette_vdb_mesh";
 inline constexpr const char* kVdbStatsEntry = "maquette_vdb_stats";
+inline constexpr const char* kVdbAnchorsEntry = "maquette_vdb_anchors";
 inline constexpr const char* kVdbOverviewEntry = "maquette_vdb_overview";
 
 }  // namespace maquette
@@ -28,6 +30,10 @@ extern "C" void maquette_vdb_mesh(const maquette::VolumeContent& volume,
 // volume_stats (vdb/volume_vdb.h) of the decoded volume into `stats`.
 extern "C" void maquette_vdb_stats(const maquette::VolumeContent& volume, const std::string& where,
                                    maquette::ContentStats& stats);
+// volume_anchors (vdb/volume_vdb.h) of the decoded volume into `anchors`, by grid.
+extern "C" void maquette_vdb_anchors(const maquette::VolumeContent& volume,
+                                     const std::string& where,
+                                     std::vector<std::optional<std::array<double, 3>>>& anchors);
 // A ContentOverviewBuilder (content/content_overviews.h): the children's volume blobs merged and
 // resampled (vdb/volume_coarsen.h), encoded in the envelope of level.origin (grids and active
 // voxels counted); nullopt when no grid is left.

@@ -131,7 +131,21 @@ std::string instances_blob(const InstancesContent& c, CellId cell, const Grid& g
   return wrap_instances(c);
 }
 
-std::string volume_blob(const VolumeContent& c) {
+// Each grid's anchor (the centre of its active voxels' bounding box) in the cell.
+void check_volume_anchors(const VolumeContent& c, CellId cell, const Grid& grid) {
+  static auto* const anchors_of =
+      plugin_function<decltype(maquette_vdb_anchors)>(kVdbPlugin, kVdbAnchorsEntry);
+  std::vector<std::optional<std::array<double, 3>>> anchors;
+  anchors_of(c, "volume", anchors);
+  for (size_t i = 0; i < anchors.size(); ++i)
+    if (const auto& a = anchors[i]) {
+      const float xyz[3] = {float((*a)[0]), float((*a)[1]), float((*a)[2])};
+      check_anchor(c.origin, xyz, cell, grid, "volume grid " + std::to_string(i));
+    }
+}
+
+std::string volume_blob(const VolumeContent& c, CellId cell, const Grid& grid) {
+  check_volume_anchors(c, cell, grid);
   static auto* const stats_of =
       plugin_function<decltype(maquette_vdb_stats)>(kVdbPlugin, kVdbStatsEntry);
   ContentEnvelope envelope;
@@ -174,7 +188,7 @@ std::vector<ContentBlob> encode_cell_content(const CellContent& content, CellId 
   encode_port(content.volumes, blobs, [&](const VolumeContent& c) {
     if (c.vdb.empty()) return std::string();
     origin_ok(c);
-    return volume_blob(c);
+    return volume_blob(c, cell, grid);
   });
   return blobs;
 }

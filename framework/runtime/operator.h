@@ -129,7 +129,9 @@ inline constexpr double kAnchorToleranceM = 0.01;
 // - a finite origin on the globe (lon in [-180, 180], lat in [-90, 90]);
 // - instances: content/instances_codec.h's check_instances, finite positions, prototypes
 //   "builtin:conifer|broadleaf|shrub" (content/prototypes.h) or a model layer of the store;
-// - volumes: a VDB stream the volume plug-in reads (vdb/volume_vdb.h).
+// - volumes: a VDB stream the volume plug-in reads (vdb/volume_vdb.h), each grid's anchor (the
+//   centre of its active voxels' bounding box, vdb/volume_vdb.h's volume_anchors) in the cell
+//   as above (a grid without active voxels has none).
 // Meshes are stored as formats/gltf/mesh_glb.h's GLB (positions quantized to at most 1 mm),
 // instances losslessly (instances_codec.h), volumes as given.
 struct CellContent {

@@ -11,7 +11,8 @@
 // each with provenance (object id = feature id, the feature id, the tool, the attributes), and
 // only for the features the cell owns (CellContext::owns of the anchor).
 // An attribute "fault" breaks an object to test the runner's checks: "outside" moves it 50 km
-// east (its anchor out of the cell), "nan" makes its first coordinate NaN.
+// east (its anchor out of the cell), "nan" makes its first coordinate NaN, "volume_outside" (a
+// point) makes the cell's sphere at it, 50 km east.
 // Both leave out the features whose "height" is below params.min_height (default 0: none), so a
 // re-run can empty cells.
 //   fixture.content          cell operator (params.sleep_ms: a pause per cell, for kill tests);
@@ -126,10 +127,12 @@ void add_object(const VectorFeature& f, const std::string& tool, CellContent& co
     trees.scale.insert(trees.scale.end(), {float(height), float(height), float(height)});
     trees.colour.push_back(attribute(f, "colour", uint32_t(0xff00ff00)));
     trees.provenance.push_back(provenance(f, tool));
-    if (content.wants("volume") && content.volume("volume").vdb.empty()) {
+    if (content.wants("volume") &&
+        (content.volume("volume").vdb.empty() || fault == "volume_outside")) {
       maquette::VolumeContent& volume = content.volume("volume");
+      const double volume_shift = fault == "volume_outside" ? kFaultShiftM : 0;
       const auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
-          float(kSphereRadiusM), openvdb::Vec3f(float(x), float(y), float(z)),
+          float(kSphereRadiusM), openvdb::Vec3f(float(x + volume_shift), float(y), float(z)),
           float(kSphereVoxelM));
       volume = maquette::encode_volume({sphere}, volume.origin);
     }

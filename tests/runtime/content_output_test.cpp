@@ -490,6 +490,9 @@ TEST(ContentOutput, FaultsNameStepCellPortAndFeature) {
       {{{"properties", {{"fault", "nan"}}}},
        "outputs.trees: instance ",
        " (feature 81): position (nan, "},
+      {{{"properties", {{"fault", "volume_outside"}}}},
+       "outputs.volume: volume grid ",
+       "0: its anchor at lon 10.6"},
       {{{"properties", {{"prototype", "builtin:palm"}}}},
        "outputs.trees: instance ",
        " (feature 81): unknown prototype 'builtin:palm' (known: builtin:conifer, "
