@@ -1,6 +1,6 @@
 // Where the vertices of a subdivided height field are on the finer grids: at level k the grid has
 // 2^k (columns - 1) + 1 by 2^k (rows - 1) + 1 nodes, (column, row) at x = column * spacing_x / 2^k,
-// y = row * spacing_y / 2^k. Loop subdivision keeps inner vertices there (its masks reproduce
+// y = -row * spacing_y / 2^k. Loop subdivision keeps inner vertices there (its masks reproduce
 // linear functions) but pulls those near the height field's corners inwards (the border curve
 // turns there), so the node of a vertex comes from the subdivision's topology, not its position:
 // a height map per level is then z of the vertices at their nodes.

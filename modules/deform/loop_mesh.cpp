@@ -33,7 +33,7 @@ TriangleMesh height_field_mesh(const RegularHeightField& field) {
                                     std::to_string(c) + ", row " + std::to_string(r) +
                                     ") is not finite");
       }
-      mesh.vertices.row(v) << c * field.spacing_x, r * field.spacing_y, z;
+      mesh.vertices.row(v) << c * field.spacing_x, -r * field.spacing_y, z;
     }
   }
   mesh.triangles.reserve(2 * static_cast<std::size_t>(field.columns - 1) * (field.rows - 1));
@@ -43,8 +43,8 @@ TriangleMesh height_field_mesh(const RegularHeightField& field) {
       const int v10 = v00 + 1;
       const int v01 = v00 + field.columns;
       const int v11 = v01 + 1;
-      mesh.triangles.push_back({v00, v10, v11});
-      mesh.triangles.push_back({v00, v11, v01});
+      mesh.triangles.push_back({v00, v11, v10});
+      mesh.triangles.push_back({v00, v01, v11});
     }
   }
   return mesh;

@@ -19,9 +19,9 @@ struct TriangleMesh {
 // rows, since a constraint on the fine surface combines rows (paper 002, Eq. 4).
 using SubdivisionMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-// Heights sampled on a regular grid: sample (column c, row r) is at x = c * spacing_x,
-// y = r * spacing_y, z = heights[r * columns + c]. Rows go towards +y: a north-up raster (row 0
-// at the north) is passed with its rows in reverse order.
+// Heights sampled on a regular grid in raster order: sample (column c, row r) is at
+// x = c * spacing_x, y = -r * spacing_y, z = heights[r * columns + c]. Rows go towards -y (south
+// on a north-up raster, row 0 at the north), as the operator's HeightField (height_field.h).
 struct RegularHeightField {
   int columns = 0;
   int rows = 0;
@@ -31,8 +31,9 @@ struct RegularHeightField {
 };
 
 // The height field as a triangle mesh: vertex r * columns + c per sample; each square of samples
-// (c, r)-(c+1, r+1) split along its diagonal from (c, r) to (c+1, r+1) into the triangles
-// {(c, r), (c+1, r), (c+1, r+1)} and {(c, r), (c+1, r+1), (c, r+1)}, square by square in row-major
+// (c, r)-(c+1, r+1) split along its diagonal from (c, r) to (c+1, r+1) (the operator's rule,
+// height_field.h) into the triangles {(c, r), (c+1, r+1), (c+1, r)} and {(c, r), (c, r+1),
+// (c+1, r+1)}, counter-clockwise seen from +z, square by square in row-major
 // order (triangle 2 * (r * (columns - 1) + c) and the next one). The diagonal is the same in every
 // square, so the mesh has valence 6 inside and the subdivision treats the grid the same everywhere.
 // Preconditions: columns >= 2, rows >= 2, spacings > 0, heights.size() == columns * rows, finite

@@ -102,10 +102,12 @@ Feature one_km_feature(const RegularHeightField& field, double band,
                        std::optional<Eigen::Vector2d> centre = std::nullopt) {
   Feature feature{height_field_mesh(field), {}};
   const Eigen::Vector2d middle = centre.value_or(Eigen::Vector2d(
-      0.5 * (field.columns - 1) * field.spacing_x, 0.5 * (field.rows - 1) * field.spacing_y));
+      0.5 * (field.columns - 1) * field.spacing_x, -0.5 * (field.rows - 1) * field.spacing_y));
   const Eigen::Vector2d half(0.5 * 1000.0 * std::cos(0.4), 0.5 * 1000.0 * std::sin(0.4));
   const std::vector<Eigen::Vector2d> line{middle - half, middle + half};
   feature.marked = triangles_near_polyline(feature.base, line, band);
+  // A feature off the region would leave every comparison trivially true.
+  EXPECT_GT(std::count(feature.marked.begin(), feature.marked.end(), true), 100);
   return feature;
 }
 
@@ -171,9 +173,9 @@ TEST(AdaptiveLoop, ConformingAndEqualToUniformAcrossTheBorder) {
   // The feature leaves the region through its west side, then through its south-west corner
   // (border masks, and the corner's vertices pulled off the grid, in the refined zone).
   expect_conforming_and_equal_to_uniform(
-      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(100.0, 600.0)), 51, 41);
+      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(100.0, -600.0)), 51, 41);
   expect_conforming_and_equal_to_uniform(
-      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(0.0, 1.0)), 51, 41);
+      one_km_feature(rolling_terrain(51, 41, 30.0), 40.0, Eigen::Vector2d(0.0, -1199.0)), 51, 41);
 }
 
 TEST(AdaptiveLoop, OneKilometreFeatureOnTenKilometresKeepsFewTriangles) {

@@ -37,7 +37,7 @@ double sampled_distance(const TriangleMesh& mesh, const std::array<int, 3>& tria
 TEST(TrianglesNearPolyline, AgreesWithSampledDistance) {
   RegularHeightField field{9, 8, 10.0, 12.0, std::vector<double>(72, 100.0)};
   const TriangleMesh mesh = height_field_mesh(field);
-  const std::vector<Eigen::Vector2d> line{{13.0, 17.0}, {41.0, 55.0}, {67.0, 50.0}};
+  const std::vector<Eigen::Vector2d> line{{13.0, -17.0}, {41.0, -55.0}, {67.0, -50.0}};
   const double band = 6.0;
   const std::vector<bool> near = triangles_near_polyline(mesh, line, band);
   int marked = 0;

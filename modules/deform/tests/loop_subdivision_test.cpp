@@ -174,9 +174,9 @@ TEST(LoopSubdivision, HeightFieldTriangulation) {
   ASSERT_EQ(mesh.triangles.size(), 2u * 6 * 4);
   // Square (column 2, row 1): diagonal from (2, 1) to (3, 2), both triangles counter-clockwise.
   const std::size_t square = 2 * (1 * 6 + 2);
-  EXPECT_EQ(mesh.triangles[square], (std::array<int, 3>{9, 10, 17}));
-  EXPECT_EQ(mesh.triangles[square + 1], (std::array<int, 3>{9, 17, 16}));
-  EXPECT_EQ(mesh.vertices.row(17), Eigen::RowVector3d(90.0, 40.0, mesh.vertices(17, 2)));
+  EXPECT_EQ(mesh.triangles[square], (std::array<int, 3>{9, 17, 10}));
+  EXPECT_EQ(mesh.triangles[square + 1], (std::array<int, 3>{9, 16, 17}));
+  EXPECT_EQ(mesh.vertices.row(17), Eigen::RowVector3d(90.0, -40.0, mesh.vertices(17, 2)));
 }
 
 TEST(LoopSubdivision, HeightFieldVerticesOnTheFinerGrids) {
@@ -200,12 +200,12 @@ TEST(LoopSubdivision, HeightFieldVerticesOnTheFinerGrids) {
     if (std::min(c, 48 - c) <= 16 && std::min(r, 32 - r) <= 16) continue;
     ++exact;
     EXPECT_NEAR(mesh.vertices(static_cast<Eigen::Index>(v), 0), c * 3.75, 1e-9);
-    EXPECT_NEAR(mesh.vertices(static_cast<Eigen::Index>(v), 1), r * 2.5, 1e-9);
+    EXPECT_NEAR(mesh.vertices(static_cast<Eigen::Index>(v), 1), -r * 2.5, 1e-9);
   }
   EXPECT_EQ(exact, 15 * 33);  // columns 17-31, all rows
   // The corner vertex is pulled inwards by the border masks (limit: (1/6, 1/6) of a sample).
   EXPECT_GT(mesh.vertices(0, 0), 4.0);
-  EXPECT_GT(mesh.vertices(0, 1), 2.0);
+  EXPECT_LT(mesh.vertices(0, 1), -2.0);
 }
 
 TEST(LoopSubdivision, RefusesBadInput) {
