@@ -17,15 +17,7 @@ size_t Store::rebuild_stale_content(const std::string& layer, int level, size_t 
                 std::to_string(e.info.level - 1) + "]");
   size_t taken = 0;
   d.write([&](sqlite::Connection& c) {
-    std::vector<CellId> cells;
-    {
-      auto q = c.query(
-          "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
-      q.bind_int(1, e.id).bind_int(2, level).bind_int(3, int64_t(limit));
-      while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
-    }
-    std::vector<ContentChildren> children;
-    for (CellId cell : cells) children.push_back(read_children(c, e, cell));
+    const auto [cells, children] = read_stale_cells(c, e, level, limit);
     std::vector<std::optional<std::string>> overviews(cells.size());
     build(cells, children, overviews);
     for (size_t i = 0; i < cells.size(); ++i) {

@@ -24,15 +24,7 @@ constexpr size_t kMaxBuiltKept = 64;         // overview tiles kept in memory fo
 size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, int level,
                                   size_t limit, const BuiltOverviews& below,
                                   BuiltOverviews& built) {
-  std::vector<CellId> cells;
-  {
-    auto q = c.query(
-        "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
-    q.bind_int(1, e.id).bind_int(2, level).bind_int(3, int64_t(limit));
-    while (q.step()) cells.emplace_back(uint64_t(q.int64(0)));
-  }
-  std::vector<ChildBlobs> children;
-  for (CellId cell : cells) children.push_back(read_children(c, e, cell));
+  const auto [cells, children] = read_stale_cells(c, e, level, limit);
 
   // Decoding, reducing and encoding dominate: done in parallel, without SQLite. Isolated, so
   // that a worker waiting here never picks up an outer task that would take the write lock.
@@ -68,6 +60,16 @@ size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, in
     built.insert_or_assign(cells[i].id(),
                            std::make_pair(std::move(blobs[i]), std::move(overviews[i])));
   return cells.size();
+}
+
+StaleCells read_stale_cells(sqlite::Connection& c, const LayerEntry& e, int level, size_t limit) {
+  StaleCells stale;
+  auto q = c.query(
+      "SELECT cell FROM stale_overviews WHERE layer = ? AND level = ? ORDER BY cell LIMIT ?");
+  q.bind_int(1, e.id).bind_int(2, level).bind_int(3, int64_t(limit));
+  while (q.step()) stale.cells.emplace_back(uint64_t(q.int64(0)));
+  for (CellId cell : stale.cells) stale.children.push_back(read_children(c, e, cell));
+  return stale;
 }
 
 ChildBlobs read_children(sqlite::Connection& c, const LayerEntry& e, CellId cell) {

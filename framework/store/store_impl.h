@@ -201,6 +201,14 @@ void write_model(sqlite::Connection& conn, const std::string& store_path, const 
 // raster layer, in the content table for a content layer.
 using ChildBlobs = Store::ContentChildren;
 ChildBlobs read_children(sqlite::Connection& conn, const LayerEntry& layer, CellId cell);
+// Up to `limit` cells of `level` whose overviews are stale, in cell order, and their children's
+// blobs (read_children): what raster and content overviews rebuild next (overviews.cpp).
+struct StaleCells {
+  std::vector<CellId> cells;
+  std::vector<ChildBlobs> children;
+};
+StaleCells read_stale_cells(sqlite::Connection& conn, const LayerEntry& layer, int level,
+                            size_t limit);
 // Marks cell's parent overview stale, so that update_overviews rebuilds it (overviews.cpp).
 void mark_parent_stale(sqlite::Connection& conn, int64_t layer_id, CellId cell);
 // Writes (or replaces) the overview tile of `cell`, which is then no longer stale, and marks its
