@@ -13,6 +13,9 @@ using Segment = std::array<Vec3, 2>;
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 Vec3 along(const Vec3& a, const Vec3& d, double t) {
   return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
 }
@@ -91,14 +94,35 @@ bool in_polygon(const Geometry& g, LonLat p) {
   return false;
 }
 
+// Whether two chords cross as seen from above (projected along the vertical at their first
+// point): two edges that cross on the ground have chords that pass a few millimetres apart in 3D
+// (skew lines), which must count as meeting (distance 0), not as a gap.
+bool cross_from_above(const Segment& p, const Segment& q) {
+  const Vec3& up = p[0];
+  auto side = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return dot(cross(sub(b, a), sub(c, a)), up);
+  };
+  const double d1 = side(p[0], p[1], q[0]), d2 = side(p[0], p[1], q[1]);
+  const double d3 = side(q[0], q[1], p[0]), d4 = side(q[0], q[1], p[1]);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Chords closer than this are tested for crossing from above; far more than the chords' bulge
+// (well under a metre for pieces of kPieceDegrees and outline sides of kOutlineSpacingM).
+constexpr double kCrossingCheckM = 1;
+
 // The shortest distance between segments `a` (within `radius` of `centre`) and `b`; segments of
-// `b` whose lower bound exceeds the best so far are skipped.
+// `b` whose lower bound exceeds the best so far are skipped. 0 when two cross from above.
 double shortest(const std::vector<Segment>& a, const Vec3& centre, double radius,
                 const std::vector<Segment>& b) {
   double best = std::numeric_limits<double>::infinity();
   for (const Segment& piece : b) {
     if (segment_distance({centre, centre}, piece) - radius >= best) continue;
-    for (const Segment& s : a) best = std::min(best, segment_distance(s, piece));
+    for (const Segment& s : a) {
+      const double d = segment_distance(s, piece);
+      if (d < kCrossingCheckM && cross_from_above(s, piece)) return 0;
+      best = std::min(best, d);
+    }
   }
   return best;
 }

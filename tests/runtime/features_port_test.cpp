@@ -11,6 +11,7 @@
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -485,6 +486,56 @@ TEST(FeaturesPort, PointDistancesMatchGeos) {
     }
   }
   EXPECT_GT(checked, 80);
+}
+
+// A line whose edge crosses a cell (no vertex in it) meets the cell: distance 0, as GEOS finds the
+// line and the cell's outline (both straight in lon/lat between dense points) intersecting. Skew
+// ECEF chords of crossing edges pass millimetres apart, which must not count as a gap (a reach of
+// 0 would miss the cell). Cells on the equatorial and both polar faces, levels 8 to 16.
+TEST(FeaturesPort, EdgesCrossingACellMeetIt) {
+  const Grid& grid = default_grid();
+  Lcg rng;
+  int crossing = 0, apart = 0;
+  for (const LonLat place : {LonLat{10.05, 45.05}, LonLat{-121.7, 46.6}, LonLat{150.0, -62.0}})
+    for (int level = 8; level <= 16; level += 2) {
+      const CellId cell = grid.cell_from_point(place, level);
+      const CellOutline outline(grid, cell);
+      // The outline's own points (geo_distance.h), so only the chords between them differ.
+      const double side = grid.level_info(level, 1).plane_side_m;
+      OGRLinearRing ring;
+      for (const LonLat& p :
+           grid.boundary(cell, std::clamp(int(std::ceil(side / kOutlineSpacingM)), 1, 1024)))
+        ring.addPoint(p.lon, p.lat);
+      OGRPolygon polygon;
+      polygon.addRing(&ring);
+      const LonLat c = grid.centre(cell);
+      const double half = 0.6 * std::sqrt(polygon.get_Area());  // degrees
+      for (int i = 0; i < 40; ++i) {
+        // A line through a point near the cell, long enough to have its ends outside.
+        const double angle = 6.283185307179586 * rng.next();
+        const LonLat via{c.lon + 3 * half * (rng.next() - 0.5),
+                         c.lat + 3 * half * (rng.next() - 0.5)};
+        const double dx = 3 * half * std::cos(angle), dy = 3 * half * std::sin(angle);
+        Geometry line;
+        line.lines.push_back({{via.lon - dx, via.lat - dy, 0}, {via.lon + dx, via.lat + dy, 0}});
+        OGRLineString ogr_line;
+        ogr_line.addPoint(via.lon - dx, via.lat - dy);
+        ogr_line.addPoint(via.lon + dx, via.lat + dy);
+        const OGRPoint end0(ogr_line.getX(0), ogr_line.getY(0));
+        const OGRPoint end1(ogr_line.getX(1), ogr_line.getY(1));
+        if (polygon.Contains(&end0) || polygon.Contains(&end1)) continue;
+        const double d = outline.distance_m(GeometryPieces(line));
+        if (ogr_line.Intersects(&polygon)) {
+          EXPECT_EQ(d, 0) << cell.ToText() << " line " << i;
+          ++crossing;
+        } else {
+          EXPECT_GT(d, 0) << cell.ToText() << " line " << i;
+          ++apart;
+        }
+      }
+    }
+  EXPECT_GT(crossing, 100);
+  EXPECT_GT(apart, 20);
 }
 
 }  // namespace
