@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <set>
 
@@ -164,8 +165,11 @@ Prepared prepare(const OGRFeature& f, const SourceLayer& l, const Grid& grid, in
 }
 
 // What identifies an ingest: a run with the same key may be resumed, and a layer written by
-// another key is not overwritten.
-json ingest_key(const std::vector<std::string>& sources, const FeatureIngestOptions& o, int level) {
+// another key is not overwritten. Sources by absolute path, as the raster ingest names them: the
+// same pipeline run from another directory is the same ingest.
+json ingest_key(const std::vector<std::string>& paths, const FeatureIngestOptions& o, int level) {
+  json sources = json::array();
+  for (const std::string& p : paths) sources.push_back(std::filesystem::absolute(p).string());
   json region = json::array();
   for (CellId c : normalize(o.region)) region.push_back(c.ToText());
   return {

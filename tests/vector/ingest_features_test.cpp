@@ -3,6 +3,7 @@
 // resume and re-ingest.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "core/grid.h"
 #include "vector/vector_ingest.h"
@@ -267,6 +268,22 @@ TEST(IngestFeatures, AnotherIngestIntoAFilledLayerIsRefused) {
   write_text(other, collection(json::array({geojson_feature(kPoint, json::object())})));
   expect_error([&] { ingest_features(*store, {other}, at_level(10)); },
                {"layer 'things'", "another ingest", "another layer name"});
+}
+
+// The same source named relative to another working directory is the same ingest (a pipeline run
+// from another directory), not another one.
+TEST(IngestFeatures, TheSameSourceFromAnotherDirectoryIsTheSameIngest) {
+  TempDir dir;
+  auto store = new_store(dir);
+  const std::string path = mixed_geojson(dir);
+  ingest_features(*store, {path}, at_level(10));
+  const auto before = store->feature_count("things");
+  const std::filesystem::path cwd = std::filesystem::current_path();
+  std::filesystem::current_path(std::filesystem::path(path).parent_path());
+  const auto again = [&] { ingest_features(*store, {"mixed.geojson"}, at_level(10)); };
+  EXPECT_NO_THROW(again());
+  std::filesystem::current_path(cwd);
+  EXPECT_EQ(store->feature_count("things"), before);
 }
 
 // All of a layer's features with their cells, for comparing stores.
