@@ -21,6 +21,7 @@
 #include "core/grid.h"
 #include "core/halo.h"
 #include "core/tile.h"
+#include "geotiff_raster.h"
 #include "run_cli.h"
 #include "store/store.h"
 
@@ -29,6 +30,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using test::Raster;
+using test::read_raster;
 
 const LonLat kSite = default_grid().centre(default_grid().cell_from_point({-113.0, 37.2}, 15));
 constexpr double kHalfLat = 0.0015, kHalfLon = 0.0019;  // the region: about 330 x 330 m
@@ -212,29 +215,6 @@ json rectangular_channel() {
                {"cross_section",
                 {{-2 * w, d}, {-w - 0.01, d}, {-w, 0}, {w, 0}, {w + 0.01, d}, {2 * w, d}}}}},
              {"geometry", {{"type", "LineString"}, {"coordinates", coordinates}}}}}}};
-}
-
-struct Raster {
-  int width = 0, height = 0;
-  std::array<double, 6> transform{};
-  std::vector<float> values;
-  float at(int col, int row) const { return values[size_t(row) * size_t(width) + size_t(col)]; }
-};
-
-Raster read_raster(const std::string& path) {
-  GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
-  EXPECT_TRUE(ds) << path;
-  Raster r;
-  if (!ds) return r;
-  r.width = ds->GetRasterXSize();
-  r.height = ds->GetRasterYSize();
-  ds->GetGeoTransform(r.transform.data());
-  r.values.resize(size_t(r.width) * size_t(r.height));
-  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.width, r.height, r.values.data(),
-                                           r.width, r.height, GDT_Float32, 0, 0),
-            CE_None);
-  return r;
 }
 
 // Side by side with GRASS r.carve: the DEM and the deformed DEM exported to UTM 12N at 1 m, and
