@@ -42,8 +42,18 @@ timed_run() {
   printf '%s seconds %s wall %s cpu %.3f\n' "$2" "$step" "$wall" "$(echo "$user + $sys" | bc)"
 }
 
-# seconds OF LINE: the value after "seconds" in a timing line
+# seconds LINE, cpu LINE: the wall time after "seconds", the CPU time (the sum of the values
+# after "cpu") in a timing line.
 seconds() { awk '{for (i = 1; i < NF; ++i) if ($i == "seconds") print $(i + 1)}' <<<"$1"; }
+cpu() { awk '{for (i = 1; i < NF; ++i) if ($i == "cpu") { s = $(i + 1); if ($(i + 2) ~ /^[0-9.]+$/) s += $(i + 2); print s }}' <<<"$1"; }
+
+# ratio OURS GRASS: the wall times' ratio (our step's) and the CPU times' (our whole program's,
+# start, module loading and store included, against the GRASS command's).
+ratio() {
+  printf 'ratio wall (step / command) %.2f, cpu (program / command) %.2f\n' \
+    "$(echo "scale=4; $(seconds "$1") / $(seconds "$2")" | bc)" \
+    "$(echo "scale=4; $(cpu "$1") / $(cpu "$2")" | bc)"
+}
 
 echo "== deform.features beside r.carve (Virgin River)"
 virgin_bbox='[-113.04, 37.15, -112.97, 37.22]'
@@ -63,7 +73,7 @@ r.out.gdal --quiet -f input=carved output="$tmp/rcarve.tif" format=GTiff type=Fl
 JOB
 )
 echo "$grass"
-printf 'deform.features / r.carve (the step): %.2f\n' "$(echo "scale=4; $(seconds "$ours") / $(seconds "$grass")" | bc)"
+echo "deform.features / r.carve: $(ratio "$ours" "$grass")"
 
 echo "== deform.water beside r.lake (Rainier)"
 rainier_bbox=$(jq -c .region.bbox "$examples/deform-rainier.json")
@@ -79,4 +89,4 @@ read -r w s e n < <(jq -r 'map(tostring) | join(" ")' <<<"$rainier_bbox")
   --crs EPSG:32610 --resolution 8.8 --bbox "$w" "$s" "$e" "$n"
 grass=$("$here/rlake.sh" "$tmp/rainier.tif" "$tmp/lake.tif" "$level" "$x" "$y")
 echo "$grass (level $level m)"
-printf 'deform.water / r.lake (the step): %.2f\n' "$(echo "scale=4; $(seconds "$ours") / $(seconds "$grass")" | bc)"
+echo "deform.water / r.lake: $(ratio "$ours" "$grass")"

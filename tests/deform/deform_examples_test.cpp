@@ -161,7 +161,7 @@ TEST(DeformExamples, VirginRiverBedFollowsTheStroke) {
   EXPECT_GT(points, 3000);
   EXPECT_LE(rms, 0.02);
   EXPECT_LE(worst, 0.12);
-  // The bed (20 m wide, 7.4 km) covers ~1,900 samples of 77 m2.
+  // The bed (20 m wide, 7.3 km) covers ~1,900 samples of 77 m2.
   EXPECT_GT(lowered, 1500);
   EXPECT_LE(raised, 3.0);
 }
