@@ -83,6 +83,24 @@ Raster export_layer(const std::string& name, const std::string& dir, const std::
   return read_raster(tif);
 }
 
+struct ExampleRun {
+  std::string dir;       // holding example.mqt
+  Raster first, second;  // two of its layers on the same grid
+};
+
+// Runs the example's steps of `ops` and exports its layers `first` and `second`.
+ExampleRun run_and_export(const std::string& name, const std::vector<std::string>& ops,
+                          const std::string& first, const std::string& second) {
+  ExampleRun r{temp_dir(), {}, {}};
+  run_example(name, r.dir, ops);
+  r.first = export_layer(name, r.dir, first);
+  r.second = export_layer(name, r.dir, second);
+  EXPECT_GT(r.first.width, 0);
+  EXPECT_EQ(r.second.width, r.first.width);
+  EXPECT_EQ(r.second.height, r.first.height);
+  return r;
+}
+
 // Lon/lat to the raster's CRS and back, through PROJ.
 struct LonLatTransforms {
   OGRSpatialReference lonlat, plane;
@@ -113,14 +131,10 @@ double surface_height(const Raster& r, double x, double y) {
 
 TEST(DeformExamples, VirginRiverBedFollowsTheStroke) {
   if (!fs::exists(kShared + "/data/zion/srtm.tif")) GTEST_SKIP() << "no ../shared/data/zion";
-  const std::string dir = temp_dir();
-  const std::string example = "deform-virgin-river";
-  run_example(example, dir, {"ingest", "deform.features"});
-  const Raster dem = export_layer(example, dir, "dem"),
-               river = export_layer(example, dir, "river_dem");
-  ASSERT_EQ(river.width, dem.width);
-  ASSERT_EQ(river.height, dem.height);
-  ASSERT_GT(river.width, 0);
+  const ExampleRun run =
+      run_and_export("deform-virgin-river", {"ingest", "deform.features"}, "dem", "river_dem");
+  ASSERT_FALSE(HasFailure());
+  const Raster &dem = run.first, &river = run.second;
   const LonLatTransforms t(river);
 
   // Along the curve every ~2 m: Z linear between the vertices.
@@ -169,14 +183,11 @@ TEST(DeformExamples, VirginRiverBedFollowsTheStroke) {
 TEST(DeformExamples, RainierLakeFillsToTheSpillLevel) {
   if (!fs::exists(kShared + "/data/srtm3/mt_rainier_90m.tif"))
     GTEST_SKIP() << "no ../shared/data/srtm3";
-  const std::string dir = temp_dir();
-  const std::string example = "deform-rainier";
-  run_example(example, dir, {"ingest", "deform.features", "deform.water", "deform.water_bodies"});
-  const Raster dem = export_layer(example, dir, "dammed_dem"),
-               depth = export_layer(example, dir, "lake_depth");
-  ASSERT_EQ(depth.width, dem.width);
-  ASSERT_EQ(depth.height, dem.height);
-  ASSERT_GT(dem.width, 0);
+  const ExampleRun run = run_and_export(
+      "deform-rainier", {"ingest", "deform.features", "deform.water", "deform.water_bodies"},
+      "dammed_dem", "lake_depth");
+  ASSERT_FALSE(HasFailure());
+  const Raster &dem = run.first, &depth = run.second;
   const LonLatTransforms t(dem);
 
   const json strokes = read_json(kExamples + "/deform-rainier/strokes.geojson");
@@ -243,7 +254,7 @@ TEST(DeformExamples, RainierLakeFillsToTheSpillLevel) {
   const double pixel_area = default_grid().area(0) / std::ldexp(1.0, 2 * 20);
   volume *= pixel_area;
 
-  const auto store = Store::open(dir + "/example.mqt", Store::Mode::ReadOnly);
+  const auto store = Store::open(run.dir + "/example.mqt", Store::Mode::ReadOnly);
   const auto artifact = store->get_artifact("lakes");
   ASSERT_TRUE(artifact);
   const json bodies = json::parse(artifact->text());
