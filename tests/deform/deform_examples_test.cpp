@@ -267,6 +267,8 @@ TEST(DeformExamples, RainierLakeFillsToTheSpillLevel) {
       wet * pixel_area, volume, worst_depth);
   // Printed, not asserted: deform.water_bodies leaves out the wet pixels of one of the lake's
   // four tiles (N323202100310: 6,552 pixels), so its area and volume are 80 % of the raster's.
+  // The stroke is not delivered to that cell: the polygon's edge crosses it, and the cell's
+  // distance to the polygon comes out as 1.6 mm (skew chords), above the reach of 0 m.
   std::printf("the bodies' artifact: %.4g m2, %.5g m3\n", lake["area_m2"].get<double>(),
               lake["volume_m3"].get<double>());
   EXPECT_GT(boundary, 1000);
