@@ -7,4 +7,5 @@ MAQUETTE_MODULE("texture", "1.0.0",
                 {"texture.classify", &maquette::texture::make_classify},
                 {"texture.cluster", &maquette::texture::make_cluster},
                 {"texture.fit", &maquette::texture::make_fit},
-                {"texture.assess", &maquette::texture::make_assess})
+                {"texture.assess", &maquette::texture::make_assess},
+                {"texture.calibrate", &maquette::texture::make_calibrate})

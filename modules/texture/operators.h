@@ -19,5 +19,6 @@ std::unique_ptr<Operator> make_classify();
 std::unique_ptr<Operator> make_cluster();
 std::unique_ptr<Operator> make_fit();
 std::unique_ptr<Operator> make_assess();
+std::unique_ptr<Operator> make_calibrate();
 
 }  // namespace maquette::texture

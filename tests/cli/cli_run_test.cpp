@@ -310,9 +310,10 @@ TEST(CliDemo, IngestsTheOlindaDataAndSynthesizesItsTexture) {
   EXPECT_NE(r.out.find("Olinda"), std::string::npos) << r.out;
   expect_quicklooks(dir, {"dem.png", "hillshade.png", "slope.png", "imagery.png", "texture.png"});
   EXPECT_EQ(layer_names(dir + "/demo.mqt"),
-            (std::set<std::string>{"dem_source", "imagery", "imagery_dem_grid", "dem", "dem_filled",
-                                   "slope", "aspect", "curvature", "hillshade", "normal", "classes",
-                                   "texture"}));
+            (std::set<std::string>{"dem_source", "red_dn", "green_dn", "blue_dn", "imagery",
+                                   "red_dn_dem_grid", "green_dn_dem_grid", "blue_dn_dem_grid",
+                                   "imagery_dem_grid", "dem", "dem_filled", "slope", "aspect",
+                                   "curvature", "hillshade", "normal", "classes", "texture"}));
   const auto store = Store::open(dir + "/demo.mqt", Store::Mode::ReadOnly);
   const LayerInfo dem = store->require_layer("dem"), texture = store->require_layer("texture");
   EXPECT_EQ(texture.level, dem.level);
