@@ -14,9 +14,7 @@ namespace {
 constexpr const char* kBands[] = {"red", "green", "blue"};
 
 json triple(const std::string& description) {
-  return {{"type", "array"},
-          {"items", {{"type", "number"}}},
-          {"description", description}};
+  return {{"type", "array"}, {"items", {{"type", "number"}}}, {"description", description}};
 }
 
 OperatorSpec calibrate_spec() {
