@@ -14,6 +14,7 @@ packages=(
   grass-core  # test oracle only (r.sun, run as a separate process): never linked
   libopenmesh-dev  # test oracle only (tests/instances: closed, oriented meshes; BSD-3)
   libmeshoptimizer-dev  # mesh layers' coarser levels (formats/gltf/mesh_simplify; MIT)
+  libcgal-dev  # test oracle only (modules/structures: valid solids; GPL, never linked into the program)
 )
 # The viewer is built with npm; Debian's node is enough where the machine has none of its own.
 command -v npm >/dev/null || packages+=(nodejs npm)

@@ -1,0 +1,97 @@
+#include "building_mesh.h"
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <string>
+
+#include "building_solid.h"
+#include "footprint.h"
+#include "terrain_base.h"
+
+namespace maquette::structures {
+namespace {
+
+const std::vector<GeoPolygon>& polygons_of(const VectorFeature& f) {
+  if (f.geometry.type != GeometryType::Polygon && f.geometry.type != GeometryType::MultiPolygon)
+    throw InvalidFootprint("its geometry is a " + std::string(geometry_type_name(f.geometry.type)) +
+                           ", not a Polygon or MultiPolygon");
+  if (f.geometry.polygons.empty() || f.geometry.polygons.front().rings.empty() ||
+      f.geometry.polygons.front().rings.front().empty())
+    throw InvalidFootprint("its geometry is empty");
+  return f.geometry.polygons;
+}
+
+// Pixel coordinates in the site's DEM tile (pixel (c, r) covers [c, c + 1) x [r, r + 1)).
+struct PixelFrame {
+  PlaneSquare square;
+  double pixels_per_metre;
+  PlanePoint2 operator()(const Grid& grid, const GeoPoint& p) const {
+    const PlanePoint q = grid.forward({p.lon, p.lat});
+    return {(q.x - square.x_min) * pixels_per_metre, (square.y_max - q.y) * pixels_per_metre};
+  }
+};
+
+}  // namespace
+
+MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
+                         const BuildingSite& site) {
+  const std::vector<GeoPolygon>& polygons = polygons_of(feature);
+  const double height = building_height(feature.attributes, rules);
+  const int tile_size = site.dem->size();
+  const PlaneSquare square = site.grid->plane_square(site.cell);
+  const PixelFrame pixel{square, tile_size / square.side};
+
+  std::vector<PixelRing> pixel_rings;
+  for (const GeoPolygon& polygon : polygons)
+    for (const GeoPath& ring : polygon.rings) {
+      PixelRing& r = pixel_rings.emplace_back();
+      for (const GeoPoint& p : ring) r.push_back(pixel(*site.grid, p));
+    }
+  const std::optional<float> base = lowest_terrain(*site.dem, pixel_rings);
+  if (!base) throw InvalidFootprint("the DEM has no data under the footprint");
+
+  const GeoPoint& anchor = polygons.front().rings.front().front();
+  const GeographicLib::LocalCartesian building(anchor.lat, anchor.lon, *base);
+  const GeographicLib::LocalCartesian content(site.origin.lat, site.origin.lon, site.origin.height);
+  std::vector<Footprint> parts;
+  for (const GeoPolygon& polygon : polygons) {
+    std::vector<PlaneRing> rings;
+    for (const GeoPath& ring : polygon.rings) {
+      PlaneRing& r = rings.emplace_back();
+      for (const GeoPoint& p : ring) {
+        double x = 0, y = 0, z = 0;
+        building.Forward(p.lat, p.lon, *base, x, y, z);
+        r.push_back({x, y});
+      }
+    }
+    parts.push_back(make_footprint(std::move(rings)));
+  }
+  if (parts.size() > 1) check_disjoint(parts);
+
+  MeshObject object;
+  double area = 0;
+  for (const Footprint& part : parts) {
+    const Solid solid = extrude(part, height);
+    if (const std::string problem = solid_problem(solid, part.area * height); !problem.empty())
+      throw InvalidFootprint("its solid is invalid: " + problem);
+    area += part.area;
+    const uint32_t first = uint32_t(object.positions.size() / 3);
+    for (size_t v = 0; v < solid.positions.size(); v += 3) {
+      double lat = 0, lon = 0, h = 0, x = 0, y = 0, z = 0;
+      building.Reverse(solid.positions[v], solid.positions[v + 1], solid.positions[v + 2], lat, lon,
+                       h);
+      content.Forward(lat, lon, h, x, y, z);
+      object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
+      const PlanePoint2 uv = pixel(*site.grid, {lon, lat});
+      object.uvs.insert(object.uvs.end(), {float(uv[0] / tile_size), float(uv[1] / tile_size)});
+    }
+    for (const uint32_t i : solid.indices) object.indices.push_back(first + i);
+  }
+  object.provenance = {uint64_t(feature.id),
+                       feature.id,
+                       "structures.buildings",
+                       {{"height_m", height}, {"base_m", *base}, {"area_m2", area}}};
+  return object;
+}
+
+}  // namespace maquette::structures

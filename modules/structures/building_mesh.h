@@ -1,0 +1,43 @@
+// structures.buildings' work on one footprint feature: its LoD1 solid standing on the DEM, checked,
+// as a mesh object of a cell's content.
+#pragma once
+
+#include "building_height.h"
+#include "content/content.h"
+#include "core/grid.h"
+#include "core/tile.h"
+#include "runtime/vector_feature.h"
+
+namespace maquette::structures {
+
+// Pixels of DEM around each cell that structures.buildings reads: a building owned by the cell
+// (its first point in it) must lie within them (terrain_base.h), so reach at most this many
+// pixels beyond the cell's edge (London's largest blocks, ~220 m, reach ~120 pixels of 2.2 m
+// beyond a cell on the polar face, whose plane shears them).
+inline constexpr int kDemHaloPixels = 128;
+
+// Where a building is written: the cell owning it, that cell's DEM tile (with halo) and the
+// content's frame.
+struct BuildingSite {
+  const Grid* grid = nullptr;
+  CellId cell;
+  const Tile<float>* dem = nullptr;  // heights (m, taken as above the ellipsoid), NaN: no data
+  EnuOrigin origin;
+};
+
+// The building of a Polygon or MultiPolygon feature (courtyards as holes, one solid per part):
+// its height from the tags (building_height.h); its base at the lowest terrain under the whole
+// footprint (terrain_base.h); each part extruded in the tangent plane at the footprint's first
+// point (GeographicLib LocalCartesian on WGS84, at the base height) and checked there
+// (building_solid.h: closed, outward, planar faces, volume = area x height to 1e-9); then put in
+// the site's east-north-up frame as float32 (a rigid move: within a float's rounding, 0.1 mm at
+// 2 km from the origin). The first vertex is the footprint's first point at the base: the anchor.
+// uvs: each vertex's position in the cell's imagery tile (0, 0 at its top-left, 1, 1 at its
+// bottom-right: formats/gltf/terrain_mesh.h's texcoords), so the roof drapes the cell's
+// orthophoto tile. Provenance: the feature id as object id, tool "structures.buildings",
+// attributes height_m, base_m and area_m2. Throws InvalidFootprint (without the feature id) for
+// a footprint that gives no valid solid, a bad height tag, or no DEM under the footprint.
+MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
+                         const BuildingSite& site);
+
+}  // namespace maquette::structures

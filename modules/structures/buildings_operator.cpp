@@ -1,0 +1,91 @@
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "building_mesh.h"
+#include "core/error.h"
+#include "footprint.h"
+#include "operators.h"
+
+namespace maquette::structures {
+namespace {
+
+OperatorSpec buildings_spec() {
+  OperatorSpec s;
+  s.name = "structures.buildings";
+  s.description =
+      "LoD1 buildings from footprints (paper 002 §5): extruded by their OSM height tags from the "
+      "lowest terrain under them, flat roofs, courtyards kept, checked as val3dity checks solids";
+  s.kind = OperatorKind::Cell;
+  s.halo = kDemHaloPixels;
+  InputSpec dem;
+  dem.name = "dem";
+  dem.description = "terrain heights (m, taken as above the ellipsoid)";
+  s.inputs.push_back(dem);
+  InputSpec footprints;
+  footprints.name = "footprints";
+  footprints.description = "features layer: Polygons or MultiPolygons, holes for courtyards";
+  footprints.kind = LayerKind::Features;
+  s.inputs.push_back(footprints);
+  OutputSpec mesh;
+  mesh.name = "mesh";
+  mesh.description = "one closed mesh per footprint, in the cell owning its first point";
+  mesh.kind = LayerKind::Mesh;
+  s.outputs.push_back(mesh);
+  s.params_schema = {{"type", "object"},
+                     {"properties",
+                      {{"default_height_m",
+                        {{"type", "number"}, {"minimum", 0.1}, {"maximum", 1000}, {"default", 10}}},
+                       {"level_height_m",
+                        {{"type", "number"}, {"minimum", 0.1}, {"maximum", 100}, {"default", 3}}},
+                       {"skip_invalid", {{"type", "boolean"}, {"default", false}}}}},
+                     {"additionalProperties", false}};
+  return s;
+}
+
+std::optional<GeoPoint> first_point(const Geometry& g) {
+  if (!g.polygons.empty() && !g.polygons[0].rings.empty() && !g.polygons[0].rings[0].empty())
+    return g.polygons[0].rings[0][0];
+  if (!g.lines.empty() && !g.lines[0].empty()) return g.lines[0][0];
+  if (!g.points.empty()) return g.points[0];
+  return std::nullopt;
+}
+
+class Buildings : public CellOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = buildings_spec();
+    return s;
+  }
+
+  void run(const CellContext& ctx, CellData& data) const override {
+    if (!data.wants("mesh")) return;
+    const json& params = *ctx.params;
+    const HeightRules rules{params.at("default_height_m").get<double>(),
+                            params.at("level_height_m").get<double>()};
+    const bool skip_invalid = params.at("skip_invalid").get<bool>();
+    MeshContent& mesh = data.content.mesh("mesh");
+    const BuildingSite site{ctx.grid, ctx.cell, &data.input("dem"), mesh.origin};
+    for (const VectorFeature* f : data.features_of("footprints")) {
+      // Each building once: in the cell owning its first point (a feature of another geometry
+      // is reported there too, by building_mesh).
+      if (const std::optional<GeoPoint> first = first_point(f->geometry);
+          !first || !ctx.owns({first->lon, first->lat}))
+        continue;
+      try {
+        mesh.objects.push_back(building_mesh(*f, rules, site));
+      } catch (const InvalidFootprint& e) {
+        const std::string message = "structures.buildings: inputs.footprints: feature " +
+                                    std::to_string(f->id) + ": " + e.what();
+        if (!skip_invalid) throw Error(message + " (skip_invalid: true leaves it out)");
+        std::cerr << message << ": left out\n";
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_buildings() { return std::make_unique<Buildings>(); }
+
+}  // namespace maquette::structures

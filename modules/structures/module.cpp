@@ -1,0 +1,6 @@
+#include "operators.h"
+#include "runtime/module_abi.h"
+
+MAQUETTE_MODULE("structures", "0.1.0",
+                "3D structures of a Digital Earth (paper 002 §5, §7): buildings from footprints",
+                {"structures.buildings", &maquette::structures::make_buildings})
