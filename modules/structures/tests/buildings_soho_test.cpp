@@ -1,67 +1,22 @@
 // The 158 OSM footprints of London Soho (read with GDAL) on a synthetic DEM: every one gives a
 // solid CGAL finds closed, outward and free of self-intersection, of volume area x height (the
 // area by CGAL's Polygon_2), and a mesh standing on the terrain (nothing floats).
-#include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogrsf_frmts.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
-#include <map>
-#include <memory>
 
 #include "../building_mesh.h"
 #include "../building_solid.h"
 #include "../footprint.h"
 #include "cgal_oracle.h"
-#include "core/geometry.h"
+#include "soho_scene.h"
 
 namespace maquette::structures {
 namespace {
 
 const std::string kSoho =
     std::string(MAQUETTE_SHARED_DIR) + "/data/buildings/london_soho_buildings_wgs84.geojson";
-constexpr int kLevel = 14;             // cells of ~560 m (rHEALPix halves them per level)
-constexpr int kTileSize = 256;         // ~2.2 m pixels
-constexpr int kHalo = kDemHaloPixels;  // as structures.buildings reads the DEM
-
-std::vector<VectorFeature> read_footprints() {
-  GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(kSoho.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  EXPECT_TRUE(ds) << kSoho;
-  std::vector<VectorFeature> out;
-  if (!ds) return out;
-  OGRLayer* layer = ds->GetLayer(0);
-  for (std::unique_ptr<OGRFeature> f(layer->GetNextFeature()); f;
-       f.reset(layer->GetNextFeature())) {
-    const OGRGeometry* g = f->GetGeometryRef();
-    std::vector<std::byte> wkb(size_t(g->WkbSize()));
-    g->exportToWkb(wkbNDR, reinterpret_cast<unsigned char*>(wkb.data()), wkbVariantIso);
-    VectorFeature v;
-    v.id = f->GetFID();
-    v.geometry = parse_wkb(wkb, "feature " + std::to_string(v.id));
-    out.push_back(std::move(v));
-  }
-  return out;
-}
-
-// Terrain as a function of the grid's plane (metres): slopes of up to 2 % and waves of a few
-// metres, so that the lowest point under a footprint is anywhere in it.
-double terrain(const PlanePoint& p) {
-  return 30 + 18 * std::sin(p.x / 900) + 3 * std::sin(p.x / 37) * std::cos(p.y / 23);
-}
-
-// The DEM tile of a cell with its halo, each pixel the terrain at its centre.
-Tile<float> dem_tile(const Grid& grid, CellId cell) {
-  const PlaneSquare sq = grid.plane_square(cell);
-  const double pixel = sq.side / kTileSize;
-  Tile<float> dem(kTileSize, 1, kHalo);
-  for (int r = -kHalo; r < kTileSize + kHalo; ++r)
-    for (int c = -kHalo; c < kTileSize + kHalo; ++c)
-      dem.at(c, r) = float(terrain({sq.x_min + (c + 0.5) * pixel, sq.y_max - (r + 0.5) * pixel}));
-  return dem;
-}
 
 std::vector<std::vector<std::array<double, 2>>> plane_rings(
     const GeoPolygon& polygon, const GeographicLib::LocalCartesian& f) {
@@ -79,9 +34,9 @@ std::vector<std::vector<std::array<double, 2>>> plane_rings(
 }
 
 TEST(BuildingsSoho, EverySolidIsValidByCgal) {
-  const std::vector<VectorFeature> footprints = read_footprints();
-  ASSERT_EQ(footprints.size(), 158u);
-  for (const VectorFeature& f : footprints) {
+  const SohoScene scene(kSoho);
+  ASSERT_EQ(scene.footprints.size(), 158u);
+  for (const VectorFeature& f : scene.footprints) {
     const GeoPoint& first = f.geometry.polygons[0].rings[0][0];
     const GeographicLib::LocalCartesian frame(first.lat, first.lon, 0);
     const auto rings = plane_rings(f.geometry.polygons[0], frame);
@@ -98,18 +53,15 @@ TEST(BuildingsSoho, EverySolidIsValidByCgal) {
 }
 
 TEST(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
-  const std::vector<VectorFeature> footprints = read_footprints();
-  ASSERT_EQ(footprints.size(), 158u);
+  const SohoScene scene(kSoho);
+  ASSERT_EQ(scene.footprints.size(), 158u);
   const Grid& grid = default_grid();
-  std::map<CellId, Tile<float>> dems;
   double lowest_gap = INFINITY;
-  for (const VectorFeature& f : footprints) {
+  for (const VectorFeature& f : scene.footprints) {
     const GeoPoint& first = f.geometry.polygons[0].rings[0][0];
-    const CellId cell = grid.cell_from_point({first.lon, first.lat}, kLevel);
-    auto dem = dems.find(cell);
-    if (dem == dems.end()) dem = dems.emplace(cell, dem_tile(grid, cell)).first;
+    const BuildingSite site = scene.site(f);
+    const CellId cell = site.cell;
     const LonLat centre = grid.centre(cell);
-    const BuildingSite site{&grid, cell, &dem->second, {centre.lon, centre.lat, 0}};
     const MeshObject m = building_mesh(f, {}, site);
 
     const double height = m.provenance.attributes.at("height_m").get<double>();
@@ -132,7 +84,7 @@ TEST(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
     EXPECT_NEAR(lon, first.lon, 1e-8);
     EXPECT_NEAR(lat, first.lat, 1e-8);
     EXPECT_NEAR(h, base, 1e-3);
-    EXPECT_EQ(grid.cell_from_point({lon, lat}, kLevel), cell);
+    EXPECT_EQ(grid.cell_from_point({lon, lat}, kSohoLevel), cell);
 
     // Nothing floats: the terrain at every point of a 0.5 m lattice inside the footprint is at
     // or above the base (within 1 cm: the smooth terrain dips by millimetres between the pixel
@@ -151,7 +103,7 @@ TEST(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
       for (double x = x0 - 10; x <= x1 + 10; x += 0.5) {
         double plat = 0, plon = 0, ph = 0;
         local.Reverse(x, y, 0, plat, plon, ph);
-        const double z = terrain(grid.forward({plon, plat}));
+        const double z = soho_terrain(grid.forward({plon, plat}));
         around = std::min(around, z);
         bool in = false;
         for (const auto& ring : rings)
