@@ -82,8 +82,14 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
                        h);
       content.Forward(lat, lon, h, x, y, z);
       object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
-      const PlanePoint2 uv = pixel(*site.grid, {lon, lat});
-      object.uvs.insert(object.uvs.end(), {float(uv[0] / tile_size), float(uv[1] / tile_size)});
+      if (site.texture) {
+        // From the DEM's pixels to the image's, both spanning the cell.
+        const PlanePoint2 p = pixel(*site.grid, {lon, lat});
+        const double scale = double(site.texture->size) / tile_size;
+        const double width = site.texture->size + 2.0 * site.texture->halo;
+        object.uvs.insert(object.uvs.end(), {float((p[0] * scale + site.texture->halo) / width),
+                                             float((p[1] * scale + site.texture->halo) / width)});
+      }
     }
     for (const uint32_t i : solid.indices) object.indices.push_back(first + i);
   }

@@ -2,6 +2,8 @@
 // as a mesh object of a cell's content.
 #pragma once
 
+#include <optional>
+
 #include "building_height.h"
 #include "content/content.h"
 #include "core/grid.h"
@@ -16,13 +18,20 @@ namespace maquette::structures {
 // beyond a cell on the polar face, whose plane shears them).
 inline constexpr int kDemHaloPixels = 128;
 
-// Where a building is written: the cell owning it, that cell's DEM tile (with halo) and the
-// content's frame.
+// An image over the cell and a margin around it: the cell's orthophoto tile of `size` pixels with
+// its halo of `halo` pixels, (size + 2 halo) pixels wide, the cell at [halo, halo + size).
+struct TextureWindow {
+  int size = 0, halo = 0;
+};
+
+// Where a building is written: the cell owning it, that cell's DEM tile (with halo), the
+// content's frame, and the image its roof drapes, if any.
 struct BuildingSite {
   const Grid* grid = nullptr;
   CellId cell;
   const Tile<float>* dem = nullptr;  // heights (m, taken as above the ellipsoid), NaN: no data
   EnuOrigin origin;
+  std::optional<TextureWindow> texture;
 };
 
 // The building of a Polygon or MultiPolygon feature (courtyards as holes, one solid per part):
@@ -32,11 +41,12 @@ struct BuildingSite {
 // (building_solid.h: closed, outward, planar faces, volume = area x height to 1e-9); then put in
 // the site's east-north-up frame as float32 (a rigid move: within a float's rounding, 0.1 mm at
 // 2 km from the origin). The first vertex is the footprint's first point at the base: the anchor.
-// uvs: each vertex's position in the cell's imagery tile (0, 0 at its top-left, 1, 1 at its
-// bottom-right: formats/gltf/terrain_mesh.h's texcoords), so the roof drapes the cell's
-// orthophoto tile. Provenance: the feature id as object id, tool "structures.buildings",
-// attributes height_m, base_m and area_m2. Throws InvalidFootprint (without the feature id) for
-// a footprint that gives no valid solid, a bad height tag, or no DEM under the footprint.
+// uvs, with a texture window: each vertex's position in that image (0, 0 at its top-left,
+// 1, 1 at its bottom-right, as glTF), so the roof drapes the orthophoto; the walls show the
+// colours of the roof's edge, drawn down (an orthophoto has no facades). Provenance: the feature id
+// as object id, tool "structures.buildings", attributes height_m, base_m and area_m2. Throws
+// InvalidFootprint (without the feature id) for a footprint that gives no valid solid, a bad height
+// tag, or no DEM under the footprint.
 MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
                          const BuildingSite& site);
 

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -5,6 +7,7 @@
 #include "building_mesh.h"
 #include "core/error.h"
 #include "footprint.h"
+#include "gltf/texture_image.h"
 #include "operators.h"
 
 namespace maquette::structures {
@@ -22,6 +25,11 @@ OperatorSpec buildings_spec() {
   dem.name = "dem";
   dem.description = "terrain heights (m, taken as above the ellipsoid)";
   s.inputs.push_back(dem);
+  InputSpec orthophoto;
+  orthophoto.name = "orthophoto";
+  orthophoto.description = "imagery (grey, RGB or RGBA, 0-255) the roofs drape, optional";
+  orthophoto.optional = true;
+  s.inputs.push_back(orthophoto);
   InputSpec footprints;
   footprints.name = "footprints";
   footprints.description = "features layer: Polygons or MultiPolygons, holes for courtyards";
@@ -41,6 +49,25 @@ OperatorSpec buildings_spec() {
                        {"skip_invalid", {{"type", "boolean"}, {"default", false}}}}},
                      {"additionalProperties", false}};
   return s;
+}
+
+// The cell's orthophoto tile with its halo (the texture window of building_mesh.h) as the
+// material of the cell's buildings: JPEG for RGB, PNG otherwise; no data black.
+Material orthophoto_material(const Tile<float>& orthophoto) {
+  const int halo = orthophoto.halo(), width = orthophoto.size() + 2 * halo;
+  Tile<uint8_t> image(width, orthophoto.channels());
+  for (int r = 0; r < width; ++r)
+    for (int c = 0; c < width; ++c)
+      for (int k = 0; k < orthophoto.channels(); ++k) {
+        const float v = orthophoto.at(c - halo, r - halo, k);
+        image.at(c, r, k) = std::isnan(v) ? 0 : uint8_t(std::lround(std::clamp(v, 0.0f, 255.0f)));
+      }
+  const EncodedImage encoded = encode_texture(image);
+  Material m;
+  m.name = "orthophoto";
+  m.image.assign(encoded.bytes.begin(), encoded.bytes.end());
+  m.image_mime = encoded.mime_type;
+  return m;
 }
 
 std::optional<GeoPoint> first_point(const Geometry& g) {
@@ -65,7 +92,10 @@ class Buildings : public CellOperator {
                             params.at("level_height_m").get<double>()};
     const bool skip_invalid = params.at("skip_invalid").get<bool>();
     MeshContent& mesh = data.content.mesh("mesh");
-    const BuildingSite site{ctx.grid, ctx.cell, &data.input("dem"), mesh.origin};
+    BuildingSite site{ctx.grid, ctx.cell, &data.input("dem"), mesh.origin, std::nullopt};
+    const auto orthophoto = data.inputs.find("orthophoto");
+    if (orthophoto != data.inputs.end())
+      site.texture = TextureWindow{orthophoto->second.size(), orthophoto->second.halo()};
     for (const VectorFeature* f : data.features_of("footprints")) {
       // Each building once: in the cell owning its first point (a feature of another geometry
       // is reported there too, by building_mesh).
@@ -73,7 +103,13 @@ class Buildings : public CellOperator {
           !first || !ctx.owns({first->lon, first->lat}))
         continue;
       try {
-        mesh.objects.push_back(building_mesh(*f, rules, site));
+        MeshObject object = building_mesh(*f, rules, site);
+        if (site.texture) {
+          if (mesh.materials.empty())
+            mesh.materials.push_back(orthophoto_material(orthophoto->second));
+          object.material = 0;
+        }
+        mesh.objects.push_back(std::move(object));
       } catch (const InvalidFootprint& e) {
         const std::string message = "structures.buildings: inputs.footprints: feature " +
                                     std::to_string(f->id) + ": " + e.what();

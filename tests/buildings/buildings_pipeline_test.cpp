@@ -2,7 +2,8 @@
 // footprints and a synthetic DEM (a lon/lat GeoTIFF: a slope and waves) ingested, the pipeline
 // run by `maquette run`. Every footprint is stored once, in the cell owning its first point, as a
 // mesh CGAL finds closed, outward and free of self-intersection after the GLB round trip, of
-// volume footprint area x height (within the GLB's 1 mm quantization); no stored DEM pixel whose
+// volume footprint area x height (within the GLB's 1 mm quantization), roofs draping the
+// orthophoto (each vertex's texel has the orthophoto's colour there); no stored DEM pixel whose
 // centre lies in a footprint is below its base, and the base is a stored DEM value; 1 and 2
 // threads store the same bits; a footprint that gives no valid solid fails the run naming its
 // feature, or is left out and named with skip_invalid.
@@ -11,6 +12,8 @@
 #include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -43,27 +46,41 @@ constexpr double kLon0 = -0.137, kLat0 = 51.513;
 constexpr double kSourcePixelDeg = 2e-5;     // ~1.4 x 2.2 m
 constexpr int kLevel = 14, kTileSize = 256;  // pixels of ~2.2 m
 
-void write_dem(const std::string& path) {
+// The synthetic DEM (m) and orthophoto (RGB) in the local tangent plane at (kLon0, kLat0): x, y
+// metres east and north.
+double terrain(double x, double y) {
+  return 25 + 0.01 * x + 2 * std::sin(x / 40) * std::cos(y / 30);
+}
+std::array<double, 3> colour(double x, double y) {
+  return {128 + 100 * std::sin(x / 50), 128 + 100 * std::cos(y / 50), 128};
+}
+
+// A lon/lat GeoTIFF over the scene of `bands` bands of `type`, each pixel `value(x, y)`.
+template <class Value>
+void write_raster(const std::string& path, int bands, GDALDataType type, const Value& value) {
   const int w = int(std::lround((kEast - kWest) / kSourcePixelDeg));
   const int h = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
   const GeographicLib::LocalCartesian frame(kLat0, kLon0, 0);
-  std::vector<float> z;
+  std::vector<float> samples(size_t(w) * size_t(h) * size_t(bands));
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       double x = 0, y = 0, up = 0;
       frame.Forward(kNorth - (r + 0.5) * kSourcePixelDeg, kWest + (c + 0.5) * kSourcePixelDeg, 0, x,
                     y, up);
-      z.push_back(float(25 + 0.01 * x + 2 * std::sin(x / 40) * std::cos(y / 30)));
+      const auto v = value(x, y);
+      for (int b = 0; b < bands; ++b)
+        samples[(size_t(b) * size_t(h) + size_t(r)) * size_t(w) + size_t(c)] = float(v[size_t(b)]);
     }
   GDALAllRegister();
   const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), w, h, 1, GDT_Float32, nullptr));
+      path.c_str(), w, h, bands, type, nullptr));
   double transform[6] = {kWest, kSourcePixelDeg, 0, kNorth, 0, -kSourcePixelDeg};
   ds->SetGeoTransform(transform);
   OGRSpatialReference srs;
   srs.importFromEPSG(4326);
   ds->SetSpatialRef(&srs);
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, w, h, z.data(), w, h, GDT_Float32, 0, 0),
+  ASSERT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, samples.data(), w, h, GDT_Float32, bands, nullptr, 0,
+                         0, 0, nullptr),
             CE_None);
 }
 
@@ -78,21 +95,26 @@ struct Scene {
   std::string store = dir + "/soho.mqt";
 
   Scene(const json& footprints, const json& params) {
-    write_dem(dir + "/dem.tif");
+    write_raster(dir + "/dem.tif", 1, GDT_Float32,
+                 [](double x, double y) { return std::array<double, 1>{terrain(x, y)}; });
+    write_raster(dir + "/orthophoto.tif", 3, GDT_Byte, colour);
     std::ofstream(dir + "/footprints.geojson") << footprints.dump();
-    const json pipeline = {{"store", store},
-                           {"region", {{"bbox", {kWest, kSouth, kEast, kNorth}}}},
-                           {"level", kLevel},
-                           {"steps",
-                            {{{"op", "structures.buildings"},
-                              {"params", params},
-                              {"inputs", {{"dem", "dem"}, {"footprints", "footprints"}}},
-                              {"outputs", {{"mesh", "buildings"}}}}}}};
+    const json pipeline = {
+        {"store", store},
+        {"region", {{"bbox", {kWest, kSouth, kEast, kNorth}}}},
+        {"level", kLevel},
+        {"steps",
+         {{{"op", "structures.buildings"},
+           {"params", params},
+           {"inputs", {{"dem", "dem"}, {"orthophoto", "orthophoto"}, {"footprints", "footprints"}}},
+           {"outputs", {{"mesh", "buildings"}}}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
               "ellipsoid --level " + std::to_string(kLevel) + " --tile-size " +
               std::to_string(kTileSize),
+          "ingest " + store + " " + dir + "/orthophoto.tif --layer orthophoto --as imagery " +
+              "--level " + std::to_string(kLevel) + " --tile-size " + std::to_string(kTileSize),
           "ingest " + store + " " + dir + "/footprints.geojson --layer footprints --as features"}) {
       const CliResult r = run_maquette("-q " + args);
       EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
@@ -109,6 +131,34 @@ Tile<float> tile(const Store& st, CellId cell) {
   return raw ? to_tile<float>(*raw, info.nodata ? &*info.nodata : nullptr)
              : Tile<float>(kTileSize, 1, 0, NAN);
 }
+
+// An encoded image's pixels (GDAL reads it from memory), band after band.
+struct Image {
+  int width = 0, height = 0, bands = 0;
+  std::vector<uint8_t> pixels;
+  explicit Image(const std::string& bytes) {
+    const std::string path = "/vsimem/buildings_texture";
+    VSIFCloseL(VSIFileFromMemBuffer(path.c_str(),
+                                    reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
+                                    vsi_l_offset(bytes.size()), FALSE));
+    const std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+    EXPECT_TRUE(ds);
+    if (ds) {
+      width = ds->GetRasterXSize(), height = ds->GetRasterYSize(), bands = ds->GetRasterCount();
+      pixels.resize(size_t(width) * size_t(height) * size_t(bands));
+      EXPECT_EQ(ds->RasterIO(GF_Read, 0, 0, width, height, pixels.data(), width, height, GDT_Byte,
+                             bands, nullptr, 0, 0, 0, nullptr),
+                CE_None);
+    }
+    VSIUnlink(path.c_str());
+  }
+  // The nearest pixel's band `b` at texture coordinates (u, v), glTF's: v down from the top.
+  double at(float u, float v, int b) const {
+    const int c = std::clamp(int(u * float(width)), 0, width - 1);
+    const int r = std::clamp(int(v * float(height)), 0, height - 1);
+    return pixels[(size_t(b) * size_t(height) + size_t(r)) * size_t(width) + size_t(c)];
+  }
+};
 
 bool inside(const json& rings, LonLat p) {
   bool in = false;
@@ -142,10 +192,18 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
               dem.at(col, row));
   }
   std::set<int64_t> features;
+  const GeographicLib::LocalCartesian local(kLat0, kLon0, 0);
   for (const CellId cell : st->content_cells("buildings")) {
     const std::string blob = *st->get_content("buildings", cell);
     const ContentEnvelope envelope = read_content_envelope(blob, "test");
     const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
+    // The roofs drape the cell's orthophoto tile with its halo: 256 + 2 x 128 pixels, JPEG.
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.materials[0].image_mime, "image/jpeg");
+    const Image image(mesh.materials[0].image);
+    EXPECT_EQ(image.width, 512);
+    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
+                                              envelope.origin.height);
     for (const MeshObject& o : mesh.objects) {
       const int64_t id = o.provenance.feature_id;
       EXPECT_TRUE(features.insert(id).second) << "feature " << id << " stored twice";
@@ -159,7 +217,19 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
       EXPECT_TRUE(v.polygon_mesh && v.closed && !v.self_intersects && v.outward)
           << "feature " << id;
       EXPECT_NEAR(v.volume, area * height, 1e-3 * area * height) << "feature " << id;
+      // Each vertex's texel has the orthophoto's colour at the vertex (within the JPEG's loss
+      // and a pixel's change of colour: 2 levels a metre, pixels of ~2.2 m).
       ASSERT_EQ(o.uvs.size(), 2 * o.positions.size() / 3);
+      EXPECT_EQ(o.material, 0);
+      for (size_t k = 0; k < o.positions.size() / 3; ++k) {
+        double lat = 0, lon = 0, h = 0, x = 0, y = 0, z = 0;
+        frame.Reverse(o.positions[3 * k], o.positions[3 * k + 1], o.positions[3 * k + 2], lat, lon,
+                      h);
+        local.Forward(lat, lon, 0, x, y, z);
+        for (int b = 0; b < 3; ++b)
+          EXPECT_NEAR(image.at(o.uvs[2 * k], o.uvs[2 * k + 1], b), colour(x, y)[size_t(b)], 12)
+              << "feature " << id << " vertex " << k << " band " << b;
+      }
 
       // The footprint: features are stored in file order with ids from 1.
       const json& rings = footprints["features"][size_t(id - 1)]["geometry"]["coordinates"];

@@ -64,7 +64,12 @@ SohoScene::SohoScene(const std::string& path) : footprints(read_footprints(path)
 BuildingSite SohoScene::site(const VectorFeature& footprint) const {
   const CellId cell = cell_of(footprint);
   const LonLat centre = default_grid().centre(cell);
-  return {&default_grid(), cell, &dems.at(cell), {centre.lon, centre.lat, 0}};
+  // The roof drapes an orthophoto of the DEM's tiling.
+  return {&default_grid(),
+          cell,
+          &dems.at(cell),
+          {centre.lon, centre.lat, 0},
+          TextureWindow{kSohoTileSize, kDemHaloPixels}};
 }
 
 }  // namespace maquette::structures
