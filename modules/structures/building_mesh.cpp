@@ -45,7 +45,13 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   for (const GeoPolygon& polygon : polygons)
     for (const GeoPath& ring : polygon.rings) {
       PixelRing& r = pixel_rings.emplace_back();
-      for (const GeoPoint& p : ring) r.push_back(pixel(*site.grid, p));
+      for (const GeoPoint& p : ring) {
+        // Another face's points are placed in that face's plane, where the halo's pixels (turned
+        // across the edge) need not follow.
+        if (site.grid->cell_from_point({p.lon, p.lat}, 0).face() != site.cell.face())
+          throw InvalidFootprint("it crosses an edge of the grid's faces: not handled yet");
+        r.push_back(pixel(*site.grid, p));
+      }
     }
   const std::optional<float> base = lowest_terrain(*site.dem, pixel_rings);
   if (!base) throw InvalidFootprint("the DEM has no data under the footprint");

@@ -46,7 +46,8 @@ struct BuildingSite {
 // colours of the roof's edge, drawn down (an orthophoto has no facades). Provenance: the feature id
 // as object id, tool "structures.buildings", attributes height_m, base_m and area_m2. Throws
 // InvalidFootprint (without the feature id) for a footprint that gives no valid solid, a bad height
-// tag, or no DEM under the footprint.
+// tag, no DEM under the footprint, or a footprint reaching beyond the DEM tile's halo or across an
+// edge of the grid's faces.
 MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
                          const BuildingSite& site);
 
