@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include "../building_height.h"
-#include "../building_mesh.h"
 #include "../footprint.h"
 
 namespace maquette::structures {
@@ -75,49 +74,6 @@ TEST(BuildingHeight, TagsInOrder) {
     EXPECT_NE(std::string(e.what()).find("tag height = \"tall\""), std::string::npos) << e.what();
   }
   EXPECT_THROW(building_height({{"building:levels", -2}}, rules), InvalidFootprint);
-}
-
-// A 20 m square across the edge between the north polar face and an equatorial one (found by
-// bisection on the latitude), and one beside it: refused, and built.
-TEST(BuildingMesh, RefusesFootprintsAcrossFaceEdges) {
-  const Grid& grid = default_grid();
-  const double lon = 10;
-  double south = 30, north = 60;
-  const int polar = grid.cell_from_point({lon, north}, 0).face();
-  for (int k = 0; k < 60; ++k) {
-    const double mid = (south + north) / 2;
-    (grid.cell_from_point({lon, mid}, 0).face() == polar ? north : south) = mid;
-  }
-  const double d = 1e-4;  // ~10 m of latitude
-  const auto square = [&](double lat0) {
-    VectorFeature f;
-    f.id = 7;
-    f.geometry.type = GeometryType::Polygon;
-    f.geometry.polygons = {{{{{lon - d, lat0 - d},
-                              {lon + d, lat0 - d},
-                              {lon + d, lat0 + d},
-                              {lon - d, lat0 + d},
-                              {lon - d, lat0 - d}}}}};
-    return f;
-  };
-  const Tile<float> dem(256, 1, kDemHaloPixels, 100.0f);
-  for (const double lat0 : {north, north + 5 * d}) {
-    const CellId cell = grid.cell_from_point({lon - d, lat0 - d}, 14);
-    const LonLat centre = grid.centre(cell);
-    const BuildingSite site{&grid, cell, &dem, {centre.lon, centre.lat, 0}, std::nullopt};
-    if (lat0 == north) {
-      try {
-        building_mesh(square(lat0), {}, site);
-        ADD_FAILURE() << "a footprint across a face edge was built";
-      } catch (const InvalidFootprint& e) {
-        EXPECT_NE(std::string(e.what()).find("edge of the grid's faces"), std::string::npos);
-      }
-    } else {
-      const MeshObject m = building_mesh(square(lat0), {}, site);
-      EXPECT_EQ(m.provenance.attributes.at("base_m"), 100);
-      EXPECT_TRUE(m.uvs.empty());  // no texture window
-    }
-  }
 }
 
 }  // namespace
