@@ -17,7 +17,8 @@ OperatorSpec buildings_spec() {
   OperatorSpec s;
   s.name = "structures.buildings";
   s.description =
-      "LoD1 buildings from footprints (paper 002 §5): extruded by their OSM height tags from the "
+      "LoD1 buildings from footprints (paper 002 §7, Fig. 15): extruded by their OSM height tags "
+      "from the "
       "lowest terrain under them, flat roofs, courtyards kept, checked as val3dity checks solids";
   s.kind = OperatorKind::Cell;
   s.halo = kDemHaloPixels;
@@ -27,7 +28,7 @@ OperatorSpec buildings_spec() {
   s.inputs.push_back(dem);
   InputSpec orthophoto;
   orthophoto.name = "orthophoto";
-  orthophoto.description = "imagery (grey, RGB or RGBA, 0-255) the roofs drape, optional";
+  orthophoto.description = "imagery (grey, RGB or RGBA, 0-255) the roofs drape";
   orthophoto.optional = true;
   s.inputs.push_back(orthophoto);
   InputSpec footprints;
