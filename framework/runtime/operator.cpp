@@ -30,6 +30,25 @@ const FeatureList& CellData::features_of(const std::string& port) const {
   return it->second;
 }
 
+namespace {
+
+const LayerInfo& layer_of(const InputLayers* layers, const std::string& port) {
+  if (layers)
+    for (const auto& [name, layer] : *layers)
+      if (name == port) return layer;
+  throw Error("no layer is read by input port '" + port + "'");
+}
+
+}  // namespace
+
+const LayerInfo& CellContext::input_layer(const std::string& port) const {
+  return layer_of(input_layers, port);
+}
+
+const LayerInfo& StepContext::input_layer(const std::string& port) const {
+  return layer_of(input_layers, port);
+}
+
 bool CellContext::owns(LonLat anchor) const {
   return grid->cell_from_point(anchor, cell.level()) == cell;
 }

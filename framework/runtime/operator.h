@@ -84,6 +84,9 @@ struct OperatorSpec {
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
 };
 
+// The raster layers a step's input ports read: (port, layer), in the spec's order.
+using InputLayers = std::vector<std::pair<std::string, LayerInfo>>;
+
 // What an operator sees of the cell it works on. `store` is the run's store (on every rank), for
 // reading what the step's ports do not carry: artifacts (a stations table, a fitted model), other
 // layers, features layers. Operators must only read it: the runner writes every output, and a
@@ -95,6 +98,13 @@ struct CellContext {
   const Grid* grid = nullptr;
   const json* params = nullptr;  // validated, defaults filled in
   const Store* store = nullptr;  // read-only (see above)
+  // The raster layers the step's input ports read, in the spec's order: what a layer is beyond its
+  // tiles, e.g. a DEM's vertical datum (gdal/vertical_datum.h: ellipsoidal_heights(layer) turns
+  // its heights into the heights above the ellipsoid that 3D content is placed at).
+  const InputLayers* input_layers = nullptr;
+
+  // The layer read by raster input port `port`; throws maquette::Error when no layer is mapped.
+  const LayerInfo& input_layer(const std::string& port) const;
 
   // Whether this cell owns an object anchored at `anchor` (content/content.h: a mesh object's
   // first vertex, an instance's position): the cell at its level holding the point. Features
@@ -106,8 +116,11 @@ struct CellContext {
 // without a cell.
 struct StepContext {
   const Grid* grid = nullptr;
-  const json* params = nullptr;  // validated, defaults filled in
-  const Store* store = nullptr;  // read-only, as in CellContext
+  const json* params = nullptr;               // validated, defaults filled in
+  const Store* store = nullptr;               // read-only, as in CellContext
+  const InputLayers* input_layers = nullptr;  // as in CellContext
+
+  const LayerInfo& input_layer(const std::string& port) const;
 };
 
 // How far beyond its cell an anchor may be found (metres): float32 positions near an edge may

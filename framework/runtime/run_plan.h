@@ -44,8 +44,8 @@ struct StepPlan {
   json params;
   int level = 0;  // level of the cells (and tiles) the step reads and writes
   int tile_size = 0;
-  std::vector<std::pair<std::string, LayerInfo>> inputs;  // raster ports, in the spec's order
-  std::vector<FeaturePort> features;                      // features ports, in the spec's order
+  InputLayers inputs;                        // raster ports, in the spec's order
+  std::vector<FeaturePort> features;         // features ports, in the spec's order
   std::map<std::string, LayerInfo> outputs;  // port -> raster or content layer (cell, region)
   std::string artifact;                      // reduce: the artifact written
   // A step with raster inputs processes the first one's tiles within the region; one whose

@@ -6,7 +6,7 @@ namespace {
 
 CellContext context(const StepPlan& plan, const StepIO& io, CellId cell) {
   return CellContext{cell,         plan.tile_size, plan.step->refine, &default_grid(),
-                     &plan.params, &io.store()};
+                     &plan.params, &io.store(),    &plan.inputs};
 }
 
 }  // namespace
@@ -43,7 +43,8 @@ void finish_reduce_step(const StepPlan& plan, const std::vector<json>& partials,
     json merged;
     for (const json& p : partials)
       if (!p.is_null()) merged = merged.is_null() ? p : op.merge(merged, p);
-    Artifact artifact = op.finish(merged, {&default_grid(), &plan.params, &io.store()});
+    Artifact artifact =
+        op.finish(merged, {&default_grid(), &plan.params, &io.store(), &plan.inputs});
     artifact.name = plan.artifact;
     io.write_done(plan.cells.cells(), &artifact);
   } catch (const std::exception& e) {

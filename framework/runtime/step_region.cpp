@@ -63,7 +63,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   output.layers = io.blank_outputs(side);
   for (const CellId c : cells) output.content.emplace(c, io.blank_content(c));
   try {
-    op.run({&default_grid(), &plan.params, &io.store()}, input, output);
+    op.run({&default_grid(), &plan.params, &io.store(), &plan.inputs}, input, output);
   } catch (const std::exception& e) {
     throw Error(plan.step->label() + " failed on the region's mosaic: " + e.what());
   } catch (...) {

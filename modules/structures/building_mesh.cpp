@@ -57,7 +57,9 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   if (!base) throw InvalidFootprint("the DEM has no data under the footprint");
 
   const GeoPoint& anchor = polygons.front().rings.front().front();
-  const GeographicLib::LocalCartesian building(anchor.lat, anchor.lon, *base);
+  const double base_above_ellipsoid =
+      site.to_ellipsoid ? (*site.to_ellipsoid)({anchor.lon, anchor.lat}, *base) : *base;
+  const GeographicLib::LocalCartesian building(anchor.lat, anchor.lon, base_above_ellipsoid);
   const GeographicLib::LocalCartesian content(site.origin.lat, site.origin.lon, site.origin.height);
   std::vector<Footprint> parts;
   for (const GeoPolygon& polygon : polygons) {
@@ -66,7 +68,7 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
       PlaneRing& r = rings.emplace_back();
       for (const GeoPoint& p : ring) {
         double x = 0, y = 0, z = 0;
-        building.Forward(p.lat, p.lon, *base, x, y, z);
+        building.Forward(p.lat, p.lon, base_above_ellipsoid, x, y, z);
         r.push_back({x, y});
       }
     }

@@ -8,6 +8,7 @@
 #include "content/content.h"
 #include "core/grid.h"
 #include "core/tile.h"
+#include "gdal/vertical_datum.h"
 #include "runtime/vector_feature.h"
 
 namespace maquette::structures {
@@ -29,15 +30,18 @@ struct TextureWindow {
 struct BuildingSite {
   const Grid* grid = nullptr;
   CellId cell;
-  const Tile<float>* dem = nullptr;  // heights (m, taken as above the ellipsoid), NaN: no data
+  const Tile<float>* dem = nullptr;  // heights (m) above its vertical datum, NaN: no data
   EnuOrigin origin;
   std::optional<TextureWindow> texture;
+  // The DEM's heights to heights above the ellipsoid (its recorded datum); null: they are.
+  const EllipsoidalHeights* to_ellipsoid = nullptr;
 };
 
 // The building of a Polygon or MultiPolygon feature (courtyards as holes, one solid per part):
 // its height from the tags (building_height.h); its base at the lowest terrain under the whole
-// footprint (terrain_base.h); each part extruded in the tangent plane at the footprint's first
-// point (GeographicLib LocalCartesian on WGS84, at the base height) and checked there
+// footprint (terrain_base.h), taken to the ellipsoid at the anchor (the geoid's slope over a
+// building is well under a millimetre); each part extruded in the tangent plane at the footprint's
+// first point (GeographicLib LocalCartesian on WGS84, at the base height) and checked there
 // (building_solid.h: closed, outward, planar faces, volume = area x height to 1e-9); then put in
 // the site's east-north-up frame as float32 (a rigid move: within a float's rounding, 0.1 mm at
 // 2 km from the origin). The first vertex is the footprint's first point at the base: the anchor.

@@ -24,7 +24,7 @@ OperatorSpec buildings_spec() {
   s.halo = kDemHaloPixels;
   InputSpec dem;
   dem.name = "dem";
-  dem.description = "terrain heights (m, taken as above the ellipsoid)";
+  dem.description = "terrain heights (m above the layer's vertical datum)";
   s.inputs.push_back(dem);
   InputSpec orthophoto;
   orthophoto.name = "orthophoto";
@@ -93,7 +93,9 @@ class Buildings : public CellOperator {
                             params.at("level_height_m").get<double>()};
     const bool skip_invalid = params.at("skip_invalid").get<bool>();
     MeshContent& mesh = data.content.mesh("mesh");
-    BuildingSite site{ctx.grid, ctx.cell, &data.input("dem"), mesh.origin, std::nullopt};
+    const EllipsoidalHeights to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
+    BuildingSite site{ctx.grid,    ctx.cell,     &data.input("dem"),
+                      mesh.origin, std::nullopt, &to_ellipsoid};
     const auto orthophoto = data.inputs.find("orthophoto");
     if (orthophoto != data.inputs.end())
       site.texture = TextureWindow{orthophoto->second.size(), orthophoto->second.halo()};

@@ -98,7 +98,9 @@ struct Scene {
   std::string store = dir + "/soho.mqt";
 
   // Layers at `level` in tiles of `tile_size` pixels.
-  Scene(const json& footprints, const json& params, int level = kLevel, int tile_size = kTileSize) {
+  // `datum`: the DEM's vertical datum (maquette ingest --vertical-datum).
+  Scene(const json& footprints, const json& params, int level = kLevel, int tile_size = kTileSize,
+        const std::string& datum = "ellipsoid") {
     write_raster(dir + "/dem.tif", 1, GDT_Float32,
                  [](double x, double y) { return std::array<double, 1>{terrain(x, y)}; });
     write_raster(dir + "/orthophoto.tif", 3, GDT_Byte, colour);
@@ -115,7 +117,7 @@ struct Scene {
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
-              "ellipsoid --level " + std::to_string(level) + " --tile-size " +
+              datum + " --level " + std::to_string(level) + " --tile-size " +
               std::to_string(tile_size),
           "ingest " + store + " " + dir + "/orthophoto.tif --layer orthophoto --as imagery " +
               "--level " + std::to_string(level) + " --tile-size " + std::to_string(tile_size),
@@ -251,6 +253,47 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
     }
   }
   EXPECT_EQ(features.size(), 158u);
+}
+
+// On a DEM of EGM96 heights (SRTM's datum, the ingest's default) each building stands at its base
+// plus the geoid height there, as the exported terrain does: its lowest vertex's height above the
+// ellipsoid is base_m + N, N from PROJ (EGM96 height -> WGS 84 ellipsoidal; ~46 m in London).
+TEST(BuildingsPipeline, OnAnEgm96DemBuildingsStandOnTheEllipsoidalTerrain) {
+  const Scene scene(soho(), json::object(), kLevel, kTileSize, "egm96");
+  const CliResult r = scene.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  OGRSpatialReference egm96, ellipsoidal;
+  ASSERT_EQ(egm96.SetFromUserInput("EPSG:4326+5773"), OGRERR_NONE);
+  ASSERT_EQ(ellipsoidal.SetFromUserInput("EPSG:4979"), OGRERR_NONE);
+  egm96.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const std::unique_ptr<OGRCoordinateTransformation> to_ellipsoid(
+      OGRCreateCoordinateTransformation(&egm96, &ellipsoidal));
+  ASSERT_TRUE(to_ellipsoid);
+  const auto st = Store::open(scene.store, Store::Mode::ReadOnly);
+  int checked = 0;
+  for (const CellId cell : st->content_cells("buildings")) {
+    const std::string blob = *st->get_content("buildings", cell);
+    const ContentEnvelope envelope = read_content_envelope(blob, "test");
+    const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
+    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
+                                              envelope.origin.height);
+    for (const MeshObject& o : mesh.objects) {
+      // The lowest vertex: the base.
+      double lat = 0, lon = 0, h = INFINITY;
+      for (size_t k = 0; k < o.positions.size(); k += 3) {
+        double vlat = 0, vlon = 0, vh = 0;
+        frame.Reverse(o.positions[k], o.positions[k + 1], o.positions[k + 2], vlat, vlon, vh);
+        if (vh < h) std::tie(lat, lon, h) = std::tuple(vlat, vlon, vh);
+      }
+      double x = lon, y = lat, z = o.provenance.attributes.at("base_m").get<double>();
+      ASSERT_TRUE(to_ellipsoid->Transform(1, &x, &y, &z));
+      EXPECT_GT(z - o.provenance.attributes.at("base_m").get<double>(), 40);
+      EXPECT_NEAR(h, z, 0.01) << "feature " << o.provenance.feature_id;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 158);
 }
 
 TEST(BuildingsPipeline, SameBitsForOneAndTwoThreads) {
