@@ -1,6 +1,7 @@
-// deform.water's water body (level + fill, water_body.h) for a 1,000 x 1,000-sample basin: the
-// tests' bowl of hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
-// Goal: <= 50 ms. With --dem=PATH it writes that DEM as a GeoTIFF and prints the level and the
+// deform.water's water body (level + fill, water_body.h) and its closed mesh (water_mesh.h) for a
+// 1,000 x 1,000-sample basin: the tests' bowl of hills (islands, a ragged shore) inside an
+// ellipse, filled to the spill level. Goals: <= 50 ms for the body, well under a second for the
+// mesh. With --dem=PATH it writes that DEM as a GeoTIFF and prints the level and the
 // seed's coordinates for compare_rlake.sh (r.lake on the same DEM), then exits.
 #include <benchmark/benchmark.h>
 
@@ -8,6 +9,7 @@
 #include <cstring>
 
 #include "tests/water_basins.h"
+#include "water_mesh.h"
 
 namespace {
 
@@ -29,6 +31,20 @@ void BM_WaterBody(benchmark::State& state) {
   state.counters["wet"] = double(wet);
 }
 BENCHMARK(BM_WaterBody)->Unit(benchmark::kMillisecond);
+
+void BM_LakeMesh(benchmark::State& state) {
+  const BasinRaster raster = basin().raster();
+  const WaterBody body = fill_basin(raster, water_level(raster, {}));
+  size_t triangles = 0;
+  for (auto _ : state) {
+    const LakeMesh mesh = lake_mesh(raster, body);
+    triangles = mesh.indices.size() / 3;
+    benchmark::DoNotOptimize(mesh.vertices.data());
+  }
+  state.counters["wet"] = double(body.wet.size());
+  state.counters["triangles"] = double(triangles);
+}
+BENCHMARK(BM_LakeMesh)->Unit(benchmark::kMillisecond);
 
 // Writes the basin as a GeoTIFF and prints "LEVEL X Y" (the spill level, the seed's centre).
 int write_dem(const char* path) {

@@ -1,13 +1,11 @@
 #include "water_mesh.h"
 
-#include <geos_c.h>
-
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
-#include <memory>
 #include <stdexcept>
-#include <string>
 #include <tuple>
 #include <utility>
 
@@ -15,80 +13,28 @@ namespace maquette::deform {
 namespace {
 
 using Corner = std::pair<int64_t, int64_t>;  // (col, row) of the corner lattice
-using Point = std::array<double, 2>;         // (col, row)
 
-Point point(Corner c) { return {double(c.first), double(c.second)}; }
+constexpr uint32_t kNone = UINT32_MAX;
 
-// GEOS's reentrant API with its handle freed on scope exit.
-struct Geos {
-  GEOSContextHandle_t h = GEOS_init_r();
-  Geos() = default;
-  Geos(const Geos&) = delete;
-  Geos& operator=(const Geos&) = delete;
-  ~Geos() { GEOS_finish_r(h); }
-  struct Free {
-    GEOSContextHandle_t h;
-    void operator()(GEOSGeometry* g) const { GEOSGeom_destroy_r(h, g); }
-  };
-  using Ptr = std::unique_ptr<GEOSGeometry, Free>;
-  Ptr own(GEOSGeometry* g, const char* what) const {
-    if (!g) throw std::runtime_error(std::string("GEOS failed: ") + what);
-    return Ptr(g, Free{h});
-  }
-};
-
-// The wet pixels' squares as one GEOS MultiPolygon, in (x, y) = (col, -row).
-Geos::Ptr wet_squares(const Geos& geos, const BasinRaster& basin, const WaterBody& body) {
-  std::vector<GEOSGeometry*> squares;
-  for (const int64_t i : body.wet) {
-    const double c = double(i % basin.width), r = double(i / basin.width);
-    GEOSCoordSequence* s = GEOSCoordSeq_create_r(geos.h, 5, 2);
-    const double xy[5][2] = {{c, -r - 1}, {c + 1, -r - 1}, {c + 1, -r}, {c, -r}, {c, -r - 1}};
-    for (unsigned k = 0; k < 5; ++k) GEOSCoordSeq_setXY_r(geos.h, s, k, xy[k][0], xy[k][1]);
-    squares.push_back(
-        GEOSGeom_createPolygon_r(geos.h, GEOSGeom_createLinearRing_r(geos.h, s), nullptr, 0));
-  }
-  return geos.own(GEOSGeom_createCollection_r(geos.h, GEOS_MULTIPOLYGON, squares.data(),
-                                              unsigned(squares.size())),
-                  "wet squares");
-}
-
-// The top's triangles, counter-clockwise in (col, -row), as corner triples.
-std::vector<std::array<Corner, 3>> top_triangles(const BasinRaster& basin, const WaterBody& body) {
-  const Geos geos;
-  const Geos::Ptr squares = wet_squares(geos, basin, body);
-  const Geos::Ptr shore = geos.own(GEOSCoverageUnion_r(geos.h, squares.get()), "shoreline");
-  const Geos::Ptr tris =
-      geos.own(GEOSConstrainedDelaunayTriangulation_r(geos.h, shore.get()), "triangulation");
-  std::vector<std::array<Corner, 3>> out;
-  for (int k = 0; k < GEOSGetNumGeometries_r(geos.h, tris.get()); ++k) {
-    const GEOSGeometry* ring =
-        GEOSGetExteriorRing_r(geos.h, GEOSGetGeometryN_r(geos.h, tris.get(), k));
-    const GEOSCoordSequence* s = GEOSGeom_getCoordSeq_r(geos.h, ring);
-    std::array<Corner, 3> t;
-    for (unsigned v = 0; v < 3; ++v) {
-      double x = 0, y = 0;
-      GEOSCoordSeq_getXY_r(geos.h, s, v, &x, &y);
-      t[v] = {std::llround(x), -std::llround(y)};
-    }
-    // Counter-clockwise in (col, -row) is clockwise in (col, row).
-    const int64_t cross = (t[1].first - t[0].first) * (t[2].second - t[0].second) -
-                          (t[1].second - t[0].second) * (t[2].first - t[0].first);
-    if (cross > 0) std::swap(t[1], t[2]);
-    if (cross != 0) out.push_back(t);
-  }
-  return out;
-}
-
-// Vertices by corner. Where only two diagonal pixels around a corner are wet (the lake touches
-// itself there, 8-connected), each of them gets its own vertices at the corner, so that every
-// edge stays in two triangles. The pixel a corner is used for is its quadrant: 0 (col - 1,
-// row - 1), 1 (col, row - 1), 2 (col - 1, row), 3 (col, row).
+// Vertices by corner, in dense tables over the lake's bounding box. Where only two diagonal
+// pixels around a corner are wet (the lake touches itself there, 8-connected), each of them gets
+// its own vertices at the corner, so that every edge stays in two triangles. The pixel a corner
+// is used for is its quadrant: 0 (col - 1, row - 1), 1 (col, row - 1), 2 (col - 1, row), 3 (col,
+// row).
 class Builder {
  public:
   Builder(const BasinRaster& basin, const WaterBody& body) : basin_(basin), body_(body) {
     wet_.assign(size_t(basin.width) * size_t(basin.height), 0);
-    for (const int64_t i : body.wet) wet_[size_t(i)] = 1;
+    col0_ = basin.width, row0_ = basin.height;
+    int64_t col1 = 0, row1 = 0;
+    for (const int64_t i : body.wet) {
+      wet_[size_t(i)] = 1;
+      col0_ = std::min(col0_, i % basin.width), col1 = std::max(col1, i % basin.width + 1);
+      row0_ = std::min(row0_, i / basin.width), row1 = std::max(row1, i / basin.width + 1);
+    }
+    corners_across_ = col1 - col0_ + 1;
+    top_.assign(size_t(corners_across_ * (row1 - row0_ + 1)), kNone);
+    bottom_.assign(top_.size(), kNone);
   }
 
   bool wet(int64_t col, int64_t row) const {
@@ -101,18 +47,16 @@ class Builder {
 
   // The top vertex at corner p of a triangle whose other vertices are at a and b: its quadrant
   // is where the triangle's angle at p opens (the bisector of its two edges).
-  uint32_t top_at(Corner p, Point a, Point b) {
-    const double ac = a[0] - double(p.first), ar = a[1] - double(p.second);
-    const double bc = b[0] - double(p.first), br = b[1] - double(p.second);
+  uint32_t top_at(Corner p, Corner a, Corner b) {
+    const double ac = double(a.first - p.first), ar = double(a.second - p.second);
+    const double bc = double(b.first - p.first), br = double(b.second - p.second);
     const double la = std::hypot(ac, ar), lb = std::hypot(bc, br);
     const double dc = ac / la + bc / lb, dr = ar / la + br / lb;
     return top(p, (dr > 0 ? 2 : 0) + (dc > 0 ? 1 : 0));
   }
 
-  // A top vertex off the corner lattice (a fan's centroid).
-  uint32_t top_point(Point p) {
-    mesh_.vertices.push_back({p[0], p[1], body_.level});
-    return uint32_t(mesh_.vertices.size() - 1);
+  void top_triangle(Corner a, Corner b, Corner c) {
+    triangle(top_at(a, b, c), top_at(b, c, a), top_at(c, a, b));
   }
 
   void triangle(uint32_t a, uint32_t b, uint32_t c) {
@@ -134,10 +78,12 @@ class Builder {
 
   uint32_t vertex(Corner c, int quadrant, bool top) {
     const int part = touches_itself(c) ? quadrant : -1;
-    auto& ids = top ? top_ : bottom_;
-    const auto [it, added] =
-        ids.emplace(std::tuple(c.first, c.second, part), uint32_t(mesh_.vertices.size()));
-    if (!added) return it->second;
+    uint32_t& id =
+        part < 0 ? (top ? top_
+                        : bottom_)[size_t((c.second - row0_) * corners_across_ + (c.first - col0_))]
+                 : split_[std::tuple(c.first, c.second, part, top)].id;
+    if (id != kNone) return id;
+    id = uint32_t(mesh_.vertices.size());
     double height = body_.level;
     if (!top) {  // the mean terrain of the wet pixels around the corner (of the part's pixel)
       double sum = 0;
@@ -152,24 +98,54 @@ class Builder {
       height = sum / count;
     }
     mesh_.vertices.push_back({double(c.first), double(c.second), height});
-    return it->second;
+    return id;
   }
+
+  // A corner used by one diagonal pixel of a self-touching corner: its own vertex, added on first
+  // use (kNone until then).
+  struct SplitId {
+    uint32_t id = kNone;
+  };
 
   const BasinRaster& basin_;
   const WaterBody& body_;
   std::vector<uint8_t> wet_;
-  std::map<std::tuple<int64_t, int64_t, int>, uint32_t> top_, bottom_;
+  int64_t col0_ = 0, row0_ = 0, corners_across_ = 0;  // the bounding box's corner lattice
+  std::vector<uint32_t> top_, bottom_;                // by corner, when not split
+  std::map<std::tuple<int64_t, int64_t, int, bool>, SplitId> split_;
   LakeMesh mesh_;
 };
 
-// The corners from a to b (axis-aligned), a included, b excluded.
-std::vector<Corner> steps(Corner a, Corner b) {
-  std::vector<Corner> out;
-  const int64_t n = std::max(std::abs(b.first - a.first), std::abs(b.second - a.second));
-  for (int64_t k = 0; k < n; ++k)
-    out.push_back(
-        {a.first + (b.first - a.first) / n * k, a.second + (b.second - a.second) / n * k});
-  return out;
+// The top of the wet run [col0, col1) of `row`: the strip between its upper corner line (row) and
+// its lower one (row + 1), each with the run's ends and every shoreline corner between them (a
+// corner touching a dry pixel of the row above, resp. below), zipped into triangles by column.
+// Each triangle has one side on a corner line and its third vertex on the other line: none is
+// degenerate. Neighbouring strips hold the same corners on their shared line (a corner inside a
+// run is on the shore when one of the two pixels left and right of it above or below is dry,
+// whichever strip asks), so the top has no T-junction.
+void top_strip(Builder& m, int64_t row, int64_t col0, int64_t col1) {
+  const auto chain = [&](int64_t line, int64_t beyond) {
+    std::vector<int64_t> cols{col0};
+    for (int64_t c = col0 + 1; c < col1; ++c)
+      if (!m.wet(c - 1, beyond) || !m.wet(c, beyond)) cols.push_back(c);
+    cols.push_back(col1);
+    return std::pair(line, cols);
+  };
+  const auto [upper_row, upper] = chain(row, row - 1);
+  const auto [lower_row, lower] = chain(row + 1, row + 1);
+  size_t i = 0, j = 0;
+  // Counter-clockwise in (col, -row): the upper line's side left to right is followed by the
+  // lower vertex, the lower line's side by the upper vertex.
+  while (i + 1 < upper.size() || j + 1 < lower.size()) {
+    const Corner u{upper[i], upper_row}, l{lower[j], lower_row};
+    if (j + 1 == lower.size() || (i + 1 < upper.size() && upper[i + 1] <= lower[j + 1])) {
+      m.top_triangle(u, l, {upper[i + 1], upper_row});
+      ++i;
+    } else {
+      m.top_triangle(l, {lower[j + 1], lower_row}, u);
+      ++j;
+    }
+  }
 }
 
 }  // namespace
@@ -178,34 +154,15 @@ LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
   if (body.wet.empty()) throw std::invalid_argument("lake_mesh: an empty body");
   Builder m(basin, body);
 
-  // Top: the shoreline's triangles; one with a shoreline edge spanning several pixel sides is
-  // fanned from its centroid through every corner of that edge, where the walls meet it.
-  const auto tris = top_triangles(basin, body);
-  std::map<std::pair<Corner, Corner>, int> uses;
-  for (const auto& t : tris)
-    for (size_t e = 0; e < 3; ++e) ++uses[std::minmax(t[e], t[(e + 1) % 3])];
-  const auto shore = [&](Corner a, Corner b) { return uses[std::minmax(a, b)] == 1; };
-  for (const auto& t : tris) {
-    bool long_shore = false;
-    for (size_t e = 0; e < 3; ++e)
-      long_shore =
-          long_shore || (shore(t[e], t[(e + 1) % 3]) && steps(t[e], t[(e + 1) % 3]).size() > 1);
-    if (!long_shore) {
-      m.triangle(m.top_at(t[0], point(t[1]), point(t[2])), m.top_at(t[1], point(t[2]), point(t[0])),
-                 m.top_at(t[2], point(t[0]), point(t[1])));
-      continue;
-    }
-    const Point g = {double(t[0].first + t[1].first + t[2].first) / 3,
-                     double(t[0].second + t[1].second + t[2].second) / 3};
-    const uint32_t centroid = m.top_point(g);
-    for (size_t e = 0; e < 3; ++e) {
-      const Corner a = t[e], b = t[(e + 1) % 3];
-      const std::vector<Corner> path = shore(a, b) ? steps(a, b) : std::vector<Corner>{a};
-      for (size_t k = 0; k < path.size(); ++k) {
-        const Corner p = path[k], q = k + 1 < path.size() ? path[k + 1] : b;
-        m.triangle(centroid, m.top_at(p, point(q), g), m.top_at(q, g, point(p)));
-      }
-    }
+  // Top: one strip per wet run of a row (body.wet is sorted: runs are consecutive indices).
+  for (size_t k = 0; k < body.wet.size();) {
+    size_t end = k + 1;
+    while (end < body.wet.size() && body.wet[end] == body.wet[end - 1] + 1 &&
+           body.wet[end] % basin.width != 0)
+      ++end;
+    const int64_t row = body.wet[k] / basin.width, col0 = body.wet[k] % basin.width;
+    top_strip(m, row, col0, col0 + int64_t(end - k));
+    k = end;
   }
 
   for (const int64_t i : body.wet) {

@@ -1,11 +1,11 @@
 // The closed triangle mesh of a lake (water_body.h) on its raster: the water's top surface at
-// the level, triangulated from the shoreline polygon (GEOS: the coverage union of the wet
-// pixels' squares, then its constrained Delaunay triangulation: no vertex inside the lake), walls
-// down from the shoreline to the terrain, and a bottom following the terrain, one quad per wet
-// pixel. Vertices are in pixel-corner coordinates (col, row: the raster's corner lattice, row
-// down; a top triangle whose shoreline edge spans several pixel sides is fanned from its centroid
-// so that the walls' vertices are all on it), each bottom corner at the mean terrain of the wet
-// pixels around it.
+// the level, triangulated from the shoreline (its vertices are the shoreline's corners only: one
+// strip per wet run of a row, between the run's two corner lines, zipped from the shoreline
+// corners on each line; no vertex inside the lake, no degenerate triangle), walls down from the
+// shoreline to the terrain, one quad per dry pixel side, and a bottom following the terrain, one
+// quad per wet pixel. Vertices are in pixel-corner coordinates (col, row: the raster's corner
+// lattice, row down), each bottom corner at the mean terrain of the wet pixels around it. Time
+// and memory are linear in the lake's pixels (and its bounding box's corners).
 //
 // Contract: a non-empty body of `basin` (fill_basin). The mesh is closed and consistently
 // oriented: each edge is in exactly two triangles, once in each direction; triangles are
