@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/error.h"
+
 namespace maquette::deform {
 namespace {
 
@@ -25,8 +27,7 @@ WaterLevel WaterLevel::from_attributes(const nlohmann::json& attributes, const s
   const auto level = attributes.find("level");
   if (level != attributes.end() && !level->is_null()) {
     if (!level->is_number() || !std::isfinite(level->get<double>()))
-      throw std::runtime_error(where + ": field 'level' must be a number of metres, not " +
-                               level->dump());
+      throw Error(where + ": field 'level' must be a number of metres, not " + level->dump());
     return {Rule::Given, level->get<double>()};
   }
   const auto rule = attributes.find("level_rule");
@@ -43,8 +44,8 @@ WaterLevel WaterLevel::from_attributes(const nlohmann::json& attributes, const s
     } catch (const std::logic_error&) {
     }
   }
-  throw std::runtime_error(where + ": field 'level_rule' must be \"spill\" or \"percentile:P\" " +
-                           "with P in [0, 100], not " + rule->dump());
+  throw Error(where + ": field 'level_rule' must be \"spill\" or \"percentile:P\" " +
+              "with P in [0, 100], not " + rule->dump());
 }
 
 double water_level(const BasinRaster& basin, const WaterLevel& rule) {
@@ -57,7 +58,7 @@ double water_level(const BasinRaster& basin, const WaterLevel& rule) {
         heights.push_back(basin.terrain[i]);
     }
   if (heights.empty())
-    throw std::runtime_error(
+    throw Error(
         "no terrain height known on the stroke's boundary (its pixels there are nodata, or it "
         "holds no pixel centre: draw it around the basin)");
   if (rule.rule == WaterLevel::Rule::Spill)

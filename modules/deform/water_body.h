@@ -57,7 +57,7 @@ struct WaterBody {
 };
 
 // The level `rule` gives on `basin`'s boundary; throws when no boundary height is known (and the
-// level is not given).
+// level is not given). Errors are maquette::Error.
 double water_level(const BasinRaster& basin, const WaterLevel& rule);
 
 // The lake of `basin` at `level` (see the contract above).

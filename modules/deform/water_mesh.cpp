@@ -5,9 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <stdexcept>
 #include <tuple>
 #include <utility>
+
+#include "core/error.h"
 
 namespace maquette::deform {
 namespace {
@@ -151,7 +152,7 @@ void top_strip(Builder& m, int64_t row, int64_t col0, int64_t col1) {
 }  // namespace
 
 LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
-  if (body.wet.empty()) throw std::invalid_argument("lake_mesh: an empty body");
+  if (body.wet.empty()) throw Error("lake_mesh: an empty body");
   Builder m(basin, body);
 
   // Top: one strip per wet run of a row (body.wet is sorted: runs are consecutive indices).
