@@ -1,6 +1,7 @@
 // deform.water_bodies: per water stroke, the wet pixels (depth > 0) whose centres lie in it,
 // summed over cells: area and volume from the grid's equal pixel areas, the level as the highest
-// terrain + depth (deform.water's level within float32 rounding).
+// terrain + depth (deform.water's level within float32 rounding). Strokes sharing a wet pixel are
+// an error (claim_pixel, water_stroke.h), as in deform.water: no water is counted twice.
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +53,7 @@ class WaterBodies : public ReduceOperator {
     const int n = ctx.tile_size;
     const int level = ctx.cell.level() + int(std::lround(std::log2(n)));
     json partial = json::object();
+    std::vector<const VectorFeature*> owner(size_t(n) * size_t(n), nullptr);
     for (const VectorFeature* f : data.features_of("strokes")) {
       if (!is_water_stroke(*f)) continue;
       const PolygonSet polygon = stroke_polygon(*f);
@@ -63,7 +65,9 @@ class WaterBodies : public ReduceOperator {
           if (!(d > 0)) continue;
           const FaceCoord p{ctx.cell.face(), int64_t(ctx.cell.col()) * n + c,
                             int64_t(ctx.cell.row()) * n + r};
-          if (!polygon.contains(pixel_centre(*ctx.grid, p, level))) continue;
+          const LonLat centre = pixel_centre(*ctx.grid, p, level);
+          if (!polygon.contains(centre)) continue;
+          claim_pixel(owner, size_t(r) * size_t(n) + size_t(c), *f, centre);
           ++pixels;
           sum += double(d);
           top = std::max(top, double(dem.at(c, r)) + double(d));

@@ -1,8 +1,8 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 
+#include "core/error.h"
 #include "core/halo.h"
 #include "operators.h"
 #include "stroke.h"
@@ -62,9 +62,8 @@ std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<Lon
     for (const size_t i : {size_t(k), size_t(side - 1) * size_t(side) + size_t(k),
                            size_t(k) * size_t(side), size_t(k) * size_t(side) + size_t(side - 1)})
       if (inside[i])
-        throw std::runtime_error(describe(f) + " reaches the edge of the region's DEM at " +
-                                 lonlat_text(centres[i]) +
-                                 ": the region must hold the whole stroke");
+        throw Error(describe(f) + " reaches the edge of the region's DEM at " +
+                    lonlat_text(centres[i]) + ": the region must hold the whole stroke");
   return inside;
 }
 
@@ -88,8 +87,8 @@ void add_mesh(const StepContext& ctx, const Mosaic& input, Mosaic& output, const
   const LonLat anchor = corner_lon_lat(lake.vertices.front());
   const auto owner = output.content.find(ctx.grid->cell_from_point(anchor, cell.level()));
   if (owner == output.content.end())
-    throw std::runtime_error(describe(f) + ": the lake's mesh is anchored at " +
-                             lonlat_text(anchor) + ", outside the step's cells");
+    throw Error(describe(f) + ": the lake's mesh is anchored at " + lonlat_text(anchor) +
+                ", outside the step's cells");
   MeshContent& mesh = owner->second.mesh("mesh");
   const GeographicLib::LocalCartesian frame(mesh.origin.lat, mesh.origin.lon, mesh.origin.height);
   MeshObject object;
@@ -127,6 +126,7 @@ class Water : public RegionOperator {
     const FeatureList& strokes = input.features.at("strokes");
     std::vector<LonLat> centres;
     std::vector<float> terrain;
+    std::vector<const VectorFeature*> owner(size_t(side) * size_t(side), nullptr);
     for (const VectorFeature* f : strokes) {
       if (!is_water_stroke(*f)) continue;
       if (centres.empty()) {  // once, for the first water stroke
@@ -138,6 +138,8 @@ class Water : public RegionOperator {
           }
       }
       const std::vector<uint8_t> inside = inside_pixels(*f, centres, side);
+      for (size_t i = 0; i < inside.size(); ++i)
+        if (inside[i]) claim_pixel(owner, i, *f, centres[i]);
       // rHEALPix pixels are equal-area: the face's area over its pixel count.
       const BasinRaster basin{side, side, terrain, inside,
                               ctx.grid->area(0) / std::ldexp(1.0, 2 * input.level)};
@@ -146,23 +148,21 @@ class Water : public RegionOperator {
       const double level = [&] {
         try {
           return water_level(basin, rule);
-        } catch (const std::runtime_error& e) {
-          throw std::runtime_error(where + ": " + e.what());
+        } catch (const Error& e) {
+          throw Error(where + ": " + e.what());
         }
       }();
       const WaterBody body = fill_basin(basin, level);
       if (body.leak)
-        throw std::runtime_error(where + ": at level " + metres(body.level) +
-                                 " the water leaks out of the stroke at " +
-                                 lonlat_text(centres[size_t(*body.leak)]) +
-                                 ": lower the level or draw the stroke around the basin");
+        throw Error(where + ": at level " + metres(body.level) +
+                    " the water leaks out of the stroke at " +
+                    lonlat_text(centres[size_t(*body.leak)]) +
+                    ": lower the level or draw the stroke around the basin");
       if (!body.wet.empty() && !output.content.empty() &&
           output.content.begin()->second.wants("mesh"))
         add_mesh(ctx, input, output, *f, basin, body);
-      for (size_t k = 0; depth != output.layers.end() && k < body.wet.size(); ++k) {
-        float& d = depth->second.at(int(body.wet[k] % side), int(body.wet[k] / side));
-        d = std::max(d, body.depth[k]);  // overlapping strokes: the deeper water
-      }
+      for (size_t k = 0; depth != output.layers.end() && k < body.wet.size(); ++k)
+        depth->second.at(int(body.wet[k] % side), int(body.wet[k] / side)) = body.depth[k];
     }
   }
 };

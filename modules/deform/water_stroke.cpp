@@ -1,6 +1,7 @@
 #include "water_stroke.h"
 
-#include <stdexcept>
+#include "core/error.h"
+#include "stroke.h"
 
 namespace maquette::deform {
 
@@ -15,15 +16,23 @@ std::string describe(const VectorFeature& f) {
 
 PolygonSet stroke_polygon(const VectorFeature& f) {
   if (f.geometry.type != GeometryType::Polygon)
-    throw std::runtime_error(describe(f) + " is a " +
-                             std::string(geometry_type_name(f.geometry.type)) +
-                             ", not a Polygon around a basin");
+    throw Error(describe(f) + " is a " + std::string(geometry_type_name(f.geometry.type)) +
+                ", not a Polygon around a basin");
   PolygonRings rings;
   for (const GeoPath& ring : f.geometry.polygons.front().rings) {
     rings.emplace_back();
     for (const GeoPoint& p : ring) rings.back().push_back({p.lon, p.lat});
   }
   return PolygonSet({rings});
+}
+
+void claim_pixel(std::vector<const VectorFeature*>& owner, size_t i, const VectorFeature& f,
+                 LonLat centre) {
+  if (owner[i] && owner[i] != &f)
+    throw Error(describe(*owner[i]) + " and " + describe(f) + " overlap at " + lonlat_text(centre) +
+                ": water strokes must not overlap (draw one stroke around both basins, or keep "
+                "them apart)");
+  owner[i] = &f;
 }
 
 }  // namespace maquette::deform

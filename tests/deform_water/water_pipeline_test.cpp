@@ -4,7 +4,8 @@
 // pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
 // wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %, the
 // lake's mesh stored once, the bodies' artifact agreeing; a level above the rim fails naming the
-// feature and the leak, writing nothing; the same bits for 1 and 2 threads.
+// feature and the leak, writing nothing; overlapping strokes fail naming both; the same bits for
+// 1 and 2 threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -77,12 +78,29 @@ json stroke(double radius_m, const json& properties) {
              {"geometry", {{"type", "Polygon"}, {"coordinates", {ring}}}}}}}};
 }
 
-// A store with the basin's DEM and the stroke, and the pipeline running deform.water on it.
+// deform.water, then deform.water_bodies on its depths.
+json water_steps() {
+  return {{{"op", "deform.water"},
+           {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}},
+          {{"op", "deform.water_bodies"},
+           {"inputs", {{"dem", "dem"}, {"depth", "water_depth"}, {"strokes", "strokes"}}},
+           {"outputs", {{"bodies", "water_bodies"}}}}};
+}
+
+// Two strokes (features 1 and 2): circles of radii `a_m` and `b_m` around the basin's centre.
+json two_strokes(double a_m, double b_m) {
+  json strokes = stroke(a_m, json::object());
+  strokes["features"].push_back(stroke(b_m, json::object())["features"][0]);
+  return strokes;
+}
+
+// A store with the basin's DEM and the strokes, and the pipeline running `steps` on it.
 struct Basin {
   std::string dir = test::temp_dir();
   std::string store = dir + "/basin.mqt";
 
-  explicit Basin(const json& strokes) {
+  explicit Basin(const json& strokes, const json& steps = water_steps()) {
     write_dem(dir + "/dem.tif");
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
     const json pipeline = {
@@ -90,13 +108,7 @@ struct Basin {
         {"region",
          {{"bbox", {kLon - kHalfDeg, kLat - kHalfDeg, kLon + kHalfDeg, kLat + kHalfDeg}}}},
         {"level", kLevel},
-        {"steps",
-         {{{"op", "deform.water"},
-           {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}},
-          {{"op", "deform.water_bodies"},
-           {"inputs", {{"dem", "dem"}, {"depth", "water_depth"}, {"strokes", "strokes"}}},
-           {"outputs", {{"bodies", "water_bodies"}}}}}}};
+        {"steps", steps}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
@@ -203,6 +215,31 @@ TEST(DeformWater, StrokeHoldingNoPixelCentreNamesTheFeature) {
   const CliResult r = basin.run();
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("feature 1 (tool water): no terrain height known on the stroke's boundary"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(DeformWater, OverlappingStrokesFailNamingBoth) {
+  const Basin basin(two_strokes(2000, 1000));  // the second inside the first
+  const CliResult r = basin.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("feature 1 (tool water) and feature 2 (tool water) overlap at lon -112."),
+            std::string::npos)
+      << r.err;
+  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+  EXPECT_FALSE(st->layer("water_depth") && !st->tile_cells("water_depth").empty());
+}
+
+// deform.water_bodies alone, on depths that deform.water did not make (the DEM's heights: every
+// pixel wet), with overlapping strokes: it fails rather than count the shared water twice.
+TEST(DeformWater, BodiesOfOverlappingStrokesFailNamingBoth) {
+  const Basin basin(two_strokes(2000, 1000),
+                    {{{"op", "deform.water_bodies"},
+                      {"inputs", {{"dem", "dem"}, {"depth", "dem"}, {"strokes", "strokes"}}},
+                      {"outputs", {{"bodies", "water_bodies"}}}}});
+  const CliResult r = basin.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("feature 1 (tool water) and feature 2 (tool water) overlap at lon -112."),
             std::string::npos)
       << r.err;
 }
