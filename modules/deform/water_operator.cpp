@@ -1,4 +1,3 @@
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <sstream>
 
@@ -7,7 +6,7 @@
 #include "operators.h"
 #include "stroke.h"
 #include "water_body.h"
-#include "water_mesh.h"
+#include "water_content.h"
 #include "water_stroke.h"
 
 namespace maquette::deform {
@@ -18,7 +17,7 @@ OperatorSpec water_spec() {
   s.name = "deform.water";
   s.description =
       "Bodies of water in closed strokes (tool 'water'): the lake below the spill level, a given "
-      "level or a boundary percentile, as a water-depth raster and closed meshes";
+      "level or a boundary percentile, as a water-depth raster, closed meshes and fog volumes";
   s.kind = OperatorKind::Region;
   InputSpec dem;
   dem.name = "dem";
@@ -39,6 +38,12 @@ OperatorSpec water_spec() {
   mesh.description = "one closed mesh per lake: top at the level, walls, bottom on the terrain";
   mesh.kind = LayerKind::Mesh;
   s.outputs.push_back(mesh);
+  OutputSpec volume;
+  volume.name = "volume";
+  volume.description =
+      "one OpenVDB fog volume per lake (grid \"water\"): the inside of its closed mesh";
+  volume.kind = LayerKind::Volume;
+  s.outputs.push_back(volume);
   s.params_schema = {
       {"type", "object"}, {"properties", json::object()}, {"additionalProperties", false}};
   return s;
@@ -67,46 +72,6 @@ std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<Lon
   return inside;
 }
 
-// The lake's closed mesh (water_mesh.h) in the content of the cell owning its first vertex, in
-// that content's east-north-up frame; its provenance carries the level, area and volume. Heights
-// are the DEM's, taken as heights above the ellipsoid.
-void add_mesh(const StepContext& ctx, const Mosaic& input, Mosaic& output, const VectorFeature& f,
-              const BasinRaster& basin, const WaterBody& body) {
-  const LakeMesh lake = lake_mesh(basin, body);
-  // Corner (col, row) of the mosaic in the grid's plane, from any of the step's cells.
-  const CellId cell = output.content.begin()->first;
-  const PlaneSquare square = ctx.grid->plane_square(cell);
-  const int64_t tile = int64_t(1) << (input.level - cell.level());
-  const double pixel = square.side / double(tile);
-  const double col0 = double(input.origin_col - int64_t(cell.col()) * tile);
-  const double row0 = double(input.origin_row - int64_t(cell.row()) * tile);
-  const auto corner_lon_lat = [&](const LakeVertex& v) {
-    return ctx.grid->inverse(
-        {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
-  };
-  const LonLat anchor = corner_lon_lat(lake.vertices.front());
-  const auto owner = output.content.find(ctx.grid->cell_from_point(anchor, cell.level()));
-  if (owner == output.content.end())
-    throw Error(describe(f) + ": the lake's mesh is anchored at " + lonlat_text(anchor) +
-                ", outside the step's cells");
-  MeshContent& mesh = owner->second.mesh("mesh");
-  const GeographicLib::LocalCartesian frame(mesh.origin.lat, mesh.origin.lon, mesh.origin.height);
-  MeshObject object;
-  object.provenance = {
-      uint64_t(f.id),
-      f.id,
-      "deform.water",
-      {{"level", body.level}, {"area_m2", body.area_m2}, {"volume_m3", body.volume_m3}}};
-  for (const LakeVertex& v : lake.vertices) {
-    const LonLat p = corner_lon_lat(v);
-    double x = 0, y = 0, z = 0;
-    frame.Forward(p.lat, p.lon, v.height, x, y, z);
-    object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
-  }
-  object.indices = lake.indices;
-  mesh.objects.push_back(std::move(object));
-}
-
 class Water : public RegionOperator {
  public:
   const OperatorSpec& spec() const override {
@@ -127,6 +92,7 @@ class Water : public RegionOperator {
     std::vector<LonLat> centres;
     std::vector<float> terrain;
     std::vector<const VectorFeature*> owner(size_t(side) * size_t(side), nullptr);
+    LakeContent lakes(ctx, input, output);
     for (const VectorFeature* f : strokes) {
       if (!is_water_stroke(*f)) continue;
       if (centres.empty()) {  // once, for the first water stroke
@@ -158,12 +124,11 @@ class Water : public RegionOperator {
                     " the water leaks out of the stroke at " +
                     lonlat_text(centres[size_t(*body.leak)]) +
                     ": lower the level or draw the stroke around the basin");
-      if (!body.wet.empty() && !output.content.empty() &&
-          output.content.begin()->second.wants("mesh"))
-        add_mesh(ctx, input, output, *f, basin, body);
+      if (!body.wet.empty() && !output.content.empty()) lakes.add(*f, basin, body);
       for (size_t k = 0; depth != output.layers.end() && k < body.wet.size(); ++k)
         depth->second.at(int(body.wet[k] % side), int(body.wet[k] / side)) = body.depth[k];
     }
+    lakes.write_volumes();
   }
 };
 

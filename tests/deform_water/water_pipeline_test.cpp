@@ -3,12 +3,15 @@
 // GeoTIFF and ingested as a DEM, a circular stroke (tool "water") ingested as features, the
 // pipeline run by `maquette run`. The stored depths are level - terrain on the stored DEM, the
 // wet pixels those below the level, the volume the paraboloid's closed form within 0.5 %, the
-// lake's mesh stored once, the bodies' artifact agreeing; a level above the rim fails naming the
-// feature and the leak, writing nothing; overlapping strokes fail naming both; the same bits for
-// 1 and 2 threads.
+// lake's mesh and its fog volume stored once (the volume decoded with OpenVDB: the raster's
+// volume within 1 %, the lake's extent), the bodies' artifact agreeing; a level above the rim fails
+// naming the feature and the leak, writing nothing; overlapping strokes fail naming both; the same
+// bits for 1 and 2 threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
+#include <openvdb/io/Stream.h>
+#include <openvdb/openvdb.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
@@ -16,9 +19,11 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "content/content_blob.h"
 #include "core/grid.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -80,12 +85,13 @@ json stroke(double radius_m, const json& properties) {
 
 // deform.water, then deform.water_bodies on its depths.
 json water_steps() {
-  return {{{"op", "deform.water"},
-           {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}}}},
-          {{"op", "deform.water_bodies"},
-           {"inputs", {{"dem", "dem"}, {"depth", "water_depth"}, {"strokes", "strokes"}}},
-           {"outputs", {{"bodies", "water_bodies"}}}}};
+  return {
+      {{"op", "deform.water"},
+       {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+       {"outputs", {{"depth", "water_depth"}, {"mesh", "water_mesh"}, {"volume", "water_volume"}}}},
+      {{"op", "deform.water_bodies"},
+       {"inputs", {{"dem", "dem"}, {"depth", "water_depth"}, {"strokes", "strokes"}}},
+       {"outputs", {{"bodies", "water_bodies"}}}}};
 }
 
 // Two strokes (features 1 and 2): circles of radii `a_m` and `b_m` around the basin's centre.
@@ -174,6 +180,38 @@ TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
   EXPECT_EQ(mesh.cells, 1u);
   EXPECT_EQ(mesh.content.objects, 1u);
   EXPECT_GT(mesh.content.triangles, 2 * wet);  // the bottom's two per pixel, walls and top
+
+  // The lake's fog volume, stored once, decoded with OpenVDB: its active voxels hold the raster's
+  // volume within 1 %; their bounding box is the lake: the disk of radius 1500 m around the
+  // basin's centre, from the bottom (1000 m) to the level, within a voxel or two.
+  const std::vector<CellId> holders = st->content_cells("water_volume");
+  ASSERT_EQ(holders.size(), 1u);
+  const std::string blob = *st->get_content("water_volume", holders[0]);
+  const EnuOrigin origin = read_content_envelope(blob, "water_volume").origin;
+  openvdb::initialize();
+  std::istringstream in{std::string(content_payload(blob)), std::ios::binary};
+  const openvdb::GridPtrVecPtr grids = openvdb::io::Stream(in).getGrids();
+  ASSERT_EQ(grids->size(), 1u);
+  const openvdb::FloatGrid::Ptr fog = openvdb::gridPtrCast<openvdb::FloatGrid>(grids->front());
+  ASSERT_TRUE(fog);
+  EXPECT_EQ(fog->getGridClass(), openvdb::GRID_FOG_VOLUME);
+  EXPECT_EQ(fog->getName(), "water");
+  const openvdb::Vec3d voxel = fog->voxelSize();
+  const double fog_volume = double(fog->activeVoxelCount()) * voxel[0] * voxel[1] * voxel[2];
+  EXPECT_NEAR(fog_volume, volume, 0.01 * volume);
+  const openvdb::CoordBBox box = fog->evalActiveVoxelBoundingBox();
+  const openvdb::Vec3d lo = fog->indexToWorld(box.min()), hi = fog->indexToWorld(box.max());
+  const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
+  double x = 0, y = 0, top = 0, bottom = 0;
+  frame.Forward(kLat, kLon, level, x, y, top);
+  frame.Forward(kLat, kLon, 1000, x, y, bottom);
+  const double shore = std::sqrt(kA * h);  // 1500 m
+  for (const int axis : {0, 1}) {
+    EXPECT_NEAR((lo[axis] + hi[axis]) / 2, axis == 0 ? x : y, voxel[axis]) << "axis " << axis;
+    EXPECT_NEAR(hi[axis] - lo[axis], 2 * shore, 3 * voxel[axis]) << "axis " << axis;
+  }
+  EXPECT_NEAR(hi[2], top, 2 * voxel[2]);
+  EXPECT_NEAR(lo[2], bottom, 2 * voxel[2]);
 }
 
 TEST(DeformWater, SameBitsForOneAndTwoThreads) {
@@ -190,6 +228,10 @@ TEST(DeformWater, SameBitsForOneAndTwoThreads) {
   ASSERT_EQ(content.size(), 1u);
   ASSERT_EQ(content, b->content_cells("water_mesh"));
   EXPECT_EQ(a->get_content("water_mesh", content[0]), b->get_content("water_mesh", content[0]));
+  const std::vector<CellId> volume = a->content_cells("water_volume");
+  ASSERT_EQ(volume.size(), 1u);
+  ASSERT_EQ(volume, b->content_cells("water_volume"));
+  EXPECT_EQ(a->get_content("water_volume", volume[0]), b->get_content("water_volume", volume[0]));
 }
 
 TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {

@@ -1,0 +1,155 @@
+#include "water_content.h"
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "content/enu_transform.h"
+#include "core/error.h"
+#include "plugins/vdb_content.h"
+#include "runtime/plugin.h"
+#include "stroke.h"
+#include "water_mesh.h"
+#include "water_stroke.h"
+
+namespace maquette::deform {
+namespace {
+
+// The centre of the bounding box of a mesh's positions.
+std::array<double, 3> box_centre(const std::vector<float>& positions) {
+  std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (size_t i = 0; i < positions.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], double(positions[i]));
+    hi[i % 3] = std::max(hi[i % 3], double(positions[i]));
+  }
+  return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+}
+
+}  // namespace
+
+double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < lake.places.size(); ++i)
+    if (lake.places[i][2] == lake.level) {
+      sum += double(object.positions[3 * i + 2]);
+      ++n;
+    }
+  return sum / double(n);
+}
+
+LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output)
+    : ctx_(ctx), input_(input), output_(output) {}
+
+CellId LakeContent::owner(const std::string& what, double lon, double lat) const {
+  const CellId cell =
+      ctx_.grid->cell_from_point({lon, lat}, output_.content.begin()->first.level());
+  if (!output_.content.count(cell))
+    throw Error(what + " is anchored at " + lonlat_text({lon, lat}) + ", outside the step's cells");
+  return cell;
+}
+
+MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const {
+  const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
+  MeshObject object;
+  object.provenance = lake.fog.mesh.provenance;
+  object.indices = lake.fog.mesh.indices;
+  for (const auto& [lon, lat, height] : lake.places) {
+    double x = 0, y = 0, z = 0;
+    frame.Forward(lat, lon, height, x, y, z);
+    object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
+  }
+  return object;
+}
+
+void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
+  const LakeMesh mesh = lake_mesh(basin, body);
+  // Corner (col, row) of the mosaic in the grid's plane, from any of the step's cells.
+  const CellId cell = output_.content.begin()->first;
+  const PlaneSquare square = ctx_.grid->plane_square(cell);
+  const int64_t tile = int64_t(1) << (input_.level - cell.level());
+  const double pixel = square.side / double(tile);
+  const double col0 = double(input_.origin_col - int64_t(cell.col()) * tile);
+  const double row0 = double(input_.origin_row - int64_t(cell.row()) * tile);
+  Lake lake;
+  lake.where = describe(f);
+  lake.level = body.level;
+  for (const LakeVertex& v : mesh.vertices) {
+    const LonLat p = ctx_.grid->inverse(
+        {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
+    lake.places.push_back({p.lon, p.lat, v.height});
+  }
+  lake.fog.mesh.provenance = {
+      uint64_t(f.id),
+      f.id,
+      "deform.water",
+      {{"level", body.level}, {"area_m2", body.area_m2}, {"volume_m3", body.volume_m3}}};
+  lake.fog.mesh.indices = mesh.indices;
+  const double side = std::sqrt(basin.pixel_area_m2);
+  const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
+  lake.fog.voxel = {side, side, deepest / kVoxelsDeep};
+  lake.fog.name = "water";
+  const CellContent& any = output_.content.begin()->second;
+  if (any.wants("mesh")) {
+    const auto& first = lake.places.front();
+    MeshContent& content =
+        output_.content.at(owner(lake.where + ": the lake's mesh", first[0], first[1]))
+            .mesh("mesh");
+    content.objects.push_back(object(lake, content.origin));
+  }
+  if (any.wants("volume")) lakes_.push_back(std::move(lake));
+}
+
+void LakeContent::write_volumes() {
+  if (lakes_.empty()) return;
+  static auto* const fog_of =
+      plugin_function<decltype(maquette_vdb_mesh_fog)>(kVdbPlugin, kVdbMeshFogEntry);
+  static auto* const anchors_of =
+      plugin_function<decltype(maquette_vdb_anchors)>(kVdbPlugin, kVdbAnchorsEntry);
+  // First guess of each lake's owner: the cell of its mesh's bounding-box centre, in a frame at
+  // its first vertex; the grid's active voxels are within a voxel of that box.
+  std::vector<CellId> owners;
+  for (const Lake& lake : lakes_) {
+    const auto& first = lake.places.front();
+    const EnuOrigin origin{first[0], first[1], first[2]};
+    const auto [x, y, z] = box_centre(object(lake, origin).positions);
+    const GeodeticPoint p = EnuToGeodetic(origin)(x, y, z);
+    owners.push_back(owner(lake.where + ": the lake's volume", p.lon, p.lat));
+  }
+  // Built in each owner's frame; a grid whose anchor falls in another cell (a lake centred within
+  // a voxel of a cell's edge) moves there once, and the volumes are built again (the runner then
+  // checks every anchor).
+  for (int pass = 0; pass < 2; ++pass) {
+    bool moved = false;
+    for (const CellId cell : std::set<CellId>(owners.begin(), owners.end())) {
+      VolumeContent& volume = output_.content.at(cell).volume("volume");
+      std::vector<FogBody> bodies;
+      std::vector<size_t> which;
+      for (size_t i = 0; i < lakes_.size(); ++i)
+        if (owners[i] == cell) {
+          FogBody& fog = bodies.emplace_back(lakes_[i].fog);
+          fog.mesh = object(lakes_[i], volume.origin);
+          fog.corner[2] = surface_height(lakes_[i], fog.mesh);
+          which.push_back(i);
+        }
+      fog_of(bodies, volume.origin, "deform.water, cell " + cell.ToText(), volume);
+      if (pass > 0) continue;
+      std::vector<std::optional<std::array<double, 3>>> anchors;
+      anchors_of(volume, "deform.water, cell " + cell.ToText(), anchors);
+      const EnuToGeodetic geodetic(volume.origin);
+      for (size_t k = 0; k < anchors.size(); ++k) {
+        if (!anchors[k]) continue;
+        const GeodeticPoint p = geodetic((*anchors[k])[0], (*anchors[k])[1], (*anchors[k])[2]);
+        const CellId at = owner(lakes_[which[k]].where + ": the lake's volume", p.lon, p.lat);
+        moved = moved || at != cell;
+        owners[which[k]] = at;
+      }
+    }
+    if (!moved) return;
+    for (auto& [cell, content] : output_.content)
+      if (content.volumes.count("volume")) content.volume("volume").vdb.clear();
+  }
+}
+
+}  // namespace maquette::deform

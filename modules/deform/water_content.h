@@ -1,0 +1,56 @@
+// deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, and its
+// fog volume on the volume port, built by the volume plug-in (plugins/vdb_content.h:
+// mesh_to_fog of the same closed mesh) so that the module does not link OpenVDB. Each object is
+// written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of
+// its active voxels (content/content.h).
+//
+// Heights are the DEM's, taken as heights above the ellipsoid (README.md, "How deform.water
+// works").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "runtime/operator.h"
+#include "vdb/mesh_fog.h"
+#include "water_body.h"
+
+namespace maquette::deform {
+
+class LakeContent {
+ public:
+  // The content of `output` (deform.water's output mosaic) for the lakes of `input`'s mosaic.
+  LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output);
+
+  // The lake of water stroke `f` (a non-empty body of `basin`): its mesh added to its owner
+  // cell's mesh port, when the step maps it, and kept for the volume.
+  void add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body);
+
+  // The volumes of the lakes added, when the step maps the volume port: one VDB stream per owner
+  // cell, a fog grid "water" per lake (horizontal voxels of a pixel's side, vertical ones of the
+  // lake's greatest depth over kVoxelsDeep, a layer of voxel faces at the water's surface, so
+  // that no voxel layer is cut by it).
+  void write_volumes();
+
+  static constexpr int kVoxelsDeep = 32;
+
+ private:
+  struct Lake {
+    std::vector<std::array<double, 3>> places;  // lon, lat, height per mesh vertex
+    FogBody fog;                                // its mesh's positions set per owner cell
+    std::string where;                          // "feature 7 (tool water)"
+    double level = 0;
+  };
+  MeshObject object(const Lake& lake, const EnuOrigin& origin) const;
+  CellId owner(const std::string& what, double lon, double lat) const;
+  // The mean height of the lake's surface vertices in `object` (the lake in a frame): a plane
+  // within the Earth's curvature over the lake of the water's surface.
+  static double surface_height(const Lake& lake, const MeshObject& object);
+
+  const StepContext& ctx_;
+  const Mosaic& input_;
+  Mosaic& output_;
+  std::vector<Lake> lakes_;
+};
+
+}  // namespace maquette::deform
