@@ -1,14 +1,18 @@
-// deform.water's water body (level + fill, water_body.h) and its closed mesh (water_mesh.h) for a
-// 1,000 x 1,000-sample basin: the tests' bowl of hills (islands, a ragged shore) inside an
-// ellipse, filled to the spill level. Goals: <= 50 ms for the body, well under a second for the
-// mesh. With --dem=PATH it writes that DEM as a GeoTIFF and prints the level and the
-// seed's coordinates for compare_rlake.sh (r.lake on the same DEM), then exits.
+// deform.water's water body (level + fill, water_body.h), its closed mesh (water_mesh.h) and its
+// fog volume (vdb/mesh_fog.h) for a 1,000 x 1,000-sample basin: the tests' bowl of hills
+// (islands, a ragged shore) inside an ellipse, filled to the spill level. Goals: <= 50 ms for the
+// body, well under a second for the mesh. With --dem=PATH it writes that DEM as a GeoTIFF and
+// prints the level and the seed's coordinates for compare_rlake.sh (r.lake on the same DEM), then
+// exits.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
 #include "tests/water_basins.h"
+#include "vdb/mesh_fog.h"
+#include "water_content.h"
 #include "water_mesh.h"
 
 namespace {
@@ -45,6 +49,29 @@ void BM_LakeMesh(benchmark::State& state) {
   state.counters["triangles"] = double(triangles);
 }
 BENCHMARK(BM_LakeMesh)->Unit(benchmark::kMillisecond);
+
+// The lake's fog volume as deform.water builds it (water_content.h: voxels of a pixel across,
+// the greatest depth over kVoxelsDeep high, faces at the surface), from its mesh in a plane frame
+// (col, -row scaled to metres): mesh_to_fog, as the volume plug-in runs it.
+void BM_LakeVolume(benchmark::State& state) {
+  const BasinRaster raster = basin().raster();
+  const WaterBody body = fill_basin(raster, water_level(raster, {}));
+  const LakeMesh mesh = lake_mesh(raster, body);
+  maquette::FogBody fog;
+  for (const LakeVertex& v : mesh.vertices)
+    fog.mesh.positions.insert(fog.mesh.positions.end(),
+                              {float(v.col * kPixelM), float(-v.row * kPixelM), float(v.height)});
+  fog.mesh.indices = mesh.indices;
+  const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
+  fog.voxel = {kPixelM, kPixelM, deepest / LakeContent::kVoxelsDeep};
+  fog.corner = {0, 0, body.level};
+  fog.name = "water";
+  size_t bytes = 0;
+  for (auto _ : state) bytes = maquette::mesh_to_fog({fog}, {}, "lake").vdb.size();
+  state.counters["wet"] = double(body.wet.size());
+  state.counters["MB"] = double(bytes) / 1e6;
+}
+BENCHMARK(BM_LakeVolume)->Unit(benchmark::kMillisecond);
 
 // Writes the basin as a GeoTIFF and prints "LEVEL X Y" (the spill level, the seed's centre).
 int write_dem(const char* path) {

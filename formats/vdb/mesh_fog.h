@@ -22,17 +22,20 @@ struct FogBody {
 };
 
 // One float grid of class fog volume per body, in the bodies' order, in their frame (`origin` is
-// the content's): OpenVDB's meshToLevelSet of the mesh, voxel (i, j, k) centred at corner +
-// (i + 1/2, j + 1/2, k + 1/2) * voxel, then sdfToFogVolume: the voxels whose centres lie inside the
-// mesh active, 1 at least a voxel deep, ramping to 0 towards the surface; outside inactive, 0.
-// The active voxels' volume approximates the mesh's (the error is of the order of a voxel layer
-// over the surface). Each grid's metadata carries its mesh's provenance ("object_id",
-// "feature_id", "tool"), as volume_to_mesh reads it back (a grid named "water" meshes as water).
-// The same bodies give the same bytes whatever the thread count.
-// Precondition: each mesh is closed (each edge in two triangles), as meshToLevelSet's inside and
-// outside need (its sign comes from a flood fill of the outside, not from the winding). Throws
-// maquette::Error naming `where` and the body for a voxel size that is not finite and positive, a
-// corner not finite, a mesh without whole triangles or with an index out of range.
+// the content's), voxel (i, j, k) centred at corner + (i + 1/2, j + 1/2, k + 1/2) * voxel: the
+// voxels whose centres lie inside the mesh active, of density 1, the rest inactive, 0. Inside is
+// found column by column (a scanline voxelization along z): each triangle's height where it
+// covers a column's centre (a centre on an edge shared by two triangles counted in one of them
+// only), the winding number up the column rising through faces seen from below and falling
+// through faces seen from above; linear in the columns the triangles cover and the voxels set,
+// sequential, so the same bodies give the same bytes whatever the thread count. The active
+// voxels' volume approximates the mesh's (exactly, for faces on the lattice's faces). Each grid's
+// metadata carries its mesh's provenance ("object_id", "feature_id", "tool"), as volume_to_mesh
+// reads it back (a grid named "water" meshes as water).
+// Precondition: each mesh is closed and consistently oriented (counter-clockwise seen from
+// outside), else the winding numbers are wrong. Throws maquette::Error naming `where` and the
+// body for a voxel size that is not finite and positive, a corner not finite, a mesh without
+// whole triangles or with an index out of range.
 VolumeContent mesh_to_fog(const std::vector<FogBody>& bodies, const EnuOrigin& origin,
                           const std::string& where);
 

@@ -119,8 +119,11 @@ class Builder {
 
 // The top of the wet run [col0, col1) of `row`: the strip between its upper corner line (row) and
 // its lower one (row + 1), each with the run's ends and every shoreline corner between them (a
-// corner touching a dry pixel of the row above, resp. below), zipped into triangles by column.
-// Each triangle has one side on a corner line and its third vertex on the other line: none is
+// corner touching a dry pixel of the row above, resp. below), zipped into triangles: each step
+// takes the next corner of the line whose new diagonal is the shorter, so that no triangle
+// reaches further along the strip than it must (a run whose one line has many corners and the
+// other few would otherwise fan long triangles from one corner, costly to voxelize). Each
+// triangle has one side on a corner line and its third vertex on the other line: none is
 // degenerate. Neighbouring strips hold the same corners on their shared line (a corner inside a
 // run is on the shore when one of the two pixels left and right of it above or below is dry,
 // whichever strip asks), so the top has no T-junction.
@@ -139,7 +142,8 @@ void top_strip(Builder& m, int64_t row, int64_t col0, int64_t col1) {
   // lower vertex, the lower line's side by the upper vertex.
   while (i + 1 < upper.size() || j + 1 < lower.size()) {
     const Corner u{upper[i], upper_row}, l{lower[j], lower_row};
-    if (j + 1 == lower.size() || (i + 1 < upper.size() && upper[i + 1] <= lower[j + 1])) {
+    if (j + 1 == lower.size() || (i + 1 < upper.size() && std::abs(upper[i + 1] - lower[j]) <=
+                                                              std::abs(lower[j + 1] - upper[i]))) {
       m.top_triangle(u, l, {upper[i + 1], upper_row});
       ++i;
     } else {

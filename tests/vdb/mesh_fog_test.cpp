@@ -1,10 +1,12 @@
 // mesh_to_fog (vdb/mesh_fog.h) and its plug-in entry (maquette_vdb_mesh_fog) on a closed box
 // whose faces lie on the voxel lattice's faces: exactly the box's voxels active (its volume to
-// the last bit), 1 inside, the provenance kept, the entry's bytes the function's; bad input
-// named.
+// the last bit), 1 inside; a box whose faces cut voxels: the voxels whose centres are inside;
+// the provenance kept, the entry's bytes the function's; bad input named.
 #include "vdb/mesh_fog.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/error.h"
 #include "plugins/vdb_content.h"
@@ -17,14 +19,18 @@ namespace {
 
 // A box [x0, x0 + 10] x [y0, y0 + 6] x [z0, z0 + 4] (metres) far from the frame's origin, as a
 // closed mesh, counter-clockwise seen from outside, with voxels of 0.5 x 0.5 x 0.25 m whose
-// lattice has a corner at the box's.
+// lattice has a corner at the box's; turned by `angle` (radians) about the vertical through
+// (x0, y0).
 constexpr double kX0 = 1203, kY0 = -347.5, kZ0 = 41.25;
-FogBody box_body() {
+FogBody box_body(double angle = 0) {
   FogBody body;
-  for (int k = 0; k < 8; ++k)
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (int k = 0; k < 8; ++k) {
+    const double x = 10 * (k & 1), y = 6 * ((k >> 1) & 1);
     body.mesh.positions.insert(
         body.mesh.positions.end(),
-        {float(kX0 + 10 * (k & 1)), float(kY0 + 6 * ((k >> 1) & 1)), float(kZ0 + 4 * (k >> 2))});
+        {float(kX0 + c * x - s * y), float(kY0 + s * x + c * y), float(kZ0 + 4 * (k >> 2))});
+  }
   body.mesh.indices = {0, 2, 3, 0, 3, 1,   // bottom (z0), facing down
                        4, 5, 7, 4, 7, 6,   // top
                        0, 1, 5, 0, 5, 4,   // y0
@@ -56,18 +62,37 @@ TEST(MeshFog, BoxOnTheLatticeGivesExactlyItsVoxels) {
   EXPECT_NEAR(hi[1], kY0 + 6 - 0.25, 1e-9);
   EXPECT_NEAR(lo[2], kZ0 + 0.125, 1e-9);
   EXPECT_NEAR(hi[2], kZ0 + 4 - 0.125, 1e-9);
-  // The middle is full; the voxels next to a face ramp towards 0 but stay active.
-  const openvdb::FloatGrid::ConstAccessor at = fog->getConstAccessor();
-  const auto value_at = [&](double x, double y, double z) {
-    return at.getValue(openvdb::Coord::round(fog->worldToIndex({x, y, z})));
-  };
-  EXPECT_EQ(value_at(kX0 + 5.25, kY0 + 3.25, kZ0 + 2.125), 1.0f);
-  const float edge = value_at(kX0 + 0.25, kY0 + 3.25, kZ0 + 2.125);
-  EXPECT_GT(edge, 0.0f);
-  EXPECT_LT(edge, 1.0f);
+  for (auto v = fog->cbeginValueOn(); v; ++v) ASSERT_EQ(*v, 1.0f) << v.getCoord();
   EXPECT_EQ(fog->metaValue<int64_t>("object_id"), 77);
   EXPECT_EQ(fog->metaValue<int64_t>("feature_id"), 7);
   EXPECT_EQ(fog->metaValue<std::string>("tool"), "deform.water");
+}
+
+// Turned by 0.5 rad, its lattice shifted: the active voxels are those whose centres lie in the
+// box, found here from the box's own equations.
+TEST(MeshFog, TurnedBoxGivesTheVoxelsWhoseCentresAreInside) {
+  FogBody body = box_body(0.5);
+  body.corner = {kX0 + 0.1, kY0 + 0.2, kZ0 + 0.05};
+  const openvdb::GridPtrVec grids = decode_volume(mesh_to_fog({body}, kVolumeOrigin, "box"), "box");
+  const auto fog = openvdb::gridPtrCast<openvdb::FloatGrid>(grids.at(0));
+  ASSERT_TRUE(fog);
+  const double c = std::cos(0.5), s = std::sin(0.5);
+  openvdb::Index64 inside = 0;
+  size_t wrong = 0;
+  const openvdb::FloatGrid::ConstAccessor at = fog->getConstAccessor();
+  for (int i = -40; i < 40; ++i)
+    for (int j = -10; j < 60; ++j)
+      for (int k = -2; k < 20; ++k) {
+        const openvdb::Vec3d p = fog->indexToWorld(openvdb::Coord(i, j, k));
+        const double u = c * (p[0] - kX0) + s * (p[1] - kY0);
+        const double v = -s * (p[0] - kX0) + c * (p[1] - kY0);
+        const bool in = u > 0 && u < 10 && v > 0 && v < 6 && p[2] > kZ0 && p[2] < kZ0 + 4;
+        inside += in;
+        wrong += in != at.isValueOn(openvdb::Coord(i, j, k));
+      }
+  EXPECT_GT(inside, 3000u);
+  EXPECT_EQ(wrong, 0u) << "of " << inside << " voxels inside";
+  EXPECT_EQ(fog->activeVoxelCount(), inside);
 }
 
 TEST(MeshFog, PluginEntryGivesTheSameBytes) {
