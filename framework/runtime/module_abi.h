@@ -20,7 +20,7 @@
 //    output ports (OutputSpec::kind).
 // 8: content outputs written (CellContent in CellData::content and Mosaic::content,
 //    CellContext::owns).
-#define MAQUETTE_ABI_VERSION 8u
+#define MAQUETTE_ABI_VERSION 9u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -32,7 +32,7 @@ double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
   double sum = 0;
   size_t n = 0;
   for (size_t i = 0; i < lake.places.size(); ++i)
-    if (lake.places[i][2] == lake.level) {
+    if (lake.on_surface[i]) {
       sum += double(object.positions[3 * i + 2]);
       ++n;
     }
@@ -40,7 +40,10 @@ double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
 }
 
 LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output)
-    : ctx_(ctx), input_(input), output_(output) {}
+    : ctx_(ctx),
+      to_ellipsoid_(ellipsoidal_heights(ctx.input_layer("dem"))),
+      input_(input),
+      output_(output) {}
 
 CellId LakeContent::owner(const std::string& what, double lon, double lat) const {
   const CellId cell =
@@ -78,7 +81,8 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   for (const LakeVertex& v : mesh.vertices) {
     const LonLat p = ctx_.grid->inverse(
         {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
-    lake.places.push_back({p.lon, p.lat, v.height});
+    lake.places.push_back({p.lon, p.lat, to_ellipsoid_(p, v.height)});
+    lake.on_surface.push_back(v.height == body.level);
   }
   lake.fog.mesh.provenance = {
       uint64_t(f.id),

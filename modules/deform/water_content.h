@@ -4,13 +4,15 @@
 // written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of
 // its active voxels (content/content.h).
 //
-// Heights are the DEM's, taken as heights above the ellipsoid (README.md, "How deform.water
-// works").
+// Heights are the DEM's taken to the ellipsoid with its layer's recorded vertical datum
+// (gdal/vertical_datum.h), as the terrain export takes them, so a lake sits on the exported
+// terrain of an EGM96 DEM as of an ellipsoidal one.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "gdal/vertical_datum.h"
 #include "runtime/operator.h"
 #include "vdb/mesh_fog.h"
 #include "water_body.h"
@@ -36,7 +38,8 @@ class LakeContent {
 
  private:
   struct Lake {
-    std::vector<std::array<double, 3>> places;  // lon, lat, height per mesh vertex
+    std::vector<std::array<double, 3>> places;  // lon, lat, ellipsoidal height per mesh vertex
+    std::vector<bool> on_surface;               // per mesh vertex: on the water's surface
     FogBody fog;                                // its mesh's positions set per owner cell
     std::string where;                          // "feature 7 (tool water)"
     double level = 0;
@@ -48,6 +51,7 @@ class LakeContent {
   static double surface_height(const Lake& lake, const MeshObject& object);
 
   const StepContext& ctx_;
+  const EllipsoidalHeights to_ellipsoid_;  // the DEM's heights to the ellipsoid
   const Mosaic& input_;
   Mosaic& output_;
   std::vector<Lake> lakes_;

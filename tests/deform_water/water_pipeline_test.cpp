@@ -21,10 +21,12 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "content/content_blob.h"
 #include "core/grid.h"
+#include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
 
@@ -106,7 +108,9 @@ struct Basin {
   std::string dir = test::temp_dir();
   std::string store = dir + "/basin.mqt";
 
-  explicit Basin(const json& strokes, const json& steps = water_steps()) {
+  // `datum`: the DEM's vertical datum (maquette ingest --vertical-datum).
+  explicit Basin(const json& strokes, const json& steps = water_steps(),
+                 const std::string& datum = "ellipsoid") {
     write_dem(dir + "/dem.tif");
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
     const json pipeline = {
@@ -118,7 +122,7 @@ struct Basin {
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
-              "ellipsoid --level " + std::to_string(kLevel) + " --tile-size " +
+              datum + " --level " + std::to_string(kLevel) + " --tile-size " +
               std::to_string(kTileSize),
           "ingest " + store + " " + dir + "/strokes.geojson --layer strokes --as features"}) {
       const CliResult r = run_maquette("-q " + args);
@@ -212,6 +216,46 @@ TEST(DeformWater, ParaboloidBasinThroughTheProgram) {
   }
   EXPECT_NEAR(hi[2], top, 2 * voxel[2]);
   EXPECT_NEAR(lo[2], bottom, 2 * voxel[2]);
+}
+
+// On a DEM of EGM96 heights the lake's surface is at the level plus the geoid height N there, as
+// the exported terrain is (N from PROJ: EGM96 height -> WGS 84 ellipsoidal, about -22 m here).
+TEST(DeformWater, OnAnEgm96DemTheLakeSitsOnTheEllipsoidalTerrain) {
+  const double level = 1100;
+  const Basin basin(stroke(2000, {{"level", level}}), water_steps(), "egm96");
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  OGRSpatialReference egm96, ellipsoidal;
+  ASSERT_EQ(egm96.SetFromUserInput("EPSG:4326+5773"), OGRERR_NONE);
+  ASSERT_EQ(ellipsoidal.SetFromUserInput("EPSG:4979"), OGRERR_NONE);
+  egm96.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  ellipsoidal.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const std::unique_ptr<OGRCoordinateTransformation> to_ellipsoid(
+      OGRCreateCoordinateTransformation(&egm96, &ellipsoidal));
+  ASSERT_TRUE(to_ellipsoid);
+
+  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> holders = st->content_cells("water_mesh");
+  ASSERT_EQ(holders.size(), 1u);
+  const std::string blob = *st->get_content("water_mesh", holders[0]);
+  const ContentEnvelope envelope = read_content_envelope(blob, "water_mesh");
+  const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "water_mesh");
+  ASSERT_EQ(mesh.objects.size(), 1u);
+  const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
+                                            envelope.origin.height);
+  const std::vector<float>& p = mesh.objects[0].positions;
+  // No vertex above the water's surface (level + N at its place), and the highest on it.
+  double top = -INFINITY, top_surface = 0;
+  for (size_t k = 0; k < p.size(); k += 3) {
+    double lat = 0, lon = 0, h = 0;
+    frame.Reverse(p[k], p[k + 1], p[k + 2], lat, lon, h);
+    double x = lon, y = lat, surface = level;
+    ASSERT_TRUE(to_ellipsoid->Transform(1, &x, &y, &surface));
+    EXPECT_LT(surface, level - 10);  // N < 0 here: a lake left on the geoid would be far off
+    EXPECT_LE(h, surface + 0.01);
+    if (h > top) std::tie(top, top_surface) = std::pair(h, surface);
+  }
+  EXPECT_NEAR(top, top_surface, 0.01);
 }
 
 TEST(DeformWater, SameBitsForOneAndTwoThreads) {
