@@ -3,7 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <numbers>
+#include <sstream>
 
 #include "core/error.h"
 
@@ -194,10 +196,12 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
     const auto check = [&](const AreaAxes& axes, const std::string& what) {
       const double ratio = axes.major_var / axes.minor_var;
       if (!(ratio >= options.min_axis_ratio)) {
-        throw Error(feature + ": the " + what + "'s principal axes are nearly equal (variance " +
-                    "ratio " + std::to_string(ratio) + " < " +
-                    std::to_string(options.min_axis_ratio) +
-                    "): its heading is ambiguous; give the heading explicitly");
+        std::ostringstream message;
+        message << std::setprecision(3) << feature << ": the " << what
+                << "'s principal axes are nearly equal (variance ratio " << ratio << " < "
+                << options.min_axis_ratio
+                << "): its heading is ambiguous; give the heading explicitly";
+        throw Error(message.str());
       }
     };
     check(to, "stroke");

@@ -342,7 +342,15 @@ TEST(PlaceFit, SquaresAndDiscsAreAmbiguous) {
 TEST(PlaceFit, SymmetricBaseIsAmbiguousToo) {
   const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const Ring stroke{{0, 0}, {30, 0}, {30, 10}, {0, 10}};
-  EXPECT_THROW(fit_place(stroke, square, {}, "feature 1"), Error);
+  try {
+    fit_place(stroke, square, {}, "structures.place: feature 1");
+    ADD_FAILURE() << "a square base was given a heading";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "structures.place: feature 1: the base footprint's principal axes are nearly "
+                 "equal (variance ratio 1 < 1.25): its heading is ambiguous; give the heading "
+                 "explicitly");
+  }
 }
 
 TEST(PlaceFit, ExplicitHeadingOverridesTheAxes) {
