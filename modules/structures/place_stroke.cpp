@@ -1,6 +1,7 @@
 #include "place_stroke.h"
 
 #include <Eigen/Dense>
+#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -227,6 +228,35 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
   fit.scale = std::hypot(refined.a, refined.b);
   fit.offset = refined.t;
   return fit;
+}
+
+PlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where) {
+  if (ring.empty()) throw Error(where + ": the stroke has no points");
+  std::vector<LonLat> unwrapped;
+  double lon_sum = 0, lat_sum = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const LonLat& p = ring[i];
+    if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || std::abs(p.lat) > 90) {
+      std::ostringstream message;
+      message << std::setprecision(10) << where << ": point " << i << " (lon " << p.lon << ", lat "
+              << p.lat << ") is not on the globe";
+      throw Error(message.str());
+    }
+    const double lon = ring[0].lon + std::remainder(p.lon - ring[0].lon, 360.0);
+    unwrapped.push_back({lon, p.lat});
+    lon_sum += lon;
+    lat_sum += p.lat;
+  }
+  const double count = static_cast<double>(ring.size());
+  PlaneRing plane;
+  plane.origin = {std::remainder(lon_sum / count, 360.0), lat_sum / count, 0};
+  const GeographicLib::LocalCartesian frame(plane.origin.lat, plane.origin.lon, 0);
+  for (const LonLat& p : unwrapped) {
+    double x = 0, y = 0, z = 0;
+    frame.Forward(p.lat, p.lon, 0, x, y, z);
+    plane.ring.push_back({x, y});
+  }
+  return plane;
 }
 
 double rotation_from_heading_deg(double heading_deg) {

@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "content/content.h"
+#include "core/grid.h"
+
 namespace maquette::structures {
 
 using Point2 = std::array<double, 2>;
@@ -75,6 +78,19 @@ struct PlaceFit {
 // options.min_axis_ratio) or the base's are (its heading is then undefined too).
 PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& options,
                    const std::string& feature);
+
+// A stroke of lon/lat in its tangent plane, where fit_place takes it.
+struct PlaneRing {
+  EnuOrigin origin;  // the east-north-up frame at the mean of the points, on the ellipsoid
+  Ring ring;         // the points' east and north (metres) in that frame
+};
+
+// Projects `ring` orthogonally on the tangent plane of the ellipsoid at the mean of its points
+// (GeographicLib::LocalCartesian; across 1 km the plane departs from the ellipsoid by 8 cm
+// vertically and shortens distances by less than 1e-8). Longitudes are unwrapped from the first
+// point's, so a ring across the antimeridian stays whole. Throws maquette::Error prefixed with
+// `where` for an empty ring or a point off the globe (non-finite, |lat| > 90).
+PlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where);
 
 // The rotation of fit_place for a heading in degrees clockwise from north of the model's +y axis
 // (the convention of glTF viewers' "heading" and of OSM's `direction`).

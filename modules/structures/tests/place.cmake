@@ -5,6 +5,7 @@
 add_executable(maquette_structures_place_test ${CMAKE_CURRENT_LIST_DIR}/place_stroke_test.cpp
                                               ${CMAKE_CURRENT_LIST_DIR}/../place_stroke.cpp)
 target_include_directories(maquette_structures_place_test PRIVATE ${PROJECT_SOURCE_DIR}/framework)
-target_link_libraries(maquette_structures_place_test PRIVATE Eigen3::Eigen GTest::gtest_main)
+target_link_libraries(maquette_structures_place_test PRIVATE Eigen3::Eigen ${GeographicLib_LIBRARIES}
+                                                             GTest::gtest_main)
 maquette_target(maquette_structures_place_test)
 gtest_discover_tests(maquette_structures_place_test DISCOVERY_TIMEOUT 60)

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <GeographicLib/Geodesic.hpp>
+#include <GeographicLib/LocalCartesian.hpp>
+#include <GeographicLib/PolygonArea.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -378,6 +381,82 @@ TEST(PlaceFit, ExplicitHeadingOverridesTheAxes) {
   const Ring stroke = transformed(base, 0.4, 2, {100, 50});
   EXPECT_NEAR(fit_place(stroke, base, options, "feature 3").rotation, 2.5, 1e-15);
   EXPECT_NEAR(fit_place(stroke, base, {}, "feature 3").rotation, 0.4, 1e-12);
+}
+
+// The geodesic area and side lengths of the ring (GeographicLib's PolygonArea and Geodesic on
+// WGS84) against the tangent plane's.
+void expect_plane_matches_geodesics(const std::vector<LonLat>& ring) {
+  const PlaneRing plane = tangent_plane_ring(ring, "stroke");
+  GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());
+  for (const LonLat& p : ring) polygon.AddPoint(p.lat, p.lon);
+  double perimeter = 0, area = 0;
+  polygon.Compute(false, true, perimeter, area);
+  EXPECT_NEAR(area_axes(plane.ring, "stroke").area, std::abs(area), 1e-6 * std::abs(area));
+  for (size_t i = 0; i + 1 < ring.size(); ++i) {
+    double s12 = 0;
+    GeographicLib::Geodesic::WGS84().Inverse(ring[i].lat, ring[i].lon, ring[i + 1].lat,
+                                             ring[i + 1].lon, s12);
+    const Point2& a = plane.ring[i];
+    const Point2& b = plane.ring[i + 1];
+    EXPECT_NEAR(std::hypot(b[0] - a[0], b[1] - a[1]), s12, 1e-7 * s12);
+  }
+}
+
+TEST(PlaceTangentPlane, MatchesGeodesicAreaAndLengths) {
+  // A 300 m x 150 m block in Soho, London.
+  const std::vector<LonLat> soho{
+      {-0.1360, 51.5130}, {-0.1317, 51.5130}, {-0.1317, 51.5143}, {-0.1360, 51.5143}};
+  expect_plane_matches_geodesics(soho);
+  const PlaneRing plane = tangent_plane_ring(soho, "stroke");
+  EXPECT_NEAR(plane.origin.lon, -0.13385, 1e-12);
+  EXPECT_NEAR(plane.origin.lat, 51.51365, 1e-12);
+  // Across the antimeridian: one small ring, its origin on the 180th meridian.
+  const std::vector<LonLat> dateline{
+      {179.9996, -16.5}, {-179.9997, -16.5}, {-179.9997, -16.4996}, {179.9996, -16.4996}};
+  expect_plane_matches_geodesics(dateline);
+  EXPECT_NEAR(std::abs(tangent_plane_ring(dateline, "stroke").origin.lon), 179.99995, 1e-9);
+}
+
+// A stroke of lon/lat traced around an L placed by a known transform (its points put on the globe
+// by geodesics from a point in Zion: azimuth and distance of their east-north offsets), fitted
+// back: the rotation and scale, and where the model's origin lands on the globe.
+TEST(PlaceTangentPlane, LonLatStrokeGivesTheKnownPlacement) {
+  const GeographicLib::Geodesic& wgs84 = GeographicLib::Geodesic::WGS84();
+  const double centre_lat = 37.2, centre_lon = -112.95;
+  const auto on_globe = [&](Point2 p) {
+    LonLat q;
+    wgs84.Direct(centre_lat, centre_lon, std::atan2(p[0], p[1]) * 180 / kPi, std::hypot(p[0], p[1]),
+                 q.lat, q.lon);
+    return q;
+  };
+  const Ring base = l_ring(24, 16, 10, 7);
+  const double rotation = 2.2, scale = 1.5;
+  const Point2 offset{-35, 20};
+  Uniform uniform(4);
+  const Ring stroke = drawn_stroke(transformed(base, rotation, scale, offset), 400, 0, uniform);
+  std::vector<LonLat> lonlat;
+  for (const Point2& p : stroke) lonlat.push_back(on_globe(p));
+  const PlaneRing plane = tangent_plane_ring(lonlat, "stroke");
+  const PlaceFit fit = fit_place(plane.ring, base, {}, "feature 9");
+  EXPECT_NEAR(fit.rotation, rotation, 1e-5);
+  EXPECT_NEAR(fit.scale, scale, 1e-6);
+  const GeographicLib::LocalCartesian frame(plane.origin.lat, plane.origin.lon, 0);
+  double lat = 0, lon = 0, height = 0;
+  frame.Reverse(fit.offset[0], fit.offset[1], 0, lat, lon, height);
+  const LonLat want = on_globe(offset);
+  double metres = 0;
+  wgs84.Inverse(lat, lon, want.lat, want.lon, metres);
+  EXPECT_LT(metres, 0.01);
+}
+
+TEST(PlaceTangentPlane, PointsOffTheGlobeNameWhere) {
+  EXPECT_THROW(tangent_plane_ring({}, "feature 4: stroke"), Error);
+  try {
+    tangent_plane_ring({{10, 45}, {10.001, 91}, {10, 45.001}}, "feature 4: stroke");
+    ADD_FAILURE() << "latitude 91 was accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "feature 4: stroke: point 1 (lon 10.001, lat 91) is not on the globe");
+  }
 }
 
 TEST(PlaceFit, HeadingConvention) {
