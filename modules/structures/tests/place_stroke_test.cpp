@@ -380,7 +380,9 @@ TEST(PlaceFit, ExplicitHeadingOverridesTheAxes) {
   options.rotation = 2.5;
   const Ring stroke = transformed(base, 0.4, 2, {100, 50});
   EXPECT_NEAR(fit_place(stroke, base, options, "feature 3").rotation, 2.5, 1e-15);
-  EXPECT_NEAR(fit_place(stroke, base, {}, "feature 3").rotation, 0.4, 1e-12);
+  const PlaceFit axes_fit = fit_place(stroke, base, {}, "feature 3");
+  EXPECT_NEAR(axes_fit.rotation, 0.4, 1e-12);
+  EXPECT_NEAR(axes_fit.axis_ratio, b.major_var / b.minor_var, 1e-9);
 }
 
 // The geodesic area and side lengths of the ring (GeographicLib's PolygonArea and Geodesic on
