@@ -342,6 +342,25 @@ TEST(PlaceFit, SquaresAndDiscsAreAmbiguous) {
   EXPECT_LT(highest, PlaceOptions{}.min_axis_ratio);
 }
 
+// A rectangle's half turn stays undecided even when its base is as noisy as its stroke (a base
+// from a model's vertices is not exactly symmetric): noise alone stays below min_skew_product.
+TEST(PlaceFit, NoisySymmetricBaseLeavesTheHalfTurnUndecided) {
+  Uniform uniform(5);
+  double highest = 0;
+  for (int n = 0; n < 2000; ++n) {
+    double size = 0;
+    const Ring rect = random_rectangle(uniform, size);
+    const Ring base = drawn_stroke(rect, 32, 0.02 * size, uniform);
+    const Ring stroke =
+        drawn_stroke(transformed(rect, uniform(-kPi, kPi), 2, {}), 32, 0.04 * size, uniform);
+    const AreaAxes b = area_axes(base, "base"), s = area_axes(stroke, "stroke");
+    highest =
+        std::max(highest, std::abs(b.skew_major * s.skew_major + b.skew_minor * s.skew_minor));
+    EXPECT_FALSE(fit_place(stroke, base, {}, "trial").half_turn_decided) << n;
+  }
+  std::cout << "noisy rectangles, highest skewness product " << highest << "\n";
+}
+
 TEST(PlaceFit, SymmetricBaseIsAmbiguousToo) {
   const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const Ring stroke{{0, 0}, {30, 0}, {30, 10}, {0, 10}};
