@@ -107,20 +107,27 @@ bool cross_from_above(const Segment& p, const Segment& q) {
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
-// Chords closer than this are tested for crossing from above; far more than the chords' bulge
-// (well under a metre for pieces of kPieceDegrees and outline sides of kOutlineSpacingM).
-constexpr double kCrossingCheckM = 1;
+// The most a chord of `segments` lies below the surface it spans: L^2 / (8 R) for the longest,
+// R = 6335 km (the ellipsoid's smallest radius of curvature).
+double largest_sag(const std::vector<Segment>& segments) {
+  double longest = 0;
+  for (const Segment& s : segments) longest = std::max(longest, norm(sub(s[1], s[0])));
+  return longest * longest / (8 * 6.335e6);
+}
 
 // The shortest distance between segments `a` (within `radius` of `centre`) and `b`; segments of
-// `b` whose lower bound exceeds the best so far are skipped. 0 when two cross from above.
+// `b` whose lower bound exceeds the best so far are skipped. 0 when two cross from above: chords
+// of edges that cross on the ground pass at most their sags apart, so pairs closer than that (and
+// a metre) are tested for crossing.
 double shortest(const std::vector<Segment>& a, const Vec3& centre, double radius,
                 const std::vector<Segment>& b) {
+  const double crossing_check_m = 1 + largest_sag(a) + largest_sag(b);
   double best = std::numeric_limits<double>::infinity();
   for (const Segment& piece : b) {
     if (segment_distance({centre, centre}, piece) - radius >= best) continue;
     for (const Segment& s : a) {
       const double d = segment_distance(s, piece);
-      if (d < kCrossingCheckM && cross_from_above(s, piece)) return 0;
+      if (d < crossing_check_m && cross_from_above(s, piece)) return 0;
       best = std::min(best, d);
     }
   }

@@ -40,10 +40,7 @@ double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
 }
 
 LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output)
-    : ctx_(ctx),
-      to_ellipsoid_(ellipsoidal_heights(ctx.input_layer("dem"))),
-      input_(input),
-      output_(output) {}
+    : ctx_(ctx), input_(input), output_(output) {}
 
 CellId LakeContent::owner(const std::string& what, double lon, double lat) const {
   const CellId cell =
@@ -75,13 +72,14 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   const double pixel = square.side / double(tile);
   const double col0 = double(input_.origin_col - int64_t(cell.col()) * tile);
   const double row0 = double(input_.origin_row - int64_t(cell.row()) * tile);
+  if (!to_ellipsoid_) to_ellipsoid_ = ellipsoidal_heights(ctx_.input_layer("dem"));
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;
   for (const LakeVertex& v : mesh.vertices) {
     const LonLat p = ctx_.grid->inverse(
         {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
-    lake.places.push_back({p.lon, p.lat, to_ellipsoid_(p, v.height)});
+    lake.places.push_back({p.lon, p.lat, (*to_ellipsoid_)(p, v.height)});
     lake.on_surface.push_back(v.height == body.level);
   }
   lake.fog.mesh.provenance = {

@@ -9,6 +9,7 @@
 // terrain of an EGM96 DEM as of an ellipsoidal one.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,9 @@ class LakeContent {
   static double surface_height(const Lake& lake, const MeshObject& object);
 
   const StepContext& ctx_;
-  const EllipsoidalHeights to_ellipsoid_;  // the DEM's heights to the ellipsoid
+  // The DEM's heights to the ellipsoid, set up with the first lake (PROJ and its geoid grid are
+  // needed only for content).
+  std::optional<EllipsoidalHeights> to_ellipsoid_;
   const Mosaic& input_;
   Mosaic& output_;
   std::vector<Lake> lakes_;

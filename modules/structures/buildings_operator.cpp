@@ -93,9 +93,9 @@ class Buildings : public CellOperator {
                             params.at("level_height_m").get<double>()};
     const bool skip_invalid = params.at("skip_invalid").get<bool>();
     MeshContent& mesh = data.content.mesh("mesh");
-    const EllipsoidalHeights to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
-    BuildingSite site{ctx.grid,    ctx.cell,     &data.input("dem"),
-                      mesh.origin, std::nullopt, &to_ellipsoid};
+    // Set up with the cell's first building: PROJ's transformation costs a few milliseconds.
+    std::optional<EllipsoidalHeights> to_ellipsoid;
+    BuildingSite site{ctx.grid, ctx.cell, &data.input("dem"), mesh.origin, std::nullopt};
     const auto orthophoto = data.inputs.find("orthophoto");
     if (orthophoto != data.inputs.end())
       site.texture = TextureWindow{orthophoto->second.size(), orthophoto->second.halo()};
@@ -105,6 +105,10 @@ class Buildings : public CellOperator {
       if (const std::optional<GeoPoint> first = first_point(f->geometry);
           !first || !ctx.owns({first->lon, first->lat}))
         continue;
+      if (!to_ellipsoid) {
+        to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
+        site.to_ellipsoid = &*to_ellipsoid;
+      }
       try {
         MeshObject object = building_mesh(*f, rules, site);
         if (site.texture) {

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <memory>
-#include <stdexcept>
 #include <tuple>
 
 namespace maquette::structures {
@@ -53,13 +52,14 @@ std::vector<uint32_t> triangulate_footprint(const Footprint& footprint) {
   const auto index_of = [&](double x, double y) {
     const auto it = std::lower_bound(points.begin(), points.end(), std::make_tuple(x, y, 0u));
     if (it == points.end() || std::get<0>(*it) != x || std::get<1>(*it) != y)
-      throw std::logic_error("GEOS triangulation: a triangle corner is not a footprint point");
+      throw InvalidFootprint(
+          "GEOS triangulated its roof with a corner that is not a footprint point");
     return std::get<2>(*it);
   };
 
   const GeometryPtr triangles(
       GEOSConstrainedDelaunayTriangulation_r(geos(), polygon(footprint).get()));
-  if (!triangles) throw std::runtime_error("GEOS could not triangulate the footprint");
+  if (!triangles) throw InvalidFootprint("GEOS could not triangulate its roof");
   std::vector<uint32_t> indices;
   const int n = GEOSGetNumGeometries_r(geos(), triangles.get());
   indices.reserve(3 * size_t(n));
