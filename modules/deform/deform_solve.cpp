@@ -1,55 +1,58 @@
 #include "deform_solve.h"
 
 #include <Eigen/Sparse>
-#include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "core/error.h"
 
 namespace maquette::deform {
 namespace {
 
-// One least-squares row: sum coefficient * h[vertex] = rhs.
-struct Row {
-  std::vector<std::pair<size_t, double>> terms;
-  double rhs = 0;
-};
+// A term of a least-squares row: coefficient * h[vertex].
+using Term = std::pair<size_t, double>;
 
+// The weighted rows of one least squares, kept as the sparse matrix A (compressed rows, built in
+// row order: no triplets to sort) and b, solved by the normal equations A^T A h = A^T b.
 class System {
  public:
   System(HeightField& field, std::vector<size_t> unknowns)
-      : field_(field),
-        unknowns_(std::move(unknowns)),
-        atb_(Eigen::VectorXd::Zero(Eigen::Index(unknowns_.size()))) {}
+      : field_(field), unknowns_(std::move(unknowns)), column_(field.z.size(), -1) {
+    for (size_t i = 0; i < unknowns_.size(); ++i) column_[unknowns_[i]] = int(i);
+    starts_.push_back(0);
+  }
 
   const std::vector<size_t>& unknowns() const { return unknowns_; }
-  bool unknown(size_t vertex) const { return column(vertex) >= 0; }
+  bool unknown(size_t vertex) const { return column_[vertex] >= 0; }
 
-  // Adds weight * (row) to the normal equations; terms on vertices that are no unknowns go to
-  // the right-hand side at their current height.
-  void add(const Row& row, double weight) {
-    std::vector<std::pair<Eigen::Index, double>> free;
-    double rhs = row.rhs;
-    for (const auto& [vertex, coefficient] : row.terms) {
-      const Eigen::Index u = column(vertex);
-      if (u < 0)
+  // Adds the row weight * (sum terms = rhs); terms on vertices that are no unknowns go to the
+  // right-hand side at their current height. A row without unknowns is dropped.
+  void add(std::span<const Term> terms, double rhs, double weight) {
+    const size_t first = columns_.size();
+    for (const auto& [vertex, coefficient] : terms) {
+      const int u = column_[vertex];
+      if (u < 0) {
         rhs -= coefficient * field_.z[vertex];
-      else
-        free.emplace_back(u, coefficient);
+      } else {
+        columns_.push_back(u);
+        values_.push_back(weight * coefficient);
+      }
     }
-    const double w2 = weight * weight;
-    for (const auto& [i, a] : free) {
-      atb_[i] += w2 * a * rhs;
-      for (const auto& [j, b] : free) triplets_.emplace_back(i, j, w2 * a * b);
-    }
+    if (columns_.size() == first) return;
+    starts_.push_back(int(columns_.size()));
+    rhs_.push_back(weight * rhs);
   }
 
   void solve() {
-    Eigen::SparseMatrix<double> ata(atb_.size(), atb_.size());
-    ata.setFromTriplets(triplets_.begin(), triplets_.end());
+    const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> a(
+        Eigen::Index(rhs_.size()), Eigen::Index(unknowns_.size()), Eigen::Index(values_.size()),
+        starts_.data(), columns_.data(), values_.data());
+    const Eigen::SparseMatrix<double> at = a.transpose();
+    const Eigen::SparseMatrix<double> ata = at * a;
+    const Eigen::VectorXd atb = at * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), a.rows());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(ata);
     if (ldlt.info() != Eigen::Success) throw Error("the deformation's least squares is singular");
-    const Eigen::VectorXd h = ldlt.solve(atb_);
+    const Eigen::VectorXd h = ldlt.solve(atb);
     for (size_t i = 0; i < unknowns_.size(); ++i) {
       if (!std::isfinite(h[Eigen::Index(i)]))
         throw Error("the deformation's least squares has no finite solution");
@@ -58,27 +61,24 @@ class System {
   }
 
  private:
-  Eigen::Index column(size_t vertex) const {
-    const auto it = std::lower_bound(unknowns_.begin(), unknowns_.end(), vertex);
-    return it != unknowns_.end() && *it == vertex ? Eigen::Index(it - unknowns_.begin()) : -1;
-  }
-
   HeightField& field_;
   std::vector<size_t> unknowns_;  // sorted vertex indices
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::VectorXd atb_;
+  std::vector<int> column_;       // by vertex: its unknown's column, -1 for none
+  std::vector<int> starts_, columns_;
+  std::vector<double> values_, rhs_;
 };
 
-// The vertices of the constraints' triangles, sorted, without those of `fixed` (sorted).
+// The vertices of the constraints' triangles, sorted, without those of `fixed`: marked on the
+// field's vertices and read back in index order (no sort of the many repeats).
 std::vector<size_t> touched(const std::vector<HeightConstraint>& constraints,
-                            const std::vector<size_t>& fixed) {
-  std::vector<size_t> all;
+                            const std::vector<size_t>& fixed, size_t vertices) {
+  std::vector<char> mark(vertices, 0);
   for (const HeightConstraint& c : constraints)
-    all.insert(all.end(), c.at.vertex.begin(), c.at.vertex.end());
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
+    for (const size_t v : c.at.vertex) mark[v] = 1;
+  for (const size_t v : fixed) mark[v] = 0;
   std::vector<size_t> out;
-  std::set_difference(all.begin(), all.end(), fixed.begin(), fixed.end(), std::back_inserter(out));
+  for (size_t v = 0; v < vertices; ++v)
+    if (mark[v]) out.push_back(v);
   return out;
 }
 
@@ -93,28 +93,31 @@ std::vector<size_t> solve_stage(HeightField& field,
                                 const std::vector<HeightConstraint>& constraints,
                                 const std::vector<size_t>& fixed, double energy_weight,
                                 Neighbours neighbours) {
-  System system(field, touched(constraints, fixed));
+  System system(field, touched(constraints, fixed, field.z.size()));
   if (system.unknowns().empty()) return {};
   for (const HeightConstraint& c : constraints) {
-    Row row{{}, c.z};
-    for (size_t k = 0; k < 3; ++k) row.terms.emplace_back(c.at.vertex[k], c.at.weight[k]);
-    system.add(row, 1.0);
+    const std::array<Term, 3> terms{{{c.at.vertex[0], c.at.weight[0]},
+                                     {c.at.vertex[1], c.at.weight[1]},
+                                     {c.at.vertex[2], c.at.weight[2]}}};
+    system.add(terms, c.z, 1.0);
   }
+  std::array<Term, 7> terms;
   for (const size_t v : system.unknowns()) {
     const int col = int(v % size_t(field.width)), r = int(v / size_t(field.width));
     const std::array<double, 6> w = cotangent_weights(field, col, r);
-    Row row{{{v, 1.0}}, 0.0};
+    terms[0] = {v, 1.0};
+    size_t count = 1;
     double sum = 0;
     for (size_t k = 0; k < 6; ++k) {
       const size_t n = field.index(col + kNeighbours[k][0], r + kNeighbours[k][1]);
       if (neighbours == Neighbours::All || system.unknown(n)) {
-        row.terms.emplace_back(n, -w[k]);
+        terms[count++] = {n, -w[k]};
         sum += w[k];
       }
     }
     if (sum == 0) continue;  // an isolated unknown: its constraints alone decide it
-    for (size_t k = 1; k < row.terms.size(); ++k) row.terms[k].second /= sum;
-    system.add(row, energy_weight);
+    for (size_t k = 1; k < count; ++k) terms[k].second /= sum;
+    system.add(std::span(terms.data(), count), 0.0, energy_weight);
   }
   system.solve();
   return system.unknowns();
