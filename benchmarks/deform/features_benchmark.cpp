@@ -34,9 +34,9 @@ Scene make_scene() {
   Tile<float> dem(kSide, 1);
   for (int r = 0; r < kSide; ++r)
     for (int c = 0; c < kSide; ++c) {
-      const LonLat p = pixel_centre(
-          default_grid(), {s.input.face, s.input.origin_col + c, s.input.origin_row + r},
-          kPixelLevel);
+      const LonLat p =
+          pixel_centre(default_grid(),
+                       {s.input.face, s.input.origin_col + c, s.input.origin_row + r}, kPixelLevel);
       double e = 0, n = 0, u = 0;
       plane.Forward(p.lat, p.lon, 0, e, n, u);
       dem.at(c, r) = float(1500 + 3 * std::sin(2 * std::numbers::pi * e / 80) *
@@ -54,8 +54,8 @@ Scene make_scene() {
   const double heading = 30 * std::numbers::pi / 180;
   s.river.id = 1;
   s.river.geometry.type = GeometryType::LineString;
-  s.river.geometry.lines = {
-      {lonlat(-433, -250), lonlat(-433 + 1000 * std::cos(heading), -250 + 1000 * std::sin(heading))}};
+  s.river.geometry.lines = {{lonlat(-433, -250), lonlat(-433 + 1000 * std::cos(heading),
+                                                        -250 + 1000 * std::sin(heading))}};
   s.river.attributes = {{"tool", "feature"},
                         {"cross_section", {{-28, 0}, {-8, -5}, {8, -5}, {28, 0}}}};
   return s;

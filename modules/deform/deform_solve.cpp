@@ -2,22 +2,25 @@
 
 #include <Eigen/Sparse>
 #include <cmath>
-#include <span>
 
 #include "core/error.h"
 
 namespace maquette::deform {
-namespace {
 
-// A term of a least-squares row: coefficient * h[vertex].
-using Term = std::pair<size_t, double>;
+void ConstraintRows::add(std::span<const Term> row, double z) {
+  terms.insert(terms.end(), row.begin(), row.end());
+  starts.push_back(terms.size());
+  rhs.push_back(z);
+}
+
+namespace {
 
 // The weighted rows of one least squares, kept as the sparse matrix A (compressed rows, built in
 // row order: no triplets to sort) and b, solved by the normal equations A^T A h = A^T b.
 class System {
  public:
-  System(HeightField& field, std::vector<size_t> unknowns)
-      : field_(field), unknowns_(std::move(unknowns)), column_(field.z.size(), -1) {
+  System(std::vector<double>& z, std::vector<size_t> unknowns)
+      : z_(z), unknowns_(std::move(unknowns)), column_(z.size(), -1) {
     for (size_t i = 0; i < unknowns_.size(); ++i) column_[unknowns_[i]] = int(i);
     starts_.push_back(0);
   }
@@ -32,7 +35,7 @@ class System {
     for (const auto& [vertex, coefficient] : terms) {
       const int u = column_[vertex];
       if (u < 0) {
-        rhs -= coefficient * field_.z[vertex];
+        rhs -= coefficient * z_[vertex];
       } else {
         columns_.push_back(u);
         values_.push_back(weight * coefficient);
@@ -56,25 +59,24 @@ class System {
     for (size_t i = 0; i < unknowns_.size(); ++i) {
       if (!std::isfinite(h[Eigen::Index(i)]))
         throw Error("the deformation's least squares has no finite solution");
-      field_.z[unknowns_[i]] = h[Eigen::Index(i)];
+      z_[unknowns_[i]] = h[Eigen::Index(i)];
     }
   }
 
  private:
-  HeightField& field_;
+  std::vector<double>& z_;
   std::vector<size_t> unknowns_;  // sorted vertex indices
   std::vector<int> column_;       // by vertex: its unknown's column, -1 for none
   std::vector<int> starts_, columns_;
   std::vector<double> values_, rhs_;
 };
 
-// The vertices of the constraints' triangles, sorted, without those of `fixed`: marked on the
-// field's vertices and read back in index order (no sort of the many repeats).
-std::vector<size_t> touched(const std::vector<HeightConstraint>& constraints,
-                            const std::vector<size_t>& fixed, size_t vertices) {
+// The vertices of the rows' terms, sorted, without those of `fixed`: marked on the vertices and
+// read back in index order (no sort of the many repeats).
+std::vector<size_t> touched(const ConstraintRows& rows, const std::vector<size_t>& fixed,
+                            size_t vertices) {
   std::vector<char> mark(vertices, 0);
-  for (const HeightConstraint& c : constraints)
-    for (const size_t v : c.at.vertex) mark[v] = 1;
+  for (const Term& t : rows.terms) mark[t.first] = 1;
   for (const size_t v : fixed) mark[v] = 0;
   std::vector<size_t> out;
   for (size_t v = 0; v < vertices; ++v)
@@ -83,41 +85,34 @@ std::vector<size_t> touched(const std::vector<HeightConstraint>& constraints,
 }
 
 // The energy rows: which neighbours of an unknown they read.
-enum class Neighbours {
+enum class Reads {
   All,       // every neighbour, those that are not unknowns at their current height
   Unknowns,  // the unknowns only, their weights renormalized
 };
 
-// The constraints' rows and an energy row per unknown, solved; returns the unknowns.
-std::vector<size_t> solve_stage(HeightField& field,
-                                const std::vector<HeightConstraint>& constraints,
-                                const std::vector<size_t>& fixed, double energy_weight,
-                                Neighbours neighbours) {
-  System system(field, touched(constraints, fixed, field.z.size()));
+// The rows and an energy row per unknown, solved; returns the unknowns.
+std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& rows,
+                                const std::vector<size_t>& fixed,
+                                const EnergyNeighbours& neighbours, double energy_weight,
+                                Reads reads) {
+  System system(z, touched(rows, fixed, z.size()));
   if (system.unknowns().empty()) return {};
-  for (const HeightConstraint& c : constraints) {
-    const std::array<Term, 3> terms{{{c.at.vertex[0], c.at.weight[0]},
-                                     {c.at.vertex[1], c.at.weight[1]},
-                                     {c.at.vertex[2], c.at.weight[2]}}};
-    system.add(terms, c.z, 1.0);
-  }
-  std::array<Term, 7> terms;
+  for (size_t i = 0; i < rows.rhs.size(); ++i)
+    system.add(std::span(rows.terms).subspan(rows.starts[i], rows.starts[i + 1] - rows.starts[i]),
+               rows.rhs[i], 1.0);
+  std::vector<Term> around, terms;
   for (const size_t v : system.unknowns()) {
-    const int col = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-    const std::array<double, 6> w = cotangent_weights(field, col, r);
-    terms[0] = {v, 1.0};
-    size_t count = 1;
+    neighbours(v, around);
+    terms.assign(1, {v, 1.0});
     double sum = 0;
-    for (size_t k = 0; k < 6; ++k) {
-      const size_t n = field.index(col + kNeighbours[k][0], r + kNeighbours[k][1]);
-      if (neighbours == Neighbours::All || system.unknown(n)) {
-        terms[count++] = {n, -w[k]};
-        sum += w[k];
+    for (const auto& [n, w] : around)
+      if (reads == Reads::All || system.unknown(n)) {
+        terms.emplace_back(n, -w);
+        sum += w;
       }
-    }
     if (sum == 0) continue;  // an isolated unknown: its constraints alone decide it
-    for (size_t k = 1; k < count; ++k) terms[k].second /= sum;
-    system.add(std::span(terms.data(), count), 0.0, energy_weight);
+    for (size_t k = 1; k < terms.size(); ++k) terms[k].second /= sum;
+    system.add(terms, 0.0, energy_weight);
   }
   system.solve();
   return system.unknowns();
@@ -125,11 +120,34 @@ std::vector<size_t> solve_stage(HeightField& field,
 
 }  // namespace
 
+void deform_heights(std::vector<double>& z, const ConstraintRows& control,
+                    const ConstraintRows& section, const EnergyNeighbours& neighbours,
+                    double energy_weight) {
+  const std::vector<size_t> control_vertices =
+      solve_stage(z, control, {}, neighbours, energy_weight, Reads::Unknowns);
+  solve_stage(z, section, control_vertices, neighbours, energy_weight, Reads::All);
+}
+
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
                     const std::vector<HeightConstraint>& section, double energy_weight) {
-  const std::vector<size_t> control_vertices =
-      solve_stage(field, control, {}, energy_weight, Neighbours::Unknowns);
-  solve_stage(field, section, control_vertices, energy_weight, Neighbours::All);
+  auto rows = [](const std::vector<HeightConstraint>& constraints) {
+    ConstraintRows out;
+    for (const HeightConstraint& c : constraints) {
+      const std::array<Term, 3> terms{{{c.at.vertex[0], c.at.weight[0]},
+                                       {c.at.vertex[1], c.at.weight[1]},
+                                       {c.at.vertex[2], c.at.weight[2]}}};
+      out.add(terms, c.z);
+    }
+    return out;
+  };
+  const EnergyNeighbours neighbours = [&field](size_t v, std::vector<Term>& out) {
+    const int col = int(v % size_t(field.width)), r = int(v / size_t(field.width));
+    const std::array<double, 6> w = cotangent_weights(field, col, r);
+    out.clear();
+    for (size_t k = 0; k < 6; ++k)
+      out.emplace_back(field.index(col + kNeighbours[k][0], r + kNeighbours[k][1]), w[k]);
+  };
+  deform_heights(field.z, rows(control), rows(section), neighbours, energy_weight);
 }
 
 }  // namespace maquette::deform

@@ -1,8 +1,13 @@
-// The weighted least squares of paper 002 §3.2 on a triangulated height field, at one level
-// (the base level: the subdivision matrix of Eq. 4 is the identity; finer levels will write the
-// rows through it). The unknowns are heights; horizontal positions stay.
+// The weighted least squares of paper 002 §3.2: two solves, the control constraints then the
+// cross sections with the control vertices fixed, each with Laplace-Beltrami energy rows. Written
+// on any vertex set (the base level's height field, or the vertices of a subdivision level whose
+// constraints come through the subdivision matrix, Eq. 4: deform_levels.h). The unknowns are
+// heights; horizontal positions stay.
 #pragma once
 
+#include <functional>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "height_field.h"
@@ -15,26 +20,47 @@ struct HeightConstraint {
   double z = 0;
 };
 
-// Deforms `field` in place to the control constraints, then to the cross-section constraints
-// with the control vertices fixed (two solves, as Hnaidi et al. 2010 and the paper do):
-//  1. unknowns: the vertices of the triangles holding `control` points; rows: those constraints
-//     (weight 1) and an energy row per unknown, energy_weight * (h_v - sum_n w_vn h_n) = 0 with
-//     the cotangent weights of cotangent_weights (the discrete Laplace-Beltrami operator, paper
-//     §3.2.2) over its neighbours among the unknowns, renormalized. The curve constrains the strip
-//     of vertices along it only along the curve; across it the energy rows decide, and the
-//     terrain around, which the cross sections replace next, must not: with the input's heights
-//     in these rows a channel's strip tilts towards its banks (measured: 38 mm RMS on the curve of
-//     a 5 m deep channel instead of under 1 mm);
-//  2. unknowns: the vertices of the triangles holding `section` points, minus those of step 1;
-//     rows: the section constraints (fixed vertices moved to the right-hand side; a constraint
-//     without unknowns is dropped) and an energy row per unknown over all its neighbours, those
-//     that are not unknowns at their current height (the field of influence's edge meets the
-//     terrain around it).
+// A term of a linear row: coefficient * z[vertex].
+using Term = std::pair<size_t, double>;
+
+// Positional constraints as rows: row i is sum of terms[starts[i] .. starts[i + 1]) = rhs[i].
+struct ConstraintRows {
+  std::vector<size_t> starts{0};
+  std::vector<Term> terms;
+  std::vector<double> rhs;
+
+  void add(std::span<const Term> row, double z);
+};
+
+// The energy row of vertex v: fills `out` with its neighbours and their cotangent weights (>= 0;
+// the row is z_v - sum w_n z_n / sum w_n = 0 over the neighbours it reads).
+using EnergyNeighbours = std::function<void(size_t v, std::vector<Term>& out)>;
+
+// Deforms the heights `z` to the control rows, then to the section rows with the control
+// vertices fixed (two solves, as Hnaidi et al. 2010 and the paper do):
+//  1. unknowns: the vertices in the control rows; rows: those (weight 1) and an energy row per
+//     unknown, energy_weight * (z_v - sum_n w_vn z_n) = 0, over its neighbours among the unknowns,
+//     weights renormalized. The curve constrains the strip of vertices along it only along the
+//     curve; across it the energy rows decide, and the terrain around, which the cross sections
+//     replace next, must not: with the input's heights in these rows a channel's strip tilts
+//     towards its banks (measured: 38 mm RMS on the curve of a 5 m deep channel instead of under
+//     1 mm);
+//  2. unknowns: the vertices in the section rows, minus those of step 1; rows: the section rows
+//     (fixed vertices moved to the right-hand side; a row without unknowns is dropped) and an
+//     energy row per unknown over all its neighbours, those that are not unknowns at their
+//     current height (the field of influence's edge meets the terrain around it).
 // Each is solved by its normal equations with Eigen's SimplicialLDLT (unknowns ordered by vertex
 // index, rows in the order given, so the result depends on nothing else). Vertices that are no
 // unknown keep their heights bit for bit.
-// Preconditions: every unknown vertex is interior (not on the raster's border) and it and its six
-// neighbours have finite heights. Throws maquette::Error if a system is singular.
+// Preconditions: every vertex the rows and energy rows read has a finite height.
+// Throws maquette::Error if a system is singular.
+void deform_heights(std::vector<double>& z, const ConstraintRows& control,
+                    const ConstraintRows& section, const EnergyNeighbours& neighbours,
+                    double energy_weight);
+
+// The base level: constraints on the height field's triangles, energy rows with
+// cotangent_weights. Preconditions: every unknown vertex is interior (not on the raster's
+// border) and it and its six neighbours have finite heights.
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
                     const std::vector<HeightConstraint>& section, double energy_weight);
 

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "deform_levels.h"
 #include "deform_solve.h"
 #include "height_field.h"
 #include "mosaic_frame.h"
@@ -44,7 +45,15 @@ OperatorSpec features_spec() {
           {"default", 0.01},
           {"description",
            "weight of the Laplace-Beltrami energy rows against the positional constraints "
-           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}}}}};
+           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}},
+        {"refine",
+         {{"type", "integer"},
+          {"minimum", 0},
+          {"maximum", 3},
+          {"default", 0},
+          {"description",
+           "levels of Loop subdivision near the features: the output is 2^refine times finer "
+           "than the DEM (the step writes its layer refine levels deeper)"}}}}}};
   return s;
 }
 
@@ -60,23 +69,51 @@ double sample_spacing(const MosaicFrame& frame, int size, LonLat p) {
   return std::min(std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(d[0] - a[0], d[1] - a[1]));
 }
 
+// Fills the horizontal position of sample v.
+void place(const MosaicFrame& frame, HeightField& field, size_t v) {
+  if (!std::isnan(field.east[v])) return;
+  const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
+  const EastNorth2 p = frame.local(frame.sample_lonlat(c, r));
+  field.east[v] = p[0];
+  field.north[v] = p[1];
+}
+
 // Fills the horizontal positions of the constraints' vertices and their neighbours.
 void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constraints,
                     HeightField& field) {
-  auto place = [&](size_t v) {
-    if (!std::isnan(field.east[v])) return;
-    const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-    const EastNorth2 p = frame.local(frame.sample_lonlat(c, r));
-    field.east[v] = p[0];
-    field.north[v] = p[1];
-  };
   for (const auto* list : {&constraints.control, &constraints.section})
     for (const HeightConstraint& h : *list)
       for (const size_t v : h.at.vertex) {
         const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-        place(v);
-        for (const auto& n : kNeighbours) place(field.index(c + n[0], r + n[1]));
+        place(frame, field, v);
+        for (const auto& n : kNeighbours) place(frame, field, field.index(c + n[0], r + n[1]));
       }
+}
+
+// The deformed surface `refine` levels finer near the features (deform_levels.h).
+RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
+                         const StrokeConstraints& constraints, double energy_weight, int refine) {
+  const SampleWindow window =
+      refinement_window(field, constraints.control, constraints.section, refine);
+  for (int r = window.row0; r <= window.row1; ++r)
+    for (int c = window.col0; c <= window.col1; ++c) place(frame, field, field.index(c, r));
+  return refined_heights(field, window, constraints.control, constraints.section, energy_weight,
+                         refine);
+}
+
+// The finer output: the patch where it is, elsewhere the input linearly interpolated at the
+// finer pixel centres.
+void write_finer(const HeightField& field, const RefinedPatch& patch, int refine,
+                 Tile<float>& out) {
+  const double scale = 1 << refine;
+  for (int r = 0; r < out.size(); ++r)
+    for (int c = 0; c < out.size(); ++c) {
+      const int j = c - patch.col0, i = r - patch.row0;
+      out.at(c, r) =
+          float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
+                    ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
+                    : height_at_clamped(field, (c + 0.5) / scale - 0.5, (r + 0.5) / scale - 0.5));
+    }
 }
 
 class Features : public RegionOperator {
@@ -89,12 +126,18 @@ class Features : public RegionOperator {
   void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
     const Tile<float>& dem = input.layers.at("dem");
     Tile<float>& out = output.layers.at("dem");
-    out = dem;
+    const int refine = ctx.params->at("refine").get<int>();
+    const double energy_weight = ctx.params->at("energy_weight").get<double>();
+    const int size = dem.size();
+    if (out.size() != size << refine)
+      throw Error("deform.features: the output mosaic has " + std::to_string(out.size()) +
+                  " samples a side, not 2^refine (refine " + std::to_string(refine) +
+                  ") times the input's " + std::to_string(size));
     const std::vector<FeatureStroke> strokes =
         feature_strokes(input.features.at("strokes"), "strokes");
-    if (strokes.empty()) return;
+    if (refine == 0) out = dem;
+    if (strokes.empty() && refine == 0) return;
 
-    const int size = dem.size();
     HeightField field;
     field.width = field.height = size;
     field.z.resize(size_t(size) * size_t(size));
@@ -102,18 +145,27 @@ class Features : public RegionOperator {
       for (int c = 0; c < size; ++c) field.z[field.index(c, r)] = dem.at(c, r);
     field.east.assign(field.z.size(), NAN);
     field.north.assign(field.z.size(), NAN);
+    if (strokes.empty()) {
+      write_finer(field, {}, refine, out);
+      return;
+    }
 
     const LonLat reference = strokes.front().curve.front();
     const MosaicFrame frame(*ctx.grid, input.face, input.level, input.origin_col, input.origin_row,
                             reference);
-    // Half a sample: every triangle the curve or a cross section crosses holds a constraint.
-    const double step_m = 0.5 * sample_spacing(frame, size, reference);
+    // Half a sample of the finest level: every triangle the curve or a cross section crosses
+    // holds a constraint.
+    const double step_m = 0.5 * sample_spacing(frame, size, reference) / double(1 << refine);
     StrokeConstraints constraints;
     for (const FeatureStroke& stroke : strokes)
       add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
+    if (refine > 0) {
+      write_finer(field, refine_near(frame, field, constraints, energy_weight, refine), refine,
+                  out);
+      return;
+    }
     place_vertices(frame, constraints, field);
-    deform_heights(field, constraints.control, constraints.section,
-                   ctx.params->at("energy_weight").get<double>());
+    deform_heights(field, constraints.control, constraints.section, energy_weight);
 
     for (int r = 0; r < size; ++r)
       for (int c = 0; c < size; ++c) {

@@ -9,13 +9,21 @@ SurfacePoint locate(const HeightField& field, double col, double row) {
   const int c = int(std::floor(col)), r = int(std::floor(row));
   const double fx = col - c, fy = row - r;
   const size_t v00 = field.index(c, r), v11 = field.index(c + 1, r + 1);
-  if (fx >= fy) return {{v00, field.index(c + 1, r), v11}, {1 - fx, fx - fy, fy}};
-  return {{v00, field.index(c, r + 1), v11}, {1 - fy, fy - fx, fx}};
+  if (fx >= fy) return {{v00, field.index(c + 1, r), v11}, {1 - fx, fx - fy, fy}, {col, row}};
+  return {{v00, field.index(c, r + 1), v11}, {1 - fy, fy - fx, fx}, {col, row}};
 }
 
 double height_at(const HeightField& field, const SurfacePoint& p) {
   return p.weight[0] * field.z[p.vertex[0]] + p.weight[1] * field.z[p.vertex[1]] +
          p.weight[2] * field.z[p.vertex[2]];
+}
+
+double height_at_clamped(const HeightField& field, double col, double row) {
+  // Below the last column and row, so that the triangle is inside the field.
+  const double last_col = std::nextafter(double(field.width - 1), 0.0);
+  const double last_row = std::nextafter(double(field.height - 1), 0.0);
+  return height_at(field,
+                   locate(field, std::clamp(col, 0.0, last_col), std::clamp(row, 0.0, last_row)));
 }
 
 std::array<double, 6> cotangent_weights(const HeightField& field, int col, int row) {

@@ -27,10 +27,12 @@ struct HeightField {
 inline constexpr std::array<std::array<int, 2>, 6> kNeighbours{
     {{1, 0}, {1, 1}, {0, 1}, {-1, 0}, {-1, -1}, {0, -1}}};
 
-// A point of the surface as the barycentric combination of its triangle's vertices (Eq. 2).
+// A point of the surface as the barycentric combination of its triangle's vertices (Eq. 2), and
+// where it is in fractional sample coordinates (col, row), to locate it on finer levels.
 struct SurfacePoint {
   std::array<size_t, 3> vertex{};
   std::array<double, 3> weight{};
+  std::array<double, 2> sample{};
 };
 
 // The triangle holding the point at fractional sample coordinates (col, row) (sample centres at
@@ -40,6 +42,10 @@ SurfacePoint locate(const HeightField& field, double col, double row);
 
 // The surface's height at a located point.
 double height_at(const HeightField& field, const SurfacePoint& p);
+
+// The surface's height at fractional sample coordinates (col, row) moved into the field (the
+// nearest point of its samples' hull): the linear interpolation of the triangulation.
+double height_at_clamped(const HeightField& field, double col, double row);
 
 // Normalized cotangent weights of the interior vertex (col, row) towards its kNeighbours, from the
 // horizontal positions (the height field's domain): (cot a + cot b) / 2 per edge, negative

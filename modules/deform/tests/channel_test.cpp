@@ -88,13 +88,15 @@ struct Fixture {
   }
 };
 
-// Runs deform.features on `input` with `strokes`; returns the output mosaic's DEM.
-Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes) {
+// Runs deform.features on `input` with `strokes`; returns the output mosaic's DEM (`refine`
+// levels finer).
+Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes,
+                       int refine = 0) {
   input.features["strokes"] = strokes;
   Mosaic output = input;
   output.features.clear();
-  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size(), 1, 0, NAN);
-  const json params = {{"energy_weight", 0.01}};
+  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size() << refine, 1, 0, NAN);
+  const json params = {{"energy_weight", 0.01}, {"refine", refine}};
   const auto op = make_features();
   static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
   return output.layers.at("dem");
@@ -198,6 +200,34 @@ int changed_outside(const Fixture& fx, const Mosaic& input, const Tile<float>& o
   return changed;
 }
 
+// The samples of `input`'s mosaic `refine` levels finer (the same place, 2^refine more a side).
+Mosaic finer(const Mosaic& input, int refine) {
+  Mosaic m;
+  m.face = input.face;
+  m.level = input.level + refine;
+  m.origin_col = input.origin_col << refine;
+  m.origin_row = input.origin_row << refine;
+  return m;
+}
+
+// Cuts the channel into `surface` `refine` levels finer and checks it against the closed form
+// within the limits at that level.
+void expect_finer_channel(const char* name, const Surface& surface, int refine,
+                          double control_limit) {
+  Fixture fx;
+  fx.surface = surface;
+  const Mosaic input = fx.dem(0);
+  const VectorFeature channel = fx.channel();
+  const Tile<float> out = deform_run(input, {&channel}, refine);
+  const Errors e = compare(fx, finer(input, refine), out);
+  std::printf(
+      "%s, %d level(s) finer: control-curve RMS %.3f mm, cross-section RMS %.3f %% of the "
+      "depth\n",
+      name, refine, e.control_rms * 1000, 100 * e.section_rms / kDepth);
+  EXPECT_LE(e.control_rms, control_limit);
+  EXPECT_LE(e.section_rms, 0.02 * kDepth);
+}
+
 // Cuts the channel into `surface` and checks it against the closed form; returns the output.
 Tile<float> expect_channel(const char* name, const Surface& surface) {
   Fixture fx;
@@ -237,6 +267,14 @@ TEST(DeformFeatures, TrapezoidalChannelInASinusoidalSurface) {
     for (int c = 0; c < kTile; ++c)
       differ += std::memcmp(&out.at(c, r), &wide_out.at(c + 64, r + 64), sizeof(float)) != 0;
   EXPECT_EQ(differ, 0);
+}
+
+TEST(DeformFeatures, TrapezoidalChannelAtFinerLevels) {
+  const Surface plane = [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; };
+  expect_finer_channel("plane", plane, 1, 0.002);
+  expect_finer_channel("sinusoid", sinusoid, 1, 0.002);
+  expect_finer_channel("plane", plane, 2, 0.0005);
+  expect_finer_channel("sinusoid", sinusoid, 2, 0.0005);
 }
 
 std::string error_of(const Mosaic& input, const VectorFeature& f) {

@@ -1,0 +1,201 @@
+#include "deform_levels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "loop_adaptive.h"
+#include "loop_grid.h"
+
+namespace maquette::deform {
+namespace {
+
+// The vertex of each node of a level's grid.
+class NodeVertices {
+ public:
+  explicit NodeVertices(const GridNodes& nodes) {
+    for (size_t v = 0; v < nodes.size(); ++v) index_.emplace(key(nodes[v][0], nodes[v][1]), v);
+  }
+  size_t at(int col, int row) const {
+    const auto it = index_.find(key(col, row));
+    // Every node of a triangle holding a constraint is refined to the finest level.
+    if (it == index_.end()) throw std::logic_error("refined_heights: a constraint off the zone");
+    return it->second;
+  }
+
+ private:
+  static int64_t key(int col, int row) { return (int64_t(row) << 32) | uint32_t(col); }
+  std::unordered_map<int64_t, size_t> index_;
+};
+
+// The constraints located on the grid of `nodes` (level t + 1, 2^(t+1) nodes a base sample,
+// node (0, 0) at the window's first sample) and written through `subdivision` (its rows: the
+// level-(t+1) vertices, columns: the level-t vertices): alpha S_a + beta S_b + gamma S_c (Eq. 4).
+ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
+                            const SampleWindow& window, const NodeVertices& nodes, int scale,
+                            const SubdivisionMatrix& subdivision) {
+  ConstraintRows rows;
+  std::vector<Term> terms;
+  for (const HeightConstraint& c : constraints) {
+    const double x = (c.at.sample[0] - window.col0) * scale;
+    const double y = (c.at.sample[1] - window.row0) * scale;
+    const int col = int(std::floor(x)), row = int(std::floor(y));
+    const double fx = x - col, fy = y - row;
+    // The triangle of the square (col, row)-(col + 1, row + 1) as height_field.h cuts it.
+    const bool upper = fx >= fy;
+    const std::array<size_t, 3> vertex{nodes.at(col, row),
+                                       upper ? nodes.at(col + 1, row) : nodes.at(col, row + 1),
+                                       nodes.at(col + 1, row + 1)};
+    const std::array<double, 3> weight =
+        upper ? std::array{1 - fx, fx - fy, fy} : std::array{1 - fy, fy - fx, fx};
+    terms.clear();
+    for (size_t k = 0; k < 3; ++k)
+      for (SubdivisionMatrix::InnerIterator it(subdivision, Eigen::Index(vertex[k])); it; ++it)
+        terms.emplace_back(size_t(it.col()), weight[k] * it.value());
+    std::sort(terms.begin(), terms.end());
+    size_t merged = 0;
+    for (size_t i = 0; i < terms.size(); ++i) {
+      if (merged > 0 && terms[merged - 1].first == terms[i].first)
+        terms[merged - 1].second += terms[i].second;
+      else
+        terms[merged++] = terms[i];
+    }
+    terms.resize(merged);
+    rows.add(terms, c.z);
+  }
+  return rows;
+}
+
+// The energy neighbours of a mesh's vertices: per edge (cot a + cot b) / 2 of the angles facing
+// it in the horizontal positions, negative cotangents taken as 0 (as cotangent_weights).
+class MeshNeighbours {
+ public:
+  explicit MeshNeighbours(const TriangleMesh& mesh) {
+    std::vector<std::pair<std::pair<size_t, size_t>, double>> edges;
+    edges.reserve(6 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int apex = t[size_t(k)], a = t[size_t((k + 1) % 3)], b = t[size_t((k + 2) % 3)];
+        const double ax = mesh.vertices(a, 0) - mesh.vertices(apex, 0);
+        const double ay = mesh.vertices(a, 1) - mesh.vertices(apex, 1);
+        const double bx = mesh.vertices(b, 0) - mesh.vertices(apex, 0);
+        const double by = mesh.vertices(b, 1) - mesh.vertices(apex, 1);
+        const double w = 0.5 * std::max(0.0, (ax * bx + ay * by) / std::abs(ax * by - ay * bx));
+        edges.push_back({{size_t(a), size_t(b)}, w});
+        edges.push_back({{size_t(b), size_t(a)}, w});
+      }
+    std::sort(edges.begin(), edges.end());
+    starts_.assign(size_t(mesh.vertices.rows()) + 1, 0);
+    for (const auto& [ends, w] : edges) {
+      if (!neighbours_.empty() && last_ == ends) {
+        neighbours_.back().second += w;
+        continue;
+      }
+      neighbours_.emplace_back(ends.second, w);
+      ++starts_[ends.first + 1];
+      last_ = ends;
+    }
+    for (size_t v = 1; v < starts_.size(); ++v) starts_[v] += starts_[v - 1];
+  }
+
+  void operator()(size_t v, std::vector<Term>& out) const {
+    out.assign(neighbours_.begin() + std::ptrdiff_t(starts_[v]),
+               neighbours_.begin() + std::ptrdiff_t(starts_[v + 1]));
+  }
+
+ private:
+  std::vector<size_t> starts_;
+  std::vector<Term> neighbours_;
+  std::pair<size_t, size_t> last_{};
+};
+
+}  // namespace
+
+SampleWindow refinement_window(const HeightField& field,
+                               const std::vector<HeightConstraint>& control,
+                               const std::vector<HeightConstraint>& section, int levels) {
+  SampleWindow w{field.width, field.height, -1, -1};
+  for (const auto* list : {&control, &section})
+    for (const HeightConstraint& c : *list)
+      for (const size_t v : c.at.vertex) {
+        const int col = int(v % size_t(field.width)), row = int(v / size_t(field.width));
+        w = {std::min(w.col0, col), std::min(w.row0, row), std::max(w.col1, col),
+             std::max(w.row1, row)};
+      }
+  const int margin = kRefineMargin + levels;
+  return {std::max(0, w.col0 - margin), std::max(0, w.row0 - margin),
+          std::min(field.width - 1, w.col1 + margin), std::min(field.height - 1, w.row1 + margin)};
+}
+
+RefinedPatch refined_heights(const HeightField& field, const SampleWindow& window,
+                             const std::vector<HeightConstraint>& control,
+                             const std::vector<HeightConstraint>& section, double energy_weight,
+                             int levels) {
+  const int columns = window.col1 - window.col0 + 1, rows = window.row1 - window.row0 + 1;
+  // The window's triangles in height_field_mesh's order, at the samples' true positions.
+  TriangleMesh base =
+      height_field_mesh({columns, rows, 1, 1, std::vector<double>(size_t(columns) * rows, 0.0)});
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c) {
+      const size_t v = field.index(window.col0 + c, window.row0 + r);
+      base.vertices.row(Eigen::Index(r * columns + c)) << field.east[v], field.north[v], field.z[v];
+    }
+  std::vector<bool> marked(base.triangles.size(), false);
+  for (const auto* list : {&control, &section})
+    for (const HeightConstraint& h : *list) {
+      const double x = h.at.sample[0] - window.col0, y = h.at.sample[1] - window.row0;
+      const int c = int(std::floor(x)), r = int(std::floor(y));
+      marked[2 * size_t(r * (columns - 1) + c) + (x - c >= y - r ? 0 : 1)] = true;
+    }
+  const AdaptiveLoop loop = adaptive_loop_subdivide(base, marked, levels);
+
+  GridNodes nodes = height_field_nodes(columns, rows);
+  Eigen::VectorXd z = base.vertices.col(2);
+  for (int t = 0; t < levels; ++t) {
+    nodes = finer_nodes(nodes, loop.new_vertex_ends[size_t(t)]);
+    const NodeVertices finer(nodes);
+    const SubdivisionMatrix& s = loop.subdivisions[size_t(t)];
+    std::vector<double> heights(z.data(), z.data() + z.size());
+    const MeshNeighbours neighbours(loop.meshes[size_t(t)]);
+    deform_heights(heights, rows_through(control, window, finer, 2 << t, s),
+                   rows_through(section, window, finer, 2 << t, s), neighbours, energy_weight);
+    z = s * Eigen::Map<const Eigen::VectorXd>(heights.data(), Eigen::Index(heights.size()));
+  }
+
+  // The finest mesh at the pixel centres: node coordinates x = j + 0.5 for patch column j.
+  const int scale = 1 << levels;
+  RefinedPatch patch{window.col0 * scale + scale / 2,
+                     window.row0 * scale + scale / 2,
+                     (columns - 1) * scale,
+                     (rows - 1) * scale,
+                     {}};
+  patch.z.assign(size_t(patch.columns) * size_t(patch.rows), NAN);
+  std::vector<char> written(patch.z.size(), 0);
+  for (const auto& t : loop.meshes.back().triangles) {
+    const auto& a = nodes[size_t(t[0])];
+    const auto& b = nodes[size_t(t[1])];
+    const auto& c = nodes[size_t(t[2])];
+    const double det = double(b[0] - a[0]) * (c[1] - a[1]) - double(c[0] - a[0]) * (b[1] - a[1]);
+    const double sign = det > 0 ? 1 : -1;
+    const int j0 = std::min({a[0], b[0], c[0]}), j1 = std::max({a[0], b[0], c[0]});
+    const int i0 = std::min({a[1], b[1], c[1]}), i1 = std::max({a[1], b[1], c[1]});
+    for (int i = i0; i < i1; ++i)
+      for (int j = j0; j < j1; ++j) {
+        const size_t p = size_t(i) * size_t(patch.columns) + size_t(j);
+        if (written[p]) continue;
+        const double x = j + 0.5 - a[0], y = i + 0.5 - a[1];
+        // Barycentric weights of b and c times det: exact (halves and small integers), so a
+        // centre on an edge is inside both triangles.
+        const double nb = sign * (x * (c[1] - a[1]) - y * (c[0] - a[0]));
+        const double nc = sign * (y * (b[0] - a[0]) - x * (b[1] - a[1]));
+        if (nb < 0 || nc < 0 || nb + nc > sign * det) continue;
+        const double wb = nb / (sign * det), wc = nc / (sign * det);
+        patch.z[p] = (1 - wb - wc) * z[t[0]] + wb * z[t[1]] + wc * z[t[2]];
+        written[p] = 1;
+      }
+  }
+  return patch;
+}
+
+}  // namespace maquette::deform

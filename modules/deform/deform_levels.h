@@ -1,0 +1,48 @@
+// deform.features at finer levels (paper 002 §3.2, Eq. 1-4; the step's "refine": k): the
+// deformed surface k times subdivided near the features, as a patch of the finer raster.
+#pragma once
+
+#include <vector>
+
+#include "deform_solve.h"
+
+namespace maquette::deform {
+
+// The samples (inclusive) of the base field that the subdivision works on: the constrained
+// triangles' vertices grown by kRefineMargin + levels samples, clamped to the field. Their
+// horizontal positions must be filled before refined_heights.
+struct SampleWindow {
+  int col0 = 0, row0 = 0, col1 = 0, row1 = 0;
+};
+inline constexpr int kRefineMargin = 3;
+SampleWindow refinement_window(const HeightField& field,
+                               const std::vector<HeightConstraint>& control,
+                               const std::vector<HeightConstraint>& section, int levels);
+
+// Heights of the finer raster's pixels (col0 + j, row0 + i), row-major, columns x rows. Pixel
+// (J, I) of the raster `levels` times finer (side field.width << levels) has its centre at
+// fractional base sample coordinates ((J + 0.5) / 2^levels - 0.5, (I + 0.5) / 2^levels - 0.5).
+struct RefinedPatch {
+  int col0 = 0, row0 = 0, columns = 0, rows = 0;
+  std::vector<double> z;
+};
+
+// The window's samples as the base mesh of adaptive Loop subdivision (loop_adaptive.h), refined
+// `levels` times around the triangles holding constraints (neighbours at most one level apart).
+// Per level t = 0 .. levels - 1: each constraint is located on the level-(t+1) surface (its
+// triangle on the level's grid, barycentric weights alpha, beta, gamma) and written on the level-t
+// vertices through the subdivision matrix, alpha S_a + beta S_b + gamma S_c (Eq. 4); the two
+// solves of deform_heights give the level-t heights (energy rows: cotangent weights of the level-t
+// mesh's horizontal positions, negative cotangents taken as 0); the heights are subdivided to
+// t + 1. The finest mesh is sampled at the finer pixel centres of the window (a centre on an edge
+// takes the first triangle's value: the mesh is conforming, both agree). Away from the refined
+// zone the mesh's triangles are the input's, so the patch is the input linearly interpolated
+// there (height_at_clamped), as outside the window.
+// Preconditions: levels >= 1; the window's horizontal positions filled; those of deform_heights
+// on each level (finite heights around the constraints). Throws maquette::Error as it does.
+RefinedPatch refined_heights(const HeightField& field, const SampleWindow& window,
+                             const std::vector<HeightConstraint>& control,
+                             const std::vector<HeightConstraint>& section, double energy_weight,
+                             int levels);
+
+}  // namespace maquette::deform
