@@ -65,8 +65,8 @@ struct OperatorSpec {
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
   int halo = 0;  // pixels of neighbouring tiles each input tile needs on every side
-  // A cell operator that can write its outputs `CellContext::refine` levels finer than its inputs
-  // (a step's "refine"): output tiles of tile_size << refine samples on the same cells.
+  // Outputs `refine` levels finer than the inputs (a step's "refine"): a cell operator gets tiles
+  // of tile_size << refine (CellContext::refine), a region operator output mosaics as much finer.
   bool refinable = false;
   // A cell operator that writes every sample of every output tile it is given (NaN for nodata
   // included): the runner then hands it uninitialized output tiles instead of NaN-filled ones

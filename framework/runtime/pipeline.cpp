@@ -112,8 +112,9 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   check_ports(step);
   if (s.contains("refine")) {
     step.refine = integer(s, "refine", 0, kMaxRefine, label);
-    if (step.refine > 0 &&
-        (step.op->spec().kind != OperatorKind::Cell || !step.op->spec().refinable))
+    const OperatorKind kind = step.op->spec().kind;
+    if (step.refine > 0 && ((kind != OperatorKind::Cell && kind != OperatorKind::Region) ||
+                            !step.op->spec().refinable))
       fail(label, "refine",
            "the operator writes its outputs at its inputs' resolution only (not refinable)");
   }

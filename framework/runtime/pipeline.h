@@ -32,7 +32,7 @@ struct PipelineStep {
   std::map<std::string, std::string> inputs;   // port -> layer
   std::map<std::string, std::string> outputs;  // port -> layer (reduce: artifact name)
   nlohmann::json params;                       // validated, defaults filled in
-  int refine = 0;  // outputs this many levels finer than the inputs (refinable cell operators)
+  int refine = 0;  // outputs this many levels finer than the inputs (refinable cell, region ops)
 
   std::string label() const;  // "step 2 (terrain.derive)"
 };

@@ -287,7 +287,8 @@ class Planner {
       row1 = std::max(row1, c.row());
     }
     const MosaicBox box{col0, row0, int64_t(std::max(col1 - col0, row1 - row0)) + 1};
-    if (const int64_t side = box.cells * tile_size; side > kMaxMosaicSide)
+    // A refined step's output mosaic is the largest.
+    if (const int64_t side = (box.cells * tile_size) << step.refine; side > kMaxMosaicSide)
       throw Error(step.label() + ": the region's mosaic would be " + std::to_string(side) + " x " +
                   std::to_string(side) + " samples, above the limit of " +
                   std::to_string(kMaxMosaicSide) + " x " + std::to_string(kMaxMosaicSide));

@@ -60,7 +60,12 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     input.layers.emplace(port, std::move(mosaic));
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);
-  output.layers = io.blank_outputs(side);
+  // A refined step ("refine": k) writes output mosaics, and so tiles, 2^k times finer.
+  const int refine = plan.step->refine;
+  output.level += refine;
+  output.origin_col <<= refine;
+  output.origin_row <<= refine;
+  output.layers = io.blank_outputs(side << refine);
   for (const CellId c : cells) output.content.emplace(c, io.blank_content(c));
   try {
     op.run({&default_grid(), &plan.params, &io.store(), &plan.inputs}, input, output);
@@ -72,7 +77,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   for (const auto& [port, layer] : plan.outputs) {
     if (layer.kind != LayerKind::Raster) continue;
     const Tile<float>& m = output.layers.at(port);
-    if (m.size() != side || m.channels() != layer.channels)
+    if (m.size() != side << refine || m.channels() != layer.channels)
       throw Error(plan.step->label() + ": the operator changed the size of output mosaic '" + port +
                   "'");
   }
@@ -80,11 +85,12 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   if (output.content.size() != cells.size())  // the runner prepared one entry per cell
     throw Error(plan.step->label() + ": the operator added content for cells not of the step");
 
-  std::vector<TileSet> tiles(cells.size(), io.blank_outputs(n));
+  std::vector<TileSet> tiles(cells.size(), io.blank_outputs(n << refine));
   std::vector<CellOutput> outputs;
   for (size_t i = 0; i < cells.size(); ++i) {
     for (auto& [port, tile] : tiles[i])
-      cut(output.layers.at(port), tile, offset(cells[i]).first, offset(cells[i]).second);
+      cut(output.layers.at(port), tile, offset(cells[i]).first << refine,
+          offset(cells[i]).second << refine);
     try {
       outputs.push_back(
           {cells[i], &tiles[i], io.encode_content(cells[i], output.content.at(cells[i]))});

@@ -29,6 +29,8 @@ OperatorSpec features_spec() {
       "roads, cliffs, ridges) by the weighted least squares of paper 002 §3.2 on its triangulated "
       "height field; heights outside the fields of influence are unchanged";
   s.kind = OperatorKind::Region;
+  // "refine": k, the deformed surface k levels of Loop subdivision finer (deform_levels.h).
+  s.refinable = true;
   s.inputs = {
       {"dem", "elevation (m)", false},
       {"strokes", "features layer with strokes of tool 'feature'", false, LayerKind::Features, 0}};
@@ -45,15 +47,7 @@ OperatorSpec features_spec() {
           {"default", 0.01},
           {"description",
            "weight of the Laplace-Beltrami energy rows against the positional constraints "
-           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}},
-        {"refine",
-         {{"type", "integer"},
-          {"minimum", 0},
-          {"maximum", 3},
-          {"default", 0},
-          {"description",
-           "levels of Loop subdivision near the features: the output is 2^refine times finer "
-           "than the DEM (the step writes its layer refine levels deeper)"}}}}}};
+           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}}}}};
   return s;
 }
 
@@ -126,13 +120,15 @@ class Features : public RegionOperator {
   void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
     const Tile<float>& dem = input.layers.at("dem");
     Tile<float>& out = output.layers.at("dem");
-    const int refine = ctx.params->at("refine").get<int>();
     const double energy_weight = ctx.params->at("energy_weight").get<double>();
     const int size = dem.size();
-    if (out.size() != size << refine)
-      throw Error("deform.features: the output mosaic has " + std::to_string(out.size()) +
-                  " samples a side, not 2^refine (refine " + std::to_string(refine) +
-                  ") times the input's " + std::to_string(size));
+    // The step's refine: the runner makes the output mosaic 2^refine times finer.
+    const int refine = output.level - input.level;
+    if (refine < 0 || refine > 3 || out.size() != size << refine)
+      throw Error("deform.features: output mosaic of " + std::to_string(out.size()) +
+                  " samples a side at level " + std::to_string(output.level) + " for an input of " +
+                  std::to_string(size) + " at level " + std::to_string(input.level) +
+                  " (refine 0 to 3 levels)");
     const std::vector<FeatureStroke> strokes =
         feature_strokes(input.features.at("strokes"), "strokes");
     if (refine == 0) out = dem;

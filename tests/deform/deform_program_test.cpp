@@ -66,8 +66,10 @@ struct Case {
 };
 
 // A store with the DEM ("dem") of `surface` at `level` in tiles of `tile` samples and the strokes.
+// The step writes `refine` levels finer.
 Case make_case(const std::string& name, int level, int tile, const json& strokes,
-               Surface surface = plane_height, const json& params = json::object()) {
+               Surface surface = plane_height, const json& params = json::object(),
+               int refine = 0) {
   Case c{fs::temp_directory_path() / ("deform_program_" + name + std::to_string(::getpid()))};
   fs::remove_all(c.dir);
   fs::create_directories(c.dir);
@@ -100,7 +102,8 @@ Case make_case(const std::string& name, int level, int tile, const json& strokes
                           {{{"op", "deform.features"},
                             {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
                             {"outputs", {{"dem", "carved"}}},
-                            {"params", params}}}}};
+                            {"params", params},
+                            {"refine", refine}}}}};
   std::ofstream(c.dir / "pipeline.json") << pipeline.dump(2);
   return c;
 }
@@ -179,6 +182,57 @@ TEST(DeformProgram, SameBitsForTwoTilingsAndThreadCounts) {
   EXPECT_EQ(differ, 0);
   EXPECT_GT(lowered, 800);  // the bottom: 150 m by 12 m, ~1250 samples of ~1.2 m
   EXPECT_GT(kept, 0);       // and every sample beyond the band unchanged (else negative)
+  for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
+}
+
+TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
+  const Case fine = make_case("rfine", 17, 64, channel(), plane_height, json::object(), 1);
+  const Case fine2 = make_case("rfine2", 17, 64, channel(), plane_height, json::object(), 1);
+  const Case coarse = make_case("rcoarse", 16, 128, channel(), plane_height, json::object(), 1);
+  for (const auto& [c, threads] :
+       {std::pair{&fine, 1}, std::pair{&fine2, 2}, std::pair{&coarse, 1}}) {
+    const test::CliResult r = run(*c, threads);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const auto a = tiles(fine, "carved"), a2 = tiles(fine2, "carved"), b = tiles(coarse, "carved");
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), a2.size());
+  int compared = 0, differ = 0, lowered = 0;
+  for (const auto& [cell, t] : a) {
+    ASSERT_EQ(t.size(), 128) << "a refined step writes 2x finer tiles";
+    EXPECT_EQ(std::memcmp(t.data().data(), a2.at(cell).data().data(), t.data().size_bytes()), 0)
+        << cell.ToText();
+    const CellId parent = cell.parent(16);
+    const auto it = b.find(parent);
+    if (it == b.end()) continue;
+    const int dc = int(cell.col() - 2 * parent.col()) * 128,
+              dr = int(cell.row() - 2 * parent.row()) * 128;
+    // Whether the neighbour of `cell` (dx, dy) is of the region: else the finer samples along
+    // that edge lie beyond the mosaic's outermost samples (documented: they take the nearest
+    // point's height, so they depend on where the region ends).
+    auto inside = [&](int dx, int dy) {
+      return a.contains(CellId::FromFaceColRow(cell.face(), 17, cell.col() + dx, cell.row() + dy));
+    };
+    const bool west = inside(-1, 0), east = inside(1, 0), north = inside(0, -1),
+               south = inside(0, 1);
+    for (int r = 0; r < 128; ++r)
+      for (int col = 0; col < 128; ++col) {
+        if ((col == 0 && !west) || (col == 127 && !east) || (r == 0 && !north) ||
+            (r == 127 && !south))
+          continue;
+        ++compared;
+        differ += std::memcmp(&t.at(col, r), &it->second.at(col + dc, r + dr), sizeof(float)) != 0;
+        // The plane at the finer pixel centre (level 17 + 7 bits + 1).
+        const LonLat p = pixel_centre(
+            default_grid(),
+            {cell.face(), int64_t(cell.col()) * 128 + col, int64_t(cell.row()) * 128 + r}, 24);
+        if (plane_height(p) - t.at(col, r) > 4.5) ++lowered;
+      }
+  }
+  std::printf("%d finer samples compared, %d lowered by the channel\n", compared, lowered);
+  EXPECT_GT(compared, 128 * 128 * 4);
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(lowered, 4 * 800);  // the bottom: 150 m by 12 m, ~5000 samples of ~0.6 m
   for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
 }
 

@@ -95,8 +95,9 @@ Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& st
   input.features["strokes"] = strokes;
   Mosaic output = input;
   output.features.clear();
+  output.level += refine;
   output.layers.at("dem") = Tile<float>(input.layers.at("dem").size() << refine, 1, 0, NAN);
-  const json params = {{"energy_weight", 0.01}, {"refine", refine}};
+  const json params = {{"energy_weight", 0.01}};
   const auto op = make_features();
   static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
   return output.layers.at("dem");
