@@ -1,7 +1,9 @@
-// deform.features on a 1 M-sample region (1024 x 1024 samples of ~1.2 m near Zion, a sinusoidal
-// terrain): one river 1 km long, its bed 5 m below the draped curve, banks 28 m on each side, so
-// about 40,000 unknowns in the cross sections' solve (the issue's "one feature edit on a 1 M-sample
-// region"). Times the whole step as the runner calls it, without reading or writing the store.
+// deform.features on a sinusoidal terrain near Zion (samples of ~1.2 m): a 1 M-sample region
+// (1024 x 1024) with one river 1 km long, its bed 5 m below the draped curve, banks 28 m on each
+// side, so about 40,000 unknowns in the cross sections' solve (the issue's "one feature edit on a
+// 1 M-sample region"); and the refined edits (1 to 3 levels finer) of a 150 m river, banks 20 m
+// on each side, on a 256 x 256 region. Times the whole step as the runner calls it, without
+// reading or writing the store.
 #include <benchmark/benchmark.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
@@ -15,28 +17,29 @@ namespace {
 
 using namespace maquette;
 
-constexpr int kCellLevel = 13, kSide = 1024, kPixelLevel = kCellLevel + 10;
-
 struct Scene {
   Mosaic input, output;
   VectorFeature river;
 };
 
-Scene make_scene() {
-  const CellId cell = default_grid().cell_from_point({-113.0, 37.2}, kCellLevel);
+// A region of side x side samples of ~1.2 m (pixel level 23) and a river `length` m long, its
+// banks `bank` m from the curve, output `refine` levels finer.
+Scene make_scene(int side, double length, double bank, int refine) {
+  const int pixel_level = 23, cell_level = pixel_level - int(std::log2(side));
+  const CellId cell = default_grid().cell_from_point({-113.0, 37.2}, cell_level);
   const LonLat site = default_grid().centre(cell);
   const GeographicLib::LocalCartesian plane(site.lat, site.lon, 0);
   Scene s;
   s.input.face = cell.face();
-  s.input.level = kPixelLevel;
-  s.input.origin_col = int64_t(cell.col()) * kSide;
-  s.input.origin_row = int64_t(cell.row()) * kSide;
-  Tile<float> dem(kSide, 1);
-  for (int r = 0; r < kSide; ++r)
-    for (int c = 0; c < kSide; ++c) {
+  s.input.level = pixel_level;
+  s.input.origin_col = int64_t(cell.col()) * side;
+  s.input.origin_row = int64_t(cell.row()) * side;
+  Tile<float> dem(side, 1);
+  for (int r = 0; r < side; ++r)
+    for (int c = 0; c < side; ++c) {
       const LonLat p =
           pixel_centre(default_grid(),
-                       {s.input.face, s.input.origin_col + c, s.input.origin_row + r}, kPixelLevel);
+                       {s.input.face, s.input.origin_col + c, s.input.origin_row + r}, pixel_level);
       double e = 0, n = 0, u = 0;
       plane.Forward(p.lat, p.lon, 0, e, n, u);
       dem.at(c, r) = float(1500 + 3 * std::sin(2 * std::numbers::pi * e / 80) *
@@ -44,7 +47,8 @@ Scene make_scene() {
     }
   s.input.layers.emplace("dem", std::move(dem));
   s.output = s.input;
-  s.output.layers.at("dem") = Tile<float>(kSide, 1, 0, NAN);
+  s.output.level += refine;
+  s.output.layers.at("dem") = Tile<float>(side << refine, 1, 0, NAN);
 
   auto lonlat = [&](double e, double n) {
     double lat = 0, lon = 0, h = 0;
@@ -54,15 +58,19 @@ Scene make_scene() {
   const double heading = 30 * std::numbers::pi / 180;
   s.river.id = 1;
   s.river.geometry.type = GeometryType::LineString;
-  s.river.geometry.lines = {{lonlat(-433, -250), lonlat(-433 + 1000 * std::cos(heading),
-                                                        -250 + 1000 * std::sin(heading))}};
-  s.river.attributes = {{"tool", "feature"},
-                        {"cross_section", {{-28, 0}, {-8, -5}, {8, -5}, {28, 0}}}};
+  const double e0 = -0.433 * length, n0 = -0.25 * length;  // centred on the site
+  s.river.geometry.lines = {
+      {lonlat(e0, n0), lonlat(e0 + length * std::cos(heading), n0 + length * std::sin(heading))}};
+  s.river.attributes = {
+      {"tool", "feature"},
+      {"cross_section", {{-bank, 0}, {-0.3 * bank, -5}, {0.3 * bank, -5}, {bank, 0}}}};
   return s;
 }
 
+// state.range: samples a side, river length (m), bank offset (m), refine.
 void one_feature_edit(benchmark::State& state) {
-  Scene s = make_scene();
+  Scene s = make_scene(int(state.range(0)), double(state.range(1)), double(state.range(2)),
+                       int(state.range(3)));
   s.input.features["strokes"] = {&s.river};  // the copy's own feature
   const json params = {{"energy_weight", 0.01}};
   const auto op = deform::make_features();
@@ -73,7 +81,13 @@ void one_feature_edit(benchmark::State& state) {
   }
 }
 
-BENCHMARK(one_feature_edit)->Name("DeformFeatures1MSamples")->Unit(benchmark::kMillisecond);
+BENCHMARK(one_feature_edit)
+    ->Name("DeformFeatures")
+    ->Args({1024, 1000, 28, 0})
+    ->Args({256, 150, 20, 1})
+    ->Args({256, 150, 20, 2})
+    ->Args({256, 150, 20, 3})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

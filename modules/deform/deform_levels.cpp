@@ -113,25 +113,24 @@ class MeshNeighbours {
 }  // namespace
 
 SampleWindow refinement_window(const HeightField& field,
-                               const std::vector<HeightConstraint>& control,
-                               const std::vector<HeightConstraint>& section, int levels) {
+                               const std::vector<StrokeConstraints>& by_level) {
   SampleWindow w{field.width, field.height, -1, -1};
-  for (const auto* list : {&control, &section})
-    for (const HeightConstraint& c : *list)
-      for (const size_t v : c.at.vertex) {
-        const int col = int(v % size_t(field.width)), row = int(v / size_t(field.width));
-        w = {std::min(w.col0, col), std::min(w.row0, row), std::max(w.col1, col),
-             std::max(w.row1, row)};
-      }
-  const int margin = kRefineMargin + levels;
+  for (const StrokeConstraints& level : by_level)
+    for (const auto* list : {&level.control, &level.section})
+      for (const HeightConstraint& c : *list)
+        for (const size_t v : c.at.vertex) {
+          const int col = int(v % size_t(field.width)), row = int(v / size_t(field.width));
+          w = {std::min(w.col0, col), std::min(w.row0, row), std::max(w.col1, col),
+               std::max(w.row1, row)};
+        }
+  const int margin = kRefineMargin + int(by_level.size());
   return {std::max(0, w.col0 - margin), std::max(0, w.row0 - margin),
           std::min(field.width - 1, w.col1 + margin), std::min(field.height - 1, w.row1 + margin)};
 }
 
 RefinedPatch refined_heights(const HeightField& field, const SampleWindow& window,
-                             const std::vector<HeightConstraint>& control,
-                             const std::vector<HeightConstraint>& section, double energy_weight,
-                             int levels) {
+                             const std::vector<StrokeConstraints>& by_level, double energy_weight) {
+  const int levels = int(by_level.size());
   const int columns = window.col1 - window.col0 + 1, rows = window.row1 - window.row0 + 1;
   // The window's triangles in height_field_mesh's order, at the samples' true positions.
   TriangleMesh base =
@@ -142,12 +141,13 @@ RefinedPatch refined_heights(const HeightField& field, const SampleWindow& windo
       base.vertices.row(Eigen::Index(r * columns + c)) << field.east[v], field.north[v], field.z[v];
     }
   std::vector<bool> marked(base.triangles.size(), false);
-  for (const auto* list : {&control, &section})
-    for (const HeightConstraint& h : *list) {
-      const double x = h.at.sample[0] - window.col0, y = h.at.sample[1] - window.row0;
-      const int c = int(std::floor(x)), r = int(std::floor(y));
-      marked[2 * size_t(r * (columns - 1) + c) + (x - c >= y - r ? 0 : 1)] = true;
-    }
+  for (const StrokeConstraints& level : by_level)
+    for (const auto* list : {&level.control, &level.section})
+      for (const HeightConstraint& h : *list) {
+        const double x = h.at.sample[0] - window.col0, y = h.at.sample[1] - window.row0;
+        const int c = int(std::floor(x)), r = int(std::floor(y));
+        marked[2 * size_t(r * (columns - 1) + c) + (x - c >= y - r ? 0 : 1)] = true;
+      }
   const AdaptiveLoop loop = adaptive_loop_subdivide(base, marked, levels);
 
   GridNodes nodes = height_field_nodes(columns, rows);
@@ -158,8 +158,10 @@ RefinedPatch refined_heights(const HeightField& field, const SampleWindow& windo
     const SubdivisionMatrix& s = loop.subdivisions[size_t(t)];
     std::vector<double> heights(z.data(), z.data() + z.size());
     const MeshNeighbours neighbours(loop.meshes[size_t(t)]);
-    deform_heights(heights, rows_through(control, window, finer, 2 << t, s),
-                   rows_through(section, window, finer, 2 << t, s), neighbours, energy_weight);
+    const StrokeConstraints& level = by_level[size_t(t)];
+    deform_heights(heights, rows_through(level.control, window, finer, 2 << t, s),
+                   rows_through(level.section, window, finer, 2 << t, s), neighbours,
+                   energy_weight);
     z = s * Eigen::Map<const Eigen::VectorXd>(heights.data(), Eigen::Index(heights.size()));
   }
 

@@ -5,19 +5,19 @@
 #include <vector>
 
 #include "deform_solve.h"
+#include "stroke_constraints.h"
 
 namespace maquette::deform {
 
 // The samples (inclusive) of the base field that the subdivision works on: the constrained
-// triangles' vertices grown by kRefineMargin + levels samples, clamped to the field. Their
-// horizontal positions must be filled before refined_heights.
+// triangles' vertices (of every level's constraints) grown by kRefineMargin + levels samples,
+// clamped to the field. Their horizontal positions must be filled before refined_heights.
 struct SampleWindow {
   int col0 = 0, row0 = 0, col1 = 0, row1 = 0;
 };
 inline constexpr int kRefineMargin = 3;
 SampleWindow refinement_window(const HeightField& field,
-                               const std::vector<HeightConstraint>& control,
-                               const std::vector<HeightConstraint>& section, int levels);
+                               const std::vector<StrokeConstraints>& by_level);
 
 // Heights of the finer raster's pixels (col0 + j, row0 + i), row-major, columns x rows. Pixel
 // (J, I) of the raster `levels` times finer (side field.width << levels) has its centre at
@@ -28,8 +28,10 @@ struct RefinedPatch {
 };
 
 // The window's samples as the base mesh of adaptive Loop subdivision (loop_adaptive.h), refined
-// `levels` times around the triangles holding constraints (neighbours at most one level apart).
-// Per level t = 0 .. levels - 1: each constraint is located on the level-(t+1) surface (its
+// levels = by_level.size() times around the triangles holding constraints (neighbours at most one
+// level apart). Per level t = 0 .. levels - 1: each constraint of by_level[t] (the strokes sampled
+// as densely as the level-t vertices need: add_stroke_constraints every half a level-t sample) is
+// located on the level-(t+1) surface (its
 // triangle on the level's grid, barycentric weights alpha, beta, gamma) and written on the level-t
 // vertices through the subdivision matrix, alpha S_a + beta S_b + gamma S_c (Eq. 4); the two
 // solves of deform_heights give the level-t heights (energy rows: cotangent weights of the level-t
@@ -41,8 +43,6 @@ struct RefinedPatch {
 // Preconditions: levels >= 1; the window's horizontal positions filled; those of deform_heights
 // on each level (finite heights around the constraints). Throws maquette::Error as it does.
 RefinedPatch refined_heights(const HeightField& field, const SampleWindow& window,
-                             const std::vector<HeightConstraint>& control,
-                             const std::vector<HeightConstraint>& section, double energy_weight,
-                             int levels);
+                             const std::vector<StrokeConstraints>& by_level, double energy_weight);
 
 }  // namespace maquette::deform

@@ -84,15 +84,20 @@ void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constrain
       }
 }
 
-// The deformed surface `refine` levels finer near the features (deform_levels.h).
+// The deformed surface `refine` levels finer near the features (deform_levels.h): the strokes
+// sampled every half a sample of each level solved, from `step_m` at the base level.
 RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
-                         const StrokeConstraints& constraints, double energy_weight, int refine) {
-  const SampleWindow window =
-      refinement_window(field, constraints.control, constraints.section, refine);
+                         const std::vector<FeatureStroke>& strokes, double step_m,
+                         double energy_weight, int refine) {
+  std::vector<StrokeConstraints> by_level(static_cast<size_t>(refine));
+  for (int t = 0; t < refine; ++t)
+    for (const FeatureStroke& stroke : strokes)
+      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes",
+                             by_level[size_t(t)]);
+  const SampleWindow window = refinement_window(field, by_level);
   for (int r = window.row0; r <= window.row1; ++r)
     for (int c = window.col0; c <= window.col1; ++c) place(frame, field, field.index(c, r));
-  return refined_heights(field, window, constraints.control, constraints.section, energy_weight,
-                         refine);
+  return refined_heights(field, window, by_level, energy_weight);
 }
 
 // The finer output: the patch where it is, elsewhere the input linearly interpolated at the
@@ -149,17 +154,16 @@ class Features : public RegionOperator {
     const LonLat reference = strokes.front().curve.front();
     const MosaicFrame frame(*ctx.grid, input.face, input.level, input.origin_col, input.origin_row,
                             reference);
-    // Half a sample of the finest level: every triangle the curve or a cross section crosses
-    // holds a constraint.
-    const double step_m = 0.5 * sample_spacing(frame, size, reference) / double(1 << refine);
-    StrokeConstraints constraints;
-    for (const FeatureStroke& stroke : strokes)
-      add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
+    // Half a sample: every triangle the curve or a cross section crosses holds a constraint.
+    const double step_m = 0.5 * sample_spacing(frame, size, reference);
     if (refine > 0) {
-      write_finer(field, refine_near(frame, field, constraints, energy_weight, refine), refine,
+      write_finer(field, refine_near(frame, field, strokes, step_m, energy_weight, refine), refine,
                   out);
       return;
     }
+    StrokeConstraints constraints;
+    for (const FeatureStroke& stroke : strokes)
+      add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
     place_vertices(frame, constraints, field);
     deform_heights(field, constraints.control, constraints.section, energy_weight);
 
