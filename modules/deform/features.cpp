@@ -8,6 +8,8 @@
 // once on one rank, so not on threads or ranks either.
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "deform_levels.h"
@@ -84,6 +86,30 @@ void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constrain
       }
 }
 
+// Refining reads the DEM kRefineMargin + refine samples around the constrained triangles (the
+// subdivision's rings and the energy rows around them): nodata there is an error naming the
+// feature, where the solve would otherwise meet it as a non-finite system.
+void check_data_around(const MosaicFrame& frame, const HeightField& field,
+                       const StrokeConstraints& constraints, int refine,
+                       const FeatureStroke& stroke) {
+  const int reach = kRefineMargin + refine;
+  std::vector<char> seen(field.z.size(), 0);
+  for (const auto* list : {&constraints.control, &constraints.section})
+    for (const HeightConstraint& h : *list)
+      for (const size_t v : h.at.vertex) {
+        if (seen[v]) continue;
+        seen[v] = 1;
+        const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
+        for (int y = std::max(0, r - reach); y <= std::min(field.height - 1, r + reach); ++y)
+          for (int x = std::max(0, c - reach); x <= std::min(field.width - 1, c + reach); ++x)
+            if (std::isnan(field.z[field.index(x, y)]))
+              throw Error("inputs.strokes: feature " + std::to_string(stroke.id) + ": nodata at " +
+                          lonlat_text(frame.sample_lonlat(x, y)) + ", " + std::to_string(reach) +
+                          " samples or less from its constraints: refined " +
+                          std::to_string(refine) + " level(s), it needs the DEM's heights there");
+      }
+}
+
 // The deformed surface `refine` levels finer near the features (deform_levels.h): the strokes
 // sampled every half a sample of each level solved, from `step_m` at the base level.
 RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
@@ -91,9 +117,14 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
                          double energy_weight, int refine) {
   std::vector<StrokeConstraints> by_level(static_cast<size_t>(refine));
   for (int t = 0; t < refine; ++t)
-    for (const FeatureStroke& stroke : strokes)
-      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes",
-                             by_level[size_t(t)]);
+    for (const FeatureStroke& stroke : strokes) {
+      StrokeConstraints one;
+      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", one);
+      if (t == 0) check_data_around(frame, field, one, refine, stroke);
+      StrokeConstraints& all = by_level[size_t(t)];
+      all.control.insert(all.control.end(), one.control.begin(), one.control.end());
+      all.section.insert(all.section.end(), one.section.begin(), one.section.end());
+    }
   const SampleWindow window = refinement_window(field, by_level);
   for (int r = window.row0; r <= window.row1; ++r)
     for (int c = window.col0; c <= window.col1; ++c) place(frame, field, field.index(c, r));

@@ -278,9 +278,9 @@ TEST(DeformFeatures, TrapezoidalChannelAtFinerLevels) {
   expect_finer_channel("sinusoid", sinusoid, 2, 0.0005);
 }
 
-std::string error_of(const Mosaic& input, const VectorFeature& f) {
+std::string error_of(const Mosaic& input, const VectorFeature& f, int refine = 0) {
   try {
-    deform_run(input, {&f});
+    deform_run(input, {&f}, refine);
   } catch (const Error& e) {
     return e.what();
   }
@@ -320,6 +320,33 @@ TEST(DeformFeatures, StrokesLeavingTheDemCrossingNodataOrThemselvesAreErrors) {
       error_of(input, f).find("inputs.strokes: feature 1: its control curve crosses nodata at lon"),
       std::string::npos)
       << error_of(input, f);
+}
+
+TEST(DeformFeatures, RefinedStrokeNearNodataIsAnError) {
+  Fixture fx;
+  fx.surface = sinusoid;
+  Mosaic input = fx.dem(0);
+  const VectorFeature channel = fx.channel();
+  const MosaicFrame frame(default_grid(), input.face, input.level, input.origin_col,
+                          input.origin_row, kSite);
+  // A nodata sample 4.2 m (3.5 samples) beyond the channel's bank, half way along.
+  const double ce = std::cos(kHeading), sn = std::sin(kHeading);
+  const auto hole =
+      frame.sample(fx.lonlat(fx.e0 + 75 * ce + 24.2 * sn, fx.n0 + 75 * sn - 24.2 * ce));
+  input.layers.at("dem").at(int(std::lround((*hole)[0])), int(std::lround((*hole)[1]))) = NAN;
+  // The base level does not read it: the nodata sample stays, every other sample is finite.
+  const Tile<float> base = deform_run(input, {&channel});
+  EXPECT_EQ(
+      std::count_if(base.data().begin(), base.data().end(), [](float v) { return std::isnan(v); }),
+      1);
+  for (const int refine : {1, 2}) {
+    const std::string error = error_of(input, channel, refine);
+    EXPECT_NE(error.find("inputs.strokes: feature 1: nodata at lon "), std::string::npos) << error;
+    EXPECT_NE(error.find("samples or less from its constraints: refined " + std::to_string(refine) +
+                         " level(s), it needs the DEM's heights there"),
+              std::string::npos)
+        << error;
+  }
 }
 
 TEST(DeformFeatures, StrokeOntoAnotherFaceIsAnError) {
