@@ -129,7 +129,8 @@ SampleWindow refinement_window(const HeightField& field,
 }
 
 RefinedPatch refined_heights(const HeightField& field, const SampleWindow& window,
-                             const std::vector<StrokeConstraints>& by_level, double energy_weight) {
+                             const std::vector<StrokeConstraints>& by_level, double energy_weight,
+                             Subdivision subdivision) {
   const int levels = int(by_level.size());
   const int columns = window.col1 - window.col0 + 1, rows = window.row1 - window.row0 + 1;
   // The window's triangles in height_field_mesh's order, at the samples' true positions.
@@ -140,14 +141,22 @@ RefinedPatch refined_heights(const HeightField& field, const SampleWindow& windo
       const size_t v = field.index(window.col0 + c, window.row0 + r);
       base.vertices.row(Eigen::Index(r * columns + c)) << field.east[v], field.north[v], field.z[v];
     }
-  std::vector<bool> marked(base.triangles.size(), false);
+  // The vertices of the triangles holding constraints, grown by kZoneRings samples (a ring of the
+  // triangulation is within one sample in col and row); the triangles with one of them refined.
+  std::vector<char> near(size_t(base.vertices.rows()), subdivision == Subdivision::Uniform);
   for (const StrokeConstraints& level : by_level)
     for (const auto* list : {&level.control, &level.section})
       for (const HeightConstraint& h : *list) {
-        const double x = h.at.sample[0] - window.col0, y = h.at.sample[1] - window.row0;
-        const int c = int(std::floor(x)), r = int(std::floor(y));
-        marked[2 * size_t(r * (columns - 1) + c) + (x - c >= y - r ? 0 : 1)] = true;
+        const int c = int(std::floor(h.at.sample[0])) - window.col0;
+        const int r = int(std::floor(h.at.sample[1])) - window.row0;
+        for (int y = std::max(0, r - kZoneRings); y <= std::min(rows - 1, r + 1 + kZoneRings); ++y)
+          for (int x = std::max(0, c - kZoneRings); x <= std::min(columns - 1, c + 1 + kZoneRings);
+               ++x)
+            near[size_t(y * columns + x)] = 1;
       }
+  std::vector<bool> marked(base.triangles.size(), false);
+  for (size_t t = 0; t < marked.size(); ++t)
+    for (const int v : base.triangles[t]) marked[t] = marked[t] || near[size_t(v)];
   const AdaptiveLoop loop = adaptive_loop_subdivide(base, marked, levels);
 
   GridNodes nodes = height_field_nodes(columns, rows);

@@ -49,7 +49,14 @@ OperatorSpec features_spec() {
           {"default", 0.01},
           {"description",
            "weight of the Laplace-Beltrami energy rows against the positional constraints "
-           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}}}}};
+           "(weight 1): larger is smoother, smaller follows the strokes more closely"}}},
+        {"subdivision",
+         {{"enum", {"adaptive", "uniform"}},
+          {"default", "adaptive"},
+          {"description",
+           "with the step's refine: Loop subdivision near the features only (adaptive), or of "
+           "every sample of the window around them (uniform: the same heights near the "
+           "features, the terrain around them smoothed by Loop)"}}}}}};
   return s;
 }
 
@@ -114,7 +121,7 @@ void check_data_around(const MosaicFrame& frame, const HeightField& field,
 // sampled every half a sample of each level solved, from `step_m` at the base level.
 RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
                          const std::vector<FeatureStroke>& strokes, double step_m,
-                         double energy_weight, int refine) {
+                         double energy_weight, int refine, Subdivision subdivision) {
   std::vector<StrokeConstraints> by_level(static_cast<size_t>(refine));
   for (int t = 0; t < refine; ++t)
     for (const FeatureStroke& stroke : strokes) {
@@ -128,7 +135,7 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
   const SampleWindow window = refinement_window(field, by_level);
   for (int r = window.row0; r <= window.row1; ++r)
     for (int c = window.col0; c <= window.col1; ++c) place(frame, field, field.index(c, r));
-  return refined_heights(field, window, by_level, energy_weight);
+  return refined_heights(field, window, by_level, energy_weight, subdivision);
 }
 
 // The finer output: the patch where it is, elsewhere the input linearly interpolated at the
@@ -188,8 +195,11 @@ class Features : public RegionOperator {
     // Half a sample: every triangle the curve or a cross section crosses holds a constraint.
     const double step_m = 0.5 * sample_spacing(frame, size, reference);
     if (refine > 0) {
-      write_finer(field, refine_near(frame, field, strokes, step_m, energy_weight, refine), refine,
-                  out);
+      const Subdivision subdivision =
+          ctx.params->at("subdivision") == "uniform" ? Subdivision::Uniform : Subdivision::Adaptive;
+      write_finer(field,
+                  refine_near(frame, field, strokes, step_m, energy_weight, refine, subdivision),
+                  refine, out);
       return;
     }
     StrokeConstraints constraints;
