@@ -72,7 +72,7 @@ void one_feature_edit(benchmark::State& state) {
   Scene s = make_scene(int(state.range(0)), double(state.range(1)), double(state.range(2)),
                        int(state.range(3)));
   s.input.features["strokes"] = {&s.river};  // the copy's own feature
-  const json params = {{"energy_weight", 0.01}};
+  const json params = {{"energy_weight", 0.01}, {"subdivision", "adaptive"}};  // the defaults
   const auto op = deform::make_features();
   const auto& region = static_cast<const RegionOperator&>(*op);
   for (auto _ : state) {
