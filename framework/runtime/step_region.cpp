@@ -33,6 +33,14 @@ FeatureList near_any(const FeaturePort& port, const std::vector<CellId>& cells) 
   return out;
 }
 
+// A refined step ("refine": k) writes output mosaics, and so tiles, 2^k times finer: the same
+// place at pixel level + k.
+void refine_mosaic(Mosaic& m, int refine) {
+  m.level += refine;
+  m.origin_col <<= refine;
+  m.origin_row <<= refine;
+}
+
 }  // namespace
 
 void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
@@ -60,11 +68,8 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     input.layers.emplace(port, std::move(mosaic));
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);
-  // A refined step ("refine": k) writes output mosaics, and so tiles, 2^k times finer.
   const int refine = plan.step->refine;
-  output.level += refine;
-  output.origin_col <<= refine;
-  output.origin_row <<= refine;
+  refine_mosaic(output, refine);
   output.layers = io.blank_outputs(side << refine);
   for (const CellId c : cells) output.content.emplace(c, io.blank_content(c));
   try {
