@@ -236,6 +236,58 @@ TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
   for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
 }
 
+// One height map per resolution, as the paper exports: three steps on the same inputs with
+// "refine" 0, 1 and 2 write ordinary DEM layers of 64-, 128- and 256-sample tiles on the same
+// cells, each with the channel's bottom at the curve's height (5 m below the plane) at its middle.
+TEST(DeformProgram, OneLayerPerResolution) {
+  const Case c = make_case("levels", 17, 64, channel());
+  json pipeline;
+  std::ifstream(c.dir / "pipeline.json") >> pipeline;
+  const json step = pipeline["steps"][0];
+  pipeline["steps"] = json::array();
+  for (int refine = 0; refine <= 2; ++refine) {
+    json s = step;
+    s["refine"] = refine;
+    s["outputs"]["dem"] = refine == 0 ? "carved" : "carved_r" + std::to_string(refine);
+    pipeline["steps"].push_back(s);
+  }
+  std::ofstream(c.dir / "pipeline.json") << pipeline.dump(2);
+  const test::CliResult r = run(c, 2);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const LonLat middle = lonlat(25, 7.5);  // the channel from (-40, -30) to (90, 45)
+  for (int refine = 0; refine <= 2; ++refine) {
+    const std::string layer = refine == 0 ? "carved" : "carved_r" + std::to_string(refine);
+    const auto store = Store::open(c.store(), Store::Mode::ReadOnly);
+    ASSERT_EQ(store->layer(layer)->tile_size, 64 << refine) << layer;
+    const CellId cell = default_grid().cell_from_point(middle, 17);
+    const Tile<float> t = to_tile<float>(*store->get_tile(layer, cell));
+    // The sample nearest the middle, on the flat bottom (12 m wide, level across the curve): the
+    // curve's Z at the sample's foot on it (Z linear along the curve, the plane's there).
+    const int side = 64 << refine;
+    const double ce = 130 / std::hypot(130.0, 75.0), sn = 75 / std::hypot(130.0, 75.0);
+    double best = 1e9, height = NAN;
+    for (int row = 0; row < side; ++row)
+      for (int col = 0; col < side; ++col) {
+        const LonLat p = pixel_centre(
+            default_grid(),
+            {cell.face(), int64_t(cell.col()) * side + col, int64_t(cell.row()) * side + row},
+            17 + 6 + refine);
+        const auto [e, n] = east_north(p);
+        if (const double d = std::hypot(e - 25, n - 7.5); d < best) {
+          best = d;
+          const double s = (e + 40) * ce + (n + 30) * sn;
+          height = t.at(col, row) - (plane_height(lonlat(-40 + s * ce, -30 + s * sn)) - 5);
+        }
+      }
+    std::printf("%s: %d-sample tiles, %.2f mm off the bottom %.2f m from the middle\n",
+                layer.c_str(), side, height * 1000, best);
+    EXPECT_LT(best, 0.9 / (1 << refine));
+    const double limit = std::array{0.010, 0.002, 0.0005}[size_t(refine)];  // the issue's
+    EXPECT_LT(std::abs(height), limit) << layer;
+  }
+  fs::remove_all(c.dir);
+}
+
 TEST(DeformProgram, StrokeLeavingTheRegionFailsTheRun) {
   const Case c = make_case("leaving", 17, 64, channel(400, 45));
   const test::CliResult r = run(c, 1);
