@@ -3,7 +3,9 @@
 // level 16), a channel stroke ingested from GeoJSON with `maquette ingest --as features`, and
 // `maquette run`. The deformed layer has the same bits for both tilings and for 1 and 2 threads,
 // the channel's bottom is 5 m below the plane on the curve, the samples far from it keep the
-// input's bits, and a stroke leaving the region fails the run naming the step and feature.
+// input's bits, and a stroke leaving the region fails the run naming the step and feature. Steps
+// with "refine" write the layer 2^refine times finer, with the same bits for both tilings and
+// thread counts, one layer per resolution.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
