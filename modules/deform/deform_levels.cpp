@@ -68,46 +68,52 @@ ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
 }
 
 // The energy neighbours of a mesh's vertices: per edge (cot a + cot b) / 2 of the angles facing
-// it in the horizontal positions, negative cotangents taken as 0 (as cotangent_weights).
+// it in the horizontal positions, negative cotangents taken as 0 (as cotangent_weights). Only
+// the unknowns' are asked for, so each is computed from its triangles when asked (the triangles
+// of each vertex listed once, by counting: no sort of the mesh's edges).
 class MeshNeighbours {
  public:
-  explicit MeshNeighbours(const TriangleMesh& mesh) {
-    std::vector<std::pair<std::pair<size_t, size_t>, double>> edges;
-    edges.reserve(6 * mesh.triangles.size());
+  explicit MeshNeighbours(const TriangleMesh& mesh)
+      : mesh_(mesh), starts_(size_t(mesh.vertices.rows()) + 1, 0) {
     for (const auto& t : mesh.triangles)
-      for (int k = 0; k < 3; ++k) {
-        const int apex = t[size_t(k)], a = t[size_t((k + 1) % 3)], b = t[size_t((k + 2) % 3)];
-        const double ax = mesh.vertices(a, 0) - mesh.vertices(apex, 0);
-        const double ay = mesh.vertices(a, 1) - mesh.vertices(apex, 1);
-        const double bx = mesh.vertices(b, 0) - mesh.vertices(apex, 0);
-        const double by = mesh.vertices(b, 1) - mesh.vertices(apex, 1);
-        const double w = 0.5 * std::max(0.0, (ax * bx + ay * by) / std::abs(ax * by - ay * bx));
-        edges.push_back({{size_t(a), size_t(b)}, w});
-        edges.push_back({{size_t(b), size_t(a)}, w});
-      }
-    std::sort(edges.begin(), edges.end());
-    starts_.assign(size_t(mesh.vertices.rows()) + 1, 0);
-    for (const auto& [ends, w] : edges) {
-      if (!neighbours_.empty() && last_ == ends) {
-        neighbours_.back().second += w;
-        continue;
-      }
-      neighbours_.emplace_back(ends.second, w);
-      ++starts_[ends.first + 1];
-      last_ = ends;
-    }
+      for (const int v : t) ++starts_[size_t(v) + 1];
     for (size_t v = 1; v < starts_.size(); ++v) starts_[v] += starts_[v - 1];
+    triangles_.resize(starts_.back());
+    std::vector<size_t> next(starts_.begin(), starts_.end() - 1);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (const int v : mesh.triangles[t]) triangles_[next[size_t(v)]++] = t;
   }
 
   void operator()(size_t v, std::vector<Term>& out) const {
-    out.assign(neighbours_.begin() + std::ptrdiff_t(starts_[v]),
-               neighbours_.begin() + std::ptrdiff_t(starts_[v + 1]));
+    out.clear();
+    auto add = [&out](size_t n, double w) {
+      for (Term& term : out)
+        if (term.first == n) {
+          term.second += w;
+          return;
+        }
+      out.emplace_back(n, w);
+    };
+    for (size_t i = starts_[v]; i < starts_[v + 1]; ++i) {
+      const auto& t = mesh_.triangles[triangles_[i]];
+      const size_t k = t[0] == int(v) ? 0 : t[1] == int(v) ? 1 : 2;
+      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      add(size_t(a), 0.5 * std::max(0.0, cot(b, int(v), a)));  // edge v-a faces the corner b
+      add(size_t(b), 0.5 * std::max(0.0, cot(a, int(v), b)));
+    }
   }
 
  private:
-  std::vector<size_t> starts_;
-  std::vector<Term> neighbours_;
-  std::pair<size_t, size_t> last_{};
+  // cot of the angle at `apex` between the edges to p and q, in the horizontal positions.
+  double cot(int apex, int p, int q) const {
+    const auto& x = mesh_.vertices;
+    const double ax = x(p, 0) - x(apex, 0), ay = x(p, 1) - x(apex, 1);
+    const double bx = x(q, 0) - x(apex, 0), by = x(q, 1) - x(apex, 1);
+    return (ax * bx + ay * by) / std::abs(ax * by - ay * bx);
+  }
+
+  const TriangleMesh& mesh_;
+  std::vector<size_t> starts_, triangles_;
 };
 
 }  // namespace
