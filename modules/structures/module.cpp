@@ -2,5 +2,8 @@
 #include "runtime/module_abi.h"
 
 MAQUETTE_MODULE("structures", "0.1.0",
-                "3D structures of a Digital Earth (paper 002 §5, §7): buildings from footprints",
-                {"structures.buildings", &maquette::structures::make_buildings})
+                "3D structures of a Digital Earth (paper 002 §5, §7): buildings from footprints, "
+                "vegetation in closed strokes",
+                {"structures.buildings", &maquette::structures::make_buildings},
+                {"structures.vegetation", &maquette::structures::make_vegetation},
+                {"structures.vegetation_spacing", &maquette::structures::make_vegetation_spacing})

@@ -1,0 +1,210 @@
+// structures.vegetation (README.md): plants in closed strokes as an instances layer.
+#include <Eigen/Geometry>
+#include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <vector>
+
+#include "core/error.h"
+#include "core/splitmix64.h"
+#include "gdal/vertical_datum.h"
+#include "operators.h"
+#include "poisson_disk.h"
+#include "vegetation_plant.h"
+#include "vegetation_random.h"
+#include "vegetation_stroke.h"
+
+namespace maquette::structures {
+namespace {
+
+constexpr const char* kTool = "structures.vegetation";
+constexpr int kWindowBuckets = 256;
+
+OperatorSpec vegetation_spec() {
+  OperatorSpec s;
+  s.name = kTool;
+  s.description =
+      "Plants in closed strokes (tool 'vegetation', paper 002 §5): blue noise at the stroke's "
+      "spacing_m, coloured from the orthophoto, based on the DEM, as instances";
+  s.kind = OperatorKind::Cell;
+  s.halo = 1;  // the bilinear height and the 3 x 3 colour of plants near the cell's edge
+  s.inputs = {{"dem", "terrain heights (m, on the layer's vertical datum): the plants' base"},
+              {"orthophoto", "imagery, bands 1-3 red, green, blue in 0..255: the plants' colour"},
+              strokes_input()};
+  OutputSpec plants;
+  plants.name = "plants";
+  plants.description = "one instance per plant, its provenance the stroke";
+  plants.kind = LayerKind::Instances;
+  s.outputs.push_back(plants);
+  const json range = {{"type", "array"}, {"items", {{"type", "number"}}}};
+  json scale = range, heading = range;
+  scale["default"] = {8, 15};  // the built-in prototypes are 1 m tall: trees of 8 to 15 m
+  heading["default"] = {0, 360};
+  s.params_schema = {
+      {"type", "object"},
+      {"properties",
+       {{"placement",
+         {{"type", "string"}, {"enum", {"poisson", "random"}}, {"default", "poisson"}}},
+        {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}},
+        {"prototypes",
+         {{"type", "array"},
+          {"items",
+           {{"type", "object"},
+            {"properties",
+             {{"name", {{"type", "string"}}},
+              {"weight", {{"type", "number"}, {"minimum", 0}, {"default", 1}}}}},
+            {"required", {"name"}},
+            {"additionalProperties", false}}},
+          {"default", {{{"name", "builtin:broadleaf"}, {"weight", 1}}}}}},
+        {"scale", scale},
+        {"heading_deg", heading},
+        {"spacings", {{"type", "string"}, {"default", ""}}}}},
+      {"additionalProperties", false}};
+  return s;
+}
+
+// The cell's bounding box in the stroke's plane: its boundary's points, grown by 1 m for the
+// bulge of its edges between them (a cell's edge is straight in the grid's plane, not here).
+PlaneWindow cell_window(const std::vector<LonLat>& boundary, const VegetationStroke& stroke) {
+  PlaneWindow w{1e300, 1e300, -1e300, -1e300};
+  for (const LonLat& p : boundary) {
+    const PlanePoint q = stroke.to_plane(p);
+    w = {std::min(w.x_min, q.x), std::min(w.y_min, q.y), std::max(w.x_max, q.x),
+         std::max(w.y_max, q.y)};
+  }
+  return {w.x_min - 1, w.y_min - 1, w.x_max + 1, w.y_max + 1};
+}
+
+// The stroke's plants in `window`: blue noise, or the paper's placement (every plant of the
+// stroke, then those in the window).
+std::vector<PlanePoint> placed(const VegetationParams& params, const VegetationStroke& stroke,
+                               const PlaneWindow& window) {
+  const uint64_t seed = splitmix64_mix(params.seed ^ splitmix64_mix(uint64_t(stroke.feature->id)));
+  std::vector<PlanePoint> out;
+  if (!params.random) {
+    // In windows of kWindowBuckets buckets a side: the same points (poisson_disk.h), in bounded
+    // memory (~5 MB a window, where a 10 km cell at 2 m would take 1.6 GB) and faster (a window's
+    // buckets stay in cache).
+    const double r = poisson_min_distance(stroke.spacing_m), step = kWindowBuckets * r;
+    for (double y = window.y_min; y < window.y_max; y += step)
+      for (double x = window.x_min; x < window.x_max; x += step) {
+        const auto part = poisson_disk(
+            stroke.region, r, seed,
+            {x, y, std::min(x + step, window.x_max), std::min(y + step, window.y_max)});
+        out.insert(out.end(), part.begin(), part.end());
+      }
+    return out;
+  }
+  for (size_t k = 0; k < stroke.polygons.size(); ++k) {
+    Footprint part;
+    try {
+      part = make_footprint(stroke.polygons[k]);
+    } catch (const InvalidFootprint& e) {
+      throw Error("inputs.strokes: feature " + std::to_string(stroke.feature->id) +
+                  " (tool vegetation): part " + std::to_string(k) + ": " + e.what());
+    }
+    for (const PlanePoint& p : random_placement(part, stroke.spacing_m, seed + k))
+      if (p.x >= window.x_min && p.x < window.x_max && p.y >= window.y_min && p.y < window.y_max)
+        out.push_back(p);
+  }
+  return out;
+}
+
+// ctx.owns(ground) from the point's position g in the grid's plane: the cell is the square there,
+// so a point well inside or outside it is decided at once, and only one within a rounding margin
+// of its edge asks the grid (half the cost of a plant).
+bool owned(const CellContext& ctx, const PlaneSquare& square, PlanePoint g, LonLat ground) {
+  const double margin = 1e-9 * square.side;
+  const double x = g.x - square.x_min, y = square.y_max - g.y;
+  if (x < -margin || x > square.side + margin || y < -margin || y > square.side + margin)
+    return false;
+  if (x > margin && x < square.side - margin && y > margin && y < square.side - margin) return true;
+  return ctx.owns(ground);
+}
+
+// Strokes without spacing_m take theirs from the artifact named by params.spacings (written by
+// structures.vegetation_spacing), read once.
+void resolve_spacings(const CellContext& ctx, std::vector<VegetationStroke>& strokes) {
+  json spacings;
+  for (VegetationStroke& stroke : strokes) {
+    if (stroke.spacing_m > 0) continue;
+    const std::string name = ctx.params->at("spacings").get<std::string>();
+    const std::string id = std::to_string(stroke.feature->id);
+    const std::string where = "inputs.strokes: feature " + id + " (tool vegetation)";
+    if (name.empty())
+      throw Error(where + ": field 'spacing_m' is missing: give it, or params.spacings (the " +
+                  "artifact of structures.vegetation_spacing)");
+    if (spacings.is_null()) {
+      const auto artifact = ctx.store ? ctx.store->get_artifact(name) : std::nullopt;
+      if (!artifact) throw Error("params.spacings: no artifact '" + name + "' in the store");
+      spacings = json::parse(artifact->text(), nullptr, false);
+    }
+    const auto it = spacings.is_object() ? spacings.find(id) : spacings.end();
+    if (it == spacings.end() || !it->is_number() || !(it->get<double>() > 0))
+      throw Error(where + ": no spacing_m, and none in artifact '" + name +
+                  "' (did structures.vegetation_spacing see the stroke's orthophoto?)");
+    stroke.spacing_m = it->get<double>();
+  }
+}
+
+class Vegetation : public CellOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = vegetation_spec();
+    return s;
+  }
+
+  void run(const CellContext& ctx, CellData& data) const override {
+    if (!data.wants("plants")) return;
+    std::vector<VegetationStroke> strokes =
+        vegetation_strokes(data.features_of("strokes"), "strokes");
+    if (strokes.empty()) return;
+    resolve_spacings(ctx, strokes);
+    const VegetationParams params = vegetation_params(*ctx.params);
+    const Tile<float>& dem = data.input("dem");
+    // The DEM's heights on its recorded vertical datum, to the ellipsoid content is placed on.
+    const EllipsoidalHeights to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
+    const Tile<float>& orthophoto = data.input("orthophoto");
+    if (orthophoto.channels() < 3)
+      throw Error("inputs.orthophoto: " + std::to_string(orthophoto.channels()) +
+                  " band(s), not red, green and blue");
+    InstancesContent& out = data.content.instances_of("plants");
+    out.prototypes = params.prototypes;
+    const GeographicLib::LocalCartesian frame(out.origin.lat, out.origin.lon, out.origin.height);
+    const std::vector<LonLat> boundary = ctx.grid->boundary(ctx.cell, 8);
+    const PlaneSquare square = ctx.grid->plane_square(ctx.cell);
+    const double pixel = square.side / ctx.tile_size;
+    std::vector<double> m(9);  // a plant's east-north-up axes in the content's frame
+    for (const VegetationStroke& stroke : strokes)
+      for (const PlanePoint& p : placed(params, stroke, cell_window(boundary, stroke))) {
+        const LonLat ground = stroke.to_ground(p);
+        const PlanePoint g = ctx.grid->forward(ground);
+        if (!owned(ctx, square, g, ground)) continue;
+        const double col = (g.x - square.x_min) / pixel - 0.5;
+        const double row = (square.y_max - g.y) / pixel - 0.5;
+        const double terrain = bilinear(dem, col, row);
+        if (std::isnan(terrain)) continue;  // no terrain: no plant
+        const double height = to_ellipsoid(ground, terrain);
+        const PlantLook look = plant_look(params, stroke.feature->id, p);
+        double x = 0, y = 0, z = 0;
+        frame.Forward(ground.lat, ground.lon, height, x, y, z, m);
+        const Eigen::Quaterniond q =
+            Eigen::Quaterniond(
+                Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(m.data())) *
+            Eigen::AngleAxisd(look.heading_rad, Eigen::Vector3d::UnitZ());
+        out.prototype.push_back(look.prototype);
+        out.position.insert(out.position.end(), {float(x), float(y), float(z)});
+        out.rotation.insert(out.rotation.end(),
+                            {float(q.x()), float(q.y()), float(q.z()), float(q.w())});
+        out.scale.insert(out.scale.end(), {look.scale, look.scale, look.scale});
+        out.colour.push_back(
+            neighbourhood_colour(orthophoto, int(std::lround(col)), int(std::lround(row))));
+        out.provenance.push_back({look.id, stroke.feature->id, kTool, json::object()});
+      }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_vegetation() { return std::make_unique<Vegetation>(); }
+
+}  // namespace maquette::structures
