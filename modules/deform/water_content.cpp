@@ -72,7 +72,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   const double pixel = square.side / double(tile);
   const double col0 = double(input_.origin_col - int64_t(cell.col()) * tile);
   const double row0 = double(input_.origin_row - int64_t(cell.row()) * tile);
-  if (!to_ellipsoid_) to_ellipsoid_ = ellipsoidal_heights(ctx_.input_layer("dem"));
+  if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;

@@ -106,7 +106,7 @@ class Buildings : public CellOperator {
           !first || !ctx.owns({first->lon, first->lat}))
         continue;
       if (!to_ellipsoid) {
-        to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
+        to_ellipsoid.emplace(ellipsoidal_heights(ctx.input_layer("dem")));
         site.to_ellipsoid = &*to_ellipsoid;
       }
       try {
