@@ -9,6 +9,7 @@
 
 #include "core/grid.h"
 #include "core/tile.h"
+#include "core/tile_bilinear.h"  // bilinear(), the frame's sampling
 #include "core/tile_frame.h"
 
 namespace maquette::climate {
@@ -48,10 +49,6 @@ struct March {
   double metres = 0;          // horizontal metres per step
 };
 March march(const PixelFrame& frame, double azimuth_deg);
-
-// Bilinear sample of channel 0 at fractional pixel (x, y); NaN outside the tile and its halo or
-// where a corner is NaN.
-double bilinear(const Tile<float>& tile, double x, double y);
 
 constexpr double kEarthRadius = 6371008.8;  // mean radius, for the curvature drop d^2 / 2R
 
