@@ -21,16 +21,6 @@ const std::vector<GeoPolygon>& polygons_of(const VectorFeature& f) {
   return f.geometry.polygons;
 }
 
-// Pixel coordinates in the site's DEM tile (pixel (c, r) covers [c, c + 1) x [r, r + 1)).
-struct PixelFrame {
-  PlaneSquare square;
-  double pixels_per_metre;
-  PlanePoint2 operator()(const Grid& grid, const GeoPoint& p) const {
-    const PlanePoint q = grid.forward({p.lon, p.lat});
-    return {(q.x - square.x_min) * pixels_per_metre, (square.y_max - q.y) * pixels_per_metre};
-  }
-};
-
 }  // namespace
 
 MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
@@ -38,8 +28,7 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   const std::vector<GeoPolygon>& polygons = polygons_of(feature);
   const double height = building_height(feature.attributes, rules);
   const int tile_size = site.dem->size();
-  const PlaneSquare square = site.grid->plane_square(site.cell);
-  const PixelFrame pixel{square, tile_size / square.side};
+  const PixelFrame pixel(*site.grid, site.cell, tile_size);
 
   std::vector<PixelRing> pixel_rings;
   for (const GeoPolygon& polygon : polygons)
@@ -50,7 +39,7 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
         // across the edge) need not follow.
         if (site.grid->cell_from_point({p.lon, p.lat}, 0).face() != site.cell.face())
           throw InvalidFootprint("it crosses an edge of the grid's faces: not handled yet");
-        r.push_back(pixel(*site.grid, p));
+        r.push_back(pixel(*site.grid, {p.lon, p.lat}));
       }
     }
   const std::optional<float> base = lowest_terrain(*site.dem, pixel_rings);

@@ -230,7 +230,7 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
   return fit;
 }
 
-PlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where) {
+TangentPlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where) {
   if (ring.empty()) throw Error(where + ": the stroke has no points");
   std::vector<LonLat> unwrapped;
   double lon_sum = 0, lat_sum = 0;
@@ -248,7 +248,7 @@ PlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string&
     lat_sum += p.lat;
   }
   const double count = static_cast<double>(ring.size());
-  PlaneRing plane;
+  TangentPlaneRing plane;
   plane.origin = {std::remainder(lon_sum / count, 360.0), lat_sum / count, 0};
   const GeographicLib::LocalCartesian frame(plane.origin.lat, plane.origin.lon, 0);
   for (const LonLat& p : unwrapped) {

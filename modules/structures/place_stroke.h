@@ -1,4 +1,4 @@
-// structures.place's fit (README-place.md; paper 002 §7.4, after Severn, Samavati and Sousa,
+// structures.place's fit (README.md "The fit"; paper 002 §7.4, after Severn, Samavati and Sousa,
 // "Transformation strokes", SBM 2006): the similarity transform that puts an object's base
 // footprint into a closed stroke drawn around it on the terrain, from the principal axes of the
 // two polygons' AREAS (second moments of the region, not of the vertices: a stroke's vertices
@@ -54,7 +54,7 @@ struct PlaceOptions {
   double min_skew_product = 0.005;
   // Refine the axes' transform by matching the base's outline to the stroke's points (ICP, point
   // to line): with 64 points of 2 % noise the moments alone err up to 3.1 degrees at aspect 1.3,
-  // the refined fit 1.2 (README-place.md gives both distributions).
+  // the refined fit 1.2 (README.md gives both distributions).
   bool refine = true;
   // An explicit rotation (radians, counter-clockwise from the model's +x to east) overrides the
   // axes: then a stroke of nearly equal axes is no error.
@@ -82,7 +82,7 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
                    const std::string& feature);
 
 // A stroke of lon/lat in its tangent plane, where fit_place takes it.
-struct PlaneRing {
+struct TangentPlaneRing {
   EnuOrigin origin;  // the east-north-up frame at the mean of the points, on the ellipsoid
   Ring ring;         // the points' east and north (metres) in that frame
 };
@@ -92,7 +92,7 @@ struct PlaneRing {
 // vertically and shortens distances by less than 1e-8). Longitudes are unwrapped from the first
 // point's, so a ring across the antimeridian stays whole. Throws maquette::Error prefixed with
 // `where` for an empty ring or a point off the globe (non-finite, |lat| > 90).
-PlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where);
+TangentPlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::string& where);
 
 // The rotation of fit_place for a heading in degrees clockwise from north of the model's +y axis
 // (the convention of glTF viewers' "heading" and of OSM's `direction`).

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/grid.h"
 #include "core/tile.h"
 #include "footprint.h"
 
@@ -12,6 +13,18 @@ namespace maquette::structures {
 // Rings in the DEM tile's pixel coordinates: (col, row) continuous, pixel (c, r) covering
 // [c, c + 1) x [r, r + 1), row down; outer ring first; open or closed, either orientation.
 using PixelRing = std::vector<PlanePoint2>;
+
+// Those pixel coordinates of a point in the tile of `tile_size` pixels of `cell`.
+struct PixelFrame {
+  PlaneSquare square;
+  double pixels_per_metre;
+  PixelFrame(const Grid& grid, CellId cell, int tile_size)
+      : square(grid.plane_square(cell)), pixels_per_metre(tile_size / square.side) {}
+  PlanePoint2 operator()(const Grid& grid, LonLat p) const {
+    const PlanePoint q = grid.forward(p);
+    return {(q.x - square.x_min) * pixels_per_metre, (square.y_max - q.y) * pixels_per_metre};
+  }
+};
 
 // The lowest DEM sample among the pixels the footprint touches and their 8 neighbours. Touched:
 // the pixels whose centre lies inside the footprint and those its rings pass through (sampled

@@ -407,7 +407,7 @@ TEST(PlaceFit, ExplicitHeadingOverridesTheAxes) {
 // The geodesic area and side lengths of the ring (GeographicLib's PolygonArea and Geodesic on
 // WGS84) against the tangent plane's.
 void expect_plane_matches_geodesics(const std::vector<LonLat>& ring) {
-  const PlaneRing plane = tangent_plane_ring(ring, "stroke");
+  const TangentPlaneRing plane = tangent_plane_ring(ring, "stroke");
   GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());
   for (const LonLat& p : ring) polygon.AddPoint(p.lat, p.lon);
   double perimeter = 0, area = 0;
@@ -428,7 +428,7 @@ TEST(PlaceTangentPlane, MatchesGeodesicAreaAndLengths) {
   const std::vector<LonLat> soho{
       {-0.1360, 51.5130}, {-0.1317, 51.5130}, {-0.1317, 51.5143}, {-0.1360, 51.5143}};
   expect_plane_matches_geodesics(soho);
-  const PlaneRing plane = tangent_plane_ring(soho, "stroke");
+  const TangentPlaneRing plane = tangent_plane_ring(soho, "stroke");
   EXPECT_NEAR(plane.origin.lon, -0.13385, 1e-12);
   EXPECT_NEAR(plane.origin.lat, 51.51365, 1e-12);
   // Across the antimeridian: one small ring, its origin on the 180th meridian.
@@ -457,7 +457,7 @@ TEST(PlaceTangentPlane, LonLatStrokeGivesTheKnownPlacement) {
   const Ring stroke = drawn_stroke(transformed(base, rotation, scale, offset), 400, 0, uniform);
   std::vector<LonLat> lonlat;
   for (const Point2& p : stroke) lonlat.push_back(on_globe(p));
-  const PlaneRing plane = tangent_plane_ring(lonlat, "stroke");
+  const TangentPlaneRing plane = tangent_plane_ring(lonlat, "stroke");
   const PlaceFit fit = fit_place(plane.ring, base, {}, "feature 9");
   EXPECT_NEAR(fit.rotation, rotation, 1e-5);
   EXPECT_NEAR(fit.scale, scale, 1e-6);
