@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/splitmix64.h"
+#include "core/tile_bilinear.h"
 #include "gdal/vertical_datum.h"
 #include "operators.h"
 #include "poisson_disk.h"

@@ -65,13 +65,6 @@ PlantLook plant_look(const VegetationParams& params, int64_t feature_id, PlanePo
   return look;
 }
 
-double bilinear(const Tile<float>& t, double col, double row) {
-  const int c = int(std::floor(col)), r = int(std::floor(row));
-  const double u = col - c, v = row - r;
-  return (1 - v) * ((1 - u) * t.at(c, r) + u * t.at(c + 1, r)) +
-         v * ((1 - u) * t.at(c, r + 1) + u * t.at(c + 1, r + 1));
-}
-
 uint32_t neighbourhood_colour(const Tile<float>& t, int col, int row) {
   std::array<double, 3> sum{};
   std::array<int, 3> count{};

@@ -38,9 +38,8 @@ struct PlantLook {
 
 PlantLook plant_look(const VegetationParams& params, int64_t feature_id, PlanePoint at);
 
-// Samples of a tile at fractional pixel coordinates (col, row of pixel centres, halo >= 1).
-// The bilinear height, NaN where a neighbour is NaN.
-double bilinear(const Tile<float>& t, double col, double row);
+// Samples of a tile at fractional pixel coordinates (col, row of pixel centres, halo >= 1): the
+// bilinear height is core/tile_bilinear.h's bilinear().
 // RGBA8 (R in the low byte, alpha 255): the mean of the first three channels over the 3 x 3
 // pixels around (col, row) rounded, clamped to 0..255; NaN samples are left out (none: white).
 uint32_t neighbourhood_colour(const Tile<float>& t, int col, int row);
