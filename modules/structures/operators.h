@@ -13,5 +13,6 @@ std::unique_ptr<Operator> make_vegetation();
 // (spacing_estimate.h), as an artifact for structures.vegetation (a reduce operator: the tiles of
 // a stroke summed, whatever cell, thread or rank computed each).
 std::unique_ptr<Operator> make_vegetation_spacing();
+std::unique_ptr<Operator> make_place();
 
 }  // namespace maquette::structures

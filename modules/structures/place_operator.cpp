@@ -1,0 +1,168 @@
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "content/enu_transform.h"
+#include "core/error.h"
+#include "core/tile_bilinear.h"
+#include "gdal/vertical_datum.h"
+#include "gltf/prototype_library.h"
+#include "model_base.h"
+#include "operators.h"
+#include "place_stroke.h"
+#include "terrain_base.h"
+
+namespace maquette::structures {
+namespace {
+
+OperatorSpec place_spec() {
+  OperatorSpec s;
+  s.name = "structures.place";
+  s.description =
+      "Models placed by transformation strokes (paper 002 §7.4): a closed stroke around a "
+      "footprint gives a model layer's rotation about the vertical, uniform scale and position; "
+      "the terrain its base height";
+  s.kind = OperatorKind::Cell;
+  s.halo = 1;  // the bilinear terrain at an instance's position near the cell's edge
+  InputSpec dem;
+  dem.name = "dem";
+  dem.description = "terrain heights (m above the layer's vertical datum)";
+  s.inputs.push_back(dem);
+  InputSpec strokes;
+  strokes.name = "strokes";
+  strokes.description =
+      "features layer: closed strokes (Polygons or closed LineStrings) of tool 'place', "
+      "properties `model` (a model layer or builtin:* prototype) and optional `heading_deg`";
+  strokes.kind = LayerKind::Features;
+  s.inputs.push_back(strokes);
+  OutputSpec instances;
+  instances.name = "instances";
+  instances.description = "one instance of its model per stroke, in the cell of its position";
+  instances.kind = LayerKind::Instances;
+  s.outputs.push_back(instances);
+  s.params_schema = {{"type", "object"}, {"additionalProperties", false}};
+  return s;
+}
+
+bool is_place_stroke(const VectorFeature& f) {
+  const auto tool = f.attributes.find("tool");
+  return tool != f.attributes.end() && *tool == "place";
+}
+
+// What a stroke of tool 'place' asks for.
+struct PlaceStroke {
+  std::string model;
+  std::optional<double> heading_deg;
+  std::vector<LonLat> ring;  // the outer ring
+};
+
+PlaceStroke place_stroke(const VectorFeature& f, const std::string& where) {
+  PlaceStroke s;
+  const Geometry& g = f.geometry;
+  const GeoPath* ring = nullptr;
+  if (g.type == GeometryType::Polygon && g.polygons.size() == 1 && !g.polygons[0].rings.empty())
+    ring = &g.polygons[0].rings[0];
+  if (g.type == GeometryType::LineString && g.lines.size() == 1 && g.lines[0].size() >= 4 &&
+      g.lines[0].front().lon == g.lines[0].back().lon &&
+      g.lines[0].front().lat == g.lines[0].back().lat)
+    ring = &g.lines[0];
+  if (!ring)
+    throw Error(where + ": a stroke of tool 'place' is closed (a Polygon, or a LineString ending " +
+                "where it begins), not this " + std::string(geometry_type_name(g.type)));
+  for (const GeoPoint& p : *ring) s.ring.push_back({p.lon, p.lat});
+  const auto model = f.attributes.find("model");
+  if (model == f.attributes.end() || !model->is_string() || model->get<std::string>().empty())
+    throw Error(where + ": property 'model' (the name of a model layer) is " +
+                (model == f.attributes.end() ? "missing" : "not a name: " + model->dump()));
+  s.model = model->get<std::string>();
+  if (const auto heading = f.attributes.find("heading_deg");
+      heading != f.attributes.end() && !heading->is_null()) {
+    if (!heading->is_number() || !std::isfinite(heading->get<double>()))
+      throw Error(where +
+                  ": property 'heading_deg' is not a number of degrees: " + heading->dump());
+    s.heading_deg = heading->get<double>();
+  }
+  return s;
+}
+
+class Place : public CellOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = place_spec();
+    return s;
+  }
+
+  void run(const CellContext& ctx, CellData& data) const override {
+    if (!data.wants("instances")) return;
+    InstancesContent& out = data.content.instances_of("instances");
+    const Tile<float>& dem = data.input("dem");
+    const EllipsoidalHeights to_ellipsoid = ellipsoidal_heights(ctx.input_layer("dem"));
+    const PixelFrame pixel(*ctx.grid, ctx.cell, dem.size());
+    PrototypeLibrary models(*ctx.store);
+    std::map<std::string, Ring> bases;  // by model, read once per cell
+    for (const VectorFeature* f : data.features_of("strokes")) {
+      if (!is_place_stroke(*f)) continue;
+      const std::string where = "structures.place: feature " + std::to_string(f->id);
+      const PlaceStroke stroke = place_stroke(*f, where);
+      auto base = bases.find(stroke.model);
+      if (base == bases.end()) {
+        InstancesContent one;
+        one.prototypes = {stroke.model};
+        const MeshContent& model = *models.models(one, where).front();
+        base =
+            bases.emplace(stroke.model, model_base(model, where + ": model '" + stroke.model + "'"))
+                .first;
+      }
+      const TangentPlaneRing plane = tangent_plane_ring(stroke.ring, where);
+      PlaceOptions options;
+      if (stroke.heading_deg) options.rotation = rotation_from_heading_deg(*stroke.heading_deg);
+      const PlaceFit fit = fit_place(plane.ring, base->second, options, where);
+
+      // The model's origin: the instance's position, its anchor (content.h).
+      double lat = 0, lon = 0, ignored = 0;
+      GeographicLib::LocalCartesian(plane.origin.lat, plane.origin.lon, 0)
+          .Reverse(fit.offset[0], fit.offset[1], 0, lat, lon, ignored);
+      if (!ctx.owns({lon, lat})) continue;
+      const PlanePoint2 at = pixel(*ctx.grid, {lon, lat});
+      const double terrain = bilinear(dem, at[0] - 0.5, at[1] - 0.5);  // pixel centres
+      if (std::isnan(terrain))
+        throw Error(where + ": the DEM has no data at the model's position (" +
+                    std::to_string(lon) + ", " + std::to_string(lat) + ")");
+      const EnuOrigin position{lon, lat, to_ellipsoid({lon, lat}, terrain)};
+
+      // Turned about the up of the position's own east-north-up frame, then in the content's.
+      const EnuTransform to_content(position, out.origin);
+      const std::array<double, 3> p = to_content.point(0, 0, 0);
+      const std::array<double, 4> q =
+          to_content.rotation(0, 0, std::sin(fit.rotation / 2), std::cos(fit.rotation / 2));
+      out.prototype.push_back(uint16_t(prototype_index(out, stroke.model)));
+      out.position.insert(out.position.end(), {float(p[0]), float(p[1]), float(p[2])});
+      out.rotation.insert(out.rotation.end(), {float(q[0]), float(q[1]), float(q[2]), float(q[3])});
+      out.scale.insert(out.scale.end(), 3, float(fit.scale));
+      out.colour.push_back(0xffffffffu);  // the model's own colours
+      ObjectProvenance& provenance = out.provenance.emplace_back();
+      provenance.object_id = uint64_t(f->id);
+      provenance.feature_id = f->id;
+      provenance.tool = "structures.place";
+      provenance.attributes = {{"axis_ratio", fit.axis_ratio},
+                               {"half_turn_decided", fit.half_turn_decided}};
+    }
+  }
+
+ private:
+  static size_t prototype_index(InstancesContent& content, const std::string& name) {
+    for (size_t i = 0; i < content.prototypes.size(); ++i)
+      if (content.prototypes[i] == name) return i;
+    content.prototypes.push_back(name);
+    return content.prototypes.size() - 1;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_place() { return std::make_unique<Place>(); }
+
+}  // namespace maquette::structures

@@ -1,0 +1,347 @@
+// structures.place through the real program, as a user runs it: a box model (2 m x 1 m, written
+// as a glTF GLB by the test) ingested with `maquette ingest --as model`, a synthetic DEM of EGM96
+// heights (a lon/lat GeoTIFF: a tilted plane) and closed strokes of tool 'place' drawn around the
+// box's footprint turned, scaled and moved (128 points, each off by up to 2 % of the footprint's
+// length), run by `maquette run`. Each stored instance gives back its stroke's transform: rotation
+// within 1 degree, scale within 3 %, position within 1 % of the footprint's length; its base is
+// on the terrain (the DEM's plane at the position, taken to the ellipsoid by PROJ) within 1 cm.
+// An explicit heading is honoured; 1 and 2 threads store the same bits; a square stroke, or one
+// naming no model of the store, fails the run naming its feature.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <ogr_geometry.h>
+#include <ogr_spatialref.h>
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "content/content_blob.h"
+#include "content/instances_codec.h"
+#include "egm96_oracle.h"
+#include "model_files.h"
+#include "model_oracle.h"
+#include "run_cli.h"
+#include "store/store.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using test::CliResult;
+using test::run_maquette;
+
+constexpr double kWest = 7.440, kEast = 7.448, kSouth = 46.946, kNorth = 46.952;
+constexpr double kLon0 = 7.444, kLat0 = 46.949;
+constexpr double kSourcePixelDeg = 2e-5;  // ~1.5 x 2.2 m
+constexpr double kPi = std::numbers::pi;
+// The box model's footprint (tests/models: 2 m east, 1 m north, centred on its origin).
+constexpr double kBoxLength = 2, kBoxWidth = 1;
+
+const GeographicLib::LocalCartesian& scene_frame() {
+  static const GeographicLib::LocalCartesian frame(kLat0, kLon0, 0);
+  return frame;
+}
+
+// The DEM (m above EGM96) at x, y metres east and north of the scene's centre: a tilted plane,
+// which the ingest's bilinear resampling and the operator's bilinear sampling keep exactly.
+double terrain(double x, double y) { return 540 + 0.03 * x - 0.02 * y; }
+
+void write_dem(const std::string& path) {
+  const int w = int(std::lround((kEast - kWest) / kSourcePixelDeg));
+  const int h = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
+  std::vector<float> samples(size_t(w) * size_t(h));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      double x = 0, y = 0, up = 0;
+      scene_frame().Forward(kNorth - (r + 0.5) * kSourcePixelDeg,
+                            kWest + (c + 0.5) * kSourcePixelDeg, 0, x, y, up);
+      samples[size_t(r) * size_t(w) + size_t(c)] = float(terrain(x, y));
+    }
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      path.c_str(), w, h, 1, GDT_Float32, nullptr));
+  double transform[6] = {kWest, kSourcePixelDeg, 0, kNorth, 0, -kSourcePixelDeg};
+  ds->SetGeoTransform(transform);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(4326);
+  ds->SetSpatialRef(&srs);
+  ASSERT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, samples.data(), w, h, GDT_Float32, 1, nullptr, 0, 0,
+                         0, nullptr),
+            CE_None);
+}
+
+// The box's footprint turned by `rotation` (radians, counter-clockwise from east), scaled by
+// `scale` (its width by `scale` x `stretch`) and centred at (x, y) metres in the scene's frame.
+struct Placement {
+  double rotation, scale, x, y, stretch = 1;
+};
+
+// A stroke around the placement's footprint: `n` points evenly spaced along its outline from a
+// random start, each moved by a random vector of up to 2 % of the footprint's length; drawn again
+// until the ring does not cross itself (GEOS, as the ingest checks strokes).
+
+json drawn_stroke(const Placement& p, int n, std::mt19937& random) {
+  const double a = kBoxLength / 2, b = kBoxWidth / 2 * p.stretch, perimeter = 4 * (a + b);
+  const double noise = 0.02 * kBoxLength * p.scale;
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double start = unit(random) * perimeter;
+  json ring = json::array();
+  for (int i = 0; i < n; ++i) {
+    double s = std::fmod(start + perimeter * i / n, perimeter), u = 0, v = 0;
+    if (s < 2 * a) {
+      u = -a + s, v = -b;
+    } else if ((s -= 2 * a) < 2 * b) {
+      u = a, v = -b + s;
+    } else if ((s -= 2 * b) < 2 * a) {
+      u = a - s, v = b;
+    } else {
+      u = -a, v = b - (s - 2 * a);
+    }
+    const double radius = noise * std::sqrt(unit(random)), t = unit(random) * 2 * kPi;
+    const double x = p.x + p.scale * (std::cos(p.rotation) * u - std::sin(p.rotation) * v) +
+                     radius * std::cos(t);
+    const double y = p.y + p.scale * (std::sin(p.rotation) * u + std::cos(p.rotation) * v) +
+                     radius * std::sin(t);
+    double lat = 0, lon = 0, h = 0;
+    scene_frame().Reverse(x, y, 0, lat, lon, h);
+    ring.push_back({lon, lat});
+  }
+  ring.push_back(ring[0]);
+  return {{"type", "Polygon"}, {"coordinates", {ring}}};
+}
+
+json stroke(const Placement& p, int n, std::mt19937& random) {
+  for (;;) {
+    json geometry = drawn_stroke(p, n, random);
+    const std::unique_ptr<OGRGeometry> g(
+        OGRGeometryFactory::createFromGeoJson(geometry.dump().c_str()));
+    CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
+    if (g && g->IsValid()) return geometry;
+  }
+}
+
+// A stroke of tool 'place'; the ingest numbers features from 1 in the file's order.
+json feature(const json& geometry, json properties) {
+  properties["tool"] = "place";
+  return {{"type", "Feature"}, {"geometry", geometry}, {"properties", properties}};
+}
+
+// A store with the DEM, the box model and `strokes`, and the pipeline placing them.
+struct Scene {
+  std::string dir = test::temp_dir();
+  std::string store = dir + "/place.mqt";
+
+  explicit Scene(const json& strokes) {
+    write_dem(dir + "/dem.tif");
+    const std::string model = test::write_glb(test::box_model({0.8f, 0.6f, 0.3f, 1}), dir, "box");
+    json collection = {{"type", "FeatureCollection"}, {"features", strokes}};
+    std::ofstream(dir + "/strokes.geojson") << collection.dump();
+    const json pipeline = {{"store", store},
+                           {"region", {{"bbox", {kWest, kSouth, kEast, kNorth}}}},
+                           {"level", 14},
+                           {"steps",
+                            {{{"op", "structures.place"},
+                              {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+                              {"outputs", {{"instances", "placed"}}}}}}};
+    std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
+    for (const std::string& args :
+         {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum egm96 " +
+              "--level 14 --tile-size 256",
+          "ingest " + store + " " + model + " --layer box --as model",
+          "ingest " + store + " " + dir + "/strokes.geojson --layer strokes --as features"}) {
+      const CliResult r = run_maquette("-q " + args);
+      EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    }
+  }
+  CliResult run(const std::string& options = "") const {
+    return run_maquette("-q run " + options + " " + dir + "/pipeline.json");
+  }
+};
+
+// A stored instance as the test reads it back, in the scene's frame.
+struct Placed {
+  double rotation = 0;  // of the model's +x, counter-clockwise from east at its position
+  double scale = 0;
+  double x = 0, y = 0;                  // metres in the scene's frame
+  double lon = 0, lat = 0, height = 0;  // the position (the model's base), above the ellipsoid
+  std::string prototype;
+  json attributes;
+};
+
+std::map<int64_t, Placed> placed(const std::string& store) {
+  const auto st = Store::open(store, Store::Mode::ReadOnly);
+  std::map<int64_t, Placed> out;
+  for (const CellId cell : st->content_cells("placed")) {
+    const InstancesContent c = unwrap_instances(*st->get_content("placed", cell), "test");
+    const GeographicLib::LocalCartesian content(c.origin.lat, c.origin.lon, c.origin.height);
+    for (size_t i = 0; i < c.size(); ++i) {
+      Placed p;
+      const float* pos = &c.position[3 * i];
+      content.Reverse(pos[0], pos[1], pos[2], p.lat, p.lon, p.height);
+      // The model's +x turned by the quaternion, as a point 1 m from the position, seen in the
+      // position's own east-north-up frame.
+      const double qx = c.rotation[4 * i], qy = c.rotation[4 * i + 1], qz = c.rotation[4 * i + 2],
+                   qw = c.rotation[4 * i + 3];
+      const std::array<double, 3> axis{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qw * qz),
+                                       2 * (qx * qz - qw * qy)};
+      double lat = 0, lon = 0, h = 0, e = 0, n = 0, u = 0;
+      content.Reverse(pos[0] + axis[0], pos[1] + axis[1], pos[2] + axis[2], lat, lon, h);
+      GeographicLib::LocalCartesian(p.lat, p.lon, p.height).Forward(lat, lon, h, e, n, u);
+      EXPECT_NEAR(u, 0, 1e-5) << "the model turns about the vertical only";
+      p.rotation = std::atan2(n, e);
+      EXPECT_EQ(c.scale[3 * i], c.scale[3 * i + 1]);
+      EXPECT_EQ(c.scale[3 * i], c.scale[3 * i + 2]);
+      p.scale = c.scale[3 * i];
+      double z = 0;
+      scene_frame().Forward(p.lat, p.lon, 0, p.x, p.y, z);
+      p.prototype = c.prototypes[c.prototype[i]];
+      EXPECT_EQ(c.provenance[i].tool, "structures.place");
+      p.attributes = c.provenance[i].attributes;
+      EXPECT_TRUE(out.emplace(c.provenance[i].feature_id, p).second) << "placed once";
+    }
+  }
+  return out;
+}
+
+// The terrain's height above the ellipsoid at `p`: the DEM's EGM96 height there taken to WGS 84
+// by PROJ.
+double ellipsoidal_terrain(const Placed& p) {
+  static const test::Egm96ToEllipsoid to_ellipsoid;
+  const double z = to_ellipsoid(p.lon, p.lat, terrain(p.x, p.y));
+  EXPECT_GT(z - terrain(p.x, p.y), 40);  // the geoid is ~49 m above the ellipsoid near Bern
+  return z;
+}
+
+// The angle between two rotations, radians, modulo a half turn (the box is centrally symmetric:
+// turned by a half turn it covers the same footprint).
+double half_turn_difference(double a, double b) { return std::abs(std::remainder(a - b, kPi)); }
+
+// Strokes around the box turned, scaled and spread over the scene (x, y metres from its centre),
+// and one of them with a heading given (the last).
+const std::vector<Placement> kPlacements = {{35 * kPi / 180, 10, -60, 40},
+                                            {-120 * kPi / 180, 7, 80, -70},
+                                            {170 * kPi / 180, 4.5, 20, 120},
+                                            {5 * kPi / 180, 25, -120, -90}};
+const Placement kHeaded{60 * kPi / 180, 8, 130, 20};
+constexpr double kHeadingDeg = 100;
+
+json placement_strokes() {
+  std::mt19937 random(17);
+  json strokes = json::array();
+  for (const Placement& p : kPlacements)
+    strokes.push_back(feature(stroke(p, 128, random), {{"model", "box"}}));
+  // The third drawn as a LineString ending where it begins (as DESIGN.md's strokes are).
+  json& line = strokes[2]["geometry"];
+  line = {{"type", "LineString"}, {"coordinates", line["coordinates"][0]}};
+  strokes.push_back(
+      feature(stroke(kHeaded, 128, random), {{"model", "box"}, {"heading_deg", kHeadingDeg}}));
+  return strokes;
+}
+
+TEST(PlacePipeline, StrokesPlaceTheModelTurnedScaledOnTheTerrain) {
+  const std::vector<Placement>& placements = kPlacements;
+  const Placement& headed = kHeaded;
+  const Scene scene(placement_strokes());
+  const CliResult r = scene.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const std::map<int64_t, Placed> out = placed(scene.store);
+  ASSERT_EQ(out.size(), placements.size() + 1);
+  double worst_rotation = 0, worst_scale = 0, worst_position = 0, worst_base = 0;
+  for (size_t i = 0; i < placements.size(); ++i) {
+    const Placement& want = placements[i];
+    const Placed& got = out.at(int64_t(i) + 1);
+    EXPECT_EQ(got.prototype, "box");
+    const double length = kBoxLength * want.scale;
+    worst_rotation = std::max(worst_rotation, half_turn_difference(got.rotation, want.rotation));
+    worst_scale = std::max(worst_scale, std::abs(got.scale / want.scale - 1));
+    worst_position = std::max(worst_position, std::hypot(got.x - want.x, got.y - want.y) / length);
+    worst_base = std::max(worst_base, std::abs(got.height - ellipsoidal_terrain(got)));
+    EXPECT_FALSE(got.attributes.at("half_turn_decided").get<bool>());  // a box: symmetric
+    // The stroke's area variance ratio: the footprint's aspect squared (4), within the noise.
+    EXPECT_NEAR(got.attributes.at("axis_ratio").get<double>(), 4, 0.2);
+  }
+  EXPECT_LE(worst_rotation, kPi / 180);
+  EXPECT_LE(worst_scale, 0.03);
+  EXPECT_LE(worst_position, 0.01);
+  EXPECT_LE(worst_base, 0.01);
+  std::cout << "worst rotation " << worst_rotation * 180 / kPi << " deg, scale "
+            << worst_scale * 100 << " %, position " << worst_position * 100
+            << " % of the length, base " << worst_base * 1000 << " mm\n";
+
+  // The heading: the model's +y 100 degrees clockwise from north, its +x at -100 degrees from
+  // east, whatever the stroke's axes; the scale and position still the stroke's.
+  const Placed& got = out.at(int64_t(placements.size()) + 1);
+  EXPECT_NEAR(std::remainder(got.rotation + kHeadingDeg * kPi / 180, 2 * kPi), 0, 1e-5);
+  EXPECT_NEAR(got.scale / headed.scale, 1, 0.03);
+  EXPECT_LE(std::hypot(got.x - headed.x, got.y - headed.y), 0.01 * kBoxLength * headed.scale);
+  EXPECT_NEAR(got.height, ellipsoidal_terrain(got), 0.01);
+}
+
+TEST(PlacePipeline, SameBitsForOneAndTwoThreads) {
+  const Scene one(placement_strokes()), two(placement_strokes());
+  ASSERT_EQ(one.run("-t 1").exit_code, 0);
+  ASSERT_EQ(two.run("-t 2").exit_code, 0);
+  const auto a = Store::open(one.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(two.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = a->content_cells("placed");
+  EXPECT_GT(cells.size(), 1u);  // the strokes spread over several cells
+  ASSERT_EQ(cells, b->content_cells("placed"));
+  for (const CellId cell : cells)
+    EXPECT_EQ(a->get_content("placed", cell), b->get_content("placed", cell));
+}
+
+TEST(PlacePipeline, SquareStrokeIsAmbiguousNamingItsFeature) {
+  std::mt19937 random(5);
+  // The box scaled 12 along and 24 across: a square of 24 m.
+  const json square = stroke({0.3, 12, 0, 0, 2}, 128, random);
+  const Scene ambiguous(json::array({feature(square, {{"model", "box"}})}));
+  const CliResult r = ambiguous.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("structures.place: feature 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("heading is ambiguous"), std::string::npos) << r.err;
+
+  // The same square with a heading is placed.
+  const Scene headed(json::array({feature(square, {{"model", "box"}, {"heading_deg", 30}})}));
+  ASSERT_EQ(headed.run().exit_code, 0);
+  const std::map<int64_t, Placed> out = placed(headed.store);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(std::remainder(out.at(1).rotation + 30 * kPi / 180, 2 * kPi), 0, 1e-5);
+}
+
+TEST(PlacePipeline, UnknownModelIsNamed) {
+  std::mt19937 random(3);
+  const Scene scene(
+      json::array({feature(stroke({0, 10, 0, 0}, 64, random), {{"model", "crate"}})}));
+  const CliResult r = scene.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("structures.place: feature 1: unknown prototype 'crate'"), std::string::npos)
+      << r.err;
+}
+
+TEST(PlacePipeline, OpenStrokeIsRefusedNamingItsFeature) {
+  std::mt19937 random(3);
+  json line = stroke({0, 10, 0, 0}, 64, random)["coordinates"][0];
+  line.erase(line.end() - 1);  // not back to its start
+  const Scene scene(
+      json::array({feature({{"type", "LineString"}, {"coordinates", line}}, {{"model", "box"}})}));
+  const CliResult r = scene.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("structures.place: feature 1: a stroke of tool 'place' is closed"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace maquette
