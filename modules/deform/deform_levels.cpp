@@ -174,8 +174,12 @@ RefinedPatch refined_heights(const HeightField& field, const SampleWindow& windo
     std::vector<double> heights(z.data(), z.data() + z.size());
     const MeshNeighbours neighbours(loop.meshes[size_t(t)]);
     const StrokeConstraints& level = by_level[size_t(t)];
+    const Eigen::MatrixX3d& at = loop.meshes[size_t(t)].vertices;
+    const auto in_band = [&](size_t v) {
+      return in_any_band(level.bands, {at(Eigen::Index(v), 0), at(Eigen::Index(v), 1)});
+    };
     deform_heights(heights, rows_through(level.control, window, finer, 2 << t, s),
-                   rows_through(level.section, window, finer, 2 << t, s), neighbours,
+                   rows_through(level.section, window, finer, 2 << t, s), neighbours, in_band,
                    energy_weight);
     z = s * Eigen::Map<const Eigen::VectorXd>(heights.data(), Eigen::Index(heights.size()));
   }

@@ -71,16 +71,16 @@ class System {
   std::vector<double> values_, rhs_;
 };
 
-// The vertices of the rows' terms, sorted, without those of `fixed`: marked on the vertices and
-// read back in index order (no sort of the many repeats).
+// The vertices of the rows' terms that `may_move`, sorted, without those of `fixed`: marked on
+// the vertices and read back in index order (no sort of the many repeats).
 std::vector<size_t> touched(const ConstraintRows& rows, const std::vector<size_t>& fixed,
-                            size_t vertices) {
+                            const std::function<bool(size_t)>& may_move, size_t vertices) {
   std::vector<char> mark(vertices, 0);
   for (const Term& t : rows.terms) mark[t.first] = 1;
   for (const size_t v : fixed) mark[v] = 0;
   std::vector<size_t> out;
   for (size_t v = 0; v < vertices; ++v)
-    if (mark[v]) out.push_back(v);
+    if (mark[v] && may_move(v)) out.push_back(v);
   return out;
 }
 
@@ -93,9 +93,10 @@ enum class Reads {
 // The rows and an energy row per unknown, solved; returns the unknowns.
 std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& rows,
                                 const std::vector<size_t>& fixed,
+                                const std::function<bool(size_t)>& may_move,
                                 const EnergyNeighbours& neighbours, double energy_weight,
                                 Reads reads) {
-  System system(z, touched(rows, fixed, z.size()));
+  System system(z, touched(rows, fixed, may_move, z.size()));
   if (system.unknowns().empty()) return {};
   for (size_t i = 0; i < rows.rhs.size(); ++i)
     system.add(std::span(rows.terms).subspan(rows.starts[i], rows.starts[i + 1] - rows.starts[i]),
@@ -122,14 +123,15 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
 
 void deform_heights(std::vector<double>& z, const ConstraintRows& control,
                     const ConstraintRows& section, const EnergyNeighbours& neighbours,
-                    double energy_weight) {
-  const std::vector<size_t> control_vertices =
-      solve_stage(z, control, {}, neighbours, energy_weight, Reads::Unknowns);
-  solve_stage(z, section, control_vertices, neighbours, energy_weight, Reads::All);
+                    const std::function<bool(size_t)>& may_move, double energy_weight) {
+  const std::vector<size_t> control_vertices = solve_stage(
+      z, control, {}, [](size_t) { return true; }, neighbours, energy_weight, Reads::Unknowns);
+  solve_stage(z, section, control_vertices, may_move, neighbours, energy_weight, Reads::All);
 }
 
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
-                    const std::vector<HeightConstraint>& section, double energy_weight) {
+                    const std::vector<HeightConstraint>& section,
+                    const std::vector<StrokeBand>& bands, double energy_weight) {
   auto rows = [](const std::vector<HeightConstraint>& constraints) {
     ConstraintRows out;
     for (const HeightConstraint& c : constraints) {
@@ -147,7 +149,10 @@ void deform_heights(HeightField& field, const std::vector<HeightConstraint>& con
     for (size_t k = 0; k < 6; ++k)
       out.emplace_back(field.index(col + kNeighbours[k][0], r + kNeighbours[k][1]), w[k]);
   };
-  deform_heights(field.z, rows(control), rows(section), neighbours, energy_weight);
+  const auto in_band = [&](size_t v) {
+    return in_any_band(bands, {field.east[v], field.north[v]});
+  };
+  deform_heights(field.z, rows(control), rows(section), neighbours, in_band, energy_weight);
 }
 
 }  // namespace maquette::deform

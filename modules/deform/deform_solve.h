@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "height_field.h"
+#include "stroke_band.h"
 
 namespace maquette::deform {
 
@@ -45,7 +46,10 @@ using EnergyNeighbours = std::function<void(size_t v, std::vector<Term>& out)>;
 //     replace next, must not: with the input's heights in these rows a channel's strip tilts
 //     towards its banks (measured: 38 mm RMS on the curve of a 5 m deep channel instead of under
 //     1 mm);
-//  2. unknowns: the vertices in the section rows, minus those of step 1; rows: the section rows
+//  2. unknowns: the vertices in the section rows that `may_move` (in the strokes' fields of
+//     influence: a vertex beyond a band's edge, held only by a tiny barycentric weight of an edge
+//     constraint and a light energy row, would otherwise be thrown tens of metres), minus those
+//     of step 1; rows: the section rows
 //     (fixed vertices moved to the right-hand side; a row without unknowns is dropped) and an
 //     energy row per unknown over all its neighbours, those that are not unknowns at their
 //     current height (the field of influence's edge meets the terrain around it).
@@ -56,12 +60,14 @@ using EnergyNeighbours = std::function<void(size_t v, std::vector<Term>& out)>;
 // Throws maquette::Error if a system is singular.
 void deform_heights(std::vector<double>& z, const ConstraintRows& control,
                     const ConstraintRows& section, const EnergyNeighbours& neighbours,
-                    double energy_weight);
+                    const std::function<bool(size_t)>& may_move, double energy_weight);
 
 // The base level: constraints on the height field's triangles, energy rows with
-// cotangent_weights. Preconditions: every unknown vertex is interior (not on the raster's
-// border) and it and its six neighbours have finite heights.
+// cotangent_weights; a vertex may move in step 2 when its position lies in one of `bands`.
+// Preconditions: every unknown vertex is interior (not on the raster's border), its position is
+// filled, and it and its six neighbours have finite heights.
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
-                    const std::vector<HeightConstraint>& section, double energy_weight);
+                    const std::vector<HeightConstraint>& section,
+                    const std::vector<StrokeBand>& bands, double energy_weight);
 
 }  // namespace maquette::deform

@@ -131,6 +131,7 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
       StrokeConstraints& all = by_level[size_t(t)];
       all.control.insert(all.control.end(), one.control.begin(), one.control.end());
       all.section.insert(all.section.end(), one.section.begin(), one.section.end());
+      all.bands.insert(all.bands.end(), one.bands.begin(), one.bands.end());
     }
   const SampleWindow window = refinement_window(field, by_level);
   for (int r = window.row0; r <= window.row1; ++r)
@@ -206,7 +207,8 @@ class Features : public RegionOperator {
     for (const FeatureStroke& stroke : strokes)
       add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
     place_vertices(frame, constraints, field);
-    deform_heights(field, constraints.control, constraints.section, energy_weight);
+    deform_heights(field, constraints.control, constraints.section, constraints.bands,
+                   energy_weight);
 
     for (int r = 0; r < size; ++r)
       for (int c = 0; c < size; ++c) {

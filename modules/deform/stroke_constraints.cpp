@@ -126,6 +126,9 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
       rotation_minimizing_frames(points, tangents, {tangents[0][1], -tangents[0][0], 0});
 
   const double o_min = stroke.cross_section.front()[0], o_max = stroke.cross_section.back()[0];
+  // A triangle holding an end section's point reaches at most a sample's diagonal (3 steps of
+  // half a sample) past the end.
+  out.bands.push_back({vertex, o_min, o_max, 3 * step_m});
   const size_t m = size_t(std::ceil((o_max - o_min) / step_m));
   for (size_t k = 0; k <= n; ++k) {
     const Vec3d& r = frames[k].reference;

@@ -17,18 +17,21 @@
 #include "height_field.h"
 #include "mosaic_frame.h"
 #include "stroke.h"
+#include "stroke_band.h"
 
 namespace maquette::deform {
 
 struct StrokeConstraints {
   std::vector<HeightConstraint> control, section;
+  std::vector<StrokeBand> bands;  // one per stroke added
 };
 
-// Appends the constraints of `stroke` to `out`. `field` holds the mosaic's heights (positions are
-// not needed). Throws maquette::Error naming `where` and the feature id when the curve crosses
-// itself, when a constrained point lies on another face (face seams are not supported yet), off
-// the mosaic or its border samples, or on a triangle any of whose vertices or their neighbours is
-// nodata (the least squares would read them), and when a profile does not cover the curve.
+// Appends the constraints of `stroke` and its band to `out`. `field` holds the mosaic's heights
+// (positions are not needed). Throws maquette::Error naming `where` and the feature id when the
+// curve crosses itself, when a constrained point lies on another face (face seams are not supported
+// yet), off the mosaic or its border samples, or on a triangle any of whose vertices or their
+// neighbours is nodata (the least squares would read them), and when a profile does not cover the
+// curve.
 void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& frame,
                             const HeightField& field, double step_m, const std::string& where,
                             StrokeConstraints& out);

@@ -174,10 +174,10 @@ TEST(DeformExamples, VirginRiverBedFollowsTheStroke) {
       points, rms * 1000, worst * 1000, lowered, raised);
   EXPECT_GT(points, 3000);
   EXPECT_LE(rms, 0.02);
-  EXPECT_LE(worst, 0.12);
+  EXPECT_LE(worst, 0.16);  // at a bend of the curve
   // The bed (20 m wide, 7.3 km) covers ~1,900 samples of 77 m2.
   EXPECT_GT(lowered, 1500);
-  EXPECT_LE(raised, 3.0);
+  EXPECT_LE(raised, 2.0);  // no spike: the vertices beyond the band are held
 }
 
 TEST(DeformExamples, RainierLakeFillsToTheSpillLevel) {
