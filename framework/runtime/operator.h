@@ -79,6 +79,11 @@ struct OperatorSpec {
   // runs it on the region's cells overlapping the footprint too, with an all-NaN input tile (and
   // the neighbours' halo); on the input's tiles only when the input has no footprint.
   bool fills_footprint = false;
+  // A region operator whose mosaic may span rHEALPix faces: the runner then pastes the cells of up
+  // to three faces into one plane unfolded around an anchor face (Mosaic, core/unfolded_faces.h)
+  // instead of refusing cells of several faces. Its operator must place samples through that
+  // unfolding (Mosaic::face is the anchor; origin_col/row may lie beyond its edges).
+  bool spans_faces = false;
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
   // items, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
@@ -200,7 +205,10 @@ class ReduceOperator : public Operator {
 };
 
 // A mosaic: the tiles of a region's cells pasted into one raster on one face. `origin_col/row`
-// are the global face pixel coordinates of mosaic pixel (0, 0).
+// are the global face pixel coordinates of mosaic pixel (0, 0). For an operator that spans faces
+// (OperatorSpec::spans_faces), the raster is the plane unfolded around `face`, the anchor
+// (core/unfolded_faces.h): origin_col/row are anchor-frame coordinates, and a neighbour face's
+// tiles lie beyond the anchor's edge, turned as the faces meet; samples of no step cell are NaN.
 struct Mosaic {
   int face = 0;
   int level = 0;  // pixel level: cell level + log2(tile size)

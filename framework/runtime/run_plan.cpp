@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/region.h"
 #include "core/tile.h"
+#include "core/unfolded_faces.h"
 #include "runtime/artifact_refs.h"
 
 namespace maquette {
@@ -56,10 +57,10 @@ class Planner {
         sp.inputs.empty() ? cells_near(sp.features) : tiles_in_region(sp.inputs.front().second);
     if (spec.fills_footprint && !sp.inputs.empty())
       cells = with_footprint_cells(std::move(cells), sp.inputs.front().second);
-    if (spec.kind == OperatorKind::Region) {
-      check_one_face(step, cells);
-      sp.mosaic = mosaic_box(step, cells, sp.tile_size);
-    }
+    if (spec.kind == OperatorKind::Region)
+      sp.mosaic = mosaic_box(step, cells,
+                             spec.spans_faces ? anchor_face(step, cells) : one_face(step, cells),
+                             sp.tile_size);
     const int out_tile_size = output_tile_size(step, sp.tile_size);
     for (const auto& out : spec.outputs) {
       const auto it = step.outputs.find(out.name);
@@ -267,26 +268,78 @@ class Planner {
     return size;
   }
 
-  static void check_one_face(const PipelineStep& step, const std::vector<CellId>& cells) {
+  static int one_face(const PipelineStep& step, const std::vector<CellId>& cells) {
     if (!cells.empty() && cells.front().face() != cells.back().face())
       throw Error(step.label() +
                   ": a region operator needs all cells on one face, but they span faces " +
                   CellId::FromFace(cells.front().face()).ToText() + " to " +
                   CellId::FromFace(cells.back().face()).ToText());
+    return cells.empty() ? 0 : cells.front().face();
   }
 
-  // Checked before anything runs, so that a huge mosaic is refused before it is allocated.
-  static MosaicBox mosaic_box(const PipelineStep& step, const std::vector<CellId>& cells,
+  // The face a mosaic over several faces is unfolded around: the first (by id) that shares an
+  // edge with each of the others, which share none among themselves (two that did would meet
+  // the anchor at a corner, with a gap between them in the plane). The same for any tiling of
+  // the same ground.
+  static int anchor_face(const PipelineStep& step, const std::vector<CellId>& cells) {
+    std::vector<CellId> first_of_face;  // cells sorted by id, so by face
+    for (const CellId c : cells)
+      if (first_of_face.empty() || first_of_face.back().face() != c.face())
+        first_of_face.push_back(c);
+    const Grid& grid = default_grid();
+    const auto adjacent = [&](size_t i, size_t j) {
+      return UnfoldedFaces::adjacent(grid, first_of_face[i].face(), first_of_face[j].face());
+    };
+    const size_t n = first_of_face.size();
+    for (size_t a = 0; a < n; ++a) {
+      bool fits = true;
+      for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j)
+          fits = fits && (i == a || j == a ? adjacent(i, j) : !adjacent(i, j));
+      if (fits) return first_of_face[a].face();
+    }
+    const auto named = [&](size_t i) {
+      const CellId c = first_of_face[i];
+      return c.ToText() + " (face " + CellId::FromFace(c.face()).ToText() + ")";
+    };
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = i + 1; j < n; ++j)
+        for (size_t k = j + 1; k < n; ++k)
+          if (adjacent(i, j) && adjacent(j, k) && adjacent(i, k))
+            throw Error(step.label() + ": the region's cells " + named(i) + ", " + named(j) +
+                        " and " + named(k) +
+                        " lie on three faces meeting at a corner, which leave a gap when unfolded "
+                        "into one plane: split the region there");
+    std::string faces;
+    for (size_t i = 0; i < n; ++i) faces += (i == 0 ? "" : ", ") + named(i);
+    throw Error(step.label() + ": the region's cells " + faces +
+                " lie on faces that no one face and the neighbours across its edges hold: split "
+                "the region");
+  }
+
+  // Checked before anything runs, so that a huge mosaic is refused before it is allocated. The
+  // box of the cells' tiles in the plane unfolded around `face` (just `face` when they lie on it).
+  static MosaicBox mosaic_box(const PipelineStep& step, const std::vector<CellId>& cells, int face,
                               int tile_size) {
     if (cells.empty()) return {};
-    uint32_t col0 = UINT32_MAX, row0 = UINT32_MAX, col1 = 0, row1 = 0;
+    const UnfoldedFaces plane(default_grid(), face,
+                              cells.front().level() + log2_tile_size(tile_size));
+    int64_t col0 = INT64_MAX, row0 = INT64_MAX, col1 = INT64_MIN, row1 = INT64_MIN;
     for (const CellId c : cells) {
-      col0 = std::min(col0, c.col());
-      row0 = std::min(row0, c.row());
-      col1 = std::max(col1, c.col());
-      row1 = std::max(row1, c.row());
+      const auto place = plane.place_tile(c, tile_size);  // the anchor's faces have a place
+      for (const int64_t i : {int64_t(0), int64_t(tile_size - 1)}) {
+        const int64_t col = place->first[0] + i * (place->col_step[0] + place->row_step[0]);
+        const int64_t row = place->first[1] + i * (place->col_step[1] + place->row_step[1]);
+        col0 = std::min(col0, col), row0 = std::min(row0, row);
+        col1 = std::max(col1, col), row1 = std::max(row1, row);
+      }
     }
-    const MosaicBox box{col0, row0, int64_t(std::max(col1 - col0, row1 - row0)) + 1};
+    // Tiles lie on whole cells of the unfolded plane: their corners divide by the tile size.
+    const auto cell_of = [&](int64_t pixel) {
+      return pixel >= 0 ? pixel / tile_size : -((-pixel - 1) / tile_size) - 1;
+    };
+    const MosaicBox box{face, cell_of(col0), cell_of(row0),
+                        std::max(col1 - col0, row1 - row0) / tile_size + 1};
     // A refined step's output mosaic is the largest.
     if (const int64_t side = (box.cells * tile_size) << step.refine; side > kMaxMosaicSide)
       throw Error(step.label() + ": the region's mosaic would be " + std::to_string(side) + " x " +

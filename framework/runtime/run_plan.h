@@ -17,10 +17,12 @@
 
 namespace maquette {
 
-// A region step's square mosaic: the bounding box of its cells on their face, `cells` cells a
-// side from cell (col0, row0).
+// A region step's square mosaic: the bounding box of its cells on face `face`, `cells` cells a
+// side from cell (col0, row0). For an operator that spans faces, `face` is the anchor its cells
+// are unfolded around (core/unfolded_faces.h) and (col0, row0) may lie beyond its edges.
 struct MosaicBox {
-  uint32_t col0 = 0, row0 = 0;
+  int face = 0;
+  int64_t col0 = 0, row0 = 0;
   int64_t cells = 0;
 };
 
@@ -67,8 +69,9 @@ TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 // Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
 // store does not exist yet) nor written by an earlier step, a layer of the wrong kind for its port
 // (a raster layer given to a features port, or the reverse), raster inputs of one step at
-// different levels or tile sizes, a region operator over cells of several faces or with a mosaic
-// side above kMaxMosaicSide.
+// different levels or tile sizes, a region operator over cells of several faces (or, for one that
+// spans faces, of faces that no face and its edge neighbours hold, or of three faces meeting at a
+// corner) or with a mosaic side above kMaxMosaicSide.
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
 
 // The dry-run report: steps, cell counts and the layers to be written.

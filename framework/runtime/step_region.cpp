@@ -2,24 +2,42 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/unfolded_faces.h"
 #include "runtime/step_exec.h"
 
 namespace maquette {
 namespace {
 
-// Copies `src` (no halo) into `dst` with its top-left at (col, row), or the reverse.
-void paste(const Tile<float>& src, Tile<float>& dst, int64_t col, int64_t row) {
+// Where a cell's tile lies in the region's mosaic: its pixel (c, r) at mosaic sample
+// first + c * col_step + r * row_step (turned when its face is not the mosaic's anchor).
+using TilePlace = UnfoldedFaces::TilePlace;
+
+TilePlace mosaic_place(const UnfoldedFaces& plane, const Mosaic& mosaic, CellId cell, int size) {
+  TilePlace p = *plane.place_tile(cell, size);  // the planner placed every cell
+  p.first = {p.first[0] - mosaic.origin_col, p.first[1] - mosaic.origin_row};
+  return p;
+}
+
+int mosaic_col(const TilePlace& at, int c, int r) {
+  return int(at.first[0] + c * at.col_step[0] + r * at.row_step[0]);
+}
+int mosaic_row(const TilePlace& at, int c, int r) {
+  return int(at.first[1] + c * at.col_step[1] + r * at.row_step[1]);
+}
+
+// Copies `src` (no halo) into `dst` at `at`, or the reverse.
+void paste(const Tile<float>& src, Tile<float>& dst, const TilePlace& at) {
   for (int r = 0; r < src.size(); ++r)
     for (int c = 0; c < src.size(); ++c)
       for (int k = 0; k < src.channels(); ++k)
-        dst.at(int(col) + c, int(row) + r, k) = src.at(c, r, k);
+        dst.at(mosaic_col(at, c, r), mosaic_row(at, c, r), k) = src.at(c, r, k);
 }
 
-void cut(const Tile<float>& src, Tile<float>& dst, int64_t col, int64_t row) {
+void cut(const Tile<float>& src, Tile<float>& dst, const TilePlace& at) {
   for (int r = 0; r < dst.size(); ++r)
     for (int c = 0; c < dst.size(); ++c)
       for (int k = 0; k < dst.channels(); ++k)
-        dst.at(c, r, k) = src.at(int(col) + c, int(row) + r, k);
+        dst.at(c, r, k) = src.at(mosaic_col(at, c, r), mosaic_row(at, c, r), k);
 }
 
 // The features of the port within its reach of any of `cells`, by id.
@@ -48,28 +66,27 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   const std::vector<CellId>& cells = plan.cells.cells();
   if (cells.empty()) return;
   const int n = plan.tile_size;
-  const auto [col0, row0, extent] = plan.mosaic;
+  const auto [face, col0, row0, extent] = plan.mosaic;
   const int side = int(extent * n);  // at most kMaxMosaicSide (checked by plan_run)
-  auto offset = [&](CellId c) {
-    return std::pair<int64_t, int64_t>(int64_t(c.col() - col0) * n, int64_t(c.row() - row0) * n);
-  };
 
   Mosaic input;
-  input.face = cells.front().face();
+  input.face = face;
   input.level = plan.level + log2_tile_size(n);
-  input.origin_col = int64_t(col0) * n;
-  input.origin_row = int64_t(row0) * n;
+  input.origin_col = col0 * n;
+  input.origin_row = row0 * n;
+  const UnfoldedFaces plane(default_grid(), face, input.level);
   Mosaic output = input;
   for (const auto& [port, layer] : plan.inputs) {
     Tile<float> mosaic(side, layer.channels, 0, NAN);
     for (const CellId c : cells)
       if (const auto tile = io.read(layer, c))
-        paste(*tile, mosaic, offset(c).first, offset(c).second);
+        paste(*tile, mosaic, mosaic_place(plane, input, c, n));
     input.layers.emplace(port, std::move(mosaic));
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);
   const int refine = plan.step->refine;
   refine_mosaic(output, refine);
+  const UnfoldedFaces out_plane(default_grid(), face, output.level);
   output.layers = io.blank_outputs(side << refine);
   for (const CellId c : cells) output.content.emplace(c, io.blank_content(c));
   try {
@@ -94,8 +111,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   std::vector<CellOutput> outputs;
   for (size_t i = 0; i < cells.size(); ++i) {
     for (auto& [port, tile] : tiles[i])
-      cut(output.layers.at(port), tile, offset(cells[i]).first << refine,
-          offset(cells[i]).second << refine);
+      cut(output.layers.at(port), tile, mosaic_place(out_plane, output, cells[i], n << refine));
     try {
       outputs.push_back(
           {cells[i], &tiles[i], io.encode_content(cells[i], output.content.at(cells[i]))});

@@ -33,6 +33,7 @@ OperatorSpec features_spec() {
   s.kind = OperatorKind::Region;
   // "refine": k, the deformed surface k levels of Loop subdivision finer (deform_levels.h).
   s.refinable = true;
+  s.spans_faces = true;  // MosaicFrame places samples across face seams
   s.inputs = {
       {"dem", "elevation (m)", false},
       {"strokes", "features layer with strokes of tool 'feature'", false, LayerKind::Features, 0}};

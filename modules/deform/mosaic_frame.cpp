@@ -1,7 +1,9 @@
 #include "mosaic_frame.h"
 
 #include <cmath>
+#include <string>
 
+#include "core/error.h"
 #include "core/halo.h"
 
 namespace maquette::deform {
@@ -16,11 +18,9 @@ constexpr double kEarthRadiusM = 6371008.8;
 MosaicFrame::MosaicFrame(const Grid& grid, int face, int pixel_level, int64_t origin_col,
                          int64_t origin_row, LonLat reference)
     : grid_(grid),
-      face_(face),
-      pixel_level_(pixel_level),
+      plane_(grid, face, pixel_level),
       origin_col_(origin_col),
       origin_row_(origin_row),
-      face_square_(grid.plane_square(CellId::FromFace(face))),
       tangent_plane_(reference.lat, reference.lon, 0) {}
 
 EastNorth2 MosaicFrame::local(LonLat p) const {
@@ -37,16 +37,23 @@ LonLat MosaicFrame::lonlat(EastNorth2 p) const {
 }
 
 LonLat MosaicFrame::sample_lonlat(int col, int row) const {
-  return pixel_centre(grid_, {face_, origin_col_ + col, origin_row_ + row}, pixel_level_);
+  const auto pixel = plane_.from_anchor(origin_col_ + col, origin_row_ + row);
+  if (!pixel)
+    throw Error("mosaic sample (" + std::to_string(col) + ", " + std::to_string(row) +
+                ") lies in no face of the plane unfolded around face " +
+                CellId::FromFace(plane_.anchor()).ToText());
+  return pixel_centre(grid_, *pixel, plane_.level());
 }
 
 std::optional<std::array<double, 2>> MosaicFrame::sample(LonLat p) const {
-  if (grid_.cell_from_point(p, 0).face() != face_) return std::nullopt;
+  const int face = grid_.cell_from_point(p, 0).face();
+  const PlaneSquare square = grid_.plane_square(CellId::FromFace(face));
   const PlanePoint q = grid_.forward(p);
-  const double pixels = std::ldexp(1.0, pixel_level_);
-  const double col = (q.x - face_square_.x_min) / face_square_.side * pixels - 0.5;
-  const double row = (face_square_.y_max - q.y) / face_square_.side * pixels - 0.5;
-  return std::array<double, 2>{col - double(origin_col_), row - double(origin_row_)};
+  const double pixels = std::ldexp(1.0, plane_.level());
+  const auto at = plane_.to_anchor(face, (q.x - square.x_min) / square.side * pixels - 0.5,
+                                   (square.y_max - q.y) / square.side * pixels - 0.5);
+  if (!at) return std::nullopt;
+  return std::array<double, 2>{(*at)[0] - double(origin_col_), (*at)[1] - double(origin_row_)};
 }
 
 }  // namespace maquette::deform

@@ -3,6 +3,10 @@
 // lon/lat to fractional sample coordinates of the mosaic (sample centres at integers). Strokes
 // are measured in metres there, and the height field's cotangent weights see the true shape of
 // rHEALPix's pixels (equal-area, not square away from the face centres).
+//
+// Across face seams the mosaic is the plane unfolded around its face (core/unfolded_faces.h, as
+// the runner pastes it): a sample beyond the face's edge is the neighbour face's pixel laid
+// there, and a lon/lat on a neighbour face maps to its place in that plane.
 #pragma once
 
 #include <GeographicLib/LocalCartesian.hpp>
@@ -10,6 +14,7 @@
 #include <optional>
 
 #include "core/grid.h"
+#include "core/unfolded_faces.h"
 
 namespace maquette::deform {
 
@@ -23,15 +28,17 @@ class MosaicFrame {
 
   EastNorth2 local(LonLat p) const;
   LonLat lonlat(EastNorth2 p) const;
-  LonLat sample_lonlat(int col, int row) const;  // the centre of mosaic sample (col, row)
-  // Fractional mosaic sample coordinates (col, row) of `p`; nullopt when it lies on another face.
+  // The centre of mosaic sample (col, row); throws maquette::Error naming the sample when it lies
+  // in a gap of the unfolded plane (beyond a face corner) or beyond one face width.
+  LonLat sample_lonlat(int col, int row) const;
+  // Fractional mosaic sample coordinates (col, row) of `p`; nullopt when its face has no place in
+  // the unfolded plane (the face opposite the mosaic's).
   std::optional<std::array<double, 2>> sample(LonLat p) const;
 
  private:
   const Grid& grid_;
-  int face_, pixel_level_;
+  UnfoldedFaces plane_;
   int64_t origin_col_, origin_row_;
-  PlaneSquare face_square_;
   GeographicLib::LocalCartesian tangent_plane_;
 };
 

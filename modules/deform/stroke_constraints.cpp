@@ -20,11 +20,6 @@ bool segments_meet(EastNorth2 a, EastNorth2 b, EastNorth2 c, EastNorth2 d) {
          ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0) && !(d1 == 0 && d2 == 0 && d3 == 0);
 }
 
-Error seam_error(const std::string& where, const std::string& what, LonLat p) {
-  return Error(where + ": its " + what + " crosses onto another face of the grid at " +
-               lonlat_text(p) + " (face seams are not supported yet: split the stroke there)");
-}
-
 // Locates points of one stroke on the mosaic, with the checks the least squares needs.
 class Locator {
  public:
@@ -34,9 +29,9 @@ class Locator {
   SurfacePoint operator()(EastNorth2 p, const char* what) const {
     const LonLat ll = frame_.lonlat(p);
     const auto s = frame_.sample(ll);
-    if (!s) throw seam_error(where_, what, ll);
-    const double col = (*s)[0], row = (*s)[1];
-    // The triangle's vertices and their neighbours must lie in the mosaic.
+    // The triangle's vertices and their neighbours must lie in the mosaic (a point on a face
+    // without a place in its unfolded plane lies off it).
+    const double col = s ? (*s)[0] : NAN, row = s ? (*s)[1] : NAN;
     if (!(col >= 1 && row >= 1 && col < field_.width - 2 && row < field_.height - 2))
       throw Error(where_ + ": its " + what + " leaves the DEM (the step's region) at " +
                   lonlat_text(ll));
@@ -68,9 +63,6 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
   std::vector<EastNorth2> vertex;
   std::vector<double> vertex_z, along;
   for (size_t i = 0; i < stroke.curve.size(); ++i) {
-    // Before anything is located: a curve running onto another face would first leave the
-    // mosaic, which ends at the face's edge.
-    if (!frame.sample(stroke.curve[i])) throw seam_error(feature, "control curve", stroke.curve[i]);
     const EastNorth2 p = frame.local(stroke.curve[i]);
     if (!vertex.empty() && p == vertex.back()) continue;
     along.push_back(vertex.empty() ? 0

@@ -1,0 +1,63 @@
+// A grid's faces unfolded into one plane around an anchor face: the anchor's face pixel frame at
+// some level (col, row counted from its top-left corner) extended beyond its four edges, each face
+// across an edge laid there as it meets the anchor, turned by a multiple of 90 degrees. The turn
+// and offset of each neighbour are derived from Grid::wrap (so from the grid's own adjacency),
+// never assumed. In rHEALPix's default layout N sits above O unturned; P, Q, R are turned next to
+// N, and each equatorial face is unturned next to its equatorial neighbours.
+//
+// Only the four edge strips are filled: the quadrants diagonally beyond the anchor's corners are
+// gaps (three faces meet at a cube corner, so two neighbours there would overlap), and the face
+// opposite the anchor has no place.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "core/grid.h"
+
+namespace maquette {
+
+class UnfoldedFaces {
+ public:
+  // Throws maquette::Error for a level the grid does not wrap at, or level 0 (one pixel a face).
+  UnfoldedFaces(const Grid& grid, int anchor_face, int level);
+
+  int anchor() const { return anchor_; }
+  int level() const { return level_; }
+
+  // Whether `face` has a place: the anchor or one of its four edge neighbours.
+  bool places(int face) const;
+  // Whether two faces share an edge (whatever the anchor).
+  static bool adjacent(const Grid& grid, int a, int b);
+
+  // The anchor-frame coordinates of (col, row) of `face` (fractional, pixel centres at integers:
+  // the same rigid map takes pixels to pixels); nullopt when the face has no place.
+  std::optional<std::array<double, 2>> to_anchor(int face, double col, double row) const;
+  std::optional<FaceCoord> to_anchor(FaceCoord pixel) const;
+  // The face pixel at anchor-frame (col, row): the anchor's own inside it, a neighbour's in an edge
+  // strip; nullopt in the corner gaps and beyond one face width.
+  std::optional<FaceCoord> from_anchor(int64_t col, int64_t row) const;
+
+  // Where the tile of `cell` (`size` pixels a side, level() = cell level + log2(size)) lies: its
+  // pixel (c, r) at anchor-frame first + c * col_step + r * row_step; nullopt when its face has
+  // no place.
+  struct TilePlace {
+    std::array<int64_t, 2> first, col_step, row_step;
+  };
+  std::optional<TilePlace> place_tile(CellId cell, int size) const;
+
+ private:
+  // Face pixel p of a neighbour = at + turn * (q - strip), for anchor-frame q in its strip.
+  struct Placement {
+    int face = -1;
+    std::array<int64_t, 2> strip{}, at{};
+    std::array<std::array<int64_t, 2>, 2> turn{};  // rows of a rotation matrix
+  };
+
+  const Grid& grid_;
+  int anchor_, level_;
+  int64_t n_;
+  std::array<Placement, 4> edges_;  // top, right, bottom, left of the anchor
+};
+
+}  // namespace maquette

@@ -1,0 +1,240 @@
+// deform.features across rHEALPix face seams, on mosaics unfolded around face N as the runner
+// pastes them (core/unfolded_faces.h): a river running from face N into face O (O's tiles lie
+// below N unturned) and from face N into face P (P's tiles lie right of N, turned by 90
+// degrees). The deformed surface, evaluated on the samples' true positions (the grid's pixel
+// centres, by GeographicLib in a tangent plane), follows the stroke's Z on both sides of the seam
+// within the base level's tolerance, the cross section within 2 % of the depth, heights beyond the
+// field of influence keep their bits, and two tilings of the ground give the same bits.
+#include <gtest/gtest.h>
+
+#include <GeographicLib/LocalCartesian.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <numbers>
+
+#include "../operators.h"
+#include "core/error.h"
+#include "core/halo.h"
+#include "core/unfolded_faces.h"
+#include "sample_surface.h"
+
+namespace maquette::deform {
+namespace {
+
+constexpr int kCellLevel = 15, kTile = 256, kPixelLevel = kCellLevel + 8;  // ~1.2 m samples
+constexpr int kFaceN = 0;
+constexpr double kDepth = 5, kBottom = 6, kTop = 20;
+// The river, in metres east and north of the seam point: from 45 m north (face N) to 40 m south.
+constexpr double kE0 = -25, kN0 = 45, kE1 = 20, kN1 = -40;
+
+// Where the meridian `lon` leaves face N southwards (bisection on the latitude).
+LonLat seam_point(double lon) {
+  double south = 30, north = 50;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (south + north);
+    (default_grid().cell_from_point({lon, mid}, 0).face() == kFaceN ? north : south) = mid;
+  }
+  return {lon, 0.5 * (south + north)};
+}
+
+double terrain(double e, double n) {
+  return 1500 + 0.05 * e - 0.03 * n +
+         3 * std::sin(2 * std::numbers::pi * e / 80) * std::cos(2 * std::numbers::pi * n / 110);
+}
+
+double trapezoid(double o) {
+  const double a = std::abs(o);
+  return a <= kBottom ? 0 : kDepth * std::min(1.0, (a - kBottom) / (kTop - kBottom));
+}
+
+struct Seam {
+  explicit Seam(double lon) : site(seam_point(lon)), plane(site.lat, site.lon, 0) {}
+
+  LonLat site;
+  GeographicLib::LocalCartesian plane;
+  UnfoldedFaces unfolded{default_grid(), kFaceN, kPixelLevel};
+
+  LonLat lonlat(double e, double n) const {
+    double lat = 0, lon = 0, h = 0;
+    plane.Reverse(e, n, -(e * e + n * n) / 12742017.6, lat, lon, h);
+    return {lon, lat};
+  }
+  std::array<double, 2> local(LonLat p) const {
+    double e = 0, n = 0, u = 0;
+    plane.Forward(p.lat, p.lon, 0, e, n, u);
+    return {e, n};
+  }
+  std::array<double, 2> sample_local(const Mosaic& m, int c, int r) const {
+    const auto pixel = unfolded.from_anchor(m.origin_col + c, m.origin_row + r);
+    return local(pixel_centre(default_grid(), *pixel, kPixelLevel));
+  }
+
+  // The mosaic of `cells` x `cells` cells of the plane unfolded around N, the cell of N at the
+  // seam point `before` cells from its top-left; every sample the terrain at its pixel centre.
+  Mosaic dem(int before, int cells) const {
+    const PlaneSquare face = default_grid().plane_square(CellId::FromFace(kFaceN));
+    const PlanePoint p = default_grid().forward(lonlat(0, 1));  // on N, 1 m north of the seam
+    const double pixels = std::ldexp(1.0, kPixelLevel);
+    const auto cell_of = [&](double offset) {
+      return int64_t(std::floor(offset * pixels)) / kTile;
+    };
+    Mosaic m;
+    m.face = kFaceN;
+    m.level = kPixelLevel;
+    m.origin_col = (cell_of((p.x - face.x_min) / face.side) - before) * kTile;
+    m.origin_row = (cell_of((face.y_max - p.y) / face.side) - before) * kTile;
+    const int size = cells * kTile;
+    Tile<float> t(size, 1);
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < size; ++c) {
+        const auto q = sample_local(m, c, r);
+        t.at(c, r) = float(terrain(q[0], q[1]));
+      }
+    m.layers.emplace("dem", std::move(t));
+    return m;
+  }
+
+  double length() const { return std::hypot(kE1 - kE0, kN1 - kN0); }
+  std::array<double, 2> along(double s) const {
+    const double t = s / length();
+    return {kE0 + t * (kE1 - kE0), kN0 + t * (kN1 - kN0)};
+  }
+  // The river: a vertex every metre, its Z the terrain there less the depth; its Z between
+  // vertices is linear, as the stroke's.
+  double vertex_z(int k) const {
+    const auto p = along(double(k));
+    return terrain(p[0], p[1]) - kDepth;
+  }
+  double curve_z(double s) const {
+    const int k = std::min(int(std::floor(s)), int(length()) - 1);
+    return vertex_z(k) + (s - k) * (vertex_z(k + 1) - vertex_z(k));
+  }
+  VectorFeature river() const {
+    VectorFeature f;
+    f.id = 11;
+    f.geometry.type = GeometryType::LineString;
+    f.geometry.has_z = true;
+    f.geometry.lines.emplace_back();
+    for (int k = 0; k <= int(length()); ++k) {
+      const LonLat p = lonlat(along(k)[0], along(k)[1]);
+      f.geometry.lines[0].push_back({p.lon, p.lat, vertex_z(k)});
+    }
+    f.attributes = {
+        {"tool", "feature"},
+        {"cross_section", {{-kTop, kDepth}, {-kBottom, 0}, {kBottom, 0}, {kTop, kDepth}}}};
+    return f;
+  }
+};
+
+Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes) {
+  input.features["strokes"] = strokes;
+  Mosaic output = input;
+  output.features.clear();
+  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size(), 1, 0, NAN);
+  const json params = {{"energy_weight", 0.01}};
+  const auto op = make_features();
+  static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
+  return output.layers.at("dem");
+}
+
+struct SideErrors {
+  double control_rms = 0, near_seam_max = 0;
+  int points = 0;
+};
+
+// Runs the river across the seam at `lon`, checks it, and returns the output of the 3-cell mosaic.
+void expect_river_across(double lon, int beyond_face) {
+  const Seam seam(lon);
+  const Mosaic input = seam.dem(1, 3);
+  const VectorFeature river = seam.river();
+  const Tile<float> out = deform_run(input, {&river});
+  const SampleSurface surface([&](int c, int r) { return seam.sample_local(input, c, r); }, out);
+
+  // The control curve, per face (N, then the face beyond), away from the constraint points.
+  std::array<SideErrors, 2> side;
+  const double ce = (kE1 - kE0) / seam.length(), sn = (kN1 - kN0) / seam.length();
+  for (double s = 0.13; s < seam.length(); s += 0.37) {
+    const auto p = seam.along(s);
+    const int face = default_grid().cell_from_point(seam.lonlat(p[0], p[1]), 0).face();
+    ASSERT_TRUE(face == kFaceN || face == beyond_face) << face;
+    SideErrors& e = side[face == kFaceN ? 0 : 1];
+    const double d = surface.height(p[0], p[1]) - seam.curve_z(s);
+    e.control_rms += d * d;
+    ++e.points;
+    if (std::abs(p[1]) < 5) e.near_seam_max = std::max(e.near_seam_max, std::abs(d));
+  }
+  double section_sum = 0;
+  int section_count = 0;
+  for (double s = 0.4; s < seam.length(); s += 1.3)
+    for (double o = -kTop + 0.05; o < kTop; o += 0.7, ++section_count) {
+      const auto p = seam.along(s);  // positive offsets on the right of the direction of travel
+      const double d =
+          surface.height(p[0] + o * sn, p[1] - o * ce) - (seam.curve_z(s) + trapezoid(o));
+      section_sum += d * d;
+    }
+  const double section_rms = std::sqrt(section_sum / section_count);
+  for (size_t i = 0; i < 2; ++i) {
+    ASSERT_GT(side[i].points, 50);
+    side[i].control_rms = std::sqrt(side[i].control_rms / side[i].points);
+    EXPECT_LE(side[i].control_rms, 0.010) << i;
+    EXPECT_LE(side[i].near_seam_max, 0.010) << i;
+  }
+  std::printf(
+      "seam N-%c: control-curve RMS %.2f mm on N, %.2f mm beyond (max %.2f / %.2f mm within 5 m "
+      "of the seam), cross-section RMS %.3f %% of the depth\n",
+      CellId::kFaceLetters[size_t(beyond_face)], side[0].control_rms * 1000,
+      side[1].control_rms * 1000, side[0].near_seam_max * 1000, side[1].near_seam_max * 1000,
+      100 * section_rms / kDepth);
+  EXPECT_LE(section_rms, 0.02 * kDepth);
+
+  // Beyond the field of influence (2.5 m of margin) every sample keeps its bits.
+  const Tile<float>& dem = input.layers.at("dem");
+  int changed_outside = 0;
+  for (int r = 0; r < dem.size(); ++r)
+    for (int c = 0; c < dem.size(); ++c) {
+      const auto q = seam.sample_local(input, c, r);
+      const double s = std::clamp((q[0] - kE0) * ce + (q[1] - kN0) * sn, 0.0, seam.length());
+      const auto p = seam.along(s);
+      if (std::hypot(q[0] - p[0], q[1] - p[1]) > kTop + 2.5)
+        changed_outside += std::memcmp(&dem.at(c, r), &out.at(c, r), sizeof(float)) != 0;
+    }
+  EXPECT_EQ(changed_outside, 0);
+
+  // Another tiling: one cell more before and after; the shared samples keep their bits.
+  const Mosaic wide = seam.dem(2, 5);
+  const Tile<float> wide_out = deform_run(wide, {&river});
+  int differ = 0;
+  for (int r = 0; r < out.size(); ++r)
+    for (int c = 0; c < out.size(); ++c)
+      differ += std::memcmp(&out.at(c, r), &wide_out.at(c + kTile, r + kTile), sizeof(float)) != 0;
+  EXPECT_EQ(differ, 0);
+}
+
+TEST(DeformSeams, RiverFromFaceNIntoFaceO) {
+  expect_river_across(-130, 1);  // O's tiles lie below N's, unturned
+}
+
+TEST(DeformSeams, RiverFromFaceNIntoFacePTurned) {
+  expect_river_across(-40, 2);  // P's tiles lie right of N's, turned by 90 degrees
+}
+
+TEST(DeformSeams, RiverLeavingTheRegionAcrossASeamIsAnError) {
+  const Seam seam(-130);
+  VectorFeature river = seam.river();
+  const LonLat far = seam.lonlat(kE1, -400);  // on O, beyond the mosaic's row of O cells
+  river.geometry.lines[0].push_back({far.lon, far.lat, 1400});
+  std::string error;
+  try {
+    deform_run(seam.dem(1, 3), {&river});
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("inputs.strokes: feature 11: its control curve leaves the DEM (the step's "
+                       "region) at lon"),
+            std::string::npos)
+      << error;
+}
+
+}  // namespace
+}  // namespace maquette::deform

@@ -1,0 +1,132 @@
+// The faces unfolded around an anchor (core/unfolded_faces.h): the neighbour strips equal the
+// grid's own wrap on every pixel, to_anchor inverts from_anchor, the unturned N-O strip and the
+// turned N-P strip lie where PROJ's rhealpix puts the plane points (the P square turned about
+// the corner it shares with N), and across every seam of every anchor neighbouring samples are
+// as far apart on the ellipsoid (GeographicLib) as neighbours within a face.
+#include "core/unfolded_faces.h"
+
+#include <gtest/gtest.h>
+#include <proj.h>
+
+#include <GeographicLib/Geodesic.hpp>
+#include <cmath>
+
+#include "core/halo.h"
+#include "test_util.h"
+
+namespace maquette {
+namespace {
+
+constexpr int kLevel = 4;  // 16 pixels a face side
+constexpr int64_t kN = int64_t(1) << kLevel;
+
+TEST(UnfoldedFaces, StripsAreTheGridsWrapAndInvert) {
+  const Grid& grid = default_grid();
+  for (int anchor = 0; anchor < CellId::kNumFaces; ++anchor) {
+    const UnfoldedFaces plane(grid, anchor, kLevel);
+    int placed = 0;
+    for (int face = 0; face < CellId::kNumFaces; ++face) placed += plane.places(face);
+    EXPECT_EQ(placed, 5) << anchor;  // itself and its four edge neighbours, not the opposite face
+    for (int64_t row = -kN; row < 2 * kN; ++row)
+      for (int64_t col = -kN; col < 2 * kN; ++col) {
+        const auto p = plane.from_anchor(col, row);
+        const bool inside_col = col >= 0 && col < kN, inside_row = row >= 0 && row < kN;
+        if (!inside_col && !inside_row) {  // the corner gaps
+          EXPECT_FALSE(p) << anchor << " " << col << " " << row;
+          continue;
+        }
+        ASSERT_TRUE(p);
+        const auto wrapped = grid.wrap({anchor, col, row}, kLevel);
+        ASSERT_TRUE(wrapped);
+        EXPECT_EQ(p->face, wrapped->face);
+        EXPECT_EQ(p->col, wrapped->col) << anchor << " " << col << " " << row;
+        EXPECT_EQ(p->row, wrapped->row) << anchor << " " << col << " " << row;
+        const auto back = plane.to_anchor(*p);
+        ASSERT_TRUE(back);
+        EXPECT_EQ(back->col, col);
+        EXPECT_EQ(back->row, row);
+      }
+    EXPECT_FALSE(plane.from_anchor(2 * kN, 0));
+    EXPECT_FALSE(plane.from_anchor(0, -kN - 1));
+  }
+  EXPECT_TRUE(UnfoldedFaces::adjacent(grid, 0, 1));   // N, O
+  EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 0, 5));  // N, S
+  EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 1, 3));  // O, Q
+}
+
+// Anchor N: the strip below it is O's plane as PROJ lays it (N sits above O); the strip right of
+// it is P's square turned by 90 degrees about N's bottom-right corner, where N, O and P meet.
+TEST(UnfoldedFaces, NeighbourStripsLieWherePROJPutsThem) {
+  const Grid& grid = default_grid();
+  PJ_CONTEXT* ctx = proj_context_create();
+  PJ* pj = proj_create(ctx, "+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0");
+  ASSERT_NE(pj, nullptr);
+  const auto proj_inverse = [&](double x, double y) {
+    const PJ_COORD c = proj_trans(pj, PJ_INV, proj_coord(x, y, 0, 0));
+    return LonLat{c.lp.lam * 180 / M_PI, c.lp.phi * 180 / M_PI};
+  };
+  const PlaneSquare n_face = grid.plane_square(CellId::FromFace(0));
+  const double pixel = n_face.side / double(kN);
+  const double corner_x = n_face.x_min + n_face.side, corner_y = n_face.y_max - n_face.side;
+  const UnfoldedFaces plane(grid, 0, kLevel);
+  double worst_m = 0;
+  for (int64_t i = 0; i < kN; ++i)
+    for (int64_t depth = 0; depth < kN; ++depth) {
+      // Below N: anchor-frame (i, kN + depth), the plane point straight down.
+      const LonLat below = pixel_centre(grid, *plane.from_anchor(i, kN + depth), kLevel);
+      EXPECT_EQ(plane.from_anchor(i, kN + depth)->face, 1);
+      const LonLat below_proj = proj_inverse(n_face.x_min + (double(i) + 0.5) * pixel,
+                                             n_face.y_max - (double(kN + depth) + 0.5) * pixel);
+      // Right of N: anchor-frame (kN + depth, i), the plane point (dx, dy) from the corner turned
+      // clockwise by 90 degrees to (dy, -dx), into P's square.
+      const LonLat right = pixel_centre(grid, *plane.from_anchor(kN + depth, i), kLevel);
+      EXPECT_EQ(plane.from_anchor(kN + depth, i)->face, 2);
+      const double dx = (double(depth) + 0.5) * pixel;
+      const double dy = n_face.side - (double(i) + 0.5) * pixel;
+      const LonLat right_proj = proj_inverse(corner_x + dy, corner_y - dx);
+      worst_m = std::max(
+          {worst_m, test::distance_m(below, below_proj), test::distance_m(right, right_proj)});
+    }
+  proj_destroy(pj);
+  proj_context_destroy(ctx);
+  EXPECT_LT(worst_m, 0.01);  // PROJ's inverse solves the authalic latitude to ~2e-8 degrees
+}
+
+// Across each seam of each anchor, the geodesic distance between anchor-frame neighbours (one
+// pixel each side of the edge) is within 0.7..1.4 of that between the neighbours one pixel
+// inside on either side: a wrong turn or offset would put them up to a face width apart.
+TEST(UnfoldedFaces, NeighboursAcrossEverySeamAreNeighboursOnTheEllipsoid) {
+  const Grid& grid = default_grid();
+  const GeographicLib::Geodesic& wgs84 = GeographicLib::Geodesic::WGS84();
+  const auto metres = [&](const UnfoldedFaces& plane, int64_t c0, int64_t r0, int64_t c1,
+                          int64_t r1) {
+    const LonLat a = pixel_centre(grid, *plane.from_anchor(c0, r0), kLevel);
+    const LonLat b = pixel_centre(grid, *plane.from_anchor(c1, r1), kLevel);
+    double s = 0;
+    wgs84.Inverse(a.lat, a.lon, b.lat, b.lon, s);
+    return s;
+  };
+  double lowest = 10, highest = 0;
+  for (int anchor = 0; anchor < CellId::kNumFaces; ++anchor) {
+    const UnfoldedFaces plane(grid, anchor, kLevel);
+    for (int64_t i = 0; i < kN; ++i) {
+      // (col, row) one step outward and the step itself, for the four edges.
+      const std::array<std::array<int64_t, 4>, 4> seams = {
+          {{i, 0, 0, -1}, {kN - 1, i, 1, 0}, {i, kN - 1, 0, 1}, {0, i, -1, 0}}};
+      for (const auto& [c, r, dc, dr] : seams) {
+        const double across = metres(plane, c, r, c + dc, r + dr);
+        const double inside = metres(plane, c - dc, r - dr, c, r);
+        const double beyond = metres(plane, c + dc, r + dr, c + 2 * dc, r + 2 * dr);
+        const double ratio = across / (0.5 * (inside + beyond));
+        lowest = std::min(lowest, ratio);
+        highest = std::max(highest, ratio);
+      }
+    }
+  }
+  EXPECT_GT(lowest, 0.7);
+  EXPECT_LT(highest, 1.4);
+  RecordProperty("seam_ratio_range", std::to_string(lowest) + ".." + std::to_string(highest));
+}
+
+}  // namespace
+}  // namespace maquette
