@@ -1,5 +1,6 @@
 #include "stroke.h"
 
+#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -9,6 +10,64 @@
 
 namespace maquette::deform {
 namespace {
+
+using Point2 = std::array<double, 2>;
+
+double cross(Point2 a, Point2 b) { return a[0] * b[1] - a[1] * b[0]; }
+double dot(Point2 a, Point2 b) { return a[0] * b[0] + a[1] * b[1]; }
+Point2 minus(Point2 a, Point2 b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+double point_segment_distance(Point2 p, Point2 a, Point2 b) {
+  const Point2 ab = minus(b, a), ap = minus(p, a);
+  const double t = std::clamp(dot(ap, ab) / dot(ab, ab), 0.0, 1.0);
+  return std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+}
+
+// Distance between segments ab and cd (non-degenerate): 0 when they cross.
+double segment_distance(Point2 a, Point2 b, Point2 c, Point2 d) {
+  const double d1 = cross(minus(b, a), minus(c, a)), d2 = cross(minus(b, a), minus(d, a));
+  const double d3 = cross(minus(d, c), minus(a, c)), d4 = cross(minus(d, c), minus(b, c));
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return 0;
+  return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
+                   point_segment_distance(c, a, b), point_segment_distance(d, a, b)});
+}
+
+// Throws when the control curve comes within kSelfContactM of itself: two segments that are not
+// consecutive meet (cross, touch, or overlap collinearly), or a segment turns back over the one
+// before (more than a right angle, the shorter one's far end on the other). Segments are numbered
+// from 1 as in the LineString; zero-length ones are skipped. In metres, on the tangent plane of
+// the curve's first point.
+void check_self_contact(const std::vector<LonLat>& curve, const std::string& where) {
+  const GeographicLib::LocalCartesian plane(curve.front().lat, curve.front().lon, 0);
+  std::vector<Point2> at;
+  for (const LonLat& p : curve) {
+    double x = 0, y = 0, z = 0;
+    plane.Forward(p.lat, p.lon, 0, x, y, z);
+    at.push_back({x, y});
+  }
+  std::vector<size_t> segments;  // index of each non-degenerate segment's first point
+  for (size_t i = 0; i + 1 < at.size(); ++i)
+    if (at[i] != at[i + 1]) segments.push_back(i);
+  const auto fault = [&](size_t i, size_t j, const char* what) {
+    return Error(where + ": the control curve " + what + " (segments " +
+                 std::to_string(segments[i] + 1) + " and " + std::to_string(segments[j] + 1) + ")");
+  };
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const Point2 a = at[segments[i]], b = at[segments[i] + 1];
+    for (size_t j = i + 1; j < segments.size(); ++j) {
+      const Point2 c = at[segments[j]], d = at[segments[j] + 1];
+      if (j == i + 1) {  // consecutive (zero-length ones between skipped): they share b == c
+        const bool turns_back = dot(minus(b, a), minus(d, c)) < 0;
+        if (turns_back && std::min(point_segment_distance(d, a, b),
+                                   point_segment_distance(a, c, d)) <= kSelfContactM)
+          throw fault(i, j, "turns back over itself");
+      } else if (segment_distance(a, b, c, d) <= kSelfContactM) {
+        throw fault(i, j, "crosses itself");
+      }
+    }
+  }
+}
 
 Knots parse_knots(const nlohmann::json& value, const std::string& where) {
   if (!value.is_array() || value.size() < 2)
@@ -73,9 +132,16 @@ std::vector<FeatureStroke> feature_strokes(const FeatureList& features, const st
       throw Error(where + ": the control curve needs at least two distinct points");
     if (std::any_of(s.z.begin(), s.z.end(), [](double z) { return !std::isfinite(z); }))
       throw Error(where + ": a Z value of the control curve is not finite");
+    check_self_contact(s.curve, where);
     if (!a.contains("cross_section"))
       throw Error(where + ": no cross_section attribute ([[offset_m, dz_m]...])");
     s.cross_section = parse_knots(a["cross_section"], where + ": cross_section");
+    const double dz0 = piecewise_linear(s.cross_section, 0);
+    if (s.cross_section.front()[0] <= 0 && s.cross_section.back()[0] >= 0 &&
+        std::abs(dz0) > kCurveDzToleranceM)
+      throw Error(where + ": cross_section: dz at offset 0 is " + nlohmann::json(dz0).dump() +
+                  " m, but the control curve's elevation holds there: make it 0 (and move the "
+                  "curve, its Z or its profile, to where the section meets it)");
     if (a.contains("profile") && !a["profile"].is_null()) {
       if (!s.z.empty())
         throw Error(where + ": both Z values and a profile give the curve's elevation; keep one");

@@ -30,14 +30,23 @@ struct FeatureStroke {
   Knots cross_section;        // [offset_m, dz_m], at least two knots, offsets increasing
 };
 
-// The strokes of tool "feature" among `features` (other tools are left to other operators), in
-// the order given. Throws maquette::Error naming `port`, the feature id and the field at fault: a
-// geometry other than a LineString, fewer than two distinct points, a missing or malformed
-// cross_section or profile (not [[number, number]...] of finite numbers with strictly increasing
-// first members, fewer than two pairs), or both Z values and a profile.
+// How close (m, horizontally) a control curve may come to itself: closer counts as touching.
+inline constexpr double kSelfContactM = 0.01;
+// A cross section spanning offset 0 must have dz 0 there, within this (m): the control curve's
+// elevation holds at the curve, and a section disagreeing with it would fight it.
+inline constexpr double kCurveDzToleranceM = 1e-6;
+
 // "lon X, lat Y" to 8 significant digits, for messages naming where a stroke is at fault.
 std::string lonlat_text(LonLat p);
 
+// The strokes of tool "feature" among `features` (other tools are left to other operators), in
+// the order given. Throws maquette::Error naming `port`, the feature id and the field at fault: a
+// geometry other than a LineString, fewer than two distinct points, a control curve that crosses
+// or touches itself (non-consecutive segments within kSelfContactM, collinear overlaps included)
+// or turns back over its previous segment, a missing or malformed cross_section or profile (not
+// [[number, number]...] of finite numbers with strictly increasing first members, fewer than two
+// pairs), a cross section whose dz at offset 0 (within its offsets) is not 0, or both Z values
+// and a profile.
 std::vector<FeatureStroke> feature_strokes(const FeatureList& features, const std::string& port);
 
 }  // namespace maquette::deform

@@ -9,17 +9,6 @@
 namespace maquette::deform {
 namespace {
 
-double cross(EastNorth2 a, EastNorth2 b) { return a[0] * b[1] - a[1] * b[0]; }
-EastNorth2 minus(EastNorth2 a, EastNorth2 b) { return {a[0] - b[0], a[1] - b[1]}; }
-
-// Whether segments ab and cd share a point.
-bool segments_meet(EastNorth2 a, EastNorth2 b, EastNorth2 c, EastNorth2 d) {
-  const double d1 = cross(minus(b, a), minus(c, a)), d2 = cross(minus(b, a), minus(d, a));
-  const double d3 = cross(minus(d, c), minus(a, c)), d4 = cross(minus(d, c), minus(b, c));
-  return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) &&
-         ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0) && !(d1 == 0 && d2 == 0 && d3 == 0);
-}
-
 // Locates points of one stroke on the mosaic, with the checks the least squares needs.
 class Locator {
  public:
@@ -71,11 +60,6 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
     vertex.push_back(p);
     vertex_z.push_back(stroke.z.empty() ? NAN : stroke.z[i]);
   }
-  for (size_t i = 0; i + 1 < vertex.size(); ++i)
-    for (size_t j = i + 2; j + 1 < vertex.size(); ++j)
-      if (segments_meet(vertex[i], vertex[i + 1], vertex[j], vertex[j + 1]))
-        throw Error(feature + ": the control curve crosses itself (segments " +
-                    std::to_string(i + 1) + " and " + std::to_string(j + 1) + ")");
   const double length = along.back();
   if (!stroke.profile.empty() &&
       (stroke.profile.front()[0] > 0.01 * length || stroke.profile.back()[0] < 0.99 * length))

@@ -27,11 +27,10 @@ struct StrokeConstraints {
 };
 
 // Appends the constraints of `stroke` and its band to `out`. `field` holds the mosaic's heights
-// (positions are not needed). Throws maquette::Error naming `where` and the feature id when the
-// curve crosses itself, when a constrained point lies off the mosaic (across face seams: off the
-// plane it unfolds, MosaicFrame) or on its border samples, or on a triangle any of whose vertices or their
-// neighbours is nodata (the least squares would read them), and when a profile does not cover the
-// curve.
+// (positions are not needed). Throws maquette::Error naming `where` and the feature id when a
+// constrained point lies off the mosaic (across face seams: off the plane it unfolds, MosaicFrame)
+// or on its border samples, or on a triangle any of whose vertices or their neighbours is nodata
+// (the least squares would read them), and when a profile does not cover the curve.
 void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& frame,
                             const HeightField& field, double step_m, const std::string& where,
                             StrokeConstraints& out);
