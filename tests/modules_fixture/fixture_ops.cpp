@@ -3,7 +3,8 @@
 //   fixture.blur         cell, halo 1: 3x3 NaN-aware mean, so a result depends on neighbours;
 //   fixture.sum          reduce: float sum of a layer, merged in float, so merge order shows;
 //   fixture.region_scan  region: a running sum along each mosaic row (depends on the whole row);
-//   and the operators on features of fixture_features.cpp.
+//   and the operators on features of fixture_features.cpp and across face seams of
+//   fixture_seams.cpp.
 // fill and blur take sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
 // they throw on it and its descendants) and fail_with ("exception": a std::runtime_error, "int":
 // an int). They record the threads they run on: fixture_thread_count() (a C entry point the tests
@@ -18,6 +19,7 @@
 #include <thread>
 
 #include "fixture_features.h"
+#include "fixture_seams.h"
 #include "runtime/module_abi.h"
 
 namespace {
@@ -202,7 +204,9 @@ MAQUETTE_MODULE("fixture", "0.0.1", "Operators for the runtime tests",
                 {"fixture.region_features", &make_region_features},
                 {"fixture.features_total", &make_features_total},
                 {"fixture.content", &make_content},
-                {"fixture.region_content", &make_region_content})
+                {"fixture.region_content", &make_region_content},
+                {"fixture.pixel_lonlat", &make_pixel_lonlat},
+                {"fixture.region_seams", &make_region_seams})
 
 extern "C" __attribute__((visibility("default"))) size_t fixture_thread_count() {
   std::lock_guard lock(threads_mutex);
