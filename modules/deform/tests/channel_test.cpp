@@ -6,7 +6,6 @@
 // strokes that leave the DEM, cross nodata or cross themselves.
 #include <gtest/gtest.h>
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -14,10 +13,11 @@
 #include <numbers>
 
 #include "../mosaic_frame.h"
-#include "../operators.h"
 #include "core/error.h"
 #include "core/halo.h"
+#include "run_features.h"
 #include "sample_surface.h"
+#include "tangent_plane.h"
 
 namespace maquette::deform {
 namespace {
@@ -30,21 +30,12 @@ constexpr double kHeading = 30 * std::numbers::pi / 180;  // of the channel, fro
 
 using Surface = std::function<double(double east, double north)>;
 
-struct Fixture {
-  GeographicLib::LocalCartesian plane{kSite.lat, kSite.lon, 0};
+struct Fixture : TangentPlane {
+  Fixture() : TangentPlane(kSite) {}
+
   Surface surface;
   double e0 = -40, n0 = -30;  // the channel's start (m from the site)
 
-  LonLat lonlat(double e, double n) const {
-    double lat = 0, lon = 0, h = 0;
-    plane.Reverse(e, n, -(e * e + n * n) / 12742017.6, lat, lon, h);
-    return {lon, lat};
-  }
-  std::array<double, 2> local(LonLat p) const {
-    double e = 0, n = 0, u = 0;
-    plane.Forward(p.lat, p.lon, 0, e, n, u);
-    return {e, n};
-  }
   double curve_z(double s) const {
     return surface(e0 + s * std::cos(kHeading), n0 + s * std::sin(kHeading)) - kDepth;
   }
@@ -87,21 +78,6 @@ struct Fixture {
     return f;
   }
 };
-
-// Runs deform.features on `input` with `strokes`; returns the output mosaic's DEM (`refine`
-// levels finer).
-Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes,
-                       int refine = 0, json params = {{"energy_weight", 0.01}}) {
-  input.features["strokes"] = strokes;
-  Mosaic output = input;
-  output.features.clear();
-  output.level += refine;
-  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size() << refine, 1, 0, NAN);
-  params["subdivision"] = params.value("subdivision", "adaptive");
-  const auto op = make_features();
-  static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
-  return output.layers.at("dem");
-}
 
 struct Errors {
   double control_rms = 0, section_rms = 0;

@@ -7,17 +7,18 @@
 // field of influence keep their bits, and two tilings of the ground give the same bits.
 #include <gtest/gtest.h>
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <numbers>
 
-#include "../operators.h"
+#include "../mosaic_frame.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "core/unfolded_faces.h"
+#include "run_features.h"
 #include "sample_surface.h"
+#include "tangent_plane.h"
 
 namespace maquette::deform {
 namespace {
@@ -48,23 +49,12 @@ double trapezoid(double o) {
   return a <= kBottom ? 0 : kDepth * std::min(1.0, (a - kBottom) / (kTop - kBottom));
 }
 
-struct Seam {
-  explicit Seam(double lon) : site(seam_point(lon)), plane(site.lat, site.lon, 0) {}
+// The tangent plane at the seam point of meridian `lon`.
+struct Seam : TangentPlane {
+  explicit Seam(double lon) : TangentPlane(seam_point(lon)) {}
 
-  LonLat site;
-  GeographicLib::LocalCartesian plane;
   UnfoldedFaces unfolded{default_grid(), kFaceN, kPixelLevel};
 
-  LonLat lonlat(double e, double n) const {
-    double lat = 0, lon = 0, h = 0;
-    plane.Reverse(e, n, -(e * e + n * n) / 12742017.6, lat, lon, h);
-    return {lon, lat};
-  }
-  std::array<double, 2> local(LonLat p) const {
-    double e = 0, n = 0, u = 0;
-    plane.Forward(p.lat, p.lon, 0, e, n, u);
-    return {e, n};
-  }
   std::array<double, 2> sample_local(const Mosaic& m, int c, int r) const {
     const auto pixel = unfolded.from_anchor(m.origin_col + c, m.origin_row + r);
     return local(pixel_centre(default_grid(), *pixel, kPixelLevel));
@@ -126,17 +116,6 @@ struct Seam {
     return f;
   }
 };
-
-Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeature*>& strokes) {
-  input.features["strokes"] = strokes;
-  Mosaic output = input;
-  output.features.clear();
-  output.layers.at("dem") = Tile<float>(input.layers.at("dem").size(), 1, 0, NAN);
-  const json params = {{"energy_weight", 0.01}};
-  const auto op = make_features();
-  static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, input, output);
-  return output.layers.at("dem");
-}
 
 struct SideErrors {
   double control_rms = 0, near_seam_max = 0;
@@ -234,6 +213,21 @@ TEST(DeformSeams, RiverLeavingTheRegionAcrossASeamIsAnError) {
                        "region) at lon"),
             std::string::npos)
       << error;
+}
+
+// The quadrant diagonally beyond a corner of the anchor has no samples, the opposite face no place.
+TEST(DeformSeams, CornerGapAndOppositeFaceHaveNoPlace) {
+  const int64_t n = int64_t(1) << kPixelLevel;
+  const MosaicFrame frame(default_grid(), kFaceN, kPixelLevel, n, n, {-90, 41.9});
+  std::string error;
+  try {
+    frame.sample_lonlat(3, 4);
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(error, "mosaic sample (3, 4) lies in no face of the plane unfolded around face N");
+  EXPECT_FALSE(frame.sample({-130, -60}));  // on face S
+  EXPECT_TRUE(frame.sample({-130, 30}));    // on face O, below N
 }
 
 }  // namespace
