@@ -1,5 +1,6 @@
 #include "core/unfolded_faces.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -7,31 +8,37 @@
 namespace maquette {
 
 UnfoldedFaces::UnfoldedFaces(const Grid& grid, int anchor_face, int level)
-    : grid_(grid), anchor_(anchor_face), level_(level), n_(0) {
-  if (level < 1 || level > 60)
-    throw Error("unfolded faces: level " + std::to_string(level) + " is not in 1..60");
+    : anchor_(anchor_face), level_(level), n_(0) {
+  if (level < 0 || level > 60)
+    throw Error("unfolded faces: level " + std::to_string(level) + " is not in 0..60");
   n_ = int64_t(1) << level;
-  // Per edge (top, right, bottom, left): a pixel of its strip and the column and row steps that
-  // stay in the strip (n >= 2), from which the neighbour's rigid map is read off Grid::wrap.
-  const std::array<std::array<int64_t, 2>, 4> strip = {{{0, -1}, {n_, 0}, {0, n_}, {-1, 0}}};
+  // Per edge (top, right, bottom, left): a pixel of its strip, and the column and row steps that
+  // stay in the strip at a level of at least 2 pixels a side, where the neighbour's turn (the
+  // same at every level) is read off Grid::wrap.
+  const auto strip = [](int64_t n) {
+    return std::array<std::array<int64_t, 2>, 4>{{{0, -1}, {n, 0}, {0, n}, {-1, 0}}};
+  };
   const std::array<int64_t, 4> col_step = {1, 1, 1, -1}, row_step = {-1, 1, 1, 1};
+  const int turn_level = std::max(level, 1);
   for (size_t e = 0; e < 4; ++e) {
-    const auto wrapped = [&](int64_t dc, int64_t dr) {
-      const auto p = grid.wrap({anchor_face, strip[e][0] + dc, strip[e][1] + dr}, level);
+    const auto wrapped = [&](int at_level, int64_t dc, int64_t dr) {
+      const std::array<int64_t, 2> q = strip(int64_t(1) << at_level)[e];
+      const auto p = grid.wrap({anchor_face, q[0] + dc, q[1] + dr}, at_level);
       if (!p)
         throw Error("unfolded faces: the grid does not wrap beyond face " +
-                    std::to_string(anchor_face) + " at level " + std::to_string(level));
+                    std::to_string(anchor_face) + " at level " + std::to_string(at_level));
       return *p;
     };
-    const FaceCoord at = wrapped(0, 0), along = wrapped(col_step[e], 0),
-                    deeper = wrapped(0, row_step[e]);
+    const FaceCoord at = wrapped(level, 0, 0), corner = wrapped(turn_level, 0, 0),
+                    along = wrapped(turn_level, col_step[e], 0),
+                    deeper = wrapped(turn_level, 0, row_step[e]);
     Placement& p = edges_[e];
     p.face = at.face;
-    p.strip = strip[e];
+    p.strip = strip(n_)[e];
     p.at = {at.col, at.row};
     // Columns of the map: the images of a unit step in col and in row.
-    p.turn = {{{(along.col - at.col) * col_step[e], (deeper.col - at.col) * row_step[e]},
-               {(along.row - at.row) * col_step[e], (deeper.row - at.row) * row_step[e]}}};
+    p.turn = {{{(along.col - corner.col) * col_step[e], (deeper.col - corner.col) * row_step[e]},
+               {(along.row - corner.row) * col_step[e], (deeper.row - corner.row) * row_step[e]}}};
   }
 }
 

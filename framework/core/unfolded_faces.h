@@ -19,7 +19,7 @@ namespace maquette {
 
 class UnfoldedFaces {
  public:
-  // Throws maquette::Error for a level the grid does not wrap at, or level 0 (one pixel a face).
+  // Throws maquette::Error for a level outside 0..60 or one the grid does not wrap at.
   UnfoldedFaces(const Grid& grid, int anchor_face, int level);
 
   int anchor() const { return anchor_; }
@@ -54,7 +54,6 @@ class UnfoldedFaces {
     std::array<std::array<int64_t, 2>, 2> turn{};  // rows of a rotation matrix
   };
 
-  const Grid& grid_;
   int anchor_, level_;
   int64_t n_;
   std::array<Placement, 4> edges_;  // top, right, bottom, left of the anchor

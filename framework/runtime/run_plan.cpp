@@ -291,6 +291,7 @@ class Planner {
       return UnfoldedFaces::adjacent(grid, first_of_face[i].face(), first_of_face[j].face());
     };
     const size_t n = first_of_face.size();
+    if (n <= 1) return n == 0 ? 0 : first_of_face.front().face();
     for (size_t a = 0; a < n; ++a) {
       bool fits = true;
       for (size_t i = 0; i < n; ++i)

@@ -20,35 +20,42 @@ namespace {
 constexpr int kLevel = 4;  // 16 pixels a face side
 constexpr int64_t kN = int64_t(1) << kLevel;
 
+// Every pixel of the anchor's 3 x 3 face neighbourhood: the edge strips are the grid's wrap
+// and invert, the corner quadrants are gaps.
+void expect_strips_wrap(const Grid& grid, int anchor, int level) {
+  const int64_t n = int64_t(1) << level;
+  const UnfoldedFaces plane(grid, anchor, level);
+  int placed = 0;
+  for (int face = 0; face < CellId::kNumFaces; ++face) placed += plane.places(face);
+  EXPECT_EQ(placed, 5) << anchor;  // itself and its four edge neighbours, not the opposite face
+  for (int64_t row = -n; row < 2 * n; ++row)
+    for (int64_t col = -n; col < 2 * n; ++col) {
+      const auto p = plane.from_anchor(col, row);
+      const bool inside_col = col >= 0 && col < n, inside_row = row >= 0 && row < n;
+      if (!inside_col && !inside_row) {  // the corner gaps
+        EXPECT_FALSE(p) << anchor << " " << level << " " << col << " " << row;
+        continue;
+      }
+      ASSERT_TRUE(p) << anchor << " " << level << " " << col << " " << row;
+      const auto wrapped = grid.wrap({anchor, col, row}, level);
+      ASSERT_TRUE(wrapped);
+      EXPECT_EQ(p->face, wrapped->face);
+      EXPECT_EQ(p->col, wrapped->col) << anchor << " " << level << " " << col << " " << row;
+      EXPECT_EQ(p->row, wrapped->row) << anchor << " " << level << " " << col << " " << row;
+      const auto back = plane.to_anchor(*p);
+      ASSERT_TRUE(back);
+      EXPECT_EQ(back->col, col);
+      EXPECT_EQ(back->row, row);
+    }
+  EXPECT_FALSE(plane.from_anchor(2 * n, 0));
+  EXPECT_FALSE(plane.from_anchor(0, -n - 1));
+}
+
 TEST(UnfoldedFaces, StripsAreTheGridsWrapAndInvert) {
   const Grid& grid = default_grid();
-  for (int anchor = 0; anchor < CellId::kNumFaces; ++anchor) {
-    const UnfoldedFaces plane(grid, anchor, kLevel);
-    int placed = 0;
-    for (int face = 0; face < CellId::kNumFaces; ++face) placed += plane.places(face);
-    EXPECT_EQ(placed, 5) << anchor;  // itself and its four edge neighbours, not the opposite face
-    for (int64_t row = -kN; row < 2 * kN; ++row)
-      for (int64_t col = -kN; col < 2 * kN; ++col) {
-        const auto p = plane.from_anchor(col, row);
-        const bool inside_col = col >= 0 && col < kN, inside_row = row >= 0 && row < kN;
-        if (!inside_col && !inside_row) {  // the corner gaps
-          EXPECT_FALSE(p) << anchor << " " << col << " " << row;
-          continue;
-        }
-        ASSERT_TRUE(p);
-        const auto wrapped = grid.wrap({anchor, col, row}, kLevel);
-        ASSERT_TRUE(wrapped);
-        EXPECT_EQ(p->face, wrapped->face);
-        EXPECT_EQ(p->col, wrapped->col) << anchor << " " << col << " " << row;
-        EXPECT_EQ(p->row, wrapped->row) << anchor << " " << col << " " << row;
-        const auto back = plane.to_anchor(*p);
-        ASSERT_TRUE(back);
-        EXPECT_EQ(back->col, col);
-        EXPECT_EQ(back->row, row);
-      }
-    EXPECT_FALSE(plane.from_anchor(2 * kN, 0));
-    EXPECT_FALSE(plane.from_anchor(0, -kN - 1));
-  }
+  for (const int level : {0, 1, kLevel})
+    for (int anchor = 0; anchor < CellId::kNumFaces; ++anchor)
+      expect_strips_wrap(grid, anchor, level);
   EXPECT_TRUE(UnfoldedFaces::adjacent(grid, 0, 1));   // N, O
   EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 0, 5));  // N, S
   EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 1, 3));  // O, Q
