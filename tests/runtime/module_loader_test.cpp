@@ -84,7 +84,7 @@ TEST(OperatorRegistry, ListsModulesAsJsonAndText) {
   EXPECT_EQ(j[0]["name"], "fixture");
   EXPECT_EQ(j[0]["version"], "0.0.1");
   EXPECT_EQ(j[0]["file"], fixture_dir("good") + "/libfixture_ops.so");
-  ASSERT_EQ(j[0]["operators"].size(), 9u);
+  ASSERT_EQ(j[0]["operators"].size(), 11u);
   const auto& blur = j[0]["operators"][1];
   EXPECT_EQ(blur["name"], "fixture.blur");
   EXPECT_EQ(blur["kind"], "cell");
