@@ -15,6 +15,19 @@ bool StrokeBand::contains(EastNorth2 p) const {
     const double to = i + 2 == curve.size() ? length + end_margin_m : length;
     if (along >= from && along <= to && right >= offset_min && right <= offset_max) return true;
   }
+  // On the outer side of a bend a point can lie past one segment's end and before the next
+  // one's start, where no projection reaches: there the band is the disc sector around the
+  // vertex, the signed offset being the distance from the vertex, its sign the side of the turn.
+  for (size_t i = 1; i + 1 < curve.size(); ++i) {
+    const EastNorth2 v = curve[i];
+    const double in_x = v[0] - curve[i - 1][0], in_y = v[1] - curve[i - 1][1];
+    const double out_x = curve[i + 1][0] - v[0], out_y = curve[i + 1][1] - v[1];
+    const double dx = p[0] - v[0], dy = p[1] - v[1];
+    if (dx * in_x + dy * in_y <= 0 || dx * out_x + dy * out_y >= 0) continue;
+    const double distance = std::hypot(dx, dy);
+    const double offset = dx * in_y - dy * in_x >= 0 ? distance : -distance;
+    if (offset >= offset_min && offset <= offset_max) return true;
+  }
   return false;
 }
 

@@ -10,7 +10,9 @@ namespace maquette::deform {
 
 // A stroke's field of influence in the frame's metres: the points whose signed distance from a
 // segment of the curve (positive on the right of travel, measured perpendicular to the segment,
-// whose projection falls on it) lies within the cross section's offsets [offset_min, offset_max];
+// whose projection falls on it) lies within the cross section's offsets [offset_min, offset_max],
+// or, on the outer side of a bend where no segment's projection reaches (past one segment's end
+// and before the next one's start), whose distance from the vertex, signed by the side, does;
 // past the curve's ends, up to `end_margin_m` along it (the triangles that the end cross sections
 // cross reach beyond them: held there, the ends' sections could not be met).
 struct StrokeBand {

@@ -22,7 +22,7 @@ Ring open_ring(const Ring& ring) {
 }
 
 // Area integrals over a polygon, as a sum over the triangles (origin, p, q) of its edges:
-// integral of x^n over such a triangle is cross(p, q) * n! 2! / (n + 2)! * sum of x_p^j x_q^(n-j)
+// integral of x^n over such a triangle is cross(p, q) * n! / (n + 2)! * sum of x_p^j x_q^(n-j)
 // (barycentric monomials), whatever the ring's orientation once divided by the signed area.
 struct Integrals {
   double area = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0;

@@ -5,6 +5,7 @@
 #include <complex>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <unsupported/Eigen/FFT>
 
 namespace maquette::structures {
@@ -72,6 +73,9 @@ void add_rings(RingPower& a, const RingPower& b) {
 }
 
 double spacing_from_rings(const RingPower& rings, double pixel_m) {
+  if (rings.side < 16)
+    throw std::runtime_error("images of " + std::to_string(rings.side) +
+                             " pixels a side are too small to measure a spacing (16 at least)");
   std::vector<double> mean(rings.power.size());
   for (size_t k = 0; k < mean.size(); ++k) mean[k] = rings.power[k] / std::max(rings.count[k], 1.0);
   // Rings of spacings from a quarter of the side (4 cycles) down to 2.5 pixels.
@@ -80,6 +84,11 @@ double spacing_from_rings(const RingPower& rings, double pixel_m) {
       size_t(std::max_element(mean.begin() + lo, mean.begin() + hi + 1) - mean.begin());
   if (!(mean[peak] > 0)) throw std::runtime_error("the image is uniform: no crown to measure");
   const double a = mean[peak - 1], b = mean[peak], c = mean[peak + 1];
+  if (peak == lo || peak == hi || !(b > a && b > c))
+    throw std::runtime_error(
+        "the spectrum has no peak between spacings of " + std::to_string(rings.side / 4) +
+        " and 2.5 pixels (highest at " + std::to_string(peak) +
+        " cycles per image, an end of that range): " + "no crowns at a regular spacing to measure");
   const double offset = (a - c) / (2 * (a - 2 * b + c));  // the parabola's vertex, in (-0.5, 0.5)
   return pixel_m * rings.side / (double(peak) + offset);
 }

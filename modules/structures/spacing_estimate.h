@@ -8,8 +8,9 @@
 // is zero-padded to a square of a power of two and transformed (Eigen's FFT); the power is summed
 // in rings of width one frequency step. Ring sums of images of one size add up (Welch's method:
 // the tiles of a stroke, summed by a reduce step); the ring of the highest mean power between
-// spacings of 2.5 pixels and a quarter of the side, refined by a parabola through it and its
-// neighbours, gives the spacing.
+// spacings of 2.5 pixels and a quarter of the side, when it is a peak (above both neighbours,
+// not at an end of that range), refined by a parabola through it and its neighbours, gives the
+// spacing. Tested on synthetic images only (crowns, with and without a brightness gradient).
 #pragma once
 
 #include <vector>
@@ -39,8 +40,9 @@ RingPower ring_power(const std::vector<float>& image, int width, int height,
 // Adds `b` to `a` (the same side).
 void add_rings(RingPower& a, const RingPower& b);
 // The spacing in metres at the rings' peak; pixel_m: the images' PixelAxes::area_side() (1 for
-// the default axes: the spacing in pixels). Preconditions: side >= 16, pixel_m > 0. Throws
-// std::runtime_error when the images were uniform (no crown to see).
+// the default axes: the spacing in pixels). Precondition: pixel_m > 0. Throws
+// std::runtime_error when the side is under 16, the images were uniform, or the highest ring is
+// at an end of the range rather than a peak (no crowns at a regular spacing).
 double spacing_from_rings(const RingPower& rings, double pixel_m);
 
 // The spacing in metres of the crowns of one image: spacing_from_rings(ring_power(...)).

@@ -66,6 +66,10 @@ PlantLook plant_look(const VegetationParams& params, int64_t feature_id, PlanePo
 }
 
 uint32_t neighbourhood_colour(const Tile<float>& t, int col, int row) {
+  // A plant on the tile's edge (or owned within the edge's rounding margin) rounds to a pixel
+  // just beyond it: its neighbourhood is that of the nearest pixel of the tile.
+  col = std::clamp(col, 0, t.size() - 1);
+  row = std::clamp(row, 0, t.size() - 1);
   std::array<double, 3> sum{};
   std::array<int, 3> count{};
   for (int r = row - 1; r <= row + 1; ++r)

@@ -42,6 +42,7 @@ PlantLook plant_look(const VegetationParams& params, int64_t feature_id, PlanePo
 // bilinear height is core/tile_bilinear.h's bilinear().
 // RGBA8 (R in the low byte, alpha 255): the mean of the first three channels over the 3 x 3
 // pixels around (col, row) rounded, clamped to 0..255; NaN samples are left out (none: white).
+// (col, row) beyond the tile is taken to its nearest pixel. Precondition: t.halo() >= 1.
 uint32_t neighbourhood_colour(const Tile<float>& t, int col, int row);
 
 }  // namespace maquette::structures

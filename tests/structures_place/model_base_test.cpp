@@ -1,6 +1,7 @@
 // structures.place's model bases (model_base.h) against bases known by construction: the corners
 // of a box's floor, a plinth within 5 cm of the lowest vertex counted and a step above it not, the
-// interior and collinear points of the floor left out, and the models that have no base refused.
+// interior and collinear points of the floor left out, an L-shaped floor's outline (not its hull),
+// two legs' hull, and the models that have no base refused.
 #include "model_base.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +62,46 @@ TEST(PlaceModelBase, PlinthCountsStepAboveDoesNot) {
   const Ring base = model_base(m, "house");
   const Ring want = {{0, 0}, {2, 0}, {3, 1}, {2, 2}, {0, 2}};
   EXPECT_EQ(base, want);
+}
+
+// A prism of `height` over the counter-clockwise polygons `floors` (each a fan from its first
+// corner): floors facing down, roofs up, walls (their bottom corners on the floor, projecting to
+// nothing from above), as a closed outward mesh.
+MeshContent prism_of(const std::vector<Ring>& floors, float height) {
+  MeshContent m;
+  MeshObject& o = m.objects.emplace_back();
+  const auto vertex = [&](const Point2& p, float z) {
+    o.positions.insert(o.positions.end(), {float(p[0]), float(p[1]), z});
+    return uint32_t(o.positions.size() / 3 - 1);
+  };
+  for (const Ring& floor : floors) {
+    for (size_t i = 1; i + 1 < floor.size(); ++i) {
+      o.indices.insert(o.indices.end(),
+                       {vertex(floor[0], 0), vertex(floor[i + 1], 0), vertex(floor[i], 0)});
+      o.indices.insert(o.indices.end(), {vertex(floor[0], height), vertex(floor[i], height),
+                                         vertex(floor[i + 1], height)});
+    }
+    for (size_t i = 0; i < floor.size(); ++i) {
+      const Point2 &a = floor[i], &b = floor[(i + 1) % floor.size()];
+      o.indices.insert(o.indices.end(), {vertex(a, 0), vertex(b, 0), vertex(b, height)});
+      o.indices.insert(o.indices.end(), {vertex(a, 0), vertex(b, height), vertex(a, height)});
+    }
+  }
+  return m;
+}
+
+TEST(PlaceModelBase, ConcaveFloorIsItsOutlineNotItsHull) {
+  // An L of 3 m x 3 m arms 1 m wide: its six corners (a hull would add the notch's 2 m^2 and
+  // place the model sqrt(5 / 7) too small).
+  const Ring l = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  EXPECT_EQ(model_base(prism_of({l}, 4), "L"), l);
+}
+
+TEST(PlaceModelBase, FloorOfSeveralPiecesIsTheirHull) {
+  // Two legs 1 m apart: the stroke goes around both.
+  const Ring left = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, right = {{2, 0}, {3, 0}, {3, 1}, {2, 1}};
+  const Ring want = {{0, 0}, {3, 0}, {3, 1}, {0, 1}};
+  EXPECT_EQ(model_base(prism_of({left, right}, 2), "table"), want);
 }
 
 TEST(PlaceModelBase, ModelsWithoutBaseAreRefused) {

@@ -1,13 +1,15 @@
 // estimate_spacing (spacing_estimate.h) on synthetic orthophotos of crowns (dark green discs with
 // soft edges on bright ground, with pixel noise) at a known spacing: square lattices turned by an
-// angle, jittered, and seen through a polygon mask, each within +-10 %; and the rings of four
-// tiles summed (as structures.vegetation_spacing sums a stroke's tiles).
+// angle, jittered, and seen through a polygon mask, each within +-10 %; the rings of four tiles
+// summed (as structures.vegetation_spacing sums a stroke's tiles); a strong brightness gradient
+// over the crowns; a gradient alone, a uniform image and images too small refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -110,6 +112,35 @@ TEST(SpacingEstimate, PixelsNotSquareOnTheGround) {
   EXPECT_NEAR(estimate / spacing_m, 1, 0.1) << estimate;
   std::printf("pixels of %.3f x %.3f m: %.2f m through their axes, %.2f m as squares\n", px, py,
               estimate, estimate_spacing(image, width, width, 0.5));
+}
+
+// Brightness falling across the image (a slope's shading, haze) by far more than the crowns'
+// contrast: the crowns' peak still found; the gradient alone, with no crowns, refused.
+TEST(SpacingEstimate, ABrightnessGradientNeitherHidesNorFakesCrowns) {
+  const int width = 256;
+  const double pixel_m = 0.5, spacing_m = 9;
+  std::vector<float> image = orthophoto({spacing_m, 12, 0.1, false}, width, pixel_m, pixel_m);
+  std::vector<float> gradient(image.size());
+  for (int r = 0; r < width; ++r)
+    for (int c = 0; c < width; ++c) {
+      const size_t k = size_t(r) * size_t(width) + size_t(c);
+      gradient[k] = float(2.0 * c + 1.0 * r);
+      image[k] += gradient[k];
+    }
+  const double estimate = estimate_spacing(image, width, width, pixel_m);
+  EXPECT_NEAR(estimate / spacing_m, 1, 0.1) << estimate;
+  EXPECT_THROW(estimate_spacing(gradient, width, width, pixel_m), std::runtime_error);
+}
+
+TEST(SpacingEstimate, ImagesTooSmallAreRefused) {
+  std::vector<float> checkerboard(8 * 8);
+  for (size_t k = 0; k < checkerboard.size(); ++k) checkerboard[k] = float((k + k / 8) % 2);
+  try {
+    estimate_spacing(checkerboard, 8, 8, 1);
+    ADD_FAILURE() << "an 8 x 8 image was measured";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("too small"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SpacingEstimate, AUniformImageIsRefused) {
