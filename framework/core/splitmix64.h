@@ -30,4 +30,7 @@ constexpr uint64_t splitmix64_next(uint64_t& state) {
   return splitmix64_mix(state);
 }
 
+// A double uniform in [0, 1) from the top 53 bits of `bits` (e.g. splitmix64_next's output).
+constexpr double unit_interval(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
 }  // namespace maquette

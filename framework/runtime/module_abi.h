@@ -20,6 +20,9 @@
 //    output ports (OutputSpec::kind).
 // 8: content outputs written (CellContent in CellData::content and Mosaic::content,
 //    CellContext::owns).
+// 9: the layers the raster ports read (CellContext::input_layer, StepContext::input_layer: a
+//    DEM's vertical datum); region operators across rHEALPix face seams
+//    (OperatorSpec::spans_faces, a Mosaic unfolded around one face); refinable region steps.
 #define MAQUETTE_ABI_VERSION 9u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 

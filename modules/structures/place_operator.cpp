@@ -35,7 +35,8 @@ OperatorSpec place_spec() {
   strokes.name = "strokes";
   strokes.description =
       "features layer: closed strokes (Polygons or closed LineStrings) of tool 'place', "
-      "properties `model` (a model layer or builtin:* prototype) and optional `heading_deg`";
+      "properties `model` (a model layer or builtin:* prototype; or `object`) and optional "
+      "`heading_deg` (or `heading`)";
   strokes.kind = LayerKind::Features;
   s.inputs.push_back(strokes);
   OutputSpec instances;
@@ -59,6 +60,18 @@ struct PlaceStroke {
   std::vector<LonLat> ring;  // the outer ring
 };
 
+// The property `name` of the stroke, or its `alias`; nullptr when neither is there. Throws
+// maquette::Error when both are, with different values.
+const json* property(const VectorFeature& f, const std::string& where, const char* name,
+                     const char* alias) {
+  const auto a = f.attributes.find(name), b = f.attributes.find(alias);
+  if (a != f.attributes.end() && b != f.attributes.end() && *a != *b)
+    throw Error(where + ": properties '" + name + "' (" + a->dump() + ") and '" + alias + "' (" +
+                b->dump() + ") disagree: give one");
+  if (a != f.attributes.end()) return &*a;
+  return b != f.attributes.end() ? &*b : nullptr;
+}
+
 PlaceStroke place_stroke(const VectorFeature& f, const std::string& where) {
   PlaceStroke s;
   const Geometry& g = f.geometry;
@@ -73,13 +86,14 @@ PlaceStroke place_stroke(const VectorFeature& f, const std::string& where) {
     throw Error(where + ": a stroke of tool 'place' is closed (a Polygon, or a LineString ending " +
                 "where it begins), not this " + std::string(geometry_type_name(g.type)));
   for (const GeoPoint& p : *ring) s.ring.push_back({p.lon, p.lat});
-  const auto model = f.attributes.find("model");
-  if (model == f.attributes.end() || !model->is_string() || model->get<std::string>().empty())
+  // DESIGN.md's stroke convention names them `object` and `heading`: either name is taken.
+  const json* model = property(f, where, "model", "object");
+  if (!model || !model->is_string() || model->get<std::string>().empty())
     throw Error(where + ": property 'model' (the name of a model layer) is " +
-                (model == f.attributes.end() ? "missing" : "not a name: " + model->dump()));
+                (!model ? "missing" : "not a name: " + model->dump()));
   s.model = model->get<std::string>();
-  if (const auto heading = f.attributes.find("heading_deg");
-      heading != f.attributes.end() && !heading->is_null()) {
+  if (const json* heading = property(f, where, "heading_deg", "heading");
+      heading && !heading->is_null()) {
     if (!heading->is_number() || !std::isfinite(heading->get<double>()))
       throw Error(where +
                   ": property 'heading_deg' is not a number of degrees: " + heading->dump());

@@ -14,9 +14,6 @@ constexpr int kHaloBuckets = kPhases - 1;
 // half-open square); 4 slots keep the layout simple.
 constexpr int kSlots = 4;
 
-// A uniform double in [0, 1) from 53 bits of h.
-double unit(uint64_t h) { return double(h >> 11) * 0x1.0p-53; }
-
 // The buckets of the window grown by kHaloBuckets, with their kept points.
 class Buckets {
  public:
@@ -79,8 +76,8 @@ std::vector<PlanePoint> poisson_disk(const PolygonSet& region, double min_distan
       for (int64_t i = first(wi0 - grow, p % 3); i <= wi1 + grow; i += 3) {
         uint64_t state = splitmix64_mix(splitmix64_mix(seed_hash ^ uint64_t(i)) ^ uint64_t(j));
         for (int t = 0; t < kPoissonTries; ++t) {
-          const PlanePoint q{(double(i) + unit(splitmix64_next(state))) * r,
-                             (double(j) + unit(splitmix64_next(state))) * r};
+          const PlanePoint q{(double(i) + unit_interval(splitmix64_next(state))) * r,
+                             (double(j) + unit_interval(splitmix64_next(state))) * r};
           if (buckets.free(i, j, q, r2) && region.contains({q.x, q.y})) buckets.keep(i, j, q);
         }
       }

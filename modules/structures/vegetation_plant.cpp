@@ -12,8 +12,6 @@
 namespace maquette::structures {
 namespace {
 
-double unit(uint64_t h) { return double(h >> 11) * 0x1.0p-53; }
-
 std::array<double, 2> range(const nlohmann::json& params, const char* field, double lowest) {
   const nlohmann::json& v = params.at(field);
   if (v.size() != 2 || !(v[0].get<double>() <= v[1].get<double>()) || v[0].get<double>() < lowest)
@@ -50,17 +48,17 @@ PlantLook plant_look(const VegetationParams& params, int64_t feature_id, PlanePo
                      std::bit_cast<uint64_t>(at.y));
   PlantLook look;
   look.id = state;
-  const double pick = unit(splitmix64_next(state)) * params.cumulative_weight.back();
+  const double pick = unit_interval(splitmix64_next(state)) * params.cumulative_weight.back();
   look.prototype =
       uint16_t(std::min<size_t>(size_t(std::upper_bound(params.cumulative_weight.begin(),
                                                         params.cumulative_weight.end(), pick) -
                                        params.cumulative_weight.begin()),
                                 params.prototypes.size() - 1));
   look.scale = float(params.scale_min +
-                     unit(splitmix64_next(state)) * (params.scale_max - params.scale_min));
+                     unit_interval(splitmix64_next(state)) * (params.scale_max - params.scale_min));
   look.heading_rad =
       (params.heading_min_deg +
-       unit(splitmix64_next(state)) * (params.heading_max_deg - params.heading_min_deg)) *
+       unit_interval(splitmix64_next(state)) * (params.heading_max_deg - params.heading_min_deg)) *
       std::numbers::pi / 180;
   return look;
 }

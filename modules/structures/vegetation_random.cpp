@@ -12,8 +12,6 @@ namespace {
 
 using Triangle = std::array<PlanePoint2, 3>;
 
-double unit(uint64_t h) { return double(h >> 11) * 0x1.0p-53; }
-
 double area(const Triangle& t) {
   return std::abs((t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
                   (t[1][1] - t[0][1]) * (t[2][0] - t[0][0])) /
@@ -38,12 +36,12 @@ std::vector<PlanePoint> random_placement(const Footprint& polygon, double spacin
   out.reserve(count);
   uint64_t state = splitmix64_mix(seed);
   for (size_t k = 0; k < count; ++k) {
-    const double pick = unit(splitmix64_next(state)) * total;
+    const double pick = unit_interval(splitmix64_next(state)) * total;
     const size_t i =
         size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
     const Triangle& t = triangles[std::min(i, triangles.size() - 1)];
     // Uniform in the triangle: (u, v) in the unit square folded onto its lower half.
-    double u = unit(splitmix64_next(state)), v = unit(splitmix64_next(state));
+    double u = unit_interval(splitmix64_next(state)), v = unit_interval(splitmix64_next(state));
     if (u + v > 1) u = 1 - u, v = 1 - v;
     out.push_back({t[0][0] + u * (t[1][0] - t[0][0]) + v * (t[2][0] - t[0][0]),
                    t[0][1] + u * (t[1][1] - t[0][1]) + v * (t[2][1] - t[0][1])});

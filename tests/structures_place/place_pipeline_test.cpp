@@ -320,6 +320,27 @@ TEST(PlacePipeline, SquareStrokeIsAmbiguousNamingItsFeature) {
   EXPECT_NEAR(std::remainder(out.at(1).rotation + 30 * kPi / 180, 2 * kPi), 0, 1e-5);
 }
 
+// DESIGN.md's stroke convention names the properties `object` and `heading`: the same placement;
+// both names with different values refused.
+TEST(PlacePipeline, DesignNamesObjectAndHeadingAreTaken) {
+  std::mt19937 random(5);
+  const json square = stroke({0.3, 12, 0, 0, 2}, 128, random);
+  const Scene named(json::array({feature(square, {{"object", "box"}, {"heading", 30}})}));
+  ASSERT_EQ(named.run().exit_code, 0);
+  const std::map<int64_t, Placed> out = placed(named.store);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(std::remainder(out.at(1).rotation + 30 * kPi / 180, 2 * kPi), 0, 1e-5);
+
+  const Scene both(
+      json::array({feature(square, {{"model", "box"}, {"object", "crate"}, {"heading", 30}})}));
+  const CliResult r = both.run();
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("structures.place: feature 1: properties 'model' (\"box\") and 'object' "
+                       "(\"crate\") disagree"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(PlacePipeline, UnknownModelIsNamed) {
   std::mt19937 random(3);
   const Scene scene(

@@ -29,7 +29,7 @@ struct Scene {
 std::vector<float> orthophoto(const Scene& s, int width, double px, double py) {
   const double t = s.angle_deg * std::numbers::pi / 180, radius = 0.35 * s.spacing_m;
   uint64_t state = 42;
-  const auto unit = [&] { return double(splitmix64_next(state) >> 11) * 0x1.0p-53; };
+  const auto unit = [&] { return unit_interval(splitmix64_next(state)); };
   std::vector<float> image(size_t(width) * size_t(width));
   const double extent_x = width * px, extent_y = width * py;
   const int n = int(std::max(extent_x, extent_y) * 1.5 / s.spacing_m) + 2;
