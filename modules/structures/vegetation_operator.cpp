@@ -2,6 +2,7 @@
 #include <Eigen/Geometry>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "core/error.h"
@@ -147,6 +148,52 @@ void resolve_spacings(const CellContext& ctx, std::vector<VegetationStroke>& str
   }
 }
 
+// The params of a stroke's plants: the step's, with the stroke's own `prototypes` ({name:
+// weight}, DESIGN.md's stroke convention) and `scale` ([min, max]) in their place when it has
+// them. Throws maquette::Error naming the feature and field at fault.
+VegetationParams stroke_params(const json& step, const VegetationParams& step_params,
+                               const VegetationStroke& stroke) {
+  const json& a = stroke.feature->attributes;
+  const auto prototypes = a.find("prototypes"), scale = a.find("scale");
+  if (prototypes == a.end() && scale == a.end()) return step_params;
+  const std::string where =
+      "inputs.strokes: feature " + std::to_string(stroke.feature->id) + " (tool vegetation)";
+  json merged = step;
+  if (prototypes != a.end()) {
+    if (!prototypes->is_object() || prototypes->empty())
+      throw Error(where + ": field 'prototypes' is " + prototypes->dump() +
+                  ", not {name: weight, ...}");
+    merged["prototypes"] = json::array();
+    for (const auto& [name, weight] : prototypes->items()) {
+      if (!weight.is_number() || !(weight.get<double>() >= 0))
+        throw Error(where + ": field 'prototypes': the weight of '" + name + "' is " +
+                    weight.dump() + ", not a number >= 0");
+      merged["prototypes"].push_back({{"name", name}, {"weight", weight}});
+    }
+  }
+  if (scale != a.end()) {
+    if (!scale->is_array() || scale->size() != 2 || !(*scale)[0].is_number() ||
+        !(*scale)[1].is_number())
+      throw Error(where + ": field 'scale' is " + scale->dump() + ", not [min, max]");
+    merged["scale"] = *scale;
+  }
+  try {
+    return vegetation_params(merged);
+  } catch (const Error& e) {
+    throw Error(where + " (its own prototypes or scale): " + e.what());
+  }
+}
+
+// The index of prototype `name` in the content's list, added when new.
+uint16_t prototype_index(InstancesContent& content, const std::string& name) {
+  const auto it = std::find(content.prototypes.begin(), content.prototypes.end(), name);
+  if (it != content.prototypes.end()) return uint16_t(it - content.prototypes.begin());
+  if (content.prototypes.size() > 65535)
+    throw Error("structures.vegetation: more than 65,536 prototypes in one cell");
+  content.prototypes.push_back(name);
+  return uint16_t(content.prototypes.size() - 1);
+}
+
 class Vegetation : public CellOperator {
  public:
   const OperatorSpec& spec() const override {
@@ -175,8 +222,11 @@ class Vegetation : public CellOperator {
     const PlaneSquare square = ctx.grid->plane_square(ctx.cell);
     const double pixel = square.side / ctx.tile_size;
     std::vector<double> m(9);  // a plant's east-north-up axes in the content's frame
-    for (const VegetationStroke& stroke : strokes)
-      for (const PlanePoint& p : placed(params, stroke, cell_window(boundary, stroke))) {
+    for (const VegetationStroke& stroke : strokes) {
+      const VegetationParams own = stroke_params(*ctx.params, params, stroke);
+      std::vector<uint16_t> index;  // of the stroke's prototypes in the content's
+      for (const std::string& name : own.prototypes) index.push_back(prototype_index(out, name));
+      for (const PlanePoint& p : placed(own, stroke, cell_window(boundary, stroke))) {
         const LonLat ground = stroke.to_ground(p);
         const PlanePoint g = ctx.grid->forward(ground);
         if (!owned(ctx, square, g, ground)) continue;
@@ -185,14 +235,14 @@ class Vegetation : public CellOperator {
         const double terrain = bilinear(dem, col, row);
         if (std::isnan(terrain)) continue;  // no terrain: no plant
         const double height = to_ellipsoid(ground, terrain);
-        const PlantLook look = plant_look(params, stroke.feature->id, p);
+        const PlantLook look = plant_look(own, stroke.feature->id, p);
         double x = 0, y = 0, z = 0;
         frame.Forward(ground.lat, ground.lon, height, x, y, z, m);
         const Eigen::Quaterniond q =
             Eigen::Quaterniond(
                 Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(m.data())) *
             Eigen::AngleAxisd(look.heading_rad, Eigen::Vector3d::UnitZ());
-        out.prototype.push_back(look.prototype);
+        out.prototype.push_back(index[look.prototype]);
         out.position.insert(out.position.end(), {float(x), float(y), float(z)});
         out.rotation.insert(out.rotation.end(),
                             {float(q.x()), float(q.y()), float(q.z()), float(q.w())});
@@ -201,6 +251,7 @@ class Vegetation : public CellOperator {
             neighbourhood_colour(orthophoto, int(std::lround(col)), int(std::lround(row))));
         out.provenance.push_back({look.id, stroke.feature->id, kTool, json::object()});
       }
+    }
   }
 };
 

@@ -122,6 +122,7 @@ GeographicLib::LocalCartesian stroke_plane() {
 struct Plant {
   double lon, lat, h;
   uint16_t prototype;
+  std::string prototype_name;
   float scale;
   uint32_t colour;
 };
@@ -134,12 +135,13 @@ struct Scene {
   std::string store = dir + "/scene.mqt";
 
   Scene(int level, int tile_size, const json& spacing, json params,
-        const Layout& layout = kGradients) {
+        const Layout& layout = kGradients, const json& stroke_properties = json::object()) {
     write_raster(dir + "/dem.tif", layout, 1, GDT_Float32,
                  [](double lon, double lat, int) { return terrain(lon, lat); });
     write_raster(dir + "/ortho.tif", layout, 3, GDT_Byte, layout.orthophoto);
     json properties = {{"tool", "vegetation"}};
     if (!spacing.is_null()) properties["spacing_m"] = spacing;
+    properties.update(stroke_properties);
     json rings = {ring(layout.outer_m)};
     if (layout.inner_m > 0) rings.push_back(ring(layout.inner_m));
     const json strokes = {{"type", "FeatureCollection"},
@@ -192,6 +194,7 @@ struct Scene {
         frame.Reverse(c.position[3 * k], c.position[3 * k + 1], c.position[3 * k + 2], p.lat, p.lon,
                       p.h);
         p.prototype = c.prototype[k];
+        p.prototype_name = c.prototypes.at(c.prototype[k]);
         p.scale = c.scale[3 * k];
         p.colour = c.colour[k];
         EXPECT_TRUE(out.emplace(c.provenance[k].object_id, p).second) << "id twice";
@@ -260,6 +263,34 @@ TEST(VegetationPipeline, BlueNoiseOnTheTerrainInTheOrthophotosColours) {
   // Weights 3 : 1, binomial within 3 standard deviations.
   const double n = double(plants.size());
   EXPECT_NEAR(double(conifers), 0.75 * n, 3 * std::sqrt(n * 0.75 * 0.25));
+}
+
+// A stroke's own prototypes ({name: weight}) and scale (DESIGN.md's stroke convention) in place
+// of the step's: the same places, every plant of its prototypes and in its scale range; a weight
+// that is not a number refused, naming the feature and field.
+TEST(VegetationPipeline, StrokesOwnPrototypesAndScale) {
+  const Scene step(12, 64, kSpacingM, kParams);
+  ASSERT_EQ(step.run().exit_code, 0);
+  const json own = {{"prototypes", {{"builtin:shrub", 1}}}, {"scale", {2, 3}}};
+  const Scene scene(12, 64, kSpacingM, kParams, kGradients, own);
+  const CliResult r = scene.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto plants = scene.plants(), step_plants = step.plants();
+  ASSERT_EQ(plants.size(), step_plants.size());
+  for (const auto& [id, p] : plants) {
+    ASSERT_EQ(step_plants.count(id), 1u);
+    EXPECT_EQ(p.lon, step_plants.at(id).lon);
+    EXPECT_EQ(p.prototype_name, "builtin:shrub");
+    EXPECT_TRUE(p.scale >= 2 && p.scale <= 3) << p.scale;
+  }
+  const Scene bad(12, 64, kSpacingM, kParams, kGradients,
+                  {{"prototypes", {{"builtin:shrub", "many"}}}});
+  const CliResult e = bad.run();
+  EXPECT_NE(e.exit_code, 0);
+  EXPECT_NE(e.err.find("feature 1 (tool vegetation): field 'prototypes': the weight of "
+                       "'builtin:shrub' is \"many\""),
+            std::string::npos)
+      << e.err;
 }
 
 TEST(VegetationPipeline, SamePlantsForTwoTilingsAndThreadCounts) {
