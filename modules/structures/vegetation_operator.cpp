@@ -64,8 +64,11 @@ OperatorSpec vegetation_spec() {
   return s;
 }
 
-// The cell's bounding box in the stroke's plane: its boundary's points, grown by 1 m for the
-// bulge of its edges between them (a cell's edge is straight in the grid's plane, not here).
+// Where the cell's plants of a stroke can be, in the stroke's plane: the cell's bounding box (its
+// boundary's points, grown for the bulge of its edges between them: a cell's edge is straight in
+// the grid's plane, not here; 1 m and a thousandth of the box) clipped to the stroke's. The
+// plants do not depend on the window (poisson_disk.h): clipping only saves the darts of a small
+// stroke in a large cell.
 PlaneWindow cell_window(const std::vector<LonLat>& boundary, const VegetationStroke& stroke) {
   PlaneWindow w{1e300, 1e300, -1e300, -1e300};
   for (const LonLat& p : boundary) {
@@ -73,7 +76,14 @@ PlaneWindow cell_window(const std::vector<LonLat>& boundary, const VegetationStr
     w = {std::min(w.x_min, q.x), std::min(w.y_min, q.y), std::max(w.x_max, q.x),
          std::max(w.y_max, q.y)};
   }
-  return {w.x_min - 1, w.y_min - 1, w.x_max + 1, w.y_max + 1};
+  const double margin = 1 + 1e-3 * std::max(w.x_max - w.x_min, w.y_max - w.y_min);
+  PlaneWindow s{1e300, 1e300, -1e300, -1e300};
+  for (const auto& polygon : stroke.polygons)
+    for (const PlanePoint2& q : polygon.front())
+      s = {std::min(s.x_min, q[0]), std::min(s.y_min, q[1]), std::max(s.x_max, q[0]),
+           std::max(s.y_max, q[1])};
+  return {std::max(w.x_min - margin, s.x_min), std::max(w.y_min - margin, s.y_min),
+          std::min(w.x_max + margin, s.x_max), std::min(w.y_max + margin, s.y_max)};
 }
 
 // The stroke's plants in `window`: blue noise, or the paper's placement (every plant of the
