@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "building_mesh.h"
 #include "content/enu_transform.h"
 #include "core/error.h"
-#include "core/tile_bilinear.h"
 #include "gdal/vertical_datum.h"
 #include "gltf/prototype_library.h"
 #include "model_base.h"
@@ -26,7 +26,7 @@ OperatorSpec place_spec() {
       "footprint gives a model layer's rotation about the vertical, uniform scale and position; "
       "the terrain its base height";
   s.kind = OperatorKind::Cell;
-  s.halo = 1;  // the bilinear terrain at an instance's position near the cell's edge
+  s.halo = kDemHaloPixels;  // the terrain under a model's base reaching beyond the cell
   InputSpec dem;
   dem.name = "dem";
   dem.description = "terrain heights (m above the layer's vertical datum)";
@@ -136,16 +136,33 @@ class Place : public CellOperator {
       const PlaceFit fit = fit_place(plane.ring, base->second, options, where);
 
       // The model's origin: the instance's position, its anchor (content.h).
-      double lat = 0, lon = 0, ignored = 0;
-      GeographicLib::LocalCartesian(plane.origin.lat, plane.origin.lon, 0)
-          .Reverse(fit.offset[0], fit.offset[1], 0, lat, lon, ignored);
-      if (!ctx.owns({lon, lat})) continue;
-      const PlanePoint2 at = pixel(*ctx.grid, {lon, lat});
-      const double terrain = bilinear(dem, at[0] - 0.5, at[1] - 0.5);  // pixel centres
-      if (std::isnan(terrain))
-        throw Error(where + ": the DEM has no data at the model's position (" +
-                    std::to_string(lon) + ", " + std::to_string(lat) + ")");
-      const EnuOrigin position{lon, lat, to_ellipsoid({lon, lat}, terrain)};
+      const GeographicLib::LocalCartesian plane_frame(plane.origin.lat, plane.origin.lon, 0);
+      const auto ground = [&](const Point2& p) {
+        double lat = 0, lon = 0, ignored = 0;
+        plane_frame.Reverse(p[0], p[1], 0, lat, lon, ignored);
+        return LonLat{lon, lat};
+      };
+      const LonLat origin = ground(fit.offset);
+      if (!ctx.owns(origin)) continue;
+      // Its base stands on the lowest terrain under the placed base, as a building's does
+      // (terrain_base.h): on a slope nothing floats.
+      PixelRing base_pixels;
+      const double cos_r = std::cos(fit.rotation), sin_r = std::sin(fit.rotation);
+      for (const Point2& p : base->second)
+        base_pixels.push_back(
+            pixel(*ctx.grid, ground({fit.offset[0] + fit.scale * (cos_r * p[0] - sin_r * p[1]),
+                                     fit.offset[1] + fit.scale * (sin_r * p[0] + cos_r * p[1])})));
+      std::optional<float> terrain;
+      try {
+        terrain = lowest_terrain(dem, {base_pixels});
+      } catch (const InvalidFootprint& e) {
+        throw Error(where + ": the model's placed base is too large for the cell: " + e.what());
+      }
+      if (!terrain)
+        throw Error(where + ": the DEM has no data under the model's base at (" +
+                    std::to_string(origin.lon) + ", " + std::to_string(origin.lat) + ")");
+      const double lon = origin.lon, lat = origin.lat;
+      const EnuOrigin position{lon, lat, to_ellipsoid({lon, lat}, *terrain)};
 
       // Turned about the up of the position's own east-north-up frame, then in the content's.
       const EnuTransform to_content(position, out.origin);
