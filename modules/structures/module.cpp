@@ -7,4 +7,5 @@ MAQUETTE_MODULE("structures", "0.1.0",
                 {"structures.buildings", &maquette::structures::make_buildings},
                 {"structures.vegetation", &maquette::structures::make_vegetation},
                 {"structures.vegetation_spacing", &maquette::structures::make_vegetation_spacing},
-                {"structures.place", &maquette::structures::make_place})
+                {"structures.place", &maquette::structures::make_place},
+                {"structures.bridge", &maquette::structures::make_bridge})

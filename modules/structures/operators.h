@@ -14,5 +14,6 @@ std::unique_ptr<Operator> make_vegetation();
 // a stroke summed, whatever cell, thread or rank computed each).
 std::unique_ptr<Operator> make_vegetation_spacing();
 std::unique_ptr<Operator> make_place();
+std::unique_ptr<Operator> make_bridge();
 
 }  // namespace maquette::structures

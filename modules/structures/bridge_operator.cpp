@@ -1,0 +1,239 @@
+#include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "bridge_deck.h"
+#include "bridge_stroke.h"
+#include "content/enu_transform.h"
+#include "core/error.h"
+#include "core/halo.h"
+#include "core/polygon_set.h"
+#include "core/tile_bilinear.h"
+#include "gdal/vertical_datum.h"
+#include "operators.h"
+
+namespace maquette::structures {
+namespace {
+
+OperatorSpec bridge_spec() {
+  OperatorSpec s;
+  s.name = "structures.bridge";
+  s.description =
+      "Bridges from their two edge strokes (paper 002 §7, Fig. 16, tool 'bridge'): a deck whose "
+      "ends meet the terrain where the edges do, slanted along its length, with a thickness; and "
+      "its footprint as a mask for the clone brush";
+  s.kind = OperatorKind::Region;
+  InputSpec dem;
+  dem.name = "dem";
+  dem.description = "terrain heights (m above the layer's vertical datum)";
+  s.inputs.push_back(dem);
+  InputSpec strokes;
+  strokes.name = "strokes";
+  strokes.description =
+      "features layer: MultiLineStrings of two edges with tool 'bridge' (others left out)";
+  strokes.kind = LayerKind::Features;
+  s.inputs.push_back(strokes);
+  OutputSpec mesh;
+  mesh.name = "mesh";
+  mesh.description = "one closed mesh per bridge, in the cell owning its first edge's first point";
+  mesh.kind = LayerKind::Mesh;
+  s.outputs.push_back(mesh);
+  OutputSpec mask;
+  mask.name = "mask";
+  mask.description = "1 on the pixels whose centre lies under a deck, 0 elsewhere";
+  mask.dtype = DType::U8;
+  mask.semantics = Semantics::Categorical;
+  s.outputs.push_back(mask);
+  s.params_schema = {
+      {"type", "object"},
+      {"properties",
+       {{"thickness_m",
+         {{"type", "number"}, {"exclusiveMinimum", 0}, {"maximum", 100}, {"default", 1}}}}},
+      {"additionalProperties", false}};
+  return s;
+}
+
+// Fractional sample coordinates in a region's mosaic (sample centres at integers) of a point on
+// its face, through the plane square of one of the step's cells.
+class MosaicSamples {
+ public:
+  MosaicSamples(const Grid& grid, const Mosaic& mosaic, CellId any_cell)
+      : grid_(grid), square_(grid.plane_square(any_cell)) {
+    const int64_t tile = int64_t(1) << (mosaic.level - any_cell.level());
+    pixel_ = square_.side / double(tile);
+    col0_ = double(mosaic.origin_col - int64_t(any_cell.col()) * tile);
+    row0_ = double(mosaic.origin_row - int64_t(any_cell.row()) * tile);
+  }
+  std::array<double, 2> operator()(LonLat p) const {
+    const PlanePoint q = grid_.forward(p);
+    return {(q.x - square_.x_min) / pixel_ - 0.5 - col0_,
+            (square_.y_max - q.y) / pixel_ - 0.5 - row0_};
+  }
+
+ private:
+  const Grid& grid_;
+  PlaneSquare square_;
+  double pixel_ = 0, col0_ = 0, row0_ = 0;
+};
+
+// The deck's outline in lon/lat: the first edge, the second reversed, closed.
+PolygonRings outline(const BridgeStroke& b) {
+  std::vector<LonLat> ring;
+  for (const GeoPoint& p : b.first_edge) ring.push_back({p.lon, p.lat});
+  for (auto p = b.second_edge.rbegin(); p != b.second_edge.rend(); ++p)
+    ring.push_back({p->lon, p->lat});
+  ring.push_back(ring.front());
+  return {ring};
+}
+
+// Sets to 1 the mask's samples whose centre (core/halo.h pixel_centre) lies in the deck's outline
+// (edges straight in degrees, core/polygon_set.h), looking within 2 samples of its points.
+void mark_deck(const BridgeStroke& b, const StepContext& ctx, const Mosaic& input,
+               const MosaicSamples& samples, Tile<float>& mask) {
+  const PolygonRings ring = outline(b);
+  const PolygonSet deck({ring});
+  double c0 = INFINITY, r0 = INFINITY, c1 = -INFINITY, r1 = -INFINITY;
+  for (const LonLat& p : ring.front()) {
+    const auto [c, r] = samples(p);
+    c0 = std::min(c0, c), r0 = std::min(r0, r), c1 = std::max(c1, c), r1 = std::max(r1, r);
+  }
+  const int side = mask.size();
+  for (int r = std::max(0, int(std::floor(r0)) - 2); r <= std::min(side - 1, int(r1) + 2); ++r)
+    for (int c = std::max(0, int(std::floor(c0)) - 2); c <= std::min(side - 1, int(c1) + 2); ++c)
+      if (deck.contains(pixel_centre(
+              *ctx.grid, {input.face, input.origin_col + c, input.origin_row + r}, input.level)))
+        mask.at(c, r) = 1;
+}
+
+class Bridge : public RegionOperator {
+ public:
+  const OperatorSpec& spec() const override {
+    static const OperatorSpec s = bridge_spec();
+    return s;
+  }
+
+  void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
+    const auto mask = output.layers.find("mask");  // when the step maps it
+    if (mask != output.layers.end())
+      for (int r = 0; r < mask->second.size(); ++r)
+        for (int c = 0; c < mask->second.size(); ++c) mask->second.at(c, r) = 0;
+    const bool wants_mesh = output.content.begin()->second.wants("mesh");
+    const double default_thickness = ctx.params->at("thickness_m").get<double>();
+    const MosaicSamples samples(*ctx.grid, input, output.content.begin()->first);
+    std::optional<EllipsoidalHeights> to_ellipsoid;  // set up with the first bridge's mesh
+    for (const VectorFeature* f : input.features.at("strokes")) {
+      if (!is_bridge_stroke(*f)) continue;
+      try {
+        const BridgeStroke b = bridge_stroke(*f, default_thickness);
+        if (!on_face(b, *ctx.grid, input.face)) continue;  // another face's mosaic makes it
+        if (mask != output.layers.end()) mark_deck(b, ctx, input, samples, mask->second);
+        if (!wants_mesh) continue;
+        if (!to_ellipsoid) to_ellipsoid.emplace(ellipsoidal_heights(ctx.input_layer("dem")));
+        add_deck(b, ctx, input.layers.at("dem"), samples, *to_ellipsoid, output);
+      } catch (const std::runtime_error& e) {  // maquette::Error or InvalidFootprint
+        throw Error("structures.bridge: inputs.strokes: " + std::string(e.what()));
+      }
+    }
+  }
+
+ private:
+  // Whether the bridge is on `face` (its anchor there); throws when it spans two faces.
+  static bool on_face(const BridgeStroke& b, const Grid& grid, int face) {
+    const auto face_of = [&](const GeoPoint& p) {
+      return grid.cell_from_point({p.lon, p.lat}, 0).face();
+    };
+    const int anchor_face = face_of(b.first_edge.front());
+    for (const auto* edge : {&b.first_edge, &b.second_edge})
+      for (const GeoPoint& p : *edge)
+        if (face_of(p) != anchor_face)
+          throw Error(where(b) +
+                      ": geometry: the bridge crosses an edge of the grid's faces: not "
+                      "handled yet");
+    return anchor_face == face;
+  }
+
+  static std::string where(const BridgeStroke& b) {
+    return "feature " + std::to_string(b.id) + " (tool bridge)";
+  }
+
+  // The DEM's bilinear height (above the ellipsoid) at an edge's end.
+  static double end_height(const BridgeStroke& b, int edge, bool last, const Tile<float>& dem,
+                           const MosaicSamples& samples, const EllipsoidalHeights& to_ellipsoid) {
+    const std::vector<GeoPoint>& points = edge == 1 ? b.first_edge : b.second_edge;
+    const GeoPoint& p = last ? points.back() : points.front();
+    const auto [x, y] = samples({p.lon, p.lat});
+    const double h = bilinear(dem, x, y);
+    if (std::isnan(h))
+      throw Error(where(b) + ": geometry: edge " + std::to_string(edge) + "'s " +
+                  (last ? "last" : "first") +
+                  " point is off the DEM or on its nodata: a bridge's ends stand on the terrain");
+    return to_ellipsoid({p.lon, p.lat}, h);
+  }
+
+  static void add_deck(const BridgeStroke& b, const StepContext& ctx, const Tile<float>& dem,
+                       const MosaicSamples& samples, const EllipsoidalHeights& to_ellipsoid,
+                       Mosaic& output) {
+    const std::array<double, 4> ends{end_height(b, 1, false, dem, samples, to_ellipsoid),
+                                     end_height(b, 1, true, dem, samples, to_ellipsoid),
+                                     end_height(b, 2, false, dem, samples, to_ellipsoid),
+                                     end_height(b, 2, true, dem, samples, to_ellipsoid)};
+    // The deck's frame: the tangent plane at its anchor, the first edge's first point, on the
+    // terrain there.
+    const GeoPoint& anchor = b.first_edge.front();
+    const EnuOrigin frame_origin{anchor.lon, anchor.lat, ends[0]};
+    const GeographicLib::LocalCartesian frame(anchor.lat, anchor.lon, ends[0]);
+    const auto deck_edge = [&](const std::vector<GeoPoint>& edge, double start, double end) {
+      std::vector<PlanePoint2> plane;
+      for (const GeoPoint& p : edge) {
+        double x = 0, y = 0, z = 0;
+        frame.Forward(p.lat, p.lon, ends[0], x, y, z);
+        plane.push_back({x, y});
+      }
+      const std::vector<double> heights = edge_profile(plane, start, end);
+      std::vector<DeckPoint> points;
+      for (size_t i = 0; i < edge.size(); ++i) {
+        DeckPoint& d = points.emplace_back();
+        frame.Forward(edge[i].lat, edge[i].lon, heights[i], d[0], d[1], d[2]);
+      }
+      return points;
+    };
+    const std::vector<DeckPoint> first = deck_edge(b.first_edge, ends[0], ends[1]);
+    const std::vector<DeckPoint> second = deck_edge(b.second_edge, ends[2], ends[3]);
+    Solid solid;
+    try {
+      solid = deck_solid(first, second, b.thickness_m);
+    } catch (const InvalidFootprint& e) {
+      throw Error(where(b) + ": geometry: " + e.what());
+    }
+
+    const CellId owner =
+        ctx.grid->cell_from_point({anchor.lon, anchor.lat}, output.content.begin()->first.level());
+    if (!output.content.count(owner))
+      throw Error(where(b) + ": its first point (the deck's anchor) is outside the step's cells");
+    MeshContent& content = output.content.at(owner).mesh("mesh");
+    const EnuTransform to_content(frame_origin, content.origin);
+    MeshObject object;
+    for (size_t v = 0; v < solid.positions.size(); v += 3) {
+      const auto [x, y, z] =
+          to_content.point(solid.positions[v], solid.positions[v + 1], solid.positions[v + 2]);
+      object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
+    }
+    object.indices = solid.indices;
+    object.provenance = {uint64_t(b.id),
+                         b.id,
+                         "structures.bridge",
+                         {{"thickness_m", b.thickness_m},
+                          {"volume_m3", mesh_volume(solid.positions, solid.indices)},
+                          {"end_heights_m", ends}}};
+    content.objects.push_back(std::move(object));
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_bridge() { return std::make_unique<Bridge>(); }
+
+}  // namespace maquette::structures
