@@ -62,7 +62,8 @@ std::array<double, 2> lonlat(double x, double y) {
   return {lon, lat};
 }
 
-void write_dem(const std::string& path) {
+// With `hole`, nodata (-9999) within 20 m of the bridge's east end.
+void write_dem(const std::string& path, bool hole) {
   const int w = int(std::lround(2 * kHalfLon / kSourcePixelDeg));
   const int h = int(std::lround(2 * kHalfLat / kSourcePixelDeg));
   std::vector<float> z;
@@ -71,7 +72,7 @@ void write_dem(const std::string& path) {
       double x = 0, y = 0, up = 0;
       local().Forward(kLat0 + kHalfLat - (r + 0.5) * kSourcePixelDeg,
                       kLon0 - kHalfLon + (c + 0.5) * kSourcePixelDeg, 0, x, y, up);
-      z.push_back(float(terrain(x)));
+      z.push_back(hole && std::hypot(x - kEast, y) < 20 ? -9999.0f : float(terrain(x)));
     }
   GDALAllRegister();
   const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
@@ -82,6 +83,7 @@ void write_dem(const std::string& path) {
   OGRSpatialReference srs;
   srs.importFromEPSG(4326);
   ds->SetSpatialRef(&srs);
+  ds->GetRasterBand(1)->SetNoDataValue(-9999);
   ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, w, h, z.data(), w, h, GDT_Float32, 0, 0),
             CE_None);
 }
@@ -117,8 +119,9 @@ struct Valley {
   std::string dir = test::temp_dir();
   std::string store = dir + "/valley.mqt";
 
-  Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize) {
-    write_dem(dir + "/dem.tif");
+  // `hole`: write_dem's.
+  Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize, bool hole = false) {
+    write_dem(dir + "/dem.tif", hole);
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
     const json pipeline = {
         {"store", store},
@@ -356,8 +359,8 @@ TEST(BridgePipeline, SameBitsForOneAndTwoThreadsAndTwoTilings) {
 }
 
 // A bad stroke fails the run naming the feature and the field, and writes no bridge.
-void expect_refused(const json& feature, const std::string& message) {
-  const Valley valley(collection(feature));
+void expect_refused(const json& feature, const std::string& message, bool hole = false) {
+  const Valley valley(collection(feature), kLevel, kTileSize, hole);
   const CliResult r = valley.run();
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("structures.bridge: inputs.strokes: feature 1 (tool bridge): " + message),
@@ -388,6 +391,9 @@ TEST(BridgePipeline, BadStrokesAreNamed) {
   far_other.push_back(lonlat(1000, kHalfWidth));
   expect_refused(bridge_feature({far_edge, far_other}, json::object()),
                  "geometry: edge 1's last point is off the DEM or on its nodata");
+  // An end on the DEM's nodata.
+  expect_refused(bridge_feature({edge(-kHalfWidth), edge(kHalfWidth)}, json::object()),
+                 "geometry: edge 1's last point is off the DEM or on its nodata", true);
 }
 
 }  // namespace
