@@ -169,7 +169,8 @@ class Bridge : public RegionOperator {
     if (std::isnan(h))
       throw Error(where(b) + ": geometry: edge " + std::to_string(edge) + "'s " +
                   (last ? "last" : "first") +
-                  " point is off the DEM or on its nodata: a bridge's ends stand on the terrain");
+                  " point is off the DEM, on its nodata or beyond the step's region: a bridge's "
+                  "ends stand on the terrain, and the region must hold the whole bridge");
     return to_ellipsoid({p.lon, p.lat}, h);
   }
 

@@ -390,10 +390,10 @@ TEST(BridgePipeline, BadStrokesAreNamed) {
   far_edge.push_back(lonlat(1000, -kHalfWidth));
   far_other.push_back(lonlat(1000, kHalfWidth));
   expect_refused(bridge_feature({far_edge, far_other}, json::object()),
-                 "geometry: edge 1's last point is off the DEM or on its nodata");
+                 "geometry: edge 1's last point is off the DEM, on its nodata");
   // An end on the DEM's nodata.
   expect_refused(bridge_feature({edge(-kHalfWidth), edge(kHalfWidth)}, json::object()),
-                 "geometry: edge 1's last point is off the DEM or on its nodata", true);
+                 "geometry: edge 1's last point is off the DEM, on its nodata", true);
 }
 
 }  // namespace
