@@ -4,7 +4,8 @@
 // two edges) ingested as features, the pipeline run by `maquette run`. A straight deck 10 m wide
 // from x = -150 m to x = 250 m: its ends' tops are the valley's analytic heights there (130 and
 // 150 m) within 1 cm, its top along the edges has the analytic slope 0.05, its floor lies the
-// thickness below; CGAL finds it closed, outward, free of self-intersection after the GLB round
+// thickness below (on a DEM of EGM96 heights, the ends at the terrain taken to the ellipsoid by
+// PROJ); CGAL finds it closed, outward, free of self-intersection after the GLB round
 // trip, of volume width x length x thickness; stored once; the mask's pixels are GDAL's
 // rasterization of the deck's outline (GDALRasterizeGeometries in the rHEALPix plane); the same
 // bits for 1 and 2 threads and the same mask pixels for two tilings; bad strokes fail naming the
@@ -16,6 +17,7 @@
 #include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -28,6 +30,7 @@
 
 #include "content/content_blob.h"
 #include "core/grid.h"
+#include "egm96_oracle.h"
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -119,8 +122,9 @@ struct Valley {
   std::string dir = test::temp_dir();
   std::string store = dir + "/valley.mqt";
 
-  // `hole`: write_dem's.
-  Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize, bool hole = false) {
+  // `hole`: write_dem's; `datum`: the DEM's vertical datum (maquette ingest --vertical-datum).
+  Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize, bool hole = false,
+         const std::string& datum = "ellipsoid") {
     write_dem(dir + "/dem.tif", hole);
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
     const json pipeline = {
@@ -135,10 +139,9 @@ struct Valley {
            {"outputs", {{"mesh", "bridge"}, {"mask", "bridge_mask"}}}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
-         {"ingest " + store + " " + dir +
-              "/dem.tif --layer dem --as dem --vertical-datum ellipsoid --resampling bilinear "
-              "--level " +
-              std::to_string(level) + " --tile-size " + std::to_string(tile_size),
+         {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
+              datum + " --resampling bilinear --level " + std::to_string(level) + " --tile-size " +
+              std::to_string(tile_size),
           "ingest " + store + " " + dir + "/strokes.geojson --layer strokes --as features"}) {
       const CliResult r = run_maquette("-q " + args);
       EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
@@ -236,6 +239,31 @@ TEST(BridgePipeline, StraightDeckAcrossAValley) {
   const double raised = (1 + 140 / 6.38e6) * (1 + 140 / 6.38e6);
   EXPECT_NEAR(deck.object.provenance.attributes.at("volume_m3").get<double>(), volume * raised,
               1e-5 * volume);
+}
+
+// On a DEM of EGM96 heights (SRTM's datum, the ingest's default) the deck's ends stand on the
+// terrain taken to the ellipsoid, as the exported terrain is: each end's top is terrain + N within
+// 1 cm, N from PROJ (EGM96 height -> WGS 84 ellipsoidal, ~50 m in the Alps).
+TEST(BridgePipeline, OnAnEgm96DemTheEndsStandOnTheEllipsoidalTerrain) {
+  const Valley valley(straight_bridge(), kLevel, kTileSize, false, "egm96");
+  const CliResult r = valley.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const test::Egm96ToEllipsoid to_ellipsoid;
+  const std::vector<Deck> found = decks(*Store::open(valley.store, Store::Mode::ReadOnly));
+  ASSERT_EQ(found.size(), 1u);
+  int ends = 0;
+  for (const double end_x : {kWest, kEast})
+    for (const double end_y : {-kHalfWidth, kHalfWidth}) {
+      const auto [lon, lat] = lonlat(end_x, end_y);
+      const double expected = to_ellipsoid(lon, lat, terrain(end_x));
+      EXPECT_GT(expected - terrain(end_x), 40);
+      double top = -INFINITY;
+      for (const auto& [x, y, h] : found[0].local)
+        if (std::hypot(x - end_x, y - end_y) < 0.01) top = std::max(top, h);
+      EXPECT_NEAR(top, expected, 0.01) << "end at x " << end_x << ", y " << end_y;
+      ++ends;
+    }
+  EXPECT_EQ(ends, 4);
 }
 
 // The rHEALPix plane of the grid (formats/geotiff/export_crs.h) as PROJ defines it.
