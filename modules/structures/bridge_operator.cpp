@@ -51,7 +51,11 @@ OperatorSpec bridge_spec() {
       {"type", "object"},
       {"properties",
        {{"thickness_m",
-         {{"type", "number"}, {"exclusiveMinimum", 0}, {"maximum", 100}, {"default", 1}}}}},
+         {{"type", "number"},
+          {"exclusiveMinimum", 0},
+          {"maximum", 100},
+          {"default", 1},
+          {"description", "the deck's thickness (m) of strokes without thickness_m"}}}}},
       {"additionalProperties", false}};
   return s;
 }
