@@ -8,8 +8,8 @@
 // PROJ); CGAL finds it closed, outward, free of self-intersection after the GLB round
 // trip, of volume width x length x thickness; stored once; the mask's pixels are GDAL's
 // rasterization of the deck's outline (GDALRasterizeGeometries in the rHEALPix plane); the same
-// bits for 1 and 2 threads and the same mask pixels for two tilings; bad strokes fail naming the
-// feature and field.
+// bits for 1 and 2 threads and the same mask pixels for two tilings, and without the mesh mapped;
+// bad strokes fail naming the feature and field.
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
@@ -123,8 +123,10 @@ struct Valley {
   std::string store = dir + "/valley.mqt";
 
   // `hole`: write_dem's; `datum`: the DEM's vertical datum (maquette ingest --vertical-datum).
+  // `outputs`: the step's output ports mapped to layers.
   Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize, bool hole = false,
-         const std::string& datum = "ellipsoid") {
+         const std::string& datum = "ellipsoid",
+         const json& outputs = {{"mesh", "bridge"}, {"mask", "bridge_mask"}}) {
     write_dem(dir + "/dem.tif", hole);
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
     const json pipeline = {
@@ -136,7 +138,7 @@ struct Valley {
         {"steps",
          {{{"op", "structures.bridge"},
            {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", {{"mesh", "bridge"}, {"mask", "bridge_mask"}}}}}}};
+           {"outputs", outputs}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
@@ -384,6 +386,23 @@ TEST(BridgePipeline, SameBitsForOneAndTwoThreadsAndTwoTilings) {
   for (size_t k = 0; k < coarse_deck[0].local.size(); ++k)
     for (size_t i = 0; i < 3; ++i)
       EXPECT_NEAR(coarse_deck[0].local[k][i], fine_deck[0].local[k][i], 1e-3) << k;
+}
+
+// A step mapping only the mask writes the same mask, and no mesh layer.
+TEST(BridgePipeline, MaskAlone) {
+  const Valley both(straight_bridge()),
+      alone(straight_bridge(), kLevel, kTileSize, false, "ellipsoid", {{"mask", "bridge_mask"}});
+  ASSERT_EQ(both.run().exit_code, 0);
+  const CliResult r = alone.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = Store::open(both.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(alone.store, Store::Mode::ReadOnly);
+  EXPECT_FALSE(b->layer("bridge"));
+  const auto mask = mask_pixels(*b, kTileSize);
+  size_t under = 0;
+  for (const auto& [at, v] : mask) under += v;
+  EXPECT_GT(under, 500u);
+  EXPECT_EQ(mask, mask_pixels(*a, kTileSize));
 }
 
 // A bad stroke fails the run naming the feature and the field, and writes no bridge.
