@@ -127,17 +127,19 @@ class Bridge : public RegionOperator {
     const bool wants_mesh = output.content.begin()->second.wants("mesh");
     const double default_thickness = ctx.params->at("thickness_m").get<double>();
     const MosaicSamples samples(*ctx.grid, input, output.content.begin()->first);
-    std::optional<EllipsoidalHeights> to_ellipsoid;  // set up with the first bridge's mesh
+    // Set up at the first bridge stroke, when the mesh is mapped (PROJ's set-up takes
+    // milliseconds).
+    std::optional<EllipsoidalHeights> to_ellipsoid;
     for (const VectorFeature* f : input.features.at("strokes")) {
       if (!is_bridge_stroke(*f)) continue;
-      try {
+      if (wants_mesh && !to_ellipsoid)
+        to_ellipsoid.emplace(ellipsoidal_heights(ctx.input_layer("dem")));
+      try {  // the stroke's faults, each naming the feature and field
         const BridgeStroke b = bridge_stroke(*f, default_thickness);
         if (!on_face(b, *ctx.grid, input.face)) continue;  // another face's mosaic makes it
         if (mask != output.layers.end()) mark_deck(b, ctx, input, samples, mask->second);
-        if (!wants_mesh) continue;
-        if (!to_ellipsoid) to_ellipsoid.emplace(ellipsoidal_heights(ctx.input_layer("dem")));
-        add_deck(b, ctx, input.layers.at("dem"), samples, *to_ellipsoid, output);
-      } catch (const std::runtime_error& e) {  // maquette::Error or InvalidFootprint
+        if (wants_mesh) add_deck(b, ctx, input.layers.at("dem"), samples, *to_ellipsoid, output);
+      } catch (const Error& e) {
         throw Error("structures.bridge: inputs.strokes: " + std::string(e.what()));
       }
     }
