@@ -1,0 +1,314 @@
+// The campus example (examples/campus-soho.json: paper 002's campus scenario on London Soho) run
+// by the real program on ../shared/data, as a user runs it, every step: the DEM, the imagery,
+// the footprints and the strokes ingested, buildings, trees and a placed tree made, the 3D Tiles
+// written. Checked against independent oracles:
+// - buildings: one per footprint of examples/campus-soho/footprints.vrt, counted by OGR (the
+//   shared file's 158 less the two garden squares), each 10 m high (no height tags) with its
+//   lowest vertex on the ground: the DEM's 25 m above EGM96 taken to the ellipsoid by PROJ;
+// - trees: every plant inside its stroke (OGR), one per spacing_m^2 of the stroke's geodesic
+//   area (GeographicLib) or a little more (the edge effect below), every pair at least the
+//   blue noise's minimum distance apart (geodesics), on the ground (PROJ);
+// - the placed tree: at its stroke's centre, scaled by sqrt(stroke area / the trunk's base area)
+//   (the prototype's base: the convex hull of its lowest vertices, by GEOS), its heading the
+//   stroke's, on the ground;
+// - the 3D Tiles: read as a viewer reads them (regions, Draco decoded, tileset_reader.h), each
+//   content layer shipped, and every GLB valid by the Khronos glTF validator.
+// Skipped when the data is absent.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <ogr_geometry.h>
+#include <ogrsf_frmts.h>
+
+#include <GeographicLib/Geodesic.hpp>
+#include <GeographicLib/LocalCartesian.hpp>
+#include <GeographicLib/PolygonArea.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "content/content_blob.h"
+#include "content/instances_codec.h"
+#include "content/prototypes.h"
+#include "egm96_oracle.h"
+#include "gltf/mesh_glb.h"
+#include "run_cli.h"
+#include "store/store.h"
+#include "tileset_reader.h"
+
+namespace maquette::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kShared = std::string(MAQUETTE_SHARED_DIR);
+const std::string kExamples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
+const std::string kSoho = kShared + "/data/buildings/london_soho_buildings_wgs84.geojson";
+constexpr double kGroundEgm96 = 25;  // examples/campus-soho/ground.asc
+constexpr double kPi = std::numbers::pi;
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+// The example run once, its store and export in a temporary folder: its sources at their
+// absolute paths (../../shared is the shared data, other paths are the examples').
+struct ExampleRun {
+  std::string dir = temp_dir();
+  std::string store = dir + "/campus-soho.mqt";
+  std::string tiles = dir + "/campus-soho-output/tiles3d";
+  CliResult result;
+  ExampleRun() {
+    json p = read_json(kExamples + "/campus-soho.json");
+    for (json& s : p["steps"])
+      if (s["op"] == "ingest")
+        for (json& source : s["params"]["sources"]) {
+          const std::string path = source.get<std::string>();
+          const std::string shared = "../../shared";
+          source = path.starts_with(shared) ? kShared + path.substr(shared.size())
+                                            : kExamples + "/" + path;
+        }
+    std::ofstream(dir + "/pipeline.json") << p.dump(1);
+    result = run_maquette("-q run " + dir + "/pipeline.json");
+  }
+};
+
+const ExampleRun& example() {
+  static const ExampleRun run;
+  return run;
+}
+
+bool have_data() { return fs::exists(kSoho) && fs::exists(kShared + "/data/global/world.tif"); }
+
+#define REQUIRE_EXAMPLE()                                                    \
+  if (!have_data()) GTEST_SKIP() << "no ../shared/data (buildings, global)"; \
+  ASSERT_EQ(example().result.exit_code, 0) << example().result.err;
+
+// The ground's height above the ellipsoid at lon, lat: the DEM's EGM96 height by PROJ.
+double ground(double lon, double lat) {
+  static const Egm96ToEllipsoid to_ellipsoid;
+  return to_ellipsoid(lon, lat, kGroundEgm96);
+}
+
+// A vector file's features, read by OGR.
+std::vector<std::unique_ptr<OGRGeometry>> geometries(const std::string& path) {
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+  EXPECT_TRUE(ds) << path;
+  std::vector<std::unique_ptr<OGRGeometry>> out;
+  if (!ds) return out;
+  for (const auto& feature : *ds->GetLayer(0)) out.emplace_back(feature->GetGeometryRef()->clone());
+  return out;
+}
+
+// A stored instance: its position (the model's base) on the globe, scale, heading (degrees
+// clockwise from north of the model's +y), feature id and prototype.
+struct Instance {
+  double lon = 0, lat = 0, height = 0, scale = 0, heading_deg = 0;
+  int64_t feature = 0;
+  std::string prototype;
+};
+
+std::vector<Instance> instances(const std::string& layer) {
+  const auto st = Store::open(example().store, Store::Mode::ReadOnly);
+  std::vector<Instance> out;
+  for (const CellId cell : st->content_cells(layer)) {
+    const InstancesContent c = unwrap_instances(*st->get_content(layer, cell), "test");
+    const GeographicLib::LocalCartesian frame(c.origin.lat, c.origin.lon, c.origin.height);
+    for (size_t i = 0; i < c.size(); ++i) {
+      Instance p;
+      const float* pos = &c.position[3 * i];
+      frame.Reverse(pos[0], pos[1], pos[2], p.lat, p.lon, p.height);
+      // The model's +y turned by the quaternion, seen in the position's east-north-up frame.
+      const double qx = c.rotation[4 * i], qy = c.rotation[4 * i + 1], qz = c.rotation[4 * i + 2],
+                   qw = c.rotation[4 * i + 3];
+      const double ax = 2 * (qx * qy - qw * qz), ay = 1 - 2 * (qx * qx + qz * qz),
+                   az = 2 * (qy * qz + qw * qx);
+      double lat = 0, lon = 0, h = 0, e = 0, n = 0, u = 0;
+      frame.Reverse(pos[0] + ax, pos[1] + ay, pos[2] + az, lat, lon, h);
+      GeographicLib::LocalCartesian(p.lat, p.lon, p.height).Forward(lat, lon, h, e, n, u);
+      p.heading_deg = std::atan2(e, n) * 180 / kPi;
+      p.scale = c.scale[3 * i];
+      p.feature = c.provenance[i].feature_id;
+      p.prototype = c.prototypes[c.prototype[i]];
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+// The geodesic area (m2) of a polygon's outer ring less its holes, by GeographicLib.
+double geodesic_area(const OGRPolygon& polygon) {
+  double area = 0;
+  for (int r = 0; r <= polygon.getNumInteriorRings(); ++r) {
+    const OGRLinearRing* ring = r == 0 ? polygon.getExteriorRing() : polygon.getInteriorRing(r - 1);
+    GeographicLib::PolygonArea p(GeographicLib::Geodesic::WGS84());
+    for (int i = 0; i + 1 < ring->getNumPoints(); ++i) p.AddPoint(ring->getY(i), ring->getX(i));
+    double perimeter = 0, a = 0;
+    p.Compute(false, true, perimeter, a);
+    area += (r == 0 ? 1 : -1) * std::abs(a);
+  }
+  return area;
+}
+
+TEST(CampusExample, BuildingsStandOnTheGround) {
+  REQUIRE_EXAMPLE();
+  const size_t footprints = geometries(kExamples + "/campus-soho/footprints.vrt").size();
+  EXPECT_EQ(footprints, geometries(kSoho).size() - 2);  // less the two gardens
+  const auto st = Store::open(example().store, Store::Mode::ReadOnly);
+  EXPECT_EQ(st->content_stats("buildings").content.objects, footprints);
+  double worst_base = 0, worst_top = 0;
+  size_t checked = 0;
+  for (const CellId cell : st->content_cells("buildings")) {
+    const std::string blob = *st->get_content("buildings", cell);
+    const ContentEnvelope envelope = read_content_envelope(blob, "test");
+    const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
+    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
+                                              envelope.origin.height);
+    for (const MeshObject& o : mesh.objects) {
+      double low = INFINITY, high = -INFINITY, lon = 0, lat = 0;
+      for (size_t k = 0; k < o.positions.size(); k += 3) {
+        double vlat = 0, vlon = 0, vh = 0;
+        frame.Reverse(o.positions[k], o.positions[k + 1], o.positions[k + 2], vlat, vlon, vh);
+        if (vh < low) low = vh, lon = vlon, lat = vlat;
+        high = std::max(high, vh);
+      }
+      worst_base = std::max(worst_base, std::abs(low - ground(lon, lat)));
+      worst_top = std::max(worst_top, std::abs(high - low - 10));
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, footprints);
+  std::printf("%zu buildings: base - ground %.1f mm, height - 10 m %.1f mm at worst\n", checked,
+              worst_base * 1000, worst_top * 1000);
+  EXPECT_LE(worst_base, 0.01);
+  EXPECT_LE(worst_top, 0.01);
+}
+
+TEST(CampusExample, TreesFillTheirStrokesOnTheGround) {
+  REQUIRE_EXAMPLE();
+  const json strokes = read_json(kExamples + "/campus-soho/strokes.geojson");
+  const std::vector<std::unique_ptr<OGRGeometry>> shapes =
+      geometries(kExamples + "/campus-soho/strokes.geojson");
+  std::map<int64_t, std::vector<Instance>> per_stroke;
+  double worst_base = 0;
+  for (const Instance& t : instances("trees")) {
+    ASSERT_GE(t.feature, 1);
+    ASSERT_LE(size_t(t.feature), shapes.size());
+    // The ingest numbers features from 1 in the file's order.
+    const json& properties = strokes["features"][size_t(t.feature - 1)]["properties"];
+    EXPECT_EQ(properties["tool"], "vegetation");
+    const OGRPoint point(t.lon, t.lat);
+    EXPECT_TRUE(shapes[size_t(t.feature - 1)]->Contains(&point))
+        << "a tree of stroke " << t.feature << " outside it at " << t.lon << ", " << t.lat;
+    EXPECT_EQ(t.prototype, "builtin:broadleaf");
+    EXPECT_GE(t.scale, 9);
+    EXPECT_LE(t.scale, 14);
+    worst_base = std::max(worst_base, std::abs(t.height - ground(t.lon, t.lat)));
+    per_stroke[t.feature].push_back(t);
+  }
+  int vegetation = 0;
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const json& properties = strokes["features"][i]["properties"];
+    if (properties["tool"] != "vegetation") continue;
+    ++vegetation;
+    const double spacing = properties["spacing_m"];
+    const double expected = geodesic_area(*shapes[i]->toPolygon()) / (spacing * spacing);
+    const std::vector<Instance>& trees = per_stroke[int64_t(i) + 1];
+    // Blue noise: every pair at least 0.769 spacing apart (modules/structures/README.md).
+    double closest = INFINITY;
+    for (size_t a = 0; a < trees.size(); ++a)
+      for (size_t b = a + 1; b < trees.size(); ++b) {
+        double d = 0;
+        GeographicLib::Geodesic::WGS84().Inverse(trees[a].lat, trees[a].lon, trees[b].lat,
+                                                 trees[b].lon, d);
+        closest = std::min(closest, d);
+      }
+    std::printf("%s: %zu trees, area / spacing^2 = %.1f, closest pair %.2f m (spacing %.0f m)\n",
+                properties["name"].get<std::string>().c_str(), trees.size(), expected, closest,
+                spacing);
+    EXPECT_GE(closest, 0.769 * spacing) << properties["name"];
+    // One plant per spacing^2 inside, more in the band within the minimum distance of the
+    // stroke's edge (no dart outside the stroke is kept to keep them apart): on strokes a few
+    // spacings wide, 20-40 % more in all.
+    EXPECT_GE(double(trees.size()), 0.9 * expected) << properties["name"];
+    EXPECT_LE(double(trees.size()), 1.5 * expected) << properties["name"];
+  }
+  EXPECT_EQ(vegetation, 2);
+  EXPECT_LE(worst_base, 0.01);
+}
+
+TEST(CampusExample, TheStrokePlacesOneTree) {
+  REQUIRE_EXAMPLE();
+  const json strokes = read_json(kExamples + "/campus-soho/strokes.geojson");
+  const std::vector<std::unique_ptr<OGRGeometry>> shapes =
+      geometries(kExamples + "/campus-soho/strokes.geojson");
+  const std::vector<Instance> placed = instances("placed");
+  ASSERT_EQ(placed.size(), 1u);
+  const Instance& tree = placed[0];
+  const size_t index = size_t(tree.feature - 1);
+  ASSERT_LT(index, shapes.size());
+  const json& properties = strokes["features"][index]["properties"];
+  EXPECT_EQ(properties["tool"], "place");
+  EXPECT_EQ(tree.prototype, properties["model"]);
+  // At the stroke's centre (its ring is regular: the mean of its vertices), on the ground.
+  const OGRLinearRing* ring = shapes[index]->toPolygon()->getExteriorRing();
+  const int n = ring->getNumPoints() - 1;
+  double lon = 0, lat = 0;
+  for (int i = 0; i < n; ++i) lon += ring->getX(i) / n, lat += ring->getY(i) / n;
+  double e = 0, north = 0, u = 0;
+  GeographicLib::LocalCartesian(lat, lon, 0).Forward(tree.lat, tree.lon, 0, e, north, u);
+  EXPECT_LE(std::hypot(e, north), 0.02);
+  EXPECT_NEAR(tree.height, ground(tree.lon, tree.lat), 0.01);
+  // The model's base: the convex hull (GEOS) of the prototype's vertices within 5 cm of its
+  // lowest (modules/structures/README.md), scaled to the stroke's area.
+  OGRMultiPoint low;
+  const MeshContent& model = builtin_prototype(tree.prototype);
+  double lowest = INFINITY;
+  for (const MeshObject& o : model.objects)
+    for (size_t k = 2; k < o.positions.size(); k += 3)
+      lowest = std::min(lowest, double(o.positions[k]));
+  for (const MeshObject& o : model.objects)
+    for (size_t k = 0; k < o.positions.size(); k += 3)
+      if (o.positions[k + 2] <= lowest + 0.05) {
+        const OGRPoint vertex(o.positions[k], o.positions[k + 1]);
+        low.addGeometry(&vertex);
+      }
+  const std::unique_ptr<OGRGeometry> base(low.ConvexHull());
+  const double scale =
+      std::sqrt(geodesic_area(*shapes[index]->toPolygon()) / base->toPolygon()->get_Area());
+  EXPECT_NEAR(tree.scale / scale, 1, 1e-3);
+  EXPECT_NEAR(std::remainder(tree.heading_deg - properties["heading_deg"].get<double>(), 360), 0,
+              1e-3);
+  std::printf("placed %s: %.2f m from the stroke's centre, scale %.3f (area ratio %.3f)\n",
+              tree.prototype.c_str(), std::hypot(e, north), tree.scale, scale);
+}
+
+TEST(CampusExample, TilesetHoldsTheTerrainAndEveryContentLayer) {
+  REQUIRE_EXAMPLE();
+  const Export out = read_export(example().tiles);
+  std::map<std::string, int> glbs;
+  for (const auto& [uri, glb] : out.glbs)
+    for (const std::string layer : {"buildings", "trees", "placed"})
+      glbs[layer] += uri.ends_with("." + layer + ".glb");  // OUTDIR/<stem>.<LAYER>.glb
+  for (const std::string layer : {"buildings", "trees", "placed"})
+    EXPECT_GT(glbs[layer], 0) << "no GLB of " << layer;
+  EXPECT_GT(out.glbs.size(), size_t(glbs["buildings"] + glbs["trees"] + glbs["placed"]))
+      << "no terrain";
+  const auto valid = gltf_validator_passes(example().tiles);
+  if (!valid)
+    GTEST_SKIP() << "gltf-validator not installed (npm ci in " MAQUETTE_NODE_DIR " failed)";
+  EXPECT_TRUE(*valid);
+}
+
+}  // namespace
+}  // namespace maquette::test
