@@ -110,6 +110,18 @@ std::vector<std::unique_ptr<OGRGeometry>> geometries(const std::string& path) {
   return out;
 }
 
+// The example's strokes: as JSON (properties) and as OGR reads them, in the file's order.
+struct Strokes {
+  json collection = read_json(kExamples + "/campus-soho/strokes.geojson");
+  std::vector<std::unique_ptr<OGRGeometry>> shapes =
+      geometries(kExamples + "/campus-soho/strokes.geojson");
+};
+
+const Strokes& example_strokes() {
+  static const Strokes strokes;
+  return strokes;
+}
+
 // A stored instance: its position (the model's base) on the globe, scale, heading (degrees
 // clockwise from north of the model's +y), feature id and prototype.
 struct Instance {
@@ -196,9 +208,8 @@ TEST(CampusExample, BuildingsStandOnTheGround) {
 
 TEST(CampusExample, TreesFillTheirStrokesOnTheGround) {
   REQUIRE_EXAMPLE();
-  const json strokes = read_json(kExamples + "/campus-soho/strokes.geojson");
-  const std::vector<std::unique_ptr<OGRGeometry>> shapes =
-      geometries(kExamples + "/campus-soho/strokes.geojson");
+  const json& strokes = example_strokes().collection;
+  const auto& shapes = example_strokes().shapes;
   std::map<int64_t, std::vector<Instance>> per_stroke;
   double worst_base = 0;
   for (const Instance& t : instances("trees")) {
@@ -249,9 +260,8 @@ TEST(CampusExample, TreesFillTheirStrokesOnTheGround) {
 
 TEST(CampusExample, TheStrokePlacesOneTree) {
   REQUIRE_EXAMPLE();
-  const json strokes = read_json(kExamples + "/campus-soho/strokes.geojson");
-  const std::vector<std::unique_ptr<OGRGeometry>> shapes =
-      geometries(kExamples + "/campus-soho/strokes.geojson");
+  const json& strokes = example_strokes().collection;
+  const auto& shapes = example_strokes().shapes;
   const std::vector<Instance> placed = instances("placed");
   ASSERT_EQ(placed.size(), 1u);
   const Instance& tree = placed[0];
