@@ -37,6 +37,7 @@
 #include "content/instances_codec.h"
 #include "content/prototypes.h"
 #include "egm96_oracle.h"
+#include "example_pipeline.h"
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -54,29 +55,15 @@ const std::string kSoho = kShared + "/data/buildings/london_soho_buildings_wgs84
 constexpr double kGroundEgm96 = 25;  // examples/campus-soho/ground.asc
 constexpr double kPi = std::numbers::pi;
 
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
-
-// The example run once, its store and export in a temporary folder: its sources at their
-// absolute paths (../../shared is the shared data, other paths are the examples').
+// The example run once, its store and export in a temporary folder, its sources at their
+// absolute paths (example_pipeline.h).
 struct ExampleRun {
   std::string dir = temp_dir();
   std::string store = dir + "/campus-soho.mqt";
   std::string tiles = dir + "/campus-soho-output/tiles3d";
   CliResult result;
   ExampleRun() {
-    json p = read_json(kExamples + "/campus-soho.json");
-    for (json& s : p["steps"])
-      if (s["op"] == "ingest")
-        for (json& source : s["params"]["sources"]) {
-          const std::string path = source.get<std::string>();
-          const std::string shared = "../../shared";
-          source = path.starts_with(shared) ? kShared + path.substr(shared.size())
-                                            : kExamples + "/" + path;
-        }
-    std::ofstream(dir + "/pipeline.json") << p.dump(1);
+    std::ofstream(dir + "/pipeline.json") << example_pipeline("campus-soho").dump(1);
     result = run_maquette("-q run " + dir + "/pipeline.json");
   }
 };

@@ -21,11 +21,11 @@
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/grid.h"
+#include "example_pipeline.h"
 #include "geotiff_raster.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -39,31 +39,16 @@ using nlohmann::json;
 const std::string kShared = std::string(MAQUETTE_SHARED_DIR);
 const std::string kExamples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
 
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return json::parse(s.str());
-}
-
 // Runs the example's steps of the given operators with its store in `dir` and its sources at
-// their absolute paths (../../shared is the shared data, other paths are the examples').
+// their absolute paths (example_pipeline.h).
 void run_example(const std::string& name, const std::string& dir,
                  const std::vector<std::string>& ops) {
-  json p = read_json(kExamples + "/" + name + ".json");
+  json p = example_pipeline(name);
   p["store"] = dir + "/example.mqt";
   json steps = json::array();
-  for (json s : p["steps"]) {
-    if (std::find(ops.begin(), ops.end(), s["op"].get<std::string>()) == ops.end()) continue;
-    if (s["op"] == "ingest")
-      for (json& source : s["params"]["sources"]) {
-        const std::string path = source.get<std::string>();
-        const std::string shared = "../../shared";
-        source = path.starts_with(shared) ? kShared + path.substr(shared.size())
-                                          : kExamples + "/" + path;
-      }
-    steps.push_back(s);
-  }
+  for (const json& s : p["steps"])
+    if (std::find(ops.begin(), ops.end(), s["op"].get<std::string>()) != ops.end())
+      steps.push_back(s);
   p["steps"] = steps;
   std::ofstream(dir + "/pipeline.json") << p.dump(1);
   const CliResult r = run_maquette("-q run " + dir + "/pipeline.json");

@@ -1,0 +1,28 @@
+#include "example_pipeline.h"
+
+#include <fstream>
+
+namespace maquette::test {
+
+using nlohmann::json;
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+json example_pipeline(const std::string& name) {
+  const std::string examples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
+  const std::string shared = "../../shared";
+  json p = read_json(examples + "/" + name + ".json");
+  for (json& step : p["steps"])
+    if (step["op"] == "ingest")
+      for (json& source : step["params"]["sources"]) {
+        const std::string path = source.get<std::string>();
+        source = path.starts_with(shared) ? MAQUETTE_SHARED_DIR + path.substr(shared.size())
+                                          : examples + "/" + path;
+      }
+  return p;
+}
+
+}  // namespace maquette::test
