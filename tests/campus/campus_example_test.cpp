@@ -9,8 +9,8 @@
 //   area (GeographicLib) or a little more (the edge effect below), every pair at least the
 //   blue noise's minimum distance apart (geodesics), on the ground (PROJ);
 // - the placed tree: at its stroke's centre, scaled by sqrt(stroke area / the trunk's base area)
-//   (the prototype's base: the convex hull of its lowest vertices, by GEOS), its heading the
-//   stroke's, on the ground;
+//   (the prototype's base: its trunk's convex foot, by GEOS), its heading the stroke's, on the
+//   ground;
 // - the 3D Tiles: read as a viewer reads them (regions, Draco decoded, tileset_reader.h), each
 //   content layer shipped, and every GLB valid by the Khronos glTF validator.
 // Skipped when the data is absent.
@@ -266,8 +266,9 @@ TEST(CampusExample, TheStrokePlacesOneTree) {
   GeographicLib::LocalCartesian(lat, lon, 0).Forward(tree.lat, tree.lon, 0, e, north, u);
   EXPECT_LE(std::hypot(e, north), 0.02);
   EXPECT_NEAR(tree.height, ground(tree.lon, tree.lat), 0.01);
-  // The model's base: the convex hull (GEOS) of the prototype's vertices within 5 cm of its
-  // lowest (modules/structures/README.md), scaled to the stroke's area.
+  // The model's base (modules/structures/README.md): its floor, the trunk's foot, a convex
+  // polygon: the convex hull (GEOS) of the vertices within 5 cm of the lowest. The scale takes
+  // it to the stroke's area.
   OGRMultiPoint low;
   const MeshContent& model = builtin_prototype(tree.prototype);
   double lowest = INFINITY;
