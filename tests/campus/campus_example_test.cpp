@@ -49,8 +49,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kShared = std::string(MAQUETTE_SHARED_DIR);
-const std::string kExamples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
 const std::string kSoho = kShared + "/data/buildings/london_soho_buildings_wgs84.geojson";
 constexpr double kGroundEgm96 = 25;  // examples/campus-soho/ground.asc
 constexpr double kPi = std::numbers::pi;

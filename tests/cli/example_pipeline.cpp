@@ -12,15 +12,14 @@ json read_json(const std::string& path) {
 }
 
 json example_pipeline(const std::string& name) {
-  const std::string examples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
   const std::string shared = "../../shared";
-  json p = read_json(examples + "/" + name + ".json");
+  json p = read_json(kExamples + "/" + name + ".json");
   for (json& step : p["steps"])
     if (step["op"] == "ingest")
       for (json& source : step["params"]["sources"]) {
         const std::string path = source.get<std::string>();
-        source = path.starts_with(shared) ? MAQUETTE_SHARED_DIR + path.substr(shared.size())
-                                          : examples + "/" + path;
+        source = path.starts_with(shared) ? kShared + path.substr(shared.size())
+                                          : kExamples + "/" + path;
       }
   return p;
 }

@@ -36,9 +36,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kShared = std::string(MAQUETTE_SHARED_DIR);
-const std::string kExamples = std::string(MAQUETTE_SOURCE_DIR) + "/examples";
-
 // Runs the example's steps of the given operators with its store in `dir` and its sources at
 // their absolute paths (example_pipeline.h).
 void run_example(const std::string& name, const std::string& dir,
