@@ -7,7 +7,7 @@
 //     --tileset-dir build/tests/campus/cesium-out/campus-soho-output/tiles3d --out campus.png
 //
 // Fails (exit 1) on a tile, console or request error.
-import { resolve } from 'node:path';
+import { dirname, resolve } from 'node:path';
 import { launchBrowser, log, parseArgs, startView, waitLoaded } from '../viewer/harness.mjs';
 
 const args = parseArgs();
@@ -21,7 +21,7 @@ const b = await launchBrowser(args['node-modules'], { width: 1200, height: 675 }
 let exitCode = 1;
 try {
   await b.page.goto(`${view.url}?errorTarget=1`, { waitUntil: 'load' });
-  await waitLoaded(b, 'campus', '/tmp', () => ({ state: window.__maquette }), 180000);
+  await waitLoaded(b, 'campus', dirname(resolve(args.out)), () => ({ state: window.__maquette }), 180000);
   await b.page.evaluate(([eye, target]) => {
     const { THREE, tiles, camera, controls } = window.__maquetteViewer;
     const world = ([lon, lat, h]) => tiles.ellipsoid.getCartographicToPosition(THREE.MathUtils.degToRad(lat),
@@ -32,7 +32,7 @@ try {
     document.documentElement.dataset.tilesLoaded = 'false';
   }, [EYE, TARGET]);
   await new Promise((r) => setTimeout(r, 1000));
-  await waitLoaded(b, 'campus view', '/tmp', () => ({ state: window.__maquette }), 180000);
+  await waitLoaded(b, 'campus view', dirname(resolve(args.out)), () => ({ state: window.__maquette }), 180000);
   const errors = await b.page.evaluate(() => window.__maquette.errors);
   await b.page.addStyleTag({ content: '#panel { display: none !important; }' });
   await b.page.screenshot({ path: args.out });
