@@ -78,7 +78,7 @@ std::vector<PlanePoint> poisson_disk(const PolygonSet& region, double min_distan
         for (int t = 0; t < kPoissonTries; ++t) {
           const PlanePoint q{(double(i) + unit_interval(splitmix64_next(state))) * r,
                              (double(j) + unit_interval(splitmix64_next(state))) * r};
-          if (buckets.free(i, j, q, r2) && region.contains({q.x, q.y})) buckets.keep(i, j, q);
+          if (buckets.free(i, j, q, r2)) buckets.keep(i, j, q);
         }
       }
   }
@@ -87,7 +87,8 @@ std::vector<PlanePoint> poisson_disk(const PolygonSet& region, double min_distan
     for (int64_t i = wi0; i <= wi1; ++i)
       for (int s = 0; s < buckets.count(i, j); ++s) {
         const PlanePoint q = buckets.point(i, j, s);
-        if (q.x >= window.x_min && q.x < window.x_max && q.y >= window.y_min && q.y < window.y_max)
+        if (q.x >= window.x_min && q.x < window.x_max && q.y >= window.y_min &&
+            q.y < window.y_max && region.contains({q.x, q.y}))
           out.push_back(q);
       }
   return out;

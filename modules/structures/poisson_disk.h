@@ -5,7 +5,10 @@
 // The plane is cut into a global lattice of square buckets of side r = min_distance, bucket
 // (i, j) covering [i r, (i + 1) r) x [j r, (j + 1) r). Each bucket throws kPoissonTries darts in
 // turn at positions hashed from (seed, i, j, dart) (splitmix64); a dart is kept when no point kept
-// in the 3 x 3 buckets around it is closer than r, and it lies in the region. Buckets go in 9
+// in the 3 x 3 buckets around it is closer than r. The plane is sampled whole and the region cut
+// out of it afterwards: sampled inside the region only, points along its edge would meet no
+// competitor beyond it and pack more densely there (random sequential adsorption's wall effect:
+// 18-36 % more plants than one per spacing^2 in a garden of a few dozen trees). Buckets go in 9
 // phases by (i mod 3, j mod 3): buckets of one phase are 2 r apart and never compete, and a
 // bucket at phase p depends only on the buckets of earlier phases next to it (parallel Poisson
 // disk sampling by phase groups, Wei 2008). A window is thus sampled exactly by running phase p

@@ -233,11 +233,10 @@ TEST(CampusExample, TreesFillTheirStrokesOnTheGround) {
                 properties["name"].get<std::string>().c_str(), trees.size(), expected, closest,
                 spacing);
     EXPECT_GE(closest, 0.769 * spacing) << properties["name"];
-    // One plant per spacing^2 inside, more in the band within the minimum distance of the
-    // stroke's edge (no dart outside the stroke is kept to keep them apart): on strokes a few
-    // spacings wide, 20-40 % more in all.
-    EXPECT_GE(double(trees.size()), 0.9 * expected) << properties["name"];
-    EXPECT_LE(double(trees.size()), 1.5 * expected) << properties["name"];
+    // One plant per spacing^2 on average (poisson_disk.h: the plane sampled whole, the stroke
+    // cut out of it); a garden of a few dozen trees within a quarter of that.
+    EXPECT_GE(double(trees.size()), 0.75 * expected) << properties["name"];
+    EXPECT_LE(double(trees.size()), 1.25 * expected) << properties["name"];
   }
   EXPECT_EQ(vegetation, 2);
   EXPECT_LE(worst_base, 0.01);
