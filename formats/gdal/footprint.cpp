@@ -1,9 +1,15 @@
 #include "gdal/footprint.h"
 
+#include <ogr_geometry.h>
+
+#include <GeographicLib/Geodesic.hpp>
+#include <GeographicLib/PolygonArea.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <memory>
 #include <numbers>
 
 #include "core/error.h"
@@ -109,6 +115,70 @@ Footprint source_footprint(const RasterSource& s) {
   }
   f.polygons.push_back({ring});
   return f;
+}
+
+namespace {
+
+std::unique_ptr<OGRGeometry> ogr_polygons(const std::vector<PolygonRings>& polygons, double shift) {
+  auto multi = std::make_unique<OGRMultiPolygon>();
+  for (const PolygonRings& rings : polygons) {
+    OGRPolygon polygon;
+    for (const std::vector<LonLat>& ring : rings) {
+      OGRLinearRing r;
+      for (const LonLat& p : ring) r.addPoint(p.lon + shift, p.lat);
+      r.closeRings();
+      polygon.addRing(&r);
+    }
+    multi->addGeometry(&polygon);
+  }
+  return multi;
+}
+
+void add_polygons(const OGRGeometry& g, std::vector<PolygonRings>& out) {
+  const OGRwkbGeometryType type = wkbFlatten(g.getGeometryType());
+  if (type == wkbPolygon) {
+    PolygonRings rings;
+    for (const OGRLinearRing* r : *g.toPolygon()) {
+      std::vector<LonLat>& ring = rings.emplace_back();
+      for (const OGRPoint& p : *r) ring.push_back({p.getX(), p.getY()});
+    }
+    out.push_back(std::move(rings));
+  } else if (type == wkbMultiPolygon || type == wkbGeometryCollection) {
+    for (const OGRGeometry* part : *g.toGeometryCollection()) add_polygons(*part, out);
+  }
+}
+
+}  // namespace
+
+Footprint clipped_footprint(const Footprint& footprint, const std::vector<PolygonRings>& region) {
+  const std::unique_ptr<OGRGeometry> source = ogr_polygons(footprint.polygons, 0);
+  Footprint out;
+  out.west = out.south = std::numeric_limits<double>::infinity();
+  out.east = out.north = -std::numeric_limits<double>::infinity();
+  for (const double shift : {-360.0, 0.0, 360.0}) {
+    const std::unique_ptr<OGRGeometry> part(
+        source->Intersection(ogr_polygons(region, shift).get()));
+    if (!part || part->IsEmpty()) continue;
+    add_polygons(*part, out.polygons);
+    OGREnvelope e;
+    part->getEnvelope(&e);
+    out.west = std::min(out.west, e.MinX), out.east = std::max(out.east, e.MaxX);
+    out.south = std::min(out.south, e.MinY), out.north = std::max(out.north, e.MaxY);
+  }
+  return out;
+}
+
+double footprint_area_m2(const Footprint& footprint) {
+  double area = 0;
+  for (const PolygonRings& rings : footprint.polygons)
+    for (size_t k = 0; k < rings.size(); ++k) {
+      GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());
+      for (const LonLat& p : rings[k]) polygon.AddPoint(p.lat, p.lon);
+      double perimeter = 0, ring_area = 0;
+      polygon.Compute(false, true, perimeter, ring_area);
+      area += (k == 0 ? 1 : -1) * std::abs(ring_area);
+    }
+  return area;
 }
 
 std::vector<CellId> cover_footprint(const Grid& grid, const Footprint& footprint, int level) {

@@ -24,6 +24,15 @@ struct Footprint {
 // transforms.
 Footprint source_footprint(const RasterSource& source);
 
+// The footprint's part inside `region` (lon/lat polygons; longitudes of either beyond +-180 are
+// matched modulo 360), clipped by OGR; west..east and south..north those of the part. What an
+// ingest limited to a --bbox or --region covers: covering a global source whole at a fine level
+// would count billions of cells for a region of a few.
+Footprint clipped_footprint(const Footprint& footprint, const std::vector<PolygonRings>& region);
+
+// The area of the footprint's polygons on the WGS84 ellipsoid (m^2; edges taken as geodesics).
+double footprint_area_m2(const Footprint& footprint);
+
 // Cells at `level` overlapping the footprint, sorted.
 std::vector<CellId> cover_footprint(const Grid& grid, const Footprint& footprint, int level);
 

@@ -82,29 +82,24 @@ int choose_level(const Grid& grid, int tile_size, double source_pixel_m) {
   return CellId::kMaxLevel;
 }
 
-std::vector<CellId> region_cells(const Grid& grid, const RasterIngestOptions& o, int level) {
+// The --bbox or --region as lon/lat polygons, empty without one.
+std::vector<PolygonRings> region_polygons(const RasterIngestOptions& o) {
   if (o.bbox) {
     const auto& b = *o.bbox;
     check_bbox({b[0], b[1], b[2], b[3]}, "--bbox");
-    return grid.cover_bbox(b[0], b[1], b[2], b[3], level, Containment::Overlap);
+    const double east = b[2] < b[0] ? b[2] + 360 : b[2];  // across the antimeridian
+    return {{{{b[0], b[1]}, {east, b[1]}, {east, b[3]}, {b[0], b[3]}, {b[0], b[1]}}}};
   }
-  return cover_geojson(grid, read_geojson_polygons(o.region), level, Containment::Overlap);
+  return o.region.empty() ? std::vector<PolygonRings>{} : read_geojson_polygons(o.region);
 }
 
 // Where the layer's samples come from: the sources' outlines, within the --bbox or --region.
 DataFootprint data_footprint(const std::vector<Footprint>& footprints,
-                             const RasterIngestOptions& o) {
-  std::vector<PolygonRings> sources, region;
+                             const std::vector<PolygonRings>& region) {
+  std::vector<PolygonRings> sources;
   for (const Footprint& f : footprints)
     sources.insert(sources.end(), f.polygons.begin(), f.polygons.end());
-  if (o.bbox) {
-    const auto& b = *o.bbox;
-    const double east = b[2] < b[0] ? b[2] + 360 : b[2];  // across the antimeridian
-    region.push_back({{{b[0], b[1]}, {east, b[1]}, {east, b[3]}, {b[0], b[3]}, {b[0], b[1]}}});
-  } else if (!o.region.empty()) {
-    region = read_geojson_polygons(o.region);
-  }
-  return DataFootprint(std::move(sources), std::move(region));
+  return DataFootprint(std::move(sources), region);
 }
 
 // Refuses a job of `tiles` tiles (unless force), with the estimate.
@@ -179,32 +174,34 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
   l.level = level;
   const bool keep_dtype = (categorical || o.as == "imagery") && !first.scaled;
   l.dtype = keep_dtype ? first.dtype : DType::F32;
-  // A first estimate from the sources' ground area, before covering: a cover at a level far too
-  // fine would itself exhaust memory.
-  double ground_m2 = 0;
-  for (const RasterSource& s : p.sources)
-    ground_m2 += double(s.width) * s.height * std::pow(ground_pixel_m(s), 2);
-  const double rough_tiles = ground_m2 / grid.area(level);
-  if (rough_tiles > 4.0 * kMaxIngestTiles) check_size(p, int64_t(rough_tiles), store_path, o.force);
-
-  for (const Footprint& f : footprints) {
-    std::vector<CellId> c = cover_footprint(grid, f, level), merged;
-    std::set_union(p.cells.begin(), p.cells.end(), c.begin(), c.end(), std::back_inserter(merged));
-    p.cells = std::move(merged);
-  }
-  if (o.bbox || !o.region.empty()) {
-    const std::vector<CellId> r = region_cells(grid, o, level);
-    std::vector<CellId> both;
-    std::set_intersection(p.cells.begin(), p.cells.end(), r.begin(), r.end(),
-                          std::back_inserter(both));
-    if (both.empty()) {
+  // Limited to a --bbox or --region, each source's part inside it: a global source is not
+  // covered whole at a fine level for a region of a few cells.
+  const std::vector<PolygonRings> region = region_polygons(o);
+  std::vector<Footprint> parts = footprints;
+  if (!region.empty()) {
+    for (Footprint& f : parts) f = clipped_footprint(f, region);
+    if (std::ranges::all_of(parts, [](const Footprint& f) { return f.polygons.empty(); })) {
       std::string where;
       for (size_t i = 0; i < footprints.size(); ++i)
         where += (i ? "; " : "") + p.sources[i].path + ": " + footprints[i].describe();
       throw Error(std::string(o.bbox ? "--bbox" : "--region " + o.region) +
                   " does not overlap the sources (" + where + ")");
     }
-    p.cells = std::move(both);
+  }
+  // A first estimate from the ground area, before covering: a cover at a level far too fine
+  // would itself exhaust memory.
+  double ground_m2 = 0;
+  for (size_t i = 0; i < p.sources.size(); ++i)
+    ground_m2 += region.empty() ? double(p.sources[i].width) * p.sources[i].height *
+                                      std::pow(ground_pixel_m(p.sources[i]), 2)
+                                : footprint_area_m2(parts[i]);
+  const double rough_tiles = ground_m2 / grid.area(level);
+  if (rough_tiles > 4.0 * kMaxIngestTiles) check_size(p, int64_t(rough_tiles), store_path, o.force);
+
+  for (const Footprint& f : parts) {
+    std::vector<CellId> c = cover_footprint(grid, f, level), merged;
+    std::set_union(p.cells.begin(), p.cells.end(), c.begin(), c.end(), std::back_inserter(merged));
+    p.cells = std::move(merged);
   }
 
   l.name = o.layer;
@@ -246,14 +243,14 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
                   {"resampling", resampling_name(p.resampling)},
                   {"source_pixel_m", p.source_pixel_m},
                   {"pixel_m", p.target_pixel_m},
-                  {"footprint", data_footprint(footprints, o).to_json()}};
+                  {"footprint", data_footprint(footprints, region).to_json()}};
   if (!o.src_crs.empty()) l.provenance["src_crs"] = o.src_crs;
   if (o.as == "dem") l.provenance["vertical_datum"] = dem_vertical_datum(o, first).to_json();
   if (categorical) l.provenance["classes"] = classes.is_null() ? first.classes : classes;
 
-  nlohmann::json region;
-  if (o.bbox) region = {{"bbox", *o.bbox}};
-  if (!o.region.empty()) region = {{"geojson", std::filesystem::absolute(o.region).string()}};
+  nlohmann::json limit;
+  if (o.bbox) limit = {{"bbox", *o.bbox}};
+  if (!o.region.empty()) limit = {{"geojson", std::filesystem::absolute(o.region).string()}};
   p.run = {{"maquette_ingest",
             {{"layer", o.layer},
              {"as", o.as},
@@ -261,7 +258,7 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
              {"bands", o.bands},
              {"level", level},
              {"tile_size", o.tile_size},
-             {"region", region},
+             {"region", limit},
              {"src_crs", o.src_crs},
              {"resampling", resampling_name(p.resampling)},
              {"classes", l.provenance.value("classes", nlohmann::json())}}}};

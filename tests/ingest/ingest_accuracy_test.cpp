@@ -2,6 +2,7 @@
 // categorical, the whole globe, across the antimeridian, over a pole.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -181,6 +182,31 @@ TEST(IngestAccuracy, WholeGlobeCoversAllSixFaces) {
   check_lonlat_raster(spec, 0.9, &faces, &samples);
   EXPECT_EQ(faces.size(), 6u);
   EXPECT_EQ(samples, 6 * 256 * 256);  // no hole anywhere: poles and antimeridian included
+}
+
+// A global source limited to a small --bbox at a fine level: only the bbox's cells, not the globe
+// covered first (2.5 billion cells at level 14); a bbox across the antimeridian takes both sides.
+TEST(IngestAccuracy, GlobalSourceInASmallBboxAtAFineLevel) {
+  RasterSpec spec;
+  spec.width = 360;
+  spec.height = 180;
+  spec.geotransform = {-180, 1, 0, 90, 0, -1};
+  spec.crs = "EPSG:4326";
+  const std::string dir = temp_dir(), tif = dir + "/globe.tif";
+  write_raster(tif, spec, [](int, double lon, double lat) { return sphere_field(lon, lat); });
+  for (const std::array<double, 4> bbox : {std::array<double, 4>{-0.146, 51.507, -0.128, 51.519},
+                                           std::array<double, 4>{179.995, -0.01, -179.995, 0.01}}) {
+    RasterIngestOptions o;
+    o.layer = "f";
+    o.as = "raster";
+    o.level = 14;
+    o.bbox = bbox;
+    const auto store = ingest(dir, "small" + std::to_string(int(bbox[0])), {tif}, o);
+    const std::vector<CellId> want =
+        default_grid().cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], 14, Containment::Overlap);
+    EXPECT_GT(want.size(), 4u);
+    EXPECT_EQ(store->tile_cells("f"), want) << bbox[0];
+  }
 }
 
 TEST(IngestAccuracy, RasterAcrossTheAntimeridian) {
