@@ -35,11 +35,14 @@ std::optional<FaceCoord> pixel_source(const Grid& grid, CellId cell, int size, i
 }
 
 LonLat pixel_centre(const Grid& grid, FaceCoord pixel, int pixel_level) {
-  const PlaneSquare face = grid.plane_square(CellId::FromFace(pixel.face));
+  return face_point_lonlat(grid, pixel.face, double(pixel.col), double(pixel.row), pixel_level);
+}
+
+LonLat face_point_lonlat(const Grid& grid, int face, double col, double row, int pixel_level) {
+  const PlaneSquare square = grid.plane_square(CellId::FromFace(face));
   const double scale = std::ldexp(1.0, -pixel_level);
-  const double u = (double(pixel.col) + 0.5) * scale;
-  const double v = (double(pixel.row) + 0.5) * scale;
-  return grid.inverse({face.x_min + u * face.side, face.y_max - v * face.side});
+  const double u = (col + 0.5) * scale, v = (row + 0.5) * scale;
+  return grid.inverse({square.x_min + u * square.side, square.y_max - v * square.side});
 }
 
 Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,

@@ -39,6 +39,9 @@ std::optional<FaceCoord> pixel_source(const Grid& grid, CellId cell, int size, i
 
 // Geodetic centre of a face pixel at `pixel_level` (may exceed CellId::kMaxLevel).
 LonLat pixel_centre(const Grid& grid, FaceCoord pixel, int pixel_level);
+// The geodetic point at fractional pixel coordinates (col, row) of `face` at `pixel_level`
+// (pixel centres at integers, as pixel_centre).
+LonLat face_point_lonlat(const Grid& grid, int face, double col, double row, int pixel_level);
 
 // A one-channel tile of `cell` (no halo) holding field(pixel centre): e.g. a known field for tests.
 Tile<float> sample_field(const Grid& grid, CellId cell, int size,

@@ -1,7 +1,9 @@
 #include "core/unfolded_faces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 
@@ -73,24 +75,41 @@ std::optional<FaceCoord> UnfoldedFaces::to_anchor(FaceCoord pixel) const {
   return FaceCoord{anchor_, int64_t((*q)[0]), int64_t((*q)[1])};
 }
 
-std::optional<FaceCoord> UnfoldedFaces::from_anchor(int64_t col, int64_t row) const {
+std::optional<size_t> UnfoldedFaces::strip_at(int64_t col, int64_t row) const {
   const bool col_in = col >= 0 && col < n_, row_in = row >= 0 && row < n_;
-  if (col_in && row_in) return FaceCoord{anchor_, col, row};
-  size_t e = 0;
-  if (col_in && row >= -n_ && row < 0)
-    e = 0;
-  else if (row_in && col >= n_ && col < 2 * n_)
-    e = 1;
-  else if (col_in && row >= n_ && row < 2 * n_)
-    e = 2;
-  else if (row_in && col >= -n_ && col < 0)
-    e = 3;
-  else
-    return std::nullopt;
-  const Placement& p = edges_[e];
+  if (col_in && row_in) return kAnchorStrip;
+  if (col_in && row >= -n_ && row < 0) return 0;
+  if (row_in && col >= n_ && col < 2 * n_) return 1;
+  if (col_in && row >= n_ && row < 2 * n_) return 2;
+  if (row_in && col >= -n_ && col < 0) return 3;
+  return std::nullopt;
+}
+
+std::optional<FaceCoord> UnfoldedFaces::from_anchor(int64_t col, int64_t row) const {
+  const auto e = strip_at(col, row);
+  if (!e) return std::nullopt;
+  if (*e == kAnchorStrip) return FaceCoord{anchor_, col, row};
+  const Placement& p = edges_[*e];
   const int64_t dc = col - p.strip[0], dr = row - p.strip[1];
   return FaceCoord{p.face, p.at[0] + p.turn[0][0] * dc + p.turn[0][1] * dr,
                    p.at[1] + p.turn[1][0] * dc + p.turn[1][1] * dr};
+}
+
+std::optional<UnfoldedFaces::FacePoint> UnfoldedFaces::from_anchor(double col, double row) const {
+  const auto c0 = int64_t(std::floor(col)), r0 = int64_t(std::floor(row));
+  for (const auto& [dc, dr] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}}) {
+    const auto e = strip_at(c0 + dc, r0 + dr);
+    if (!e) continue;
+    if (*e == kAnchorStrip) return FacePoint{anchor_, col, row};
+    // The pixel's face coordinates plus the offset from its centre, turned as the face is.
+    const FaceCoord pixel = *from_anchor(c0 + dc, r0 + dr);
+    const auto& turn = edges_[*e].turn;
+    const double oc = col - double(c0 + dc), orow = row - double(r0 + dr);
+    return FacePoint{pixel.face,
+                     double(pixel.col) + double(turn[0][0]) * oc + double(turn[0][1]) * orow,
+                     double(pixel.row) + double(turn[1][0]) * oc + double(turn[1][1]) * orow};
+  }
+  return std::nullopt;
 }
 
 std::optional<UnfoldedFaces::TilePlace> UnfoldedFaces::place_tile(CellId cell, int size) const {

@@ -37,6 +37,16 @@ class UnfoldedFaces {
   // The face pixel at anchor-frame (col, row): the anchor's own inside it, a neighbour's in an edge
   // strip; nullopt in the corner gaps and beyond one face width.
   std::optional<FaceCoord> from_anchor(int64_t col, int64_t row) const;
+  // A point of a face in fractional pixel coordinates (pixel centres at integers).
+  struct FacePoint {
+    int face = 0;
+    double col = 0, row = 0;
+  };
+  // The face point at fractional anchor-frame (col, row): mapped through the first of the four
+  // pixels around it (the pixel at or above-left of it, then right, below, below-right) that has
+  // a place, so a point on a seam or beside a corner gap is read on a face that holds it; nullopt
+  // when none has.
+  std::optional<FacePoint> from_anchor(double col, double row) const;
 
   // Where the tile of `cell` (`size` pixels a side, level() = cell level + log2(size)) lies: its
   // pixel (c, r) at anchor-frame first + c * col_step + r * row_step; nullopt when its face has
@@ -53,6 +63,11 @@ class UnfoldedFaces {
     std::array<int64_t, 2> strip{}, at{};
     std::array<std::array<int64_t, 2>, 2> turn{};  // rows of a rotation matrix
   };
+
+  // The edge strip (0..3: top, right, bottom, left) holding anchor-frame (col, row), kAnchorStrip
+  // inside the anchor, nullopt in the corner gaps and beyond one face width.
+  static constexpr size_t kAnchorStrip = 4;
+  std::optional<size_t> strip_at(int64_t col, int64_t row) const;
 
   int anchor_, level_;
   int64_t n_;

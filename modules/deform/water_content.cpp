@@ -7,6 +7,8 @@
 
 #include "content/enu_transform.h"
 #include "core/error.h"
+#include "core/halo.h"
+#include "core/unfolded_faces.h"
 #include "plugins/vdb_content.h"
 #include "runtime/plugin.h"
 #include "stroke.h"
@@ -65,20 +67,18 @@ MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const 
 
 void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
   const LakeMesh mesh = lake_mesh(basin, body);
-  // Corner (col, row) of the mosaic in the grid's plane, from any of the step's cells.
-  const CellId cell = output_.content.begin()->first;
-  const PlaneSquare square = ctx_.grid->plane_square(cell);
-  const int64_t tile = int64_t(1) << (input_.level - cell.level());
-  const double pixel = square.side / double(tile);
-  const double col0 = double(input_.origin_col - int64_t(cell.col()) * tile);
-  const double row0 = double(input_.origin_row - int64_t(cell.row()) * tile);
+  // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
+  // the mosaic's face (a lake may cross a face seam).
+  const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
   if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;
   for (const LakeVertex& v : mesh.vertices) {
-    const LonLat p = ctx_.grid->inverse(
-        {square.x_min + (col0 + v.col) * pixel, square.y_max - (row0 + v.row) * pixel});
+    // A corner of a wet pixel, which has a place.
+    const UnfoldedFaces::FacePoint at = *plane.from_anchor(double(input_.origin_col) + v.col - 0.5,
+                                                           double(input_.origin_row) + v.row - 0.5);
+    const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
     lake.places.push_back({p.lon, p.lat, (*to_ellipsoid_)(p, v.height)});
     lake.on_surface.push_back(v.height == body.level);
   }

@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "core/halo.h"
+#include "core/unfolded_faces.h"
 #include "operators.h"
 #include "stroke.h"
 #include "water_body.h"
@@ -19,6 +20,8 @@ OperatorSpec water_spec() {
       "Bodies of water in closed strokes (tool 'water'): the lake below the spill level, a given "
       "level or a boundary percentile, as a water-depth raster, closed meshes and fog volumes";
   s.kind = OperatorKind::Region;
+  // Pixel centres and the lake's corners are placed through the unfolded plane.
+  s.spans_faces = true;
   InputSpec dem;
   dem.name = "dem";
   dem.description = "terrain heights (m)";
@@ -96,10 +99,14 @@ class Water : public RegionOperator {
     for (const VectorFeature* f : strokes) {
       if (!is_water_stroke(*f)) continue;
       if (centres.empty()) {  // once, for the first water stroke
+        // The mosaic may span faces (core/unfolded_faces.h): a sample in a corner gap of the
+        // unfolded plane has no centre (NaN: in no polygon) and no terrain.
+        const UnfoldedFaces plane(*ctx.grid, input.face, input.level);
         for (int r = 0; r < side; ++r)
           for (int c = 0; c < side; ++c) {
-            centres.push_back(pixel_centre(
-                *ctx.grid, {input.face, input.origin_col + c, input.origin_row + r}, input.level));
+            const auto pixel = plane.from_anchor(input.origin_col + c, input.origin_row + r);
+            centres.push_back(pixel ? pixel_centre(*ctx.grid, *pixel, input.level)
+                                    : LonLat{NAN, NAN});
             terrain.push_back(dem.at(c, r));
           }
       }

@@ -62,7 +62,8 @@ TEST(UnfoldedFaces, StripsAreTheGridsWrapAndInvert) {
 }
 
 // Anchor N: the strip below it is O's plane as PROJ lays it (N sits above O); the strip right of
-// it is P's square turned by 90 degrees about N's bottom-right corner, where N, O and P meet.
+// it is P's square turned by 90 degrees about N's bottom-right corner, where N, O and P meet; so
+// are points between pixel centres there (fractional from_anchor, face_point_lonlat).
 TEST(UnfoldedFaces, NeighbourStripsLieWherePROJPutsThem) {
   const Grid& grid = default_grid();
   PJ_CONTEXT* ctx = proj_context_create();
@@ -91,8 +92,17 @@ TEST(UnfoldedFaces, NeighbourStripsLieWherePROJPutsThem) {
       const double dx = (double(depth) + 0.5) * pixel;
       const double dy = n_face.side - (double(i) + 0.5) * pixel;
       const LonLat right_proj = proj_inverse(corner_x + dy, corner_y - dx);
-      worst_m = std::max(
-          {worst_m, test::distance_m(below, below_proj), test::distance_m(right, right_proj)});
+      // A point between pixel centres (a corner's neighbourhood, as a lake's shore corners):
+      // anchor-frame (kN + depth + 0.25, i - 0.3), read on P through a pixel around it.
+      const auto at = plane.from_anchor(double(kN + depth) + 0.25, double(i) - 0.3);
+      ASSERT_TRUE(at);
+      EXPECT_EQ(at->face, 2);
+      const LonLat between = face_point_lonlat(grid, at->face, at->col, at->row, kLevel);
+      const LonLat between_proj = proj_inverse(corner_x + n_face.side - (double(i) + 0.2) * pixel,
+                                               corner_y - (double(depth) + 0.75) * pixel);
+      worst_m =
+          std::max({worst_m, test::distance_m(below, below_proj),
+                    test::distance_m(right, right_proj), test::distance_m(between, between_proj)});
     }
   proj_destroy(pj);
   proj_context_destroy(ctx);
