@@ -138,16 +138,6 @@ int changed_outside(const Fixture& fx, const Mosaic& input, const Tile<float>& o
   return changed;
 }
 
-// The samples of `input`'s mosaic `refine` levels finer (the same place, 2^refine more a side).
-Mosaic finer(const Mosaic& input, int refine) {
-  Mosaic m;
-  m.face = input.face;
-  m.level = input.level + refine;
-  m.origin_col = input.origin_col << refine;
-  m.origin_row = input.origin_row << refine;
-  return m;
-}
-
 // Cuts the channel into `surface` `refine` levels finer and checks it against the closed form
 // within the limits at that level.
 void expect_finer_channel(const char* name, const Surface& surface, int refine,

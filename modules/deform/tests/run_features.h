@@ -24,4 +24,15 @@ inline Tile<float> deform_run(Mosaic input, const std::vector<const VectorFeatur
   return output.layers.at("dem");
 }
 
+// The samples of `input`'s mosaic `refine` levels finer (the same place, 2^refine more a side):
+// where deform_run's output lies.
+inline Mosaic finer(const Mosaic& input, int refine) {
+  Mosaic m;
+  m.face = input.face;
+  m.level = input.level + refine;
+  m.origin_col = input.origin_col << refine;
+  m.origin_row = input.origin_row << refine;
+  return m;
+}
+
 }  // namespace maquette::deform
