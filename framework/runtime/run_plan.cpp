@@ -341,8 +341,9 @@ class Planner {
     };
     const MosaicBox box{face, cell_of(col0), cell_of(row0),
                         std::max(col1 - col0, row1 - row0) / tile_size + 1};
-    // A refined step's output mosaic is the largest.
-    if (const int64_t side = (box.cells * tile_size) << step.refine; side > kMaxMosaicSide)
+    // A refined step's output mosaic is the largest (with the operator's halo).
+    if (const int64_t side = (box.cells * tile_size + 2 * step.op->spec().halo) << step.refine;
+        side > kMaxMosaicSide)
       throw Error(step.label() + ": the region's mosaic would be " + std::to_string(side) + " x " +
                   std::to_string(side) + " samples, above the limit of " +
                   std::to_string(kMaxMosaicSide) + " x " + std::to_string(kMaxMosaicSide));

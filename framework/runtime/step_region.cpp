@@ -1,5 +1,6 @@
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/error.h"
 #include "core/unfolded_faces.h"
@@ -51,6 +52,30 @@ FeatureList near_any(const FeaturePort& port, const std::vector<CellId>& cells) 
   return out;
 }
 
+// Fills the outer `halo` samples of each side of `mosaic` (of `layer`, origin at anchor-frame
+// (origin_col, origin_row)) from the store's tiles of the cells there, as a cell step's halo
+// reads its neighbours; NaN where the plane has no face (a corner gap) or the layer no tile.
+void fill_halo(const UnfoldedFaces& plane, const Mosaic& input, int halo, const LayerInfo& layer,
+               const StepIO& io, int tile_size, Tile<float>& mosaic) {
+  const int side = mosaic.size();
+  std::map<CellId, std::optional<Tile<float>>> tiles;
+  for (int r = 0; r < side; ++r)
+    for (int c = 0; c < side; ++c) {
+      if (c == halo && r >= halo && r < side - halo) c = side - halo;  // skip the inside
+      const auto pixel = plane.from_anchor(input.origin_col + c, input.origin_row + r);
+      if (!pixel) continue;
+      const CellId cell =
+          CellId::FromFaceColRow(pixel->face, input.level - log2_tile_size(tile_size),
+                                 pixel->col / tile_size, pixel->row / tile_size);
+      auto it = tiles.find(cell);
+      if (it == tiles.end()) it = tiles.emplace(cell, io.read(layer, cell)).first;
+      if (!it->second) continue;
+      for (int k = 0; k < mosaic.channels(); ++k)
+        mosaic.at(c, r, k) =
+            it->second->at(int(pixel->col % tile_size), int(pixel->row % tile_size), k);
+    }
+}
+
 // A refined step ("refine": k) writes output mosaics, and so tiles, 2^k times finer: the same
 // place at pixel level + k.
 void refine_mosaic(Mosaic& m, int refine) {
@@ -67,13 +92,16 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
   if (cells.empty()) return;
   const int n = plan.tile_size;
   const auto [face, col0, row0, extent] = plan.mosaic;
-  const int side = int(extent * n);  // at most kMaxMosaicSide (checked by plan_run)
+  // The cells' square grown by the operator's halo on every side: at most kMaxMosaicSide
+  // (checked by plan_run).
+  const int halo = op.spec().halo;
+  const int side = int(extent * n) + 2 * halo;
 
   Mosaic input;
   input.face = face;
   input.level = plan.level + log2_tile_size(n);
-  input.origin_col = col0 * n;
-  input.origin_row = row0 * n;
+  input.origin_col = col0 * n - halo;
+  input.origin_row = row0 * n - halo;
   const UnfoldedFaces plane(default_grid(), face, input.level);
   Mosaic output = input;
   for (const auto& [port, layer] : plan.inputs) {
@@ -81,6 +109,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     for (const CellId c : cells)
       if (const auto tile = io.read(layer, c))
         paste(*tile, mosaic, mosaic_place(plane, input, c, n));
+    if (halo > 0) fill_halo(plane, input, halo, layer, io, n, mosaic);
     input.layers.emplace(port, std::move(mosaic));
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);

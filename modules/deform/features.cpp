@@ -23,6 +23,11 @@
 namespace maquette::deform {
 namespace {
 
+// The samples of the neighbouring tiles around the region's mosaic (OperatorSpec::halo): read
+// only for the finer samples between the region's outermost sample centres and its edge, so
+// that they do not depend on where the region ends; strokes must lie in the region.
+constexpr int kHalo = 1;
+
 OperatorSpec features_spec() {
   OperatorSpec s;
   s.name = "deform.features";
@@ -34,6 +39,7 @@ OperatorSpec features_spec() {
   // "refine": k, the deformed surface k levels of Loop subdivision finer (deform_levels.h).
   s.refinable = true;
   s.spans_faces = true;  // MosaicFrame places samples across face seams
+  s.halo = kHalo;
   s.inputs = {
       {"dem", "elevation (m)", false},
       {"strokes", "features layer with strokes of tool 'feature'", false, LayerKind::Features, 0}};
@@ -140,18 +146,36 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
   return refined_heights(field, window, by_level, energy_weight, subdivision);
 }
 
-// The finer output: the patch where it is, elsewhere the input linearly interpolated at the
-// finer pixel centres.
-void write_finer(const HeightField& field, const RefinedPatch& patch, int refine,
+// The heights of the input mosaic `dem` (the region and its halo) for the finer samples around
+// the refined patch: the halo's nodata (no tile beyond the region, or a corner gap) takes the
+// nearest region sample's height, as the region's edge would without a halo.
+HeightField halo_heights(const Tile<float>& dem) {
+  HeightField grown;
+  grown.width = grown.height = dem.size();
+  grown.z.resize(size_t(dem.size()) * size_t(dem.size()));
+  const int last = dem.size() - 1 - kHalo;
+  for (int r = 0; r < dem.size(); ++r)
+    for (int c = 0; c < dem.size(); ++c) {
+      const float z = dem.at(c, r);
+      grown.z[grown.index(c, r)] =
+          std::isnan(z) ? dem.at(std::clamp(c, kHalo, last), std::clamp(r, kHalo, last)) : z;
+    }
+  return grown;
+}
+
+// The finer output mosaic (the region and its halo): the patch (in the region's finer samples)
+// where it is, elsewhere `grown` (halo_heights) linearly interpolated at the finer pixel centres.
+void write_finer(const HeightField& grown, const RefinedPatch& patch, int refine,
                  Tile<float>& out) {
   const double scale = 1 << refine;
+  const int shift = kHalo << refine;
   for (int r = 0; r < out.size(); ++r)
     for (int c = 0; c < out.size(); ++c) {
-      const int j = c - patch.col0, i = r - patch.row0;
+      const int j = c - shift - patch.col0, i = r - shift - patch.row0;
       out.at(c, r) =
           float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
                     ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
-                    : height_at_clamped(field, (c + 0.5) / scale - 0.5, (r + 0.5) / scale - 0.5));
+                    : height_at_clamped(grown, (c + 0.5) / scale - 0.5, (r + 0.5) / scale - 0.5));
     }
 }
 
@@ -166,40 +190,41 @@ class Features : public RegionOperator {
     const Tile<float>& dem = input.layers.at("dem");
     Tile<float>& out = output.layers.at("dem");
     const double energy_weight = ctx.params->at("energy_weight").get<double>();
-    const int size = dem.size();
+    // The region: the mosaic less the runner's halo of kHalo samples on every side.
+    const int size = dem.size() - 2 * kHalo;
     // The step's refine: the runner makes the output mosaic 2^refine times finer.
     const int refine = output.level - input.level;
-    if (refine < 0 || refine > 3 || out.size() != size << refine)
+    if (refine < 0 || refine > 3 || size < 2 || out.size() != dem.size() << refine)
       throw Error("deform.features: output mosaic of " + std::to_string(out.size()) +
                   " samples a side at level " + std::to_string(output.level) + " for an input of " +
-                  std::to_string(size) + " at level " + std::to_string(input.level) +
+                  std::to_string(dem.size()) + " at level " + std::to_string(input.level) +
                   " (refine 0 to 3 levels)");
     const std::vector<FeatureStroke> strokes =
         feature_strokes(input.features.at("strokes"), "strokes");
     if (refine == 0) out = dem;
     if (strokes.empty() && refine == 0) return;
+    if (strokes.empty()) {
+      write_finer(halo_heights(dem), {}, refine, out);
+      return;
+    }
 
     HeightField field;
     field.width = field.height = size;
     field.z.resize(size_t(size) * size_t(size));
     for (int r = 0; r < size; ++r)
-      for (int c = 0; c < size; ++c) field.z[field.index(c, r)] = dem.at(c, r);
+      for (int c = 0; c < size; ++c) field.z[field.index(c, r)] = dem.at(c + kHalo, r + kHalo);
     field.east.assign(field.z.size(), NAN);
     field.north.assign(field.z.size(), NAN);
-    if (strokes.empty()) {
-      write_finer(field, {}, refine, out);
-      return;
-    }
 
     const LonLat reference = strokes.front().curve.front();
-    const MosaicFrame frame(*ctx.grid, input.face, input.level, input.origin_col, input.origin_row,
-                            reference);
+    const MosaicFrame frame(*ctx.grid, input.face, input.level, input.origin_col + kHalo,
+                            input.origin_row + kHalo, reference);
     // Half a sample: every triangle the curve or a cross section crosses holds a constraint.
     const double step_m = 0.5 * sample_spacing(frame, size, reference);
     if (refine > 0) {
       const Subdivision subdivision =
           ctx.params->at("subdivision") == "uniform" ? Subdivision::Uniform : Subdivision::Adaptive;
-      write_finer(field,
+      write_finer(halo_heights(dem),
                   refine_near(frame, field, strokes, step_m, energy_weight, refine, subdivision),
                   refine, out);
       return;
@@ -214,7 +239,8 @@ class Features : public RegionOperator {
     for (int r = 0; r < size; ++r)
       for (int c = 0; c < size; ++c) {
         const double z = field.z[field.index(c, r)];
-        if (!std::isnan(z) && z != double(dem.at(c, r))) out.at(c, r) = float(z);
+        if (!std::isnan(z) && z != double(dem.at(c + kHalo, r + kHalo)))
+          out.at(c + kHalo, r + kHalo) = float(z);
       }
   }
 };

@@ -1,6 +1,7 @@
 // Runs deform.features on a region mosaic as the runner would: the strokes on its "strokes" port,
 // an all-NaN output DEM `refine` levels finer, `params` (energy weight 0.01, adaptive subdivision
-// unless given); returns the output mosaic's DEM.
+// unless given); returns the output mosaic's DEM. The mosaic's outer sample on every side is the
+// runner's halo (the operator's spec): not of the region, its output cut off by the runner.
 #pragma once
 
 #include <cmath>

@@ -189,12 +189,11 @@ void expect_river_across(double lon, int beyond_face, int refine, double control
     }
   EXPECT_EQ(changed_outside, 0);
 
-  // Another tiling: one cell more before and after; the shared samples keep their bits (refined,
-  // but for the outermost ring of finer samples, which the operator extends from the mosaic's
-  // edge: the runner's halo holds it, framework/runtime/README.md).
+  // Another tiling: one cell more before and after; the shared samples of the region keep their
+  // bits (the mosaic less its outer sample, the runner's halo, which it cuts off).
   const Mosaic wide = seam.dem(2, 5);
   const Tile<float> wide_out = deform_run(wide, {&river}, refine);
-  const int ring = (1 << refine) / 2, shift = kTile << refine;
+  const int ring = 1 << refine, shift = kTile << refine;
   int differ = 0;
   for (int r = ring; r < out.size() - ring; ++r)
     for (int c = ring; c < out.size() - ring; ++c)
