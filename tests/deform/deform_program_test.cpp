@@ -322,7 +322,7 @@ json rectangular_channel() {
 // middle 90 m: the trench (samples lowered by more than half the depth) has the same width
 // within one sample, and the same depth on the stream within 1 cm. Not asserted, printed: the
 // least squares of the cross section's points cannot follow a vertical wall within a triangle
-// and rings beside it (the Gibbs effect of a least-squares fit of a step; measured 18 cm on the
+// and rings beside it (the Gibbs effect of a least-squares fit of a step; measured 327 mm on the
 // 3 m wall, where r.carve's trench is exact).
 TEST(DeformProgram, RectangularTrenchMatchesGrassRCarve) {
   if (std::system("command -v grass >/dev/null 2>&1") != 0)
