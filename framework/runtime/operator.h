@@ -65,8 +65,9 @@ struct OperatorSpec {
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
   // Pixels of neighbouring tiles each input tile needs on every side. A region operator's mosaics
-  // (input and output) are grown by as many samples on every side of its cells' square, read from
-  // the tiles there (NaN where none); the output is cut back to the cells' tiles.
+  // (input and output) are grown by as many samples on every side of its cells' square, and the
+  // input's samples within that many of a cell's tile that no cell of the step covers are read
+  // from the tiles there (NaN where none); the output is cut back to the cells' tiles.
   int halo = 0;
   // Outputs `refine` levels finer than the inputs (a step's "refine"): a cell operator gets tiles
   // of tile_size << refine (CellContext::refine), a region operator output mosaics as much finer.

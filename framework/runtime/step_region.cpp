@@ -52,28 +52,44 @@ FeatureList near_any(const FeaturePort& port, const std::vector<CellId>& cells) 
   return out;
 }
 
-// Fills the outer `halo` samples of each side of `mosaic` (of `layer`, origin at anchor-frame
-// (origin_col, origin_row)) from the store's tiles of the cells there, as a cell step's halo
-// reads its neighbours; NaN where the plane has no face (a corner gap) or the layer no tile.
-void fill_halo(const UnfoldedFaces& plane, const Mosaic& input, int halo, const LayerInfo& layer,
-               const StepIO& io, int tile_size, Tile<float>& mosaic) {
+// Fills the samples within `halo` of the cells' tiles in `mosaic` (of `layer`, pasted at their
+// places) that no cell's tile covers, from the store's tiles there, as a cell step's halo reads
+// its neighbours: the ring around the cells' square, and where the cells do not fill it (a
+// region that is not a square of cells, or across a seam). NaN where the plane has no face (a
+// corner gap) or the layer no tile.
+void fill_halo(const UnfoldedFaces& plane, const Mosaic& input, const std::vector<CellId>& cells,
+               int halo, const LayerInfo& layer, const StepIO& io, int tile_size,
+               Tile<float>& mosaic) {
   const int side = mosaic.size();
+  std::vector<char> covered(size_t(side) * size_t(side), 0);
+  std::vector<TilePlace> places;
+  for (const CellId c : cells) {
+    places.push_back(mosaic_place(plane, input, c, tile_size));
+    for (int r = 0; r < tile_size; ++r)
+      for (int k = 0; k < tile_size; ++k)
+        covered[size_t(mosaic_row(places.back(), k, r)) * size_t(side) +
+                size_t(mosaic_col(places.back(), k, r))] = 1;
+  }
+  const int level = input.level - log2_tile_size(tile_size);
   std::map<CellId, std::optional<Tile<float>>> tiles;
-  for (int r = 0; r < side; ++r)
-    for (int c = 0; c < side; ++c) {
-      if (c == halo && r >= halo && r < side - halo) c = side - halo;  // skip the inside
-      const auto pixel = plane.from_anchor(input.origin_col + c, input.origin_row + r);
-      if (!pixel) continue;
-      const CellId cell =
-          CellId::FromFaceColRow(pixel->face, input.level - log2_tile_size(tile_size),
-                                 pixel->col / tile_size, pixel->row / tile_size);
-      auto it = tiles.find(cell);
-      if (it == tiles.end()) it = tiles.emplace(cell, io.read(layer, cell)).first;
-      if (!it->second) continue;
-      for (int k = 0; k < mosaic.channels(); ++k)
-        mosaic.at(c, r, k) =
-            it->second->at(int(pixel->col % tile_size), int(pixel->row % tile_size), k);
-    }
+  for (const TilePlace& at : places)
+    for (int r = -halo; r < tile_size + halo; ++r)
+      for (int c = -halo; c < tile_size + halo; ++c) {
+        const int col = mosaic_col(at, c, r), row = mosaic_row(at, c, r);
+        char& done = covered[size_t(row) * size_t(side) + size_t(col)];
+        if (done) continue;  // a cell's own sample, or filled already
+        done = 1;
+        const auto pixel = plane.from_anchor(input.origin_col + col, input.origin_row + row);
+        if (!pixel) continue;
+        const CellId cell = CellId::FromFaceColRow(
+            pixel->face, level, uint32_t(pixel->col / tile_size), uint32_t(pixel->row / tile_size));
+        auto it = tiles.find(cell);
+        if (it == tiles.end()) it = tiles.emplace(cell, io.read(layer, cell)).first;
+        if (!it->second) continue;
+        for (int k = 0; k < mosaic.channels(); ++k)
+          mosaic.at(col, row, k) =
+              it->second->at(int(pixel->col % tile_size), int(pixel->row % tile_size), k);
+      }
 }
 
 // A refined step ("refine": k) writes output mosaics, and so tiles, 2^k times finer: the same
@@ -109,7 +125,7 @@ void run_region_step(const StepPlan& plan, StepIO& io, Progress& progress) {
     for (const CellId c : cells)
       if (const auto tile = io.read(layer, c))
         paste(*tile, mosaic, mosaic_place(plane, input, c, n));
-    if (halo > 0) fill_halo(plane, input, halo, layer, io, n, mosaic);
+    if (halo > 0) fill_halo(plane, input, cells, halo, layer, io, n, mosaic);
     input.layers.emplace(port, std::move(mosaic));
   }
   for (const FeaturePort& f : plan.features) input.features[f.port] = near_any(f, cells);

@@ -147,8 +147,9 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
 }
 
 // The heights of the input mosaic `dem` (the region and its halo) for the finer samples around
-// the refined patch: the halo's nodata (no tile beyond the region, or a corner gap) takes the
-// nearest region sample's height, as the region's edge would without a halo.
+// the refined patch: nodata on the mosaic's outer ring (no tile beyond the region's square, or a
+// corner gap) takes the nearest region sample's height, as the region's edge would without a
+// halo; other nodata stays (and so do the finer samples of the triangles around it).
 HeightField halo_heights(const Tile<float>& dem) {
   HeightField grown;
   grown.width = grown.height = dem.size();

@@ -35,13 +35,26 @@ using nlohmann::json;
 using test::Raster;
 using test::read_raster;
 
-const LonLat kSite = default_grid().centre(default_grid().cell_from_point({-113.0, 37.2}, 15));
+const LonLat kZion = default_grid().centre(default_grid().cell_from_point({-113.0, 37.2}, 15));
 constexpr double kHalfLat = 0.0015, kHalfLon = 0.0019;  // the region: about 330 x 330 m
 
+// The tests' site (the region's centre, the tangent plane's origin): kZion, or another for the
+// duration of an AtSite.
+LonLat g_site = kZion;
+
 const GeographicLib::LocalCartesian& tangent_plane() {
-  static const GeographicLib::LocalCartesian p(kSite.lat, kSite.lon, 0);
+  static GeographicLib::LocalCartesian p(kZion.lat, kZion.lon, 0);
+  if (p.LatitudeOrigin() != g_site.lat || p.LongitudeOrigin() != g_site.lon)
+    p.Reset(g_site.lat, g_site.lon, 0);
   return p;
 }
+
+struct AtSite {
+  explicit AtSite(LonLat site) { g_site = site; }
+  ~AtSite() { g_site = kZion; }
+  AtSite(const AtSite&) = delete;
+  AtSite& operator=(const AtSite&) = delete;
+};
 
 std::array<double, 2> east_north(LonLat p) {
   double e = 0, n = 0, u = 0;
@@ -84,8 +97,8 @@ Case make_case(const std::string& name, int level, int tile, const json& strokes
     dem.units = "m";
     store->create_layer(dem);
     for (const CellId cell : default_grid().cover_bbox(
-             kSite.lon - 2 * kHalfLon, kSite.lat - 2 * kHalfLat, kSite.lon + 2 * kHalfLon,
-             kSite.lat + 2 * kHalfLat, level, Containment::Overlap))
+             g_site.lon - 2 * kHalfLon, g_site.lat - 2 * kHalfLat, g_site.lon + 2 * kHalfLon,
+             g_site.lat + 2 * kHalfLat, level, Containment::Overlap))
       store->put_tile("dem", cell,
                       from_tile(sample_field(default_grid(), cell, tile, surface), DType::F32));
   }
@@ -97,8 +110,8 @@ Case make_case(const std::string& name, int level, int tile, const json& strokes
   const json pipeline = {{"store", "s.mqt"},
                          {"region",
                           {{"bbox",
-                            {kSite.lon - kHalfLon, kSite.lat - kHalfLat, kSite.lon + kHalfLon,
-                             kSite.lat + kHalfLat}}}},
+                            {g_site.lon - kHalfLon, g_site.lat - kHalfLat, g_site.lon + kHalfLon,
+                             g_site.lat + kHalfLat}}}},
                          {"level", level},
                          {"steps",
                           {{{"op", "deform.features"},
@@ -187,21 +200,28 @@ TEST(DeformProgram, SameBitsForTwoTilingsAndThreadCounts) {
   for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
 }
 
-TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
+// A step with "refine": 1 at the current site: the same bits for two tilings (regions ending at
+// different places) and 1 and 2 threads, every finer sample compared. Returns, per face, the
+// finer samples of the channel's bottom (more than 4.5 m below the plane).
+std::map<int, int> expect_refined_same_bits() {
+  std::map<int, int> bottom;
   const Case fine = make_case("rfine", 17, 64, channel(), plane_height, json::object(), 1);
   const Case fine2 = make_case("rfine2", 17, 64, channel(), plane_height, json::object(), 1);
   const Case coarse = make_case("rcoarse", 16, 128, channel(), plane_height, json::object(), 1);
   for (const auto& [c, threads] :
        {std::pair{&fine, 1}, std::pair{&fine2, 2}, std::pair{&coarse, 1}}) {
     const test::CliResult r = run(*c, threads);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    if (r.exit_code != 0) return bottom;
   }
   const auto a = tiles(fine, "carved"), a2 = tiles(fine2, "carved"), b = tiles(coarse, "carved");
-  ASSERT_FALSE(a.empty());
-  ASSERT_EQ(a.size(), a2.size());
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a.size(), a2.size());
+  if (a.empty() || a.size() != a2.size()) return bottom;
   int compared = 0, differ = 0, lowered = 0;
   for (const auto& [cell, t] : a) {
-    ASSERT_EQ(t.size(), 128) << "a refined step writes 2x finer tiles";
+    EXPECT_EQ(t.size(), 128) << "a refined step writes 2x finer tiles";
+    if (t.size() != 128) return bottom;
     EXPECT_EQ(std::memcmp(t.data().data(), a2.at(cell).data().data(), t.data().size_bytes()), 0)
         << cell.ToText();
     const CellId parent = cell.parent(16);
@@ -220,7 +240,7 @@ TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
         const LonLat p = pixel_centre(
             default_grid(),
             {cell.face(), int64_t(cell.col()) * 128 + col, int64_t(cell.row()) * 128 + r}, 24);
-        if (plane_height(p) - t.at(col, r) > 4.5) ++lowered;
+        if (plane_height(p) - t.at(col, r) > 4.5) ++lowered, ++bottom[cell.face()];
       }
   }
   std::printf("%d finer samples compared, %d lowered by the channel\n", compared, lowered);
@@ -228,6 +248,30 @@ TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
   EXPECT_EQ(differ, 0);
   EXPECT_GT(lowered, 4 * 800);  // the bottom: 150 m by 12 m, ~5000 samples of ~0.6 m
   for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
+  return bottom;
+}
+
+TEST(DeformProgram, RefinedOutputSameBitsForTwoTilingsAndThreadCounts) {
+  expect_refined_same_bits();
+}
+
+// The same across the seam of faces N and O: the site where the meridian -130 leaves N southwards
+// (bisection on the latitude), the channel from 30 m south of it (on O) to 45 m north (on N), the
+// region's cells on both faces in one mosaic unfolded around N, its halo read on both.
+TEST(DeformProgram, RefinedOutputAcrossFacesNAndOSameBitsForTwoTilingsAndThreadCounts) {
+  double south = 30, north = 50;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (south + north);
+    (default_grid().cell_from_point({-130, mid}, 0).face() == 0 ? north : south) = mid;
+  }
+  const AtSite seam({-130, 0.5 * (south + north)});
+  for (const double n : {-30.0, 45.0})
+    ASSERT_EQ(default_grid().cell_from_point(lonlat(0, n), 0).face(), n > 0 ? 0 : 1) << n;
+  const std::map<int, int> bottom = expect_refined_same_bits();
+  std::printf("the channel's bottom: %d finer samples on N, %d on O\n",
+              bottom.count(0) ? bottom.at(0) : 0, bottom.count(1) ? bottom.at(1) : 0);
+  EXPECT_GT(bottom.count(0) ? bottom.at(0) : 0, 1000);
+  EXPECT_GT(bottom.count(1) ? bottom.at(1) : 0, 1000);
 }
 
 // One height map per resolution, as the paper exports: three steps on the same inputs with
@@ -330,8 +374,8 @@ TEST(DeformProgram, RectangularTrenchMatchesGrassRCarve) {
   const Case c = make_case("rcarve", 17, 64, rectangular_channel(), gentle_slope);
   ASSERT_EQ(run(c, 1).exit_code, 0);
   const std::string bbox =
-      " --bbox " + std::to_string(kSite.lon - 0.001) + " " + std::to_string(kSite.lat - 0.0003) +
-      " " + std::to_string(kSite.lon + 0.001) + " " + std::to_string(kSite.lat + 0.0003);
+      " --bbox " + std::to_string(kZion.lon - 0.001) + " " + std::to_string(kZion.lat - 0.0003) +
+      " " + std::to_string(kZion.lon + 0.001) + " " + std::to_string(kZion.lat + 0.0003);
   for (const std::string layer : {"dem", "carved"}) {
     const test::CliResult r =
         test::run_maquette("-q export gtiff " + c.store() + " " + (c.dir / layer).string() +
