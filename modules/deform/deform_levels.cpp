@@ -1,9 +1,11 @@
 #include "deform_levels.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "loop_adaptive.h"
 #include "loop_grid.h"
@@ -11,58 +13,87 @@
 namespace maquette::deform {
 namespace {
 
-// The vertex of each node of a level's grid.
+// The vertex of each node of a level's grid, in a dense table over the grid's extent (a
+// constraint asks three of them: a hash map's look-ups cost more than the table).
 class NodeVertices {
  public:
   explicit NodeVertices(const GridNodes& nodes) {
-    for (size_t v = 0; v < nodes.size(); ++v) index_.emplace(key(nodes[v][0], nodes[v][1]), v);
+    for (const auto& n : nodes) {
+      across_ = std::max(across_, n[0] + 1);
+      down_ = std::max(down_, n[1] + 1);
+    }
+    vertex_.assign(size_t(across_) * size_t(down_), kNone);
+    for (size_t v = 0; v < nodes.size(); ++v)
+      vertex_[size_t(nodes[v][1]) * size_t(across_) + size_t(nodes[v][0])] = uint32_t(v);
   }
   size_t at(int col, int row) const {
-    const auto it = index_.find(key(col, row));
+    const uint32_t v = col >= 0 && row >= 0 && col < across_ && row < down_
+                           ? vertex_[size_t(row) * size_t(across_) + size_t(col)]
+                           : kNone;
     // Every node of a triangle holding a constraint is refined to the finest level.
-    if (it == index_.end()) throw std::logic_error("refined_heights: a constraint off the zone");
-    return it->second;
+    if (v == kNone) throw std::logic_error("refined_heights: a constraint off the zone");
+    return v;
   }
 
  private:
-  static int64_t key(int col, int row) { return (int64_t(row) << 32) | uint32_t(col); }
-  std::unordered_map<int64_t, size_t> index_;
+  static constexpr uint32_t kNone = UINT32_MAX;
+  int across_ = 0, down_ = 0;
+  std::vector<uint32_t> vertex_;
 };
 
-// The constraints located on the grid of `nodes` (level t + 1, 2^(t+1) nodes a base sample,
-// node (0, 0) at the window's first sample) and written through `subdivision` (its rows: the
-// level-(t+1) vertices, columns: the level-t vertices): alpha S_a + beta S_b + gamma S_c (Eq. 4).
+// The row of constraint c located on the grid of `nodes` (level t + 1, 2^(t+1) nodes a base
+// sample, node (0, 0) at the window's first sample) and written through `subdivision` (its rows:
+// the level-(t+1) vertices, columns: the level-t vertices): alpha S_a + beta S_b + gamma S_c (Eq.
+// 4), terms by increasing vertex.
+void row_through(const HeightConstraint& c, const SampleWindow& window, const NodeVertices& nodes,
+                 int scale, const SubdivisionMatrix& subdivision, std::vector<Term>& terms) {
+  const double x = (c.at.sample[0] - window.col0) * scale;
+  const double y = (c.at.sample[1] - window.row0) * scale;
+  const int col = int(std::floor(x)), row = int(std::floor(y));
+  const double fx = x - col, fy = y - row;
+  // The triangle of the square (col, row)-(col + 1, row + 1) as height_field.h cuts it.
+  const bool upper = fx >= fy;
+  const std::array<size_t, 3> vertex{nodes.at(col, row),
+                                     upper ? nodes.at(col + 1, row) : nodes.at(col, row + 1),
+                                     nodes.at(col + 1, row + 1)};
+  const std::array<double, 3> weight =
+      upper ? std::array{1 - fx, fx - fy, fy} : std::array{1 - fy, fy - fx, fx};
+  terms.clear();
+  for (size_t k = 0; k < 3; ++k)
+    for (SubdivisionMatrix::InnerIterator it(subdivision, Eigen::Index(vertex[k])); it; ++it)
+      terms.emplace_back(size_t(it.col()), weight[k] * it.value());
+  std::sort(terms.begin(), terms.end());
+  size_t merged = 0;
+  for (size_t i = 0; i < terms.size(); ++i) {
+    if (merged > 0 && terms[merged - 1].first == terms[i].first)
+      terms[merged - 1].second += terms[i].second;
+    else
+      terms[merged++] = terms[i];
+  }
+  terms.resize(merged);
+}
+
+// The constraints' rows (row_through), in their order: built by blocks in parallel, each row on
+// its own, so the same for any thread count.
 ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
                             const SampleWindow& window, const NodeVertices& nodes, int scale,
                             const SubdivisionMatrix& subdivision) {
-  ConstraintRows rows;
-  std::vector<Term> terms;
-  for (const HeightConstraint& c : constraints) {
-    const double x = (c.at.sample[0] - window.col0) * scale;
-    const double y = (c.at.sample[1] - window.row0) * scale;
-    const int col = int(std::floor(x)), row = int(std::floor(y));
-    const double fx = x - col, fy = y - row;
-    // The triangle of the square (col, row)-(col + 1, row + 1) as height_field.h cuts it.
-    const bool upper = fx >= fy;
-    const std::array<size_t, 3> vertex{nodes.at(col, row),
-                                       upper ? nodes.at(col + 1, row) : nodes.at(col, row + 1),
-                                       nodes.at(col + 1, row + 1)};
-    const std::array<double, 3> weight =
-        upper ? std::array{1 - fx, fx - fy, fy} : std::array{1 - fy, fy - fx, fx};
-    terms.clear();
-    for (size_t k = 0; k < 3; ++k)
-      for (SubdivisionMatrix::InnerIterator it(subdivision, Eigen::Index(vertex[k])); it; ++it)
-        terms.emplace_back(size_t(it.col()), weight[k] * it.value());
-    std::sort(terms.begin(), terms.end());
-    size_t merged = 0;
-    for (size_t i = 0; i < terms.size(); ++i) {
-      if (merged > 0 && terms[merged - 1].first == terms[i].first)
-        terms[merged - 1].second += terms[i].second;
-      else
-        terms[merged++] = terms[i];
+  constexpr size_t kBlock = 4096;
+  std::vector<ConstraintRows> blocks((constraints.size() + kBlock - 1) / kBlock);
+  tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
+    std::vector<Term> terms;
+    for (size_t i = b * kBlock; i < std::min(constraints.size(), (b + 1) * kBlock); ++i) {
+      row_through(constraints[i], window, nodes, scale, subdivision, terms);
+      blocks[b].add(terms, constraints[i].z);
     }
-    terms.resize(merged);
-    rows.add(terms, c.z);
+  });
+  ConstraintRows rows;
+  for (const ConstraintRows& block : blocks) {
+    const size_t offset = rows.terms.size();
+    rows.terms.insert(rows.terms.end(), block.terms.begin(), block.terms.end());
+    for (size_t i = 1; i < block.starts.size(); ++i)
+      rows.starts.push_back(offset + block.starts[i]);
+    rows.rhs.insert(rows.rhs.end(), block.rhs.begin(), block.rhs.end());
   }
   return rows;
 }

@@ -1,5 +1,8 @@
 #include "stroke_constraints.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -33,6 +36,25 @@ class Locator {
       if (!finite) throw Error(where_ + ": its " + what + " crosses nodata at " + lonlat_text(ll));
     }
     return sp;
+  }
+
+  // Every point located, in parallel (each on its own: the same results for any thread count);
+  // a point that fails throws the error of the first such point in `points`' order, as locating
+  // them one by one would.
+  std::vector<SurfacePoint> all(const std::vector<EastNorth2>& points, const char* what) const {
+    std::vector<SurfacePoint> out(points.size());
+    std::vector<char> failed(points.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 256),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t i = range.begin(); i < range.end(); ++i) try {
+                            out[i] = (*this)(points[i], what);
+                          } catch (const Error&) {
+                            failed[i] = 1;
+                          }
+                      });
+    const auto first = std::find(failed.begin(), failed.end(), 1);
+    if (first != failed.end()) (*this)(points[size_t(first - failed.begin())], what);
+    return out;
   }
 
  private:
@@ -70,7 +92,7 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
   // The curve resampled every step_m at most, with elevations.
   const size_t n = size_t(std::ceil(length / step_m));
   std::vector<Vec3d> points(n + 1);
-  std::vector<SurfacePoint> located(n + 1);
+  std::vector<EastNorth2> horizontal(n + 1);
   std::vector<double> z(n + 1);
   size_t segment = 0;
   for (size_t k = 0; k <= n; ++k) {
@@ -80,13 +102,15 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
         std::clamp((s - along[segment]) / (along[segment + 1] - along[segment]), 0.0, 1.0);
     const EastNorth2 a = vertex[segment], b = vertex[segment + 1];
     points[k] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), 0};
-    located[k] = locator({points[k][0], points[k][1]}, "control curve");
+    horizontal[k] = {points[k][0], points[k][1]};
     if (!stroke.z.empty())
       z[k] = vertex_z[segment] + t * (vertex_z[segment + 1] - vertex_z[segment]);
     else if (!stroke.profile.empty())
       z[k] = piecewise_linear(stroke.profile, s);
-    else
-      z[k] = height_at(field, located[k]);
+  }
+  const std::vector<SurfacePoint> located = locator.all(horizontal, "control curve");
+  for (size_t k = 0; k <= n; ++k) {
+    if (stroke.z.empty() && stroke.profile.empty()) z[k] = height_at(field, located[k]);
     out.control.push_back({located[k], z[k]});
   }
 
@@ -106,16 +130,22 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
   // half a sample) past the end.
   out.bands.push_back({vertex, o_min, o_max, 3 * step_m});
   const size_t m = size_t(std::ceil((o_max - o_min) / step_m));
+  std::vector<EastNorth2> across;
+  std::vector<double> across_z;
+  across.reserve((n + 1) * (m + 1));
+  across_z.reserve(across.capacity());
   for (size_t k = 0; k <= n; ++k) {
     const Vec3d& r = frames[k].reference;
     const double norm = std::hypot(r[0], r[1]);
     for (size_t j = 0; j <= m; ++j) {
       const double o = o_min + (o_max - o_min) * double(j) / double(m);
-      const EastNorth2 p{points[k][0] + o * r[0] / norm, points[k][1] + o * r[1] / norm};
-      out.section.push_back(
-          {locator(p, "cross section"), z[k] + piecewise_linear(stroke.cross_section, o)});
+      across.push_back({points[k][0] + o * r[0] / norm, points[k][1] + o * r[1] / norm});
+      across_z.push_back(z[k] + piecewise_linear(stroke.cross_section, o));
     }
   }
+  const std::vector<SurfacePoint> across_located = locator.all(across, "cross section");
+  for (size_t i = 0; i < across.size(); ++i)
+    out.section.push_back({across_located[i], across_z[i]});
 }
 
 }  // namespace maquette::deform
