@@ -1,8 +1,12 @@
 #include "vdb/mesh_fog.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <span>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -18,6 +22,7 @@ using Point = std::array<double, 2>;
 // Where a triangle crosses the vertical line of a voxel column (index coordinates: voxel (i, j,
 // k) centred at (i, j, k)), and how the winding number changes going up through it: +1 through
 // a face seen from below (facing down: the ray enters), -1 through one facing up.
+// Ordered by column and height (a total order: any sort gives the same sequence).
 struct Crossing {
   std::array<int32_t, 2> column;
   double z;
@@ -41,9 +46,9 @@ double edge(Point u, Point v, Point p) {
 // (walked counter-clockwise around it) goes down, or right when horizontal.
 bool owns_edge(Point u, Point v) { return v[1] < u[1] || (v[1] == u[1] && v[0] > u[0]); }
 
-// Every triangle's crossings of the voxel columns whose centres its projection holds (vertical
-// triangles hold none), sorted by column and height.
-std::vector<Crossing> column_crossings(const FogBody& body) {
+// The crossings of triangles [first, last) with the voxel columns whose centres their
+// projections hold (vertical triangles hold none), in triangle order.
+void column_crossings(const FogBody& body, size_t first, size_t last, std::vector<Crossing>& out) {
   const MeshObject& mesh = body.mesh;
   const auto index = [&](uint32_t v) {
     std::array<double, 3> p;
@@ -51,8 +56,7 @@ std::vector<Crossing> column_crossings(const FogBody& body) {
       p[k] = (double(mesh.positions[3 * v + k]) - body.corner[k]) / body.voxel[k] - 0.5;
     return p;
   };
-  std::vector<Crossing> out;
-  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+  for (size_t t = 3 * first; t < 3 * last; t += 3) {
     std::array<std::array<double, 3>, 3> c = {index(mesh.indices[t]), index(mesh.indices[t + 1]),
                                               index(mesh.indices[t + 2])};
     const double area = edge({c[0][0], c[0][1]}, {c[1][0], c[1][1]}, {c[2][0], c[2][1]});
@@ -76,7 +80,76 @@ std::vector<Crossing> column_crossings(const FogBody& body) {
         out.push_back({{int32_t(i), int32_t(j)}, z, step});
       }
   }
-  std::sort(out.begin(), out.end());
+}
+
+// Every triangle's crossings (found by blocks of triangles in parallel), grouped by the 8 x 8
+// block of columns of a VDB leaf: blocks[b] is [starts[b], starts[b + 1]), unsorted.
+struct BlockCrossings {
+  std::vector<Crossing> crossings;
+  std::vector<size_t> starts;
+};
+
+BlockCrossings block_crossings(const FogBody& body) {
+  constexpr size_t kTriangles = 8192;
+  const size_t triangles = body.mesh.indices.size() / 3;
+  std::vector<std::vector<Crossing>> found((triangles + kTriangles - 1) / kTriangles);
+  tbb::parallel_for(size_t(0), found.size(), [&](size_t b) {
+    column_crossings(body, b * kTriangles, std::min(triangles, (b + 1) * kTriangles), found[b]);
+  });
+  // A counting sort by block over the blocks' bounding box.
+  std::array<int32_t, 2> low{INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN};
+  for (const auto& part : found)
+    for (const Crossing& c : part)
+      for (size_t k = 0; k < 2; ++k) {
+        low[k] = std::min(low[k], c.column[k] >> 3);
+        high[k] = std::max(high[k], c.column[k] >> 3);
+      }
+  const size_t across = high[0] < low[0] ? 0 : size_t(high[0] - low[0] + 1);
+  const auto block = [&](const Crossing& c) {
+    return size_t((c.column[1] >> 3) - low[1]) * across + size_t((c.column[0] >> 3) - low[0]);
+  };
+  BlockCrossings out;
+  out.starts.assign(across == 0 ? 1 : across * size_t(high[1] - low[1] + 1) + 1, 0);
+  for (const auto& part : found)
+    for (const Crossing& c : part) ++out.starts[block(c) + 1];
+  for (size_t b = 1; b < out.starts.size(); ++b) out.starts[b] += out.starts[b - 1];
+  out.crossings.resize(out.starts.back());
+  std::vector<size_t> next(out.starts.begin(), out.starts.end() - 1);
+  for (const auto& part : found)
+    for (const Crossing& c : part) out.crossings[next[block(c)]++] = c;
+  return out;
+}
+
+using Leaf = openvdb::FloatTree::LeafNodeType;
+
+// The leaves of one 8 x 8 block of columns (its crossings, sorted here): up each column, the
+// voxels whose centres lie where the winding number is positive, set active at 1 in leaves made
+// here (no per-voxel descent of the tree), by increasing k.
+std::vector<Leaf*> block_leaves(std::span<Crossing> crossings) {
+  std::sort(crossings.begin(), crossings.end());
+  std::map<int32_t, Leaf*> leaves;  // by k >> 3
+  for (size_t a = 0; a < crossings.size();) {
+    size_t b = a;
+    int winding = 0;
+    for (; b < crossings.size() && crossings[b].column == crossings[a].column; ++b) {
+      const int before = winding;
+      winding += crossings[b].step;
+      if (before <= 0) continue;
+      Leaf* leaf = nullptr;  // the leaf of voxel k, looked up when k enters another
+      for (int64_t k = int64_t(std::ceil(crossings[b - 1].z)); double(k) < crossings[b].z; ++k) {
+        const openvdb::Coord xyz(crossings[a].column[0], crossings[a].column[1], int32_t(k));
+        if (!leaf || (k & (Leaf::DIM - 1)) == 0) {
+          Leaf*& slot = leaves[int32_t(k) >> 3];
+          if (!slot) slot = new Leaf(xyz & ~openvdb::Int32(Leaf::DIM - 1), 0.0f, false);
+          leaf = slot;
+        }
+        leaf->setValueOn(Leaf::coordToOffset(xyz), 1.0f);
+      }
+    }
+    a = b;
+  }
+  std::vector<Leaf*> out;
+  for (const auto& [k, leaf] : leaves) out.push_back(leaf);
   return out;
 }
 
@@ -98,7 +171,7 @@ openvdb::FloatGrid::Ptr fog_grid(const FogBody& body, const std::string& where) 
       throw Error(where + ": triangle " + std::to_string(t / 3) + " has index " +
                   std::to_string(mesh.indices[t]) + " of " + std::to_string(vertices) +
                   " vertices");
-  const std::vector<Crossing> crossings = column_crossings(body);
+  BlockCrossings crossings = block_crossings(body);
   openvdb::math::Mat4d map = openvdb::math::Mat4d::identity();
   map.preScale(openvdb::Vec3d(body.voxel[0], body.voxel[1], body.voxel[2]));
   map.postTranslate(openvdb::Vec3d(body.corner[0] + body.voxel[0] / 2,
@@ -107,20 +180,16 @@ openvdb::FloatGrid::Ptr fog_grid(const FogBody& body, const std::string& where) 
   const openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
   grid->setTransform(openvdb::math::Transform::createLinearTransform(map));
   grid->setGridClass(openvdb::GRID_FOG_VOLUME);
-  openvdb::FloatGrid::Accessor voxels = grid->getAccessor();
-  // Up each column, the voxels whose centres lie where the winding number is positive.
-  for (size_t a = 0; a < crossings.size();) {
-    size_t b = a;
-    int winding = 0;
-    for (; b < crossings.size() && crossings[b].column == crossings[a].column; ++b) {
-      const int before = winding;
-      winding += crossings[b].step;
-      if (before > 0)
-        for (int64_t k = int64_t(std::ceil(crossings[b - 1].z)); double(k) < crossings[b].z; ++k)
-          voxels.setValueOn({crossings[a].column[0], crossings[a].column[1], int32_t(k)}, 1.0f);
-    }
-    a = b;
-  }
+  // The leaves block by block in parallel, added to the tree in the blocks' order (the tree is
+  // sorted by coordinates whatever the order: the same bytes for any thread count).
+  const std::vector<size_t>& starts = crossings.starts;
+  std::vector<std::vector<Leaf*>> leaves(starts.size() - 1);
+  tbb::parallel_for(size_t(0), leaves.size(), [&](size_t b) {
+    leaves[b] =
+        block_leaves(std::span(crossings.crossings).subspan(starts[b], starts[b + 1] - starts[b]));
+  });
+  for (const auto& block : leaves)
+    for (Leaf* leaf : block) grid->tree().addLeaf(leaf);
   grid->setName(body.name);
   grid->insertMeta("object_id", openvdb::Int64Metadata(int64_t(mesh.provenance.object_id)));
   grid->insertMeta("feature_id", openvdb::Int64Metadata(mesh.provenance.feature_id));

@@ -27,8 +27,10 @@ struct FogBody {
 // found column by column (a scanline voxelization along z): each triangle's height where it
 // covers a column's centre (a centre on an edge shared by two triangles counted in one of them
 // only), the winding number up the column rising through faces seen from below and falling
-// through faces seen from above; linear in the columns the triangles cover and the voxels set,
-// sequential, so the same bodies give the same bytes whatever the thread count. The active
+// through faces seen from above; linear in the columns the triangles cover and the voxels set.
+// In parallel (TBB) by blocks of triangles, then by the 8 x 8 columns of a VDB leaf, whose leaves
+// are built whole (no per-voxel descent of the tree): the same bodies give the same bytes
+// whatever the thread count. The active
 // voxels' volume approximates the mesh's (exactly, for faces on the lattice's faces). Each grid's
 // metadata carries its mesh's provenance ("object_id", "feature_id", "tool"), as volume_to_mesh
 // reads it back (a grid named "water" meshes as water).

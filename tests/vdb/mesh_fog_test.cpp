@@ -1,10 +1,12 @@
 // mesh_to_fog (vdb/mesh_fog.h) and its plug-in entry (maquette_vdb_mesh_fog) on a closed box
 // whose faces lie on the voxel lattice's faces: exactly the box's voxels active (its volume to
 // the last bit), 1 inside; a box whose faces cut voxels: the voxels whose centres are inside;
-// the provenance kept, the entry's bytes the function's; bad input named.
+// the provenance kept, the entry's bytes the function's, the same bytes on any thread count (a
+// sphere of many triangles); bad input named.
 #include "vdb/mesh_fog.h"
 
 #include <gtest/gtest.h>
+#include <oneapi/tbb/global_control.h>
 
 #include <cmath>
 
@@ -93,6 +95,55 @@ TEST(MeshFog, TurnedBoxGivesTheVoxelsWhoseCentresAreInside) {
   EXPECT_GT(inside, 3000u);
   EXPECT_EQ(wrong, 0u) << "of " << inside << " voxels inside";
   EXPECT_EQ(fog->activeVoxelCount(), inside);
+}
+
+// A closed sphere of radius 5 m centred at (kX0, kY0, kZ0): `rings` rings of latitude, `segments`
+// of longitude, fans at the poles, counter-clockwise seen from outside; voxels of 0.1 m.
+FogBody sphere_body(int rings, int segments) {
+  FogBody body;
+  body.mesh.positions.reserve(3 * size_t((rings - 1) * segments + 2));
+  const auto add = [&](double theta, double phi) {
+    body.mesh.positions.insert(
+        body.mesh.positions.end(),
+        {float(kX0 + 5 * std::sin(theta) * std::cos(phi)),
+         float(kY0 + 5 * std::sin(theta) * std::sin(phi)), float(kZ0 + 5 * std::cos(theta))});
+  };
+  add(0, 0);  // vertex 0: the north pole; 1 + (i - 1) * segments + j: ring i, segment j
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) add(M_PI * i / rings, 2 * M_PI * j / segments);
+  add(M_PI, 0);  // the south pole
+  const uint32_t south = uint32_t(body.mesh.positions.size() / 3 - 1);
+  const auto vertex = [&](int i, int j) {
+    return i == 0 ? 0u : i == rings ? south : uint32_t(1 + (i - 1) * segments + j % segments);
+  };
+  // Quad (i, j) (i + 1, j) (i + 1, j + 1) (i, j + 1): down the meridian, then east: outward.
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1),
+                     d = vertex(i, j + 1);
+      if (i + 1 < rings) body.mesh.indices.insert(body.mesh.indices.end(), {a, b, c});
+      if (i > 0) body.mesh.indices.insert(body.mesh.indices.end(), {a, c, d});
+    }
+  body.voxel = {0.1, 0.1, 0.1};
+  body.corner = {kX0, kY0, kZ0};
+  body.name = "water";
+  return body;
+}
+
+// Many blocks of triangles and of leaf columns: the same bytes on one thread as on all, and
+// about the sphere's volume.
+TEST(MeshFog, SameBytesForAnyThreadCount) {
+  const FogBody sphere = sphere_body(150, 300);
+  ASSERT_GT(sphere.mesh.indices.size() / 3, 80000u);
+  const VolumeContent all = mesh_to_fog({sphere}, kVolumeOrigin, "sphere");
+  {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(mesh_to_fog({sphere}, kVolumeOrigin, "sphere").vdb, all.vdb);
+  }
+  const openvdb::GridPtrVec grids = decode_volume(all, "sphere");
+  ASSERT_EQ(grids.size(), 1u);
+  const double volume = double(grids[0]->activeVoxelCount()) * 1e-3;  // voxels of 1e-3 m^3
+  EXPECT_NEAR(volume, 4.0 / 3.0 * M_PI * 125, 0.005 * 4.0 / 3.0 * M_PI * 125);
 }
 
 TEST(MeshFog, PluginEntryGivesTheSameBytes) {
