@@ -78,11 +78,11 @@ class Builder {
   }
 
   uint32_t vertex(Corner c, int quadrant, bool top) {
+    uint32_t& unsplit =
+        (top ? top_ : bottom_)[size_t((c.second - row0_) * corners_across_ + (c.first - col0_))];
+    if (unsplit != kNone) return unsplit;  // set only for a corner that is not split
     const int part = touches_itself(c) ? quadrant : -1;
-    uint32_t& id =
-        part < 0 ? (top ? top_
-                        : bottom_)[size_t((c.second - row0_) * corners_across_ + (c.first - col0_))]
-                 : split_[std::tuple(c.first, c.second, part, top)].id;
+    uint32_t& id = part < 0 ? unsplit : split_[std::tuple(c.first, c.second, part, top)].id;
     if (id != kNone) return id;
     id = uint32_t(mesh_.vertices.size());
     double height = body_.level;
