@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "core/halo.h"
+#include "main_thread_cpu.h"
 #include "operators.h"
 
 namespace {
@@ -90,10 +91,12 @@ void one_feature_edit(benchmark::State& state) {
   const json params = {{"energy_weight", 0.01}, {"subdivision", "adaptive"}};  // the defaults
   const auto op = deform::make_features();
   const auto& region = static_cast<const RegionOperator&>(*op);
+  maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
     region.run({&default_grid(), &params, nullptr}, s.input, s.output);
     benchmark::DoNotOptimize(s.output.layers.at("dem").data());
   }
+  main_cpu.stop();
 }
 
 BENCHMARK(one_feature_edit)
@@ -102,7 +105,8 @@ BENCHMARK(one_feature_edit)
     ->Args({256, 150, 20, 1})
     ->Args({256, 150, 20, 2})
     ->Args({256, 150, 20, 3})
-    ->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 }  // namespace
 
