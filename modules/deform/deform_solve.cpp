@@ -1,7 +1,11 @@
 #include "deform_solve.h"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/error.h"
 
@@ -47,13 +51,9 @@ class System {
   }
 
   void solve() {
-    const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> a(
-        Eigen::Index(rhs_.size()), Eigen::Index(unknowns_.size()), Eigen::Index(values_.size()),
-        starts_.data(), columns_.data(), values_.data());
-    const Eigen::SparseMatrix<double> at = a.transpose();
-    const Eigen::SparseMatrix<double> ata = at * a;
-    const Eigen::VectorXd atb = at * Eigen::Map<const Eigen::VectorXd>(rhs_.data(), a.rows());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(ata);
+    Eigen::VectorXd atb;
+    const Eigen::SparseMatrix<double> ata = normal_equations(atb);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(ata);
     if (ldlt.info() != Eigen::Success) throw Error("the deformation's least squares is singular");
     const Eigen::VectorXd h = ldlt.solve(atb);
     for (size_t i = 0; i < unknowns_.size(); ++i) {
@@ -64,6 +64,81 @@ class System {
   }
 
  private:
+  // The lower triangle of A^T A (what SimplicialLDLT reads) and A^T b, by blocks of columns in
+  // parallel: entry (k, j) sums a_ij a_ik over the rows i of column j in increasing order, so
+  // the same bits for any thread count.
+  Eigen::SparseMatrix<double> normal_equations(Eigen::VectorXd& atb) const {
+    const size_t n = unknowns_.size();
+    // A by columns: rows increasing in each (a counting sort of the entries in row order).
+    std::vector<int> col_starts(n + 1, 0), col_rows(values_.size());
+    std::vector<double> col_values(values_.size());
+    for (const int c : columns_) ++col_starts[size_t(c) + 1];
+    for (size_t c = 0; c < n; ++c) col_starts[c + 1] += col_starts[c];
+    std::vector<int> next(col_starts.begin(), col_starts.end() - 1);
+    for (size_t i = 0; i + 1 < starts_.size(); ++i)
+      for (int e = starts_[i]; e < starts_[i + 1]; ++e) {
+        const int at = next[size_t(columns_[size_t(e)])]++;
+        col_rows[size_t(at)] = int(i);
+        col_values[size_t(at)] = values_[size_t(e)];
+      }
+    struct Block {
+      std::vector<int> counts, rows;
+      std::vector<double> values;
+    };
+    constexpr size_t kColumns = 2048;
+    std::vector<Block> blocks((n + kColumns - 1) / kColumns);
+    atb.resize(Eigen::Index(n));
+    tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
+      std::vector<double> sum(n, 0.0);
+      std::vector<size_t> seen(n, SIZE_MAX);  // the column that last touched row k
+      std::vector<int> touched;
+      Block& out = blocks[b];
+      for (size_t j = b * kColumns; j < std::min(n, (b + 1) * kColumns); ++j) {
+        touched.clear();
+        double rhs = 0;
+        for (int e = col_starts[j]; e < col_starts[j + 1]; ++e) {
+          const size_t i = size_t(col_rows[size_t(e)]);
+          const double aij = col_values[size_t(e)];
+          rhs += aij * rhs_[i];
+          for (int f = starts_[i]; f < starts_[i + 1]; ++f) {
+            const int k = columns_[size_t(f)];
+            if (size_t(k) < j) continue;
+            if (seen[size_t(k)] != j) {
+              seen[size_t(k)] = j;
+              touched.push_back(k);
+            }
+            sum[size_t(k)] += aij * values_[size_t(f)];
+          }
+        }
+        atb[Eigen::Index(j)] = rhs;
+        std::sort(touched.begin(), touched.end());
+        out.counts.push_back(int(touched.size()));
+        for (const int k : touched) {
+          out.rows.push_back(k);
+          out.values.push_back(sum[size_t(k)]);
+          sum[size_t(k)] = 0.0;
+        }
+      }
+    });
+    Eigen::SparseMatrix<double> ata{Eigen::Index(n), Eigen::Index(n)};
+    size_t entries = 0;
+    for (const Block& block : blocks) entries += block.rows.size();
+    ata.resizeNonZeros(Eigen::Index(entries));
+    int* outer = ata.outerIndexPtr();
+    size_t column = 0, at = 0;
+    outer[0] = 0;
+    for (const Block& block : blocks) {
+      for (const int count : block.counts) {
+        outer[column + 1] = outer[column] + count;
+        ++column;
+      }
+      std::copy(block.rows.begin(), block.rows.end(), ata.innerIndexPtr() + at);
+      std::copy(block.values.begin(), block.values.end(), ata.valuePtr() + at);
+      at += block.rows.size();
+    }
+    return ata;
+  }
+
   std::vector<double>& z_;
   std::vector<size_t> unknowns_;  // sorted vertex indices
   std::vector<int> column_;       // by vertex: its unknown's column, -1 for none
