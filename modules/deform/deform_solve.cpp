@@ -1,5 +1,6 @@
 #include "deform_solve.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Sparse>
@@ -88,10 +89,21 @@ class System {
     constexpr size_t kColumns = 2048;
     std::vector<Block> blocks((n + kColumns - 1) / kColumns);
     atb.resize(Eigen::Index(n));
-    tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
-      std::vector<double> sum(n, 0.0);
-      std::vector<size_t> seen(n, SIZE_MAX);  // the column that last touched row k
+    // Per thread: the sums of a column's rows (back to 0 after each column) and the column that
+    // last touched each row; they carry nothing from one column to the next.
+    struct Scratch {
+      std::vector<double> sum;
+      std::vector<size_t> seen;
       std::vector<int> touched;
+    };
+    tbb::enumerable_thread_specific<Scratch> scratch;
+    tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
+      Scratch& local = scratch.local();
+      if (local.sum.empty()) {
+        local.sum.assign(n, 0.0);
+        local.seen.assign(n, SIZE_MAX);
+      }
+      auto& [sum, seen, touched] = local;
       Block& out = blocks[b];
       for (size_t j = b * kColumns; j < std::min(n, (b + 1) * kColumns); ++j) {
         touched.clear();

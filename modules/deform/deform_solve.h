@@ -54,7 +54,9 @@ using EnergyNeighbours = std::function<void(size_t v, std::vector<Term>& out)>;
 //     energy row per unknown over all its neighbours, those that are not unknowns at their
 //     current height (the field of influence's edge meets the terrain around it).
 // Each is solved by its normal equations with Eigen's SimplicialLDLT (unknowns ordered by vertex
-// index, rows in the order given, so the result depends on nothing else). Vertices that are no
+// index, rows in the order given, so the result depends on nothing else; the normal equations are
+// built by blocks of unknowns in parallel, each entry summed in a fixed order: the same bits for
+// any thread count). Vertices that are no
 // unknown keep their heights bit for bit.
 // Preconditions: every vertex the rows and energy rows read has a finite height.
 // Throws maquette::Error if a system is singular.

@@ -30,7 +30,9 @@ struct StrokeConstraints {
 // (positions are not needed). Throws maquette::Error naming `where` and the feature id when a
 // constrained point lies off the mosaic (across face seams: off the plane it unfolds, MosaicFrame)
 // or on its border samples, or on a triangle any of whose vertices or their neighbours is nodata
-// (the least squares would read them), and when a profile does not cover the curve.
+// (the least squares would read them), and when a profile does not cover the curve. The points
+// are located in parallel; the error is the first failing point's (curve before sections, in
+// order along the curve), as one by one.
 void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& frame,
                             const HeightField& field, double step_m, const std::string& where,
                             StrokeConstraints& out);
