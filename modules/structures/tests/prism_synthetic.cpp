@@ -131,7 +131,10 @@ SyntheticPhoto synthetic_photo(uint64_t seed, int index, double noise_px, int mo
       ok = ok && q.x() >= 0 && q.x() <= p.width && q.y() >= 0 && q.y() <= p.height;
     // The corner's edges (to the last vertex, vertex 1, the extrusion end) at least 50 pixels long.
     for (const size_t end : {n - 1, size_t(1), n}) ok = ok && (image[end] - image[0]).norm() >= 50;
-    if (ok) break;
+    if (!ok) continue;
+    for (const auto& [normal, middle] : sides)
+      p.facet_visible.push_back(seen_sine(normal, middle) > 0);
+    break;
   }
   std::vector<Vec3> clicked = p.profile;
   clicked.push_back(Vec3(0, p.length, 0));

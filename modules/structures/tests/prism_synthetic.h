@@ -21,6 +21,9 @@ struct SyntheticPhoto {
   Vec3 translation;               // world -> camera
   PinholeCamera camera;
   int width = 0, height = 0;
+  // Whether the camera sees each facet (the profile, the far cap, the side of each profile edge
+  // i -> i + 1): whether it faces the camera's centre (the prisms are convex).
+  std::vector<bool> facet_visible;
   PrismClicks exact;   // projected without noise
   PrismClicks clicks;  // with the noise
   Vec3 camera_centre() const { return -rotation.transpose() * translation; }
