@@ -2,6 +2,8 @@
 // to a textured model GLB for `maquette ingest --as model`. A program, not an operator: operators
 // write cells (rasters, meshes, instances, volumes), and a model layer is in no cell.
 //   maquette-prism STROKES.json MODEL.glb [--picture PICTURE.png]
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -43,6 +45,13 @@ int main(int argc, char** argv) {
     const MeshContent model = prism_model(prism, photo.pixels, camera, options);
     write_file_whole(argv[2], encode_mesh_glb(model));
     const std::vector<bool> visible = visible_facets(prism_facets(prism));
+    std::array<float, 3> lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+    for (const MeshObject& o : model.objects)
+      for (size_t i = 0; i < o.positions.size(); ++i)
+        lo[i % 3] = std::min(lo[i % 3], o.positions[i]),
+               hi[i % 3] = std::max(hi[i % 3], o.positions[i]);
+    std::printf("model %.2f x %.2f x %.2f m (x, y, z up)\n", hi[0] - lo[0], hi[1] - lo[1],
+                hi[2] - lo[2]);
     std::printf(
         "%s: focal length %.1f px (%s), %d roots of Eq. 9 in front of the camera, %s, "
         "%zu facets (%zd visible), reprojection rms %.2f px\n",

@@ -24,8 +24,11 @@ cv::Mat picture_of_model(const MeshContent& model, int width, int height, double
   const double az = azimuth_deg * std::numbers::pi / 180,
                el = elevation_deg * std::numbers::pi / 180;
   const double focal = width / 2.0 / std::tan(25 * std::numbers::pi / 180);
+  // The bounding sphere within the narrower of the two fields of view.
+  const double half_view =
+      std::atan(std::tan(25 * std::numbers::pi / 180) * std::min(1.0, double(height) / width));
   const V3 eye =
-      target + 1.15 * radius / std::sin(25 * std::numbers::pi / 180) *
+      target + 1.15 * radius / std::sin(half_view) *
                    V3(std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el));
   const V3 forward = (target - eye).normalized();
   const V3 right = forward.cross(V3::UnitZ()).normalized();
