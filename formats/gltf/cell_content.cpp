@@ -45,7 +45,7 @@ void extend(Box& b, const Vec3& lo, const Vec3& hi) {
 // highest at its corners. A box across the antimeridian or reaching a pole gets every longitude
 // (tileset.h's regions keep west <= east).
 std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
-  const EnuToGeodetic geodetic(o);
+  const EnuFrame frame = enu_frame(o);
   std::vector<Vec3> points;
   for (const double x : {b[0][0], std::clamp(0.0, b[0][0], b[1][0]), b[1][0]})
     for (const double y : {b[0][1], std::clamp(0.0, b[0][1], b[1][1]), b[1][1]})
@@ -59,7 +59,7 @@ std::array<double, 6> box_region(const EnuOrigin& o, const Box& b) {
                              -std::numeric_limits<double>::infinity()};
   double lon_lo = 360, lon_hi = -360;  // from the origin's longitude, unwrapped
   for (const Vec3& p : points) {
-    const GeodeticPoint g = geodetic(p[0], p[1], p[2]);
+    const GeodeticPoint g = frame.to_geodetic(p[0], p[1], p[2]);
     const double dlon = std::remainder(g.lon - o.lon, 360.0);
     lon_lo = std::min(lon_lo, dlon);
     lon_hi = std::max(lon_hi, dlon);

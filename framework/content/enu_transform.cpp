@@ -1,6 +1,5 @@
 #include "content/enu_transform.h"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 
 #include "core/ecef.h"
@@ -73,18 +72,6 @@ std::array<double, 16> EnuTransform::matrix() const {
   }
   m[15] = 1;
   return m;
-}
-
-EnuToGeodetic::EnuToGeodetic(const EnuOrigin& origin)
-    : frame_(std::make_unique<const GeographicLib::LocalCartesian>(origin.lat, origin.lon,
-                                                                   origin.height)) {}
-
-EnuToGeodetic::~EnuToGeodetic() = default;
-
-GeodeticPoint EnuToGeodetic::operator()(double x, double y, double z) const {
-  GeodeticPoint p;
-  frame_->Reverse(x, y, z, p.lat, p.lon, p.height);
-  return p;
 }
 
 }  // namespace maquette

@@ -1,17 +1,13 @@
 // Moving content between two east-north-up frames (content.h, EnuOrigin): both are rigid
 // frames of ECEF, so a point's coordinates in one map to the other by a rotation and a
-// translation, computed here in double precision from the two origins (core/ecef.h); and the
-// geodetic coordinates of a frame's points (EnuToGeodetic).
+// translation, computed here in double precision from the two origins (core/ecef.h). One frame's
+// own points to and from geodetic coordinates: core/enu_frame.h.
 #pragma once
 
 #include <array>
-#include <memory>
 
 #include "content/content.h"
-
-namespace GeographicLib {
-class LocalCartesian;
-}
+#include "core/enu_frame.h"
 
 namespace maquette {
 
@@ -33,23 +29,8 @@ class EnuTransform {
   std::array<double, 3> translation_{};
 };
 
-// A point given by its geodetic coordinates.
-struct GeodeticPoint {
-  double lon = 0, lat = 0;  // degrees
-  double height = 0;        // metres above the ellipsoid
-};
-
-// The geodetic coordinates of the points of the east-north-up frame at an origin: the reverse of
-// GeographicLib::LocalCartesian (exact, no series), the frame set up once for many points.
-class EnuToGeodetic {
- public:
-  explicit EnuToGeodetic(const EnuOrigin& origin);
-  ~EnuToGeodetic();
-  // The point (x east, y north, z up, metres) of the frame.
-  GeodeticPoint operator()(double x, double y, double z) const;
-
- private:
-  std::unique_ptr<const GeographicLib::LocalCartesian> frame_;
-};
+// The east-north-up frame at a content's origin (core/enu_frame.h), for its points' geodetic
+// coordinates and back.
+inline EnuFrame enu_frame(const EnuOrigin& o) { return EnuFrame({o.lon, o.lat, o.height}); }
 
 }  // namespace maquette

@@ -10,6 +10,7 @@
 #include "content/enu_transform.h"
 #include "content/instances_codec.h"
 #include "content/prototypes.h"
+#include "core/enu_frame.h"
 #include "core/error.h"
 #include "plugins/content_encode.h"
 #include "plugins/vdb_content.h"
@@ -36,9 +37,10 @@ bool finite3(const float* p) {
 // float32 positions near an edge may round across it.
 void check_anchor(const EnuOrigin& origin, const float* xyz, CellId cell, const Grid& grid,
                   const std::string& what) {
-  const EnuToGeodetic geodetic(origin);
+  const EnuFrame frame = enu_frame(origin);
   const auto cell_at = [&](double dx, double dy) {
-    const GeodeticPoint p = geodetic(double(xyz[0]) + dx, double(xyz[1]) + dy, double(xyz[2]));
+    const GeodeticPoint p =
+        frame.to_geodetic(double(xyz[0]) + dx, double(xyz[1]) + dy, double(xyz[2]));
     return grid.cell_from_point({p.lon, p.lat}, cell.level());
   };
   const CellId at = cell_at(0, 0);
@@ -47,7 +49,7 @@ void check_anchor(const EnuOrigin& origin, const float* xyz, CellId cell, const 
   for (const double dx : {-t, 0.0, t})
     for (const double dy : {-t, 0.0, t})
       if (cell_at(dx, dy) == cell) return;
-  const GeodeticPoint p = geodetic(xyz[0], xyz[1], xyz[2]);
+  const GeodeticPoint p = frame.to_geodetic(xyz[0], xyz[1], xyz[2]);
   throw Error(
       fmt::format("{}: its anchor at lon {:.8f}, lat {:.8f} lies in cell {}, not in this "
                   "cell (each cell writes only the objects it owns: CellContext::owns)",

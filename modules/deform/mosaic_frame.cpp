@@ -21,19 +21,17 @@ MosaicFrame::MosaicFrame(const Grid& grid, int face, int pixel_level, int64_t or
       plane_(grid, face, pixel_level),
       origin_col_(origin_col),
       origin_row_(origin_row),
-      tangent_plane_(reference.lat, reference.lon, 0) {}
+      tangent_plane_({reference.lon, reference.lat, 0}) {}
 
 EastNorth2 MosaicFrame::local(LonLat p) const {
-  double x = 0, y = 0, z = 0;
-  tangent_plane_.Forward(p.lat, p.lon, 0, x, y, z);
+  const auto [x, y, z] = tangent_plane_.to_enu(p.lon, p.lat);
   return {x, y};
 }
 
 LonLat MosaicFrame::lonlat(EastNorth2 p) const {
-  double lat = 0, lon = 0, h = 0;
   const double depth = (p[0] * p[0] + p[1] * p[1]) / (2 * kEarthRadiusM);
-  tangent_plane_.Reverse(p[0], p[1], -depth, lat, lon, h);
-  return {lon, lat};
+  const GeodeticPoint g = tangent_plane_.to_geodetic(p[0], p[1], -depth);
+  return {g.lon, g.lat};
 }
 
 LonLat MosaicFrame::sample_lonlat(int col, int row) const {

@@ -1,5 +1,5 @@
 // Where a region mosaic's samples lie: their lon/lat, their metres east and north in the tangent
-// plane of a reference point (GeographicLib's LocalCartesian on WGS84), and the way back from a
+// plane of a reference point (core/enu_frame.h, at the ellipsoid), and the way back from a
 // lon/lat to fractional sample coordinates of the mosaic (sample centres at integers). Strokes
 // are measured in metres there, and the height field's cotangent weights see the true shape of
 // rHEALPix's pixels (equal-area, not square away from the face centres).
@@ -9,10 +9,10 @@
 // there, and a lon/lat on a neighbour face maps to its place in that plane.
 #pragma once
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <array>
 #include <optional>
 
+#include "core/enu_frame.h"
 #include "core/grid.h"
 #include "core/unfolded_faces.h"
 
@@ -39,7 +39,7 @@ class MosaicFrame {
   const Grid& grid_;
   UnfoldedFaces plane_;
   int64_t origin_col_, origin_row_;
-  GeographicLib::LocalCartesian tangent_plane_;
+  EnuFrame tangent_plane_;
 };
 
 }  // namespace maquette::deform

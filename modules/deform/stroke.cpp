@@ -1,11 +1,11 @@
 #include "stroke.h"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "core/enu_frame.h"
 #include "core/error.h"
 
 namespace maquette::deform {
@@ -39,11 +39,10 @@ double segment_distance(Point2 a, Point2 b, Point2 c, Point2 d) {
 // from 1 as in the LineString; zero-length ones are skipped. In metres, on the tangent plane of
 // the curve's first point.
 void check_self_contact(const std::vector<LonLat>& curve, const std::string& where) {
-  const GeographicLib::LocalCartesian plane(curve.front().lat, curve.front().lon, 0);
+  const EnuFrame plane({curve.front().lon, curve.front().lat, 0});
   std::vector<Point2> at;
   for (const LonLat& p : curve) {
-    double x = 0, y = 0, z = 0;
-    plane.Forward(p.lat, p.lon, 0, x, y, z);
+    const auto [x, y, z] = plane.to_enu(p.lon, p.lat);
     at.push_back({x, y});
   }
   std::vector<size_t> segments;  // index of each non-degenerate segment's first point

@@ -1,11 +1,11 @@
 #include "water_content.h"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "content/enu_transform.h"
+#include "core/enu_frame.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "core/unfolded_faces.h"
@@ -53,13 +53,12 @@ CellId LakeContent::owner(const std::string& what, double lon, double lat) const
 }
 
 MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const {
-  const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
+  const EnuFrame frame = enu_frame(origin);
   MeshObject object;
   object.provenance = lake.fog.mesh.provenance;
   object.indices = lake.fog.mesh.indices;
   for (const auto& [lon, lat, height] : lake.places) {
-    double x = 0, y = 0, z = 0;
-    frame.Forward(lat, lon, height, x, y, z);
+    const auto [x, y, z] = frame.to_enu(lon, lat, height);
     object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
   }
   return object;
@@ -116,7 +115,7 @@ void LakeContent::write_volumes() {
     const auto& first = lake.places.front();
     const EnuOrigin origin{first[0], first[1], first[2]};
     const auto [x, y, z] = box_centre(object(lake, origin).positions);
-    const GeodeticPoint p = EnuToGeodetic(origin)(x, y, z);
+    const GeodeticPoint p = enu_frame(origin).to_geodetic(x, y, z);
     owners.push_back(owner(lake.where + ": the lake's volume", p.lon, p.lat));
   }
   // Built in each owner's frame; a grid whose anchor falls in another cell (a lake centred within
@@ -139,10 +138,11 @@ void LakeContent::write_volumes() {
       if (pass > 0) continue;
       std::vector<std::optional<std::array<double, 3>>> anchors;
       anchors_of(volume, "deform.water, cell " + cell.ToText(), anchors);
-      const EnuToGeodetic geodetic(volume.origin);
+      const EnuFrame frame = enu_frame(volume.origin);
       for (size_t k = 0; k < anchors.size(); ++k) {
         if (!anchors[k]) continue;
-        const GeodeticPoint p = geodetic((*anchors[k])[0], (*anchors[k])[1], (*anchors[k])[2]);
+        const GeodeticPoint p =
+            frame.to_geodetic((*anchors[k])[0], (*anchors[k])[1], (*anchors[k])[2]);
         const CellId at = owner(lakes_[which[k]].where + ": the lake's volume", p.lon, p.lat);
         moved = moved || at != cell;
         owners[which[k]] = at;

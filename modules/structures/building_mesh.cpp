@@ -1,10 +1,11 @@
 #include "building_mesh.h"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <string>
 
 #include "building_solid.h"
+#include "content/enu_transform.h"
+#include "core/enu_frame.h"
 #include "footprint.h"
 #include "terrain_base.h"
 
@@ -48,16 +49,15 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   const GeoPoint& anchor = polygons.front().rings.front().front();
   const double base_above_ellipsoid =
       site.to_ellipsoid ? (*site.to_ellipsoid)({anchor.lon, anchor.lat}, *base) : *base;
-  const GeographicLib::LocalCartesian building(anchor.lat, anchor.lon, base_above_ellipsoid);
-  const GeographicLib::LocalCartesian content(site.origin.lat, site.origin.lon, site.origin.height);
+  const EnuFrame building({anchor.lon, anchor.lat, base_above_ellipsoid});
+  const EnuFrame content = enu_frame(site.origin);
   std::vector<Footprint> parts;
   for (const GeoPolygon& polygon : polygons) {
     std::vector<PlaneRing> rings;
     for (const GeoPath& ring : polygon.rings) {
       PlaneRing& r = rings.emplace_back();
       for (const GeoPoint& p : ring) {
-        double x = 0, y = 0, z = 0;
-        building.Forward(p.lat, p.lon, base_above_ellipsoid, x, y, z);
+        const auto [x, y, z] = building.to_enu(p.lon, p.lat, base_above_ellipsoid);
         r.push_back({x, y});
       }
     }
@@ -74,10 +74,9 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
     area += part.area;
     const uint32_t first = uint32_t(object.positions.size() / 3);
     for (size_t v = 0; v < solid.positions.size(); v += 3) {
-      double lat = 0, lon = 0, h = 0, x = 0, y = 0, z = 0;
-      building.Reverse(solid.positions[v], solid.positions[v + 1], solid.positions[v + 2], lat, lon,
-                       h);
-      content.Forward(lat, lon, h, x, y, z);
+      const auto [lon, lat, h] =
+          building.to_geodetic(solid.positions[v], solid.positions[v + 1], solid.positions[v + 2]);
+      const auto [x, y, z] = content.to_enu(lon, lat, h);
       object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
       if (site.texture) {
         // From the DEM's pixels to the image's, both spanning the cell.

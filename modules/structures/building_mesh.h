@@ -41,7 +41,7 @@ struct BuildingSite {
 // its height from the tags (building_height.h); its base at the lowest terrain under the whole
 // footprint (terrain_base.h), taken to the ellipsoid at the anchor (the geoid's slope over a
 // building is well under a millimetre); each part extruded in the tangent plane at the footprint's
-// first point (GeographicLib LocalCartesian on WGS84, at the base height) and checked there
+// first point (core/enu_frame.h, at the base height) and checked there
 // (building_solid.h: closed, outward, planar faces, volume = area x height to 1e-9); then put in
 // the site's east-north-up frame as float32 (a rigid move: within a float's rounding, 0.1 mm at
 // 2 km from the origin). The first vertex is the footprint's first point at the base: the anchor.

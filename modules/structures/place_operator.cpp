@@ -1,4 +1,3 @@
-#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -7,6 +6,7 @@
 
 #include "building_mesh.h"
 #include "content/enu_transform.h"
+#include "core/enu_frame.h"
 #include "core/error.h"
 #include "gdal/vertical_datum.h"
 #include "gltf/prototype_library.h"
@@ -136,11 +136,10 @@ class Place : public CellOperator {
       const PlaceFit fit = fit_place(plane.ring, base->second, options, where);
 
       // The model's origin: the instance's position, its anchor (content.h).
-      const GeographicLib::LocalCartesian plane_frame(plane.origin.lat, plane.origin.lon, 0);
+      const EnuFrame plane_frame = enu_frame(plane.origin);
       const auto ground = [&](const Point2& p) {
-        double lat = 0, lon = 0, ignored = 0;
-        plane_frame.Reverse(p[0], p[1], 0, lat, lon, ignored);
-        return LonLat{lon, lat};
+        const GeodeticPoint g = plane_frame.to_geodetic(p[0], p[1], 0);
+        return LonLat{g.lon, g.lat};
       };
       const LonLat origin = ground(fit.offset);
       if (!ctx.owns(origin)) continue;

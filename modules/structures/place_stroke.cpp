@@ -1,13 +1,14 @@
 #include "place_stroke.h"
 
 #include <Eigen/Dense>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
 #include <sstream>
 
+#include "content/enu_transform.h"
+#include "core/enu_frame.h"
 #include "core/error.h"
 
 namespace maquette::structures {
@@ -250,10 +251,9 @@ TangentPlaneRing tangent_plane_ring(const std::vector<LonLat>& ring, const std::
   const double count = static_cast<double>(ring.size());
   TangentPlaneRing plane;
   plane.origin = {std::remainder(lon_sum / count, 360.0), lat_sum / count, 0};
-  const GeographicLib::LocalCartesian frame(plane.origin.lat, plane.origin.lon, 0);
+  const EnuFrame frame = enu_frame(plane.origin);
   for (const LonLat& p : unwrapped) {
-    double x = 0, y = 0, z = 0;
-    frame.Forward(p.lat, p.lon, 0, x, y, z);
+    const auto [x, y, z] = frame.to_enu(p.lon, p.lat);
     plane.ring.push_back({x, y});
   }
   return plane;

@@ -88,7 +88,7 @@ struct TangentPlaneRing {
 };
 
 // Projects `ring` orthogonally on the tangent plane of the ellipsoid at the mean of its points
-// (GeographicLib::LocalCartesian; across 1 km the plane departs from the ellipsoid by 8 cm
+// (core/enu_frame.h; across 1 km the plane departs from the ellipsoid by 8 cm
 // vertically and shortens distances by less than 1e-8). Longitudes are unwrapped from the first
 // point's, so a ring across the antimeridian stays whole. Throws maquette::Error prefixed with
 // `where` for an empty ring or a point off the globe (non-finite, |lat| > 90).

@@ -1,10 +1,11 @@
 // structures.vegetation (README.md): plants in closed strokes as an instances layer.
 #include <Eigen/Geometry>
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <string>
 #include <vector>
 
+#include "content/enu_transform.h"
+#include "core/enu_frame.h"
 #include "core/error.h"
 #include "core/splitmix64.h"
 #include "core/tile_bilinear.h"
@@ -227,11 +228,11 @@ class Vegetation : public CellOperator {
                   " band(s), not red, green and blue");
     InstancesContent& out = data.content.instances_of("plants");
     out.prototypes = params.prototypes;
-    const GeographicLib::LocalCartesian frame(out.origin.lat, out.origin.lon, out.origin.height);
+    const EnuFrame frame = enu_frame(out.origin);
     const std::vector<LonLat> boundary = ctx.grid->boundary(ctx.cell, 8);
     const PlaneSquare square = ctx.grid->plane_square(ctx.cell);
     const double pixel = square.side / ctx.tile_size;
-    std::vector<double> m(9);  // a plant's east-north-up axes in the content's frame
+    std::array<double, 9> m;  // a plant's east-north-up axes in the content's frame
     for (const VegetationStroke& stroke : strokes) {
       const VegetationParams own = stroke_params(*ctx.params, params, stroke);
       std::vector<uint16_t> index;  // of the stroke's prototypes in the content's
@@ -246,8 +247,7 @@ class Vegetation : public CellOperator {
         if (std::isnan(terrain)) continue;  // no terrain: no plant
         const double height = to_ellipsoid(ground, terrain);
         const PlantLook look = plant_look(own, stroke.feature->id, p);
-        double x = 0, y = 0, z = 0;
-        frame.Forward(ground.lat, ground.lon, height, x, y, z, m);
+        const auto [x, y, z] = frame.to_enu(ground.lon, ground.lat, height, m);
         const Eigen::Quaterniond q =
             Eigen::Quaterniond(
                 Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(m.data())) *

@@ -1,13 +1,13 @@
 // structures.vegetation_spacing (README.md): the spacing of strokes without spacing_m, from the
 // orthophoto's tiles inside each (spacing_estimate.h, their rings summed), as an artifact
 // {"<feature id>": spacing in metres} for structures.vegetation's params.spacings.
-#include <GeographicLib/LocalCartesian.hpp>
 #include <bit>
 #include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/enu_frame.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "operators.h"
@@ -48,11 +48,10 @@ LonLat centre(const CellContext& ctx, int n, int col, int row) {
 // The pixel steps on the ground at the tile's middle (metres east and north).
 PixelAxes tile_axes(const CellContext& ctx, int n) {
   const LonLat o = centre(ctx, n, n / 2, n / 2);
-  const GeographicLib::LocalCartesian frame(o.lat, o.lon, 0);
+  const EnuFrame frame({o.lon, o.lat, 0});
   const auto step = [&](int col, int row) {
     const LonLat p = centre(ctx, n, col, row);
-    double x = 0, y = 0, z = 0;
-    frame.Forward(p.lat, p.lon, 0, x, y, z);
+    const auto [x, y, z] = frame.to_enu(p.lon, p.lat);
     return std::pair(x, y);
   };
   const auto [ce, cn] = step(n / 2 + 1, n / 2);

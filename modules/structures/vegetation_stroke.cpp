@@ -31,15 +31,13 @@ double spacing_of(const VectorFeature& f, const std::string& where) {
 }  // namespace
 
 PlanePoint VegetationStroke::to_plane(LonLat p) const {
-  double x = 0, y = 0, z = 0;
-  plane.Forward(p.lat, p.lon, 0, x, y, z);
+  const auto [x, y, z] = plane.to_enu(p.lon, p.lat);
   return {x, y};
 }
 
 LonLat VegetationStroke::to_ground(PlanePoint p) const {
-  double lat = 0, lon = 0, h = 0;
-  plane.Reverse(p.x, p.y, 0, lat, lon, h);
-  return {lon, lat};
+  const GeodeticPoint g = plane.to_geodetic(p.x, p.y, 0);
+  return {g.lon, g.lat};
 }
 
 InputSpec strokes_input() {
@@ -67,11 +65,8 @@ std::vector<VegetationStroke> vegetation_strokes(const FeatureList& features,
         f->geometry.polygons.front().rings.front().size() < 4)
       throw Error(where + ": an empty polygon, not a closed stroke");
     const GeoPoint& first = f->geometry.polygons.front().rings.front().front();
-    VegetationStroke s{f,
-                       spacing_of(*f, where),
-                       GeographicLib::LocalCartesian(first.lat, first.lon, 0),
-                       {},
-                       PolygonSet({})};
+    VegetationStroke s{
+        f, spacing_of(*f, where), EnuFrame({first.lon, first.lat, 0}), {}, PolygonSet({})};
     for (const GeoPolygon& polygon : f->geometry.polygons) {
       s.polygons.emplace_back();
       for (const GeoPath& ring : polygon.rings) {

@@ -3,17 +3,17 @@
 // `spacing_m` (the plants' average spacing: one plant per spacing_m x spacing_m), or without it
 // for structures.vegetation_spacing to estimate it from the orthophoto.
 //
-// Each stroke is placed in its own plane: the tangent plane (GeographicLib::LocalCartesian,
+// Each stroke is placed in its own plane: the tangent plane (core/enu_frame.h,
 // x east, y north, metres) at the first vertex of its outer ring, a point of the stroke and of no
 // cell, so that the plants it decides are the same whatever cell asks. A point (x, y) of the plane
 // goes to the ground vertically (the geodetic position of (x, y, 0)); over a stroke of 10 km the
 // plane's distances differ from the ground's by under 1e-6 relative.
 #pragma once
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <string>
 #include <vector>
 
+#include "core/enu_frame.h"
 #include "core/polygon_set.h"
 #include "footprint.h"
 #include "runtime/operator.h"
@@ -24,7 +24,7 @@ namespace maquette::structures {
 struct VegetationStroke {
   const VectorFeature* feature = nullptr;
   double spacing_m = 0;  // 0: none given
-  GeographicLib::LocalCartesian plane;
+  EnuFrame plane;
   std::vector<std::vector<PlaneRing>> polygons;  // in the plane: outer ring, then holes (closed)
   PolygonSet region;                             // the same, for point tests (LonLat = x, y)
 

@@ -9,7 +9,6 @@
 // the cell and region operators, and after SIGKILL then --resume; the contract's faults name the
 // step, the cell, the port and the feature, and store nothing of the cell.
 #include <gtest/gtest.h>
-#include <proj.h>
 #include <signal.h>
 #include <sys/wait.h>
 
@@ -17,11 +16,9 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
-#include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -31,6 +28,7 @@
 #include "core/grid.h"
 #include "fixture_features.h"
 #include "gltf/mesh_glb.h"
+#include "proj_enu.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "test_util.h"
@@ -172,30 +170,6 @@ CliResult run(const StoreDir& s, const json& step, const std::string& options = 
   return run_maquette("-q run " + options + " " + write_pipeline(s, step), kEnv);
 }
 
-// East-north-up coordinates by PROJ: geodetic -> geocentric -> topocentric at the origin.
-class Enu {
- public:
-  explicit Enu(const EnuOrigin& o) {
-    std::ostringstream pipeline;
-    pipeline << std::setprecision(17)
-             << "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad +step +proj=cart "
-                "+ellps=WGS84 +step +proj=topocentric +ellps=WGS84 +lon_0="
-             << o.lon << " +lat_0=" << o.lat << " +h_0=" << o.height;
-    pj_ = proj_create(PJ_DEFAULT_CTX, pipeline.str().c_str());
-    EXPECT_NE(pj_, nullptr) << pipeline.str();
-  }
-  ~Enu() { proj_destroy(pj_); }
-  Enu(const Enu&) = delete;
-  Enu& operator=(const Enu&) = delete;
-  std::array<double, 3> operator()(LonLat p, double h) const {
-    const PJ_COORD c = proj_trans(pj_, PJ_FWD, proj_coord(p.lon, p.lat, h, 0));
-    return {c.xyz.x, c.xyz.y, c.xyz.z};
-  }
-
- private:
-  PJ* pj_ = nullptr;
-};
-
 double distance(const std::array<double, 3>& a, const float* b) {
   return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
@@ -229,7 +203,7 @@ TEST(ContentOutput, StoredContentMatchesAnIndependentComputation) {
     EXPECT_EQ(envelope.origin.height, 0);
     const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "prisms");
     EXPECT_EQ(envelope.stats.objects, mesh.objects.size());
-    const Enu enu(envelope.origin);
+    const test::ProjEnu enu(envelope.origin.lon, envelope.origin.lat, envelope.origin.height);
     for (const MeshObject& o : mesh.objects) {
       const Feature& f = strokes.features.at(size_t(o.provenance.feature_id - 1));
       SCOPED_TRACE("feature " + std::to_string(f.id) + ", cell " + cell.ToText());
@@ -260,7 +234,7 @@ TEST(ContentOutput, StoredContentMatchesAnIndependentComputation) {
     const InstancesContent trees = unwrap_instances(*store->get_content("trees", cell), "trees");
     EXPECT_EQ(trees.origin.lon, default_grid().centre(cell).lon);
     EXPECT_EQ(trees.origin.lat, default_grid().centre(cell).lat);
-    const Enu enu(trees.origin);
+    const test::ProjEnu enu(trees.origin.lon, trees.origin.lat, trees.origin.height);
     ASSERT_EQ(trees.provenance.size(), trees.size());
     EXPECT_EQ(trees.prototypes, std::vector<std::string>{"builtin:conifer"});
     for (size_t i = 0; i < trees.size(); ++i) {
@@ -295,7 +269,8 @@ TEST(ContentOutput, StoredContentMatchesAnIndependentComputation) {
       if (owner == cell && !strokes.features.at(size_t(id - 1)).polygon)
         first = std::min(first, id);
     const auto expected =
-        Enu(envelope.origin)(strokes.features.at(size_t(first - 1)).corners[0], 0);
+        test::ProjEnu(envelope.origin.lon, envelope.origin.lat, envelope.origin.height)(
+            strokes.features.at(size_t(first - 1)).corners[0], 0);
     const openvdb::Vec3d centre =
         grids[0]->indexToWorld(grids[0]->evalActiveVoxelBoundingBox().getCenter());
     const float got[3] = {float(centre.x()), float(centre.y()), float(centre.z())};
