@@ -111,10 +111,21 @@ double mesh_volume(const std::vector<double>& positions, const std::vector<uint3
 std::string solid_problem(const Solid& s, double expected_volume) {
   if (std::string problem = orientation_problem(s.indices); !problem.empty()) return problem;
   for (size_t t = 0; t < s.indices.size(); t += 3) {
-    const Vec3 a = vertex(s.positions, s.indices[t]);
-    const Vec3 n = cross(minus(vertex(s.positions, s.indices[t + 1]), a),
-                         minus(vertex(s.positions, s.indices[t + 2]), a));
-    if (dot(n, n) == 0) return "triangle " + std::to_string(t / 3) + " is degenerate";
+    const std::array<Vec3, 3> p = {vertex(s.positions, s.indices[t]),
+                                   vertex(s.positions, s.indices[t + 1]),
+                                   vertex(s.positions, s.indices[t + 2])};
+    const std::array<Vec3, 3> edges = {minus(p[1], p[0]), minus(p[2], p[1]), minus(p[0], p[2])};
+    const Vec3 n = cross(edges[0], minus(p[2], p[0]));
+    const double area = std::sqrt(dot(n, n)) / 2;
+    const double longest_squared =
+        std::max({dot(edges[0], edges[0]), dot(edges[1], edges[1]), dot(edges[2], edges[2])});
+    if (!(area > kSliverRatio * longest_squared)) {  // also a triangle of coincident points
+      std::ostringstream m;
+      m.precision(6);
+      m << "triangle " << t / 3 << " is a sliver: area " << area << " m2 for a longest edge of "
+        << std::sqrt(longest_squared) << " m (at most " << kSliverRatio << " x its square)";
+      return m.str();
+    }
   }
   for (size_t f = 0; f < s.faces.size(); ++f)
     if (const double d = planarity(s, s.faces[f]); d > kPlanarityM)

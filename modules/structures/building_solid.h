@@ -28,11 +28,17 @@ struct Solid {
 Solid extrude(const Footprint& footprint, double height);
 
 // val3dity's checks of a shell: closed and consistently oriented (every edge used exactly once
-// in each direction), outward (positive volume), no degenerate triangle, each face planar within
-// kPlanarityM, and a volume within 1e-9 relative of `expected_volume`. Self-intersection is not
+// in each direction), outward (positive volume), no sliver triangle (area below kSliverRatio
+// times its longest edge squared: scale-free, so a thin wall of a tall building passes where a
+// roof triangle a few micrometres thin does not), each face planar within kPlanarityM, and a
+// volume within 1e-9 relative of `expected_volume`. Self-intersection is not
 // tested here: an extrusion of a valid footprint (make_footprint) has none. Returns what fails
 // first, empty when valid.
 inline constexpr double kPlanarityM = 0.01;
+// A triangle of area below this times its longest edge squared (its height below 2e-7 of that
+// edge) has a shape, and a normal, lost in the float32 rounding of the content's positions
+// (2^-24 relative, content/content.h).
+inline constexpr double kSliverRatio = 1e-7;
 std::string solid_problem(const Solid& solid, double expected_volume);
 
 // The volume of a closed, consistently oriented mesh (divergence theorem).

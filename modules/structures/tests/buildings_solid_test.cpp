@@ -81,6 +81,28 @@ TEST(BuildingSolid, RoofTrianglesCoverTheFootprint) {
   EXPECT_EQ(t.size(), 3 * 3u);  // n - 2 triangles
 }
 
+TEST(BuildingSolid, ThinWallOfATallBuildingIsValid) {
+  // A 1 cm wide, 20 m long slab, 150 m tall: its end walls are triangles of 1 cm by 150 m (area
+  // over longest edge squared 3.3e-5), far from slivers.
+  const Footprint fp = make_footprint({rectangle(0, 0, 20, 0.01)});
+  expect_valid(extrude(fp, 150), fp.area * 150);
+}
+
+TEST(BuildingSolid, SliverRoofIsRefused) {
+  // A triangle 1 km long and 30 micrometres high (0.015 m2, above kMinRingAreaM2): its roof and
+  // floor are one triangle each, of area 1.5e-8 times its longest edge squared.
+  const Footprint fp = make_footprint({{{0, 0}, {1000, 0}, {500, 3e-5}}});
+  const Solid s = extrude(fp, 10);
+  ASSERT_EQ(s.faces[0].count, 1u);
+  const std::string problem = solid_problem(s, fp.area * 10);
+  EXPECT_NE(problem.find("triangle 0 is a sliver: area 0.015 m2 for a longest edge of 1000 m"),
+            std::string::npos)
+      << problem;
+  // The same footprint scaled across to 3 cm high (1.5e-5: well shaped enough) is valid.
+  const Footprint wider = make_footprint({{{0, 0}, {1000, 0}, {500, 0.03}}});
+  EXPECT_EQ(solid_problem(extrude(wider, 10), wider.area * 10), "");
+}
+
 TEST(BuildingSolid, OwnChecksFindBrokenSolids) {
   const Solid good = extrude(make_footprint({rectangle(0, 0, 10, 10)}), 5);
   ASSERT_EQ(solid_problem(good, 500), "");
