@@ -10,7 +10,6 @@
 // skip_invalid.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
@@ -32,6 +31,8 @@
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_layers.h"
+#include "synthetic_raster.h"
 #include "tests/cgal_oracle.h"
 
 namespace maquette {
@@ -59,33 +60,20 @@ std::array<double, 3> colour(double x, double y) {
   return {128 + 100 * std::sin(x / 50), 128 + 100 * std::cos(y / 50), 128};
 }
 
-// A lon/lat GeoTIFF over the scene of `bands` bands of `type`, each pixel `value(x, y)`.
+// A lon/lat GeoTIFF over the scene of `bands` bands of GDAL type `type`, band b of each pixel
+// `value(x, y)[b - 1]` at its centre.
 template <class Value>
-void write_raster(const std::string& path, int bands, GDALDataType type, const Value& value) {
-  const int w = int(std::lround((kEast - kWest) / kSourcePixelDeg));
-  const int h = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
+void write_raster(const std::string& path, int bands, const std::string& type, const Value& value) {
+  test::RasterSpec spec = test::lonlat_raster(
+      kWest, kNorth, int(std::lround((kEast - kWest) / kSourcePixelDeg)), kSourcePixelDeg, type);
+  spec.height = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
+  spec.bands = bands;
   const GeographicLib::LocalCartesian frame(kLat0, kLon0, 0);
-  std::vector<float> samples(size_t(w) * size_t(h) * size_t(bands));
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) {
-      double x = 0, y = 0, up = 0;
-      frame.Forward(kNorth - (r + 0.5) * kSourcePixelDeg, kWest + (c + 0.5) * kSourcePixelDeg, 0, x,
-                    y, up);
-      const auto v = value(x, y);
-      for (int b = 0; b < bands; ++b)
-        samples[(size_t(b) * size_t(h) + size_t(r)) * size_t(w) + size_t(c)] = float(v[size_t(b)]);
-    }
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), w, h, bands, type, nullptr));
-  double transform[6] = {kWest, kSourcePixelDeg, 0, kNorth, 0, -kSourcePixelDeg};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(4326);
-  ds->SetSpatialRef(&srs);
-  ASSERT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, samples.data(), w, h, GDT_Float32, bands, nullptr, 0,
-                         0, 0, nullptr),
-            CE_None);
+  test::write_raster(path, spec, [&](int band, double lon, double lat) {
+    double x = 0, y = 0, up = 0;
+    frame.Forward(lat, lon, 0, x, y, up);
+    return value(x, y)[size_t(band - 1)];
+  });
 }
 
 json soho() {
@@ -102,9 +90,9 @@ struct Scene {
   // `datum`: the DEM's vertical datum (maquette ingest --vertical-datum).
   Scene(const json& footprints, const json& params, int level = kLevel, int tile_size = kTileSize,
         const std::string& datum = "ellipsoid") {
-    write_raster(dir + "/dem.tif", 1, GDT_Float32,
+    write_raster(dir + "/dem.tif", 1, "Float32",
                  [](double x, double y) { return std::array<double, 1>{terrain(x, y)}; });
-    write_raster(dir + "/orthophoto.tif", 3, GDT_Byte, colour);
+    write_raster(dir + "/orthophoto.tif", 3, "Byte", colour);
     std::ofstream(dir + "/footprints.geojson") << footprints.dump();
     const json pipeline = {
         {"store", store},
@@ -131,13 +119,6 @@ struct Scene {
     return run_maquette("-q run " + options + " " + dir + "/pipeline.json");
   }
 };
-
-Tile<float> tile(const Store& st, CellId cell) {
-  const auto info = st.require_layer("dem");
-  const auto raw = st.get_tile("dem", cell);
-  return raw ? to_tile<float>(*raw, info.nodata ? &*info.nodata : nullptr)
-             : Tile<float>(kTileSize, 1, 0, NAN);
-}
 
 // An encoded image's pixels (GDAL reads it from memory), band after band.
 struct Image {
@@ -189,7 +170,7 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
   // The stored DEM's pixels: centre and height.
   std::vector<std::pair<LonLat, float>> pixels;
   for (const CellId cell : st->tile_cells("dem")) {
-    const Tile<float> dem = tile(*st, cell);
+    const Tile<float> dem = test::float_tile(*st, "dem", cell);
     for (int row = 0; row < kTileSize; ++row)
       for (int col = 0; col < kTileSize; ++col)
         if (!std::isnan(dem.at(col, row)))
@@ -295,11 +276,8 @@ TEST(BuildingsPipeline, SameBitsForOneAndTwoThreads) {
   ASSERT_EQ(two.run("-t 2").exit_code, 0);
   const auto a = Store::open(one.store, Store::Mode::ReadOnly);
   const auto b = Store::open(two.store, Store::Mode::ReadOnly);
-  const std::vector<CellId> cells = a->content_cells("buildings");
-  EXPECT_GT(cells.size(), 1u);  // the buildings spread over several cells
-  ASSERT_EQ(cells, b->content_cells("buildings"));
-  for (const CellId cell : cells)
-    EXPECT_EQ(a->get_content("buildings", cell), b->get_content("buildings", cell));
+  // The buildings spread over several cells.
+  EXPECT_GT(test::expect_same_content(*a, *b, "buildings"), 1u);
 }
 
 // Each building's provenance attributes (height, base, area) by feature id.

@@ -7,9 +7,7 @@
 // volume within 1 %, the lake's extent), the bodies' artifact agreeing; a level above the rim fails
 // naming the feature and the leak, writing nothing; overlapping strokes fail naming both; the same
 // bits for 1 and 2 threads.
-#include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_spatialref.h>
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
@@ -26,12 +24,15 @@
 #include <utility>
 #include <vector>
 
+#include "circle_ring.h"
 #include "content/content_blob.h"
 #include "core/grid.h"
 #include "egm96_oracle.h"
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_layers.h"
+#include "synthetic_raster.h"
 
 namespace maquette {
 namespace {
@@ -62,39 +63,21 @@ Site seam_below_face_n(double lon) {
 }
 
 void write_dem(const std::string& path, const Site& site) {
-  const int n = int(std::lround(2 * kHalfDeg / kSourcePixelDeg));
   const GeographicLib::LocalCartesian frame(site.lat, site.lon, 0);
-  std::vector<float> z;
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) {
-      double x = 0, y = 0, h = 0;
-      frame.Forward(site.lat + kHalfDeg - (r + 0.5) * kSourcePixelDeg,
-                    site.lon - kHalfDeg + (c + 0.5) * kSourcePixelDeg, 0, x, y, h);
-      z.push_back(float(1000 + (x * x + y * y) / kA));
-    }
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), n, n, 1, GDT_Float32, nullptr));
-  double transform[6] = {site.lon - kHalfDeg, kSourcePixelDeg, 0, site.lat + kHalfDeg, 0,
-                         -kSourcePixelDeg};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(4326);
-  ds->SetSpatialRef(&srs);
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, n, n, z.data(), n, n, GDT_Float32, 0, 0),
-            CE_None);
+  test::write_raster(path,
+                     test::lonlat_raster(site.lon - kHalfDeg, site.lat + kHalfDeg,
+                                         int(std::lround(2 * kHalfDeg / kSourcePixelDeg)),
+                                         kSourcePixelDeg, "Float32"),
+                     [&](int, double lon, double lat) {
+                       double x = 0, y = 0, h = 0;
+                       frame.Forward(lat, lon, 0, x, y, h);
+                       return 1000 + (x * x + y * y) / kA;
+                     });
 }
 
 // A circle of `radius_m` around the basin's centre, tool "water", with `properties` added.
 json stroke(double radius_m, const json& properties, const Site& site = kZion) {
-  const GeographicLib::LocalCartesian frame(site.lat, site.lon, 0);
-  json ring = json::array();
-  for (int k = 0; k <= 72; ++k) {
-    const double t = 2 * std::numbers::pi * (k % 72) / 72;
-    double lat = 0, lon = 0, h = 0;
-    frame.Reverse(radius_m * std::cos(t), radius_m * std::sin(t), 0, lat, lon, h);
-    ring.push_back({lon, lat});
-  }
+  const json ring = test::circle_ring(site.lon, site.lat, radius_m, 72);
   json props = {{"tool", "water"}};
   props.update(properties);
   return {{"type", "FeatureCollection"},
@@ -154,13 +137,6 @@ struct Basin {
   }
 };
 
-Tile<float> tile(const Store& st, const std::string& layer, CellId cell) {
-  const auto info = st.require_layer(layer);
-  const auto raw = st.get_tile(layer, cell);
-  return raw ? to_tile<float>(*raw, info.nodata ? &*info.nodata : nullptr)
-             : Tile<float>(kTileSize, 1, 0, NAN);
-}
-
 struct Lake {
   size_t wet = 0;
   double volume_m3 = 0;
@@ -180,7 +156,8 @@ Lake expect_paraboloid_lake(const Site& site) {
   double volume = 0;
   size_t wet = 0;
   for (const CellId cell : st->tile_cells("dem")) {
-    const Tile<float> dem = tile(*st, "dem", cell), depth = tile(*st, "water_depth", cell);
+    const Tile<float> dem = test::float_tile(*st, "dem", cell),
+                      depth = test::float_tile(*st, "water_depth", cell);
     for (int row = 0; row < kTileSize; ++row)
       for (int col = 0; col < kTileSize; ++col) {
         const float z = dem.at(col, row), d = depth.at(col, row);
@@ -314,18 +291,9 @@ TEST(DeformWater, SameBitsForOneAndTwoThreads) {
   ASSERT_EQ(two.run("-t 2").exit_code, 0);
   const auto a = Store::open(one.store, Store::Mode::ReadOnly);
   const auto b = Store::open(two.store, Store::Mode::ReadOnly);
-  const std::vector<CellId> cells = a->tile_cells("water_depth");
-  ASSERT_EQ(cells, b->tile_cells("water_depth"));
-  for (const CellId cell : cells)
-    EXPECT_EQ(a->get_tile("water_depth", cell)->bytes, b->get_tile("water_depth", cell)->bytes);
-  const std::vector<CellId> content = a->content_cells("water_mesh");
-  ASSERT_EQ(content.size(), 1u);
-  ASSERT_EQ(content, b->content_cells("water_mesh"));
-  EXPECT_EQ(a->get_content("water_mesh", content[0]), b->get_content("water_mesh", content[0]));
-  const std::vector<CellId> volume = a->content_cells("water_volume");
-  ASSERT_EQ(volume.size(), 1u);
-  ASSERT_EQ(volume, b->content_cells("water_volume"));
-  EXPECT_EQ(a->get_content("water_volume", volume[0]), b->get_content("water_volume", volume[0]));
+  EXPECT_GT(test::expect_same_tiles(*a, *b, "water_depth"), 0u);
+  EXPECT_EQ(test::expect_same_content(*a, *b, "water_mesh"), 1u);
+  EXPECT_EQ(test::expect_same_content(*a, *b, "water_volume"), 1u);
 }
 
 TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {

@@ -2,6 +2,7 @@
 
 #include "core/halo.h"
 #include "core/tile.h"
+#include "stored_layers.h"
 
 namespace maquette::test {
 
@@ -17,10 +18,9 @@ void for_each_sample(const Store& store, const std::string& layer,
                      const std::function<void(CellId, LonLat, const float*)>& visit) {
   const Grid& grid = default_grid();
   const LayerInfo info = store.require_layer(layer);
-  const double* nodata = info.nodata ? &*info.nodata : nullptr;
   const int n = info.tile_size, pixel_level = info.level + log2_tile_size(n);
   for (CellId cell : store.tile_cells(layer)) {
-    const Tile<float> tile = to_tile<float>(*store.get_tile(layer, cell), nodata);
+    const Tile<float> tile = float_tile(store, layer, cell);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
         const LonLat p = pixel_centre(

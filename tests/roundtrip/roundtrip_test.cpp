@@ -3,7 +3,6 @@
 // resamplings (continuous), and exactly away from class borders (categorical).
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_spatialref.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "run_cli.h"
+#include "synthetic_raster.h"
 
 namespace maquette::test {
 namespace {
@@ -34,25 +34,14 @@ int klass(double x, double y) {
                  5;
 }
 
-void write_source(const std::string& path, GDALDataType type,
+void write_source(const std::string& path, const std::string& type,
                   const std::function<double(double, double)>& value) {
-  GDALAllRegister();
-  GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-  std::unique_ptr<GDALDataset> ds(gtiff->Create(path.c_str(), kSize, kSize, 1, type, nullptr));
-  ASSERT_TRUE(ds);
-  double gt[6] = {kX0, kPixel, 0, kY0, 0, -kPixel};
-  ds->SetGeoTransform(gt);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(32633);
-  ds->SetSpatialRef(&srs);
-  std::vector<double> row(kSize);
-  for (int r = 0; r < kSize; ++r) {
-    for (int c = 0; c < kSize; ++c)
-      row[size_t(c)] = value(kX0 + (c + 0.5) * kPixel, kY0 - (r + 0.5) * kPixel);
-    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, r, kSize, 1, row.data(), kSize, 1,
-                                             GDT_Float64, 0, 0),
-              CE_None);
-  }
+  RasterSpec spec;
+  spec.width = spec.height = kSize;
+  spec.geotransform = {kX0, kPixel, 0, kY0, 0, -kPixel};
+  spec.crs = "EPSG:32633";
+  spec.type = type;
+  write_raster(path, spec, [&](int, double x, double y) { return value(x, y); });
 }
 
 struct Raster {
@@ -105,7 +94,7 @@ class RoundTrip : public ::testing::Test {
 
 TEST_F(RoundTrip, ContinuousWithinTheResamplingBound) {
   const std::string source = dir_ + "/dem.tif";
-  write_source(source, GDT_Float32, field);
+  write_source(source, "Float32", field);
   const Raster out = trip(source, "dem");
   ASSERT_FALSE(out.values.empty());
   double max_err = 0, sum = 0;
@@ -138,7 +127,7 @@ TEST_F(RoundTrip, ContinuousWithinTheResamplingBound) {
 
 TEST_F(RoundTrip, CategoricalExactAwayFromBorders) {
   const std::string source = dir_ + "/lc.tif";
-  write_source(source, GDT_Byte, [](double x, double y) { return klass(x, y); });
+  write_source(source, "Byte", [](double x, double y) { return klass(x, y); });
   const Raster out = trip(source, "landcover");
   ASSERT_FALSE(out.values.empty());
   int checked = 0, wrong = 0;

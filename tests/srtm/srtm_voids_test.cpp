@@ -23,6 +23,7 @@
 #include "core/halo.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_layers.h"
 
 namespace maquette::test {
 namespace {
@@ -49,11 +50,9 @@ using Samples = std::map<std::pair<int64_t, int64_t>, float>;  // by global pixe
 
 // Every sample of `layer` by global face pixel (Everest's tiles are all on face Q).
 Samples samples(const Store& store, const std::string& layer) {
-  const LayerInfo info = store.require_layer(layer);
-  const double* nodata = info.nodata ? &*info.nodata : nullptr;
   Samples out;
   for (const CellId cell : store.tile_cells(layer)) {
-    const Tile<float> tile = to_tile<float>(*store.get_tile(layer, cell), nodata);
+    const Tile<float> tile = float_tile(store, layer, cell);
     for (int r = 0; r < tile.size(); ++r)
       for (int c = 0; c < tile.size(); ++c)
         out[{global_col(cell, tile.size(), c), global_row(cell, tile.size(), r)}] = tile.at(c, r);

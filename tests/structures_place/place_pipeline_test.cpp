@@ -12,7 +12,6 @@
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_geometry.h>
-#include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <array>
@@ -35,6 +34,8 @@
 #include "model_oracle.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_layers.h"
+#include "synthetic_raster.h"
 
 namespace maquette {
 namespace {
@@ -60,27 +61,15 @@ const GeographicLib::LocalCartesian& scene_frame() {
 double terrain(double x, double y) { return 540 + 0.03 * x - 0.02 * y; }
 
 void write_dem(const std::string& path) {
-  const int w = int(std::lround((kEast - kWest) / kSourcePixelDeg));
-  const int h = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
-  std::vector<float> samples(size_t(w) * size_t(h));
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) {
-      double x = 0, y = 0, up = 0;
-      scene_frame().Forward(kNorth - (r + 0.5) * kSourcePixelDeg,
-                            kWest + (c + 0.5) * kSourcePixelDeg, 0, x, y, up);
-      samples[size_t(r) * size_t(w) + size_t(c)] = float(terrain(x, y));
-    }
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), w, h, 1, GDT_Float32, nullptr));
-  double transform[6] = {kWest, kSourcePixelDeg, 0, kNorth, 0, -kSourcePixelDeg};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(4326);
-  ds->SetSpatialRef(&srs);
-  ASSERT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, samples.data(), w, h, GDT_Float32, 1, nullptr, 0, 0,
-                         0, nullptr),
-            CE_None);
+  test::RasterSpec spec =
+      test::lonlat_raster(kWest, kNorth, int(std::lround((kEast - kWest) / kSourcePixelDeg)),
+                          kSourcePixelDeg, "Float32");
+  spec.height = int(std::lround((kNorth - kSouth) / kSourcePixelDeg));
+  test::write_raster(path, spec, [](int, double lon, double lat) {
+    double x = 0, y = 0, up = 0;
+    scene_frame().Forward(lat, lon, 0, x, y, up);
+    return terrain(x, y);
+  });
 }
 
 // The box's footprint turned by `rotation` (radians, counter-clockwise from east), scaled by
@@ -319,11 +308,8 @@ TEST(PlacePipeline, SameBitsForOneAndTwoThreads) {
   ASSERT_EQ(two.run("-t 2").exit_code, 0);
   const auto a = Store::open(one.store, Store::Mode::ReadOnly);
   const auto b = Store::open(two.store, Store::Mode::ReadOnly);
-  const std::vector<CellId> cells = a->content_cells("placed");
-  EXPECT_GT(cells.size(), 1u);  // the strokes spread over several cells
-  ASSERT_EQ(cells, b->content_cells("placed"));
-  for (const CellId cell : cells)
-    EXPECT_EQ(a->get_content("placed", cell), b->get_content("placed", cell));
+  // The strokes spread over several cells.
+  EXPECT_GT(test::expect_same_content(*a, *b, "placed"), 1u);
 }
 
 TEST(PlacePipeline, SquareStrokeIsAmbiguousNamingItsFeature) {

@@ -26,6 +26,7 @@
 #include "core/tile.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_layers.h"
 
 namespace maquette::test {
 namespace {
@@ -110,15 +111,12 @@ double value(const Tile<float>& t, int c, int r) {
 // inside the strip (a seam's gradient looks like any other).
 void expect_seamless(const Store& store, const std::string& layer) {
   constexpr int kHalfStrip = 64;
-  const std::optional<double> layer_nodata = store.require_layer(layer).nodata;
-  const double* nodata = layer_nodata ? &*layer_nodata : nullptr;
   int borders = 0;
   for (const CellId a : store.tile_cells(layer)) {
     if (a.col() + 1 >= (1u << a.level())) continue;
     const CellId b = CellId::FromFaceColRow(a.face(), a.level(), a.col() + 1, a.row());
     if (!store.has_tile(layer, b)) continue;
-    const Tile<float> ta = to_tile<float>(*store.get_tile(layer, a), nodata),
-                      tb = to_tile<float>(*store.get_tile(layer, b), nodata);
+    const Tile<float> ta = float_tile(store, layer, a), tb = float_tile(store, layer, b);
     const int m = ta.size();
     // Strip column j in [0, 2 kHalfStrip): a's column m - kHalfStrip + j, then b's columns.
     const auto strip = [&](int j, int r) {

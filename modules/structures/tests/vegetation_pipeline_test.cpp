@@ -7,9 +7,7 @@
 // of the orthophoto; the same plants (ids, positions to 1 cm, looks) for two tilings, the same
 // bits for 1 and 2 threads; the paper's placement beside it; the spacing estimated from an
 // orthophoto of crowns (structures.vegetation_spacing); bad or missing spacing_m refused.
-#include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <array>
@@ -24,9 +22,11 @@
 #include <vector>
 
 #include "../poisson_disk.h"
+#include "circle_ring.h"
 #include "content/instances_codec.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "synthetic_raster.h"
 
 namespace maquette::structures {
 namespace {
@@ -79,39 +79,19 @@ const Layout kCrowns = {0.0025, 1e-5, 150, 0, 0.0018, [](double lon, double lat,
                                        : std::array{200.0, 190.0, 160.0}[size_t(band)];
                         }};
 
-void write_raster(const std::string& path, const Layout& layout, int bands, GDALDataType type,
+// A lon/lat GeoTIFF over the layout of `bands` bands of GDAL type `type`, band b of each pixel
+// `value(lon, lat, b - 1)` at its centre.
+void write_raster(const std::string& path, const Layout& layout, int bands, const std::string& type,
                   const std::function<double(double, double, int)>& value) {
   const double half = layout.half_deg, pixel = layout.pixel_deg;
-  const int n = int(std::lround(2 * half / pixel));
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), n, n, bands, type, nullptr));
-  double transform[6] = {kLon - half, pixel, 0, kLat + half, 0, -pixel};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(4326);
-  ds->SetSpatialRef(&srs);
-  for (int b = 0; b < bands; ++b) {
-    std::vector<double> v;
-    for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c)
-        v.push_back(value(kLon - half + (c + 0.5) * pixel, kLat + half - (r + 0.5) * pixel, b));
-    ASSERT_EQ(
-        ds->GetRasterBand(b + 1)->RasterIO(GF_Write, 0, 0, n, n, v.data(), n, n, GDT_Float64, 0, 0),
-        CE_None);
-  }
+  test::RasterSpec spec = test::lonlat_raster(kLon - half, kLat + half,
+                                              int(std::lround(2 * half / pixel)), pixel, type);
+  spec.bands = bands;
+  test::write_raster(path, spec,
+                     [&](int band, double lon, double lat) { return value(lon, lat, band - 1); });
 }
 
-json ring(double radius_m) {
-  json out = json::array();
-  for (int k = 0; k <= 90; ++k) {
-    const double t = 2 * std::numbers::pi * (k % 90) / 90;
-    double lat = 0, lon = 0, h = 0;
-    kCentre.Reverse(radius_m * std::cos(t), radius_m * std::sin(t), 0, lat, lon, h);
-    out.push_back({lon, lat});
-  }
-  return out;
-}
+json ring(double radius_m) { return test::circle_ring(kLon, kLat, radius_m, 90); }
 
 // The stroke's plane (vegetation_stroke.h): the tangent plane at its first vertex.
 GeographicLib::LocalCartesian stroke_plane() {
@@ -136,9 +116,9 @@ struct Scene {
 
   Scene(int level, int tile_size, const json& spacing, json params,
         const Layout& layout = kGradients, const json& stroke_properties = json::object()) {
-    write_raster(dir + "/dem.tif", layout, 1, GDT_Float32,
+    write_raster(dir + "/dem.tif", layout, 1, "Float32",
                  [](double lon, double lat, int) { return terrain(lon, lat); });
-    write_raster(dir + "/ortho.tif", layout, 3, GDT_Byte, layout.orthophoto);
+    write_raster(dir + "/ortho.tif", layout, 3, "Byte", layout.orthophoto);
     json properties = {{"tool", "vegetation"}};
     if (!spacing.is_null()) properties["spacing_m"] = spacing;
     properties.update(stroke_properties);
