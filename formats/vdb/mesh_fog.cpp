@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <span>
+#include <sstream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -153,6 +155,34 @@ std::vector<Leaf*> block_leaves(std::span<Crossing> crossings) {
   return out;
 }
 
+// Throws unless every vertex is finite and its voxel index coordinates (and so every column and
+// voxel set) fit OpenVDB's 32-bit coordinates: a body too large for its voxels (a huge lake, tiny
+// voxels) would otherwise wrap around.
+void check_index_range(const FogBody& body, const std::string& where) {
+  constexpr double kLimit = std::numeric_limits<int32_t>::max();
+  const std::vector<float>& positions = body.mesh.positions;
+  for (size_t k = 0; k < 3; ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t v = k; v < positions.size(); v += 3) {
+      if (!std::isfinite(positions[v]))
+        throw Error(where + ": vertex " + std::to_string(v / 3) + " is not finite");
+      lo = std::min(lo, double(positions[v]));
+      hi = std::max(hi, double(positions[v]));
+    }
+    const double first = (lo - body.corner[k]) / body.voxel[k] - 0.5;
+    const double last = (hi - body.corner[k]) / body.voxel[k] - 0.5;
+    if (first < -kLimit || last > kLimit) {
+      std::ostringstream m;
+      m.precision(10);
+      m << where << ": the mesh spans " << lo << " to " << hi << " m along "
+        << "xyz"[k] << ", voxels " << first << " to " << last << " from the lattice's corner "
+        << body.corner[k] << " m with voxels of " << body.voxel[k]
+        << " m: beyond a grid's 32-bit voxel coordinates (larger voxels, or a smaller body)";
+      throw Error(m.str());
+    }
+  }
+}
+
 openvdb::FloatGrid::Ptr fog_grid(const FogBody& body, const std::string& where) {
   const MeshObject& mesh = body.mesh;
   for (size_t k = 0; k < 3; ++k) {
@@ -171,6 +201,7 @@ openvdb::FloatGrid::Ptr fog_grid(const FogBody& body, const std::string& where) 
       throw Error(where + ": triangle " + std::to_string(t / 3) + " has index " +
                   std::to_string(mesh.indices[t]) + " of " + std::to_string(vertices) +
                   " vertices");
+  check_index_range(body, where);
   BlockCrossings crossings = block_crossings(body);
   openvdb::math::Mat4d map = openvdb::math::Mat4d::identity();
   map.preScale(openvdb::Vec3d(body.voxel[0], body.voxel[1], body.voxel[2]));

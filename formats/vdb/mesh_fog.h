@@ -37,7 +37,9 @@ struct FogBody {
 // Precondition: each mesh is closed and consistently oriented (counter-clockwise seen from
 // outside), else the winding numbers are wrong. Throws maquette::Error naming `where` and the
 // body for a voxel size that is not finite and positive, a corner not finite, a mesh without
-// whole triangles or with an index out of range.
+// whole triangles or with an index out of range, a vertex not finite, or a mesh reaching beyond
+// the grid's 32-bit voxel coordinates (+-2^31 voxels from the lattice's corner; naming the extent
+// and the voxel size).
 VolumeContent mesh_to_fog(const std::vector<FogBody>& bodies, const EnuOrigin& origin,
                           const std::string& where);
 

@@ -1,14 +1,17 @@
 // mesh_to_fog (vdb/mesh_fog.h) and its plug-in entry (maquette_vdb_mesh_fog) on a closed box
 // whose faces lie on the voxel lattice's faces: exactly the box's voxels active (its volume to
-// the last bit), 1 inside; a box whose faces cut voxels: the voxels whose centres are inside;
-// the provenance kept, the entry's bytes the function's, the same bytes on any thread count (a
-// sphere of many triangles); bad input named.
+// the last bit), 1 inside; a box whose faces cut voxels: the voxels whose centres are inside,
+// found from the box's own equations (through the function and through the entry); the
+// provenance kept; the same bytes on any thread count (a sphere of many triangles); bad input
+// named, a body beyond the grid's 32-bit coordinates refused.
 #include "vdb/mesh_fog.h"
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/global_control.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
 
 #include "core/error.h"
 #include "plugins/vdb_content.h"
@@ -70,15 +73,19 @@ TEST(MeshFog, BoxOnTheLatticeGivesExactlyItsVoxels) {
   EXPECT_EQ(fog->metaValue<std::string>("tool"), "deform.water");
 }
 
-// Turned by 0.5 rad, its lattice shifted: the active voxels are those whose centres lie in the
-// box, found here from the box's own equations.
-TEST(MeshFog, TurnedBoxGivesTheVoxelsWhoseCentresAreInside) {
+// The box of box_body(angle) turned by 0.5 rad, its lattice shifted.
+FogBody turned_box() {
   FogBody body = box_body(0.5);
   body.corner = {kX0 + 0.1, kY0 + 0.2, kZ0 + 0.05};
-  const openvdb::GridPtrVec grids = decode_volume(mesh_to_fog({body}, kVolumeOrigin, "box"), "box");
-  const auto fog = openvdb::gridPtrCast<openvdb::FloatGrid>(grids.at(0));
+  return body;
+}
+
+// The active voxels of `grid` are those whose centres lie in the box of box_body(angle), found
+// from the box's own equations.
+void expect_the_box_s_voxels(const openvdb::GridBase::Ptr& grid, double angle) {
+  const auto fog = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
   ASSERT_TRUE(fog);
-  const double c = std::cos(0.5), s = std::sin(0.5);
+  const double c = std::cos(angle), s = std::sin(angle);
   openvdb::Index64 inside = 0;
   size_t wrong = 0;
   const openvdb::FloatGrid::ConstAccessor at = fog->getConstAccessor();
@@ -95,6 +102,14 @@ TEST(MeshFog, TurnedBoxGivesTheVoxelsWhoseCentresAreInside) {
   EXPECT_GT(inside, 3000u);
   EXPECT_EQ(wrong, 0u) << "of " << inside << " voxels inside";
   EXPECT_EQ(fog->activeVoxelCount(), inside);
+  for (auto v = fog->cbeginValueOn(); v; ++v) ASSERT_EQ(*v, 1.0f) << v.getCoord();
+}
+
+TEST(MeshFog, TurnedBoxGivesTheVoxelsWhoseCentresAreInside) {
+  const openvdb::GridPtrVec grids =
+      decode_volume(mesh_to_fog({turned_box()}, kVolumeOrigin, "box"), "box");
+  ASSERT_EQ(grids.size(), 1u);
+  expect_the_box_s_voxels(grids[0], 0.5);
 }
 
 // A closed sphere of radius 5 m centred at (kX0, kY0, kZ0): `rings` rings of latitude, `segments`
@@ -146,12 +161,15 @@ TEST(MeshFog, SameBytesForAnyThreadCount) {
   EXPECT_NEAR(volume, 4.0 / 3.0 * M_PI * 125, 0.005 * 4.0 / 3.0 * M_PI * 125);
 }
 
-TEST(MeshFog, PluginEntryGivesTheSameBytes) {
+TEST(MeshFog, PluginEntryGivesEachBodysVoxels) {
   auto* entry = plugin_function<decltype(maquette_vdb_mesh_fog)>(kVdbPlugin, kVdbMeshFogEntry);
   VolumeContent volume;
-  entry({box_body(), box_body()}, kVolumeOrigin, "box", volume);
-  EXPECT_EQ(volume.vdb, mesh_to_fog({box_body(), box_body()}, kVolumeOrigin, "box").vdb);
-  EXPECT_EQ(decode_volume(volume, "box").size(), 2u);
+  entry({box_body(), turned_box()}, kVolumeOrigin, "box", volume);
+  EXPECT_EQ(volume.origin, kVolumeOrigin);
+  const openvdb::GridPtrVec grids = decode_volume(volume, "box");
+  ASSERT_EQ(grids.size(), 2u);
+  expect_the_box_s_voxels(grids[0], 0);
+  expect_the_box_s_voxels(grids[1], 0.5);
   // Errors cross the plug-in's boundary as maquette::Error, naming `where` and the body.
   FogBody flat = box_body();
   flat.voxel[2] = 0;
@@ -163,6 +181,28 @@ TEST(MeshFog, PluginEntryGivesTheSameBytes) {
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find("deform.water, cell N3021, body 1: "), std::string::npos)
           << e.what();
+    }
+}
+
+TEST(MeshFog, BodyBeyondTheGridsCoordinatesIsRefused) {
+  // 10 m in voxels of 2 nm: 5e9 voxels along x, beyond 2^31.
+  FogBody tiny_voxels = box_body();
+  tiny_voxels.voxel[0] = 2e-9;
+  // The lattice's corner 3e9 voxels of 0.5 m north of the box (a lake far from its corner).
+  FogBody far_corner = box_body();
+  far_corner.corner[1] = kY0 + 1.5e9;
+  for (const auto& [body, axis, voxel] : {std::tuple{tiny_voxels, "along x", "voxels of 2e-09 m"},
+                                          std::tuple{far_corner, "along y", "voxels of 0.5 m"}})
+    try {
+      mesh_to_fog({box_body(), body}, kVolumeOrigin, "deform.water, cell N3021");
+      ADD_FAILURE() << axis << ": accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("deform.water, cell N3021, body 1: the mesh spans "), std::string::npos)
+          << what;
+      EXPECT_NE(what.find(axis), std::string::npos) << what;
+      EXPECT_NE(what.find(voxel), std::string::npos) << what;
+      EXPECT_NE(what.find("beyond a grid's 32-bit voxel coordinates"), std::string::npos) << what;
     }
 }
 
