@@ -6,15 +6,17 @@
 #   stream (20 m wide, 3 m deep);
 # - deform.water (examples/deform-rainier.json: the lake behind the road embankment) through
 #   `maquette run`, against r.lake on the same dammed DEM exported to UTM 10N at 8.8 m, at the
-#   level deform.water found and a seed in the lake (its deepest point).
+#   level deform.water found and a seed in the lake (by default its deepest point, -121.6741
+#   46.5959: another lake of the region, or another dam, wants a seed of its own).
 # Prints the step's time as the run logs it, the whole program's wall and CPU time, GRASS's
 # command's (not its import and export), and the ratios. Needs ../shared/data and grass-core.
-# Usage: benchmarks/deform/compare_grass.sh BUILD_DIR
+# Usage: benchmarks/deform/compare_grass.sh BUILD_DIR [SEED_LON SEED_LAT]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 examples=$root/examples shared=$root/../shared
 maquette=$(realpath "$1")/bin/maquette
+seed_lon=${2:--121.6741} seed_lat=${3:-46.5959}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -83,7 +85,7 @@ echo "$ours"
 "$maquette" -q run "$(pipeline deform-rainier "$rainier_bbox" '["deform.water_bodies"]')"
 level=$(sqlite3 "$tmp/deform-rainier.mqt" "select data from artifacts where name = 'lakes'" |
   jq '.[0].level')
-read -r x y _ < <(echo "-121.6741 46.5959" | gdaltransform -s_srs EPSG:4326 -t_srs EPSG:32610)
+read -r x y _ < <(echo "$seed_lon $seed_lat" | gdaltransform -s_srs EPSG:4326 -t_srs EPSG:32610)
 read -r w s e n < <(jq -r 'map(tostring) | join(" ")' <<<"$rainier_bbox")
 "$maquette" -q export gtiff "$tmp/deform-rainier.mqt" "$tmp/rainier.tif" --layer dammed_dem \
   --crs EPSG:32610 --resolution 8.8 --bbox "$w" "$s" "$e" "$n"
