@@ -8,6 +8,7 @@
 #include "bridge_deck.h"
 #include "bridge_stroke.h"
 #include "content/enu_transform.h"
+#include "content/facet_normals.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "core/polygon_set.h"
@@ -235,7 +236,7 @@ class Bridge : public RegionOperator {
                          {{"thickness_m", b.thickness_m},
                           {"volume_m3", mesh_volume(solid.positions, solid.indices)},
                           {"end_heights_m", ends}}};
-    content.objects.push_back(std::move(object));
+    content.objects.push_back(with_facet_normals(object));
   }
 };
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "building_mesh.h"
+#include "content/facet_normals.h"
 #include "core/error.h"
 #include "footprint.h"
 #include "gltf/texture_image.h"
@@ -116,7 +117,7 @@ class Buildings : public CellOperator {
             mesh.materials.push_back(orthophoto_material(orthophoto->second));
           object.material = 0;
         }
-        mesh.objects.push_back(std::move(object));
+        mesh.objects.push_back(with_facet_normals(object));
       } catch (const InvalidFootprint& e) {
         const std::string message = "structures.buildings: inputs.footprints: feature " +
                                     std::to_string(f->id) + ": " + e.what();

@@ -9,7 +9,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 
 namespace maquette::structures {
 
@@ -19,12 +21,20 @@ using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
 CgalVerdict cgal_verdict(const std::vector<double>& positions,
                          const std::vector<uint32_t>& indices) {
+  // Vertices at one position are one point (val3dity's view: a mesh whose corners are split
+  // for flat normals is still closed).
   std::vector<Kernel::Point_3> points;
-  for (size_t v = 0; v < positions.size(); v += 3)
-    points.emplace_back(positions[v], positions[v + 1], positions[v + 2]);
+  std::map<std::array<double, 3>, std::size_t> point_of;
+  std::vector<std::size_t> welded;
+  for (size_t v = 0; v < positions.size(); v += 3) {
+    const auto [at, added] = point_of.emplace(
+        std::array<double, 3>{positions[v], positions[v + 1], positions[v + 2]}, points.size());
+    if (added) points.emplace_back(positions[v], positions[v + 1], positions[v + 2]);
+    welded.push_back(at->second);
+  }
   std::vector<std::vector<std::size_t>> triangles;
   for (size_t t = 0; t < indices.size(); t += 3)
-    triangles.push_back({indices[t], indices[t + 1], indices[t + 2]});
+    triangles.push_back({welded[indices[t]], welded[indices[t + 1]], welded[indices[t + 2]]});
   CgalVerdict v;
   v.polygon_mesh = PMP::is_polygon_soup_a_polygon_mesh(triangles);
   if (!v.polygon_mesh) return v;

@@ -17,7 +17,8 @@ struct CgalVerdict {
   double volume = 0;            // PMP::volume, m^3
 };
 
-// Triangles as given (x, y, z per vertex, 3 indices per triangle); the later checks are made
+// Triangles as given (x, y, z per vertex, 3 indices per triangle; vertices at one position taken
+// as one point, as val3dity reads a solid); the later checks are made
 // only when the earlier hold (CGAL's preconditions).
 CgalVerdict cgal_verdict(const std::vector<double>& positions,
                          const std::vector<uint32_t>& indices);
