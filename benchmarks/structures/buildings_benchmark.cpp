@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "building_mesh.h"
+#include "content/facet_normals.h"
 #include "tests/soho_scene.h"
 
 namespace {
@@ -25,7 +26,8 @@ void BM_Buildings(benchmark::State& state) {
   for (auto _ : state) {
     triangles = 0;
     for (size_t i = 0; i < s.footprints.size(); ++i) {
-      const maquette::MeshObject m = building_mesh(s.footprints[i], {}, sites[i]);
+      const maquette::MeshObject m =
+          maquette::with_facet_normals(building_mesh(s.footprints[i], {}, sites[i]));
       triangles += m.indices.size() / 3;
       benchmark::DoNotOptimize(m.positions.data());
     }
