@@ -1,4 +1,3 @@
-#include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -192,20 +191,17 @@ class Bridge : public RegionOperator {
     // terrain there.
     const GeoPoint& anchor = b.first_edge.front();
     const EnuOrigin frame_origin{anchor.lon, anchor.lat, ends[0]};
-    const GeographicLib::LocalCartesian frame(anchor.lat, anchor.lon, ends[0]);
+    const EnuFrame frame = enu_frame(frame_origin);
     const auto deck_edge = [&](const std::vector<GeoPoint>& edge, double start, double end) {
       std::vector<PlanePoint2> plane;
       for (const GeoPoint& p : edge) {
-        double x = 0, y = 0, z = 0;
-        frame.Forward(p.lat, p.lon, ends[0], x, y, z);
-        plane.push_back({x, y});
+        const std::array<double, 3> q = frame.to_enu(p.lon, p.lat, ends[0]);
+        plane.push_back({q[0], q[1]});
       }
       const std::vector<double> heights = edge_profile(plane, start, end);
       std::vector<DeckPoint> points;
-      for (size_t i = 0; i < edge.size(); ++i) {
-        DeckPoint& d = points.emplace_back();
-        frame.Forward(edge[i].lat, edge[i].lon, heights[i], d[0], d[1], d[2]);
-      }
+      for (size_t i = 0; i < edge.size(); ++i)
+        points.push_back(frame.to_enu(edge[i].lon, edge[i].lat, heights[i]));
       return points;
     };
     const std::vector<DeckPoint> first = deck_edge(b.first_edge, ends[0], ends[1]);

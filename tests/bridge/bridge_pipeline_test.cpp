@@ -35,6 +35,7 @@
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "synthetic_raster.h"
 #include "tests/cgal_oracle.h"
 
 namespace maquette {
@@ -68,28 +69,17 @@ std::array<double, 2> lonlat(double x, double y) {
 
 // With `hole`, nodata (-9999) within 20 m of the bridge's east end.
 void write_dem(const std::string& path, bool hole) {
-  const int w = int(std::lround(2 * kHalfLon / kSourcePixelDeg));
-  const int h = int(std::lround(2 * kHalfLat / kSourcePixelDeg));
-  std::vector<float> z;
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) {
-      double x = 0, y = 0, up = 0;
-      local().Forward(kLat0 + kHalfLat - (r + 0.5) * kSourcePixelDeg,
-                      kLon0 - kHalfLon + (c + 0.5) * kSourcePixelDeg, 0, x, y, up);
-      z.push_back(hole && std::hypot(x - kEast, y) < 20 ? -9999.0f : float(terrain(x)));
-    }
-  GDALAllRegister();
-  const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), w, h, 1, GDT_Float32, nullptr));
-  double transform[6] = {kLon0 - kHalfLon, kSourcePixelDeg, 0, kLat0 + kHalfLat, 0,
-                         -kSourcePixelDeg};
-  ds->SetGeoTransform(transform);
-  OGRSpatialReference srs;
-  srs.importFromEPSG(4326);
-  ds->SetSpatialRef(&srs);
-  ds->GetRasterBand(1)->SetNoDataValue(-9999);
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, w, h, z.data(), w, h, GDT_Float32, 0, 0),
-            CE_None);
+  test::RasterSpec spec;
+  spec.width = int(std::lround(2 * kHalfLon / kSourcePixelDeg));
+  spec.height = int(std::lround(2 * kHalfLat / kSourcePixelDeg));
+  spec.geotransform = {kLon0 - kHalfLon, kSourcePixelDeg, 0, kLat0 + kHalfLat, 0, -kSourcePixelDeg};
+  spec.crs = "EPSG:4326";
+  spec.nodata = -9999;
+  test::write_raster(path, spec, [&](int, double lon, double lat) {
+    double x = 0, y = 0, up = 0;
+    local().Forward(lat, lon, 0, x, y, up);
+    return hole && std::hypot(x - kEast, y) < 20 ? -9999.0 : terrain(x);
+  });
 }
 
 // An edge at y metres north of the valley's centre, from x = kWest to kEast every 100 m.
