@@ -3,6 +3,9 @@
 // CIEDE2000 difference between the image and the synthesized texture after a Gaussian blur (the
 // noise's detail is not meant to match pixel by pixel), and per class the mean colour and colour
 // spread of the image's pixels of the class and of the texture's. Prints a table to stdout.
+// Optionally the predicted classes are compared after the majority filter of texture.classify
+// (the observed map's minimum mapping unit), the agreement of the classes as rendered reported
+// beside it.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -11,7 +14,9 @@
 #include "colour.h"
 #include "core/error.h"
 #include "illumination.h"
+#include "majority_filter.h"
 #include "operators.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::texture {
 namespace {
@@ -40,9 +45,16 @@ OperatorSpec assess_spec() {
                "pixels whose own class it is",
                true}};
   s.outputs = {{"report", "assessment (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
-  s.halo = kBlur;
+  s.halo = std::max(kBlur, kMaxMajorityRadius);
   s.params_schema = {
-      {"type", "object"}, {"additionalProperties", false}, {"properties", json::object()}};
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"properties",
+       {{"predicted_majority_radius",
+         integer_param(
+             0, kMaxMajorityRadius, 0,
+             "the predicted classes compared after texture.classify's majority filter "
+             "of this radius (the observed map's minimum mapping unit; 0: as they are)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
   return s;
 }
@@ -86,6 +98,19 @@ void add_moments(json& m, const std::array<float, 3>& x) {
   }
 }
 
+// The n x n predicted classes compared with the observed ones (-1: none): as they are, or after
+// the majority filter of `radius` (the tile has a halo >= radius).
+std::vector<int> compared_classes(const Tile<float>& pred, int n, int radius) {
+  const int side = n + 2 * radius;
+  std::vector<int> cls(size_t(side) * size_t(side));
+  for (int r = -radius; r < n + radius; ++r)
+    for (int c = -radius; c < n + radius; ++c) {
+      const float p = pred.at(c, r);
+      cls[size_t(r + radius) * size_t(side) + size_t(c + radius)] = std::isnan(p) ? -1 : int(p);
+    }
+  return majority_filter(cls, n, radius);
+}
+
 class Assess : public ReduceOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
@@ -120,12 +145,20 @@ class Assess : public ReduceOperator {
     const auto known = [](const std::array<float, 3>& x) {
       return !std::isnan(x[0]) && !std::isnan(x[1]) && !std::isnan(x[2]);
     };
+    const int radius = ctx.params->at("predicted_majority_radius").get<int>();
+    if (pred.halo() < radius)
+      throw Error("texture.assess: inputs.predicted: halo " + std::to_string(pred.halo()) +
+                  " is narrower than params.predicted_majority_radius " + std::to_string(radius));
+    const std::vector<int> compared = compared_classes(pred, n, radius);
+    std::map<std::string, uint64_t> unfiltered;  // with the filter: the classes as rendered
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
         const float o = obs.at(c, r), p = pred.at(c, r);
-        if (!std::isnan(o))
-          ++confusion[std::to_string(int(o)) + "," +
-                      (std::isnan(p) ? "-1" : std::to_string(int(p)))];
+        if (!std::isnan(o)) {
+          const std::string observed = std::to_string(int(o)) + ",";
+          ++confusion[observed + std::to_string(compared[size_t(r) * size_t(n) + size_t(c)])];
+          if (radius > 0) ++unfiltered[observed + (std::isnan(p) ? "-1" : std::to_string(int(p)))];
+        }
         if (!colour) continue;
         const auto& u = a[size_t(r) * size_t(n) + size_t(c)];
         const auto& v = b[size_t(r) * size_t(n) + size_t(c)];
@@ -148,15 +181,20 @@ class Assess : public ReduceOperator {
         ++de_n;
       }
     if (confusion.empty() && de_n == 0) return nullptr;
-    return {{"confusion", confusion}, {"de_sum", de}, {"de_n", de_n}, {"moments", moments}};
+    json out = {{"confusion", confusion}, {"de_sum", de}, {"de_n", de_n}, {"moments", moments}};
+    if (radius > 0) out["confusion_unfiltered"] = unfiltered;
+    return out;
   }
 
   json merge(const json& a, const json& b) const override {
     if (a.is_null()) return b;
     if (b.is_null()) return a;
     json out = a;
-    for (const auto& [k, n] : b.at("confusion").items())
-      out["confusion"][k] = out["confusion"].value(k, uint64_t(0)) + n.get<uint64_t>();
+    for (const char* counts : {"confusion", "confusion_unfiltered"}) {
+      if (!b.contains(counts)) continue;
+      for (const auto& [k, n] : b.at(counts).items())
+        out[counts][k] = out[counts].value(k, uint64_t(0)) + n.get<uint64_t>();
+    }
     out["de_sum"] = a["de_sum"].get<double>() + b["de_sum"].get<double>();
     out["de_n"] = a["de_n"].get<uint64_t>() + b["de_n"].get<uint64_t>();
     for (const auto& [k, sets] : b.at("moments").items())

@@ -51,13 +51,13 @@ nlohmann::json class_colours(const nlohmann::json& moments) {
   return out;
 }
 
-}  // namespace
-
-nlohmann::json assessment(const nlohmann::json& merged) {
+// Agreement of a confusion count {"obs,pred": n}: classes, matrix, accuracy, kappa, proportions
+// and producer's accuracies.
+nlohmann::json agreement(const nlohmann::json& confusion) {
   std::map<std::pair<int, int>, double> count;
   std::set<int> ids;
   double total = 0;
-  for (const auto& [key, n] : merged.at("confusion").items()) {
+  for (const auto& [key, n] : confusion.items()) {
     const size_t comma = key.find(',');
     const int o = std::stoi(key.substr(0, comma)), p = std::stoi(key.substr(comma + 1));
     count[{o, p}] += n.get<double>();
@@ -92,17 +92,31 @@ nlohmann::json assessment(const nlohmann::json& merged) {
   }
   const double accuracy = agree / total;
   const double kappa = expected < 1 ? (accuracy - expected) / (1 - expected) : 1.0;
-  const double de_n = merged.at("de_n").get<double>();
   return {{"classes", classes},
           {"confusion", matrix},
           {"pixels", uint64_t(total)},
           {"accuracy", accuracy},
           {"kappa", kappa},
           {"proportions", proportions},
-          {"producers_accuracy", producers},
-          {"class_colours", class_colours(merged.value("moments", nlohmann::json::object()))},
-          {"ciede2000_mean",
-           de_n > 0 ? nlohmann::json(merged.at("de_sum").get<double>() / de_n) : nlohmann::json()}};
+          {"producers_accuracy", producers}};
+}
+
+}  // namespace
+
+nlohmann::json assessment(const nlohmann::json& merged) {
+  nlohmann::json report = agreement(merged.at("confusion"));
+  if (merged.contains("confusion_unfiltered")) {
+    const nlohmann::json raw = agreement(merged.at("confusion_unfiltered"));
+    report["unfiltered"] = {{"confusion", raw["confusion"]},
+                            {"accuracy", raw["accuracy"]},
+                            {"kappa", raw["kappa"]},
+                            {"producers_accuracy", raw["producers_accuracy"]}};
+  }
+  const double de_n = merged.at("de_n").get<double>();
+  report["class_colours"] = class_colours(merged.value("moments", nlohmann::json::object()));
+  report["ciede2000_mean"] =
+      de_n > 0 ? nlohmann::json(merged.at("de_sum").get<double>() / de_n) : nlohmann::json();
+  return report;
 }
 
 std::string assessment_table(const nlohmann::json& r) {
@@ -130,6 +144,16 @@ std::string assessment_table(const nlohmann::json& r) {
     std::snprintf(buf, sizeof buf, "  CIEDE2000 (blurred) %.2f", r["ciede2000_mean"].get<double>()),
         s += buf;
   s += "\n";
+  if (r.contains("unfiltered")) {
+    const auto& u = r["unfiltered"];
+    std::snprintf(buf, sizeof buf, "  unfiltered (as rendered): accuracy %.4f  kappa %.4f",
+                  u["accuracy"].get<double>(), u["kappa"].get<double>());
+    s += buf;
+    s += "  producer's";
+    for (const auto& [k, a] : u["producers_accuracy"].items())
+      std::snprintf(buf, sizeof buf, " %s %.3f", k.c_str(), a.get<double>()), s += buf;
+    s += "\n";
+  }
   if (r["class_colours"].empty()) return s;
   s += "  class  image RGB        texture RGB      CIEDE2000  image sd  texture sd  ratio  "
        "blurred\n";

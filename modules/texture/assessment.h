@@ -11,6 +11,8 @@ namespace maquette::texture {
 //  {class: image and texture mean RGB, their CIEDE2000, spreads and ratio, and the ratio of
 //  spreads after the blur (with moments "image_blurred" and "texture_blurred")} (with moments),
 //  "kappa" (Cohen's), "proportions" {class: {observed, predicted}}, "ciede2000_mean", "pixels"}.
+// With "confusion_unfiltered" in `merged` (texture.assess's predicted classes before its
+// majority filter), also "unfiltered": {"confusion", "accuracy", "kappa", "producers_accuracy"}.
 nlohmann::json assessment(const nlohmann::json& merged);
 std::string assessment_table(const nlohmann::json& report);
 

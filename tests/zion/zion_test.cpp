@@ -7,8 +7,9 @@
 // mean colour within CIEDE2000 5 of the scene's and its colour spread within 50-150 % of the
 // scene's, at its pixels and after a blur of 4 pixels (class colours from the pixels whose own
 // colour class it is); and, for the goals not met (modules/texture/README.md "Zion"), the
-// measured values as floors against regressions: kappa, the classes with a producer's accuracy
-// of 0.5. The rest of the assessment printed.
+// measured values as floors against regressions: kappa (the predicted classes compared after the
+// observed map's majority filter, and as rendered), the classes with a producer's accuracy of
+// 0.5. The rest of the assessment printed.
 // The same model and assessment with 1 and 2 threads, and the texture two levels finer than the
 // DEM without seams between tiles.
 // Skipped when the data is absent.
@@ -160,8 +161,10 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   ASSERT_TRUE(r.is_object()) << one.table;
   EXPECT_GE(r["class_colours"].size(), 4u) << "classes kept by the fit, predicted in the east";
   // Issue 14's goals not met (README "Zion": kappa >= 0.6, producer's accuracies >= 0.5), held
-  // at what the example reaches (kappa 0.388 on the calibrated scene; 0.365 on the stretched one).
-  EXPECT_GE(r["kappa"].get<double>(), 0.38) << one.table;
+  // at what the example reaches: the predicted classes compared at the observed map's minimum
+  // mapping unit (the same majority filter of radius 16) kappa 0.509, as rendered 0.388.
+  EXPECT_GE(r["kappa"].get<double>(), 0.50) << one.table;
+  EXPECT_GE(r["unfiltered"]["kappa"].get<double>(), 0.38) << one.table;
   // Met since the calibration (5.30; 10.72 on the stretched scene).
   EXPECT_LE(r["ciede2000_mean"].get<double>(), 6) << one.table;
   for (const auto& [k, c] : r["class_colours"].items()) {
@@ -172,11 +175,14 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
     EXPECT_GE(c["sd_ratio_blurred"].get<double>(), 0.5) << "class " << k << ": " << c;
     EXPECT_LE(c["sd_ratio_blurred"].get<double>(), 1.5) << "class " << k << ": " << c;
   }
-  // Producer's accuracy >= 0.5 for 3 of the 5 classes (0.55, 0.52, 0.76; the light red rock 0.14,
-  // the white sandstone 0.32: README "Zion").
-  int found = 0;
-  for (const auto& [k, a] : r["producers_accuracy"].items()) found += a.get<double>() >= 0.5;
-  EXPECT_GE(found, 3) << one.table;
+  // Producer's accuracy >= 0.5 for 3 of the 5 classes, filtered and as rendered (0.72, 0.73,
+  // 0.81 and 0.55, 0.52, 0.76; the light red rock 0.01 and 0.14, the white sandstone 0.36 and
+  // 0.32: README "Zion").
+  for (const json& accuracies : {r["producers_accuracy"], r["unfiltered"]["producers_accuracy"]}) {
+    int found = 0;
+    for (const auto& [k, a] : accuracies.items()) found += a.get<double>() >= 0.5;
+    EXPECT_GE(found, 3) << one.table;
+  }
   const Outcome two = fit_and_assess(2);
   EXPECT_EQ(one.model, two.model);  // same bits
   EXPECT_EQ(one.table, two.table);  // same confusion matrix, kappa and colour difference
