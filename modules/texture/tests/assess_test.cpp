@@ -80,9 +80,9 @@ TEST(Assess, PredictedClassesAtTheObservedMinimumMappingUnit) {
   const json filtered = assess(kRadius);
   EXPECT_EQ(filtered["accuracy"].get<double>(), 1) << filtered;
   EXPECT_EQ(filtered["kappa"].get<double>(), 1) << filtered;
-  EXPECT_EQ(filtered["confusion"], json::parse("[[" + std::to_string(uint64_t(obs[0])) +
-                                               ", 0, 0], [0, " + std::to_string(uint64_t(obs[1])) +
-                                               ", 0]]"));
+  EXPECT_EQ(filtered["confusion"],
+            json::parse("[[" + std::to_string(uint64_t(obs[0])) + ", 0, 0], [0, " +
+                        std::to_string(uint64_t(obs[1])) + ", 0]]"));
   EXPECT_EQ(filtered["unfiltered"]["confusion"], plain["confusion"]);
   EXPECT_NEAR(filtered["unfiltered"]["kappa"].get<double>(), kappa, 1e-12);
   EXPECT_EQ(filtered["unfiltered"]["producers_accuracy"], plain["producers_accuracy"]);
