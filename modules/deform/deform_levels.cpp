@@ -211,7 +211,8 @@ RefinedPatch refined_heights(const HeightField& field, const SampleWindow& windo
     };
     deform_heights(heights, rows_through(level.control, window, finer, 2 << t, s),
                    rows_through(level.section, window, finer, 2 << t, s), neighbours, in_band,
-                   energy_weight);
+                   energy_weight,
+                   t == 0 ? LeastSquaresSolver::Cholesky : LeastSquaresSolver::ConjugateGradients);
     z = s * Eigen::Map<const Eigen::VectorXd>(heights.data(), Eigen::Index(heights.size()));
   }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "conjugate_gradients.h"
 #include "core/error.h"
 
 namespace maquette::deform {
@@ -51,12 +52,22 @@ class System {
     rhs_.push_back(weight * rhs);
   }
 
-  void solve() {
-    Eigen::VectorXd atb;
-    const Eigen::SparseMatrix<double> ata = normal_equations(atb);
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(ata);
-    if (ldlt.info() != Eigen::Success) throw Error("the deformation's least squares is singular");
-    const Eigen::VectorXd h = ldlt.solve(atb);
+  void solve(LeastSquaresSolver solver) {
+    Eigen::VectorXd atb, h;
+    const bool iterate = solver == LeastSquaresSolver::ConjugateGradients;
+    // SimplicialLDLT reads the lower triangle only, so it can take the iterations' matrix.
+    const Eigen::SparseMatrix<double> ata =
+        normal_equations(atb, iterate ? Triangles::Both : Triangles::Lower);
+    if (iterate) {
+      h.resize(Eigen::Index(unknowns_.size()));
+      for (size_t i = 0; i < unknowns_.size(); ++i) h[Eigen::Index(i)] = z_[unknowns_[i]];
+    }
+    if (!iterate || !conjugate_gradients(ata, atb, h, kConjugateGradientsTolerance,
+                                         kConjugateGradientsIterations)) {
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(ata);
+      if (ldlt.info() != Eigen::Success) throw Error("the deformation's least squares is singular");
+      h = ldlt.solve(atb);
+    }
     for (size_t i = 0; i < unknowns_.size(); ++i) {
       if (!std::isfinite(h[Eigen::Index(i)]))
         throw Error("the deformation's least squares has no finite solution");
@@ -65,10 +76,12 @@ class System {
   }
 
  private:
-  // The lower triangle of A^T A (what SimplicialLDLT reads) and A^T b, by blocks of columns in
-  // parallel: entry (k, j) sums a_ij a_ik over the rows i of column j in increasing order, so
-  // the same bits for any thread count.
-  Eigen::SparseMatrix<double> normal_equations(Eigen::VectorXd& atb) const {
+  enum class Triangles { Lower, Both };
+
+  // The lower triangle of A^T A (what SimplicialLDLT reads) or both, and A^T b, by blocks of
+  // columns in parallel: entry (k, j) sums a_ij a_ik over the rows i of column j in increasing
+  // order, so the same bits for any thread count.
+  Eigen::SparseMatrix<double> normal_equations(Eigen::VectorXd& atb, Triangles triangles) const {
     const size_t n = unknowns_.size();
     // A by columns: rows increasing in each (a counting sort of the entries in row order).
     std::vector<int> col_starts(n + 1, 0), col_rows(values_.size());
@@ -114,7 +127,7 @@ class System {
           rhs += aij * rhs_[i];
           for (int f = starts_[i]; f < starts_[i + 1]; ++f) {
             const int k = columns_[size_t(f)];
-            if (size_t(k) < j) continue;
+            if (triangles == Triangles::Lower && size_t(k) < j) continue;
             if (seen[size_t(k)] != j) {
               seen[size_t(k)] = j;
               touched.push_back(k);
@@ -182,7 +195,7 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
                                 const std::vector<size_t>& fixed,
                                 const std::function<bool(size_t)>& may_move,
                                 const EnergyNeighbours& neighbours, double energy_weight,
-                                Reads reads) {
+                                Reads reads, LeastSquaresSolver solver) {
   System system(z, touched(rows, fixed, may_move, z.size()));
   if (system.unknowns().empty()) return {};
   for (size_t i = 0; i < rows.rhs.size(); ++i)
@@ -202,7 +215,7 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
     for (size_t k = 1; k < terms.size(); ++k) terms[k].second /= sum;
     system.add(terms, 0.0, energy_weight);
   }
-  system.solve();
+  system.solve(solver);
   return system.unknowns();
 }
 
@@ -210,10 +223,13 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
 
 void deform_heights(std::vector<double>& z, const ConstraintRows& control,
                     const ConstraintRows& section, const EnergyNeighbours& neighbours,
-                    const std::function<bool(size_t)>& may_move, double energy_weight) {
+                    const std::function<bool(size_t)>& may_move, double energy_weight,
+                    LeastSquaresSolver solver) {
   const std::vector<size_t> control_vertices = solve_stage(
-      z, control, {}, [](size_t) { return true; }, neighbours, energy_weight, Reads::Unknowns);
-  solve_stage(z, section, control_vertices, may_move, neighbours, energy_weight, Reads::All);
+      z, control, {}, [](size_t) { return true; }, neighbours, energy_weight, Reads::Unknowns,
+      LeastSquaresSolver::Cholesky);
+  solve_stage(z, section, control_vertices, may_move, neighbours, energy_weight, Reads::All,
+              solver);
 }
 
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
@@ -239,7 +255,8 @@ void deform_heights(HeightField& field, const std::vector<HeightConstraint>& con
   const auto in_band = [&](size_t v) {
     return in_any_band(bands, {field.east[v], field.north[v]});
   };
-  deform_heights(field.z, rows(control), rows(section), neighbours, in_band, energy_weight);
+  deform_heights(field.z, rows(control), rows(section), neighbours, in_band, energy_weight,
+                 LeastSquaresSolver::Cholesky);
 }
 
 }  // namespace maquette::deform
