@@ -5,6 +5,7 @@
 #include <set>
 
 #include "content/enu_transform.h"
+#include "content/facet_normals.h"
 #include "core/enu_frame.h"
 #include "core/error.h"
 #include "core/halo.h"
@@ -97,7 +98,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     MeshContent& content =
         output_.content.at(owner(lake.where + ": the lake's mesh", first[0], first[1]))
             .mesh("mesh");
-    content.objects.push_back(object(lake, content.origin));
+    content.objects.push_back(with_facet_normals(object(lake, content.origin)));
   }
   if (any.wants("volume")) lakes_.push_back(std::move(lake));
 }

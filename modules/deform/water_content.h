@@ -1,4 +1,5 @@
-// deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, and its
+// deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, with facet
+// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit), and its
 // fog volume on the volume port, built by the volume plug-in (plugins/vdb_content.h:
 // mesh_to_fog of the same closed mesh) so that the module does not link OpenVDB. Each object is
 // written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of

@@ -12,9 +12,11 @@
 #include <openvdb/openvdb.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -283,6 +285,77 @@ TEST(DeformWater, OnAnEgm96DemTheLakeSitsOnTheEllipsoidalTerrain) {
     if (h > top) std::tie(top, top_surface) = std::pair(h, surface);
   }
   EXPECT_NEAR(top, top_surface, 0.01);
+}
+
+// The lake's mesh carries facet normals (CesiumJS draws a mesh without normals unlit): one unit
+// normal per vertex, each triangle's corners holding its own face's normal (computed here from
+// the decoded positions) within 2 degrees, so the surface's normals face up and the bottom's down;
+// welded by position (a corner copied once per face orientation), the mesh is still closed and
+// oriented: each edge once in each direction.
+TEST(DeformWater, LakeMeshCarriesFacetNormals) {
+  const double level = 1100;
+  const Basin basin(stroke(2000, {{"level", level}}));
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> holders = st->content_cells("water_mesh");
+  ASSERT_EQ(holders.size(), 1u);
+  const std::string blob = *st->get_content("water_mesh", holders[0]);
+  const ContentEnvelope envelope = read_content_envelope(blob, "water_mesh");
+  const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "water_mesh");
+  ASSERT_EQ(mesh.objects.size(), 1u);
+  const MeshObject& lake = mesh.objects[0];
+  ASSERT_EQ(lake.normals.size(), lake.positions.size());
+  const auto at = [](const std::vector<float>& v, uint32_t i) {
+    return std::array<double, 3>{v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+  };
+  for (size_t i = 0; i < lake.normals.size() / 3; ++i) {
+    const auto n = at(lake.normals, uint32_t(i));
+    ASSERT_NEAR(std::hypot(n[0], n[1], n[2]), 1, 1e-5) << "vertex " << i;
+  }
+  // A face within kFacetNormalTurnDeg (1 degree) of the first face of its group at a corner
+  // shares that face's normal; the GLB rounds positions to the millimetre: 2 degrees.
+  const double min_dot = std::cos(2 * std::numbers::pi / 180);
+  size_t up = 0, down = 0;
+  std::map<std::array<float, 3>, uint32_t> welded;
+  const auto weld = [&](uint32_t i) {
+    return welded
+        .emplace(
+            std::array{lake.positions[3 * i], lake.positions[3 * i + 1], lake.positions[3 * i + 2]},
+            uint32_t(welded.size()))
+        .first->second;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, int> edges;
+  for (size_t t = 0; t + 2 < lake.indices.size(); t += 3) {
+    const auto a = at(lake.positions, lake.indices[t]), b = at(lake.positions, lake.indices[t + 1]),
+               c = at(lake.positions, lake.indices[t + 2]);
+    const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+        w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    std::array<double, 3> face{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                               u[0] * w[1] - u[1] * w[0]};
+    const double length = std::hypot(face[0], face[1], face[2]);
+    ASSERT_GT(length, 0) << "triangle " << t / 3;
+    for (double& x : face) x /= length;
+    for (size_t k = 0; k < 3; ++k) {
+      const auto n = at(lake.normals, lake.indices[t + k]);
+      EXPECT_GT(n[0] * face[0] + n[1] * face[1] + n[2] * face[2], min_dot) << "triangle " << t / 3;
+    }
+    up += face[2] > 0.999;  // the surface (walls face sideways, the bottom down)
+    down += face[2] < -0.5;
+    const std::array<uint32_t, 3> v{weld(lake.indices[t]), weld(lake.indices[t + 1]),
+                                    weld(lake.indices[t + 2])};
+    for (size_t k = 0; k < 3; ++k) ++edges[{v[k], v[(k + 1) % 3]}];
+  }
+  EXPECT_GT(up, 100u);         // the surface's strips
+  EXPECT_GT(down, 2 * 5000u);  // the bottom: two triangles per wet pixel
+  for (const auto& [edge, count] : edges) {
+    ASSERT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
+    ASSERT_EQ(edges.count({edge.second, edge.first}), 1u)
+        << "edge " << edge.first << "-" << edge.second;
+  }
+  EXPECT_GT(lake.positions.size() / 3, welded.size());  // corners copied per orientation
+  std::printf("lake mesh: %zu vertices with normals, %zu positions, %zu triangles\n",
+              lake.positions.size() / 3, welded.size(), lake.indices.size() / 3);
 }
 
 TEST(DeformWater, SameBitsForOneAndTwoThreads) {
