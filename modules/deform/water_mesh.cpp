@@ -1,10 +1,14 @@
 #include "water_mesh.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -16,32 +20,56 @@ namespace {
 using Corner = std::pair<int64_t, int64_t>;  // (col, row) of the corner lattice
 
 constexpr uint32_t kNone = UINT32_MAX;
+// A vertex of the block before (on the block's first corner line): kForeign | its index in the
+// block's list of them, until the blocks are joined.
+constexpr uint32_t kForeign = 0x80000000u;
+// Pixel rows per block: the unit of parallel work and of the vertices' numbering, fixed so that
+// the mesh does not depend on the threads.
+constexpr int64_t kBlockRows = 64;
 
-// Vertices by corner, in dense tables over the lake's bounding box. Where only two diagonal
+// The lake's pixels as a raster, and the corner lattice of their bounding box.
+struct WetRaster {
+  WetRaster(const BasinRaster& basin, const WaterBody& body)
+      : width(basin.width), height(basin.height) {
+    wet.assign(size_t(width) * size_t(height), 0);
+    col0 = width, row0 = height;
+    for (const int64_t i : body.wet) {
+      wet[size_t(i)] = 1;
+      col0 = std::min(col0, i % width), col1 = std::max(col1, i % width + 1);
+      row0 = std::min(row0, i / width), row1 = std::max(row1, i / width + 1);
+    }
+  }
+  bool at(int64_t col, int64_t row) const {
+    return col >= 0 && row >= 0 && col < width && row < height &&
+           wet[size_t(row) * size_t(width) + size_t(col)];
+  }
+
+  int64_t width = 0, height = 0;
+  std::vector<uint8_t> wet;
+  int64_t col0 = 0, row0 = 0, col1 = 0, row1 = 0;  // the wet pixels. box: col1, row1 one past
+};
+
+// The vertices and triangles of the pixel rows [row_begin, row_end) of a lake, numbered in the
+// order of first use, in dense tables over the block's corner lines. Where only two diagonal
 // pixels around a corner are wet (the lake touches itself there, 8-connected), each of them gets
 // its own vertices at the corner, so that every edge stays in two triangles. The pixel a corner
 // is used for is its quadrant: 0 (col - 1, row - 1), 1 (col, row - 1), 2 (col - 1, row), 3 (col,
-// row).
+// row). A vertex on the block's first corner line that the rows above use too (a wet pixel of
+// the row above touches it) is the block before's: referred to as kForeign | k (foreign()[k]).
 class Builder {
  public:
-  Builder(const BasinRaster& basin, const WaterBody& body) : basin_(basin), body_(body) {
-    wet_.assign(size_t(basin.width) * size_t(basin.height), 0);
-    col0_ = basin.width, row0_ = basin.height;
-    int64_t col1 = 0, row1 = 0;
-    for (const int64_t i : body.wet) {
-      wet_[size_t(i)] = 1;
-      col0_ = std::min(col0_, i % basin.width), col1 = std::max(col1, i % basin.width + 1);
-      row0_ = std::min(row0_, i / basin.width), row1 = std::max(row1, i / basin.width + 1);
-    }
-    corners_across_ = col1 - col0_ + 1;
-    top_.assign(size_t(corners_across_ * (row1 - row0_ + 1)), kNone);
+  Builder(const BasinRaster& basin, const WaterBody& body, const WetRaster& wet, int64_t row_begin,
+          int64_t row_end)
+      : basin_(basin),
+        body_(body),
+        wet_(wet),
+        line0_(row_begin),
+        corners_across_(wet.col1 - wet.col0 + 1) {
+    top_.assign(size_t(corners_across_ * (row_end - row_begin + 1)), kNone);
     bottom_.assign(top_.size(), kNone);
   }
 
-  bool wet(int64_t col, int64_t row) const {
-    return col >= 0 && row >= 0 && col < basin_.width && row < basin_.height &&
-           wet_[size_t(row) * size_t(basin_.width) + size_t(col)];
-  }
+  bool wet(int64_t col, int64_t row) const { return wet_.at(col, row); }
 
   uint32_t top(Corner c, int quadrant) { return vertex(c, quadrant, true); }
   uint32_t bottom(Corner c, int quadrant) { return vertex(c, quadrant, false); }
@@ -64,9 +92,28 @@ class Builder {
     mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
   }
 
-  LakeMesh take() { return std::move(mesh_); }
+  // The block's own vertex at corner c (its part: -1 unsplit, else its quadrant) on its last
+  // corner line, which the block after refers to.
+  uint32_t own(const Corner& c, int part, bool top) const {
+    const uint32_t id = part < 0 ? (top ? top_ : bottom_)[slot(c)]
+                                 : split_.at(std::tuple(c.first, c.second, part, top)).id;
+    if (id == kNone) throw std::logic_error("lake_mesh: a corner the block before did not use");
+    return id;
+  }
+
+  struct ForeignVertex {
+    Corner corner;
+    int part = -1;
+    bool top = false;
+  };
+  const std::vector<ForeignVertex>& foreign() const { return foreign_; }
+  LakeMesh& mesh() { return mesh_; }
 
  private:
+  size_t slot(const Corner& c) const {
+    return size_t((c.second - line0_) * corners_across_ + (c.first - wet_.col0));
+  }
+
   bool quadrant_wet(Corner c, int q) const {
     return wet(c.first - 1 + (q & 1), c.second - 1 + (q >> 1));
   }
@@ -78,12 +125,17 @@ class Builder {
   }
 
   uint32_t vertex(Corner c, int quadrant, bool top) {
-    uint32_t& unsplit =
-        (top ? top_ : bottom_)[size_t((c.second - row0_) * corners_across_ + (c.first - col0_))];
+    uint32_t& unsplit = (top ? top_ : bottom_)[slot(c)];
     if (unsplit != kNone) return unsplit;  // set only for a corner that is not split
     const int part = touches_itself(c) ? quadrant : -1;
     uint32_t& id = part < 0 ? unsplit : split_[std::tuple(c.first, c.second, part, top)].id;
     if (id != kNone) return id;
+    const bool above = part < 0 ? quadrant_wet(c, 0) || quadrant_wet(c, 1) : part < 2;
+    if (c.second == line0_ && above) {  // the block before's
+      id = kForeign | uint32_t(foreign_.size());
+      foreign_.push_back({c, part, top});
+      return id;
+    }
     id = uint32_t(mesh_.vertices.size());
     double height = body_.level;
     if (!top) {  // the mean terrain of the wet pixels around the corner (of the part's pixel)
@@ -110,10 +162,11 @@ class Builder {
 
   const BasinRaster& basin_;
   const WaterBody& body_;
-  std::vector<uint8_t> wet_;
-  int64_t col0_ = 0, row0_ = 0, corners_across_ = 0;  // the bounding box's corner lattice
-  std::vector<uint32_t> top_, bottom_;                // by corner, when not split
+  const WetRaster& wet_;
+  int64_t line0_ = 0, corners_across_ = 0;  // the block's first corner line; the lattice's width
+  std::vector<uint32_t> top_, bottom_;      // by corner of the block's lines, when not split
   std::map<std::tuple<int64_t, int64_t, int, bool>, SplitId> split_;
+  std::vector<ForeignVertex> foreign_;
   LakeMesh mesh_;
 };
 
@@ -153,30 +206,27 @@ void top_strip(Builder& m, int64_t row, int64_t col0, int64_t col1) {
   }
 }
 
-}  // namespace
-
-LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
-  if (body.wet.empty()) throw Error("lake_mesh: an empty body");
-  Builder m(basin, body);
-
+// The triangles of the wet pixels body.wet[begin, end) (whole rows): the top strips of their
+// runs, then each pixel's bottom and walls.
+void block_triangles(Builder& m, const BasinRaster& basin, const WaterBody& body, size_t begin,
+                     size_t end) {
   // Top: one strip per wet run of a row (body.wet is sorted: runs are consecutive indices).
-  for (size_t k = 0; k < body.wet.size();) {
-    size_t end = k + 1;
-    while (end < body.wet.size() && body.wet[end] == body.wet[end - 1] + 1 &&
-           body.wet[end] % basin.width != 0)
-      ++end;
+  for (size_t k = begin; k < end;) {
+    size_t run_end = k + 1;
+    while (run_end < end && body.wet[run_end] == body.wet[run_end - 1] + 1 &&
+           body.wet[run_end] % basin.width != 0)
+      ++run_end;
     const int64_t row = body.wet[k] / basin.width, col0 = body.wet[k] % basin.width;
-    top_strip(m, row, col0, col0 + int64_t(end - k));
-    k = end;
+    top_strip(m, row, col0, col0 + int64_t(run_end - k));
+    k = run_end;
   }
-
-  for (const int64_t i : body.wet) {
-    const int64_t c = i % basin.width, r = i / basin.width;
+  for (size_t k = begin; k < end; ++k) {
+    const int64_t c = body.wet[k] % basin.width, r = body.wet[k] / basin.width;
     const Corner c00{c, r}, c10{c + 1, r}, c01{c, r + 1}, c11{c + 1, r + 1};
     // The pixel is quadrant 3 of its corner c00, 2 of c10, 1 of c01, 0 of c11.
-    const auto quadrant = [&](Corner k) { return int(k.second == r) * 2 + int(k.first == c); };
-    const auto bottom = [&](Corner k) { return m.bottom(k, quadrant(k)); };
-    const auto top = [&](Corner k) { return m.top(k, quadrant(k)); };
+    const auto quadrant = [&](Corner q) { return int(q.second == r) * 2 + int(q.first == c); };
+    const auto bottom = [&](Corner q) { return m.bottom(q, quadrant(q)); };
+    const auto top = [&](Corner q) { return m.top(q, quadrant(q)); };
     // Bottom, facing down.
     m.triangle(bottom(c00), bottom(c10), bottom(c11));
     m.triangle(bottom(c00), bottom(c11), bottom(c01));
@@ -192,7 +242,47 @@ LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
       m.triangle(bottom(a), top(b), top(a));
     }
   }
-  return m.take();
+}
+
+}  // namespace
+
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
+  if (body.wet.empty()) throw Error("lake_mesh: an empty body");
+  const WetRaster wet(basin, body);
+  // Blocks of kBlockRows pixel rows from the lake's first row, built in parallel; then joined in
+  // block order, each block's vertices after those of the blocks before, its references to the
+  // block before's vertices resolved.
+  const size_t blocks = size_t((wet.row1 - wet.row0 + kBlockRows - 1) / kBlockRows);
+  std::vector<std::unique_ptr<Builder>> built(blocks);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    const int64_t row_begin = wet.row0 + int64_t(b) * kBlockRows;
+    const int64_t row_end = std::min(wet.row1, row_begin + kBlockRows);
+    const auto first = [&](int64_t row) {
+      return size_t(std::lower_bound(body.wet.begin(), body.wet.end(), row * basin.width) -
+                    body.wet.begin());
+    };
+    built[b] = std::make_unique<Builder>(basin, body, wet, row_begin, row_end);
+    block_triangles(*built[b], basin, body, first(row_begin), first(row_end));
+  });
+  std::vector<uint32_t> offset(blocks + 1, 0);
+  for (size_t b = 0; b < blocks; ++b)
+    offset[b + 1] = offset[b] + uint32_t(built[b]->mesh().vertices.size());
+  LakeMesh mesh;
+  mesh.vertices.reserve(offset.back());
+  for (size_t b = 0; b < blocks; ++b) {
+    LakeMesh& part = built[b]->mesh();
+    mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (uint32_t& i : part.indices) {
+      if (i & kForeign) {
+        const Builder::ForeignVertex& v = built[b]->foreign()[i & ~kForeign];
+        i = offset[b - 1] + built[b - 1]->own(v.corner, v.part, v.top);
+      } else {
+        i += offset[b];
+      }
+    }
+    mesh.indices.insert(mesh.indices.end(), part.indices.begin(), part.indices.end());
+  }
+  return mesh;
 }
 
 }  // namespace maquette::deform

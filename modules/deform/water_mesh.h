@@ -5,7 +5,12 @@
 // shoreline to the terrain, one quad per dry pixel side, and a bottom following the terrain, one
 // quad per wet pixel. Vertices are in pixel-corner coordinates (col, row: the raster's corner
 // lattice, row down), each bottom corner at the mean terrain of the wet pixels around it. Time
-// and memory are linear in the lake's pixels (and its bounding box's corners).
+// and memory are linear in the lake's pixels (and its bounding box's corners). Built by blocks of
+// 64 pixel rows in parallel: the triangles block by block (in each, the top strips of its rows,
+// then each wet pixel's bottom and walls), the vertices numbered block by block in the order of
+// first use, a corner shared with the rows above belonging to the block above; the blocks fixed
+// from the lake's first row, so the same mesh for any thread count. The first vertex is the
+// first top strip's first corner, on the shore.
 //
 // Contract: a non-empty body of `basin` (fill_basin). The mesh is closed and consistently
 // oriented: each edge is in exactly two triangles, once in each direction; triangles are
