@@ -46,7 +46,7 @@ struct WetRaster {
 
   int64_t width = 0, height = 0;
   std::vector<uint8_t> wet;
-  int64_t col0 = 0, row0 = 0, col1 = 0, row1 = 0;  // the wet pixels. box: col1, row1 one past
+  int64_t col0 = 0, row0 = 0, col1 = 0, row1 = 0;  // the wet pixels' box: col1, row1 one past
 };
 
 // The vertices and triangles of the pixel rows [row_begin, row_end) of a lake, numbered in the

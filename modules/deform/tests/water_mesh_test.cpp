@@ -1,9 +1,11 @@
 // lake_mesh (water_mesh.h): closed (each edge in exactly two triangles, once in each
 // direction), no degenerate triangle, its enclosed volume (divergence theorem) close to the
-// raster volume, the top triangulated from the shoreline (no vertex inside the lake).
+// raster volume, the top triangulated from the shoreline (no vertex inside the lake); the same
+// mesh for any thread count.
 #include "../water_mesh.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <map>
@@ -76,6 +78,26 @@ TEST(WaterMesh, LargeHillsLakeIsClosedWithTheRasterVolume) {
   const LakeMesh m = lake_mesh(b.raster(), body);
   expect_closed_and_oriented(m);
   EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.01 * body.volume_m3);
+}
+
+// Built by blocks of rows in parallel (16 blocks here): the same vertices and triangles on one
+// thread as on all.
+TEST(WaterMesh, SameMeshForOneThreadAndMore) {
+  const Basin b = hills(1000, 1000);
+  const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
+  LakeMesh one;
+  {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = lake_mesh(b.raster(), body);
+  }
+  const LakeMesh many = lake_mesh(b.raster(), body);
+  EXPECT_EQ(one.indices, many.indices);
+  ASSERT_EQ(one.vertices.size(), many.vertices.size());
+  for (size_t i = 0; i < one.vertices.size(); ++i) {
+    ASSERT_EQ(one.vertices[i].col, many.vertices[i].col) << i;
+    ASSERT_EQ(one.vertices[i].row, many.vertices[i].row) << i;
+    ASSERT_EQ(one.vertices[i].height, many.vertices[i].height) << i;
+  }
 }
 
 TEST(WaterMesh, ParaboloidTopHasOnlyShorelineVertices) {
