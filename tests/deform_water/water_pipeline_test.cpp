@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -138,6 +139,18 @@ struct Basin {
     return run_maquette("-q run " + options + " " + dir + "/pipeline.json");
   }
 };
+
+// The lake's mesh as stored: the blob of its one holder cell, decoded (GLB).
+MeshContent stored_lake_mesh(const std::string& store) {
+  const auto st = Store::open(store, Store::Mode::ReadOnly);
+  const std::vector<CellId> holders = st->content_cells("water_mesh");
+  if (holders.size() != 1)
+    throw std::runtime_error("the lake's mesh is in " + std::to_string(holders.size()) +
+                             " cells, not 1");
+  const std::string blob = *st->get_content("water_mesh", holders[0]);
+  return decode_mesh_glb(content_payload(blob), read_content_envelope(blob, "water_mesh").origin,
+                         "water_mesh");
+}
 
 struct Lake {
   size_t wet = 0;
@@ -264,15 +277,9 @@ TEST(DeformWater, OnAnEgm96DemTheLakeSitsOnTheEllipsoidalTerrain) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const test::Egm96ToEllipsoid to_ellipsoid;
 
-  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
-  const std::vector<CellId> holders = st->content_cells("water_mesh");
-  ASSERT_EQ(holders.size(), 1u);
-  const std::string blob = *st->get_content("water_mesh", holders[0]);
-  const ContentEnvelope envelope = read_content_envelope(blob, "water_mesh");
-  const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "water_mesh");
+  const MeshContent mesh = stored_lake_mesh(basin.store);
   ASSERT_EQ(mesh.objects.size(), 1u);
-  const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
-                                            envelope.origin.height);
+  const GeographicLib::LocalCartesian frame(mesh.origin.lat, mesh.origin.lon, mesh.origin.height);
   const std::vector<float>& p = mesh.objects[0].positions;
   // No vertex above the water's surface (level + N at its place), and the highest on it.
   double top = -INFINITY, top_surface = 0;
@@ -297,12 +304,7 @@ TEST(DeformWater, LakeMeshCarriesFacetNormals) {
   const Basin basin(stroke(2000, {{"level", level}}));
   const CliResult r = basin.run();
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
-  const std::vector<CellId> holders = st->content_cells("water_mesh");
-  ASSERT_EQ(holders.size(), 1u);
-  const std::string blob = *st->get_content("water_mesh", holders[0]);
-  const ContentEnvelope envelope = read_content_envelope(blob, "water_mesh");
-  const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "water_mesh");
+  const MeshContent mesh = stored_lake_mesh(basin.store);
   ASSERT_EQ(mesh.objects.size(), 1u);
   const MeshObject& lake = mesh.objects[0];
   ASSERT_EQ(lake.normals.size(), lake.positions.size());
