@@ -23,7 +23,9 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/PolygonArea.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -38,6 +40,7 @@
 #include "content/prototypes.h"
 #include "egm96_oracle.h"
 #include "example_pipeline.h"
+#include "gltf/gltf_model.h"
 #include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
@@ -60,9 +63,19 @@ struct ExampleRun {
   std::string store = dir + "/campus-soho.mqt";
   std::string tiles = dir + "/campus-soho-output/tiles3d";
   CliResult result;
+  std::string hotel = dir + "/hotel.glb";
+  // As examples/campus-soho/run.sh: maquette-prism writes the hotel's GLB, the pipeline ingests
+  // it (here from the temporary folder).
   ExampleRun() {
-    std::ofstream(dir + "/pipeline.json") << example_pipeline("campus-soho").dump(1);
-    result = run_maquette("-q run " + dir + "/pipeline.json");
+    json pipeline = example_pipeline("campus-soho");
+    for (json& step : pipeline["steps"])
+      if (step["op"] == "ingest" && step["params"]["as"] == "model")
+        step["params"]["sources"] = json::array({hotel});
+    std::ofstream(dir + "/pipeline.json") << pipeline.dump(1);
+    const std::string prism = std::string(MAQUETTE_BIN_DIR) + "/maquette-prism " + kExamples +
+                              "/prism-building.json " + hotel + " > /dev/null";
+    result.exit_code = std::system(prism.c_str());
+    if (result.exit_code == 0) result = run_maquette("-q run " + dir + "/pipeline.json");
   }
 };
 
@@ -246,7 +259,9 @@ TEST(CampusExample, TheStrokePlacesOneTree) {
   REQUIRE_EXAMPLE();
   const json& strokes = example_strokes().collection;
   const auto& shapes = example_strokes().shapes;
-  const std::vector<Instance> placed = instances("placed");
+  std::vector<Instance> placed = instances("placed");
+  ASSERT_EQ(placed.size(), 2u);  // the tree and the hotel
+  std::erase_if(placed, [](const Instance& p) { return p.prototype == "hotel"; });
   ASSERT_EQ(placed.size(), 1u);
   const Instance& tree = placed[0];
   const size_t index = size_t(tree.feature - 1);
@@ -286,6 +301,57 @@ TEST(CampusExample, TheStrokePlacesOneTree) {
               1e-3);
   std::printf("placed %s: %.2f m from the stroke's centre, scale %.3f (area ratio %.3f)\n",
               tree.prototype.c_str(), std::hypot(e, north), tree.scale, scale);
+}
+
+// The hotel modelled from building.jpg (examples/prism-building.json), placed by a closed stroke
+// drawn around its footprint: at the stroke's centre, on the ground, its long side (the facade,
+// the model's x) along the stroke's long axis, at the scale that takes the model's floor (a
+// rectangle) to the stroke's area (GeographicLib), within the 3 % of issue 17.
+TEST(CampusExample, TheStrokePlacesTheHotelFromThePhoto) {
+  REQUIRE_EXAMPLE();
+  const auto& shapes = example_strokes().shapes;
+  std::vector<Instance> placed = instances("placed");
+  std::erase_if(placed, [](const Instance& p) { return p.prototype != "hotel"; });
+  ASSERT_EQ(placed.size(), 1u);
+  const Instance& hotel = placed[0];
+  const size_t index = size_t(hotel.feature - 1);
+  ASSERT_LT(index, shapes.size());
+  EXPECT_EQ(example_strokes().collection["features"][index]["properties"]["model"], "hotel");
+  // The stroke (a hand's: 56 points) at its centroid (OGR), its long axis the principal axis of
+  // its points in the tangent plane there.
+  OGRPoint centroid;
+  ASSERT_EQ(shapes[index]->Centroid(&centroid), OGRERR_NONE);
+  const GeographicLib::LocalCartesian frame(centroid.getY(), centroid.getX(), 0);
+  double e = 0, n = 0, u = 0;
+  frame.Forward(hotel.lat, hotel.lon, 0, e, n, u);
+  EXPECT_LE(std::hypot(e, n), 0.1);
+  EXPECT_NEAR(hotel.height, ground(hotel.lon, hotel.lat), 0.01);
+  const OGRLinearRing* ring = shapes[index]->toPolygon()->getExteriorRing();
+  double see = 0, snn = 0, sen = 0;
+  for (int i = 0; i + 1 < ring->getNumPoints(); ++i) {
+    double x = 0, y = 0;
+    frame.Forward(ring->getY(i), ring->getX(i), 0, x, y, u);
+    see += x * x, snn += y * y, sen += x * y;
+  }
+  // The major axis' bearing (degrees clockwise from north).
+  const double side_bearing = 90 - 0.5 * std::atan2(2 * sen, see - snn) * 180 / kPi;
+  const MeshContent model = read_gltf_model(example().hotel);
+  std::array<double, 2> lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  for (const MeshObject& o : model.objects)
+    for (size_t k = 0; k < o.positions.size(); k += 3)
+      for (size_t a = 0; a < 2; ++a)
+        lo[a] = std::min(lo[a], double(o.positions[k + a])),
+        hi[a] = std::max(hi[a], double(o.positions[k + a]));
+  const double scale =
+      std::sqrt(geodesic_area(*shapes[index]->toPolygon()) / ((hi[0] - lo[0]) * (hi[1] - lo[1])));
+  EXPECT_NEAR(hotel.scale / scale, 1, 0.03);
+  // The model's +y is turned to the heading; its +x, the facade, runs along the stroke's long
+  // axis, either way round.
+  EXPECT_NEAR(std::remainder(hotel.heading_deg + 90 - side_bearing, 180), 0, 1);
+  std::printf(
+      "placed hotel: %.2f m from the stroke's centre, scale %.3f (area ratio %.3f), "
+      "heading %.1f deg\n",
+      std::hypot(e, n), hotel.scale, scale, hotel.heading_deg);
 }
 
 TEST(CampusExample, TilesetHoldsTheTerrainAndEveryContentLayer) {
