@@ -24,13 +24,12 @@
 #include <tuple>
 #include <vector>
 
-#include "content/content_blob.h"
 #include "core/grid.h"
 #include "core/halo.h"
 #include "egm96_oracle.h"
-#include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_content.h"
 #include "stored_layers.h"
 #include "synthetic_raster.h"
 #include "tests/cgal_oracle.h"
@@ -181,17 +180,13 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
   }
   std::set<int64_t> features;
   const GeographicLib::LocalCartesian local(kLat0, kLon0, 0);
-  for (const CellId cell : st->content_cells("buildings")) {
-    const std::string blob = *st->get_content("buildings", cell);
-    const ContentEnvelope envelope = read_content_envelope(blob, "test");
-    const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
+  for (const auto& [origin, mesh] : test::stored_meshes(*st, "buildings")) {
     // The roofs drape the cell's orthophoto tile with its halo: 256 + 2 x 128 pixels, JPEG.
     ASSERT_EQ(mesh.materials.size(), 1u);
     EXPECT_EQ(mesh.materials[0].image_mime, "image/jpeg");
     const Image image(mesh.materials[0].image);
     EXPECT_EQ(image.width, 512);
-    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
-                                              envelope.origin.height);
+    const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
     for (const MeshObject& o : mesh.objects) {
       const int64_t id = o.provenance.feature_id;
       EXPECT_TRUE(features.insert(id).second) << "feature " << id << " stored twice";
@@ -247,12 +242,8 @@ TEST(BuildingsPipeline, OnAnEgm96DemBuildingsStandOnTheEllipsoidalTerrain) {
   const test::Egm96ToEllipsoid to_ellipsoid;
   const auto st = Store::open(scene.store, Store::Mode::ReadOnly);
   int checked = 0;
-  for (const CellId cell : st->content_cells("buildings")) {
-    const std::string blob = *st->get_content("buildings", cell);
-    const ContentEnvelope envelope = read_content_envelope(blob, "test");
-    const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
-    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
-                                              envelope.origin.height);
+  for (const auto& [origin, mesh] : test::stored_meshes(*st, "buildings")) {
+    const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
     for (const MeshObject& o : mesh.objects) {
       // The lowest vertex: the base.
       double lat = 0, lon = 0, h = INFINITY;
@@ -284,13 +275,9 @@ TEST(BuildingsPipeline, SameBitsForOneAndTwoThreads) {
 std::map<int64_t, json> buildings(const std::string& store) {
   const auto st = Store::open(store, Store::Mode::ReadOnly);
   std::map<int64_t, json> out;
-  for (const CellId cell : st->content_cells("buildings")) {
-    const std::string blob = *st->get_content("buildings", cell);
-    const ContentEnvelope envelope = read_content_envelope(blob, "test");
-    for (const MeshObject& o :
-         decode_mesh_glb(content_payload(blob), envelope.origin, "test").objects)
+  for (const auto& stored : test::stored_meshes(*st, "buildings"))
+    for (const MeshObject& o : stored.mesh.objects)
       out[o.provenance.feature_id] = o.provenance.attributes;
-  }
   return out;
 }
 

@@ -35,15 +35,13 @@
 #include <string>
 #include <vector>
 
-#include "content/content_blob.h"
-#include "content/instances_codec.h"
 #include "content/prototypes.h"
 #include "egm96_oracle.h"
 #include "example_pipeline.h"
 #include "gltf/gltf_model.h"
-#include "gltf/mesh_glb.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_content.h"
 #include "tileset_reader.h"
 
 namespace maquette::test {
@@ -120,39 +118,17 @@ const Strokes& example_strokes() {
   return strokes;
 }
 
-// A stored instance: its position (the model's base) on the globe, scale, heading (degrees
-// clockwise from north of the model's +y), feature id and prototype.
-struct Instance {
-  double lon = 0, lat = 0, height = 0, scale = 0, heading_deg = 0;
-  int64_t feature = 0;
-  std::string prototype;
+// A stored instance (stored_content.h) with its heading: degrees clockwise from north of the
+// model's +y, a quarter turn anticlockwise from its +x.
+struct Instance : StoredInstance {
+  double heading_deg = 0;
 };
 
 std::vector<Instance> instances(const std::string& layer) {
-  const auto st = Store::open(example().store, Store::Mode::ReadOnly);
   std::vector<Instance> out;
-  for (const CellId cell : st->content_cells(layer)) {
-    const InstancesContent c = unwrap_instances(*st->get_content(layer, cell), "test");
-    const GeographicLib::LocalCartesian frame(c.origin.lat, c.origin.lon, c.origin.height);
-    for (size_t i = 0; i < c.size(); ++i) {
-      Instance p;
-      const float* pos = &c.position[3 * i];
-      frame.Reverse(pos[0], pos[1], pos[2], p.lat, p.lon, p.height);
-      // The model's +y turned by the quaternion, seen in the position's east-north-up frame.
-      const double qx = c.rotation[4 * i], qy = c.rotation[4 * i + 1], qz = c.rotation[4 * i + 2],
-                   qw = c.rotation[4 * i + 3];
-      const double ax = 2 * (qx * qy - qw * qz), ay = 1 - 2 * (qx * qx + qz * qz),
-                   az = 2 * (qy * qz + qw * qx);
-      double lat = 0, lon = 0, h = 0, e = 0, n = 0, u = 0;
-      frame.Reverse(pos[0] + ax, pos[1] + ay, pos[2] + az, lat, lon, h);
-      GeographicLib::LocalCartesian(p.lat, p.lon, p.height).Forward(lat, lon, h, e, n, u);
-      p.heading_deg = std::atan2(e, n) * 180 / kPi;
-      p.scale = c.scale[3 * i];
-      p.feature = c.provenance[i].feature_id;
-      p.prototype = c.prototypes[c.prototype[i]];
-      out.push_back(p);
-    }
-  }
+  for (const StoredInstance& s :
+       stored_instances(*Store::open(example().store, Store::Mode::ReadOnly), layer))
+    out.push_back({s, std::atan2(-s.x_axis[1], s.x_axis[0]) * 180 / kPi});
   return out;
 }
 
@@ -178,12 +154,8 @@ TEST(CampusExample, BuildingsStandOnTheGround) {
   EXPECT_EQ(st->content_stats("buildings").content.objects, footprints);
   double worst_base = 0, worst_top = 0;
   size_t checked = 0;
-  for (const CellId cell : st->content_cells("buildings")) {
-    const std::string blob = *st->get_content("buildings", cell);
-    const ContentEnvelope envelope = read_content_envelope(blob, "test");
-    const MeshContent mesh = decode_mesh_glb(content_payload(blob), envelope.origin, "test");
-    const GeographicLib::LocalCartesian frame(envelope.origin.lat, envelope.origin.lon,
-                                              envelope.origin.height);
+  for (const auto& [origin, mesh] : stored_meshes(*st, "buildings")) {
+    const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
     for (const MeshObject& o : mesh.objects) {
       double low = INFINITY, high = -INFINITY, lon = 0, lat = 0;
       for (size_t k = 0; k < o.positions.size(); k += 3) {
@@ -211,19 +183,20 @@ TEST(CampusExample, TreesFillTheirStrokesOnTheGround) {
   std::map<int64_t, std::vector<Instance>> per_stroke;
   double worst_base = 0;
   for (const Instance& t : instances("trees")) {
-    ASSERT_GE(t.feature, 1);
-    ASSERT_LE(size_t(t.feature), shapes.size());
+    ASSERT_GE(t.provenance.feature_id, 1);
+    ASSERT_LE(size_t(t.provenance.feature_id), shapes.size());
     // The ingest numbers features from 1 in the file's order.
-    const json& properties = strokes["features"][size_t(t.feature - 1)]["properties"];
+    const json& properties = strokes["features"][size_t(t.provenance.feature_id - 1)]["properties"];
     EXPECT_EQ(properties["tool"], "vegetation");
     const OGRPoint point(t.lon, t.lat);
-    EXPECT_TRUE(shapes[size_t(t.feature - 1)]->Contains(&point))
-        << "a tree of stroke " << t.feature << " outside it at " << t.lon << ", " << t.lat;
+    EXPECT_TRUE(shapes[size_t(t.provenance.feature_id - 1)]->Contains(&point))
+        << "a tree of stroke " << t.provenance.feature_id << " outside it at " << t.lon << ", "
+        << t.lat;
     EXPECT_EQ(t.prototype, "builtin:broadleaf");
-    EXPECT_GE(t.scale, 9);
-    EXPECT_LE(t.scale, 14);
+    EXPECT_GE(t.scale[0], 9);
+    EXPECT_LE(t.scale[0], 14);
     worst_base = std::max(worst_base, std::abs(t.height - ground(t.lon, t.lat)));
-    per_stroke[t.feature].push_back(t);
+    per_stroke[t.provenance.feature_id].push_back(t);
   }
   int vegetation = 0;
   for (size_t i = 0; i < shapes.size(); ++i) {
@@ -264,7 +237,7 @@ TEST(CampusExample, TheStrokePlacesOneTree) {
   std::erase_if(placed, [](const Instance& p) { return p.prototype == "hotel"; });
   ASSERT_EQ(placed.size(), 1u);
   const Instance& tree = placed[0];
-  const size_t index = size_t(tree.feature - 1);
+  const size_t index = size_t(tree.provenance.feature_id - 1);
   ASSERT_LT(index, shapes.size());
   const json& properties = strokes["features"][index]["properties"];
   EXPECT_EQ(properties["tool"], "place");
@@ -296,11 +269,11 @@ TEST(CampusExample, TheStrokePlacesOneTree) {
   const std::unique_ptr<OGRGeometry> base(low.ConvexHull());
   const double scale =
       std::sqrt(geodesic_area(*shapes[index]->toPolygon()) / base->toPolygon()->get_Area());
-  EXPECT_NEAR(tree.scale / scale, 1, 1e-3);
+  EXPECT_NEAR(tree.scale[0] / scale, 1, 1e-3);
   EXPECT_NEAR(std::remainder(tree.heading_deg - properties["heading_deg"].get<double>(), 360), 0,
               1e-3);
   std::printf("placed %s: %.2f m from the stroke's centre, scale %.3f (area ratio %.3f)\n",
-              tree.prototype.c_str(), std::hypot(e, north), tree.scale, scale);
+              tree.prototype.c_str(), std::hypot(e, north), double(tree.scale[0]), scale);
 }
 
 // The hotel modelled from building.jpg (examples/prism-building.json), placed by a closed stroke
@@ -314,7 +287,7 @@ TEST(CampusExample, TheStrokePlacesTheHotelFromThePhoto) {
   std::erase_if(placed, [](const Instance& p) { return p.prototype != "hotel"; });
   ASSERT_EQ(placed.size(), 1u);
   const Instance& hotel = placed[0];
-  const size_t index = size_t(hotel.feature - 1);
+  const size_t index = size_t(hotel.provenance.feature_id - 1);
   ASSERT_LT(index, shapes.size());
   EXPECT_EQ(example_strokes().collection["features"][index]["properties"]["model"], "hotel");
   // The stroke (a hand's: 56 points) at its centroid (OGR), its long axis the principal axis of
@@ -344,14 +317,14 @@ TEST(CampusExample, TheStrokePlacesTheHotelFromThePhoto) {
         hi[a] = std::max(hi[a], double(o.positions[k + a]));
   const double scale =
       std::sqrt(geodesic_area(*shapes[index]->toPolygon()) / ((hi[0] - lo[0]) * (hi[1] - lo[1])));
-  EXPECT_NEAR(hotel.scale / scale, 1, 0.03);
+  EXPECT_NEAR(hotel.scale[0] / scale, 1, 0.03);
   // The model's +y is turned to the heading; its +x, the facade, runs along the stroke's long
   // axis, either way round.
   EXPECT_NEAR(std::remainder(hotel.heading_deg + 90 - side_bearing, 180), 0, 1);
   std::printf(
       "placed hotel: %.2f m from the stroke's centre, scale %.3f (area ratio %.3f), "
       "heading %.1f deg\n",
-      std::hypot(e, n), hotel.scale, scale, hotel.heading_deg);
+      std::hypot(e, n), double(hotel.scale[0]), scale, hotel.heading_deg);
 }
 
 TEST(CampusExample, TilesetHoldsTheTerrainAndEveryContentLayer) {

@@ -27,13 +27,12 @@
 #include <string>
 #include <vector>
 
-#include "content/content_blob.h"
-#include "content/instances_codec.h"
 #include "egm96_oracle.h"
 #include "model_files.h"
 #include "model_oracle.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "stored_content.h"
 #include "stored_layers.h"
 #include "synthetic_raster.h"
 
@@ -173,34 +172,20 @@ struct Placed {
 std::map<int64_t, Placed> placed(const std::string& store) {
   const auto st = Store::open(store, Store::Mode::ReadOnly);
   std::map<int64_t, Placed> out;
-  for (const CellId cell : st->content_cells("placed")) {
-    const InstancesContent c = unwrap_instances(*st->get_content("placed", cell), "test");
-    const GeographicLib::LocalCartesian content(c.origin.lat, c.origin.lon, c.origin.height);
-    for (size_t i = 0; i < c.size(); ++i) {
-      Placed p;
-      const float* pos = &c.position[3 * i];
-      content.Reverse(pos[0], pos[1], pos[2], p.lat, p.lon, p.height);
-      // The model's +x turned by the quaternion, as a point 1 m from the position, seen in the
-      // position's own east-north-up frame.
-      const double qx = c.rotation[4 * i], qy = c.rotation[4 * i + 1], qz = c.rotation[4 * i + 2],
-                   qw = c.rotation[4 * i + 3];
-      const std::array<double, 3> axis{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qw * qz),
-                                       2 * (qx * qz - qw * qy)};
-      double lat = 0, lon = 0, h = 0, e = 0, n = 0, u = 0;
-      content.Reverse(pos[0] + axis[0], pos[1] + axis[1], pos[2] + axis[2], lat, lon, h);
-      GeographicLib::LocalCartesian(p.lat, p.lon, p.height).Forward(lat, lon, h, e, n, u);
-      EXPECT_NEAR(u, 0, 1e-5) << "the model turns about the vertical only";
-      p.rotation = std::atan2(n, e);
-      EXPECT_EQ(c.scale[3 * i], c.scale[3 * i + 1]);
-      EXPECT_EQ(c.scale[3 * i], c.scale[3 * i + 2]);
-      p.scale = c.scale[3 * i];
-      double z = 0;
-      scene_frame().Forward(p.lat, p.lon, 0, p.x, p.y, z);
-      p.prototype = c.prototypes[c.prototype[i]];
-      EXPECT_EQ(c.provenance[i].tool, "structures.place");
-      p.attributes = c.provenance[i].attributes;
-      EXPECT_TRUE(out.emplace(c.provenance[i].feature_id, p).second) << "placed once";
-    }
+  for (const test::StoredInstance& s : test::stored_instances(*st, "placed")) {
+    Placed p;
+    p.lon = s.lon, p.lat = s.lat, p.height = s.height;
+    EXPECT_NEAR(s.x_axis[2], 0, 1e-5) << "the model turns about the vertical only";
+    p.rotation = std::atan2(s.x_axis[1], s.x_axis[0]);
+    EXPECT_EQ(s.scale[0], s.scale[1]);
+    EXPECT_EQ(s.scale[0], s.scale[2]);
+    p.scale = s.scale[0];
+    double z = 0;
+    scene_frame().Forward(p.lat, p.lon, 0, p.x, p.y, z);
+    p.prototype = s.prototype;
+    EXPECT_EQ(s.provenance.tool, "structures.place");
+    p.attributes = s.provenance.attributes;
+    EXPECT_TRUE(out.emplace(s.provenance.feature_id, p).second) << "placed once";
   }
   return out;
 }
