@@ -1,6 +1,7 @@
 // The campus example (examples/campus-soho.json: paper 002's campus scenario on London Soho) run
 // by the real program on ../shared/data, as a user runs it, every step: the DEM, the imagery,
-// the footprints and the strokes ingested, buildings, trees and a placed tree made, the 3D Tiles
+// the footprints, the strokes and the hotel's model (maquette-prism) ingested, a canal carved and
+// filled, a footbridge, buildings, trees, a placed tree and the placed hotel made, the 3D Tiles
 // written. Checked against independent oracles:
 // - buildings: one per footprint of examples/campus-soho/footprints.vrt, counted by OGR (the
 //   shared file's 158 less the two garden squares), each 10 m high (no height tags) with its
@@ -11,12 +12,17 @@
 // - the placed tree: at its stroke's centre, scaled by sqrt(stroke area / the trunk's base area)
 //   (the prototype's base: its trunk's convex foot, by GEOS), its heading the stroke's, on the
 //   ground;
+// - the hotel: at its stroke's centroid (OGR), on the ground, along the stroke's principal axis,
+//   scaled to the stroke's geodesic area over its floor's;
+// - the canal and footbridge: the bed on the curve's height and the deck's ends on the deformed
+//   DEM as GDAL reads its GeoTIFF export (PROJ's EGM96), the deck's floor above the water;
 // - the 3D Tiles: read as a viewer reads them (regions, Draco decoded, tileset_reader.h), each
 //   content layer shipped, and every GLB valid by the Khronos glTF validator.
 // Skipped when the data is absent.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_geometry.h>
+#include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 
 #include <GeographicLib/Geodesic.hpp>
@@ -53,6 +59,8 @@ using nlohmann::json;
 const std::string kSoho = kShared + "/data/buildings/london_soho_buildings_wgs84.geojson";
 constexpr double kGroundEgm96 = 25;  // examples/campus-soho/ground.asc
 constexpr double kPi = std::numbers::pi;
+// The content layers the example exports (its export step's `content`).
+const std::array<std::string, 5> kContentLayers{"buildings", "trees", "placed", "water", "bridge"};
 
 // The example run once, its store and export in a temporary folder, its sources at their
 // absolute paths (example_pipeline.h).
@@ -327,17 +335,124 @@ TEST(CampusExample, TheStrokePlacesTheHotelFromThePhoto) {
       std::hypot(e, n), double(hotel.scale[0]), scale, hotel.heading_deg);
 }
 
+// The deformed DEM (`ground`, EGM96 heights) as GDAL reads its GeoTIFF export in the grid's
+// plane, bilinear between pixel centres, lon/lat taken to the plane by PROJ (OGR).
+class ExportedGround {
+ public:
+  ExportedGround() {
+    const std::string tif = example().dir + "/ground.tif";
+    const CliResult r = run_maquette("-q export gtiff " + example().store + " " + tif +
+                                     " --layer ground --bbox -0.1330 51.5147 -0.1315 51.5158");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    ds_.reset(GDALDataset::Open(tif.c_str(), GDAL_OF_RASTER));
+    EXPECT_TRUE(ds_);
+    ds_->GetGeoTransform(transform_.data());
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    to_plane_.reset(OGRCreateCoordinateTransformation(&wgs84, ds_->GetSpatialRef()));
+  }
+  double egm96(double lon, double lat) const {
+    double x = lon, y = lat;
+    EXPECT_TRUE(to_plane_->Transform(1, &x, &y));
+    const double col = (x - transform_[0]) / transform_[1] - 0.5,
+                 row = (y - transform_[3]) / transform_[5] - 0.5;
+    const int c = int(std::floor(col)), r = int(std::floor(row));
+    std::array<float, 4> v{};
+    EXPECT_EQ(ds_->GetRasterBand(1)->RasterIO(GF_Read, c, r, 2, 2, v.data(), 2, 2, GDT_Float32, 0,
+                                              0, nullptr),
+              CE_None);
+    const double fc = col - c, fr = row - r;
+    return (1 - fr) * ((1 - fc) * v[0] + fc * v[1]) + fr * ((1 - fc) * v[2] + fc * v[3]);
+  }
+
+ private:
+  std::unique_ptr<GDALDataset> ds_;
+  std::array<double, 6> transform_{};
+  std::unique_ptr<OGRCoordinateTransformation> to_plane_;
+};
+
+// The canal (deform.features) carved into Soho Square's garden, filled (deform.water), and the
+// footbridge over it (structures.bridge): the canal's bed at its curve's height, the water at
+// the stroke's level, the deck's four ends on the deformed DEM (PROJ's EGM96, 1 cm) and its floor
+// above the water.
+TEST(CampusExample, FootbridgeSpansTheFilledCanalFromBankToBank) {
+  REQUIRE_EXAMPLE();
+  const json& features = example_strokes().collection["features"];
+  const auto stroke = [&](const std::string& tool) {
+    for (const json& f : features)
+      if (f["properties"]["tool"] == tool) return f;
+    ADD_FAILURE() << "no stroke of tool " << tool;
+    return json();
+  };
+  const ExportedGround dem;
+  // The bed along the canal (its Z constant) at its inner vertices and its segments' midpoints;
+  // at its ends the trench closes within a pixel (2.2 m), so no pixel there is all bed.
+  const json canal = stroke("feature")["geometry"]["coordinates"];
+  ASSERT_GE(canal.size(), 3u);
+  for (size_t i = 0; i + 1 < canal.size(); ++i) {
+    const double lon = (canal[i][0].get<double>() + canal[i + 1][0].get<double>()) / 2,
+                 lat = (canal[i][1].get<double>() + canal[i + 1][1].get<double>()) / 2;
+    EXPECT_NEAR(dem.egm96(lon, lat), canal[i][2].get<double>(), 0.01) << "segment " << i + 1;
+    if (i > 0) {
+      EXPECT_NEAR(dem.egm96(canal[i][0], canal[i][1]), canal[i][2].get<double>(), 0.01)
+          << "vertex " << i;
+    }
+  }
+  const auto st = Store::open(example().store, Store::Mode::ReadOnly);
+  const std::vector<StoredMeshes> water = stored_meshes(*st, "water");
+  ASSERT_EQ(water.size(), 1u);
+  ASSERT_EQ(water[0].mesh.objects.size(), 1u);
+  const double level = stroke("water")["properties"]["level"].get<double>();
+  EXPECT_NEAR(water[0].mesh.objects[0].provenance.attributes.at("level").get<double>(), level,
+              1e-6);
+
+  const std::vector<StoredMeshes> decks = stored_meshes(*st, "bridge");
+  ASSERT_EQ(decks.size(), 1u);
+  ASSERT_EQ(decks[0].mesh.objects.size(), 1u);
+  const MeshObject& deck = decks[0].mesh.objects[0];
+  std::vector<std::array<double, 3>> vertices;
+  for (size_t k = 0; k < deck.positions.size(); k += 3)
+    vertices.push_back(enu_to_geodetic(decks[0].origin, deck.positions[k], deck.positions[k + 1],
+                                       deck.positions[k + 2]));
+  const Egm96ToEllipsoid to_ellipsoid;
+  double worst_end = 0, lowest = INFINITY;
+  for (const auto& v : vertices) lowest = std::min(lowest, v[2]);
+  const json bridge = stroke("bridge");
+  for (const json& edge : bridge["geometry"]["coordinates"])
+    for (const json& end : {edge.front(), edge.back()}) {
+      // The deck's top at this end: the highest vertex within 5 cm of it across the ground.
+      const GeographicLib::LocalCartesian at(end[1], end[0], 0);
+      double top = -INFINITY;
+      for (const auto& v : vertices) {
+        double e = 0, n = 0, u = 0;
+        at.Forward(v[1], v[0], 0, e, n, u);
+        if (std::hypot(e, n) < 0.05) top = std::max(top, v[2]);
+      }
+      const double terrain = to_ellipsoid(end[0], end[1], dem.egm96(end[0], end[1]));
+      worst_end = std::max(worst_end, std::abs(top - terrain));
+    }
+  EXPECT_LE(worst_end, 0.01);
+  const json& first = features[0]["geometry"]["coordinates"][0][0];  // any point of the garden
+  const double water_ellipsoidal = to_ellipsoid(first[0], first[1], level);
+  EXPECT_GT(lowest, water_ellipsoidal) << "the deck's floor in the water";
+  std::printf("footbridge: ends %.1f mm from the deformed DEM, floor %.2f m above the water\n",
+              1000 * worst_end, lowest - water_ellipsoidal);
+}
+
 TEST(CampusExample, TilesetHoldsTheTerrainAndEveryContentLayer) {
   REQUIRE_EXAMPLE();
   const Export out = read_export(example().tiles);
   std::map<std::string, int> glbs;
   for (const auto& [uri, glb] : out.glbs)
-    for (const std::string layer : {"buildings", "trees", "placed"})
+    for (const std::string& layer : kContentLayers)
       glbs[layer] += uri.ends_with("." + layer + ".glb");  // OUTDIR/<stem>.<LAYER>.glb
-  for (const std::string layer : {"buildings", "trees", "placed"})
+  size_t content = 0;
+  for (const std::string& layer : kContentLayers) {
     EXPECT_GT(glbs[layer], 0) << "no GLB of " << layer;
-  EXPECT_GT(out.glbs.size(), size_t(glbs["buildings"] + glbs["trees"] + glbs["placed"]))
-      << "no terrain";
+    content += size_t(glbs[layer]);
+  }
+  EXPECT_GT(out.glbs.size(), content) << "no terrain";
   const auto valid = gltf_validator_passes(example().tiles);
   if (!valid)
     GTEST_SKIP() << "gltf-validator not installed (npm ci in " MAQUETTE_NODE_DIR " failed)";

@@ -1,6 +1,6 @@
 // The picture of docs/campus-soho.png: the campus example's 3D Tiles (as campus_cesium.mjs or
-// `maquette run examples/campus-soho.json` writes them) in the project's viewer (`maquette
-// view`, three.js), seen from an oblique camera north-west of Soho, in Debian's chromium.
+// examples/campus-soho/run.sh writes them) in the project's viewer (`maquette view`, three.js),
+// seen from an oblique camera south of Soho Square, in Debian's chromium.
 //
 //   node tests/campus/campus_picture.mjs --maquette build/bin/maquette \
 //     --viewer build/share/maquette/viewer --node-modules build/tests/viewer/npm/node_modules \
@@ -12,9 +12,10 @@ import { launchBrowser, log, parseArgs, startView, waitLoaded } from '../viewer/
 
 const args = parseArgs();
 // Where the camera stands (lon, lat, metres above the ellipsoid) and what it looks at: from the
-// north-west, with the viewer's sun, so that the walls facing the camera are lit.
-const EYE = [-0.1440, 51.5180, 330];
-const TARGET = [-0.1360, 51.5125, 71];
+// south, 400 m from Soho Square's canal and footbridge (right) and 340 m from the hotel (left),
+// near enough to see a 12 m bridge.
+const EYE = [-0.1345, 51.5118, 250];
+const TARGET = [-0.1349, 51.5148, 71];
 
 const view = await startView(args.maquette, resolve(args['tileset-dir']), args.viewer);
 const b = await launchBrowser(args['node-modules'], { width: 1200, height: 675 });
