@@ -14,8 +14,8 @@ const args = parseArgs();
 // Where the camera stands (lon, lat, metres above the ellipsoid) and what it looks at: from the
 // south, 400 m from Soho Square's canal and footbridge (right) and 340 m from the hotel (left),
 // near enough to see a 12 m bridge.
-const EYE = [-0.1345, 51.5118, 250];
-const TARGET = [-0.1349, 51.5148, 71];
+const EYE = [-0.1357, 51.5124, 300];
+const TARGET = [-0.1354, 51.5150, 71];
 
 const view = await startView(args.maquette, resolve(args['tileset-dir']), args.viewer);
 const b = await launchBrowser(args['node-modules'], { width: 1200, height: 675 });
