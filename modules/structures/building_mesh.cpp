@@ -1,5 +1,6 @@
 #include "building_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -7,6 +8,8 @@
 #include "content/enu_transform.h"
 #include "core/enu_frame.h"
 #include "footprint.h"
+#include "roof_planes.h"
+#include "roof_surface.h"
 #include "terrain_base.h"
 
 namespace maquette::structures {
@@ -22,12 +25,43 @@ const std::vector<GeoPolygon>& polygons_of(const VectorFeature& f) {
   return f.geometry.polygons;
 }
 
+struct BuiltRoof {
+  Solid solid;
+  double top = 0;  // the roof's top above the base (m)
+  RoofShape shape = RoofShape::Flat;
+};
+
+// A part's solid under its roof, checked; a pitched roof that gives no valid solid (its creases
+// grazing the footprint) is built flat at its top instead, with a warning.
+BuiltRoof roof_of(const Footprint& part, const BuildingTags& tags, std::string* warning) {
+  const RoofFrame frame = roof_frame(part, tags);
+  const PartHeights heights = part_heights(tags, roof_run(frame, tags.roof));
+  std::string problem;
+  try {
+    const RoofSurface roof = roof_surface(part, roof_planes(frame, tags.roof, heights));
+    BuiltRoof built{extrude(roof), heights.top(), tags.roof};
+    problem = solid_problem(built.solid, roof.volume());
+    if (problem.empty()) return built;
+  } catch (const InvalidFootprint& e) {
+    problem = e.what();
+  }
+  if (tags.roof == RoofShape::Flat) throw InvalidFootprint("its solid is invalid: " + problem);
+  if (warning)
+    *warning = std::string("its ") + roof_shape_name(tags.roof) + " roof gives no valid solid (" +
+               problem + "): built flat";
+  BuiltRoof flat{extrude(part, heights.top()), heights.top()};
+  if (problem = solid_problem(flat.solid, part.area * flat.top); !problem.empty())
+    throw InvalidFootprint("its solid is invalid: " + problem);
+  return flat;
+}
+
 }  // namespace
 
 MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
-                         const BuildingSite& site) {
+                         const BuildingSite& site, std::string* warning) {
   const std::vector<GeoPolygon>& polygons = polygons_of(feature);
-  const double height = building_height(feature.attributes, rules);
+  const BuildingTags tags = building_tags(feature.attributes, rules);
+  if (warning) *warning = tags.warning;
   const int tile_size = site.dem->size();
   const PixelFrame pixel(*site.grid, site.cell, tile_size);
 
@@ -66,11 +100,13 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   if (parts.size() > 1) check_disjoint(parts);
 
   MeshObject object;
-  double area = 0;
+  double area = 0, height = 0;
+  RoofShape shape = tags.roof;
   for (const Footprint& part : parts) {
-    const Solid solid = extrude(part, height);
-    if (const std::string problem = solid_problem(solid, part.area * height); !problem.empty())
-      throw InvalidFootprint("its solid is invalid: " + problem);
+    const BuiltRoof built = roof_of(part, tags, warning);
+    const Solid& solid = built.solid;
+    height = std::max(height, built.top);
+    if (built.shape != tags.roof) shape = built.shape;
     area += part.area;
     const uint32_t first = uint32_t(object.positions.size() / 3);
     for (size_t v = 0; v < solid.positions.size(); v += 3) {
@@ -92,7 +128,10 @@ MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
   object.provenance = {uint64_t(feature.id),
                        feature.id,
                        "structures.buildings",
-                       {{"height_m", height}, {"base_m", *base}, {"area_m2", area}}};
+                       {{"height_m", height},
+                        {"base_m", *base},
+                        {"area_m2", area},
+                        {"roof_shape", roof_shape_name(shape)}}};
   return object;
 }
 

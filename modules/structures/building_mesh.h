@@ -1,8 +1,9 @@
-// structures.buildings' work on one footprint feature: its LoD1 solid standing on the DEM, checked,
-// as a mesh object of a cell's content.
+// structures.buildings' work on one footprint feature: its solid (LoD1, or LoD2 with a pitched
+// roof) standing on the DEM, checked, as a mesh object of a cell's content.
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "building_height.h"
 #include "content/content.h"
@@ -38,21 +39,26 @@ struct BuildingSite {
 };
 
 // The building of a Polygon or MultiPolygon feature (courtyards as holes, one solid per part):
-// its height from the tags (building_height.h); its base at the lowest terrain under the whole
-// footprint (terrain_base.h), taken to the ellipsoid at the anchor (the geoid's slope over a
-// building is well under a millimetre); each part extruded in the tangent plane at the footprint's
-// first point (core/enu_frame.h, at the base height) and checked there
-// (building_solid.h: closed, outward, planar faces, volume = area x height to 1e-9); then put in
-// the site's east-north-up frame as float32 (a rigid move: within a float's rounding, 0.1 mm at
-// 2 km from the origin). The first vertex is the footprint's first point at the base: the anchor.
-// uvs, with a texture window: each vertex's position in that image (0, 0 at its top-left,
-// 1, 1 at its bottom-right, as glTF), so the roof drapes the orthophoto; the walls show the
-// colours of the roof's edge, drawn down (an orthophoto has no facades). Provenance: the feature id
-// as object id, tool "structures.buildings", attributes height_m, base_m and area_m2. Throws
-// InvalidFootprint (without the feature id) for a footprint that gives no valid solid, a bad height
-// tag, no DEM under the footprint, or a footprint reaching beyond the DEM tile's halo or across an
-// edge of the grid's faces.
+// its heights and roof from the tags (building_height.h: flat, gabled, hipped, pyramidal or
+// skillion; roof_planes.h), its base at the lowest terrain under the whole footprint
+// (terrain_base.h), taken to the ellipsoid at the anchor (the geoid's slope over a building is
+// well under a millimetre); each part built in the tangent plane at the footprint's first point
+// (core/enu_frame.h, at the base height): its walls up to its roof (roof_surface.h,
+// building_solid.h), checked there (closed, outward, planar faces, volume = the roof surface's
+// volume, area x height when flat, to 1e-9); then put in the site's east-north-up frame as
+// float32 (a rigid move: within a float's rounding, 0.1 mm at 2 km from the origin). The first
+// vertex is the footprint's first point at the base: the anchor. uvs, with a texture window: each
+// vertex's position in that image (0, 0 at its top-left, 1, 1 at its bottom-right, as glTF), so
+// the roof, pitched or flat, drapes the orthophoto; the walls show the colours of the roof's edge,
+// drawn down (an orthophoto has no facades). Provenance: the feature id as object id, tool
+// "structures.buildings", attributes height_m (the roof's top above the base, the highest part's),
+// base_m, area_m2 and roof_shape (as built). `warning`, when given, receives what the user should
+// know of a building built otherwise than tagged (a roof:shape not modelled, a pitched roof that
+// gave no valid solid: built flat at its top), else is emptied. Throws InvalidFootprint (without
+// the feature id) for a footprint that gives no valid solid, a bad tag, no DEM under the
+// footprint, or a footprint reaching beyond the DEM tile's halo or across an edge of the grid's
+// faces.
 MeshObject building_mesh(const VectorFeature& feature, const HeightRules& rules,
-                         const BuildingSite& site);
+                         const BuildingSite& site, std::string* warning = nullptr);
 
 }  // namespace maquette::structures

@@ -6,8 +6,6 @@
 #include <sstream>
 #include <utility>
 
-#include "roof_triangulation.h"
-
 namespace maquette::structures {
 namespace {
 
@@ -68,36 +66,38 @@ double planarity(const Solid& s, const SolidFace& face) {
 
 }  // namespace
 
-Solid extrude(const Footprint& footprint, double height) {
+Solid extrude(const RoofSurface& roof) {
   Solid s;
-  uint32_t n = 0;
-  for (const PlaneRing& ring : footprint.rings) n += uint32_t(ring.size());
+  const uint32_t n = uint32_t(roof.points.size());
   s.positions.reserve(6 * size_t(n));
-  for (const double z : {0.0, height})
-    for (const PlaneRing& ring : footprint.rings)
-      for (const PlanePoint2& p : ring) s.positions.insert(s.positions.end(), {p[0], p[1], z});
+  for (const PlanePoint2& p : roof.points) s.positions.insert(s.positions.end(), {p[0], p[1], 0});
+  for (uint32_t k = 0; k < n; ++k)
+    s.positions.insert(s.positions.end(), {roof.points[k][0], roof.points[k][1], roof.heights[k]});
 
-  const std::vector<uint32_t> roof = triangulate_footprint(footprint);
-  const uint32_t cap_triangles = uint32_t(roof.size() / 3);
-  s.indices.reserve(2 * roof.size() + 6 * size_t(n));
-  for (size_t t = 0; t < roof.size(); t += 3)  // the floor, facing down
-    s.indices.insert(s.indices.end(), {roof[t], roof[t + 2], roof[t + 1]});
-  for (const uint32_t i : roof) s.indices.push_back(n + i);
-  s.faces.push_back({0, cap_triangles});
-  s.faces.push_back({cap_triangles, cap_triangles});
+  size_t roof_size = 0;
+  for (const std::vector<uint32_t>& face : roof.faces) roof_size += face.size();
+  s.indices.reserve(2 * roof_size + 6 * size_t(n));
+  for (const std::vector<uint32_t>& face : roof.faces)  // the floor, facing down
+    for (size_t t = 0; t < face.size(); t += 3)
+      s.indices.insert(s.indices.end(), {face[t], face[t + 2], face[t + 1]});
+  s.faces.push_back({0, uint32_t(roof_size / 3)});
+  for (const std::vector<uint32_t>& face : roof.faces) {
+    s.faces.push_back({uint32_t(s.indices.size() / 3), uint32_t(face.size() / 3)});
+    for (const uint32_t i : face) s.indices.push_back(n + i);
+  }
 
   // Walls: the ring's interior is on the left of each edge, so (i, j, top j) faces right: out.
-  uint32_t first = 0;
-  for (const PlaneRing& ring : footprint.rings) {
-    const uint32_t size = uint32_t(ring.size());
-    for (uint32_t k = 0; k < size; ++k) {
-      const uint32_t i = first + k, j = first + (k + 1) % size;
+  for (const std::vector<uint32_t>& ring : roof.outline)
+    for (size_t k = 0; k < ring.size(); ++k) {
+      const uint32_t i = ring[k], j = ring[(k + 1) % ring.size()];
       s.faces.push_back({uint32_t(s.indices.size() / 3), 2});
       s.indices.insert(s.indices.end(), {i, j, n + j, i, n + j, n + i});
     }
-    first += size;
-  }
   return s;
+}
+
+Solid extrude(const Footprint& footprint, double height) {
+  return extrude(roof_surface(footprint, {RoofPlane{0, 0, height}}));
 }
 
 double mesh_volume(const std::vector<double>& positions, const std::vector<uint32_t>& indices) {
@@ -136,7 +136,7 @@ std::string solid_problem(const Solid& s, double expected_volume) {
   if (std::abs(volume - expected_volume) > 1e-9 * expected_volume) {
     std::ostringstream m;
     m.precision(15);
-    m << "the volume " << volume << " m3 differs from footprint area x height " << expected_volume
+    m << "the volume " << volume << " m3 differs from the expected " << expected_volume
       << " m3 by more than 1e-9";
     return m.str();
   }

@@ -18,9 +18,9 @@ OperatorSpec buildings_spec() {
   OperatorSpec s;
   s.name = "structures.buildings";
   s.description =
-      "LoD1 buildings from footprints (paper 002 §7, Fig. 15): extruded by their OSM height tags "
-      "from the "
-      "lowest terrain under them, flat roofs, courtyards kept, checked as val3dity checks solids";
+      "Buildings from footprints (paper 002 §7, Fig. 15): walls from the lowest terrain under "
+      "them up to their roofs by their OSM height and roof tags (flat, gabled, hipped, pyramidal, "
+      "skillion), courtyards kept, checked as val3dity checks solids";
   s.kind = OperatorKind::Cell;
   s.halo = kDemHaloPixels;
   InputSpec dem;
@@ -111,7 +111,11 @@ class Buildings : public CellOperator {
         site.to_ellipsoid = &*to_ellipsoid;
       }
       try {
-        MeshObject object = building_mesh(*f, rules, site);
+        std::string warning;
+        MeshObject object = building_mesh(*f, rules, site, &warning);
+        if (!warning.empty())
+          std::cerr << "structures.buildings: inputs.footprints: feature " << f->id << ": "
+                    << warning << "\n";
         if (site.texture) {
           if (mesh.materials.empty())
             mesh.materials.push_back(orthophoto_material(orthophoto->second));

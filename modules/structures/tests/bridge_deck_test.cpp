@@ -47,13 +47,7 @@ TEST(BridgeDeck, CurvedDeckWithFourEndHeightsIsAValidSolid) {
   std::vector<std::array<double, 2>> outline;
   for (const DeckPoint& p : first) outline.push_back({p[0], p[1]});
   for (auto p = second.rbegin(); p != second.rend(); ++p) outline.push_back({(*p)[0], (*p)[1]});
-  const double volume = cgal_area({outline}) * thickness;
-  const CgalVerdict v = cgal_verdict(s.positions, s.indices);
-  EXPECT_TRUE(v.polygon_mesh);
-  EXPECT_TRUE(v.closed);
-  EXPECT_FALSE(v.self_intersects);
-  EXPECT_TRUE(v.outward);
-  EXPECT_NEAR(v.volume, volume, 1e-9 * volume);
+  expect_valid_solid(s.positions, s.indices, cgal_area({outline}) * thickness);
   // Floor then top, point for point; the first is the first edge's first point.
   const size_t n = s.positions.size() / 6;
   ASSERT_EQ(n, first.size() + second.size());
@@ -82,9 +76,7 @@ TEST(BridgeDeck, SecondEdgeDrawnInEitherSenseOfTheOutlineWorks) {
                                north = {{0, 10, 10}, {100, 10, 20}};
   for (const auto& [a, b] : {std::pair(south, north), std::pair(north, south)}) {
     const Solid s = deck_solid(a, b, 2);
-    const CgalVerdict v = cgal_verdict(s.positions, s.indices);
-    EXPECT_TRUE(v.outward && v.closed && !v.self_intersects);
-    EXPECT_NEAR(v.volume, 100 * 10 * 2, 1e-9 * 2000);
+    expect_valid_solid(s.positions, s.indices, 100 * 10 * 2);
   }
 }
 

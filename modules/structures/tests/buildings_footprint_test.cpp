@@ -63,17 +63,20 @@ TEST(Footprint, PartsMustBeDisjoint) {
 
 TEST(BuildingHeight, TagsInOrder) {
   const HeightRules rules{9, 3};
-  EXPECT_DOUBLE_EQ(building_height({{"height", 21.5}, {"building:levels", 2}}, rules), 21.5);
-  EXPECT_DOUBLE_EQ(building_height({{"height", "14 m"}}, rules), 14);
-  EXPECT_DOUBLE_EQ(building_height({{"building:levels", "4"}, {"roof:shape", "flat"}}, rules), 12);
-  EXPECT_DOUBLE_EQ(building_height({{"height", nullptr}, {"name", "x"}}, rules), 9);
+  const auto top = [&](const nlohmann::json& tags) {
+    return part_heights(building_tags(tags, rules), 0).top();
+  };
+  EXPECT_DOUBLE_EQ(top({{"height", 21.5}, {"building:levels", 2}}), 21.5);
+  EXPECT_DOUBLE_EQ(top({{"height", "14 m"}}), 14);
+  EXPECT_DOUBLE_EQ(top({{"building:levels", "4"}, {"roof:shape", "flat"}}), 12);
+  EXPECT_DOUBLE_EQ(top({{"height", nullptr}, {"name", "x"}}), 9);
   try {
-    building_height({{"height", "tall"}}, rules);
+    building_tags({{"height", "tall"}}, rules);
     FAIL();
   } catch (const InvalidFootprint& e) {
     EXPECT_NE(std::string(e.what()).find("tag height = \"tall\""), std::string::npos) << e.what();
   }
-  EXPECT_THROW(building_height({{"building:levels", -2}}, rules), InvalidFootprint);
+  EXPECT_THROW(building_tags({{"building:levels", -2}}, rules), InvalidFootprint);
 }
 
 }  // namespace

@@ -76,11 +76,9 @@ TEST(BuildingMesh, MultiPolygonGivesOneValidShellPerPart) {
   }
   EXPECT_NEAR(area, 860 * (1 + 2 * base / 6371e3), 0.01);
   EXPECT_NEAR(m.provenance.attributes.at("area_m2").get<double>(), area, 1e-9 * area);
-  const CgalVerdict v =
-      cgal_verdict(std::vector<double>(m.positions.begin(), m.positions.end()), m.indices);
-  EXPECT_TRUE(v.polygon_mesh && v.closed && !v.self_intersects && v.outward);
   // float32 positions in the cell's frame: ~1e-6.
-  EXPECT_NEAR(v.volume, area * 12, 1e-5 * area * 12);
+  expect_valid_solid(std::vector<double>(m.positions.begin(), m.positions.end()), m.indices,
+                     area * 12, 1e-5);
 }
 
 // A 20 m square across the edge between the north polar face and an equatorial one (found by

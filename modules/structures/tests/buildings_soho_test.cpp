@@ -44,10 +44,8 @@ TEST(BuildingsSoho, EverySolidIsValidByCgal) {
     const double height = 4 + double(f.id % 9) * 3.5;
     const Solid s = extrude(fp, height);
     const double area = cgal_area(rings);
-    const CgalVerdict v = cgal_verdict(s.positions, s.indices);
-    EXPECT_TRUE(v.polygon_mesh && v.closed && !v.self_intersects && v.outward)
-        << "feature " << f.id;
-    EXPECT_NEAR(v.volume, area * height, 1e-9 * area * height) << "feature " << f.id;
+    SCOPED_TRACE("feature " + std::to_string(f.id));
+    expect_valid_solid(s.positions, s.indices, area * height);
     EXPECT_EQ(solid_problem(s, area * height), "") << "feature " << f.id;
   }
 }
@@ -68,12 +66,10 @@ TEST(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
     const double base = m.provenance.attributes.at("base_m").get<double>();
     const double area = m.provenance.attributes.at("area_m2").get<double>();
     EXPECT_EQ(height, 10);  // no tags: the default
-    std::vector<double> positions(m.positions.begin(), m.positions.end());
-    const CgalVerdict v = cgal_verdict(positions, m.indices);
-    EXPECT_TRUE(v.polygon_mesh && v.closed && !v.self_intersects && v.outward)
-        << "feature " << f.id;
+    SCOPED_TRACE("feature " + std::to_string(f.id));
     // float32 positions in the cell's frame, hundreds of metres from its origin: ~1e-5 m.
-    EXPECT_NEAR(v.volume, area * height, 1e-5 * area * height) << "feature " << f.id;
+    expect_valid_solid(std::vector<double>(m.positions.begin(), m.positions.end()), m.indices,
+                       area * height, 1e-5);
     EXPECT_NEAR(area, cgal_area(plane_rings(f.geometry.polygons[0], {first.lat, first.lon, base})),
                 1e-9 * area);
 

@@ -18,12 +18,7 @@ PlaneRing rectangle(double x0, double y0, double x1, double y1) {
 }
 
 void expect_valid(const Solid& s, double volume) {
-  const CgalVerdict v = cgal_verdict(s.positions, s.indices);
-  EXPECT_TRUE(v.polygon_mesh);
-  EXPECT_TRUE(v.closed);
-  EXPECT_FALSE(v.self_intersects);
-  EXPECT_TRUE(v.outward);
-  EXPECT_NEAR(v.volume, volume, 1e-9 * volume);
+  expect_valid_solid(s.positions, s.indices, volume);
   EXPECT_EQ(solid_problem(s, volume), "");
 }
 

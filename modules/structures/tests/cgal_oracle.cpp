@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
@@ -47,6 +48,16 @@ CgalVerdict cgal_verdict(const std::vector<double>& positions,
   v.outward = PMP::is_outward_oriented(mesh);
   v.volume = CGAL::to_double(PMP::volume(mesh));
   return v;
+}
+
+void expect_valid_solid(const std::vector<double>& positions, const std::vector<uint32_t>& indices,
+                        double volume, double relative) {
+  const CgalVerdict v = cgal_verdict(positions, indices);
+  EXPECT_TRUE(v.polygon_mesh);
+  EXPECT_TRUE(v.closed);
+  EXPECT_FALSE(v.self_intersects);
+  EXPECT_TRUE(v.outward);
+  EXPECT_NEAR(v.volume, volume, relative * volume);
 }
 
 double cgal_area(const std::vector<std::vector<std::array<double, 2>>>& rings) {

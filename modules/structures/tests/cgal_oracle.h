@@ -23,6 +23,11 @@ struct CgalVerdict {
 CgalVerdict cgal_verdict(const std::vector<double>& positions,
                          const std::vector<uint32_t>& indices);
 
+// CGAL's verdict on a solid that must be valid, as gtest expectations: a polygon mesh, closed,
+// free of self-intersection, outward, of `volume` (m^3) within `relative`.
+void expect_valid_solid(const std::vector<double>& positions, const std::vector<uint32_t>& indices,
+                        double volume, double relative = 1e-9);
+
 // The area of a polygon (outer ring, holes; open rings of x, y) by CGAL's Polygon_2.
 double cgal_area(const std::vector<std::vector<std::array<double, 2>>>& rings);
 
