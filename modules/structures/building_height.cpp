@@ -94,7 +94,9 @@ BuildingTags building_tags(const nlohmann::json& attributes, const HeightRules& 
     if (const auto roof_levels = positive_tag(attributes, "roof:levels", true))
       t.roof_height = *roof_levels * rules.level_height_m;
   t.roof_angle_deg = rules.default_roof_angle_deg;
+  t.default_roof_cap_m = rules.level_height_m;
   if (const nlohmann::json* angle = tag(attributes, "roof:angle")) {
+    t.angle_tagged = true;
     t.roof_angle_deg = number_of(*angle);
     if (!(t.roof_angle_deg > 0 && t.roof_angle_deg < 90))
       bad_tag("roof:angle", *angle, "an angle between 0 and 90 degrees");
@@ -110,7 +112,8 @@ BuildingTags building_tags(const nlohmann::json& attributes, const HeightRules& 
 
 PartHeights part_heights(const BuildingTags& tags, double run_m) {
   if (tags.roof == RoofShape::Flat) return {tags.height.value_or(tags.walls), 0};
-  const double from_angle = std::tan(tags.roof_angle_deg * std::numbers::pi / 180) * run_m;
+  double from_angle = std::tan(tags.roof_angle_deg * std::numbers::pi / 180) * run_m;
+  if (!tags.angle_tagged) from_angle = std::min(from_angle, tags.default_roof_cap_m);
   if (!tags.height) return {tags.walls, tags.roof_height.value_or(from_angle)};
   if (tags.roof_height && *tags.roof_height >= *tags.height) {
     std::ostringstream m;

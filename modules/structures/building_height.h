@@ -25,6 +25,8 @@ struct BuildingTags {
   RoofShape roof = RoofShape::Flat;
   std::optional<double> roof_height;    // roof:height, else roof:levels x level height (m)
   double roof_angle_deg = 0;            // roof:angle, else the rules' default
+  bool angle_tagged = false;            // roof:angle given
+  double default_roof_cap_m = 0;        // a roof of the default angle is at most this high
   std::optional<double> direction_deg;  // roof:direction: where the main face looks, clockwise
                                         // from north (degrees or N, NNE, ... NNW)
   bool across = false;                  // roof:orientation=across: the ridge along the short axis
@@ -46,10 +48,12 @@ struct PartHeights {
 
 // The heights of a part whose roof rises over `run_m` (the horizontal distance from an eave to the
 // roof's top, roof_planes.h): the roof's height is roof:height or roof:levels when tagged, else
-// tan(angle) x run. With `height`, the walls end that far below it (a roof height from the angle
-// capped at half the height: walls at least half the building); without, the walls are `walls`
-// high and the roof sits on them (OSM's building:levels counts the levels below the roof). A flat
-// roof has no height. Throws InvalidFootprint when a tagged roof height is not below `height`.
+// tan(roof:angle) x run, else tan(the default angle) x run up to one level (a large block's
+// untagged roof stays a level high: 3 m over a 60 m block, not 17). With `height`, the walls end
+// that far below it (a roof height from the angle capped at half the height: walls at least half
+// the building); without, the walls are `walls` high and the roof sits on them (OSM's
+// building:levels counts the levels below the roof). A flat roof has no height. Throws
+// InvalidFootprint when a tagged roof height is not below `height`.
 PartHeights part_heights(const BuildingTags& tags, double run_m);
 
 }  // namespace maquette::structures

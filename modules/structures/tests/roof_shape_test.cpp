@@ -202,12 +202,15 @@ TEST(RoofTags, HeightsFromTheTags) {
   h = heights({{"height", 20}, {"roof:shape", "pyramidal"}, {"roof:angle", 45}}, 5);
   EXPECT_NEAR(h.roof, 5, 1e-12);
   EXPECT_NEAR(h.wall, 15, 1e-12);
-  // The default angle (30 degrees), capped at half the height.
-  h = heights({{"roof:shape", "skillion"}}, 6);
+  // The default angle (30 degrees), up to one level (3 m), and capped at half the height.
+  h = heights({{"roof:shape", "skillion"}}, 4);
   EXPECT_DOUBLE_EQ(h.wall, 9);
-  EXPECT_NEAR(h.roof, 6 / std::sqrt(3.0), 1e-12);
-  h = heights({{"height", 8}, {"roof:shape", "gabled"}}, 30);
-  EXPECT_DOUBLE_EQ(h.roof, 4);
+  EXPECT_NEAR(h.roof, 4 / std::sqrt(3.0), 1e-12);
+  EXPECT_DOUBLE_EQ(heights({{"roof:shape", "gabled"}}, 30).roof, 3);
+  EXPECT_NEAR(heights({{"roof:shape", "gabled"}, {"roof:angle", 30}}, 30).roof, 30 / std::sqrt(3.0),
+              1e-12);
+  h = heights({{"height", 5}, {"roof:shape", "gabled"}}, 30);
+  EXPECT_DOUBLE_EQ(h.roof, 2.5);
   // roof:levels = 0: no roof level, the angle decides.
   h = heights({{"height", 20}, {"roof:shape", "gabled"}, {"roof:levels", 0}}, 3);
   EXPECT_NEAR(h.roof, 3 / std::sqrt(3.0), 1e-12);
