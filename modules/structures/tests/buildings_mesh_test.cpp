@@ -1,6 +1,7 @@
 // building_mesh on hand-made features: a MultiPolygon (a courtyard with an island building in it,
 // and a separate part) gives one valid shell per part by CGAL, of the tagged height, on the
-// lowest DEM sample; footprints across an edge of the grid's faces are refused.
+// lowest DEM sample; a gabled roof and a dome (built flat, with a warning); footprints across an
+// edge of the grid's faces are refused.
 #include <gtest/gtest.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
@@ -79,6 +80,38 @@ TEST(BuildingMesh, MultiPolygonGivesOneValidShellPerPart) {
   // float32 positions in the cell's frame: ~1e-6.
   expect_valid_solid(std::vector<double>(m.positions.begin(), m.positions.end()), m.indices,
                      area * 12, 1e-5);
+}
+
+// A 24 x 12 m gabled house (roof:height 4 m on 3 levels) and a domed one (built flat, with a
+// warning): valid shells by CGAL after the move to float32, of the closed-form volume, the
+// provenance naming the shape built.
+TEST(BuildingMesh, PitchedRoofsAndShapesNotModelled) {
+  const Grid& grid = default_grid();
+  const double lon0 = 8.54, lat0 = 47.37;
+  const GeographicLib::LocalCartesian frame(lat0, lon0, 0);
+  const CellId cell = grid.cell_from_point({lon0, lat0}, 14);
+  const Tile<float> dem(256, 1, kDemHaloPixels, 400.0f);
+  const LonLat centre = grid.centre(cell);
+  const BuildingSite site{&grid, cell, &dem, {centre.lon, centre.lat, 0}, std::nullopt};
+  VectorFeature f;
+  f.id = 5;
+  f.geometry.type = GeometryType::Polygon;
+  f.geometry.polygons = {{{ring(frame, {{0, 0}, {24, 0}, {24, 12}, {0, 12}})}}};
+  for (const std::string shape : {"gabled", "dome"}) {
+    SCOPED_TRACE(shape);
+    f.attributes = {{"building:levels", 3}, {"roof:shape", shape}, {"roof:height", 4}};
+    std::string warning = "stale";
+    const MeshObject m = building_mesh(f, {}, site, &warning);
+    const double area = m.provenance.attributes.at("area_m2").get<double>();
+    const bool gabled = shape == "gabled";
+    EXPECT_EQ(m.provenance.attributes.at("roof_shape"), gabled ? "gabled" : "flat");
+    EXPECT_EQ(m.provenance.attributes.at("height_m"), gabled ? 13 : 9);
+    EXPECT_EQ(warning, gabled ? "" : "roof:shape = \"dome\" is not modelled: built flat");
+    // The tangent plane at 400 m: the area 1.3e-4 above 288 m2, the volume with it.
+    const double volume = gabled ? area * 9 + area * 4 / 2 : area * 9;
+    expect_valid_solid(std::vector<double>(m.positions.begin(), m.positions.end()), m.indices,
+                       volume, 1e-5);
+  }
 }
 
 // A 20 m square across the edge between the north polar face and an equatorial one (found by
