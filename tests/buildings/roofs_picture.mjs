@@ -11,32 +11,15 @@
 // at the centre of the buildings (nodes named "buildings...") from the south-south-west, 35
 // degrees down, from `zoom` x their extent. Fails (exit 1) unless the terrain and the buildings
 // are drawn without console errors.
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
-import { launchBrowser, log, parseArgs } from '../viewer/harness.mjs';
+import { drawGlbPage, parseArgs, threePageStart } from '../viewer/harness.mjs';
 
 const args = parseArgs();
 const zoom = Number(args.zoom || 0.3);
-const page = `<!doctype html><html><body style="margin:0">
-<script type="importmap">{"imports": {"three": "/three/build/three.module.js",
-  "three/addons/": "/three/examples/jsm/"}}</script>
-<script type="module">
-import * as THREE from 'three';
-import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-renderer.setSize(innerWidth, innerHeight);
-document.body.appendChild(renderer.domElement);
-const scene = new THREE.Scene();
-scene.background = new THREE.Color(0xbcd4e6);
+const page = `${threePageStart}
 scene.add(new THREE.HemisphereLight(0xdfefff, 0x4a5a30, 0.7));
 const sun = new THREE.DirectionalLight(0xfff4e0, 3.2);
 sun.position.set(-1, 0.9, 0.35);
 scene.add(sun);
-const loader = new GLTFLoader();
-const draco = new DRACOLoader();
-draco.setDecoderPath('/three/examples/jsm/libs/draco/gltf/');
-loader.setDRACOLoader(draco);
 loader.load('/scene.glb', (gltf) => {
   let meshes = 0;
   const buildings = new THREE.Box3();
@@ -81,26 +64,5 @@ loader.load('/scene.glb', (gltf) => {
 }, undefined, (e) => { document.documentElement.dataset.error = String(e); });
 </script></body></html>`;
 
-const b = await launchBrowser(args['node-modules'], { width: 1200, height: 700 });
-await b.page.route('http://roofs.test/**', (route) => {
-  const path = new URL(route.request().url()).pathname;
-  if (path === '/') return route.fulfill({ contentType: 'text/html', body: page });
-  if (path === '/scene.glb') return route.fulfill({ contentType: 'model/gltf-binary', body: readFileSync(args.glb) });
-  if (path.startsWith('/three/')) {
-    const type = path.endsWith('.wasm') ? 'application/wasm' : 'text/javascript';
-    return route.fulfill({ contentType: type, body: readFileSync(join(args.three, path.slice(7))) });
-  }
-  return route.fulfill({ status: 404 });
-});
-await b.page.goto('http://roofs.test/');
-await b.page.waitForFunction(() => document.documentElement.dataset.loaded === 'true'
-  || document.documentElement.dataset.error, null, { timeout: 120000 });
-const error = await b.page.evaluate(() => document.documentElement.dataset.error);
-const meshes = await b.page.evaluate(() => document.documentElement.dataset.meshes);
-await b.page.screenshot({ path: args.out });
-await b.close();
-if (error || b.consoleErrors.length || !(Number(meshes) >= 2)) {
-  log(`failed: ${error || ''} ${b.consoleErrors.join(' | ')} (${meshes} meshes)`);
-  process.exit(1);
-}
-log(`${meshes} meshes drawn; saved ${args.out}`);
+await drawGlbPage({ nodeModules: args['node-modules'], three: args.three, glb: args.glb, out: args.out,
+  page, viewport: { width: 1200, height: 700 } });

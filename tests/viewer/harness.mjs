@@ -2,7 +2,7 @@
 // chromium driven by playwright-core (headless, WebGL through SwiftShader), waiting for a page's
 // "loaded" signal, and the terrain pixels of a screenshot.
 import { spawn } from 'node:child_process';
-import { existsSync, mkdtempSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
@@ -128,4 +128,55 @@ export function terrainPixels(png, bg) {
   }
   const sd = count ? Math.sqrt(Math.max(sum2 / count - (sum / count) ** 2, 0)) : 0;
   return { cover: count / n, mask, count, sd };
+}
+
+// The start of a page drawing a GLB with three.js (import map for /three/, a renderer filling
+// the window, an empty scene with a sky-blue background): a picture script adds its lights, its
+// loading of /scene.glb and its camera.
+export const threePageStart = `<!doctype html><html><body style="margin:0">
+<script type="importmap">{"imports": {"three": "/three/build/three.module.js",
+  "three/addons/": "/three/examples/jsm/"}}</script>
+<script type="module">
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setSize(innerWidth, innerHeight);
+document.body.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0xbcd4e6);
+const loader = new GLTFLoader();
+const draco = new DRACOLoader();
+draco.setDecoderPath('/three/examples/jsm/libs/draco/gltf/');
+loader.setDRACOLoader(draco);
+`;
+
+// Serves `page` (HTML) from memory with /scene.glb (the file `glb`) and /three/... (three.js at
+// `three`), waits until it sets data-loaded="true" or data-error on <html>, saves the screenshot
+// as `out`, and exits 1 unless it drew at least `minMeshes` meshes (its data-meshes) without
+// error.
+export async function drawGlbPage({ nodeModules, three, glb, out, page, viewport, minMeshes = 2 }) {
+  const b = await launchBrowser(nodeModules, viewport);
+  await b.page.route('http://picture.test/**', (route) => {
+    const path = new URL(route.request().url()).pathname;
+    if (path === '/') return route.fulfill({ contentType: 'text/html', body: page });
+    if (path === '/scene.glb') return route.fulfill({ contentType: 'model/gltf-binary', body: readFileSync(glb) });
+    if (path.startsWith('/three/')) {
+      const type = path.endsWith('.wasm') ? 'application/wasm' : 'text/javascript';
+      return route.fulfill({ contentType: type, body: readFileSync(join(three, path.slice(7))) });
+    }
+    return route.fulfill({ status: 404 });
+  });
+  await b.page.goto('http://picture.test/');
+  await b.page.waitForFunction(() => document.documentElement.dataset.loaded === 'true'
+    || document.documentElement.dataset.error, null, { timeout: 120000 });
+  const error = await b.page.evaluate(() => document.documentElement.dataset.error);
+  const meshes = await b.page.evaluate(() => document.documentElement.dataset.meshes);
+  await b.page.screenshot({ path: out });
+  await b.close();
+  if (error || b.consoleErrors.length || !(Number(meshes) >= minMeshes)) {
+    log(`failed: ${error || ''} ${b.consoleErrors.join(' | ')} (${meshes} meshes)`);
+    process.exit(1);
+  }
+  log(`${meshes} meshes drawn; saved ${out}`);
 }
