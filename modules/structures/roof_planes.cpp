@@ -90,35 +90,30 @@ double roof_run(const RoofFrame& f, RoofShape shape) {
 std::vector<RoofPlane> roof_planes(const RoofFrame& f, RoofShape shape, const PartHeights& h) {
   const PlanePoint2 back_along{-f.along[0], -f.along[1]}, back_across{-f.across[0], -f.across[1]};
   const double length = f.u1 - f.u0, width = f.v1 - f.v0;
-  // Planes rising inwards from the sides v0 and v1 (slope s) and from u0 and u1 (slope t).
-  const auto sides = [&](double s) {
-    return std::vector<RoofPlane>{rising(f.across, f.v0, h.wall, s),
-                                  rising(back_across, -f.v1, h.wall, s)};
+  // Planes rising inwards from the long sides (slope s) and, when t > 0, from the ends (slope t).
+  const auto inwards = [&](double s, double t) {
+    std::vector<RoofPlane> planes = {rising(f.across, f.v0, h.wall, s),
+                                     rising(back_across, -f.v1, h.wall, s)};
+    if (t > 0)
+      planes.insert(planes.end(),
+                    {rising(f.along, f.u0, h.wall, t), rising(back_along, -f.u1, h.wall, t)});
+    return planes;
   };
-  const auto ends = [&](double t) {
-    return std::vector<RoofPlane>{rising(f.along, f.u0, h.wall, t),
-                                  rising(back_along, -f.u1, h.wall, t)};
-  };
-  std::vector<RoofPlane> planes;
   switch (shape) {
-    case RoofShape::Flat:
-      return {{0, 0, h.top()}};
     case RoofShape::Gabled:
-      return sides(h.roof / (width / 2));
-    case RoofShape::Skillion:
-      return {rising(back_across, -f.v1, h.wall, h.roof / width)};
+      return inwards(h.roof / (width / 2), 0);
     case RoofShape::Hipped: {
       const double slope = h.roof / (std::min(length, width) / 2);
-      planes = sides(slope);
-      for (const RoofPlane& p : ends(slope)) planes.push_back(p);
-      return planes;
+      return inwards(slope, slope);
     }
     case RoofShape::Pyramidal:
-      planes = sides(h.roof / (width / 2));
-      for (const RoofPlane& p : ends(h.roof / (length / 2))) planes.push_back(p);
-      return planes;
+      return inwards(h.roof / (width / 2), h.roof / (length / 2));
+    case RoofShape::Skillion:
+      return {rising(back_across, -f.v1, h.wall, h.roof / width)};
+    case RoofShape::Flat:
+      break;
   }
-  return planes;
+  return {{0, 0, h.top()}};
 }
 
 }  // namespace maquette::structures
