@@ -1,0 +1,26 @@
+// An exemplar of the synthesis: a painting's pixels and its control masks, one value per pixel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace maquette::synthesis {
+
+// Labels are painting classes 0..254; kUnknownLabel marks a target pixel without a class (it
+// then matches any exemplar label).
+inline constexpr uint8_t kUnknownLabel = 255;
+
+struct Exemplar {
+  int width = 0, height = 0;
+  std::vector<float> rgb;         // 3 per pixel, 0..255, row-major
+  std::vector<uint8_t> labels;    // painting class per pixel (< kUnknownLabel)
+  std::vector<float> altitude;    // [0, 1] per pixel, or empty: no altitude guide
+  std::vector<uint8_t> excluded;  // 1: never copied (shadows, frame, lettering, sky)
+};
+
+// The exemplar shrunk `factor` times (a power of two >= 1) by box averaging: colours and
+// altitude averaged, the label of each block its top-left pixel's, a block excluded when any of
+// its pixels is. Precondition: the exemplar's vectors have its width x height pixels.
+Exemplar shrink_exemplar(const Exemplar& e, int factor);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,58 @@
+// The exemplar analysed for the synthesis (Lefebvre & Hoppe 2005, section 3): a Gaussian pyramid,
+// at each level every pixel's 3x3 colour neighbourhood reduced by PCA to kFeatureDims numbers,
+// and its k most similar neighbourhoods elsewhere in the exemplar (k-coherence candidates).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "exemplar.h"
+
+namespace maquette::synthesis {
+
+inline constexpr int kPatchRadius = 1;  // neighbourhoods of 3 x 3 pixels
+inline constexpr int kPatchSide = 2 * kPatchRadius + 1;
+inline constexpr int kPatchValues = kPatchSide * kPatchSide * 3;  // RGB
+inline constexpr int kFeatureDims = 8;                            // PCA-reduced neighbourhood
+
+// The projection of raw neighbourhoods (kPatchValues colours 0..1, rows of the patch top to
+// bottom, RGB interleaved) onto their first kFeatureDims principal axes.
+struct PatchBasis {
+  std::array<float, kPatchValues> mean{};
+  std::array<std::array<float, kPatchValues>, kFeatureDims> axes{};
+
+  std::array<float, kFeatureDims> project(const std::array<float, kPatchValues>& patch) const;
+};
+
+struct ExemplarLevel {
+  int width = 0, height = 0;
+  std::vector<float> rgb;         // 3 per pixel, 0..1
+  std::vector<uint8_t> labels;    // painting class
+  std::vector<float> altitude;    // [0, 1], or empty
+  std::vector<uint8_t> excluded;  // 1: never a candidate
+  PatchBasis basis;
+  std::vector<float> features;  // kFeatureDims per pixel
+  // k per pixel: the allowed pixels whose neighbourhoods are nearest to this pixel's, farther
+  // than one patch away from it (-1 when fewer exist); excluded pixels have none.
+  std::vector<int32_t> similar;
+  std::vector<int32_t> allowed;                    // pixels not excluded, ascending
+  std::array<std::vector<int32_t>, 256> by_label;  // allowed pixels of each label, ascending
+
+  int32_t index(int x, int y) const { return y * width + x; }
+  // The neighbourhood of (x, y) with coordinates clamped into the level.
+  std::array<float, kPatchValues> patch(int x, int y) const;
+};
+
+struct ExemplarPyramid {
+  int k = 0;
+  std::vector<ExemplarLevel> levels;  // finest first
+};
+
+// `levels` >= 1 levels, each half the size of the previous one (rounded up): colours and
+// altitude filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and decimated;
+// labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
+// Deterministic (single-threaded). Throws maquette::Error when a level has no allowed pixel.
+ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,6 @@
+#include "operators.h"
+#include "runtime/module_abi.h"
+
+MAQUETTE_MODULE("synthesis", "0.1.0",
+                "Example-based texture transfer from hand-painted panoramas (paper 000)",
+                {"synthesis.transfer", &maquette::synthesis::make_transfer})

@@ -1,0 +1,118 @@
+#include "nearest_patches.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace maquette::synthesis {
+namespace {
+
+struct Node {
+  int32_t begin = 0, end = 0;  // the node's points: order[begin, end)
+  int32_t left = -1, right = -1;
+  int dim = 0;
+  float split = 0;
+};
+
+class KdTree {
+ public:
+  KdTree(const std::vector<float>& points, int dims, std::vector<int32_t> order)
+      : points_(points), dims_(dims), order_(std::move(order)) {
+    if (!order_.empty()) build(0, int32_t(order_.size()));
+  }
+
+  // The k best (distance, index) pairs, sorted, of the accepted points.
+  void search(int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
+              std::vector<std::pair<float, int32_t>>& best) const {
+    best.clear();
+    if (!nodes_.empty()) visit(0, query, k, accept, best);
+  }
+
+ private:
+  static constexpr int32_t kLeafSize = 12;
+
+  float coord(int32_t point, int dim) const {
+    return points_[size_t(point) * size_t(dims_) + size_t(dim)];
+  }
+
+  int32_t build(int32_t begin, int32_t end) {
+    const int32_t id = int32_t(nodes_.size());
+    nodes_.push_back({begin, end});
+    if (end - begin <= kLeafSize) return id;
+    int dim = 0;
+    float widest = -1;
+    for (int d = 0; d < dims_; ++d) {
+      float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+      for (int32_t i = begin; i < end; ++i) {
+        lo = std::min(lo, coord(order_[size_t(i)], d));
+        hi = std::max(hi, coord(order_[size_t(i)], d));
+      }
+      if (hi - lo > widest) widest = hi - lo, dim = d;
+    }
+    const int32_t mid = begin + (end - begin) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                     [&](int32_t a, int32_t b) {
+                       const float ca = coord(a, dim), cb = coord(b, dim);
+                       return ca < cb || (ca == cb && a < b);
+                     });
+    nodes_[size_t(id)].dim = dim;
+    nodes_[size_t(id)].split = coord(order_[size_t(mid)], dim);
+    const int32_t left = build(begin, mid), right = build(mid, end);
+    nodes_[size_t(id)].left = left;
+    nodes_[size_t(id)].right = right;
+    return id;
+  }
+
+  float distance(int32_t a, int32_t b) const {
+    float d = 0;
+    for (int i = 0; i < dims_; ++i) {
+      const float x = coord(a, i) - coord(b, i);
+      d += x * x;
+    }
+    return d;
+  }
+
+  void visit(int32_t id, int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
+             std::vector<std::pair<float, int32_t>>& best) const {
+    const Node& node = nodes_[size_t(id)];
+    if (node.left < 0) {
+      for (int32_t i = node.begin; i < node.end; ++i) {
+        const int32_t p = order_[size_t(i)];
+        if (!accept(query, p)) continue;
+        const std::pair<float, int32_t> entry{distance(query, p), p};
+        if (int(best.size()) == k && !(entry < best.back())) continue;
+        best.insert(std::upper_bound(best.begin(), best.end(), entry), entry);
+        if (int(best.size()) > k) best.pop_back();
+      }
+      return;
+    }
+    const float gap = coord(query, node.dim) - node.split;
+    const int32_t near = gap < 0 ? node.left : node.right, far = gap < 0 ? node.right : node.left;
+    visit(near, query, k, accept, best);
+    // Points equal to the split lie on either side: visit the far side unless strictly beyond.
+    if (int(best.size()) < k || gap * gap <= best.back().first) visit(far, query, k, accept, best);
+  }
+
+  const std::vector<float>& points_;
+  int dims_;
+  std::vector<int32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace
+
+std::vector<int32_t> nearest_patches(const std::vector<float>& points, int dims,
+                                     const std::vector<int32_t>& candidates,
+                                     const std::vector<int32_t>& queries, int k,
+                                     const std::function<bool(int32_t, int32_t)>& accept) {
+  const KdTree tree(points, dims, candidates);
+  std::vector<int32_t> out(queries.size() * size_t(k), -1);
+  std::vector<std::pair<float, int32_t>> best;
+  for (size_t q = 0; q < queries.size(); ++q) {
+    tree.search(queries[q], k, accept, best);
+    for (size_t j = 0; j < best.size(); ++j) out[q * size_t(k) + j] = best[j].second;
+  }
+  return out;
+}
+
+}  // namespace maquette::synthesis

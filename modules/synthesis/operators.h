@@ -1,0 +1,12 @@
+// Factories of the synthesis module's operators (listed in module.cpp).
+#pragma once
+
+#include <memory>
+
+#include "runtime/operator.h"
+
+namespace maquette::synthesis {
+
+std::unique_ptr<Operator> make_transfer();
+
+}  // namespace maquette::synthesis

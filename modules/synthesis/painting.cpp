@@ -1,0 +1,81 @@
+#include "painting.h"
+
+#include <gdal_priv.h>
+
+#include <map>
+#include <memory>
+
+#include "../texture/hs_histogram.h"
+#include "../texture/kmeans.h"
+#include "core/error.h"
+
+namespace maquette::synthesis {
+namespace {
+
+std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what) {
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!ds) throw Error(path + ": GDAL cannot open the " + what);
+  return ds;
+}
+
+}  // namespace
+
+Exemplar read_painting(const std::string& path) {
+  const auto ds = open_image(path, "painting");
+  const int bands = ds->GetRasterCount();
+  if (bands < 1 || bands > 4)
+    throw Error(path + ": a painting has 1 (grey), 3 or 4 (RGB, alpha) bands, not " +
+                std::to_string(bands));
+  Exemplar e;
+  e.width = ds->GetRasterXSize();
+  e.height = ds->GetRasterYSize();
+  const size_t n = size_t(e.width) * size_t(e.height);
+  std::vector<uint8_t> rgb(3 * n);
+  std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
+  if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, rgb.data(), e.width, e.height, GDT_Byte, 3,
+                   band_map.data(), 3, long(e.width) * 3, 1, nullptr) != CE_None)
+    throw Error(path + ": GDAL cannot read the painting's pixels");
+  e.rgb.assign(rgb.begin(), rgb.end());
+  e.labels.assign(n, 0);
+  e.excluded.assign(n, 0);
+  return e;
+}
+
+std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
+                               const std::string& what) {
+  const auto ds = open_image(path, what);
+  if (ds->GetRasterXSize() != width || ds->GetRasterYSize() != height)
+    throw Error(path + ": the " + what + " is " + std::to_string(ds->GetRasterXSize()) + " x " +
+                std::to_string(ds->GetRasterYSize()) + ", the painting " + std::to_string(width) +
+                " x " + std::to_string(height));
+  std::vector<uint8_t> out(size_t(width) * size_t(height));
+  if (ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, out.data(), width, height,
+                                     GDT_Byte, 0, 0, nullptr) != CE_None)
+    throw Error(path + ": GDAL cannot read the " + what);
+  return out;
+}
+
+std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k) {
+  const size_t n = size_t(painting.width) * size_t(painting.height);
+  std::vector<int> bin_of(n);
+  std::vector<uint64_t> histogram(size_t(texture::histogram_bins(texture::ColourSpace::Lab)), 0);
+  for (size_t i = 0; i < n; ++i) {
+    bin_of[i] = texture::lab_bin(texture::srgb_to_lab(painting.rgb[3 * i], painting.rgb[3 * i + 1],
+                                                      painting.rgb[3 * i + 2]));
+    ++histogram[size_t(bin_of[i])];
+  }
+  const auto bins = texture::occupied_bins(histogram, texture::ColourSpace::Lab);
+  const texture::Partition partition = texture::kmeans(bins, k);
+  // occupied_bins lists the occupied bins in ascending order: their ranks among them.
+  std::vector<int> rank(histogram.size(), -1);
+  for (size_t i = 0, r = 0; i < histogram.size(); ++i)
+    if (histogram[i] > 0) rank[i] = int(r++);
+  std::vector<uint8_t> labels(n);
+  for (size_t i = 0; i < n; ++i)
+    labels[i] = uint8_t(partition.assign[size_t(rank[size_t(bin_of[i])])]);
+  return labels;
+}
+
+}  // namespace maquette::synthesis

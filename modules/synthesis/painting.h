@@ -1,0 +1,28 @@
+// Reading a painting and its hand-made masks (any 8-bit image GDAL reads), and the automatic
+// segmentation of a painting into colour classes when no hand-drawn class image is given.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "exemplar.h"
+
+namespace maquette::synthesis {
+
+// The painting's pixels (RGB; a grey image's band repeated, an alpha band dropped), with no
+// labels, altitude or exclusion yet. Throws maquette::Error naming the file when GDAL cannot
+// open or read it or its bands do not fit.
+Exemplar read_painting(const std::string& path);
+
+// A one-band 8-bit image (a class image, an exclusion mask, an altitude) that must have the
+// painting's size; `what` names it in errors.
+std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
+                               const std::string& what);
+
+// Classes 0..k-1 by colour: k-means (texture/kmeans.h: deterministic seeding, no random state)
+// of the painting's CIELAB histogram (texture/hs_histogram.h's "lab" bins and weights), each
+// pixel the class of its bin. 1 <= k <= 254.
+std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,295 @@
+#include "synthesis.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "pixel_hash.h"
+
+namespace maquette::synthesis {
+namespace {
+
+PixelRect grow(const PixelRect& r, int64_t m) {
+  return {r.col0 - m, r.row0 - m, r.width + 2 * m, r.height + 2 * m};
+}
+
+// The pixels of the next coarser level covering `r`.
+PixelRect parent(const PixelRect& r) {
+  const int64_t c0 = r.col0 >> 1, r0 = r.row0 >> 1;
+  return {c0, r0, ((r.col0 + r.width - 1) >> 1) - c0 + 1, ((r.row0 + r.height - 1) >> 1) - r0 + 1};
+}
+
+// What each sub-pass of a pass computes, and what the pass starts from.
+struct PassPlan {
+  PixelRect start;                           // the state the pass reads (and its snapshot)
+  std::array<PixelRect, kSubPasses> outs{};  // each sub-pass's output
+};
+
+struct LevelPlan {
+  PixelRect start;  // upsampled (or initialized) state
+  std::array<PassPlan, kPasses> passes{};
+};
+
+// From the finest level's window back to the coarsest: each sub-pass reads its state within
+// kPatchRadius, each pass its snapshot within kRepetitionRadius, each level its parent.
+std::array<LevelPlan, kLevels> plan_levels(const PixelRect& out) {
+  std::array<LevelPlan, kLevels> plans{};
+  PixelRect need = out;
+  for (int l = 0; l < kLevels; ++l) {
+    for (int pass = kPasses - 1; pass >= 0; --pass) {
+      PassPlan& p = plans[size_t(l)].passes[size_t(pass)];
+      p.outs[kSubPasses - 1] = need;
+      for (int s = kSubPasses - 2; s >= 0; --s)
+        p.outs[size_t(s)] = grow(p.outs[size_t(s) + 1], kPatchRadius);
+      p.start = grow(p.outs[0], std::max(kPatchRadius, kRepetitionRadius));
+      need = p.start;
+    }
+    plans[size_t(l)].start = need;
+    need = parent(need);
+  }
+  return plans;
+}
+
+// Exemplar pixel indices over a rectangle of global pixels of one level.
+struct State {
+  PixelRect rect;
+  std::vector<int32_t> src;
+
+  explicit State(const PixelRect& r) : rect(r), src(size_t(r.width) * size_t(r.height)) {}
+  int32_t& at(int64_t col, int64_t row) {
+    assert(col >= rect.col0 && col < rect.col0 + rect.width && row >= rect.row0 &&
+           row < rect.row0 + rect.height);
+    return src[size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0)];
+  }
+  int32_t at(int64_t col, int64_t row) const { return const_cast<State*>(this)->at(col, row); }
+};
+
+// The guides sampled at one level's pixels: each level-l pixel reads the output pixel at the
+// centre of its 2^l x 2^l block.
+struct LevelGuides {
+  PixelRect rect;
+  std::vector<uint8_t> labels;
+  std::vector<float> altitude;  // empty: none
+
+  size_t index(int64_t col, int64_t row) const {
+    return size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0);
+  }
+};
+
+LevelGuides level_guides(const TargetGuides& g, int level, const PixelRect& rect) {
+  LevelGuides out{rect, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)), {}};
+  const bool altitude = !g.altitude.empty();
+  if (altitude) out.altitude.resize(out.labels.size());
+  const int64_t centre = level > 0 ? int64_t(1) << (level - 1) : 0;
+  for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
+    for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
+      const int64_t gc = (((col << level) + centre) >> g.shift) - g.rect.col0;
+      const int64_t gr = (((row << level) + centre) >> g.shift) - g.rect.row0;
+      if (gc < 0 || gr < 0 || gc >= g.rect.width || gr >= g.rect.height)
+        throw Error("synthesis: the guides (" + std::to_string(g.rect.width) + " x " +
+                    std::to_string(g.rect.height) + " at " + std::to_string(g.rect.col0) + ", " +
+                    std::to_string(g.rect.row0) + ") do not cover the window and its halo");
+      const size_t gi = size_t(gr) * size_t(g.rect.width) + size_t(gc), i = out.index(col, row);
+      out.labels[i] = g.labels[gi];
+      if (altitude) out.altitude[i] = g.altitude[gi];
+    }
+  return out;
+}
+
+// The allowed exemplar pixels a pixel of target label `label` may start from.
+const std::vector<int32_t>& start_pool(const ExemplarLevel& e, uint8_t label) {
+  if (label != kUnknownLabel && !e.by_label[label].empty()) return e.by_label[label];
+  return e.allowed;
+}
+
+// The reuse penalty's window: offsets at Chebyshev distance 2 .. kRepetitionRadius.
+constexpr auto kRepetitionOffsets = [] {
+  constexpr int side = 2 * kRepetitionRadius + 1;
+  std::array<std::array<int, 2>, side * side - 9> offsets{};
+  size_t n = 0;
+  for (int dy = -kRepetitionRadius; dy <= kRepetitionRadius; ++dy)
+    for (int dx = -kRepetitionRadius; dx <= kRepetitionRadius; ++dx)
+      if (std::max(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy) >= 2) offsets[n++] = {dx, dy};
+  return offsets;
+}();
+
+class Corrector {
+ public:
+  Corrector(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p, int level,
+            int k)
+      : e_(e), g_(g), p_(p), level_(level), k_(k) {}
+
+  // The best candidate for pixel (col, row) given the current state and the pass's snapshot.
+  int32_t best(const State& state, const State& snapshot, int64_t col, int64_t row,
+               uint64_t salt) const {
+    std::array<float, kPatchValues> patch{};
+    size_t o = 0;
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
+        const size_t s = size_t(state.at(col + dx, row + dy));
+        for (int c = 0; c < 3; ++c) patch[o++] = e_.rgb[3 * s + size_t(c)];
+      }
+    const auto feature = e_.basis.project(patch);
+
+    std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
+    size_t n = 0;
+    const auto add = [&](int32_t c) {
+      if (c < 0 || e_.excluded[size_t(c)] || n == candidates.size()) return;
+      if (std::find(candidates.begin(), candidates.begin() + ptrdiff_t(n), c) !=
+          candidates.begin() + ptrdiff_t(n))
+        return;
+      candidates[n++] = c;
+    };
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
+        const int32_t s = state.at(col + dx, row + dy);
+        const int32_t c = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
+                                   std::clamp(s / e_.width - dy, 0, e_.height - 1));
+        add(c);
+        for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
+      }
+    const std::vector<int32_t>& pool = start_pool(e_, g_.labels[g_.index(col, row)]);
+    for (uint64_t j = 0; j < 2; ++j)
+      add(pool[pixel_hash(col, row, level_, p_.seed, salt + j) % pool.size()]);
+
+    int32_t winner = -1;
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < n; ++i) {
+      const double cost = this->cost(candidates[i], feature, snapshot, col, row);
+      if (cost < least) least = cost, winner = candidates[i];
+    }
+    return winner;
+  }
+
+ private:
+  double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const State& snapshot,
+              int64_t col, int64_t row) const {
+    double colour = 0;
+    for (int i = 0; i < kFeatureDims; ++i) {
+      const double d =
+          double(feature[size_t(i)]) - double(e_.features[size_t(c) * kFeatureDims + size_t(i)]);
+      colour += d * d;
+    }
+    const int cx = c % e_.width, cy = c / e_.width;
+    int mismatched = 0;
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
+        const uint8_t target = g_.labels[g_.index(col + dx, row + dy)];
+        const uint8_t source = e_.labels[size_t(
+            e_.index(std::clamp(cx + dx, 0, e_.width - 1), std::clamp(cy + dy, 0, e_.height - 1)))];
+        mismatched += target != kUnknownLabel && target != source;
+      }
+    double altitude = 0;
+    if (!g_.altitude.empty() && !e_.altitude.empty()) {
+      const float target = g_.altitude[g_.index(col, row)];
+      if (!std::isnan(target))
+        altitude = std::pow(double(target) - double(e_.altitude[size_t(c)]), 2);
+    }
+    int reused = 0;
+    for (const auto& [dx, dy] : kRepetitionOffsets) {
+      const int32_t s = snapshot.at(col + dx, row + dy);
+      reused += std::abs(s % e_.width - cx) <= 1 && std::abs(s / e_.width - cy) <= 1;
+    }
+    return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
+           p_.w_altitude * altitude + p_.w_repetition * reused / double(kRepetitionOffsets.size());
+  }
+
+  const ExemplarLevel& e_;
+  const LevelGuides& g_;
+  const SynthesisParams& p_;
+  int level_, k_;
+};
+
+State initial_state(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
+                    int level, const PixelRect& rect) {
+  State s(rect);
+  for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
+    for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
+      const std::vector<int32_t>& pool = start_pool(e, g.labels[g.index(col, row)]);
+      s.at(col, row) = pool[pixel_hash(col, row, level, p.seed, 0) % pool.size()];
+    }
+  return s;
+}
+
+// Each pixel: its parent's exemplar pixel doubled, offset by the child's place, jittered.
+State upsampled(const State& coarse, const ExemplarLevel& coarse_e, const ExemplarLevel& e,
+                const SynthesisParams& p, int level, const PixelRect& rect) {
+  State s(rect);
+  const uint64_t span = uint64_t(2 * p.jitter + 1);
+  for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
+    for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
+      const int32_t parent = coarse.at(col >> 1, row >> 1);
+      const uint64_t h = pixel_hash(col, row, level, p.seed, 1);
+      const int jx = int((h & 0xffffffffu) % span) - p.jitter,
+                jy = int((h >> 32) % span) - p.jitter;
+      const int x = 2 * (parent % coarse_e.width) + int(col & 1) + jx;
+      const int y = 2 * (parent / coarse_e.width) + int(row & 1) + jy;
+      s.at(col, row) = e.index(std::clamp(x, 0, e.width - 1), std::clamp(y, 0, e.height - 1));
+    }
+  return s;
+}
+
+// Sub-pass order of Lefebvre & Hoppe: parities (0,0) (1,1) (0,1) (1,0) of (column, row).
+constexpr std::array<std::array<int, 2>, kSubPasses> kParities = {{{0, 0}, {1, 1}, {0, 1}, {1, 0}}};
+
+State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
+                int level, int k, const PassPlan& plan, int pass) {
+  const Corrector corrector(e, g, p, level, k);
+  const State snapshot = state;
+  for (int sub = 0; sub < kSubPasses; ++sub) {
+    const PixelRect& r = plan.outs[size_t(sub)];
+    State next(r);
+    const auto [px, py] = kParities[size_t(sub)];
+    const uint64_t salt = 16 + uint64_t(pass * kSubPasses + sub) * 2;
+    for (int64_t row = r.row0; row < r.row0 + r.height; ++row)
+      for (int64_t col = r.col0; col < r.col0 + r.width; ++col)
+        next.at(col, row) = (col & 1) == px && (row & 1) == py
+                                ? corrector.best(state, snapshot, col, row, salt)
+                                : state.at(col, row);
+    state = std::move(next);
+  }
+  return state;
+}
+
+}  // namespace
+
+int synthesis_halo() {
+  // The widest margin over the alignments of a window to the coarsest level's pixels.
+  int64_t halo = 0;
+  const int64_t period = int64_t(1) << kLevels;
+  for (int64_t offset = 0; offset < period; ++offset) {
+    const PixelRect out{offset, offset, 1, 1};
+    const auto plans = plan_levels(out);
+    for (int l = 0; l < kLevels; ++l) {
+      const PixelRect& s = plans[size_t(l)].start;
+      halo = std::max({halo, out.col0 - (s.col0 << l), ((s.col0 + s.width) << l) - (out.col0 + 1)});
+    }
+  }
+  return int(halo);
+}
+
+std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
+                                const SynthesisParams& params, const PixelRect& out) {
+  if (int(pyramid.levels.size()) != kLevels)
+    throw Error("synthesis: the exemplar pyramid has " + std::to_string(pyramid.levels.size()) +
+                " levels, not " + std::to_string(kLevels));
+  const auto plans = plan_levels(out);
+  State state({});
+  for (int l = kLevels - 1; l >= 0; --l) {
+    const LevelPlan& plan = plans[size_t(l)];
+    const ExemplarLevel& e = pyramid.levels[size_t(l)];
+    const LevelGuides g = level_guides(guides, l, plan.start);
+    state = l == kLevels - 1
+                ? initial_state(e, g, params, l, plan.start)
+                : upsampled(state, pyramid.levels[size_t(l) + 1], e, params, l, plan.start);
+    for (int pass = 0; pass < kPasses; ++pass)
+      state =
+          corrected(std::move(state), e, g, params, l, pyramid.k, plan.passes[size_t(pass)], pass);
+  }
+  return std::move(state.src);
+}
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,83 @@
+// Parallel controllable texture synthesis (Lefebvre & Hoppe 2005) guided as paper 000 asks: the
+// output is a map from output pixels to exemplar pixels, built coarse to fine over the exemplar
+// pyramid (exemplar_pyramid.h).
+//
+// At the coarsest level each pixel starts at a random allowed exemplar pixel of its target label.
+// At each finer level the coordinates of the parent are doubled, offset by the child's position
+// and jittered by a hash of (global pixel, level, seed); then kPasses correction passes, each in
+// 2 x 2 sub-passes (pixels of one parity of global column and row at a time, in the order
+// (0,0) (1,1) (0,1) (1,0)), replace every pixel by the candidate of least cost
+//   C = D_color + w_label D_label + w_altitude D_altitude + w_repetition D_repetition
+// among its k-coherence candidates (for each 3 x 3 neighbour q = p + d, the exemplar pixel
+// S(q) - d and its k most similar patches) and two random pixels of its target label:
+//  - D_color: squared distance between the PCA features of the output's neighbourhood (the
+//    exemplar colours at S(p + d)) and of the candidate's;
+//  - D_label: the fraction of the 3 x 3 neighbourhood whose target label differs from the
+//    candidate's exemplar labels (unknown target labels match anything);
+//  - D_altitude: the squared difference of target and exemplar altitude (when both have one);
+//  - D_repetition: the fraction of kRepetitionOffsets pixels at Chebyshev distance 2 to
+//    kRepetitionRadius whose coordinates at the start of the pass lie within one pixel of the
+//    candidate: the same source reused nearby, not coherently (a coherent neighbour at offset o
+//    sits at candidate + o). Counting in the previous pass's state, in a fixed window, keeps the
+//    penalty a function of global pixel coordinates, independent of the order of pixels, of
+//    threads and of the window computed: the usage is local, not a global count.
+// Excluded exemplar pixels are never candidates, and every output pixel ends on an allowed pixel.
+//
+// So each output pixel is a function of its global pixel coordinates, the guides within
+// synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
+// equals the whole image cropped to it, bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "exemplar_pyramid.h"
+
+namespace maquette::synthesis {
+
+inline constexpr int kLevels = 4;            // pyramid levels synthesized (the exemplar's)
+inline constexpr int kPasses = 2;            // correction passes per level
+inline constexpr int kSubPasses = 4;         // 2 x 2
+inline constexpr int kRepetitionRadius = 3;  // of the reuse penalty's window, at each level
+
+struct SynthesisParams {
+  double w_label = 2.0;
+  double w_altitude = 1.0;
+  double w_repetition = 0.3;
+  int jitter = 1;  // amplitude of the upsampling jitter, pixels at each level (0: none)
+  uint64_t seed = 0;
+};
+
+// A rectangle of global pixel coordinates at some level: [col0, col0 + width) x [row0, ...).
+struct PixelRect {
+  int64_t col0 = 0, row0 = 0;
+  int64_t width = 0, height = 0;
+
+  bool contains(const PixelRect& r) const {
+    return r.col0 >= col0 && r.row0 >= row0 && r.col0 + r.width <= col0 + width &&
+           r.row0 + r.height <= row0 + height;
+  }
+};
+
+// The target's guides on a raster of global pixels `1 << shift` times coarser than the output's
+// (a step's refine): output pixel (c, r) reads guide sample ((c >> shift) - rect.col0,
+// (r >> shift) - rect.row0). Labels are painting classes (kUnknownLabel: any); altitude in
+// [0, 1], NaN or empty for none.
+struct TargetGuides {
+  PixelRect rect;
+  int shift = 0;
+  std::vector<uint8_t> labels;  // rect.width x rect.height, row-major
+  std::vector<float> altitude;  // the same, or empty
+};
+
+// Pixels of halo the guides need around an output window, at the output's resolution.
+int synthesis_halo();
+
+// For each pixel of `out` (output resolution), row-major, the index y * width + x of its
+// exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by
+// synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
+// maquette::Error when the guides do not cover it.
+std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
+                                const SynthesisParams& params, const PixelRect& out);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,69 @@
+#include "transfer_exemplar.h"
+
+#include <map>
+#include <mutex>
+#include <string>
+
+#include "core/error.h"
+#include "painting.h"
+#include "synthesis.h"
+
+namespace maquette::synthesis {
+namespace {
+
+constexpr const char* kOp = "synthesis.transfer";
+
+std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
+  Exemplar e = read_painting(params.at("painting").get<std::string>());
+  if (params.contains("labels")) {
+    e.labels = read_mask(params.at("labels").get<std::string>(), e.width, e.height, "class image");
+    for (const uint8_t l : e.labels)
+      if (l == kUnknownLabel)
+        throw Error(std::string(kOp) + ".labels: class " + std::to_string(l) +
+                    " is reserved (unknown); classes are 0..254");
+  } else {
+    e.labels = segment_by_colour(e, params.at("classes").get<int>());
+  }
+  if (params.contains("exclusion")) {
+    const auto mask =
+        read_mask(params.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
+    for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] = mask[i] != 0;
+  }
+  for (const int c : params.at("exclude_classes").get<std::vector<int>>())
+    for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
+  if (params.contains("painting_altitude")) {
+    const std::string source = params.at("painting_altitude").get<std::string>();
+    e.altitude.resize(e.labels.size());
+    if (source == "rows") {
+      // A panorama's far, high ground is painted near its top: altitude falls with the row.
+      for (int y = 0; y < e.height; ++y)
+        std::fill_n(e.altitude.begin() + ptrdiff_t(y) * e.width, e.width,
+                    1.0f - float(y) / float(std::max(1, e.height - 1)));
+    } else {
+      const auto grey = read_mask(source, e.width, e.height, "altitude image");
+      for (size_t i = 0; i < grey.size(); ++i) e.altitude[i] = float(grey[i]) / 255.0f;
+    }
+  }
+  auto out = std::make_shared<TransferExemplar>();
+  out->scale = params.at("exemplar_scale").get<int>();
+  out->pyramid =
+      analyse_exemplar(shrink_exemplar(e, out->scale), kLevels, params.at("k").get<int>());
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
+  nlohmann::json key;
+  for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
+                            "painting_altitude", "exemplar_scale", "k"})
+    if (params.contains(field)) key[field] = params.at(field);
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const TransferExemplar>> cache;
+  const std::lock_guard lock(mutex);  // cells wait for the one analysis rather than repeat it
+  auto& slot = cache[key.dump()];
+  if (!slot) slot = build(params);
+  return slot;
+}
+
+}  // namespace maquette::synthesis
