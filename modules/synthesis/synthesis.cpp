@@ -122,7 +122,8 @@ class Corrector {
             int k)
       : e_(e), g_(g), p_(p), level_(level), k_(k) {}
 
-  // The best candidate for pixel (col, row) given the current state and the pass's snapshot.
+  // The best candidate for pixel (col, row) given the current state and the pass's snapshot
+  // (packed coordinates, see corrected()).
   int32_t best(const State& state, const State& snapshot, int64_t col, int64_t row,
                uint64_t salt) const {
     std::array<float, kPatchValues> patch{};
@@ -143,14 +144,19 @@ class Corrector {
         return;
       candidates[n++] = c;
     };
+    // Coherent candidates first (the neighbours' sources, shifted), then their similar patches.
+    std::array<int32_t, kPatchSide * kPatchSide> shifted{};
+    size_t m = 0;
     for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
       for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
         const int32_t s = state.at(col + dx, row + dy);
-        const int32_t c = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
-                                   std::clamp(s / e_.width - dy, 0, e_.height - 1));
-        add(c);
-        for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
+        shifted[m++] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
+                                std::clamp(s / e_.width - dy, 0, e_.height - 1));
       }
+    for (const int32_t c : shifted) add(c);
+    const size_t coherent = n;
+    for (const int32_t c : shifted)
+      for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
     const std::vector<int32_t>& pool = start_pool(e_, g_.labels[g_.index(col, row)]);
     for (uint64_t j = 0; j < 2; ++j)
       add(pool[pixel_hash(col, row, level_, p_.seed, salt + j) % pool.size()]);
@@ -158,7 +164,8 @@ class Corrector {
     int32_t winner = -1;
     double least = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < n; ++i) {
-      const double cost = this->cost(candidates[i], feature, snapshot, col, row);
+      const double cost = this->cost(candidates[i], feature, snapshot, col, row) *
+                          (i < coherent ? 1.0 : 1.0 + p_.coherence);
       if (cost < least) least = cost, winner = candidates[i];
     }
     return winner;
@@ -191,7 +198,7 @@ class Corrector {
     int reused = 0;
     for (const auto& [dx, dy] : kRepetitionOffsets) {
       const int32_t s = snapshot.at(col + dx, row + dy);
-      reused += std::abs(s % e_.width - cx) <= 1 && std::abs(s / e_.width - cy) <= 1;
+      reused += std::abs((s & 0xffff) - cx) <= 1 && std::abs((s >> 16) - cy) <= 1;
     }
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_repetition * reused / double(kRepetitionOffsets.size());
@@ -238,7 +245,10 @@ constexpr std::array<std::array<int, 2>, kSubPasses> kParities = {{{0, 0}, {1, 1
 State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
                 int level, int k, const PassPlan& plan, int pass) {
   const Corrector corrector(e, g, p, level, k);
-  const State snapshot = state;
+  // The state at the start of the pass as packed coordinates x | y << 16 (the reuse penalty
+  // compares coordinates many times per pixel: no divisions there).
+  State snapshot = state;
+  for (int32_t& s : snapshot.src) s = s % e.width | (s / e.width) << 16;
   for (int sub = 0; sub < kSubPasses; ++sub) {
     const PixelRect& r = plan.outs[size_t(sub)];
     State next(r);

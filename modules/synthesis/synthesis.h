@@ -9,7 +9,8 @@
 // (0,0) (1,1) (0,1) (1,0)), replace every pixel by the candidate of least cost
 //   C = D_color + w_label D_label + w_altitude D_altitude + w_repetition D_repetition
 // among its k-coherence candidates (for each 3 x 3 neighbour q = p + d, the exemplar pixel
-// S(q) - d and its k most similar patches) and two random pixels of its target label:
+// S(q) - d and its k most similar patches) and two random pixels of its target label, the
+// candidates other than the S(q) - d at a cost (1 + coherence) times theirs:
 //  - D_color: squared distance between the PCA features of the output's neighbourhood (the
 //    exemplar colours at S(p + d)) and of the candidate's;
 //  - D_label: the fraction of the 3 x 3 neighbourhood whose target label differs from the
@@ -44,6 +45,9 @@ struct SynthesisParams {
   double w_label = 2.0;
   double w_altitude = 1.0;
   double w_repetition = 0.3;
+  // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
+  // (a similar patch, a random pixel) is multiplied by 1 + coherence.
+  double coherence = 0.5;
   int jitter = 1;  // amplitude of the upsampling jitter, pixels at each level (0: none)
   uint64_t seed = 0;
 };

@@ -86,6 +86,7 @@ OperatorSpec transfer_spec() {
         {"w_label", weight(2.0)},
         {"w_altitude", weight(1.0)},
         {"w_repetition", weight(0.3)},
+        {"coherence", weight(0.5)},
         {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
         {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}}}};
   return s;
@@ -152,6 +153,7 @@ class Transfer : public CellOperator {
     sp.w_label = params.at("w_label").get<double>();
     sp.w_altitude = params.at("w_altitude").get<double>();
     sp.w_repetition = params.at("w_repetition").get<double>();
+    sp.coherence = params.at("coherence").get<double>();
     sp.jitter = params.at("jitter").get<int>();
     sp.seed = params.at("seed").get<uint64_t>();
     const int n = ctx.tile_size << ctx.refine;

@@ -153,6 +153,29 @@ TEST_F(SynthesisTest, CopiesPatchesNotScatteredPixels) {
   EXPECT_GE(double(coherent) / double(pairs), 0.2);
 }
 
+TEST_F(SynthesisTest, RaisingTheAltitudeWeightLowersTheAltitudeMismatch) {
+  const PixelRect window{kWhole.col0 + 64, kWhole.row0 + 64, 128, 128};
+  const TargetGuides target = guides(grown(window, synthesis_halo()));
+  double previous = 1.0;
+  for (const double weight : {0.0, 2.0, 8.0}) {
+    SynthesisParams params;
+    params.w_altitude = weight;
+    const auto src = synthesize(*pyramid_, target, params, window);
+    double mismatch = 0;
+    for (int64_t r = 0; r < window.height; ++r)
+      for (int64_t c = 0; c < window.width; ++c) {
+        const size_t t =
+            size_t(r + synthesis_halo()) * size_t(target.rect.width) + size_t(c + synthesis_halo());
+        mismatch +=
+            std::abs(double(target.altitude[t]) -
+                     double(exemplar_->altitude[size_t(src[size_t(r * window.width + c)])]));
+      }
+    mismatch /= double(src.size());
+    EXPECT_LT(mismatch, previous) << "w_altitude " << weight;
+    previous = mismatch;
+  }
+}
+
 TEST_F(SynthesisTest, RefusesGuidesWithoutTheHalo) {
   EXPECT_THROW(synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo() - 8)), {}, kWhole),
                Error);

@@ -1,0 +1,149 @@
+// synthesis.transfer run by the real program on Zion's land cover and DEM (../shared/data) with
+// Bruegel's painting and a hand exclusion mask: the same bits on one thread and two; every output
+// colour is the painting's (GDAL's own read of it, averaged over the exemplar's block) at the
+// source coordinates written beside it; no source lies in the excluded part.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/tile.h"
+#include "run_cli.h"
+#include "store/store.h"
+
+namespace maquette::synthesis {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kShared = MAQUETTE_SHARED_DIR "/data";
+const std::string kPainting = kShared + "/painting/bruegel_the_harvesters_1565.png";
+constexpr int kScale = 4;             // exemplar_scale: a small exemplar keeps the test short
+constexpr double kExcludedTop = 0.4;  // the mask excludes the painting's top 40 % of rows
+
+struct TransferRun {
+  fs::path dir;
+  std::string store;
+};
+
+// The painting's pixels, as GDAL reads them (RGB interleaved).
+std::vector<uint8_t> painting_rgb(int& width, int& height) {
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(kPainting.c_str(), GDAL_OF_RASTER));
+  width = ds->GetRasterXSize();
+  height = ds->GetRasterYSize();
+  std::vector<uint8_t> rgb(size_t(width) * size_t(height) * 3);
+  int bands[3] = {1, 2, 3};
+  EXPECT_EQ(ds->RasterIO(GF_Read, 0, 0, width, height, rgb.data(), width, height, GDT_Byte, 3,
+                         bands, 3, long(width) * 3, 1, nullptr),
+            CE_None);
+  return rgb;
+}
+
+// A mask of the painting's size, 255 on its top kExcludedTop of rows.
+void write_mask(const std::string& path, int width, int height) {
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  std::unique_ptr<GDALDataset> ds(mem->Create("", width, height, 1, GDT_Byte, nullptr));
+  std::vector<uint8_t> mask(size_t(width) * size_t(height), 0);
+  std::fill_n(mask.begin(), size_t(kExcludedTop * height) * size_t(width), uint8_t(255));
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, width, height, mask.data(), width,
+                                           height, GDT_Byte, 0, 0, nullptr),
+            CE_None);
+  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
+      path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
+}
+
+TransferRun run_transfer(const std::string& name, int threads, const std::string& mask) {
+  TransferRun run{
+      fs::temp_directory_path() / ("maquette-synthesis-" + std::to_string(getpid()) + name), ""};
+  fs::remove_all(run.dir);
+  fs::create_directories(run.dir);
+  run.store = (run.dir / "zion.mqt").string();
+  const json pipeline = {
+      {"store", run.store},
+      {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
+      {"level", 10},
+      {"steps",
+       {{{"op", "ingest"},
+         {"outputs", {{"layer", "landcover"}}},
+         {"params",
+          {{"sources", {kShared + "/zion/nlcd.tif"}}, {"as", "landcover"}, {"level", 10}}}},
+        {{"op", "ingest"},
+         {"outputs", {{"layer", "dem"}}},
+         {"params", {{"sources", {kShared + "/zion/srtm.tif"}}, {"as", "dem"}, {"level", 10}}}},
+        {{"op", "synthesis.transfer"},
+         {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+         {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
+         {"params",
+          {{"painting", kPainting},
+           {"exclusion", mask},
+           {"landcover_classes", {{"3", 5}, {"4", 3}, {"5", 4}, {"6", 2}}},
+           {"altitude_range", {1100, 2700}},
+           {"painting_altitude", "rows"},
+           {"exemplar_scale", kScale}}}}}}};
+  const fs::path path = run.dir / "pipeline.json";
+  std::ofstream(path) << pipeline.dump(1);
+  const test::CliResult r =
+      test::run_maquette("run " + path.string() + " --quiet --threads " + std::to_string(threads));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return run;
+}
+
+TEST(TransferZion, SameBitsOnOneAndTwoThreadsAndColoursFromTheirSources) {
+  if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
+    GTEST_SKIP() << "../shared/data is absent";
+  int width = 0, height = 0;
+  const std::vector<uint8_t> painting = painting_rgb(width, height);
+  const fs::path mask =
+      fs::temp_directory_path() / ("maquette-synthesis-mask-" + std::to_string(getpid()) + ".png");
+  write_mask(mask.string(), width, height);
+  const TransferRun one = run_transfer("-1", 1, mask.string()),
+                    two = run_transfer("-2", 2, mask.string());
+  const auto a = Store::open(one.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(two.store, Store::Mode::ReadOnly);
+
+  const std::vector<CellId> cells = a->tile_cells("painted");
+  ASSERT_GE(cells.size(), 2u);
+  ASSERT_EQ(cells, b->tile_cells("painted"));
+  size_t pixels = 0, wrong_colour = 0, excluded = 0;
+  for (const CellId cell : cells) {
+    const RawTile rgb = *a->get_tile("painted", cell);
+    EXPECT_EQ(rgb.bytes, b->get_tile("painted", cell)->bytes) << cell.ToText();
+    const RawTile raw_source = *a->get_tile("painted_source", cell);
+    EXPECT_EQ(raw_source.bytes, b->get_tile("painted_source", cell)->bytes) << cell.ToText();
+    const Tile<float> source = to_tile<float>(raw_source);
+    for (int r = 0; r < source.size(); ++r)
+      for (int c = 0; c < source.size(); ++c) {
+        if (std::isnan(source.at(c, r, 0))) continue;
+        ++pixels;
+        const int sx = int(source.at(c, r, 0)), sy = int(source.at(c, r, 1));
+        excluded += sy < int(std::ceil(kExcludedTop * height));
+        for (int k = 0; k < 3; ++k) {
+          double mean = 0;
+          for (int dy = 0; dy < kScale; ++dy)
+            for (int dx = 0; dx < kScale; ++dx)
+              mean += painting[(size_t(sy + dy) * size_t(width) + size_t(sx + dx)) * 3 + size_t(k)];
+          mean /= kScale * kScale;
+          const auto got = double(std::to_integer<uint8_t>(
+              rgb.bytes[(size_t(r) * size_t(rgb.size) + size_t(c)) * 3 + size_t(k)]));
+          wrong_colour += std::abs(got - mean) > 0.51;
+        }
+      }
+  }
+  EXPECT_GT(pixels, 50000u);
+  EXPECT_EQ(excluded, 0u);
+  EXPECT_EQ(wrong_colour, 0u);
+  fs::remove_all(one.dir);
+  fs::remove_all(two.dir);
+  fs::remove(mask);
+}
+
+}  // namespace
+}  // namespace maquette::synthesis
