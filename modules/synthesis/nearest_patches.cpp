@@ -1,5 +1,8 @@
 #include "nearest_patches.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <utility>
@@ -25,7 +28,8 @@ class KdTree {
   void search(int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
               std::vector<std::pair<float, int32_t>>& best) const {
     best.clear();
-    if (!nodes_.empty()) visit(0, query, k, accept, best);
+    std::vector<float> offsets(size_t(dims_), 0.0f);
+    if (!nodes_.empty()) visit(0, query, k, accept, best, offsets, 0.0f);
   }
 
  private:
@@ -72,8 +76,12 @@ class KdTree {
     return d;
   }
 
+  // `bound`: a lower bound of the squared distance from the query to the node's box, the sum of
+  // the squared `offsets` to the splits crossed so far, one per dimension (Arya & Mount's
+  // incremental distance).
   void visit(int32_t id, int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
-             std::vector<std::pair<float, int32_t>>& best) const {
+             std::vector<std::pair<float, int32_t>>& best, std::vector<float>& offsets,
+             float bound) const {
     const Node& node = nodes_[size_t(id)];
     if (node.left < 0) {
       for (int32_t i = node.begin; i < node.end; ++i) {
@@ -88,9 +96,16 @@ class KdTree {
     }
     const float gap = coord(query, node.dim) - node.split;
     const int32_t near = gap < 0 ? node.left : node.right, far = gap < 0 ? node.right : node.left;
-    visit(near, query, k, accept, best);
-    // Points equal to the split lie on either side: visit the far side unless strictly beyond.
-    if (int(best.size()) < k || gap * gap <= best.back().first) visit(far, query, k, accept, best);
+    visit(near, query, k, accept, best, offsets, bound);
+    // Points equal to the split lie on either side: visit the far side unless strictly beyond
+    // (the bound shrunk by more than its rounding, so that no tie is lost).
+    float& offset = offsets[size_t(node.dim)];
+    const float saved = offset, far_bound = bound - saved * saved + gap * gap;
+    if (int(best.size()) < k || far_bound * (1 - 1e-5f) <= best.back().first) {
+      offset = gap;
+      visit(far, query, k, accept, best, offsets, far_bound);
+      offset = saved;
+    }
   }
 
   const std::vector<float>& points_;
@@ -107,11 +122,16 @@ std::vector<int32_t> nearest_patches(const std::vector<float>& points, int dims,
                                      const std::function<bool(int32_t, int32_t)>& accept) {
   const KdTree tree(points, dims, candidates);
   std::vector<int32_t> out(queries.size() * size_t(k), -1);
-  std::vector<std::pair<float, int32_t>> best;
-  for (size_t q = 0; q < queries.size(); ++q) {
-    tree.search(queries[q], k, accept, best);
-    for (size_t j = 0; j < best.size(); ++j) out[q * size_t(k) + j] = best[j].second;
-  }
+  // Queries are independent: each block writes its own entries, so any split gives the same.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, queries.size(), 1024),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      std::vector<std::pair<float, int32_t>> best;
+                      for (size_t q = range.begin(); q != range.end(); ++q) {
+                        tree.search(queries[q], k, accept, best);
+                        for (size_t j = 0; j < best.size(); ++j)
+                          out[q * size_t(k) + j] = best[j].second;
+                      }
+                    });
   return out;
 }
 

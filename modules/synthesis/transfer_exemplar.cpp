@@ -1,5 +1,7 @@
 #include "transfer_exemplar.h"
 
+#include <tbb/collaborative_call_once.h>
+
 #include <map>
 #include <mutex>
 #include <string>
@@ -58,12 +60,23 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
   for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
                             "painting_altitude", "exemplar_scale", "k"})
     if (params.contains(field)) key[field] = params.at(field);
+  struct Slot {
+    tbb::collaborative_once_flag once;
+    std::shared_ptr<const TransferExemplar> exemplar;
+  };
   static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const TransferExemplar>> cache;
-  const std::lock_guard lock(mutex);  // cells wait for the one analysis rather than repeat it
-  auto& slot = cache[key.dump()];
-  if (!slot) slot = build(params);
-  return slot;
+  static std::map<std::string, std::unique_ptr<Slot>> cache;
+  Slot* slot = nullptr;
+  {
+    const std::lock_guard lock(mutex);
+    auto& entry = cache[key.dump()];
+    if (!entry) entry = std::make_unique<Slot>();
+    slot = entry.get();
+  }
+  // One analysis per exemplar: the cells that need it meanwhile work on it (its parallel k
+  // nearest search) instead of waiting; a failed one is tried again by the next cell.
+  tbb::collaborative_call_once(slot->once, [&] { slot->exemplar = build(params); });
+  return slot->exemplar;
 }
 
 }  // namespace maquette::synthesis

@@ -1,6 +1,7 @@
 // synthesis.transfer's exemplar from its step's params: the painting read, labelled (a hand
 // class image, else segment_by_colour), its exclusions applied, shrunk and analysed; built once
-// per process for each distinct set of those params and shared by the cells.
+// per process for each distinct set of those params (the cells waiting for it join the work)
+// and shared by the cells.
 #pragma once
 
 #include <memory>

@@ -118,6 +118,17 @@ TEST_F(SynthesisTest, TilesWithTheirHaloEqualTheWholeImage) {
   EXPECT_EQ(differing(tiled(128, 1), *whole_), 0u);
 }
 
+TEST_F(SynthesisTest, AShiftedOddWindowEqualsTheWholeImage) {
+  const PixelRect window{kWhole.col0 + 37, kWhole.row0 + 53, 101, 67};
+  const auto src = synthesize(*pyramid_, guides(grown(window, synthesis_halo())), {}, window);
+  size_t differing = 0;
+  for (int64_t r = 0; r < window.height; ++r)
+    for (int64_t c = 0; c < window.width; ++c)
+      differing +=
+          src[size_t(r * window.width + c)] != (*whole_)[size_t((r + 53) * kWhole.width + c + 37)];
+  EXPECT_EQ(differing, 0u);
+}
+
 TEST_F(SynthesisTest, SameBitsOnTwoThreads) { EXPECT_EQ(differing(tiled(64, 2), *whole_), 0u); }
 
 TEST_F(SynthesisTest, NeverCopiesAnExcludedPixel) {
