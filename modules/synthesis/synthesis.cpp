@@ -116,6 +116,13 @@ constexpr auto kRepetitionOffsets = [] {
   return offsets;
 }();
 
+// What the cost reads around a pixel, gathered once for all its candidates: the target labels
+// of its neighbourhood, and the snapshot's exemplar coordinates at kRepetitionOffsets.
+struct Around {
+  std::array<uint8_t, kPatchSide * kPatchSide> labels{};
+  std::array<int32_t, kRepetitionOffsets.size()> x{}, y{};
+};
+
 class Corrector {
  public:
   Corrector(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p, int level,
@@ -134,6 +141,16 @@ class Corrector {
         for (int c = 0; c < 3; ++c) patch[o++] = e_.rgb[3 * s + size_t(c)];
       }
     const auto feature = e_.basis.project(patch);
+    Around around;
+    for (size_t i = 0; i < kRepetitionOffsets.size(); ++i) {
+      const int32_t s = snapshot.at(col + kRepetitionOffsets[i][0], row + kRepetitionOffsets[i][1]);
+      around.x[i] = s & 0xffff;
+      around.y[i] = s >> 16;
+    }
+    size_t t = 0;
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx)
+        around.labels[t++] = g_.labels[g_.index(col + dx, row + dy)];
 
     std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
     size_t n = 0;
@@ -164,7 +181,7 @@ class Corrector {
     int32_t winner = -1;
     double least = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < n; ++i) {
-      const double cost = this->cost(candidates[i], feature, snapshot, col, row) *
+      const double cost = this->cost(candidates[i], feature, around, col, row) *
                           (i < coherent ? 1.0 : 1.0 + p_.coherence);
       if (cost < least) least = cost, winner = candidates[i];
     }
@@ -172,7 +189,7 @@ class Corrector {
   }
 
  private:
-  double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const State& snapshot,
+  double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const Around& around,
               int64_t col, int64_t row) const {
     double colour = 0;
     for (int i = 0; i < kFeatureDims; ++i) {
@@ -182,9 +199,10 @@ class Corrector {
     }
     const int cx = c % e_.width, cy = c / e_.width;
     int mismatched = 0;
+    size_t t = 0;
     for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
       for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
-        const uint8_t target = g_.labels[g_.index(col + dx, row + dy)];
+        const uint8_t target = around.labels[t++];
         const uint8_t source = e_.labels[size_t(
             e_.index(std::clamp(cx + dx, 0, e_.width - 1), std::clamp(cy + dy, 0, e_.height - 1)))];
         mismatched += target != kUnknownLabel && target != source;
@@ -195,11 +213,10 @@ class Corrector {
       if (!std::isnan(target))
         altitude = std::pow(double(target) - double(e_.altitude[size_t(c)]), 2);
     }
-    int reused = 0;
-    for (const auto& [dx, dy] : kRepetitionOffsets) {
-      const int32_t s = snapshot.at(col + dx, row + dy);
-      reused += std::abs((s & 0xffff) - cx) <= 1 && std::abs((s >> 16) - cy) <= 1;
-    }
+    int reused = 0;  // branch-free over contiguous arrays: vectorized
+    for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
+      reused +=
+          int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_repetition * reused / double(kRepetitionOffsets.size());
   }
