@@ -119,8 +119,8 @@ class Transfer : public CellOperator {
 
   void run(const CellContext& ctx, CellData& data) const override {
     const json& params = *ctx.params;
-    const auto exemplar = transfer_exemplar(params);
     const auto table = class_table(params.at("landcover_classes"), spec_.name);
+    const auto exemplar = transfer_exemplar(params);
     const Tile<float>& landcover = input_with_halo(spec_.name, ctx, data, "landcover", spec_.halo);
     const int halo = landcover.halo(), side = landcover.stride();
 

@@ -60,13 +60,15 @@ void write_mask(const std::string& path, int width, int height) {
       path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
 }
 
-TransferRun run_transfer(const std::string& name, int threads, const std::string& mask) {
+// The pipeline run in a fresh folder; `changes` overrides the transfer's params.
+TransferRun run_transfer(const std::string& name, int threads, const std::string& mask,
+                         const json& changes = json::object(), test::CliResult* result = nullptr) {
   TransferRun run{
       fs::temp_directory_path() / ("maquette-synthesis-" + std::to_string(getpid()) + name), ""};
   fs::remove_all(run.dir);
   fs::create_directories(run.dir);
   run.store = (run.dir / "zion.mqt").string();
-  const json pipeline = {
+  json pipeline = {
       {"store", run.store},
       {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
       {"level", 10},
@@ -88,11 +90,17 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
            {"altitude_range", {1100, 2700}},
            {"painting_altitude", "rows"},
            {"exemplar_scale", kScale}}}}}}};
+  json& params = pipeline["steps"][2]["params"];
+  if (mask.empty()) params.erase("exclusion");
+  params.update(changes);
   const fs::path path = run.dir / "pipeline.json";
   std::ofstream(path) << pipeline.dump(1);
   const test::CliResult r =
       test::run_maquette("run " + path.string() + " --quiet --threads " + std::to_string(threads));
-  EXPECT_EQ(r.exit_code, 0) << r.err;
+  if (result)
+    *result = r;
+  else
+    EXPECT_EQ(r.exit_code, 0) << r.err;
   return run;
 }
 
@@ -143,6 +151,24 @@ TEST(TransferZion, SameBitsOnOneAndTwoThreadsAndColoursFromTheirSources) {
   fs::remove_all(one.dir);
   fs::remove_all(two.dir);
   fs::remove(mask);
+}
+
+TEST(TransferZion, AMissingPaintingAndABadClassTableAreNamed) {
+  if (!fs::exists(kShared + "/zion/nlcd.tif")) GTEST_SKIP() << "../shared/data is absent";
+  test::CliResult r;
+  const TransferRun missing =
+      run_transfer("-missing", 2, "", {{"painting", "no/such/painting.png"}}, &r);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no/such/painting.png: GDAL cannot open the painting"), std::string::npos)
+      << r.err;
+  fs::remove_all(missing.dir);
+  const TransferRun table =
+      run_transfer("-table", 2, "", {{"landcover_classes", {{"forest", 3}}}}, &r);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("synthesis.transfer.landcover_classes: key 'forest' is not an integer"),
+            std::string::npos)
+      << r.err;
+  fs::remove_all(table.dir);
 }
 
 }  // namespace
