@@ -59,12 +59,15 @@ struct State {
   std::vector<int32_t> src;
 
   explicit State(const PixelRect& r) : rect(r), src(size_t(r.width) * size_t(r.height)) {}
-  int32_t& at(int64_t col, int64_t row) {
+  int32_t& at(int64_t col, int64_t row) { return src[offset(col, row)]; }
+  int32_t at(int64_t col, int64_t row) const { return src[offset(col, row)]; }
+
+ private:
+  size_t offset(int64_t col, int64_t row) const {
     assert(col >= rect.col0 && col < rect.col0 + rect.width && row >= rect.row0 &&
            row < rect.row0 + rect.height);
-    return src[size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0)];
+    return size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0);
   }
-  int32_t at(int64_t col, int64_t row) const { return const_cast<State*>(this)->at(col, row); }
 };
 
 // The guides sampled at one level's pixels: each level-l pixel reads the output pixel at the
