@@ -182,9 +182,9 @@ MeshObject lake_like() {
   return m;
 }
 
-// 30 buildings as structures.buildings makes them: random convex footprints extruded, walls of
-// two triangles, roofs fanned from their first corner and tilted by 0 to 2 degrees, then a
-// degenerate triangle (a corner repeated) and a flat one (three corners in a line).
+// 30 buildings as structures.buildings makes them: random polygon footprints extruded, walls of
+// two triangles, roofs fanned from their first corner and tilted by 0 to 2 degrees, each with a
+// degenerate triangle (a corner repeated); then a flat one (three corners in a line).
 MeshObject building_like() {
   Draw draw{29};
   MeshObject m;
@@ -193,6 +193,7 @@ MeshObject building_like() {
                  eaves = ground + draw(3, 40);
     const double tilt = std::tan(draw(0, 2) * std::numbers::pi / 180), azimuth = draw(0, 6.3);
     const uint32_t sides = uint32_t(draw(3, 13)), first = uint32_t(m.positions.size() / 3);
+    const size_t faces_begin = m.indices.size();
     double angle = 0;
     for (uint32_t s = 0; s < sides; ++s, angle += draw(0.5, 1.5) * 2 * std::numbers::pi / sides) {
       const double x = x0 + radius * std::cos(angle), y = y0 + radius * std::sin(angle);
@@ -206,7 +207,10 @@ MeshObject building_like() {
     for (uint32_t s = 1; s + 1 < sides; ++s)
       m.indices.insert(m.indices.end(),
                        {low(0) + 1, low(s) + 1, low(s + 1) + 1, low(0), low(s + 1), low(s)});
-    m.indices.insert(m.indices.end(), {low(1), low(1), low(2)});
+    // A degenerate triangle on the roof, before the building's faces (its corners' first
+    // orientation then up, which the roof may join) or after them.
+    m.indices.insert(building % 2 ? m.indices.end() : m.indices.begin() + faces_begin,
+                     {low(1) + 1, low(1) + 1, low(2) + 1});
   }
   add_vertex(m, 0, 0, 0);
   add_vertex(m, 1, 1, 1);
@@ -227,10 +231,11 @@ void expect_same_bits_as_the_oracle(const MeshObject& in) {
 TEST(FacetNormals, LakeLikeMeshHasTheFirstImplementationsBits) {
   const MeshObject in = lake_like();
   expect_same_bits_as_the_oracle(in);
-  // The case is not trivial: some corners split, some bottom quads share their copies.
+  // Not a trivial case: the walls split the rims' 356 vertices (< 400 more copies), the bottom's
+  // turns many more of its corners, though not all (a split bottom would need ~11,000 copies).
   const size_t copies = with_facet_normals(in).positions.size() / 3;
   EXPECT_GT(copies, in.positions.size() / 3 + 1000);
-  EXPECT_LT(copies, 6 * in.positions.size() / 3);
+  EXPECT_LT(copies, in.indices.size() / 3);
 }
 
 TEST(FacetNormals, BuildingLikeMeshHasTheFirstImplementationsBits) {
