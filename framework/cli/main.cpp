@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   add_modules_command(app);
   add_run_command(app);
   add_export_command(app);
+  add_render_command(app);
   add_demo_command(app);
   add_view_command(app);
 

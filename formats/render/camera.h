@@ -1,0 +1,57 @@
+// A pinhole camera on the WGS84 ellipsoid for panoramas: its eye at a geodetic point, looking
+// along a heading (degrees clockwise from north) and pitch (degrees above the eye's horizontal
+// plane, negative looks down), with a horizontal field of view over a width x height picture of
+// square pixels. Positions are in the east-north-up frame at the eye (core/enu_frame.h), so the
+// earth's curvature is that of the ellipsoid, with no flat-earth approximation. Pixel (i, j) covers
+// [i, i + 1) x [j, j + 1), its centre at (i + 0.5, j + 0.5), rows from the top.
+#pragma once
+
+#include <array>
+
+#include "core/enu_frame.h"
+
+namespace maquette {
+
+using Vec3d = std::array<double, 3>;
+
+struct CameraSpec {
+  GeodeticPoint eye;   // height above the ellipsoid
+  double heading = 0;  // degrees clockwise from north
+  double pitch = 0;    // degrees, -90 (down) to 90 (up)
+  double fov = 60;     // horizontal field of view, degrees, in (0, 170]
+  int width = 1600, height = 900;
+};
+
+// The heading and pitch (degrees) that aim the eye at `target`.
+std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target);
+
+class PinholeCamera {
+ public:
+  // Throws maquette::Error naming the field at fault: fov outside (0, 170], pitch outside
+  // [-90, 90], width or height outside [1, 65536].
+  explicit PinholeCamera(const CameraSpec& spec);
+
+  const CameraSpec& spec() const { return spec_; }
+  const EnuFrame& frame() const { return frame_; }
+  // Pixels per unit of tan(angle): the focal length in pixels.
+  double focal() const { return focal_; }
+
+  // A point of the eye's ENU frame in the camera's frame: x right, y down, z forward (metres).
+  Vec3d to_view(const Vec3d& enu) const;
+  // The picture coordinates of a camera-frame point with z > 0 (pixel centres at i + 0.5).
+  std::array<double, 2> to_pixel(const Vec3d& view) const {
+    return {spec_.width * 0.5 + focal_ * view[0] / view[2],
+            spec_.height * 0.5 + focal_ * view[1] / view[2]};
+  }
+  // The ray through picture coordinates (x, y) in the eye's ENU frame, scaled to a forward
+  // (camera z) component of 1: a point at camera depth z is z times it.
+  Vec3d ray(double x, double y) const;
+
+ private:
+  CameraSpec spec_;
+  EnuFrame frame_;
+  double focal_;
+  Vec3d right_, down_, forward_;  // the camera's axes in the ENU frame
+};
+
+}  // namespace maquette

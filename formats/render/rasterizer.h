@@ -1,0 +1,42 @@
+// A deterministic CPU z-buffer for triangle meshes seen by a PinholeCamera. Vertices are
+// projected and snapped to 1/16 pixel (integer edge functions, so the tie rules are exact); a
+// pixel belongs to a triangle when its centre is inside, or on a top or left edge (the top-left
+// rule: a centre on an edge shared by two triangles is drawn by exactly one of them). Depth is
+// the camera-frame z, interpolated perspective-correctly; the nearer surface wins, and on equal
+// depth the lower triangle index. Rows are split into bands of 8, each band rasterized by one
+// oneTBB task over its triangles in index order, writing only its own rows: the result is the
+// same bits for any number of threads.
+// Limits of this first renderer: a triangle with a vertex less than `near` metres in front of the
+// eye, or projected further than 2^22 pixels from the picture, is left out (no near-plane
+// clipping), and there is no back-face culling.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "render/camera.h"
+
+namespace maquette {
+
+struct RenderMesh {
+  std::vector<double> positions;  // the eye's ENU frame, metres, 3 per vertex
+  std::vector<uint32_t> indices;  // 3 per triangle
+  size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// What each pixel sees, row-major from the top-left.
+struct Fragments {
+  static constexpr uint32_t kSky = std::numeric_limits<uint32_t>::max();
+  int width = 0, height = 0;
+  std::vector<uint32_t> triangle;  // index of the triangle seen, kSky for none
+  std::vector<double> depth;       // camera-frame z (metres), +inf for none
+  // Perspective-correct barycentric weights of the triangle's 2nd and 3rd vertex at the pixel's
+  // centre (the 1st's is 1 - b1 - b2).
+  std::vector<float> b1, b2;
+};
+
+// Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn.
+Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near = 1.0);
+
+}  // namespace maquette

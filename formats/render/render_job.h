@@ -1,0 +1,32 @@
+// `maquette render panorama` as a library call: checks the layers and the camera, builds the
+// terrain, rasterizes, shades and writes the panorama and its guides (render/panorama.h).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/grid.h"
+#include "render/camera.h"
+#include "render/panorama.h"
+#include "store/store.h"
+
+namespace maquette {
+
+struct PanoramaJob {
+  std::string dem, texture, land_cover;  // layer names; texture and land_cover may be ""
+  CameraSpec camera;                     // eye.height above the ellipsoid, or the terrain
+  bool above_ground = false;             // camera.eye.height is above the terrain
+  std::optional<GeodeticPoint> look_at;  // replaces camera.heading and pitch
+  double exaggeration = 1;
+  bool stretch = true;  // render/panorama.h PanoramaLook::stretch
+  double haze_distance = 60000;
+  double sun_azimuth = 315, sun_altitude = 45;
+};
+
+// Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
+// wrong kind (--dem: a one-channel raster; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
+// categorical), a camera below the terrain (or --above-ground where the DEM has no data), a field
+// of view, pitch or size out of range (render/camera.h).
+Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
+
+}  // namespace maquette

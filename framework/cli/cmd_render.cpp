@@ -1,0 +1,98 @@
+// maquette render panorama: an oblique picture of the store's terrain from a camera, with its
+// guides (altitude, distance, lon/lat, land cover, silhouettes) beside it (formats/render).
+#include <spdlog/spdlog.h>
+#include <tbb/global_control.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "render/render_job.h"
+
+namespace maquette::cli {
+namespace {
+
+struct PanoramaOptions {
+  std::string store, out;
+  PanoramaJob job;
+  std::vector<double> camera, look_at, size{1600, 900}, sun{315, 45};
+  int threads = 0;
+};
+
+void run(const PanoramaOptions& o) {
+  PanoramaJob job = o.job;
+  job.camera.eye = {o.camera[0], o.camera[1], o.camera[2]};
+  if (!o.look_at.empty()) job.look_at = GeodeticPoint{o.look_at[0], o.look_at[1], o.look_at[2]};
+  job.camera.width = int(o.size[0]);
+  job.camera.height = int(o.size[1]);
+  job.sun_azimuth = o.sun[0];
+  job.sun_altitude = o.sun[1];
+  const size_t threads =
+      o.threads > 0
+          ? size_t(o.threads)
+          : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  write_panorama(render_panorama(*store, default_grid(), job), o.out);
+  spdlog::info("wrote {} and its guides", o.out);
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  CLI::App* render = app.add_subcommand("render", "Draw pictures of the store's terrain");
+  render->require_subcommand(1);
+  auto o = std::make_shared<PanoramaOptions>();
+  CLI::App* cmd = render->add_subcommand(
+      "panorama",
+      "An oblique picture of the terrain from a camera (CPU, deterministic), and its guides: "
+      "OUT stem + -guides.tif (altitude, distance, lon, lat[, land_cover]; float64, NaN on the "
+      "sky), -silhouettes.png");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("OUT", o->out, "Output PNG")->required();
+  cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();
+  cmd->add_option("--texture", o->job.texture,
+                  "Imagery layer draped on the terrain (uint8, 1, 3 or 4 channels; default: a "
+                  "plain earth colour)");
+  cmd->add_flag(
+      "--no-stretch", [o](int64_t) { o->job.stretch = false; },
+      "The texture's values as stored (default: stretched like `export png`, 2-98 % per band of "
+      "the texels seen)");
+  cmd->add_option("--land-cover", o->job.land_cover,
+                  "Categorical layer written as the land_cover guide");
+  cmd->add_option("--camera", o->camera,
+                  "The eye: LON LAT HEIGHT (degrees; metres above the ellipsoid, or above the "
+                  "terrain with --above-ground)")
+      ->expected(3)
+      ->required();
+  cmd->add_flag("--above-ground", o->job.above_ground,
+                "The camera's height is above the terrain under it");
+  auto* heading =
+      cmd->add_option("--heading", o->job.camera.heading, "Degrees clockwise from north")
+          ->capture_default_str();
+  auto* pitch = cmd->add_option("--pitch", o->job.camera.pitch,
+                                "Degrees above the horizontal (negative looks down)")
+                    ->capture_default_str();
+  cmd->add_option("--look-at", o->look_at,
+                  "Aim at LON LAT HEIGHT (metres above the ellipsoid) instead of --heading and "
+                  "--pitch")
+      ->expected(3)
+      ->excludes(heading)
+      ->excludes(pitch);
+  cmd->add_option("--fov", o->job.camera.fov, "Horizontal field of view, degrees (0, 170]")
+      ->capture_default_str();
+  cmd->add_option("--size", o->size, "Picture WIDTH HEIGHT in pixels")
+      ->expected(2)
+      ->capture_default_str();
+  cmd->add_option("--exaggeration", o->job.exaggeration, "Vertical exaggeration")
+      ->capture_default_str();
+  cmd->add_option("--haze-distance", o->job.haze_distance,
+                  "Metres at which the haze hides 63 % of the terrain's colour")
+      ->capture_default_str();
+  cmd->add_option("--sun", o->sun, "The hillshading's sun: AZIMUTH ALTITUDE, degrees")
+      ->expected(2)
+      ->capture_default_str();
+  add_threads_option(cmd, o->threads);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace maquette::cli

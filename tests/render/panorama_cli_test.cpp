@@ -1,0 +1,155 @@
+// `maquette render panorama` on a synthetic DEM (a 600 m plateau on a plain, heights above the
+// ellipsoid): every terrain pixel's guides (lon, lat, altitude) name a point that the test's own
+// pinhole puts back on that pixel's centre (<= 0.05 px) at the guide's distance (PROJ's
+// east-north-up frame, not the program's GeographicLib), the plateau's edge drawn as a
+// silhouette, the same bytes for 1 and 2 threads, bad input named.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "proj_enu.h"
+#include "run_cli.h"
+#include "synthetic_raster.h"
+#include "test_camera.h"
+
+namespace maquette {
+namespace {
+
+using test::run_maquette;
+
+constexpr double kEyeLon = 10.15, kEyeLat = 45.02, kEyeHeight = 1500;
+
+bool on_plateau(double lon, double lat) {
+  return lon > 10.12 && lon < 10.18 && lat > 45.12 && lat < 45.18;
+}
+
+struct Fixture {
+  std::string dir = test::temp_dir(), store = dir + "/s.mqt";
+  Fixture() {
+    const std::string tif = dir + "/dem.tif";
+    test::write_raster(
+        tif, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
+        [](int, double lon, double lat) { return on_plateau(lon, lat) ? 700 : 100; });
+    const auto r = run_maquette("ingest " + store + " --layer dem --as dem --vertical-datum " +
+                                "ellipsoid " + tif);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  }
+  std::string render(const std::string& out, const std::string& options) const {
+    return "render panorama " + store + " " + out + " --dem dem --camera " +
+           std::to_string(kEyeLon) + " " + std::to_string(kEyeLat) + " " +
+           std::to_string(kEyeHeight) + " " + options;
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+const char* kView = "--heading 0 --pitch -6 --fov 50 --size 320 200";
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<double> band(GDALDataset& ds, int b) {
+  std::vector<double> v(size_t(ds.GetRasterXSize()) * size_t(ds.GetRasterYSize()));
+  EXPECT_EQ(ds.GetRasterBand(b)->RasterIO(GF_Read, 0, 0, ds.GetRasterXSize(), ds.GetRasterYSize(),
+                                          v.data(), ds.GetRasterXSize(), ds.GetRasterYSize(),
+                                          GDT_Float64, 0, 0),
+            CE_None);
+  return v;
+}
+
+TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/pano.png";
+  const auto r = run_maquette(f.render(out, kView));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> guides(
+      GDALDataset::Open((f.dir + "/pano-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(guides);
+  ASSERT_EQ(guides->GetRasterCount(), 4);
+  EXPECT_STREQ(guides->GetRasterBand(2)->GetDescription(), "distance");
+  const auto altitude = band(*guides, 1), distance = band(*guides, 2), lon = band(*guides, 3),
+             lat = band(*guides, 4);
+  std::unique_ptr<GDALDataset> edges(
+      GDALDataset::Open((f.dir + "/pano-silhouettes.png").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(edges);
+  std::vector<uint8_t> silhouette(altitude.size());
+  ASSERT_EQ(edges->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 320, 200, silhouette.data(), 320, 200,
+                                              GDT_Byte, 0, 0),
+            CE_None);
+
+  const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
+  const test::TestCamera camera{0, -6, 50, 320, 200};
+  size_t terrain = 0, plateau = 0, plateau_edges = 0, sky = 0;
+  double worst_pixel = 0, worst_distance = 0;
+  for (int row = 0; row < 200; ++row)
+    for (int col = 0; col < 320; ++col) {
+      const size_t i = size_t(row) * 320 + size_t(col);
+      if (std::isnan(distance[i])) {
+        ++sky;
+        continue;
+      }
+      ++terrain;
+      const auto p = enu({lon[i], lat[i]}, altitude[i]);
+      const auto px = camera.project(p);
+      worst_pixel = std::max(worst_pixel, std::hypot(px[0] - col, px[1] - row));
+      const double range = std::hypot(p[0], p[1], p[2]);
+      worst_distance = std::max(worst_distance, std::abs(range - distance[i]) / range);
+      if (altitude[i] > 650) {
+        ++plateau;
+        plateau_edges += silhouette[i] == 255;
+      }
+    }
+  EXPECT_LE(worst_pixel, 0.05);  // the guide point lies on the ray through the pixel centre
+  EXPECT_LE(worst_distance, 1e-4);
+  EXPECT_GT(terrain, 320u * 50);  // the plain, the plateau and the sky above the far edge
+  EXPECT_GT(sky, 320u * 20);
+  EXPECT_GT(plateau, 500u);
+  EXPECT_GT(plateau_edges, 20u);  // the plateau's top edge against the plain behind it
+}
+
+TEST(PanoramaCli, SameBytesForOneAndTwoThreads) {
+  const Fixture& f = fixture();
+  const std::string one = f.dir + "/one.png", two = f.dir + "/two.png";
+  ASSERT_EQ(run_maquette(f.render(one, std::string(kView) + " -t 1")).exit_code, 0);
+  ASSERT_EQ(run_maquette(f.render(two, std::string(kView) + " -t 2")).exit_code, 0);
+  EXPECT_EQ(slurp(one), slurp(two));
+  EXPECT_EQ(slurp(f.dir + "/one-guides.tif"), slurp(f.dir + "/two-guides.tif"));
+  EXPECT_EQ(slurp(f.dir + "/one-silhouettes.png"), slurp(f.dir + "/two-silhouettes.png"));
+  EXPECT_GT(slurp(one).size(), 1000u);
+}
+
+TEST(PanoramaCli, BadInputIsNamed) {
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/bad.png";
+  auto expect_error = [&](const std::string& args, const std::string& message) {
+    const auto r = run_maquette(args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  };
+  expect_error("render panorama " + f.store + " " + out + " --dem nosuch --camera 10.15 45 900",
+               "--dem layer 'nosuch' is not in the store");
+  expect_error(f.render(out, "--texture dem"), "--texture layer 'dem' is float32");
+  expect_error("render panorama " + f.store + " " + out + " --dem dem --camera 10.15 45.15 650",
+               "below the terrain there (700.0 m)");
+  expect_error(
+      "render panorama " + f.store + " " + out + " --dem dem --camera 9 45 100 " + "--above-ground",
+      "no data under the camera");
+  expect_error(f.render(out, "--fov 175"), "camera fov 175");
+  expect_error(f.render(out, "--fov 0"), "out of range");
+}
+
+}  // namespace
+}  // namespace maquette
