@@ -92,7 +92,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
           std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       const double lit =
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
-      shades[i] = float(0.25 + 0.75 * std::max(0.0, lit));
+      shades[i] = float(0.3 + 0.7 * std::max(0.0, lit));
     }
   });
 

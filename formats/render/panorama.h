@@ -29,7 +29,7 @@ struct PanoramaLook {
   bool stretch = true;
   double sun_azimuth = 315, sun_altitude = 45;  // degrees (clockwise from north, above horizon)
   double haze_distance = 60000;                 // metres
-  double silhouette_jump = 1.1;
+  double silhouette_jump = 1.05;
 };
 
 struct Panorama {
