@@ -2,7 +2,8 @@
 // ellipsoid): every terrain pixel's guides (lon, lat, altitude) name a point that the test's own
 // pinhole puts back on that pixel's centre (<= 0.05 px) at the guide's distance (PROJ's
 // east-north-up frame, not the program's GeographicLib), the plateau's edge drawn as a
-// silhouette, the same bytes for 1 and 2 threads, bad input named.
+// silhouette, the land-cover guide the class at the guide's lon/lat, the same bytes for 1 and 2
+// threads, bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -27,6 +28,9 @@ bool on_plateau(double lon, double lat) {
   return lon > 10.12 && lon < 10.18 && lat > 45.12 && lat < 45.18;
 }
 
+// Forest (41) on the plateau, shrub (52) around it.
+int land_cover(double lon, double lat) { return on_plateau(lon, lat) ? 41 : 52; }
+
 struct Fixture {
   std::string dir = test::temp_dir(), store = dir + "/s.mqt";
   Fixture() {
@@ -37,6 +41,11 @@ struct Fixture {
     const auto r = run_maquette("ingest " + store + " --layer dem --as dem --vertical-datum " +
                                 "ellipsoid " + tif);
     EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::string classes = dir + "/classes.tif";
+    test::write_raster(classes, test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte"),
+                       [](int, double lon, double lat) { return land_cover(lon, lat); });
+    const auto c = run_maquette("ingest " + store + " --layer lc --as landcover " + classes);
+    EXPECT_EQ(c.exit_code, 0) << c.err;
   }
   std::string render(const std::string& out, const std::string& options) const {
     return "render panorama " + store + " " + out + " --dem dem --camera " +
@@ -71,16 +80,17 @@ std::vector<double> band(GDALDataset& ds, int b) {
 TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
   const Fixture& f = fixture();
   const std::string out = f.dir + "/pano.png";
-  const auto r = run_maquette(f.render(out, kView));
+  const auto r = run_maquette(f.render(out, std::string(kView) + " --land-cover lc"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   GDALAllRegister();
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((f.dir + "/pano-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
-  ASSERT_EQ(guides->GetRasterCount(), 4);
+  ASSERT_EQ(guides->GetRasterCount(), 5);
   EXPECT_STREQ(guides->GetRasterBand(2)->GetDescription(), "distance");
+  EXPECT_STREQ(guides->GetRasterBand(5)->GetDescription(), "land_cover");
   const auto altitude = band(*guides, 1), distance = band(*guides, 2), lon = band(*guides, 3),
-             lat = band(*guides, 4);
+             lat = band(*guides, 4), classes = band(*guides, 5);
   std::unique_ptr<GDALDataset> edges(
       GDALDataset::Open((f.dir + "/pano-silhouettes.png").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(edges);
@@ -91,7 +101,7 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
 
   const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
   const test::TestCamera camera{0, -6, 50, 320, 200};
-  size_t terrain = 0, plateau = 0, plateau_edges = 0, sky = 0;
+  size_t terrain = 0, plateau = 0, plateau_edges = 0, sky = 0, same_class = 0, away_from_edge = 0;
   double worst_pixel = 0, worst_distance = 0;
   for (int row = 0; row < 200; ++row)
     for (int col = 0; col < 320; ++col) {
@@ -101,6 +111,15 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
         continue;
       }
       ++terrain;
+      // The class of the nearest sample: either class within two samples of the plateau's edge.
+      const double margin = 0.001;
+      if (on_plateau(lon[i] - margin, lat[i] - margin) ==
+              on_plateau(lon[i] + margin, lat[i] + margin) &&
+          on_plateau(lon[i] - margin, lat[i] + margin) ==
+              on_plateau(lon[i] + margin, lat[i] - margin)) {
+        ++away_from_edge;
+        same_class += classes[i] == land_cover(lon[i], lat[i]);
+      }
       const auto p = enu({lon[i], lat[i]}, altitude[i]);
       const auto px = camera.project(p);
       worst_pixel = std::max(worst_pixel, std::hypot(px[0] - col, px[1] - row));
@@ -113,6 +132,8 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
     }
   EXPECT_LE(worst_pixel, 0.05);  // the guide point lies on the ray through the pixel centre
   EXPECT_LE(worst_distance, 1e-4);
+  EXPECT_EQ(same_class, away_from_edge);
+  EXPECT_GT(away_from_edge, terrain * 9 / 10);
   EXPECT_GT(terrain, 320u * 50);  // the plain, the plateau and the sky above the far edge
   EXPECT_GT(sky, 320u * 20);
   EXPECT_GT(plateau, 500u);
