@@ -2,14 +2,15 @@
 // ellipsoid): every terrain pixel's guides (lon, lat, altitude) name a point that the test's own
 // pinhole puts back on that pixel's centre (<= 0.05 px) at the guide's distance (PROJ's
 // east-north-up frame, not the program's GeographicLib), the plateau's edge drawn as a
-// silhouette, the land-cover guide the class at the guide's lon/lat, the same bytes for 1 and 2
-// threads, bad input named.
+// silhouette, the land-cover guide the class at the guide's lon/lat; --look-at and --above-ground
+// aim and place the camera where PROJ says; the same bytes for 1 and 2 threads; bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "proj_enu.h"
@@ -77,6 +78,33 @@ std::vector<double> band(GDALDataset& ds, int b) {
   return v;
 }
 
+// The guides of `path` (bands altitude, distance, lon, lat): the largest distance (pixels) from a
+// terrain pixel's centre to where `camera`, at the eye, puts the point its guides name, and the
+// largest relative error of its distance, both measured in PROJ's east-north-up frame; and the
+// number of terrain pixels.
+std::array<double, 3> worst_reprojection(const std::string& path, const test::TestCamera& camera,
+                                         double eye_height) {
+  std::unique_ptr<GDALDataset> guides(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  EXPECT_TRUE(guides);
+  if (!guides) return {1e9, 1e9, 0};
+  const auto altitude = band(*guides, 1), distance = band(*guides, 2), lon = band(*guides, 3),
+             lat = band(*guides, 4);
+  const test::ProjEnu enu(kEyeLon, kEyeLat, eye_height);
+  std::array<double, 3> worst{0, 0, 0};
+  for (int row = 0; row < camera.height; ++row)
+    for (int col = 0; col < camera.width; ++col) {
+      const size_t i = size_t(row) * size_t(camera.width) + size_t(col);
+      if (std::isnan(distance[i])) continue;
+      ++worst[2];
+      const auto p = enu({lon[i], lat[i]}, altitude[i]);
+      const auto px = camera.project(p);
+      const double range = std::hypot(p[0], p[1], p[2]);
+      worst[0] = std::max(worst[0], std::hypot(px[0] - col, px[1] - row));
+      worst[1] = std::max(worst[1], std::abs(range - distance[i]) / range);
+    }
+  return worst;
+}
+
 TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
   const Fixture& f = fixture();
   const std::string out = f.dir + "/pano.png";
@@ -99,10 +127,11 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
                                               GDT_Byte, 0, 0),
             CE_None);
 
-  const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
-  const test::TestCamera camera{0, -6, 50, 320, 200};
+  const auto [worst_pixel, worst_distance, seen] =
+      worst_reprojection(f.dir + "/pano-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight);
+  EXPECT_LE(worst_pixel, 0.05);  // the guide point lies on the ray through the pixel centre
+  EXPECT_LE(worst_distance, 1e-4);
   size_t terrain = 0, plateau = 0, plateau_edges = 0, sky = 0, same_class = 0, away_from_edge = 0;
-  double worst_pixel = 0, worst_distance = 0;
   for (int row = 0; row < 200; ++row)
     for (int col = 0; col < 320; ++col) {
       const size_t i = size_t(row) * 320 + size_t(col);
@@ -120,24 +149,39 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
         ++away_from_edge;
         same_class += classes[i] == land_cover(lon[i], lat[i]);
       }
-      const auto p = enu({lon[i], lat[i]}, altitude[i]);
-      const auto px = camera.project(p);
-      worst_pixel = std::max(worst_pixel, std::hypot(px[0] - col, px[1] - row));
-      const double range = std::hypot(p[0], p[1], p[2]);
-      worst_distance = std::max(worst_distance, std::abs(range - distance[i]) / range);
       if (altitude[i] > 650) {
         ++plateau;
         plateau_edges += silhouette[i] == 255;
       }
     }
-  EXPECT_LE(worst_pixel, 0.05);  // the guide point lies on the ray through the pixel centre
-  EXPECT_LE(worst_distance, 1e-4);
   EXPECT_EQ(same_class, away_from_edge);
   EXPECT_GT(away_from_edge, terrain * 9 / 10);
   EXPECT_GT(terrain, 320u * 50);  // the plain, the plateau and the sky above the far edge
+  EXPECT_EQ(seen, double(terrain));
   EXPECT_GT(sky, 320u * 20);
   EXPECT_GT(plateau, 500u);
   EXPECT_GT(plateau_edges, 20u);  // the plateau's top edge against the plain behind it
+}
+
+TEST(PanoramaCli, LookAtAboveGroundAimsTheCamera) {
+  // 1400 m above the plain (100 m) is the eye of the other tests; aimed at the plateau's centre,
+  // whose direction PROJ gives here.
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/aimed.png";
+  const auto r =
+      run_maquette("render panorama " + f.store + " " + out + " --dem dem --camera " +
+                   std::to_string(kEyeLon) + " " + std::to_string(kEyeLat) +
+                   " 1400 --above-ground --look-at 10.15 45.15 700 --fov 40 --size " + "321 201");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto target = test::ProjEnu(kEyeLon, kEyeLat, kEyeHeight)({10.15, 45.15}, 700);
+  const double heading = std::atan2(target[0], target[1]) * 180 / std::numbers::pi;
+  const double pitch =
+      std::atan2(target[2], std::hypot(target[0], target[1])) * 180 / std::numbers::pi;
+  const auto [worst_pixel, worst_distance, seen] =
+      worst_reprojection(f.dir + "/aimed-guides.tif", {heading, pitch, 40, 321, 201}, kEyeHeight);
+  EXPECT_LE(worst_pixel, 0.05);
+  EXPECT_LE(worst_distance, 1e-4);
+  EXPECT_GT(seen, 321 * 201 / 2);  // looking down at the plateau: mostly terrain
 }
 
 TEST(PanoramaCli, SameBytesForOneAndTwoThreads) {
