@@ -18,6 +18,19 @@ struct ScreenVertex {
   double inv_z = 0;      // 1 / camera-frame z; 0: not drawable
 };
 
+// A corner of a triangle drawn: on screen, and its barycentric weights in the mesh triangle it
+// is part of (a unit vector at a mesh vertex; between them where the near plane cut it).
+struct DrawnVertex {
+  ScreenVertex screen;
+  std::array<double, 3> weights{};
+};
+
+// A piece of a mesh triangle cut by the near plane.
+struct ClippedTriangle {
+  uint32_t triangle = 0;
+  DrawnVertex v[3];
+};
+
 // Twice the signed area of (a, b, p) in 1/256 square pixels: positive when p is left of a -> b
 // in picture coordinates (y down), i.e. clockwise on the screen.
 int64_t edge(const ScreenVertex& a, const ScreenVertex& b, int64_t px, int64_t py) {
@@ -30,35 +43,142 @@ bool top_left(const ScreenVertex& a, const ScreenVertex& b) {
   return (a.y == b.y && b.x > a.x) || b.y < a.y;
 }
 
+// The screen vertex of a camera-frame point at least `near` in front; inv_z 0 when too far off
+// the picture for the integer edge functions.
+ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
+  const auto p = camera.to_pixel(v);
+  if (!(std::abs(p[0]) < kMaxPixels && std::abs(p[1]) < kMaxPixels)) return {};
+  return {std::llround(p[0] * kOne), std::llround(p[1] * kOne), 1 / v[2]};
+}
+
+// Rows [first, last] whose centre (row + 0.5) may be inside a triangle, within the picture.
+std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& b,
+                                     const ScreenVertex& c, int height) {
+  const int64_t top = (std::min({a.y, b.y, c.y}) - kOne / 2 + kOne - 1) >> kSubpixelBits;
+  const int64_t bottom = (std::max({a.y, b.y, c.y}) - kOne / 2) >> kSubpixelBits;
+  return {std::max<int64_t>(top, 0), std::min<int64_t>(bottom, height - 1)};
+}
+
+// Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1).
+void draw(DrawnVertex v0, DrawnVertex v1, DrawnVertex v2, uint32_t t, int row0, int row1,
+          Fragments& f) {
+  int64_t area = edge(v0.screen, v1.screen, v2.screen.x, v2.screen.y);
+  if (area == 0) return;
+  if (area < 0) {
+    std::swap(v1, v2);
+    area = -area;
+  }
+  const DrawnVertex* v[3] = {&v0, &v1, &v2};
+  const bool tl0 = top_left(v1.screen, v2.screen), tl1 = top_left(v2.screen, v0.screen),
+             tl2 = top_left(v0.screen, v1.screen);
+  const int64_t xmin = std::min({v0.screen.x, v1.screen.x, v2.screen.x}),
+                xmax = std::max({v0.screen.x, v1.screen.x, v2.screen.x});
+  const auto [first, last] = row_span(v0.screen, v1.screen, v2.screen, f.height);
+  const int64_t c0 = std::max<int64_t>(0, (xmin - kOne / 2 + kOne - 1) >> kSubpixelBits);
+  const int64_t c1 = std::min<int64_t>(f.width - 1, (xmax - kOne / 2) >> kSubpixelBits);
+  for (int64_t r = std::max<int64_t>(first, row0); r <= std::min<int64_t>(last, row1 - 1); ++r) {
+    const int64_t py = r * kOne + kOne / 2;
+    for (int64_t c = c0; c <= c1; ++c) {
+      const int64_t px = c * kOne + kOne / 2;
+      const int64_t e[3] = {edge(v1.screen, v2.screen, px, py), edge(v2.screen, v0.screen, px, py),
+                            edge(v0.screen, v1.screen, px, py)};
+      if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
+      if ((e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) || (e[2] == 0 && !tl2)) continue;
+      // Screen-space weights, then perspective-correct ones through 1/z.
+      double w[3], inv_z = 0;
+      for (int k = 0; k < 3; ++k) {
+        w[k] = double(e[k]) / double(area) * v[k]->screen.inv_z;
+        inv_z += w[k];
+      }
+      const double z = 1 / inv_z;
+      const size_t i = size_t(r) * size_t(f.width) + size_t(c);
+      // The nearer wins; on equal depth the lower triangle index, whatever the drawing order.
+      if (z > f.depth[i] || (z == f.depth[i] && t >= f.triangle[i])) continue;
+      double b1 = 0, b2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        b1 += w[k] * v[k]->weights[1];
+        b2 += w[k] * v[k]->weights[2];
+      }
+      f.depth[i] = z;
+      f.triangle[i] = t;
+      f.b1[i] = float(b1 / inv_z);
+      f.b2[i] = float(b2 / inv_z);
+    }
+  }
+}
+
+// The pieces in front of the near plane of a mesh triangle with one or two corners behind it
+// (Sutherland-Hodgman against z = near, in the camera frame), as a fan.
+void clip(const PinholeCamera& camera, const Vec3d (&view)[3], uint32_t t, double near,
+          std::vector<ClippedTriangle>& out) {
+  std::vector<std::pair<Vec3d, std::array<double, 3>>> polygon;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3d& a = view[k];
+    const Vec3d& b = view[(k + 1) % 3];
+    std::array<double, 3> wa{}, wb{};
+    wa[size_t(k)] = 1;
+    wb[size_t((k + 1) % 3)] = 1;
+    if (a[2] >= near) polygon.emplace_back(a, wa);
+    if ((a[2] >= near) != (b[2] >= near)) {
+      const double s = (near - a[2]) / (b[2] - a[2]);
+      Vec3d p;
+      std::array<double, 3> wp;
+      for (size_t j = 0; j < 3; ++j) {
+        p[j] = a[j] + s * (b[j] - a[j]);
+        wp[j] = wa[j] + s * (wb[j] - wa[j]);
+      }
+      p[2] = near;
+      polygon.emplace_back(p, wp);
+    }
+  }
+  std::vector<DrawnVertex> drawn;
+  for (const auto& [p, weights] : polygon) {
+    drawn.push_back({to_screen(camera, p), weights});
+    if (drawn.back().screen.inv_z == 0) return;
+  }
+  for (size_t k = 1; k + 1 < drawn.size(); ++k)
+    out.push_back({t, {drawn[0], drawn[k], drawn[k + 1]}});
+}
+
 }  // namespace
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near) {
   const int w = camera.spec().width, h = camera.spec().height;
   const size_t vertex_count = mesh.positions.size() / 3;
+  std::vector<Vec3d> view(vertex_count);
   std::vector<ScreenVertex> screen(vertex_count);
   tbb::parallel_for(size_t(0), vertex_count, [&](size_t i) {
-    const Vec3d v = camera.to_view(
+    view[i] = camera.to_view(
         {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]});
-    if (!(v[2] >= near)) return;
-    const auto p = camera.to_pixel(v);
-    if (!(std::abs(p[0]) < kMaxPixels && std::abs(p[1]) < kMaxPixels)) return;
-    screen[i] = {std::llround(p[0] * kOne), std::llround(p[1] * kOne), 1 / v[2]};
+    if (view[i][2] >= near) screen[i] = to_screen(camera, view[i]);
   });
 
-  // Triangles by the bands of rows their bounding boxes meet, in index order.
+  // Triangles by the bands of rows their bounding boxes meet: mesh triangles wholly in front of
+  // the near plane by their index t, pieces of cut ones as triangle_count() + their index.
   const int bands = (h + kBandRows - 1) / kBandRows;
   std::vector<std::vector<uint32_t>> band_triangles(static_cast<size_t>(bands));
-  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const auto& a = screen[mesh.indices[3 * t]];
-    const auto& b = screen[mesh.indices[3 * t + 1]];
-    const auto& c = screen[mesh.indices[3 * t + 2]];
-    if (a.inv_z == 0 || b.inv_z == 0 || c.inv_z == 0) continue;
-    // Rows whose centre (row + 0.5) may be inside.
-    const int64_t top = (std::min({a.y, b.y, c.y}) - kOne / 2 + kOne - 1) >> kSubpixelBits;
-    const int64_t bottom = (std::max({a.y, b.y, c.y}) - kOne / 2) >> kSubpixelBits;
-    const int64_t first = std::max<int64_t>(top, 0), last = std::min<int64_t>(bottom, h - 1);
+  auto bin = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t id) {
+    const auto [first, last] = row_span(a, b, c, h);
     for (int64_t band = first / kBandRows; band <= last / kBandRows && first <= last; ++band)
-      band_triangles[size_t(band)].push_back(uint32_t(t));
+      band_triangles[size_t(band)].push_back(id);
+  };
+  std::vector<ClippedTriangle> clipped;
+  const size_t triangles = mesh.triangle_count();
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t* i = &mesh.indices[3 * t];
+    const Vec3d corners[3] = {view[i[0]], view[i[1]], view[i[2]]};
+    const int in_front =
+        (corners[0][2] >= near) + (corners[1][2] >= near) + (corners[2][2] >= near);
+    if (in_front == 3) {
+      if (screen[i[0]].inv_z != 0 && screen[i[1]].inv_z != 0 && screen[i[2]].inv_z != 0)
+        bin(screen[i[0]], screen[i[1]], screen[i[2]], uint32_t(t));
+    } else if (in_front > 0) {
+      const size_t before = clipped.size();
+      clip(camera, corners, uint32_t(t), near, clipped);
+      for (size_t k = before; k < clipped.size(); ++k)
+        bin(clipped[k].v[0].screen, clipped[k].v[1].screen, clipped[k].v[2].screen,
+            uint32_t(triangles + k));
+    }
   }
 
   Fragments f;
@@ -71,47 +191,15 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
   f.b2.assign(n, 0);
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = band * kBandRows, row1 = std::min(h, row0 + kBandRows);
-    for (const uint32_t t : band_triangles[size_t(band)]) {
-      ScreenVertex v[3] = {screen[mesh.indices[3 * t]], screen[mesh.indices[3 * t + 1]],
-                           screen[mesh.indices[3 * t + 2]]};
-      int64_t area = edge(v[0], v[1], v[2].x, v[2].y);
-      if (area == 0) continue;
-      bool swapped = area < 0;  // keeps b1, b2 naming the triangle's own 2nd and 3rd vertex
-      if (swapped) {
-        std::swap(v[1], v[2]);
-        area = -area;
+    for (const uint32_t id : band_triangles[size_t(band)]) {
+      if (id >= triangles) {
+        const ClippedTriangle& c = clipped[id - triangles];
+        draw(c.v[0], c.v[1], c.v[2], c.triangle, row0, row1, f);
+        continue;
       }
-      const bool tl0 = top_left(v[1], v[2]), tl1 = top_left(v[2], v[0]), tl2 = top_left(v[0], v[1]);
-      const int64_t xmin = std::min({v[0].x, v[1].x, v[2].x}),
-                    xmax = std::max({v[0].x, v[1].x, v[2].x});
-      const int64_t ymin = std::min({v[0].y, v[1].y, v[2].y}),
-                    ymax = std::max({v[0].y, v[1].y, v[2].y});
-      const int64_t c0 = std::max<int64_t>(0, (xmin - kOne / 2 + kOne - 1) >> kSubpixelBits);
-      const int64_t c1 = std::min<int64_t>(w - 1, (xmax - kOne / 2) >> kSubpixelBits);
-      const int64_t r0 = std::max<int64_t>(row0, (ymin - kOne / 2 + kOne - 1) >> kSubpixelBits);
-      const int64_t r1 = std::min<int64_t>(row1 - 1, (ymax - kOne / 2) >> kSubpixelBits);
-      for (int64_t r = r0; r <= r1; ++r) {
-        const int64_t py = r * kOne + kOne / 2;
-        for (int64_t c = c0; c <= c1; ++c) {
-          const int64_t px = c * kOne + kOne / 2;
-          const int64_t e0 = edge(v[1], v[2], px, py), e1 = edge(v[2], v[0], px, py),
-                        e2 = edge(v[0], v[1], px, py);
-          if (e0 < 0 || e1 < 0 || e2 < 0) continue;
-          if ((e0 == 0 && !tl0) || (e1 == 0 && !tl1) || (e2 == 0 && !tl2)) continue;
-          // Screen-space weights, then perspective-correct ones through 1/z.
-          const double w0 = double(e0) / double(area) * v[0].inv_z,
-                       w1 = double(e1) / double(area) * v[1].inv_z,
-                       w2 = double(e2) / double(area) * v[2].inv_z;
-          const double inv_z = w0 + w1 + w2;
-          const double z = 1 / inv_z;
-          const size_t i = size_t(r) * size_t(w) + size_t(c);
-          if (!(z < f.depth[i])) continue;  // equal depth: the lower index, drawn first, stays
-          f.depth[i] = z;
-          f.triangle[i] = t;
-          f.b1[i] = float((swapped ? w2 : w1) / inv_z);
-          f.b2[i] = float((swapped ? w1 : w2) / inv_z);
-        }
-      }
+      const uint32_t* i = &mesh.indices[3 * size_t(id)];
+      draw({screen[i[0]], {1, 0, 0}}, {screen[i[1]], {0, 1, 0}}, {screen[i[2]], {0, 0, 1}}, id,
+           row0, row1, f);
     }
   });
   return f;

@@ -5,10 +5,10 @@
 // the camera-frame z, interpolated perspective-correctly; the nearer surface wins, and on equal
 // depth the lower triangle index. Rows are split into bands of 8, each band rasterized by one
 // oneTBB task over its triangles in index order, writing only its own rows: the result is the
-// same bits for any number of threads.
-// Limits of this first renderer: a triangle with a vertex less than `near` metres in front of the
-// eye, or projected further than 2^22 pixels from the picture, is left out (no near-plane
-// clipping), and there is no back-face culling.
+// same bits for any number of threads (the tie rule does not depend on the drawing order).
+// Triangles are clipped at `near` metres in front of the eye (the pieces keep their barycentric
+// weights in the mesh triangle); a triangle (or piece) with a corner projected further than 2^22
+// pixels from the picture is left out. There is no back-face culling.
 #pragma once
 
 #include <cstdint>

@@ -17,9 +17,9 @@ namespace {
 
 using V3 = std::array<double, 3>;
 
-// A 300 x 300 x 200 m box whose top is 100 m below the eye, on a 2 x 3.2 km plane 300 m below it
-// (wholly in front of the eye: the rasterizer does not clip at the near plane); triangles 0-1
-// the plane, 2-3 the box's top, then its four sides.
+// A 300 x 300 x 200 m box whose top is 100 m below the eye, on a 4 x 4 km plane 300 m below it
+// that reaches behind the eye (its triangles cut by the near plane); triangles 0-1 the plane, 2-3
+// the box's top, then its four sides.
 RenderMesh box_on_plane() {
   RenderMesh m;
   auto vertex = [&m](double x, double y, double z) {
@@ -29,8 +29,8 @@ RenderMesh box_on_plane() {
   auto quad = [&m](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
     m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
   };
-  quad(vertex(-600, 300, -300), vertex(1400, 300, -300), vertex(1400, 3500, -300),
-       vertex(-600, 3500, -300));
+  quad(vertex(-2000, -500, -300), vertex(2000, -500, -300), vertex(2000, 3500, -300),
+       vertex(-2000, 3500, -300));
   const double x0 = -50, x1 = 250, y0 = 800, y1 = 1100, z0 = -300, z1 = -100;
   uint32_t top[4] = {vertex(x0, y0, z1), vertex(x1, y0, z1), vertex(x1, y1, z1),
                      vertex(x0, y1, z1)};
