@@ -14,7 +14,8 @@ namespace {
 struct PanoramaOptions {
   std::string store, out;
   PanoramaJob job;
-  std::vector<double> camera, look_at, size{1600, 900}, sun{315, 45};
+  std::vector<double> camera, look_at, sun{315, 45};
+  std::vector<int> size{1600, 900};
   int threads = 0;
 };
 
@@ -22,8 +23,8 @@ void run(const PanoramaOptions& o) {
   PanoramaJob job = o.job;
   job.camera.eye = {o.camera[0], o.camera[1], o.camera[2]};
   if (!o.look_at.empty()) job.look_at = GeodeticPoint{o.look_at[0], o.look_at[1], o.look_at[2]};
-  job.camera.width = int(o.size[0]);
-  job.camera.height = int(o.size[1]);
+  job.camera.width = o.size[0];
+  job.camera.height = o.size[1];
   job.sun_azimuth = o.sun[0];
   job.sun_altitude = o.sun[1];
   const size_t threads =

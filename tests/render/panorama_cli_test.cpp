@@ -3,7 +3,8 @@
 // pinhole puts back on that pixel's centre (<= 0.05 px) at the guide's distance (PROJ's
 // east-north-up frame, not the program's GeographicLib), the plateau's edge drawn as a
 // silhouette, the land-cover guide the class at the guide's lon/lat; --look-at and --above-ground
-// aim and place the camera where PROJ says; the same bytes for 1 and 2 threads; bad input named.
+// aim and place the camera where PROJ says, --exaggeration scales the heights; the same bytes for 1
+// and 2 threads; bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -79,11 +80,12 @@ std::vector<double> band(GDALDataset& ds, int b) {
 }
 
 // The guides of `path` (bands altitude, distance, lon, lat): the largest distance (pixels) from a
-// terrain pixel's centre to where `camera`, at the eye, puts the point its guides name, and the
+// terrain pixel's centre to where `camera`, at the eye, puts the point its guides name (its
+// altitude times `exaggeration`: heights here are above the ellipsoid), and the
 // largest relative error of its distance, both measured in PROJ's east-north-up frame; and the
 // number of terrain pixels.
 std::array<double, 3> worst_reprojection(const std::string& path, const test::TestCamera& camera,
-                                         double eye_height) {
+                                         double eye_height, double exaggeration = 1) {
   std::unique_ptr<GDALDataset> guides(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
   EXPECT_TRUE(guides);
   if (!guides) return {1e9, 1e9, 0};
@@ -96,7 +98,7 @@ std::array<double, 3> worst_reprojection(const std::string& path, const test::Te
       const size_t i = size_t(row) * size_t(camera.width) + size_t(col);
       if (std::isnan(distance[i])) continue;
       ++worst[2];
-      const auto p = enu({lon[i], lat[i]}, altitude[i]);
+      const auto p = enu({lon[i], lat[i]}, altitude[i] * exaggeration);
       const auto px = camera.project(p);
       const double range = std::hypot(p[0], p[1], p[2]);
       worst[0] = std::max(worst[0], std::hypot(px[0] - col, px[1] - row));
@@ -182,6 +184,21 @@ TEST(PanoramaCli, LookAtAboveGroundAimsTheCamera) {
   EXPECT_LE(worst_pixel, 0.05);
   EXPECT_LE(worst_distance, 1e-4);
   EXPECT_GT(seen, 321 * 201 / 2);  // looking down at the plateau: mostly terrain
+}
+
+TEST(PanoramaCli, ExaggeratedHeights) {
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/tall.png";
+  const auto r = run_maquette(f.render(out, std::string(kView) + " --exaggeration 1.8"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto [worst_pixel, worst_distance, seen] =
+      worst_reprojection(f.dir + "/tall-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight, 1.8);
+  EXPECT_LE(worst_pixel, 0.05);
+  EXPECT_LE(worst_distance, 1e-4);
+  EXPECT_GT(seen, 320 * 50);
+  // Without the exaggeration the same guides miss their pixels.
+  EXPECT_GT(worst_reprojection(f.dir + "/tall-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight)[0],
+            5.0);
 }
 
 TEST(PanoramaCli, SameBytesForOneAndTwoThreads) {
