@@ -46,7 +46,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   if (look.land_cover) p.land_cover.assign(n, NAN);
   p.silhouette.assign(n, 0);
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
-  const Rgb sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
+  const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   tbb::enumerable_thread_specific<Samplers> samplers([&] {
     Samplers s;
     if (look.texture) s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
@@ -86,8 +86,8 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         if (s.land_cover->sample(ll, grid.cell_from_point(ll, look.land_cover->level), &label))
           p.land_cover[i] = label;
       }
-      const Rgb normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
-                       interpolate(scene.normals, 3, 2)};
+      const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
+                         interpolate(scene.normals, 3, 2)};
       const double len =
           std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       const double lit =

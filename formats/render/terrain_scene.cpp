@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/halo.h"
@@ -12,6 +13,8 @@
 
 namespace maquette {
 namespace {
+
+constexpr uint32_t kNoVertex = std::numeric_limits<uint32_t>::max();
 
 // One tile's share of the mesh, with indices local to its vertices.
 TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell,
@@ -27,7 +30,7 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
       });
   const TileFrame frame(grid, cell, n);
   const int side = n + 1;  // samples 0 .. n (n: the halo's)
-  std::vector<uint32_t> vertex(size_t(side) * size_t(side), Fragments::kSky);
+  std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
   TerrainScene part;
   for (int r = 0; r <= n; ++r)
     for (int c = 0; c <= n; ++c) {
@@ -42,7 +45,7 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
       part.altitude.push_back(z);
     }
   auto at = [&](int c, int r) {
-    return c < 0 || r < 0 || c > n || r > n ? Fragments::kSky
+    return c < 0 || r < 0 || c > n || r > n ? kNoVertex
                                             : vertex[size_t(r) * size_t(side) + size_t(c)];
   };
   // Normals: the cross product of the column and row differences, turned up.
@@ -50,15 +53,15 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
   for (int r = 0; r <= n; ++r)
     for (int c = 0; c <= n; ++c) {
       const uint32_t v = at(c, r);
-      if (v == Fragments::kSky) continue;
+      if (v == kNoVertex) continue;
       auto diff = [&](uint32_t a, uint32_t b) {
         const double* pa = &part.mesh.positions[3 * size_t(a)];
         const double* pb = &part.mesh.positions[3 * size_t(b)];
         return Vec3d{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
       };
       auto span = [&](uint32_t before, uint32_t after) {
-        if (before == Fragments::kSky) before = v;
-        if (after == Fragments::kSky) after = v;
+        if (before == kNoVertex) before = v;
+        if (after == kNoVertex) after = v;
         return diff(before, after);
       };
       const Vec3d u = span(at(c - 1, r), at(c + 1, r)), w = span(at(c, r - 1), at(c, r + 1));
@@ -75,9 +78,7 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c) {
       const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
-      if (a == Fragments::kSky || b == Fragments::kSky || d == Fragments::kSky ||
-          e == Fragments::kSky)
-        continue;
+      if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
       part.mesh.indices.insert(part.mesh.indices.end(), {a, b, e, a, e, d});
     }
   return part;
