@@ -2,8 +2,6 @@
 
 #include <ogr_geometry.h>
 
-#include <GeographicLib/Geodesic.hpp>
-#include <GeographicLib/PolygonArea.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -166,19 +164,6 @@ Footprint clipped_footprint(const Footprint& footprint, const std::vector<Polygo
     out.south = std::min(out.south, e.MinY), out.north = std::max(out.north, e.MaxY);
   }
   return out;
-}
-
-double footprint_area_m2(const Footprint& footprint) {
-  double area = 0;
-  for (const PolygonRings& rings : footprint.polygons)
-    for (size_t k = 0; k < rings.size(); ++k) {
-      GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());
-      for (const LonLat& p : rings[k]) polygon.AddPoint(p.lat, p.lon);
-      double perimeter = 0, ring_area = 0;
-      polygon.Compute(false, true, perimeter, ring_area);
-      area += (k == 0 ? 1 : -1) * std::abs(ring_area);
-    }
-  return area;
 }
 
 std::vector<CellId> cover_footprint(const Grid& grid, const Footprint& footprint, int level) {

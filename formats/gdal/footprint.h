@@ -30,9 +30,6 @@ Footprint source_footprint(const RasterSource& source);
 // would count billions of cells for a region of a few.
 Footprint clipped_footprint(const Footprint& footprint, const std::vector<PolygonRings>& region);
 
-// The area of the footprint's polygons on the WGS84 ellipsoid (m^2; edges taken as geodesics).
-double footprint_area_m2(const Footprint& footprint);
-
 // Cells at `level` overlapping the footprint, sorted.
 std::vector<CellId> cover_footprint(const Grid& grid, const Footprint& footprint, int level);
 

@@ -125,6 +125,15 @@ void check_size(const RasterIngestPlan& p, int64_t tiles, const std::string& sto
               "or pass --force");
 }
 
+// Cells at `level` in the boxes of a source's part in the region, one box per polygon (a part
+// across the antimeridian is two; a box edge follows a parallel, so a box 360 degrees wide is
+// not a polygon of area 0 here).
+double part_cells_estimate(const Footprint& part, int level) {
+  double cells = 0;
+  for (const PolygonRings& polygon : part.polygons) cells += cover_size_estimate({polygon}, level);
+  return cells;
+}
+
 }  // namespace
 
 RasterIngestPlan plan_raster_ingest(const std::string& store_path,
@@ -188,14 +197,14 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
                   " does not overlap the sources (" + where + ")");
     }
   }
-  // A first estimate from the ground area, before covering: a cover at a level far too fine
-  // would itself exhaust memory.
-  double ground_m2 = 0;
+  // A first estimate before covering, since a cover at a level far too fine would itself
+  // exhaust memory: from each source's ground area, or from its part in the region.
+  double rough_tiles = 0;
   for (size_t i = 0; i < p.sources.size(); ++i)
-    ground_m2 += region.empty() ? double(p.sources[i].width) * p.sources[i].height *
-                                      std::pow(ground_pixel_m(p.sources[i]), 2)
-                                : footprint_area_m2(parts[i]);
-  const double rough_tiles = ground_m2 / grid.area(level);
+    rough_tiles += region.empty() ? double(p.sources[i].width) * p.sources[i].height *
+                                        std::pow(ground_pixel_m(p.sources[i]), 2) /
+                                        grid.area(level)
+                                  : part_cells_estimate(parts[i], level);
   if (rough_tiles > 4.0 * kMaxIngestTiles) check_size(p, int64_t(rough_tiles), store_path, o.force);
 
   for (const Footprint& f : parts) {

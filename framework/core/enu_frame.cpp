@@ -18,7 +18,7 @@ std::array<double, 3> EnuFrame::to_enu(double lon, double lat, double height) co
 std::array<double, 3> EnuFrame::to_enu(double lon, double lat, double height,
                                        std::array<double, 9>& axes) const {
   std::array<double, 3> p;
-  std::vector<double> m(axes.size());
+  thread_local std::vector<double> m(axes.size());  // Forward's matrix: no allocation per point
   frame_->Forward(lat, lon, height, p[0], p[1], p[2], m);
   std::copy(m.begin(), m.end(), axes.begin());
   return p;

@@ -96,15 +96,17 @@ std::optional<FaceCoord> UnfoldedFaces::from_anchor(int64_t col, int64_t row) co
 }
 
 std::optional<UnfoldedFaces::FacePoint> UnfoldedFaces::from_anchor(double col, double row) const {
-  const auto c0 = int64_t(std::floor(col)), r0 = int64_t(std::floor(row));
-  for (const auto& [dc, dr] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}}) {
-    const auto e = strip_at(c0 + dc, r0 + dr);
+  // The nearest pixel: the two nearest when the point is on a boundary between pixels.
+  const auto c_low = int64_t(std::ceil(col - 0.5)), c_high = int64_t(std::floor(col + 0.5));
+  const auto r_low = int64_t(std::ceil(row - 0.5)), r_high = int64_t(std::floor(row + 0.5));
+  for (const auto& [c, r] : {std::pair{c_low, r_low}, {c_high, r_low}, {c_low, r_high}, {c_high, r_high}}) {
+    const auto e = strip_at(c, r);
     if (!e) continue;
     if (*e == kAnchorStrip) return FacePoint{anchor_, col, row};
     // The pixel's face coordinates plus the offset from its centre, turned as the face is.
-    const FaceCoord pixel = *from_anchor(c0 + dc, r0 + dr);
+    const FaceCoord pixel = *from_anchor(c, r);
     const auto& turn = edges_[*e].turn;
-    const double oc = col - double(c0 + dc), orow = row - double(r0 + dr);
+    const double oc = col - double(c), orow = row - double(r);
     return FacePoint{pixel.face,
                      double(pixel.col) + double(turn[0][0]) * oc + double(turn[0][1]) * orow,
                      double(pixel.row) + double(turn[1][0]) * oc + double(turn[1][1]) * orow};

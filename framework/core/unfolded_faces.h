@@ -42,10 +42,11 @@ class UnfoldedFaces {
     int face = 0;
     double col = 0, row = 0;
   };
-  // The face point at fractional anchor-frame (col, row): mapped through the first of the four
-  // pixels around it (the pixel at or above-left of it, then right, below, below-right) that has
-  // a place, so a point on a seam or beside a corner gap is read on a face that holds it; nullopt
-  // when none has.
+  // The face point at fractional anchor-frame (col, row): mapped through its nearest pixel (at
+  // most half a pixel away on each axis, so the point lies on that pixel's face); on a boundary
+  // between pixels, through the first of the nearest that has a place (left before right, above
+  // before below), so a point on a seam or beside a corner gap is read on a face that holds it;
+  // nullopt when none has.
   std::optional<FacePoint> from_anchor(double col, double row) const;
 
   // Where the tile of `cell` (`size` pixels a side, level() = cell level + log2(size)) lies: its

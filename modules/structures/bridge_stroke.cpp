@@ -44,8 +44,9 @@ BridgeStroke bridge_stroke(const VectorFeature& f, double default_thickness_m) {
       degrees_apart(b.first_edge.front(), b.second_edge.front()))
     std::reverse(b.second_edge.begin(), b.second_edge.end());
   if (const auto t = f.attributes.find("thickness_m"); t != f.attributes.end()) {
-    if (!t->is_number() || !std::isfinite(t->get<double>()) || !(t->get<double>() > 0))
-      throw Error(where + ": thickness_m: " + t->dump() + " is not a positive number of metres");
+    if (!t->is_number() || !(t->get<double>() > 0) || !(t->get<double>() <= kMaxDeckThicknessM))
+      throw Error(where + ": thickness_m: " + t->dump() + " is not a positive number of metres " +
+                  "up to " + std::to_string(int(kMaxDeckThicknessM)));
     b.thickness_m = t->get<double>();
   }
   return b;

@@ -60,16 +60,23 @@ struct PlaceStroke {
   std::vector<LonLat> ring;  // the outer ring
 };
 
-// The property `name` of the stroke, or its `alias`; nullptr when neither is there. Throws
-// maquette::Error when both are, with different values.
-const json* property(const VectorFeature& f, const std::string& where, const char* name,
-                     const char* alias) {
+// A property of the stroke and the name it was found under (for messages).
+struct NamedProperty {
+  const json* value = nullptr;  // nullptr when absent
+  std::string name;
+};
+
+// The property `name` of the stroke, or its `alias`. Throws maquette::Error when both are, with
+// different values.
+NamedProperty property(const VectorFeature& f, const std::string& where, const char* name,
+                       const char* alias) {
   const auto a = f.attributes.find(name), b = f.attributes.find(alias);
   if (a != f.attributes.end() && b != f.attributes.end() && *a != *b)
     throw Error(where + ": properties '" + name + "' (" + a->dump() + ") and '" + alias + "' (" +
                 b->dump() + ") disagree: give one");
-  if (a != f.attributes.end()) return &*a;
-  return b != f.attributes.end() ? &*b : nullptr;
+  if (a != f.attributes.end()) return {&*a, name};
+  if (b != f.attributes.end()) return {&*b, alias};
+  return {nullptr, name};
 }
 
 PlaceStroke place_stroke(const VectorFeature& f, const std::string& where) {
@@ -87,16 +94,16 @@ PlaceStroke place_stroke(const VectorFeature& f, const std::string& where) {
                 "where it begins), not this " + std::string(geometry_type_name(g.type)));
   for (const GeoPoint& p : *ring) s.ring.push_back({p.lon, p.lat});
   // DESIGN.md's stroke convention names them `object` and `heading`: either name is taken.
-  const json* model = property(f, where, "model", "object");
+  const auto [model, model_name] = property(f, where, "model", "object");
   if (!model || !model->is_string() || model->get<std::string>().empty())
-    throw Error(where + ": property 'model' (the name of a model layer) is " +
+    throw Error(where + ": property '" + model_name + "' (the name of a model layer) is " +
                 (!model ? "missing" : "not a name: " + model->dump()));
   s.model = model->get<std::string>();
-  if (const json* heading = property(f, where, "heading_deg", "heading");
+  if (const auto [heading, heading_name] = property(f, where, "heading_deg", "heading");
       heading && !heading->is_null()) {
     if (!heading->is_number() || !std::isfinite(heading->get<double>()))
-      throw Error(where +
-                  ": property 'heading_deg' is not a number of degrees: " + heading->dump());
+      throw Error(where + ": property '" + heading_name +
+                  "' is not a number of degrees: " + heading->dump());
     s.heading_deg = heading->get<double>();
   }
   return s;

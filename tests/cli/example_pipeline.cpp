@@ -1,6 +1,7 @@
 #include "example_pipeline.h"
 
 #include <fstream>
+#include <stdexcept>
 
 namespace maquette::test {
 
@@ -8,6 +9,7 @@ using nlohmann::json;
 
 json read_json(const std::string& path) {
   std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
   return json::parse(in);
 }
 

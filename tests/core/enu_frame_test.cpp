@@ -85,11 +85,15 @@ TEST(EnuFrame, AxesAreThePointsOwnEastNorthUpInTheFrame) {
   }
 }
 
-TEST(EnuFrame, CopiesGiveTheSameBits) {
-  const EnuFrame frame({-0.134, 51.513, 35.5});
-  const EnuFrame copy = frame;
-  EXPECT_EQ(copy.to_enu(-0.13, 51.52, 40), frame.to_enu(-0.13, 51.52, 40));
-  EXPECT_EQ(copy.to_geodetic(100, -250, 3), frame.to_geodetic(100, -250, 3));
+// Copies share the frame: a copy outlives its source and gives the bits of a frame set up anew.
+TEST(EnuFrame, CopyOutlivesItsSource) {
+  const GeodeticPoint origin{-0.134, 51.513, 35.5};
+  auto source = std::make_unique<EnuFrame>(origin);
+  const EnuFrame copy = *source;
+  source.reset();
+  const EnuFrame fresh(origin);
+  EXPECT_EQ(copy.to_enu(-0.13, 51.52, 40), fresh.to_enu(-0.13, 51.52, 40));
+  EXPECT_EQ(copy.to_geodetic(100, -250, 3), fresh.to_geodetic(100, -250, 3));
 }
 
 }  // namespace

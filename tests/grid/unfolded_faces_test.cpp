@@ -103,6 +103,24 @@ TEST(UnfoldedFaces, NeighbourStripsLieWherePROJPutsThem) {
       worst_m =
           std::max({worst_m, test::distance_m(below, below_proj),
                     test::distance_m(right, right_proj), test::distance_m(between, between_proj)});
+      if (depth > 0) continue;
+      // Points within half a pixel of a pixel of another face: 0.3 pixel past N's right edge
+      // (on P), and 0.2 pixel inside N's top edge (on N).
+      const auto past = plane.from_anchor(double(kN) - 0.2, double(i));
+      const auto inside = plane.from_anchor(double(i), -0.3);
+      ASSERT_TRUE(past && inside);
+      EXPECT_EQ(past->face, 2);
+      EXPECT_EQ(inside->face, 0);
+      const LonLat past_proj = proj_inverse(corner_x + n_face.side - (double(i) + 0.5) * pixel,
+                                            corner_y - 0.3 * pixel);
+      const LonLat inside_proj =
+          proj_inverse(n_face.x_min + (double(i) + 0.5) * pixel, n_face.y_max - 0.2 * pixel);
+      worst_m = std::max(
+          {worst_m,
+           test::distance_m(face_point_lonlat(grid, past->face, past->col, past->row, kLevel),
+                            past_proj),
+           test::distance_m(face_point_lonlat(grid, inside->face, inside->col, inside->row, kLevel),
+                            inside_proj)});
     }
   proj_destroy(pj);
   proj_context_destroy(ctx);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include "core/error.h"
 #include "ingest_fixture.h"
 #include "synthetic_raster.h"
 
@@ -206,6 +207,34 @@ TEST(IngestAccuracy, GlobalSourceInASmallBboxAtAFineLevel) {
         default_grid().cover_bbox(bbox[0], bbox[1], bbox[2], bbox[3], 14, Containment::Overlap);
     EXPECT_GT(want.size(), 4u);
     EXPECT_EQ(store->tile_cells("f"), want) << bbox[0];
+  }
+}
+
+// A box around the globe is refused by the estimate, before the cover is made (a box edge
+// follows a parallel: the box taken as a geodesic polygon has area 0, and the cover of 1e9
+// cells ran out of memory).
+TEST(IngestAccuracy, GlobalBboxAtAFineLevelIsRefusedBeforeCovering) {
+  RasterSpec spec;
+  spec.width = 360;
+  spec.height = 180;
+  spec.geotransform = {-180, 1, 0, 90, 0, -1};
+  spec.crs = "EPSG:4326";
+  const std::string dir = temp_dir(), tif = dir + "/globe.tif";
+  write_raster(tif, spec, [](int, double lon, double lat) { return sphere_field(lon, lat); });
+  for (const std::array<double, 4> bbox : {std::array<double, 4>{-180, -60, 180, 60},
+                                           std::array<double, 4>{-180, -90, 180, 90}}) {
+    RasterIngestOptions o;
+    o.layer = "f";
+    o.as = "raster";
+    o.level = 14;
+    o.bbox = bbox;
+    try {
+      ingest(dir, "global" + std::to_string(int(bbox[1])), {tif}, o);
+      ADD_FAILURE() << "a global box at level 14 was not refused";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("the ingest would write"), std::string::npos)
+          << e.what();
+    }
   }
 }
 

@@ -334,6 +334,21 @@ TEST(PlacePipeline, DesignNamesObjectAndHeadingAreTaken) {
                        "(\"crate\") disagree"),
             std::string::npos)
       << r.err;
+
+  // Errors name the field as the stroke spells it.
+  const Scene bad_heading(
+      json::array({feature(square, {{"object", "box"}, {"heading", "north"}})}));
+  const CliResult h = bad_heading.run();
+  EXPECT_NE(h.exit_code, 0);
+  EXPECT_NE(h.err.find("property 'heading' is not a number of degrees: \"north\""),
+            std::string::npos)
+      << h.err;
+  const Scene bad_object(json::array({feature(square, {{"object", 5}})}));
+  const CliResult o = bad_object.run();
+  EXPECT_NE(o.exit_code, 0);
+  EXPECT_NE(o.err.find("property 'object' (the name of a model layer) is not a name: 5"),
+            std::string::npos)
+      << o.err;
 }
 
 TEST(PlacePipeline, UnknownModelIsNamed) {

@@ -62,6 +62,8 @@ TEST(BridgeStroke, BadStrokesAreNamed) {
                "thickness_m: 0 is not a positive number of metres");
   expect_error(feature({kSouth, kNorth}, {{"thickness_m", "1 m"}}),
                "thickness_m: \"1 m\" is not a positive number of metres");
+  expect_error(feature({kSouth, kNorth}, {{"thickness_m", 250}}),
+               "thickness_m: 250 is not a positive number of metres up to 100");
 }
 
 }  // namespace
