@@ -99,6 +99,38 @@ Nearest nearest_on_outline(const Ring& ring, Point2 q) {
   return best;
 }
 
+// `n` points spaced evenly along the closed ring's perimeter, from its first point: the
+// refinement pairs points with the outline, so a stroke of a few clicked corners (whose pairs
+// leave the similarity undetermined) counts as its outline, and a hand-drawn one as its shape,
+// not as where it was drawn slowly.
+Ring evenly_spaced(const Ring& ring, int n) {
+  double perimeter = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % ring.size()];
+    perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  Ring out;
+  size_t edge = 0;
+  double edge_start = 0;  // arc length at ring[edge]
+  for (int k = 0; k < n; ++k) {
+    const double at = perimeter * k / n;
+    for (;;) {
+      const Point2& a = ring[edge];
+      const Point2& b = ring[(edge + 1) % ring.size()];
+      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      if (at <= edge_start + length || edge + 1 == ring.size()) {
+        const double t = length > 0 ? std::clamp((at - edge_start) / length, 0.0, 1.0) : 0.0;
+        out.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])});
+        break;
+      }
+      edge_start += length;
+      ++edge;
+    }
+  }
+  return out;
+}
+
 // Refines `start` by point-to-line ICP (Chen and Medioni 1992): each stroke point is paired with
 // the nearest point of the placed base outline, and the similarity minimising the squared
 // distances along the pairs' normals is solved for (linear in a, b, t), until it settles. The
@@ -223,8 +255,13 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
                 to.centroid[1] - fit.scale * (s * b[0] + c * b[1])};
   if (options.rotation || !options.refine) return fit;
   const Similarity start{fit.scale * c, fit.scale * s, fit.offset};
-  const Similarity refined =
-      refine_on_outline(open_ring(stroke), open_ring(base), start, std::sqrt(from.major_var));
+  const Similarity refined = refine_on_outline(evenly_spaced(open_ring(stroke), kRefinePoints),
+                                               open_ring(base), start, std::sqrt(from.major_var));
+  // A refinement that leaves the moments' fit far behind has not found the outline (a stroke
+  // that does not trace it): the moments' fit stands.
+  const double scale_change = std::hypot(refined.a, refined.b) / fit.scale;
+  const double shift = std::hypot(refined.t[0] - fit.offset[0], refined.t[1] - fit.offset[1]);
+  if (!(scale_change > 0.8 && scale_change < 1.25 && shift < std::sqrt(to.major_var))) return fit;
   fit.rotation = std::atan2(refined.b, refined.a);
   fit.scale = std::hypot(refined.a, refined.b);
   fit.offset = refined.t;

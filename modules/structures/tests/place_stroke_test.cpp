@@ -404,6 +404,19 @@ TEST(PlaceFit, ExplicitHeadingOverridesTheAxes) {
   EXPECT_NEAR(axes_fit.axis_ratio, b.major_var / b.minor_var, 1e-9);
 }
 
+// A stroke of the footprint's corners only (as a user clicks a polygon, not a hand-drawn ring):
+// the refinement sees the outline, not four points (it once gave scale 24,699 on a rectangle).
+TEST(PlaceFit, StrokeOfCornersOnlyFitsExactly) {
+  for (const Ring& base : {Ring{{0, 0}, {40, 0}, {40, 14}, {0, 14}}, l_ring(30, 20, 12, 8)}) {
+    const Ring stroke = transformed(base, -0.37, 1.6, {-220, 310});
+    const PlaceFit fit = fit_place(stroke, base, {}, "feature 4");
+    EXPECT_NEAR(fit.rotation, -0.37, 1e-9);
+    EXPECT_NEAR(fit.scale, 1.6, 1e-9);
+    EXPECT_NEAR(fit.offset[0], -220, 1e-6);
+    EXPECT_NEAR(fit.offset[1], 310, 1e-6);
+  }
+}
+
 // The geodesic area and side lengths of the ring (GeographicLib's PolygonArea and Geodesic on
 // WGS84) against the tangent plane's.
 void expect_plane_matches_geodesics(const std::vector<LonLat>& ring) {
