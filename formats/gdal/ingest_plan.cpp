@@ -202,8 +202,7 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
   double rough_tiles = 0;
   for (size_t i = 0; i < p.sources.size(); ++i)
     rough_tiles += region.empty() ? double(p.sources[i].width) * p.sources[i].height *
-                                        std::pow(ground_pixel_m(p.sources[i]), 2) /
-                                        grid.area(level)
+                                        std::pow(ground_pixel_m(p.sources[i]), 2) / grid.area(level)
                                   : part_cells_estimate(parts[i], level);
   if (rough_tiles > 4.0 * kMaxIngestTiles) check_size(p, int64_t(rough_tiles), store_path, o.force);
 

@@ -99,7 +99,8 @@ std::optional<UnfoldedFaces::FacePoint> UnfoldedFaces::from_anchor(double col, d
   // The nearest pixel: the two nearest when the point is on a boundary between pixels.
   const auto c_low = int64_t(std::ceil(col - 0.5)), c_high = int64_t(std::floor(col + 0.5));
   const auto r_low = int64_t(std::ceil(row - 0.5)), r_high = int64_t(std::floor(row + 0.5));
-  for (const auto& [c, r] : {std::pair{c_low, r_low}, {c_high, r_low}, {c_low, r_high}, {c_high, r_high}}) {
+  for (const auto& [c, r] :
+       {std::pair{c_low, r_low}, {c_high, r_low}, {c_low, r_high}, {c_high, r_high}}) {
     const auto e = strip_at(c, r);
     if (!e) continue;
     if (*e == kAnchorStrip) return FacePoint{anchor_, col, row};

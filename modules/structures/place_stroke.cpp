@@ -99,34 +99,18 @@ Nearest nearest_on_outline(const Ring& ring, Point2 q) {
   return best;
 }
 
-// `n` points spaced evenly along the closed ring's perimeter, from its first point: the
-// refinement pairs points with the outline, so a stroke of a few clicked corners (whose pairs
-// leave the similarity undetermined) counts as its outline, and a hand-drawn one as its shape,
-// not as where it was drawn slowly.
-Ring evenly_spaced(const Ring& ring, int n) {
-  double perimeter = 0;
+// The closed ring with every edge longer than `step` cut into equal pieces no longer than it:
+// the refinement pairs points with the outline, so a stroke of a few clicked corners (whose
+// pairs would leave the similarity undetermined) counts as its outline; a hand-drawn stroke of
+// short edges keeps its points as drawn.
+Ring densified(const Ring& ring, double step) {
+  Ring out;
   for (size_t i = 0; i < ring.size(); ++i) {
     const Point2& a = ring[i];
     const Point2& b = ring[(i + 1) % ring.size()];
-    perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
-  }
-  Ring out;
-  size_t edge = 0;
-  double edge_start = 0;  // arc length at ring[edge]
-  for (int k = 0; k < n; ++k) {
-    const double at = perimeter * k / n;
-    for (;;) {
-      const Point2& a = ring[edge];
-      const Point2& b = ring[(edge + 1) % ring.size()];
-      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-      if (at <= edge_start + length || edge + 1 == ring.size()) {
-        const double t = length > 0 ? std::clamp((at - edge_start) / length, 0.0, 1.0) : 0.0;
-        out.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])});
-        break;
-      }
-      edge_start += length;
-      ++edge;
-    }
+    const int pieces = std::max(1, int(std::ceil(std::hypot(b[0] - a[0], b[1] - a[1]) / step)));
+    for (int k = 0; k < pieces; ++k)
+      out.push_back({a[0] + (b[0] - a[0]) * k / pieces, a[1] + (b[1] - a[1]) * k / pieces});
   }
   return out;
 }
@@ -255,8 +239,9 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
                 to.centroid[1] - fit.scale * (s * b[0] + c * b[1])};
   if (options.rotation || !options.refine) return fit;
   const Similarity start{fit.scale * c, fit.scale * s, fit.offset};
-  const Similarity refined = refine_on_outline(evenly_spaced(open_ring(stroke), kRefinePoints),
-                                               open_ring(base), start, std::sqrt(from.major_var));
+  const Similarity refined =
+      refine_on_outline(densified(open_ring(stroke), std::sqrt(to.major_var) / kRefineDensity),
+                        open_ring(base), start, std::sqrt(from.major_var));
   // A refinement that leaves the moments' fit far behind has not found the outline (a stroke
   // that does not trace it): the moments' fit stands.
   const double scale_change = std::hypot(refined.a, refined.b) / fit.scale;

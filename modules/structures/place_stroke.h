@@ -40,8 +40,9 @@ struct AreaAxes {
 // a figure-eight's lobes cancel).
 AreaAxes area_axes(const Ring& ring, const std::string& where);
 
-// Points of the stroke the refinement matches, spaced evenly along it.
-inline constexpr int kRefinePoints = 256;
+// The refinement matches the stroke with its edges cut into pieces no longer than the stroke's
+// major standard deviation / kRefineDensity (for a rectangle, its long side / 28).
+inline constexpr double kRefineDensity = 8;
 
 struct PlaceOptions {
   // Smallest major_var / minor_var (of the stroke, and of the base) for the axes to give a
@@ -56,9 +57,9 @@ struct PlaceOptions {
   // as much stays below 0.003; the L-shapes of the tests (base skewness >= 0.11) give >= 0.011.
   double min_skew_product = 0.005;
   // Refine the axes' transform by matching the base's outline to the stroke (ICP, point to
-  // line, on kRefinePoints spaced evenly along the stroke): with 64 points of 2 % noise the
-  // moments alone err up to 3.1 degrees at aspect 1.3, the refined fit 1.2 (README.md gives both
-  // distributions).
+  // line, on the stroke's points and its long edges cut by kRefineDensity): with 64 points of 2 %
+  // noise the moments alone err up to 3.1 degrees at aspect 1.3, the refined fit 1.2 (README.md
+  // gives both distributions).
   bool refine = true;
   // An explicit rotation (radians, counter-clockwise from the model's +x to east) overrides the
   // axes: then a stroke of nearly equal axes is no error.

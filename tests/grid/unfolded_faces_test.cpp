@@ -111,8 +111,8 @@ TEST(UnfoldedFaces, NeighbourStripsLieWherePROJPutsThem) {
       ASSERT_TRUE(past && inside);
       EXPECT_EQ(past->face, 2);
       EXPECT_EQ(inside->face, 0);
-      const LonLat past_proj = proj_inverse(corner_x + n_face.side - (double(i) + 0.5) * pixel,
-                                            corner_y - 0.3 * pixel);
+      const LonLat past_proj =
+          proj_inverse(corner_x + n_face.side - (double(i) + 0.5) * pixel, corner_y - 0.3 * pixel);
       const LonLat inside_proj =
           proj_inverse(n_face.x_min + (double(i) + 0.5) * pixel, n_face.y_max - 0.2 * pixel);
       worst_m = std::max(

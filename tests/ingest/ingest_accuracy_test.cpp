@@ -221,8 +221,8 @@ TEST(IngestAccuracy, GlobalBboxAtAFineLevelIsRefusedBeforeCovering) {
   spec.crs = "EPSG:4326";
   const std::string dir = temp_dir(), tif = dir + "/globe.tif";
   write_raster(tif, spec, [](int, double lon, double lat) { return sphere_field(lon, lat); });
-  for (const std::array<double, 4> bbox : {std::array<double, 4>{-180, -60, 180, 60},
-                                           std::array<double, 4>{-180, -90, 180, 90}}) {
+  for (const std::array<double, 4> bbox :
+       {std::array<double, 4>{-180, -60, 180, 60}, std::array<double, 4>{-180, -90, 180, 90}}) {
     RasterIngestOptions o;
     o.layer = "f";
     o.as = "raster";

@@ -59,9 +59,9 @@ TEST(BridgeStroke, BadStrokesAreNamed) {
   expect_error(feature({{kSouth[0]}, kNorth}, nlohmann::json::object()),
                "geometry: edge 1 has 1 point(s) and fewer than 2 distinct ones: an edge needs 2");
   expect_error(feature({kSouth, kNorth}, {{"thickness_m", 0}}),
-               "thickness_m: 0 is not a positive number of metres");
+               "thickness_m: 0 is not a positive number of metres up to 100");
   expect_error(feature({kSouth, kNorth}, {{"thickness_m", "1 m"}}),
-               "thickness_m: \"1 m\" is not a positive number of metres");
+               "thickness_m: \"1 m\" is not a positive number of metres up to 100");
   expect_error(feature({kSouth, kNorth}, {{"thickness_m", 250}}),
                "thickness_m: 250 is not a positive number of metres up to 100");
 }
