@@ -105,8 +105,10 @@ void mark_deck(const BridgeStroke& b, const StepContext& ctx, const Mosaic& inpu
     c0 = std::min(c0, c), r0 = std::min(r0, r), c1 = std::max(c1, c), r1 = std::max(r1, r);
   }
   const int side = mask.size();
-  for (int r = std::max(0, int(std::floor(r0)) - 2); r <= std::min(side - 1, int(std::floor(r1)) + 2); ++r)
-    for (int c = std::max(0, int(std::floor(c0)) - 2); c <= std::min(side - 1, int(std::floor(c1)) + 2); ++c)
+  for (int r = std::max(0, int(std::floor(r0)) - 2);
+       r <= std::min(side - 1, int(std::floor(r1)) + 2); ++r)
+    for (int c = std::max(0, int(std::floor(c0)) - 2);
+         c <= std::min(side - 1, int(std::floor(c1)) + 2); ++c)
       if (deck.contains(pixel_centre(
               *ctx.grid, {input.face, input.origin_col + c, input.origin_row + r}, input.level)))
         mask.at(c, r) = 1;
