@@ -27,9 +27,8 @@ std::optional<double> number(const char* text) {
 
 std::optional<double> exif_focal_px(GDALDataset& photo) {
   GDALDataset* ds = &photo;
-  const double width = std::max(ds->GetRasterXSize(), ds->GetRasterYSize());
   if (const auto f35 = number(ds->GetMetadataItem("EXIF_FocalLengthIn35mmFilm")))
-    return *f35 * width / 36;
+    return *f35 * std::hypot(ds->GetRasterXSize(), ds->GetRasterYSize()) / kFullFrameDiagonalMm;
   const auto mm = number(ds->GetMetadataItem("EXIF_FocalLength"));
   const auto per_unit = number(ds->GetMetadataItem("EXIF_FocalPlaneXResolution"));
   const auto unit = number(ds->GetMetadataItem("EXIF_FocalPlaneResolutionUnit"));
@@ -61,6 +60,12 @@ Photo read_photo(const std::string& path) {
                    channels, band_map.data(), channels, long(photo.pixels.step), 1,
                    nullptr) != CE_None)
     throw Error(path + ": GDAL cannot read the photo's pixels");
+  // A phone's photo may be stored on its side with a tag to turn it: the clicks are on the
+  // turned picture, the pixels here are not.
+  if (const char* o = ds->GetMetadataItem("EXIF_Orientation"); o && number(o) != 1.0)
+    throw Error(path + ": EXIF_Orientation " + o +
+                ": the photo is shown turned or mirrored; turn its pixels upright first (e.g. "
+                "exiftran -ai) and click on them");
   photo.focal_px = exif_focal_px(*ds);
   return photo;
 }

@@ -16,11 +16,16 @@ struct Photo {
 };
 
 // Any image GDAL reads with 1 band (grey) or 3-4 (RGB, alpha dropped), 8-bit. Throws
-// maquette::Error naming the file when GDAL cannot open or read it, or its bands do not fit.
+// maquette::Error naming the file when GDAL cannot open or read it, its bands do not fit, or its
+// EXIF_Orientation is other than 1 (upright: the clicks would be on a turned picture).
 Photo read_photo(const std::string& path);
 
-// From EXIF_FocalLengthIn35mmFilm (mm on a 36 mm wide frame: f_px = f35 * width_px / 36 for the
-// image's longer side), else EXIF_FocalLength (mm) with EXIF_FocalPlaneXResolution and
+// The diagonal of a 36 x 24 mm frame, by which cameras scale EXIF_FocalLengthIn35mmFilm (the
+// crop factor is a ratio of diagonals).
+inline constexpr double kFullFrameDiagonalMm = 43.266615305567875;
+
+// From EXIF_FocalLengthIn35mmFilm (f_px = f35 * the image's diagonal in pixels /
+// kFullFrameDiagonalMm), else EXIF_FocalLength (mm) with EXIF_FocalPlaneXResolution and
 // EXIF_FocalPlaneResolutionUnit (2: inch, 3: cm; the sensor's pixels per unit), times the image's
 // width over EXIF_PixelXDimension when the photo was resized. Nothing when the photo has neither.
 std::optional<double> exif_focal_px(GDALDataset& photo);

@@ -46,7 +46,8 @@ cv::Mat rectified_texture(const cv::Mat& photo, const PinholeCamera& camera,
   const int height = std::max(2, int(std::lround(per_metre * shrink * f.extent_v)));
   std::vector<cv::Point2f> from, to;
   for (size_t i = 0; i < 4; ++i) {
-    from.emplace_back(float(st[i].x() * width), float(st[i].y() * height));
+    // Texel centres at integers here (OpenCV), at (x + 0.5) / width in texture coordinates.
+    from.emplace_back(float(st[i].x() * width - 0.5), float(st[i].y() * height - 0.5));
     to.emplace_back(float(pixel[i].x()), float(pixel[i].y()));
   }
   // Texels to pixels: warpPerspective then samples the photo at each texel's pixel.

@@ -23,7 +23,7 @@ FacetFrame facet_frame(const PrismFacet& facet);
 
 // The facet as the photo shows it, rectified: the image warped by the homography from texels to
 // pixels (OpenCV warpPerspective, bilinear, the photo's border replicated where the facet leaves
-// it). Texels per metre: those of the facet's most foreshortened side in the photo (its longest
+// it). Texels per metre: those of the facet's least foreshortened side in the photo (its longest
 // projected edge of the bounding box, in pixels, over its length), at most `max_texels` along
 // either side. Precondition: the facet is in front of the camera.
 cv::Mat rectified_texture(const cv::Mat& photo, const PinholeCamera& camera,

@@ -16,7 +16,7 @@ constexpr double kPi = std::numbers::pi;
 struct Random {
   uint64_t state;
   double uniform(double lo, double hi) {
-    return lo + (hi - lo) * double(splitmix64_next(state) >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * unit_interval(splitmix64_next(state));
   }
   double gaussian() {  // Box-Muller
     const double u = uniform(1e-300, 1), v = uniform(0, 2 * kPi);
