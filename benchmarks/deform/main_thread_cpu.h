@@ -1,7 +1,9 @@
 // The deform benchmarks measure the CPU time of every thread (MeasureProcessCPUTime: the work,
 // comparable with a single-threaded run) and report the benchmark thread's own CPU time per
-// iteration as the counter main_cpu_ms: with the parallel parts spread over two cores, the
-// critical path, near the wall time on an idle 2-core machine.
+// iteration as the counter main_cpu_ms: the serial parts plus the main thread's share of the
+// parallel ones. On a loaded machine the main thread takes more than its half of the parallel
+// work, so this overestimates the wall time of an idle 2-core machine; benchmarks/README.md gives
+// the estimate from the profile's parallel fraction beside it.
 #pragma once
 
 #include <benchmark/benchmark.h>
