@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "content/closed_solid.h"
 #include "content/enu_transform.h"
 #include "core/error.h"
 
@@ -70,7 +71,7 @@ MeshObject with_triangles(const MeshObject& o, const std::vector<uint32_t>& indi
   return out;
 }
 
-MeshObject simplified(const MeshObject& o, double max_error_m) {
+MeshObject simplified_once(const MeshObject& o, double max_error_m) {
   const size_t vertices = o.positions.size() / 3;
   const float scale = meshopt_simplifyScale(o.positions.data(), vertices, 3 * sizeof(float));
   // A quarter of the triangles, but not below 4 (a tetrahedron): an object larger than the
@@ -83,6 +84,23 @@ MeshObject simplified(const MeshObject& o, double max_error_m) {
                                   o.positions.data(), vertices, 3 * sizeof(float), target,
                                   relative_error, 0, &achieved));
   return with_triangles(o, indices);
+}
+
+// Edge collapses within the bound can fold a solid (a wall of a building lower than the bound
+// collapsed onto its roof leaves roof triangles without walls, or pushed through other ones:
+// holes and inside-out triangles seen from afar): a closed, outward solid is simplified within
+// ever smaller bounds until it stays one with no crossing triangles, and kept whole when none
+// does.
+constexpr int kSolidAttempts = 4;  // bounds of 1, 1/2, 1/4 and 1/8 of the level's
+
+MeshObject simplified(const MeshObject& o, double max_error_m) {
+  if (!is_closed_outward(o)) return simplified_once(o, max_error_m);
+  for (int attempt = 0; attempt < kSolidAttempts; ++attempt) {
+    MeshObject s = simplified_once(o, std::ldexp(max_error_m, -attempt));
+    s = with_triangles(s, without_fins(s));
+    if (is_closed_outward(s) && !has_crossing_triangles(s)) return s;
+  }
+  return o;
 }
 
 }  // namespace

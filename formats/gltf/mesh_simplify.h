@@ -19,8 +19,12 @@ namespace maquette {
 //   quarter of its triangles, moving its surface by at most half of level.sample_m as
 //   meshoptimizer measures it: the coarsenings of successive levels (samples doubling each
 //   level up) then add up to less than the level's sample (1/2 + 1/4 + ...). It stops earlier
-//   where that bound forbids more; an object left with no triangle is dropped. Vertices are
-//   renumbered in the order the triangles first use them;
+//   where that bound forbids more; an object left with no triangle is dropped. A closed,
+//   outward solid (content/closed_solid.h: buildings, bridge decks) stays one, with no crossing
+//   triangles: when the result is not, the bound is halved (at most three times) and, failing
+//   that, the object is kept
+//   whole, so that a view from afar never sees through a roof. Vertices are renumbered in the
+//   order the triangles first use them (an object kept whole keeps its own);
 // - materials merged (equal ones, images included, become one), each image halved in both
 //   directions (OpenCV, area averaging; at least 1 pixel) and encoded again in its own format.
 // Deterministic: the same children give the same content.
