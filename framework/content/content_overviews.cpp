@@ -30,7 +30,7 @@ std::optional<std::string> instances_overview(const std::vector<std::string>& ch
   std::vector<InstancesContent> decoded;
   for (size_t i = 0; i < children.size(); ++i)
     decoded.push_back(unwrap_instances(children[i], wheres[i]));
-  const InstancesContent thinned = thin_instances(decoded, level.origin, level.depth);
+  const InstancesContent thinned = thin_instances(decoded, level);
   if (thinned.size() == 0) return std::nullopt;
   return wrap_instances(thinned);
 }

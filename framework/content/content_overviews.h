@@ -6,8 +6,9 @@
 //   children's origin heights (summed in child digit order); every position is re-expressed
 //   through ECEF in double (enu_transform.h) and rounded to float once.
 // - Instances (instances_thin.h): the children's instances that the thinning rule keeps at the
-//   parent's depth, bit for bit but for their positions and rotations, re-expressed in the parent
-//   frame.
+//   parent's sample (fewer where they are smaller than it, those kept widened so that the cover
+//   stays), bit for bit but for their positions and rotations, re-expressed in the parent frame,
+//   and their widened scales.
 // - Meshes (plug-in libmaquette_mesh.so, gltf/mesh_simplify.h): each object simplified to about
 //   a quarter of its triangles within half the level's sample, objects smaller than the sample
 //   dropped, textures halved.

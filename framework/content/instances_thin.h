@@ -1,32 +1,46 @@
-// Thinning instances for the coarser levels of an instances layer (content_overviews.h): each
-// level up keeps about 1 in 4, chosen by a rule of the instance alone, never of its cell or of
-// the order instances were written in.
+// Thinning instances for the coarser levels of an instances layer (content_overviews.h), so that
+// a view from afar still shows about the canopy cover a view from near does: where instances are
+// smaller than the level's sample, fewer are kept and each kept one is widened, chosen by a rule
+// of the instance alone, never of its cell or of the order instances were written in.
 //
-// The rule: an instance's key is its object id when the content has provenance, else a hash of
-// its bits as its child cell stores them (prototype name, position, rotation, scale, colour).
-// It survives into the level `depth` levels above the layer's iff bits 2(depth-1) and
-// 2(depth-1)+1 of splitmix64_mix(key) (core/splitmix64.h; keys re-mixed every 32 levels) are both
-// zero. With object ids the key never changes, so the instances of a level are exactly those
-// whose first `depth` bit pairs are all zero, 4^-depth of the layer's, and a subset of the
-// level below.
+// An instance's width: the larger of its horizontal scales (x, y) times its prototype's
+// horizontal extent (the larger side of its bounding box in x and y, built-in prototypes only:
+// content/prototypes.h). Into a parent whose sample is S, an instance of width w survives with
+// the share min(1, (w / S)^2), widened (x and y scales, not the height) by S / w when w < S:
+// the expected area the kept instances cover stays the children's, level after level (an
+// instance widened to S at one level survives 1 in 4 into the next). An instance of a model
+// layer (its size unknown here) survives with the share 1/4 and keeps its scale.
+//
+// The draw: an instance's key is its object id when the content has provenance, else a hash of
+// its bits as its child cell stores them (prototype name, position, rotation, scale, colour); it
+// survives `depth` levels above the layer's iff instance_draw(key, depth) < its share. Kept
+// instances of a level are a subset of the level below's.
 #pragma once
 
 #include <cstdint>
 #include <span>
 
 #include "content/content.h"
+#include "content/content_overviews.h"
 
 namespace maquette {
 
 uint64_t instance_key(const InstancesContent& content, size_t i);
-bool instance_survives(uint64_t key, int depth);
 
-// The children's instances (in child order, then their order) that survive at `depth`, in the
-// frame of `origin`: positions re-expressed through ECEF in double and rounded to float; every
-// other value copied bit for bit. Prototype names are merged in order of first use by a kept
-// instance. Provenance is kept when any child has it (instances of a child without it get an
-// empty one: object id 0, feature id -1).
-InstancesContent thin_instances(std::span<const InstancesContent> children, const EnuOrigin& origin,
-                                int depth);
+// A number in [0, 1) from SplitMix64 (core/splitmix64.h) of the key and the depth: independent
+// draws for the levels of one instance.
+double instance_draw(uint64_t key, int depth);
+
+// The share that survives into a parent of sample `sample_m` for an instance `width_m` wide.
+double instance_share(double width_m, double sample_m);
+
+// The children's instances (in child order, then their order) that survive into `level`, in its
+// frame: positions re-expressed through ECEF in double and rounded to float, rotations turned
+// with the frame, horizontal scales widened as above; colour and prototype copied bit for bit.
+// Prototype names are merged in order of first use by a kept instance. Provenance is kept when
+// any child has it (instances of a child without it get an empty one: object id 0, feature
+// id -1).
+InstancesContent thin_instances(std::span<const InstancesContent> children,
+                                const ContentLevel& level);
 
 }  // namespace maquette

@@ -2,13 +2,18 @@
 // run` (its sources at their absolute paths: ../../shared is SHARED, other paths the examples'),
 // exports the same terrain again without content, and opens both tilesets with the page of
 // tests/viewer/cesium (offline, no ion) in headless chromium, seen from one oblique camera over
-// Soho. Checks: every tile loads, no console error or failed request, nothing asked of another
-// host; the buildings are drawn: at the roof centre of at least 90 % of the footprints (the
-// shared file's, less those in the vegetation strokes) the frame differs from the terrain alone;
-// trees are drawn (one per spacing^2, seen obliquely, partly behind blocks: 9-16 % measured):
-// over at least 5 % of each vegetation stroke the frame differs from the
-// terrain alone and is foliage (green above red and blue). Screenshots: OUT/campus.png and
-// OUT/campus-terrain.png.
+// Soho, and from a second camera about 2 km away, where CesiumJS draws the coarser levels
+// (content overviews: simplified buildings, thinned and widened trees). Checks: every tile
+// loads, no console error or failed request, nothing asked of another host; near: the buildings
+// are drawn: at the roof centre of at least 90 % of the footprints (the shared file's, less
+// those in the vegetation strokes) the frame differs from the terrain alone; trees are drawn:
+// over at least 5 % of each vegetation stroke the frame differs from the terrain alone and is
+// foliage (green above red and blue; 49-62 % measured, 9-16 % when the coarser levels kept 1 tree
+// in 4 per level whatever its size). Far: no roof is seen through (of the pixels inside the
+// roofs' outlines, those showing the terrain alone are under 1 %: 0 measured; collapsed blocks
+// left holes before), and each stroke still shows trees over at least 5 % of it (51-70 %
+// measured; none were left at level 11 before). Screenshots: OUT/campus.png,
+// OUT/campus-terrain.png, OUT/campus-far.png and OUT/campus-far-terrain.png.
 //
 // node campus_cesium.mjs --maquette BIN --page DIR --node-modules DIR --example JSON
 //   --shared DIR --out DIR
@@ -36,6 +41,9 @@ const check = checks.check.bind(checks);
 // The oblique camera: 330 m above the ground south of Golden Square, looking north-north-east
 // 35 degrees down, near enough for Cesium to draw the finest tiles, where the trees are.
 const CAMERA = { lon: -0.1372, lat: 51.5080, height: 400, heading: 20, pitch: -35 };
+// The far camera: 900 m up, 1.9 km south of Golden Square and 2.3 km of Soho Square, looking
+// north 30 degrees down: CesiumJS draws levels 10 and 11 there (geometric errors 35 and 18 m).
+const FAR_CAMERA = { lon: -0.1374, lat: 51.4970, height: 900, heading: 0, pitch: -30 };
 const GROUND = 71;  // the ground above the ellipsoid: 25 m above EGM96, whose geoid is ~46 m up here
 
 function maquette(...argv) {
@@ -76,8 +84,8 @@ function insideRing([x, y], ring) {
   return inside;
 }
 
-// The page: the camera set, then every tile in view loaded for a few frames.
-async function view(b) {
+// The page: `camera` set, then every tile in view loaded for a few frames.
+async function view(b, camera) {
   await b.page.evaluate(async (c) => {
     const C = window.Cesium;
     const { camera, scene } = window.__cesium;
@@ -94,7 +102,7 @@ async function view(b) {
         if (stable === 8) { remove(); clearTimeout(timer); done(); }
       });
     });
-  }, CAMERA);
+  }, camera);
 }
 
 // Window positions (pixels) of lon/lat points at `height` above the ellipsoid.
@@ -106,15 +114,15 @@ function projectPoints(b, points, height) {
   }), [points, height]);
 }
 
-// Opens the tileset in DIR in Cesium at `viewport`, seen from CAMERA; the screenshot's PNG, and
+// Opens the tileset in DIR in Cesium at `viewport`, seen from `camera`; the screenshot's PNG, and
 // what `project(browser)` finds on the page (window positions).
-async function render(name, dir, viewport, project, file) {
+async function render(name, dir, viewport, camera, project, file) {
   const server = await startView(args.maquette, dir, args.page);
   const b = await launchBrowser(args['node-modules'], viewport);
   try {
     await b.page.goto(server.url, { waitUntil: 'load' });
     await waitLoaded(b, name, out, () => ({ error: document.documentElement.dataset.error }), 180000);
-    await view(b);
+    await view(b, camera);
     const error = await b.page.evaluate(() => document.documentElement.dataset.error);
     check(!error, `${name}: Cesium loaded the tileset and every tile in view ${error || ''}`);
     await b.page.addStyleTag({ content: '.cesium-viewer-bottom { display: none; }' });
@@ -143,6 +151,26 @@ function difference(a, b, [x, y]) {
   return sum / n;
 }
 
+// The largest channel difference between two screenshots at pixel (x, y).
+function pixelDifference(a, b, x, y) {
+  const k = 4 * (y * a.width + x);
+  return Math.max(...[0, 1, 2].map((c) => Math.abs(a.data[k + c] - b.data[k + c])));
+}
+
+// Calls visit(x, y) for the pixels inside the window polygon `ring` (window positions) whose
+// neighbours `margin` pixels away on either side are inside too (edges blend with what is
+// beside them).
+function insidePixels(png, ring, margin, visit) {
+  const xs = ring.map((p) => p[0]), ys = ring.map((p) => p[1]);
+  const inside = (x, y) => insideRing([x, y], ring);
+  for (let y = Math.max(2, Math.floor(Math.min(...ys))); y <= Math.min(png.height - 3, Math.max(...ys)); y++) {
+    for (let x = Math.max(2, Math.floor(Math.min(...xs))); x <= Math.min(png.width - 3, Math.max(...xs)); x++) {
+      if (inside(x, y) && inside(x - margin, y) && inside(x + margin, y) && inside(x, y - margin)
+        && inside(x, y + margin)) visit(x, y);
+    }
+  }
+}
+
 const onScreen = (png) => (p) => p && p[0] >= 2 && p[1] >= 2 && p[0] < png.width - 2 && p[1] < png.height - 2;
 const isFoliage = (r, g, bl) => g > r + 8 && g > bl + 8;
 
@@ -150,17 +178,23 @@ const isFoliage = (r, g, bl) => g > r + 8 && g > bl + 8;
 // with content differs from the terrain alone and shows foliage: the trees there (the buildings
 // are white, the terrain's olive is the same in both frames).
 function treeCover(full, bare, ring) {
-  const xs = ring.map((p) => p[0]), ys = ring.map((p) => p[1]);
   let inside = 0, trees = 0;
-  for (let y = Math.max(2, Math.floor(Math.min(...ys))); y <= Math.min(full.height - 3, Math.max(...ys)); y++) {
-    for (let x = Math.max(2, Math.floor(Math.min(...xs))); x <= Math.min(full.width - 3, Math.max(...xs)); x++) {
-      if (!insideRing([x, y], ring)) continue;
-      inside++;
-      const k = 4 * (y * full.width + x);
-      trees += difference(full, bare, [x, y]) > 12 && isFoliage(full.data[k], full.data[k + 1], full.data[k + 2]);
-    }
-  }
+  insidePixels(full, ring, 0, (x, y) => {
+    inside++;
+    const k = 4 * (y * full.width + x);
+    trees += difference(full, bare, [x, y]) > 12 && isFoliage(full.data[k], full.data[k + 1], full.data[k + 2]);
+  });
   return inside ? trees / inside : 0;
+}
+
+// Checks each stroke's outline is in the frame and trees cover more than 5 % of it.
+function checkTrees(what, shot, bare, strokes) {
+  shot.screen.outlines.forEach((ring, i) => {
+    const name = `${what}: ${strokes[i].properties.name}`;
+    if (!check(ring.every(onScreen(shot.png)), `${name} in the frame`)) return;
+    const cover = treeCover(shot.png, bare.png, ring);
+    check(cover > 0.05, `${name}: trees cover ${(100 * cover).toFixed(1)} % of it (> 5 %)`);
+  });
 }
 
 let exitCode = 1;
@@ -168,9 +202,11 @@ try {
   const tilesets = runExample();
   const strokes = JSON.parse(readFileSync(join(examples, 'campus-soho/strokes.geojson'), 'utf8')).features
     .filter((f) => f.properties.tool === 'vegetation');
-  const roofs = JSON.parse(readFileSync(footprintsFile, 'utf8')).features
-    .map((f) => centre(f.geometry.coordinates[0]))
-    .filter((c) => !strokes.some((s) => insideRing(c, s.geometry.coordinates[0])));
+  // The blocks' outer rings (the footprints have no courtyards), less those in the strokes.
+  const blocks = JSON.parse(readFileSync(footprintsFile, 'utf8')).features
+    .map((f) => f.geometry.coordinates[0])
+    .filter((ring) => !strokes.some((s) => insideRing(centre(ring), s.geometry.coordinates[0])));
+  const roofs = blocks.map(centre);
   log(`${roofs.length} footprints outside the vegetation strokes`);
   const viewport = { width: 640, height: 400 };
   // The roof centres, and each stroke's outer ring on the ground.
@@ -179,18 +215,32 @@ try {
     roofs: await projectPoints(b, roofs, GROUND + 10),
     outlines: await Promise.all(outlines.map((ring) => projectPoints(b, ring, GROUND))),
   });
-  const full = await render('campus', tilesets.full, viewport, project, join(out, 'campus.png'));
-  const bare = await render('campus-terrain', tilesets.terrain, viewport, project, join(out, 'campus-terrain.png'));
+  const full = await render('campus', tilesets.full, viewport, CAMERA, project, join(out, 'campus.png'));
+  const bare = await render('campus-terrain', tilesets.terrain, viewport, CAMERA, project, join(out, 'campus-terrain.png'));
   const seen = full.screen.roofs.filter(onScreen(full.png));
   const drawn = seen.filter((p) => difference(full.png, bare.png, p) > 12);
   check(seen.length >= 40, `${seen.length} of ${roofs.length} roof centres in the frame (>= 40)`);
   check(drawn.length >= 0.9 * seen.length, `buildings drawn at ${drawn.length} of ${seen.length} roof centres (>= 90 %)`);
-  full.screen.outlines.forEach((ring, i) => {
-    const name = strokes[i].properties.name;
-    if (!check(ring.every(onScreen(full.png)), `${name} in the frame`)) return;
-    const cover = treeCover(full.png, bare.png, ring);
-    check(cover > 0.05, `${name}: trees cover ${(100 * cover).toFixed(1)} % of it (> 5 %)`);
-  });
+  checkTrees('near', full, bare, strokes);
+
+  // From afar: the roofs' outlines at their height (every block is 10 m tall).
+  const farViewport = { width: 960, height: 600 };
+  const outlinesAt = (b) => Promise.all(blocks.map((ring) => projectPoints(b, ring, GROUND + 10)));
+  const farProject = async (b) => ({ ...await project(b), roofs: await outlinesAt(b) });
+  const far = await render('campus-far', tilesets.full, farViewport, FAR_CAMERA, farProject, join(out, 'campus-far.png'));
+  const farBare = await render('campus-far-terrain', tilesets.terrain, farViewport, FAR_CAMERA, farProject, join(out, 'campus-far-terrain.png'));
+  let roofPixels = 0, seeThrough = 0;
+  for (const ring of far.screen.roofs) {
+    if (!ring.every(onScreen(far.png))) continue;
+    insidePixels(far.png, ring, 1, (x, y) => {
+      roofPixels++;
+      seeThrough += pixelDifference(far.png, farBare.png, x, y) <= 12;
+    });
+  }
+  check(roofPixels > 5000, `far: ${roofPixels} pixels inside the roofs' outlines (> 5,000)`);
+  check(seeThrough < 0.01 * roofPixels,
+    `far: ${seeThrough} of them (${(100 * seeThrough / roofPixels).toFixed(2)} %) show the terrain alone (< 1 %)`);
+  checkTrees('far', far, farBare, strokes);
   exitCode = checks.failures.length ? 1 : 0;
 } catch (e) {
   log(`FAIL ${e.stack || e}`);
