@@ -44,7 +44,7 @@ uint64_t instance_key(const InstancesContent& c, size_t i) {
 }
 
 double instance_draw(uint64_t key, int depth) {
-  return double(splitmix64_mix(key + uint64_t(depth) * kSplitMix64Gamma) >> 11) * 0x1p-53;
+  return unit_interval(splitmix64_mix(key + uint64_t(depth) * kSplitMix64Gamma));
 }
 
 double instance_share(double width_m, double sample_m) {
@@ -67,7 +67,8 @@ InstancesContent thin_instances(std::span<const InstancesContent> children,
       if (name.starts_with(kBuiltinPrototypePrefix)) {
         auto [at, added] = extents.try_emplace(name, 0.0);
         if (added) at->second = horizontal_extent(builtin_prototype(name));
-        const double width = at->second * std::max(c.scale[3 * i], c.scale[3 * i + 1]);
+        const double width =
+            at->second * std::max(std::abs(c.scale[3 * i]), std::abs(c.scale[3 * i + 1]));
         share = instance_share(width, level.sample_m);
         widen = std::max(1.0, level.sample_m / width);
       }

@@ -3,7 +3,7 @@
 // smaller than the level's sample, fewer are kept and each kept one is widened, chosen by a rule
 // of the instance alone, never of its cell or of the order instances were written in.
 //
-// An instance's width: the larger of its horizontal scales (x, y) times its prototype's
+// An instance's width: the larger of its horizontal scales (x, y; absolute) times its prototype's
 // horizontal extent (the larger side of its bounding box in x and y, built-in prototypes only:
 // content/prototypes.h). Into a parent whose sample is S, an instance of width w survives with
 // the share min(1, (w / S)^2), widened (x and y scales, not the height) by S / w when w < S:
@@ -27,8 +27,8 @@ namespace maquette {
 
 uint64_t instance_key(const InstancesContent& content, size_t i);
 
-// A number in [0, 1) from SplitMix64 (core/splitmix64.h) of the key and the depth: independent
-// draws for the levels of one instance.
+// A number in [0, 1) from SplitMix64 (core/splitmix64.h: unit_interval of splitmix64_mix of the
+// key plus depth times its gamma): independent draws for the levels of one instance.
 double instance_draw(uint64_t key, int depth);
 
 // The share that survives into a parent of sample `sample_m` for an instance `width_m` wide.
