@@ -49,6 +49,17 @@ void check_object(const MeshContent& c, size_t i) {
           std::to_string(c.materials.size()));
 }
 
+// The material of objects without one (content.h's default grey, as structures.prism's faces
+// without a texture), written as the GLB's last material: a primitive without a material gets
+// glTF's default one, a white metal, which a viewer without an environment map (three.js, as
+// `maquette view`) draws pure black wherever its sun does not reach. Read back as -1.
+Material default_grey() {
+  Material m;  // not metallic, roughness 1, single-sided
+  m.name = "default grey";
+  m.base_colour = {0.6f, 0.6f, 0.6f, 1};
+  return m;
+}
+
 // Objects drawn by one primitive: one material and one attribute set.
 struct Group {
   int material;
@@ -158,7 +169,7 @@ class PrimitiveWriter {
         buffer_.accessor({{"componentType", n > 65535 ? kUnsignedInt : kUnsignedShort},
                           {"count", d.num_faces() * 3},
                           {"type", "SCALAR"}});
-    if (g.material >= 0) prim["material"] = g.material;
+    prim["material"] = g.material >= 0 ? g.material : int(content_.materials.size());
     prim["extensions"]["KHR_draco_mesh_compression"] = {
         {"bufferView", buffer_.view(stream.data(), stream.size())}, {"attributes", ids}};
     prim["extensions"]["EXT_mesh_features"] = mesh_feature_ids(g.objects.size());
@@ -416,6 +427,8 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
     materials.push_back(content_material(content.materials[i], buffer, images, textures, 0));
     webp |= content.materials[i].image_mime == "image/webp";
   }
+  if (std::ranges::any_of(content.objects, [](const MeshObject& o) { return o.material < 0; }))
+    materials.push_back(content_material(default_grey(), buffer, images, textures, 0));
   PrimitiveWriter writer(content, settings, buffer);
   json primitives = json::array();
   for (const Group& g : groups_of(content)) primitives.push_back(writer.write(g));
@@ -446,6 +459,11 @@ MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
                             const std::string& where) try {
   const GltfDocument doc = parse_gltf(glb, where, {});
   MeshContent out{origin, read_materials(doc), {}};
+  int default_material = -1;  // the GLB's index of default_grey(), if written
+  if (!out.materials.empty() && out.materials.back() == default_grey()) {
+    default_material = int(out.materials.size()) - 1;
+    out.materials.pop_back();
+  }
   const std::vector<ObjectProvenance> provenance = read_metadata(doc);
   out.objects.resize(provenance.size());
   for (size_t i = 0; i < provenance.size(); ++i) out.objects[i].provenance = provenance[i];
@@ -454,7 +472,8 @@ MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
   int primitive = 0;
   for (size_t m = 0; m < meshes.size(); ++m)
     for (size_t i = 0; i < meshes[m].value("primitives", json::array()).size(); ++i, ++primitive) {
-      const GltfPrimitive p = read_primitive(doc, int(m), int(i));
+      GltfPrimitive p = read_primitive(doc, int(m), int(i));
+      if (p.material == default_material) p.material = -1;
       const std::string what =
           "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(i) + "]";
       if (p.material >= int(out.materials.size()))

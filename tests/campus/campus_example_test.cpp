@@ -17,7 +17,8 @@
 // - the canal and footbridge: the bed on the curve's height and the deck's ends on the deformed
 //   DEM as GDAL reads its GeoTIFF export (PROJ's EGM96), the deck's floor above the water;
 // - the 3D Tiles: read as a viewer reads them (regions, Draco decoded, tileset_reader.h), each
-//   content layer shipped, and every GLB valid by the Khronos glTF validator.
+//   content layer shipped, the buildings and the deck drawn with a material that is not a metal
+//   and with decoded normals along their faces', and every GLB valid by the Khronos glTF validator.
 // Skipped when the data is absent.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
@@ -438,6 +439,48 @@ TEST(CampusExample, FootbridgeSpansTheFilledCanalFromBankToBank) {
   EXPECT_GT(lowest, water_ellipsoidal) << "the deck's floor in the water";
   std::printf("footbridge: ends %.1f mm from the deformed DEM, floor %.2f m above the water\n",
               1000 * worst_end, lowest - water_ellipsoidal);
+}
+
+// The buildings and the deck as the viewer draws them: every primitive with a material that is not
+// a metal (glTF's default material, and an absent metallicFactor, mean metallic 1, which three.js
+// without an environment map drew pure black on every wall facing away from its sun), every
+// normal decoded from Draco of unit length and along its face's normal (the decoded positions'
+// cross product: counter-clockwise from outside).
+TEST(CampusExample, BuildingsAndDeckAreLitWhereTheSunDoesNotReach) {
+  REQUIRE_EXAMPLE();
+  const Export out = read_export(example().tiles);
+  size_t checked = 0;
+  for (const auto& [uri, glb] : out.glbs) {
+    if (!uri.ends_with(".buildings.glb") && !uri.ends_with(".bridge.glb")) continue;
+    SCOPED_TRACE(uri);
+    for (const json& prim : glb.json["meshes"][0]["primitives"]) {
+      ASSERT_TRUE(prim.contains("material"));
+      const json& material = glb.json["materials"][prim["material"].get<size_t>()];
+      EXPECT_LT(material["pbrMetallicRoughness"].value("metallicFactor", 1.0), 1);
+    }
+    for (const DecodedPrimitive& p : glb.primitives) {
+      ASSERT_EQ(p.normals.size(), p.positions.size());
+      for (const auto& f : p.faces) {
+        const auto &a = p.positions[f[0]], &b = p.positions[f[1]], &c = p.positions[f[2]];
+        const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+            w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const std::array<double, 3> n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                      u[0] * w[1] - u[1] * w[0]};
+        const double area2 = std::hypot(n[0], n[1], n[2]);
+        if (area2 < 1e-4) continue;  // too small for a direction
+        for (const uint32_t v : f) {
+          const auto& m = p.normals[v];
+          ASSERT_NEAR(std::hypot(m[0], m[1], m[2]), 1, 1e-3);
+          // 1.5 degrees: faces within 1 degree share a normal (facet_normals.h; the overviews'
+          // simplified walls), Draco's 10 bits (0.2), the node's rotation (0.01)
+          EXPECT_GT((m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / area2, std::cos(1.5 * kPi / 180));
+          ++checked;
+        }
+      }
+    }
+  }
+  std::printf("%zu corners' normals checked\n", checked);
+  EXPECT_GT(checked, 10000u);
 }
 
 TEST(CampusExample, TilesetHoldsTheTerrainAndEveryContentLayer) {

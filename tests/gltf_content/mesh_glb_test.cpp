@@ -140,12 +140,33 @@ TEST(MeshGlb, LayoutIsOnePrimitivePerMaterialWithFeatureIdsAndOnePropertyTable) 
   ASSERT_EQ(primitives.size(), 3u);  // material 0 (two boxes), 1, none
   EXPECT_EQ(primitives[0]["material"], 0);
   EXPECT_EQ(primitives[1]["material"], 1);
-  EXPECT_FALSE(primitives[2].contains("material"));
+  EXPECT_EQ(primitives[2]["material"], 2);  // the default grey, after the content's two
   EXPECT_EQ(primitives[0]["extensions"]["EXT_mesh_features"]["featureIds"][0]["featureCount"], 2);
   const json& table = j["extensions"]["EXT_structural_metadata"]["propertyTables"][0];
   EXPECT_EQ(table["count"], 4);
   EXPECT_EQ(j["extensionsRequired"], json::array({"KHR_draco_mesh_compression"}));
   EXPECT_EQ(j["images"][0]["mimeType"], "image/jpeg");
+}
+
+// Every primitive names its material, none a metal: glTF's default material (a primitive without
+// `material`) and an absent metallicFactor mean metallic 1, which three.js without an environment
+// map draws pure black wherever its sun does not reach (the campus picture's walls). The default
+// grey is read back as no material (the round trips above).
+TEST(MeshGlb, ObjectsWithoutAMaterialAreDrawnGreyNotMetal) {
+  const json j = chunks(encode_mesh_glb(town())).first;
+  ASSERT_EQ(j["materials"].size(), 3u);
+  for (const json& prim : j["meshes"][0]["primitives"]) {
+    ASSERT_TRUE(prim.contains("material"));
+    const json& pbr = j["materials"][prim["material"].get<size_t>()]["pbrMetallicRoughness"];
+    EXPECT_LT(pbr.value("metallicFactor", 1.0), 1) << prim["material"];
+  }
+  const json& grey = j["materials"][2];
+  EXPECT_EQ(grey["name"], "default grey");
+  EXPECT_EQ(grey["pbrMetallicRoughness"]["metallicFactor"], 0);
+  EXPECT_EQ(grey["pbrMetallicRoughness"].value("roughnessFactor", 1.0), 1);
+  EXPECT_NEAR(grey["pbrMetallicRoughness"]["baseColorFactor"][0].get<double>(), 0.6, 1e-6);
+  // Content with a material for every object has no default grey.
+  EXPECT_EQ(chunks(encode_mesh_glb(textured_box())).first["materials"].size(), 1u);
 }
 
 // Read as EXT_structural_metadata specifies, without the decoder: the gltf-validator does not
