@@ -185,16 +185,22 @@ TEST(IngestAccuracy, WholeGlobeCoversAllSixFaces) {
   EXPECT_EQ(samples, 6 * 256 * 256);  // no hole anywhere: poles and antimeridian included
 }
 
-// A global source limited to a small --bbox at a fine level: only the bbox's cells, not the globe
-// covered first (2.5 billion cells at level 14); a bbox across the antimeridian takes both sides.
-TEST(IngestAccuracy, GlobalSourceInASmallBboxAtAFineLevel) {
+// A 1-degree lon/lat raster of the whole globe in `dir`; returns its path.
+std::string write_globe(const std::string& dir) {
   RasterSpec spec;
   spec.width = 360;
   spec.height = 180;
   spec.geotransform = {-180, 1, 0, 90, 0, -1};
   spec.crs = "EPSG:4326";
-  const std::string dir = temp_dir(), tif = dir + "/globe.tif";
+  const std::string tif = dir + "/globe.tif";
   write_raster(tif, spec, [](int, double lon, double lat) { return sphere_field(lon, lat); });
+  return tif;
+}
+
+// A global source limited to a small --bbox at a fine level: only the bbox's cells, not the globe
+// covered first (2.5 billion cells at level 14); a bbox across the antimeridian takes both sides.
+TEST(IngestAccuracy, GlobalSourceInASmallBboxAtAFineLevel) {
+  const std::string dir = temp_dir(), tif = write_globe(dir);
   for (const std::array<double, 4> bbox : {std::array<double, 4>{-0.146, 51.507, -0.128, 51.519},
                                            std::array<double, 4>{179.995, -0.01, -179.995, 0.01}}) {
     RasterIngestOptions o;
@@ -214,13 +220,7 @@ TEST(IngestAccuracy, GlobalSourceInASmallBboxAtAFineLevel) {
 // follows a parallel: the box taken as a geodesic polygon has area 0, and the cover of 1e9
 // cells ran out of memory).
 TEST(IngestAccuracy, GlobalBboxAtAFineLevelIsRefusedBeforeCovering) {
-  RasterSpec spec;
-  spec.width = 360;
-  spec.height = 180;
-  spec.geotransform = {-180, 1, 0, 90, 0, -1};
-  spec.crs = "EPSG:4326";
-  const std::string dir = temp_dir(), tif = dir + "/globe.tif";
-  write_raster(tif, spec, [](int, double lon, double lat) { return sphere_field(lon, lat); });
+  const std::string dir = temp_dir(), tif = write_globe(dir);
   for (const std::array<double, 4> bbox :
        {std::array<double, 4>{-180, -60, 180, 60}, std::array<double, 4>{-180, -90, 180, 90}}) {
     RasterIngestOptions o;
