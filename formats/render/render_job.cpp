@@ -50,6 +50,7 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
 
   if (!(job.haze_distance > 0))
     throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
+  check_bend(job.bend);
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
   const auto ground = terrain_ellipsoidal_height(store, grid, dem, at);
@@ -70,7 +71,9 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
     job.camera.pitch = pitch;
   }
   const PinholeCamera camera(job.camera);
-  const TerrainScene scene = build_terrain_scene(store, grid, dem, camera, job.exaggeration);
+  TerrainScene scene = build_terrain_scene(store, grid, dem, camera, job.exaggeration);
+  job.bend.base = ground.value_or(0) - eye.height;  // the ENU up of the ground under the eye
+  bend_positions(scene.mesh.positions, job.bend);
   spdlog::debug("panorama: {} vertices, {} triangles", scene.altitude.size(),
                 scene.mesh.triangle_count());
   const Fragments fragments = rasterize(scene.mesh, camera);

@@ -8,6 +8,7 @@
 #include "core/grid.h"
 #include "render/camera.h"
 #include "render/panorama.h"
+#include "render/progressive_bend.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -18,6 +19,11 @@ struct PanoramaJob {
   bool above_ground = false;             // camera.eye.height is above the terrain
   std::optional<GeodeticPoint> look_at;  // replaces camera.heading and pitch
   double exaggeration = 1;
+  // Its base is set here: the ground under the eye as the DEM gives it, not exaggerated (the
+  // ellipsoid where the DEM has no data there).
+  // The hillshade keeps the unbent terrain's normals, so the bend does not relight the far slopes;
+  // the distance guide is the bent point's, the one drawn.
+  ProgressiveBend bend;
   bool stretch = true;  // render/panorama.h PanoramaLook::stretch
   double haze_distance = 60000;
   double sun_azimuth = 315, sun_altitude = 45;
@@ -25,8 +31,9 @@ struct PanoramaJob {
 
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
 // wrong kind (--dem: a one-channel raster; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
-// categorical), a camera below the terrain (or --above-ground where the DEM has no data), a field
-// of view, pitch or size out of range (render/camera.h).
+// categorical), a bend out of range (render/progressive_bend.h), a camera below the terrain (or
+// --above-ground where the DEM has no data), a field of view, pitch or size out of range
+// (render/camera.h).
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
 
 }  // namespace maquette

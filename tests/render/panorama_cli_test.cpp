@@ -3,14 +3,17 @@
 // pinhole puts back on that pixel's centre (<= 0.05 px) at the guide's distance (PROJ's
 // east-north-up frame, not the program's GeographicLib), the plateau's edge drawn as a
 // silhouette, the land-cover guide the class at the guide's lon/lat; --look-at and --above-ground
-// aim and place the camera where PROJ says, --exaggeration scales the heights; the same bytes for 1
-// and 2 threads; bad input named.
+// aim and place the camera where PROJ says, --exaggeration scales the heights; a bent panorama
+// (--bend-radius) puts each guide point where the test's own bend of PROJ's point projects, its
+// horizon higher than the unbent one's, an infinite radius the unbent picture bit for bit; the
+// same bytes for 1 and 2 threads, bent or not; bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
@@ -79,13 +82,17 @@ std::vector<double> band(GDALDataset& ds, int b) {
   return v;
 }
 
+using Enu = std::array<double, 3>;
+
 // The guides of `path` (bands altitude, distance, lon, lat): the largest distance (pixels) from a
 // terrain pixel's centre to where `camera`, at the eye, puts the point its guides name (its
-// altitude times `exaggeration`: heights here are above the ellipsoid), and the
+// altitude times `exaggeration`: heights here are above the ellipsoid; moved by `bend`), and the
 // largest relative error of its distance, both measured in PROJ's east-north-up frame; and the
 // number of terrain pixels.
-std::array<double, 3> worst_reprojection(const std::string& path, const test::TestCamera& camera,
-                                         double eye_height, double exaggeration = 1) {
+std::array<double, 3> worst_reprojection(
+    const std::string& path, const test::TestCamera& camera, double eye_height,
+    double exaggeration = 1,
+    const std::function<Enu(const Enu&)>& bend = [](const Enu& p) { return p; }) {
   std::unique_ptr<GDALDataset> guides(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
   EXPECT_TRUE(guides);
   if (!guides) return {1e9, 1e9, 0};
@@ -98,7 +105,7 @@ std::array<double, 3> worst_reprojection(const std::string& path, const test::Te
       const size_t i = size_t(row) * size_t(camera.width) + size_t(col);
       if (std::isnan(distance[i])) continue;
       ++worst[2];
-      const auto p = enu({lon[i], lat[i]}, altitude[i] * exaggeration);
+      const auto p = bend(enu({lon[i], lat[i]}, altitude[i] * exaggeration));
       const auto px = camera.project(p);
       const double range = std::hypot(p[0], p[1], p[2]);
       worst[0] = std::max(worst[0], std::hypot(px[0] - col, px[1] - row));
@@ -212,6 +219,75 @@ TEST(PanoramaCli, SameBytesForOneAndTwoThreads) {
   EXPECT_GT(slurp(one).size(), 1000u);
 }
 
+// The first terrain row from the top in each column of a panorama's distance guide.
+std::vector<int> horizon(const std::string& guides_path, int width, int height) {
+  std::unique_ptr<GDALDataset> guides(GDALDataset::Open(guides_path.c_str(), GDAL_OF_RASTER));
+  EXPECT_TRUE(guides);
+  if (!guides) return {};
+  const auto distance = band(*guides, 2);
+  std::vector<int> rows(size_t(width), height);
+  for (int col = 0; col < width; ++col)
+    for (int row = height - 1; row >= 0; --row)
+      if (!std::isnan(distance[size_t(row) * size_t(width) + size_t(col)])) rows[size_t(col)] = row;
+  return rows;
+}
+
+TEST(PanoramaCli, BentPanorama) {
+  const Fixture& f = fixture();
+  const double radius = 40000, start = 3000;
+  const std::string bend =
+      " --bend-radius " + std::to_string(radius) + " --bend-start " + std::to_string(start);
+  const std::string bent = f.dir + "/bent.png", two = f.dir + "/bent2.png";
+  ASSERT_EQ(run_maquette(f.render(bent, std::string(kView) + bend + " -t 1")).exit_code, 0);
+  ASSERT_EQ(run_maquette(f.render(two, std::string(kView) + bend + " -t 2")).exit_code, 0);
+  EXPECT_EQ(slurp(bent), slurp(two));
+  EXPECT_EQ(slurp(f.dir + "/bent-guides.tif"), slurp(f.dir + "/bent2-guides.tif"));
+  EXPECT_EQ(slurp(f.dir + "/bent-silhouettes.png"), slurp(f.dir + "/bent2-silhouettes.png"));
+
+  // The test's own bend: beyond the start, the vertical section through the eye rotated by
+  // (d - start) / radius about the axis `radius` above the ground under the eye (the plain, 100 m
+  // above the ellipsoid), seen from the tangent point's vertical.
+  const double base = 100 - kEyeHeight;
+  const auto bent_point = [&](const Enu& p) {
+    const double d = std::hypot(p[0], p[1]);
+    if (d <= start) return p;
+    const double angle = (d - start) / radius, below = p[2] - (base + radius);
+    const double s = start - below * std::sin(angle);
+    const double up = base + radius + below * std::cos(angle);
+    return Enu{p[0] / d * s, p[1] / d * s, up};
+  };
+  const auto [worst_pixel, worst_distance, seen] = worst_reprojection(
+      f.dir + "/bent-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight, 1, bent_point);
+  EXPECT_LE(worst_pixel, 0.05);
+  EXPECT_LE(worst_distance, 1e-4);
+  // Without the bend the same guides miss their pixels.
+  EXPECT_GT(worst_reprojection(f.dir + "/bent-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight)[0],
+            5.0);
+
+  // The horizon rises: in no column lower than the unbent picture's, well higher on the whole.
+  const std::string flat = f.dir + "/flat.png";
+  ASSERT_EQ(run_maquette(f.render(flat, kView)).exit_code, 0);
+  const auto flat_rows = horizon(f.dir + "/flat-guides.tif", 320, 200),
+             bent_rows = horizon(f.dir + "/bent-guides.tif", 320, 200);
+  ASSERT_EQ(flat_rows.size(), bent_rows.size());
+  double rise = 0;
+  for (size_t c = 0; c < flat_rows.size(); ++c) {
+    EXPECT_LE(bent_rows[c], flat_rows[c]) << c;
+    rise += double(flat_rows[c] - bent_rows[c]) / double(flat_rows.size());
+  }
+  EXPECT_GT(rise, 10);
+
+  // An infinite radius is no bend: the unbent files, bit for bit.
+  const std::string infinite = f.dir + "/infinite.png";
+  ASSERT_EQ(run_maquette(f.render(infinite,
+                                  std::string(kView) + " --bend-radius inf " + "--bend-start 3000"))
+                .exit_code,
+            0);
+  EXPECT_EQ(slurp(infinite), slurp(flat));
+  EXPECT_EQ(slurp(f.dir + "/infinite-guides.tif"), slurp(f.dir + "/flat-guides.tif"));
+  EXPECT_NE(slurp(bent), slurp(flat));
+}
+
 TEST(PanoramaCli, BadInputIsNamed) {
   const Fixture& f = fixture();
   const std::string out = f.dir + "/bad.png";
@@ -231,6 +307,8 @@ TEST(PanoramaCli, BadInputIsNamed) {
       "no data under the camera");
   expect_error(f.render(out, "--fov 175"), "camera fov 175");
   expect_error(f.render(out, "--fov 0"), "out of range");
+  expect_error(f.render(out, "--bend-radius -300"), "--bend-radius -300");
+  expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
 }
 
 }  // namespace
