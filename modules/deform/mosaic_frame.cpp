@@ -4,7 +4,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/halo.h"
 
 namespace maquette::deform {
 namespace {
@@ -17,10 +16,7 @@ constexpr double kEarthRadiusM = 6371008.8;
 
 MosaicFrame::MosaicFrame(const Grid& grid, int face, int pixel_level, int64_t origin_col,
                          int64_t origin_row, LonLat reference)
-    : grid_(grid),
-      plane_(grid, face, pixel_level),
-      origin_col_(origin_col),
-      origin_row_(origin_row),
+    : samples_(grid, face, pixel_level, origin_col, origin_row),
       tangent_plane_({reference.lon, reference.lat, 0}) {}
 
 EastNorth2 MosaicFrame::local(LonLat p) const {
@@ -35,23 +31,16 @@ LonLat MosaicFrame::lonlat(EastNorth2 p) const {
 }
 
 LonLat MosaicFrame::sample_lonlat(int col, int row) const {
-  const auto pixel = plane_.from_anchor(origin_col_ + col, origin_row_ + row);
-  if (!pixel)
+  const auto centre = samples_.sample_lonlat(col, row);
+  if (!centre)
     throw Error("mosaic sample (" + std::to_string(col) + ", " + std::to_string(row) +
                 ") lies in no face of the plane unfolded around face " +
-                CellId::FromFace(plane_.anchor()).ToText());
-  return pixel_centre(grid_, *pixel, plane_.level());
+                CellId::FromFace(samples_.face()).ToText());
+  return *centre;
 }
 
 std::optional<std::array<double, 2>> MosaicFrame::sample(LonLat p) const {
-  const int face = grid_.cell_from_point(p, 0).face();
-  const PlaneSquare square = grid_.plane_square(CellId::FromFace(face));
-  const PlanePoint q = grid_.forward(p);
-  const double pixels = std::ldexp(1.0, plane_.level());
-  const auto at = plane_.to_anchor(face, (q.x - square.x_min) / square.side * pixels - 0.5,
-                                   (square.y_max - q.y) / square.side * pixels - 0.5);
-  if (!at) return std::nullopt;
-  return std::array<double, 2>{(*at)[0] - double(origin_col_), (*at)[1] - double(origin_row_)};
+  return samples_.sample(p);
 }
 
 }  // namespace maquette::deform

@@ -1,12 +1,9 @@
 // Where a region mosaic's samples lie: their lon/lat, their metres east and north in the tangent
 // plane of a reference point (core/enu_frame.h, at the ellipsoid), and the way back from a
-// lon/lat to fractional sample coordinates of the mosaic (sample centres at integers). Strokes
+// lon/lat to fractional sample coordinates of the mosaic (core/mosaic_geometry.h: sample centres
+// at integers, across face seams through the plane unfolded around the mosaic's face). Strokes
 // are measured in metres there, and the height field's cotangent weights see the true shape of
 // rHEALPix's pixels (equal-area, not square away from the face centres).
-//
-// Across face seams the mosaic is the plane unfolded around its face (core/unfolded_faces.h, as
-// the runner pastes it): a sample beyond the face's edge is the neighbour face's pixel laid
-// there, and a lon/lat on a neighbour face maps to its place in that plane.
 #pragma once
 
 #include <array>
@@ -14,7 +11,7 @@
 
 #include "core/enu_frame.h"
 #include "core/grid.h"
-#include "core/unfolded_faces.h"
+#include "core/mosaic_geometry.h"
 
 namespace maquette::deform {
 
@@ -36,9 +33,7 @@ class MosaicFrame {
   std::optional<std::array<double, 2>> sample(LonLat p) const;
 
  private:
-  const Grid& grid_;
-  UnfoldedFaces plane_;
-  int64_t origin_col_, origin_row_;
+  MosaicGeometry samples_;
   EnuFrame tangent_plane_;
 };
 

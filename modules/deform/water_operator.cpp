@@ -2,8 +2,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/halo.h"
-#include "core/unfolded_faces.h"
+#include "core/mosaic_geometry.h"
 #include "operators.h"
 #include "stroke.h"
 #include "water_body.h"
@@ -101,12 +100,11 @@ class Water : public RegionOperator {
       if (centres.empty()) {  // once, for the first water stroke
         // The mosaic may span faces (core/unfolded_faces.h): a sample in a corner gap of the
         // unfolded plane has no centre (NaN: in no polygon) and no terrain.
-        const UnfoldedFaces plane(*ctx.grid, input.face, input.level);
+        const MosaicGeometry samples(*ctx.grid, input.face, input.level, input.origin_col,
+                                     input.origin_row);
         for (int r = 0; r < side; ++r)
           for (int c = 0; c < side; ++c) {
-            const auto pixel = plane.from_anchor(input.origin_col + c, input.origin_row + r);
-            centres.push_back(pixel ? pixel_centre(*ctx.grid, *pixel, input.level)
-                                    : LonLat{NAN, NAN});
+            centres.push_back(samples.sample_lonlat(c, r).value_or(LonLat{NAN, NAN}));
             terrain.push_back(dem.at(c, r));
           }
       }

@@ -1,7 +1,7 @@
 // The projection against PROJ's rhealpix on 100000 random points.
 #include <gtest/gtest.h>
-#include <proj.h>
 
+#include "proj_rhealpix.h"
 #include "rhealpix/rhealpix_grid.h"
 #include "test_util.h"
 
@@ -22,26 +22,10 @@ double proj_tolerance_m(double lat) {
 
 class ProjTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    ctx_ = proj_context_create();
-    pj_ = proj_create(ctx_, "+proj=rhealpix +ellps=WGS84 +north_square=0 +south_square=0");
-    ASSERT_NE(pj_, nullptr);
-  }
-  void TearDown() override {
-    proj_destroy(pj_);
-    proj_context_destroy(ctx_);
-  }
-  PlanePoint proj_forward(LonLat p) const {
-    const PJ_COORD c = proj_trans(pj_, PJ_FWD, proj_coord(p.lon * kDeg, p.lat * kDeg, 0, 0));
-    return {c.xy.x, c.xy.y};
-  }
-  LonLat proj_inverse(PlanePoint p) const {
-    const PJ_COORD c = proj_trans(pj_, PJ_INV, proj_coord(p.x, p.y, 0, 0));
-    return {c.lp.lam / kDeg, c.lp.phi / kDeg};
-  }
+  PlanePoint proj_forward(LonLat p) const { return proj_.forward(p); }
+  LonLat proj_inverse(PlanePoint p) const { return proj_.inverse(p); }
 
-  PJ_CONTEXT* ctx_ = nullptr;
-  PJ* pj_ = nullptr;
+  test::ProjRhealpix proj_;
 };
 
 TEST_F(ProjTest, RandomPoints) {
