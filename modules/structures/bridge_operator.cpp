@@ -9,7 +9,7 @@
 #include "content/enu_transform.h"
 #include "content/facet_normals.h"
 #include "core/error.h"
-#include "core/halo.h"
+#include "core/mosaic_geometry.h"
 #include "core/polygon_set.h"
 #include "core/tile_bilinear.h"
 #include "gdal/vertical_datum.h"
@@ -60,28 +60,11 @@ OperatorSpec bridge_spec() {
   return s;
 }
 
-// Fractional sample coordinates in a region's mosaic (sample centres at integers) of a point on
-// its face, through the plane square of one of the step's cells.
-class MosaicSamples {
- public:
-  MosaicSamples(const Grid& grid, const Mosaic& mosaic, CellId any_cell)
-      : grid_(grid), square_(grid.plane_square(any_cell)) {
-    const int64_t tile = int64_t(1) << (mosaic.level - any_cell.level());
-    pixel_ = square_.side / double(tile);
-    col0_ = double(mosaic.origin_col - int64_t(any_cell.col()) * tile);
-    row0_ = double(mosaic.origin_row - int64_t(any_cell.row()) * tile);
-  }
-  std::array<double, 2> operator()(LonLat p) const {
-    const PlanePoint q = grid_.forward(p);
-    return {(q.x - square_.x_min) / pixel_ - 0.5 - col0_,
-            (square_.y_max - q.y) / pixel_ - 0.5 - row0_};
-  }
-
- private:
-  const Grid& grid_;
-  PlaneSquare square_;
-  double pixel_ = 0, col0_ = 0, row0_ = 0;
-};
+// Fractional sample coordinates (sample centres at integers) of a point of a bridge on the
+// mosaic's face (Bridge::on_face), so always placed.
+std::array<double, 2> sample_of(const MosaicGeometry& samples, LonLat p) {
+  return *samples.sample(p);
+}
 
 // The deck's outline in lon/lat: the first edge, the second reversed, closed.
 PolygonRings outline(const BridgeStroke& b) {
@@ -93,15 +76,14 @@ PolygonRings outline(const BridgeStroke& b) {
   return {ring};
 }
 
-// Sets to 1 the mask's samples whose centre (core/halo.h pixel_centre) lies in the deck's outline
+// Sets to 1 the mask's samples whose centre (core/mosaic_geometry.h) lies in the deck's outline
 // (edges straight in degrees, core/polygon_set.h), looking within 2 samples of its points.
-void mark_deck(const BridgeStroke& b, const StepContext& ctx, const Mosaic& input,
-               const MosaicSamples& samples, Tile<float>& mask) {
+void mark_deck(const BridgeStroke& b, const MosaicGeometry& samples, Tile<float>& mask) {
   const PolygonRings ring = outline(b);
   const PolygonSet deck({ring});
   double c0 = INFINITY, r0 = INFINITY, c1 = -INFINITY, r1 = -INFINITY;
   for (const LonLat& p : ring.front()) {
-    const auto [c, r] = samples(p);
+    const auto [c, r] = sample_of(samples, p);
     c0 = std::min(c0, c), r0 = std::min(r0, r), c1 = std::max(c1, c), r1 = std::max(r1, r);
   }
   const int side = mask.size();
@@ -109,8 +91,7 @@ void mark_deck(const BridgeStroke& b, const StepContext& ctx, const Mosaic& inpu
        r <= std::min(side - 1, int(std::floor(r1)) + 2); ++r)
     for (int c = std::max(0, int(std::floor(c0)) - 2);
          c <= std::min(side - 1, int(std::floor(c1)) + 2); ++c)
-      if (deck.contains(pixel_centre(
-              *ctx.grid, {input.face, input.origin_col + c, input.origin_row + r}, input.level)))
+      if (const auto centre = samples.sample_lonlat(c, r); centre && deck.contains(*centre))
         mask.at(c, r) = 1;
 }
 
@@ -128,7 +109,8 @@ class Bridge : public RegionOperator {
         for (int c = 0; c < mask->second.size(); ++c) mask->second.at(c, r) = 0;
     const bool wants_mesh = output.content.begin()->second.wants("mesh");
     const double default_thickness = ctx.params->at("thickness_m").get<double>();
-    const MosaicSamples samples(*ctx.grid, input, output.content.begin()->first);
+    const MosaicGeometry samples(*ctx.grid, input.face, input.level, input.origin_col,
+                                 input.origin_row);
     // Set up at the first bridge stroke, when the mesh is mapped (PROJ's set-up takes
     // milliseconds).
     std::optional<EllipsoidalHeights> to_ellipsoid;
@@ -139,7 +121,7 @@ class Bridge : public RegionOperator {
       try {  // the stroke's faults, each naming the feature and field
         const BridgeStroke b = bridge_stroke(*f, default_thickness);
         if (!on_face(b, *ctx.grid, input.face)) continue;  // another face's mosaic makes it
-        if (mask != output.layers.end()) mark_deck(b, ctx, input, samples, mask->second);
+        if (mask != output.layers.end()) mark_deck(b, samples, mask->second);
         if (wants_mesh) add_deck(b, ctx, input.layers.at("dem"), samples, *to_ellipsoid, output);
       } catch (const Error& e) {
         throw Error("structures.bridge: inputs.strokes: " + std::string(e.what()));
@@ -169,10 +151,10 @@ class Bridge : public RegionOperator {
 
   // The DEM's bilinear height (above the ellipsoid) at an edge's end.
   static double end_height(const BridgeStroke& b, int edge, bool last, const Tile<float>& dem,
-                           const MosaicSamples& samples, const EllipsoidalHeights& to_ellipsoid) {
+                           const MosaicGeometry& samples, const EllipsoidalHeights& to_ellipsoid) {
     const std::vector<GeoPoint>& points = edge == 1 ? b.first_edge : b.second_edge;
     const GeoPoint& p = last ? points.back() : points.front();
-    const auto [x, y] = samples({p.lon, p.lat});
+    const auto [x, y] = sample_of(samples, {p.lon, p.lat});
     const double h = bilinear(dem, x, y);
     if (std::isnan(h))
       throw Error(where(b) + ": geometry: edge " + std::to_string(edge) + "'s " +
@@ -183,7 +165,7 @@ class Bridge : public RegionOperator {
   }
 
   static void add_deck(const BridgeStroke& b, const StepContext& ctx, const Tile<float>& dem,
-                       const MosaicSamples& samples, const EllipsoidalHeights& to_ellipsoid,
+                       const MosaicGeometry& samples, const EllipsoidalHeights& to_ellipsoid,
                        Mosaic& output) {
     const std::array<double, 4> ends{end_height(b, 1, false, dem, samples, to_ellipsoid),
                                      end_height(b, 1, true, dem, samples, to_ellipsoid),
