@@ -3,9 +3,13 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <map>
+#include <mutex>
+
 #include "content/content_blob.h"
 #include "content/instances_codec.h"
 #include "content/instances_thin.h"
+#include "content/model_extent.h"
 #include "core/error.h"
 #include "core/grid.h"
 #include "plugins/mesh_overviews.h"
@@ -23,14 +27,40 @@ std::string cell_where(const std::string& layer, CellId cell) {
   return "layer '" + layer + "', cell " + cell.ToText();
 }
 
+// The horizontal extents of the model layers an instances layer places, each read from the store
+// once per update, whichever thread asks first.
+class ModelExtents {
+ public:
+  ModelExtents(const Store& store, const std::string& layer) : store_(store), layer_(layer) {}
+
+  double operator()(const std::string& model) {
+    const std::lock_guard lock(mutex_);
+    if (const auto at = extents_.find(model); at != extents_.end()) return at->second;
+    const std::string where = "model '" + model + "' in " + store_.path();
+    const auto blob = store_.get_model(model);
+    if (!blob)
+      throw Error("layer '" + layer_ + "': prototype '" + model + "' is no model layer of " +
+                  store_.path());
+    return extents_[model] = model_horizontal_extent(*blob, where);
+  }
+
+ private:
+  const Store& store_;
+  const std::string& layer_;
+  std::mutex mutex_;
+  std::map<std::string, double> extents_;
+};
+
 // `wheres`: each child's place, for errors.
 std::optional<std::string> instances_overview(const std::vector<std::string>& children,
                                               const std::vector<std::string>& wheres,
-                                              const ContentLevel& level) {
+                                              const ContentLevel& level,
+                                              ModelExtents& model_extents) {
   std::vector<InstancesContent> decoded;
   for (size_t i = 0; i < children.size(); ++i)
     decoded.push_back(unwrap_instances(children[i], wheres[i]));
-  const InstancesContent thinned = thin_instances(decoded, level);
+  const InstancesContent thinned =
+      thin_instances(decoded, level, [&](const std::string& m) { return model_extents(m); });
   if (thinned.size() == 0) return std::nullopt;
   return wrap_instances(thinned);
 }
@@ -64,6 +94,7 @@ void update_content_overviews(Store& store, const std::string& layer) {
     plugin = plugin_function<ContentOverviewBuilder>(kMeshPlugin, kMeshOverviewEntry);
   else if (*kind == ContentKind::Volume)
     plugin = plugin_function<ContentOverviewBuilder>(kVdbPlugin, kVdbOverviewEntry);
+  ModelExtents model_extents(store, layer);
 
   const auto build = [&](std::span<const CellId> cells,
                          std::span<const Store::ContentChildren> children,
@@ -87,7 +118,7 @@ void update_content_overviews(Store& store, const std::string& layer) {
           plugin(blobs, level, "layer '" + layer + "', a child of cell " + cells[i].ToText(),
                  overviews[i]);
         else
-          overviews[i] = instances_overview(blobs, wheres, level);
+          overviews[i] = instances_overview(blobs, wheres, level, model_extents);
       });
     });
   };

@@ -52,26 +52,26 @@ double instance_share(double width_m, double sample_m) {
 }
 
 InstancesContent thin_instances(std::span<const InstancesContent> children,
-                                const ContentLevel& level) {
+                                const ContentLevel& level, const ModelExtent& model_extent) {
   InstancesContent out;
   out.origin = level.origin;
   const bool provenance = std::any_of(children.begin(), children.end(),
                                       [](const auto& c) { return !c.provenance.empty(); });
   std::map<std::string, uint16_t> names;
-  std::map<std::string, double> extents;  // built-in prototypes' horizontal extents, metres
+  std::map<std::string, double> extents;  // prototypes' horizontal extents, metres
   for (const InstancesContent& c : children) {
     const EnuTransform to_parent(c.origin, level.origin);
     for (size_t i = 0; i < c.size(); ++i) {
       const std::string& name = c.prototypes[c.prototype[i]];
-      double share = 0.25, widen = 1;
-      if (name.starts_with(kBuiltinPrototypePrefix)) {
-        auto [at, added] = extents.try_emplace(name, 0.0);
-        if (added) at->second = horizontal_extent(builtin_prototype(name));
-        const double width =
-            at->second * std::max(std::abs(c.scale[3 * i]), std::abs(c.scale[3 * i + 1]));
-        share = instance_share(width, level.sample_m);
-        widen = std::max(1.0, level.sample_m / width);
-      }
+      auto [at, new_extent] = extents.try_emplace(name, 0.0);
+      if (new_extent)
+        at->second = name.starts_with(kBuiltinPrototypePrefix)
+                         ? horizontal_extent(builtin_prototype(name))
+                         : model_extent(name);
+      const double width =
+          at->second * std::max(std::abs(c.scale[3 * i]), std::abs(c.scale[3 * i + 1]));
+      const double share = instance_share(width, level.sample_m);
+      const double widen = std::max(1.0, level.sample_m / width);
       if (!(instance_draw(instance_key(c, i), level.depth) < share)) continue;
       const auto [it, added] = names.try_emplace(name, uint16_t(out.prototypes.size()));
       if (added) out.prototypes.push_back(name);

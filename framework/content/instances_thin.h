@@ -4,12 +4,13 @@
 // of the instance alone, never of its cell or of the order instances were written in.
 //
 // An instance's width: the larger of its horizontal scales (x, y; absolute) times its prototype's
-// horizontal extent (the larger side of its bounding box in x and y, built-in prototypes only:
-// content/prototypes.h). Into a parent whose sample is S, an instance of width w survives with
-// the share min(1, (w / S)^2), widened (x and y scales, not the height) by S / w when w < S:
-// the expected area the kept instances cover stays the children's, level after level (an
-// instance widened to S at one level survives 1 in 4 into the next). An instance of a model
-// layer (its size unknown here) survives with the share 1/4 and keeps its scale.
+// horizontal extent (the larger side of its bounding box in x and y: a built-in prototype's,
+// content/prototypes.h, or a model layer's, given by the caller: model_extent.h). Into a parent
+// whose sample is S, an instance of width w survives with the share min(1, (w / S)^2), widened
+// (x and y scales, not the height) by S / w when w < S: the expected area the kept instances
+// cover stays the children's, level after level (an instance widened to S at one level survives
+// 1 in 4 into the next). An instance at least S wide (e.g. a placed building seen from not too
+// far) always survives, its scale unchanged.
 //
 // The draw: an instance's key is its object id when the content has provenance, else a hash of
 // its bits as its child cell stores them (prototype name, position, rotation, scale, colour); it
@@ -18,7 +19,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <string>
 
 #include "content/content.h"
 #include "content/content_overviews.h"
@@ -39,8 +42,10 @@ double instance_share(double width_m, double sample_m);
 // with the frame, horizontal scales widened as above; colour and prototype copied bit for bit.
 // Prototype names are merged in order of first use by a kept instance. Provenance is kept when
 // any child has it (instances of a child without it get an empty one: object id 0, feature
-// id -1).
+// id -1). `model_extent`: a model layer's horizontal extent in metres from its name (any
+// prototype not built-in), called from one thread; its errors pass through.
+using ModelExtent = std::function<double(const std::string& model)>;
 InstancesContent thin_instances(std::span<const InstancesContent> children,
-                                const ContentLevel& level);
+                                const ContentLevel& level, const ModelExtent& model_extent);
 
 }  // namespace maquette

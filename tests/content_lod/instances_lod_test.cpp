@@ -16,6 +16,7 @@
 #include "content/instances_thin.h"
 #include "content/prototypes.h"
 #include "core/grid.h"
+#include "gltf/mesh_glb.h"
 #include "lod_fixture.h"
 
 namespace maquette::test {
@@ -268,6 +269,140 @@ TEST(InstancesLod, BuiltForAnIncompleteLayerRefusedForOtherKindsAndCorruptChildr
   }
   expect_error([&] { update_content_overviews(*store, "trees"); }, {"cell " + bad.ToText()});
   EXPECT_TRUE(overview_blobs(*store, "trees") == before);
+}
+
+// A box model `east` x `north` x `up` metres (its base centred on its origin).
+MeshContent box_model(float east, float north, float up) {
+  MeshContent m;
+  MeshObject o;
+  for (float z : {0.f, up})
+    for (float y : {-north / 2, north / 2})
+      for (float x : {-east / 2, east / 2}) o.positions.insert(o.positions.end(), {x, y, z});
+  o.indices = {0, 1, 3, 0, 3, 2, 4, 7, 5, 4, 6, 7, 0, 5, 1, 0, 4, 5,
+               2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+  m.objects.push_back(o);
+  return m;
+}
+
+// Placed buildings (structures.place: the prototype is a model layer's name): 40 m wide ones
+// stay, bit for bit but re-origined, at every level whose sample is at most 40 m, and thin by
+// the rule beyond; 2 m wide ones (the same model at scale 0.05) thin as trees do.
+TEST(InstancesLod, PlacedModelsThinByTheirModelsSize) {
+  TempDir dir;
+  auto store = content_store(dir.file("a.mqs"), "trees", LayerKind::Instances);
+  {
+    Store::Batch batch(*store);
+    // 40 m east, 10 m north, 60 m high: a width read on the wrong axis would be 60 m.
+    batch.put_model("hotel", mesh_content_blob(box_model(40, 10, 60)));
+    for (CellId cell : base_cells()) {
+      std::mt19937_64 random(cell.id());
+      std::uniform_real_distribution<float> xy(-150, 150), unit(-1, 1);
+      InstancesContent c;
+      c.origin = base_origin(cell);
+      c.prototypes = {"hotel"};
+      for (uint64_t i = 0; i < 40; ++i) {
+        c.prototype.push_back(0);
+        c.position.insert(c.position.end(), {xy(random), xy(random), 0});
+        const float angle = unit(random) * 3.14159f;
+        c.rotation.insert(c.rotation.end(), {0, 0, std::sin(angle / 2), std::cos(angle / 2)});
+        const float s = i % 2 ? 1.f : 0.05f;
+        c.scale.insert(c.scale.end(), {s, s, s});
+        c.colour.push_back(0xffffffffu);
+        c.provenance.push_back(
+            {random(), int64_t(i), "structures.place", nlohmann::json::object()});
+      }
+      batch.put_content("trees", cell, wrap_instances(c));
+    }
+    batch.commit();
+  }
+  update_content_overviews(*store, "trees");
+
+  // Every instance's fate by the rule (widths from the model's own vertices: 40 m x scale).
+  int unchanged_levels = 0;
+  bool thinned_big = false;
+  for (int level = kBaseLevel - 1; level >= 0; --level) {
+    const int depth = kBaseLevel - level;
+    size_t big = 0, big_expected = 0;
+    std::map<uint64_t, size_t> got_by_id;  // object id -> index in its cell's content
+    std::map<uint64_t, InstancesContent> cells;
+    for (CellId cell : store->content_cells("trees", level)) {
+      cells[cell.id()] = read(*store, cell);
+      const InstancesContent& got = cells[cell.id()];
+      for (size_t n = 0; n < got.size(); ++n) got_by_id[got.provenance[n].object_id] = n;
+    }
+    for (CellId base : base_cells()) {
+      const InstancesContent original =
+          unwrap_instances(*store->get_content("trees", base), "trees " + base.ToText());
+      CellId parent = base;
+      for (int d = 0; d < depth; ++d) parent = parent.parent();
+      for (size_t i = 0; i < original.size(); ++i) {
+        double width = 40.0 * original.scale[3 * i];
+        bool kept = true;
+        for (int d = 1; d <= depth && kept; ++d) {
+          kept = instance_draw(original.provenance[i].object_id, d) <
+                 std::min(1.0, std::pow(width / sample_at(d), 2));
+          width = std::max(width, sample_at(d));
+        }
+        const auto at = got_by_id.find(original.provenance[i].object_id);
+        ASSERT_EQ(kept, at != got_by_id.end()) << "level " << level << " instance " << i;
+        if (!kept) continue;
+        const InstancesContent& got = cells.at(parent.id());
+        const size_t n = at->second;
+        const double widen = width / (40.0 * original.scale[3 * i]);
+        for (int k = 0; k < 2; ++k)
+          EXPECT_NEAR(got.scale[3 * n + k], original.scale[3 * i + k] * widen,
+                      1e-6 * original.scale[3 * i + k] * widen);
+        if (original.scale[3 * i] == 1.f) {
+          ++big;
+          if (sample_at(depth) <= 40) {
+            // Unchanged: scale bit for bit, position and rotation re-origined only.
+            for (int k = 0; k < 3; ++k)
+              EXPECT_EQ(std::bit_cast<uint32_t>(got.scale[3 * n + k]),
+                        std::bit_cast<uint32_t>(original.scale[3 * i + k]));
+            const auto p = reframe(original.origin, got.origin,
+                                   {original.position[3 * i], original.position[3 * i + 1],
+                                    original.position[3 * i + 2]});
+            for (int k = 0; k < 3; ++k)
+              EXPECT_NEAR(got.position[3 * n + k], p[k], 1e-3 + depth * std::abs(p[k]) * 0x1p-24);
+            const std::array<double, 3> east{1, 0, 0};
+            const auto was = rotate(&original.rotation[4 * i], east);
+            const auto zero = reframe(original.origin, got.origin, {0, 0, 0});
+            const auto tip = reframe(original.origin, got.origin, {was[0], was[1], was[2]});
+            const auto now = rotate(&got.rotation[4 * n], east);
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(now[k], tip[k] - zero[k], 1e-6);
+          }
+        }
+      }
+      for (size_t i = 0; i < original.size(); ++i) big_expected += original.scale[3 * i] == 1.f;
+    }
+    std::printf("level %d: sample %.1f m, %zu of %zu models 40 m wide left\n", level,
+                sample_at(depth), big, big_expected);
+    if (sample_at(depth) <= 40) {
+      EXPECT_EQ(big, big_expected) << "level " << level;  // every 40 m model is left
+      ++unchanged_levels;
+    } else if (big < big_expected) {
+      thinned_big = true;
+    }
+  }
+  EXPECT_EQ(unchanged_levels, 4);  // levels 13 to 10 (sample 35 m at level 10)
+  EXPECT_TRUE(thinned_big);        // beyond, fewer are left
+
+  // A prototype that is no model layer of the store: an error naming it.
+  {
+    Store::Batch batch(*store);
+    InstancesContent c;
+    c.origin = base_origin(base_cells()[0]);
+    c.prototypes = {"casino"};
+    c.prototype = {0};
+    c.position = {0, 0, 0};
+    c.rotation = {0, 0, 0, 1};
+    c.scale = {1, 1, 1};
+    c.colour = {0xffffffffu};
+    batch.put_content("trees", base_cells()[0], wrap_instances(c));
+    batch.commit();
+  }
+  expect_error([&] { update_content_overviews(*store, "trees"); },
+               {"layer 'trees'", "prototype 'casino'", "no model layer"});
 }
 
 }  // namespace
