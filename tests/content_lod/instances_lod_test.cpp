@@ -387,12 +387,13 @@ TEST(InstancesLod, PlacedModelsThinByTheirModelsSize) {
   EXPECT_EQ(unchanged_levels, 4);  // levels 13 to 10 (sample 35 m at level 10)
   EXPECT_TRUE(thinned_big);        // beyond, fewer are left
 
-  // A prototype that is no model layer of the store: an error naming it.
-  {
+  // A prototype that is no model layer of the store, or a model whose payload is no GLB (the
+  // store does not decode it): an error naming it, nothing written.
+  const auto place_one = [&](const std::string& model) {
     Store::Batch batch(*store);
     InstancesContent c;
     c.origin = base_origin(base_cells()[0]);
-    c.prototypes = {"casino"};
+    c.prototypes = {model};
     c.prototype = {0};
     c.position = {0, 0, 0};
     c.rotation = {0, 0, 0, 1};
@@ -400,9 +401,19 @@ TEST(InstancesLod, PlacedModelsThinByTheirModelsSize) {
     c.colour = {0xffffffffu};
     batch.put_content("trees", base_cells()[0], wrap_instances(c));
     batch.commit();
-  }
+  };
+  const auto before = overview_blobs(*store, "trees");
+  place_one("casino");
   expect_error([&] { update_content_overviews(*store, "trees"); },
                {"layer 'trees'", "prototype 'casino'", "no model layer"});
+  {
+    Store::Batch batch(*store);
+    batch.put_model("ruin", wrap_content(ContentEnvelope{}, "not a GLB"));
+    batch.commit();
+  }
+  place_one("ruin");
+  expect_error([&] { update_content_overviews(*store, "trees"); }, {"model 'ruin'", "GLB"});
+  EXPECT_TRUE(overview_blobs(*store, "trees") == before);
 }
 
 }  // namespace
