@@ -92,16 +92,21 @@ struct Fate {
   bool kept = true;
   double width = 0;
 };
-Fate fate(const InstancesContent& base, size_t i, int depth) {
-  Fate f{true, prototype_extent(base.prototypes[base.prototype[i]]) *
-                   std::max(base.scale[3 * i], base.scale[3 * i + 1])};
+// The fate of an instance `width` metres wide at the base whose object id is `id`.
+Fate fate_of(double width, uint64_t id, int depth) {
+  Fate f{true, width};
   for (int d = 1; d <= depth && f.kept; ++d) {
     const double sample = sample_at(d);
     const double share = std::min(1.0, (f.width / sample) * (f.width / sample));
-    f.kept = instance_draw(base.provenance[i].object_id, d) < share;
+    f.kept = instance_draw(id, d) < share;
     f.width = std::max(f.width, sample);
   }
   return f;
+}
+Fate fate(const InstancesContent& base, size_t i, int depth) {
+  return fate_of(prototype_extent(base.prototypes[base.prototype[i]]) *
+                     std::max(base.scale[3 * i], base.scale[3 * i + 1]),
+                 base.provenance[i].object_id, depth);
 }
 
 TEST(InstancesLod, LevelsKeepExactlyTheRulesInstancesBitForBit) {
@@ -336,19 +341,14 @@ TEST(InstancesLod, PlacedModelsThinByTheirModelsSize) {
       CellId parent = base;
       for (int d = 0; d < depth; ++d) parent = parent.parent();
       for (size_t i = 0; i < original.size(); ++i) {
-        double width = 40.0 * original.scale[3 * i];
-        bool kept = true;
-        for (int d = 1; d <= depth && kept; ++d) {
-          kept = instance_draw(original.provenance[i].object_id, d) <
-                 std::min(1.0, std::pow(width / sample_at(d), 2));
-          width = std::max(width, sample_at(d));
-        }
+        const Fate f =
+            fate_of(40.0 * original.scale[3 * i], original.provenance[i].object_id, depth);
         const auto at = got_by_id.find(original.provenance[i].object_id);
-        ASSERT_EQ(kept, at != got_by_id.end()) << "level " << level << " instance " << i;
-        if (!kept) continue;
+        ASSERT_EQ(f.kept, at != got_by_id.end()) << "level " << level << " instance " << i;
+        if (!f.kept) continue;
         const InstancesContent& got = cells.at(parent.id());
         const size_t n = at->second;
-        const double widen = width / (40.0 * original.scale[3 * i]);
+        const double widen = f.width / (40.0 * original.scale[3 * i]);
         for (int k = 0; k < 2; ++k)
           EXPECT_NEAR(got.scale[3 * n + k], original.scale[3 * i + k] * widen,
                       1e-6 * original.scale[3 * i + k] * widen);
