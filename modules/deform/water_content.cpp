@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 
 #include "content/enu_transform.h"
 #include "content/facet_normals.h"
@@ -27,6 +28,18 @@ std::array<double, 3> box_centre(const std::vector<float>& positions) {
     hi[i % 3] = std::max(hi[i % 3], double(positions[i]));
   }
   return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+}
+
+// The lakes' material: a cartographer's water blue-green, sRGB (0.25, 0.45, 0.55) as linear
+// factors (glTF's), not metallic, smooth enough to catch the sun's highlight; opaque (the
+// lake is a closed mesh: a translucent one would show its walls and bottom through its top).
+Material water_material() {
+  Material m;
+  m.name = "water";
+  m.base_colour = {0.0508761f, 0.170645f, 0.263273f, 1};
+  m.metallic = 0;
+  m.roughness = 0.2f;
+  return m;
 }
 
 }  // namespace
@@ -98,7 +111,10 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     MeshContent& content =
         output_.content.at(owner(lake.where + ": the lake's mesh", first[0], first[1]))
             .mesh("mesh");
-    content.objects.push_back(with_facet_normals(object(lake, content.origin)));
+    if (content.materials.empty()) content.materials.push_back(water_material());
+    MeshObject water = with_facet_normals(object(lake, content.origin));
+    water.material = 0;
+    content.objects.push_back(std::move(water));
   }
   if (any.wants("volume")) lakes_.push_back(std::move(lake));
 }

@@ -1,5 +1,6 @@
 // deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, with facet
-// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit), and its
+// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and the material
+// "water" (opaque blue-green, sRGB (0.25, 0.45, 0.55), not metallic, roughness 0.2), and its
 // fog volume on the volume port, built by the volume plug-in (plugins/vdb_content.h:
 // mesh_to_fog of the same closed mesh) so that the module does not link OpenVDB. Each object is
 // written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of

@@ -32,6 +32,7 @@
 #include "core/grid.h"
 #include "egm96_oracle.h"
 #include "gltf/mesh_glb.h"
+#include "gpu_instancing_check.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "stored_layers.h"
@@ -140,14 +141,19 @@ struct Basin {
   }
 };
 
-// The lake's mesh as stored: the blob of its one holder cell, decoded (GLB).
-MeshContent stored_lake_mesh(const std::string& store) {
+// The lake's mesh as stored: the blob of its one holder cell.
+std::string stored_lake_blob(const std::string& store) {
   const auto st = Store::open(store, Store::Mode::ReadOnly);
   const std::vector<CellId> holders = st->content_cells("water_mesh");
   if (holders.size() != 1)
     throw std::runtime_error("the lake's mesh is in " + std::to_string(holders.size()) +
                              " cells, not 1");
-  const std::string blob = *st->get_content("water_mesh", holders[0]);
+  return *st->get_content("water_mesh", holders[0]);
+}
+
+// The same, decoded (GLB).
+MeshContent stored_lake_mesh(const std::string& store) {
+  const std::string blob = stored_lake_blob(store);
   return decode_mesh_glb(content_payload(blob), read_content_envelope(blob, "water_mesh").origin,
                          "water_mesh");
 }
@@ -358,6 +364,38 @@ TEST(DeformWater, LakeMeshCarriesFacetNormals) {
   EXPECT_GT(lake.positions.size() / 3, welded.size());  // corners copied per orientation
   std::printf("lake mesh: %zu vertices with normals, %zu positions, %zu triangles\n",
               lake.positions.size() / 3, welded.size(), lake.indices.size() / 3);
+}
+
+// The lake is drawn as water: read from the stored GLB's own JSON (not through decode_mesh_glb),
+// every primitive's material is opaque, not metallic (glTF's default metallicFactor is 1), smooth
+// (roughness at most 0.3, so it shows the sun's highlight), its base colour sRGB (0.25, 0.45,
+// 0.55) in linear terms by IEC 61966-2-1's transfer function.
+TEST(DeformWater, LakeMeshHasAWaterMaterial) {
+  const Basin basin(stroke(2000, {{"level", 1100}}));
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json gltf = test::split_glb(content_payload(stored_lake_blob(basin.store))).json;
+  const auto linear = [](double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const std::array<double, 3> water{linear(0.25), linear(0.45), linear(0.55)};
+  size_t primitives = 0;
+  for (const json& mesh : gltf.at("meshes"))
+    for (const json& primitive : mesh.at("primitives")) {
+      ++primitives;
+      ASSERT_TRUE(primitive.contains("material"));
+      const json& material = gltf.at("materials").at(primitive.at("material").get<size_t>());
+      EXPECT_EQ(material.value("name", ""), "water");
+      EXPECT_EQ(material.value("alphaMode", "OPAQUE"), "OPAQUE");
+      const json& pbr = material.at("pbrMetallicRoughness");
+      EXPECT_EQ(pbr.value("metallicFactor", 1.0), 0.0);
+      EXPECT_LE(pbr.value("roughnessFactor", 1.0), 0.3);
+      const json& colour = pbr.at("baseColorFactor");
+      ASSERT_EQ(colour.size(), 4u);
+      for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(colour[k].get<double>(), water[k], 1e-5) << k;
+      EXPECT_EQ(colour[3].get<double>(), 1.0);
+    }
+  EXPECT_GE(primitives, 1u);
 }
 
 TEST(DeformWater, SameBitsForOneAndTwoThreads) {
