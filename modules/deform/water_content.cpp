@@ -30,19 +30,19 @@ std::array<double, 3> box_centre(const std::vector<float>& positions) {
   return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
 }
 
-// The lakes' material: a cartographer's water blue-green, sRGB (0.25, 0.45, 0.55) as linear
-// factors (glTF's), not metallic, smooth enough to catch the sun's highlight; opaque (the
-// lake is a closed mesh: a translucent one would show its walls and bottom through its top).
-Material water_material() {
+}  // namespace
+
+Material water_material(const std::array<double, 3>& srgb) {
   Material m;
   m.name = "water";
-  m.base_colour = {0.0508761f, 0.170645f, 0.263273f, 1};
+  for (size_t k = 0; k < 3; ++k) {
+    const double c = srgb[k];  // IEC 61966-2-1's transfer function
+    m.base_colour[k] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  }
   m.metallic = 0;
   m.roughness = 0.2f;
   return m;
 }
-
-}  // namespace
 
 double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
   double sum = 0;
@@ -55,8 +55,9 @@ double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
   return sum / double(n);
 }
 
-LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output)
-    : ctx_(ctx), input_(input), output_(output) {}
+LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output,
+                         Material material)
+    : ctx_(ctx), material_(std::move(material)), input_(input), output_(output) {}
 
 CellId LakeContent::owner(const std::string& what, double lon, double lat) const {
   const CellId cell =
@@ -111,7 +112,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     MeshContent& content =
         output_.content.at(owner(lake.where + ": the lake's mesh", first[0], first[1]))
             .mesh("mesh");
-    if (content.materials.empty()) content.materials.push_back(water_material());
+    if (content.materials.empty()) content.materials.push_back(material_);
     MeshObject water = with_facet_normals(object(lake, content.origin));
     water.material = 0;
     content.objects.push_back(std::move(water));

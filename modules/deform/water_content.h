@@ -1,6 +1,6 @@
 // deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, with facet
-// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and the material
-// "water" (opaque blue-green, sRGB (0.25, 0.45, 0.55), not metallic, roughness 0.2), and its
+// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and a water
+// material (water_material), and its
 // fog volume on the volume port, built by the volume plug-in (plugins/vdb_content.h:
 // mesh_to_fog of the same closed mesh) so that the module does not link OpenVDB. Each object is
 // written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of
@@ -11,6 +11,7 @@
 // terrain of an EGM96 DEM as of an ellipsoidal one.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,10 +23,19 @@
 
 namespace maquette::deform {
 
+// A cartographer's water blue-green by default.
+inline constexpr std::array<double, 3> kWaterSrgb{0.25, 0.45, 0.55};
+
+// The material "water" of colour `srgb` (sRGB components in 0..1, unchecked) as glTF's linear
+// factors: opaque (the lake is a closed mesh: a translucent top would show its walls and bottom),
+// not metallic, roughness 0.2 so that its surface catches the sun's highlight.
+Material water_material(const std::array<double, 3>& srgb);
+
 class LakeContent {
  public:
-  // The content of `output` (deform.water's output mosaic) for the lakes of `input`'s mosaic.
-  LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output);
+  // The content of `output` (deform.water's output mosaic) for the lakes of `input`'s mosaic,
+  // their meshes of `material`.
+  LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output, Material material);
 
   // The lake of water stroke `f` (a non-empty body of `basin`): its mesh added to its owner
   // cell's mesh port, when the step maps it, and kept for the volume.
@@ -54,6 +64,7 @@ class LakeContent {
   static double surface_height(const Lake& lake, const MeshObject& object);
 
   const StepContext& ctx_;
+  const Material material_;
   // The DEM's heights to the ellipsoid, set up with the first lake (PROJ and its geoid grid are
   // needed only for content).
   std::optional<EllipsoidalHeights> to_ellipsoid_;

@@ -46,8 +46,14 @@ OperatorSpec water_spec() {
       "one OpenVDB fog volume per lake (grid \"water\"): the inside of its closed mesh";
   volume.kind = LayerKind::Volume;
   s.outputs.push_back(volume);
-  s.params_schema = {
-      {"type", "object"}, {"properties", json::object()}, {"additionalProperties", false}};
+  s.params_schema = {{"type", "object"},
+                     {"properties",
+                      {{"colour",
+                        {{"type", "array"},
+                         {"items", {{"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
+                         {"default", kWaterSrgb},
+                         {"description", "the lakes' colour: sRGB [r, g, b] in 0..1"}}}}},
+                     {"additionalProperties", false}};
   return s;
 }
 
@@ -74,6 +80,15 @@ std::vector<uint8_t> inside_pixels(const VectorFeature& f, const std::vector<Lon
   return inside;
 }
 
+// The step's `colour` (the schema checked its components).
+std::array<double, 3> colour(const json& params) {
+  const json& c = params.at("colour");
+  if (c.size() != 3)
+    throw Error("deform.water: params.colour: expected 3 numbers (sRGB r, g, b in 0..1), got " +
+                c.dump());
+  return {c[0].get<double>(), c[1].get<double>(), c[2].get<double>()};
+}
+
 class Water : public RegionOperator {
  public:
   const OperatorSpec& spec() const override {
@@ -94,7 +109,7 @@ class Water : public RegionOperator {
     std::vector<LonLat> centres;
     std::vector<float> terrain;
     std::vector<const VectorFeature*> owner(size_t(side) * size_t(side), nullptr);
-    LakeContent lakes(ctx, input, output);
+    LakeContent lakes(ctx, input, output, water_material(colour(*ctx.params)));
     for (const VectorFeature* f : strokes) {
       if (!is_water_stroke(*f)) continue;
       if (centres.empty()) {  // once, for the first water stroke

@@ -366,19 +366,23 @@ TEST(DeformWater, LakeMeshCarriesFacetNormals) {
               lake.positions.size() / 3, welded.size(), lake.indices.size() / 3);
 }
 
-// The lake is drawn as water: read from the stored GLB's own JSON (not through decode_mesh_glb),
-// every primitive's material is opaque, not metallic (glTF's default metallicFactor is 1), smooth
-// (roughness at most 0.3, so it shows the sun's highlight), its base colour sRGB (0.25, 0.45,
-// 0.55) in linear terms by IEC 61966-2-1's transfer function.
-TEST(DeformWater, LakeMeshHasAWaterMaterial) {
-  const Basin basin(stroke(2000, {{"level", 1100}}));
-  const CliResult r = basin.run();
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json gltf = test::split_glb(content_payload(stored_lake_blob(basin.store))).json;
-  const auto linear = [](double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-  };
-  const std::array<double, 3> water{linear(0.25), linear(0.45), linear(0.55)};
+// deform.water and deform.water_bodies with deform.water's params `params`.
+json water_steps_with(const json& params) {
+  json steps = water_steps();
+  steps[0]["params"] = params;
+  return steps;
+}
+
+// IEC 61966-2-1's transfer function: an sRGB component as a linear one.
+double srgb_to_linear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// Read from the stored GLB's own JSON (not through decode_mesh_glb): every primitive's material
+// is "water", opaque, not metallic (glTF's default metallicFactor is 1), smooth (roughness at
+// most 0.3, so it shows the sun's highlight), its base colour `srgb` in linear terms.
+void expect_water_material(const std::string& store, const std::array<double, 3>& srgb) {
+  const json gltf = test::split_glb(content_payload(stored_lake_blob(store))).json;
   size_t primitives = 0;
   for (const json& mesh : gltf.at("meshes"))
     for (const json& primitive : mesh.at("primitives")) {
@@ -392,10 +396,43 @@ TEST(DeformWater, LakeMeshHasAWaterMaterial) {
       EXPECT_LE(pbr.value("roughnessFactor", 1.0), 0.3);
       const json& colour = pbr.at("baseColorFactor");
       ASSERT_EQ(colour.size(), 4u);
-      for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(colour[k].get<double>(), water[k], 1e-5) << k;
+      for (size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(colour[k].get<double>(), srgb_to_linear(srgb[k]), 1e-5) << k;
       EXPECT_EQ(colour[3].get<double>(), 1.0);
     }
   EXPECT_GE(primitives, 1u);
+}
+
+// By default the lake is a cartographer's blue-green, sRGB (0.25, 0.45, 0.55).
+TEST(DeformWater, LakeMeshHasAWaterMaterial) {
+  const Basin basin(stroke(2000, {{"level", 1100}}));
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_water_material(basin.store, {0.25, 0.45, 0.55});
+}
+
+TEST(DeformWater, ColourParameterSetsTheLakesColour) {
+  const Basin basin(stroke(2000, {{"level", 1100}}), water_steps_with({{"colour", {0.1, 0.6, 1}}}));
+  const CliResult r = basin.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_water_material(basin.store, {0.1, 0.6, 1});
+}
+
+// A colour of two components, or one beyond 1, fails naming the parameter and value, and the
+// step writes no mesh.
+TEST(DeformWater, BadColourNamesTheParameterAndValue) {
+  for (const auto& [colour, expected] :
+       {std::pair{json{0.2, 0.3}, std::string("params.colour: expected 3 numbers (sRGB r, g, b in "
+                                              "0..1), got [0.2,0.3]")},
+        std::pair{json{0.2, 1.5, 0},
+                  std::string("params.colour[1]: 1.5 is above the maximum 1")}}) {
+    const Basin basin(stroke(2000, {{"level", 1100}}), water_steps_with({{"colour", colour}}));
+    const CliResult r = basin.run();
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    const auto st = Store::open(basin.store, Store::Mode::ReadOnly);
+    EXPECT_FALSE(st->layer("water_mesh") && !st->content_cells("water_mesh").empty());
+  }
 }
 
 TEST(DeformWater, SameBitsForOneAndTwoThreads) {
