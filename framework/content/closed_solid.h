@@ -20,8 +20,9 @@ std::vector<uint32_t> without_fins(const MeshObject& object);
 // True when two triangles of `object` cross: an edge of one passes through the other's interior
 // strictly (orientations in double: touching, coplanar overlaps and near-degenerate cases within
 // rounding are not counted). Triangles sharing an edge are never counted; triangles sharing one
-// point are tested with the edge opposite it. Vertices at one position are one point. O(n^2) in
-// the triangles, pruned by bounding boxes: meant for single objects (buildings, decks).
+// point are tested with the edge opposite it. Vertices at one position are one point. Pairs of
+// triangles found by a sweep of their bounding boxes along x: near n log n for surfaces spread
+// out (a lake), O(n^2) at worst.
 bool has_crossing_triangles(const MeshObject& object);
 
 }  // namespace maquette
