@@ -51,6 +51,10 @@ double instance_share(double width_m, double sample_m) {
   return std::min(1.0, (width_m / sample_m) * (width_m / sample_m));
 }
 
+double model_share(double width_m, double sample_m) {
+  return instance_share(width_m, sample_m) / instance_share(width_m, sample_m / 2);
+}
+
 InstancesContent thin_instances(std::span<const InstancesContent> children,
                                 const ContentLevel& level, const ModelExtent& model_extent) {
   InstancesContent out;
@@ -70,8 +74,10 @@ InstancesContent thin_instances(std::span<const InstancesContent> children,
                          : model_extent(name);
       const double width =
           at->second * std::max(std::abs(c.scale[3 * i]), std::abs(c.scale[3 * i + 1]));
-      const double share = instance_share(width, level.sample_m);
-      const double widen = std::max(1.0, level.sample_m / width);
+      const bool cover = name.starts_with(kBuiltinPrototypePrefix);
+      const double share =
+          cover ? instance_share(width, level.sample_m) : model_share(width, level.sample_m);
+      const double widen = cover ? std::max(1.0, level.sample_m / width) : 1.0;
       if (!(instance_draw(instance_key(c, i), level.depth) < share)) continue;
       const auto [it, added] = names.try_emplace(name, uint16_t(out.prototypes.size()));
       if (added) out.prototypes.push_back(name);

@@ -92,14 +92,20 @@ struct Fate {
   bool kept = true;
   double width = 0;
 };
-// The fate of an instance `width` metres wide at the base whose object id is `id`.
-Fate fate_of(double width, uint64_t id, int depth) {
+// The fate of an instance `width` metres wide at the base whose object id is `id`: a plant is
+// widened to each level's sample; a model keeps its width and survives from level to level with
+// the ratio of the shares of its width at the two samples.
+Fate fate_of(double width, uint64_t id, int depth, bool model = false) {
   Fate f{true, width};
+  const auto share = [](double w, double sample) {
+    return std::min(1.0, (w / sample) * (w / sample));
+  };
   for (int d = 1; d <= depth && f.kept; ++d) {
     const double sample = sample_at(d);
-    const double share = std::min(1.0, (f.width / sample) * (f.width / sample));
-    f.kept = instance_draw(id, d) < share;
-    f.width = std::max(f.width, sample);
+    f.kept =
+        instance_draw(id, d) < (model ? share(f.width, sample) / share(f.width, sample_at(d - 1))
+                                      : share(f.width, sample));
+    if (!model) f.width = std::max(f.width, sample);
   }
   return f;
 }
@@ -342,7 +348,7 @@ TEST(InstancesLod, PlacedModelsThinByTheirModelsSize) {
       for (int d = 0; d < depth; ++d) parent = parent.parent();
       for (size_t i = 0; i < original.size(); ++i) {
         const Fate f =
-            fate_of(40.0 * original.scale[3 * i], original.provenance[i].object_id, depth);
+            fate_of(40.0 * original.scale[3 * i], original.provenance[i].object_id, depth, true);
         const auto at = got_by_id.find(original.provenance[i].object_id);
         ASSERT_EQ(f.kept, at != got_by_id.end()) << "level " << level << " instance " << i;
         if (!f.kept) continue;
