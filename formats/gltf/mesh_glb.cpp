@@ -52,7 +52,9 @@ void check_object(const MeshContent& c, size_t i) {
 // The material of objects without one (content.h's default grey, as structures.prism's faces
 // without a texture), written as the GLB's last material: a primitive without a material gets
 // glTF's default one, a white metal, which a viewer without an environment map (three.js, as
-// `maquette view`) draws pure black wherever its sun does not reach. Read back as -1.
+// `maquette view`) draws pure black wherever its sun does not reach. Marked by kDefaultMarker in
+// its extras and read back as -1 by the mark, not by its value: content may have a grey of its own.
+constexpr const char* kDefaultMarker = "maquette_default_material";
 Material default_grey() {
   Material m;  // not metallic, roughness 1, single-sided
   m.name = "default grey";
@@ -427,8 +429,10 @@ std::string encode_mesh_glb(const MeshContent& content, const MeshGlbSettings& s
     materials.push_back(content_material(content.materials[i], buffer, images, textures, 0));
     webp |= content.materials[i].image_mime == "image/webp";
   }
-  if (std::ranges::any_of(content.objects, [](const MeshObject& o) { return o.material < 0; }))
+  if (std::ranges::any_of(content.objects, [](const MeshObject& o) { return o.material < 0; })) {
     materials.push_back(content_material(default_grey(), buffer, images, textures, 0));
+    materials.back()["extras"][kDefaultMarker] = true;
+  }
   PrimitiveWriter writer(content, settings, buffer);
   json primitives = json::array();
   for (const Group& g : groups_of(content)) primitives.push_back(writer.write(g));
@@ -460,7 +464,8 @@ MeshContent decode_mesh_glb(std::string_view glb, const EnuOrigin& origin,
   const GltfDocument doc = parse_gltf(glb, where, {});
   MeshContent out{origin, read_materials(doc), {}};
   int default_material = -1;  // the GLB's index of default_grey(), if written
-  if (!out.materials.empty() && out.materials.back() == default_grey()) {
+  const json& written = doc.json.value("materials", json::array());
+  if (!written.empty() && written.back().value("extras", json::object()).contains(kDefaultMarker)) {
     default_material = int(out.materials.size()) - 1;
     out.materials.pop_back();
   }

@@ -9,8 +9,9 @@
 // - PBR metallic-roughness materials, base-colour images embedded as they were given
 //   (bufferView and mimeType; WebP through EXT_texture_webp, then required); objects without a
 //   material (-1) get one more, the last: "default grey" (base colour 0.6, not metallic,
-//   roughness 1), not glTF's default material, a white metal that three.js draws black where
-//   its sun does not reach; decode_mesh_glb reads it back as -1;
+//   roughness 1, extras {"maquette_default_material": true}), not glTF's default material, a
+//   white metal that three.js draws black where its sun does not reach; decode_mesh_glb reads
+//   the material so marked back as -1;
 // - per-object provenance: each vertex's _FEATURE_ID_0 (EXT_mesh_features) is its object's row
 //   in the GLB's one property table (EXT_structural_metadata, class "object": object_id UINT64,
 //   feature_id INT64 (no data: -1), tool STRING, attributes STRING holding the JSON object;

@@ -118,9 +118,10 @@ bool has_crossing_triangles(const MeshObject& object) {
           box[t][2] > box[s][5])
         continue;
       int shared = 0, shared_s = -1, shared_t = -1;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (corner[s][size_t(i)] == corner[t][size_t(j)]) ++shared, shared_s = i, shared_t = j;
+      for (int ks = 0; ks < 3; ++ks)
+        for (int kt = 0; kt < 3; ++kt)
+          if (corner[s][size_t(ks)] == corner[t][size_t(kt)])
+            ++shared, shared_s = ks, shared_t = kt;
       if (shared >= 2) continue;
       if (shared == 1) {
         // The edges opposite the shared point: (i + 1, i + 2).

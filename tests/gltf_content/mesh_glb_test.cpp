@@ -169,6 +169,23 @@ TEST(MeshGlb, ObjectsWithoutAMaterialAreDrawnGreyNotMetal) {
   EXPECT_EQ(chunks(encode_mesh_glb(textured_box())).first["materials"].size(), 1u);
 }
 
+// The default grey is known by its mark, not its value: content's own material that equals it
+// (name and factors) stays the object's material through a round trip.
+TEST(MeshGlb, ContentsOwnGreyIsNotTakenForTheDefault) {
+  MeshContent c = textured_box();
+  Material grey;
+  grey.name = "default grey";
+  grey.base_colour = {0.6f, 0.6f, 0.6f, 1};
+  c.materials = {grey};
+  c.objects[0].material = 0;
+  const std::string glb = encode_mesh_glb(c);
+  EXPECT_EQ(chunks(glb).first["materials"].size(), 1u);
+  const MeshContent out = decode_mesh_glb(glb, c.origin, "test blob");
+  ASSERT_EQ(out.materials.size(), 1u);
+  EXPECT_EQ(out.materials[0], grey);
+  EXPECT_EQ(out.objects[0].material, 0);
+}
+
 // Read as EXT_structural_metadata specifies, without the decoder: the gltf-validator does not
 // check this extension (nor EXT_mesh_features: it reports them as unsupported).
 TEST(MeshGlb, PropertyTableFollowsExtStructuralMetadata) {
