@@ -1,4 +1,5 @@
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <optional>
 #include <string>
@@ -150,6 +151,9 @@ class Place : public CellOperator {
       };
       const LonLat origin = ground(fit.offset);
       if (!ctx.owns(origin)) continue;
+      if (fit.outline_not_found)
+        std::cerr << where << ": the stroke does not trace model '" << stroke.model
+                  << "''s outline: placed by the stroke's axes and area only\n";
       // Its base stands on the lowest terrain under the placed base, as a building's does
       // (terrain_base.h): on a slope nothing floats.
       PixelRing base_pixels;

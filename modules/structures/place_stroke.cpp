@@ -246,7 +246,10 @@ PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& opt
   // that does not trace it): the moments' fit stands.
   const double scale_change = std::hypot(refined.a, refined.b) / fit.scale;
   const double shift = std::hypot(refined.t[0] - fit.offset[0], refined.t[1] - fit.offset[1]);
-  if (!(scale_change > 0.8 && scale_change < 1.25 && shift < std::sqrt(to.major_var))) return fit;
+  if (!(scale_change > 0.8 && scale_change < 1.25 && shift < std::sqrt(to.major_var))) {
+    fit.outline_not_found = true;
+    return fit;
+  }
   fit.rotation = std::atan2(refined.b, refined.a);
   fit.scale = std::hypot(refined.a, refined.b);
   fit.offset = refined.t;

@@ -70,8 +70,9 @@ struct PlaceFit {
   double rotation = 0;  // radians, counter-clockwise, in (-pi, pi]
   double scale = 1;     // uniform; sqrt(stroke area / base area) before the refinement
   Point2 offset{};      // where the model's origin goes: stroke centroid - scale R base centroid
-  bool half_turn_decided = true;  // false: the skewness could not tell rotation from rotation + pi
-  double axis_ratio = 0;          // the stroke's major_var / minor_var
+  bool half_turn_decided = true;   // false: the skewness could not tell rotation from rotation + pi
+  double axis_ratio = 0;           // the stroke's major_var / minor_var
+  bool outline_not_found = false;  // the refinement left the axes' fit far behind: not used
 };
 
 // The transform that puts `base` (model metres) into `stroke` (tangent-plane metres): the area
@@ -81,10 +82,10 @@ struct PlaceFit {
 // stroke's points to the placed base outline, started there (precondition: the stroke traces the
 // footprint's outline, as it does around a building in the orthophoto; a refinement that changes
 // the scale by more than 25 % or moves the model by more than the stroke's major standard
-// deviation has not found the outline, and the axes' fit is returned). Throws maquette::Error
-// naming `feature` (e.g. "structures.place: feature 12") for a degenerate ring (area_axes) or,
-// without options.rotation, when the stroke's axes are nearly equal (axis ratio <
-// options.min_axis_ratio) or the base's are (its heading is then undefined too).
+// deviation has not found the outline, and the axes' fit is returned, outline_not_found set).
+// Throws maquette::Error naming `feature` (e.g. "structures.place: feature 12") for a degenerate
+// ring (area_axes) or, without options.rotation, when the stroke's axes are nearly equal (axis
+// ratio < options.min_axis_ratio) or the base's are (its heading is then undefined too).
 PlaceFit fit_place(const Ring& stroke, const Ring& base, const PlaceOptions& options,
                    const std::string& feature);
 

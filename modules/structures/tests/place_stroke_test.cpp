@@ -414,7 +414,23 @@ TEST(PlaceFit, StrokeOfCornersOnlyFitsExactly) {
     EXPECT_NEAR(fit.scale, 1.6, 1e-9);
     EXPECT_NEAR(fit.offset[0], -220, 1e-6);
     EXPECT_NEAR(fit.offset[1], 310, 1e-6);
+    EXPECT_FALSE(fit.outline_not_found);
   }
+}
+
+// A stroke that does not trace the footprint (a thin L around a lot's corner, for a rectangular
+// model): the refinement runs off, the axes' fit stands and says so.
+TEST(PlaceFit, StrokeNotTracingTheOutlineKeepsTheAxesFit) {
+  const Ring base{{0, 0}, {40, 0}, {40, 14}, {0, 14}};
+  const Ring stroke = l_ring(100, 20, 80, 10);  // a long, thin L around the lot's corner
+  const PlaceFit fit = fit_place(stroke, base, {}, "feature 5");
+  PlaceOptions axes_only;
+  axes_only.refine = false;
+  const PlaceFit axes = fit_place(stroke, base, axes_only, "feature 5");
+  EXPECT_TRUE(fit.outline_not_found);
+  EXPECT_EQ(fit.rotation, axes.rotation);
+  EXPECT_EQ(fit.scale, axes.scale);
+  EXPECT_FALSE(axes.outline_not_found);
 }
 
 // The geodesic area and side lengths of the ring (GeographicLib's PolygonArea and Geodesic on
