@@ -44,6 +44,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.rgb.assign(3 * n, 0);
   for (auto* guide : {&p.altitude, &p.distance, &p.lon, &p.lat}) guide->assign(n, NAN);
   if (look.land_cover) p.land_cover.assign(n, NAN);
+  if (look.shadow) p.cast_shadow.assign(n, NAN);
   p.silhouette.assign(n, 0);
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
@@ -92,7 +93,12 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
           std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       const double lit =
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
-      shades[i] = float(0.3 + 0.7 * std::max(0.0, lit));
+      double sunlit = 1;
+      if (look.shadow) {
+        p.cast_shadow[i] = interpolate(*look.shadow, 1, 0);
+        sunlit = 1 - p.cast_shadow[i];
+      }
+      shades[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
   });
 
@@ -154,6 +160,7 @@ void write_guides(const Panorama& p, const std::string& path) {
     std::vector<std::pair<const char*, const std::vector<double>*>> bands = {
         {"altitude", &p.altitude}, {"distance", &p.distance}, {"lon", &p.lon}, {"lat", &p.lat}};
     if (!p.land_cover.empty()) bands.emplace_back("land_cover", &p.land_cover);
+    if (!p.cast_shadow.empty()) bands.emplace_back("cast_shadow", &p.cast_shadow);
     DatasetPtr ds(driver->Create(out.temp_path().c_str(), p.width, p.height, int(bands.size()),
                                  GDT_Float64, geotiff_creation_options(true).List()));
     if (!ds) gdal_error("cannot create " + out.temp_path());

@@ -30,6 +30,9 @@ struct PanoramaLook {
   double sun_azimuth = 315, sun_altitude = 45;  // degrees (clockwise from north, above horizon)
   double haze_distance = 60000;                 // metres
   double silhouette_jump = 1.05;
+  // Per vertex of the scene, 1 in the terrain's cast shadow (render/terrain_shadow.h), or none:
+  // a shadowed surface gets the hillshade's ambient share only, as a slope facing away does.
+  const std::vector<uint8_t>* shadow = nullptr;
 };
 
 struct Panorama {
@@ -37,6 +40,7 @@ struct Panorama {
   std::vector<uint8_t> rgb;  // 3 per pixel, row-major
   // Per pixel, NaN on the sky: metres of the DEM's datum, metres from the eye, degrees, class.
   std::vector<double> altitude, distance, lon, lat, land_cover;
+  std::vector<double> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
   std::vector<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 
@@ -45,7 +49,8 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
                         const PanoramaLook& look);
 
 // Writes OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF, no
-// georeferencing, one band each: altitude, distance, lon, lat, and land_cover when sampled; NaN on
+// georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
+// when computed; NaN on
 // the sky) and stem + "-silhouettes.png" (8-bit). Each file whole or not at all.
 void write_panorama(const Panorama& panorama, const std::string& out);
 

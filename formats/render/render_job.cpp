@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
+#include "render/terrain_shadow.h"
 
 namespace maquette {
 namespace {
@@ -51,6 +52,9 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
   if (!(job.haze_distance > 0))
     throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
   check_bend(job.bend);
+  if (job.shadows && !(job.sun_altitude > 0 && job.sun_altitude < 90))
+    throw Error("--sun altitude " + std::to_string(job.sun_altitude) +
+                " must be in (0, 90) degrees for --shadows");
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
   const auto ground = terrain_ellipsoidal_height(store, grid, dem, at);
@@ -72,6 +76,10 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
   }
   const PinholeCamera camera(job.camera);
   TerrainScene scene = build_terrain_scene(store, grid, dem, camera, job.exaggeration);
+  std::vector<uint8_t> shadow;
+  if (job.shadows)  // on the unbent terrain: the bend is a drawing device, not the sun's
+    shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration, job.sun_azimuth,
+                             job.sun_altitude);
   job.bend.base = ground.value_or(0) - eye.height;  // the ENU up of the ground under the eye
   bend_positions(scene.mesh.positions, job.bend);
   spdlog::debug("panorama: {} vertices, {} triangles", scene.altitude.size(),
@@ -84,6 +92,7 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
   look.stretch = job.stretch;
   look.sun_azimuth = job.sun_azimuth;
   look.sun_altitude = job.sun_altitude;
+  look.shadow = job.shadows ? &shadow : nullptr;
   return shade_panorama(store, grid, scene, fragments, camera, look);
 }
 

@@ -27,13 +27,14 @@ struct PanoramaJob {
   bool stretch = true;  // render/panorama.h PanoramaLook::stretch
   double haze_distance = 60000;
   double sun_azimuth = 315, sun_altitude = 45;
+  bool shadows = false;  // the terrain's cast shadows (render/terrain_shadow.h) under that sun
 };
 
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
 // wrong kind (--dem: a one-channel raster; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
 // categorical), a bend out of range (render/progressive_bend.h), a camera below the terrain (or
 // --above-ground where the DEM has no data), a field of view, pitch or size out of range
-// (render/camera.h).
+// (render/camera.h), a sun altitude outside (0, 90) with --shadows.
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
 
 }  // namespace maquette

@@ -47,7 +47,7 @@ void add_render_command(CLI::App& app) {
       "panorama",
       "An oblique picture of the terrain from a camera (CPU, deterministic), and its guides: "
       "OUT stem + -guides.tif (altitude, distance, lon, lat[, land_cover]; float64, NaN on the "
-      "sky), -silhouettes.png");
+      "sky; cast_shadow with --shadows), -silhouettes.png");
   cmd->add_option("STORE", o->store, "Store file")->required();
   cmd->add_option("OUT", o->out, "Output PNG")->required();
   cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();
@@ -98,6 +98,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--sun", o->sun, "The hillshading's sun: AZIMUTH ALTITUDE, degrees")
       ->expected(2)
       ->capture_default_str();
+  cmd->add_flag("--shadows", o->job.shadows,
+                "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
   add_threads_option(cmd, o->threads);
   cmd->callback([o] { run(*o); });
 }
