@@ -24,6 +24,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "cone_dem.h"
 #include "render/cast_shadow.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
@@ -34,8 +35,9 @@ namespace {
 using test::run_maquette;
 
 constexpr double kDegree = std::numbers::pi / 180;
-constexpr double kConeLon = -111, kConeLat = 37.3;  // on UTM 12's central meridian
-constexpr double kConeRadius = 3000, kConeHeight = 1500, kBase = 1000;
+using test::cone_axis;
+using test::kConeHeight;
+using test::kConeRadius;
 constexpr double kAzimuth = 250, kAltitude = 15;  // the sun, degrees
 
 bool have_grass() { return std::system("command -v grass >/dev/null 2>&1") == 0; }
@@ -71,31 +73,6 @@ Raster rsunmask(const std::string& dem, double azimuth) {
                               std::to_string(kAltitude);
   if (std::system(command.c_str()) != 0) throw std::runtime_error("r.sunmask failed");
   return read_raster(out);
-}
-
-// The cone's axis in UTM 12.
-std::array<double, 2> cone_axis() {
-  return test::Projector("EPSG:4326", "EPSG:32612")(kConeLon, kConeLat);
-}
-
-// A DEM in UTM 12 of `cells` x `cells` of `cell` metres centred on the cone's axis, heights
-// `height(east, north)` (metres from the axis).
-std::string write_utm(const std::string& path, int cells, double cell,
-                      const std::function<double(double, double)>& height) {
-  const auto [x, y] = cone_axis();
-  test::RasterSpec spec;
-  spec.width = spec.height = cells;
-  const double half = cells * cell / 2;
-  spec.geotransform = {x - half, cell, 0, y + half, 0, -cell};
-  spec.crs = "EPSG:32612";
-  test::write_raster(path, spec, [x = x, y = y, &height](int, double e, double n) {
-    return height(e - x, n - y);
-  });
-  return path;
-}
-
-double cone(double e, double n) {
-  return kBase + kConeHeight * std::max(0.0, 1 - std::hypot(e, n) / kConeRadius);
 }
 
 // Whether (e, n) metres from the cone's axis lies in its exact shadow (the kite of the header).
@@ -153,7 +130,7 @@ Agreement agreement(const Raster& dem, const std::function<bool(size_t)>& first,
 
 TEST(CastShadow, ConeAgreesWithItsExactShadowAndRsunmask) {
   const std::string dir = test::temp_dir();
-  const std::string path = write_utm(dir + "/cone.tif", 200, 60, cone);
+  const std::string path = test::write_utm_dem(dir + "/cone.tif", 200, 60, test::cone_height);
   const Raster dem = read_raster(path);
   const auto [x, y] = cone_axis();
   const std::vector<uint8_t> ours = our_mask(dem, kAzimuth);
@@ -193,9 +170,9 @@ TEST(CastShadow, RidgeAgreesWithRsunmask) {
   // a sun from the west at 15 degrees shadows 1000 / tan(15) = 3732 m east of the crest.
   const std::string dir = test::temp_dir();
   auto ridge = [](double e, double) {
-    return kBase + std::max(0.0, 1000 - 0.5 * std::abs(e + 1500));
+    return test::kConeBase + std::max(0.0, 1000 - 0.5 * std::abs(e + 1500));
   };
-  const std::string path = write_utm(dir + "/ridge.tif", 200, 60, ridge);
+  const std::string path = test::write_utm_dem(dir + "/ridge.tif", 200, 60, ridge);
   const Raster dem = read_raster(path);
   const std::vector<uint8_t> ours = our_mask(dem, 270);
   const auto [x, y] = cone_axis();
@@ -261,7 +238,7 @@ std::string slurp(const std::string& path) {
 
 TEST(CastShadow, PanoramaShadowsAreTheConesExactShadow) {
   const std::string dir = test::temp_dir(), store = dir + "/s.mqt";
-  const std::string dem = write_utm(dir + "/cone.tif", 400, 30, cone);
+  const std::string dem = test::write_utm_dem(dir + "/cone.tif", 400, 30, test::cone_height);
   auto r =
       run_maquette("ingest " + store + " --layer dem --as dem --vertical-datum ellipsoid " + dem);
   ASSERT_EQ(r.exit_code, 0) << r.err;
