@@ -33,6 +33,14 @@ double CastShadow::height(double col, double row) const {
     return grid_.z[size_t(r) * size_t(grid_.width) + size_t(c)];
   }
   const double c = std::floor(col), r = std::floor(row), fc = col - c, fr = row - r;
+  if (c >= 0 && r >= 0 && c + 1 < grid_.width && r + 1 < grid_.height) {
+    // Inside the grid: the four nodes at once (NaN when one has no data: read again below).
+    const float* z = &grid_.z[size_t(r) * size_t(grid_.width) + size_t(c)];
+    const float* below = z + grid_.width;
+    const double top = z[0] + (z[1] - z[0]) * fc, bottom = below[0] + (below[1] - below[0]) * fc;
+    const double h = top + (bottom - top) * fr;
+    if (!std::isnan(h)) return h;
+  }
   double sum = 0, weight = 0;
   for (int k = 0; k < 4; ++k) {
     const int cc = int(c) + (k & 1), rr = int(r) + (k >> 1);
