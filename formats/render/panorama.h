@@ -50,8 +50,8 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
 
 // Writes OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF, no
 // georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
-// when computed; NaN on
-// the sky) and stem + "-silhouettes.png" (8-bit). Each file whole or not at all.
+// when computed; NaN on the sky) and stem + "-silhouettes.png" (8-bit). Each file whole or not at
+// all.
 void write_panorama(const Panorama& panorama, const std::string& out);
 
 }  // namespace maquette
