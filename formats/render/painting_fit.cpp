@@ -180,9 +180,8 @@ CameraSpec scan_cameras(const EnuFrame& origin, const std::vector<GroundClick>& 
 
 }  // namespace
 
-std::vector<std::array<double, 2>> project_ground(const CameraSpec& camera,
-                                                  const ProgressiveBend& bend,
-                                                  const std::vector<GeodeticPoint>& ground) {
+std::vector<PicturePoint> project_ground(const CameraSpec& camera, const ProgressiveBend& bend,
+                                         const std::vector<GeodeticPoint>& ground) {
   const PinholeCamera pinhole(camera);
   std::vector<double> positions;
   positions.reserve(3 * ground.size());
@@ -191,12 +190,12 @@ std::vector<std::array<double, 2>> project_ground(const CameraSpec& camera,
     positions.insert(positions.end(), p.begin(), p.end());
   }
   bend_positions(positions, bend);
-  std::vector<std::array<double, 2>> pixels(ground.size());
+  std::vector<PicturePoint> pixels(ground.size());
   for (size_t i = 0; i < ground.size(); ++i) {
     const Vec3d view =
         pinhole.to_view({positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]});
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    pixels[i] = view[2] > 0 ? pinhole.to_pixel(view) : std::array<double, 2>{kNaN, kNaN};
+    pixels[i] = view[2] > 0 ? pinhole.to_pixel(view) : PicturePoint{kNaN, kNaN};
   }
   return pixels;
 }
@@ -255,8 +254,24 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
     bent.unpack(best, fit.camera, fit.bend);
   }
   fit.fitted = project_ground(fit.camera, fit.bend, ground);
+  for (const auto& p : fit.fitted)
+    if (!std::isfinite(p[0]))
+      throw Error("painting fit: no camera sees every control point (rms error " +
+                  std::to_string(std::sqrt(error / double(clicks.size()))) + " px)");
   fit.rms_error = std::sqrt(error / double(clicks.size()));
+  if (options.warp_smoothing) {
+    std::vector<PicturePoint> targets;
+    for (const GroundClick& c : clicks) targets.push_back({c.x, c.y});
+    fit.warp = PictureWarp(fit.fitted, targets, std::max(options.width, options.height),
+                           *options.warp_smoothing);
+  }
   return fit;
+}
+
+std::vector<PicturePoint> PaintingFit::to_painting(const std::vector<GeodeticPoint>& ground) const {
+  auto pixels = project_ground(camera, bend, ground);
+  for (auto& p : pixels) p = warp(p);
+  return pixels;
 }
 
 }  // namespace maquette

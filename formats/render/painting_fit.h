@@ -13,7 +13,9 @@
 //   (3), heading, pitch and focal length;
 // - with the bend, Levenberg-Marquardt again over those and the bend's curvature and start, from
 //   that plain camera and a few radii and starts scaled on the points' distance from the eye; the
-//   least error kept.
+//   least error kept;
+// - optionally the residual warp, a thin-plate spline of the painting taking the fitted points onto
+//   the clicks (render/painting_fit_warp.h).
 // Deterministic (no threads, no random starts). Errors are pixels in the painting.
 #pragma once
 
@@ -24,6 +26,7 @@
 
 #include "core/grid.h"
 #include "render/camera.h"
+#include "render/painting_fit_warp.h"
 #include "render/progressive_bend.h"
 
 namespace maquette {
@@ -42,13 +45,21 @@ struct PaintingFitOptions {
   // The ground's height above the ellipsoid at a point (the DEM's, 0 where it has none, as
   // render_job.h does): the bend's base is the ground under the eye.
   std::function<double(LonLat)> ground_height;
+  // When set, the residual warp (render/painting_fit_warp.h) is fitted with this smoothing to what
+  // the camera and bend leave of the clicks' errors.
+  std::optional<double> warp_smoothing;
 };
 
 struct PaintingFit {
-  CameraSpec camera;                          // width and height: the painting's
-  ProgressiveBend bend;                       // infinite radius when not fitted; its base set
-  double rms_error = 0;                       // pixels, over the clicks
-  std::vector<std::array<double, 2>> fitted;  // where the fit puts each click's ground point
+  CameraSpec camera;     // width and height: the painting's
+  ProgressiveBend bend;  // infinite radius when not fitted; its base set
+  PictureWarp warp;      // the identity unless PaintingFitOptions::warp_smoothing is set
+  double rms_error = 0;  // pixels, over the clicks, of the camera and bend (before the warp)
+  std::vector<PicturePoint> fitted;  // where the camera and bend put each click's ground point
+
+  // Where the fit puts ground points in the painting: the camera's and bend's pixel moved by the
+  // warp; NaN behind the eye.
+  std::vector<PicturePoint> to_painting(const std::vector<GeodeticPoint>& ground) const;
 };
 
 // Throws maquette::Error when fewer than 4 clicks are given (6 with the bend, 5 without a fov:
@@ -57,8 +68,7 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks, const PaintingF
 
 // Where `camera` and `bend` (render/progressive_bend.h, its base set) draw `ground` points (picture
 // coordinates); NaN for a point behind the eye. Precondition: PinholeCamera(camera) is valid.
-std::vector<std::array<double, 2>> project_ground(const CameraSpec& camera,
-                                                  const ProgressiveBend& bend,
-                                                  const std::vector<GeodeticPoint>& ground);
+std::vector<PicturePoint> project_ground(const CameraSpec& camera, const ProgressiveBend& bend,
+                                         const std::vector<GeodeticPoint>& ground);
 
 }  // namespace maquette

@@ -42,8 +42,8 @@ class Fields {
                   double hi) const {
     const double v = number(object, key, where);
     if (!(v >= lo && v <= hi))
-      fail(where, find(object, key)->dump() + " is outside [" + shortest(lo) + ", " +
-                      shortest(hi) + "]");
+      fail(where,
+           find(object, key)->dump() + " is outside [" + shortest(lo) + ", " + shortest(hi) + "]");
     return v;
   }
 

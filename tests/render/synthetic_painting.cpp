@@ -30,7 +30,13 @@ std::optional<std::array<double, 2>> SyntheticPainting::pixel(const ProjEnu& enu
   const Matrix3 r = camera.rotation();
   if (r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2] <= 0) return std::nullopt;
   const auto px = camera.project(p);
-  const double x = px[0] + 0.5, y = px[1] + 0.5;  // OpenCV's pixel centres are at integers
+  double x = px[0] + 0.5, y = px[1] + 0.5;  // OpenCV's pixel centres are at integers
+  if (bulge != 0) {
+    const double s = camera.width / 6.0, dx = x - camera.width * 0.5, dy = y - camera.height * 0.5;
+    const double push = bulge * std::exp(-(dx * dx + dy * dy) / (2 * s * s)) / s;
+    x += push * dx;
+    y += push * dy;
+  }
   if (x < 0 || y < 0 || x > camera.width || y > camera.height) return std::nullopt;
   return std::array<double, 2>{x, y};
 }

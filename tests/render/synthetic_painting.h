@@ -21,6 +21,10 @@ struct SyntheticPainting {
   double eye_lon = 0, eye_lat = 0, eye_height = 0;  // metres above the ellipsoid
   TestCamera camera;                                // heading, pitch, fov, width, height
   double bend_radius = 0, bend_start = 0;           // no bend when the radius is 0
+  // The painter's distortion: the picture around its centre magnified, each point moved away from
+  // the centre by up to `bulge` pixels, bulge * exp(-r^2 / (2 s^2)) * r / s at distance r, s a
+  // sixth of the width.
+  double bulge = 0;
   // Ground points are drawn in this box of degrees.
   double west = 0, east = 0, south = 0, north = 0;
 
