@@ -26,12 +26,17 @@ double fov_of_focal(double focal, int width) {
 // kilometres in the east-north-up frame at the points' centroid, heading and pitch in radians, the
 // log of the focal length (pixels) when it is fitted, and with the bend q and s, the radius being
 // 100 km / q^2 and the start 1 km * s^2 (both kept in range by their squares).
+// Precondition: `options` and `origin` outlive it.
 class Unknowns {
  public:
   Unknowns(const EnuFrame& origin, const PaintingFitOptions& options, bool bend)
       : origin_(origin), options_(options), fit_focal_(!options.fov), bend_(bend) {}
 
   int size() const { return 5 + fit_focal_ + 2 * bend_; }
+
+  // The ground's height under the eye (above the ellipsoid), the bend's base: held while
+  // Levenberg-Marquardt runs (the DEM is read between runs, not at each step).
+  double ground = 0;
 
   Eigen::VectorXd pack(const CameraSpec& camera, const ProgressiveBend& bend) const {
     Eigen::VectorXd x(size());
@@ -61,7 +66,7 @@ class Unknowns {
       bend.radius = 1e5 / (x[k] * x[k]);
       bend.start = 1000 * x[k + 1] * x[k + 1];
     }
-    bend.base = options_.ground_height({camera.eye.lon, camera.eye.lat}) - camera.eye.height;
+    bend.base = ground - camera.eye.height;
     return std::abs(camera.pitch) <= 90 && camera.fov > 0 && camera.fov <= 170 &&
            !(bend.radius == 0);
   }
@@ -224,7 +229,7 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
   fit.camera = scan_cameras(origin, clicks, options);
   const Unknowns plain(origin, options, false);
   Eigen::VectorXd x = plain.pack(fit.camera, fit.bend);
-  double error = minimize(Reprojection(plain, clicks, ground), x);
+  minimize(Reprojection(plain, clicks, ground), x);
   plain.unpack(x, fit.camera, fit.bend);
 
   if (options.bend) {
@@ -238,10 +243,11 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
     std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(distances.size() / 2),
                      distances.end());
     const double median = distances[distances.size() / 2];
-    const Unknowns bent(origin, options, true);
+    Unknowns bent(origin, options, true);
+    bent.ground = options.ground_height({fit.camera.eye.lon, fit.camera.eye.lat});
     const Reprojection reprojection(bent, clicks, ground);
     Eigen::VectorXd best;
-    error = std::numeric_limits<double>::infinity();
+    double error = std::numeric_limits<double>::infinity();
     for (const double radius : {0.5, 1.0, 2.0, 4.0})
       for (const double start : {0.1, 0.3, 0.6}) {
         Eigen::VectorXd y = bent.pack(fit.camera, {radius * median, start * median, 0});
@@ -251,14 +257,28 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
           best = y;
         }
       }
+    // The base follows the eye: solved again over the ground under the eye found, until it
+    // settles (within 1 cm; the eye moves less at each round).
+    for (int round = 0; round < 8; ++round) {
+      bent.unpack(best, fit.camera, fit.bend);
+      const double under = options.ground_height({fit.camera.eye.lon, fit.camera.eye.lat});
+      if (std::abs(under - bent.ground) < 0.01) break;
+      bent.ground = under;
+      minimize(reprojection, best);
+    }
     bent.unpack(best, fit.camera, fit.bend);
+    // As render_job.h sets it.
+    fit.bend.base =
+        options.ground_height({fit.camera.eye.lon, fit.camera.eye.lat}) - fit.camera.eye.height;
   }
   fit.fitted = project_ground(fit.camera, fit.bend, ground);
-  for (const auto& p : fit.fitted)
-    if (!std::isfinite(p[0]))
-      throw Error("painting fit: no camera sees every control point (rms error " +
-                  std::to_string(std::sqrt(error / double(clicks.size()))) + " px)");
-  fit.rms_error = std::sqrt(error / double(clicks.size()));
+  double squares = 0;
+  for (size_t i = 0; i < clicks.size(); ++i)
+    squares +=
+        std::pow(fit.fitted[i][0] - clicks[i].x, 2) + std::pow(fit.fitted[i][1] - clicks[i].y, 2);
+  fit.rms_error = std::sqrt(squares / double(clicks.size()));
+  if (!std::isfinite(fit.rms_error))
+    throw Error("painting fit: no camera found sees every control point");
   if (options.warp_smoothing) {
     std::vector<PicturePoint> targets;
     for (const GroundClick& c : clicks) targets.push_back({c.x, c.y});

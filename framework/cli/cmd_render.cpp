@@ -102,6 +102,7 @@ void add_render_command(CLI::App& app) {
                 "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
   add_threads_option(cmd, o->threads);
   cmd->callback([o] { run(*o); });
+  add_render_fit_command(render);
 }
 
 }  // namespace maquette::cli

@@ -14,6 +14,8 @@ void add_demo_command(CLI::App& app);
 void add_ingest_command(CLI::App& app);
 void add_view_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+// `render fit`, under the `render` command.
+void add_render_fit_command(CLI::App* render);
 
 // -t,--threads into `threads`: worker threads, 0 for all cores (at most 1024).
 void add_threads_option(CLI::App* cmd, int& threads);

@@ -1,0 +1,103 @@
+#include "render/painting_fit_job.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+#include "render/terrain_scene.h"
+
+namespace maquette {
+namespace {
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const PaintingFitJob& job,
+                                  const PaintingPoints& points, const std::string& points_path) {
+  const auto dem = store.layer(job.dem);
+  if (!dem || dem->kind != LayerKind::Raster || dem->channels != 1)
+    throw Error("--dem layer '" + job.dem + "' is not a one-channel raster layer of the store " +
+                store.path());
+  std::vector<GroundClick> clicks;
+  for (const ControlPoint& p : points.points) {
+    GroundClick c{p.x, p.y, {p.lon, p.lat, 0}};
+    if (p.height) {
+      c.ground.height = *p.height;
+    } else {
+      const auto h = terrain_ellipsoidal_height(store, grid, *dem, {p.lon, p.lat});
+      if (!h)
+        throw Error(points_path + ": " + p.name + " has no height and the --dem layer '" + job.dem +
+                    "' has no data at lon " + number(p.lon) + ", lat " + number(p.lat));
+      c.ground.height = *h;
+    }
+    clicks.push_back(c);
+  }
+  PaintingFitOptions options;
+  options.width = points.width;
+  options.height = points.height;
+  options.fov = job.fov;
+  options.bend = job.bend;
+  options.warp_smoothing = job.warp_smoothing;
+  options.ground_height = [&](LonLat at) {
+    return terrain_ellipsoidal_height(store, grid, *dem, at).value_or(0);
+  };
+  return fit_painting(clicks, options);
+}
+
+void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
+                        const std::string& path) {
+  using nlohmann::json;
+  const CameraSpec& c = fit.camera;
+  json out;
+  out["camera"] = {{"eye", {c.eye.lon, c.eye.lat, c.eye.height}},
+                   {"heading", c.heading},
+                   {"pitch", c.pitch},
+                   {"fov", c.fov},
+                   {"size", {c.width, c.height}}};
+  std::string options = "--camera " + number(c.eye.lon) + " " + number(c.eye.lat) + " " +
+                        number(c.eye.height) + " --heading " + number(c.heading) + " --pitch " +
+                        number(c.pitch) + " --fov " + number(c.fov) + " --size " +
+                        std::to_string(c.width) + " " + std::to_string(c.height);
+  if (fit.bend.bends()) {
+    out["bend"] = {{"radius", fit.bend.radius}, {"start", fit.bend.start}};
+    options +=
+        " --bend-radius " + number(fit.bend.radius) + " --bend-start " + number(fit.bend.start);
+  } else {
+    out["bend"] = nullptr;
+  }
+  out["render_options"] = options;
+  out["rms_error"] = fit.rms_error;
+  json clicks = json::array();
+  for (size_t i = 0; i < points.points.size(); ++i) {
+    const ControlPoint& p = points.points[i];
+    const auto& f = fit.fitted[i];
+    clicks.push_back({{"name", p.name},
+                      {"x", p.x},
+                      {"y", p.y},
+                      {"fitted_x", f[0]},
+                      {"fitted_y", f[1]},
+                      {"error", std::hypot(f[0] - p.x, f[1] - p.y)}});
+  }
+  out["points"] = clicks;
+  if (fit.warp.centres().empty()) {
+    out["warp"] = nullptr;
+  } else {
+    out["warp"] = {{"scale", fit.warp.scale()},
+                   {"centres", fit.warp.centres()},
+                   {"weights", fit.warp.weights()},
+                   {"affine", fit.warp.affine()}};
+  }
+  std::ofstream file(path, std::ios::binary);
+  file << out.dump(2) << '\n';
+  if (!file) throw Error(path + ": cannot be written");
+}
+
+}  // namespace maquette

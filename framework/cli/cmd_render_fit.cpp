@@ -1,0 +1,88 @@
+// maquette render fit: the camera and progressive bend of a painting from control points (painting
+// pixel <-> ground point) against a DEM layer, written as JSON, and optionally the panorama of the
+// store under that camera with its guides: the painting's altitude and land-cover masks
+// (formats/render/painting_fit_job.h).
+#include <spdlog/spdlog.h>
+#include <tbb/global_control.h>
+
+#include <memory>
+#include <optional>
+
+#include "cli/commands.h"
+#include "render/painting_fit_job.h"
+#include "render/render_job.h"
+
+namespace maquette::cli {
+namespace {
+
+struct FitOptions {
+  std::string store, points, out, panorama, texture, land_cover;
+  PaintingFitJob job;
+  int threads = 0;
+};
+
+void run(const FitOptions& o) {
+  const PaintingFitJob& job = o.job;
+  const size_t threads =
+      o.threads > 0
+          ? size_t(o.threads)
+          : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  const PaintingPoints points = read_painting_points(o.points);
+  const PaintingFit fit = fit_painting_to_store(*store, default_grid(), job, points, o.points);
+  // The panorama is rendered before anything is written: bad --texture or --land-cover layers
+  // leave no files.
+  std::optional<Panorama> panorama;
+  if (!o.panorama.empty()) {
+    PanoramaJob render;
+    render.dem = job.dem;
+    render.texture = o.texture;
+    render.land_cover = o.land_cover;
+    render.camera = fit.camera;
+    render.bend = fit.bend;
+    panorama = render_panorama(*store, default_grid(), render);
+  }
+  write_painting_fit(fit, points, o.out);
+  spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
+               points.points.size());
+  if (panorama) {
+    write_panorama(*panorama, o.panorama);
+    spdlog::info("wrote {} and its guides", o.panorama);
+  }
+}
+
+}  // namespace
+
+void add_render_fit_command(CLI::App* render) {
+  auto o = std::make_shared<FitOptions>();
+  CLI::App* cmd = render->add_subcommand(
+      "fit",
+      "The camera and progressive bend of a painting from control points (a JSON file of painting "
+      "pixels and lon/lat[/height]) against a DEM, as JSON; with --panorama, the store drawn under "
+      "that camera and its guides (the painting's altitude and land-cover masks)");
+  cmd->add_option("STORE", o->store, "Store file")->required();
+  cmd->add_option("POINTS", o->points,
+                  "Control points: {\"width\", \"height\", \"points\": [{\"x\", \"y\", \"lon\", "
+                  "\"lat\"[, \"height\" above the ellipsoid][, \"name\"]}]}")
+      ->required();
+  cmd->add_option("OUT", o->out, "Output JSON: camera, bend, errors, warp")->required();
+  cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();
+  cmd->add_option("--fov", o->job.fov,
+                  "The painting's horizontal field of view, degrees (default: fitted)")
+      ->check(CLI::Range(0.0, 170.0));
+  cmd->add_flag("--bend", o->job.bend, "Also fit Terrain Bender's bend radius and start");
+  cmd->add_option("--warp-smoothing", o->job.warp_smoothing,
+                  "Also fit the residual warp, a thin-plate spline with this smoothing (>= 0; "
+                  "0.001 follows clicks with 2 px of noise)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--panorama", o->panorama,
+                  "Also render the store under the fitted camera and bend (no warp) to this PNG, "
+                  "with its guides, as `render panorama` does");
+  cmd->add_option("--texture", o->texture, "With --panorama: imagery layer");
+  cmd->add_option("--land-cover", o->land_cover, "With --panorama: categorical layer guide");
+  add_threads_option(cmd, o->threads);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace maquette::cli

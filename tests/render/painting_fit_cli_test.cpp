@@ -1,0 +1,171 @@
+// `maquette render fit` on a synthetic DEM of terraces (flat steps, heights above the ellipsoid):
+// control points at the terraces' centres, where the tests' own pinhole in PROJ's frame puts them,
+// half with their height, half with the DEM's; the camera written is that pinhole's, and the
+// panorama drawn under it (--panorama) has, at each control point's pixel, guides naming that
+// point's lon/lat, its terrace's height and class. Bad input named.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "proj_enu.h"
+#include "run_cli.h"
+#include "synthetic_raster.h"
+#include "test_camera.h"
+
+namespace maquette {
+namespace {
+
+using nlohmann::json;
+using test::run_maquette;
+
+// Terraces of 0.1 x 0.05 degrees; each flat.
+int terrace(double lon, double lat) {
+  return int(std::floor((lon - 10) / 0.1)) + 3 * int(std::floor((lat - 45) / 0.05));
+}
+double terrace_height(double lon, double lat) { return 100 + 37.0 * terrace(lon, lat); }
+
+constexpr double kEyeLon = 10.15, kEyeLat = 44.96, kEyeHeight = 2500;
+const test::TestCamera kCamera{3, -10, 55, 800, 500};
+
+struct Fixture {
+  std::string dir = test::temp_dir(), store = dir + "/s.mqt", points = dir + "/points.json";
+  std::vector<std::array<double, 4>> clicks;  // x, y, lon, lat
+  Fixture() {
+    const std::string tif = dir + "/dem.tif", classes = dir + "/classes.tif";
+    test::write_raster(tif, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
+                       [](int, double lon, double lat) { return terrace_height(lon, lat); });
+    test::write_raster(classes, test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte"),
+                       [](int, double lon, double lat) { return 1 + terrace(lon, lat); });
+    for (const std::string& ingest : {"--layer dem --as dem --vertical-datum ellipsoid " + tif,
+                                      "--layer lc --as landcover " + classes}) {
+      const auto r = run_maquette("ingest " + store + " " + ingest);
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+    }
+    const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
+    json file{{"width", kCamera.width}, {"height", kCamera.height}, {"points", json::array()}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 6; ++j) {
+        const double lon = 10.05 + 0.1 * i, lat = 45.025 + 0.05 * j;
+        const auto px = kCamera.project(enu({lon, lat}, terrace_height(lon, lat)));
+        const double x = px[0] + 0.5, y = px[1] + 0.5;  // OpenCV's pixel centres are at integers
+        if (x < 0 || y < 0 || x > kCamera.width || y > kCamera.height) continue;
+        json p{{"x", x}, {"y", y}, {"lon", lon}, {"lat", lat}};
+        if (clicks.size() % 2) p["height"] = terrace_height(lon, lat);
+        file["points"].push_back(p);
+        clicks.push_back({x, y, lon, lat});
+      }
+    std::ofstream(points) << file.dump();
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+TEST(PaintingFitCli, FindsTheCameraAndDrawsTheGuides) {
+  const Fixture& f = fixture();
+  ASSERT_GE(f.clicks.size(), 8u);
+  const std::string out = f.dir + "/fit.json", pano = f.dir + "/pano.png";
+  const auto r = run_maquette("render fit " + f.store + " " + f.points + " " + out +
+                              " --dem dem --panorama " + pano + " --land-cover lc");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json fit = read_json(out);
+  const json& camera = fit.at("camera");
+  EXPECT_NEAR(camera.at("eye")[0].get<double>(), kEyeLon, 1e-6);
+  EXPECT_NEAR(camera.at("eye")[1].get<double>(), kEyeLat, 1e-6);
+  EXPECT_NEAR(camera.at("eye")[2].get<double>(), kEyeHeight, 0.1);
+  EXPECT_NEAR(camera.at("heading").get<double>(), kCamera.heading, 1e-4);
+  EXPECT_NEAR(camera.at("pitch").get<double>(), kCamera.pitch, 1e-4);
+  EXPECT_NEAR(camera.at("fov").get<double>(), kCamera.fov, 1e-4);
+  EXPECT_EQ(camera.at("size"), json({800, 500}));
+  EXPECT_TRUE(fit.at("bend").is_null());
+  EXPECT_TRUE(fit.at("warp").is_null());
+  EXPECT_LE(fit.at("rms_error").get<double>(), 0.01);
+  ASSERT_EQ(fit.at("points").size(), f.clicks.size());
+  for (const json& p : fit.at("points")) EXPECT_LE(p.at("error").get<double>(), 0.01) << p;
+  const std::string options = fit.at("render_options");
+  EXPECT_EQ(options.rfind("--camera 10.1", 0), 0u) << options;
+  EXPECT_NE(options.find(" --size 800 500"), std::string::npos) << options;
+  EXPECT_EQ(options.find("--bend"), std::string::npos) << options;
+
+  // The guides of the panorama under the fitted camera, at each control point's pixel.
+  std::unique_ptr<GDALDataset> guides(
+      GDALDataset::Open((f.dir + "/pano-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(guides);
+  ASSERT_EQ(guides->GetRasterXSize(), 800);
+  const auto at = [&](int band, const std::array<double, 4>& c) {
+    double v = 0;
+    EXPECT_EQ(guides->GetRasterBand(band)->RasterIO(GF_Read, int(c[0]), int(c[1]), 1, 1, &v, 1, 1,
+                                                    GDT_Float64, 0, 0),
+              CE_None);
+    return v;
+  };
+  // The pixel's ground point (lon, lat, altitude), projected by the true camera, lies within
+  // that pixel.
+  const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
+  for (const auto& c : f.clicks) {
+    EXPECT_EQ(at(1, c), terrace_height(c[2], c[3]));  // altitude
+    EXPECT_EQ(at(5, c), 1 + terrace(c[2], c[3]));     // land cover
+    const auto px = kCamera.project(enu({at(3, c), at(4, c)}, at(1, c)));
+    EXPECT_LE(std::abs(px[0] + 0.5 - c[0]), 1.0);
+    EXPECT_LE(std::abs(px[1] + 0.5 - c[1]), 1.0);
+  }
+}
+
+TEST(PaintingFitCli, FitsTheWarpWhenAsked) {
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/warped.json";
+  const auto r = run_maquette("render fit " + f.store + " " + f.points + " " + out +
+                              " --dem dem --fov 55 --warp-smoothing 0.001");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json fit = read_json(out);
+  EXPECT_EQ(fit.at("camera").at("fov").get<double>(), 55);
+  EXPECT_EQ(fit.at("warp").at("centres").size(), f.clicks.size());
+  EXPECT_EQ(fit.at("warp").at("scale").get<double>(), 800);
+  // Exact clicks: nothing left to warp.
+  for (const json& w : fit.at("warp").at("weights")) {
+    EXPECT_NEAR(w[0].get<double>(), 0, 1e-3);
+    EXPECT_NEAR(w[1].get<double>(), 0, 1e-3);
+  }
+}
+
+void expect_error(const std::string& args, const std::string& message) {
+  const auto r = run_maquette(args);
+  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+}
+
+TEST(PaintingFitCli, BadInputIsNamed) {
+  const Fixture& f = fixture();
+  const std::string out = f.dir + "/bad.json", fit = "render fit " + f.store + " ";
+  expect_error(fit + f.dir + "/none.json " + out + " --dem dem",
+               f.dir + "/none.json: cannot be read");
+  expect_error(fit + f.points + " " + out + " --dem nope", "--dem layer 'nope'");
+  expect_error(
+      fit + f.points + " " + out + " --dem dem --panorama " + f.dir + "/x.png --land-cover dem",
+      "--land-cover layer 'dem' is not categorical");
+  const std::string far = f.dir + "/far.json";
+  std::ofstream(far) << R"({"width": 800, "height": 500, "points": [
+    {"x": 1, "y": 1, "lon": 10.1, "lat": 45.1}, {"x": 2, "y": 1, "lon": 10.2, "lat": 45.1},
+    {"x": 3, "y": 1, "lon": 10.1, "lat": 45.2}, {"name": "far", "x": 4, "y": 1, "lon": 12, "lat": 45.2}]})";
+  expect_error(fit + far + " " + out + " --dem dem",
+               far +
+                   ": points[3] (far) has no height and the --dem layer 'dem' has no data at lon "
+                   "12, lat 45.2");
+  expect_error(fit + f.points + " " + out + " --dem dem --fov 200", "--fov");
+  expect_error(fit + f.points + " " + out + " --dem dem --warp-smoothing -1", "--warp-smoothing");
+  EXPECT_FALSE(std::ifstream(out));  // nothing written
+  EXPECT_FALSE(std::ifstream(f.dir + "/x.png"));
+}
+
+}  // namespace
+}  // namespace maquette
