@@ -3,7 +3,6 @@
 // store under that camera with its guides: the painting's altitude and land-cover masks
 // (formats/render/painting_fit_job.h).
 #include <spdlog/spdlog.h>
-#include <tbb/global_control.h>
 
 #include <memory>
 #include <optional>
@@ -18,16 +17,10 @@ namespace {
 struct FitOptions {
   std::string store, points, out, panorama, texture, land_cover;
   PaintingFitJob job;
-  int threads = 0;
 };
 
 void run(const FitOptions& o) {
   const PaintingFitJob& job = o.job;
-  const size_t threads =
-      o.threads > 0
-          ? size_t(o.threads)
-          : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
-  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
   const auto store = Store::open(o.store, Store::Mode::ReadOnly);
   const PaintingPoints points = read_painting_points(o.points);
   const PaintingFit fit = fit_painting_to_store(*store, default_grid(), job, points, o.points);
@@ -81,7 +74,6 @@ void add_render_fit_command(CLI::App* render) {
                   "with its guides, as `render panorama` does");
   cmd->add_option("--texture", o->texture, "With --panorama: imagery layer");
   cmd->add_option("--land-cover", o->land_cover, "With --panorama: categorical layer guide");
-  add_threads_option(cmd, o->threads);
   cmd->callback([o] { run(*o); });
 }
 
