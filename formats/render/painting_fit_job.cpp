@@ -6,7 +6,8 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "render/terrain_scene.h"
+#include "gdal/vertical_datum.h"
+#include "image/layer_sampler.h"
 
 namespace maquette {
 namespace {
@@ -18,6 +19,31 @@ std::string number(double v) {
   return s.str();
 }
 
+// The DEM's heights converted to the ellipsoid (bilinear between samples), as
+// render/terrain_scene.h's terrain_ellipsoidal_height gives them, with the tiles read and the
+// datum's transformation set up once for all the points (and without its message at each call).
+class DemHeights {
+ public:
+  DemHeights(const Store& store, const Grid& grid, const LayerInfo& dem)
+      : grid_(grid),
+        dem_(dem),
+        sampler_(store, grid, dem_, dem_.level, true),
+        heights_(ellipsoidal_heights(dem_)) {}
+
+  std::optional<double> operator()(LonLat p) {
+    float z = NAN;
+    if (!sampler_.sample(p, grid_.cell_from_point(p, dem_.level), &z) || std::isnan(z))
+      return std::nullopt;
+    return heights_(p, z);
+  }
+
+ private:
+  const Grid& grid_;
+  LayerInfo dem_;
+  LayerSampler sampler_;
+  EllipsoidalHeights heights_;
+};
+
 }  // namespace
 
 PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const PaintingFitJob& job,
@@ -26,13 +52,14 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
   if (!dem || dem->kind != LayerKind::Raster || dem->channels != 1)
     throw Error("--dem layer '" + job.dem + "' is not a one-channel raster layer of the store " +
                 store.path());
+  DemHeights dem_heights(store, grid, *dem);
   std::vector<GroundClick> clicks;
   for (const ControlPoint& p : points.points) {
     GroundClick c{p.x, p.y, {p.lon, p.lat, 0}};
     if (p.height) {
       c.ground.height = *p.height;
     } else {
-      const auto h = terrain_ellipsoidal_height(store, grid, *dem, {p.lon, p.lat});
+      const auto h = dem_heights({p.lon, p.lat});
       if (!h)
         throw Error(points_path + ": " + p.name + " has no height and the --dem layer '" + job.dem +
                     "' has no data at lon " + number(p.lon) + ", lat " + number(p.lat));
@@ -46,9 +73,7 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
   options.fov = job.fov;
   options.bend = job.bend;
   options.warp_smoothing = job.warp_smoothing;
-  options.ground_height = [&](LonLat at) {
-    return terrain_ellipsoidal_height(store, grid, *dem, at).value_or(0);
-  };
+  options.ground_height = [&](LonLat at) { return dem_heights(at).value_or(0); };
   return fit_painting(clicks, options);
 }
 
