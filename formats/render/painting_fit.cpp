@@ -282,8 +282,9 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
   if (options.warp_smoothing) {
     std::vector<PicturePoint> targets;
     for (const GroundClick& c : clicks) targets.push_back({c.x, c.y});
-    fit.warp = PictureWarp(fit.fitted, targets, std::max(options.width, options.height),
-                           *options.warp_smoothing);
+    const double scale = std::max(options.width, options.height);
+    fit.warp = PictureWarp(fit.fitted, targets, scale, *options.warp_smoothing);
+    fit.unwarp = PictureWarp(targets, fit.fitted, scale, *options.warp_smoothing);
   }
   return fit;
 }

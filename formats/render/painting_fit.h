@@ -54,6 +54,9 @@ struct PaintingFit {
   CameraSpec camera;     // width and height: the painting's
   ProgressiveBend bend;  // infinite radius when not fitted; its base set
   PictureWarp warp;      // the identity unless PaintingFitOptions::warp_smoothing is set
+  // Its inverse, approximately: the spline with the same smoothing taking the clicks back onto the
+  // fitted points (a painting pixel to the pixel the camera and bend draw there).
+  PictureWarp unwarp;
   double rms_error = 0;  // pixels, over the clicks, of the camera and bend (before the warp)
   std::vector<PicturePoint> fitted;  // where the camera and bend put each click's ground point
 

@@ -1,5 +1,6 @@
 #include "render/painting_fit_job.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -123,6 +124,35 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
   std::ofstream file(path, std::ios::binary);
   file << out.dump(2) << '\n';
   if (!file) throw Error(path + ": cannot be written");
+}
+
+Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp) {
+  const int w = panorama.width, h = panorama.height;
+  std::vector<size_t> source(size_t(w) * size_t(h));
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const PicturePoint p = unwarp({i + 0.5, j + 0.5});
+      const int x = std::clamp(int(std::floor(p[0])), 0, w - 1);
+      const int y = std::clamp(int(std::floor(p[1])), 0, h - 1);
+      source[size_t(j) * size_t(w) + size_t(i)] = size_t(y) * size_t(w) + size_t(x);
+    }
+  const auto moved = [&source](const auto& values) {
+    auto out = values;
+    const size_t channels = values.size() / source.size();  // 0 for a guide not drawn
+    for (size_t k = 0; k < source.size(); ++k)
+      for (size_t c = 0; c < channels; ++c)
+        out[k * channels + c] = values[source[k] * channels + c];
+    return out;
+  };
+  Panorama out = panorama;
+  out.rgb = moved(panorama.rgb);
+  out.altitude = moved(panorama.altitude);
+  out.distance = moved(panorama.distance);
+  out.lon = moved(panorama.lon);
+  out.lat = moved(panorama.lat);
+  out.land_cover = moved(panorama.land_cover);
+  out.silhouette = moved(panorama.silhouette);
+  return out;
 }
 
 }  // namespace maquette

@@ -8,6 +8,7 @@
 #include "core/grid.h"
 #include "render/painting_fit.h"
 #include "render/painting_fit_points.h"
+#include "render/panorama.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -36,5 +37,10 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 // the warp). Throws maquette::Error naming `path` when it cannot be written.
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
                         const std::string& path);
+
+// The panorama drawn under a fit's camera and bend moved by its warp onto the painting: each
+// pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp) sends its centre
+// to (nearest; clamped to the picture's edge).
+Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp);
 
 }  // namespace maquette

@@ -34,7 +34,7 @@ void run(const FitOptions& o) {
     render.land_cover = o.land_cover;
     render.camera = fit.camera;
     render.bend = fit.bend;
-    panorama = render_panorama(*store, default_grid(), render);
+    panorama = warp_panorama(render_panorama(*store, default_grid(), render), fit.unwarp);
   }
   write_painting_fit(fit, points, o.out);
   spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
@@ -70,8 +70,8 @@ void add_render_fit_command(CLI::App* render) {
                   "0.001 follows clicks with 2 px of noise)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--panorama", o->panorama,
-                  "Also render the store under the fitted camera and bend (no warp) to this PNG, "
-                  "with its guides, as `render panorama` does");
+                  "Also render the store under the fitted camera and bend, moved by the warp onto "
+                  "the painting, to this PNG, with its guides, as `render panorama` does");
   cmd->add_option("--texture", o->texture, "With --panorama: imagery layer");
   cmd->add_option("--land-cover", o->land_cover, "With --panorama: categorical layer guide");
   cmd->callback([o] { run(*o); });
