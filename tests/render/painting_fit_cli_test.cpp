@@ -3,7 +3,8 @@
 // half with their height, half with the DEM's; the camera written is that pinhole's, and the
 // panorama drawn under it (--panorama) has, at each control point's pixel, guides naming that
 // point's lon/lat, its terrace's height and class; with the warp, the guides of a painting its
-// painter stretched still name each click's ground point at its pixel. Bad input named.
+// painter stretched still name each click's ground point at its pixel; a bent painting's bend is
+// found and its panorama puts the clicks' ground points on their pixels. Bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -197,6 +198,53 @@ TEST(PaintingFitCli, WarpedGuidesFollowThePainting) {
               warped, unwarped);
   EXPECT_LE(warped, 2.0);
   EXPECT_GT(unwarped, 5.0);
+}
+
+// A bent painting seen from above the terraces (the bend's base on the DEM under the eye, 137 m):
+// the fitted camera and bend draw each click's ground point on its pixel when `render fit
+// --panorama` renders them, as `render panorama` does.
+TEST(PaintingFitCli, BentPaintingGuides) {
+  const Fixture& f = fixture();
+  const double eye_lat = 45.005, radius = 30000, start = 4000;
+  const test::ProjEnu enu(kEyeLon, eye_lat, kEyeHeight);
+  json file{{"width", kCamera.width}, {"height", kCamera.height}, {"points", json::array()}};
+  std::vector<std::array<double, 4>> clicks;
+  // Two points across and two along each terrace, each 0.0125 degrees or more from its edges.
+  for (int i = 0; i < 6; ++i)
+    for (int j = 1; j < 12; ++j) {
+      const double lon = 10.025 + 0.05 * i, lat = 45.0125 + 0.025 * j;
+      const auto p = test::bent(enu({lon, lat}, terrace_height(lon, lat)), radius, start,
+                                terrace_height(kEyeLon, eye_lat) - kEyeHeight);
+      const auto px = kCamera.project(p);
+      const double x = px[0] + 0.5, y = px[1] + 0.5;
+      if (x < 0 || y < 0 || x > kCamera.width || y > kCamera.height) continue;
+      file["points"].push_back({{"x", x}, {"y", y}, {"lon", lon}, {"lat", lat}});
+      clicks.push_back({x, y, lon, lat});
+    }
+  ASSERT_GE(clicks.size(), 8u);
+  const std::string points = f.dir + "/bent.json", out = f.dir + "/bent-fit.json";
+  std::ofstream(points) << file.dump();
+  const auto r = run_maquette("render fit " + f.store + " " + points + " " + out +
+                              " --dem dem --bend --fov 55 --panorama " + f.dir + "/bent.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json fit = read_json(out);
+  EXPECT_LE(fit.at("rms_error").get<double>(), 0.01);
+  EXPECT_NEAR(fit.at("bend").at("radius").get<double>(), radius, 0.01 * radius);
+  EXPECT_NEAR(fit.at("bend").at("start").get<double>(), start, 0.01 * start);
+  std::unique_ptr<GDALDataset> guides(
+      GDALDataset::Open((f.dir + "/bent-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(guides);
+  for (const auto& c : clicks) {
+    double v[2] = {};
+    for (int band : {3, 4})
+      EXPECT_EQ(guides->GetRasterBand(band)->RasterIO(GF_Read, int(c[0]), int(c[1]), 1, 1,
+                                                      &v[band - 3], 1, 1, GDT_Float64, 0, 0),
+                CE_None);
+    const auto p =
+        kCamera.project(test::bent(enu({v[0], v[1]}, terrace_height(v[0], v[1])), radius, start,
+                                   terrace_height(kEyeLon, eye_lat) - kEyeHeight));
+    EXPECT_LE(std::hypot(p[0] + 0.5 - c[0], p[1] + 0.5 - c[1]), 1.0) << c[2] << " " << c[3];
+  }
 }
 
 void expect_error(const std::string& args, const std::string& message) {

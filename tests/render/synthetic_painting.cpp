@@ -16,17 +16,8 @@ double synthetic_terrain(double lon, double lat) {
 std::optional<std::array<double, 2>> SyntheticPainting::pixel(const ProjEnu& enu,
                                                               const GeodeticPoint& ground) const {
   auto p = enu({ground.lon, ground.lat}, ground.height);
-  if (bend_radius > 0) {
-    // The bend as a rotation: beyond the start, the vertical section through the eye turned by
-    // (d - start) / radius about the axis `radius` above the ground under the eye.
-    const double base = synthetic_terrain(eye_lon, eye_lat) - eye_height;
-    const double d = std::hypot(p[0], p[1]);
-    if (d > bend_start) {
-      const double angle = (d - bend_start) / bend_radius, below = p[2] - (base + bend_radius);
-      const double s = bend_start - below * std::sin(angle);
-      p = {p[0] / d * s, p[1] / d * s, base + bend_radius + below * std::cos(angle)};
-    }
-  }
+  if (bend_radius > 0)
+    p = bent(p, bend_radius, bend_start, synthetic_terrain(eye_lon, eye_lat) - eye_height);
   const Matrix3 r = camera.rotation();
   if (r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2] <= 0) return std::nullopt;
   const auto px = camera.project(p);

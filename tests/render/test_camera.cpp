@@ -48,4 +48,13 @@ std::array<double, 2> TestCamera::project(const std::array<double, 3>& enu) cons
   return {cx() + focal() * c[0] / c[2], cy() + focal() * c[1] / c[2]};
 }
 
+std::array<double, 3> bent(const std::array<double, 3>& p, double radius, double start,
+                           double base) {
+  const double d = std::hypot(p[0], p[1]);
+  if (d <= start) return p;
+  const double angle = (d - start) / radius, below = p[2] - (base + radius);
+  const double s = start - below * std::sin(angle);
+  return {p[0] / d * s, p[1] / d * s, base + radius + below * std::cos(angle)};
+}
+
 }  // namespace maquette::test

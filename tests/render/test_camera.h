@@ -24,4 +24,10 @@ struct TestCamera {
   std::array<double, 2> project(const std::array<double, 3>& enu) const;
 };
 
+// The tests' own progressive bend of an ENU point (metres, the eye at the origin), as a rotation:
+// beyond `start`, the vertical section through the eye turned by (d - start) / radius about the
+// axis `radius` above the ground plane at up = `base`.
+std::array<double, 3> bent(const std::array<double, 3>& p, double radius, double start,
+                           double base);
+
 }  // namespace maquette::test
