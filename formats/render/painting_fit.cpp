@@ -210,11 +210,13 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
   if (options.fov && !(*options.fov > 0 && *options.fov <= 170))
     throw Error("painting fit: fov " + std::to_string(*options.fov) +
                 " is out of range (0, 170] degrees");
-  const size_t needed = 3 + !options.fov + 2 * options.bend;
-  if (clicks.size() < std::max<size_t>(needed, 4))
+  // Two equations per click; the unknowns: the eye (3), heading, pitch, the focal length when not
+  // given and the bend's radius and start; one click more than half of them, and at least 4.
+  const size_t unknowns = 5 + !options.fov + 2 * options.bend;
+  const size_t needed = std::max<size_t>(unknowns / 2 + 1, 4);
+  if (clicks.size() < needed)
     throw Error("painting fit: " + std::to_string(clicks.size()) + " control points for " +
-                std::to_string(2 * needed) + " unknowns: give at least " +
-                std::to_string(std::max<size_t>(needed, 4)));
+                std::to_string(unknowns) + " unknowns: give at least " + std::to_string(needed));
   // The frame at the points' centroid (on the ellipsoid).
   double lon = 0, lat = 0;
   for (const GroundClick& c : clicks) {

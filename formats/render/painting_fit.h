@@ -65,8 +65,9 @@ struct PaintingFit {
   std::vector<PicturePoint> to_painting(const std::vector<GeodeticPoint>& ground) const;
 };
 
-// Throws maquette::Error when fewer than 4 clicks are given (6 with the bend, 5 without a fov:
-// fewer than the unknowns), the fov is out of (0, 170], or no camera sees the points.
+// Throws maquette::Error when fewer clicks are given than half the unknowns plus one, or than 4
+// (5 unknowns, +1 without a fov, +2 with the bend: 4 clicks, 5 with the bend), the fov is out of
+// (0, 170], or the camera found leaves a click behind the eye.
 PaintingFit fit_painting(const std::vector<GroundClick>& clicks, const PaintingFitOptions& options);
 
 // Where `camera` and `bend` (render/progressive_bend.h, its base set) draw `ground` points (picture

@@ -67,6 +67,24 @@ TEST(PaintingFit, ExactClicksGiveTheCameraBack) {
 // The noise makes each painting's errors a draw: over 40 paintings (each 15 clicks, 200 held-out
 // points), the median of their held-out medians is <= 1 px and the focal length is within 0.5 %
 // in at least 38 of them (95 %).
+TEST(PaintingFit, TooFewClicksOrABadFovAreNamed) {
+  const SyntheticPainting painting = plain_painting();
+  std::mt19937 random(7);
+  const auto clicks = painting.clicks(4, 0, random);
+  PaintingFitOptions options = options_for(painting);
+  EXPECT_NO_THROW(fit_painting(clicks, options));
+  options.bend = true;
+  try {
+    fit_painting(clicks, options);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "painting fit: 4 control points for 8 unknowns: give at least 5");
+  }
+  options.bend = false;
+  options.fov = 180;
+  EXPECT_THROW(fit_painting(clicks, options), Error);
+}
+
 TEST(PaintingFit, PlainCameraFromFifteenClicks) {
   const SyntheticPainting painting = plain_painting();
   std::vector<double> medians;
