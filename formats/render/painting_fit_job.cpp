@@ -151,6 +151,7 @@ Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp) {
   out.lon = moved(panorama.lon);
   out.lat = moved(panorama.lat);
   out.land_cover = moved(panorama.land_cover);
+  out.cast_shadow = moved(panorama.cast_shadow);
   out.silhouette = moved(panorama.silhouette);
   return out;
 }
