@@ -26,6 +26,10 @@ OperatorSpec bridge_spec() {
       "ends meet the terrain where the edges do, slanted along its length, with a thickness; and "
       "its footprint as a mask for the clone brush";
   s.kind = OperatorKind::Region;
+  // A bridge across a seam of the grid's faces is built in the plane unfolded around one face
+  // (core/mosaic_geometry.h): the DEM's samples and the mask's pixels beyond the seam are the
+  // neighbour face's, laid beside it.
+  s.spans_faces = true;
   InputSpec dem;
   dem.name = "dem";
   dem.description = "terrain heights (m above the layer's vertical datum)";
@@ -60,8 +64,8 @@ OperatorSpec bridge_spec() {
   return s;
 }
 
-// Fractional sample coordinates (sample centres at integers) of a point of a bridge on the
-// mosaic's face (Bridge::on_face), so always placed.
+// Fractional sample coordinates (sample centres at integers) of a point of a bridge the mosaic
+// places (Bridge::check_placed).
 std::array<double, 2> sample_of(const MosaicGeometry& samples, LonLat p) {
   return *samples.sample(p);
 }
@@ -120,7 +124,7 @@ class Bridge : public RegionOperator {
         to_ellipsoid.emplace(ellipsoidal_heights(ctx.input_layer("dem")));
       try {  // the stroke's faults, each naming the feature and field
         const BridgeStroke b = bridge_stroke(*f, default_thickness);
-        if (!on_face(b, *ctx.grid, input.face)) continue;  // another face's mosaic makes it
+        check_placed(b, *ctx.grid, samples);
         if (mask != output.layers.end()) mark_deck(b, samples, mask->second);
         if (wants_mesh) add_deck(b, ctx, input.layers.at("dem"), samples, *to_ellipsoid, output);
       } catch (const Error& e) {
@@ -130,19 +134,26 @@ class Bridge : public RegionOperator {
   }
 
  private:
-  // Whether the bridge is on `face` (its anchor there); throws when it spans two faces.
-  static bool on_face(const BridgeStroke& b, const Grid& grid, int face) {
-    const auto face_of = [&](const GeoPoint& p) {
-      return grid.cell_from_point({p.lon, p.lat}, 0).face();
-    };
-    const int anchor_face = face_of(b.first_edge.front());
+  // Throws unless every point of the bridge has a place in the mosaic's plane (its face or a
+  // face across one of its edges) and the bridge stays on one side of the antimeridian (its
+  // outline is straight in degrees).
+  static void check_placed(const BridgeStroke& b, const Grid& grid, const MosaicGeometry& samples) {
+    double west = INFINITY, east = -INFINITY;
     for (const auto* edge : {&b.first_edge, &b.second_edge})
-      for (const GeoPoint& p : *edge)
-        if (face_of(p) != anchor_face)
-          throw Error(where(b) +
-                      ": geometry: the bridge crosses an edge of the grid's faces: not "
-                      "handled yet");
-    return anchor_face == face;
+      for (const GeoPoint& p : *edge) {
+        west = std::min(west, p.lon), east = std::max(east, p.lon);
+        if (!samples.sample({p.lon, p.lat}))
+          throw Error(where(b) + ": geometry: the point (" + std::to_string(p.lon) + ", " +
+                      std::to_string(p.lat) + ") lies on face " +
+                      CellId::FromFace(grid.cell_from_point({p.lon, p.lat}, 0).face()).ToText() +
+                      ", which does not meet face " + CellId::FromFace(samples.face()).ToText() +
+                      " of the step's region along an edge: a bridge must lie on the region's "
+                      "faces; give a region holding the whole bridge");
+      }
+    if (east - west > 180)
+      throw Error(where(b) +
+                  ": geometry: the bridge crosses the antimeridian: not handled (draw it on one "
+                  "side, or split it)");
   }
 
   static std::string where(const BridgeStroke& b) {

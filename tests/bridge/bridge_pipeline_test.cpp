@@ -9,7 +9,8 @@
 // trip, of volume width x length x thickness; stored once; the mask's pixels are GDAL's
 // rasterization of the deck's outline (GDALRasterizeGeometries in the rHEALPix plane); the same
 // bits for 1 and 2 threads and the same mask pixels for two tilings, and without the mesh mapped;
-// bad strokes fail naming the feature and field.
+// the same deck across the seam of two faces of the grid, its ends on both faces' DEM; bad
+// strokes fail naming the feature and field.
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
@@ -47,7 +48,6 @@ using structures::CgalVerdict;
 using test::CliResult;
 using test::run_maquette;
 
-constexpr double kLon0 = 7.5, kLat0 = 46.0;               // the valley's floor, running north-south
 constexpr double kHalfLon = 0.006, kHalfLat = 0.004;      // the DEM: ~+-460 m x +-440 m
 constexpr double kRegionLon = 0.004, kRegionLat = 0.002;  // the region: ~+-310 m x +-220 m
 constexpr double kSourcePixelDeg = 2e-5;                  // ~1.5 x 2.2 m
@@ -56,36 +56,53 @@ constexpr double kWest = -150, kEast = 250, kHalfWidth = 5, kThickness = 2;
 
 double terrain(double x) { return 100 + 0.2 * std::abs(x); }
 
-const GeographicLib::LocalCartesian& local() {
-  static const GeographicLib::LocalCartesian frame(kLat0, kLon0, 0);
-  return frame;
+// Where the valley's floor is (it runs north-south), and the tangent plane there.
+struct Site {
+  double lon0, lat0;
+  GeographicLib::LocalCartesian local{lat0, lon0, 0};
+
+  std::array<double, 2> lonlat(double x, double y) const {
+    double lat = 0, lon = 0, h = 0;
+    local.Reverse(x, y, 0, lat, lon, h);
+    return {lon, lat};
+  }
+};
+
+// In the Alps, on face Q of the grid.
+const Site& alps() {
+  static const Site site{7.5, 46.0};
+  return site;
 }
 
-std::array<double, 2> lonlat(double x, double y) {
-  double lat = 0, lon = 0, h = 0;
-  local().Reverse(x, y, 0, lat, lon, h);
-  return {lon, lat};
+// On the meridian 0, the seam between faces P (west) and Q (east): the deck's west ends are on P,
+// its east ends on Q.
+const Site& seam() {
+  static const Site site{0.0, 20.0};
+  return site;
 }
+
+std::array<double, 2> lonlat(double x, double y) { return alps().lonlat(x, y); }
 
 // With `hole`, nodata (-9999) within 20 m of the bridge's east end.
-void write_dem(const std::string& path, bool hole) {
+void write_dem(const std::string& path, bool hole, const Site& site) {
   test::RasterSpec spec;
   spec.width = int(std::lround(2 * kHalfLon / kSourcePixelDeg));
   spec.height = int(std::lround(2 * kHalfLat / kSourcePixelDeg));
-  spec.geotransform = {kLon0 - kHalfLon, kSourcePixelDeg, 0, kLat0 + kHalfLat, 0, -kSourcePixelDeg};
+  spec.geotransform = {site.lon0 - kHalfLon, kSourcePixelDeg, 0, site.lat0 + kHalfLat, 0,
+                       -kSourcePixelDeg};
   spec.crs = "EPSG:4326";
   spec.nodata = -9999;
   test::write_raster(path, spec, [&](int, double lon, double lat) {
     double x = 0, y = 0, up = 0;
-    local().Forward(lat, lon, 0, x, y, up);
+    site.local.Forward(lat, lon, 0, x, y, up);
     return hole && std::hypot(x - kEast, y) < 20 ? -9999.0 : terrain(x);
   });
 }
 
 // An edge at y metres north of the valley's centre, from x = kWest to kEast every 100 m.
-json edge(double y) {
+json edge(double y, const Site& site = alps()) {
   json line = json::array();
-  for (double x = kWest; x <= kEast; x += 100) line.push_back(lonlat(x, y));
+  for (double x = kWest; x <= kEast; x += 100) line.push_back(site.lonlat(x, y));
   return line;
 }
 
@@ -103,9 +120,9 @@ json collection(const json& feature) {
   return out;
 }
 
-json straight_bridge() {
-  return collection(
-      bridge_feature({edge(-kHalfWidth), edge(kHalfWidth)}, {{"thickness_m", kThickness}}));
+json straight_bridge(const Site& site = alps()) {
+  return collection(bridge_feature({edge(-kHalfWidth, site), edge(kHalfWidth, site)},
+                                   {{"thickness_m", kThickness}}));
 }
 
 // A store with the valley's DEM and `strokes`, and the pipeline running structures.bridge.
@@ -117,19 +134,20 @@ struct Valley {
   // `outputs`: the step's output ports mapped to layers.
   Valley(const json& strokes, int level = kLevel, int tile_size = kTileSize, bool hole = false,
          const std::string& datum = "ellipsoid",
-         const json& outputs = {{"mesh", "bridge"}, {"mask", "bridge_mask"}}) {
-    write_dem(dir + "/dem.tif", hole);
+         const json& outputs = {{"mesh", "bridge"}, {"mask", "bridge_mask"}},
+         const Site& site = alps()) {
+    write_dem(dir + "/dem.tif", hole, site);
     std::ofstream(dir + "/strokes.geojson") << strokes.dump();
-    const json pipeline = {
-        {"store", store},
-        {"region",
-         {{"bbox",
-           {kLon0 - kRegionLon, kLat0 - kRegionLat, kLon0 + kRegionLon, kLat0 + kRegionLat}}}},
-        {"level", level},
-        {"steps",
-         {{{"op", "structures.bridge"},
-           {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
-           {"outputs", outputs}}}}};
+    const json pipeline = {{"store", store},
+                           {"region",
+                            {{"bbox",
+                              {site.lon0 - kRegionLon, site.lat0 - kRegionLat,
+                               site.lon0 + kRegionLon, site.lat0 + kRegionLat}}}},
+                           {"level", level},
+                           {"steps",
+                            {{{"op", "structures.bridge"},
+                              {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+                              {"outputs", outputs}}}}};
     std::ofstream(dir + "/pipeline.json") << pipeline.dump(2);
     for (const std::string& args :
          {"ingest " + store + " " + dir + "/dem.tif --layer dem --as dem --vertical-datum " +
@@ -152,7 +170,7 @@ struct Deck {
   std::vector<std::array<double, 3>> local;  // x, y (at height 0), ellipsoidal height
 };
 
-std::vector<Deck> decks(const Store& st) {
+std::vector<Deck> decks(const Store& st, const Site& site = alps()) {
   std::vector<Deck> out;
   for (const CellId cell : st.content_cells("bridge")) {
     const std::string blob = *st.get_content("bridge", cell);
@@ -164,7 +182,7 @@ std::vector<Deck> decks(const Store& st) {
       for (size_t k = 0; k < o.positions.size(); k += 3) {
         double lat = 0, lon = 0, h = 0, x = 0, y = 0, z = 0;
         frame.Reverse(o.positions[k], o.positions[k + 1], o.positions[k + 2], lat, lon, h);
-        local().Forward(lat, lon, 0, x, y, z);
+        site.local.Forward(lat, lon, 0, x, y, z);
         d.local.push_back({x, y, h});
       }
       d.object = std::move(o);
@@ -173,15 +191,9 @@ std::vector<Deck> decks(const Store& st) {
   return out;
 }
 
-TEST(BridgePipeline, StraightDeckAcrossAValley) {
-  const Valley valley(straight_bridge());
-  const CliResult r = valley.run();
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto st = Store::open(valley.store, Store::Mode::ReadOnly);
-  EXPECT_EQ(st->content_stats("bridge").content.objects, 1u);
-  const std::vector<Deck> found = decks(*st);
-  ASSERT_EQ(found.size(), 1u);
-  const Deck& deck = found[0];
+// The straight deck's shape: its corners on the slant from terrain(kWest) to terrain(kEast) and
+// the thickness below, its ends on the terrain, valid and of its volume by CGAL.
+void expect_straight_deck(const Deck& deck) {
   EXPECT_EQ(deck.object.provenance.feature_id, 1);
   EXPECT_EQ(deck.object.provenance.tool, "structures.bridge");
 
@@ -240,6 +252,17 @@ TEST(BridgePipeline, StraightDeckAcrossAValley) {
               1e-5 * volume);
 }
 
+TEST(BridgePipeline, StraightDeckAcrossAValley) {
+  const Valley valley(straight_bridge());
+  const CliResult r = valley.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto st = Store::open(valley.store, Store::Mode::ReadOnly);
+  EXPECT_EQ(st->content_stats("bridge").content.objects, 1u);
+  const std::vector<Deck> found = decks(*st);
+  ASSERT_EQ(found.size(), 1u);
+  expect_straight_deck(found[0]);
+}
+
 // On a DEM of EGM96 heights (SRTM's datum, the ingest's default) the deck's ends stand on the
 // terrain taken to the ellipsoid, as the exported terrain is: each end's top is terrain + N within
 // 1 cm, N from PROJ (EGM96 height -> WGS 84 ellipsoidal, ~50 m in the Alps).
@@ -276,10 +299,11 @@ OGRSpatialReference rhealpix() {
 // GDAL's rasterization of the straight deck's outline (edges densified to 1e-6 degrees, so that
 // they follow straight lines in degrees as the operator's) on `cell`'s tile in the rHEALPix
 // plane: 1 for the pixels whose centre lies inside.
-std::vector<uint8_t> rasterized_deck(CellId cell, int tile_size) {
+std::vector<uint8_t> rasterized_deck(CellId cell, int tile_size, const Site& site = alps()) {
   OGRLinearRing ring;
-  for (const json& p : edge(-kHalfWidth)) ring.addPoint(p[0].get<double>(), p[1].get<double>());
-  const json second = edge(kHalfWidth);
+  for (const json& p : edge(-kHalfWidth, site))
+    ring.addPoint(p[0].get<double>(), p[1].get<double>());
+  const json second = edge(kHalfWidth, site);
   for (auto p = second.rbegin(); p != second.rend(); ++p)
     ring.addPoint((*p)[0].get<double>(), (*p)[1].get<double>());
   ring.closeRings();
@@ -349,6 +373,59 @@ TEST(BridgePipeline, MaskIsGdalRasterizationOfTheDeck) {
   // About the deck's area (4,000 m^2) over the pixel's area.
   const double pixel_area = default_grid().area(0) / std::ldexp(1.0, 2 * (kLevel + 8));
   EXPECT_NEAR(double(under) * pixel_area, 2 * kHalfWidth * (kEast - kWest), 0.1 * 4000);
+}
+
+// The DEM file's height at (lon, lat) as GDAL reads it: bilinear between its pixel centres.
+double gdal_height(const std::string& path, double lon, double lat) {
+  const std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  double t[6];
+  EXPECT_EQ(ds->GetGeoTransform(t), CE_None);
+  const double col = (lon - t[0]) / t[1] - 0.5, row = (lat - t[3]) / t[5] - 0.5;
+  const int c = int(std::floor(col)), r = int(std::floor(row));
+  float v[4];
+  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, c, r, 2, 2, v, 2, 2, GDT_Float32, 0, 0),
+            CE_None);
+  const double fc = col - c, fr = row - r;
+  return (1 - fr) * ((1 - fc) * v[0] + fc * v[1]) + fr * ((1 - fc) * v[2] + fc * v[3]);
+}
+
+// A bridge across the seam of faces P and Q (the meridian 0): built in the plane unfolded around
+// one face, its west ends on P's DEM and its east ends on Q's within 1 cm of the DEM file as
+// GDAL reads it, the same deck as on one face; its mask on both faces' tiles GDAL's
+// rasterization of the outline.
+TEST(BridgePipeline, AcrossTheSeamOfTwoFaces) {
+  const Valley valley(straight_bridge(seam()), kLevel, kTileSize, false, "ellipsoid",
+                      {{"mesh", "bridge"}, {"mask", "bridge_mask"}}, seam());
+  const CliResult r = valley.run();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto st = Store::open(valley.store, Store::Mode::ReadOnly);
+  const std::vector<Deck> found = decks(*st, seam());
+  ASSERT_EQ(found.size(), 1u);
+  expect_straight_deck(found[0]);
+  for (const double end_x : {kWest, kEast})
+    for (const double end_y : {-kHalfWidth, kHalfWidth}) {
+      const auto [lon, lat] = seam().lonlat(end_x, end_y);
+      EXPECT_EQ(CellId::FromFace(default_grid().cell_from_point({lon, lat}, 0).face()).ToText(),
+                end_x < 0 ? "P" : "Q");
+      double top = -INFINITY;
+      for (const auto& [x, y, h] : found[0].local)
+        if (std::hypot(x - end_x, y - end_y) < 0.01) top = std::max(top, h);
+      EXPECT_NEAR(top, gdal_height(valley.dir + "/dem.tif", lon, lat), 0.01)
+          << "end at x " << end_x << ", y " << end_y;
+    }
+  std::map<int, size_t> under;  // mask pixels by face
+  size_t differ = 0;
+  for (const CellId cell : st->tile_cells("bridge_mask")) {
+    const auto raw = st->get_tile("bridge_mask", cell);
+    const std::vector<uint8_t> expected = rasterized_deck(cell, kTileSize, seam());
+    for (size_t i = 0; i < expected.size(); ++i) {
+      under[cell.face()] += uint8_t(raw->bytes[i]);
+      differ += uint8_t(raw->bytes[i]) != expected[i];
+    }
+  }
+  EXPECT_EQ(differ, 0u);
+  EXPECT_EQ(under.size(), 2u);
+  for (const auto& [face, pixels] : under) EXPECT_GT(pixels, 100u) << "face " << face;
 }
 
 TEST(BridgePipeline, SameBitsForOneAndTwoThreadsAndTwoTilings) {
