@@ -195,6 +195,20 @@ VegetationParams stroke_params(const json& step, const VegetationParams& step_pa
   }
 }
 
+// Room for `more` instances beyond those in `out`, growing geometrically (strokes add in turn):
+// the arrays are not copied as they grow, plant by plant.
+void reserve_more(InstancesContent& out, size_t more) {
+  const size_t n = out.size() + more;
+  if (out.prototype.capacity() >= n) return;
+  const size_t room = std::max(n, 2 * out.prototype.capacity());
+  out.prototype.reserve(room);
+  out.position.reserve(3 * room);
+  out.rotation.reserve(4 * room);
+  out.scale.reserve(3 * room);
+  out.colour.reserve(room);
+  out.provenance.reserve(room);
+}
+
 // The index of prototype `name` in the content's list, added when new.
 uint16_t prototype_index(InstancesContent& content, const std::string& name) {
   const auto it = std::find(content.prototypes.begin(), content.prototypes.end(), name);
@@ -237,7 +251,9 @@ class Vegetation : public CellOperator {
       const VegetationParams own = stroke_params(*ctx.params, params, stroke);
       std::vector<uint16_t> index;  // of the stroke's prototypes in the content's
       for (const std::string& name : own.prototypes) index.push_back(prototype_index(out, name));
-      for (const PlanePoint& p : placed(own, stroke, cell_window(boundary, stroke))) {
+      const std::vector<PlanePoint> points = placed(own, stroke, cell_window(boundary, stroke));
+      reserve_more(out, points.size());  // at most: some are other cells'
+      for (const PlanePoint& p : points) {
         const LonLat ground = stroke.to_ground(p);
         const PlanePoint g = ctx.grid->forward(ground);
         if (!owned(ctx, square, g, ground)) continue;
