@@ -32,13 +32,7 @@ RUNS=${RUNS:-3}
 command -v npm >/dev/null 2>&1 || { echo "content: npm not found, skipped"; exit 0; }
 
 NODE_DIR=$BUILD/benchmarks/content/node
-mkdir -p "$NODE_DIR"
-if ! cmp -s "$HERE/node/package-lock.json" "$NODE_DIR/node_modules/.maquette-lock"; then
-  cp "$HERE/node/package.json" "$HERE/node/package-lock.json" "$NODE_DIR/"
-  (cd "$NODE_DIR" && npm ci --no-audit --no-fund --prefer-offline --loglevel=error)
-  cp "$HERE/node/package-lock.json" "$NODE_DIR/node_modules/.maquette-lock"
-fi
-cp "$HERE/node/draco_cells.mjs" "$NODE_DIR/"
+"$HERE/../npm_peers.sh" "$HERE/node" "$NODE_DIR" draco_cells.mjs
 
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT

@@ -42,13 +42,7 @@ fi
 command -v npm >/dev/null 2>&1 || { echo "vegetation: npm not found" >&2; exit 1; }
 
 NODE_DIR=$BUILD/benchmarks/structures/node
-mkdir -p "$NODE_DIR"
-if ! cmp -s "$HERE/node/package-lock.json" "$NODE_DIR/node_modules/.maquette-lock"; then
-  cp "$HERE/node/package.json" "$HERE/node/package-lock.json" "$NODE_DIR/"
-  (cd "$NODE_DIR" && npm ci --no-audit --no-fund --prefer-offline --loglevel=error)
-  cp "$HERE/node/package-lock.json" "$NODE_DIR/node_modules/.maquette-lock"
-fi
-cp "$HERE/node/samplers.mjs" "$NODE_DIR/"
+"$HERE/../npm_peers.sh" "$HERE/node" "$NODE_DIR" samplers.mjs
 
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
