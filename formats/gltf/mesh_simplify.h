@@ -22,9 +22,15 @@ namespace maquette {
 //   where that bound forbids more; an object left with no triangle is dropped. A closed,
 //   outward solid (content/closed_solid.h: buildings, bridge decks) stays one, with no crossing
 //   triangles: when the result is not, the bound is halved (at most three times) and, failing
-//   that, the object is kept
-//   whole, so that a view from afar never sees through a roof. Vertices are renumbered in the
-//   order the triangles first use them (an object kept whole keeps its own);
+//   that, the object is kept whole, so that a view from afar never sees through a roof. A solid
+//   with facet normals (content/facet_normals.h: every corner's normal its face's within 2
+//   degrees, triangles under 10 cm high aside; buildings, bridge decks, prisms; each corner one
+//   vertex per face, which edge collapses cannot merge) is simplified with its vertices at one
+//   position and texture coordinate welded, within a quarter of that bound (an eighth of the
+//   sample: a corner collapsed within half a sample cuts its footprint, and the ground would
+//   show through its roof from afar), and its facet normals are made again for the faces left;
+//   smooth normals are kept. Vertices are renumbered in the order the triangles first use them
+//   (an object kept whole keeps its own);
 // - materials merged (equal ones, images included, become one), each image halved in both
 //   directions (OpenCV, area averaging; at least 1 pixel) and encoded again in its own format.
 // Deterministic: the same children give the same content.
