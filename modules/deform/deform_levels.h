@@ -11,11 +11,16 @@ namespace maquette::deform {
 
 // The samples (inclusive) of the base field that the subdivision works on: the constrained
 // triangles' vertices (of every level's constraints) grown by kRefineMargin + levels samples,
-// clamped to the field. Their horizontal positions must be filled before refined_heights.
+// clamped to the field (deform.features refuses constraints nearer its edge: the window never
+// meets Loop's border masks). The horizontal positions of its samples with data must be filled
+// before refined_heights.
 struct SampleWindow {
   int col0 = 0, row0 = 0, col1 = 0, row1 = 0;
 };
-inline constexpr int kRefineMargin = 3, kZoneRings = 2;
+// The refined zone: the constrained triangles grown by kZoneRings samples; the window: one ring
+// more, which Loop's masks of the zone's vertices read, and a ring per level (the zone's finer
+// vertices reach one coarser ring further at each level).
+inline constexpr int kZoneRings = 2, kRefineMargin = kZoneRings + 1;
 SampleWindow refinement_window(const HeightField& field,
                                const std::vector<StrokeConstraints>& by_level);
 

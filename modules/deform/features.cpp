@@ -103,12 +103,18 @@ void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constrain
 }
 
 // Refining reads the DEM kRefineMargin + refine samples around the constrained triangles (the
-// subdivision's rings and the energy rows around them): nodata there is an error naming the
-// feature, where the solve would otherwise meet it as a non-finite system.
-void check_data_around(const MosaicFrame& frame, const HeightField& field,
-                       const StrokeConstraints& constraints, int refine,
-                       const FeatureStroke& stroke) {
+// subdivision's rings and the energy rows around them). Those samples must lie in the region:
+// the window would otherwise be cut at its edge, where Loop's border masks (the border curve's
+// B-spline) would replace the interior's, a different surface from uniform subdivision's. And
+// they must hold data: nodata there is an error naming the feature, where the solve would
+// otherwise meet it as a non-finite system.
+void check_surroundings(const MosaicFrame& frame, const HeightField& field,
+                        const StrokeConstraints& constraints, int refine,
+                        const FeatureStroke& stroke) {
   const int reach = kRefineMargin + refine;
+  const std::string feature = "inputs.strokes: feature " + std::to_string(stroke.id);
+  const std::string refined =
+      ": refined " + std::to_string(refine) + " level(s), it needs the DEM's heights ";
   std::vector<char> seen(field.z.size(), 0);
   for (const auto* list : {&constraints.control, &constraints.section})
     for (const HeightConstraint& h : *list)
@@ -116,14 +122,38 @@ void check_data_around(const MosaicFrame& frame, const HeightField& field,
         if (seen[v]) continue;
         seen[v] = 1;
         const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-        for (int y = std::max(0, r - reach); y <= std::min(field.height - 1, r + reach); ++y)
-          for (int x = std::max(0, c - reach); x <= std::min(field.width - 1, c + reach); ++x)
-            if (std::isnan(field.z[field.index(x, y)]))
-              throw Error("inputs.strokes: feature " + std::to_string(stroke.id) + ": nodata at " +
-                          lonlat_text(frame.sample_lonlat(x, y)) + ", " + std::to_string(reach) +
-                          " samples or less from its constraints: refined " +
-                          std::to_string(refine) + " level(s), it needs the DEM's heights there");
+        const LonLat at = frame.sample_lonlat(c, r);
+        const int to_edge = std::min({c, r, field.width - 1 - c, field.height - 1 - r});
+        if (to_edge < reach)
+          throw Error(feature + ": its constraints come within " + std::to_string(to_edge) +
+                      " samples of the region's edge at " + lonlat_text(at) + refined +
+                      std::to_string(reach) +
+                      " samples around them, inside the region: draw the region larger around "
+                      "the feature");
+        for (int y = r - reach; y <= r + reach; ++y)
+          for (int x = c - reach; x <= c + reach; ++x) {
+            if (!std::isnan(field.z[field.index(x, y)])) continue;
+            const auto centre = frame.sample_centre(x, y);
+            throw Error(feature + ": nodata at " +
+                        (centre
+                             ? lonlat_text(*centre)
+                             : "the gap beyond a face corner (no face of the plane there) near " +
+                                   lonlat_text(at)) +
+                        ", " + std::to_string(reach) + " samples or less from its constraints" +
+                        refined + "there");
+          }
       }
+}
+
+// Runs a least squares (deform_solve.h), its errors, which name the feature, put on the strokes'
+// port.
+template <class Solve>
+auto on_strokes_port(const Solve& solve) {
+  try {
+    return solve();
+  } catch (const Error& e) {
+    throw Error("inputs.strokes: " + std::string(e.what()));
+  }
 }
 
 // The deformed surface `refine` levels finer near the features (deform_levels.h): the strokes
@@ -136,16 +166,21 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
     for (const FeatureStroke& stroke : strokes) {
       StrokeConstraints one;
       add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", one);
-      if (t == 0) check_data_around(frame, field, one, refine, stroke);
+      check_surroundings(frame, field, one, refine, stroke);
       StrokeConstraints& all = by_level[size_t(t)];
       all.control.insert(all.control.end(), one.control.begin(), one.control.end());
       all.section.insert(all.section.end(), one.section.begin(), one.section.end());
       all.bands.insert(all.bands.end(), one.bands.begin(), one.bands.end());
     }
   const SampleWindow window = refinement_window(field, by_level);
+  // Nodata samples of the window (in a corner gap of the plane too, which has no position) are
+  // farther from the constraints than anything the refined zone reads (check_surroundings):
+  // they keep no position, and their finer samples stay nodata.
   for (int r = window.row0; r <= window.row1; ++r)
-    for (int c = window.col0; c <= window.col1; ++c) place(frame, field, field.index(c, r));
-  return refined_heights(field, window, by_level, energy_weight, subdivision);
+    for (int c = window.col0; c <= window.col1; ++c)
+      if (const size_t v = field.index(c, r); !std::isnan(field.z[v])) place(frame, field, v);
+  return on_strokes_port(
+      [&] { return refined_heights(field, window, by_level, energy_weight, subdivision); });
 }
 
 // The heights of the input mosaic `dem` (the region and its halo) for the finer samples around
@@ -238,8 +273,10 @@ class Features : public RegionOperator {
     for (const FeatureStroke& stroke : strokes)
       add_stroke_constraints(stroke, frame, field, step_m, "inputs.strokes", constraints);
     place_vertices(frame, constraints, field);
-    deform_heights(field, constraints.control, constraints.section, constraints.bands,
-                   energy_weight);
+    on_strokes_port([&] {
+      deform_heights(field, constraints.control, constraints.section, constraints.bands,
+                     energy_weight);
+    });
 
     for (int r = 0; r < size; ++r)
       for (int c = 0; c < size; ++c) {

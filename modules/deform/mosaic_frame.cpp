@@ -30,8 +30,12 @@ LonLat MosaicFrame::lonlat(EastNorth2 p) const {
   return {g.lon, g.lat};
 }
 
+std::optional<LonLat> MosaicFrame::sample_centre(int col, int row) const {
+  return samples_.sample_lonlat(col, row);
+}
+
 LonLat MosaicFrame::sample_lonlat(int col, int row) const {
-  const auto centre = samples_.sample_lonlat(col, row);
+  const auto centre = sample_centre(col, row);
   if (!centre)
     throw Error("mosaic sample (" + std::to_string(col) + ", " + std::to_string(row) +
                 ") lies in no face of the plane unfolded around face " +

@@ -28,6 +28,8 @@ class MosaicFrame {
   // The centre of mosaic sample (col, row); throws maquette::Error naming the sample when it lies
   // in a gap of the unfolded plane (beyond a face corner) or beyond one face width.
   LonLat sample_lonlat(int col, int row) const;
+  // The same, nullopt for a sample in a gap of the plane or beyond one face width.
+  std::optional<LonLat> sample_centre(int col, int row) const;
   // Fractional mosaic sample coordinates (col, row) of `p`; nullopt when its face has no place in
   // the unfolded plane (the face opposite the mosaic's).
   std::optional<std::array<double, 2>> sample(LonLat p) const;

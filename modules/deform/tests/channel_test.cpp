@@ -314,5 +314,43 @@ TEST(DeformFeatures, RefinedStrokeNearNodataIsAnError) {
   }
 }
 
+// A refined level reads the DEM 3 + k samples around the constrained triangles; nearer the
+// region's edge, Loop's border masks would make another surface than the interior's. The channel
+// moved east until its easternmost constraint (the last cross section's right end) lies two
+// samples and a half inside the region's last sample: the base level runs, one and two levels
+// finer fail naming the feature and the place. (Before, they ran with the border masks.)
+TEST(DeformFeatures, RefinedStrokeNearTheRegionsEdgeIsAnError) {
+  Fixture fx;
+  fx.surface = [](double e, double n) { return 1500 + 0.05 * e - 0.03 * n; };
+  const Mosaic input = fx.dem(0);
+  const MosaicFrame frame(default_grid(), input.face, input.level, input.origin_col,
+                          input.origin_row, kSite);
+  const double ce = std::cos(kHeading), sn = std::sin(kHeading);
+  // The mosaic column of the last cross section's right end for a start at (e0, n0).
+  const auto east_end = [&](double e0) {
+    return (*frame.sample(
+        fx.lonlat(e0 + kLength * ce + kTop * sn, fx.n0 + kLength * sn - kTop * ce)))[0];
+  };
+  // The region's last column is the mosaic's 254 (its outer sample is the runner's halo).
+  const double target = 254 - 2.5;
+  const double per_metre = east_end(fx.e0 + 1) - east_end(fx.e0);
+  fx.e0 += (target - east_end(fx.e0)) / per_metre;
+  ASSERT_NEAR(east_end(fx.e0), target, 0.05);
+  const VectorFeature channel = fx.channel();
+  EXPECT_NO_THROW(deform_run(input, {&channel}));
+  for (const int refine : {1, 2}) {
+    const std::string error = error_of(input, channel, refine);
+    EXPECT_NE(error.find("inputs.strokes: feature 1: its constraints come within "),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find(" samples of the region's edge at lon "), std::string::npos) << error;
+    EXPECT_NE(error.find(": refined " + std::to_string(refine) +
+                         " level(s), it needs the DEM's heights " + std::to_string(3 + refine) +
+                         " samples around them, inside the region"),
+              std::string::npos)
+        << error;
+  }
+}
+
 }  // namespace
 }  // namespace maquette::deform
