@@ -84,7 +84,7 @@ ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
     std::vector<Term> terms;
     for (size_t i = b * kBlock; i < std::min(constraints.size(), (b + 1) * kBlock); ++i) {
       row_through(constraints[i], window, nodes, scale, subdivision, terms);
-      blocks[b].add(terms, constraints[i].z);
+      blocks[b].add(terms, constraints[i].z, constraints[i].feature);
     }
   });
   ConstraintRows rows;
@@ -94,6 +94,7 @@ ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
     for (size_t i = 1; i < block.starts.size(); ++i)
       rows.starts.push_back(offset + block.starts[i]);
     rows.rhs.insert(rows.rhs.end(), block.rhs.begin(), block.rhs.end());
+    rows.features.insert(rows.features.end(), block.features.begin(), block.features.end());
   }
   return rows;
 }

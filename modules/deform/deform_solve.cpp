@@ -7,16 +7,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "conjugate_gradients.h"
 #include "core/error.h"
 
 namespace maquette::deform {
 
-void ConstraintRows::add(std::span<const Term> row, double z) {
+void ConstraintRows::add(std::span<const Term> row, double z, int64_t feature) {
   terms.insert(terms.end(), row.begin(), row.end());
   starts.push_back(terms.size());
   rhs.push_back(z);
+  features.push_back(feature);
 }
 
 namespace {
@@ -52,7 +55,10 @@ class System {
     rhs_.push_back(weight * rhs);
   }
 
-  void solve(LeastSquaresSolver solver) {
+  // Solves; on a singular system or a non-finite result returns the column at fault (the first
+  // without a coefficient, or the first non-finite one; SIZE_MAX when none is found) and leaves
+  // the heights as they were.
+  std::optional<size_t> solve(LeastSquaresSolver solver) {
     Eigen::VectorXd atb, h;
     const bool iterate = solver == LeastSquaresSolver::ConjugateGradients;
     // SimplicialLDLT reads the lower triangle only, so it can take the iterations' matrix.
@@ -62,17 +68,22 @@ class System {
       h.resize(Eigen::Index(unknowns_.size()));
       for (size_t i = 0; i < unknowns_.size(); ++i) h[Eigen::Index(i)] = z_[unknowns_[i]];
     }
-    if (!iterate || !conjugate_gradients(ata, atb, h, kConjugateGradientsTolerance,
-                                         kConjugateGradientsIterations)) {
+    bool solved = false;
+    try {
+      solved = iterate && conjugate_gradients(ata, atb, h, kConjugateGradientsTolerance,
+                                              kConjugateGradientsIterations);
+    } catch (const Error&) {  // a diagonal entry or a direction's curvature not positive
+      return empty_column();
+    }
+    if (!solved) {
       Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(ata);
-      if (ldlt.info() != Eigen::Success) throw Error("the deformation's least squares is singular");
+      if (ldlt.info() != Eigen::Success) return empty_column();
       h = ldlt.solve(atb);
     }
-    for (size_t i = 0; i < unknowns_.size(); ++i) {
-      if (!std::isfinite(h[Eigen::Index(i)]))
-        throw Error("the deformation's least squares has no finite solution");
-      z_[unknowns_[i]] = h[Eigen::Index(i)];
-    }
+    for (size_t i = 0; i < unknowns_.size(); ++i)
+      if (!std::isfinite(h[Eigen::Index(i)])) return i;
+    for (size_t i = 0; i < unknowns_.size(); ++i) z_[unknowns_[i]] = h[Eigen::Index(i)];
+    return std::nullopt;
   }
 
  private:
@@ -164,6 +175,14 @@ class System {
     return ata;
   }
 
+  // The first column without a non-zero coefficient, SIZE_MAX when every column has one.
+  size_t empty_column() const {
+    std::vector<char> held(unknowns_.size(), 0);
+    for (size_t e = 0; e < columns_.size(); ++e) held[size_t(columns_[e])] |= values_[e] != 0;
+    const auto empty = std::find(held.begin(), held.end(), 0);
+    return empty == held.end() ? SIZE_MAX : size_t(empty - held.begin());
+  }
+
   std::vector<double>& z_;
   std::vector<size_t> unknowns_;  // sorted vertex indices
   std::vector<int> column_;       // by vertex: its unknown's column, -1 for none
@@ -190,12 +209,38 @@ enum class Reads {
   Unknowns,  // the unknowns only, their weights renormalized
 };
 
-// The rows and an energy row per unknown, solved; returns the unknowns.
+// The error of a solve that failed at `column` of `system` (SIZE_MAX: none found): the first of
+// `rows` reading that unknown names its feature and its number among that feature's rows, else
+// every feature of the rows is named.
+Error solve_error(const System& system, size_t column, const ConstraintRows& rows,
+                  const std::string& what) {
+  const std::string failure = "the least squares of the " + what + " is singular or not finite";
+  if (column != SIZE_MAX)
+    for (size_t i = 0; i < rows.rhs.size(); ++i)
+      for (size_t t = rows.starts[i]; t < rows.starts[i + 1]; ++t)
+        if (rows.terms[t].first == system.unknowns()[column]) {
+          const int64_t feature = rows.features[i];
+          const auto number = std::count(rows.features.begin(), rows.features.begin() + i, feature);
+          return Error(
+              "feature " + std::to_string(feature) + ": constraint " + std::to_string(number + 1) +
+              " of its " + what +
+              " (numbered along it from 1) reads a height that nothing else holds: " + failure);
+        }
+  std::string features;
+  for (size_t i = 0; i < rows.features.size(); ++i)
+    if (std::find(rows.features.begin(), rows.features.begin() + i, rows.features[i]) ==
+        rows.features.begin() + i)
+      features += (features.empty() ? "" : ", ") + std::to_string(rows.features[i]);
+  return Error("features " + features + ": " + failure);
+}
+
+// The rows and an energy row per unknown, solved; returns the unknowns. `what` names the rows
+// (their constraints) in errors.
 std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& rows,
                                 const std::vector<size_t>& fixed,
                                 const std::function<bool(size_t)>& may_move,
                                 const EnergyNeighbours& neighbours, double energy_weight,
-                                Reads reads, LeastSquaresSolver solver) {
+                                Reads reads, LeastSquaresSolver solver, const std::string& what) {
   System system(z, touched(rows, fixed, may_move, z.size()));
   if (system.unknowns().empty()) return {};
   for (size_t i = 0; i < rows.rhs.size(); ++i)
@@ -215,7 +260,7 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
     for (size_t k = 1; k < terms.size(); ++k) terms[k].second /= sum;
     system.add(terms, 0.0, energy_weight);
   }
-  system.solve(solver);
+  if (const auto fault = system.solve(solver)) throw solve_error(system, *fault, rows, what);
   return system.unknowns();
 }
 
@@ -227,9 +272,9 @@ void deform_heights(std::vector<double>& z, const ConstraintRows& control,
                     LeastSquaresSolver solver) {
   const std::vector<size_t> control_vertices = solve_stage(
       z, control, {}, [](size_t) { return true; }, neighbours, energy_weight, Reads::Unknowns,
-      LeastSquaresSolver::Cholesky);
-  solve_stage(z, section, control_vertices, may_move, neighbours, energy_weight, Reads::All,
-              solver);
+      LeastSquaresSolver::Cholesky, "control curve");
+  solve_stage(z, section, control_vertices, may_move, neighbours, energy_weight, Reads::All, solver,
+              "cross sections");
 }
 
 void deform_heights(HeightField& field, const std::vector<HeightConstraint>& control,
@@ -241,7 +286,7 @@ void deform_heights(HeightField& field, const std::vector<HeightConstraint>& con
       const std::array<Term, 3> terms{{{c.at.vertex[0], c.at.weight[0]},
                                        {c.at.vertex[1], c.at.weight[1]},
                                        {c.at.vertex[2], c.at.weight[2]}}};
-      out.add(terms, c.z);
+      out.add(terms, c.z, c.feature);
     }
     return out;
   };

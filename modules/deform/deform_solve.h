@@ -5,6 +5,7 @@
 // heights; horizontal positions stay.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <utility>
@@ -15,22 +16,26 @@
 
 namespace maquette::deform {
 
-// A positional constraint: the surface at `at` should have height `z` (Eq. 3 and 5).
+// A positional constraint: the surface at `at` should have height `z` (Eq. 3 and 5); of the
+// stroke `feature` (its id, for the errors).
 struct HeightConstraint {
   SurfacePoint at;
   double z = 0;
+  int64_t feature = 0;
 };
 
 // A term of a linear row: coefficient * z[vertex].
 using Term = std::pair<size_t, double>;
 
-// Positional constraints as rows: row i is sum of terms[starts[i] .. starts[i + 1]) = rhs[i].
+// Positional constraints as rows: row i is sum of terms[starts[i] .. starts[i + 1]) = rhs[i],
+// a constraint of the stroke features[i].
 struct ConstraintRows {
   std::vector<size_t> starts{0};
   std::vector<Term> terms;
   std::vector<double> rhs;
+  std::vector<int64_t> features;
 
-  void add(std::span<const Term> row, double z);
+  void add(std::span<const Term> row, double z, int64_t feature);
 };
 
 // The energy row of vertex v: fills `out` with its neighbours and their cotangent weights (>= 0;
@@ -72,7 +77,11 @@ inline constexpr int kConjugateGradientsIterations = 300;
 // gradients' products: the same bits for any thread count). Vertices that are no
 // unknown keep their heights bit for bit.
 // Preconditions: every vertex the rows and energy rows read has a finite height.
-// Throws maquette::Error if a system is singular.
+// Throws maquette::Error if a system is singular or its solution not finite, naming the solve
+// (control curve or cross sections) and the feature at fault: that of the first constraint
+// reading the height that fails (a column of the system with no coefficient, or a non-finite
+// result), "feature 7: constraint 12 of its control curve (numbered along it from 1) reads a
+// height that nothing else holds: ...", else every feature of that solve.
 void deform_heights(std::vector<double>& z, const ConstraintRows& control,
                     const ConstraintRows& section, const EnergyNeighbours& neighbours,
                     const std::function<bool(size_t)>& may_move, double energy_weight,

@@ -111,7 +111,7 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
   const std::vector<SurfacePoint> located = locator.all(horizontal, "control curve");
   for (size_t k = 0; k <= n; ++k) {
     if (stroke.z.empty() && stroke.profile.empty()) z[k] = height_at(field, located[k]);
-    out.control.push_back({located[k], z[k]});
+    out.control.push_back({located[k], z[k], stroke.id});
   }
 
   // Frames along the horizontal trace; the reference starts on the right of the first tangent.
@@ -145,7 +145,7 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
   }
   const std::vector<SurfacePoint> across_located = locator.all(across, "cross section");
   for (size_t i = 0; i < across.size(); ++i)
-    out.section.push_back({across_located[i], across_z[i]});
+    out.section.push_back({across_located[i], across_z[i], stroke.id});
 }
 
 }  // namespace maquette::deform
