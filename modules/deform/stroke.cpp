@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/enu_frame.h"
 #include "core/error.h"
@@ -33,11 +34,49 @@ double segment_distance(Point2 a, Point2 b, Point2 c, Point2 d) {
                    point_segment_distance(c, a, b), point_segment_distance(d, a, b)});
 }
 
+// The pairs (i, j), i < j, of segments whose bounding boxes grown by kSelfContactM overlap, and
+// every consecutive pair (j = i + 1), sorted: a sweep along the axis of the curve's larger extent
+// (segments by their box's start there, each compared with the earlier ones whose box has not
+// ended), so that a long curve costs about its length, not its square.
+std::vector<std::array<size_t, 2>> candidate_pairs(const std::vector<Point2>& at,
+                                                   const std::vector<size_t>& segments) {
+  const size_t n = segments.size();
+  std::vector<std::array<Point2, 2>> box(n);  // per segment: low and high corner, grown
+  Point2 low{INFINITY, INFINITY}, high{-INFINITY, -INFINITY};
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 a = at[segments[i]], b = at[segments[i] + 1];
+    box[i] = {Point2{std::min(a[0], b[0]) - kSelfContactM, std::min(a[1], b[1]) - kSelfContactM},
+              Point2{std::max(a[0], b[0]) + kSelfContactM, std::max(a[1], b[1]) + kSelfContactM}};
+    for (size_t k = 0; k < 2; ++k)
+      low[k] = std::min(low[k], box[i][0][k]), high[k] = std::max(high[k], box[i][1][k]);
+  }
+  const size_t axis = high[0] - low[0] >= high[1] - low[1] ? 0 : 1, other = 1 - axis;
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
+    return box[i][0][axis] < box[j][0][axis] || (box[i][0][axis] == box[j][0][axis] && i < j);
+  });
+  std::vector<std::array<size_t, 2>> pairs;
+  for (size_t i = 0; i + 1 < n; ++i) pairs.push_back({i, i + 1});
+  std::vector<size_t> open;  // segments whose box may still overlap the next ones along the axis
+  for (const size_t j : order) {
+    std::erase_if(open, [&](size_t i) { return box[i][1][axis] < box[j][0][axis]; });
+    for (const size_t i : open)
+      if (std::max(i, j) - std::min(i, j) > 1 && box[i][0][other] <= box[j][1][other] &&
+          box[j][0][other] <= box[i][1][other])
+        pairs.push_back({std::min(i, j), std::max(i, j)});
+    open.push_back(j);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
 // Throws when the control curve comes within kSelfContactM of itself: two segments that are not
 // consecutive meet (cross, touch, or overlap collinearly), or a segment turns back over the one
 // before (more than a right angle, the shorter one's far end on the other). Segments are numbered
 // from 1 as in the LineString; zero-length ones are skipped. In metres, on the tangent plane of
-// the curve's first point.
+// the curve's first point. The fault named is the first pair (i, j) in order of i then j, as if
+// every pair were tried; only those whose grown boxes overlap are (candidate_pairs).
 void check_self_contact(const std::vector<LonLat>& curve, const std::string& where) {
   const EnuFrame plane({curve.front().lon, curve.front().lat, 0});
   std::vector<Point2> at;
@@ -52,18 +91,16 @@ void check_self_contact(const std::vector<LonLat>& curve, const std::string& whe
     return Error(where + ": the control curve " + what + " (segments " +
                  std::to_string(segments[i] + 1) + " and " + std::to_string(segments[j] + 1) + ")");
   };
-  for (size_t i = 0; i < segments.size(); ++i) {
+  for (const auto& [i, j] : candidate_pairs(at, segments)) {
     const Point2 a = at[segments[i]], b = at[segments[i] + 1];
-    for (size_t j = i + 1; j < segments.size(); ++j) {
-      const Point2 c = at[segments[j]], d = at[segments[j] + 1];
-      if (j == i + 1) {  // consecutive (zero-length ones between skipped): they share b == c
-        const bool turns_back = dot(minus(b, a), minus(d, c)) < 0;
-        if (turns_back && std::min(point_segment_distance(d, a, b),
-                                   point_segment_distance(a, c, d)) <= kSelfContactM)
-          throw fault(i, j, "turns back over itself");
-      } else if (segment_distance(a, b, c, d) <= kSelfContactM) {
-        throw fault(i, j, "crosses itself");
-      }
+    const Point2 c = at[segments[j]], d = at[segments[j] + 1];
+    if (j == i + 1) {  // consecutive (zero-length ones between skipped): they share b == c
+      const bool turns_back = dot(minus(b, a), minus(d, c)) < 0;
+      if (turns_back && std::min(point_segment_distance(d, a, b),
+                                 point_segment_distance(a, c, d)) <= kSelfContactM)
+        throw fault(i, j, "turns back over itself");
+    } else if (segment_distance(a, b, c, d) <= kSelfContactM) {
+      throw fault(i, j, "crosses itself");
     }
   }
 }

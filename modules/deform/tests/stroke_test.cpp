@@ -7,7 +7,16 @@
 #include <gtest/gtest.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
 
+#include "core/enu_frame.h"
 #include "core/error.h"
 
 namespace maquette::deform {
@@ -124,6 +133,115 @@ TEST(FeatureStrokes, CrossSectionMustHaveDzZeroAtTheCurve) {
                                {"cross_section", {{-30, 0}, {0, 0}, {2, -25}, {30, -25}}}})),
             "");
   EXPECT_EQ(error_of(line(14, {{"tool", "feature"}, {"cross_section", {{2, -1}, {10, -3}}}})), "");
+}
+
+// The self-contact check as first written, every pair of segments tried in order (kept as the
+// oracle of the sweep in stroke.cpp): the message of its first fault, "" when none.
+std::string all_pairs_fault(const std::vector<std::array<double, 2>>& at) {
+  using P = std::array<double, 2>;
+  const auto minus = [](P a, P b) { return P{a[0] - b[0], a[1] - b[1]}; };
+  const auto dot = [](P a, P b) { return a[0] * b[0] + a[1] * b[1]; };
+  const auto cross = [](P a, P b) { return a[0] * b[1] - a[1] * b[0]; };
+  const auto point_segment = [&](P p, P a, P b) {
+    const P ab = minus(b, a), ap = minus(p, a);
+    const double t = std::clamp(dot(ap, ab) / dot(ab, ab), 0.0, 1.0);
+    return std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+  };
+  const auto segment_segment = [&](P a, P b, P c, P d) {
+    const double d1 = cross(minus(b, a), minus(c, a)), d2 = cross(minus(b, a), minus(d, a));
+    const double d3 = cross(minus(d, c), minus(a, c)), d4 = cross(minus(d, c), minus(b, c));
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+      return 0.0;
+    return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b),
+                     point_segment(d, a, b)});
+  };
+  std::vector<size_t> seg;
+  for (size_t i = 0; i + 1 < at.size(); ++i)
+    if (at[i] != at[i + 1]) seg.push_back(i);
+  const auto fault = [&](size_t i, size_t j, const std::string& what) {
+    return "inputs.strokes: feature 1: the control curve " + what + " (segments " +
+           std::to_string(seg[i] + 1) + " and " + std::to_string(seg[j] + 1) + ")";
+  };
+  for (size_t i = 0; i < seg.size(); ++i)
+    for (size_t j = i + 1; j < seg.size(); ++j) {
+      const P a = at[seg[i]], b = at[seg[i] + 1], c = at[seg[j]], d = at[seg[j] + 1];
+      if (j == i + 1) {
+        if (dot(minus(b, a), minus(d, c)) < 0 &&
+            std::min(point_segment(d, a, b), point_segment(a, c, d)) <= kSelfContactM)
+          return fault(i, j, "turns back over itself");
+      } else if (segment_segment(a, b, c, d) <= kSelfContactM) {
+        return fault(i, j, "crosses itself");
+      }
+    }
+  return "";
+}
+
+// Random control curves (walks of 3 to 300 vertices; some ending within 0 to 2 cm of an earlier
+// segment, some turning back within 0 to 2 cm, some seldom meeting themselves): the sweep names the
+// same fault as every pair tried in order, or none when it finds none.
+TEST(FeatureStrokes, SelfContactSweepAgreesWithAllPairsOnRandomCurves) {
+  std::mt19937_64 random(16);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const LonLat origin{-113.0, 37.2};
+  const EnuFrame plane({origin.lon, origin.lat, 0});
+  std::map<std::string, int> kinds;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int points = 3 + int(unit(random) * (trial % 10 == 0 ? 298 : 40));
+    // 0: a free walk, 1: gentle turns (seldom meeting itself), 2: ending near an earlier
+    // segment, 3: gentle turns then back along the last segment
+    const int kind = trial % 4;
+    std::vector<LonLat> curve{origin};
+    double heading = unit(random) * 2 * std::numbers::pi;
+    for (int k = 1; k < points; ++k) {
+      heading +=
+          kind == 1 || kind == 3 ? 0.3 * (unit(random) - 0.5) : 2 * std::numbers::pi * unit(random);
+      const auto [x, y, z] = plane.to_enu(curve.back().lon, curve.back().lat);
+      const double step = 0.5 + 30 * unit(random);
+      const GeodeticPoint next =
+          plane.to_geodetic(x + step * std::cos(heading), y + step * std::sin(heading), z);
+      curve.push_back({next.lon, next.lat});
+    }
+    std::vector<std::array<double, 2>> at;
+    for (const LonLat& p : curve) {
+      const auto [x, y, z] = plane.to_enu(p.lon, p.lat);
+      at.push_back({x, y});
+    }
+    if (kind == 2 && points > 3) {  // a last vertex 0 to 2 cm beside an earlier segment
+      const size_t k = size_t(unit(random) * double(points - 3));
+      const double t = unit(random), d = 0.02 * unit(random);
+      const double ex = at[k + 1][0] - at[k][0], ey = at[k + 1][1] - at[k][1];
+      const double length = std::hypot(ex, ey);
+      const std::array q{at[k][0] + t * ex - d * ey / length, at[k][1] + t * ey + d * ex / length};
+      const GeodeticPoint g = plane.to_geodetic(q[0], q[1], 0);
+      curve.push_back({g.lon, g.lat});
+    } else if (kind == 3) {  // back along the last segment, 0 to 2 cm beside it
+      const auto& a = at[at.size() - 2];
+      const auto& b = at.back();
+      const double d = 0.02 * unit(random), length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      const GeodeticPoint g =
+          plane.to_geodetic(a[0] + 0.5 * (b[0] - a[0]) - d * (b[1] - a[1]) / length,
+                            a[1] + 0.5 * (b[1] - a[1]) + d * (b[0] - a[0]) / length, 0);
+      curve.push_back({g.lon, g.lat});
+    }
+    at.clear();
+    for (const LonLat& p : curve) {
+      const auto [x, y, z] = plane.to_enu(p.lon, p.lat);
+      at.push_back({x, y});
+    }
+    VectorFeature f = line(1, {{"tool", "feature"}, {"cross_section", {{-5, 1}, {0, 0}, {5, 1}}}});
+    f.geometry.lines[0].clear();
+    for (const LonLat& p : curve) f.geometry.lines[0].push_back({p.lon, p.lat, NAN});
+    const std::string expected = all_pairs_fault(at);
+    ASSERT_EQ(error_of(f), expected) << "trial " << trial;
+    ++kinds[expected.empty()                                   ? "none"
+            : expected.find("turns back") != std::string::npos ? "turns back"
+                                                               : "crosses"];
+  }
+  std::printf("random curves: %d without contact, %d crossing, %d turning back\n", kinds["none"],
+              kinds["crosses"], kinds["turns back"]);
+  EXPECT_GT(kinds["none"], 200);
+  EXPECT_GT(kinds["crosses"], 200);
+  EXPECT_GT(kinds["turns back"], 200);
 }
 
 }  // namespace
