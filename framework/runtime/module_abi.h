@@ -23,7 +23,8 @@
 // 9: the layers the raster ports read (CellContext::input_layer, StepContext::input_layer: a
 //    DEM's vertical datum); region operators across rHEALPix face seams
 //    (OperatorSpec::spans_faces, a Mosaic unfolded around one face); refinable region steps.
-#define MAQUETTE_ABI_VERSION 9u
+// 10: OperatorSpec::max_refine.
+#define MAQUETTE_ABI_VERSION 10u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -58,6 +58,10 @@ struct OutputSpec {
   LayerKind kind = LayerKind::Raster;
 };
 
+// The largest "refine" of any step: a tile of 1 sample refined 12 times is 4096 samples, the
+// largest tile (log2_tile_size).
+inline constexpr int kMaxRefine = 12;
+
 struct OperatorSpec {
   std::string name;
   std::string description;
@@ -72,6 +76,9 @@ struct OperatorSpec {
   // Outputs `refine` levels finer than the inputs (a step's "refine"): a cell operator gets tiles
   // of tile_size << refine (CellContext::refine), a region operator output mosaics as much finer.
   bool refinable = false;
+  // The largest "refine" the operator takes: a step asking more is refused when the pipeline is
+  // read, naming the step and the value, before anything runs.
+  int max_refine = kMaxRefine;
   // A cell operator that writes every sample of every output tile it is given (NaN for nodata
   // included): the runner then hands it uninitialized output tiles instead of NaN-filled ones
   // (Tile::uninitialized), saving their fill. An operator that leaves a sample unwritten must not

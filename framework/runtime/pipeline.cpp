@@ -16,9 +16,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// A tile of 1 sample refined 12 times is 4096, the largest tile (log2_tile_size).
-constexpr int kMaxRefine = 12;
-
 [[noreturn]] void fail(const std::string& context, const std::string& path,
                        const std::string& what) {
   throw Error(context + ": " + (path.empty() ? "" : path + ": ") + what);
@@ -117,6 +114,10 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
                             !step.op->spec().refinable))
       fail(label, "refine",
            "the operator writes its outputs at its inputs' resolution only (not refinable)");
+    if (step.refine > step.op->spec().max_refine)
+      fail(label, "refine",
+           std::to_string(step.refine) + " is more than the operator takes (at most " +
+               std::to_string(step.op->spec().max_refine) + ")");
   }
   step.params =
       validate_params(step.op->spec().params_schema, s.value("params", json::object()), label);

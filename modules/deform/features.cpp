@@ -30,6 +30,10 @@ namespace {
 // that they do not depend on where the region ends; strokes must lie in the region.
 constexpr int kHalo = 1;
 
+// The finest "refine": three levels of Loop subdivision, as the three-level edit (each
+// level has about 4 times the unknowns of the one before).
+constexpr int kMaxLevels = 3;
+
 OperatorSpec features_spec() {
   OperatorSpec s;
   s.name = "deform.features";
@@ -40,7 +44,8 @@ OperatorSpec features_spec() {
   s.kind = OperatorKind::Region;
   // "refine": k, the deformed surface k levels of Loop subdivision finer (deform_levels.h).
   s.refinable = true;
-  s.spans_faces = true;  // MosaicFrame places samples across face seams
+  s.max_refine = kMaxLevels;  // more is refused when the pipeline is read
+  s.spans_faces = true;       // MosaicFrame places samples across face seams
   s.halo = kHalo;
   s.inputs = {
       {"dem", "elevation (m)", false},
@@ -234,11 +239,11 @@ class Features : public RegionOperator {
     const int size = dem.size() - 2 * kHalo;
     // The step's refine: the runner makes the output mosaic 2^refine times finer.
     const int refine = output.level - input.level;
-    if (refine < 0 || refine > 3 || size < 2 || out.size() != dem.size() << refine)
+    if (refine < 0 || refine > kMaxLevels || size < 2 || out.size() != dem.size() << refine)
       throw Error("deform.features: output mosaic of " + std::to_string(out.size()) +
                   " samples a side at level " + std::to_string(output.level) + " for an input of " +
                   std::to_string(dem.size()) + " at level " + std::to_string(input.level) +
-                  " (refine 0 to 3 levels)");
+                  " (refine 0 to " + std::to_string(kMaxLevels) + " levels)");
     const std::vector<FeatureStroke> strokes =
         feature_strokes(input.features.at("strokes"), "strokes");
     if (refine == 0) out = dem;

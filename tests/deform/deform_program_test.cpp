@@ -337,6 +337,22 @@ TEST(DeformProgram, StrokeLeavingTheRegionFailsTheRun) {
   fs::remove_all(c.dir);
 }
 
+// deform.features refines at most 3 levels: a step asking 4 is refused when the pipeline is read,
+// naming the step and the value, before anything runs (no layer written). (Before, the run
+// reached the region's mosaic and failed there.)
+TEST(DeformProgram, RefineBeyondThreeIsRefusedWhenThePipelineIsRead) {
+  const Case c = make_case("refine4", 17, 64, channel(), plane_height, json::object(), 4);
+  const test::CliResult r = run(c, 1);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("step 1 (deform.features): refine: 4 is more than the operator takes (at "
+                       "most 3)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("failed on the region's mosaic"), std::string::npos) << r.err;
+  EXPECT_FALSE(Store::open(c.store(), Store::Mode::ReadOnly)->layer("carved"));
+  fs::remove_all(c.dir);
+}
+
 // Sloping 1 mm/m eastwards: r.carve lowers its bed to the lowest sample within the width
 // (measured: 8 cm deeper than asked on a 2 % slope), here by less than 0.5 cm.
 double gentle_slope(LonLat p) { return 1500 - 0.001 * east_north(p)[0]; }
