@@ -127,25 +127,24 @@ void check_surroundings(const MosaicFrame& frame, const HeightField& field,
         if (seen[v]) continue;
         seen[v] = 1;
         const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-        const LonLat at = frame.sample_lonlat(c, r);
+        const auto at = [&] { return lonlat_text(frame.sample_lonlat(c, r)); };
         const int to_edge = std::min({c, r, field.width - 1 - c, field.height - 1 - r});
         if (to_edge < reach)
           throw Error(feature + ": its constraints come within " + std::to_string(to_edge) +
-                      " samples of the region's edge at " + lonlat_text(at) + refined +
-                      std::to_string(reach) +
+                      " samples of the region's edge at " + at() + refined + std::to_string(reach) +
                       " samples around them, inside the region: draw the region larger around "
                       "the feature");
         for (int y = r - reach; y <= r + reach; ++y)
           for (int x = c - reach; x <= c + reach; ++x) {
             if (!std::isnan(field.z[field.index(x, y)])) continue;
             const auto centre = frame.sample_centre(x, y);
-            throw Error(feature + ": nodata at " +
-                        (centre
-                             ? lonlat_text(*centre)
-                             : "the gap beyond a face corner (no face of the plane there) near " +
-                                   lonlat_text(at)) +
-                        ", " + std::to_string(reach) + " samples or less from its constraints" +
-                        refined + "there");
+            throw Error(
+                feature + ": nodata at " +
+                (centre
+                     ? lonlat_text(*centre)
+                     : "the gap beyond a face corner (no face of the plane there) near " + at()) +
+                ", " + std::to_string(reach) + " samples or less from its constraints" + refined +
+                "there");
           }
       }
 }
