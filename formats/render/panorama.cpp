@@ -6,13 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <optional>
 
-#include "core/output_file.h"
-#include "gdal/image_file.h"
-#include "geotiff/gdal_util.h"
 #include "image/layer_sampler.h"
 #include "image/stretch.h"
 
@@ -34,13 +30,83 @@ struct Samplers {
 
 }  // namespace
 
+int stretch_step(int width, int height) {
+  return std::max(1, int(std::sqrt(double(width) * double(height) / 4e6)));
+}
+
+namespace {
+
+// The lon/lat a terrain pixel `i` of `f` sees, interpolated in its triangle.
+LonLat pixel_lonlat(const TerrainScene& scene, const Fragments& f, size_t i) {
+  const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
+  const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
+  LonLat ll{0, 0};
+  for (int j = 0; j < 3; ++j) {
+    ll.lon += b[j] * scene.lonlat[2 * size_t(v[j])];
+    ll.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
+  }
+  return ll;
+}
+
+// The texture's texel at `ll` (3 bands; NaN where it has none).
+void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, LonLat ll, float* out) {
+  float texel[4] = {NAN, NAN, NAN, NAN};
+  if (s.texture->sample(ll, grid.cell_from_point(ll, look.texture->level), texel))
+    for (int k = 0; k < 3; ++k) out[k] = texel[look.texture->channels < 3 ? 0 : k];
+}
+
+tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, const Grid& grid,
+                                                        const PanoramaLook& look) {
+  return tbb::enumerable_thread_specific<Samplers>([&] {
+    Samplers s;
+    if (look.texture) s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
+    if (look.land_cover)
+      s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
+    return s;
+  });
+}
+
+bool on_stretch_grid(int row, int col, int step) { return row % step == 0 && col % step == 0; }
+
+}  // namespace
+
+void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
+                           const Fragments& f, const PanoramaLook& look, int step,
+                           StretchTexels& texels) {
+  if (!look.texture || !look.stretch) return;
+  auto samplers = make_samplers(store, grid, look);
+  std::vector<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
+  tbb::parallel_for(0, f.height, [&](int row) {
+    if ((f.first_row + row) % step != 0) return;
+    Samplers& s = samplers.local();
+    for (int col = 0; col < f.width; col += step) {
+      const size_t i = size_t(row) * size_t(f.width) + size_t(col);
+      if (f.triangle[i] != Fragments::kSky)
+        sample_texel(s, grid, look, pixel_lonlat(scene, f, i), &found[3 * i]);
+    }
+  });
+  for (size_t i = 0; i < found.size() / 3; ++i)
+    for (size_t k = 0; k < 3; ++k)
+      if (!std::isnan(found[3 * i + k])) texels[k].push_back(found[3 * i + k]);
+}
+
+BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
+  BandStretch stretch{StretchRange{0, 255}, StretchRange{0, 255}, StretchRange{0, 255}};
+  if (look.texture && look.stretch)
+    for (size_t k = 0; k < 3; ++k)
+      stretch[k] = quantile_range(texels[k], kDisplayStretch.first, kDisplayStretch.second);
+  return stretch;
+}
+
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
-                        const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look) {
+                        const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look,
+                        const BandStretch* given_stretch) {
   const int w = f.width, h = f.height;
   const size_t n = size_t(w) * size_t(h);
   Panorama p;
   p.width = w;
   p.height = h;
+  p.first_row = f.first_row;
   p.rgb.assign(3 * n, 0);
   for (auto* guide : {&p.altitude, &p.distance, &p.lon, &p.lat}) guide->assign(n, NAN);
   if (look.land_cover) p.land_cover.assign(n, NAN);
@@ -48,13 +114,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.silhouette.assign(n, 0);
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
-  tbb::enumerable_thread_specific<Samplers> samplers([&] {
-    Samplers s;
-    if (look.texture) s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
-    if (look.land_cover)
-      s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
-    return s;
-  });
+  auto samplers = make_samplers(store, grid, look);
 
   // What each pixel sees: guides, the surface's texel (NaN for none) and its shade.
   std::vector<float> texels(3 * n, NAN), shades(n, 0);
@@ -70,18 +130,13 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * v[j] + size_t(k)];
         return sum;
       };
-      const LonLat ll{interpolate(scene.lonlat, 2, 0), interpolate(scene.lonlat, 2, 1)};
+      const LonLat ll = pixel_lonlat(scene, f, i);
       p.lon[i] = ll.lon;
       p.lat[i] = ll.lat;
       p.altitude[i] = interpolate(scene.altitude, 1, 0);
-      const Vec3d ray = camera.ray(col + 0.5, row + 0.5);
+      const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
-      if (s.texture) {
-        float texel[4] = {NAN, NAN, NAN, NAN};
-        if (s.texture->sample(ll, grid.cell_from_point(ll, look.texture->level), texel))
-          for (int k = 0; k < 3; ++k)
-            texels[3 * i + size_t(k)] = texel[look.texture->channels < 3 ? 0 : k];
-      }
+      if (s.texture) sample_texel(s, grid, look, ll, &texels[3 * i]);
       if (s.land_cover) {
         float label = NAN;
         if (s.land_cover->sample(ll, grid.cell_from_point(ll, look.land_cover->level), &label))
@@ -102,22 +157,29 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     }
   });
 
-  // The display stretch of the texels seen (image/stretch.h), per band.
-  std::array<StretchRange, 3> stretch{StretchRange{0, 255}, StretchRange{0, 255},
-                                      StretchRange{0, 255}};
-  if (look.texture && look.stretch)
-    for (size_t k = 0; k < 3; ++k) {
-      std::vector<float> band(n);
-      for (size_t i = 0; i < n; ++i) band[i] = texels[3 * i + k];
-      stretch[k] = quantile_range(band, kDisplayStretch.first, kDisplayStretch.second);
-    }
+  // The display stretch (image/stretch.h) of the texels on the stretch grid, per band.
+  BandStretch stretch;
+  if (given_stretch) {
+    stretch = *given_stretch;
+  } else {
+    StretchTexels seen;
+    const int step = stretch_step(w, camera.spec().height);
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const size_t i = size_t(row) * size_t(w) + size_t(col);
+        if (on_stretch_grid(f.first_row + row, col, step))
+          for (size_t k = 0; k < 3; ++k)
+            if (!std::isnan(texels[3 * i + k])) seen[k].push_back(texels[3 * i + k]);
+      }
+    stretch = texel_stretch(seen, look);
+  }
 
   tbb::parallel_for(0, h, [&](int row) {
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
       Rgb colour;
       if (f.triangle[i] == Fragments::kSky) {
-        const Vec3d ray = camera.ray(col + 0.5, row + 0.5);
+        const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
         const double elevation = std::atan2(ray[2], std::hypot(ray[0], ray[1]));
         colour = mix(kHaze, kZenith, std::clamp(elevation / (30 * kDegree), 0.0, 1.0));
       } else {
@@ -148,44 +210,6 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     }
   });
   return p;
-}
-
-namespace {
-
-void write_guides(const Panorama& p, const std::string& path) {
-  OutputFile out(path, {".aux.xml"});
-  out.write([&] {
-    GdalSession gdal;
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
-    std::vector<std::pair<const char*, const std::vector<double>*>> bands = {
-        {"altitude", &p.altitude}, {"distance", &p.distance}, {"lon", &p.lon}, {"lat", &p.lat}};
-    if (!p.land_cover.empty()) bands.emplace_back("land_cover", &p.land_cover);
-    if (!p.cast_shadow.empty()) bands.emplace_back("cast_shadow", &p.cast_shadow);
-    DatasetPtr ds(driver->Create(out.temp_path().c_str(), p.width, p.height, int(bands.size()),
-                                 GDT_Float64, geotiff_creation_options(true).List()));
-    if (!ds) gdal_error("cannot create " + out.temp_path());
-    for (size_t b = 0; b < bands.size(); ++b) {
-      GDALRasterBand* band = ds->GetRasterBand(int(b) + 1);
-      band->SetDescription(bands[b].first);
-      band->SetNoDataValue(NAN);
-      if (band->RasterIO(GF_Write, 0, 0, p.width, p.height,
-                         const_cast<double*>(bands[b].second->data()), p.width, p.height,
-                         GDT_Float64, 0, 0) != CE_None)
-        gdal_error("cannot write " + out.temp_path());
-    }
-    ds.reset();  // flushes the last blocks
-  });
-  out.commit();
-}
-
-}  // namespace
-
-void write_panorama(const Panorama& p, const std::string& out) {
-  const std::filesystem::path path(out);
-  const std::string stem = (path.parent_path() / path.stem()).string();
-  write_image(p.rgb, p.width, p.height, 3, {"PNG", {}}, out);
-  write_image(p.silhouette, p.width, p.height, 1, {"PNG", {}}, stem + "-silhouettes.png");
-  write_guides(p, stem + "-guides.tif");
 }
 
 }  // namespace maquette

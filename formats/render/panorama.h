@@ -7,14 +7,17 @@
 // the land-cover class when a categorical layer is given (nearest sample), and silhouettes: terrain
 // pixels on the near side of a depth discontinuity (a 4-neighbour is sky or more than
 // `silhouette_jump` times farther). Rows are shaded in parallel, each pixel from its own fragment:
-// the same bits for any threads.
+// the same bits for any threads. A strip of rows of the picture (render/panorama_strips.h) is
+// shaded as the same rows of the whole picture, given the whole picture's display stretch (its
+// texels are those of the pixels on a grid of stretch_step, gathered strip by strip).
 #pragma once
 
+#include <array>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/grid.h"
+#include "image/stretch.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
 #include "store/store.h"
@@ -37,6 +40,7 @@ struct PanoramaLook {
 
 struct Panorama {
   int width = 0, height = 0;
+  int first_row = 0;         // of the picture: the panorama may be a strip of it
   std::vector<uint8_t> rgb;  // 3 per pixel, row-major
   // Per pixel, NaN on the sky: metres of the DEM's datum, metres from the eye, degrees, class.
   std::vector<double> altitude, distance, lon, lat, land_cover;
@@ -44,14 +48,27 @@ struct Panorama {
   std::vector<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 
+using BandStretch = std::array<StretchRange, 3>;          // per band of the texture
+using StretchTexels = std::array<std::vector<float>, 3>;  // texels per band
+
+// The display stretch is taken over the texels of the pixels whose row and column are multiples
+// of this step: 1 up to 4 MP, about 4 M pixels above.
+int stretch_step(int width, int height);
+
+// Appends to `texels` those of the terrain pixels of `f` on the grid of `step` (picture rows, so
+// the strips of a picture gather the whole picture's); nothing without a texture to stretch.
+void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
+                           const Fragments& f, const PanoramaLook& look, int step,
+                           StretchTexels& texels);
+
+// The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
+// stored without a texture or with look.stretch false.
+BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
+
+// The rows of `f` shaded; `stretch`: the whole picture's (nullptr: `f` is the whole picture, its
+// stretch taken from its own texels).
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const Fragments& fragments, const PinholeCamera& camera,
-                        const PanoramaLook& look);
-
-// Writes OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF, no
-// georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
-// when computed; NaN on the sky) and stem + "-silhouettes.png" (8-bit). Each file whole or not at
-// all.
-void write_panorama(const Panorama& panorama, const std::string& out);
+                        const PanoramaLook& look, const BandStretch* stretch = nullptr);
 
 }  // namespace maquette

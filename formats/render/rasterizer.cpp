@@ -73,7 +73,7 @@ void draw(DrawnVertex v0, DrawnVertex v1, DrawnVertex v2, uint32_t t, int row0, 
              tl2 = top_left(v0.screen, v1.screen);
   const int64_t xmin = std::min({v0.screen.x, v1.screen.x, v2.screen.x}),
                 xmax = std::max({v0.screen.x, v1.screen.x, v2.screen.x});
-  const auto [first, last] = row_span(v0.screen, v1.screen, v2.screen, f.height);
+  const auto [first, last] = row_span(v0.screen, v1.screen, v2.screen, row1);
   const int64_t c0 = std::max<int64_t>(0, (xmin - kOne / 2 + kOne - 1) >> kSubpixelBits);
   const int64_t c1 = std::min<int64_t>(f.width - 1, (xmax - kOne / 2) >> kSubpixelBits);
   for (int64_t r = std::max<int64_t>(first, row0); r <= std::min<int64_t>(last, row1 - 1); ++r) {
@@ -91,7 +91,7 @@ void draw(DrawnVertex v0, DrawnVertex v1, DrawnVertex v2, uint32_t t, int row0, 
         inv_z += w[k];
       }
       const double z = 1 / inv_z;
-      const size_t i = size_t(r) * size_t(f.width) + size_t(c);
+      const size_t i = size_t(r - f.first_row) * size_t(f.width) + size_t(c);
       // The nearer wins; on equal depth the lower triangle index, whatever the drawing order.
       if (z > f.depth[i] || (z == f.depth[i] && t >= f.triangle[i])) continue;
       double b1 = 0, b2 = 0;
@@ -142,8 +142,10 @@ void clip(const PinholeCamera& camera, const Vec3d (&view)[3], uint32_t t, doubl
 
 }  // namespace
 
-Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near) {
+Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
+                    int rows) {
   const int w = camera.spec().width, h = camera.spec().height;
+  const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
   const size_t vertex_count = mesh.positions.size() / 3;
   std::vector<Vec3d> view(vertex_count);
   std::vector<ScreenVertex> screen(vertex_count);
@@ -153,12 +155,15 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     if (view[i][2] >= near) screen[i] = to_screen(camera, view[i]);
   });
 
-  // Triangles by the bands of rows their bounding boxes meet: mesh triangles wholly in front of
-  // the near plane by their index t, pieces of cut ones as triangle_count() + their index.
-  const int bands = (h + kBandRows - 1) / kBandRows;
+  // Triangles by the bands of rows (from `top`) their bounding boxes meet: mesh triangles wholly
+  // in front of the near plane by their index t, pieces of cut ones as triangle_count() + their
+  // index (the pieces of every triangle, whatever the rows drawn: the same ids for any strip).
+  const int bands = (bottom - top + kBandRows - 1) / kBandRows;
   std::vector<std::vector<uint32_t>> band_triangles(static_cast<size_t>(bands));
   auto bin = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t id) {
-    const auto [first, last] = row_span(a, b, c, h);
+    auto [first, last] = row_span(a, b, c, h);
+    first = std::max<int64_t>(first, top) - top;
+    last = std::min<int64_t>(last, bottom - 1) - top;
     for (int64_t band = first / kBandRows; band <= last / kBandRows && first <= last; ++band)
       band_triangles[size_t(band)].push_back(id);
   };
@@ -183,14 +188,15 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
 
   Fragments f;
   f.width = w;
-  f.height = h;
-  const size_t n = size_t(w) * size_t(h);
+  f.height = bottom - top;
+  f.first_row = top;
+  const size_t n = size_t(w) * size_t(f.height);
   f.triangle.assign(n, Fragments::kSky);
   f.depth.assign(n, std::numeric_limits<double>::infinity());
   f.b1.assign(n, 0);
   f.b2.assign(n, 0);
   tbb::parallel_for(0, bands, [&](int band) {
-    const int row0 = band * kBandRows, row1 = std::min(h, row0 + kBandRows);
+    const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
     for (const uint32_t id : band_triangles[size_t(band)]) {
       if (id >= triangles) {
         const ClippedTriangle& c = clipped[id - triangles];

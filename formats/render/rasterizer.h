@@ -25,10 +25,12 @@ struct RenderMesh {
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
-// What each pixel sees, row-major from the top-left.
+// What each pixel of rows first_row .. first_row + height - 1 of the picture sees, row-major from
+// the top-left of that strip.
 struct Fragments {
   static constexpr uint32_t kSky = std::numeric_limits<uint32_t>::max();
   int width = 0, height = 0;
+  int first_row = 0;
   std::vector<uint32_t> triangle;  // index of the triangle seen, kSky for none
   std::vector<double> depth;       // camera-frame z (metres), +inf for none
   // Perspective-correct barycentric weights of the triangle's 2nd and 3rd vertex at the pixel's
@@ -36,7 +38,11 @@ struct Fragments {
   std::vector<float> b1, b2;
 };
 
-// Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn.
-Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near = 1.0);
+// Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn, into
+// the picture's rows [first_row, first_row + rows) (rows < 0: to the last row). Each pixel gets
+// the same bits whatever the rows drawn with it (a strip of a picture is that picture's rows).
+// Precondition: 0 <= first_row < the picture's height.
+Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near = 1.0,
+                    int first_row = 0, int rows = -1);
 
 }  // namespace maquette

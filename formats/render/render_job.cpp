@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <map>
+#include <memory>
 
 #include "core/error.h"
 #include "render/rasterizer.h"
@@ -27,14 +29,24 @@ LayerInfo raster_layer(const Store& store, const std::string& option, const std:
   return *info;
 }
 
-}  // namespace
+// What render_panorama and render_panorama_files share: the checked layers, the camera, the bent
+// terrain and the look (whose layer pointers point into this).
+struct PreparedPanorama {
+  std::optional<LayerInfo> texture, land_cover;
+  std::optional<PinholeCamera> camera;
+  TerrainScene scene;
+  std::vector<uint8_t> shadow;  // per vertex, with --shadows (render/terrain_shadow.h)
+  PanoramaLook look;
+};
 
-Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) {
+std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, PanoramaJob job) {
+  auto prepared = std::make_unique<PreparedPanorama>();
+  std::optional<LayerInfo>& texture = prepared->texture;
+  std::optional<LayerInfo>& land_cover = prepared->land_cover;
   const LayerInfo dem = raster_layer(store, "--dem", job.dem);
   if (dem.channels != 1)
     throw Error("--dem layer '" + dem.name + "' has " + std::to_string(dem.channels) +
                 " channels: expected one channel of heights");
-  std::optional<LayerInfo> texture, land_cover;
   if (!job.texture.empty()) {
     texture = raster_layer(store, "--texture", job.texture);
     if (texture->dtype != DType::U8 || texture->channels == 2 || texture->channels > 4)
@@ -74,26 +86,48 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
     job.camera.heading = heading;
     job.camera.pitch = pitch;
   }
-  const PinholeCamera camera(job.camera);
-  TerrainScene scene = build_terrain_scene(store, grid, dem, camera, job.exaggeration);
-  std::vector<uint8_t> shadow;
+  const PinholeCamera& camera = prepared->camera.emplace(job.camera);
+  TerrainScene& scene = prepared->scene = build_terrain_scene(
+      store, grid, dem, camera, job.exaggeration, job.sample_pixels, !job.bend.bends());
   if (job.shadows)  // on the unbent terrain: the bend is a drawing device, not the sun's
-    shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration, job.sun_azimuth,
-                             job.sun_altitude);
+    prepared->shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration,
+                                       job.sun_azimuth, job.sun_altitude);
   job.bend.base = ground.value_or(0) - eye.height;  // the ENU up of the ground under the eye
   bend_positions(scene.mesh.positions, job.bend);
-  spdlog::debug("panorama: {} vertices, {} triangles", scene.altitude.size(),
+  std::map<int, int> tiles;  // per level
+  for (const CellId c : scene.cells) ++tiles[c.level()];
+  std::string levels;
+  for (const auto& [level, count] : tiles)
+    levels +=
+        (levels.empty() ? "" : ", ") + std::to_string(count) + " at level " + std::to_string(level);
+  spdlog::debug("panorama: tiles {}; {} vertices, {} triangles", levels, scene.altitude.size(),
                 scene.mesh.triangle_count());
-  const Fragments fragments = rasterize(scene.mesh, camera);
-  PanoramaLook look;
+  PanoramaLook& look = prepared->look;
   look.texture = texture ? &*texture : nullptr;
   look.land_cover = land_cover ? &*land_cover : nullptr;
   look.haze_distance = job.haze_distance;
   look.stretch = job.stretch;
   look.sun_azimuth = job.sun_azimuth;
   look.sun_altitude = job.sun_altitude;
-  look.shadow = job.shadows ? &shadow : nullptr;
-  return shade_panorama(store, grid, scene, fragments, camera, look);
+  look.shadow = job.shadows ? &prepared->shadow : nullptr;
+  return prepared;
+}
+
+}  // namespace
+
+Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) {
+  const auto p = prepare(store, grid, std::move(job));
+  return shade_panorama(store, grid, p->scene, rasterize(p->scene.mesh, *p->camera), *p->camera,
+                        p->look);
+}
+
+void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,
+                           const std::string& out) {
+  if (job.strip_rows < 0)
+    throw Error("--strip-rows " + std::to_string(job.strip_rows) + " must be 0 or more");
+  const int rows = job.strip_rows > 0 ? job.strip_rows : default_strip_rows(job.camera.width);
+  const auto p = prepare(store, grid, std::move(job));
+  render_strips(store, grid, p->scene, *p->camera, p->look, rows, out);
 }
 
 }  // namespace maquette

@@ -8,6 +8,7 @@
 #include "core/grid.h"
 #include "render/camera.h"
 #include "render/panorama.h"
+#include "render/panorama_strips.h"
 #include "render/progressive_bend.h"
 #include "store/store.h"
 
@@ -19,6 +20,9 @@ struct PanoramaJob {
   bool above_ground = false;             // camera.eye.height is above the terrain
   std::optional<GeodeticPoint> look_at;  // replaces camera.heading and pitch
   double exaggeration = 1;
+  // The DEM's level by distance: a sample drawn at most this many pixels wide (render/
+  // terrain_scene.h scene_cells); 0: every tile at full resolution.
+  double sample_pixels = 1;
   // Its base is set here: the ground under the eye as the DEM gives it, not exaggerated (the
   // ellipsoid where the DEM has no data there).
   // The hillshade keeps the unbent terrain's normals, so the bend does not relight the far slopes;
@@ -28,6 +32,7 @@ struct PanoramaJob {
   double haze_distance = 60000;
   double sun_azimuth = 315, sun_altitude = 45;
   bool shadows = false;  // the terrain's cast shadows (render/terrain_shadow.h) under that sun
+  int strip_rows = 0;    // render_panorama_files: rows per strip (0: default_strip_rows)
 };
 
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
@@ -36,5 +41,11 @@ struct PanoramaJob {
 // --above-ground where the DEM has no data), a field of view, pitch or size out of range
 // (render/camera.h), a sun altitude outside (0, 90) with --shadows.
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
+
+// The same written to OUT and its guides (render/panorama_strips.h), drawn in strips of
+// job.strip_rows rows: the same files as write_panorama(render_panorama(...)) whatever the strips,
+// in bounded memory. Throws as render_panorama, and for strip_rows < 0.
+void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,
+                           const std::string& out);
 
 }  // namespace maquette

@@ -2,56 +2,63 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "core/error.h"
 #include "core/halo.h"
-#include "core/tile_frame.h"
 #include "gdal/vertical_datum.h"
 #include "image/layer_sampler.h"
+#include "render/sample_places.h"
 
 namespace maquette {
 namespace {
 
 constexpr uint32_t kNoVertex = std::numeric_limits<uint32_t>::max();
 
-// One tile's share of the mesh, with indices local to its vertices.
+// One tile's share of the mesh, with indices local to its vertices: `cell`'s tile (a
+// full-resolution tile or an overview) with its ring of halo samples.
 TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell,
                        const PinholeCamera& camera, const EllipsoidalHeights& heights,
                        double exaggeration) {
   const int n = dem.tile_size;
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
+  const bool overview = cell.level() < dem.level;
   const Tile<float> tile =
       assemble_halo(grid, cell, n, 1, [&](CellId c) -> std::optional<Tile<float>> {
-        const auto raw = store.get_tile(dem.name, c);
+        const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
         if (!raw) return std::nullopt;
         return to_tile<float>(*raw, nodata);
       });
-  const TileFrame frame(grid, cell, n);
-  const int side = n + 1;  // samples 0 .. n (n: the halo's)
+  const SamplePlaces places(grid, cell, n, camera.frame(), heights);
+  const int side = n + 2;  // samples -1 .. n (the halo's ring included)
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
+  auto slot = [&](int c, int r) { return size_t(r + 1) * size_t(side) + size_t(c + 1); };
   TerrainScene part;
-  for (int r = 0; r <= n; ++r)
-    for (int c = 0; c <= n; ++c) {
+  float lowest = INFINITY, highest = -INFINITY;
+  for (int r = -1; r <= n; ++r)
+    for (int c = -1; c <= n; ++c) {
       const float z = tile.at(c, r);
-      if (std::isnan(z) || !frame.known(c, r)) continue;
-      const LonLat p = frame.position(c, r);
-      const double h = heights(p, z) + (exaggeration - 1) * z;
-      const auto e = camera.frame().to_enu(p.lon, p.lat, h);
-      vertex[size_t(r) * size_t(side) + size_t(c)] = uint32_t(part.altitude.size());
-      part.mesh.positions.insert(part.mesh.positions.end(), e.begin(), e.end());
-      part.lonlat.insert(part.lonlat.end(), {p.lon, p.lat});
+      const SamplePlace& place = places.at(c, r);
+      if (std::isnan(z) || !place.known) continue;
+      lowest = std::min(lowest, z);
+      highest = std::max(highest, z);
+      // Heights of the datum run along the ellipsoid's normal: exaggerated above the datum.
+      const double h = exaggeration * z;
+      vertex[slot(c, r)] = uint32_t(part.altitude.size());
+      for (size_t k = 0; k < 3; ++k) part.mesh.positions.push_back(place.base[k] + h * place.up[k]);
+      part.lonlat.insert(part.lonlat.end(), {place.position.lon, place.position.lat});
       part.altitude.push_back(z);
     }
   auto at = [&](int c, int r) {
-    return c < 0 || r < 0 || c > n || r > n ? kNoVertex
-                                            : vertex[size_t(r) * size_t(side) + size_t(c)];
+    return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
   };
   // Normals: the cross product of the column and row differences, turned up.
   part.normals.resize(part.altitude.size() * 3);
-  for (int r = 0; r <= n; ++r)
-    for (int c = 0; c <= n; ++c) {
+  for (int r = -1; r <= n; ++r)
+    for (int c = -1; c <= n; ++c) {
       const uint32_t v = at(c, r);
       if (v == kNoVertex) continue;
       auto diff = [&](uint32_t a, uint32_t b) {
@@ -75,22 +82,142 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
         part.normals[3 * size_t(v) + size_t(k)] = float(nrm[size_t(k)] * s);
       if (len == 0) part.normals[3 * size_t(v) + 2] = 1;
     }
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) {
+  for (int r = -1; r < n; ++r)
+    for (int c = -1; c < n; ++c) {
       const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
       if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
       part.mesh.indices.insert(part.mesh.indices.end(), {a, b, e, a, e, d});
     }
+  // The skirt: a wall hanging from the halo's ring, deeper than the tile's relief plus a sample,
+  // so that where a neighbour is drawn at another level (its surface above or below this one
+  // near the seam) no ray passes between the two.
+  const double depth =
+      exaggeration * (double(highest - lowest) + grid.level_info(cell.level(), n).pixel_m);
+  auto hang = [&](uint32_t v) {
+    const auto base = uint32_t(part.altitude.size());
+    const LonLat p{part.lonlat[2 * size_t(v)], part.lonlat[2 * size_t(v) + 1]};
+    const float z = part.altitude[v];
+    const double h = heights(p, z) + (exaggeration - 1) * z - depth;
+    const auto e = camera.frame().to_enu(p.lon, p.lat, h);
+    part.mesh.positions.insert(part.mesh.positions.end(), e.begin(), e.end());
+    part.lonlat.insert(part.lonlat.end(), {p.lon, p.lat});
+    part.altitude.push_back(z);
+    for (int k = 0; k < 3; ++k) part.normals.push_back(part.normals[3 * size_t(v) + size_t(k)]);
+    return base;
+  };
+  std::vector<std::array<int, 2>> ring;  // the halo's ring, once round
+  for (int c = -1; c < n; ++c) ring.push_back({c, -1});
+  for (int r = -1; r < n; ++r) ring.push_back({n, r});
+  for (int c = n; c > -1; --c) ring.push_back({c, n});
+  for (int r = n; r > -1; --r) ring.push_back({-1, r});
+  std::vector<uint32_t> below(ring.size(), kNoVertex);
+  for (size_t k = 0; k < ring.size(); ++k)
+    if (const uint32_t v = at(ring[k][0], ring[k][1]); v != kNoVertex) below[k] = hang(v);
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const size_t next = (k + 1) % ring.size();
+    const uint32_t a = at(ring[k][0], ring[k][1]), b = at(ring[next][0], ring[next][1]);
+    if (a == kNoVertex || b == kNoVertex) continue;
+    part.mesh.indices.insert(part.mesh.indices.end(),
+                             {a, b, below[next], a, below[next], below[k]});
+  }
   return part;
+}
+
+// The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
+// the eye is above it. The cell's boundary is sampled at 4 points per edge.
+double horizontal_distance(const Grid& grid, const PinholeCamera& camera, CellId cell) {
+  std::vector<std::array<double, 2>> ring;
+  for (const LonLat& p : grid.boundary(cell, 4)) {
+    const auto e = camera.frame().to_enu(p.lon, p.lat, 0);
+    ring.push_back({e[0], e[1]});
+  }
+  bool inside = false;
+  double nearest = INFINITY;
+  for (size_t k = 0; k + 1 < ring.size(); ++k) {
+    const auto& a = ring[k];
+    const auto& b = ring[k + 1];
+    if ((a[1] > 0) != (b[1] > 0) && 0 < a[0] + (0 - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+      inside = !inside;
+    const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+    const double t = len2 == 0 ? 0 : std::clamp(-(a[0] * dx + a[1] * dy) / len2, 0.0, 1.0);
+    nearest = std::min(nearest, std::hypot(a[0] + t * dx, a[1] + t * dy));
+  }
+  return inside ? 0 : nearest;
+}
+
+// Heights (metres above the DEM's datum) no DEM on Earth goes beyond, and the geoid's separation
+// from the ellipsoid.
+constexpr double kLowest = -500, kHighest = 9000, kGeoid = 120;
+
+// Whether `cell`, widened by `margin` metres, between the lowest and highest heights, lies wholly
+// beyond one side of the picture or behind the eye. Its boundary is sampled at 8 points per edge
+// (the margin covers the chords).
+bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, double margin,
+                 double exaggeration) {
+  const double half_w = camera.spec().width / 2.0 / camera.focal(),
+               half_h = camera.spec().height / 2.0 / camera.focal();
+  // Signed distances (metres) beyond the planes through the eye and the picture's sides, and
+  // behind the eye: positive outside.
+  std::array<double, 5> inside{-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  for (const LonLat& p : grid.boundary(cell, 8))
+    for (const double h : {kLowest * exaggeration - kGeoid, kHighest * exaggeration + kGeoid}) {
+      const Vec3d v = camera.to_view(camera.frame().to_enu(p.lon, p.lat, h));
+      const double beyond[5] = {(-v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
+                                (v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
+                                (-v[1] - half_h * v[2]) / std::hypot(1.0, half_h),
+                                (v[1] - half_h * v[2]) / std::hypot(1.0, half_h), -v[2]};
+      for (size_t k = 0; k < 5; ++k) inside[k] = std::max(inside[k], -beyond[k]);
+    }
+  return std::any_of(inside.begin(), inside.end(), [&](double d) { return d < -margin; });
 }
 
 }  // namespace
 
+std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const LayerInfo& dem,
+                                const PinholeCamera& camera, double sample_pixels,
+                                double exaggeration, bool cull) {
+  const std::vector<CellId> tiles = store.tile_cells(dem.name);
+  if (!(sample_pixels > 0) || tiles.empty()) return tiles;
+  const std::vector<int> levels = store.stats(dem.name).levels;  // ascending, the base last
+  auto holds_tiles = [&](CellId c) {
+    const auto it = std::lower_bound(tiles.begin(), tiles.end(), c.range_min());
+    return it != tiles.end() && *it <= c.range_max();
+  };
+  std::vector<CellId> cells;
+  std::function<void(CellId)> visit = [&](CellId c) {
+    const int level = c.level();
+    const LevelInfo info = grid.level_info(level, dem.tile_size);
+    const double sample = info.pixel_m;
+    // The halo's ring and skirt reach a sample beyond the cell, its boundary's chords cut inside
+    // it, and the ground between its edges bulges above them (the earth's curvature).
+    const double margin =
+        2 * sample + info.cell_side_m / 16 + info.cell_side_m * info.cell_side_m / (4 * 6.3e6);
+    if (cull && out_of_view(grid, camera, c, margin, exaggeration)) return;
+    if (level == dem.level ||
+        (std::binary_search(levels.begin(), levels.end(), level) &&
+         sample * camera.focal() <= sample_pixels * horizontal_distance(grid, camera, c))) {
+      cells.push_back(c);
+      return;
+    }
+    for (int digit = 0; digit < 4; ++digit)
+      if (holds_tiles(c.child(digit))) visit(c.child(digit));
+  };
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    const CellId root = tiles[i].parent(levels.front());
+    if (i == 0 || tiles[i - 1].parent(levels.front()) != root) visit(root);
+  }
+  return cells;
+}
+
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
-                                 const PinholeCamera& camera, double exaggeration) {
+                                 const PinholeCamera& camera, double exaggeration,
+                                 double sample_pixels, bool cull) {
   if (!(exaggeration > 0))
     throw Error("vertical exaggeration " + std::to_string(exaggeration) + " must be positive");
-  const std::vector<CellId> cells = store.tile_cells(dem.name);
+  if (!(sample_pixels >= 0))
+    throw Error("--sample-pixels " + std::to_string(sample_pixels) + " must be 0 or more");
+  const std::vector<CellId> cells =
+      scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   const EllipsoidalHeights heights = ellipsoidal_heights(dem);
   std::vector<TerrainScene> parts(cells.size());
@@ -98,6 +225,7 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
     parts[i] = tile_part(store, grid, dem, cells[i], camera, heights, exaggeration);
   });
   TerrainScene scene;
+  scene.cells = cells;
   for (const TerrainScene& part : parts) {
     const auto base = uint32_t(scene.altitude.size());
     auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };

@@ -1,12 +1,15 @@
-// The terrain a panorama draws: a DEM layer's full-resolution tiles as one triangle mesh in a
-// camera's ENU frame. Each tile, padded with a one-pixel halo from its neighbours (core/halo.h,
-// across face seams too), gives a vertex at every sample centre (core/tile_frame.h: where the
-// sample really lies) and two triangles per square of four samples, always split along the same
-// diagonal; the halo's squares close the gaps between tiles, so neighbouring tiles share edges
-// and no square is drawn twice. Squares with a missing sample (nodata, no neighbour tile) are left
-// out. Heights go to the ellipsoid through the layer's vertical datum, exaggerated by a factor
-// above that datum. Tiles are built in parallel and joined in their cell order: the mesh is the
-// same whatever the threads.
+// The terrain a panorama draws: a DEM layer's tiles as one triangle mesh in a camera's ENU frame,
+// each cell at the level its distance needs (scene_cells). Each tile (full-resolution, or an
+// overview of a coarser level), padded with a one-pixel halo from its neighbours of the same level
+// (core/halo.h, across face seams too), gives a vertex at every sample centre, halo included
+// (core/tile_frame.h: where the sample really lies), and two triangles per square of four samples,
+// always split along the same diagonal. The halo's squares reach into the neighbours, so tiles of
+// one level share the squares along their seams (drawn twice, the same triangles), and a tile's
+// skirt, a wall hanging from its halo's ring deeper than the tile's relief plus a sample, closes
+// the cracks where a neighbour is drawn at another level. Squares with a missing sample (nodata,
+// no neighbour tile) are left out, and the skirt along them. Heights go to the ellipsoid through
+// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are built in
+// parallel and joined in their cell order: the mesh is the same whatever the threads.
 #pragma once
 
 #include <optional>
@@ -20,6 +23,7 @@
 namespace maquette {
 
 struct TerrainScene {
+  std::vector<CellId> cells;  // the tiles drawn (scene_cells)
   RenderMesh mesh;
   std::vector<double> lonlat;   // degrees, 2 per vertex
   std::vector<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
@@ -28,9 +32,25 @@ struct TerrainScene {
   std::vector<float> normals;
 };
 
-// `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0.
+// The cells whose tiles draw the DEM: from the coarsest level holding overviews down, a cell is
+// drawn at its level when that level holds tiles and one of its samples, at the cell's nearest
+// horizontal distance from the eye, is at most `sample_pixels` pixels wide on the picture (its
+// side times the focal length over the distance: a cell under the eye is never coarse);
+// otherwise its children holding tiles are looked at, down to the full-resolution tiles. With
+// `cull`, a cell wholly out of the view (beyond a side of the picture or behind the eye, with a
+// margin of two samples, 1/16 of its side and the earth's bulge over it, for any height from
+// -500 m to 9000 m times `exaggeration`) is left out with its children: the caller must not move
+// the vertices afterwards (a bend). With
+// `sample_pixels` 0 every full-resolution tile. Sorted by id within each root, roots ascending.
+std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const LayerInfo& dem,
+                                const PinholeCamera& camera, double sample_pixels,
+                                double exaggeration, bool cull);
+
+// `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
+// >= 0 and `cull` as scene_cells. Throws maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
-                                 const PinholeCamera& camera, double exaggeration);
+                                 const PinholeCamera& camera, double exaggeration,
+                                 double sample_pixels, bool cull);
 
 // The DEM's height at `p` converted to the ellipsoid (bilinear between samples); nullopt where
 // the layer has no data.

@@ -33,7 +33,7 @@ void run(const PanoramaOptions& o) {
           : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
   const auto store = Store::open(o.store, Store::Mode::ReadOnly);
-  write_panorama(render_panorama(*store, default_grid(), job), o.out);
+  render_panorama_files(*store, default_grid(), job, o.out);
   spdlog::info("wrote {} and its guides", o.out);
 }
 
@@ -86,6 +86,11 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--exaggeration", o->job.exaggeration, "Vertical exaggeration")
       ->capture_default_str();
+  cmd->add_option("--sample-pixels", o->job.sample_pixels,
+                  "The DEM's level by distance: far tiles from coarser levels whose samples are "
+                  "at most this many pixels wide on the picture (0: every tile at full "
+                  "resolution)")
+      ->capture_default_str();
   cmd->add_option("--bend-radius", o->job.bend.radius,
                   "Terrain Bender's progressive bending: the ground beyond --bend-start curves up "
                   "on a circle of this radius, metres (default: none)");
@@ -100,6 +105,11 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--shadows", o->job.shadows,
                 "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
+  cmd->add_option("--strip-rows", o->job.strip_rows,
+                  "Draw and write the picture in strips of this many rows, for big pictures in "
+                  "bounded memory (the same files whatever the strips; 0: strips of up to 16 M "
+                  "pixels)")
+      ->capture_default_str();
   add_threads_option(cmd, o->threads);
   cmd->callback([o] { run(*o); });
   add_render_fit_command(render);

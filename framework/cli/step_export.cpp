@@ -9,6 +9,7 @@
 #include "cli/export_jobs.h"
 #include "core/error.h"
 #include "core/json_file.h"
+#include "render/render_job.h"
 #include "runtime/task_operator.h"
 
 namespace maquette::cli {
@@ -30,7 +31,11 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"gpkg", {"*layer", "bbox", "cells"}},
         {"tiles3d", {"texture", "stretch", "draco", "bbox", "cells", "content", "levels"}},
         {"glb", {"texture", "stretch", "draco", "*cells", "content", "dem"}},
-        {"drc", {"*cells"}}};
+        {"drc", {"*cells"}},
+        {"panorama",
+         {"*dem", "texture", "stretch", "land_cover", "*camera", "above_ground", "heading", "pitch",
+          "look_at", "fov", "size", "exaggeration", "sample_pixels", "bend_radius", "bend_start",
+          "haze_distance", "sun", "strip_rows"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
       for (const std::string& option : terrain)
         if (!(f == std::string("glb") && option == "*dem")) o[f].push_back(option);
@@ -48,7 +53,8 @@ OperatorSpec export_spec() {
   s.name = "export";
   s.description =
       "Write layers out of the store, as `maquette export FORMAT`: GeoTIFF, PNG quicklook, "
-      "GeoJSON or GeoPackage features, 3D Tiles, GLB or Draco terrain";
+      "GeoJSON or GeoPackage features, 3D Tiles, GLB or Draco terrain, or a panorama (as "
+      "`maquette render panorama`)";
   s.kind = OperatorKind::Task;
   json formats = json::array();
   for (const auto& [format, options] : format_options()) formats.push_back(format);
@@ -76,8 +82,8 @@ OperatorSpec export_spec() {
         {"bands", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
         {"hillshade", typed("boolean", "png: multiply by a hillshade")},
         {"max_size", {{"type", "integer"}, {"minimum", 16}, {"maximum", 65536}}},
-        {"dem", typed("string", "tiles3d, glb, drc: the DEM layer")},
-        {"texture", typed("string", "tiles3d, glb: the imagery layer")},
+        {"dem", typed("string", "tiles3d, glb, drc, panorama: the DEM layer")},
+        {"texture", typed("string", "tiles3d, glb, panorama: the imagery layer")},
         {"decimation", {{"type", "integer"}, {"minimum", 1}}},
         {"position_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
         {"texcoord_bits", {{"type", "integer"}, {"minimum", 1}, {"maximum", 30}}},
@@ -87,7 +93,22 @@ OperatorSpec export_spec() {
         {"draco", typed("boolean", "false: plain GLB")},
         {"stretch", typed("boolean", "false: the texture as stored, not stretched 2-98 %")},
         {"content", array_schema("string", "tiles3d, glb: 3D content layers")},
-        {"levels", typed("string", "tiles3d: cell levels A..B")}}}};
+        {"levels", typed("string", "tiles3d: cell levels A..B")},
+        {"land_cover", typed("string", "panorama: categorical layer written as a guide")},
+        {"camera", array_schema("number", "panorama: the eye, LON LAT HEIGHT")},
+        {"above_ground", typed("boolean", "panorama: the camera's height is above the terrain")},
+        {"heading", typed("number", "panorama: degrees clockwise from north")},
+        {"pitch", typed("number", "panorama: degrees above the horizontal")},
+        {"look_at", array_schema("number", "panorama: aim at LON LAT HEIGHT")},
+        {"fov", typed("number", "panorama: horizontal field of view, degrees")},
+        {"size", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}}}}},
+        {"exaggeration", typed("number", "panorama: vertical exaggeration")},
+        {"sample_pixels", typed("number", "panorama: DEM samples at most this wide, pixels")},
+        {"bend_radius", typed("number", "panorama: progressive bending's radius, metres")},
+        {"bend_start", typed("number", "panorama: where the bending starts, metres")},
+        {"haze_distance", typed("number", "panorama: metres where haze hides 63 %")},
+        {"sun", array_schema("number", "panorama: hillshading's sun, AZIMUTH ALTITUDE")},
+        {"strip_rows", {{"type", "integer"}, {"minimum", 0}}}}}};
   return s;
 }
 
@@ -108,8 +129,16 @@ void check_format_options(const json& p) {
     if (!allowed.count(key))
       throw Error("params." + key + ": not an option of format " + format + " (it takes: " + list +
                   ")");
-  if (p.contains("range") && p.at("range").size() != 2)
-    throw Error("params.range: expected 2 numbers, got " + excerpt(p.at("range")));
+  for (const auto& [key, count] : {std::pair<const char*, size_t>{"range", 2},
+                                   {"camera", 3},
+                                   {"look_at", 3},
+                                   {"size", 2},
+                                   {"sun", 2}})
+    if (p.contains(key) && p.at(key).size() != count)
+      throw Error("params." + std::string(key) + ": expected " + std::to_string(count) +
+                  " numbers, got " + excerpt(p.at(key)));
+  if (p.contains("look_at") && (p.contains("heading") || p.contains("pitch")))
+    throw Error("params: give \"look_at\" or \"heading\" and \"pitch\", not both");
   if (p.contains("bbox") && p.contains("cells"))
     throw Error("params: give at most one of \"bbox\" and \"cells\"");
   if (p.contains("cells"))
@@ -144,6 +173,41 @@ TerrainSettings terrain_of(const json& p) {
   return t;
 }
 
+// The params of format panorama as `maquette render panorama`'s options (framework/cli
+// cmd_render.cpp).
+PanoramaJob panorama_of(const json& p) {
+  PanoramaJob job;
+  read_param(p, "dem", job.dem);
+  read_param(p, "texture", job.texture);
+  read_param(p, "stretch", job.stretch);
+  read_param(p, "land_cover", job.land_cover);
+  const auto camera = p.at("camera").get<std::vector<double>>();
+  job.camera.eye = {camera[0], camera[1], camera[2]};
+  read_param(p, "above_ground", job.above_ground);
+  read_param(p, "heading", job.camera.heading);
+  read_param(p, "pitch", job.camera.pitch);
+  if (p.contains("look_at")) {
+    const auto at = p.at("look_at").get<std::vector<double>>();
+    job.look_at = GeodeticPoint{at[0], at[1], at[2]};
+  }
+  read_param(p, "fov", job.camera.fov);
+  if (p.contains("size")) {
+    job.camera.width = p.at("size")[0].get<int>();
+    job.camera.height = p.at("size")[1].get<int>();
+  }
+  read_param(p, "exaggeration", job.exaggeration);
+  read_param(p, "sample_pixels", job.sample_pixels);
+  read_param(p, "bend_radius", job.bend.radius);
+  read_param(p, "bend_start", job.bend.start);
+  read_param(p, "haze_distance", job.haze_distance);
+  read_param(p, "strip_rows", job.strip_rows);
+  if (p.contains("sun")) {
+    job.sun_azimuth = p.at("sun")[0].get<double>();
+    job.sun_altitude = p.at("sun")[1].get<double>();
+  }
+  return job;
+}
+
 class ExportStep : public TaskOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
@@ -152,7 +216,7 @@ class ExportStep : public TaskOperator {
     const json& p = *ctx.params;
     check_format_options(p);
     TaskPlan plan;
-    for (const char* key : {"layer", "dem", "texture", "overlay"})
+    for (const char* key : {"layer", "dem", "texture", "overlay", "land_cover"})
       if (p.contains(key)) plan.reads.emplace_back(std::string("params.") + key, p.at(key));
     if (p.contains("content"))
       for (size_t i = 0; i < p.at("content").size(); ++i)
@@ -200,6 +264,9 @@ class ExportStep : public TaskOperator {
       job.spec.terrain = terrain_of(p);
       read_param(p, "content", job.spec.content);
       run_export(std::move(job));
+    } else if (format == "panorama") {
+      const auto store = Store::open(ctx.store_path, Store::Mode::ReadOnly);
+      render_panorama_files(*store, default_grid(), panorama_of(p), out);
     } else {
       MeshJob job{ctx.store_path, out, {}, terrain_of(p), {}};
       read_param(p, "cells", job.cells);

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -288,6 +289,198 @@ TEST(PanoramaCli, BentPanorama) {
   EXPECT_NE(slurp(bent), slurp(flat));
 }
 
+// The export step `panorama` through `maquette run`: the command's files, byte for byte, for the
+// same options (bent, aimed with look_at, land cover); bad params named.
+TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
+  const Fixture& f = fixture();
+  const std::string options =
+      "--look-at 10.15 45.15 700 --fov 40 --size 240 150 --exaggeration 1.5 --bend-radius 40000 "
+      "--bend-start 2000 --haze-distance 30000 --sun 200 30 --land-cover lc --no-stretch";
+  ASSERT_EQ(run_maquette(f.render(f.dir + "/cmd.png", options)).exit_code, 0);
+  auto pipeline = [&](const std::string& params) {
+    std::ofstream(f.dir + "/pipeline.json")
+        << R"({"store": "s.mqt", "region": {"bbox": [10, 45, 10.3, 45.3]}, "level": 9,
+              "steps": [{"op": "export", "params": {"format": "panorama", "out": "step/pano.png",
+              "dem": "dem", "camera": [10.15, 45.02, 1500], )"
+        << params << "}}]}";
+    return run_maquette("-q run " + f.dir + "/pipeline.json");
+  };
+  const auto r = pipeline(
+      R"("look_at": [10.15, 45.15, 700], "fov": 40, "size": [240, 150], "exaggeration": 1.5,
+         "bend_radius": 40000, "bend_start": 2000, "haze_distance": 30000, "sun": [200, 30],
+         "land_cover": "lc", "stretch": false)");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(f.dir + "/step/pano.png"), slurp(f.dir + "/cmd.png"));
+  EXPECT_EQ(slurp(f.dir + "/step/pano-guides.tif"), slurp(f.dir + "/cmd-guides.tif"));
+  EXPECT_EQ(slurp(f.dir + "/step/pano-silhouettes.png"), slurp(f.dir + "/cmd-silhouettes.png"));
+  EXPECT_GT(slurp(f.dir + "/cmd-guides.tif").size(), 1000u);
+
+  auto expect_error = [&](const std::string& params, const std::string& message) {
+    const auto bad = pipeline(params);
+    EXPECT_NE(bad.exit_code, 0) << params;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << params << "\n" << bad.err;
+  };
+  expect_error(R"("size": [240])", "params.size: expected 2 numbers");
+  expect_error(R"("look_at": [10.15, 45.15, 700], "pitch": -5)", "\"look_at\" or");
+  expect_error(R"("layer": "dem")", "params.layer: not an option of format panorama");
+  expect_error(R"("fov": 175)", "camera fov 175");
+}
+
+// Steep hills (800 m high, 700 m to 1 km apart) in 64-pixel tiles, so the level by distance
+// mixes levels within the view, and imagery (layer rgb) of stripes and a gradient.
+const std::string& hills_store() {
+  static const std::string store = [] {
+    const std::string dir = test::temp_dir(), tif = dir + "/hills.tif", path = dir + "/hills.mqt";
+    test::write_raster(tif, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
+                       [](int, double lon, double lat) {
+                         return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
+                                          std::cos(lat * 2 * std::numbers::pi / 0.007);
+                       });
+    const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
+                                "--vertical-datum ellipsoid " + tif);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    test::RasterSpec rgb = test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte");
+    rgb.bands = 3;
+    test::write_raster(dir + "/rgb.tif", rgb, [](int band, double lon, double lat) {
+      return band == 1 ? 60 + 40 * std::sin(lon * 3000) : band == 2 ? (lat - 45) * 600 : 90;
+    });
+    const auto t = run_maquette("-q ingest " + path + " --layer rgb --as imagery --tile-size 64 " +
+                                dir + "/rgb.tif");
+    EXPECT_EQ(t.exit_code, 0) << t.err;
+    return path;
+  }();
+  return store;
+}
+
+std::vector<uint8_t> picture(const std::string& path) {
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  EXPECT_TRUE(ds);
+  if (!ds) return {};
+  const int w = ds->GetRasterXSize(), h = ds->GetRasterYSize();
+  std::vector<uint8_t> rgb(size_t(w) * size_t(h) * 3);
+  EXPECT_EQ(ds->RasterIO(GF_Read, 0, 0, w, h, rgb.data(), w, h, GDT_Byte, 3, nullptr, 3, 3 * w, 1,
+                         nullptr),
+            CE_None);
+  return rgb;
+}
+
+// Each tile at the level its distance needs: fewer triangles, several levels, no hole (no sky
+// pixel below a terrain pixel in a column: the terrain is a height field seen from above) and
+// the picture close to the full-resolution one.
+TEST(PanoramaCli, LevelByDistance) {
+  GDALAllRegister();
+  const std::string dir = test::temp_dir();
+  auto render = [&](const std::string& name, double sample_pixels) {
+    const auto r = run_maquette(
+        "-v render panorama " + hills_store() + " " + dir + "/" + name +
+        ".png --dem dem --camera 10.15 45.02 2500 --heading 0 --pitch -3 --fov 50 --size 320 "
+        "200 --sample-pixels " +
+        std::to_string(sample_pixels));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const size_t at = r.err.find("panorama: tiles ");
+    EXPECT_NE(at, std::string::npos) << r.err;
+    return r.err.substr(at, r.err.find('\n', at) - at);  // "panorama: tiles ...; N triangles"
+  };
+  auto triangles = [](const std::string& log) {
+    const size_t end = log.rfind(" triangles");
+    return std::stol(log.substr(log.rfind(' ', end - 1) + 1));
+  };
+  const std::string full = render("full", 0);
+  EXPECT_NE(full.find("tiles 187 at level 12;"), std::string::npos) << full;
+  const std::vector<uint8_t> reference = picture(dir + "/full.png");
+  ASSERT_EQ(reference.size(), 320u * 200 * 3);
+  // Measured: 0.21 (1 px), 1.20 (2 px), 3.12 (4 px) of 255 per channel.
+  for (const auto& [sample_pixels, mean_limit] : {std::pair{1.0, 0.3}, {2.0, 1.5}, {4.0, 4.0}}) {
+    const std::string name = "lod" + std::to_string(int(sample_pixels));
+    const std::string log = render(name, sample_pixels);
+    EXPECT_NE(log.find("at level 11"), std::string::npos) << log;
+    EXPECT_LT(triangles(log), triangles(full)) << log;
+    const std::vector<uint8_t> rgb = picture(dir + "/" + name + ".png");
+    ASSERT_EQ(rgb.size(), reference.size());
+    double sum = 0;
+    for (size_t i = 0; i < rgb.size(); ++i) sum += std::abs(int(rgb[i]) - int(reference[i]));
+    EXPECT_LE(sum / double(rgb.size()), mean_limit) << name;
+    EXPECT_GT(sum, 0) << name;  // the levels did change the picture
+
+    std::unique_ptr<GDALDataset> guides(
+        GDALDataset::Open((dir + "/" + name + "-guides.tif").c_str(), GDAL_OF_RASTER));
+    ASSERT_TRUE(guides);
+    const auto distance = band(*guides, 2);
+    size_t holes = 0, terrain = 0;
+    for (int col = 0; col < 320; ++col) {
+      bool below_terrain = false;
+      for (int row = 0; row < 200; ++row) {
+        const bool sky = std::isnan(distance[size_t(row) * 320 + size_t(col)]);
+        holes += sky && below_terrain;
+        terrain += !sky;
+        below_terrain = below_terrain || !sky;
+      }
+    }
+    EXPECT_EQ(holes, 0u) << name;
+    EXPECT_GT(terrain, 320u * 100) << name;
+  }
+}
+
+// A picture drawn in strips of rows (a first pass for the display stretch, a row of margin for
+// the silhouettes) has the whole picture's pixels bit for bit: the PNGs byte for byte, the guides'
+// values, cast shadows included (their GeoTIFF blocks may be laid out in another order).
+// Tiles wholly out of the view are left out (with --sample-pixels > 0 and no bend) without
+// changing a pixel: a tiny --sample-pixels (every tile at full resolution, culled) against 0
+// (every tile).
+TEST(PanoramaCli, TilesOutOfViewLeftOutChangeNoPixel) {
+  const std::string dir = test::temp_dir();
+  auto render = [&](const std::string& name, const std::string& sample_pixels) {
+    const auto r = run_maquette("-v render panorama " + hills_store() + " " + dir + "/" + name +
+                                ".png --dem dem --texture rgb --camera 10.15 45.1 3000 --heading "
+                                "30 --pitch -10 --fov 40 --size 200 120 --sample-pixels " +
+                                sample_pixels);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.err;
+  };
+  EXPECT_NE(render("all", "0").find("tiles 187 at level 12;"), std::string::npos);
+  const std::string culled = render("culled", "1e-9");
+  const size_t at = culled.find("panorama: tiles ");
+  ASSERT_NE(at, std::string::npos) << culled;
+  EXPECT_LT(std::stoi(culled.substr(at + 16)), 120) << culled;  // tiles left, all at level 12
+  EXPECT_NE(culled.find(" at level 12;"), std::string::npos) << culled;
+  for (const char* file : {".png", "-guides.tif", "-silhouettes.png"})
+    EXPECT_EQ(slurp(dir + "/culled" + file), slurp(dir + "/all" + file)) << file;
+}
+
+TEST(PanoramaCli, StripsGiveTheWholePicture) {
+  GDALAllRegister();
+  const std::string dir = test::temp_dir();
+  auto render = [&](const std::string& name, const std::string& options) {
+    const auto r = run_maquette("-q render panorama " + hills_store() + " " + dir + "/" + name +
+                                ".png --dem dem --texture rgb --camera 10.15 45.02 2500 --heading "
+                                "10 --pitch -8 --fov 60 --size 300 170 --bend-radius 60000 "
+                                "--sample-pixels 3 --shadows --sun 200 25 " +
+                                options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  };
+  render("whole", "");
+  const std::string whole = slurp(dir + "/whole.png");
+  std::unique_ptr<GDALDataset> reference(
+      GDALDataset::Open((dir + "/whole-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(reference);
+  for (const char* rows : {"13", "64", "169"}) {
+    const std::string name = std::string("strips") + rows;
+    render(name, std::string("--strip-rows ") + rows + (rows[0] == '1' ? " -t 1" : ""));
+    EXPECT_EQ(slurp(dir + "/" + name + ".png"), whole) << rows;
+    EXPECT_EQ(slurp(dir + "/" + name + "-silhouettes.png"), slurp(dir + "/whole-silhouettes.png"))
+        << rows;
+    std::unique_ptr<GDALDataset> guides(
+        GDALDataset::Open((dir + "/" + name + "-guides.tif").c_str(), GDAL_OF_RASTER));
+    ASSERT_TRUE(guides);
+    for (int b = 1; b <= 5; ++b) {
+      const auto a = band(*guides, b), e = band(*reference, b);
+      EXPECT_EQ(std::memcmp(a.data(), e.data(), a.size() * sizeof(double)), 0) << rows << " " << b;
+    }
+  }
+  // The picture is textured and stretched: its colours are not all the plain earth's.
+  EXPECT_GT(whole.size(), 20000u);
+}
+
 TEST(PanoramaCli, BadInputIsNamed) {
   const Fixture& f = fixture();
   const std::string out = f.dir + "/bad.png";
@@ -308,6 +501,8 @@ TEST(PanoramaCli, BadInputIsNamed) {
   expect_error(f.render(out, "--fov 175"), "camera fov 175");
   expect_error(f.render(out, "--fov 0"), "out of range");
   expect_error(f.render(out, "--bend-radius -300"), "--bend-radius -300");
+  expect_error(f.render(out, "--sample-pixels -1"), "--sample-pixels -1");
+  expect_error(f.render(out, "--strip-rows -2"), "--strip-rows -2");
   expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
 }
 

@@ -1,0 +1,142 @@
+#include "render/panorama_strips.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/output_file.h"
+#include "gdal/image_file.h"
+#include "geotiff/gdal_util.h"
+
+namespace maquette {
+
+constexpr int kGuideBlockRows = 256;  // geotiff_creation_options' blocks
+constexpr double kStripPixels = 16e6;
+
+struct PanoramaWriter::Files {
+  std::string out, stem;
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb, silhouette;  // the whole picture's
+  bool land_cover = false, cast_shadow = false;
+  OutputFile guides_file;
+  GdalSession gdal;
+  DatasetPtr guides;
+  Files(const std::string& path, int w, int h)
+      : out(path),
+        stem((std::filesystem::path(path).parent_path() / std::filesystem::path(path).stem())
+                 .string()),
+        width(w),
+        height(h),
+        rgb(3 * size_t(w) * size_t(h)),
+        silhouette(size_t(w) * size_t(h)),
+        guides_file(stem + "-guides.tif", {".aux.xml"}) {}
+};
+
+namespace {
+
+// The guides written, in band order: the four always there, then those computed.
+std::vector<std::pair<const char*, const std::vector<double>*>> guide_bands(const Panorama* p,
+                                                                            bool land_cover,
+                                                                            bool cast_shadow) {
+  std::vector<std::pair<const char*, const std::vector<double>*>> bands = {
+      {"altitude", p ? &p->altitude : nullptr},
+      {"distance", p ? &p->distance : nullptr},
+      {"lon", p ? &p->lon : nullptr},
+      {"lat", p ? &p->lat : nullptr}};
+  if (land_cover) bands.emplace_back("land_cover", p ? &p->land_cover : nullptr);
+  if (cast_shadow) bands.emplace_back("cast_shadow", p ? &p->cast_shadow : nullptr);
+  return bands;
+}
+
+}  // namespace
+
+PanoramaWriter::PanoramaWriter(const std::string& out, int width, int height, bool land_cover,
+                               bool cast_shadow)
+    : files_(std::make_unique<Files>(out, width, height)) {
+  Files& f = *files_;
+  f.land_cover = land_cover;
+  f.cast_shadow = cast_shadow;
+  f.guides_file.write([&] {
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+    const auto bands = guide_bands(nullptr, land_cover, cast_shadow);
+    f.guides.reset(driver->Create(f.guides_file.temp_path().c_str(), width, height,
+                                  int(bands.size()), GDT_Float64,
+                                  geotiff_creation_options(true).List()));
+    if (!f.guides) gdal_error("cannot create " + f.guides_file.temp_path());
+    for (size_t b = 0; b < bands.size(); ++b) {
+      GDALRasterBand* band = f.guides->GetRasterBand(int(b) + 1);
+      band->SetDescription(bands[b].first);
+      band->SetNoDataValue(NAN);
+    }
+  });
+}
+
+PanoramaWriter::~PanoramaWriter() = default;
+
+void PanoramaWriter::write(const Panorama& strip, int first, int last) {
+  Files& f = *files_;
+  const size_t offset = size_t(first - strip.first_row) * size_t(f.width);
+  const size_t pixels = size_t(last - first) * size_t(f.width);
+  std::copy_n(strip.rgb.begin() + std::ptrdiff_t(3 * offset), 3 * pixels,
+              f.rgb.begin() + std::ptrdiff_t(3 * size_t(first) * size_t(f.width)));
+  std::copy_n(strip.silhouette.begin() + std::ptrdiff_t(offset), pixels,
+              f.silhouette.begin() + std::ptrdiff_t(size_t(first) * size_t(f.width)));
+  const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
+  f.guides_file.write([&] {
+    for (size_t b = 0; b < bands.size(); ++b)
+      if (f.guides->GetRasterBand(int(b) + 1)
+              ->RasterIO(GF_Write, 0, first, f.width, last - first,
+                         const_cast<double*>(bands[b].second->data() + offset), f.width,
+                         last - first, GDT_Float64, 0, 0) != CE_None)
+        gdal_error("cannot write " + f.guides_file.temp_path());
+  });
+}
+
+void PanoramaWriter::commit() {
+  Files& f = *files_;
+  f.guides.reset();  // flushes the last blocks
+  write_image(f.rgb, f.width, f.height, 3, {"PNG", {}}, f.out);
+  write_image(f.silhouette, f.width, f.height, 1, {"PNG", {}}, f.stem + "-silhouettes.png");
+  f.guides_file.commit();
+}
+
+void write_panorama(const Panorama& p, const std::string& out) {
+  PanoramaWriter writer(out, p.width, p.height, !p.land_cover.empty(), !p.cast_shadow.empty());
+  writer.write(p, 0, p.height);
+  writer.commit();
+}
+
+int default_strip_rows(int width) {
+  const int rows = int(kStripPixels / width) / kGuideBlockRows * kGuideBlockRows;
+  return std::max(rows, kGuideBlockRows);
+}
+
+void render_strips(const Store& store, const Grid& grid, const TerrainScene& scene,
+                   const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                   const std::string& out) {
+  const int w = camera.spec().width, h = camera.spec().height;
+  PanoramaWriter writer(out, w, h, look.land_cover != nullptr, look.shadow != nullptr);
+  if (strip_rows >= h) {
+    writer.write(shade_panorama(store, grid, scene, rasterize(scene.mesh, camera), camera, look), 0,
+                 h);
+    writer.commit();
+    return;
+  }
+  StretchTexels texels;
+  if (look.texture && look.stretch)
+    for (int first = 0; first < h; first += strip_rows)
+      gather_stretch_texels(store, grid, scene,
+                            rasterize(scene.mesh, camera, 1.0, first, strip_rows), look,
+                            stretch_step(w, h), texels);
+  const BandStretch stretch = texel_stretch(texels, look);
+  for (int first = 0; first < h; first += strip_rows) {
+    const int last = std::min(h, first + strip_rows);
+    // A row of margin each side: the silhouettes of the strip's edge rows look at their neighbours.
+    const int top = std::max(0, first - 1), bottom = std::min(h, last + 1);
+    const Fragments f = rasterize(scene.mesh, camera, 1.0, top, bottom - top);
+    writer.write(shade_panorama(store, grid, scene, f, camera, look, &stretch), first, last);
+  }
+  writer.commit();
+}
+
+}  // namespace maquette

@@ -1,0 +1,47 @@
+// Panoramas drawn and written in strips of rows, so a picture 16,000 pixels wide needs memory for
+// one strip's fragments and guides (about 80 bytes a pixel) plus 4 bytes a pixel of the whole
+// picture (its colours and silhouettes, kept until the PNGs are encoded), not 80 bytes a pixel of
+// the whole. Every strip is rasterized as the same rows of the whole picture (render/
+// rasterizer.h) with a row of margin above and below for the silhouettes, and shaded with the
+// whole picture's display stretch (a first pass over the strips gathers its texels): the files
+// hold the same pixels, bit for bit, whatever the strips.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "render/panorama.h"
+
+namespace maquette {
+
+// The panorama's files: OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF,
+// no georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
+// when computed; NaN on the sky) and stem + "-silhouettes.png" (8-bit), filled strip by strip. Each
+// file whole or not at all: nothing is in place before commit().
+class PanoramaWriter {
+ public:
+  PanoramaWriter(const std::string& out, int width, int height, bool land_cover, bool cast_shadow);
+  ~PanoramaWriter();
+  // Rows [first, last) of the picture, from `strip`, which holds them.
+  void write(const Panorama& strip, int first, int last);
+  // Encodes the PNGs and puts the three files in place.
+  void commit();
+
+ private:
+  struct Files;
+  std::unique_ptr<Files> files_;
+};
+
+// The whole panorama `p` written as PanoramaWriter does.
+void write_panorama(const Panorama& p, const std::string& out);
+
+// Rows per strip when none is asked for: strips of at most 16 M pixels, a multiple of the guides'
+// 256-row blocks.
+int default_strip_rows(int width);
+
+// Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0).
+void render_strips(const Store& store, const Grid& grid, const TerrainScene& scene,
+                   const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                   const std::string& out);
+
+}  // namespace maquette
