@@ -1,0 +1,165 @@
+#include "assess_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "nearest_patches.h"
+
+namespace maquette::synthesis {
+namespace {
+
+constexpr int kPatchFloats = kCoherenceSide * kCoherenceSide * 3;
+
+// The 5 x 5 RGB patch centred on (x, y) of a width-wide image, appended to `out`; false (and
+// nothing appended) when it leaves the image or has an unknown colour.
+bool append_patch(const std::vector<float>& rgb, int width, int height, int x, int y,
+                  std::vector<float>& out) {
+  if (x < kCoherenceRadius || y < kCoherenceRadius || x + kCoherenceRadius >= width ||
+      y + kCoherenceRadius >= height)
+    return false;
+  const size_t start = out.size();
+  for (int dy = -kCoherenceRadius; dy <= kCoherenceRadius; ++dy)
+    for (int dx = -kCoherenceRadius; dx <= kCoherenceRadius; ++dx)
+      for (int k = 0; k < 3; ++k) {
+        const float v = rgb[(size_t(y + dy) * size_t(width) + size_t(x + dx)) * 3 + size_t(k)];
+        if (std::isnan(v)) {
+          out.resize(start);
+          return false;
+        }
+        out.push_back(v);
+      }
+  return true;
+}
+
+double ssd(const std::vector<float>& points, int32_t a, int32_t b) {
+  double d = 0;
+  for (int i = 0; i < kPatchFloats; ++i) {
+    const double x = double(points[size_t(a) * kPatchFloats + size_t(i)]) -
+                     double(points[size_t(b) * kPatchFloats + size_t(i)]);
+    d += x * x;
+  }
+  return d;
+}
+
+// Sum and count of the nearest exemplar patch's SSD over the counted pixels on the step grid.
+void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelRect& counted,
+                     int step, Tally& t) {
+  std::vector<float> points;
+  std::vector<int32_t> candidates, queries;
+  for (int y = 0; y < e.height; ++y)
+    for (int x = 0; x < e.width; ++x)
+      if (!e.excluded[size_t(y) * size_t(e.width) + size_t(x)] &&
+          append_patch(e.rgb, e.width, e.height, x, y, points))
+        candidates.push_back(int32_t(candidates.size()));
+  const auto w = int(image.rect.width), h = int(image.rect.height);
+  for (int64_t row = counted.row0; row < counted.row0 + counted.height; ++row)
+    for (int64_t col = counted.col0; col < counted.col0 + counted.width; ++col)
+      if (col % step == 0 && row % step == 0 &&
+          append_patch(image.rgb, w, h, int(col - image.rect.col0), int(row - image.rect.row0),
+                       points))
+        queries.push_back(int32_t(candidates.size() + queries.size()));
+  if (candidates.empty() || queries.empty()) return;
+  const std::vector<int32_t> nearest = nearest_patches(points, kPatchFloats, candidates, queries, 1,
+                                                       [](int32_t, int32_t) { return true; });
+  for (size_t q = 0; q < queries.size(); ++q)
+    t.coherence_sum += ssd(points, queries[q], nearest[q]);
+  t.coherence_patches += queries.size();
+}
+
+}  // namespace
+
+int histogram_bin(float r, float g, float b) {
+  const auto level = [](float v) { return std::clamp(int(std::lround(v)), 0, 255) / 32; };
+  return (level(r) * 8 + level(g)) * 8 + level(b);
+}
+
+void Tally::merge(const Tally& o) {
+  pixels += o.pixels;
+  labelled += o.labelled;
+  label_matches += o.label_matches;
+  excluded += o.excluded;
+  coherence_sum += o.coherence_sum;
+  coherence_patches += o.coherence_patches;
+  altitude_sum += o.altitude_sum;
+  altitude_pixels += o.altitude_pixels;
+  for (const auto& [pixel, n] : o.uses) uses[pixel] += n;
+  for (const auto& [label, counts] : o.histograms) {
+    auto& mine = histograms[label];
+    mine.resize(kHistogramBins, 0);
+    for (int i = 0; i < kHistogramBins; ++i) mine[size_t(i)] += counts[size_t(i)];
+  }
+}
+
+Tally tally(const Exemplar& e, const AssessedImage& image, const PixelRect& counted,
+            int coherence_step) {
+  Tally t;
+  const auto w = size_t(image.rect.width);
+  for (int64_t row = counted.row0; row < counted.row0 + counted.height; ++row)
+    for (int64_t col = counted.col0; col < counted.col0 + counted.width; ++col) {
+      const size_t i = size_t(row - image.rect.row0) * w + size_t(col - image.rect.col0);
+      const int32_t s = image.source[i];
+      const uint8_t label = image.labels[i];
+      const float* c = &image.rgb[3 * i];
+      if (label != kUnknownLabel && !std::isnan(c[0] + c[1] + c[2])) {
+        auto& h = t.histograms[label];
+        h.resize(kHistogramBins, 0);
+        ++h[size_t(histogram_bin(c[0], c[1], c[2]))];
+      }
+      if (s < 0) continue;
+      ++t.pixels;
+      ++t.uses[s];
+      t.excluded += e.excluded[size_t(s)] != 0;
+      if (label != kUnknownLabel) {
+        ++t.labelled;
+        t.label_matches += e.labels[size_t(s)] == label;
+      }
+      if (!image.altitude.empty() && !e.altitude.empty() && !std::isnan(image.altitude[i])) {
+        t.altitude_sum += std::abs(double(image.altitude[i]) - double(e.altitude[size_t(s)]));
+        ++t.altitude_pixels;
+      }
+    }
+  tally_coherence(e, image, counted, coherence_step, t);
+  return t;
+}
+
+std::vector<uint64_t> exemplar_histogram(const Exemplar& e, uint8_t label) {
+  std::vector<uint64_t> h(kHistogramBins, 0);
+  for (size_t i = 0; i < e.labels.size(); ++i)
+    if (e.labels[i] == label && !e.excluded[i])
+      ++h[size_t(histogram_bin(e.rgb[3 * i], e.rgb[3 * i + 1], e.rgb[3 * i + 2]))];
+  return h;
+}
+
+double total_variation(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b) {
+  uint64_t na = 0, nb = 0;
+  for (const uint64_t n : a) na += n;
+  for (const uint64_t n : b) nb += n;
+  if (na == 0 || nb == 0) return 1;
+  double d = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+    d += std::abs(double(a[i]) / double(na) - double(b[i]) / double(nb));
+  return d / 2;
+}
+
+Metrics metrics(const Exemplar& e, const Tally& t) {
+  Metrics m;
+  m.pixels = t.pixels;
+  m.label_consistency = t.labelled ? double(t.label_matches) / double(t.labelled) : 1.0;
+  m.excluded_pixels = t.excluded;
+  m.coherence = t.coherence_patches ? t.coherence_sum / double(t.coherence_patches) : 0.0;
+  uint64_t most = 0;
+  for (const auto& [pixel, n] : t.uses) most = std::max(most, n);
+  if (t.pixels) {
+    m.distinct_source_fraction = double(t.uses.size()) / double(t.pixels);
+    m.max_source_share = double(most) / double(t.pixels);
+  }
+  for (const auto& [label, counts] : t.histograms) {
+    const double d = total_variation(counts, exemplar_histogram(e, label));
+    m.histogram_distance[label] = d;
+    m.worst_histogram_distance = std::max(m.worst_histogram_distance, d);
+  }
+  m.altitude_mismatch = t.altitude_pixels ? t.altitude_sum / double(t.altitude_pixels) : 0.0;
+  return m;
+}
+
+}  // namespace maquette::synthesis
