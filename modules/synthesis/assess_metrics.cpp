@@ -1,5 +1,6 @@
 #include "assess_metrics.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -41,6 +42,39 @@ double ssd(const std::vector<float>& points, int32_t a, int32_t b) {
   return d;
 }
 
+// The points turned onto the principal axes of the first `n` (the exemplar's patches), largest
+// variance first: a rotation keeps every distance, and the k-d tree then splits along the few
+// axes that matter instead of 75 near-equal raw ones (many times fewer patches visited).
+std::vector<float> principal_axes(const std::vector<float>& points, size_t n) {
+  using Matrix = Eigen::Matrix<double, kPatchFloats, kPatchFloats>;
+  using Vector = Eigen::Matrix<double, kPatchFloats, 1>;
+  Vector mean = Vector::Zero();
+  for (size_t i = 0; i < n; ++i)
+    mean += Eigen::Map<const Eigen::Matrix<float, kPatchFloats, 1>>(&points[i * kPatchFloats])
+                .cast<double>();
+  mean /= double(n);
+  Matrix scatter = Matrix::Zero();
+  for (size_t i = 0; i < n; ++i) {
+    const Vector v =
+        Eigen::Map<const Eigen::Matrix<float, kPatchFloats, 1>>(&points[i * kPatchFloats])
+            .cast<double>() -
+        mean;
+    scatter.selfadjointView<Eigen::Lower>().rankUpdate(v);
+  }
+  const Matrix covariance = scatter.selfadjointView<Eigen::Lower>();
+  const Eigen::SelfAdjointEigenSolver<Matrix> solver(covariance);
+  // Eigenvalues ascending: reversed, the largest first.
+  const Eigen::Matrix<float, kPatchFloats, kPatchFloats> axes =
+      solver.eigenvectors().rowwise().reverse().transpose().cast<float>();
+  std::vector<float> out(points.size());
+  using Patch = Eigen::Matrix<float, kPatchFloats, 1>;
+  for (size_t i = 0; i < points.size() / kPatchFloats; ++i) {
+    Eigen::Map<Patch> turned(&out[i * kPatchFloats]);
+    turned = axes * Eigen::Map<const Patch>(&points[i * kPatchFloats]);
+  }
+  return out;
+}
+
 // Sum and count of the nearest exemplar patch's SSD over the counted pixels on the step grid.
 void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelRect& counted,
                      int step, Tally& t) {
@@ -59,8 +93,10 @@ void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelR
                        points))
         queries.push_back(int32_t(candidates.size() + queries.size()));
   if (candidates.empty() || queries.empty()) return;
-  const std::vector<int32_t> nearest = nearest_patches(points, kPatchFloats, candidates, queries, 1,
-                                                       [](int32_t, int32_t) { return true; });
+  const std::vector<int32_t> nearest =
+      nearest_patches(principal_axes(points, candidates.size()), kPatchFloats, candidates, queries,
+                      1, [](int32_t, int32_t) { return true; });
+  // The SSD itself from the colours (the rotation's float rounding left out).
   for (size_t q = 0; q < queries.size(); ++q)
     t.coherence_sum += ssd(points, queries[q], nearest[q]);
   t.coherence_patches += queries.size();

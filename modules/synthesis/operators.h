@@ -8,5 +8,6 @@
 namespace maquette::synthesis {
 
 std::unique_ptr<Operator> make_transfer();
+std::unique_ptr<Operator> make_assess();
 
 }  // namespace maquette::synthesis

@@ -8,6 +8,7 @@
 #include "runtime/input_halo.h"
 #include "synthesis.h"
 #include "transfer_exemplar.h"
+#include "transfer_params.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -32,85 +33,18 @@ OperatorSpec transfer_spec() {
   const auto weight = [](double fallback) {
     return json{{"type", "number"}, {"minimum", 0}, {"default", fallback}};
   };
-  s.params_schema = {
-      {"type", "object"},
-      {"additionalProperties", false},
-      {"required", {"painting", "landcover_classes"}},
-      {"properties",
-       {{"painting",
-         {{"type", "string"},
-          {"description", "the painting (8-bit image; relative to the working directory)"}}},
-        {"labels",
-         {{"type", "string"},
-          {"description",
-           "hand-drawn class image (one 8-bit band, the painting's size, classes 0..254); else "
-           "classes by colour"}}},
-        {"classes",
-         {{"type", "integer"},
-          {"minimum", 1},
-          {"maximum", 254},
-          {"default", 6},
-          {"description", "k of the automatic segmentation by colour (k-means in CIELAB)"}}},
-        {"exclusion",
-         {{"type", "string"},
-          {"description", "mask of the painting never copied (non-zero: excluded)"}}},
-        {"exclude_classes",
-         {{"type", "array"},
-          {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
-          {"default", json::array()},
-          {"description", "painting classes never copied (sky, frame)"}}},
-        {"landcover_classes",
-         {{"type", "object"},
-          {"description",
-           "target land-cover value (a string key) -> painting class; other values match any "
-           "class"}}},
-        {"altitude_range",
-         {{"type", "array"},
-          {"items", {{"type", "number"}}},
-          {"description", "[low, high] metres of the DEM mapped to altitude 0..1"}}},
-        {"painting_altitude",
-         {{"type", "string"},
-          {"description",
-           "the painting's altitude: a grey image (its size), or \"rows\" (high at the top)"}}},
-        {"exemplar_scale",
-         {{"type", "integer"},
-          {"enum", {1, 2, 4, 8}},
-          {"default", 2},
-          {"description", "painting pixels per exemplar pixel (a side): coarser strokes, faster"}}},
-        {"k",
-         {{"type", "integer"},
-          {"minimum", 1},
-          {"maximum", 8},
-          {"default", 2},
-          {"description", "k-coherence candidates per neighbour"}}},
-        {"w_label", weight(2.0)},
-        {"w_altitude", weight(1.0)},
-        {"w_repetition", weight(0.3)},
-        {"coherence", weight(0.5)},
-        {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
-        {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}}}};
+  s.params_schema = {{"type", "object"},
+                     {"additionalProperties", false},
+                     {"required", {"painting", "landcover_classes"}},
+                     {"properties", exemplar_params_schema()}};
+  s.params_schema["properties"].update(
+      {{"w_label", weight(2.0)},
+       {"w_altitude", weight(1.0)},
+       {"w_repetition", weight(0.3)},
+       {"coherence", weight(0.5)},
+       {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
+       {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}});
   return s;
-}
-
-// Target class value -> painting class.
-std::map<int, uint8_t> class_table(const json& table, const std::string& op) {
-  std::map<int, uint8_t> out;
-  for (const auto& [key, value] : table.items()) {
-    int target = 0;
-    size_t used = 0;
-    try {
-      target = std::stoi(key, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != key.size() || key.empty())
-      throw Error(op + ".landcover_classes: key '" + key + "' is not an integer class value");
-    if (!value.is_number_integer() || value.get<int>() < 0 || value.get<int>() >= kUnknownLabel)
-      throw Error(op + ".landcover_classes." + key + ": " + value.dump() +
-                  " is not a painting class 0..254");
-    out[target] = uint8_t(value.get<int>());
-  }
-  return out;
 }
 
 class Transfer : public CellOperator {
@@ -130,23 +64,17 @@ class Transfer : public CellOperator {
     guides.shift = ctx.refine;
     guides.labels.resize(size_t(side) * size_t(side));
     for (int r = 0; r < side; ++r)
-      for (int c = 0; c < side; ++c) {
-        const float v = landcover.at(c - halo, r - halo);
-        const auto it = std::isnan(v) ? table.end() : table.find(int(std::lround(v)));
+      for (int c = 0; c < side; ++c)
         guides.labels[size_t(r) * size_t(side) + size_t(c)] =
-            it == table.end() ? kUnknownLabel : it->second;
-      }
-    if (params.contains("altitude_range") && data.inputs.count("dem")) {
-      const auto range = params.at("altitude_range").get<std::vector<double>>();
-      if (range.size() != 2 || !(range[1] > range[0]))
-        throw Error(spec_.name + ".altitude_range: expected [low, high] with high > low, got " +
-                    params.at("altitude_range").dump());
+            painting_class(table, landcover.at(c - halo, r - halo));
+    const auto range = altitude_range(params, spec_.name);
+    if (range && data.inputs.count("dem")) {
       const Tile<float>& dem = input_with_halo(spec_.name, ctx, data, "dem", spec_.halo);
       guides.altitude.resize(guides.labels.size());
       for (int r = 0; r < side; ++r)
         for (int c = 0; c < side; ++c)
-          guides.altitude[size_t(r) * size_t(side) + size_t(c)] = float(std::clamp(
-              (double(dem.at(c - halo, r - halo)) - range[0]) / (range[1] - range[0]), 0.0, 1.0));
+          guides.altitude[size_t(r) * size_t(side) + size_t(c)] =
+              altitude_guide(dem.at(c - halo, r - halo), *range);
     }
 
     SynthesisParams sp;

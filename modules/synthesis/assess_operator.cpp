@@ -1,0 +1,192 @@
+// synthesis.assess (reduce): issue 18's measures (assess_metrics.h) of a synthesis.transfer's
+// colours and source coordinates against its exemplar (the same params) and the target's land
+// cover and altitude. Each cell tallies its pixels (coherence reads kCoherenceRadius pixels of
+// halo), the tallies are summed, and the report is a JSON artifact and a table on stdout.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "assess_metrics.h"
+#include "core/error.h"
+#include "operators.h"
+#include "runtime/input_halo.h"
+#include "runtime/params_schema.h"
+#include "transfer_exemplar.h"
+#include "transfer_params.h"
+
+namespace maquette::synthesis {
+namespace {
+
+constexpr const char* kOp = "synthesis.assess";
+
+OperatorSpec assess_spec() {
+  OperatorSpec s;
+  s.name = kOp;
+  s.description =
+      "Measures a synthesis.transfer (issue 18): label consistency, sources in the exclusion "
+      "mask, 5 x 5 patch coherence, distinct sources, most used source, per-label colour "
+      "histogram distance, altitude mismatch";
+  s.kind = OperatorKind::Reduce;
+  s.inputs = {{"rgb", "the transfer's colours", false},
+              {"source", "the transfer's painting pixel (column, row) per output pixel", false},
+              {"landcover", "the target land cover the transfer was given", false},
+              {"dem", "the transfer's altitude guide (with altitude_range)", true}};
+  s.outputs = {{"report", "the measures (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
+  s.halo = kCoherenceRadius;
+  s.params_schema = {{"type", "object"},
+                     {"additionalProperties", false},
+                     {"required", {"painting", "landcover_classes"}},
+                     {"properties", exemplar_params_schema()}};
+  s.params_schema["properties"]["coherence_step"] =
+      integer_param(1, 64, 1,
+                    "coherence measured at output pixels whose global column and row are "
+                    "multiples of it (a sample; 1: every pixel)");
+  return s;
+}
+
+// The transfer's exemplar as its output copies it: colours rounded to the 8-bit values it
+// writes.
+Exemplar copied_exemplar(const TransferExemplar& t) {
+  const ExemplarLevel& l = t.pyramid.levels[0];
+  Exemplar e{l.width, l.height, l.rgb, l.labels, l.altitude, l.excluded};
+  for (float& v : e.rgb) v = std::round(v * 255.0f);
+  return e;
+}
+
+json to_json(const Tally& t) {
+  json uses = json::array(), histograms = json::object();
+  for (const auto& [pixel, n] : t.uses) uses.push_back({pixel, n});
+  for (const auto& [label, counts] : t.histograms) histograms[std::to_string(label)] = counts;
+  return {{"pixels", t.pixels},
+          {"labelled", t.labelled},
+          {"label_matches", t.label_matches},
+          {"excluded", t.excluded},
+          {"coherence_sum", t.coherence_sum},
+          {"coherence_patches", t.coherence_patches},
+          {"altitude_sum", t.altitude_sum},
+          {"altitude_pixels", t.altitude_pixels},
+          {"uses", uses},
+          {"histograms", histograms}};
+}
+
+Tally from_json(const json& j) {
+  Tally t;
+  t.pixels = j.at("pixels");
+  t.labelled = j.at("labelled");
+  t.label_matches = j.at("label_matches");
+  t.excluded = j.at("excluded");
+  t.coherence_sum = j.at("coherence_sum");
+  t.coherence_patches = j.at("coherence_patches");
+  t.altitude_sum = j.at("altitude_sum");
+  t.altitude_pixels = j.at("altitude_pixels");
+  for (const auto& u : j.at("uses")) t.uses[u.at(0).get<int32_t>()] = u.at(1).get<uint64_t>();
+  for (const auto& [label, counts] : j.at("histograms").items())
+    t.histograms[uint8_t(std::stoi(label))] = counts.get<std::vector<uint64_t>>();
+  return t;
+}
+
+class Assess : public ReduceOperator {
+ public:
+  const OperatorSpec& spec() const override { return spec_; }
+
+  json map(const CellContext& ctx, const CellData& data) const override {
+    const json& params = *ctx.params;
+    const auto table = class_table(params.at("landcover_classes"), kOp);
+    const auto range = altitude_range(params, kOp);
+    const auto exemplar = transfer_exemplar(params);
+    const Exemplar e = copied_exemplar(*exemplar);
+    const Tile<float>& rgb = input_with_halo(kOp, ctx, data, "rgb", spec_.halo);
+    const Tile<float>& source = input_with_halo(kOp, ctx, data, "source", spec_.halo);
+    const Tile<float>& landcover = input_with_halo(kOp, ctx, data, "landcover", spec_.halo);
+    const Tile<float>* dem = range && data.inputs.count("dem")
+                                 ? &input_with_halo(kOp, ctx, data, "dem", spec_.halo)
+                                 : nullptr;
+    const int n = ctx.tile_size, h = spec_.halo, side = n + 2 * h;
+    AssessedImage image;
+    image.rect = {global_col(ctx.cell, n, -h), global_row(ctx.cell, n, -h), side, side};
+    image.rgb.reserve(size_t(side) * size_t(side) * 3);
+    for (int r = -h; r < n + h; ++r)
+      for (int c = -h; c < n + h; ++c) {
+        const float x = source.at(c, r, 0), y = source.at(c, r, 1);
+        int32_t s = -1;
+        if (!std::isnan(x) && !std::isnan(y)) {
+          const int ex = int(x) / exemplar->scale, ey = int(y) / exemplar->scale;
+          if (ex < 0 || ey < 0 || ex >= e.width || ey >= e.height) {
+            std::ostringstream what;
+            what << kOp << ": inputs.source of cell " << ctx.cell.ToText() << ": (" << x << ", "
+                 << y << ") lies outside the painting's exemplar pixels ("
+                 << e.width * exemplar->scale << " x " << e.height * exemplar->scale << ")";
+            throw Error(what.str());
+          }
+          s = ey * e.width + ex;
+        }
+        image.source.push_back(s);
+        // The 8-bit rgb layer's nodata is 0: where a source was written, a missing sample is
+        // a channel of value 0, not a hole.
+        for (int k = 0; k < 3; ++k) {
+          const float v = rgb.at(c, r, k);
+          image.rgb.push_back(std::isnan(v) && s >= 0 ? 0.0f : v);
+        }
+        image.labels.push_back(painting_class(table, landcover.at(c, r)));
+        if (dem) image.altitude.push_back(altitude_guide(dem->at(c, r), *range));
+      }
+    const PixelRect counted{global_col(ctx.cell, n, 0), global_row(ctx.cell, n, 0), n, n};
+    const Tally t = tally(e, image, counted, params.at("coherence_step").get<int>());
+    if (t.pixels == 0 && t.histograms.empty() && t.coherence_patches == 0) return nullptr;
+    return to_json(t);
+  }
+
+  json merge(const json& a, const json& b) const override {
+    if (a.is_null()) return b;
+    if (b.is_null()) return a;
+    Tally t = from_json(a);
+    t.merge(from_json(b));
+    return to_json(t);
+  }
+
+  Artifact finish(const json& merged, const StepContext& ctx) const override {
+    if (merged.is_null() || merged.at("pixels").get<uint64_t>() == 0)
+      throw Error(std::string(kOp) +
+                  ": no output pixel with a source in the region (inputs.source)");
+    const Tally t = from_json(merged);
+    const Exemplar e = copied_exemplar(*transfer_exemplar(*ctx.params));
+    const Metrics m = metrics(e, t);
+    const auto usable = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
+    json distances = json::object();
+    for (const auto& [label, d] : m.histogram_distance) distances[std::to_string(label)] = d;
+    const json report = {
+        {"pixels", m.pixels},
+        {"label_consistency", m.label_consistency},
+        {"excluded_pixels", m.excluded_pixels},
+        {"coherence", m.coherence},
+        {"coherence_patches", t.coherence_patches},
+        {"distinct_source_fraction", m.distinct_source_fraction},
+        // The fraction cannot exceed the exemplar's usable pixels over the output's.
+        {"distinct_source_bound", std::min(1.0, double(usable) / double(m.pixels))},
+        {"usable_exemplar_pixels", usable},
+        {"max_source_share", m.max_source_share},
+        {"histogram_distance", distances},
+        {"worst_histogram_distance", m.worst_histogram_distance},
+        {"altitude_mismatch", m.altitude_mismatch}};
+    std::ostringstream table;
+    for (const auto& [key, value] : report.items())
+      if (!value.is_object()) table << key << '\t' << value.dump() << '\n';
+    for (const auto& [label, d] : distances.items())
+      table << "histogram_distance[" << label << "]\t" << d.dump() << '\n';
+    std::cout << table.str() << std::flush;
+    return Artifact::FromText("report", report.dump(1),
+                              {{"label_consistency", m.label_consistency},
+                               {"coherence", m.coherence},
+                               {"distinct_source_fraction", m.distinct_source_fraction}});
+  }
+
+ private:
+  OperatorSpec spec_ = assess_spec();
+};
+
+}  // namespace
+
+std::unique_ptr<Operator> make_assess() { return std::make_unique<Assess>(); }
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,101 @@
+#include "transfer_params.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "exemplar.h"
+
+namespace maquette::synthesis {
+
+nlohmann::json exemplar_params_schema() {
+  using json = nlohmann::json;
+  return {
+      {"painting",
+       {{"type", "string"},
+        {"description", "the painting (8-bit image; relative to the working directory)"}}},
+      {"labels",
+       {{"type", "string"},
+        {"description",
+         "hand-drawn class image (one 8-bit band, the painting's size, classes 0..254); else "
+         "classes by colour"}}},
+      {"classes",
+       {{"type", "integer"},
+        {"minimum", 1},
+        {"maximum", 254},
+        {"default", 6},
+        {"description", "k of the automatic segmentation by colour (k-means in CIELAB)"}}},
+      {"exclusion",
+       {{"type", "string"},
+        {"description", "mask of the painting never copied (non-zero: excluded)"}}},
+      {"exclude_classes",
+       {{"type", "array"},
+        {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
+        {"default", json::array()},
+        {"description", "painting classes never copied (sky, frame)"}}},
+      {"landcover_classes",
+       {{"type", "object"},
+        {"description",
+         "target land-cover value (a string key) -> painting class; other values match any "
+         "class"}}},
+      {"altitude_range",
+       {{"type", "array"},
+        {"items", {{"type", "number"}}},
+        {"description", "[low, high] metres of the DEM mapped to altitude 0..1"}}},
+      {"painting_altitude",
+       {{"type", "string"},
+        {"description",
+         "the painting's altitude: a grey image (its size), or \"rows\" (high at the top)"}}},
+      {"exemplar_scale",
+       {{"type", "integer"},
+        {"enum", {1, 2, 4, 8}},
+        {"default", 2},
+        {"description", "painting pixels per exemplar pixel (a side): coarser strokes, faster"}}},
+      {"k",
+       {{"type", "integer"},
+        {"minimum", 1},
+        {"maximum", 8},
+        {"default", 2},
+        {"description", "k-coherence candidates per neighbour"}}}};
+}
+
+std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op) {
+  std::map<int, uint8_t> out;
+  for (const auto& [key, value] : table.items()) {
+    int target = 0;
+    size_t used = 0;
+    try {
+      target = std::stoi(key, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != key.size() || key.empty())
+      throw Error(op + ".landcover_classes: key '" + key + "' is not an integer class value");
+    if (!value.is_number_integer() || value.get<int>() < 0 || value.get<int>() >= kUnknownLabel)
+      throw Error(op + ".landcover_classes." + key + ": " + value.dump() +
+                  " is not a painting class 0..254");
+    out[target] = uint8_t(value.get<int>());
+  }
+  return out;
+}
+
+uint8_t painting_class(const std::map<int, uint8_t>& table, float value) {
+  const auto it = std::isnan(value) ? table.end() : table.find(int(std::lround(value)));
+  return it == table.end() ? kUnknownLabel : it->second;
+}
+
+std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
+                                                    const std::string& op) {
+  if (!params.contains("altitude_range")) return std::nullopt;
+  const auto range = params.at("altitude_range").get<std::vector<double>>();
+  if (range.size() != 2 || !(range[1] > range[0]))
+    throw Error(op + ".altitude_range: expected [low, high] with high > low, got " +
+                params.at("altitude_range").dump());
+  return std::array<double, 2>{range[0], range[1]};
+}
+
+float altitude_guide(float metres, const std::array<double, 2>& range) {
+  return float(std::clamp((double(metres) - range[0]) / (range[1] - range[0]), 0.0, 1.0));
+}
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,36 @@
+// The params synthesis.transfer and synthesis.assess share: the exemplar (the painting, its
+// classes, exclusions, altitude, scale, analysis) and how the target's land cover and DEM become
+// the synthesis's guides (README: synthesis.transfer).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+namespace maquette::synthesis {
+
+// JSON Schema "properties" of those params: "painting", "labels", "classes", "exclusion",
+// "exclude_classes", "landcover_classes", "altitude_range", "painting_altitude",
+// "exemplar_scale", "k".
+nlohmann::json exemplar_params_schema();
+
+// Target land-cover value -> painting class, from "landcover_classes". Throws maquette::Error
+// naming `op`, the field and the key or value at fault.
+std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op);
+
+// The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
+// not in the table.
+uint8_t painting_class(const std::map<int, uint8_t>& table, float value);
+
+// "altitude_range" [low, high] metres when given; throws maquette::Error naming `op` unless
+// high > low.
+std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
+                                                    const std::string& op);
+
+// A DEM height mapped onto the range: 0 at low, 1 at high, clamped (NaN stays NaN).
+float altitude_guide(float metres, const std::array<double, 2>& range);
+
+}  // namespace maquette::synthesis
