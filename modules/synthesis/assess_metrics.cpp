@@ -104,6 +104,13 @@ void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelR
 
 }  // namespace
 
+Exemplar copied_exemplar(const ExemplarLevel& finest) {
+  Exemplar e{finest.width,  finest.height,   finest.rgb,
+             finest.labels, finest.altitude, finest.excluded};
+  for (float& v : e.rgb) v = std::round(v * 255.0f);
+  return e;
+}
+
 int histogram_bin(float r, float g, float b) {
   const auto level = [](float v) { return std::clamp(int(std::lround(v)), 0, 255) / 32; };
   return (level(r) * 8 + level(g)) * 8 + level(b);

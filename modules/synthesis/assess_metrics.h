@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "exemplar.h"
+#include "exemplar_pyramid.h"
 #include "synthesis.h"
 
 namespace maquette::synthesis {
@@ -64,6 +65,11 @@ struct Metrics {
   double worst_histogram_distance = 0;
   double altitude_mismatch = 0;  // mean |target - source altitude| (0 when none)
 };
+
+// A transfer's exemplar as its output copies it (the pyramid's finest level): colours 0..255
+// rounded to the 8-bit values synthesis.transfer writes, labels, altitude and exclusion as they
+// are.
+Exemplar copied_exemplar(const ExemplarLevel& finest);
 
 // The 8 x 8 x 8 bin of a colour 0..255: each channel rounded to an integer, then / 32.
 int histogram_bin(float r, float g, float b);

@@ -45,15 +45,6 @@ OperatorSpec assess_spec() {
   return s;
 }
 
-// The transfer's exemplar as its output copies it: colours rounded to the 8-bit values it
-// writes.
-Exemplar copied_exemplar(const TransferExemplar& t) {
-  const ExemplarLevel& l = t.pyramid.levels[0];
-  Exemplar e{l.width, l.height, l.rgb, l.labels, l.altitude, l.excluded};
-  for (float& v : e.rgb) v = std::round(v * 255.0f);
-  return e;
-}
-
 json to_json(const Tally& t) {
   json uses = json::array(), histograms = json::object();
   for (const auto& [pixel, n] : t.uses) uses.push_back({pixel, n});
@@ -95,7 +86,7 @@ class Assess : public ReduceOperator {
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp);
     const auto exemplar = transfer_exemplar(params);
-    const Exemplar e = copied_exemplar(*exemplar);
+    const Exemplar e = copied_exemplar(exemplar->pyramid.levels[0]);
     const Tile<float>& rgb = input_with_halo(kOp, ctx, data, "rgb", spec_.halo);
     const Tile<float>& source = input_with_halo(kOp, ctx, data, "source", spec_.halo);
     const Tile<float>& landcover = input_with_halo(kOp, ctx, data, "landcover", spec_.halo);
@@ -150,7 +141,7 @@ class Assess : public ReduceOperator {
       throw Error(std::string(kOp) +
                   ": no output pixel with a source in the region (inputs.source)");
     const Tally t = from_json(merged);
-    const Exemplar e = copied_exemplar(*transfer_exemplar(*ctx.params));
+    const Exemplar e = copied_exemplar(transfer_exemplar(*ctx.params)->pyramid.levels[0]);
     const Metrics m = metrics(e, t);
     const auto usable = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
     json distances = json::object();

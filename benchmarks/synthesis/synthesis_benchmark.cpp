@@ -1,0 +1,56 @@
+// synthesis.transfer's speed (modules/synthesis) on the fixture of zion_fixture.h, CPU time of
+// all threads (MeasureProcessCPUTime):
+//  - Analyse: the exemplar's analysis (pyramid, PCA, k-coherence candidates), once per process
+//    in a run, timed apart.
+//  - Transfer/threads: a 512 x 512 output as 4 tiles of 256 (the operator's cells at level 10),
+//    each from its own guides and halo, on 1 and 2 threads; items are output pixels, so
+//    s per output megapixel = 1e6 / items_per_second.
+//  - WholeImage: the same 512 x 512 output synthesized as one window: the tiling overhead is
+//    Transfer's time over this one.
+#include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
+
+#include "zion_fixture.h"
+
+namespace maquette::synthesis::bench {
+namespace {
+
+constexpr PixelRect kOut{0, 0, 512, 512};
+constexpr int kTile = 256;
+
+void BM_Analyse(benchmark::State& state) {
+  const ExemplarLevel& finest = zion_exemplar()->pyramid.levels[0];
+  Exemplar e{finest.width,  finest.height,   finest.rgb,
+             finest.labels, finest.altitude, finest.excluded};
+  for (float& v : e.rgb) v *= 255.0f;  // analyse_exemplar's input range
+  for (auto _ : state)
+    tbb::task_arena(2).execute(
+        [&] { benchmark::DoNotOptimize(analyse_exemplar(e, kLevels, zion_params().at("k"))); });
+}
+BENCHMARK(BM_Analyse)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_Transfer(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  for (auto _ : state)
+    benchmark::DoNotOptimize(synthesize_tiles(*t, kOut, kTile, int(state.range(0))));
+  state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
+}
+BENCHMARK(BM_Transfer)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
+void BM_WholeImage(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  for (auto _ : state) benchmark::DoNotOptimize(synthesize_tiles(*t, kOut, int(kOut.width), 1));
+  state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
+}
+BENCHMARK(BM_WholeImage)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+}  // namespace maquette::synthesis::bench
+
+BENCHMARK_MAIN();

@@ -1,0 +1,97 @@
+#include "zion_fixture.h"
+
+#include <gdal_priv.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "transfer_params.h"
+
+namespace maquette::synthesis::bench {
+namespace {
+
+const std::string kData = MAQUETTE_SHARED_DIR "/data";
+// The window's origin in nlcd.tif (1073 x 1359 pixels): the canyon and the plateau around it.
+constexpr int kOriginCol = 20, kOriginRow = 160;
+
+}  // namespace
+
+nlohmann::json zion_params() {
+  return {{"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
+          {"classes", 8},
+          {"exclude_classes", {0}},
+          {"landcover_classes",
+           {{"1", 7}, {"2", 3}, {"3", 5}, {"4", 6}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", 6}}},
+          {"exemplar_scale", 2},
+          {"k", 2}};
+}
+
+std::shared_ptr<const TransferExemplar> zion_exemplar() { return transfer_exemplar(zion_params()); }
+
+std::vector<uint8_t> zion_labels(const PixelRect& window) {
+  struct Raster {
+    int width = 0, height = 0;
+    std::vector<uint8_t> classes;
+  };
+  static const Raster raster = [] {
+    GDALAllRegister();
+    const std::string path = kData + "/zion/nlcd.tif";
+    std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+    if (!ds) throw Error(path + ": GDAL cannot open it");
+    Raster r{ds->GetRasterXSize(), ds->GetRasterYSize(), {}};
+    r.classes.resize(size_t(r.width) * size_t(r.height));
+    if (ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.width, r.height, r.classes.data(), r.width,
+                                       r.height, GDT_Byte, 0, 0, nullptr) != CE_None)
+      throw Error(path + ": cannot read band 1");
+    return r;
+  }();
+  const auto table = class_table(zion_params().at("landcover_classes"), "zion fixture");
+  std::vector<uint8_t> out(size_t(window.width) * size_t(window.height), kUnknownLabel);
+  for (int64_t r = 0; r < window.height; ++r)
+    for (int64_t c = 0; c < window.width; ++c) {
+      const int64_t x = kOriginCol + window.col0 + c, y = kOriginRow + window.row0 + r;
+      if (x < 0 || y < 0 || x >= raster.width || y >= raster.height) continue;
+      const uint8_t v = raster.classes[size_t(y) * size_t(raster.width) + size_t(x)];
+      out[size_t(r) * size_t(window.width) + size_t(c)] =
+          v == 255 ? kUnknownLabel : painting_class(table, float(v));
+    }
+  return out;
+}
+
+std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect& out, int tile,
+                                      int threads) {
+  std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
+  const int64_t across = (out.width + tile - 1) / tile, down = (out.height + tile - 1) / tile;
+  const int halo = synthesis_halo();
+  SynthesisParams params;
+  tbb::task_arena(threads).execute([&] {
+    tbb::parallel_for(int64_t(0), across * down, [&](int64_t i) {
+      const PixelRect part{out.col0 + i % across * tile, out.row0 + i / across * tile,
+                           std::min<int64_t>(tile, out.width - i % across * tile),
+                           std::min<int64_t>(tile, out.height - i / across * tile)};
+      TargetGuides g;
+      g.rect = {part.col0 - halo, part.row0 - halo, part.width + 2 * halo, part.height + 2 * halo};
+      g.labels = zion_labels(g.rect);
+      const std::vector<int32_t> src = synthesize(t.pyramid, g, params, part);
+      for (int64_t r = 0; r < part.height; ++r)
+        std::copy_n(
+            src.begin() + r * part.width, part.width,
+            result.begin() + (part.row0 - out.row0 + r) * out.width + (part.col0 - out.col0));
+    });
+  });
+  return result;
+}
+
+AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb) {
+  AssessedImage a;
+  a.rect = out;
+  a.source = std::move(source);
+  a.rgb = std::move(rgb);
+  a.labels = zion_labels(out);
+  return a;
+}
+
+}  // namespace maquette::synthesis::bench
