@@ -18,6 +18,7 @@
 #include "core/tile.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "zion_ingest.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -55,30 +56,24 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   const std::string store = (dir / "zion.mqt").string();
   json assess = transfer_params();
   assess["coherence_step"] = 4;
-  const json pipeline = {
-      {"store", store},
-      {"region", {{"bbox", {-113.03, 37.25, -113.025, 37.255}}}},
-      {"level", 10},
-      {"steps",
-       {{{"op", "ingest"},
-         {"outputs", {{"layer", "landcover"}}},
-         {"params",
-          {{"sources", {kShared + "/zion/nlcd.tif"}}, {"as", "landcover"}, {"level", 10}}}},
-        {{"op", "ingest"},
-         {"outputs", {{"layer", "dem"}}},
-         {"params", {{"sources", {kShared + "/zion/srtm.tif"}}, {"as", "dem"}, {"level", 10}}}},
-        {{"op", "synthesis.transfer"},
-         {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
-         {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
-         {"params", transfer_params()}},
-        {{"op", "synthesis.assess"},
-         {"inputs",
-          {{"rgb", "painted"},
-           {"source", "painted_source"},
-           {"landcover", "landcover"},
-           {"dem", "dem"}}},
-         {"outputs", {{"report", "assessment"}}},
-         {"params", assess}}}}};
+  json pipeline = {{"store", store},
+                   {"region", {{"bbox", {-113.03, 37.25, -113.025, 37.255}}}},
+                   {"level", 10},
+                   {"steps",
+                    {{{"op", "synthesis.transfer"},
+                      {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+                      {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
+                      {"params", transfer_params()}},
+                     {{"op", "synthesis.assess"},
+                      {"inputs",
+                       {{"rgb", "painted"},
+                        {"source", "painted_source"},
+                        {"landcover", "landcover"},
+                        {"dem", "dem"}}},
+                      {"outputs", {{"report", "assessment"}}},
+                      {"params", assess}}}}};
+  const json ingest = zion_ingest_steps(kShared);
+  pipeline["steps"].insert(pipeline["steps"].begin(), ingest.begin(), ingest.end());
   const fs::path path = dir / "pipeline.json";
   std::ofstream(path) << pipeline.dump(1);
   const test::CliResult r = test::run_maquette("run " + path.string() + " --quiet --threads 2");

@@ -16,6 +16,7 @@
 #include "core/tile.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "zion_ingest.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -68,28 +69,22 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
   fs::remove_all(run.dir);
   fs::create_directories(run.dir);
   run.store = (run.dir / "zion.mqt").string();
-  json pipeline = {
-      {"store", run.store},
-      {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
-      {"level", 10},
-      {"steps",
-       {{{"op", "ingest"},
-         {"outputs", {{"layer", "landcover"}}},
-         {"params",
-          {{"sources", {kShared + "/zion/nlcd.tif"}}, {"as", "landcover"}, {"level", 10}}}},
-        {{"op", "ingest"},
-         {"outputs", {{"layer", "dem"}}},
-         {"params", {{"sources", {kShared + "/zion/srtm.tif"}}, {"as", "dem"}, {"level", 10}}}},
-        {{"op", "synthesis.transfer"},
-         {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
-         {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
-         {"params",
-          {{"painting", kPainting},
-           {"exclusion", mask},
-           {"landcover_classes", {{"3", 5}, {"4", 3}, {"5", 4}, {"6", 2}}},
-           {"altitude_range", {1100, 2700}},
-           {"painting_altitude", "rows"},
-           {"exemplar_scale", kScale}}}}}}};
+  json pipeline = {{"store", run.store},
+                   {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
+                   {"level", 10},
+                   {"steps",
+                    {{{"op", "synthesis.transfer"},
+                      {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+                      {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
+                      {"params",
+                       {{"painting", kPainting},
+                        {"exclusion", mask},
+                        {"landcover_classes", {{"3", 5}, {"4", 3}, {"5", 4}, {"6", 2}}},
+                        {"altitude_range", {1100, 2700}},
+                        {"painting_altitude", "rows"},
+                        {"exemplar_scale", kScale}}}}}}};
+  const json ingest = zion_ingest_steps(kShared);
+  pipeline["steps"].insert(pipeline["steps"].begin(), ingest.begin(), ingest.end());
   json& params = pipeline["steps"][2]["params"];
   if (mask.empty()) params.erase("exclusion");
   params.update(changes);
