@@ -1,0 +1,120 @@
+// Our transfer and ebsynth (jamriska/ebsynth's CPU backend, compiled in by compare.sh) on the
+// same exemplar, guides and output size (zion_fixture.h): the exemplar's colours as ebsynth's
+// style, the painting classes one-hot as its guide channels (one more channel marks the excluded
+// pixels, which no target pixel has), the target's classes the same way; ebsynth's command-line
+// defaults otherwise (5 x 5 patches, uniformity 3500, plain votes, 6 search-vote and 4
+// PatchMatch iterations per level). Prints CPU and wall times, s per output megapixel and both
+// outputs' measures (assess_metrics.h; ebsynth's sources from its nearest-neighbour field).
+// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)]
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <string>
+
+#include "ebsynth.h"
+#include "zion_fixture.h"
+
+namespace maquette::synthesis::bench {
+namespace {
+
+struct Timed {
+  double cpu = 0, wall = 0;  // seconds (CPU: every thread of the process)
+};
+
+template <typename F>
+Timed timed(F&& f) {
+  const std::clock_t c0 = std::clock();
+  const auto w0 = std::chrono::steady_clock::now();
+  f();
+  return {double(std::clock() - c0) / CLOCKS_PER_SEC,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count()};
+}
+
+// One-hot guide channels: class c -> channel c at 255; `excluded` -> the last channel.
+std::vector<uint8_t> one_hot(const std::vector<uint8_t>& labels,
+                             const std::vector<uint8_t>* excluded, int channels) {
+  std::vector<uint8_t> g(labels.size() * size_t(channels), 0);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] < channels - 1) g[i * size_t(channels) + labels[i]] = 255;
+    if (excluded && (*excluded)[i]) g[i * size_t(channels) + size_t(channels - 1)] = 255;
+  }
+  return g;
+}
+
+void print(const char* name, const Metrics& m) {
+  std::printf(
+      "%-9s label %.4f  excluded %llu  coherence %.0f  distinct %.4f  max share %.5f  "
+      "worst histogram %.3f",
+      name, m.label_consistency, (unsigned long long)m.excluded_pixels, m.coherence,
+      m.distinct_source_fraction, m.max_source_share, m.worst_histogram_distance);
+  for (const auto& [label, d] : m.histogram_distance) std::printf("  [%d] %.3f", label, d);
+  std::printf("\n");
+}
+
+int run(int side, int threads) {
+  const PixelRect out{0, 0, side, side};
+  const double mp = double(side) * side / 1e6;
+  std::shared_ptr<const TransferExemplar> t;
+  const Timed analysis = timed([&] { t = zion_exemplar(); });
+  const Exemplar e = copied_exemplar(t->pyramid.levels[0]);
+
+  std::vector<int32_t> ours;
+  const Timed ours_time = timed([&] { ours = synthesize_tiles(*t, out, 256, threads); });
+  std::vector<float> ours_rgb(ours.size() * 3);
+  for (size_t i = 0; i < ours.size(); ++i)
+    for (size_t k = 0; k < 3; ++k) ours_rgb[3 * i + k] = e.rgb[3 * size_t(ours[i]) + k];
+
+  const int channels = zion_params().at("classes").get<int>() + 1;
+  std::vector<uint8_t> style(e.rgb.size());
+  for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
+  std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
+  std::vector<uint8_t> target_guide = one_hot(zion_labels(out), nullptr, channels);
+  std::vector<float> style_weights(3, 1.0f / 3), guide_weights(size_t(channels), 1.0f / channels);
+  constexpr int kPatch = 5;
+  int levels = 0;  // as ebsynth's command line: while the smaller image is >= 2 patches + 1
+  while (std::min({e.width, e.height, side}) >> levels >= 2 * kPatch + 1) ++levels;
+  std::vector<int> search_vote(size_t(levels), 6), patch_match(size_t(levels), 4),
+      stop(size_t(levels), 5);
+  std::vector<int> nnf(size_t(side) * size_t(side) * 2);
+  std::vector<uint8_t> image(size_t(side) * size_t(side) * 3);
+  omp_set_num_threads(threads);
+  const Timed ebsynth_time = timed([&] {
+    ebsynthRun(EBSYNTH_BACKEND_CPU, 3, channels, e.width, e.height, style.data(),
+               source_guide.data(), side, side, target_guide.data(), nullptr, style_weights.data(),
+               guide_weights.data(), 3500.0f, kPatch, EBSYNTH_VOTEMODE_PLAIN, levels,
+               search_vote.data(), patch_match.data(), stop.data(), 0, nnf.data(), image.data());
+  });
+  std::vector<int32_t> ebsynth_source(nnf.size() / 2);
+  for (size_t i = 0; i < ebsynth_source.size(); ++i)
+    ebsynth_source[i] = nnf[2 * i + 1] * e.width + nnf[2 * i];
+  const std::vector<float> ebsynth_rgb(image.begin(), image.end());
+
+  std::printf("output %d x %d (%.3f MP), exemplar %d x %d, %d threads\n", side, side, mp, e.width,
+              e.height, threads);
+  std::printf("exemplar analysis (ours, once): CPU %.1f s, wall %.1f s\n", analysis.cpu,
+              analysis.wall);
+  std::printf("ours:    CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ours_time.cpu,
+              ours_time.cpu / mp, ours_time.wall, ours_time.wall / mp);
+  std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth_time.cpu,
+              ebsynth_time.cpu / mp, ebsynth_time.wall, ebsynth_time.wall / mp);
+  std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth_time.cpu / ours_time.cpu,
+              ebsynth_time.wall / ours_time.wall);
+  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, 2));
+  const Metrics ebsynth_m =
+      metrics(e, tally(e, assessed(out, ebsynth_source, ebsynth_rgb), out, 2));
+  print("ours", ours_m);
+  print("ebsynth", ebsynth_m);
+  std::printf("coherence ours / ebsynth: %.2f\n", ours_m.coherence / ebsynth_m.coherence);
+  return 0;
+}
+
+}  // namespace
+}  // namespace maquette::synthesis::bench
+
+int main(int argc, char** argv) {
+  const int side = argc > 1 ? std::stoi(argv[1]) : 512;
+  const int threads = argc > 2 ? std::stoi(argv[2]) : 2;
+  return maquette::synthesis::bench::run(side, threads);
+}
