@@ -26,8 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kShared = MAQUETTE_SHARED_DIR "/data";
-const std::string kPainting = kShared + "/painting/bruegel_the_harvesters_1565.png";
 // Gates at the measures of session 14's transfer (label consistency 0.893, distinct sources
 // 0.060, most used source 0.67 %, worst label histogram 0.675, coherence 12,564, altitude
 // mismatch 0.164), each with a small margin.
@@ -72,7 +70,7 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
                         {"dem", "dem"}}},
                       {"outputs", {{"report", "assessment"}}},
                       {"params", assess}}}}};
-  const json ingest = zion_ingest_steps(kShared);
+  const json ingest = zion_ingest_steps();
   pipeline["steps"].insert(pipeline["steps"].begin(), ingest.begin(), ingest.end());
   const fs::path path = dir / "pipeline.json";
   std::ofstream(path) << pipeline.dump(1);

@@ -24,8 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kShared = MAQUETTE_SHARED_DIR "/data";
-const std::string kPainting = kShared + "/painting/bruegel_the_harvesters_1565.png";
 constexpr int kScale = 4;             // exemplar_scale: a small exemplar keeps the test short
 constexpr double kExcludedTop = 0.4;  // the mask excludes the painting's top 40 % of rows
 
@@ -83,7 +81,7 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
                         {"altitude_range", {1100, 2700}},
                         {"painting_altitude", "rows"},
                         {"exemplar_scale", kScale}}}}}}};
-  const json ingest = zion_ingest_steps(kShared);
+  const json ingest = zion_ingest_steps();
   pipeline["steps"].insert(pipeline["steps"].begin(), ingest.begin(), ingest.end());
   json& params = pipeline["steps"][2]["params"];
   if (mask.empty()) params.erase("exclusion");
