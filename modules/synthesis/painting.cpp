@@ -2,6 +2,7 @@
 
 #include <gdal_priv.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -18,6 +19,27 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
       GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
   if (!ds) throw Error(path + ": GDAL cannot open the " + what);
   return ds;
+}
+
+// Each pixel's class replaced by the most frequent one in the (2 radius + 1)^2 window around it,
+// clipped to the image (ties: its own class, else the lowest).
+std::vector<uint8_t> majority_filtered(const std::vector<uint8_t>& labels, int width, int height,
+                                       int classes, int radius) {
+  std::vector<uint8_t> out(labels.size());
+  std::vector<int> count(static_cast<size_t>(classes));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      std::fill(count.begin(), count.end(), 0);
+      for (int wy = std::max(0, y - radius); wy <= std::min(height - 1, y + radius); ++wy)
+        for (int wx = std::max(0, x - radius); wx <= std::min(width - 1, x + radius); ++wx)
+          ++count[labels[size_t(wy) * size_t(width) + size_t(wx)]];
+      const size_t i = size_t(y) * size_t(width) + size_t(x);
+      int best = labels[i];
+      for (int c = 0; c < classes; ++c)
+        if (count[size_t(c)] > count[size_t(best)]) best = c;
+      out[i] = uint8_t(best);
+    }
+  return out;
 }
 
 }  // namespace
@@ -75,7 +97,7 @@ std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k) {
   std::vector<uint8_t> labels(n);
   for (size_t i = 0; i < n; ++i)
     labels[i] = uint8_t(partition.assign[size_t(rank[size_t(bin_of[i])])]);
-  return labels;
+  return majority_filtered(labels, painting.width, painting.height, k, kClassSmoothingRadius);
 }
 
 }  // namespace maquette::synthesis
