@@ -8,6 +8,7 @@
 
 #include "../texture/hs_histogram.h"
 #include "../texture/kmeans.h"
+#include "../texture/majority_filter.h"
 #include "core/error.h"
 
 namespace maquette::synthesis {
@@ -21,24 +22,22 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
   return ds;
 }
 
-// Each pixel's class replaced by the most frequent one in the (2 radius + 1)^2 window around it,
-// clipped to the image (ties: its own class, else the lowest).
+// The class map through texture's majority filter, which filters a square tile with a ring
+// around it: the painting is placed in a square of unclassified pixels (they do not vote).
 std::vector<uint8_t> majority_filtered(const std::vector<uint8_t>& labels, int width, int height,
-                                       int classes, int radius) {
-  std::vector<uint8_t> out(labels.size());
-  std::vector<int> count(static_cast<size_t>(classes));
+                                       int radius) {
+  const int n = std::max(width, height), side = n + 2 * radius;
+  std::vector<int> square(size_t(side) * size_t(side), -1);
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      std::fill(count.begin(), count.end(), 0);
-      for (int wy = std::max(0, y - radius); wy <= std::min(height - 1, y + radius); ++wy)
-        for (int wx = std::max(0, x - radius); wx <= std::min(width - 1, x + radius); ++wx)
-          ++count[labels[size_t(wy) * size_t(width) + size_t(wx)]];
-      const size_t i = size_t(y) * size_t(width) + size_t(x);
-      int best = labels[i];
-      for (int c = 0; c < classes; ++c)
-        if (count[size_t(c)] > count[size_t(best)]) best = c;
-      out[i] = uint8_t(best);
-    }
+    for (int x = 0; x < width; ++x)
+      square[size_t(y + radius) * size_t(side) + size_t(x + radius)] =
+          labels[size_t(y) * size_t(width) + size_t(x)];
+  const std::vector<int> filtered = texture::majority_filter(square, n, radius);
+  std::vector<uint8_t> out(labels.size());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      out[size_t(y) * size_t(width) + size_t(x)] =
+          uint8_t(filtered[size_t(y) * size_t(n) + size_t(x)]);
   return out;
 }
 
@@ -97,7 +96,7 @@ std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k) {
   std::vector<uint8_t> labels(n);
   for (size_t i = 0; i < n; ++i)
     labels[i] = uint8_t(partition.assign[size_t(rank[size_t(bin_of[i])])]);
-  return majority_filtered(labels, painting.width, painting.height, k, kClassSmoothingRadius);
+  return majority_filtered(labels, painting.width, painting.height, kClassSmoothingRadius);
 }
 
 }  // namespace maquette::synthesis

@@ -26,11 +26,12 @@ inline constexpr int kClassSmoothingRadius = 4;
 // Classes 0..k-1 by colour: k-means (texture/kmeans.h: deterministic seeding, no random state)
 // of the painting's CIELAB histogram (texture/hs_histogram.h's "lab" bins and weights), each
 // pixel the class of its bin; then each pixel takes the most frequent class of the
-// (2 kClassSmoothingRadius + 1)^2 window around it, clipped to the painting (ties: its own class,
-// else the lowest). The filter makes classes regions rather than speckle: a painting's strokes
-// mix colours, and a pixel-wise class leaves few pixels whose whole 3 x 3 neighbourhood has one
-// class, the only ones the synthesis' label cost lets fill a class's interior (on Bruegel's
-// Harvesters in 8 classes, 11 % of the foliage class's pixels at exemplar_scale 2). 1 <= k <= 254.
+// (2 kClassSmoothingRadius + 1)^2 window around it, clipped to the painting (texture's
+// majority_filter; ties: its own class, else the lowest). The filter makes classes regions rather
+// than speckle: a painting's strokes mix colours, and a pixel-wise class leaves few pixels whose
+// whole 3 x 3 neighbourhood has one class, the only ones the synthesis' label cost lets fill a
+// class's interior (on Bruegel's Harvesters in 8 classes, 11 % of the foliage class's pixels at
+// exemplar_scale 2). 1 <= k <= 254.
 std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k);
 
 }  // namespace maquette::synthesis
