@@ -7,8 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "gdal/vertical_datum.h"
-#include "image/layer_sampler.h"
+#include "render/terrain_scene.h"
 
 namespace maquette {
 namespace {
@@ -20,31 +19,6 @@ std::string number(double v) {
   return s.str();
 }
 
-// The DEM's heights converted to the ellipsoid (bilinear between samples), as
-// render/terrain_scene.h's terrain_ellipsoidal_height gives them, with the tiles read and the
-// datum's transformation set up once for all the points (and without its message at each call).
-class DemHeights {
- public:
-  DemHeights(const Store& store, const Grid& grid, const LayerInfo& dem)
-      : grid_(grid),
-        dem_(dem),
-        sampler_(store, grid, dem_, dem_.level, true),
-        heights_(ellipsoidal_heights(dem_)) {}
-
-  std::optional<double> operator()(LonLat p) {
-    float z = NAN;
-    if (!sampler_.sample(p, grid_.cell_from_point(p, dem_.level), &z) || std::isnan(z))
-      return std::nullopt;
-    return heights_(p, z);
-  }
-
- private:
-  const Grid& grid_;
-  LayerInfo dem_;
-  LayerSampler sampler_;
-  EllipsoidalHeights heights_;
-};
-
 }  // namespace
 
 PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const PaintingFitJob& job,
@@ -53,7 +27,7 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
   if (!dem || dem->kind != LayerKind::Raster || dem->channels != 1)
     throw Error("--dem layer '" + job.dem + "' is not a one-channel raster layer of the store " +
                 store.path());
-  DemHeights dem_heights(store, grid, *dem);
+  TerrainHeights dem_heights(store, grid, *dem);
   std::vector<GroundClick> clicks;
   for (const ControlPoint& p : points.points) {
     GroundClick c{p.x, p.y, {p.lon, p.lat, 0}};

@@ -69,7 +69,8 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
                 " must be in (0, 90) degrees for --shadows");
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
-  const auto ground = terrain_ellipsoidal_height(store, grid, dem, at);
+  // The ground as drawn (exaggerated): the eye's height above it, the check and the bend's base.
+  const auto ground = TerrainHeights(store, grid, dem, job.exaggeration)(at);
   if (job.above_ground) {
     if (!ground)
       throw Error("--above-ground: the --dem layer '" + dem.name +

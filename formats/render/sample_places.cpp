@@ -22,22 +22,25 @@ SamplePlace exact(const EnuFrame& frame, const EllipsoidalHeights& heights, LonL
 
 }  // namespace
 
-SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, const EnuFrame& frame,
+SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, const EnuFrame& frame,
                            const EllipsoidalHeights& heights)
-    : size_(size), places_(size_t(size + 2) * size_t(size + 2)) {
+    : size_(size), halo_(halo), places_(size_t(size + 2 * halo) * size_t(size + 2 * halo)) {
   const int pixel_level = cell.level() + log2_tile_size(size);
+  auto slot = [&](int col, int row) {
+    return size_t(row + halo) * size_t(size + 2 * halo) + size_t(col + halo);
+  };
   auto place_exactly = [&](int col, int row) {
     const std::optional<FaceCoord> source = pixel_source(grid, cell, size, col, row);
     if (source)
-      places_[size_t(row + 1) * size_t(size + 2) + size_t(col + 1)] =
-          exact(frame, heights, pixel_centre(grid, *source, pixel_level));
+      places_[slot(col, row)] = exact(frame, heights, pixel_centre(grid, *source, pixel_level));
   };
-  for (int k = -1; k <= size; ++k) {
-    place_exactly(k, -1);
-    place_exactly(k, size);
-    place_exactly(-1, k);
-    place_exactly(size, k);
-  }
+  for (int ring = 1; ring <= halo; ++ring)
+    for (int k = -ring; k < size + ring; ++k) {
+      place_exactly(k, -ring);
+      place_exactly(k, size + ring - 1);
+      place_exactly(-ring, k);
+      place_exactly(size + ring - 1, k);
+    }
   // The lattice on the cell's own face: nodes at samples i (size - 1) / m, i = 0 .. m.
   const int m = std::min(kLattice, size - 1);
   const FaceCoord origin = *pixel_source(grid, cell, size, 0, 0);
@@ -70,7 +73,7 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, const EnuFra
           &nodes[size_t(j * (m + 1) + i)], &nodes[size_t(j * (m + 1) + i + 1)],
           &nodes[size_t((j + 1) * (m + 1) + i)], &nodes[size_t((j + 1) * (m + 1) + i + 1)]};
       const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-      SamplePlace& s = places_[size_t(row + 1) * size_t(size + 2) + size_t(col + 1)];
+      SamplePlace& s = places_[slot(col, row)];
       s.known = true;
       s.position = {0, 0};
       for (int k = 0; k < 4; ++k) {

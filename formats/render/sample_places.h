@@ -4,7 +4,7 @@
 // the ENU point at height 0 of the datum and up the ellipsoid's unit normal there (exact: geodetic
 // heights run along the normal). The tile's inside takes lon/lat, base and up bilinearly from a
 // lattice of exact places 1/32 of the tile apart (every 8 samples of a 256-sample tile); the
-// halo's ring, which may lie on another face turned (core/halo.h), is placed exactly, as is every
+// halo's rings, which may lie on another face turned (core/halo.h), are placed exactly, as is every
 // sample of a tile whose lattice spans more than 90 degrees of longitude (the antimeridian) or
 // reaches beyond 80 degrees of latitude (longitudes bend fast near a pole). The error against PROJ
 // is tested (tests/render sample_places_test: within a thousandth of a sample; 4 mm for 35 m
@@ -29,16 +29,17 @@ struct SamplePlace {
 
 class SamplePlaces {
  public:
-  // Samples -1 .. size (the halo's ring included) of `cell`'s tile of `size` samples.
-  SamplePlaces(const Grid& grid, CellId cell, int size, const EnuFrame& frame,
+  // Samples -halo .. size + halo - 1 (the halo's rings included) of `cell`'s tile of `size`
+  // samples. Precondition: 0 <= halo <= size.
+  SamplePlaces(const Grid& grid, CellId cell, int size, int halo, const EnuFrame& frame,
                const EllipsoidalHeights& heights);
   const SamplePlace& at(int col, int row) const {
-    return places_[size_t(row + 1) * size_t(size_ + 2) + size_t(col + 1)];
+    return places_[size_t(row + halo_) * size_t(size_ + 2 * halo_) + size_t(col + halo_)];
   }
 
  private:
-  int size_;
-  std::vector<SamplePlace> places_;  // (size + 2)^2, row-major from (-1, -1)
+  int size_, halo_;
+  std::vector<SamplePlace> places_;  // (size + 2 halo)^2, row-major from (-halo, -halo)
 };
 
 }  // namespace maquette

@@ -26,56 +26,68 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
   const int n = dem.tile_size;
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
   const bool overview = cell.level() < dem.level;
+  // Two rings of halo: the outer one only for the drawn ring's normals, so that a sample's
+  // normal is the same central difference in every tile that draws it (no seam in the shading).
+  const int halo = 2;
   const Tile<float> tile =
-      assemble_halo(grid, cell, n, 1, [&](CellId c) -> std::optional<Tile<float>> {
+      assemble_halo(grid, cell, n, halo, [&](CellId c) -> std::optional<Tile<float>> {
         const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
         if (!raw) return std::nullopt;
         return to_tile<float>(*raw, nodata);
       });
-  const SamplePlaces places(grid, cell, n, camera.frame(), heights);
-  const int side = n + 2;  // samples -1 .. n (the halo's ring included)
+  const SamplePlaces places(grid, cell, n, halo, camera.frame(), heights);
+  const int side = n + 2 * halo;
+  auto slot = [&](int c, int r) { return size_t(r + halo) * size_t(side) + size_t(c + halo); };
+  // Each sample's exaggerated position (samples -2 .. n + 1); NaN where there is none.
+  std::vector<Vec3d> position(size_t(side) * size_t(side), Vec3d{NAN, NAN, NAN});
+  for (int r = -halo; r < n + halo; ++r)
+    for (int c = -halo; c < n + halo; ++c) {
+      const float z = tile.at(c, r);
+      const SamplePlace& place = places.at(c, r);
+      if (std::isnan(z) || !place.known) continue;
+      // Heights of the datum run along the ellipsoid's normal: exaggerated above the datum.
+      const double h = exaggeration * z;
+      for (size_t k = 0; k < 3; ++k) position[slot(c, r)][k] = place.base[k] + h * place.up[k];
+    }
+  // The drawn samples (-1 .. n, the halo's inner ring included) become vertices.
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
-  auto slot = [&](int c, int r) { return size_t(r + 1) * size_t(side) + size_t(c + 1); };
   TerrainScene part;
   float lowest = INFINITY, highest = -INFINITY;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
+      const Vec3d& p = position[slot(c, r)];
+      if (std::isnan(p[0])) continue;
       const float z = tile.at(c, r);
-      const SamplePlace& place = places.at(c, r);
-      if (std::isnan(z) || !place.known) continue;
       lowest = std::min(lowest, z);
       highest = std::max(highest, z);
-      // Heights of the datum run along the ellipsoid's normal: exaggerated above the datum.
-      const double h = exaggeration * z;
       vertex[slot(c, r)] = uint32_t(part.altitude.size());
-      for (size_t k = 0; k < 3; ++k) part.mesh.positions.push_back(place.base[k] + h * place.up[k]);
-      part.lonlat.insert(part.lonlat.end(), {place.position.lon, place.position.lat});
+      part.mesh.positions.insert(part.mesh.positions.end(), p.begin(), p.end());
+      const LonLat& ll = places.at(c, r).position;
+      part.lonlat.insert(part.lonlat.end(), {ll.lon, ll.lat});
       part.altitude.push_back(z);
     }
   auto at = [&](int c, int r) {
     return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
   };
-  // Normals: the cross product of the column and row differences, turned up.
+  // Normals: the cross product of the column and row central differences, turned up; one-sided
+  // only where a neighbour has no data.
   part.normals.resize(part.altitude.size() * 3);
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
       const uint32_t v = at(c, r);
       if (v == kNoVertex) continue;
-      auto diff = [&](uint32_t a, uint32_t b) {
-        const double* pa = &part.mesh.positions[3 * size_t(a)];
-        const double* pb = &part.mesh.positions[3 * size_t(b)];
-        return Vec3d{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+      const Vec3d& pv = position[slot(c, r)];
+      auto span = [&](int c0, int r0, int c1, int r1) {
+        const Vec3d* a = &position[slot(c0, r0)];
+        const Vec3d* b = &position[slot(c1, r1)];
+        if (std::isnan((*a)[0])) a = &pv;
+        if (std::isnan((*b)[0])) b = &pv;
+        return Vec3d{(*b)[0] - (*a)[0], (*b)[1] - (*a)[1], (*b)[2] - (*a)[2]};
       };
-      auto span = [&](uint32_t before, uint32_t after) {
-        if (before == kNoVertex) before = v;
-        if (after == kNoVertex) after = v;
-        return diff(before, after);
-      };
-      const Vec3d u = span(at(c - 1, r), at(c + 1, r)), w = span(at(c, r - 1), at(c, r + 1));
+      const Vec3d u = span(c - 1, r, c + 1, r), w = span(c, r - 1, c, r + 1);
       Vec3d nrm{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
       const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
       // The up direction at the vertex: from the earth's centre, near enough for the sign.
-      const double* pv = &part.mesh.positions[3 * size_t(v)];
       const double up = nrm[0] * pv[0] + nrm[1] * pv[1] + nrm[2] * (pv[2] + 6.371e6);
       const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
       for (int k = 0; k < 3; ++k)
@@ -238,13 +250,19 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   return scene;
 }
 
-std::optional<double> terrain_ellipsoidal_height(const Store& store, const Grid& grid,
-                                                 const LayerInfo& dem, LonLat p) {
-  LayerSampler sampler(store, grid, dem, dem.level, true);
+TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,
+                               double exaggeration)
+    : grid_(grid),
+      dem_(dem),
+      sampler_(store, grid, dem_, dem_.level, true),
+      heights_(ellipsoidal_heights(dem_)),
+      exaggeration_(exaggeration) {}
+
+std::optional<double> TerrainHeights::operator()(LonLat p) {
   float z = NAN;
-  if (!sampler.sample(p, grid.cell_from_point(p, dem.level), &z) || std::isnan(z))
+  if (!sampler_.sample(p, grid_.cell_from_point(p, dem_.level), &z) || std::isnan(z))
     return std::nullopt;
-  return ellipsoidal_heights(dem)(p, z);
+  return heights_(p, z) + (exaggeration_ - 1) * z;
 }
 
 }  // namespace maquette

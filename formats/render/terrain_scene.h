@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "gdal/vertical_datum.h"
+#include "image/layer_sampler.h"
 #include "render/camera.h"
 #include "render/rasterizer.h"
 #include "store/store.h"
@@ -27,8 +29,9 @@ struct TerrainScene {
   RenderMesh mesh;
   std::vector<double> lonlat;   // degrees, 2 per vertex
   std::vector<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
-  // Unit normals in the camera's ENU frame (central differences of the exaggerated surface,
-  // one-sided at a tile's border), 3 per vertex.
+  // Unit normals in the camera's ENU frame (central differences of the exaggerated surface, at a
+  // tile's border too, from a second ring of halo: a sample drawn by two tiles has one normal;
+  // one-sided only beside nodata), 3 per vertex.
   std::vector<float> normals;
 };
 
@@ -52,9 +55,23 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull);
 
-// The DEM's height at `p` converted to the ellipsoid (bilinear between samples); nullopt where
-// the layer has no data.
-std::optional<double> terrain_ellipsoidal_height(const Store& store, const Grid& grid,
-                                                 const LayerInfo& dem, LonLat p);
+// The drawn terrain's height above the ellipsoid at points: the DEM sampled bilinearly between
+// samples, converted to the ellipsoid and exaggerated as build_terrain_scene draws it (heights of
+// the datum times `exaggeration`), so an eye placed above it is above what is drawn. The tiles
+// are read and the datum's transformation set up once for all the points. Not thread-safe.
+class TerrainHeights {
+ public:
+  TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,
+                 double exaggeration = 1);
+  // nullopt where the layer has no data.
+  std::optional<double> operator()(LonLat p);
+
+ private:
+  const Grid& grid_;
+  LayerInfo dem_;
+  LayerSampler sampler_;
+  EllipsoidalHeights heights_;
+  double exaggeration_;
+};
 
 }  // namespace maquette

@@ -16,9 +16,12 @@
 #include <fstream>
 #include <functional>
 #include <numbers>
+#include <numeric>
 #include <sstream>
 
+#include "core/grid.h"
 #include "proj_enu.h"
+#include "render/terrain_scene.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
 #include "test_camera.h"
@@ -207,6 +210,23 @@ TEST(PanoramaCli, ExaggeratedHeights) {
   // Without the exaggeration the same guides miss their pixels.
   EXPECT_GT(worst_reprojection(f.dir + "/tall-guides.tif", {0, -6, 50, 320, 200}, kEyeHeight)[0],
             5.0);
+
+  // The eye stands above the ground as drawn: 100 m over the plain drawn at 2 x 100 m, so
+  // straight down the distance is 100 m; an eye at 150 m is under the drawn plain: refused.
+  const std::string eye =
+      " --dem dem --camera " + std::to_string(kEyeLon) + " " + std::to_string(kEyeLat) + " ";
+  const auto above =
+      run_maquette("render panorama " + f.store + " " + f.dir + "/down.png" + eye +
+                   "100 --above-ground --exaggeration 2 --pitch -90 --fov 10 " + "--size 21 21");
+  ASSERT_EQ(above.exit_code, 0) << above.err;
+  std::unique_ptr<GDALDataset> down(
+      GDALDataset::Open((f.dir + "/down-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(down);
+  EXPECT_NEAR(band(*down, 2)[10 * 21 + 10], 100, 0.01);
+  const auto under = run_maquette("render panorama " + f.store + " " + f.dir + "/under.png" + eye +
+                                  "150 --exaggeration 2");
+  EXPECT_NE(under.exit_code, 0);
+  EXPECT_NE(under.err.find("below the terrain"), std::string::npos) << under.err;
 }
 
 TEST(PanoramaCli, SameBytesForOneAndTwoThreads) {
@@ -362,6 +382,42 @@ std::vector<uint8_t> picture(const std::string& path) {
                          nullptr),
             CE_None);
   return rgb;
+}
+
+// A sample on a tile's border is drawn by both tiles (the halo's ring overlaps the neighbour):
+// both copies carry one normal (central differences in each tile, from a second ring of halo),
+// so the hillshade shows no line along tile borders. Copies are the vertices within a hundredth
+// of a sample of each other (the inside's places are interpolated, the ring's exact: they differ
+// by up to a thousandth of a sample, sample_places.h). Before, the ring's normals were one-sided:
+// on these hills copies were up to ~60 degrees apart.
+TEST(PanoramaCli, TileBordersShareTheirNormals) {
+  const auto store = Store::open(hills_store(), Store::Mode::ReadOnly);
+  const LayerInfo dem = store->require_layer("dem");
+  CameraSpec spec;
+  spec.eye = {10.15, 45.15, 20000};
+  spec.pitch = -90;
+  const TerrainScene scene =
+      build_terrain_scene(*store, default_grid(), dem, PinholeCamera(spec), 1, 0, false);
+  const double eps = 0.01 * 0.0005;  // a hundredth of the DEM's 0.0005-degree sample
+  std::vector<size_t> by_lon(scene.altitude.size());
+  std::iota(by_lon.begin(), by_lon.end(), size_t(0));
+  std::sort(by_lon.begin(), by_lon.end(),
+            [&](size_t a, size_t b) { return scene.lonlat[2 * a] < scene.lonlat[2 * b]; });
+  size_t copies = 0;
+  double worst = 0;  // degrees between two copies' normals
+  for (size_t i = 0; i < by_lon.size(); ++i)
+    for (size_t j = i + 1; j < by_lon.size(); ++j) {
+      const size_t a = by_lon[i], b = by_lon[j];
+      if (scene.lonlat[2 * b] - scene.lonlat[2 * a] > eps) break;
+      if (std::abs(scene.lonlat[2 * b + 1] - scene.lonlat[2 * a + 1]) > eps) continue;
+      double dot = 0;
+      for (size_t k = 0; k < 3; ++k) dot += scene.normals[3 * a + k] * scene.normals[3 * b + k];
+      worst = std::max(worst, std::acos(std::min(1.0, dot)) * 180 / std::numbers::pi);
+      ++copies;
+    }
+  std::printf("%zu samples drawn twice, their normals at most %.4f degrees apart\n", copies, worst);
+  EXPECT_GT(copies, 1000u);
+  EXPECT_LT(worst, 0.05);
 }
 
 // Each tile at the level its distance needs: fewer triangles, several levels, no hole (no sky
