@@ -84,15 +84,13 @@ class Assess : public ReduceOperator {
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
     const auto table = class_table(params.at("landcover_classes"), kOp);
-    const auto range = altitude_range(params, kOp);
+    const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
     const auto exemplar = transfer_exemplar(params);
     const Exemplar e = copied_exemplar(exemplar->pyramid.levels[0]);
     const Tile<float>& rgb = input_with_halo(kOp, ctx, data, "rgb", spec_.halo);
     const Tile<float>& source = input_with_halo(kOp, ctx, data, "source", spec_.halo);
     const Tile<float>& landcover = input_with_halo(kOp, ctx, data, "landcover", spec_.halo);
-    const Tile<float>* dem = range && data.inputs.count("dem")
-                                 ? &input_with_halo(kOp, ctx, data, "dem", spec_.halo)
-                                 : nullptr;
+    const Tile<float>* dem = range ? &input_with_halo(kOp, ctx, data, "dem", spec_.halo) : nullptr;
     const int n = ctx.tile_size, h = spec_.halo, side = n + 2 * h;
     AssessedImage image;
     image.rect = {global_col(ctx.cell, n, -h), global_row(ctx.cell, n, -h), side, side};

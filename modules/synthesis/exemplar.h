@@ -20,7 +20,8 @@ struct Exemplar {
 
 // The exemplar shrunk `factor` times (a power of two >= 1) by box averaging: colours and
 // altitude averaged, the label of each block its top-left pixel's, a block excluded when any of
-// its pixels is. Precondition: the exemplar's vectors have its width x height pixels.
+// its pixels is. Preconditions: the exemplar's vectors have its width x height pixels, and its
+// width and height are at least `factor` (transfer_exemplar refuses a smaller painting).
 Exemplar shrink_exemplar(const Exemplar& e, int factor);
 
 }  // namespace maquette::synthesis

@@ -16,7 +16,15 @@ namespace {
 constexpr const char* kOp = "synthesis.transfer";
 
 std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
-  Exemplar e = read_painting(params.at("painting").get<std::string>());
+  const std::string painting = params.at("painting").get<std::string>();
+  Exemplar e = read_painting(painting);
+  // Each of the kLevels levels halves the shrunk painting: its coarsest must keep a pixel.
+  const int scale = params.at("exemplar_scale").get<int>(), least = scale << (kLevels - 1);
+  if (e.width < least || e.height < least)
+    throw Error(std::string(kOp) + ".painting: " + painting + " is " + std::to_string(e.width) +
+                " x " + std::to_string(e.height) + " pixels, too small for exemplar_scale " +
+                std::to_string(scale) + ": " + std::to_string(kLevels) + " levels need at least " +
+                std::to_string(least) + " pixels a side");
   if (params.contains("labels")) {
     e.labels = read_mask(params.at("labels").get<std::string>(), e.width, e.height, "class image");
     for (const uint8_t l : e.labels)
@@ -47,7 +55,7 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
     }
   }
   auto out = std::make_shared<TransferExemplar>();
-  out->scale = params.at("exemplar_scale").get<int>();
+  out->scale = scale;
   out->pyramid =
       analyse_exemplar(shrink_exemplar(e, out->scale), kLevels, params.at("k").get<int>());
   return out;

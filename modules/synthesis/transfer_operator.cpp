@@ -67,8 +67,8 @@ class Transfer : public CellOperator {
       for (int c = 0; c < side; ++c)
         guides.labels[size_t(r) * size_t(side) + size_t(c)] =
             painting_class(table, landcover.at(c - halo, r - halo));
-    const auto range = altitude_range(params, spec_.name);
-    if (range && data.inputs.count("dem")) {
+    const auto range = altitude_range(params, spec_.name, data.inputs.count("dem") > 0);
+    if (range) {
       const Tile<float>& dem = input_with_halo(spec_.name, ctx, data, "dem", spec_.halo);
       guides.altitude.resize(guides.labels.size());
       for (int r = 0; r < side; ++r)

@@ -85,8 +85,13 @@ uint8_t painting_class(const std::map<int, uint8_t>& table, float value) {
 }
 
 std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
-                                                    const std::string& op) {
-  if (!params.contains("altitude_range")) return std::nullopt;
+                                                    const std::string& op, bool dem_given) {
+  if (params.contains("altitude_range") != dem_given)
+    throw Error(op + (dem_given ? ": inputs.dem is given without altitude_range (the heights"
+                                  " mapped to the guide's 0..1): give both or neither"
+                                : ".altitude_range is given without inputs.dem: give both or"
+                                  " neither"));
+  if (!dem_given) return std::nullopt;
   const auto range = params.at("altitude_range").get<std::vector<double>>();
   if (range.size() != 2 || !(range[1] > range[0]))
     throw Error(op + ".altitude_range: expected [low, high] with high > low, got " +

@@ -26,9 +26,10 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value);
 
 // "altitude_range" [low, high] metres when given; throws maquette::Error naming `op` unless
-// high > low.
+// high > low, and when one half of the altitude guide comes without the other (the range
+// without a `dem` input, `dem_given`, or a dem without the range): never silently dropped.
 std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
-                                                    const std::string& op);
+                                                    const std::string& op, bool dem_given);
 
 // A DEM height mapped onto the range: 0 at low, 1 at high, clamped (NaN stays NaN).
 float altitude_guide(float metres, const std::array<double, 2>& range);

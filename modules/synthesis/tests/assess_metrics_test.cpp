@@ -28,7 +28,8 @@ Exemplar noise_exemplar(int width, int height, uint64_t seed) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t i = size_t(y) * size_t(width) + size_t(x);
-      for (size_t k = 0; k < 3; ++k) e.rgb[3 * i + k] = float(mix64(seed + 3 * i + k) % 256);
+      for (size_t k = 0; k < 3; ++k)
+        e.rgb[3 * i + k] = float(splitmix64_mix(seed + 3 * i + k) % 256);
       e.labels[i] = x >= width / 2 ? 1 : 0;
       e.altitude[i] = float(x) / float(width - 1);
     }

@@ -29,7 +29,7 @@ Exemplar two_class_exemplar() {
   for (int y = 0; y < e.height; ++y)
     for (int x = 0; x < e.width; ++x) {
       const size_t i = size_t(y) * size_t(e.width) + size_t(x);
-      const float noise = float(mix64(i) % 41) - 20.0f;
+      const float noise = float(splitmix64_mix(i) % 41) - 20.0f;
       const bool right = x >= e.width / 2;
       e.labels[i] = right ? 1 : 0;
       const bool hole =
