@@ -91,12 +91,15 @@ void add_render_command(CLI::App& app) {
                   "at most this many pixels wide on the picture (0: every tile at full "
                   "resolution)")
       ->capture_default_str();
-  cmd->add_option("--bend-radius", o->job.bend.radius,
-                  "Terrain Bender's progressive bending: the ground beyond --bend-start curves up "
-                  "on a circle of this radius, metres (default: none)");
+  CLI::Option* bend_radius = cmd->add_option(
+      "--bend-radius", o->job.bend.radius,
+      "Terrain Bender's progressive bending: the ground beyond --bend-start curves up "
+      "on a circle of this radius, metres (default: none)");
   cmd->add_option("--bend-start", o->job.bend.start,
-                  "Horizontal distance from the eye where the bending starts, metres")
-      ->capture_default_str();
+                  "Horizontal distance from the eye where the bending starts, metres (with "
+                  "--bend-radius)")
+      ->capture_default_str()
+      ->needs(bend_radius);
   cmd->add_option("--haze-distance", o->job.haze_distance,
                   "Metres at which the haze hides 63 % of the terrain's colour")
       ->capture_default_str();

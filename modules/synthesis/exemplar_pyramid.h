@@ -52,7 +52,8 @@ struct ExemplarPyramid {
 // `levels` >= 1 levels, each half the size of the previous one (rounded up): colours and
 // altitude filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and decimated;
 // labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
-// Deterministic (single-threaded). Throws maquette::Error when a level has no allowed pixel.
+// Deterministic for any threads (the k nearest searches run in parallel, each query on its own,
+// ties broken by index). Throws maquette::Error when a level has no allowed pixel.
 ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k);
 
 }  // namespace maquette::synthesis

@@ -23,8 +23,11 @@ OperatorSpec transfer_spec() {
               {"dem", "elevation in metres, the altitude guide (with altitude_range)", true}};
   s.outputs = {
       {"rgb", "the painting's colours", DType::U8, 3, Semantics::Continuous, "", 0.0},
-      {"source", "painting pixel (column, row) each output pixel was copied from", DType::F32, 2,
-       Semantics::Continuous, "px", std::nullopt},  // NaN where the land cover has no data
+      {"source",
+       "painting pixel (column, row) each output pixel was copied from: the top-left pixel of its "
+       "exemplar_scale block",
+       DType::F32, 2, Semantics::Continuous, "px",
+       std::nullopt},  // NaN where the land cover has no data
   };
   // In input pixels: the output's synthesis_halo() at refine 0, less at finer outputs.
   s.halo = synthesis_halo();

@@ -560,6 +560,7 @@ TEST(PanoramaCli, BadInputIsNamed) {
   expect_error(f.render(out, "--sample-pixels -1"), "--sample-pixels -1");
   expect_error(f.render(out, "--strip-rows -2"), "--strip-rows -2");
   expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
+  expect_error(f.render(out, "--bend-start 5000"), "--bend-start requires --bend-radius");
 }
 
 }  // namespace
