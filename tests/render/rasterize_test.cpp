@@ -200,6 +200,40 @@ TEST(Rasterize, SharedEdgesDrawNoPixelTwice) {
   }
   EXPECT_EQ(sum, drawn);
   EXPECT_GT(drawn, 1000u);
+  // And at least one: every pixel centre strictly inside the fan's rim (its corners projected and
+  // snapped to 1/16 px as the rasterizer snaps them) is drawn, none outside it (a centre on the
+  // rim may go either way).
+  std::vector<std::array<double, 2>> rim;
+  for (int k = 1; k <= 16; ++k) {
+    const auto px = camera.to_pixel(
+        camera.to_view({fan.positions[3 * size_t(k)], fan.positions[3 * size_t(k) + 1],
+                        fan.positions[3 * size_t(k) + 2]}));
+    rim.push_back({std::round(px[0] * 16) / 16, std::round(px[1] * 16) / 16});
+  }
+  // Pixel centres whose signed distance to every rim edge (positive on the side `sign` says)
+  // exceeds `margin`.
+  const auto centres = [&](double sign, double margin) {
+    size_t count = 0;
+    for (int row = 0; row < s.spec.height; ++row)
+      for (int col = 0; col < s.spec.width; ++col) {
+        double least = INFINITY;
+        for (size_t k = 0; k < rim.size(); ++k) {
+          const auto& a = rim[k];
+          const auto& b = rim[(k + 1) % rim.size()];
+          const double ex = b[0] - a[0], ey = b[1] - a[1];
+          const double cross = ex * (row + 0.5 - a[1]) - ey * (col + 0.5 - a[0]);
+          least = std::min(least, sign * cross / std::hypot(ex, ey));
+        }
+        count += least > margin;
+      }
+    return count;
+  };
+  // The rim's winding as projected decides which side is inside.
+  const double sign = centres(1, 1e-9) > 0 ? 1 : -1;
+  const size_t inside = centres(sign, 1e-9), on_or_inside = centres(sign, -1e-9);
+  EXPECT_GT(inside, 1000u);
+  EXPECT_GE(drawn, inside);
+  EXPECT_LE(drawn, on_or_inside);
 }
 
 TEST(Camera, OutOfRangeFieldsAreNamed) {
