@@ -88,8 +88,11 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
     job.camera.pitch = pitch;
   }
   const PinholeCamera& camera = prepared->camera.emplace(job.camera);
-  TerrainScene& scene = prepared->scene = build_terrain_scene(
-      store, grid, dem, camera, job.exaggeration, job.sample_pixels, !job.bend.bends());
+  // Tiles out of view are left out unless the vertices move afterwards (a bend) or shadows are
+  // cast: terrain beside or behind the picture throws shadows into it.
+  TerrainScene& scene = prepared->scene =
+      build_terrain_scene(store, grid, dem, camera, job.exaggeration, job.sample_pixels,
+                          !job.bend.bends() && !job.shadows);
   if (job.shadows)  // on the unbent terrain: the bend is a drawing device, not the sun's
     prepared->shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration,
                                        job.sun_azimuth, job.sun_altitude);

@@ -485,11 +485,12 @@ TEST(PanoramaCli, LevelByDistance) {
 // (every tile).
 TEST(PanoramaCli, TilesOutOfViewLeftOutChangeNoPixel) {
   const std::string dir = test::temp_dir();
-  auto render = [&](const std::string& name, const std::string& sample_pixels) {
+  auto render = [&](const std::string& name, const std::string& sample_pixels,
+                    const std::string& more = "") {
     const auto r = run_maquette("-v render panorama " + hills_store() + " " + dir + "/" + name +
                                 ".png --dem dem --texture rgb --camera 10.15 45.1 3000 --heading "
                                 "30 --pitch -10 --fov 40 --size 200 120 --sample-pixels " +
-                                sample_pixels);
+                                sample_pixels + more);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return r.err;
   };
@@ -501,6 +502,15 @@ TEST(PanoramaCli, TilesOutOfViewLeftOutChangeNoPixel) {
   EXPECT_NE(culled.find(" at level 12;"), std::string::npos) << culled;
   for (const char* file : {".png", "-guides.tif", "-silhouettes.png"})
     EXPECT_EQ(slurp(dir + "/culled" + file), slurp(dir + "/all" + file)) << file;
+
+  // Shadows are cast by the whole DEM, not only by the tiles in view: a low sun behind the eye
+  // throws the hills behind it into the picture, whatever the framing.
+  const std::string sun = " --shadows --sun 210 6";
+  render("all-shadows", "0", sun);
+  render("culled-shadows", "1e-9", sun);
+  for (const char* file : {".png", "-guides.tif"})
+    EXPECT_TRUE(slurp(dir + "/culled-shadows" + file) == slurp(dir + "/all-shadows" + file))
+        << file;
 }
 
 TEST(PanoramaCli, StripsGiveTheWholePicture) {
