@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/output_file.h"
 #include "render/terrain_scene.h"
 
 namespace maquette {
@@ -95,9 +95,8 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
                    {"weights", fit.warp.weights()},
                    {"affine", fit.warp.affine()}};
   }
-  std::ofstream file(path, std::ios::binary);
-  file << out.dump(2) << '\n';
-  if (!file) throw Error(path + ": cannot be written");
+  const std::string text = out.dump(2) + '\n';
+  write_file_whole(path, text);  // whole or not at all: an older file stays as it was
 }
 
 Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp) {
