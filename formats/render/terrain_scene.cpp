@@ -157,9 +157,9 @@ double horizontal_distance(const Grid& grid, const PinholeCamera& camera, CellId
   return inside ? 0 : nearest;
 }
 
-// Heights (metres above the DEM's datum) no DEM on Earth goes beyond, and the geoid's separation
-// from the ellipsoid.
-constexpr double kLowest = -500, kHighest = 9000, kGeoid = 120;
+// Heights (metres above the DEM's datum) no DEM on Earth goes beyond, bathymetry included (the
+// Challenger Deep: -10,935 m), and the geoid's separation from the ellipsoid.
+constexpr double kLowest = -11000, kHighest = 9000, kGeoid = 120;
 
 // Whether `cell`, widened by `margin` metres, between the lowest and highest heights, lies wholly
 // beyond one side of the picture or behind the eye. Its boundary is sampled at 8 points per edge

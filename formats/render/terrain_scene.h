@@ -42,9 +42,9 @@ struct TerrainScene {
 // otherwise its children holding tiles are looked at, down to the full-resolution tiles. With
 // `cull`, a cell wholly out of the view (beyond a side of the picture or behind the eye, with a
 // margin of two samples, 1/16 of its side and the earth's bulge over it, for any height from
-// -500 m to 9000 m times `exaggeration`) is left out with its children: the caller must not move
-// the vertices afterwards (a bend). With
-// `sample_pixels` 0 every full-resolution tile. Sorted by id within each root, roots ascending.
+// -11,000 m (the ocean floor) to 9000 m times `exaggeration`) is left out with its children: the
+// caller must not move the vertices afterwards (a bend). With `sample_pixels` 0 every
+// full-resolution tile. Sorted by id within each root, roots ascending.
 std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const LayerInfo& dem,
                                 const PinholeCamera& camera, double sample_pixels,
                                 double exaggeration, bool cull);
