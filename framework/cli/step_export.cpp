@@ -35,7 +35,7 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"panorama",
          {"*dem", "texture", "stretch", "land_cover", "*camera", "above_ground", "heading", "pitch",
           "look_at", "fov", "size", "exaggeration", "sample_pixels", "bend_radius", "bend_start",
-          "haze_distance", "sun", "strip_rows"}}};
+          "haze_distance", "sun", "shadows", "strip_rows"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
       for (const std::string& option : terrain)
         if (!(f == std::string("glb") && option == "*dem")) o[f].push_back(option);
@@ -108,6 +108,7 @@ OperatorSpec export_spec() {
         {"bend_start", typed("number", "panorama: where the bending starts, metres")},
         {"haze_distance", typed("number", "panorama: metres where haze hides 63 %")},
         {"sun", array_schema("number", "panorama: hillshading's sun, AZIMUTH ALTITUDE")},
+        {"shadows", typed("boolean", "panorama: the terrain's cast shadows under the sun")},
         {"strip_rows", {{"type", "integer"}, {"minimum", 0}}}}}};
   return s;
 }
@@ -197,10 +198,13 @@ PanoramaJob panorama_of(const json& p) {
   }
   read_param(p, "exaggeration", job.exaggeration);
   read_param(p, "sample_pixels", job.sample_pixels);
+  if (p.contains("bend_start") && !p.contains("bend_radius"))
+    throw Error("params.bend_start is given without params.bend_radius: it bends nothing");
   read_param(p, "bend_radius", job.bend.radius);
   read_param(p, "bend_start", job.bend.start);
   read_param(p, "haze_distance", job.haze_distance);
   read_param(p, "strip_rows", job.strip_rows);
+  read_param(p, "shadows", job.shadows);
   if (p.contains("sun")) {
     job.sun_azimuth = p.at("sun")[0].get<double>();
     job.sun_altitude = p.at("sun")[1].get<double>();

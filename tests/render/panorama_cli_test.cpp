@@ -315,7 +315,8 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const Fixture& f = fixture();
   const std::string options =
       "--look-at 10.15 45.15 700 --fov 40 --size 240 150 --exaggeration 1.5 --bend-radius 40000 "
-      "--bend-start 2000 --haze-distance 30000 --sun 200 30 --land-cover lc --no-stretch";
+      "--bend-start 2000 --haze-distance 30000 --sun 200 30 --shadows --land-cover lc "
+      "--no-stretch";
   ASSERT_EQ(run_maquette(f.render(f.dir + "/cmd.png", options)).exit_code, 0);
   auto pipeline = [&](const std::string& params) {
     std::ofstream(f.dir + "/pipeline.json")
@@ -328,7 +329,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const auto r = pipeline(
       R"("look_at": [10.15, 45.15, 700], "fov": 40, "size": [240, 150], "exaggeration": 1.5,
          "bend_radius": 40000, "bend_start": 2000, "haze_distance": 30000, "sun": [200, 30],
-         "land_cover": "lc", "stretch": false)");
+         "shadows": true, "land_cover": "lc", "stretch": false)");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(f.dir + "/step/pano.png"), slurp(f.dir + "/cmd.png"));
   EXPECT_EQ(slurp(f.dir + "/step/pano-guides.tif"), slurp(f.dir + "/cmd-guides.tif"));
@@ -344,6 +345,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("look_at": [10.15, 45.15, 700], "pitch": -5)", "\"look_at\" or");
   expect_error(R"("layer": "dem")", "params.layer: not an option of format panorama");
   expect_error(R"("fov": 175)", "camera fov 175");
+  expect_error(R"("bend_start": 2000)", "params.bend_start is given without params.bend_radius");
 }
 
 // Steep hills (800 m high, 700 m to 1 km apart) in 64-pixel tiles, so the level by distance
