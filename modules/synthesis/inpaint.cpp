@@ -1,0 +1,293 @@
+#include "inpaint.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "masked_pyramid.h"
+
+namespace maquette::synthesis {
+namespace {
+
+// The patches' and pixels' roles at one pyramid level (inpaint.h).
+struct Roles {
+  int width = 0, height = 0;
+  std::vector<uint8_t> region;  // resynthesized: the hole and its band, nodata excluded
+  PatchCentres targets, references, completeness;
+};
+
+Roles roles_at(const MaskedImage& level, const std::vector<uint8_t>& hole,
+               const InpaintParams& params) {
+  const int w = level.image.width, h = level.image.height, half = params.patch / 2;
+  std::vector<uint8_t> nodata(hole.size());
+  for (size_t i = 0; i < hole.size(); ++i) nodata[i] = level.unknown[i] != 0 && hole[i] == 0;
+  const auto to_hole = chessboard_distance(hole, w, h);
+  const auto to_nodata = chessboard_distance(nodata, w, h);
+  Roles r{w,
+          h,
+          std::vector<uint8_t>(hole.size(), 0),
+          PatchCentres(w, h),
+          PatchCentres(w, h),
+          PatchCentres(w, h)};
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      r.region[i] = to_hole[i] <= params.band && nodata[i] == 0;
+      if (x < half || y < half || x >= w - half || y >= h - half) continue;
+      const bool overlaps_region = to_hole[i] <= params.band + half;
+      r.targets.member[i] = overlaps_region;
+      r.references.member[i] = !overlaps_region && to_nodata[i] > half;
+      r.completeness.member[i] =
+          r.references.member[i] && to_hole[i] <= params.band + half + params.patch;
+    }
+  }
+  return r;
+}
+
+bool any(const std::vector<uint8_t>& v) {
+  return std::any_of(v.begin(), v.end(), [](uint8_t m) { return m != 0; });
+}
+
+// Gives the pixels of `mask` the mean of their known 8-neighbours, layer by layer from the known
+// pixels inward (each layer from the state before it): a smooth provisional fill.
+void fill_by_diffusion(PatchImage& image, std::vector<uint8_t> mask) {
+  const int w = image.width, h = image.height, c = image.channels;
+  std::vector<size_t> layer;
+  std::vector<float> values;
+  while (true) {
+    layer.clear();
+    values.clear();
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        if (mask[size_t(y) * w + x] == 0) continue;
+        std::vector<double> sum(c, 0.0);
+        int n = 0;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h || mask[size_t(ny) * w + nx] != 0) continue;
+            for (int i = 0; i < c; ++i) sum[i] += image.pixel(nx, ny)[i];
+            ++n;
+          }
+        }
+        if (n == 0) continue;
+        layer.push_back(size_t(y) * w + x);
+        for (int i = 0; i < c; ++i) values.push_back(float(sum[i] / n));
+      }
+    }
+    if (layer.empty()) return;
+    for (size_t k = 0; k < layer.size(); ++k) {
+      std::copy_n(values.begin() + k * c, c, image.values.begin() + layer[k] * c);
+      mask[layer[k]] = 0;
+    }
+  }
+}
+
+// A field for `queries` starting from the matches of the next level up (doubled, the query's
+// offset within its 2 x 2 kept); the search re-draws those that are no reference patch here.
+NearestField upsampled_field(const PatchCentres& queries, const NearestField& coarse,
+                             int coarse_width, int coarse_height) {
+  NearestField field = empty_field(queries);
+  for (size_t e = 0; e < field.size(); ++e) {
+    const int x = field.query_x[e], y = field.query_y[e];
+    const int cx = std::min(x / 2, coarse_width - 1), cy = std::min(y / 2, coarse_height - 1);
+    const int32_t c = coarse.index[size_t(cy) * coarse_width + cx];
+    if (c < 0) continue;
+    field.match_x[e] = 2 * coarse.match_x[c] + (x - 2 * cx);
+    field.match_y[e] = 2 * coarse.match_y[c] + (y - 2 * cy);
+  }
+  return field;
+}
+
+// Wexler's similarity weights: exp(-cost / 2 sigma^2), sigma^2 the 75th percentile of the costs.
+std::vector<double> vote_weights(const NearestField& field) {
+  std::vector<float> sorted = field.cost;
+  std::vector<double> weights(field.size(), 1.0);
+  if (sorted.empty()) return weights;
+  const auto p75 = sorted.begin() + ptrdiff_t(sorted.size() * 3 / 4);
+  std::nth_element(sorted.begin(), p75, sorted.end());
+  const double sigma2 = std::max(double(*p75), 1e-6);
+  for (size_t e = 0; e < field.size(); ++e) weights[e] = std::exp(-field.cost[e] / (2 * sigma2));
+  return weights;
+}
+
+// A level's first matches: the field's own where they are reference patches, random elsewhere,
+// no search (their costs computed).
+FieldSearchParams start_params(const InpaintParams& params, int level) {
+  return {params.patch, 0, params.seed, level * (params.em_iterations + 1)};
+}
+
+// One maximization step: each pixel of the region set to the weighted mean of its votes, or with
+// `best_only` to the value the lowest-cost target patch covering it proposes.
+void vote(const Roles& roles, const NearestField& coherence, const NearestField& completeness,
+          const InpaintParams& params, PatchImage& image, bool best_only) {
+  const int w = roles.width, h = roles.height, c = image.channels, half = params.patch / 2;
+  const auto coherence_weights = vote_weights(coherence);
+  const auto completeness_weights = vote_weights(completeness);
+  const double coherence_scale = 1.0 / double(std::max<size_t>(coherence.size(), 1));
+  const double completeness_scale =
+      params.completeness / double(std::max<size_t>(completeness.size(), 1));
+  std::vector<double> sum(size_t(w) * h * c, 0.0), weight(size_t(w) * h, 0.0);
+  // Completeness: each reference patch near the region votes into its nearest target patch
+  // (scattered, in the field's order).
+  for (size_t e = 0; e < completeness.size(); ++e) {
+    const double k = completeness_weights[e] * completeness_scale;
+    const int sx = completeness.query_x[e], sy = completeness.query_y[e];
+    const int tx = completeness.match_x[e], ty = completeness.match_y[e];
+    for (int dy = -half; dy <= half; ++dy) {
+      for (int dx = -half; dx <= half; ++dx) {
+        const size_t q = size_t(ty + dy) * w + (tx + dx);
+        if (roles.region[q] == 0) continue;
+        const float* v = image.pixel(sx + dx, sy + dy);
+        for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
+        weight[q] += k;
+      }
+    }
+  }
+  // Coherence: every target patch covering a pixel proposes its match's value there (gathered,
+  // rows in parallel, each pixel's votes in a fixed order).
+  PatchImage next = image;
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t q = size_t(y) * w + x;
+      if (roles.region[q] == 0) continue;
+      float best_cost = std::numeric_limits<float>::infinity();
+      for (int dy = -half; dy <= half; ++dy) {
+        for (int dx = -half; dx <= half; ++dx) {
+          const int tx = x - dx, ty = y - dy;
+          if (tx < 0 || ty < 0 || tx >= w || ty >= h) continue;
+          const int32_t e = coherence.index[size_t(ty) * w + tx];
+          if (e < 0) continue;
+          if (best_only) {
+            if (coherence.cost[e] < best_cost) {
+              best_cost = coherence.cost[e];
+              std::copy_n(image.pixel(coherence.match_x[e] + dx, coherence.match_y[e] + dy), c,
+                          next.pixel(x, y));
+            }
+            continue;
+          }
+          const double k = coherence_weights[e] * coherence_scale;
+          const float* v = image.pixel(coherence.match_x[e] + dx, coherence.match_y[e] + dy);
+          for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
+          weight[q] += k;
+        }
+      }
+      if (best_only || weight[q] <= 0) continue;
+      for (int i = 0; i < c; ++i) next.pixel(x, y)[i] = float(sum[q * c + i] / weight[q]);
+    }
+  });
+  image = std::move(next);
+}
+
+// Levels until the hole is at most half a patch thick, while the image keeps 4 patches a side.
+int level_count(const std::vector<uint8_t>& hole, int width, int height, int patch) {
+  std::vector<uint8_t> outside(hole.size());
+  for (size_t i = 0; i < hole.size(); ++i) outside[i] = hole[i] == 0;
+  const auto depth = chessboard_distance(outside, width, height);
+  int thickness = 0;
+  for (size_t i = 0; i < hole.size(); ++i) {
+    if (hole[i] != 0) thickness = std::max(thickness, depth[i]);
+  }
+  int levels = 1;
+  while ((thickness >> (levels - 1)) > patch / 2 &&
+         std::min(width, height) >> levels >= 4 * patch) {
+    ++levels;
+  }
+  return levels;
+}
+
+void check(const PatchImage& image, const std::vector<uint8_t>& hole, const InpaintParams& p) {
+  const auto fail = [](const std::string& what) { throw Error("inpaint: " + what); };
+  if (p.patch < 3 || p.patch % 2 == 0) {
+    fail("patch " + std::to_string(p.patch) + " is not an odd side of at least 3");
+  }
+  if (p.band < 0) fail("band " + std::to_string(p.band) + " is negative");
+  if (p.em_iterations < 1) fail("em_iterations " + std::to_string(p.em_iterations) + " < 1");
+  if (p.search_iterations < 1) {
+    fail("search_iterations " + std::to_string(p.search_iterations) + " < 1");
+  }
+  if (!(p.completeness >= 0)) fail("completeness " + std::to_string(p.completeness) + " < 0");
+  if (hole.size() != image.values.size() / std::max(image.channels, 1)) {
+    fail("the hole mask has " + std::to_string(hole.size()) + " pixels, the image " +
+         std::to_string(size_t(image.width) * image.height));
+  }
+}
+
+}  // namespace
+
+PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
+                   const InpaintParams& params, const NearestFieldSearch& search) {
+  check(image, hole, params);
+  const int w = image.width, h = image.height, c = image.channels;
+  MaskedImage base{image, std::vector<uint8_t>(hole.size(), 0)};
+  for (size_t i = 0; i < hole.size(); ++i) {
+    base.unknown[i] = hole[i] != 0 || std::isnan(image.values[i * c]);
+  }
+  const int levels = level_count(hole, w, h, params.patch);
+  const auto pyramid = masked_pyramid(std::move(base), levels);
+  std::vector<std::vector<uint8_t>> holes{hole};
+  for (int l = 1; l < levels; ++l) {
+    const auto& finer = pyramid[l - 1].image;
+    holes.push_back(halve_mask(holes.back(), finer.width, finer.height));
+  }
+  PatchImage work;  // the completed image of the level last processed
+  NearestField coherence, completeness;
+  int coarse_w = 0, coarse_h = 0;
+  for (int l = levels - 1; l >= 0; --l) {
+    const Roles roles = roles_at(pyramid[l], holes[l], params);
+    if (!any(roles.references.member)) {
+      if (l > 0) continue;  // too coarse for a patch outside the hole: start finer
+      throw Error("inpaint: no " + std::to_string(params.patch) + " x " +
+                  std::to_string(params.patch) + " patch lies wholly outside the hole, its band (" +
+                  std::to_string(params.band) + " pixels) and the nodata");
+    }
+    PatchImage level = pyramid[l].image;
+    const bool coarsest = work.width == 0;
+    if (coarsest) {
+      fill_by_diffusion(level, pyramid[l].unknown);
+      coherence = empty_field(roles.targets);
+      completeness = empty_field(roles.completeness);
+    } else {
+      upsample_into(work, holes[l], level);
+      std::vector<uint8_t> nodata(holes[l].size());
+      for (size_t i = 0; i < nodata.size(); ++i) {
+        nodata[i] = pyramid[l].unknown[i] != 0 && holes[l][i] == 0;
+      }
+      fill_by_diffusion(level, nodata);
+      coherence = upsampled_field(roles.targets, coherence, coarse_w, coarse_h);
+      completeness = upsampled_field(roles.completeness, completeness, coarse_w, coarse_h);
+    }
+    // The level's first values from its first matches: on the coarsest level random ones, each
+    // pixel given the value of the best covering it (a start with the image's contrast: searching
+    // from the smooth diffusion fill finds smooth ground); on the others the coarser level's
+    // matches upsampled, with their own detail (searching from the bilinear start finds blur).
+    search.improve(level, level, roles.references, start_params(params, l), coherence);
+    search.improve(level, level, roles.targets, start_params(params, l), completeness);
+    vote(roles, coherence, completeness, params, level, coarsest);
+    for (int it = 0; it < params.em_iterations; ++it) {
+      const FieldSearchParams fp{params.patch, params.search_iterations, params.seed,
+                                 l * (params.em_iterations + 1) + it + 1};
+      search.improve(level, level, roles.references, fp, coherence);
+      if (params.completeness > 0 && completeness.size() > 0) {
+        search.improve(level, level, roles.targets, fp, completeness);
+      }
+      vote(roles, coherence, completeness, params, level, false);
+    }
+    work = std::move(level);
+    coarse_w = roles.width;
+    coarse_h = roles.height;
+  }
+  PatchImage result = image;
+  const Roles finest = roles_at(pyramid[0], hole, params);
+  for (size_t i = 0; i < hole.size(); ++i) {
+    if (finest.region[i] != 0)
+      std::copy_n(work.values.begin() + i * c, c, result.values.begin() + i * c);
+  }
+  return result;
+}
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,45 @@
+// Image completion (paper 002 §6, the clone brush's removal): a hole filled from the rest of the
+// image by Simakov, Caspi, Shechtman and Irani's bidirectional similarity ("Summarizing visual data
+// using bidirectional similarity", CVPR 2008) solved as Wexler, Shechtman and Irani's
+// expectation-maximization ("Space-time completion of video", PAMI 2007), coarse to fine on a
+// Gaussian pyramid, the nearest-neighbour fields found by a NearestFieldSearch (PatchMatch).
+//
+// Roles of the pixels, at every level: the region R resynthesized is the hole and the pixels
+// within `band` (chessboard) of it, the paper's band of width d, so the fill's edge lies in
+// resynthesized pixels and does not show. Target patches are those overlapping R (their pixels
+// outside R are fixed: coherence with the surroundings); reference patches lie wholly outside R
+// (and clear of nodata). Each iteration matches every target patch to its nearest reference
+// patch (coherence: nothing in R unlike the rest) and every reference patch near R (within one
+// patch of the target patches) to its nearest target patch (completeness: what surrounds the hole
+// is found in it), then sets each pixel of R to the weighted mean of the values the matched
+// patches covering it propose (weights exp(-SSD / 2 sigma^2), sigma^2 the 75th percentile of the
+// SSDs, as Wexler; the completeness votes scaled by `completeness` and both normalized by their
+// patch counts, as Simakov).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "nearest_field.h"
+
+namespace maquette::synthesis {
+
+struct InpaintParams {
+  int patch = 7;              // side of the square patches (odd, >= 3)
+  int band = 3;               // pixels around the hole resynthesized too (>= 0)
+  int em_iterations = 8;      // expectation-maximization iterations per pyramid level (>= 1)
+  int search_iterations = 2;  // passes of the field search per iteration (>= 1)
+  double completeness = 3;    // weight of the completeness votes (0: coherence alone, Wexler)
+  uint64_t seed = 0;          // of the search's random draws
+};
+
+// `image` with its pixels where `hole` is non-zero (width * height) filled, and those within
+// `band` of the hole resynthesized; every other pixel keeps its bits. NaN pixels outside the hole
+// are nodata: never copied, kept NaN (their neighbours are resynthesized from a provisional
+// diffusion fill there). The result depends on the inputs and params only, never on the thread
+// count. Throws maquette::Error for invalid params, a mask of another size, or an image where no
+// patch lies wholly outside the hole, its band and the nodata.
+PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
+                   const InpaintParams& params, const NearestFieldSearch& search);
+
+}  // namespace maquette::synthesis

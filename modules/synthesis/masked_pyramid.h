@@ -1,0 +1,34 @@
+// A Gaussian pyramid of an image with unknown pixels (a hole, nodata): each coarser level halves
+// the sides (rounded up), its pixels the binomial 5 x 5 average of the known pixels beneath
+// (weights renormalized over them); a coarser pixel is unknown when one of the 2 x 2 finer pixels
+// it covers is (so the hole never shrinks on the way up), and the chessboard distances that
+// decide the hole's band and the patches' roles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "nearest_field.h"
+
+namespace maquette::synthesis {
+
+struct MaskedImage {
+  PatchImage image;
+  std::vector<uint8_t> unknown;  // width * height, non-zero: no value (the image holds anything)
+};
+
+// `mask` (width x height) at the next level up: a pixel is set when one of the 2 x 2 it covers is.
+std::vector<uint8_t> halve_mask(const std::vector<uint8_t>& mask, int width, int height);
+
+// Level 0 is `base`; each next level the one before halved, up to `levels` levels in all.
+std::vector<MaskedImage> masked_pyramid(MaskedImage base, int levels);
+
+// The chessboard distance from each pixel to the nearest pixel of `mask` (0 on it), or a value
+// above width + height when the mask is empty.
+std::vector<int32_t> chessboard_distance(const std::vector<uint8_t>& mask, int width, int height);
+
+// `fine` with its pixels in `where` set to `coarse` (the next level up) interpolated bilinearly,
+// sample centres aligned (fine pixel x at coarse x / 2 - 0.25).
+void upsample_into(const PatchImage& coarse, const std::vector<uint8_t>& where, PatchImage& fine);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,43 @@
+#include "nearest_field.h"
+
+#include <limits>
+
+namespace maquette::synthesis {
+
+NearestField empty_field(const PatchCentres& queries) {
+  NearestField field;
+  field.index.assign(queries.member.size(), -1);
+  for (int y = 0; y < queries.height; ++y) {
+    for (int x = 0; x < queries.width; ++x) {
+      if (!queries.has(x, y)) continue;
+      field.index[size_t(y) * queries.width + x] = int32_t(field.query_x.size());
+      field.query_x.push_back(x);
+      field.query_y.push_back(y);
+    }
+  }
+  field.match_x.assign(field.size(), -1);
+  field.match_y.assign(field.size(), -1);
+  field.cost.assign(field.size(), std::numeric_limits<float>::infinity());
+  return field;
+}
+
+float patch_distance(const PatchImage& query, int qx, int qy, const PatchImage& reference, int rx,
+                     int ry, int patch, float bound) {
+  const int half = patch / 2;
+  const int row_values = patch * query.channels;
+  float sum = 0;
+  for (int dy = -half; dy <= half; ++dy) {
+    const float* a = query.pixel(qx - half, qy + dy);
+    const float* b = reference.pixel(rx - half, ry + dy);
+    float row = 0;
+    for (int i = 0; i < row_values; ++i) {
+      const float d = a[i] - b[i];
+      row += d * d;
+    }
+    sum += row;
+    if (sum > bound) return sum;
+  }
+  return sum;
+}
+
+}  // namespace maquette::synthesis
