@@ -9,5 +9,6 @@ namespace maquette::synthesis {
 
 std::unique_ptr<Operator> make_transfer();
 std::unique_ptr<Operator> make_assess();
+std::unique_ptr<Operator> make_inpaint();
 
 }  // namespace maquette::synthesis
