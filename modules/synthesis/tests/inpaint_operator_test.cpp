@@ -1,13 +1,16 @@
 // synthesis.inpaint run by the real program on Zion's Landsat imagery (../shared/data) with a
 // bridge-like footprint crossing cells: the same tile bytes on one thread and two; every sample
 // farther than the band from the footprint keeps the ingested bytes; the samples under it are
-// filled (changed, none left nodata); a footprint that is no polygon is refused, naming it.
+// filled (changed, none left nodata); a bridge removed end to end (structures.bridge's mask); a
+// footprint that is no polygon is refused, naming it.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "core/geo_distance.h"
@@ -134,6 +137,97 @@ TEST(InpaintOperator, FillsTheFootprintAcrossCellsKeepsTheRestSameBitsOnTwoThrea
   EXPECT_EQ(changed_far, 0u);
   fs::remove_all(one.dir);
   fs::remove_all(two.dir);
+}
+
+// Paper 002's Fig. 16 in the pipeline: a bridge's edge strokes -> structures.bridge (its deck and
+// the footprint mask) -> synthesis.inpaint of the Landsat under the mask.
+TEST(InpaintOperator, ABridgeRemovedEndToEnd) {
+  if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const fs::path dir =
+      fs::temp_directory_path() / ("maquette-inpaint-bridge-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string store = (dir / "zion.mqt").string();
+  // Edges 2 km long, ~130 m apart.
+  std::ofstream(dir / "strokes.geojson") << json{
+      {"type", "FeatureCollection"},
+      {"features",
+       {{{"type", "Feature"},
+         {"properties", {{"tool", "bridge"}}},
+         {"geometry",
+          {{"type", "MultiLineString"},
+           {"coordinates",
+            {{{-113.02, 37.27}, {-113.0, 37.28}}, {{-113.02, 37.2712}, {-113.0, 37.2812}}}}}}}}}};
+  const json ingest_landsat = {
+      {"op", "ingest"},
+      {"outputs", {{"layer", "landsat"}}},
+      {"params", {{"sources", {kLandsat}}, {"as", "imagery"}, {"level", 10}}}};
+  json steps = zion_ingest_steps();
+  steps.push_back(ingest_landsat);
+  steps.push_back(
+      {{"op", "ingest"},
+       {"outputs", {{"layer", "strokes"}}},
+       {"params", {{"sources", {(dir / "strokes.geojson").string()}}, {"as", "features"}}}});
+  steps.push_back({{"op", "structures.bridge"},
+                   {"inputs", {{"dem", "dem"}, {"strokes", "strokes"}}},
+                   {"outputs", {{"mesh", "bridges"}, {"mask", "bridge_mask"}}}});
+  steps.push_back({{"op", "synthesis.inpaint"},
+                   {"inputs", {{"image", "landsat"}, {"mask", "bridge_mask"}}},
+                   {"outputs", {{"rgb", "filled"}}}});
+  const json pipeline = {{"store", store},
+                         {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
+                         {"level", 10},
+                         {"steps", steps}};
+  std::ofstream(dir / "pipeline.json") << pipeline.dump(1);
+  const test::CliResult r =
+      test::run_maquette("run " + (dir / "pipeline.json").string() + " --quiet --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto s = Store::open(store, Store::Mode::ReadOnly);
+  // The deck's samples by global face pixel, then every changed sample within the band of one.
+  std::set<std::array<int64_t, 3>> deck;
+  size_t under = 0, changed_under = 0, changed_beyond_band = 0;
+  const auto cells = s->tile_cells("filled");
+  for (const CellId cell : cells) {
+    const Tile<float> mask = to_tile<float>(*s->get_tile("bridge_mask", cell));
+    for (int row = 0; row < mask.size(); ++row) {
+      for (int col = 0; col < mask.size(); ++col) {
+        if (mask.at(col, row) == 1) {
+          deck.insert({cell.face(), global_col(cell, mask.size(), col),
+                       global_row(cell, mask.size(), row)});
+        }
+      }
+    }
+  }
+  for (const CellId cell : cells) {
+    const RawTile filled = *s->get_tile("filled", cell);
+    const RawTile original = *s->get_tile("landsat", cell);
+    const int n = filled.size;
+    for (int row = 0; row < n; ++row) {
+      for (int col = 0; col < n; ++col) {
+        const size_t i = (size_t(row) * n + size_t(col)) * 3;
+        const bool differs = filled.bytes[i] != original.bytes[i] ||
+                             filled.bytes[i + 1] != original.bytes[i + 1] ||
+                             filled.bytes[i + 2] != original.bytes[i + 2];
+        const int64_t gc = global_col(cell, n, col), gr = global_row(cell, n, row);
+        if (deck.count({cell.face(), gc, gr}) != 0) {
+          ++under;
+          changed_under += differs;
+          continue;
+        }
+        if (!differs) continue;
+        bool near = false;
+        for (int dy = -3; dy <= 3 && !near; ++dy) {
+          for (int dx = -3; dx <= 3 && !near; ++dx)
+            near = deck.count({cell.face(), gc + dx, gr + dy}) != 0;
+        }
+        changed_beyond_band += !near;
+      }
+    }
+  }
+  EXPECT_GT(under, 100u);
+  EXPECT_GE(double(changed_under), 0.9 * double(under));
+  EXPECT_EQ(changed_beyond_band, 0u);
+  fs::remove_all(dir);
 }
 
 TEST(InpaintOperator, AFootprintThatIsNoPolygonIsNamed) {
