@@ -1,7 +1,8 @@
 // synthesis.inpaint's completion (modules/synthesis/inpaint.h) beside OpenCV xphoto's shift-map
 // and FSR fills, on the same 1000 x 1000 window of Zion's Landsat 8 RGB (../shared/data) and the
 // same centred square holes of 5 % and 20 % of it, 7 x 7 patches; CPU time of all threads
-// (MeasureProcessCPUTime). Ours on 1 and 2 threads (xphoto's fills run on one).
+// (MeasureProcessCPUTime). Ours on 1 and 2 threads (xphoto's fills run on one). And a clone-brush
+// stroke (clone.h) over a 256 x 256 region with its context.
 #include <benchmark/benchmark.h>
 #include <gdal_priv.h>
 #include <tbb/task_arena.h>
@@ -11,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "clone.h"
 #include "inpaint.h"
 #include "patchmatch.h"
 
@@ -82,6 +84,29 @@ BENCHMARK(BM_Xphoto)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+
+// A clone-brush stroke: a 256 x 256 region of the window's 512 x 512 top-left quarter (its
+// context) copied 200 pixels to the right, its band resynthesized; on 2 threads.
+void BM_CloneStroke(benchmark::State& state) {
+  constexpr int kContext = 512, kRegion = 256;
+  PatchImage image(kContext, kContext, 3);
+  for (int y = 0; y < kContext; ++y) {
+    for (int x = 0; x < kContext; ++x) {
+      for (int c = 0; c < 3; ++c) image.pixel(x, y)[c] = landsat().at<cv::Vec3b>(y, x)[c];
+    }
+  }
+  std::vector<uint8_t> source(size_t(kContext) * kContext, 0);
+  for (int y = 128; y < 128 + kRegion; ++y) {
+    for (int x = 20; x < 20 + kRegion; ++x) source[size_t(y) * kContext + x] = 1;
+  }
+  CloneParams params;
+  params.offset_x = 200;
+  for (auto _ : state) {
+    tbb::task_arena(2).execute(
+        [&] { benchmark::DoNotOptimize(clone(image, source, params, PatchMatch())); });
+  }
+}
+BENCHMARK(BM_CloneStroke)->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 }  // namespace maquette::synthesis::bench

@@ -1,0 +1,38 @@
+// The clone brush's copy (paper 002 §6): a source region of an image copied onto a destination,
+// resized by a linear map (the slope-aware resize: a texture cloned from flat ground onto a slope
+// is foreshortened by the cosine ratio along the slope's direction), then the band across the
+// destination's edge resynthesized from both sides by inpaint() so that the edge does not show.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "inpaint.h"
+
+namespace maquette::synthesis {
+
+struct CloneParams {
+  // Where the source's bounding-box centre lands, in pixels from where it is.
+  double offset_x = 0, offset_y = 0;
+  // Source offsets from that centre to destination offsets, row-major {a, b, c, d}:
+  // destination = (a x + b y, c x + d y). Identity: a copy; {2, 0, 0, 2}: twice as large.
+  std::array<double, 4> linear = {1, 0, 0, 1};
+  // The band's resynthesis: `fill.band` pixels on each side of the destination's edge.
+  InpaintParams fill;
+};
+
+// The foreshortening map of a texture moved from ground of slope `from_deg` to ground of slope
+// `to_deg` whose downhill direction makes `aspect_deg` with the image's x axis (clockwise, y
+// down): lengths along that direction scaled by cos(to) / cos(from), across it kept.
+std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspect_deg);
+
+// `image` with the destination of `source` (non-zero, width * height) set to the source's values
+// (bilinear, through the inverse of `linear`) and the pixels within `fill.band` of the
+// destination's edge, on both sides, resynthesized. Destination pixels outside the image are
+// dropped. Throws maquette::Error for a source mask of another size, an empty source, a singular
+// map, or inpaint()'s errors.
+PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
+                 const CloneParams& params, const NearestFieldSearch& search);
+
+}  // namespace maquette::synthesis
