@@ -7,45 +7,28 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "../patchmatch.h"
 #include "core/error.h"
+#include "synthetic_images.h"
 
 namespace maquette::synthesis {
 namespace {
 
-std::vector<uint8_t> square(int w, int h, int x0, int y0, int side) {
-  std::vector<uint8_t> mask(size_t(w) * h, 0);
-  for (int y = y0; y < y0 + side; ++y) {
-    for (int x = x0; x < x0 + side; ++x) mask[size_t(y) * w + x] = 1;
-  }
-  return mask;
-}
-
 TEST(Clone, APeriodicTextureClonedByWholePeriodsOntoABlankIsWholeAgain) {
   constexpr int kW = 120, kH = 100, kPx = 9, kPy = 7;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> value(0, 255);
-  std::vector<float> period(kPx * kPy * 3);
-  for (float& v : period) v = value(rng);
-  PatchImage image(kW, kH, 3);
-  for (int y = 0; y < kH; ++y) {
-    for (int x = 0; x < kW; ++x) {
-      std::copy_n(period.begin() + ((y % kPy) * kPx + x % kPx) * 3, 3, image.pixel(x, y));
-    }
-  }
+  const PatchImage image = test::periodic_texture(kW, kH, kPx, kPy, 5);
   CloneParams params;
   params.offset_x = 4 * kPx;
   params.offset_y = 5 * kPy;
   params.fill.completeness = 0;  // coherence alone: exact on a periodic texture
   // The destination (24 x 24 at (46, 43)) blanked first: only the copy can bring it back.
   PatchImage blanked = image;
-  const auto destination = square(kW, kH, 10 + 4 * kPx, 8 + 5 * kPy, 24);
+  const auto destination = test::square_mask(kW, kH, 10 + 4 * kPx, 8 + 5 * kPy, 24);
   for (size_t i = 0; i < destination.size(); ++i) {
     if (destination[i] != 0) std::fill_n(blanked.values.begin() + i * 3, 3, 0.0f);
   }
-  const PatchImage out = clone(blanked, square(kW, kH, 10, 8, 24), params, PatchMatch());
+  const PatchImage out = clone(blanked, test::square_mask(kW, kH, 10, 8, 24), params, PatchMatch());
   float worst = 0;
   for (size_t i = 0; i < image.values.size(); ++i) {
     worst = std::max(worst, std::abs(out.values[i] - image.values[i]));
@@ -66,7 +49,7 @@ TEST(Clone, ACheckerboardClonedAtTwiceTheSizeHasSquaresTwiceAsLarge) {
   params.offset_y = 20;
   params.linear = {2, 0, 0, 2};
   // Source 24 x 24 at (12, 12): its centre (23.5, 23.5) lands at (93.5, 43.5), 48 x 48 around it.
-  const PatchImage out = clone(image, square(kW, kH, 12, 12, 24), params, PatchMatch());
+  const PatchImage out = clone(image, test::square_mask(kW, kH, 12, 12, 24), params, PatchMatch());
   // Along the destination's middle row, away from the band: the runs of one colour.
   const int row = 43, band = params.fill.band;
   std::vector<int> runs;
@@ -113,7 +96,8 @@ TEST(Clone, RefusesAnEmptySourceAndASingularMap) {
   };
   EXPECT_EQ(message(std::vector<uint8_t>(1600, 0), {1, 0, 0, 1}),
             "clone: the source region is empty");
-  EXPECT_EQ(message(square(40, 40, 5, 5, 8), {1, 2, 2, 4}), "clone: the map is singular");
+  EXPECT_EQ(message(test::square_mask(40, 40, 5, 5, 8), {1, 2, 2, 4}),
+            "clone: the map is singular");
 }
 
 }  // namespace

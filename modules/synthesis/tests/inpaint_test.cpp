@@ -7,44 +7,23 @@
 
 #include <cmath>
 #include <iostream>
-#include <random>
 #include <utility>
 
 #include "../patchmatch.h"
 #include "core/error.h"
+#include "synthetic_images.h"
 
 namespace maquette::synthesis {
 namespace {
 
 constexpr int kPeriodX = 9, kPeriodY = 7;
 
-// Each pixel the colour of its place in a 9 x 7 period of random colours.
-PatchImage periodic(int w, int h) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> value(0, 255);
-  std::vector<float> period(kPeriodX * kPeriodY * 3);
-  for (float& v : period) v = value(rng);
-  PatchImage image(w, h, 3);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      std::copy_n(period.begin() + ((y % kPeriodY) * kPeriodX + x % kPeriodX) * 3, 3,
-                  image.pixel(x, y));
-    }
-  }
-  return image;
-}
-
-std::vector<uint8_t> square_hole(int w, int h, int x0, int y0, int side) {
-  std::vector<uint8_t> hole(size_t(w) * h, 0);
-  for (int y = y0; y < y0 + side; ++y) {
-    for (int x = x0; x < x0 + side; ++x) hole[size_t(y) * w + x] = 1;
-  }
-  return hole;
-}
+// A 9 x 7 period of random colours.
+PatchImage periodic(int w, int h) { return test::periodic_texture(w, h, kPeriodX, kPeriodY, 11); }
 
 TEST(Inpaint, FillsAPeriodicTextureBackToItsPeriod) {
   const PatchImage truth = periodic(128, 112);
-  const auto hole = square_hole(128, 112, 44, 38, 36);
+  const auto hole = test::square_mask(128, 112, 44, 38, 36);
   PatchImage damaged = truth;
   for (size_t i = 0; i < hole.size(); ++i) {
     if (hole[i] != 0) std::fill_n(damaged.values.begin() + i * 3, 3, 0.0f);
@@ -89,7 +68,7 @@ TEST(Inpaint, KeepsEveryPixelBeyondTheBandAndTheNodata) {
     for (int x = 0; x < 96; ++x) image.pixel(x, y)[1] += float(x);
   }
   for (int y = 0; y < 5; ++y) std::fill_n(image.pixel(0, y), 3 * 20, NAN);  // nodata corner
-  const auto hole = square_hole(96, 80, 30, 30, 16);
+  const auto hole = test::square_mask(96, 80, 30, 30, 16);
   InpaintParams params;
   params.band = 4;
   const PatchImage filled = inpaint(image, hole, params, PatchMatch());
@@ -116,7 +95,7 @@ TEST(Inpaint, KeepsEveryPixelBeyondTheBandAndTheNodata) {
 
 TEST(Inpaint, RefusesBadParamsAndAnImageWithoutAPatchOutsideTheHole) {
   const PatchImage image = periodic(40, 40);
-  const auto hole = square_hole(40, 40, 10, 10, 8);
+  const auto hole = test::square_mask(40, 40, 10, 10, 8);
   const auto message = [&](InpaintParams p, const std::vector<uint8_t>& mask) {
     try {
       inpaint(image, mask, p, PatchMatch());
@@ -130,7 +109,7 @@ TEST(Inpaint, RefusesBadParamsAndAnImageWithoutAPatchOutsideTheHole) {
   EXPECT_EQ(message(even, hole), "inpaint: patch 6 is not an odd side of at least 3");
   EXPECT_EQ(message({}, std::vector<uint8_t>(10, 0)),
             "inpaint: the hole mask has 10 pixels, the image 1600");
-  EXPECT_EQ(message({}, square_hole(40, 40, 2, 2, 36)),
+  EXPECT_EQ(message({}, test::square_mask(40, 40, 2, 2, 36)),
             "inpaint: no 7 x 7 patch lies wholly outside the hole, its band (3 pixels) and the "
             "nodata");
 }
