@@ -20,8 +20,8 @@ constexpr int kTile = 256;
 
 void BM_Analyse(benchmark::State& state) {
   const ExemplarLevel& finest = zion_exemplar()->pyramid.levels[0];
-  Exemplar e{finest.width,  finest.height,   finest.rgb,
-             finest.labels, finest.altitude, finest.excluded};
+  Exemplar e{finest.width,    finest.height,   finest.rgb,     finest.labels,
+             finest.altitude, finest.excluded, finest.distance};
   for (float& v : e.rgb) v *= 255.0f;  // analyse_exemplar's input range
   for (auto _ : state)
     tbb::task_arena(2).execute(

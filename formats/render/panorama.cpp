@@ -108,7 +108,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.height = h;
   p.first_row = f.first_row;
   p.rgb.assign(3 * n, 0);
-  for (auto* guide : {&p.altitude, &p.distance, &p.lon, &p.lat}) guide->assign(n, NAN);
+  for (auto* guide : {&p.altitude, &p.distance, &p.lon, &p.lat, &p.shading}) guide->assign(n, NAN);
   if (look.land_cover) p.land_cover.assign(n, NAN);
   if (look.shadow) p.cast_shadow.assign(n, NAN);
   p.silhouette.assign(n, 0);
@@ -154,6 +154,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         sunlit = 1 - p.cast_shadow[i];
       }
       shades[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
+      p.shading[i] = shades[i];
     }
   });
 

@@ -4,7 +4,8 @@
 // under a sun, faded into the haze with distance (aerial perspective: a fraction 1 - exp(-distance
 // / haze_distance) of the haze colour), over a sky graded from the haze colour at the horizon to
 // blue at 30 degrees up. Guides per pixel: the DEM's altitude, the distance from the eye, lon/lat,
-// the land-cover class when a categorical layer is given (nearest sample), and silhouettes: terrain
+// the land-cover class when a categorical layer is given (nearest sample), the shading factor, and
+// silhouettes: terrain
 // pixels on the near side of a depth discontinuity (a 4-neighbour is sky or more than
 // `silhouette_jump` times farther). Rows are shaded in parallel, each pixel from its own fragment:
 // the same bits for any threads. A strip of rows of the picture (render/panorama_strips.h) is
@@ -45,6 +46,9 @@ struct Panorama {
   // Per pixel, NaN on the sky: metres of the DEM's datum, metres from the eye, degrees, class.
   std::vector<double> altitude, distance, lon, lat, land_cover;
   std::vector<double> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
+  // The factor the surface's colour was shaded by: hillshade times sunlit share, 0.3 to 1 (the
+  // transfer in the picture blends its colours with it).
+  std::vector<double> shading;
   std::vector<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 

@@ -34,7 +34,8 @@ struct PanoramaWriter::Files {
 
 namespace {
 
-// The guides written, in band order: the four always there, then those computed.
+// The guides written, in band order: the four always there, those computed, then the shading
+// (last, so that the earlier bands keep their numbers).
 std::vector<std::pair<const char*, const std::vector<double>*>> guide_bands(const Panorama* p,
                                                                             bool land_cover,
                                                                             bool cast_shadow) {
@@ -45,6 +46,7 @@ std::vector<std::pair<const char*, const std::vector<double>*>> guide_bands(cons
       {"lat", p ? &p->lat : nullptr}};
   if (land_cover) bands.emplace_back("land_cover", p ? &p->land_cover : nullptr);
   if (cast_shadow) bands.emplace_back("cast_shadow", p ? &p->cast_shadow : nullptr);
+  bands.emplace_back("shading", p ? &p->shading : nullptr);
   return bands;
 }
 

@@ -14,6 +14,7 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
   s.labels.assign(n, 0);
   s.excluded.assign(n, 0);
   if (!e.altitude.empty()) s.altitude.assign(n, 0.0f);
+  if (!e.distance.empty()) s.distance.assign(n, 0.0f);
   const float area = float(factor * factor);
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x) {
@@ -26,6 +27,7 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
           for (int c = 0; c < 3; ++c) s.rgb[3 * i + size_t(c)] += e.rgb[3 * j + size_t(c)] / area;
           s.excluded[i] |= e.excluded[j];
           if (!e.altitude.empty()) s.altitude[i] += e.altitude[j] / area;
+          if (!e.distance.empty()) s.distance[i] += e.distance[j] / area;
         }
     }
   return s;

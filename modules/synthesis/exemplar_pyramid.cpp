@@ -42,6 +42,8 @@ ExemplarLevel coarser(const ExemplarLevel& f) {
   c.rgb = blur_decimate(f.rgb, f.width, f.height, 3, c.width, c.height);
   if (!f.altitude.empty())
     c.altitude = blur_decimate(f.altitude, f.width, f.height, 1, c.width, c.height);
+  if (!f.distance.empty())
+    c.distance = blur_decimate(f.distance, f.width, f.height, 1, c.width, c.height);
   c.labels.resize(size_t(c.width) * size_t(c.height));
   c.excluded.resize(c.labels.size());
   for (int y = 0; y < c.height; ++y)
@@ -158,6 +160,7 @@ ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k) {
   for (size_t i = 0; i < exemplar.rgb.size(); ++i) finest.rgb[i] = exemplar.rgb[i] / 255.0f;
   finest.labels = exemplar.labels;
   finest.altitude = exemplar.altitude;
+  finest.distance = exemplar.distance;
   finest.excluded = exemplar.excluded;
   pyramid.levels.push_back(std::move(finest));
   for (int l = 1; l < levels; ++l) pyramid.levels.push_back(coarser(pyramid.levels.back()));

@@ -30,6 +30,7 @@ struct ExemplarLevel {
   std::vector<float> rgb;         // 3 per pixel, 0..1
   std::vector<uint8_t> labels;    // painting class
   std::vector<float> altitude;    // [0, 1], or empty
+  std::vector<float> distance;    // [0, 1] (1: far), or empty
   std::vector<uint8_t> excluded;  // 1: never a candidate
   PatchBasis basis;
   std::vector<float> features;  // kFeatureDims per pixel
@@ -49,9 +50,9 @@ struct ExemplarPyramid {
   std::vector<ExemplarLevel> levels;  // finest first
 };
 
-// `levels` >= 1 levels, each half the size of the previous one (rounded up): colours and
-// altitude filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and decimated;
-// labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
+// `levels` >= 1 levels, each half the size of the previous one (rounded up): colours,
+// altitude and distance filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and
+// decimated; labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
 // Deterministic for any threads (the k nearest searches run in parallel, each query on its own,
 // ties broken by index). Throws maquette::Error when a level has no allowed pixel.
 ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k);

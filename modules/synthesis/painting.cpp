@@ -43,11 +43,11 @@ std::vector<uint8_t> majority_filtered(const std::vector<uint8_t>& labels, int w
 
 }  // namespace
 
-Exemplar read_painting(const std::string& path) {
-  const auto ds = open_image(path, "painting");
+Exemplar read_painting(const std::string& path, const std::string& what) {
+  const auto ds = open_image(path, what);
   const int bands = ds->GetRasterCount();
   if (bands < 1 || bands > 4)
-    throw Error(path + ": a painting has 1 (grey), 3 or 4 (RGB, alpha) bands, not " +
+    throw Error(path + ": a " + what + " has 1 (grey), 3 or 4 (RGB, alpha) bands, not " +
                 std::to_string(bands));
   Exemplar e;
   e.width = ds->GetRasterXSize();
@@ -57,7 +57,7 @@ Exemplar read_painting(const std::string& path) {
   std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
   if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, rgb.data(), e.width, e.height, GDT_Byte, 3,
                    band_map.data(), 3, long(e.width) * 3, 1, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the painting's pixels");
+    throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
   e.rgb.assign(rgb.begin(), rgb.end());
   e.labels.assign(n, 0);
   e.excluded.assign(n, 0);

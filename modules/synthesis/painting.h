@@ -12,8 +12,8 @@ namespace maquette::synthesis {
 
 // The painting's pixels (RGB; a grey image's band repeated, an alpha band dropped), with no
 // labels, altitude or exclusion yet. Throws maquette::Error naming the file when GDAL cannot
-// open or read it or its bands do not fit.
-Exemplar read_painting(const std::string& path);
+// open or read it or its bands do not fit, calling it `what`.
+Exemplar read_painting(const std::string& path, const std::string& what = "painting");
 
 // A one-band 8-bit image (a class image, an exclusion mask, an altitude) that must have the
 // painting's size; `what` names it in errors.

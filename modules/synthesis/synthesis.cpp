@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/error.h"
 #include "pixel_hash.h"
@@ -75,7 +76,7 @@ struct State {
 struct LevelGuides {
   PixelRect rect;
   std::vector<uint8_t> labels;
-  std::vector<float> altitude;  // empty: none
+  std::vector<float> altitude, distance, depth;  // empty: none
 
   size_t index(int64_t col, int64_t row) const {
     return size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0);
@@ -83,9 +84,16 @@ struct LevelGuides {
 };
 
 LevelGuides level_guides(const TargetGuides& g, int level, const PixelRect& rect) {
-  LevelGuides out{rect, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)), {}};
-  const bool altitude = !g.altitude.empty();
-  if (altitude) out.altitude.resize(out.labels.size());
+  LevelGuides out{rect, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)), {}, {}, {}};
+  // The guides given, each sampled as the labels are.
+  std::vector<std::pair<const std::vector<float>*, std::vector<float>*>> scalars;
+  for (const auto& [from, to] :
+       {std::pair{&g.altitude, &out.altitude}, std::pair{&g.distance, &out.distance},
+        std::pair{&g.depth, &out.depth}})
+    if (!from->empty()) {
+      to->resize(out.labels.size());
+      scalars.emplace_back(from, to);
+    }
   const int64_t centre = level > 0 ? int64_t(1) << (level - 1) : 0;
   for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
     for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
@@ -97,7 +105,7 @@ LevelGuides level_guides(const TargetGuides& g, int level, const PixelRect& rect
                     std::to_string(g.rect.row0) + ") do not cover the window and its halo");
       const size_t gi = size_t(gr) * size_t(g.rect.width) + size_t(gc), i = out.index(col, row);
       out.labels[i] = g.labels[gi];
-      if (altitude) out.altitude[i] = g.altitude[gi];
+      for (const auto& [from, to] : scalars) (*to)[i] = (*from)[gi];
     }
   return out;
 }
@@ -106,6 +114,14 @@ LevelGuides level_guides(const TargetGuides& g, int level, const PixelRect& rect
 const std::vector<int32_t>& start_pool(const ExemplarLevel& e, uint8_t label) {
   if (label != kUnknownLabel && !e.by_label[label].empty()) return e.by_label[label];
   return e.allowed;
+}
+
+// The squared difference of a target guide at `i` and exemplar pixel `c`'s value (0 when either
+// has none).
+double guide_mismatch(const std::vector<float>& target, size_t i,
+                      const std::vector<float>& exemplar, int32_t c) {
+  if (target.empty() || exemplar.empty() || std::isnan(target[i])) return 0;
+  return std::pow(double(target[i]) - double(exemplar[size_t(c)]), 2);
 }
 
 // The reuse penalty's window: offsets at Chebyshev distance 2 .. kRepetitionRadius.
@@ -155,24 +171,30 @@ class Corrector {
       for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx)
         around.labels[t++] = g_.labels[g_.index(col + dx, row + dy)];
 
+    // The neighbours' sources shifted; those of neighbours across a depth break are forbidden:
+    // they would continue a patch across a silhouette.
+    std::array<int32_t, kPatchSide * kPatchSide> shifted{}, forbidden{};
+    size_t m = 0, f = 0;
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
+        const int32_t s = state.at(col + dx, row + dy);
+        shifted[m] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
+                              std::clamp(s / e_.width - dy, 0, e_.height - 1));
+        if (across_depth_break(g_.index(col, row), g_.index(col + dx, row + dy)))
+          forbidden[f++] = shifted[m];
+        ++m;
+      }
     std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
     size_t n = 0;
     const auto add = [&](int32_t c) {
       if (c < 0 || e_.excluded[size_t(c)] || n == candidates.size()) return;
-      if (std::find(candidates.begin(), candidates.begin() + ptrdiff_t(n), c) !=
-          candidates.begin() + ptrdiff_t(n))
-        return;
-      candidates[n++] = c;
+      const auto in = [c](const auto& list, size_t count) {
+        return std::find(list.begin(), list.begin() + ptrdiff_t(count), c) !=
+               list.begin() + ptrdiff_t(count);
+      };
+      if (!in(candidates, n) && !in(forbidden, f)) candidates[n++] = c;
     };
     // Coherent candidates first (the neighbours' sources, shifted), then their similar patches.
-    std::array<int32_t, kPatchSide * kPatchSide> shifted{};
-    size_t m = 0;
-    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
-      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
-        const int32_t s = state.at(col + dx, row + dy);
-        shifted[m++] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
-                                std::clamp(s / e_.width - dy, 0, e_.height - 1));
-      }
     for (const int32_t c : shifted) add(c);
     const size_t coherent = n;
     for (const int32_t c : shifted)
@@ -188,10 +210,19 @@ class Corrector {
                           (i < coherent ? 1.0 : 1.0 + p_.coherence);
       if (cost < least) least = cost, winner = candidates[i];
     }
-    return winner;
+    return winner >= 0 ? winner : state.at(col, row);  // every candidate forbidden: kept
   }
 
  private:
+  // Whether target pixels `a` and `b` of the level lie on either side of a depth break.
+  bool across_depth_break(size_t a, size_t b) const {
+    if (g_.depth.empty()) return false;
+    const float da = g_.depth[a], db = g_.depth[b];
+    if (std::isnan(da) || std::isnan(db)) return false;
+    if (std::isinf(da) || std::isinf(db)) return std::isinf(da) != std::isinf(db);
+    return std::max(da, db) > p_.depth_break * std::min(da, db);
+  }
+
   double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const Around& around,
               int64_t col, int64_t row) const {
     double colour = 0;
@@ -210,18 +241,16 @@ class Corrector {
             e_.index(std::clamp(cx + dx, 0, e_.width - 1), std::clamp(cy + dy, 0, e_.height - 1)))];
         mismatched += target != kUnknownLabel && target != source;
       }
-    double altitude = 0;
-    if (!g_.altitude.empty() && !e_.altitude.empty()) {
-      const float target = g_.altitude[g_.index(col, row)];
-      if (!std::isnan(target))
-        altitude = std::pow(double(target) - double(e_.altitude[size_t(c)]), 2);
-    }
+    const size_t i = g_.index(col, row);
+    const double altitude = guide_mismatch(g_.altitude, i, e_.altitude, c);
+    const double distance = p_.w_distance > 0 ? guide_mismatch(g_.distance, i, e_.distance, c) : 0;
     int reused = 0;  // branch-free over contiguous arrays: vectorized
     for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
       reused +=
           int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
-           p_.w_altitude * altitude + p_.w_repetition * reused / double(kRepetitionOffsets.size());
+           p_.w_altitude * altitude + p_.w_distance * distance +
+           p_.w_repetition * reused / double(kRepetitionOffsets.size());
   }
 
   const ExemplarLevel& e_;

@@ -7,15 +7,22 @@
 // and jittered by a hash of (global pixel, level, seed); then kPasses correction passes, each in
 // 2 x 2 sub-passes (pixels of one parity of global column and row at a time, in the order
 // (0,0) (1,1) (0,1) (1,0)), replace every pixel by the candidate of least cost
-//   C = D_color + w_label D_label + w_altitude D_altitude + w_repetition D_repetition
+//   C = D_color + w_label D_label + w_altitude D_altitude + w_distance D_distance
+//       + w_repetition D_repetition
 // among its k-coherence candidates (for each 3 x 3 neighbour q = p + d, the exemplar pixel
 // S(q) - d and its k most similar patches) and two random pixels of its target label, the
-// candidates other than the S(q) - d at a cost (1 + coherence) times theirs:
+// candidates other than the S(q) - d at a cost (1 + coherence) times theirs. With a depth guide
+// (a panorama's distance from the eye), a neighbour q across a depth break from p (one of the
+// two sky, or farther than depth_break times the other: the renderer's silhouettes) makes its
+// S(q) - d no candidate at all (paper 000: silhouettes as coherence breaks, so that no patch is
+// planted across ridges at different depths; a pixel with every candidate forbidden keeps its
+// source):
 //  - D_color: squared distance between the PCA features of the output's neighbourhood (the
 //    exemplar colours at S(p + d)) and of the candidate's;
 //  - D_label: the fraction of the 3 x 3 neighbourhood whose target label differs from the
 //    candidate's exemplar labels (unknown target labels match anything);
 //  - D_altitude: the squared difference of target and exemplar altitude (when both have one);
+//  - D_distance: the same of the target's and exemplar's distance from the viewer;
 //  - D_repetition: the fraction of kRepetitionOffsets pixels at Chebyshev distance 2 to
 //    kRepetitionRadius whose coordinates at the start of the pass lie within one pixel of the
 //    candidate: the same source reused nearby, not coherently (a coherent neighbour at offset o
@@ -44,11 +51,13 @@ inline constexpr int kRepetitionRadius = 3;  // of the reuse penalty's window, a
 struct SynthesisParams {
   double w_label = 2.0;
   double w_altitude = 1.0;
+  double w_distance = 0.0;
   double w_repetition = 0.3;
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;
-  int jitter = 1;  // amplitude of the upsampling jitter, pixels at each level (0: none)
+  int jitter = 1;             // amplitude of the upsampling jitter, pixels at each level (0: none)
+  double depth_break = 1.05;  // a depth ratio that breaks coherence (with a depth guide)
   uint64_t seed = 0;
 };
 
@@ -65,13 +74,16 @@ struct PixelRect {
 
 // The target's guides on a raster of global pixels `1 << shift` times coarser than the output's
 // (a step's refine): output pixel (c, r) reads guide sample ((c >> shift) - rect.col0,
-// (r >> shift) - rect.row0). Labels are painting classes (kUnknownLabel: any); altitude in
-// [0, 1], NaN or empty for none.
+// (r >> shift) - rect.row0). Labels are painting classes (kUnknownLabel: any); altitude and
+// distance in [0, 1], NaN or empty for none; depth in metres from the eye (infinity: the sky),
+// empty for no coherence breaks.
 struct TargetGuides {
   PixelRect rect;
   int shift = 0;
   std::vector<uint8_t> labels;  // rect.width x rect.height, row-major
   std::vector<float> altitude;  // the same, or empty
+  std::vector<float> distance;  // the same, or empty
+  std::vector<float> depth;     // the same, or empty
 };
 
 // Pixels of halo the guides need around an output window, at the output's resolution.

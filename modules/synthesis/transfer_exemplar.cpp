@@ -2,9 +2,11 @@
 
 #include <tbb/collaborative_call_once.h>
 
+#include <algorithm>
 #include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "painting.h"
@@ -14,6 +16,22 @@ namespace maquette::synthesis {
 namespace {
 
 constexpr const char* kOp = "synthesis.transfer";
+
+// A guide of the painting, 0..1 per pixel: "rows" (a panorama's far, high ground is painted near
+// its top: 1 on the top row, falling to 0 on the bottom one) or a grey image of its size.
+std::vector<float> painting_guide(const std::string& source, const Exemplar& e,
+                                  const std::string& what) {
+  std::vector<float> guide(size_t(e.width) * size_t(e.height));
+  if (source == "rows") {
+    for (int y = 0; y < e.height; ++y)
+      std::fill_n(guide.begin() + ptrdiff_t(y) * e.width, e.width,
+                  1.0f - float(y) / float(std::max(1, e.height - 1)));
+  } else {
+    const auto grey = read_mask(source, e.width, e.height, what + " image");
+    for (size_t i = 0; i < grey.size(); ++i) guide[i] = float(grey[i]) / 255.0f;
+  }
+  return guide;
+}
 
 std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   const std::string painting = params.at("painting").get<std::string>();
@@ -41,19 +59,10 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   }
   for (const int c : params.at("exclude_classes").get<std::vector<int>>())
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
-  if (params.contains("painting_altitude")) {
-    const std::string source = params.at("painting_altitude").get<std::string>();
-    e.altitude.resize(e.labels.size());
-    if (source == "rows") {
-      // A panorama's far, high ground is painted near its top: altitude falls with the row.
-      for (int y = 0; y < e.height; ++y)
-        std::fill_n(e.altitude.begin() + ptrdiff_t(y) * e.width, e.width,
-                    1.0f - float(y) / float(std::max(1, e.height - 1)));
-    } else {
-      const auto grey = read_mask(source, e.width, e.height, "altitude image");
-      for (size_t i = 0; i < grey.size(); ++i) e.altitude[i] = float(grey[i]) / 255.0f;
-    }
-  }
+  if (params.contains("painting_altitude"))
+    e.altitude = painting_guide(params.at("painting_altitude").get<std::string>(), e, "altitude");
+  if (params.contains("painting_distance"))
+    e.distance = painting_guide(params.at("painting_distance").get<std::string>(), e, "distance");
   auto out = std::make_shared<TransferExemplar>();
   out->scale = scale;
   out->pyramid =
@@ -66,7 +75,7 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
   nlohmann::json key;
   for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
-                            "painting_altitude", "exemplar_scale", "k"})
+                            "painting_altitude", "painting_distance", "exemplar_scale", "k"})
     if (params.contains(field)) key[field] = params.at(field);
   struct Slot {
     tbb::collaborative_once_flag once;

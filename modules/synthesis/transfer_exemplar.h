@@ -17,7 +17,8 @@ struct TransferExemplar {
 };
 
 // From the validated params (README: synthesis.transfer): "painting", "labels" or "classes",
-// "exclusion", "exclude_classes", "painting_altitude", "exemplar_scale", "k". Throws
+// "exclusion", "exclude_classes", "painting_altitude", "painting_distance" (maquette-paint's),
+// "exemplar_scale", "k". Throws
 // maquette::Error naming the op, field and file at fault.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
 

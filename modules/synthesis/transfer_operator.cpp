@@ -33,20 +33,11 @@ OperatorSpec transfer_spec() {
   s.halo = synthesis_halo();
   s.refinable = true;
   s.writes_all_samples = true;
-  const auto weight = [](double fallback) {
-    return json{{"type", "number"}, {"minimum", 0}, {"default", fallback}};
-  };
   s.params_schema = {{"type", "object"},
                      {"additionalProperties", false},
                      {"required", {"painting", "landcover_classes"}},
                      {"properties", exemplar_params_schema()}};
-  s.params_schema["properties"].update(
-      {{"w_label", weight(2.0)},
-       {"w_altitude", weight(1.0)},
-       {"w_repetition", weight(0.3)},
-       {"coherence", weight(0.5)},
-       {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
-       {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}});
+  s.params_schema["properties"].update(synthesis_params_schema());
   return s;
 }
 
@@ -80,13 +71,7 @@ class Transfer : public CellOperator {
               altitude_guide(dem.at(c - halo, r - halo), *range);
     }
 
-    SynthesisParams sp;
-    sp.w_label = params.at("w_label").get<double>();
-    sp.w_altitude = params.at("w_altitude").get<double>();
-    sp.w_repetition = params.at("w_repetition").get<double>();
-    sp.coherence = params.at("coherence").get<double>();
-    sp.jitter = params.at("jitter").get<int>();
-    sp.seed = params.at("seed").get<uint64_t>();
+    const SynthesisParams sp = synthesis_params(params);
     const int n = ctx.tile_size << ctx.refine;
     const PixelRect out{global_col(ctx.cell, n, 0), global_row(ctx.cell, n, 0), n, n};
     const std::vector<int32_t> src = synthesize(exemplar->pyramid, guides, sp, out);

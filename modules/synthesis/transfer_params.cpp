@@ -59,6 +59,30 @@ nlohmann::json exemplar_params_schema() {
         {"description", "k-coherence candidates per neighbour"}}}};
 }
 
+nlohmann::json synthesis_params_schema() {
+  using json = nlohmann::json;
+  const auto weight = [](double fallback) {
+    return json{{"type", "number"}, {"minimum", 0}, {"default", fallback}};
+  };
+  return {{"w_label", weight(2.0)},
+          {"w_altitude", weight(1.0)},
+          {"w_repetition", weight(0.3)},
+          {"coherence", weight(0.5)},
+          {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
+          {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}};
+}
+
+SynthesisParams synthesis_params(const nlohmann::json& params) {
+  SynthesisParams sp;
+  sp.w_label = params.at("w_label").get<double>();
+  sp.w_altitude = params.at("w_altitude").get<double>();
+  sp.w_repetition = params.at("w_repetition").get<double>();
+  sp.coherence = params.at("coherence").get<double>();
+  sp.jitter = params.at("jitter").get<int>();
+  sp.seed = params.at("seed").get<uint64_t>();
+  return sp;
+}
+
 std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op) {
   std::map<int, uint8_t> out;
   for (const auto& [key, value] : table.items()) {
@@ -92,11 +116,16 @@ std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params
                                 : ".altitude_range is given without inputs.dem: give both or"
                                   " neither"));
   if (!dem_given) return std::nullopt;
-  const auto range = params.at("altitude_range").get<std::vector<double>>();
-  if (range.size() != 2 || !(range[1] > range[0]))
-    throw Error(op + ".altitude_range: expected [low, high] with high > low, got " +
-                params.at("altitude_range").dump());
-  return std::array<double, 2>{range[0], range[1]};
+  return range_param(params, "altitude_range", op);
+}
+
+std::array<double, 2> range_param(const nlohmann::json& params, const std::string& field,
+                                  const std::string& op, bool positive) {
+  const auto range = params.at(field).get<std::vector<double>>();
+  if (range.size() != 2 || !(range[1] > range[0]) || (positive && !(range[0] > 0)))
+    throw Error(op + "." + field + ": expected [low, high] with " +
+                (positive ? "0 < low < high" : "high > low") + ", got " + params.at(field).dump());
+  return {range[0], range[1]};
 }
 
 float altitude_guide(float metres, const std::array<double, 2>& range) {

@@ -10,12 +10,21 @@
 #include <optional>
 #include <string>
 
+#include "synthesis.h"
+
 namespace maquette::synthesis {
 
 // JSON Schema "properties" of those params: "painting", "labels", "classes", "exclusion",
 // "exclude_classes", "landcover_classes", "altitude_range", "painting_altitude",
 // "exemplar_scale", "k".
 nlohmann::json exemplar_params_schema();
+
+// JSON Schema "properties" of the synthesis's weights and choices (SynthesisParams): "w_label",
+// "w_altitude", "w_repetition", "coherence", "jitter", "seed".
+nlohmann::json synthesis_params_schema();
+
+// SynthesisParams from params validated against synthesis_params_schema() (defaults filled).
+SynthesisParams synthesis_params(const nlohmann::json& params);
 
 // Target land-cover value -> painting class, from "landcover_classes". Throws maquette::Error
 // naming `op`, the field and the key or value at fault.
@@ -30,6 +39,11 @@ uint8_t painting_class(const std::map<int, uint8_t>& table, float value);
 // without a `dem` input, `dem_given`, or a dem without the range): never silently dropped.
 std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
                                                     const std::string& op, bool dem_given);
+
+// params[field] as [low, high] with high > low (and low > 0 when `positive`); throws
+// maquette::Error naming `op`, the field and the value otherwise.
+std::array<double, 2> range_param(const nlohmann::json& params, const std::string& field,
+                                  const std::string& op, bool positive = false);
 
 // A DEM height mapped onto the range: 0 at low, 1 at high, clamped (NaN stays NaN).
 float altitude_guide(float metres, const std::array<double, 2>& range);

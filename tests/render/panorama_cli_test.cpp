@@ -127,9 +127,10 @@ TEST(PanoramaCli, GuidesNameThePointEachPixelShows) {
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((f.dir + "/pano-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
-  ASSERT_EQ(guides->GetRasterCount(), 5);
+  ASSERT_EQ(guides->GetRasterCount(), 6);
   EXPECT_STREQ(guides->GetRasterBand(2)->GetDescription(), "distance");
   EXPECT_STREQ(guides->GetRasterBand(5)->GetDescription(), "land_cover");
+  EXPECT_STREQ(guides->GetRasterBand(6)->GetDescription(), "shading");
   const auto altitude = band(*guides, 1), distance = band(*guides, 2), lon = band(*guides, 3),
              lat = band(*guides, 4), classes = band(*guides, 5);
   std::unique_ptr<GDALDataset> edges(

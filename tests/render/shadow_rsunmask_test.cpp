@@ -260,8 +260,9 @@ TEST(CastShadow, PanoramaShadowsAreTheConesExactShadow) {
   const std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((dir + "/one-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
-  ASSERT_EQ(guides->GetRasterCount(), 5);
+  ASSERT_EQ(guides->GetRasterCount(), 6);
   ASSERT_STREQ(guides->GetRasterBand(5)->GetDescription(), "cast_shadow");
+  ASSERT_STREQ(guides->GetRasterBand(6)->GetDescription(), "shading");
   auto band = [&](int b) {
     std::vector<double> v(400 * 300);
     EXPECT_EQ(guides->GetRasterBand(b)->RasterIO(GF_Read, 0, 0, 400, 300, v.data(), 400, 300,
@@ -269,7 +270,21 @@ TEST(CastShadow, PanoramaShadowsAreTheConesExactShadow) {
               CE_None);
     return v;
   };
-  const auto lon = band(3), lat = band(4), shadow = band(5);
+  const auto lon = band(3), lat = band(4), shadow = band(5), shading = band(6);
+  // The shading guide is the factor the colour was shaded by: the ambient 0.3 alone in full
+  // shadow, at most 1 in the sun, NaN exactly where the sky is.
+  size_t dark = 0;
+  for (size_t i = 0; i < shading.size(); ++i) {
+    ASSERT_EQ(std::isnan(shading[i]), std::isnan(lon[i])) << i;
+    if (std::isnan(shading[i])) continue;
+    EXPECT_GE(shading[i], 0.3 - 1e-6);
+    EXPECT_LE(shading[i], 1.0 + 1e-6);
+    if (shadow[i] == 1) {
+      EXPECT_NEAR(shading[i], 0.3, 1e-6) << i;
+      ++dark;
+    }
+  }
+  EXPECT_GT(dark, 1000u);
   const test::Projector utm("EPSG:4326", "EPSG:32612");
   const auto [x, y] = cone_axis();
   size_t seen = 0, same = 0, in_shadow = 0;

@@ -50,8 +50,12 @@ constexpr PixelRect kWhole{4096 + 7, 37, 256, 256};
 
 // Label 1 inside a disc, 0 outside, unknown in a band; altitude a ramp. Over `rect`.
 TargetGuides guides(const PixelRect& rect) {
-  TargetGuides g{rect, 0, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)),
-                 std::vector<float>(size_t(rect.width) * size_t(rect.height))};
+  TargetGuides g{rect,
+                 0,
+                 std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)),
+                 std::vector<float>(size_t(rect.width) * size_t(rect.height)),
+                 {},
+                 {}};
   for (int64_t r = 0; r < rect.height; ++r)
     for (int64_t c = 0; c < rect.width; ++c) {
       const double x = double(rect.col0 + c - kWhole.col0 - 128),

@@ -1,0 +1,42 @@
+// The transfer in the picture (issue 19; paper 000's own pipeline, its Fig. 5): a rendered
+// panorama's guides (panorama_guides.h) as the synthesis's target, the painting as its
+// exemplar, the painted colours blended with the render's shading.
+//
+// The picture is one window of global pixels (its own columns and rows), synthesized in tiles
+// of params.tile pixels a side, each from its guides within synthesis_halo() (beyond the
+// picture's edge, the nearest edge pixel's): by synthesis.h's contract the same bits for any
+// tile size and thread count. Guides per pixel: the land-cover class through the class table
+// (terrain without a class matches any; the sky: sky_class, or not painted), the altitude and
+// the distance guides (the sky is far: 1), and the depth for coherence breaks (the sky:
+// infinitely far), so that no coherent patch crosses a silhouette.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "paint_params.h"
+#include "panorama_guides.h"
+#include "synthesis.h"
+#include "transfer_exemplar.h"
+
+namespace maquette::synthesis {
+
+struct PaintedPanorama {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;   // 3 per pixel: painted, or the render's sky
+  std::vector<float> source;  // 2 per pixel: the painting pixel (column, row) copied, or NaN
+};
+
+// The synthesis's guides of the picture over `window` grown by synthesis_halo().
+TargetGuides panorama_target(const PanoramaPicture& picture, const PaintParams& params,
+                             const PixelRect& window);
+
+// The picture painted. Each painted pixel is the painting's colour at its source times
+// (1 - shading) + shading * s / s_median, s the render's shading factor and s_median its median
+// over the terrain: ground lit as the picture's typical ground keeps the painting's colour,
+// slopes turned from the sun darken, those facing it brighten (paper 000's blend with a terrain
+// shading). Precondition: the picture has a shading band when params.shading > 0.
+PaintedPanorama paint_panorama(const PanoramaPicture& picture, const TransferExemplar& exemplar,
+                               const PaintParams& params);
+
+}  // namespace maquette::synthesis

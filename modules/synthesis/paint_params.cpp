@@ -1,0 +1,99 @@
+#include "paint_params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "runtime/params_schema.h"
+#include "transfer_params.h"
+
+namespace maquette::synthesis {
+
+nlohmann::json paint_params_schema() {
+  using json = nlohmann::json;
+  json properties = exemplar_params_schema();
+  properties.update(synthesis_params_schema());
+  properties.update(
+      {{"painting_distance",
+        {{"type", "string"},
+         {"description",
+          "the painting's distance from its viewer: a grey image (its size, white far), or "
+          "\"rows\" (far at the top)"}}},
+       {"distance_range",
+        {{"type", "array"},
+         {"items", {{"type", "number"}}},
+         {"description", "[near, far] metres from the eye mapped to distance 0..1 (log)"}}},
+       {"w_distance", {{"type", "number"}, {"minimum", 0}, {"default", 1.0}}},
+       {"sky_class",
+        {{"type", "integer"},
+         {"minimum", 0},
+         {"maximum", 254},
+         {"description", "painting class the sky is painted from (else the render's sky)"}}},
+       {"silhouettes",
+        {{"type", "boolean"},
+         {"default", true},
+         {"description", "no coherent copy across a depth break (the render's silhouettes)"}}},
+       {"depth_break",
+        {{"type", "number"},
+         {"minimum", 1},
+         {"default", 1.05},
+         {"description", "a neighbour farther by this factor is across a silhouette"}}},
+       {"shading",
+        {{"type", "number"},
+         {"minimum", 0},
+         {"maximum", 1},
+         {"default", 0.7},
+         {"description", "strength of the blend with the render's shading"}}},
+       {"tile",
+        {{"type", "integer"},
+         {"minimum", 16},
+         {"maximum", 4096},
+         {"default", 256},
+         {"description", "output pixels a side synthesized at once (the same bits for any)"}}}});
+  return {{"type", "object"},
+          {"additionalProperties", false},
+          {"required", {"painting", "landcover_classes"}},
+          {"properties", properties}};
+}
+
+PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
+  PaintParams p;
+  p.exemplar = validate_params(paint_params_schema(), raw, source);
+  const nlohmann::json& j = p.exemplar;
+  p.classes = class_table(j.at("landcover_classes"), source);
+  for (const auto& [range, guide] : {std::pair{"altitude_range", "painting_altitude"},
+                                     std::pair{"distance_range", "painting_distance"}})
+    if (j.contains(range) != j.contains(guide))
+      throw Error(source + ": " + (j.contains(range) ? range : guide) + " is given without " +
+                  (j.contains(range) ? guide : range) + ": give both or neither");
+  if (raw.contains("w_distance") && !j.contains("distance_range"))
+    throw Error(source + ": w_distance is given without distance_range and painting_distance");
+  if (j.contains("altitude_range")) p.altitude_range = range_param(j, "altitude_range", source);
+  if (j.contains("distance_range"))
+    p.distance_range = range_param(j, "distance_range", source, true);
+  if (j.contains("sky_class")) {
+    const int sky = j.at("sky_class").get<int>();
+    const auto excluded = j.at("exclude_classes").get<std::vector<int>>();
+    if (std::find(excluded.begin(), excluded.end(), sky) != excluded.end())
+      throw Error(source + ".sky_class: class " + std::to_string(sky) +
+                  " is in exclude_classes: the sky could never be copied from it");
+    p.sky_class = uint8_t(sky);
+  }
+  p.silhouettes = j.at("silhouettes").get<bool>();
+  p.shading = j.at("shading").get<double>();
+  p.tile = j.at("tile").get<int>();
+  p.synthesis = synthesis_params(j);
+  p.synthesis.w_distance = p.distance_range ? j.at("w_distance").get<double>() : 0.0;
+  p.synthesis.depth_break = j.at("depth_break").get<double>();
+  return p;
+}
+
+float distance_guide(float metres, const std::array<double, 2>& range) {
+  if (std::isnan(metres)) return metres;
+  const double t =
+      std::log(std::max(double(metres), range[0]) / range[0]) / std::log(range[1] / range[0]);
+  return float(std::min(t, 1.0));
+}
+
+}  // namespace maquette::synthesis

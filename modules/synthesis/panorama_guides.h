@@ -1,0 +1,28 @@
+// A panorama drawn by `maquette render panorama` (formats/render/README.md) read back as the
+// target of the transfer in the picture: its colours and, from STEM-guides.tif beside it, the
+// guides by band name.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace maquette::synthesis {
+
+struct PanoramaPicture {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // 3 per pixel, row-major: the rendered picture (its sky is kept)
+  // Per pixel, NaN on the sky: land-cover class, altitude (metres), distance from the eye
+  // (metres), and the shading factor the render applied (0.3 to 1; empty when the guides have no
+  // `shading` band: rendered before it existed).
+  std::vector<float> land_cover, altitude, distance, shading;
+};
+
+// A file beside a picture, as the renderer names them: its stem + `suffix` ("-guides.tif").
+std::string beside(const std::string& picture, const std::string& suffix);
+
+// Reads PICTURE (8-bit RGB) and its guides. Throws maquette::Error naming the file and what is
+// wrong: unreadable, a band missing (land_cover: render with --land-cover), another size.
+PanoramaPicture read_panorama(const std::string& picture);
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,344 @@
+// The transfer in the picture (paint_panorama.h, maquette-paint) on a panorama that `maquette
+// render panorama` draws of a synthetic scene: a 600 m plateau (forest) on a plain (shrub), so
+// the plateau's far edge stands against the plain behind it (a silhouette) and the horizon against
+// the sky. The painting is synthetic: two classes side by side, a sky class along its top, an
+// excluded square in each class. Checked: terrain sources keep the target's class (>= 0.97),
+// none is excluded, the sky stays the render's unless a sky class is asked for (then it is
+// painted from that class); the program's files are byte-identical for 1 and 2 threads and tiles
+// of 64 and 256 pixels; raising w_distance lowers the distance mismatch; no coherent copy across
+// a depth break with silhouettes on (counted, against the same run without); the shading blend
+// as stated; bad input named.
+#include "../paint_panorama.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../pixel_hash.h"
+#include "core/json_file.h"
+#include "gdal/image_file.h"
+#include "run_cli.h"
+#include "synthetic_raster.h"
+
+namespace maquette::synthesis {
+namespace {
+
+constexpr int kPaintingWidth = 128, kPaintingHeight = 96, kSkyRows = 20;
+
+bool on_plateau(double lon, double lat) {
+  return lon > 10.12 && lon < 10.18 && lat > 45.12 && lat < 45.18;
+}
+bool excluded_at(int x, int y) {
+  return (x >= 20 && x < 32 && y >= 50 && y < 62) || (x >= 90 && x < 102 && y >= 30 && y < 42);
+}
+int painting_label(int x, int y) { return y < kSkyRows ? 2 : x >= kPaintingWidth / 2 ? 1 : 0; }
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Scene {
+  std::string dir = test::temp_dir();
+  std::string picture = dir + "/pano.png";
+  Scene() {
+    const std::string store = dir + "/s.mqt", dem = dir + "/dem.tif", lc = dir + "/lc.tif";
+    test::write_raster(
+        dem, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
+        [](int, double lon, double lat) { return on_plateau(lon, lat) ? 700 : 100; });
+    test::write_raster(lc, test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte"),
+                       [](int, double lon, double lat) { return on_plateau(lon, lat) ? 41 : 52; });
+    for (const std::string& args :
+         {"ingest " + store + " --layer dem --as dem --vertical-datum ellipsoid " + dem,
+          "ingest " + store + " --layer lc --as landcover " + lc,
+          "render panorama " + store + " " + picture +
+              " --dem dem --land-cover lc --camera 10.15 45.02 1500 --heading 0 --pitch -6 "
+              "--fov 50 --size 320 200",
+          "render panorama " + store + " " + dir +
+              "/bare.png --dem dem --camera 10.15 45.02 "
+              "1500 --heading 0 --pitch -6 --fov 50 --size 320 200"}) {
+      const auto r = test::run_maquette(args);
+      EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    }
+    // The painting: warm stripes (class 0) left, green blobs (class 1) right, a blue sky (class
+    // 2) along the top; the excluded squares magenta.
+    std::vector<uint8_t> rgb(3 * kPaintingWidth * kPaintingHeight), labels(rgb.size() / 3),
+        excluded(labels.size());
+    for (int y = 0; y < kPaintingHeight; ++y)
+      for (int x = 0; x < kPaintingWidth; ++x) {
+        const size_t i = size_t(y) * kPaintingWidth + size_t(x);
+        const double noise = double(splitmix64_mix(i) % 41) - 20;
+        const int label = painting_label(x, y);
+        labels[i] = uint8_t(label);
+        excluded[i] = excluded_at(x, y) ? 255 : 0;
+        const double r = excluded[i]  ? 255
+                         : label == 2 ? 120 + noise
+                         : label == 1 ? 40 + 30 * std::sin(x * 0.7) * std::sin(y * 0.6) + noise
+                                      : 200 + 40 * std::sin(x / 3.0) + noise;
+        const double g = excluded[i]  ? 0
+                         : label == 2 ? 160 + noise
+                         : label == 1 ? 110 + noise
+                                      : 170 + noise;
+        const double b = excluded[i] ? 255 : label == 2 ? 230 : label == 1 ? 50 : 60 + noise;
+        rgb[3 * i] = uint8_t(r), rgb[3 * i + 1] = uint8_t(g), rgb[3 * i + 2] = uint8_t(b);
+      }
+    write_image(rgb, kPaintingWidth, kPaintingHeight, 3, {"PNG", {}}, dir + "/painting.png");
+    write_image(labels, kPaintingWidth, kPaintingHeight, 1, {"PNG", {}}, dir + "/labels.png");
+    write_image(excluded, kPaintingWidth, kPaintingHeight, 1, {"PNG", {}}, dir + "/excluded.png");
+  }
+
+  nlohmann::json params() const {
+    return {{"painting", dir + "/painting.png"},
+            {"labels", dir + "/labels.png"},
+            {"exclusion", dir + "/excluded.png"},
+            {"exemplar_scale", 1},
+            {"landcover_classes", {{"41", 1}, {"52", 0}}},
+            {"painting_distance", "rows"},
+            {"distance_range", {2000, 30000}},
+            {"tile", 128}};
+  }
+};
+
+const Scene& scene() {
+  static const Scene s;
+  return s;
+}
+
+PaintedPanorama paint(const nlohmann::json& raw) {
+  const PaintParams params = paint_params(raw, "params.json");
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  return paint_panorama(picture, *transfer_exemplar(params.exemplar), params);
+}
+
+// The painting pixel of `p`'s pixel i (x, y), or {-1, -1} unpainted.
+std::array<int, 2> source_of(const PaintedPanorama& p, size_t i) {
+  if (std::isnan(p.source[2 * i])) return {-1, -1};
+  return {int(p.source[2 * i]), int(p.source[2 * i + 1])};
+}
+
+TEST(PaintPanorama, TerrainKeepsItsClassesNoExcludedSourceAndTheSkyStays) {
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PaintedPanorama p = paint(scene().params());
+  size_t terrain = 0, kept = 0, sky = 0, excluded = 0;
+  for (size_t i = 0; i < picture.distance.size(); ++i) {
+    const auto [x, y] = source_of(p, i);
+    if (std::isnan(picture.distance[i])) {
+      ++sky;
+      EXPECT_EQ(x, -1) << i;  // not painted: the render's sky, byte for byte
+      for (size_t k = 0; k < 3; ++k) EXPECT_EQ(p.rgb[3 * i + k], picture.rgb[3 * i + k]);
+      continue;
+    }
+    ASSERT_GE(x, 0) << i;
+    ++terrain;
+    excluded += excluded_at(x, y);
+    kept += painting_label(x, y) == (picture.land_cover[i] == 41 ? 1 : 0);
+  }
+  std::printf(
+      "%zu terrain pixels, %zu of their sources of the target's class, %zu excluded; %zu "
+      "sky pixels kept\n",
+      terrain, kept, excluded, sky);
+  ASSERT_GT(sky, 5000u);
+  ASSERT_GT(terrain, 30000u);
+  EXPECT_EQ(excluded, 0u);
+  EXPECT_GE(double(kept) / double(terrain), 0.97) << kept << " of " << terrain;
+}
+
+TEST(PaintPanorama, TheSkyIsPaintedFromTheSkyClassWhenAskedFor) {
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  nlohmann::json params = scene().params();
+  params["sky_class"] = 2;
+  const PaintedPanorama p = paint(params);
+  size_t sky = 0, from_sky = 0, terrain_from_sky = 0;
+  for (size_t i = 0; i < picture.distance.size(); ++i) {
+    const auto [x, y] = source_of(p, i);
+    ASSERT_GE(x, 0) << i;
+    if (std::isnan(picture.distance[i]))
+      ++sky, from_sky += painting_label(x, y) == 2;
+    else
+      terrain_from_sky += painting_label(x, y) == 2;
+  }
+  std::printf("%zu of %zu sky pixels from the sky class, %zu terrain pixels\n", from_sky, sky,
+              terrain_from_sky);
+  EXPECT_GE(double(from_sky) / double(sky), 0.97) << from_sky << " of " << sky;
+  EXPECT_LE(terrain_from_sky, 50u);
+}
+
+// Mean |target distance guide - the painting's distance at the source| over the terrain.
+double distance_mismatch(const PaintedPanorama& p, const PanoramaPicture& picture) {
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < picture.distance.size(); ++i) {
+    if (std::isnan(picture.distance[i])) continue;
+    const double target = distance_guide(picture.distance[i], {2000, 30000});
+    const double source = 1.0 - double(source_of(p, i)[1]) / double(kPaintingHeight - 1);
+    sum += std::abs(target - source), ++n;
+  }
+  return sum / double(n);
+}
+
+TEST(PaintPanorama, RaisingTheDistanceWeightLowersTheDistanceMismatch) {
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  double previous = INFINITY;
+  for (const double w : {0.0, 2.0, 8.0}) {
+    nlohmann::json params = scene().params();
+    params["w_distance"] = w;
+    const double mismatch = distance_mismatch(paint(params), picture);
+    std::printf("w_distance %g: mean distance mismatch %.4f\n", w, mismatch);
+    EXPECT_LT(mismatch, previous) << "w_distance " << w;
+    previous = mismatch;
+  }
+}
+
+// 4-neighbour pairs of painted pixels across a depth break (one sky, or one farther than 1.05
+// times the other) whose sources are the same offset apart in the painting: coherent copies.
+size_t coherent_across_breaks(const PaintedPanorama& p, const PanoramaPicture& picture,
+                              size_t& pairs) {
+  size_t coherent = 0;
+  pairs = 0;
+  for (int r = 0; r < picture.height; ++r)
+    for (int c = 0; c < picture.width; ++c)
+      for (const auto [dc, dr] : {std::array{1, 0}, std::array{0, 1}}) {
+        if (c + dc >= picture.width || r + dr >= picture.height) continue;
+        const size_t a = size_t(r) * size_t(picture.width) + size_t(c),
+                     b = size_t(r + dr) * size_t(picture.width) + size_t(c + dc);
+        const float da = picture.distance[a], db = picture.distance[b];
+        const bool broken = std::isnan(da) != std::isnan(db) ||
+                            (!std::isnan(da) && std::max(da, db) > 1.05f * std::min(da, db));
+        if (!broken) continue;
+        ++pairs;
+        const auto sa = source_of(p, a), sb = source_of(p, b);
+        coherent += sb[0] - sa[0] == dc && sb[1] - sa[1] == dr;
+      }
+  return coherent;
+}
+
+TEST(PaintPanorama, NoCoherentCopyAcrossASilhouette) {
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  nlohmann::json params = scene().params();
+  params["sky_class"] = 2;
+  size_t pairs = 0;
+  const size_t with = coherent_across_breaks(paint(params), picture, pairs);
+  params["silhouettes"] = false;
+  const size_t without = coherent_across_breaks(paint(params), picture, pairs);
+  std::printf(
+      "%zu pixel pairs across a depth break: %zu coherent copies with silhouettes, %zu "
+      "without\n",
+      pairs, with, without);
+  ASSERT_GT(pairs, 300u);
+  EXPECT_GT(without, pairs / 10);
+  EXPECT_EQ(with, 0u);
+}
+
+TEST(PaintPanorama, ShadingBlendsAsStated) {
+  const PanoramaPicture picture = read_panorama(scene().picture);
+  nlohmann::json params = scene().params();
+  params["shading"] = 0;
+  const PaintedPanorama flat = paint(params);
+  params["shading"] = 0.7;
+  const PaintedPanorama shaded = paint(params);
+  ASSERT_EQ(std::memcmp(flat.source.data(), shaded.source.data(), 4 * flat.source.size()), 0);
+  std::vector<float> lit;
+  for (size_t i = 0; i < picture.shading.size(); ++i)
+    if (!std::isnan(picture.distance[i])) lit.push_back(picture.shading[i]);
+  std::nth_element(lit.begin(), lit.begin() + ptrdiff_t(lit.size() / 2), lit.end());
+  const double median = lit[lit.size() / 2];
+  size_t checked = 0;
+  for (size_t i = 0; i < picture.shading.size(); ++i) {
+    if (std::isnan(picture.distance[i])) continue;
+    const double factor = 0.3 + 0.7 * picture.shading[i] / median;
+    for (size_t k = 0; k < 3; ++k)
+      EXPECT_NEAR(shaded.rgb[3 * i + k], std::clamp(flat.rgb[3 * i + k] * factor, 0.0, 255.0),
+                  1.0 + 0.5 * factor)
+          << i;  // flat is rounded already: half a level times the factor, and the rounding
+    ++checked;
+  }
+  EXPECT_GT(checked, 30000u);
+}
+
+std::string run_paint(const std::string& args) {
+  return test::shell_output("(" + std::string(MAQUETTE_BIN_DIR) + "/maquette-paint " + args +
+                            " 2>&1; echo \"exit $?\")");
+}
+
+std::string write_params(const nlohmann::json& params, const std::string& name) {
+  const std::string path = scene().dir + "/" + name;
+  std::ofstream(path) << params.dump();
+  return path;
+}
+
+TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
+  const Scene& s = scene();
+  nlohmann::json params = s.params();
+  params["sky_class"] = 2;
+  std::vector<std::string> runs;
+  for (const auto& [tile, threads] : {std::pair{256, 1}, std::pair{64, 2}, std::pair{128, 2}}) {
+    params["tile"] = tile;
+    const std::string out = s.dir + "/painted-" + std::to_string(tile) + ".png";
+    const std::string r = run_paint(s.picture + " " + write_params(params, "p.json") + " " + out +
+                                    " -t " + std::to_string(threads));
+    ASSERT_NE(r.find("exit 0"), std::string::npos) << r;
+    runs.push_back(slurp(out) + slurp(s.dir + "/painted-" + std::to_string(tile) + "-source.tif"));
+  }
+  EXPECT_EQ(runs[0], runs[1]);
+  EXPECT_EQ(runs[0], runs[2]);
+}
+
+TEST(PaintPanorama, BadInputIsNamed) {
+  const Scene& s = scene();
+  const std::string good = write_params(s.params(), "good.json");
+  // The guides of a panorama rendered without --land-cover.
+  std::string r = run_paint(s.dir + "/bare.png " + good + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("bare-guides.tif: no band 'land_cover'"), std::string::npos) << r;
+  EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  nlohmann::json params = s.params();
+  params.erase("painting_distance");
+  r = run_paint(s.picture + " " + write_params(params, "half.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("half.json: distance_range is given without painting_distance"),
+            std::string::npos)
+      << r;
+  params.erase("distance_range");
+  params["w_distance"] = 2;
+  r = run_paint(s.picture + " " + write_params(params, "weight.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("weight.json: w_distance is given without distance_range"), std::string::npos)
+      << r;
+  params = s.params();
+  params["sky_class"] = 2;
+  params["exclude_classes"] = {2};
+  r = run_paint(s.picture + " " + write_params(params, "sky.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("sky.json.sky_class: class 2 is in exclude_classes"), std::string::npos) << r;
+  params = s.params();
+  params["w_distance"] = -1;
+  r = run_paint(s.picture + " " + write_params(params, "neg.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("w_distance"), std::string::npos) << r;
+  // Guides of another size than the picture's; guides rendered before the shading band.
+  const std::vector<uint8_t> small(3 * 10 * 10, 100);
+  write_image(small, 10, 10, 3, {"PNG", {}}, s.dir + "/small.png");
+  std::filesystem::copy_file(s.dir + "/pano-guides.tif", s.dir + "/small-guides.tif");
+  r = run_paint(s.dir + "/small.png " + good + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("small-guides.tif: the guides are 320 x 200 pixels"), std::string::npos) << r;
+  std::filesystem::copy_file(s.picture, s.dir + "/old.png");
+  test::shell_output("gdal_translate -q -b 1 -b 2 -b 3 -b 4 -b 5 " + s.dir + "/pano-guides.tif " +
+                     s.dir + "/old-guides.tif");
+  r = run_paint(s.dir + "/old.png " + good + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("old-guides.tif: no band 'shading'"), std::string::npos) << r;
+  params = s.params();
+  params["shading"] = 0;  // without the blend, the old guides serve
+  r = run_paint(s.dir + "/old.png " + write_params(params, "flat.json") + " " + s.dir +
+                "/old-painted.png");
+  EXPECT_NE(r.find("exit 0"), std::string::npos) << r;
+  r = run_paint(s.dir + "/missing.png " + good + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("missing.png: GDAL cannot open the panorama"), std::string::npos) << r;
+  EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  std::ifstream written(s.dir + "/x.png");
+  EXPECT_FALSE(written.good());  // nothing written on failure
+}
+
+}  // namespace
+}  // namespace maquette::synthesis
