@@ -90,21 +90,25 @@ WaterBody fill_basin(const BasinRaster& basin, double level) {
       return WaterBody{level, body.seed, {}, {}, 0, 0, i};
     }
     const int col = int(i % basin.width), row = int(i / basin.width);
+    const bool interior = col > 0 && row > 0 && col + 1 < basin.width && row + 1 < basin.height;
     for (int k = 0; k < 8; ++k) {
       const int c = col + kDc[k], r = row + kDr[k];
-      if (c < 0 || r < 0 || c >= basin.width || r >= basin.height) continue;
+      if (!interior && (c < 0 || r < 0 || c >= basin.width || r >= basin.height)) continue;
       const size_t j = size_t(r) * size_t(basin.width) + size_t(c);
       if (seen[j] || !(basin.terrain[j] < level)) continue;  // NaN: dry
       seen[j] = 1;
       queue.push_back(int64_t(j));
     }
   }
-  std::sort(queue.begin(), queue.end());
-  body.wet = std::move(queue);
-  body.depth.reserve(body.wet.size());
+  // The wet pixels in row-major order: a pass over the seen flags (linear, where sorting the
+  // fill's queue costs n log n).
+  body.wet.reserve(queue.size());
+  body.depth.reserve(queue.size());
   double volume = 0;
-  for (const int64_t i : body.wet) {
-    const float d = float(level - double(basin.terrain[size_t(i)]));
+  for (size_t i = 0; i < n; ++i) {
+    if (!seen[i]) continue;
+    const float d = float(level - double(basin.terrain[i]));
+    body.wet.push_back(int64_t(i));
     body.depth.push_back(d);
     volume += double(d);
   }
