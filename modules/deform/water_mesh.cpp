@@ -84,8 +84,11 @@ class Builder {
     return top(p, (dr > 0 ? 2 : 0) + (dc > 0 ? 1 : 0));
   }
 
+  // The vertices are asked in a fixed order (c, b, a: the order the mesh was first built in),
+  // which numbers them, not in a function call's unspecified order of arguments.
   void top_triangle(Corner a, Corner b, Corner c) {
-    triangle(top_at(a, b, c), top_at(b, c, a), top_at(c, a, b));
+    const uint32_t vc = top_at(c, a, b), vb = top_at(b, c, a), va = top_at(a, b, c);
+    triangle(va, vb, vc);
   }
 
   void triangle(uint32_t a, uint32_t b, uint32_t c) {
@@ -124,9 +127,15 @@ class Builder {
     return (w0 && w3 && !w1 && !w2) || (w1 && w2 && !w0 && !w3);
   }
 
+  // Most uses find the corner's vertex made already: that look-up stays inline, the first use
+  // is a call.
   uint32_t vertex(Corner c, int quadrant, bool top) {
+    const uint32_t unsplit = (top ? top_ : bottom_)[slot(c)];  // set only when not split
+    return unsplit != kNone ? unsplit : first_use(c, quadrant, top);
+  }
+
+  uint32_t first_use(Corner c, int quadrant, bool top) {
     uint32_t& unsplit = (top ? top_ : bottom_)[slot(c)];
-    if (unsplit != kNone) return unsplit;  // set only for a corner that is not split
     const int part = touches_itself(c) ? quadrant : -1;
     uint32_t& id = part < 0 ? unsplit : split_[std::tuple(c.first, c.second, part, top)].id;
     if (id != kNone) return id;
@@ -225,11 +234,15 @@ void block_triangles(Builder& m, const BasinRaster& basin, const WaterBody& body
     const Corner c00{c, r}, c10{c + 1, r}, c01{c, r + 1}, c11{c + 1, r + 1};
     // The pixel is quadrant 3 of its corner c00, 2 of c10, 1 of c01, 0 of c11.
     const auto quadrant = [&](Corner q) { return int(q.second == r) * 2 + int(q.first == c); };
-    const auto bottom = [&](Corner q) { return m.bottom(q, quadrant(q)); };
     const auto top = [&](Corner q) { return m.top(q, quadrant(q)); };
-    // Bottom, facing down.
-    m.triangle(bottom(c00), bottom(c10), bottom(c11));
-    m.triangle(bottom(c00), bottom(c11), bottom(c01));
+    // Bottom, facing down, its corners asked once each in a fixed order (as top_triangle).
+    const uint32_t b11 = m.bottom(c11, 0), b10 = m.bottom(c10, 2), b00 = m.bottom(c00, 3),
+                   b01 = m.bottom(c01, 1);
+    m.triangle(b00, b10, b11);
+    m.triangle(b00, b11, b01);
+    const auto bottom = [&](Corner q) {
+      return q == c00 ? b00 : q == c10 ? b10 : q == c11 ? b11 : b01;
+    };
     // Walls on the dry sides, along the shore with the water on the left seen from above.
     const std::array<std::pair<Corner, Corner>, 4> sides = {
         {{c01, c11}, {c11, c10}, {c10, c00}, {c00, c01}}};
@@ -238,8 +251,9 @@ void block_triangles(Builder& m, const BasinRaster& basin, const WaterBody& body
     for (size_t s = 0; s < 4; ++s) {
       if (!dry[s]) continue;
       const auto [a, b] = sides[s];
-      m.triangle(bottom(a), bottom(b), top(b));
-      m.triangle(bottom(a), top(b), top(a));
+      const uint32_t top_b = top(b), top_a = top(a);
+      m.triangle(bottom(a), bottom(b), top_b);
+      m.triangle(bottom(a), top_b, top_a);
     }
   }
 }
@@ -264,24 +278,29 @@ LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
     built[b] = std::make_unique<Builder>(basin, body, wet, row_begin, row_end);
     block_triangles(*built[b], basin, body, first(row_begin), first(row_end));
   });
+  // Each block's place in the whole known, the blocks are copied there in parallel too.
   std::vector<uint32_t> offset(blocks + 1, 0);
-  for (size_t b = 0; b < blocks; ++b)
-    offset[b + 1] = offset[b] + uint32_t(built[b]->mesh().vertices.size());
-  LakeMesh mesh;
-  mesh.vertices.reserve(offset.back());
+  std::vector<size_t> index_offset(blocks + 1, 0);
   for (size_t b = 0; b < blocks; ++b) {
-    LakeMesh& part = built[b]->mesh();
-    mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
-    for (uint32_t& i : part.indices) {
+    offset[b + 1] = offset[b] + uint32_t(built[b]->mesh().vertices.size());
+    index_offset[b + 1] = index_offset[b] + built[b]->mesh().indices.size();
+  }
+  LakeMesh mesh;
+  mesh.vertices.resize(offset.back());
+  mesh.indices.resize(index_offset.back());
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    const LakeMesh& part = built[b]->mesh();
+    std::copy(part.vertices.begin(), part.vertices.end(), mesh.vertices.begin() + offset[b]);
+    uint32_t* out = mesh.indices.data() + index_offset[b];
+    for (const uint32_t i : part.indices) {
       if (i & kForeign) {
         const Builder::ForeignVertex& v = built[b]->foreign()[i & ~kForeign];
-        i = offset[b - 1] + built[b - 1]->own(v.corner, v.part, v.top);
+        *out++ = offset[b - 1] + built[b - 1]->own(v.corner, v.part, v.top);
       } else {
-        i += offset[b];
+        *out++ = i + offset[b];
       }
     }
-    mesh.indices.insert(mesh.indices.end(), part.indices.begin(), part.indices.end());
-  }
+  });
   return mesh;
 }
 
