@@ -1,5 +1,9 @@
 #include "content/facet_normals.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -11,7 +15,7 @@ namespace maquette {
 namespace {
 
 using Normal = std::array<double, 3>;
-constexpr uint32_t kUp = UINT32_MAX;  // a copy facing +z instead of a face's normal
+constexpr Normal kUpNormal{0, 0, 1};  // a degenerate triangle's or unused vertex's copy
 
 // The unit normal of triangle `corners` (counter-clockwise), zero when it has no area.
 Normal face_normal(const std::vector<float>& positions, const uint32_t* corners) {
@@ -25,18 +29,16 @@ Normal face_normal(const std::vector<float>& positions, const uint32_t* corners)
   return n;
 }
 
-// One output vertex: the vertex it copies and the face whose normal it takes (or kUp).
-struct Copy {
-  uint32_t vertex, face;
-};
-
 }  // namespace
 
 MeshObject with_facet_normals(const MeshObject& object) {
   const size_t vertices = object.positions.size() / 3, triangles = object.indices.size() / 3;
   const std::vector<uint32_t>& indices = object.indices;
   std::vector<Normal> normal(triangles);
-  for (size_t t = 0; t < triangles; ++t) normal[t] = face_normal(object.positions, &indices[3 * t]);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles), [&](const auto& range) {
+    for (size_t t = range.begin(); t < range.end(); ++t)
+      normal[t] = face_normal(object.positions, &indices[3 * t]);
+  });
   // The corners grouped by vertex, each vertex's in triangle order (a counting sort): vertex v's
   // are by_vertex[begin[v]] to by_vertex[begin[v + 1] - 1].
   std::vector<uint32_t> begin(vertices + 1, 0), by_vertex(3 * triangles);
@@ -46,50 +48,64 @@ MeshObject with_facet_normals(const MeshObject& object) {
     std::vector<uint32_t> next(begin.begin(), begin.end() - 1);
     for (size_t c = 0; c < by_vertex.size(); ++c) by_vertex[next[indices[c]]++] = uint32_t(c);
   }
-  // Per vertex, its orientations (the faces whose normals they are) in the order its corners
-  // meet them, each corner taking the first within kFacetNormalTurnDeg of its face's normal.
+  // Per vertex, its orientations in the order its corners meet them, each corner taking the
+  // first within kFacetNormalTurnDeg of its face's normal: out.indices first holds each corner's
+  // orientation among its vertex's, copies[v] their count (vertices in parallel).
   const double min_dot = std::cos(kFacetNormalTurnDeg * std::numbers::pi / 180);
-  const auto orientation = [&](uint32_t face) {
-    return face == kUp ? Normal{0, 0, 1} : normal[face];
-  };
   MeshObject out;
   out.provenance = object.provenance;
   out.material = object.material;
   out.indices.resize(by_vertex.size());
-  std::vector<Copy> copies;
-  copies.reserve(by_vertex.size() + vertices);  // at most one per corner and per unused vertex
-  std::vector<uint32_t> own;
-  for (uint32_t v = 0; v < vertices; ++v) {
-    own.clear();
-    for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
-      const uint32_t c = by_vertex[i], face = c / 3;
-      const Normal& n = normal[face];
-      const bool degenerate = n[0] == 0 && n[1] == 0 && n[2] == 0;
-      size_t o = 0;
-      for (; o < own.size() && !degenerate; ++o) {
-        const Normal m = orientation(own[o]);
-        if (!(m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < min_dot)) break;
+  std::vector<uint32_t> copies(vertices + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(vertices)), [&](const auto& range) {
+    std::vector<const Normal*> own;
+    for (uint32_t v = range.begin(); v < range.end(); ++v) {
+      own.clear();
+      for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
+        const uint32_t c = by_vertex[i];
+        const Normal& n = normal[c / 3];
+        const bool degenerate = n[0] == 0 && n[1] == 0 && n[2] == 0;
+        size_t o = 0;
+        for (; o < own.size() && !degenerate; ++o) {
+          const Normal& m = *own[o];
+          if (!(m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < min_dot)) break;
+        }
+        if (o == own.size()) own.push_back(degenerate ? &kUpNormal : &n);
+        out.indices[c] = uint32_t(o);
       }
-      if (o == own.size()) own.push_back(degenerate ? kUp : face);
-      out.indices[c] = uint32_t(copies.size() + o);
+      copies[v + 1] = uint32_t(std::max<size_t>(own.size(), 1));  // an unused vertex: one copy
     }
-    if (own.empty()) own.push_back(kUp);  // no triangle uses v: one copy (the anchor stays first)
-    for (const uint32_t face : own) copies.push_back({v, face});
-  }
+  });
+  std::partial_sum(copies.begin(), copies.end(), copies.begin());
+  // The copies, each vertex's in the order of its orientations (the corner meeting one first
+  // gives its normal), written in parallel at their final places.
   const bool uvs = !object.uvs.empty();
-  out.positions.resize(3 * copies.size());
-  out.normals.resize(3 * copies.size());
-  if (uvs) out.uvs.resize(2 * copies.size());
-  for (size_t i = 0; i < copies.size(); ++i) {
-    const Normal n = orientation(copies[i].face);
+  out.positions.resize(3 * size_t(copies.back()));
+  out.normals.resize(out.positions.size());
+  if (uvs) out.uvs.resize(2 * size_t(copies.back()));
+  const auto copy = [&](uint32_t v, size_t to, const Normal& n) {
     for (size_t k = 0; k < 3; ++k) {
-      out.positions[3 * i + k] = object.positions[3 * size_t(copies[i].vertex) + k];
-      out.normals[3 * i + k] = float(n[k]);
+      out.positions[3 * to + k] = object.positions[3 * size_t(v) + k];
+      out.normals[3 * to + k] = float(n[k]);
     }
     if (uvs)
-      for (size_t k = 0; k < 2; ++k)
-        out.uvs[2 * i + k] = object.uvs[2 * size_t(copies[i].vertex) + k];
-  }
+      for (size_t k = 0; k < 2; ++k) out.uvs[2 * to + k] = object.uvs[2 * size_t(v) + k];
+  };
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(vertices)), [&](const auto& range) {
+    for (uint32_t v = range.begin(); v < range.end(); ++v) {
+      uint32_t made = 0;
+      for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
+        const uint32_t c = by_vertex[i], o = out.indices[c];
+        if (o == made) {  // the corner that met this orientation first
+          const Normal& n = normal[c / 3];
+          copy(v, copies[v] + made, n[0] == 0 && n[1] == 0 && n[2] == 0 ? kUpNormal : n);
+          ++made;
+        }
+        out.indices[c] = copies[v] + o;
+      }
+      if (made == 0) copy(v, copies[v], kUpNormal);
+    }
+  });
   return out;
 }
 

@@ -16,7 +16,8 @@ namespace maquette {
 // triangle uses it); positions are unchanged. Deterministic. Degenerate triangles (no normal)
 // take the orientation of the first group met at each vertex (up, +z, when there is none); a
 // vertex no triangle uses keeps one copy facing up. Time linear in the corners (times the
-// orientations at a vertex); ~50 bytes of temporaries per triangle.
+// orientations at a vertex); ~50 bytes of temporaries per triangle. In parallel (TBB) by
+// triangles and by vertices: the same object for any thread count.
 // Precondition: indices within positions, fewer than 2^32 corners, normals empty.
 inline constexpr double kFacetNormalTurnDeg = 1;
 MeshObject with_facet_normals(const MeshObject& object);
