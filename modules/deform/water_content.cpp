@@ -1,7 +1,10 @@
 #include "water_content.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <set>
 #include <utility>
 
@@ -28,6 +31,23 @@ std::array<double, 3> box_centre(const std::vector<float>& positions) {
     hi[i % 3] = std::max(hi[i % 3], double(positions[i]));
   }
   return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+}
+
+// f(i) for i in [0, n), in parallel by chunks of consecutive indices; a failure rethrown is the
+// one of the smallest i that failed (each chunk stops at its first), whatever the threads.
+template <typename F>
+void for_each_index(size_t n, const F& f) {
+  constexpr size_t kChunk = 4096;
+  std::vector<std::exception_ptr> failed((n + kChunk - 1) / kChunk);
+  tbb::parallel_for(size_t(0), failed.size(), [&](size_t chunk) {
+    try {
+      for (size_t i = chunk * kChunk; i < std::min(n, (chunk + 1) * kChunk); ++i) f(i);
+    } catch (...) {
+      failed[chunk] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace
@@ -72,10 +92,12 @@ MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const 
   MeshObject object;
   object.provenance = lake.fog.mesh.provenance;
   object.indices = lake.fog.mesh.indices;
-  for (const auto& [lon, lat, height] : lake.places) {
+  object.positions.resize(3 * lake.places.size());
+  for_each_index(lake.places.size(), [&](size_t i) {
+    const auto& [lon, lat, height] = lake.places[i];
     const auto [x, y, z] = frame.to_enu(lon, lat, height);
-    object.positions.insert(object.positions.end(), {float(x), float(y), float(z)});
-  }
+    std::copy_n(std::array{float(x), float(y), float(z)}.begin(), 3, &object.positions[3 * i]);
+  });
   return object;
 }
 
@@ -88,14 +110,16 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;
-  for (const LakeVertex& v : mesh.vertices) {
+  lake.places.resize(mesh.vertices.size());
+  for_each_index(mesh.vertices.size(), [&](size_t i) {
     // A corner of a wet pixel, which has a place.
+    const LakeVertex& v = mesh.vertices[i];
     const UnfoldedFaces::FacePoint at = *plane.from_anchor(double(input_.origin_col) + v.col - 0.5,
                                                            double(input_.origin_row) + v.row - 0.5);
     const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
-    lake.places.push_back({p.lon, p.lat, (*to_ellipsoid_)(p, v.height)});
-    lake.on_surface.push_back(v.height == body.level);
-  }
+    lake.places[i] = {p.lon, p.lat, (*to_ellipsoid_)(p, v.height)};
+  });
+  for (const LakeVertex& v : mesh.vertices) lake.on_surface.push_back(v.height == body.level);
   lake.fog.mesh.provenance = {
       uint64_t(f.id),
       f.id,
