@@ -9,6 +9,7 @@ packages=(
   libopenvdb-dev libboost-dev libdraco-dev draco libopencv-dev
   libspdlog-dev libfmt-dev libtbb-dev libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3 libzstd-dev libcli11-dev nlohmann-json3-dev
+  libssl-dev  # SHA-1 naming volume streams (formats/vdb; OpenSSL 3: Apache-2.0)
   libgtest-dev libgmock-dev libbenchmark-dev libs2-dev
   libcpp-httplib-dev chromium
   grass-core  # test oracle only (r.sun, run as a separate process): never linked

