@@ -1,9 +1,9 @@
-// deform.water's water body (level + fill, water_body.h), its closed mesh (water_mesh.h) and its
-// fog volume (vdb/mesh_fog.h) for a 1,000 x 1,000-sample basin: the tests' bowl of hills
-// (islands, a ragged shore) inside an ellipse, filled to the spill level. Goals: <= 50 ms for the
-// body, well under a second for the mesh. With --dem=PATH it writes that DEM as a GeoTIFF and
-// prints the level and the seed's coordinates for compare_rlake.sh (r.lake on the same DEM), then
-// exits.
+// deform.water's water body (level + fill, water_body.h), its closed mesh (water_mesh.h), its
+// fog volume (vdb/mesh_fog.h) and the mesh's store blob for a 1,000 x 1,000-sample basin: the
+// tests' bowl of hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
+// Goals: <= 50 ms for the body, well under a second for the mesh. With --dem=PATH it writes that
+// DEM as a GeoTIFF and prints the level and the seed's coordinates for compare_rlake.sh (r.lake on
+// the same DEM), then exits.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "content/facet_normals.h"
+#include "gltf/mesh_glb.h"
 #include "main_thread_cpu.h"
 #include "tests/water_basins.h"
 #include "vdb/mesh_fog.h"
@@ -92,10 +93,31 @@ void BM_LakeMeshNormals(benchmark::State& state) {
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
   const maquette::FogBody fog = lake_fog(body, lake_mesh(raster, body));
   size_t vertices = 0;
+  maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) vertices = maquette::with_facet_normals(fog.mesh).positions.size() / 3;
+  main_cpu.stop();
   state.counters["vertices"] = double(vertices);
 }
 BENCHMARK(BM_LakeMeshNormals)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+
+// The lake's mesh with its normals and material as the store's blob (gltf/mesh_glb.h: the GLB,
+// Draco-compressed, that the runner writes for the mesh port): what the program does with the
+// mesh after the step.
+void BM_LakeMeshBlob(benchmark::State& state) {
+  const BasinRaster raster = basin().raster();
+  const WaterBody body = fill_basin(raster, water_level(raster, {}));
+  maquette::MeshContent content;
+  content.materials.emplace_back().name = "water";  // its factors do not change the work
+  content.objects.push_back(
+      maquette::with_facet_normals(lake_fog(body, lake_mesh(raster, body)).mesh));
+  content.objects.back().material = 0;
+  size_t bytes = 0;
+  maquette::bench::MainThreadCpu main_cpu(state);
+  for (auto _ : state) bytes = maquette::mesh_content_blob(content).size();
+  main_cpu.stop();
+  state.counters["MB"] = double(bytes) / 1e6;
+}
+BENCHMARK(BM_LakeMeshBlob)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The whole water body: level, fill, mesh with its normals and fog volume (the goal: <= 50 ms on
 // 2 cores).
