@@ -29,14 +29,22 @@ Normal face_normal(const std::vector<float>& positions, const uint32_t* corners)
   return n;
 }
 
+// f(first, last) over [0, n) in parallel by ranges of at least 4096 (triangles or vertices): a
+// building's few stay on the calling thread.
+template <typename F>
+void in_ranges(size_t n, const F& f) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
+                    [&](const tbb::blocked_range<size_t>& r) { f(r.begin(), r.end()); });
+}
+
 }  // namespace
 
 MeshObject with_facet_normals(const MeshObject& object) {
   const size_t vertices = object.positions.size() / 3, triangles = object.indices.size() / 3;
   const std::vector<uint32_t>& indices = object.indices;
   std::vector<Normal> normal(triangles);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles), [&](const auto& range) {
-    for (size_t t = range.begin(); t < range.end(); ++t)
+  in_ranges(triangles, [&](size_t first, size_t last) {
+    for (size_t t = first; t < last; ++t)
       normal[t] = face_normal(object.positions, &indices[3 * t]);
   });
   // The corners grouped by vertex, each vertex's in triangle order (a counting sort): vertex v's
@@ -57,9 +65,9 @@ MeshObject with_facet_normals(const MeshObject& object) {
   out.material = object.material;
   out.indices.resize(by_vertex.size());
   std::vector<uint32_t> copies(vertices + 1, 0);
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(vertices)), [&](const auto& range) {
+  in_ranges(vertices, [&](size_t first, size_t last) {
     std::vector<const Normal*> own;
-    for (uint32_t v = range.begin(); v < range.end(); ++v) {
+    for (uint32_t v = uint32_t(first); v < last; ++v) {
       own.clear();
       for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
         const uint32_t c = by_vertex[i];
@@ -91,8 +99,8 @@ MeshObject with_facet_normals(const MeshObject& object) {
     if (uvs)
       for (size_t k = 0; k < 2; ++k) out.uvs[2 * to + k] = object.uvs[2 * size_t(v) + k];
   };
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(vertices)), [&](const auto& range) {
-    for (uint32_t v = range.begin(); v < range.end(); ++v) {
+  in_ranges(vertices, [&](size_t first, size_t last) {
+    for (uint32_t v = uint32_t(first); v < last; ++v) {
       uint32_t made = 0;
       for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
         const uint32_t c = by_vertex[i], o = out.indices[c];
