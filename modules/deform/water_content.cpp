@@ -1,6 +1,7 @@
 #include "water_content.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -133,15 +134,25 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   const CellContent& any = output_.content.begin()->second;
   if (any.wants("mesh")) {
     const auto& first = lake.places.front();
-    MeshContent& content =
-        output_.content.at(owner(lake.where + ": the lake's mesh", first[0], first[1]))
-            .mesh("mesh");
+    const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
+    MeshContent& content = output_.content.at(cell).mesh("mesh");
     if (content.materials.empty()) content.materials.push_back(material_);
-    MeshObject water = with_facet_normals(object(lake, content.origin));
-    water.material = 0;
-    content.objects.push_back(std::move(water));
+    unlit_.push_back({cell, content.objects.size()});
+    content.objects.push_back(object(lake, content.origin));
+    content.objects.back().material = 0;
   }
   if (any.wants("volume")) lakes_.push_back(std::move(lake));
+}
+
+void LakeContent::finish() {
+  tbb::parallel_invoke(
+      [&] {
+        for (const Unlit& mesh : unlit_) {
+          MeshObject& water = output_.content.at(mesh.cell).mesh("mesh").objects[mesh.object];
+          water = with_facet_normals(water);
+        }
+      },
+      [&] { write_volumes(); });
 }
 
 void LakeContent::write_volumes() {

@@ -38,14 +38,16 @@ class LakeContent {
   LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output, Material material);
 
   // The lake of water stroke `f` (a non-empty body of `basin`): its mesh added to its owner
-  // cell's mesh port, when the step maps it, and kept for the volume.
+  // cell's mesh port, when the step maps it (its normals set by finish), and kept for the volume.
   void add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body);
 
-  // The volumes of the lakes added, when the step maps the volume port: one VDB stream per owner
-  // cell, a fog grid "water" per lake (horizontal voxels of a pixel's side, vertical ones of the
-  // lake's greatest depth over kVoxelsDeep, a layer of voxel faces at the water's surface, so
-  // that no voxel layer is cut by it).
-  void write_volumes();
+  // Once the lakes are added: their meshes' facet normals and, when the step maps the volume
+  // port, their volumes, the two at once (TBB: the volumes' serial writing beside the normals;
+  // the same content for any thread count). The volumes: one VDB stream per owner cell, a fog
+  // grid "water" per lake (horizontal voxels of a pixel's side, vertical ones of the lake's
+  // greatest depth over kVoxelsDeep, a layer of voxel faces at the water's surface, so that no
+  // voxel layer is cut by it).
+  void finish();
 
   static constexpr int kVoxelsDeep = 32;
 
@@ -57,6 +59,12 @@ class LakeContent {
     std::string where;                          // "feature 7 (tool water)"
     double level = 0;
   };
+  // A mesh added without its normals yet: its cell and its place in the cell's mesh port.
+  struct Unlit {
+    CellId cell;
+    size_t object = 0;
+  };
+  void write_volumes();
   MeshObject object(const Lake& lake, const EnuOrigin& origin) const;
   CellId owner(const std::string& what, double lon, double lat) const;
   // The mean height of the lake's surface vertices in `object` (the lake in a frame): a plane
@@ -71,6 +79,7 @@ class LakeContent {
   const Mosaic& input_;
   Mosaic& output_;
   std::vector<Lake> lakes_;
+  std::vector<Unlit> unlit_;
 };
 
 }  // namespace maquette::deform

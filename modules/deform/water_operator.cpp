@@ -148,7 +148,7 @@ class Water : public RegionOperator {
       for (size_t k = 0; depth != output.layers.end() && k < body.wet.size(); ++k)
         depth->second.at(int(body.wet[k] % side), int(body.wet[k] / side)) = body.depth[k];
     }
-    lakes.write_volumes();
+    lakes.finish();
   }
 };
 
