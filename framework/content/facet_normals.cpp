@@ -29,11 +29,13 @@ Normal face_normal(const std::vector<float>& positions, const uint32_t* corners)
   return n;
 }
 
-// f(first, last) over [0, n) in parallel by ranges of at least 4096 (triangles or vertices): a
-// building's few stay on the calling thread.
+// f(first, last) over [0, n) in parallel by ranges of at least kRange (triangles or vertices): a
+// building's few are done in one call, without TBB.
 template <typename F>
 void in_ranges(size_t n, const F& f) {
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
+  constexpr size_t kRange = 4096;
+  if (n <= kRange) return f(0, n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kRange),
                     [&](const tbb::blocked_range<size_t>& r) { f(r.begin(), r.end()); });
 }
 
