@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "render/render_job.h"
+#include "render/terrain_scene.h"
 
 namespace maquette {
 namespace {
@@ -106,6 +107,58 @@ BENCHMARK(BM_Panorama)
     ->Args({8000, 5000, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The whole panorama's steps apart (one thread): the mesh from the store, the z-buffer, the colour
+// and guides.
+struct PanoramaSteps {
+  std::unique_ptr<Store> store = Store::open(panorama_store().path, Store::Mode::ReadOnly);
+  PanoramaJob j;
+  LayerInfo dem = *store->layer("dem"), texture = *store->layer("rgb");
+  PinholeCamera camera;
+  PanoramaSteps(int width, int height) : j(job(width, height)), camera(aimed(j)) {}
+  static CameraSpec aimed(const PanoramaJob& j) {
+    CameraSpec spec = j.camera;
+    const auto [heading, pitch] = aim(spec.eye, *j.look_at);
+    spec.heading = heading;
+    spec.pitch = pitch;
+    return spec;
+  }
+  TerrainScene scene() const {
+    return build_terrain_scene(*store, default_grid(), dem, camera, 1, 1, true);
+  }
+  PanoramaLook look() const {
+    PanoramaLook l;
+    l.texture = &texture;
+    return l;
+  }
+};
+
+void BM_PanoramaMesh(benchmark::State& state) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)));
+  for (auto _ : state) benchmark::DoNotOptimize(steps.scene());
+}
+BENCHMARK(BM_PanoramaMesh)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PanoramaRasterize(benchmark::State& state) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)));
+  const TerrainScene scene = steps.scene();
+  for (auto _ : state) benchmark::DoNotOptimize(rasterize(scene.mesh, steps.camera));
+}
+BENCHMARK(BM_PanoramaRasterize)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PanoramaShade(benchmark::State& state) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)));
+  const TerrainScene scene = steps.scene();
+  const Fragments f = rasterize(scene.mesh, steps.camera);
+  const PanoramaLook look = steps.look();
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        shade_panorama(*steps.store, default_grid(), scene, f, steps.camera, look));
+}
+BENCHMARK(BM_PanoramaShade)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_WritePanorama(benchmark::State& state) {
   const auto store = Store::open(panorama_store().path, Store::Mode::ReadOnly);
