@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "core/halo.h"
+#include "core/round_half_away.h"
 
 namespace maquette {
 namespace {
@@ -12,8 +13,8 @@ namespace {
 // Samples channel k of a halo tile at (u, v), in pixels from the centre of pixel (0, 0).
 float sample_tile(const Tile<float>& t, double u, double v, int k, bool bilinear) {
   const int n = t.size();
-  const int nc = std::clamp(int(std::lround(u)), 0, n - 1);
-  const int nr = std::clamp(int(std::lround(v)), 0, n - 1);
+  const int nc = std::clamp(int(round_half_away(u)), 0, n - 1);
+  const int nr = std::clamp(int(round_half_away(v)), 0, n - 1);
   const float nearest = t.at(nc, nr, k);
   if (!bilinear || !std::isfinite(nearest)) return nearest;
   const int c0 = std::clamp(int(std::floor(u)), -1, n - 1);
@@ -31,17 +32,37 @@ float sample_tile(const Tile<float>& t, double u, double v, int k, bool bilinear
 
 LayerSampler::LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
                            bool bilinear)
-    : store_(store), grid_(grid), layer_(layer), base_(level == layer.level), bilinear_(bilinear) {}
+    : store_(store),
+      grid_(grid),
+      layer_(layer),
+      level_(level),
+      base_(level == layer.level),
+      bilinear_(bilinear) {}
 
 bool LayerSampler::sample(LonLat p, CellId cell, float* out) {
   const Halo& h = halo(cell);
   if (!h.tile) return false;
-  const PlanePoint q = grid_.forward(p);
+  read(h, grid_.forward(p), out);
+  return true;
+}
+
+bool LayerSampler::sample(PlanePoint q, float* out) {
+  auto inside = [&q](const PlaneSquare& sq) {
+    return q.x >= sq.x_min && q.x <= sq.x_min + sq.side && q.y <= sq.y_max &&
+           q.y >= sq.y_max - sq.side;
+  };
+  if (!last_ || !inside(last_->square))
+    last_ = &halo(grid_.cell_from_point(grid_.inverse(q), level_));
+  if (!last_->tile) return false;
+  read(*last_, q, out);
+  return true;
+}
+
+void LayerSampler::read(const Halo& h, PlanePoint q, float* out) const {
   const PlaneSquare& sq = h.square;
   const int n = layer_.tile_size;
   const double u = (q.x - sq.x_min) / sq.side * n - 0.5, v = (sq.y_max - q.y) / sq.side * n - 0.5;
   for (int k = 0; k < layer_.channels; ++k) out[k] = sample_tile(*h.tile, u, v, k, bilinear_);
-  return true;
 }
 
 namespace {
@@ -59,6 +80,7 @@ void erase_unused(Map& entries) {
 }  // namespace
 
 void LayerSampler::forget_unused() {
+  last_ = nullptr;
   erase_unused(halo_);
   erase_unused(raw_);
 }

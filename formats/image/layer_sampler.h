@@ -24,6 +24,10 @@ class LayerSampler {
   // samples (weights renormalized); a point whose nearest sample is missing gets NaN. Returns
   // false, writing nothing, when the cell has no tile.
   bool sample(LonLat p, CellId cell, float* out);
+  // The same at `q`, a point of the grid's plane (Grid::forward), for callers that have it
+  // without the projection: while q stays in the previous call's cell (its square, edges included:
+  // the halo covers them) that cell's tile is read again, else the cell holding q is looked up.
+  bool sample(PlanePoint q, float* out);
 
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
   // a large region.
@@ -41,13 +45,16 @@ class LayerSampler {
   };
   const Halo& halo(CellId cell);
   const std::optional<Tile<float>>& raw(CellId cell);
+  void read(const Halo& h, PlanePoint q, float* out) const;
 
   const Store& store_;
   const Grid& grid_;
   const LayerInfo& layer_;
+  int level_;
   bool base_, bilinear_;
   std::map<CellId, Raw> raw_;
   std::map<CellId, Halo> halo_;
+  const Halo* last_ = nullptr;  // the cell of the last plane point sampled
 };
 
 }  // namespace maquette

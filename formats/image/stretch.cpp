@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/round_half_away.h"
+
 namespace maquette {
 
 StretchRange quantile_range(std::vector<float>& v, double q0, double q1) {
@@ -19,7 +21,7 @@ StretchRange quantile_range(std::vector<float>& v, double q0, double q1) {
 
 uint8_t stretch_byte(double value, const StretchRange& range) {
   const double t = (value - range.first) / (range.second - range.first);
-  return uint8_t(std::lround(255.0 * std::clamp(t, 0.0, 1.0)));
+  return uint8_t(round_half_away(255.0 * std::clamp(t, 0.0, 1.0)));
 }
 
 }  // namespace maquette

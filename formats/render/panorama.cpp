@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/round_half_away.h"
 #include "image/layer_sampler.h"
 #include "image/stretch.h"
 
@@ -36,22 +37,39 @@ int stretch_step(int width, int height) {
 
 namespace {
 
-// The lon/lat a terrain pixel `i` of `f` sees, interpolated in its triangle.
-LonLat pixel_lonlat(const TerrainScene& scene, const Fragments& f, size_t i) {
+// Where a terrain pixel `i` of `f` sees the surface: lon/lat and the grid's plane point,
+// interpolated in its triangle (the plane's NaN when a corner is off its tile's face).
+struct SurfacePoint {
+  LonLat lonlat{0, 0};
+  PlanePoint plane{0, 0};
+};
+
+SurfacePoint surface_point(const TerrainScene& scene, const Fragments& f, size_t i) {
   const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
   const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
-  LonLat ll{0, 0};
+  SurfacePoint s;
   for (int j = 0; j < 3; ++j) {
-    ll.lon += b[j] * scene.lonlat[2 * size_t(v[j])];
-    ll.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
+    s.lonlat.lon += b[j] * scene.lonlat[2 * size_t(v[j])];
+    s.lonlat.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
+    s.plane.x += b[j] * scene.plane[2 * size_t(v[j])];
+    s.plane.y += b[j] * scene.plane[2 * size_t(v[j]) + 1];
   }
-  return ll;
+  return s;
 }
 
-// The texture's texel at `ll` (3 bands; NaN where it has none).
-void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, LonLat ll, float* out) {
+// `layer`'s value at `p` through `sampler`: from the plane point (no projection) where it is
+// known, else from the lon/lat. False where the layer has no tile.
+bool sample_at(LayerSampler& sampler, const Grid& grid, const LayerInfo& layer,
+               const SurfacePoint& p, float* out) {
+  if (!std::isnan(p.plane.x)) return sampler.sample(p.plane, out);
+  return sampler.sample(p.lonlat, grid.cell_from_point(p.lonlat, layer.level), out);
+}
+
+// The texture's texel at `p` (3 bands; NaN where it has none).
+void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, const SurfacePoint& p,
+                  float* out) {
   float texel[4] = {NAN, NAN, NAN, NAN};
-  if (s.texture->sample(ll, grid.cell_from_point(ll, look.texture->level), texel))
+  if (sample_at(*s.texture, grid, *look.texture, p, texel))
     for (int k = 0; k < 3; ++k) out[k] = texel[look.texture->channels < 3 ? 0 : k];
 }
 
@@ -82,7 +100,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
     for (int col = 0; col < f.width; col += step) {
       const size_t i = size_t(row) * size_t(f.width) + size_t(col);
       if (f.triangle[i] != Fragments::kSky)
-        sample_texel(s, grid, look, pixel_lonlat(scene, f, i), &found[3 * i]);
+        sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
     }
   });
   for (size_t i = 0; i < found.size() / 3; ++i)
@@ -130,17 +148,16 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * v[j] + size_t(k)];
         return sum;
       };
-      const LonLat ll = pixel_lonlat(scene, f, i);
-      p.lon[i] = ll.lon;
-      p.lat[i] = ll.lat;
+      const SurfacePoint at = surface_point(scene, f, i);
+      p.lon[i] = at.lonlat.lon;
+      p.lat[i] = at.lonlat.lat;
       p.altitude[i] = interpolate(scene.altitude, 1, 0);
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
-      if (s.texture) sample_texel(s, grid, look, ll, &texels[3 * i]);
+      if (s.texture) sample_texel(s, grid, look, at, &texels[3 * i]);
       if (s.land_cover) {
         float label = NAN;
-        if (s.land_cover->sample(ll, grid.cell_from_point(ll, look.land_cover->level), &label))
-          p.land_cover[i] = label;
+        if (sample_at(*s.land_cover, grid, *look.land_cover, at, &label)) p.land_cover[i] = label;
       }
       const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
                          interpolate(scene.normals, 3, 2)};
@@ -191,7 +208,8 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         colour = mix(colour, kHaze, 1 - std::exp(-p.distance[i] / look.haze_distance));
       }
       for (int k = 0; k < 3; ++k)
-        p.rgb[3 * i + size_t(k)] = uint8_t(std::lround(std::clamp(colour[size_t(k)], 0.0, 255.0)));
+        p.rgb[3 * i + size_t(k)] =
+            uint8_t(round_half_away(std::clamp(colour[size_t(k)], 0.0, 255.0)));
     }
   });
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/round_half_away.h"
+
 namespace maquette {
 namespace {
 
@@ -48,7 +50,7 @@ bool top_left(const ScreenVertex& a, const ScreenVertex& b) {
 ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
   const auto p = camera.to_pixel(v);
   if (!(std::abs(p[0]) < kMaxPixels && std::abs(p[1]) < kMaxPixels)) return {};
-  return {std::llround(p[0] * kOne), std::llround(p[1] * kOne), 1 / v[2]};
+  return {round_half_away(p[0] * kOne), round_half_away(p[1] * kOne), 1 / v[2]};
 }
 
 // Rows [first, last] whose centre (row + 0.5) may be inside a triangle, within the picture.

@@ -29,10 +29,20 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
   auto slot = [&](int col, int row) {
     return size_t(row + halo) * size_t(size + 2 * halo) + size_t(col + halo);
   };
+  const FaceCoord origin = *pixel_source(grid, cell, size, 0, 0);
+  const PlaneSquare square = grid.plane_square(cell);
+  auto plane = [&](int col, int row) {
+    return PlanePoint{square.x_min + (col + 0.5) * square.side / size,
+                      square.y_max - (row + 0.5) * square.side / size};
+  };
   auto place_exactly = [&](int col, int row) {
     const std::optional<FaceCoord> source = pixel_source(grid, cell, size, col, row);
-    if (source)
-      places_[slot(col, row)] = exact(frame, heights, pixel_centre(grid, *source, pixel_level));
+    if (!source) return;
+    SamplePlace& s = places_[slot(col, row)];
+    s = exact(frame, heights, pixel_centre(grid, *source, pixel_level));
+    if (source->face == origin.face && source->col == origin.col + col &&
+        source->row == origin.row + row)
+      s.plane = plane(col, row);
   };
   for (int ring = 1; ring <= halo; ++ring)
     for (int k = -ring; k < size + ring; ++k) {
@@ -43,7 +53,6 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
     }
   // The lattice on the cell's own face: nodes at samples i (size - 1) / m, i = 0 .. m.
   const int m = std::min(kLattice, size - 1);
-  const FaceCoord origin = *pixel_source(grid, cell, size, 0, 0);
   std::vector<SamplePlace> nodes;
   double west = INFINITY, east = -INFINITY, poleward = 0;
   for (int j = 0; j <= m; ++j)
@@ -75,6 +84,7 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
       const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
       SamplePlace& s = places_[slot(col, row)];
       s.known = true;
+      s.plane = plane(col, row);
       s.position = {0, 0};
       for (int k = 0; k < 4; ++k) {
         s.position.lon += w[k] * q[k]->position.lon;

@@ -11,6 +11,7 @@
 // samples).
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "core/enu_frame.h"
@@ -25,6 +26,10 @@ struct SamplePlace {
   Vec3d base{};        // the point at height 0 of the DEM's datum, ENU metres
   Vec3d up{};          // the ellipsoid's unit normal there, in the ENU frame
   bool known = false;  // false beyond one face width (core/halo.h pixel_source)
+  // The sample's centre in the grid's plane (Grid::forward) when it lies on the cell's own face
+  // where the face's regular lattice puts it (exactly: pixel squares); NaN for a halo sample
+  // read from another face, whose plane is turned or elsewhere.
+  PlanePoint plane{NAN, NAN};
 };
 
 class SamplePlaces {

@@ -62,8 +62,9 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
       highest = std::max(highest, z);
       vertex[slot(c, r)] = uint32_t(part.altitude.size());
       part.mesh.positions.insert(part.mesh.positions.end(), p.begin(), p.end());
-      const LonLat& ll = places.at(c, r).position;
-      part.lonlat.insert(part.lonlat.end(), {ll.lon, ll.lat});
+      const SamplePlace& place = places.at(c, r);
+      part.lonlat.insert(part.lonlat.end(), {place.position.lon, place.position.lat});
+      part.plane.insert(part.plane.end(), {place.plane.x, place.plane.y});
       part.altitude.push_back(z);
     }
   auto at = [&](int c, int r) {
@@ -113,6 +114,7 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
     const auto e = camera.frame().to_enu(p.lon, p.lat, h);
     part.mesh.positions.insert(part.mesh.positions.end(), e.begin(), e.end());
     part.lonlat.insert(part.lonlat.end(), {p.lon, p.lat});
+    part.plane.insert(part.plane.end(), {part.plane[2 * size_t(v)], part.plane[2 * size_t(v) + 1]});
     part.altitude.push_back(z);
     for (int k = 0; k < 3; ++k) part.normals.push_back(part.normals[3 * size_t(v) + size_t(k)]);
     return base;
@@ -243,6 +245,7 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
     auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
     append(scene.mesh.positions, part.mesh.positions);
     append(scene.lonlat, part.lonlat);
+    append(scene.plane, part.plane);
     append(scene.altitude, part.altitude);
     append(scene.normals, part.normals);
     for (const uint32_t i : part.mesh.indices) scene.mesh.indices.push_back(base + i);
