@@ -52,6 +52,16 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
   // The drawn samples (-1 .. n, the halo's inner ring included) become vertices.
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
   TerrainScene part;
+  // At most a vertex per drawn sample and per ring sample (the skirt's), two triangles per square
+  // and per ring edge: reserved, so the arrays are not copied as they grow.
+  const size_t ring_size = 4 * size_t(n + 1);
+  const size_t most_vertices = size_t(n + 2) * size_t(n + 2) + ring_size;
+  part.mesh.positions.reserve(3 * most_vertices);
+  part.mesh.indices.reserve(6 * (size_t(n + 1) * size_t(n + 1) + ring_size));
+  part.lonlat.reserve(2 * most_vertices);
+  part.plane.reserve(2 * most_vertices);
+  part.altitude.reserve(most_vertices);
+  part.normals.reserve(3 * most_vertices);
   float lowest = INFINITY, highest = -INFINITY;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
@@ -120,6 +130,7 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
     return base;
   };
   std::vector<std::array<int, 2>> ring;  // the halo's ring, once round
+  ring.reserve(ring_size);
   for (int c = -1; c < n; ++c) ring.push_back({c, -1});
   for (int r = -1; r < n; ++r) ring.push_back({n, r});
   for (int c = n; c > -1; --c) ring.push_back({c, n});
@@ -238,18 +249,36 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
     parts[i] = tile_part(store, grid, dem, cells[i], camera, heights, exaggeration);
   });
+  // The parts joined in cell order, each copied in parallel to its place.
+  std::vector<size_t> first_vertex(parts.size() + 1, 0), first_index(parts.size() + 1, 0);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    first_vertex[i + 1] = first_vertex[i] + parts[i].altitude.size();
+    first_index[i + 1] = first_index[i] + parts[i].mesh.indices.size();
+  }
   TerrainScene scene;
   scene.cells = cells;
-  for (const TerrainScene& part : parts) {
-    const auto base = uint32_t(scene.altitude.size());
-    auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
-    append(scene.mesh.positions, part.mesh.positions);
-    append(scene.lonlat, part.lonlat);
-    append(scene.plane, part.plane);
-    append(scene.altitude, part.altitude);
-    append(scene.normals, part.normals);
-    for (const uint32_t i : part.mesh.indices) scene.mesh.indices.push_back(base + i);
-  }
+  const size_t vertices = first_vertex.back();
+  scene.mesh.positions.resize(3 * vertices);
+  scene.mesh.indices.resize(first_index.back());
+  scene.lonlat.resize(2 * vertices);
+  scene.plane.resize(2 * vertices);
+  scene.altitude.resize(vertices);
+  scene.normals.resize(3 * vertices);
+  tbb::parallel_for(size_t(0), parts.size(), [&](size_t i) {
+    const TerrainScene& part = parts[i];
+    const size_t v = first_vertex[i];
+    auto copy = [v](const auto& from, auto& to, size_t per_vertex) {
+      std::copy(from.begin(), from.end(), to.begin() + std::ptrdiff_t(per_vertex * v));
+    };
+    copy(part.mesh.positions, scene.mesh.positions, 3);
+    copy(part.lonlat, scene.lonlat, 2);
+    copy(part.plane, scene.plane, 2);
+    copy(part.altitude, scene.altitude, 1);
+    copy(part.normals, scene.normals, 3);
+    std::transform(part.mesh.indices.begin(), part.mesh.indices.end(),
+                   scene.mesh.indices.begin() + std::ptrdiff_t(first_index[i]),
+                   [base = uint32_t(v)](uint32_t k) { return base + k; });
+  });
   return scene;
 }
 
