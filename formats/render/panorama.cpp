@@ -12,13 +12,14 @@
 #include "core/round_half_away.h"
 #include "image/layer_sampler.h"
 #include "image/stretch.h"
+#include "render/sky.h"
 
 namespace maquette {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
 using Rgb = std::array<double, 3>;
-constexpr Rgb kHaze{205, 216, 228}, kZenith{92, 140, 200}, kEarth{196, 184, 160};
+constexpr Rgb kEarth{196, 184, 160};
 
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
@@ -193,20 +194,19 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   }
 
   tbb::parallel_for(0, h, [&](int row) {
+    const size_t start = size_t(row) * size_t(w);
+    if (std::find(f.triangle.begin() + std::ptrdiff_t(start),
+                  f.triangle.begin() + std::ptrdiff_t(start + size_t(w)),
+                  Fragments::kSky) != f.triangle.begin() + std::ptrdiff_t(start + size_t(w)))
+      sky_row(camera, f.first_row + row, &p.rgb[3 * start]);  // the terrain drawn over it
     for (int col = 0; col < w; ++col) {
-      const size_t i = size_t(row) * size_t(w) + size_t(col);
-      Rgb colour;
-      if (f.triangle[i] == Fragments::kSky) {
-        const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
-        const double elevation = std::atan2(ray[2], std::hypot(ray[0], ray[1]));
-        colour = mix(kHaze, kZenith, std::clamp(elevation / (30 * kDegree), 0.0, 1.0));
-      } else {
-        colour = kEarth;
-        if (!std::isnan(texels[3 * i]))
-          for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texels[3 * i + k], stretch[k]);
-        for (double& c : colour) c *= shades[i];
-        colour = mix(colour, kHaze, 1 - std::exp(-p.distance[i] / look.haze_distance));
-      }
+      const size_t i = start + size_t(col);
+      if (f.triangle[i] == Fragments::kSky) continue;
+      Rgb colour = kEarth;
+      if (!std::isnan(texels[3 * i]))
+        for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texels[3 * i + k], stretch[k]);
+      for (double& c : colour) c *= shades[i];
+      colour = mix(colour, kHazeColour, 1 - std::exp(-p.distance[i] / look.haze_distance));
       for (int k = 0; k < 3; ++k)
         p.rgb[3 * i + size_t(k)] =
             uint8_t(round_half_away(std::clamp(colour[size_t(k)], 0.0, 255.0)));
