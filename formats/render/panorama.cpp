@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <optional>
 
@@ -112,8 +113,9 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
 BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
   BandStretch stretch{StretchRange{0, 255}, StretchRange{0, 255}, StretchRange{0, 255}};
   if (look.texture && look.stretch)
-    for (size_t k = 0; k < 3; ++k)
+    tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
       stretch[k] = quantile_range(texels[k], kDisplayStretch.first, kDisplayStretch.second);
+    });
   return stretch;
 }
 
@@ -126,17 +128,26 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.width = w;
   p.height = h;
   p.first_row = f.first_row;
-  p.rgb.assign(3 * n, 0);
-  for (auto* guide : {&p.altitude, &p.distance, &p.lon, &p.lat, &p.shading}) guide->assign(n, NAN);
-  if (look.land_cover) p.land_cover.assign(n, NAN);
-  if (look.shadow) p.cast_shadow.assign(n, NAN);
-  p.silhouette.assign(n, 0);
+  // The picture's arrays filled side by side: touching their fresh pages is much of their cost.
+  std::vector<float> texels, shades;
+  const std::vector<std::function<void()>> fills = {
+      [&] { p.rgb.assign(3 * n, 0); },
+      [&] { p.altitude.assign(n, NAN); },
+      [&] { p.distance.assign(n, NAN); },
+      [&] { p.lon.assign(n, NAN); },
+      [&] { p.lat.assign(n, NAN); },
+      [&] { p.shading.assign(n, NAN); },
+      [&] { p.land_cover.assign(look.land_cover ? n : 0, NAN); },
+      [&] { p.cast_shadow.assign(look.shadow ? n : 0, NAN); },
+      [&] { p.silhouette.assign(n, 0); },
+      [&] { texels.assign(3 * n, NAN); },  // the surface's texel, NaN for none
+      [&] { shades.assign(n, 0); }};
+  tbb::parallel_for(size_t(0), fills.size(), [&](size_t k) { fills[k](); });
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto samplers = make_samplers(store, grid, look);
 
-  // What each pixel sees: guides, the surface's texel (NaN for none) and its shade.
-  std::vector<float> texels(3 * n, NAN), shades(n, 0);
+  // What each pixel sees: guides, the surface's texel and its shade.
   tbb::parallel_for(0, h, [&](int row) {
     Samplers& s = samplers.local();
     for (int col = 0; col < w; ++col) {
@@ -183,13 +194,14 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   } else {
     StretchTexels seen;
     const int step = stretch_step(w, camera.spec().height);
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col) {
-        const size_t i = size_t(row) * size_t(w) + size_t(col);
-        if (on_stretch_grid(f.first_row + row, col, step))
-          for (size_t k = 0; k < 3; ++k)
-            if (!std::isnan(texels[3 * i + k])) seen[k].push_back(texels[3 * i + k]);
-      }
+    tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {  // a band each
+      for (int row = 0; row < h; ++row)
+        for (int col = 0; col < w; ++col) {
+          const size_t i = size_t(row) * size_t(w) + size_t(col);
+          if (on_stretch_grid(f.first_row + row, col, step) && !std::isnan(texels[3 * i + k]))
+            seen[k].push_back(texels[3 * i + k]);
+        }
+    });
     stretch = texel_stretch(seen, look);
   }
 
