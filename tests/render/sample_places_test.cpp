@@ -2,12 +2,14 @@
 // against the grid's own pixel centre (core/halo.h pixel_source + pixel_centre), and its ENU
 // position at several heights against PROJ's east-north-up frame at the eye (tests/support
 // proj_enu.h), on heights above the ellipsoid; for a cell in mid-latitudes, one on a face's edge
-// (its halo ring on the neighbouring face, turned) and one next to a pole.
+// (its halo ring on the neighbouring face, turned) and one next to a pole; and each sample's point
+// of the grid's plane against Grid::forward.
 #include "render/sample_places.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "core/halo.h"
 #include "core/tile.h"
@@ -19,6 +21,9 @@ namespace {
 struct Worst {
   double degrees = 0, metres = 0;
   int samples = 0;
+  double plane = 0;   // metres of the grid's plane from Grid::forward of the exact centre
+  int off_face = 0;   // samples read from another face (no plane point)
+  int misplaced = 0;  // samples with a plane point off their face, or none on it
 };
 
 constexpr int kHalo = 2;  // the terrain's two rings: the drawn one and the normals' (terrain_scene)
@@ -38,6 +43,14 @@ Worst worst_error(CellId cell, int size, GeodeticPoint eye) {
       EXPECT_EQ(place.known, source.has_value()) << col << " " << row;
       if (!source) continue;
       const LonLat exact = pixel_centre(grid, *source, level);
+      if (source->face == cell.face()) {
+        const PlanePoint q = grid.forward(exact);
+        w.plane = std::max({w.plane, std::abs(place.plane.x - q.x), std::abs(place.plane.y - q.y)});
+        w.misplaced += std::isnan(place.plane.x);
+      } else {
+        ++w.off_face;
+        w.misplaced += !std::isnan(place.plane.x);
+      }
       w.degrees = std::max({w.degrees, std::abs(place.position.lon - exact.lon),
                             std::abs(place.position.lat - exact.lat)});
       for (const double h : {-400.0, 0.0, 2500.0, 8800.0}) {
@@ -78,6 +91,11 @@ TEST(SamplePlaces, WithinAThousandthOfASampleOfProj) {
     const double sample = grid.level_info(c.cell.level(), c.size).pixel_m;
     EXPECT_LE(w.metres, 1e-3 * sample) << c.name;
     EXPECT_LE(w.degrees * 111e3, 1e-3 * sample) << c.name;
+    // The plane points: the grid's forward projection of the centres on the cell's face (1e-6 of
+    // a sample: the same point), none for those read from another face.
+    EXPECT_LE(w.plane, 1e-6 * sample) << c.name;
+    EXPECT_EQ(w.misplaced, 0) << c.name;
+    EXPECT_EQ(w.off_face > 0, std::string(c.name) == "face edge") << c.name;
   }
 }
 
