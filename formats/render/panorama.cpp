@@ -194,14 +194,13 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   } else {
     StretchTexels seen;
     const int step = stretch_step(w, camera.spec().height);
-    tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {  // a band each
-      for (int row = 0; row < h; ++row)
-        for (int col = 0; col < w; ++col) {
-          const size_t i = size_t(row) * size_t(w) + size_t(col);
-          if (on_stretch_grid(f.first_row + row, col, step) && !std::isnan(texels[3 * i + k]))
-            seen[k].push_back(texels[3 * i + k]);
-        }
-    });
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const size_t i = size_t(row) * size_t(w) + size_t(col);
+        if (on_stretch_grid(f.first_row + row, col, step))
+          for (size_t k = 0; k < 3; ++k)
+            if (!std::isnan(texels[3 * i + k])) seen[k].push_back(texels[3 * i + k]);
+      }
     stretch = texel_stretch(seen, look);
   }
 
