@@ -10,22 +10,29 @@
 namespace maquette {
 namespace {
 
-// Samples channel k of a halo tile at (u, v), in pixels from the centre of pixel (0, 0).
-float sample_tile(const Tile<float>& t, double u, double v, int k, bool bilinear) {
+// Samples every channel of a halo tile at (u, v), in pixels from the centre of pixel (0, 0), into
+// out[0 .. channels - 1]: the places and weights found once for all of them.
+void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bilinear,
+                 float* out) {
   const int n = t.size();
   const int nc = std::clamp(int(round_half_away(u)), 0, n - 1);
   const int nr = std::clamp(int(round_half_away(v)), 0, n - 1);
-  const float nearest = t.at(nc, nr, k);
-  if (!bilinear || !std::isfinite(nearest)) return nearest;
   const int c0 = std::clamp(int(std::floor(u)), -1, n - 1);
   const int r0 = std::clamp(int(std::floor(v)), -1, n - 1);
   const double fx = std::clamp(u - c0, 0.0, 1.0), fy = std::clamp(v - r0, 0.0, 1.0);
-  double sum = 0, weight = 0;
-  for (const auto& [dc, dr, w] :
-       {std::tuple{0, 0, (1 - fx) * (1 - fy)}, std::tuple{1, 0, fx * (1 - fy)},
-        std::tuple{0, 1, (1 - fx) * fy}, std::tuple{1, 1, fx * fy}})
-    if (const float s = t.at(c0 + dc, r0 + dr, k); std::isfinite(s)) sum += w * s, weight += w;
-  return float(sum / weight);  // the nearest sample is finite, so some weight is not 0
+  const std::tuple<int, int, double> corners[4] = {
+      {0, 0, (1 - fx) * (1 - fy)}, {1, 0, fx * (1 - fy)}, {0, 1, (1 - fx) * fy}, {1, 1, fx * fy}};
+  for (int k = 0; k < channels; ++k) {
+    const float nearest = t.at(nc, nr, k);
+    if (!bilinear || !std::isfinite(nearest)) {
+      out[k] = nearest;
+      continue;
+    }
+    double sum = 0, weight = 0;
+    for (const auto& [dc, dr, w] : corners)
+      if (const float s = t.at(c0 + dc, r0 + dr, k); std::isfinite(s)) sum += w * s, weight += w;
+    out[k] = float(sum / weight);  // the nearest sample is finite, so some weight is not 0
+  }
 }
 
 }  // namespace
@@ -62,7 +69,7 @@ void LayerSampler::read(const Halo& h, PlanePoint q, float* out) const {
   const PlaneSquare& sq = h.square;
   const int n = layer_.tile_size;
   const double u = (q.x - sq.x_min) / sq.side * n - 0.5, v = (sq.y_max - q.y) / sq.side * n - 0.5;
-  for (int k = 0; k < layer_.channels; ++k) out[k] = sample_tile(*h.tile, u, v, k, bilinear_);
+  sample_tile(*h.tile, u, v, layer_.channels, bilinear_, out);
 }
 
 namespace {
