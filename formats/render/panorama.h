@@ -1,16 +1,17 @@
 // A panorama and its guides from what each pixel sees (render/rasterizer.h) of a terrain scene
-// (render/terrain_scene.h): the surface's colour (an imagery layer sampled bilinearly at the
-// pixel's lon/lat, stretched for display, or a plain earth colour), shaded by the DEM's normals
-// under a sun, faded into the haze with distance (aerial perspective: a fraction 1 - exp(-distance
-// / haze_distance) of the haze colour), over a sky graded from the haze colour at the horizon to
-// blue at 30 degrees up. Guides per pixel: the DEM's altitude, the distance from the eye, lon/lat,
-// the land-cover class when a categorical layer is given (nearest sample), the shading factor, and
-// silhouettes: terrain
-// pixels on the near side of a depth discontinuity (a 4-neighbour is sky or more than
-// `silhouette_jump` times farther). Rows are shaded in parallel, each pixel from its own fragment:
-// the same bits for any threads. A strip of rows of the picture (render/panorama_strips.h) is
-// shaded as the same rows of the whole picture, given the whole picture's display stretch (its
-// texels are those of the pixels on a grid of stretch_step, gathered strip by strip).
+// (render/terrain_scene.h): the surface's colour (an imagery layer sampled bilinearly where the
+// pixel sees it: at the point of the grid's plane interpolated in its triangle, or at its lon/lat
+// where a corner is off its tile's face; stretched for display, or a plain earth colour), shaded
+// by the DEM's normals under a sun, faded into the haze with distance (aerial perspective: a
+// fraction 1 - exp(-distance / haze_distance) of the haze colour), over a sky graded from the haze
+// colour at the horizon to blue at 30 degrees up (render/sky.h). Guides per pixel: the DEM's
+// altitude, the distance from the eye, lon/lat, the land-cover class when a categorical layer is
+// given (nearest sample), the shading factor, and silhouettes: terrain pixels on the near side of
+// a depth discontinuity (a 4-neighbour is sky or more than `silhouette_jump` times farther). Rows
+// are shaded in parallel, each pixel from its own fragment: the same bits for any threads. A strip
+// of rows of the picture (render/panorama_strips.h) is shaded as the same rows of the whole
+// picture, given the whole picture's display stretch (its texels are those of the pixels on a grid
+// of stretch_step, gathered strip by strip).
 #pragma once
 
 #include <array>
