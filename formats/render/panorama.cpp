@@ -129,7 +129,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.height = h;
   p.first_row = f.first_row;
   // The picture's arrays filled side by side: touching their fresh pages is much of their cost.
-  std::vector<float> texels, shades;
+  std::vector<float> texels;
   const std::vector<std::function<void()>> fills = {
       [&] { p.rgb.assign(3 * n, 0); },
       [&] { p.altitude.assign(n, NAN); },
@@ -140,14 +140,13 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       [&] { p.land_cover.assign(look.land_cover ? n : 0, NAN); },
       [&] { p.cast_shadow.assign(look.shadow ? n : 0, NAN); },
       [&] { p.silhouette.assign(n, 0); },
-      [&] { texels.assign(3 * n, NAN); },  // the surface's texel, NaN for none
-      [&] { shades.assign(n, 0); }};
+      [&] { texels.assign(3 * n, NAN); }};  // the surface's texel, NaN for none
   tbb::parallel_for(size_t(0), fills.size(), [&](size_t k) { fills[k](); });
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto samplers = make_samplers(store, grid, look);
 
-  // What each pixel sees: guides, the surface's texel and its shade.
+  // What each pixel sees: guides (its shading among them) and the surface's texel.
   tbb::parallel_for(0, h, [&](int row) {
     Samplers& s = samplers.local();
     for (int col = 0; col < w; ++col) {
@@ -182,8 +181,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         p.cast_shadow[i] = interpolate(*look.shadow, 1, 0);
         sunlit = 1 - p.cast_shadow[i];
       }
-      shades[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
-      p.shading[i] = shades[i];
+      p.shading[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
   });
 
@@ -216,7 +214,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       Rgb colour = kEarth;
       if (!std::isnan(texels[3 * i]))
         for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texels[3 * i + k], stretch[k]);
-      for (double& c : colour) c *= shades[i];
+      for (double& c : colour) c *= p.shading[i];
       colour = mix(colour, kHazeColour, 1 - std::exp(-p.distance[i] / look.haze_distance));
       for (int k = 0; k < 3; ++k)
         p.rgb[3 * i + size_t(k)] =
