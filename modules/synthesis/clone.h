@@ -18,7 +18,8 @@ struct CloneParams {
   // Source offsets from that centre to destination offsets, row-major {a, b, c, d}:
   // destination = (a x + b y, c x + d y). Identity: a copy; {2, 0, 0, 2}: twice as large.
   std::array<double, 4> linear = {1, 0, 0, 1};
-  // The band's resynthesis: `fill.band` pixels on each side of the destination's edge.
+  // The band's resynthesis: `fill.band` pixels on each side of the destination's edge (0: a
+  // plain copy).
   InpaintParams fill;
 };
 

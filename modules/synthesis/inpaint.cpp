@@ -222,10 +222,13 @@ void check(const PatchImage& image, const std::vector<uint8_t>& hole, const Inpa
 PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
                    const InpaintParams& params, const NearestFieldSearch& search) {
   check(image, hole, params);
+  if (std::none_of(hole.begin(), hole.end(), [](uint8_t v) { return v != 0; })) return image;
   const int w = image.width, h = image.height, c = image.channels;
   MaskedImage base{image, std::vector<uint8_t>(hole.size(), 0)};
   for (size_t i = 0; i < hole.size(); ++i) {
-    base.unknown[i] = hole[i] != 0 || std::isnan(image.values[i * c]);
+    const float* pixel = image.values.data() + i * c;
+    base.unknown[i] =
+        hole[i] != 0 || std::any_of(pixel, pixel + c, [](float v) { return std::isnan(v); });
   }
   const int levels = level_count(hole, w, h, params.patch);
   const auto pyramid = masked_pyramid(std::move(base), levels);

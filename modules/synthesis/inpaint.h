@@ -34,11 +34,12 @@ struct InpaintParams {
 };
 
 // `image` with its pixels where `hole` is non-zero (width * height) filled, and those within
-// `band` of the hole resynthesized; every other pixel keeps its bits. NaN pixels outside the hole
-// are nodata: never copied, kept NaN (their neighbours are resynthesized from a provisional
-// diffusion fill there). The result depends on the inputs and params only, never on the thread
-// count. Throws maquette::Error for invalid params, a mask of another size, or an image where no
-// patch lies wholly outside the hole, its band and the nodata.
+// `band` of the hole resynthesized; every other pixel keeps its bits (all of them when the hole is
+// empty). Pixels outside the hole with a NaN in any channel are nodata: never copied, kept as they
+// are (their neighbours are resynthesized from a provisional diffusion fill there). The result
+// depends on the inputs and params only, never on the thread count. Throws maquette::Error for
+// invalid params, a mask of another size, or an image where no patch lies wholly outside the hole,
+// its band and the nodata.
 PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
                    const InpaintParams& params, const NearestFieldSearch& search);
 

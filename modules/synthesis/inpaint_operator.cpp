@@ -134,7 +134,8 @@ class Inpaint final : public RegionOperator {
       const auto m = mask->second.data();
       const int c = mask->second.channels();
       for (size_t i = 0; i < hole.size(); ++i) {
-        hole[i] = hole[i] != 0 || (std::isfinite(m[i * c]) && m[i * c] != 0);
+        const auto marks = [](float v) { return std::isfinite(v) && v != 0; };
+        hole[i] = hole[i] != 0 || std::any_of(m.begin() + i * c, m.begin() + (i + 1) * c, marks);
       }
     }
     PatchImage picture(side, side, 3);

@@ -1,5 +1,6 @@
 #include "nearest_field.h"
 
+#include <cmath>
 #include <limits>
 
 namespace maquette::synthesis {
@@ -37,7 +38,8 @@ float patch_distance(const PatchImage& query, int qx, int qy, const PatchImage& 
     sum += row;
     if (sum > bound) return sum;
   }
-  return sum;
+  // A NaN cost would never be replaced (no d < NaN): a patch over a NaN is infinitely far.
+  return std::isnan(sum) ? std::numeric_limits<float>::infinity() : sum;
 }
 
 }  // namespace maquette::synthesis

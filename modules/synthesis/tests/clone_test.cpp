@@ -36,6 +36,24 @@ TEST(Clone, APeriodicTextureClonedByWholePeriodsOntoABlankIsWholeAgain) {
   EXPECT_LT(worst, 0.5f);
 }
 
+// Without a band (fill.band 0) nothing is resynthesized: the copy, and every other pixel as it was.
+TEST(Clone, WithoutABandItIsAPlainCopy) {
+  constexpr int kW = 60, kH = 50;
+  const PatchImage image = test::periodic_texture(kW, kH, 9, 7, 5);
+  CloneParams params;
+  params.offset_x = 20;
+  params.offset_y = 15;
+  params.fill.band = 0;
+  const PatchImage out = clone(image, test::square_mask(kW, kH, 5, 5, 12), params, PatchMatch());
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const bool copied = x >= 25 && x < 37 && y >= 20 && y < 32;
+      const float* expected = copied ? image.pixel(x - 20, y - 15) : image.pixel(x, y);
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(out.pixel(x, y)[c], expected[c]) << x << ", " << y;
+    }
+  }
+}
+
 TEST(Clone, ACheckerboardClonedAtTwiceTheSizeHasSquaresTwiceAsLarge) {
   constexpr int kW = 160, kH = 120, kSquare = 6;
   PatchImage image(kW, kH, 3);

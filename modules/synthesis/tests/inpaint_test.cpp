@@ -93,6 +93,34 @@ TEST(Inpaint, KeepsEveryPixelBeyondTheBandAndTheNodata) {
   EXPECT_EQ(finite_in_hole, 16u * 16 * 3);
 }
 
+// A pixel with one channel NaN (an RGB raster's band at its nodata value) is nodata as a whole:
+// matching it would give NaN costs that no search replaces, and NaN votes over the whole fill.
+TEST(Inpaint, APixelWithOneNanChannelIsNodataNotAReference) {
+  PatchImage image = periodic(96, 80);
+  for (int y = 20; y < 24; ++y) {
+    for (int x = 60; x < 64; ++x) image.pixel(x, y)[1] = NAN;
+  }
+  const auto hole = test::square_mask(96, 80, 30, 30, 16);
+  const PatchImage filled = inpaint(image, hole, InpaintParams{}, PatchMatch());
+  size_t finite_in_hole = 0, kept = 0;
+  for (size_t i = 0; i < hole.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float a = image.values[i * 3 + c], b = filled.values[i * 3 + c];
+      if (hole[i] != 0) finite_in_hole += std::isfinite(b);
+      if (std::isnan(a)) kept += std::isnan(b);
+    }
+  }
+  EXPECT_EQ(finite_in_hole, 16u * 16 * 3);
+  EXPECT_EQ(kept, 16u);
+}
+
+TEST(Inpaint, AnEmptyHoleLeavesTheImageAsItIs) {
+  const PatchImage image = periodic(40, 40);
+  const PatchImage filled =
+      inpaint(image, std::vector<uint8_t>(40 * 40, 0), InpaintParams{}, PatchMatch());
+  EXPECT_EQ(filled.values, image.values);
+}
+
 TEST(Inpaint, RefusesBadParamsAndAnImageWithoutAPatchOutsideTheHole) {
   const PatchImage image = periodic(40, 40);
   const auto hole = test::square_mask(40, 40, 10, 10, 8);
