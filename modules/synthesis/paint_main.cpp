@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/output_file.h"
+#include "core/sibling_path.h"
 #include "gdal/image_file.h"
 #include "paint_panorama.h"
 
@@ -31,7 +32,7 @@ void write_source(const PaintedPanorama& painted, const std::string& path) {
     GDALAllRegister();
     std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
         file.temp_path().c_str(), painted.width, painted.height, 2, GDT_Float32, nullptr));
-    if (!ds) throw Error("cannot create " + file.temp_path());
+    if (!ds) throw Error(path + ": GDAL cannot create it");
     int bands[2] = {1, 2};
     const char* names[2] = {"column", "row"};
     for (int b = 0; b < 2; ++b) {
@@ -41,7 +42,7 @@ void write_source(const PaintedPanorama& painted, const std::string& path) {
     if (ds->RasterIO(GF_Write, 0, 0, painted.width, painted.height,
                      const_cast<float*>(painted.source.data()), painted.width, painted.height,
                      GDT_Float32, 2, bands, 8, 8 * long(painted.width), 4, nullptr) != CE_None)
-      throw Error("cannot write " + file.temp_path());
+      throw Error(path + ": GDAL cannot write it");
     ds.reset();
   });
   file.commit();
@@ -66,15 +67,11 @@ int main(int argc, char** argv) {
   try {
     const std::string picture_path = argv[1], params_path = argv[2], out = argv[3];
     const PaintParams params = paint_params(read_json_file(params_path), params_path);
-    const PanoramaPicture picture = read_panorama(picture_path);
-    if (params.shading > 0 && picture.shading.empty())
-      throw Error(beside(picture_path, "-guides.tif") +
-                  ": no band 'shading' (rendered before it existed: render the panorama again, "
-                  "or give \"shading\": 0)");
+    const PanoramaPicture picture = read_panorama(picture_path, params.shading > 0);
     const auto exemplar = transfer_exemplar(params.exemplar);
     const PaintedPanorama painted = paint_panorama(picture, *exemplar, params);
     write_image(painted.rgb, painted.width, painted.height, 3, ImageFormat{"PNG", {}}, out);
-    write_source(painted, beside(out, "-source.tif"));
+    write_source(painted, sibling_path(out, "-source.tif"));
     std::printf("%s: %d x %d pixels painted from %s\n", out.c_str(), painted.width, painted.height,
                 params.exemplar.at("painting").get<std::string>().c_str());
     return 0;

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "core/error.h"
 #include "transfer_params.h"
 
 namespace maquette::synthesis {
@@ -58,6 +60,9 @@ TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params
 
 PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar& exemplar,
                                const PaintParams& params) {
+  if (params.shading > 0 && p.shading.size() != size_t(p.width) * size_t(p.height))
+    throw Error("paint_panorama: shading " + std::to_string(params.shading) +
+                " asked of a picture read without its shading band");
   const int64_t t = params.tile;
   const int64_t across = (p.width + t - 1) / t, down = (p.height + t - 1) / t;
   std::vector<int32_t> src(size_t(p.width) * size_t(p.height));

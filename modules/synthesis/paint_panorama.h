@@ -35,7 +35,8 @@ TargetGuides panorama_target(const PanoramaPicture& picture, const PaintParams& 
 // (1 - shading) + shading * s / s_median, s the render's shading factor and s_median its median
 // over the terrain: ground lit as the picture's typical ground keeps the painting's colour,
 // slopes turned from the sun darken, those facing it brighten (paper 000's blend with a terrain
-// shading). Precondition: the picture has a shading band when params.shading > 0.
+// shading). Precondition: the picture has a shading band when params.shading > 0 (read_panorama
+// with_shading); throws maquette::Error otherwise.
 PaintedPanorama paint_panorama(const PanoramaPicture& picture, const TransferExemplar& exemplar,
                                const PaintParams& params);
 

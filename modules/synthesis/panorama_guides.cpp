@@ -6,25 +6,19 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/sibling_path.h"
 #include "painting.h"
 
 namespace maquette::synthesis {
 
-std::string beside(const std::string& picture, const std::string& suffix) {
-  const size_t dot = picture.rfind('.'), slash = picture.rfind('/');
-  const bool has_extension =
-      dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  return (has_extension ? picture.substr(0, dot) : picture) + suffix;
-}
-
-PanoramaPicture read_panorama(const std::string& picture) {
+PanoramaPicture read_panorama(const std::string& picture, bool with_shading) {
   PanoramaPicture p;
   const Exemplar colours = read_painting(picture, "panorama");  // any 8-bit RGB image
   p.width = colours.width;
   p.height = colours.height;
   p.rgb.assign(colours.rgb.begin(), colours.rgb.end());
 
-  const std::string path = beside(picture, "-guides.tif");
+  const std::string path = sibling_path(picture, "-guides.tif");
   GDALAllRegister();
   const std::unique_ptr<GDALDataset> ds(
       GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
@@ -50,7 +44,9 @@ PanoramaPicture read_panorama(const std::string& picture) {
   p.land_cover = band("land_cover", "render the panorama with --land-cover", true);
   p.altitude = band("altitude", "not a panorama's guides?", true);
   p.distance = band("distance", "not a panorama's guides?", true);
-  p.shading = band("shading", "", false);
+  p.shading = band("shading",
+                   "rendered before it existed: render the panorama again, or give \"shading\": 0",
+                   with_shading);
   return p;
 }
 

@@ -18,11 +18,10 @@ struct PanoramaPicture {
   std::vector<float> land_cover, altitude, distance, shading;
 };
 
-// A file beside a picture, as the renderer names them: its stem + `suffix` ("-guides.tif").
-std::string beside(const std::string& picture, const std::string& suffix);
-
-// Reads PICTURE (8-bit RGB) and its guides. Throws maquette::Error naming the file and what is
-// wrong: unreadable, a band missing (land_cover: render with --land-cover), another size.
-PanoramaPicture read_panorama(const std::string& picture);
+// Reads PICTURE (8-bit RGB) and its guides (core/sibling_path.h: PICTURE's stem + "-guides.tif");
+// the `shading` band is required when `with_shading`, else read if present. Throws
+// maquette::Error naming the file and what is wrong: unreadable, a band missing (land_cover:
+// render with --land-cover), another size.
+PanoramaPicture read_panorama(const std::string& picture, bool with_shading);
 
 }  // namespace maquette::synthesis

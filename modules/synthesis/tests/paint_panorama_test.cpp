@@ -105,7 +105,7 @@ const Scene& scene() {
 
 PaintedPanorama paint(const nlohmann::json& raw) {
   const PaintParams params = paint_params(raw, "params.json");
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   return paint_panorama(picture, *transfer_exemplar(params.exemplar), params);
 }
 
@@ -116,7 +116,7 @@ std::array<int, 2> source_of(const PaintedPanorama& p, size_t i) {
 }
 
 TEST(PaintPanorama, TerrainKeepsItsClassesNoExcludedSourceAndTheSkyStays) {
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   const PaintedPanorama p = paint(scene().params());
   size_t terrain = 0, kept = 0, sky = 0, excluded = 0;
   for (size_t i = 0; i < picture.distance.size(); ++i) {
@@ -143,7 +143,7 @@ TEST(PaintPanorama, TerrainKeepsItsClassesNoExcludedSourceAndTheSkyStays) {
 }
 
 TEST(PaintPanorama, TheSkyIsPaintedFromTheSkyClassWhenAskedFor) {
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   nlohmann::json params = scene().params();
   params["sky_class"] = 2;
   const PaintedPanorama p = paint(params);
@@ -176,7 +176,7 @@ double distance_mismatch(const PaintedPanorama& p, const PanoramaPicture& pictur
 }
 
 TEST(PaintPanorama, RaisingTheDistanceWeightLowersTheDistanceMismatch) {
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   double previous = INFINITY;
   for (const double w : {0.0, 2.0, 8.0}) {
     nlohmann::json params = scene().params();
@@ -212,7 +212,7 @@ size_t coherent_across_breaks(const PaintedPanorama& p, const PanoramaPicture& p
 }
 
 TEST(PaintPanorama, NoCoherentCopyAcrossASilhouette) {
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   nlohmann::json params = scene().params();
   params["sky_class"] = 2;
   size_t pairs = 0;
@@ -229,7 +229,7 @@ TEST(PaintPanorama, NoCoherentCopyAcrossASilhouette) {
 }
 
 TEST(PaintPanorama, ShadingBlendsAsStated) {
-  const PanoramaPicture picture = read_panorama(scene().picture);
+  const PanoramaPicture picture = read_panorama(scene().picture, true);
   nlohmann::json params = scene().params();
   params["shading"] = 0;
   const PaintedPanorama flat = paint(params);
