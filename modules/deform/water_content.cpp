@@ -145,14 +145,28 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
 }
 
 void LakeContent::finish() {
+  // Each side's failure kept, the volumes' rethrown first: the same error whatever the threads.
+  std::exception_ptr normals_failed, volumes_failed;
   tbb::parallel_invoke(
       [&] {
-        for (const Unlit& mesh : unlit_) {
-          MeshObject& water = output_.content.at(mesh.cell).mesh("mesh").objects[mesh.object];
-          water = with_facet_normals(water);
+        try {
+          for (const Unlit& mesh : unlit_) {
+            MeshObject& water = output_.content.at(mesh.cell).mesh("mesh").objects[mesh.object];
+            water = with_facet_normals(water);
+          }
+        } catch (...) {
+          normals_failed = std::current_exception();
         }
       },
-      [&] { write_volumes(); });
+      [&] {
+        try {
+          write_volumes();
+        } catch (...) {
+          volumes_failed = std::current_exception();
+        }
+      });
+  if (volumes_failed) std::rethrow_exception(volumes_failed);
+  if (normals_failed) std::rethrow_exception(normals_failed);
 }
 
 void LakeContent::write_volumes() {
