@@ -28,6 +28,12 @@ class LayerSampler {
   // without the projection: while q stays in the previous call's cell (its square, edges included:
   // the halo covers them) that cell's tile is read again, else the cell holding q is looked up.
   bool sample(PlanePoint q, float* out);
+  // The next plane point's cell looked up afresh. A point on the edge of two squares is read from
+  // the previous call's cell when that is one of them, and the two tiles' bilinear reads may
+  // differ in the last bit: callers whose points come in runs (a picture's rows) call this at the
+  // start of each run, so that a value depends on its run alone, never on which runs a thread
+  // sampled before (the same bits for any thread count).
+  void start_run() { last_ = nullptr; }
 
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
   // a large region.

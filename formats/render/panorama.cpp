@@ -29,6 +29,11 @@ Rgb mix(const Rgb& a, const Rgb& b, double t) {
 // Samplers of one thread (LayerSampler caches tiles and is not shared between threads).
 struct Samplers {
   std::optional<LayerSampler> texture, land_cover;
+  // Each row a run of its own (LayerSampler::start_run): its values whatever rows came before.
+  void start_row() {
+    if (texture) texture->start_run();
+    if (land_cover) land_cover->start_run();
+  }
 };
 
 }  // namespace
@@ -99,6 +104,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
     Samplers& s = samplers.local();
+    s.start_row();
     for (int col = 0; col < f.width; col += step) {
       const size_t i = size_t(row) * size_t(f.width) + size_t(col);
       if (f.triangle[i] != Fragments::kSky)
@@ -149,6 +155,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   // What each pixel sees: guides (its shading among them) and the surface's texel.
   tbb::parallel_for(0, h, [&](int row) {
     Samplers& s = samplers.local();
+    s.start_row();
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
       if (f.triangle[i] == Fragments::kSky) continue;
