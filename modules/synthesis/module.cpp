@@ -5,4 +5,5 @@ MAQUETTE_MODULE("synthesis", "0.1.0",
                 "Example-based texture transfer from hand-painted panoramas (paper 000)",
                 {"synthesis.transfer", &maquette::synthesis::make_transfer},
                 {"synthesis.assess", &maquette::synthesis::make_assess},
-                {"synthesis.inpaint", &maquette::synthesis::make_inpaint})
+                {"synthesis.inpaint", &maquette::synthesis::make_inpaint},
+                {"synthesis.clone", &maquette::synthesis::make_clone})

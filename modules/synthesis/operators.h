@@ -10,5 +10,6 @@ namespace maquette::synthesis {
 std::unique_ptr<Operator> make_transfer();
 std::unique_ptr<Operator> make_assess();
 std::unique_ptr<Operator> make_inpaint();
+std::unique_ptr<Operator> make_clone();
 
 }  // namespace maquette::synthesis

@@ -8,9 +8,28 @@
 #include "core/error.h"
 
 namespace maquette::synthesis {
+namespace {
 
-GroundSlope region_slope(const std::vector<float>& heights, int width, int height, double spacing_m,
-                         const std::vector<uint8_t>& region, int dx, int dy, const char* what) {
+using Matrix = std::array<double, 4>;  // row-major {a, b, c, d}
+
+Matrix product(const Matrix& m, const Matrix& n) {
+  return {m[0] * n[0] + m[1] * n[2], m[0] * n[1] + m[1] * n[3], m[2] * n[0] + m[3] * n[2],
+          m[2] * n[1] + m[3] * n[3]};
+}
+
+Matrix inverse(const Matrix& m) {
+  const double det = m[0] * m[3] - m[1] * m[2];
+  return {m[3] / det, -m[1] / det, -m[2] / det, m[0] / det};
+}
+
+// Sample offsets (col, row) to ground metres (east, south).
+Matrix to_ground(const SampleFrame& f) { return {f.column[0], f.row[0], f.column[1], f.row[1]}; }
+
+}  // namespace
+
+std::array<double, 2> region_gradient(const std::vector<float>& heights, int width, int height,
+                                      const std::vector<uint8_t>& region, int dx, int dy,
+                                      const char* what) {
   const size_t n = size_t(width) * height;
   if (heights.size() != n || region.size() != n) {
     throw Error(std::string(what) + ": the heights and the region differ from " +
@@ -30,16 +49,24 @@ GroundSlope region_slope(const std::vector<float>& heights, int width, int heigh
     }
   }
   if (count == 0) throw Error(std::string(what) + ": no known heights under the region");
-  gx /= 2 * spacing_m * double(count), gy /= 2 * spacing_m * double(count);
-  return {std::atan(std::hypot(gx, gy)) * 180 / std::numbers::pi,
-          std::atan2(gy, gx) * 180 / std::numbers::pi};
+  return {gx / (2 * double(count)), gy / (2 * double(count))};
 }
 
-std::array<double, 4> slope_resize(GroundSlope from, GroundSlope to) {
-  const auto [a, b, c, d] = foreshortening(from.slope_deg, 0, from.aspect_deg);
-  const auto [e, f, g, h] = foreshortening(0, to.slope_deg, to.aspect_deg);
-  // (e f; g h) (a b; c d): first off the source's slope, then onto the destination's.
-  return {e * a + f * c, e * b + f * d, g * a + h * c, g * b + h * d};
+GroundSlope ground_slope(std::array<double, 2> gradient, const SampleFrame& frame) {
+  // The ground gradient g satisfies J^T g = the per-sample gradient (J: samples to ground).
+  const Matrix j = to_ground(frame);
+  const Matrix t = inverse({j[0], j[2], j[1], j[3]});
+  const double east = t[0] * gradient[0] + t[1] * gradient[1];
+  const double south = t[2] * gradient[0] + t[3] * gradient[1];
+  return {std::atan(std::hypot(east, south)) * 180 / std::numbers::pi,
+          std::atan2(south, east) * 180 / std::numbers::pi};
+}
+
+std::array<double, 4> slope_resize(GroundSlope from, const SampleFrame& from_frame, GroundSlope to,
+                                   const SampleFrame& to_frame) {
+  const Matrix ground = product(foreshortening(0, to.slope_deg, to.aspect_deg),
+                                foreshortening(from.slope_deg, 0, from.aspect_deg));
+  return product(inverse(to_ground(to_frame)), product(ground, to_ground(from_frame)));
 }
 
 }  // namespace maquette::synthesis

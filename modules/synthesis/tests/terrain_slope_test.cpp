@@ -60,12 +60,15 @@ TEST(TerrainSlope, ACheckerboardClonedFromFlatGroundOntoA30DegreeSlopeKeepsItsGr
   const auto source = test::square_mask(kW, kH, 12, 36, 48);
   CloneParams params;
   params.offset_x = 120;
-  const GroundSlope from = region_slope(heights, kW, kH, kSpacing, source, 0, 0, "source");
-  const GroundSlope to = region_slope(heights, kW, kH, kSpacing, source, 120, 0, "destination");
+  const SampleFrame frame{{kSpacing, 0}, {0, kSpacing}};
+  const GroundSlope from =
+      ground_slope(region_gradient(heights, kW, kH, source, 0, 0, "source"), frame);
+  const GroundSlope to =
+      ground_slope(region_gradient(heights, kW, kH, source, 120, 0, "destination"), frame);
   EXPECT_NEAR(from.slope_deg, 0, 1e-9);
   EXPECT_NEAR(to.slope_deg, kSlopeDeg, 1e-4);
   EXPECT_NEAR(to.aspect_deg, 0, 1e-9);
-  params.linear = slope_resize(from, to);
+  params.linear = slope_resize(from, frame, to, frame);
   const PatchImage out = clone(image, source, params, PatchMatch());
 
   // Along the slope: the destination spans 155.5 +- 24 cos 30 = 134.7..176.3; inside its band.
@@ -90,7 +93,7 @@ TEST(TerrainSlope, ACheckerboardClonedFromFlatGroundOntoA30DegreeSlopeKeepsItsGr
       << image_width << " x " << image_height << " samples";
 }
 
-TEST(TerrainSlope, ARegionOnAPlaneHasItsSlopeAndAspect) {
+TEST(TerrainSlope, ARegionOnAPlaneHasItsSlopeAndAspectOnTheGround) {
   // z = 3 x - 4 y (in samples of 2 m): gradient (1.5, -2) per metre, |g| = 2.5.
   constexpr int kSide = 20;
   std::vector<float> heights(kSide * kSide);
@@ -98,15 +101,40 @@ TEST(TerrainSlope, ARegionOnAPlaneHasItsSlopeAndAspect) {
     for (int x = 0; x < kSide; ++x) heights[size_t(y) * kSide + x] = float(3 * x - 4 * y);
   }
   const auto region = test::square_mask(kSide, kSide, 4, 4, 6);
-  const GroundSlope s = region_slope(heights, kSide, kSide, 2, region, 0, 0, "region");
+  const GroundSlope s = ground_slope(region_gradient(heights, kSide, kSide, region, 0, 0, "region"),
+                                     SampleFrame{{2, 0}, {0, 2}});
   EXPECT_NEAR(s.slope_deg, std::atan(2.5) * 180 / std::numbers::pi, 1e-9);
   EXPECT_NEAR(s.aspect_deg, std::atan2(-2, 1.5) * 180 / std::numbers::pi, 1e-9);
+}
+
+TEST(TerrainSlope, OnSamplesLongerEastThanSouthTheResizeIsInGroundMetres) {
+  // rHEALPix's samples at the equator (38 m east by 32 m south at level 18), and a destination
+  // whose 30 degree slope falls towards the south-east on the ground.
+  const SampleFrame frame{{38, 0}, {0, 32}};
+  const GroundSlope flat{0, 0}, slope{30, 45};
+  const auto m = slope_resize(flat, frame, slope, frame);
+  // A sample offset's ground vector after the map: along the slope's direction times cos 30,
+  // across it kept.
+  const auto ground_after = [&](double col, double row) {
+    return std::array<double, 2>{38 * (m[0] * col + m[1] * row), 32 * (m[2] * col + m[3] * row)};
+  };
+  const double cosine = std::cos(kSlopeDeg * std::numbers::pi / 180);
+  const auto along = ground_after(1 / 38.0, 1 / 32.0);    // 1 m east and 1 m south
+  const auto across = ground_after(1 / 38.0, -1 / 32.0);  // 1 m east and 1 m north
+  EXPECT_NEAR(along[0], cosine, 1e-12);
+  EXPECT_NEAR(along[1], cosine, 1e-12);
+  EXPECT_NEAR(across[0], 1, 1e-12);
+  EXPECT_NEAR(across[1], -1, 1e-12);
+  // The same heights seen through the frame: 1 m per sample east is a gradient of 1/38.
+  const GroundSlope east = ground_slope({1, 0}, frame);
+  EXPECT_NEAR(east.slope_deg, std::atan(1 / 38.0) * 180 / std::numbers::pi, 1e-12);
+  EXPECT_NEAR(east.aspect_deg, 0, 1e-12);
 }
 
 TEST(TerrainSlope, ARegionWithoutKnownHeightsIsNamed) {
   const std::vector<float> heights(100, NAN);
   try {
-    region_slope(heights, 10, 10, 1, test::square_mask(10, 10, 2, 2, 4), 0, 0, "inputs.dem");
+    region_gradient(heights, 10, 10, test::square_mask(10, 10, 2, 2, 4), 0, 0, "inputs.dem");
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "inputs.dem: no known heights under the region");

@@ -1,0 +1,211 @@
+// synthesis.clone run by the real program. The oracle: a checkerboard draped on a
+// two-slope terrain (flat, then 30 degrees rising east; GeoTIFFs written with GDAL), seen from
+// above (the imagery layer), cloned from the flat part onto the slope by an offset in metres: the
+// cloned squares' ground area, measured through the DEM's heights and GeographicLib's distances,
+// within 2 % of the source squares'. The same tile bytes on one thread and two; a destination
+// missing or given twice, and a source that is no polygon, are refused naming them.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <GeographicLib/Geodesic.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "core/halo.h"
+#include "core/mosaic_geometry.h"
+#include "core/tile.h"
+#include "run_cli.h"
+#include "store/store.h"
+#include "synthetic_raster.h"
+
+namespace maquette::synthesis {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// At the equator in the middle of an rHEALPix face: samples of ~35 m at level 10, east along
+// columns, south along rows.
+constexpr double kWest = 45.0, kCrease = 45.05, kSquareDeg = 0.004, kSlopeDeg = 30;
+constexpr double kRasterPixelDeg = 0.0001;
+constexpr int kRasterSize = 1200;                          // 45.0..45.12, -0.06..0.06
+const double kDegreeM = 6378137 * std::numbers::pi / 180;  // along the equator
+
+// The terrain: flat west of the crease, rising east at 30 degrees beyond it.
+double terrain_height(double lon) {
+  return lon <= kCrease ? 0
+                        : (lon - kCrease) * kDegreeM * std::tan(kSlopeDeg * std::numbers::pi / 180);
+}
+
+// The source: 2.2 km square on the flat part, moved 6 km east onto the slope.
+constexpr double kSourceWest = 45.008, kSourceEast = 45.028, kSourceHalf = 0.01;
+constexpr double kOffsetEastM = 6000;
+
+std::string polygon(const std::string& type) {
+  const json ring = {{kSourceWest, -kSourceHalf},
+                     {kSourceEast, -kSourceHalf},
+                     {kSourceEast, kSourceHalf},
+                     {kSourceWest, kSourceHalf},
+                     {kSourceWest, -kSourceHalf}};
+  const json geometry = type == "Polygon" ? json{{"type", "Polygon"}, {"coordinates", {ring}}}
+                                          : json{{"type", "LineString"}, {"coordinates", ring}};
+  return json{
+      {"type", "FeatureCollection"},
+      {"features", {{{"type", "Feature"}, {"properties", json::object()}, {"geometry", geometry}}}}}
+      .dump();
+}
+
+struct CloneRun {
+  fs::path dir;
+  std::string store;
+  test::CliResult result;
+};
+
+// `clone_inputs` and `clone_params` complete the clone step.
+CloneRun run_clone(const std::string& name, int threads, const json& clone_inputs,
+                   const json& clone_params, const std::string& type = "Polygon") {
+  CloneRun run{
+      fs::temp_directory_path() / ("maquette-clone-" + std::to_string(getpid()) + name), "", {}};
+  fs::remove_all(run.dir);
+  fs::create_directories(run.dir);
+  run.store = (run.dir / "slopes.mqt").string();
+  const auto raster = [](const char* type, int bands) {
+    test::RasterSpec spec = test::lonlat_raster(kWest, kRasterSize * kRasterPixelDeg / 2,
+                                                kRasterSize, kRasterPixelDeg, type);
+    spec.bands = bands;
+    return spec;
+  };
+  test::write_raster((run.dir / "dem.tif").string(), raster("Float32", 1),
+                     [](int, double lon, double) { return terrain_height(lon); });
+  test::write_raster((run.dir / "checker.tif").string(), raster("Byte", 3),
+                     [](int, double lon, double lat) {
+                       const long i = std::lround(std::floor((lon - kWest) / kSquareDeg)) +
+                                      std::lround(std::floor(lat / kSquareDeg));
+                       return i % 2 != 0 ? 200.0 : 40.0;
+                     });
+  std::ofstream(run.dir / "source.geojson") << polygon(type);
+  json inputs = {{"image", "checker"}, {"source", "source"}};
+  inputs.update(clone_inputs);
+  const auto ingest = [&](const char* file, const char* layer, const char* as) {
+    return json{{"op", "ingest"},
+                {"outputs", {{"layer", layer}}},
+                {"params", {{"sources", {(run.dir / file).string()}}, {"as", as}, {"level", 10}}}};
+  };
+  const json pipeline = {{"store", run.store},
+                         {"region", {{"bbox", {kWest, -0.03, 45.12, 0.03}}}},
+                         {"level", 10},
+                         {"steps",
+                          {ingest("dem.tif", "dem", "dem"),
+                           ingest("checker.tif", "checker", "imagery"),
+                           ingest("source.geojson", "source", "features"),
+                           {{"op", "synthesis.clone"},
+                            {"inputs", inputs},
+                            {"params", clone_params},
+                            {"outputs", {{"rgb", "cloned"}}}}}}};
+  std::ofstream(run.dir / "pipeline.json") << pipeline.dump(1);
+  run.result = test::run_maquette("run " + (run.dir / "pipeline.json").string() +
+                                  " --quiet --threads " + std::to_string(threads));
+  return run;
+}
+
+// A layer's first channel by global face pixel (col, row).
+std::map<std::pair<int64_t, int64_t>, float> first_channel(const Store& store,
+                                                           const std::string& layer, int& face,
+                                                           int& pixel_level) {
+  std::map<std::pair<int64_t, int64_t>, float> out;
+  for (const CellId cell : store.tile_cells(layer)) {
+    const RawTile tile = *store.get_tile(layer, cell);
+    const int n = tile.size;
+    face = cell.face(), pixel_level = cell.level() + log2_tile_size(n);
+    for (int row = 0; row < n; ++row) {
+      for (int col = 0; col < n; ++col) {
+        out[{global_col(cell, n, col), global_row(cell, n, row)}] =
+            float(std::to_integer<uint8_t>(tile.bytes[(size_t(row) * n + col) * 3]));
+      }
+    }
+  }
+  return out;
+}
+
+// The mean side of the squares along a line of samples through `centre` (fractional global
+// pixel), `reach` samples either way, along columns (east) or rows: between the first and last
+// crossings of 120, linearly interpolated, in ground metres (GeographicLib's distance on WGS84
+// and the terrain's rise).
+double square_side_m(const std::map<std::pair<int64_t, int64_t>, float>& values, int face,
+                     int level, std::array<double, 2> centre, bool east, int reach) {
+  const int64_t c = std::lround(centre[0]), r = std::lround(centre[1]);
+  std::vector<LonLat> crossings;
+  for (int i = -reach; i < reach; ++i) {
+    const auto at = [&](int k) {
+      return double(values.at(east ? std::pair{c + k, r} : std::pair{c, r + k})) - 120;
+    };
+    const double a = at(i), b = at(i + 1);
+    if ((a < 0) == (b < 0)) continue;
+    const double t = i + a / (a - b);
+    crossings.push_back(face_point_lonlat(default_grid(), face, east ? c + t : double(c),
+                                          east ? double(r) : r + t, level));
+  }
+  if (crossings.size() < 3) return NAN;
+  const LonLat p = crossings.front(), q = crossings.back();
+  double horizontal = 0;
+  GeographicLib::Geodesic::WGS84().Inverse(p.lat, p.lon, q.lat, q.lon, horizontal);
+  return std::hypot(horizontal, terrain_height(q.lon) - terrain_height(p.lon)) /
+         double(crossings.size() - 1);
+}
+
+TEST(CloneOperator, ACheckerboardClonedOntoA30DegreeSlopeKeepsItsGroundAreaSameBitsOnTwoThreads) {
+  const json params = {{"offset_m", {kOffsetEastM, 0}}};
+  const CloneRun one = run_clone("-1", 1, {{"dem", "dem"}}, params);
+  const CloneRun two = run_clone("-2", 2, {{"dem", "dem"}}, params);
+  ASSERT_EQ(one.result.exit_code, 0) << one.result.err;
+  ASSERT_EQ(two.result.exit_code, 0) << two.result.err;
+  const auto a = Store::open(one.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(two.store, Store::Mode::ReadOnly);
+  const auto cells = a->tile_cells("cloned");
+  ASSERT_GE(cells.size(), 2u);
+  for (const CellId cell : cells) {
+    EXPECT_EQ(a->get_tile("cloned", cell)->bytes, b->get_tile("cloned", cell)->bytes)
+        << cell.ToText();
+  }
+  int face = 0, level = 0;
+  const auto before = first_channel(*a, "checker", face, level);
+  const auto after = first_channel(*a, "cloned", face, level);
+  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
+  const double centre_lon = (kSourceWest + kSourceEast) / 2;
+  const auto source = *samples.sample({centre_lon, 0});
+  const auto destination = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
+  // The source is ~63 samples a side; its copy ~55 wide on the slope: measured inside the band.
+  const double source_area = square_side_m(before, face, level, source, true, 26) *
+                             square_side_m(before, face, level, source, false, 26);
+  const double width = square_side_m(after, face, level, destination, true, 22);
+  const double height = square_side_m(after, face, level, destination, false, 26);
+  EXPECT_NEAR(width * height / source_area, 1, 0.02)
+      << width << " x " << height << " m, the source's squares " << std::sqrt(source_area);
+  fs::remove_all(one.dir);
+  fs::remove_all(two.dir);
+}
+
+TEST(CloneOperator, ADestinationMissingOrGivenTwiceAndASourceThatIsNoPolygonAreNamed) {
+  const auto error = [](const CloneRun& run) {
+    EXPECT_NE(run.result.exit_code, 0);
+    fs::remove_all(run.dir);
+    return run.result.err;
+  };
+  const std::string both = "inputs.destination, params.offset_m: give one of them";
+  EXPECT_NE(error(run_clone("-none", 1, json::object(), json::object())).find(both),
+            std::string::npos);
+  EXPECT_NE(error(run_clone("-twice", 1, {{"destination", "source"}}, {{"offset_m", {100, 0}}}))
+                .find(both),
+            std::string::npos);
+  EXPECT_NE(error(run_clone("-line", 1, json::object(), {{"offset_m", {100, 0}}}, "LineString"))
+                .find("inputs.source: feature 1 is a LineString, not a Polygon or MultiPolygon"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace maquette::synthesis
