@@ -2,8 +2,9 @@
 // source polygons copied onto a destination (polygons, or an offset in metres), the band across
 // the destination's edge resynthesized from both sides. With a DEM the copy is resized by the
 // terrain's foreshortening at source and destination (terrain_slope.h), so that a texture keeps
-// its ground size. Like synthesis.inpaint it reads the whole region as one mosaic with kHalo
-// samples of context, runs once on one rank, and gives the same bits for any thread count.
+// its ground size. Like synthesis.inpaint it reads the whole region as one mosaic with
+// kRegionContext samples of context, runs once on one rank, and gives the same bits for any thread
+// count.
 #include <GeographicLib/LocalCartesian.hpp>
 #include <algorithm>
 #include <array>
@@ -24,8 +25,6 @@
 namespace maquette::synthesis {
 namespace {
 
-constexpr int kHalo = 32;
-
 OperatorSpec clone_spec() {
   OperatorSpec s;
   s.name = "synthesis.clone";
@@ -34,7 +33,7 @@ OperatorSpec clone_spec() {
       "offset in metres), resized by the terrain's foreshortening with a DEM, the band across the "
       "destination's edge resynthesized (paper 002 §6)";
   s.kind = OperatorKind::Region;
-  s.halo = kHalo;
+  s.halo = kRegionContext;
   s.inputs = {
       {"image", "imagery (uint8 x 3)", false},
       {"source", "features layer: the polygons copied", false, LayerKind::Features, 0},

@@ -1,8 +1,8 @@
 // synthesis.inpaint (region): the samples of an image under a mask (the polygons of a features
 // layer, e.g. structures.bridge's footprints, or a mask raster) filled from the rest of the image
 // (inpaint.h). A region operator: a hole may span several cells, and its fill reads the whole
-// region (the cells are pasted into one mosaic, filled, and cut back), with kHalo samples of
-// context beyond the region's cells. It runs once, on one rank; inpaint() gives the same bits
+// region (the cells are pasted into one mosaic, filled, and cut back), with kRegionContext samples
+// of context beyond the region's cells. It runs once, on one rank; inpaint() gives the same bits
 // for any thread count.
 #include <algorithm>
 #include <cmath>
@@ -18,9 +18,6 @@
 namespace maquette::synthesis {
 namespace {
 
-// Context read beyond the region's cells: patches near the region's edge find their matches there.
-constexpr int kHalo = 32;
-
 OperatorSpec inpaint_spec() {
   OperatorSpec s;
   s.name = "synthesis.inpaint";
@@ -29,7 +26,7 @@ OperatorSpec inpaint_spec() {
       "bidirectional similarity with PatchMatch, coarse to fine, a band around the holes "
       "resynthesized (paper 002 §6)";
   s.kind = OperatorKind::Region;
-  s.halo = kHalo;
+  s.halo = kRegionContext;
   s.inputs = {{"image", "imagery (uint8 x 3) to fill", false},
               {"footprints", "features layer: polygons to fill (e.g. structures.bridge's)", true,
                LayerKind::Features, 0},

@@ -12,6 +12,10 @@
 
 namespace maquette::synthesis {
 
+// Both operators' halo: context read beyond the region's cells, where patches near the region's
+// edge find their matches.
+inline constexpr int kRegionContext = 32;
+
 // The JSON schema properties of InpaintParams: patch, band, em_iterations, search_iterations,
 // completeness, seed.
 json inpaint_param_properties();

@@ -19,6 +19,7 @@
 #include "core/halo.h"
 #include "core/mosaic_geometry.h"
 #include "core/tile.h"
+#include "ring_feature.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "synthetic_raster.h"
@@ -52,12 +53,7 @@ std::string polygon(const std::string& type) {
                      {kSourceEast, kSourceHalf},
                      {kSourceWest, kSourceHalf},
                      {kSourceWest, -kSourceHalf}};
-  const json geometry = type == "Polygon" ? json{{"type", "Polygon"}, {"coordinates", {ring}}}
-                                          : json{{"type", "LineString"}, {"coordinates", ring}};
-  return json{
-      {"type", "FeatureCollection"},
-      {"features", {{{"type", "Feature"}, {"properties", json::object()}, {"geometry", geometry}}}}}
-      .dump();
+  return test::ring_feature(ring, type);
 }
 
 struct CloneRun {

@@ -17,6 +17,7 @@
 #include "core/halo.h"
 #include "core/polygon_set.h"
 #include "core/tile.h"
+#include "ring_feature.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "zion_ingest.h"
@@ -39,12 +40,7 @@ std::string footprint(const std::string& type) {
                      {kEast, kNorth + kHalfWidth},
                      {kWest, kSouth + kHalfWidth},
                      {kWest, kSouth - kHalfWidth}};
-  const json geometry = type == "Polygon" ? json{{"type", "Polygon"}, {"coordinates", {ring}}}
-                                          : json{{"type", "LineString"}, {"coordinates", ring}};
-  return json{
-      {"type", "FeatureCollection"},
-      {"features", {{{"type", "Feature"}, {"properties", json::object()}, {"geometry", geometry}}}}}
-      .dump();
+  return test::ring_feature(ring, type);
 }
 
 struct InpaintRun {
