@@ -43,6 +43,11 @@ void add_run_command(CLI::App& app) {
       "--resume", o->run.resume,
       "Finish the latest unfinished run of the same pipeline, skipping cells it completed");
   run->add_flag("--dry-run", o->run.dry_run, "Validate and print the plan; write nothing");
+  run->add_flag("--store-copies", o->run.store_copies,
+                "Under mpirun or srun, for ranks that share no file system: rank 0 alone opens "
+                "the pipeline's store and writes what every rank computes; each other rank reads "
+                "its own copy of the store, at the same path on its machine, copied there "
+                "before the run");
   run->callback([o] {
     // Under mpirun or srun, this process is one rank of the run (MPI finalized when it ends).
     const std::unique_ptr<Ranks> ranks = launched_ranks();

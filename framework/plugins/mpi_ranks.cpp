@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <list>
 #include <numeric>
 #include <thread>
 
@@ -51,6 +52,32 @@ class MpiRanks final : public Ranks {
     return parts;
   }
 
+  void post(int to, std::string bytes) override {
+    Posted& p = posted_.emplace_back(Posted{std::move(bytes), MPI_REQUEST_NULL});
+    MPI_Isend(p.bytes.data(), int(p.bytes.size()), MPI_CHAR, to, kMessageTag, MPI_COMM_WORLD,
+              &p.request);
+  }
+
+  std::optional<Message> poll() override {
+    std::erase_if(posted_, [](Posted& p) {
+      int done = 0;
+      MPI_Test(&p.request, &done, MPI_STATUS_IGNORE);
+      return done != 0;
+    });
+    int arrived = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, kMessageTag, MPI_COMM_WORLD, &arrived, &status);
+    if (!arrived) return std::nullopt;
+    int length = 0;
+    MPI_Get_count(&status, MPI_CHAR, &length);
+    Message m{status.MPI_SOURCE, std::string(size_t(length), '\0')};
+    MPI_Recv(m.bytes.data(), length, MPI_CHAR, status.MPI_SOURCE, kMessageTag, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    return m;
+  }
+
+  bool posting() const override { return !posted_.empty(); }
+
  private:
   // Blocking MPI calls busy-poll: a rank done with its part would keep a core from the threads of
   // the ranks still computing when they share cores. Polling every millisecond costs nothing
@@ -60,7 +87,15 @@ class MpiRanks final : public Ranks {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
 
+  // A message being sent: its bytes must live until the request completes.
+  struct Posted {
+    std::string bytes;
+    MPI_Request request;
+  };
+  static constexpr int kMessageTag = 1;
+
   int rank_ = 0, size_ = 1;
+  std::list<Posted> posted_;  // a list: requests keep their address while others complete
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,19 @@ class Ranks {
   bool root() const { return rank() == 0; }
   // Every rank's `bytes`, in rank order, on every rank. Also a barrier.
   virtual std::vector<std::string> all_gather(const std::string& bytes) = 0;
+
+  // Point to point, for the writer rank of `maquette run --store-copies` (write_relay.h).
+  // Messages from one rank to another arrive in the order posted.
+  struct Message {
+    int from = 0;
+    std::string bytes;
+  };
+  // Starts sending `bytes` to rank `to` and returns at once; poll() moves it along.
+  virtual void post(int to, std::string bytes) = 0;
+  // Moves the posted messages along; a message received from any rank, if one has arrived.
+  virtual std::optional<Message> poll() = 0;
+  // Whether some posted message is not yet sent.
+  virtual bool posting() const = 0;
 };
 
 // This process alone.

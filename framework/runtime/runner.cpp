@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "content/content_overviews.h"
@@ -18,6 +19,7 @@
 #include "runtime/ranks.h"
 #include "runtime/run_plan.h"
 #include "runtime/step_exec.h"
+#include "runtime/write_relay.h"
 
 namespace maquette {
 namespace {
@@ -70,6 +72,52 @@ nlohmann::json run_identity(const Pipeline& pipeline) {
       {"modules", modules}};
 }
 
+// What the ranks' stores must agree on under --store-copies before anything runs: every layer's
+// tiles, features and bytes, every artifact's size, and the run's done cells by step.
+nlohmann::json store_summary(const Store& store, const std::vector<std::vector<CellId>>& done) {
+  nlohmann::json layers = nlohmann::json::object(), artifacts = nlohmann::json::object(),
+                 cells = nlohmann::json::array();
+  for (const LayerInfo& layer : store.layers()) {
+    const LayerStats stats = store.stats(layer.name);
+    layers[layer.name] = {
+        {"tiles", stats.tile_count}, {"features", stats.feature_count}, {"bytes", stats.bytes}};
+  }
+  for (const std::string& name : store.artifact_names())
+    artifacts[name] = {{"bytes", store.get_artifact(name)->data.size()}};
+  for (const auto& step : done)
+    cells.push_back({{"count", step.size()}, {"fnv1a", cells_hash(step)}});
+  return {{"layers", layers}, {"artifacts", artifacts}, {"done", cells}};
+}
+
+// Throws, naming the first difference, unless every rank's store_summary is the writer's.
+void check_copies(const std::vector<std::string>& summaries, const std::string& store_path) {
+  const nlohmann::json writer = nlohmann::json::parse(summaries.front());
+  for (size_t r = 1; r < summaries.size(); ++r) {
+    const nlohmann::json copy = nlohmann::json::parse(summaries[r]);
+    const nlohmann::json patch = nlohmann::json::diff(writer, copy);
+    if (patch.empty()) continue;
+    const nlohmann::json::json_pointer at(patch.front().at("path").get<std::string>());
+    const auto value = [&](const nlohmann::json& j) {
+      return j.contains(at) ? j.at(at).dump() : std::string("nothing");
+    };
+    throw Error(fmt::format(
+        "rank {} of {}: its copy of the store {} differs from the writer's (rank 0): {} is {} "
+        "there, {} in the writer's; copy the writer's store to every rank before the run "
+        "(--store-copies)",
+        r, summaries.size(), store_path, at.to_string(), value(copy), value(writer)));
+  }
+}
+
+// Refuses a step that writes on the writer alone, outside the relayed batches: a task (ingest).
+void check_relayed(const RunPlan& plan) {
+  for (const auto& sp : plan.steps)
+    if (sp.step->op->spec().kind == OperatorKind::Task && !sp.step->op->spec().outputs.empty())
+      throw Error(sp.step->label() +
+                  ": writes on the writer rank alone, which --store-copies cannot pass to the "
+                  "other ranks' copies of the store: run it in a run of its own, then copy the "
+                  "store to the ranks");
+}
+
 class Runner {
  public:
   Runner(const Pipeline& pipeline, const RunOptions& options, Ranks& ranks)
@@ -77,6 +125,7 @@ class Runner {
         options_(options),
         ranks_(ranks),
         quiet_(options.quiet || !ranks.root()),
+        copies_(options.store_copies && ranks.size() > 1),
         threads_(options.threads > 0 ? options.threads : tbb::info::default_concurrency()),
         parallelism_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
         arena_(threads_) {}
@@ -92,15 +141,19 @@ class Runner {
     std::vector<std::vector<CellId>> done;  // by step
     try {
       // Every rank reads the done cells before any rank writes, so all share the same cells.
-      exchange(ranks_, [&] {
+      const std::vector<std::string> summaries = exchange(ranks_, [&] {
         if (!ranks_.root()) join(run, plan, summary);
         done.resize(plan.steps.size());
         for (size_t i = 0; i < plan.steps.size() && summary.resumed; ++i) {
           done[i] = store_->done_cells(summary.run_id, plan.steps[i].step->index);
           std::sort(done[i].begin(), done[i].end());
         }
-        return "";
+        return copies_ ? store_summary(*store_, done).dump() : "";
       });
+      if (copies_) {
+        check_copies(summaries, pipeline_.store_path);
+        relay_.emplace(ranks_, *store_);
+      }
       for (size_t i = 0; i < plan.steps.size(); ++i) {
         exchange(ranks_, [&] {  // every rank reads the artifacts; a failure fails all
           paste_artifacts(plan.steps[i]);
@@ -142,6 +195,7 @@ class Runner {
     // Everything is validated before the store is created or written.
     store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
+    if (copies_) check_relayed(plan);
     if (!store_) {
       if (const auto dir = std::filesystem::path(pipeline_.store_path).parent_path(); !dir.empty())
         std::filesystem::create_directories(dir);
@@ -180,9 +234,17 @@ class Runner {
     const nlohmann::json j = nlohmann::json::parse(run);
     summary.run_id = j.at("run").get<int64_t>();
     summary.resumed = j.at("resumed").get<bool>();
-    store_ = Store::open(pipeline_.store_path,
-                         summary.run_id == 0 ? Store::Mode::ReadOnly : Store::Mode::ReadWrite);
+    const bool writes = summary.run_id != 0;
+    // Under --store-copies, this rank's copy: made now when absent (the writer's store is new
+    // then, or check_copies fails), with the output layers the writer created.
+    const bool create = copies_ && writes && !std::filesystem::exists(pipeline_.store_path);
+    store_ = Store::open(pipeline_.store_path, !writes  ? Store::Mode::ReadOnly
+                                               : create ? Store::Mode::Create
+                                                        : Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
+    if (copies_ && writes)
+      for (const auto& sp : plan.steps)
+        for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
   }
 
   // Marks the run failed (on the root); no rank leaves before, since a launcher may end the job
@@ -222,7 +284,7 @@ class Runner {
         throw Error(sp.step->label() + ": inputs." + port + ": " + e.what());
       }
     }
-    StepIO io(*store_, sp, run_id);
+    StepIO io(*store_, sp, run_id, relay_ ? &*relay_ : nullptr);
     const OperatorKind kind = sp.step->op->spec().kind;
     if (kind == OperatorKind::Cell) {
       std::vector<CellId> todo;
@@ -230,10 +292,9 @@ class Runner {
                           done.end(), std::back_inserter(todo));
       s.computed = int64_t(todo.size());
       const CellPlan mine = share(std::move(todo));
-      exchange(ranks_, [&] {
+      relayed_exchange([&] {
         Progress progress(s.label, int64_t(mine.size()), quiet_);
         run_cell_step(sp, mine, io, progress, arena_);
-        return "";
       });
     } else if (done.empty()) {
       // Reduce, region and task steps record all their cells at once, when complete.
@@ -241,18 +302,16 @@ class Runner {
       if (kind == OperatorKind::Reduce)
         run_reduce(sp, io);
       else if (kind == OperatorKind::Task)
-        exchange(ranks_, [&] {
+        relayed_exchange([&] {
           if (ranks_.root()) run_task(sp, io, run_id);
-          return "";
         });
       else
-        exchange(ranks_, [&] {
+        relayed_exchange([&] {
           // A region operator sees the whole mosaic at once: the root runs it alone.
           if (ranks_.root()) {
             Progress progress(s.label, s.computed, quiet_);
             run_region_step(sp, io, progress);
           }
-          return "";
         });
     }
     s.skipped = s.cells - s.computed;
@@ -261,7 +320,7 @@ class Runner {
       return "";
     });
     exchange(ranks_, [&] {
-      if (ranks_.root())
+      if (ranks_.root() || copies_)  // a copy may hold the marks of the run it was copied in
         for (const auto& [port, layer] : sp.outputs) store_->mark_complete(layer.name);
       return "";
     });
@@ -280,13 +339,12 @@ class Runner {
           nlohmann::json::to_cbor(nlohmann::json(map_reduce_cells(sp, mine, io, progress, arena_)));
       return std::string(cbor.begin(), cbor.end());
     });
-    exchange(ranks_, [&] {
-      if (!ranks_.root()) return "";
+    relayed_exchange([&] {
+      if (!ranks_.root()) return;
       std::vector<nlohmann::json> partials;
       for (const std::string& part : parts)
         for (nlohmann::json& p : nlohmann::json::from_cbor(part)) partials.push_back(std::move(p));
       finish_reduce_step(sp, partials, io);
-      return "";
     });
   }
 
@@ -306,18 +364,32 @@ class Runner {
   }
 
   // The step's output layers are shared out among the ranks (each layer's overviews depend on
-  // its own tiles or content only). In the arena, so that the overviews' parallel loops use
-  // `threads` threads. Content layers get simplified content (content/content_overviews.h).
+  // its own tiles or content only); under --store-copies each rank builds them all in its own
+  // store (the same bits: later steps may read them, terrain.fill_voids does). In the arena, so
+  // that the overviews' parallel loops use `threads` threads. Content layers get simplified
+  // content (content/content_overviews.h).
   void update_overviews(const StepPlan& sp) {
     int i = 0;
     arena_.execute([&] {
       for (const auto& [port, layer] : sp.outputs) {
-        if (i++ % ranks_.size() != ranks_.rank()) continue;
+        if (!copies_ && i++ % ranks_.size() != ranks_.rank()) continue;
         if (layer.kind == LayerKind::Raster)
           store_->update_overviews(layer.name);
         else
           update_content_overviews(*store_, layer.name);
       }
+    });
+  }
+
+  // exchange() of `work` on every rank; under --store-copies, while the ranks' batches are
+  // relayed to the writer and the copies (write_relay.h).
+  void relayed_exchange(const std::function<void()>& work) {
+    exchange(ranks_, [&] {
+      if (relay_)
+        relay_->run(work);
+      else
+        work();
+      return "";
     });
   }
 
@@ -330,14 +402,16 @@ class Runner {
   const Pipeline& pipeline_;
   const RunOptions& options_;
   Ranks& ranks_;
-  bool quiet_;  // progress and logs from the root only
+  bool quiet_;   // progress and logs from the root only
+  bool copies_;  // RunOptions::store_copies, with more than one rank
   int threads_;
   // Without it TBB keeps at most default_concurrency() - 1 workers for the whole process, so
   // an arena of more threads than cores would get fewer. It applies to the whole process while
   // the run lasts.
   tbb::global_control parallelism_;
   tbb::task_arena arena_;
-  std::unique_ptr<Store> store_;
+  std::unique_ptr<Store> store_;     // on ranks but the root under --store-copies: this rank's copy
+  std::optional<WriteRelay> relay_;  // under --store-copies
 };
 
 }  // namespace

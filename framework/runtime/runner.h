@@ -20,6 +20,11 @@ struct RunOptions {
   bool dry_run = false;    // validate and print the plan, write nothing
   bool quiet = false;      // no progress output
   Ranks* ranks = nullptr;  // the processes sharing the run (MPI ranks); null: this one alone
+  // Ranks share no store file: rank 0, the writer, alone opens the pipeline's store; each other
+  // rank reads its own copy of it at the pipeline's store path on its machine, made before the
+  // run, and the ranks' writes reach the store and every copy through the writer
+  // (write_relay.h). Without it every rank opens the one store file.
+  bool store_copies = false;
 };
 
 struct StepSummary {

@@ -22,8 +22,8 @@ size_t cache_capacity(const StepPlan& plan) {
 
 }  // namespace
 
-StepIO::StepIO(Store& store, const StepPlan& plan, int64_t run_id)
-    : store_(store), plan_(plan), run_id_(run_id), cache_(cache_capacity(plan)) {
+StepIO::StepIO(Store& store, const StepPlan& plan, int64_t run_id, WriteRelay* relay)
+    : store_(store), plan_(plan), run_id_(run_id), relay_(relay), cache_(cache_capacity(plan)) {
   for (const LayerInfo& layer : store.layers())
     if (layer.kind == LayerKind::Model) models_.insert(layer.name);
 }
@@ -122,14 +122,21 @@ void StepIO::write(std::span<const CellOutput> cells) {
     }
     batch.mark_done(run_id_, plan_.step->index, cell);
   }
-  batch.commit();
+  commit(batch);
 }
 
 void StepIO::write_done(std::span<const CellId> cells, const Artifact* artifact) {
   Store::Batch batch(store_);
   if (artifact != nullptr) batch.put_artifact(*artifact);
   for (const CellId cell : cells) batch.mark_done(run_id_, plan_.step->index, cell);
+  commit(batch);
+}
+
+void StepIO::commit(Store::Batch& batch) {
+  if (!relay_) return batch.commit();
+  std::string bytes = batch.serialize();
   batch.commit();
+  relay_->relay(std::move(bytes));
 }
 
 }  // namespace maquette

@@ -1,6 +1,7 @@
 // The store access of one running step, from any thread: reading input tiles as float with the
 // operator's halo, and writing each cell's output tiles and content together with its run record
-// in one batch, so a killed run leaves no cell half-written. The store is the single writer:
+// in one batch, so a killed run leaves no cell half-written (and relayed to the other ranks'
+// copies of the store under --store-copies, write_relay.h). The store is the single writer:
 // batches are encoded in the calling thread and committed one at a time under its write mutex.
 // Input tiles read for a halo go through a TileCache of at most kTileCacheBytes of decoded tiles
 // (and at least 4 tiles), so each is decoded about once per step.
@@ -18,6 +19,7 @@
 #include "runtime/operator.h"
 #include "runtime/run_plan.h"
 #include "runtime/tile_cache.h"
+#include "runtime/write_relay.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -34,7 +36,8 @@ inline constexpr size_t kTileCacheBytes = size_t(256) << 20;
 
 class StepIO {
  public:
-  StepIO(Store& store, const StepPlan& plan, int64_t run_id);
+  // `relay` (--store-copies): every batch committed is also passed to it, for the other ranks.
+  StepIO(Store& store, const StepPlan& plan, int64_t run_id, WriteRelay* relay = nullptr);
 
   // The tile of `layer` at `cell` as float (nodata -> NaN), or nullopt.
   std::optional<Tile<float>> read(const LayerInfo& layer, CellId cell) const;
@@ -63,9 +66,12 @@ class StepIO {
   void write_done(std::span<const CellId> cells, const Artifact* artifact = nullptr);
 
  private:
+  void commit(Store::Batch& batch);
+
   Store& store_;
   const StepPlan& plan_;
   int64_t run_id_;
+  WriteRelay* relay_;
   std::set<std::string> models_;  // the store's model layers: instances' prototypes
   TileCache cache_;
   mutable std::atomic<int64_t> decoded_{0};

@@ -201,6 +201,18 @@ class Store {
     void mark_done(int64_t run_id, int step, int64_t key);
     void commit();
 
+    // The batch's writes as bytes, for another process to add to a batch on its own copy of
+    // the store (add_serialized; `maquette run --store-copies`): tiles and overviews as encoded
+    // (not compressed again), content, artifacts and run records, layers by name rather than by
+    // their row ids in this file. Tiles kept only to build a parent's overview with siblings
+    // still to come are not passed on: the parent stays stale there, as here after commit().
+    // Throws maquette::Error for a batch holding features or models, which it does not carry.
+    std::string serialize() const;
+    // Adds the writes of a batch's serialize() to this one, each layer looked up by name in this
+    // store; throws maquette::Error naming the layer (and cell) for a layer this store lacks or
+    // holds of another kind or level, and for bytes that are no serialized batch.
+    void add_serialized(std::string_view bytes);
+
    private:
     struct Pending;
     Store& store_;

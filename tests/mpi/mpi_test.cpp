@@ -3,7 +3,10 @@
 // terrain operators and for every climate and texture operator (reduce ones included); a failing
 // cell names its rank, step and cell; a rank killed with SIGKILL leaves a valid store that --resume
 // completes (with 3 ranks, or one process) to the same bits. MPI is loaded from its plug-in by
-// launched runs only, and a missing plug-in is named.
+// launched runs only, and a missing plug-in is named. With --store-copies, each rank in its own
+// directory and the store in the writer's (rank 0's) only, the others given copies: the same
+// bits with 2, 3 and 4 ranks, in the store and in every copy; --resume after a killed rank; a
+// copy that differs from the writer's store refused before anything runs.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -53,14 +56,18 @@ struct Result {
   std::string err;
 };
 
-Result run(const std::string& dir, int ranks, const std::string& extra = "",
-           const std::string& rank_env = "", const std::string& program = kMaquette) {
+// Runs `command`, its stderr kept in DIR/stderr.
+Result run_shell(const std::string& command, const std::string& dir) {
   const std::string err = dir + "/stderr";
-  const int status = std::system(
-      (run_command(dir, ranks, extra, rank_env, program) + " >/dev/null 2>" + err).c_str());
+  const int status = std::system((command + " >/dev/null 2>" + err).c_str());
   std::ostringstream text;
   text << std::ifstream(err).rdbuf();
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+Result run(const std::string& dir, int ranks, const std::string& extra = "",
+           const std::string& rank_env = "", const std::string& program = kMaquette) {
+  return run_shell(run_command(dir, ranks, extra, rank_env, program), dir);
 }
 
 // The directory of this test process's pipelines, removed at exit.
@@ -358,10 +365,12 @@ pid_t rank_pid(pid_t launcher, int rank) {
   return 0;
 }
 
-// Starts a 2-rank run whose fixture.blur takes 40 ms a cell, kills rank 1 with SIGKILL once
-// some cells of that step are done, and waits for mpirun to end the job.
-void kill_mid_step(const std::string& dir) {
-  const std::string cmd = "exec " + run_command(dir, 2) + " >/dev/null 2>" + dir + "/stderr";
+// Starts a 2-rank run (`command`: run_command's by default) whose fixture.blur takes 40 ms a
+// cell, kills rank 1 with SIGKILL once some cells of that step are done, and waits for mpirun to
+// end the job.
+void kill_mid_step(const std::string& dir, std::string command = "") {
+  if (command.empty()) command = run_command(dir, 2);
+  const std::string cmd = "exec " + command + " >/dev/null 2>" + dir + "/stderr";
   const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
   pid_t launcher = 0;
   ASSERT_EQ(
@@ -397,6 +406,98 @@ TEST(Mpi, KilledRankResumesToTheSameBits) {
     EXPECT_NE(r.err.find("resuming run 1"), std::string::npos) << r.err;
     EXPECT_EQ(blobs(dir), reference());
   }
+}
+
+// The working directory of `rank` under --store-copies: DIR for the writer, DIR/rank<R> else.
+fs::path rank_dir(const std::string& dir, int rank) {
+  return rank == 0 ? fs::path(dir) : fs::path(dir) / ("rank" + std::to_string(rank));
+}
+
+// Gives ranks 1..ranks-1 their directories, each with the pipeline and a copy of the writer's
+// store as it is now (with its WAL: a killed run leaves commits there), if there is one.
+void copy_store(const std::string& dir, int ranks) {
+  for (int r = 1; r < ranks; ++r) {
+    const fs::path to = rank_dir(dir, r);
+    fs::remove_all(to);
+    fs::create_directories(to);
+    fs::copy_file(fs::path(dir) / "pipeline.json", to / "pipeline.json");
+    for (const char* file : {"out.mqt", "out.mqt-wal"})
+      if (fs::exists(fs::path(dir) / file)) fs::copy_file(fs::path(dir) / file, to / file);
+  }
+}
+
+// `maquette run --store-copies pipeline.json` under mpirun, each rank started in its own
+// directory (an app context per rank), so that each opens the store there: the writer's or a
+// copy.
+std::string copies_command(const std::string& dir, int ranks, const std::string& extra = "") {
+  std::string command =
+      "env " + kEnv + " " + MAQUETTE_MPIEXEC + " --oversubscribe --allow-run-as-root";
+  for (int r = 0; r < ranks; ++r)
+    command += std::string(r == 0 ? "" : " :") + " -x MAQUETTE_MODULE_PATH -np 1 -wdir " +
+               rank_dir(dir, r).string() + " " + kMaquette + " run --threads 1 --store-copies " +
+               extra + " pipeline.json";
+  return command;
+}
+
+Result run_copies(const std::string& dir, int ranks, const std::string& extra = "") {
+  return run_shell(copies_command(dir, ranks, extra), dir);
+}
+
+TEST(MpiStoreCopies, RanksGiveTheSingleProcessBits) {
+  for (const int ranks : {2, 3, 4}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    const std::string dir = write_pipeline();
+    copy_store(dir, ranks);  // no store yet: each rank makes its own
+    const Result r = run_copies(dir, ranks);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(blobs(dir), reference());
+    EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"), std::vector<std::string>{"ok|"});
+    // Every copy got what every rank wrote, and built the same overviews.
+    for (int rank = 1; rank < ranks; ++rank) EXPECT_EQ(blobs(rank_dir(dir, rank)), reference());
+  }
+}
+
+// Reduce steps whose artifacts later steps read (climate.fit_stations, then
+// climate.regionalize), an artifact put in the store before the run (the stations), refined
+// tiles.
+TEST(MpiStoreCopies, ModuleOperatorsGiveTheSingleProcessBits) {
+  const std::string single = write_module_pipeline();
+  const Result one = run(single, 0);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  for (const int ranks : {2, 4}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    const std::string dir = write_module_pipeline();
+    copy_store(dir, ranks);
+    const Result r = run_copies(dir, ranks);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(blobs(dir), blobs(single));
+  }
+}
+
+TEST(MpiStoreCopies, DifferentCopyIsRefusedBeforeAnythingRuns) {
+  const std::string dir = write_module_pipeline();  // the writer's store holds the stations
+  copy_store(dir, 3);
+  fs::remove(rank_dir(dir, 2) / "out.mqt");
+  const Result r = run_copies(dir, 3);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("maquette: error: rank 2 of 3: its copy of the store out.mqt differs from "
+                       "the writer's (rank 0): /artifacts/stations is nothing there"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(rows(dir + "/out.mqt", "SELECT count(*) FROM tiles"), std::vector<std::string>{"0|"});
+}
+
+TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
+  const std::string dir = write_pipeline({{"sleep_ms", 40}});
+  copy_store(dir, 2);
+  kill_mid_step(dir, copies_command(dir, 2));
+  // The writer committed the cells of both ranks it received: the copies are made again from
+  // its store, as a new job would stage them.
+  copy_store(dir, 3);
+  const Result r = run_copies(dir, 3, "--resume");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("resuming run 1"), std::string::npos) << r.err;
+  EXPECT_EQ(blobs(dir), reference());
 }
 
 }  // namespace
