@@ -160,6 +160,12 @@ class Runner {
           read_features(plan.steps[i]);
           return "";
         });
+        to_copies_ =
+            copies_ &&
+            std::any_of(plan.steps.begin() + i + 1, plan.steps.end(), [](const StepPlan& later) {
+              const OperatorKind k = later.step->op->spec().kind;
+              return k == OperatorKind::Cell || k == OperatorKind::Reduce;
+            });
         summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
       }
     } catch (const std::exception& e) {
@@ -364,15 +370,16 @@ class Runner {
   }
 
   // The step's output layers are shared out among the ranks (each layer's overviews depend on
-  // its own tiles or content only); under --store-copies each rank builds them all in its own
-  // store (the same bits: later steps may read them, terrain.fill_voids does). In the arena, so
+  // its own tiles or content only); under --store-copies the writer builds them all, and so does
+  // each copy when later steps may read them (terrain.fill_voids does). In the arena, so
   // that the overviews' parallel loops use `threads` threads. Content layers get simplified
   // content (content/content_overviews.h).
   void update_overviews(const StepPlan& sp) {
     int i = 0;
     arena_.execute([&] {
       for (const auto& [port, layer] : sp.outputs) {
-        if (!copies_ && i++ % ranks_.size() != ranks_.rank()) continue;
+        if (copies_ ? !ranks_.root() && !to_copies_ : i++ % ranks_.size() != ranks_.rank())
+          continue;
         if (layer.kind == LayerKind::Raster)
           store_->update_overviews(layer.name);
         else
@@ -386,7 +393,7 @@ class Runner {
   void relayed_exchange(const std::function<void()>& work) {
     exchange(ranks_, [&] {
       if (relay_)
-        relay_->run(work);
+        relay_->run(work, to_copies_);
       else
         work();
       return "";
@@ -404,6 +411,9 @@ class Runner {
   Ranks& ranks_;
   bool quiet_;   // progress and logs from the root only
   bool copies_;  // RunOptions::store_copies, with more than one rank
+  // Under --store-copies, whether the current step's writes and overviews go to the copies too:
+  // only when a later step (cell or reduce) runs on every rank and may read them.
+  bool to_copies_ = false;
   int threads_;
   // Without it TBB keeps at most default_concurrency() - 1 workers for the whole process, so
   // an arena of more threads than cores would get fewer. It applies to the whole process while

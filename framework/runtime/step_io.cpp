@@ -135,7 +135,7 @@ void StepIO::write_done(std::span<const CellId> cells, const Artifact* artifact)
 void StepIO::commit(Store::Batch& batch) {
   if (!relay_) return batch.commit();
   std::string bytes = batch.serialize();
-  batch.commit();
+  if (relay_->commits_here()) batch.commit();
   relay_->relay(std::move(bytes));
 }
 

@@ -36,7 +36,7 @@ inline constexpr size_t kTileCacheBytes = size_t(256) << 20;
 
 class StepIO {
  public:
-  // `relay` (--store-copies): every batch committed is also passed to it, for the other ranks.
+  // `relay` (--store-copies): every batch is also passed to it, for the other ranks.
   StepIO(Store& store, const StepPlan& plan, int64_t run_id, WriteRelay* relay = nullptr);
 
   // The tile of `layer` at `cell` as float (nodata -> NaN), or nullopt.

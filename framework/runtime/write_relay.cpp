@@ -1,5 +1,6 @@
 #include "runtime/write_relay.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -32,11 +33,13 @@ std::vector<std::string> WriteRelay::take_queued() {
 
 void WriteRelay::send_on(const std::string& message, int except) {
   if (!ranks_.root()) return ranks_.post(0, message);
+  if (message.front() == kBatch && !to_copies_) return;
   for (int r = 1; r < ranks_.size(); ++r)
     if (r != except) ranks_.post(r, message);
 }
 
-void WriteRelay::run(const std::function<void()>& work) {
+void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
+  to_copies_ = to_copies;
   std::exception_ptr failure;
   std::atomic<bool> working{true};
   std::thread worker([&] {
@@ -54,6 +57,10 @@ void WriteRelay::run(const std::function<void()>& work) {
   int ends = 0;
   bool ended = false;
   std::exception_ptr write_failure;
+  // Idle polls sleep 1 ms, doubling up to kMaxIdle while nothing comes: a rank waiting for the
+  // others' cells costs next to nothing, and a batch waits at most that long (MPI buffers it).
+  constexpr auto kMaxIdle = std::chrono::milliseconds(8);
+  auto idle = std::chrono::milliseconds(1);
   for (;;) {
     bool busy = false;
     const bool done = !working;  // read before the queue: work's last batch is queued by then
@@ -83,7 +90,12 @@ void WriteRelay::run(const std::function<void()>& work) {
     }
     if (ended && ends == ends_expected && !ranks_.posting()) break;
     // Polling, not blocking: ranks sharing cores leave them to the threads computing.
-    if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (busy) {
+      idle = std::chrono::milliseconds(1);
+    } else {
+      std::this_thread::sleep_for(idle);
+      idle = std::min(2 * idle, kMaxIdle);
+    }
   }
   worker.join();
   if (failure) std::rethrow_exception(failure);

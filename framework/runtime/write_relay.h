@@ -30,10 +30,15 @@ class WriteRelay {
   void relay(std::string batch);
 
   // Runs `work` on a thread of its own while this thread, the one that made the Ranks, passes
-  // batches between the ranks; every rank calls it at the same point of the run. Returns once
-  // every rank's work has ended and every batch is written to the store and every copy; then
-  // rethrows what `work` threw, or else the first error writing a batch received.
-  void run(const std::function<void()>& work);
+  // batches between the ranks; every rank calls it at the same point of the run, with the same
+  // `to_copies`: whether the batches go to the copies too (false when no later step reads them
+  // there: the writer alone writes them). Returns once every rank's work has ended and every
+  // batch is written where it goes; then rethrows what `work` threw, or else the first error
+  // writing a batch received.
+  void run(const std::function<void()>& work, bool to_copies);
+  // Whether this rank commits its own batches to its store (the writer's, or a copy that keeps
+  // them): StepIO commits, serializes and relays; otherwise it only serializes and relays.
+  bool commits_here() const { return ranks_.root() || to_copies_; }
 
  private:
   static constexpr size_t kMaxQueued = 64;
@@ -47,6 +52,7 @@ class WriteRelay {
   std::mutex mutex_;
   std::condition_variable room_;
   std::vector<std::string> queued_;
+  bool to_copies_ = false;  // of the current run()
 };
 
 }  // namespace maquette

@@ -452,8 +452,16 @@ TEST(MpiStoreCopies, RanksGiveTheSingleProcessBits) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(blobs(dir), reference());
     EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"), std::vector<std::string>{"ok|"});
-    // Every copy got what every rank wrote, and built the same overviews.
-    for (int rank = 1; rank < ranks; ++rank) EXPECT_EQ(blobs(rank_dir(dir, rank)), reference());
+    // Every copy got what every rank wrote for the next steps, and built the same overviews:
+    // all but the outputs of the last two steps (a reduce and a region step), which no step
+    // after them reads on the copies.
+    std::vector<std::string> read_later = reference();
+    std::erase_if(read_later, [](const std::string& row) {
+      return row.starts_with("scan|") || row.starts_with("overview|scan|") ||
+             row.starts_with("artifact|smooth_sum|");
+    });
+    ASSERT_LT(read_later.size(), reference().size());
+    for (int rank = 1; rank < ranks; ++rank) EXPECT_EQ(blobs(rank_dir(dir, rank)), read_later);
   }
 }
 

@@ -1,0 +1,77 @@
+// Batch::serialize and add_serialized (`maquette run --store-copies`): a batch made on one store
+// and committed to another whose layers have other row ids gives the same stored blobs, the
+// overview the batch built, the artifact and the run records; bytes naming a layer the store
+// lacks, or that are no batch, are refused naming the layer or saying what they are not.
+#include "store/store.h"
+#include "store_test_util.h"
+
+namespace maquette {
+namespace {
+
+LayerInfo raster(const std::string& name) {
+  LayerInfo l;
+  l.name = name;
+  l.tile_size = 16;
+  l.level = 3;
+  return l;
+}
+
+// The stored blob bytes of a layer's tiles and overviews, read behind the store's back.
+int64_t blob_bytes(const std::string& path, const std::string& layer) {
+  const std::string id = "(SELECT id FROM layers WHERE name = '" + layer + "')";
+  return test::raw_int(path, "SELECT sum(length(blob)) FROM tiles WHERE layer = " + id) +
+         1000000 * test::raw_int(path, "SELECT count(*) FROM overviews WHERE layer = " + id);
+}
+
+TEST(BatchWire, AnotherStoreCommitsTheSameWrites) {
+  test::TempDir dir;
+  const std::string from_path = dir.file("from.mqt"), to_path = dir.file("to.mqt");
+  auto from = Store::open(from_path, Store::Mode::Create);
+  auto to = Store::open(to_path, Store::Mode::Create);
+  from->create_layer(raster("other"));  // "dem" gets another row id in each store
+  from->create_layer(raster("dem"));
+  to->create_layer(raster("dem"));
+  const CellId parent = *CellId::FromText("Q12");
+  const int64_t run = from->begin_run({{"p", 1}});
+
+  Store::Batch batch(*from);
+  for (int k = 0; k < 4; ++k) {  // all four children: the batch builds the parent's overview
+    batch.put_tile("dem", parent.child(k), test::smooth_tile(16, float(k)));
+    batch.mark_done(run, 2, parent.child(k));
+  }
+  batch.put_artifact(Artifact::FromText("fit", "{\"a\": 1}"));
+  const std::string bytes = batch.serialize();
+  batch.commit();
+
+  Store::Batch copy(*to);
+  copy.add_serialized(bytes);
+  copy.commit();
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(to->get_tile("dem", parent.child(k))->bytes,
+              from->get_tile("dem", parent.child(k))->bytes);
+  ASSERT_TRUE(to->get_overview("dem", parent));
+  EXPECT_EQ(to->get_overview("dem", parent)->bytes, from->get_overview("dem", parent)->bytes);
+  EXPECT_GT(blob_bytes(from_path, "dem"), 1000000);
+  EXPECT_EQ(blob_bytes(to_path, "dem"), blob_bytes(from_path, "dem"));
+  EXPECT_EQ(to->get_artifact("fit")->text(), "{\"a\": 1}");
+  EXPECT_EQ(to->done_cells(run, 2), from->done_cells(run, 2));
+  EXPECT_EQ(to->done_cells(run, 2).size(), 4u);
+}
+
+TEST(BatchWire, UnknownLayerAndGarbageAreRefused) {
+  test::TempDir dir;
+  auto from = Store::open(dir.file("from.mqt"), Store::Mode::Create);
+  auto to = Store::open(dir.file("to.mqt"), Store::Mode::Create);
+  from->create_layer(raster("dem"));
+  Store::Batch batch(*from);
+  batch.put_tile("dem", *CellId::FromText("Q123"), test::smooth_tile(16));
+  const std::string bytes = batch.serialize();
+
+  Store::Batch copy(*to);
+  test::expect_error([&] { copy.add_serialized(bytes); }, {"unknown layer 'dem'"});
+  test::expect_error([&] { copy.add_serialized("not cbor"); },
+                     {"not a serialized batch", "to.mqt"});
+}
+
+}  // namespace
+}  // namespace maquette
