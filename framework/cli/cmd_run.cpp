@@ -1,6 +1,8 @@
 // maquette run PIPELINE.json: validate, plan and run a pipeline.
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -26,6 +28,18 @@ void log_summary(const RunSummary& s) {
                  step.computed, step.skipped, step.seconds);
   spdlog::info("run {} {} in {:.2f} s", s.run_id, s.resumed ? "resumed and finished" : "finished",
                s.seconds);
+}
+
+// The writer's word when the launcher ends the job under --store-copies (a rank died, or the job
+// was cancelled): Open MPI's mpirun and Slurm send SIGTERM, which would end it silently. Only
+// async-signal-safe calls.
+extern "C" void report_ended_job(int) {
+  static const char message[] =
+      "maquette: error: rank 0 (the writer): the launcher is ending the job (a rank died or the "
+      "job was cancelled); the store keeps every cell the writer committed: finish the run with "
+      "--resume once the ranks have new copies of the store\n";
+  (void)!write(STDERR_FILENO, message, sizeof message - 1);
+  _exit(1);
 }
 
 }  // namespace
@@ -54,6 +68,8 @@ void add_run_command(CLI::App& app) {
     RunOptions options = o->run;
     options.ranks = ranks.get();
     options.quiet = global_options().quiet;
+    const bool writer = options.store_copies && ranks->size() > 1 && ranks->root();
+    if (writer) std::signal(SIGTERM, report_ended_job);
     try {
       Pipeline pipeline;
       exchange(*ranks, [&] {  // under MPI, a failure on one rank fails all
@@ -61,8 +77,10 @@ void add_run_command(CLI::App& app) {
         return "";
       });
       const RunSummary summary = run_pipeline(pipeline, options);
+      if (writer) std::signal(SIGTERM, SIG_DFL);
       if (!options.dry_run && ranks->root()) log_summary(summary);
     } catch (const Error& e) {
+      if (writer) std::signal(SIGTERM, SIG_DFL);  // every rank fails alike: no job to report
       if (ranks->size() == 1) throw;
       // Every rank fails with the same message: the root prints it (as main() would) before any
       // rank exits, since a launcher ends the whole job when one rank exits with an error.

@@ -499,6 +499,11 @@ TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
   const std::string dir = write_pipeline({{"sleep_ms", 40}});
   copy_store(dir, 2);
   kill_mid_step(dir, copies_command(dir, 2));
+  std::ostringstream err;
+  err << std::ifstream(dir + "/stderr").rdbuf();
+  EXPECT_NE(err.str().find("maquette: error: rank 0 (the writer): the launcher is ending the job"),
+            std::string::npos)
+      << err.str();
   // The writer committed the cells of both ranks it received: the copies are made again from
   // its store, as a new job would stage them.
   copy_store(dir, 3);
