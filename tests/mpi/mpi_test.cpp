@@ -495,6 +495,31 @@ TEST(MpiStoreCopies, DifferentCopyIsRefusedBeforeAnythingRuns) {
   EXPECT_EQ(rows(dir + "/out.mqt", "SELECT count(*) FROM tiles"), std::vector<std::string>{"0|"});
 }
 
+// An ingest writes the store outside the relayed batches: refused before the store is made.
+TEST(MpiStoreCopies, IngestIsRefused) {
+  const fs::path dir = new_dir();
+  const json pipeline = {{"store", "out.mqt"},
+                         {"region", {{"cells", {"Q2"}}}},
+                         {"level", 4},
+                         {"steps",
+                          {{{"op", "ingest"},
+                            {"outputs", {{"layer", "points"}}},
+                            {"params", {{"sources", {"points.geojson"}}, {"as", "features"}}}}}}};
+  std::ofstream(dir / "pipeline.json") << pipeline.dump(2);
+  copy_store(dir.string(), 2);
+  for (const fs::path& d : {dir, rank_dir(dir.string(), 1)})
+    std::ofstream(d / "points.geojson")
+        << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+               "geometry": {"type": "Point", "coordinates": [30.5, -10.2]}}]})";
+  const Result r = run_copies(dir.string(), 2);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("maquette: error: rank 0 of 2: step 1 (ingest): writes on the writer rank "
+                       "alone, which --store-copies cannot pass to the other ranks' copies"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.mqt"));
+}
+
 TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
   const std::string dir = write_pipeline({{"sleep_ms", 40}});
   copy_store(dir, 2);
