@@ -274,6 +274,7 @@ PaintingFit fit_painting(const std::vector<GroundClick>& clicks,
         options.ground_height({fit.camera.eye.lon, fit.camera.eye.lat}) - fit.camera.eye.height;
   }
   fit.fitted = project_ground(fit.camera, fit.bend, ground);
+  fit.ground = ground;
   double squares = 0;
   for (size_t i = 0; i < clicks.size(); ++i)
     squares +=

@@ -58,7 +58,8 @@ struct PaintingFit {
   // fitted points (a painting pixel to the pixel the camera and bend draw there).
   PictureWarp unwarp;
   double rms_error = 0;  // pixels, over the clicks, of the camera and bend (before the warp)
-  std::vector<PicturePoint> fitted;  // where the camera and bend put each click's ground point
+  std::vector<PicturePoint> fitted;   // where the camera and bend put each click's ground point
+  std::vector<GeodeticPoint> ground;  // the clicks' ground points, in their order
 
   // Where the fit puts ground points in the painting: the camera's and bend's pixel moved by the
   // warp; NaN behind the eye.

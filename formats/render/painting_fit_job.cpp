@@ -53,7 +53,7 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 }
 
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
-                        const std::string& path) {
+                        const GroundWarp* ground_warp, const std::string& path) {
   using nlohmann::json;
   const CameraSpec& c = fit.camera;
   json out;
@@ -85,6 +85,7 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
                       {"fitted_x", f[0]},
                       {"fitted_y", f[1]},
                       {"error", std::hypot(f[0] - p.x, f[1] - p.y)}});
+    if (ground_warp) clicks.back()["ground_move"] = ground_warp->moves()[i];
   }
   out["points"] = clicks;
   if (fit.warp.centres().empty()) {

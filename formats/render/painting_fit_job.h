@@ -7,6 +7,7 @@
 
 #include "core/grid.h"
 #include "render/painting_fit.h"
+#include "render/painting_fit_ground.h"
 #include "render/painting_fit_points.h"
 #include "render/panorama.h"
 #include "store/store.h"
@@ -33,10 +34,11 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 // "size": width, height), "bend" (radius and start in metres; null without the bend), "rms_error"
 // (pixels, before the warp), "render_options" (the same camera and bend as `render panorama`
 // options), "points" (each click's name, x, y and where the camera and bend put it: fitted_x,
-// fitted_y, error), and "warp" (painting_fit_warp.h: scale, centres, weights, affine; null without
-// the warp). Throws maquette::Error naming `path` when it cannot be written.
+// fitted_y, error; with `ground_warp`, ground_move: its ground point's move, east and north metres
+// in the eye's frame), and "warp" (painting_fit_warp.h: scale, centres, weights, affine; null
+// without the warp). Throws maquette::Error naming `path` when it cannot be written.
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
-                        const std::string& path);
+                        const GroundWarp* ground_warp, const std::string& path);
 
 // The panorama drawn under a fit's camera and bend moved by its warp onto the painting: each
 // pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp) sends its centre

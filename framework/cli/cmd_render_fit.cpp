@@ -1,13 +1,16 @@
 // maquette render fit: the camera and progressive bend of a painting from control points (painting
 // pixel <-> ground point) against a DEM layer, written as JSON, and optionally the panorama of the
 // store under that camera with its guides: the painting's altitude and land-cover masks
-// (formats/render/painting_fit_job.h).
+// (formats/render/painting_fit_job.h); with --warped-dem, the DEM warped so that the fitted camera
+// draws the clicked features where the painting shows them, as a new layer
+// (formats/render/painting_fit_dem.h).
 #include <spdlog/spdlog.h>
 
 #include <memory>
 #include <optional>
 
 #include "cli/commands.h"
+#include "render/painting_fit_dem.h"
 #include "render/painting_fit_job.h"
 #include "render/render_job.h"
 
@@ -16,14 +19,20 @@ namespace {
 
 struct FitOptions {
   std::string store, points, out, panorama, texture, land_cover;
+  std::optional<std::string> warped_dem;
   PaintingFitJob job;
 };
 
 void run(const FitOptions& o) {
   const PaintingFitJob& job = o.job;
-  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  const auto store =
+      Store::open(o.store, o.warped_dem ? Store::Mode::ReadWrite : Store::Mode::ReadOnly);
+  if (o.warped_dem) check_warped_dem_name(*store, *o.warped_dem);
   const PaintingPoints points = read_painting_points(o.points);
   const PaintingFit fit = fit_painting_to_store(*store, default_grid(), job, points, o.points);
+  // The ground warp is found before anything is written: a click it cannot move leaves no files.
+  std::optional<GroundWarp> ground_warp;
+  if (o.warped_dem) ground_warp.emplace(fit);
   // The panorama is rendered before anything is written: bad --texture or --land-cover layers
   // leave no files.
   std::optional<Panorama> panorama;
@@ -36,7 +45,13 @@ void run(const FitOptions& o) {
     render.bend = fit.bend;
     panorama = warp_panorama(render_panorama(*store, default_grid(), render), fit.unwarp);
   }
-  write_painting_fit(fit, points, o.out);
+  if (ground_warp) {
+    write_warped_dem(
+        *store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
+        {{"warped_by", {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}}}});
+    spdlog::info("wrote layer {}: {} moved by the fit's warp", *o.warped_dem, job.dem);
+  }
+  write_painting_fit(fit, points, ground_warp ? &*ground_warp : nullptr, o.out);
   spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
                points.points.size());
   if (panorama) {
@@ -69,6 +84,12 @@ void add_render_fit_command(CLI::App* render) {
                   "Also fit the residual warp, a thin-plate spline with this smoothing (>= 0; "
                   "0.001 follows clicks with 2 px of noise)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option(
+         "--warped-dem", o->warped_dem,
+         "Also write the --dem layer warped by the fit's warp (taken to the ground) as this "
+         "new layer: drawn under the fitted camera and bend, its clicked features lie "
+         "where the painting shows them")
+      ->needs("--warp-smoothing");
   cmd->add_option("--panorama", o->panorama,
                   "Also render the store under the fitted camera and bend, moved by the warp onto "
                   "the painting, to this PNG, with its guides, as `render panorama` does");
