@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
+#include <type_traits>
 
 #include "core/error.h"
 #include "core/output_file.h"
@@ -100,33 +102,50 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
   write_file_whole(path, text);  // whole or not at all: an older file stays as it was
 }
 
-Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp) {
-  const int w = panorama.width, h = panorama.height;
-  std::vector<size_t> source(size_t(w) * size_t(h));
+Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJob render,
+                                const PictureWarp& unwarp) {
+  const int w = render.camera.width, h = render.camera.height;
+  std::vector<PicturePoint> sources(size_t(w) * size_t(h));
+  double beyond = 0;  // pixels
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const PicturePoint p = unwarp({i + 0.5, j + 0.5});
-      const int x = std::clamp(int(std::floor(p[0])), 0, w - 1);
-      const int y = std::clamp(int(std::floor(p[1])), 0, h - 1);
-      source[size_t(j) * size_t(w) + size_t(i)] = size_t(y) * size_t(w) + size_t(x);
+      sources[size_t(j) * size_t(w) + size_t(i)] = p;
+      beyond = std::max({beyond, -p[0], p[0] - w, -p[1], p[1] - h});
     }
-  const auto moved = [&source](const auto& values) {
-    auto out = values;
-    const size_t channels = values.size() / source.size();  // 0 for a guide not drawn
+  const int margin = beyond > 0 ? int(std::ceil(beyond)) : 0;  // none: the picture as drawn
+  const double focal = PinholeCamera(render.camera).focal();
+  render.camera.width = w + 2 * margin;
+  render.camera.height = h + 2 * margin;
+  render.camera.fov = 2 * std::atan((w * 0.5 + margin) / focal) * 180 / std::numbers::pi;
+  const Panorama wide = render_panorama(store, grid, render);
+  const int ww = wide.width;
+  std::vector<size_t> source(sources.size());
+  for (size_t k = 0; k < sources.size(); ++k) {  // clamped: a source on the far edge itself
+    const int x = std::clamp(int(std::floor(sources[k][0])) + margin, 0, ww - 1);
+    const int y = std::clamp(int(std::floor(sources[k][1])) + margin, 0, wide.height - 1);
+    source[k] = size_t(y) * size_t(ww) + size_t(x);
+  }
+  const auto moved = [&source](const auto& values, size_t wide_pixels) {
+    const size_t channels = values.size() / wide_pixels;  // 0 for a guide not drawn
+    std::remove_cvref_t<decltype(values)> out(source.size() * channels);
     for (size_t k = 0; k < source.size(); ++k)
       for (size_t c = 0; c < channels; ++c)
         out[k * channels + c] = values[source[k] * channels + c];
     return out;
   };
-  Panorama out = panorama;
-  out.rgb = moved(panorama.rgb);
-  out.altitude = moved(panorama.altitude);
-  out.distance = moved(panorama.distance);
-  out.lon = moved(panorama.lon);
-  out.lat = moved(panorama.lat);
-  out.land_cover = moved(panorama.land_cover);
-  out.cast_shadow = moved(panorama.cast_shadow);
-  out.silhouette = moved(panorama.silhouette);
+  const size_t n = size_t(ww) * size_t(wide.height);
+  Panorama out;
+  out.width = w;
+  out.height = h;
+  out.rgb = moved(wide.rgb, n);
+  out.altitude = moved(wide.altitude, n);
+  out.distance = moved(wide.distance, n);
+  out.lon = moved(wide.lon, n);
+  out.lat = moved(wide.lat, n);
+  out.land_cover = moved(wide.land_cover, n);
+  out.cast_shadow = moved(wide.cast_shadow, n);
+  out.silhouette = moved(wide.silhouette, n);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "render/painting_fit_ground.h"
 #include "render/painting_fit_points.h"
 #include "render/panorama.h"
+#include "render/render_job.h"
 #include "store/store.h"
 
 namespace maquette {
@@ -40,9 +41,13 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
                         const GroundWarp* ground_warp, const std::string& path);
 
-// The panorama drawn under a fit's camera and bend moved by its warp onto the painting: each
-// pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp) sends its centre
-// to (nearest; clamped to the picture's edge).
-Panorama warp_panorama(const Panorama& panorama, const PictureWarp& unwarp);
+// The panorama `render` draws (its camera and bend a fit's) moved by the fit's warp onto the
+// painting: each pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp)
+// sends its centre to (nearest). Where that lies beyond the picture, the view is drawn wider: with
+// a margin as wide as the farthest such pixel, at the same focal length and centre, so every pixel
+// shows what the camera sees there. Throws as render_panorama (a margin making the picture wider
+// than the camera allows among them).
+Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJob render,
+                                const PictureWarp& unwarp);
 
 }  // namespace maquette

@@ -14,7 +14,7 @@ namespace {
 struct PanoramaOptions {
   std::string store, out;
   PanoramaJob job;
-  std::vector<double> camera, look_at, sun{315, 45};
+  std::vector<double> camera, look_at;
   std::vector<int> size{1600, 900};
   int threads = 0;
 };
@@ -25,8 +25,6 @@ void run(const PanoramaOptions& o) {
   if (!o.look_at.empty()) job.look_at = GeodeticPoint{o.look_at[0], o.look_at[1], o.look_at[2]};
   job.camera.width = o.size[0];
   job.camera.height = o.size[1];
-  job.sun_azimuth = o.sun[0];
-  job.sun_altitude = o.sun[1];
   const size_t threads =
       o.threads > 0
           ? size_t(o.threads)
@@ -38,6 +36,24 @@ void run(const PanoramaOptions& o) {
 }
 
 }  // namespace
+
+void add_panorama_look_options(CLI::App* cmd, PanoramaJob& job) {
+  cmd->add_option("--haze-distance", job.haze_distance,
+                  "Metres at which the haze hides 63 % of the terrain's colour")
+      ->capture_default_str();
+  cmd->add_option_function<std::vector<double>>(
+         "--sun",
+         [&job](const std::vector<double>& sun) {
+           job.sun_azimuth = sun[0];
+           job.sun_altitude = sun[1];
+         },
+         "The hillshading's sun: AZIMUTH ALTITUDE, degrees")
+      ->expected(2)
+      ->default_str(std::to_string(int(job.sun_azimuth)) + " " +
+                    std::to_string(int(job.sun_altitude)));
+  cmd->add_flag("--shadows", job.shadows,
+                "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
+}
 
 void add_render_command(CLI::App& app) {
   CLI::App* render = app.add_subcommand("render", "Draw pictures of the store's terrain");
@@ -100,14 +116,7 @@ void add_render_command(CLI::App& app) {
                   "--bend-radius)")
       ->capture_default_str()
       ->needs(bend_radius);
-  cmd->add_option("--haze-distance", o->job.haze_distance,
-                  "Metres at which the haze hides 63 % of the terrain's colour")
-      ->capture_default_str();
-  cmd->add_option("--sun", o->sun, "The hillshading's sun: AZIMUTH ALTITUDE, degrees")
-      ->expected(2)
-      ->capture_default_str();
-  cmd->add_flag("--shadows", o->job.shadows,
-                "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
+  add_panorama_look_options(cmd, o->job);
   cmd->add_option("--strip-rows", o->job.strip_rows,
                   "Draw and write the picture in strips of this many rows, for big pictures in "
                   "bounded memory (the same files whatever the strips; 0: strips of up to 16 M "

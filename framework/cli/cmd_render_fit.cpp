@@ -21,6 +21,7 @@ struct FitOptions {
   std::string store, points, out, panorama, texture, land_cover;
   std::optional<std::string> warped_dem;
   PaintingFitJob job;
+  PanoramaJob render;  // with --panorama: its look (haze, sun, shadows)
 };
 
 void run(const FitOptions& o) {
@@ -37,13 +38,13 @@ void run(const FitOptions& o) {
   // leave no files.
   std::optional<Panorama> panorama;
   if (!o.panorama.empty()) {
-    PanoramaJob render;
+    PanoramaJob render = o.render;
     render.dem = job.dem;
     render.texture = o.texture;
     render.land_cover = o.land_cover;
     render.camera = fit.camera;
     render.bend = fit.bend;
-    panorama = warp_panorama(render_panorama(*store, default_grid(), render), fit.unwarp);
+    panorama = render_warped_panorama(*store, default_grid(), render, fit.unwarp);
   }
   if (ground_warp) {
     write_warped_dem(
@@ -95,6 +96,7 @@ void add_render_fit_command(CLI::App* render) {
                   "the painting, to this PNG, with its guides, as `render panorama` does");
   cmd->add_option("--texture", o->texture, "With --panorama: imagery layer");
   cmd->add_option("--land-cover", o->land_cover, "With --panorama: categorical layer guide");
+  add_panorama_look_options(cmd, o->render);
   cmd->callback([o] { run(*o); });
 }
 

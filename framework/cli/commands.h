@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "render/render_job.h"
+
 namespace maquette::cli {
 
 void add_cells_command(CLI::App& app);
@@ -19,6 +21,10 @@ void add_render_fit_command(CLI::App* render);
 
 // -t,--threads into `threads`: worker threads, 0 for all cores (at most 1024).
 void add_threads_option(CLI::App* cmd, int& threads);
+
+// A panorama's light and air, into `job` (which must outlive the command): --haze-distance,
+// --sun AZIMUTH ALTITUDE and --shadows (`render panorama`, and `render fit --panorama`).
+void add_panorama_look_options(CLI::App* cmd, PanoramaJob& job);
 
 // Global options shared by every subcommand.
 struct GlobalOptions {

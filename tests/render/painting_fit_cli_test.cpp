@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -150,7 +151,8 @@ std::array<double, 2> stretched(double x, double y) {
 }
 
 // The largest distance, over the clicks, from a click to where the true camera, stretched, puts
-// the ground point that the guides of `guides` name at the click's pixel.
+// the ground point that the guides of `guides` name at the click's pixel (x, y of each click
+// read; lon, lat not).
 double worst_guide(const std::string& guides_path,
                    const std::vector<std::array<double, 4>>& clicks) {
   std::unique_ptr<GDALDataset> guides(GDALDataset::Open(guides_path.c_str(), GDAL_OF_RASTER));
@@ -198,6 +200,16 @@ TEST(PaintingFitCli, WarpedGuidesFollowThePainting) {
               warped, unwarped);
   EXPECT_LE(warped, 2.0);
   EXPECT_GT(unwarped, 5.0);
+  // The painting's left edge shows what the fitted camera draws up to 24 px beyond its picture
+  // (the clicks lie inside it, so the spline extrapolates there): drawn wider, not
+  // the guides of the picture's edge repeated (those of the panorama without the warp).
+  std::vector<std::array<double, 4>> edge;
+  for (int row = 100; row <= 400; row += 50) edge.push_back({0.5, row + 0.5, 0, 0});
+  const double at_edge = worst_guide(f.dir + "/warped-guides.tif", edge),
+               repeated = worst_guide(f.dir + "/unwarped-guides.tif", edge);
+  std::printf("the guides on the painting's left edge %.2f px off, its own edge's %.2f px\n",
+              at_edge, repeated);
+  EXPECT_LE(at_edge, repeated / 2);
 }
 
 // A bent painting seen from above the terraces (the bend's base on the DEM under the eye, 137 m):
@@ -245,6 +257,30 @@ TEST(PaintingFitCli, BentPaintingGuides) {
                                    terrace_height(kEyeLon, eye_lat) - kEyeHeight));
     EXPECT_LE(std::hypot(p[0] + 0.5 - c[0], p[1] + 0.5 - c[1]), 1.0) << c[2] << " " << c[3];
   }
+}
+
+// --panorama's look is `render panorama`'s: --shadows adds the cast_shadow guide under --sun,
+// --haze-distance hazes the picture.
+TEST(PaintingFitCli, PanoramaTakesTheLookOptions) {
+  const Fixture& f = fixture();
+  const std::string fit = "render fit " + f.store + " " + f.points + " " + f.dir +
+                          "/look.json --dem dem --panorama " + f.dir;
+  ASSERT_EQ(run_maquette(fit + "/plain.png").exit_code, 0);
+  ASSERT_EQ(run_maquette(fit + "/look.png --shadows --sun 200 20 --haze-distance 3000").exit_code,
+            0);
+  std::unique_ptr<GDALDataset> guides(
+      GDALDataset::Open((f.dir + "/look-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(guides);
+  ASSERT_EQ(guides->GetRasterCount(), 5);
+  EXPECT_STREQ(guides->GetRasterBand(5)->GetDescription(), "cast_shadow");
+  const auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(bytes(f.dir + "/plain.png"), bytes(f.dir + "/look.png"));
+  const auto r = run_maquette(fit + "/low.png --shadows --sun 200 0");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--sun altitude"), std::string::npos) << r.err;
 }
 
 void expect_error(const std::string& args, const std::string& message) {

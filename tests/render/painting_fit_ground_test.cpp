@@ -17,18 +17,8 @@ namespace maquette {
 namespace {
 
 TEST(PaintingFitGround, MovedGroundPointsAreDrawnWhereTheWarpSendsThem) {
-  test::SyntheticPainting painting;
-  painting.eye_lon = 10.2;
-  painting.eye_lat = 44.9;
-  painting.eye_height = 2000;
-  painting.camera = {5, -6, 60, 1600, 1000};
-  painting.bend_radius = 35000;
-  painting.bend_start = 6000;
+  test::SyntheticPainting painting = test::bent_painting();
   painting.bulge = 40;
-  painting.west = 9.9;
-  painting.east = 10.5;
-  painting.south = 44.93;
-  painting.north = 45.45;
   std::mt19937 random(7);
   const auto clicks = painting.clicks(30, 2, random);
   PaintingFitOptions options;

@@ -18,20 +18,6 @@ namespace {
 
 using test::SyntheticPainting;
 
-// A view north over the hills, 3 km above the ellipsoid.
-SyntheticPainting plain_painting() {
-  SyntheticPainting p;
-  p.eye_lon = 10.2;
-  p.eye_lat = 44.9;
-  p.eye_height = 3000;
-  p.camera = {8, -12, 55, 1600, 1000};
-  p.west = 9.9;
-  p.east = 10.5;
-  p.south = 44.93;
-  p.north = 45.4;
-  return p;
-}
-
 PaintingFitOptions options_for(const SyntheticPainting& p) {
   PaintingFitOptions o;
   o.width = p.camera.width;
@@ -47,7 +33,7 @@ std::vector<GeodeticPoint> grounds(const std::vector<GroundClick>& clicks) {
 }
 
 TEST(PaintingFit, ExactClicksGiveTheCameraBack) {
-  const SyntheticPainting painting = plain_painting();
+  const SyntheticPainting painting = test::plain_painting();
   std::mt19937 random(7);
   const auto clicks = painting.clicks(8, 0, random);
   const auto held_out = painting.clicks(100, 0, random);
@@ -68,7 +54,7 @@ TEST(PaintingFit, ExactClicksGiveTheCameraBack) {
 // points), the median of their held-out medians is <= 1 px and the focal length is within 0.5 %
 // in at least 38 of them (95 %).
 TEST(PaintingFit, TooFewClicksOrABadFovAreNamed) {
-  const SyntheticPainting painting = plain_painting();
+  const SyntheticPainting painting = test::plain_painting();
   std::mt19937 random(7);
   const auto clicks = painting.clicks(4, 0, random);
   PaintingFitOptions options = options_for(painting);
@@ -86,7 +72,7 @@ TEST(PaintingFit, TooFewClicksOrABadFovAreNamed) {
 }
 
 TEST(PaintingFit, PlainCameraFromFifteenClicks) {
-  const SyntheticPainting painting = plain_painting();
+  const SyntheticPainting painting = test::plain_painting();
   std::vector<double> medians;
   int focal_within = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
@@ -108,18 +94,6 @@ TEST(PaintingFit, PlainCameraFromFifteenClicks) {
       int(std::upper_bound(medians.begin(), medians.end(), 1.0) - medians.begin()), focal_within);
   EXPECT_LE(medians[20], 1.0);
   EXPECT_GE(focal_within, 38);
-}
-
-// A bent view: the ground beyond 6 km curves up on a circle of 35 km, so the far hills, up to 60 km
-// away, are seen from above.
-SyntheticPainting bent_painting() {
-  SyntheticPainting p = plain_painting();
-  p.eye_height = 2000;
-  p.camera = {5, -6, 60, 1600, 1000};
-  p.bend_radius = 35000;
-  p.bend_start = 6000;
-  p.north = 45.45;
-  return p;
 }
 
 // The held-out errors (median, 90th percentile) of fits of `painting` from `count` clicks, each of
@@ -149,7 +123,7 @@ Spread held_out_errors(const SyntheticPainting& painting, const PaintingFitOptio
 // and 90th percentile are <= 2.5 and 6 px with the bend fitted; a plain camera and a spline
 // (the baseline) leave far more.
 TEST(PaintingFit, BentCameraFromThirtyClicks) {
-  const SyntheticPainting painting = bent_painting();
+  const SyntheticPainting painting = test::bent_painting();
   PaintingFitOptions options = options_for(painting);
   options.bend = true;
   const Spread bent = held_out_errors(painting, options, 30);
@@ -170,7 +144,7 @@ TEST(PaintingFit, BentCameraFromThirtyClicks) {
 // The painter's distortion (a bulge of 40 px in the middle of a bent painting) is beyond the
 // camera and bend; the warp takes most of it away.
 TEST(PaintingFit, WarpTakesAwayThePaintersDistortion) {
-  SyntheticPainting painting = bent_painting();
+  SyntheticPainting painting = test::bent_painting();
   painting.bulge = 40;
   PaintingFitOptions options = options_for(painting);
   options.bend = true;

@@ -49,6 +49,29 @@ std::vector<GroundClick> SyntheticPainting::clicks(size_t count, double noise,
   return out;
 }
 
+SyntheticPainting plain_painting() {
+  SyntheticPainting p;
+  p.eye_lon = 10.2;
+  p.eye_lat = 44.9;
+  p.eye_height = 3000;
+  p.camera = {8, -12, 55, 1600, 1000};
+  p.west = 9.9;
+  p.east = 10.5;
+  p.south = 44.93;
+  p.north = 45.4;
+  return p;
+}
+
+SyntheticPainting bent_painting() {
+  SyntheticPainting p = plain_painting();
+  p.eye_height = 2000;
+  p.camera = {5, -6, 60, 1600, 1000};
+  p.bend_radius = 35000;
+  p.bend_start = 6000;
+  p.north = 45.45;
+  return p;
+}
+
 std::array<double, 2> error_percentiles(const SyntheticPainting& painting,
                                         const std::vector<GroundClick>& truth,
                                         const std::vector<std::array<double, 2>>& fitted) {

@@ -36,6 +36,12 @@ struct SyntheticPainting {
   std::vector<GroundClick> clicks(size_t count, double noise, std::mt19937& random) const;
 };
 
+// A view north over the hills, 3 km above the ellipsoid.
+SyntheticPainting plain_painting();
+// A bent view: the ground beyond 6 km curves up on a circle of 35 km, so the far hills, up to 60 km
+// away, are seen from above.
+SyntheticPainting bent_painting();
+
 // The median and 90th percentile of the distances between `fitted` and the points' true pixels.
 std::array<double, 2> error_percentiles(const SyntheticPainting& painting,
                                         const std::vector<GroundClick>& truth,
