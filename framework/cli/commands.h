@@ -3,7 +3,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "render/render_job.h"
+namespace maquette {
+struct PanoramaJob;  // render/render_job.h
+}
 
 namespace maquette::cli {
 
