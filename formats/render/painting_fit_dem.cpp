@@ -13,6 +13,9 @@
 namespace maquette {
 namespace {
 
+// The provenance key of a warped DEM: what made it (and marks an unfinished one as ours).
+constexpr const char* kWarpedBy = "warped_by";
+
 // The distance (metres) from `cell`'s centre to its farthest corner, and a sample more: a disc
 // about the centre holding every sample of its tile.
 double tile_radius(const Grid& grid, CellId cell, int tile_size) {
@@ -72,20 +75,22 @@ void write_tiles(Store& store, const Grid& grid, const LayerInfo& dem, const Gro
 
 void check_warped_dem_name(const Store& store, const std::string& name) {
   if (name.empty()) throw Error("--warped-dem: the layer's name is empty");
-  if (store.layer(name))
+  const auto layer = store.layer(name);
+  const bool unfinished = layer && store.incomplete(name) && layer->provenance.contains(kWarpedBy);
+  if (layer && !unfinished)
     throw Error("--warped-dem layer '" + name + "' already exists in " + store.path() +
                 ": the warped DEM is written as a new layer, nothing stored is replaced");
 }
 
 void write_warped_dem(Store& store, const Grid& grid, const LayerInfo& dem, const GroundWarp& warp,
-                      const std::string& out, const nlohmann::json& provenance) {
+                      const std::string& out, const nlohmann::json& warped_by) {
   LayerInfo layer = dem;
   layer.name = out;
-  layer.provenance = provenance;
+  layer.provenance = {{kWarpedBy, warped_by}};
   // Heights made from heights: the same vertical datum and sources' footprint.
   for (const char* key : {"vertical_datum", "footprint"})
     if (dem.provenance.contains(key)) layer.provenance[key] = dem.provenance[key];
-  const int64_t run = store.begin_run({{"render fit --warped-dem", provenance}});
+  const int64_t run = store.begin_run({{"render fit --warped-dem", warped_by}});
   try {
     store.create_layer(layer);
     store.mark_incomplete(out, run);

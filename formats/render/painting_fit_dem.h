@@ -14,18 +14,21 @@ namespace maquette {
 
 // Throws maquette::Error naming the option and value unless `name` can be the warped DEM's new
 // layer: not empty, and no layer of `store` has it (the --dem layer included): nothing stored is
-// replaced. Called before any work, so a bad name leaves nothing written.
+// replaced. A warped DEM left incomplete by an interrupted run may be written again. Called before
+// any work, so a bad name leaves nothing written.
 void check_warped_dem_name(const Store& store, const std::string& name);
 
 // Writes the layer `out`: `dem`'s definition (level, tile size, dtype, nodata, units, codec, its
 // vertical datum and footprint) and cells, each sample h(x - d(x)), `dem` read bilinearly there
 // (its missing samples left out, nodata where the nearest is missing or beyond its tiles); where
 // the warp has faded out, the sample's own bytes (a tile wholly there: its blob's samples, the
-// same bits). Its overviews built. `provenance` joins the layer's. Written under a run of its
-// own and marked incomplete until whole; on any failure the layer and run are dropped (the store
-// as it was) and maquette::Error names the layer. Deterministic (one thread, cells in order).
-// Precondition: check_warped_dem_name(store, out) passed and `dem` is a one-channel raster layer.
+// same bits). Its overviews built. Its provenance: `warped_by` (what made it) beside the DEM's
+// datum and footprint. Written under a run of its own and marked incomplete until whole; on any
+// failure the layer and run are dropped (the store as it was, but for an incomplete layer that an
+// interrupted run left) and maquette::Error names the layer. Deterministic (one thread, cells in
+// order). Precondition: check_warped_dem_name(store, out) passed and `dem` is a one-channel raster
+// layer.
 void write_warped_dem(Store& store, const Grid& grid, const LayerInfo& dem, const GroundWarp& warp,
-                      const std::string& out, const nlohmann::json& provenance);
+                      const std::string& out, const nlohmann::json& warped_by);
 
 }  // namespace maquette

@@ -47,9 +47,8 @@ void run(const FitOptions& o) {
     panorama = render_warped_panorama(*store, default_grid(), render, fit.unwarp);
   }
   if (ground_warp) {
-    write_warped_dem(
-        *store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
-        {{"warped_by", {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}}}});
+    write_warped_dem(*store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
+                     {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}});
     spdlog::info("wrote layer {}: {} moved by the fit's warp", *o.warped_dem, job.dem);
   }
   write_painting_fit(fit, points, ground_warp ? &*ground_warp : nullptr, o.out);

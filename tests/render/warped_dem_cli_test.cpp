@@ -20,6 +20,7 @@
 
 #include "proj_enu.h"
 #include "run_cli.h"
+#include "store/store.h"
 #include "synthetic_raster.h"
 #include "test_camera.h"
 
@@ -337,6 +338,28 @@ TEST(WarpedDemCli, BadNamesAndInputWriteNothing) {
   EXPECT_FALSE(std::ifstream(s.dir + "/bad.png"));
   const auto info = run_maquette("info " + s.store);
   EXPECT_EQ(info.out.find("\n  w: "), std::string::npos) << info.out;
+}
+
+// A warped DEM that an interrupted run left incomplete (made here as that run would leave it) is
+// written again; once whole, its name is refused like any other.
+TEST(WarpedDemCli, AnInterruptedLayerIsWrittenAgain) {
+  const Scene& s = scene();
+  {
+    const auto store = Store::open(s.store, Store::Mode::ReadWrite);
+    LayerInfo layer = *store->layer("dem");
+    layer.name = "cut";
+    layer.provenance = {{"warped_by", {{"command", "render fit"}}}};
+    store->create_layer(layer);
+    store->mark_incomplete("cut", store->begin_run({{"render fit --warped-dem", "cut short"}}));
+  }
+  const std::string fit = "render fit " + s.store + " " + s.near_points + " " + s.dir +
+                          "/cut.json --dem dem --warp-smoothing 0 --warped-dem cut";
+  const auto r = run_maquette(fit);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto store = Store::open(s.store, Store::Mode::ReadOnly);
+  EXPECT_FALSE(store->incomplete("cut"));
+  EXPECT_EQ(store->stats("cut").tile_count, store->stats("dem").tile_count);
+  expect_error(fit, "--warped-dem layer 'cut' already exists");
 }
 
 }  // namespace
