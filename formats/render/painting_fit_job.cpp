@@ -135,7 +135,7 @@ Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJo
     return out;
   };
   const size_t n = size_t(ww) * size_t(wide.height);
-  Panorama out;
+  Panorama out;  // every picture and guide of Panorama (render/panorama.h) moved
   out.width = w;
   out.height = h;
   out.rgb = moved(wide.rgb, n);
@@ -145,6 +145,7 @@ Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJo
   out.lat = moved(wide.lat, n);
   out.land_cover = moved(wide.land_cover, n);
   out.cast_shadow = moved(wide.cast_shadow, n);
+  out.shading = moved(wide.shading, n);
   out.silhouette = moved(wide.silhouette, n);
   return out;
 }
