@@ -184,6 +184,7 @@ class Corrector {
           forbidden[f++] = shifted[m];
         ++m;
       }
+    const uint8_t label = g_.labels[g_.index(col, row)];
     std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
     size_t n = 0;
     const auto add = [&](int32_t c) {
@@ -199,16 +200,22 @@ class Corrector {
     const size_t coherent = n;
     for (const int32_t c : shifted)
       for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
-    const std::vector<int32_t>& pool = start_pool(e_, g_.labels[g_.index(col, row)]);
+    const std::vector<int32_t>& pool = start_pool(e_, label);
     for (uint64_t j = 0; j < 2; ++j)
       add(pool[pixel_hash(col, row, level_, p_.seed, salt + j) % pool.size()]);
 
+    // A candidate of the pixel's own label beats any other (the pool's random candidates offer
+    // one whenever the exemplar has that label); among equals the least cost wins.
     int32_t winner = -1;
+    bool winner_fits = false;
     double least = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < n; ++i) {
+      const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
+      if (winner_fits && !fits) continue;
       const double cost = this->cost(candidates[i], feature, around, col, row) *
                           (i < coherent ? 1.0 : 1.0 + p_.coherence);
-      if (cost < least) least = cost, winner = candidates[i];
+      if (cost < least || (fits && !winner_fits))
+        least = cost, winner = candidates[i], winner_fits = fits;
     }
     return winner >= 0 ? winner : state.at(col, row);  // every candidate forbidden: kept
   }

@@ -29,7 +29,11 @@
 //    sits at candidate + o). Counting in the previous pass's state, in a fixed window, keeps the
 //    penalty a function of global pixel coordinates, independent of the order of pixels, of
 //    threads and of the window computed: the usage is local, not a global count.
-// Excluded exemplar pixels are never candidates, and every output pixel ends on an allowed pixel.
+// A candidate whose exemplar label is the pixel's target label beats any that is not (the cost
+// decides among those of one kind): the two random candidates of the label offer one (unless
+// forbidden) whenever the level's exemplar has that label, so such an output pixel ends on a
+// pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
+// on an allowed pixel.
 //
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
