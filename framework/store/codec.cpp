@@ -133,12 +133,23 @@ void append_zstd(std::span<const std::byte> samples, size_t width, int level,
   blob.insert(blob.end(), z.frame.begin(), z.frame.begin() + std::ptrdiff_t(n));
 }
 
+// zstd's format: a block decodes to at most 128 KiB and takes at least its 3-byte header, so a
+// frame decodes to at most this many bytes per byte of it.
+constexpr size_t kZstdMaxBytesPerByte = (size_t(128) << 10) / 3;
+
+// Throws unless `payload` is one zstd frame (nothing after it) whose content is `bytes` long and
+// which is long enough to hold that many. Checked before anything is allocated for the content: a
+// blob's header may name any tile size, and a frame's header any content size.
+void check_zstd_frame(std::span<const std::byte> payload, size_t bytes) {
+  if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != bytes ||
+      ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size() ||
+      bytes / kZstdMaxBytesPerByte > payload.size())
+    throw Error("zstd frame does not hold " + std::to_string(bytes) + " bytes");
+}
+
 // The samples (each `width` bytes) of a frame append_zstd wrote, into `out`, which the frame must
-// fill exactly.
+// fill exactly (check_zstd_frame(payload, out.size()) passed).
 void read_zstd(std::span<const std::byte> payload, size_t width, std::span<std::byte> out) {
-  if (ZSTD_getFrameContentSize(payload.data(), payload.size()) != out.size() ||
-      ZSTD_findFrameCompressedSize(payload.data(), payload.size()) != payload.size())
-    throw Error("zstd frame does not hold " + std::to_string(out.size()) + " bytes");
   ZstdContexts& z = zstd_contexts();
   if (z.shuffled.size() < out.size()) z.shuffled.resize(out.size());
   const std::span<std::byte> shuffled(z.shuffled.data(), out.size());
@@ -222,12 +233,15 @@ RawTile decode_tile(std::span<const std::byte> blob) {
       tile.bytes.assign(payload.begin(), payload.end());
       break;
     case Codec::Kind::Zstd:
+      check_zstd_frame(payload, raw_size);
       tile.bytes.resize(raw_size);
       read_zstd(payload, width, tile.bytes);
       break;
     case Codec::Kind::NormalOct: {
       ZstdContexts& z = zstd_contexts();
-      z.codes.resize(2 * size_t(size) * size_t(size));
+      const size_t codes = 2 * size_t(size) * size_t(size);
+      check_zstd_frame(payload, codes * sizeof(uint16_t));
+      z.codes.resize(codes);
       read_zstd(payload, sizeof(uint16_t), std::as_writable_bytes(std::span(z.codes)));
       z.normals.resize(tile.sample_count());
       oct_decode_tile(z.codes, tile.size, z.normals);

@@ -113,5 +113,33 @@ TEST(Codec, RejectsCorruptBlobs) {
   expect_bad({raw.begin(), raw.end() - 4}, "a short raw payload");
 }
 
+// A header naming the largest tile (4096 x 4096 x 1024 float64: 128 GiB) is refused from the frame
+// before anything is allocated for it (fuzz/corpus/tile_blob/regress-*: std::bad_alloc before).
+TEST(Codec, RefusesAHugeTileBeforeAllocatingIt) {
+  const uint64_t huge = uint64_t(4096) * 4096 * 1024 * 8;
+  auto header = encode_tile(smooth_tile(32), parse_codec("zstd"));
+  header[6] = std::byte(DType::F64);
+  const std::byte size_and_channels[8] = {std::byte{0}, std::byte{0x10}, std::byte{0},
+                                          std::byte{0}, std::byte{0},    std::byte{0x04},
+                                          std::byte{0}, std::byte{0}};
+  std::copy(std::begin(size_and_channels), std::end(size_and_channels), header.begin() + 8);
+  const std::string message = "zstd frame does not hold " + std::to_string(huge) + " bytes";
+  // The 32 x 32 tile's frame, then a frame whose header claims the 128 GiB: one 128 KiB RLE block.
+  std::vector<std::byte> claiming = {std::byte{0x28}, std::byte{0xb5}, std::byte{0x2f},
+                                     std::byte{0xfd}, std::byte{0xc0}, std::byte{0x58}};
+  for (int i = 0; i < 8; ++i) claiming.push_back(std::byte((huge >> (8 * i)) & 0xff));
+  for (const uint8_t b : {0x03, 0x00, 0x10, 0x07}) claiming.push_back(std::byte{b});
+  for (const auto& frame : {std::vector<std::byte>(header.begin() + 16, header.end()), claiming}) {
+    std::vector<std::byte> blob(header.begin(), header.begin() + 16);
+    blob.insert(blob.end(), frame.begin(), frame.end());
+    try {
+      decode_tile(blob);
+      ADD_FAILURE() << "accepted a 128 GiB tile of " << blob.size() << " bytes";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.what(), message);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace maquette
