@@ -65,18 +65,19 @@ void check_ports(const PipelineStep& step) {
     for (const auto& p : specs) s += (s.empty() ? "" : ", ") + p.name;
     return s.empty() ? std::string("none") : s;
   };
-  for (const auto& [port, layer] : step.inputs)
+  // Ports by name (not structured bindings): clang before 16 cannot capture those in lambdas.
+  for (const auto& input : step.inputs)
     if (std::none_of(spec.inputs.begin(), spec.inputs.end(),
-                     [&](auto& i) { return i.name == port; }))
-      fail(label, "inputs." + port,
+                     [&](auto& i) { return i.name == input.first; }))
+      fail(label, "inputs." + input.first,
            "unknown input port (the operator has: " + names(spec.inputs) + ")");
   for (const auto& in : spec.inputs)
     if (!in.optional && !step.inputs.count(in.name))
       fail(label, "inputs", "missing required input '" + in.name + "'");
-  for (const auto& [port, layer] : step.outputs)
+  for (const auto& output : step.outputs)
     if (std::none_of(spec.outputs.begin(), spec.outputs.end(),
-                     [&](auto& o) { return o.name == port; }))
-      fail(label, "outputs." + port,
+                     [&](auto& o) { return o.name == output.first; }))
+      fail(label, "outputs." + output.first,
            "unknown output port (the operator has: " + names(spec.outputs) + ")");
   if (step.outputs.empty() && !spec.outputs.empty())  // a task may write no layer (export)
     fail(label, "outputs", "map at least one of: " + names(spec.outputs));
