@@ -9,6 +9,7 @@ target=${1:-all}
 seconds=${2:-600}
 shift $(($# < 2 ? $# : 2))
 build="$root/build-fuzz"
+command -v clang++ >/dev/null || { echo "scripts/fuzz.sh: needs clang (apt-get install clang)" >&2; exit 2; }
 export CCACHE_BASEDIR="$root"
 if [ ! -f "$build/CMakeCache.txt" ]; then
   # -O1 with assertions: quicker to build than -O3 under ASan, and an assertion failing is a finding.

@@ -1,7 +1,45 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine, builds Maquette and runs every test (CTest).
+# Usage: scripts/test.sh [--sanitize=address|thread] [--target NAME]... [ctest args...]
+#   --sanitize=address: AddressSanitizer + UndefinedBehaviorSanitizer, in ./build-asan;
+#   --sanitize=thread: ThreadSanitizer, in ./build-tsan (cmake/Sanitizers.cmake). A report fails
+#   the test it comes from.
+#   --target NAME: build only these targets (and what they need) before running CTest; pass
+#   ctest's -R to run only their tests (a test whose executable is not built fails).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/build.sh"
-cd "$root/build"
+sanitize=""
+targets=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --sanitize=*) sanitize=${1#--sanitize=} ;;
+    --target) targets+=(--target "$2"); shift ;;
+    *) break ;;
+  esac
+  shift
+done
+
+if [ -z "$sanitize" ]; then
+  "$root/scripts/build.sh"
+  build="$root/build"
+else
+  case "$sanitize" in
+    address) build="$root/build-asan" ;;
+    thread) build="$root/build-tsan" ;;
+    *) echo "scripts/test.sh: --sanitize=$sanitize: expected address or thread" >&2; exit 2 ;;
+  esac
+  "$root/scripts/setup.sh"
+  export CCACHE_BASEDIR="$root"
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    # -O1: sanitized code builds and runs much faster than at -O3; assertions kept.
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DMAQUETTE_SANITIZE="$sanitize" >/dev/null
+  fi
+  cmake --build "$build" --parallel "$(nproc)" "${targets[@]}"
+  # Reports stop the program; leaks are reported too (exit code 23 fails the test).
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:exitcode=23}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+  export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
+fi
+cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@"
