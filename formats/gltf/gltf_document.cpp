@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/file_access.h"
+#include "core/json_file.h"
 
 namespace maquette {
 namespace {
@@ -351,8 +352,13 @@ GltfDocument parse_gltf(std::string_view bytes, const std::string& where,
       bin = bytes.substr(at + 8, u32(bytes, at));
     }
   }
-  doc.json = json::parse(text, nullptr, false);
-  if (doc.json.is_discarded() || !doc.json.is_object())
+  // Nesting deeper than kMaxJsonDepth is refused: quoting such a value overflowed the stack.
+  try {
+    doc.json = parse_json(text, "JSON");
+  } catch (const Error& e) {
+    fail(doc, std::string("not glTF: ") + e.what());
+  }
+  if (!doc.json.is_object())
     fail(doc, "not glTF: neither a GLB (magic 'glTF') nor a glTF JSON object");
   const json& asset = doc.json.value("asset", json::object());
   if (!asset.value("version", std::string()).starts_with("2."))

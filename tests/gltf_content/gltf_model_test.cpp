@@ -137,6 +137,16 @@ TEST_F(GltfModel, NotGltf) {
   expect_refused(dir_ + "/absent.glb", "no such file");
 }
 
+// Quoting a value nested a million deep overflowed the stack (fuzz/corpus/gltf_model/regress-*).
+TEST_F(GltfModel, DeepNestingIsRefused) {
+  const std::string path = dir_ + "/deep.gltf";
+  const size_t depth = 1000000;
+  std::ofstream(path) << R"({"asset": {"version": )" << std::string(depth, '[')
+                      << std::string(depth, ']') << "}}";
+  expect_refused(path, "not glTF: JSON: line 1, column 149: asset.version[0]");
+  expect_refused(path, "nested deeper than 128 levels");
+}
+
 TEST_F(GltfModel, NoMesh) {
   ModelFile m = quad_model();
   m.gltf.erase("meshes");
