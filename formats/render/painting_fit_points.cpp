@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/json_file.h"
 
 namespace maquette {
 namespace {
@@ -55,12 +56,8 @@ class Fields {
 
 PaintingPoints parse_painting_points(const std::string& text, const std::string& source) {
   const Fields fields(source);
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw Error(source + ": not JSON: " + e.what());
-  }
+  // Nesting deeper than kMaxJsonDepth is refused: quoting such a value overflowed the stack.
+  const json root = parse_json(text, source);
   if (!root.is_object()) fields.fail("the top level", "is not an object");
   PaintingPoints painting;
   for (const auto& [key, size] :
