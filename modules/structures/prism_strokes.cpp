@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "core/error.h"
+#include "core/json_file.h"
 
 namespace maquette::structures {
 namespace {
@@ -39,14 +39,9 @@ const json& field(const json& j, const char* name, const std::string& file) {
 }  // namespace
 
 PrismStrokes read_prism_strokes(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot be read");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    throw Error(path + ": not JSON (" + e.what() + ")");
-  }
+  // Names the file and why it cannot be read, or the line and column where it is not JSON; refuses
+  // nesting deeper than kMaxJsonDepth (quoting such a value in a message overflowed the stack).
+  const json j = read_json_file(path);
   if (!j.is_object()) throw Error(path + ": not a JSON object");
   const std::set<std::string> known{"photo",     "focal_px",        "profile", "corner",
                                     "extrusion", "more_extrusions", "height_m"};
