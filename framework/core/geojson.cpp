@@ -45,6 +45,14 @@ PolygonRings parse_polygon(const json& coords, const std::string& where) {
   return rings;
 }
 
+// The member `key` of a GeoJSON object of type `type`; throws naming both when it is absent.
+const json& member(const json& g, const char* key, const std::string& type,
+                   const std::string& where) {
+  const auto it = g.find(key);
+  if (it == g.end()) throw Error(where + ": a " + type + " has no \"" + key + "\"");
+  return *it;
+}
+
 void collect(const json& g, const std::string& where, std::vector<PolygonRings>& out) {
   if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
     throw Error(where + ": not a GeoJSON object (no \"type\")");
@@ -52,13 +60,14 @@ void collect(const json& g, const std::string& where, std::vector<PolygonRings>&
   if (type == "FeatureCollection") {
     for (const json& f : g.value("features", json::array())) collect(f, where, out);
   } else if (type == "Feature") {
-    collect(g.at("geometry"), where, out);
+    collect(member(g, "geometry", type, where), where, out);
   } else if (type == "GeometryCollection") {
     for (const json& geom : g.value("geometries", json::array())) collect(geom, where, out);
   } else if (type == "Polygon") {
-    out.push_back(parse_polygon(g.at("coordinates"), where));
+    out.push_back(parse_polygon(member(g, "coordinates", type, where), where));
   } else if (type == "MultiPolygon") {
-    for (const json& p : g.at("coordinates")) out.push_back(parse_polygon(p, where));
+    for (const json& p : member(g, "coordinates", type, where))
+      out.push_back(parse_polygon(p, where));
   } else {
     throw Error(where + ": geometry type '" + excerpt(type) + "' is not a Polygon or MultiPolygon");
   }

@@ -50,6 +50,16 @@ TEST(Pipeline, RegionFromBboxGeojsonAndCells) {
   EXPECT_EQ(p.region.front().ToText(), "Q2000");
 }
 
+// A GeoJSON object without its geometry or coordinates let nlohmann's out_of_range escape
+// (fuzz/corpus/geojson/regress-*, fuzz/corpus/pipeline/regress-*).
+TEST(Pipeline, RegionGeojsonWithoutItsMembersIsNamed) {
+  json doc = demo_pipeline();
+  doc["region"] = {{"geojson", {{"type", "Feature"}, {"properties", json::object()}}}};
+  EXPECT_THAT(parse_error(doc), HasSubstr(": a Feature has no \"geometry\""));
+  doc["region"] = {{"geojson", {{"type", "MultiPolygon"}}}};
+  EXPECT_THAT(parse_error(doc), HasSubstr(": a MultiPolygon has no \"coordinates\""));
+}
+
 TEST(Pipeline, MalformedJsonNamesLineAndColumn) {
   const std::string message = error_of([] {
     parse_pipeline("{\"store\": \"x.mqt\",\n  \"level\": 4,,\n}", "p.json", ".",
