@@ -31,10 +31,25 @@ std::optional<double> parse_number(const std::string& field, bool& valid) {
   return v;
 }
 
+// Whether the artifact (JSON) can hold `text`: UTF-8, as nlohmann's writer checks it.
+bool is_utf8(const std::string& text) {
+  try {
+    json(text).dump();
+    return true;
+  } catch (const json::type_error&) {
+    return false;
+  }
+}
+
 class StationsTable {
  public:
+  // Throws "PATH: column N's name is not UTF-8 text" for a header the artifact cannot hold.
   StationsTable(std::string path, CsvTable table)
-      : path_(std::move(path)), table_(std::move(table)) {}
+      : path_(std::move(path)), table_(std::move(table)) {
+    for (size_t c = 0; c < table_.columns.size(); ++c)
+      if (!is_utf8(table_.columns[c]))
+        throw Error(path_ + ": column " + std::to_string(c + 1) + "'s name is not UTF-8 text");
+  }
 
   // Throws "PATH: no column 'x' (columns: a, b)" when `name` is not a column.
   size_t column(const std::string& name) const {
@@ -81,6 +96,14 @@ class StationsTable {
     return out;
   }
 
+  // The row's text in `col` (null when there is no such column); throws naming file, line and
+  // column when it is not UTF-8 text.
+  json text_or_null(const CsvRow& row, std::optional<size_t> col) const {
+    if (!col) return nullptr;
+    if (!is_utf8(row.fields[*col])) throw Error(where(row, *col) + "not UTF-8 text");
+    return row.fields[*col];
+  }
+
   const std::vector<CsvRow>& rows() const { return table_.rows; }
 
  private:
@@ -91,10 +114,6 @@ class StationsTable {
   std::string path_;
   CsvTable table_;
 };
-
-json text_or_null(const CsvRow& row, std::optional<size_t> col) {
-  return col ? json(row.fields[*col]) : json(nullptr);
-}
 
 json or_null(std::optional<double> v) { return v ? json(*v) : json(nullptr); }
 
@@ -129,8 +148,8 @@ StationsIngestReport ingest_stations(Store& store, const std::string& csv_path,
     json v = json::object();
     for (size_t i = 0; i < values.size(); ++i)
       v[report.value_columns[i]] = or_null(t.number(row, values[i]));
-    stations.push_back({{"id", text_or_null(row, id)},
-                        {"name", text_or_null(row, name)},
+    stations.push_back({{"id", t.text_or_null(row, id)},
+                        {"name", t.text_or_null(row, name)},
                         {"lon", t.coordinate(row, lon, -180, 180)},
                         {"lat", t.coordinate(row, lat, -90, 90)},
                         {"elevation", or_null(t.number(row, elevation))},

@@ -81,6 +81,14 @@ TEST(IngestStations, BadTablesNameFileLineAndColumn) {
   write_text(csv, std::string(kHeader) + "1,\"a,-105,40,1600,9,x\n");
   expect_error([&] { ingest_stations(*store, csv, stations()); },
                {csv + " line 2: unterminated quoted field"});
+  // Text that is not UTF-8 let nlohmann's type_error escape when the artifact was written
+  // (fuzz/corpus/stations/regress-*).
+  write_text(csv, std::string(kHeader) + "1,caf\xe9,-105,40,1600,9,x\n");
+  expect_error([&] { ingest_stations(*store, csv, stations()); },
+               {csv + " line 2: column 'name': not UTF-8 text"});
+  write_text(csv, "id,lon,lat,elev_m,r\xe9gion\n1,-105,40,1600,9\n");
+  expect_error([&] { ingest_stations(*store, csv, stations()); },
+               {csv + ": column 5's name is not UTF-8 text"});
   EXPECT_TRUE(store->artifact_names().empty());
 }
 
