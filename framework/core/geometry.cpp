@@ -1,6 +1,7 @@
 #include "core/geometry.h"
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -98,6 +99,9 @@ class WkbReader {
       if (h.has_z) p.z = third;  // XYM: the third is M
     }
     if (h.dims == 4) f64();  // M
+    // Ingest stores finite coordinates only; NaN would reach the callers' arithmetic unchecked.
+    if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || (h.has_z && !std::isfinite(p.z)))
+      fail("has a coordinate that is not finite");
     return p;
   }
 

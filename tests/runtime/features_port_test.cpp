@@ -14,7 +14,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -460,6 +462,27 @@ TEST(FeaturesPort, WkbParsesWithZ) {
   wkb.resize(wkb.size() - 1);
   EXPECT_EQ(test::error_of([&] { parse_wkb(wkb, "feature 3 of 'roads'"); }),
             "feature 3 of 'roads' has truncated WKB");
+}
+
+// A NaN coordinate reached a float-to-integer conversion in PolygonSet (UBSan), found by
+// fuzz_strokes (fuzz/corpus/strokes/regress-*): refused, as the ingest refuses it.
+TEST(FeaturesPort, WkbWithANonFiniteCoordinateIsRefused) {
+  // ISO WKB, little endian: a LineString (type 2) or LineString Z (1002) of two points.
+  auto line = [](uint32_t type, const std::vector<double>& xyz) {
+    std::vector<std::byte> wkb(1 + 4 + 4 + 8 * xyz.size());
+    wkb[0] = std::byte{1};
+    const uint32_t points = 2;
+    std::memcpy(wkb.data() + 1, &type, 4);
+    std::memcpy(wkb.data() + 5, &points, 4);
+    std::memcpy(wkb.data() + 9, xyz.data(), 8 * xyz.size());
+    return wkb;
+  };
+  EXPECT_NO_THROW(parse_wkb(line(2, {0, 0, 1, 1}), "f"));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& wkb : {line(2, {0, 0, 1, nan}), line(1002, {0, 0, 1, 1, 1, inf})})
+    EXPECT_EQ(test::error_of([&] { parse_wkb(wkb, "feature 3 of 'lakes'"); }),
+              "feature 3 of 'lakes' has a coordinate that is not finite");
 }
 
 // distance_m from a point against GEOS on the plane, for every stroke and points around.
