@@ -64,7 +64,8 @@ InstancesContent random_instances(size_t n, bool provenance, uint32_t seed) {
 template <typename T>
 void expect_same_bits(const std::vector<T>& a, const std::vector<T>& b, const char* column) {
   ASSERT_EQ(a.size(), b.size()) << column;
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0) << column;
+  // memcmp of an empty column's null pointers is undefined (UBSan), so none is made.
+  EXPECT_TRUE(a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0) << column;
 }
 
 void expect_same(const InstancesContent& a, const InstancesContent& b) {
