@@ -37,8 +37,9 @@ struct Geometry {
 
 // Parses ISO or EWKB (2D, Z, M or ZM: M is dropped), either byte order. Throws maquette::Error
 // prefixed with `where` (e.g. "feature 3 of 'roads'"): "... has truncated WKB", "... is a
-// GeometryCollection, not a Point, LineString, Polygon or one of their Multi* forms", or a Multi*
-// part of another type.
+// GeometryCollection, not a Point, LineString, Polygon or one of their Multi* forms", a Multi*
+// part of another type, or "... has a coordinate that is not finite" (lon, lat, or Z when it has
+// Z).
 Geometry parse_wkb(std::span<const std::byte> wkb, const std::string& where);
 
 }  // namespace maquette
