@@ -45,6 +45,9 @@ RawTile warped_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const R
       if (s.lon == p.lon && s.lat == p.lat) continue;
       float h = NAN;
       if (!sampler.sample(s, grid.cell_from_point(s, dem.level), &h)) h = NAN;
+      // Without a nodata value a missing height would be stored as a number (0 m in an integer
+      // DEM, a pit dug to the datum): the sample keeps its own height instead.
+      if (std::isnan(h) && !nodata) continue;
       tile.at(col, row) = h;
     }
   return from_tile(tile, dem.dtype, nodata);
@@ -90,6 +93,10 @@ void write_warped_dem(Store& store, const Grid& grid, const LayerInfo& dem, cons
   // Heights made from heights: the same vertical datum and sources' footprint.
   for (const char* key : {"vertical_datum", "footprint"})
     if (dem.provenance.contains(key)) layer.provenance[key] = dem.provenance[key];
+  // A warped DEM an interrupted run left (check_warped_dem_name) is dropped whole first: its
+  // tiles may be of another DEM or other clicks, and the new run writes only its own cells.
+  if (store.layer(out))
+    store.drop_layer(out, store.begin_run({{"render fit --warped-dem: drop the unfinished", out}}));
   const int64_t run = store.begin_run({{"render fit --warped-dem", warped_by}});
   try {
     store.create_layer(layer);

@@ -20,14 +20,15 @@ void check_warped_dem_name(const Store& store, const std::string& name);
 
 // Writes the layer `out`: `dem`'s definition (level, tile size, dtype, nodata, units, codec, its
 // vertical datum and footprint) and cells, each sample h(x - d(x)), `dem` read bilinearly there
-// (its missing samples left out, nodata where the nearest is missing or beyond its tiles); where
+// (its missing samples left out, nodata where the nearest is missing or beyond its tiles; when
+// `dem` has no nodata value, the sample's own height there); where
 // the warp has faded out, the sample's own bytes (a tile wholly there: its blob's samples, the
 // same bits). Its overviews built. Its provenance: `warped_by` (what made it) beside the DEM's
 // datum and footprint. Written under a run of its own and marked incomplete until whole; on any
-// failure the layer and run are dropped (the store as it was, but for an incomplete layer that an
-// interrupted run left) and maquette::Error names the layer. Deterministic (one thread, cells in
-// order). Precondition: check_warped_dem_name(store, out) passed and `dem` is a one-channel raster
-// layer.
+// failure the layer and run are dropped and maquette::Error names the layer. An incomplete layer
+// `out` that an interrupted run left is dropped whole before the new one is written. Deterministic
+// (one thread, cells in order). Precondition: check_warped_dem_name(store, out) passed and `dem` is
+// a one-channel raster layer.
 void write_warped_dem(Store& store, const Grid& grid, const LayerInfo& dem, const GroundWarp& warp,
                       const std::string& out, const nlohmann::json& warped_by);
 

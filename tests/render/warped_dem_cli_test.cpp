@@ -344,6 +344,7 @@ TEST(WarpedDemCli, BadNamesAndInputWriteNothing) {
 // written again; once whole, its name is refused like any other.
 TEST(WarpedDemCli, AnInterruptedLayerIsWrittenAgain) {
   const Scene& s = scene();
+  CellId stale;
   {
     const auto store = Store::open(s.store, Store::Mode::ReadWrite);
     LayerInfo layer = *store->layer("dem");
@@ -351,6 +352,11 @@ TEST(WarpedDemCli, AnInterruptedLayerIsWrittenAgain) {
     layer.provenance = {{"warped_by", {{"command", "render fit"}}}};
     store->create_layer(layer);
     store->mark_incomplete("cut", store->begin_run({{"render fit --warped-dem", "cut short"}}));
+    // A tile the interrupted run wrote of a cell the new run does not write (another DEM's, say):
+    // it must not survive into the new layer.
+    const CellId first = store->tile_cells("dem").front();
+    stale = CellId::FromFaceColRow(first.face() == 0 ? 5 : 0, first.level(), 0, 0);
+    store->put_tile("cut", stale, *store->get_tile("dem", first));
   }
   const std::string fit = "render fit " + s.store + " " + s.near_points + " " + s.dir +
                           "/cut.json --dem dem --warp-smoothing 0 --warped-dem cut";
@@ -359,6 +365,7 @@ TEST(WarpedDemCli, AnInterruptedLayerIsWrittenAgain) {
   const auto store = Store::open(s.store, Store::Mode::ReadOnly);
   EXPECT_FALSE(store->incomplete("cut"));
   EXPECT_EQ(store->stats("cut").tile_count, store->stats("dem").tile_count);
+  EXPECT_FALSE(store->get_tile("cut", stale)) << "the interrupted run's tile survived";
   expect_error(fit, "--warped-dem layer 'cut' already exists");
 }
 
