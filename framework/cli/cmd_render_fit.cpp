@@ -46,17 +46,19 @@ void run(const FitOptions& o) {
     render.bend = fit.bend;
     panorama = render_warped_panorama(*store, default_grid(), render, fit.unwarp);
   }
-  if (ground_warp) {
-    write_warped_dem(*store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
-                     {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}});
-    spdlog::info("wrote layer {}: {} moved by the fit's warp", *o.warped_dem, job.dem);
-  }
+  // The files before the layer: a file that cannot be written leaves no new layer behind, which
+  // would make every re-run refuse its name.
   write_painting_fit(fit, points, ground_warp ? &*ground_warp : nullptr, o.out);
   spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
                points.points.size());
   if (panorama) {
     write_panorama(*panorama, o.panorama);
     spdlog::info("wrote {} and its guides", o.panorama);
+  }
+  if (ground_warp) {
+    write_warped_dem(*store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
+                     {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}});
+    spdlog::info("wrote layer {}: {} moved by the fit's warp", *o.warped_dem, job.dem);
   }
 }
 
