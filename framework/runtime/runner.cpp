@@ -154,18 +154,22 @@ class Runner {
         check_copies(summaries, pipeline_.store_path);
         relay_.emplace(ranks_, *store_);
       }
+      // Cell and reduce steps run on every rank; with copies the others on the writer alone, and
+      // a copy holds only what a later step of every rank reads.
+      const auto on_every_rank = [](const StepPlan& step) {
+        const OperatorKind k = step.step->op->spec().kind;
+        return k == OperatorKind::Cell || k == OperatorKind::Reduce;
+      };
       for (size_t i = 0; i < plan.steps.size(); ++i) {
-        exchange(ranks_, [&] {  // every rank reads the artifacts; a failure fails all
-          paste_artifacts(plan.steps[i]);
-          read_features(plan.steps[i]);
+        exchange(ranks_, [&] {  // every rank running it reads the artifacts; a failure fails all
+          if (!copies_ || ranks_.root() || on_every_rank(plan.steps[i])) {
+            paste_artifacts(plan.steps[i]);
+            read_features(plan.steps[i]);
+          }
           return "";
         });
         to_copies_ =
-            copies_ &&
-            std::any_of(plan.steps.begin() + i + 1, plan.steps.end(), [](const StepPlan& later) {
-              const OperatorKind k = later.step->op->spec().kind;
-              return k == OperatorKind::Cell || k == OperatorKind::Reduce;
-            });
+            copies_ && std::any_of(plan.steps.begin() + i + 1, plan.steps.end(), on_every_rank);
         summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
       }
     } catch (const std::exception& e) {

@@ -110,9 +110,12 @@ std::string write_pipeline(const json& blur = json::object()) {
         {{"op", "fixture.sum"},
          {"inputs", {{"src", "smooth"}}},
          {"outputs", {{"total", "smooth_sum"}}}},
+        // The reduce step's artifact in a param of a step the copies do not run (its own params
+        // are not read by the fixture: the pasting is what is tried).
         {{"op", "fixture.region_scan"},
          {"inputs", {{"src", "smooth"}}},
-         {"outputs", {{"dst", "scan"}}}}}}};
+         {"outputs", {{"dst", "scan"}}},
+         {"params", {{"total", {{"$artifact", "smooth_sum"}}}}}}}}};
   std::ofstream(dir / "pipeline.json") << pipeline.dump(2);
   return dir.string();
 }
