@@ -9,24 +9,6 @@
 #include "masked_pyramid.h"
 
 namespace maquette::synthesis {
-namespace {
-
-// The value of `image` at fractional pixel (x, y), bilinear, clamped into the image.
-void sample(const PatchImage& image, double x, double y, float* out) {
-  x = std::clamp(x, 0.0, double(image.width - 1));
-  y = std::clamp(y, 0.0, double(image.height - 1));
-  const int x0 = int(x), y0 = int(y);
-  const int x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
-  const double tx = x - x0, ty = y - y0;
-  for (int c = 0; c < image.channels; ++c) {
-    const double top = image.pixel(x0, y0)[c] * (1 - tx) + image.pixel(x1, y0)[c] * tx;
-    const double bottom = image.pixel(x0, y1)[c] * (1 - tx) + image.pixel(x1, y1)[c] * tx;
-    out[c] = float(top * (1 - ty) + bottom * ty);
-  }
-}
-
-}  // namespace
-
 std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspect_deg) {
   const double k =
       std::cos(to_deg * std::numbers::pi / 180) / std::cos(from_deg * std::numbers::pi / 180);
@@ -66,7 +48,7 @@ PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
       const long rx = std::lround(sx), ry = std::lround(sy);
       if (rx < 0 || ry < 0 || rx >= w || ry >= h || source[size_t(ry) * w + rx] == 0) continue;
       destination[size_t(y) * w + x] = 1;
-      sample(image, sx, sy, copied.pixel(x, y));
+      sample_bilinear(image, sx, sy, copied.pixel(x, y));
     }
   }
   // The band across the destination's edge: within fill.band of it, on either side.

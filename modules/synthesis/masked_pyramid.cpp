@@ -89,24 +89,24 @@ std::vector<int32_t> chessboard_distance(const std::vector<uint8_t>& mask, int w
   return d;
 }
 
-void upsample_into(const PatchImage& coarse, const std::vector<uint8_t>& where, PatchImage& fine) {
-  for (int y = 0; y < fine.height; ++y) {
-    const double cy = std::clamp(y / 2.0 - 0.25, 0.0, double(coarse.height - 1));
-    const int y0 = int(cy), y1 = std::min(y0 + 1, coarse.height - 1);
-    const double ty = cy - y0;
-    for (int x = 0; x < fine.width; ++x) {
-      if (where[size_t(y) * fine.width + x] == 0) continue;
-      const double cx = std::clamp(x / 2.0 - 0.25, 0.0, double(coarse.width - 1));
-      const int x0 = int(cx), x1 = std::min(x0 + 1, coarse.width - 1);
-      const double tx = cx - x0;
-      float* out = fine.pixel(x, y);
-      for (int i = 0; i < fine.channels; ++i) {
-        const double top = coarse.pixel(x0, y0)[i] * (1 - tx) + coarse.pixel(x1, y0)[i] * tx;
-        const double bottom = coarse.pixel(x0, y1)[i] * (1 - tx) + coarse.pixel(x1, y1)[i] * tx;
-        out[i] = float(top * (1 - ty) + bottom * ty);
-      }
-    }
+void sample_bilinear(const PatchImage& image, double x, double y, float* out) {
+  x = std::clamp(x, 0.0, double(image.width - 1));
+  y = std::clamp(y, 0.0, double(image.height - 1));
+  const int x0 = int(x), y0 = int(y);
+  const int x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
+  const double tx = x - x0, ty = y - y0;
+  for (int c = 0; c < image.channels; ++c) {
+    const double top = image.pixel(x0, y0)[c] * (1 - tx) + image.pixel(x1, y0)[c] * tx;
+    const double bottom = image.pixel(x0, y1)[c] * (1 - tx) + image.pixel(x1, y1)[c] * tx;
+    out[c] = float(top * (1 - ty) + bottom * ty);
   }
+}
+
+void upsample_into(const PatchImage& coarse, const std::vector<uint8_t>& where, PatchImage& fine) {
+  for (int y = 0; y < fine.height; ++y)
+    for (int x = 0; x < fine.width; ++x)
+      if (where[size_t(y) * fine.width + x] != 0)
+        sample_bilinear(coarse, x / 2.0 - 0.25, y / 2.0 - 0.25, fine.pixel(x, y));
 }
 
 }  // namespace maquette::synthesis

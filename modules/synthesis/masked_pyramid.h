@@ -27,6 +27,10 @@ std::vector<MaskedImage> masked_pyramid(MaskedImage base, int levels);
 // above width + height when the mask is empty.
 std::vector<int32_t> chessboard_distance(const std::vector<uint8_t>& mask, int width, int height);
 
+// The value of `image` at fractional pixel (x, y) (pixel centres at integers), bilinear, the
+// point clamped into the image (a NaN among the four pixels read gives NaN).
+void sample_bilinear(const PatchImage& image, double x, double y, float* out);
+
 // `fine` with its pixels in `where` set to `coarse` (the next level up) interpolated bilinearly,
 // sample centres aligned (fine pixel x at coarse x / 2 - 0.25).
 void upsample_into(const PatchImage& coarse, const std::vector<uint8_t>& where, PatchImage& fine);

@@ -1,10 +1,10 @@
 // The completion on real imagery (Landsat 8 over Zion, ../shared/data) with holes of known
 // content: 5 % and 20 % of a 128 x 128 window and a bridge-like strip across it. Against the
-// original: no seam and little blur on the hole's edge (its mean gradient within 0.7-1.25 x the
-// original's there; issue 20 asks 0.8: measured 0.82 for the 5 % hole, 0.72 for 20 % and the
-// strip, so the 20 % hole and the strip miss it); against OpenCV xphoto's shift-map and FSR fills
-// of the same holes: a lower bidirectional-similarity energy (inpaint_measures.h); the same bits on
-// one and two threads.
+// original: no seam and little blur on the hole's edge (its mean gradient at most 1.25 x the
+// original's there and at least the issue's 0.8 for the 5 % hole, measured 0.82; the 20 % hole
+// and the strip miss it, measured 0.72, gated at 0.7); against OpenCV xphoto's shift-map and FSR
+// fills of the same holes: a lower bidirectional-similarity energy (inpaint_measures.h); the same
+// bits on one and two threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -40,6 +40,7 @@ cv::Mat landsat_window(int x0, int y0) {
 struct Hole {
   std::string name;
   std::vector<uint8_t> mask;
+  double least_edge_gradient;  // the issue's 0.8 where it is met, else what is met (0.72) less 0.02
 };
 
 std::vector<Hole> holes() {
@@ -59,7 +60,9 @@ std::vector<Hole> holes() {
       strip[size_t(y) * kSide + x] = std::abs((y - 64) - 0.58 * (x - 64)) * 0.866 < 4;
     }
   }
-  return {{"5 %", centred_square(0.05)}, {"20 %", centred_square(0.20)}, {"strip", strip}};
+  return {{"5 %", centred_square(0.05), 0.8},
+          {"20 %", centred_square(0.20), 0.7},
+          {"strip", strip, 0.7}};
 }
 
 cv::Mat ours(const cv::Mat& rgb, const std::vector<uint8_t>& hole) {
@@ -92,7 +95,7 @@ TEST(InpaintZion, NoSeamAndLowerEnergyThanXphotoOnHolesOfKnownContent) {
               << "completeness) ours " << energy.coherence << " + " << energy.completeness
               << ", shift-map " << shiftmap.coherence << " + " << shiftmap.completeness
               << ", FSR fast " << fsr.coherence << " + " << fsr.completeness << "\n";
-    EXPECT_GE(ratio, 0.7) << hole.name;
+    EXPECT_GE(ratio, hole.least_edge_gradient) << hole.name;
     EXPECT_LE(ratio, 1.25) << hole.name;
     EXPECT_LT(energy.total(), shiftmap.total()) << hole.name;
     EXPECT_LT(energy.total(), fsr.total()) << hole.name;
