@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "core/output_file.h"
+#include "core/sibling_path.h"
 #include "gdal/image_file.h"
 #include "geotiff/gdal_util.h"
 
@@ -23,8 +23,7 @@ struct PanoramaWriter::Files {
   DatasetPtr guides;
   Files(const std::string& path, int w, int h)
       : out(path),
-        stem((std::filesystem::path(path).parent_path() / std::filesystem::path(path).stem())
-                 .string()),
+        stem(sibling_path(path, "")),
         width(w),
         height(h),
         rgb(3 * size_t(w) * size_t(h)),
