@@ -72,21 +72,33 @@ nlohmann::json run_identity(const Pipeline& pipeline) {
       {"modules", modules}};
 }
 
-// What the ranks' stores must agree on under --store-copies before anything runs: every layer's
-// tiles, features and bytes, every artifact's size, and the run's done cells by step.
-nlohmann::json store_summary(const Store& store, const std::vector<std::vector<CellId>>& done) {
+// What the ranks' stores must agree on under --store-copies, as each rank finds the store at
+// `path` before anything writes it: every layer's tiles, features and bytes, every artifact's
+// size and, with `resume`, the run to resume and its done cells by step. No store: the summary
+// of an empty one.
+nlohmann::json store_summary(const Pipeline& pipeline, bool resume) {
   nlohmann::json layers = nlohmann::json::object(), artifacts = nlohmann::json::object(),
-                 cells = nlohmann::json::array();
-  for (const LayerInfo& layer : store.layers()) {
-    const LayerStats stats = store.stats(layer.name);
-    layers[layer.name] = {
-        {"tiles", stats.tile_count}, {"features", stats.feature_count}, {"bytes", stats.bytes}};
+                 resumed = nullptr;
+  if (const auto store = open_existing(pipeline, Store::Mode::ReadOnly)) {
+    for (const LayerInfo& layer : store->layers()) {
+      const LayerStats stats = store->stats(layer.name);
+      layers[layer.name] = {
+          {"tiles", stats.tile_count}, {"features", stats.feature_count}, {"bytes", stats.bytes}};
+    }
+    for (const std::string& name : store->artifact_names())
+      artifacts[name] = {{"bytes", store->get_artifact(name)->data.size()}};
+    if (const auto run =
+            resume ? store->latest_unfinished_run(run_identity(pipeline)) : std::nullopt) {
+      nlohmann::json cells = nlohmann::json::array();
+      for (const PipelineStep& step : pipeline.steps) {
+        std::vector<CellId> done = store->done_cells(*run, step.index);
+        std::sort(done.begin(), done.end());
+        cells.push_back({{"count", done.size()}, {"fnv1a", cells_hash(done)}});
+      }
+      resumed = {{"run", *run}, {"done", cells}};
+    }
   }
-  for (const std::string& name : store.artifact_names())
-    artifacts[name] = {{"bytes", store.get_artifact(name)->data.size()}};
-  for (const auto& step : done)
-    cells.push_back({{"count", step.size()}, {"fnv1a", cells_hash(step)}});
-  return {{"layers", layers}, {"artifacts", artifacts}, {"done", cells}};
+  return {{"layers", layers}, {"artifacts", artifacts}, {"resumed", resumed}};
 }
 
 // Throws, naming the first difference, unless every rank's store_summary is the writer's.
@@ -134,6 +146,12 @@ class Runner {
     const auto start = Clock::now();
     RunSummary summary;
     RunPlan plan;
+    // Under --store-copies the copies are checked against the writer's store before any rank
+    // writes: a refused run leaves every store as it was.
+    if (copies_)
+      check_copies(
+          exchange(ranks_, [&] { return store_summary(pipeline_, options_.resume).dump(); }),
+          pipeline_.store_path);
     // The root validates everything, creates the store, its layers and the run record; then the
     // other ranks open the store and make the same plan.
     const std::string run =
@@ -141,19 +159,16 @@ class Runner {
     std::vector<std::vector<CellId>> done;  // by step
     try {
       // Every rank reads the done cells before any rank writes, so all share the same cells.
-      const std::vector<std::string> summaries = exchange(ranks_, [&] {
+      exchange(ranks_, [&] {
         if (!ranks_.root()) join(run, plan, summary);
         done.resize(plan.steps.size());
         for (size_t i = 0; i < plan.steps.size() && summary.resumed; ++i) {
           done[i] = store_->done_cells(summary.run_id, plan.steps[i].step->index);
           std::sort(done[i].begin(), done[i].end());
         }
-        return copies_ ? store_summary(*store_, done).dump() : "";
+        return "";
       });
-      if (copies_) {
-        check_copies(summaries, pipeline_.store_path);
-        relay_.emplace(ranks_, *store_);
-      }
+      if (copies_) relay_.emplace(ranks_, *store_);
       // Cell and reduce steps run on every rank; with copies the others on the writer alone, and
       // a copy holds only what a later step of every rank reads.
       const auto on_every_rank = [](const StepPlan& step) {
@@ -245,8 +260,8 @@ class Runner {
     summary.run_id = j.at("run").get<int64_t>();
     summary.resumed = j.at("resumed").get<bool>();
     const bool writes = summary.run_id != 0;
-    // Under --store-copies, this rank's copy: made now when absent (the writer's store is new
-    // then, or check_copies fails), with the output layers the writer created.
+    // Under --store-copies, this rank's copy: made now when absent (check_copies passed, so the
+    // writer's store was new too), with the output layers the writer created.
     const bool create = copies_ && writes && !std::filesystem::exists(pipeline_.store_path);
     store_ = Store::open(pipeline_.store_path, !writes  ? Store::Mode::ReadOnly
                                                : create ? Store::Mode::Create

@@ -485,17 +485,46 @@ TEST(MpiStoreCopies, ModuleOperatorsGiveTheSingleProcessBits) {
   }
 }
 
+// Every row of every table of the store (blobs hashed), sorted, and its file's bytes hashed.
+std::vector<std::string> store_state(const std::string& dir) {
+  const std::string store = dir + "/out.mqt";
+  std::vector<std::string> state;
+  for (const std::string& table :
+       rows(store, "SELECT name FROM sqlite_master WHERE type = 'table'")) {
+    const std::string name = table.substr(0, table.size() - 1);  // without the column's '|'
+    std::vector<std::string> table_rows = rows(store, "SELECT * FROM " + name);
+    std::sort(table_rows.begin(), table_rows.end());
+    for (std::string& row : table_rows) state.push_back(name + "|" + row);
+  }
+  std::ostringstream bytes;
+  bytes << std::ifstream(store, std::ios::binary).rdbuf();
+  state.push_back("file|" + std::to_string(std::hash<std::string>{}(bytes.str())));
+  return state;
+}
+
+// A copy that differs from the writer's store (here: missing) stops the run before any rank
+// writes: the writer's store, complete from an earlier run, and the other copy keep every row
+// and byte (no run record, no layer marked incomplete), and no copy is made where none was.
 TEST(MpiStoreCopies, DifferentCopyIsRefusedBeforeAnythingRuns) {
-  const std::string dir = write_module_pipeline();  // the writer's store holds the stations
+  const std::string dir = write_module_pipeline();
+  const Result first = run(dir, 0);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
   copy_store(dir, 3);
   fs::remove(rank_dir(dir, 2) / "out.mqt");
+  const std::vector<std::string> writer = store_state(dir);
+  const std::vector<std::string> copy = store_state(rank_dir(dir, 1));
+  ASSERT_GT(writer.size(), 16u * 9);
+  ASSERT_TRUE(std::any_of(writer.begin(), writer.end(),
+                          [](const std::string& row) { return row.starts_with("runs|1|"); }));
   const Result r = run_copies(dir, 3);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("maquette: error: rank 2 of 3: its copy of the store out.mqt differs from "
-                       "the writer's (rank 0): /artifacts/stations is nothing there"),
+                       "the writer's (rank 0): /artifacts/assessment is nothing there"),
             std::string::npos)
       << r.err;
-  EXPECT_EQ(rows(dir + "/out.mqt", "SELECT count(*) FROM tiles"), std::vector<std::string>{"0|"});
+  EXPECT_EQ(store_state(dir), writer);
+  EXPECT_EQ(store_state(rank_dir(dir, 1)), copy);
+  EXPECT_FALSE(fs::exists(rank_dir(dir, 2) / "out.mqt"));
 }
 
 // An ingest writes the store outside the relayed batches: refused before the store is made.
