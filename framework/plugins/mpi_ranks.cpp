@@ -2,13 +2,18 @@
 #include "plugins/mpi_ranks.h"
 
 #include <mpi.h>
+#include <spdlog/fmt/fmt.h>
 
 #include <chrono>
+#include <climits>
+#include <cstdint>
+#include <cstdlib>
 #include <list>
 #include <numeric>
 #include <thread>
 
 #include "core/error.h"
+#include "runtime/message_pieces.h"
 
 namespace maquette {
 namespace {
@@ -35,48 +40,70 @@ class MpiRanks final : public Ranks {
   int size() const override { return size_; }
 
   std::vector<std::string> all_gather(const std::string& bytes) override {
-    const int length = int(bytes.size());
+    // MPI_Allgatherv's counts and offsets are int: the lengths are gathered as 64-bit numbers,
+    // so that every rank refuses the same too large total.
+    const int64_t length = int64_t(bytes.size());
     const size_t n = size_t(size_);
-    std::vector<int> lengths(n), offsets(n);
+    std::vector<int64_t> lengths(n);
     MPI_Request request = MPI_REQUEST_NULL;
-    MPI_Iallgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD, &request);
+    MPI_Iallgather(&length, 1, MPI_INT64_T, lengths.data(), 1, MPI_INT64_T, MPI_COMM_WORLD,
+                   &request);
     wait(request);
-    std::exclusive_scan(lengths.begin(), lengths.end(), offsets.begin(), 0);
-    std::string all(size_t(offsets.back() + lengths.back()), '\0');
-    MPI_Iallgatherv(bytes.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
+    const int64_t total = std::reduce(lengths.begin(), lengths.end());
+    if (total > INT_MAX)
+      throw Error(
+          fmt::format("the ranks' results to exchange add up to {} bytes, more than MPI's "
+                      "limit of {} bytes for one collective",
+                      total, INT_MAX));
+    std::vector<int> counts(lengths.begin(), lengths.end()), offsets(n);
+    std::exclusive_scan(counts.begin(), counts.end(), offsets.begin(), 0);
+    std::string all(size_t(total), '\0');
+    MPI_Iallgatherv(bytes.data(), int(length), MPI_CHAR, all.data(), counts.data(), offsets.data(),
                     MPI_CHAR, MPI_COMM_WORLD, &request);
     wait(request);
     std::vector<std::string> parts;
     for (size_t r = 0; r < n; ++r)
-      parts.push_back(all.substr(size_t(offsets[r]), size_t(lengths[r])));
+      parts.push_back(all.substr(size_t(offsets[r]), size_t(counts[r])));
     return parts;
   }
 
-  void post(int to, std::string bytes) override {
-    Posted& p = posted_.emplace_back(Posted{std::move(bytes), MPI_REQUEST_NULL});
-    MPI_Isend(p.bytes.data(), int(p.bytes.size()), MPI_CHAR, to, kMessageTag, MPI_COMM_WORLD,
-              &p.request);
+  // A message: its size (64 bits), then its bytes in pieces (message_pieces.h), all with the
+  // same tag, so that they arrive in order.
+  void post(const std::vector<int>& to, std::string bytes) override {
+    Posted& p = posted_.emplace_back(Posted{std::move(bytes), 0, {}});
+    p.size = uint64_t(p.bytes.size());
+    const std::vector<MessagePiece> pieces = message_pieces(p.bytes.size(), piece_limit_);
+    for (const int rank : to) {
+      send(&p.size, 1, MPI_UINT64_T, rank, p.requests);
+      for (const MessagePiece& piece : pieces)
+        send(p.bytes.data() + piece.offset, piece.bytes, MPI_CHAR, rank, p.requests);
+    }
   }
 
   std::optional<Message> poll() override {
-    std::erase_if(posted_, [](Posted& p) {
-      int done = 0;
-      MPI_Test(&p.request, &done, MPI_STATUS_IGNORE);
-      return done != 0;
-    });
     int arrived = 0;
     MPI_Status status;
     MPI_Iprobe(MPI_ANY_SOURCE, kMessageTag, MPI_COMM_WORLD, &arrived, &status);
     if (!arrived) return std::nullopt;
-    int length = 0;
-    MPI_Get_count(&status, MPI_CHAR, &length);
-    Message m{status.MPI_SOURCE, std::string(size_t(length), '\0')};
-    MPI_Recv(m.bytes.data(), length, MPI_CHAR, status.MPI_SOURCE, kMessageTag, MPI_COMM_WORLD,
-             MPI_STATUS_IGNORE);
+    const int from = status.MPI_SOURCE;
+    uint64_t size = 0;
+    MPI_Recv(&size, 1, MPI_UINT64_T, from, kMessageTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    // The sender posted every piece with the size: they follow it.
+    Message m{from, std::string(size_t(size), '\0')};
+    for (const MessagePiece& piece : message_pieces(m.bytes.size(), piece_limit_))
+      MPI_Recv(m.bytes.data() + piece.offset, piece.bytes, MPI_CHAR, from, kMessageTag,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     return m;
   }
 
-  bool posting() const override { return !posted_.empty(); }
+  size_t sending() override {
+    std::erase_if(posted_, [](Posted& p) {
+      int done = 0;
+      MPI_Testall(int(p.requests.size()), p.requests.data(), &done, MPI_STATUSES_IGNORE);
+      return done != 0;
+    });
+    return posted_.size();
+  }
 
  private:
   // Blocking MPI calls busy-poll: a rank done with its part would keep a core from the threads of
@@ -87,14 +114,23 @@ class MpiRanks final : public Ranks {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
 
-  // A message being sent: its bytes must live until the request completes.
+  // A message being sent: its size and bytes must live until its requests complete.
   struct Posted {
     std::string bytes;
-    MPI_Request request;
+    uint64_t size;
+    std::vector<MPI_Request> requests;
   };
   static constexpr int kMessageTag = 1;
 
+  static void send(const void* data, int count, MPI_Datatype type, int to,
+                   std::vector<MPI_Request>& requests) {
+    MPI_Isend(data, count, type, to, kMessageTag, MPI_COMM_WORLD, &requests.emplace_back());
+  }
+
   int rank_ = 0, size_ = 1;
+  // The sender's and the receiver's must be the same: every rank reads it from the environment
+  // the launcher gives all.
+  size_t piece_limit_ = piece_limit(std::getenv(kPieceLimitVariable));
   std::list<Posted> posted_;  // a list: requests keep their address while others complete
 };
 

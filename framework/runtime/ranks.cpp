@@ -16,11 +16,11 @@ class SingleProcess final : public Ranks {
   int rank() const override { return 0; }
   int size() const override { return 1; }
   std::vector<std::string> all_gather(const std::string& bytes) override { return {bytes}; }
-  void post(int to, std::string) override {
-    throw Error(fmt::format("cannot send to rank {}: this process runs alone", to));
+  void post(const std::vector<int>& to, std::string) override {
+    throw Error(fmt::format("cannot send to {} other rank(s): this process runs alone", to.size()));
   }
   std::optional<Message> poll() override { return std::nullopt; }
-  bool posting() const override { return false; }
+  size_t sending() override { return 0; }
 };
 
 // Open MPI's mpirun, MPICH's and Intel's mpiexec (PMI), srun with PMI-2 or PMIx.

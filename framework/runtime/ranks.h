@@ -3,6 +3,7 @@
 // the Ranks may call it (MPI_THREAD_FUNNELED: TBB worker threads compute, never communicate).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -21,17 +22,19 @@ class Ranks {
   virtual std::vector<std::string> all_gather(const std::string& bytes) = 0;
 
   // Point to point, for the writer rank of `maquette run --store-copies` (write_relay.h).
-  // Messages from one rank to another arrive in the order posted.
+  // Messages from one rank to another arrive in the order posted, whatever their size (the MPI
+  // plug-in sends them in pieces: message_pieces.h).
   struct Message {
     int from = 0;
     std::string bytes;
   };
-  // Starts sending `bytes` to rank `to` and returns at once; poll() moves it along.
-  virtual void post(int to, std::string bytes) = 0;
-  // Moves the posted messages along; a message received from any rank, if one has arrived.
+  // Starts sending `bytes` to every rank of `to` (one buffer for all) and returns at once;
+  // sending() moves it along.
+  virtual void post(const std::vector<int>& to, std::string bytes) = 0;
+  // A message received from any rank, if one has arrived.
   virtual std::optional<Message> poll() = 0;
-  // Whether some posted message is not yet sent.
-  virtual bool posting() const = 0;
+  // Moves the posted messages along; how many are not yet sent to every rank they go to.
+  virtual size_t sending() = 0;
 };
 
 // This process alone.

@@ -133,7 +133,7 @@ void StepIO::write_done(std::span<const CellId> cells, const Artifact* artifact)
 }
 
 void StepIO::commit(Store::Batch& batch) {
-  if (!relay_) return batch.commit();
+  if (!relay_ || !relay_->relays()) return batch.commit();
   std::string bytes = batch.serialize();
   if (relay_->commits_here()) batch.commit();
   relay_->relay(std::move(bytes));

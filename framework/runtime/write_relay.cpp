@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <iterator>
 #include <thread>
 
 namespace maquette {
@@ -16,26 +17,36 @@ constexpr char kEnd = 'E';  // the sender's batches of this run() are all sent
 }  // namespace
 
 void WriteRelay::relay(std::string batch) {
+  batch.insert(batch.begin(), kBatch);
   std::unique_lock lock(mutex_);
   room_.wait(lock, [&] { return queued_.size() < kMaxQueued; });
-  queued_.push_back(kBatch + batch);
+  queued_.push_back(std::move(batch));
 }
 
-std::vector<std::string> WriteRelay::take_queued() {
+std::vector<std::string> WriteRelay::take_queued(size_t count) {
   std::vector<std::string> taken;
   {
     std::lock_guard lock(mutex_);
-    taken.swap(queued_);
+    const auto end = queued_.begin() + ptrdiff_t(std::min(count, queued_.size()));
+    taken.assign(std::make_move_iterator(queued_.begin()), std::make_move_iterator(end));
+    queued_.erase(queued_.begin(), end);
   }
   room_.notify_all();
   return taken;
 }
 
-void WriteRelay::send_on(const std::string& message, int except) {
-  if (!ranks_.root()) return ranks_.post(0, message);
+size_t WriteRelay::queued() {
+  std::lock_guard lock(mutex_);
+  return queued_.size();
+}
+
+void WriteRelay::send_on(std::string message, int except) {
+  if (!ranks_.root()) return ranks_.post({0}, std::move(message));
   if (message.front() == kBatch && !to_copies_) return;
+  std::vector<int> to;
   for (int r = 1; r < ranks_.size(); ++r)
-    if (r != except) ranks_.post(r, message);
+    if (r != except) to.push_back(r);
+  if (!to.empty()) ranks_.post(to, std::move(message));
 }
 
 void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
@@ -61,15 +72,23 @@ void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
   // others' cells costs next to nothing, and a batch waits at most that long (MPI buffers it).
   constexpr auto kMaxIdle = std::chrono::milliseconds(8);
   auto idle = std::chrono::milliseconds(1);
+  most_held_ = 0;
   for (;;) {
     bool busy = false;
     const bool done = !working;  // read before the queue: work's last batch is queued by then
-    for (const std::string& message : take_queued()) {
-      send_on(message, 0);
+    // Back-pressure (write_relay.h): batches are posted, and the writer receives, only while
+    // fewer than kMaxSending are being sent.
+    const size_t sending = ranks_.sending();
+    for (std::string& message : take_queued(kMaxSending - std::min(sending, kMaxSending))) {
+      send_on(std::move(message), 0);
       busy = true;
     }
-    while (std::optional<Ranks::Message> m = ranks_.poll()) {
+    bool full = ranks_.root() && ranks_.sending() >= kMaxSending;
+    while (!full) {
+      std::optional<Ranks::Message> m = ranks_.poll();
+      if (!m) break;
       busy = true;
+      most_held_ = std::max(most_held_, queued() + ranks_.sending() + 1);
       if (m->bytes.front() == kEnd) {
         ++ends;
         continue;
@@ -81,20 +100,24 @@ void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
       } catch (...) {
         if (!write_failure) write_failure = std::current_exception();
       }
-      if (ranks_.root()) send_on(m->bytes, m->from);
+      if (ranks_.root()) send_on(std::move(m->bytes), m->from);
+      full = ranks_.root() && ranks_.sending() >= kMaxSending;
     }
-    if (!ended && done && (!ranks_.root() || ends == ends_expected)) {
+    const size_t waiting = queued();
+    most_held_ = std::max(most_held_, waiting + ranks_.sending());
+    if (!ended && done && waiting == 0 && (!ranks_.root() || ends == ends_expected)) {
       send_on(std::string(1, kEnd), 0);
       ended = true;
       busy = true;
     }
-    if (ended && ends == ends_expected && !ranks_.posting()) break;
-    // Polling, not blocking: ranks sharing cores leave them to the threads computing.
+    if (ended && ends == ends_expected && ranks_.sending() == 0) break;
+    // Polling, not blocking: ranks sharing cores leave them to the threads computing. Batches
+    // held back by the back-pressure are tried again after the shortest sleep.
     if (busy) {
       idle = std::chrono::milliseconds(1);
     } else {
       std::this_thread::sleep_for(idle);
-      idle = std::min(2 * idle, kMaxIdle);
+      idle = waiting > 0 || full ? std::chrono::milliseconds(1) : std::min(2 * idle, kMaxIdle);
     }
   }
   worker.join();

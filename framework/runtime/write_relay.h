@@ -6,6 +6,14 @@
 // its run record, and every copy holds what the run's steps wrote, for the next steps to read
 // (halos, artifacts). Batches travel as Store::Batch::serialize gives them: tiles compressed by
 // the rank that computed them, so the writer only commits.
+//
+// Memory is bounded by back-pressure: a rank holds at most kMaxQueued batches waiting to be
+// sent (relay() waits while the queue is full), kMaxSending batches being sent (posted to MPI:
+// a large message is sent only once its receiver takes it) and one received batch being
+// committed, so at most kMaxHeld batches whatever the step's size. The writer receives only
+// while it sends fewer than kMaxSending (it passes batches on to the copies), so a slow copy
+// slows the ranks sending to the writer instead of piling up their batches there; the copies
+// always receive (the writer's sends to them must complete).
 #pragma once
 
 #include <condition_variable>
@@ -25,6 +33,10 @@ class WriteRelay {
   // `store`: the pipeline's store on the writer, this rank's copy of it on the others.
   WriteRelay(Ranks& ranks, Store& store) : ranks_(ranks), store_(store) {}
 
+  static constexpr size_t kMaxQueued = 32;
+  static constexpr size_t kMaxSending = 16;
+  static constexpr size_t kMaxHeld = kMaxQueued + kMaxSending + 1;
+
   // From any thread, within run(): a batch this rank committed to its store (serialized), for
   // the other ranks. Waits while kMaxQueued batches wait to be sent.
   void relay(std::string batch);
@@ -37,15 +49,20 @@ class WriteRelay {
   // writing a batch received.
   void run(const std::function<void()>& work, bool to_copies);
   // Whether this rank commits its own batches to its store (the writer's, or a copy that keeps
-  // them): StepIO commits, serializes and relays; otherwise it only serializes and relays.
+  // them), and whether it relays them (to the writer, or from the writer to the copies): StepIO
+  // serializes a batch only for the relay.
   bool commits_here() const { return ranks_.root() || to_copies_; }
+  bool relays() const { return !ranks_.root() || to_copies_; }
+  // The most batches this rank held at once in its last run(): queued, being sent, or received
+  // and being committed, counted on each pass of run()'s loop (for tests of the bound).
+  size_t most_held() const { return most_held_; }
 
  private:
-  static constexpr size_t kMaxQueued = 64;
-
-  std::vector<std::string> take_queued();
+  // The queued batches, at most `count`, oldest first.
+  std::vector<std::string> take_queued(size_t count);
+  size_t queued();
   // Sends `message` to the writer, or from the writer to every other rank but `except`.
-  void send_on(const std::string& message, int except);
+  void send_on(std::string message, int except);
 
   Ranks& ranks_;
   Store& store_;
@@ -53,6 +70,7 @@ class WriteRelay {
   std::condition_variable room_;
   std::vector<std::string> queued_;
   bool to_copies_ = false;  // of the current run()
+  size_t most_held_ = 0;
 };
 
 }  // namespace maquette

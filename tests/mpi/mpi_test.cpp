@@ -431,27 +431,35 @@ void copy_store(const std::string& dir, int ranks) {
 
 // `maquette run --store-copies pipeline.json` under mpirun, each rank started in its own
 // directory (an app context per rank), so that each opens the store there: the writer's or a
-// copy.
-std::string copies_command(const std::string& dir, int ranks, const std::string& extra = "") {
-  std::string command =
-      "env " + kEnv + " " + MAQUETTE_MPIEXEC + " --oversubscribe --allow-run-as-root";
+// copy. `piece_bytes`: messages between ranks go in pieces of that many bytes
+// (MAQUETTE_MPI_PIECE_BYTES), or of the default 1 GiB when 0.
+std::string copies_command(const std::string& dir, int ranks, const std::string& extra = "",
+                           size_t piece_bytes = 0) {
+  const std::string pieces =
+      piece_bytes == 0 ? "" : "MAQUETTE_MPI_PIECE_BYTES=" + std::to_string(piece_bytes);
+  std::string command = "env " + kEnv + " " + pieces + " " + MAQUETTE_MPIEXEC +
+                        " --oversubscribe --allow-run-as-root";
   for (int r = 0; r < ranks; ++r)
-    command += std::string(r == 0 ? "" : " :") + " -x MAQUETTE_MODULE_PATH -np 1 -wdir " +
+    command += std::string(r == 0 ? "" : " :") + " -x MAQUETTE_MODULE_PATH " +
+               (pieces.empty() ? "" : "-x MAQUETTE_MPI_PIECE_BYTES ") + "-np 1 -wdir " +
                rank_dir(dir, r).string() + " " + kMaquette + " run --threads 1 --store-copies " +
                extra + " pipeline.json";
   return command;
 }
 
-Result run_copies(const std::string& dir, int ranks, const std::string& extra = "") {
-  return run_shell(copies_command(dir, ranks, extra), dir);
+Result run_copies(const std::string& dir, int ranks, const std::string& extra = "",
+                  size_t piece_bytes = 0) {
+  return run_shell(copies_command(dir, ranks, extra, piece_bytes), dir);
 }
 
+// With 3 ranks the messages go in pieces of 1021 bytes (a batch of the fixture's tiles is
+// larger), as messages of 2 GiB or more go in pieces of 1 GiB.
 TEST(MpiStoreCopies, RanksGiveTheSingleProcessBits) {
   for (const int ranks : {2, 3, 4}) {
     SCOPED_TRACE(std::to_string(ranks) + " ranks");
     const std::string dir = write_pipeline();
     copy_store(dir, ranks);  // no store yet: each rank makes its own
-    const Result r = run_copies(dir, ranks);
+    const Result r = run_copies(dir, ranks, "", ranks == 3 ? 1021 : 0);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(blobs(dir), reference());
     EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"), std::vector<std::string>{"ok|"});
