@@ -7,6 +7,8 @@
 #include <iterator>
 #include <thread>
 
+#include "core/error.h"
+
 namespace maquette {
 namespace {
 
@@ -19,7 +21,8 @@ constexpr char kEnd = 'E';  // the sender's batches of this run() are all sent
 void WriteRelay::relay(std::string batch) {
   batch.insert(batch.begin(), kBatch);
   std::unique_lock lock(mutex_);
-  room_.wait(lock, [&] { return queued_.size() < kMaxQueued; });
+  room_.wait(lock, [&] { return queued_.size() < kMaxQueued || stopped_; });
+  if (stopped_) throw Error("the batches can no longer be relayed to the other ranks");
   queued_.push_back(std::move(batch));
 }
 
@@ -51,6 +54,7 @@ void WriteRelay::send_on(std::string message, int except) {
 
 void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
   to_copies_ = to_copies;
+  stopped_ = false;
   std::exception_ptr failure;
   std::atomic<bool> working{true};
   std::thread worker([&] {
@@ -61,13 +65,33 @@ void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
     }
     working = false;
   });
+  std::exception_ptr write_failure;
+  try {
+    pass_messages(working, write_failure);
+  } catch (...) {
+    // Passing messages failed (out of memory, say): the work is stopped (relay() throws) and
+    // joined before the error leaves.
+    {
+      std::lock_guard lock(mutex_);
+      stopped_ = true;
+    }
+    room_.notify_all();
+    worker.join();
+    throw;
+  }
+  worker.join();
+  if (failure) std::rethrow_exception(failure);
+  if (write_failure) std::rethrow_exception(write_failure);
+}
+
+void WriteRelay::pass_messages(const std::atomic<bool>& working,
+                               std::exception_ptr& write_failure) {
   // End marks: the writer waits for every other rank's, the others for the writer's, which it
   // sends after every other rank's, so after every batch it passes on (messages between two
   // ranks arrive in order).
   const int ends_expected = ranks_.root() ? ranks_.size() - 1 : 1;
   int ends = 0;
   bool ended = false;
-  std::exception_ptr write_failure;
   // Idle polls sleep 1 ms, doubling up to kMaxIdle while nothing comes: a rank waiting for the
   // others' cells costs next to nothing, and a batch waits at most that long (MPI buffers it).
   constexpr auto kMaxIdle = std::chrono::milliseconds(8);
@@ -120,9 +144,6 @@ void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
       idle = waiting > 0 || full ? std::chrono::milliseconds(1) : std::min(2 * idle, kMaxIdle);
     }
   }
-  worker.join();
-  if (failure) std::rethrow_exception(failure);
-  if (write_failure) std::rethrow_exception(write_failure);
 }
 
 }  // namespace maquette

@@ -16,8 +16,10 @@
 // always receive (the writer's sends to them must complete).
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -58,6 +60,9 @@ class WriteRelay {
   size_t most_held() const { return most_held_; }
 
  private:
+  // run()'s loop on the thread that made the Ranks, until every rank's batches are written where
+  // they go; the first error committing a received batch is kept in `write_failure`.
+  void pass_messages(const std::atomic<bool>& working, std::exception_ptr& write_failure);
   // The queued batches, at most `count`, oldest first.
   std::vector<std::string> take_queued(size_t count);
   size_t queued();
@@ -70,6 +75,7 @@ class WriteRelay {
   std::condition_variable room_;
   std::vector<std::string> queued_;
   bool to_copies_ = false;  // of the current run()
+  bool stopped_ = false;    // run() failed: relay() throws
   size_t most_held_ = 0;
 };
 
