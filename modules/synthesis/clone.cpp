@@ -18,6 +18,33 @@ std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspe
   return {1 + (k - 1) * ux * ux, (k - 1) * ux * uy, (k - 1) * ux * uy, 1 + (k - 1) * uy * uy};
 }
 
+namespace {
+
+// Moves the copied heights by the mean difference, over the destination's samples within `band`
+// of its edge, between the heights there before and the copy's (NaNs skipped): the copy meets its
+// surroundings on average and keeps its own relief (a Poisson blend would bend it to match every
+// edge sample; the band's resynthesis smooths what difference is left across the edge).
+void meet_surrounding_heights(const PatchImage& before, const std::vector<uint8_t>& destination,
+                              const std::vector<int32_t>& to_outside, int band,
+                              PatchImage& copied) {
+  double sum = 0;
+  size_t count = 0;
+  for (size_t i = 0; i < destination.size(); ++i) {
+    if (destination[i] == 0 || to_outside[i] > std::max(band, 1)) continue;
+    const double difference = double(before.values[i]) - copied.values[i];
+    if (std::isnan(difference)) continue;
+    sum += difference;
+    ++count;
+  }
+  if (count == 0) return;
+  const auto offset = float(sum / double(count));
+  for (size_t i = 0; i < destination.size(); ++i) {
+    if (destination[i] != 0) copied.values[i] += offset;
+  }
+}
+
+}  // namespace
+
 PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
                  const CloneParams& params, const NearestFieldSearch& search) {
   const int w = image.width, h = image.height;
@@ -48,7 +75,11 @@ PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
       const long rx = std::lround(sx), ry = std::lround(sy);
       if (rx < 0 || ry < 0 || rx >= w || ry >= h || source[size_t(ry) * w + rx] == 0) continue;
       destination[size_t(y) * w + x] = 1;
-      sample_bilinear(image, sx, sy, copied.pixel(x, y));
+      if (params.fill.values == LayerValues::Classes) {  // classes copied whole, never mixed
+        std::copy_n(image.pixel(int(rx), int(ry)), image.channels, copied.pixel(x, y));
+      } else {
+        sample_bilinear(image, sx, sy, copied.pixel(x, y));
+      }
     }
   }
   // The band across the destination's edge: within fill.band of it, on either side.
@@ -56,6 +87,9 @@ PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
   for (size_t i = 0; i < outside.size(); ++i) outside[i] = destination[i] == 0;
   const auto to_destination = chessboard_distance(destination, w, h);
   const auto to_outside = chessboard_distance(outside, w, h);
+  if (params.fill.values == LayerValues::Heights) {
+    meet_surrounding_heights(image, destination, to_outside, params.fill.band, copied);
+  }
   std::vector<uint8_t> band(destination.size(), 0);
   for (size_t i = 0; i < band.size(); ++i) {
     band[i] = destination[i] != 0 ? to_outside[i] <= params.fill.band

@@ -31,8 +31,11 @@ std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspe
 // `image` with the destination of `source` (non-zero, width * height) set to the source's values
 // (bilinear, through the inverse of `linear`) and the pixels within `fill.band` of the
 // destination's edge, on both sides, resynthesized. Destination pixels outside the image are
-// dropped. Throws maquette::Error for a source mask of another size, an empty source, a singular
-// map, or inpaint()'s errors.
+// dropped. By `fill.values` (inpaint.h): classes are copied from the nearest source pixel (whole,
+// never mixed); heights are copied bilinearly, then moved by the mean difference between the
+// heights under the destination's edge (within `fill.band`, at least 1) before and after the copy,
+// so that the copied relief meets its surroundings. Throws maquette::Error for a source mask of
+// another size, an empty source, a singular map, or inpaint()'s errors.
 PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
                  const CloneParams& params, const NearestFieldSearch& search);
 

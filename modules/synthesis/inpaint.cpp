@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "layer_values.h"
 #include "masked_pyramid.h"
 
 namespace maquette::synthesis {
@@ -52,41 +53,6 @@ bool any(const std::vector<uint8_t>& v) {
   return std::any_of(v.begin(), v.end(), [](uint8_t m) { return m != 0; });
 }
 
-// Gives the pixels of `mask` the mean of their known 8-neighbours, layer by layer from the known
-// pixels inward (each layer from the state before it): a smooth provisional fill.
-void fill_by_diffusion(PatchImage& image, std::vector<uint8_t> mask) {
-  const int w = image.width, h = image.height, c = image.channels;
-  std::vector<size_t> layer;
-  std::vector<float> values;
-  while (true) {
-    layer.clear();
-    values.clear();
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        if (mask[size_t(y) * w + x] == 0) continue;
-        std::vector<double> sum(c, 0.0);
-        int n = 0;
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h || mask[size_t(ny) * w + nx] != 0) continue;
-            for (int i = 0; i < c; ++i) sum[i] += image.pixel(nx, ny)[i];
-            ++n;
-          }
-        }
-        if (n == 0) continue;
-        layer.push_back(size_t(y) * w + x);
-        for (int i = 0; i < c; ++i) values.push_back(float(sum[i] / n));
-      }
-    }
-    if (layer.empty()) return;
-    for (size_t k = 0; k < layer.size(); ++k) {
-      std::copy_n(values.begin() + k * c, c, image.values.begin() + layer[k] * c);
-      mask[layer[k]] = 0;
-    }
-  }
-}
-
 // A field for `queries` starting from the matches of the next level up (doubled, the query's
 // offset within its 2 x 2 kept); the search re-draws those that are no reference patch here.
 NearestField upsampled_field(const PatchCentres& queries, const NearestField& coarse,
@@ -122,9 +88,10 @@ FieldSearchParams start_params(const InpaintParams& params, int level) {
 }
 
 // One maximization step: each pixel of the region set to the weighted mean of its votes, or with
-// `best_only` to the value the lowest-cost target patch covering it proposes.
+// `best_only` to the value the lowest-cost target patch covering it proposes; with `mode` (one-hot
+// classes) then to its most voted class.
 void vote(const Roles& roles, const NearestField& coherence, const NearestField& completeness,
-          const InpaintParams& params, PatchImage& image, bool best_only) {
+          const InpaintParams& params, PatchImage& image, bool best_only, bool mode) {
   const int w = roles.width, h = roles.height, c = image.channels, half = params.patch / 2;
   const auto coherence_weights = vote_weights(coherence);
   const auto completeness_weights = vote_weights(completeness);
@@ -176,8 +143,10 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
           weight[q] += k;
         }
       }
-      if (best_only || weight[q] <= 0) continue;
-      for (int i = 0; i < c; ++i) next.pixel(x, y)[i] = float(sum[q * c + i] / weight[q]);
+      if (!best_only && weight[q] > 0) {
+        for (int i = 0; i < c; ++i) next.pixel(x, y)[i] = float(sum[q * c + i] / weight[q]);
+      }
+      if (mode) snap_to_mode(next.pixel(x, y), c);
     }
   });
   image = std::move(next);
@@ -211,26 +180,30 @@ void check(const PatchImage& image, const std::vector<uint8_t>& hole, const Inpa
     fail("search_iterations " + std::to_string(p.search_iterations) + " < 1");
   }
   if (!(p.completeness >= 0)) fail("completeness " + std::to_string(p.completeness) + " < 0");
+  if (p.values != LayerValues::Continuous && image.channels != 1) {
+    fail("heights and classes take 1 channel, not " + std::to_string(image.channels));
+  }
   if (hole.size() != image.values.size() / std::max(image.channels, 1)) {
     fail("the hole mask has " + std::to_string(hole.size()) + " pixels, the image " +
          std::to_string(size_t(image.width) * image.height));
   }
 }
 
-}  // namespace
+// The completed image (every level's EM, as inpaint.h says) and its region at full size.
+struct Completion {
+  PatchImage image;
+  std::vector<uint8_t> region;
+};
 
-PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
-                   const InpaintParams& params, const NearestFieldSearch& search) {
-  check(image, hole, params);
-  if (std::none_of(hole.begin(), hole.end(), [](uint8_t v) { return v != 0; })) return image;
-  const int w = image.width, h = image.height, c = image.channels;
+Completion complete(const PatchImage& image, const std::vector<uint8_t>& hole, int levels,
+                    const InpaintParams& params, const NearestFieldSearch& search) {
+  const int c = image.channels;
   MaskedImage base{image, std::vector<uint8_t>(hole.size(), 0)};
   for (size_t i = 0; i < hole.size(); ++i) {
     const float* pixel = image.values.data() + i * c;
     base.unknown[i] =
         hole[i] != 0 || std::any_of(pixel, pixel + c, [](float v) { return std::isnan(v); });
   }
-  const int levels = level_count(hole, w, h, params.patch);
   const auto pyramid = masked_pyramid(std::move(base), levels);
   std::vector<std::vector<uint8_t>> holes{hole};
   for (int l = 1; l < levels; ++l) {
@@ -270,7 +243,8 @@ PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
     // matches upsampled, with their own detail (searching from the bilinear start finds blur).
     search.improve(level, level, roles.references, start_params(params, l), coherence);
     search.improve(level, level, roles.targets, start_params(params, l), completeness);
-    vote(roles, coherence, completeness, params, level, coarsest);
+    const bool mode = params.values == LayerValues::Classes && l == 0;
+    vote(roles, coherence, completeness, params, level, coarsest, mode);
     for (int it = 0; it < params.em_iterations; ++it) {
       const FieldSearchParams fp{params.patch, params.search_iterations, params.seed,
                                  l * (params.em_iterations + 1) + it + 1};
@@ -278,19 +252,62 @@ PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
       if (params.completeness > 0 && completeness.size() > 0) {
         search.improve(level, level, roles.targets, fp, completeness);
       }
-      vote(roles, coherence, completeness, params, level, false);
+      vote(roles, coherence, completeness, params, level, false, mode);
     }
     work = std::move(level);
     coarse_w = roles.width;
     coarse_h = roles.height;
   }
-  PatchImage result = image;
-  const Roles finest = roles_at(pyramid[0], hole, params);
-  for (size_t i = 0; i < hole.size(); ++i) {
-    if (finest.region[i] != 0)
-      std::copy_n(work.values.begin() + i * c, c, result.values.begin() + i * c);
+  return {std::move(work), roles_at(pyramid[0], hole, params).region};
+}
+
+// `image` with the region's pixels taken from `filled` (the same channels).
+PatchImage with_region(PatchImage image, const Completion& filled) {
+  const int c = image.channels;
+  for (size_t i = 0; i < filled.region.size(); ++i) {
+    if (filled.region[i] != 0) {
+      std::copy_n(filled.image.values.begin() + i * c, c, image.values.begin() + i * c);
+    }
   }
-  return result;
+  return image;
+}
+
+// Heights: the trend under the hole and the nodata (layer_values.h) plus the detail completed.
+PatchImage inpaint_heights(const PatchImage& heights, const std::vector<uint8_t>& hole, int levels,
+                           const InpaintParams& params, const NearestFieldSearch& search) {
+  std::vector<uint8_t> unknown(hole.size());
+  for (size_t i = 0; i < hole.size(); ++i) {
+    unknown[i] = hole[i] != 0 || std::isnan(heights.values[i]);
+  }
+  const PatchImage trend = height_trend(heights, unknown, std::max(levels, 2));
+  PatchImage detail = heights;
+  for (size_t i = 0; i < hole.size(); ++i) {
+    detail.values[i] = hole[i] != 0 ? 0.0f : heights.values[i] - trend.values[i];
+  }
+  Completion filled = complete(detail, hole, levels, params, search);
+  for (size_t i = 0; i < hole.size(); ++i) filled.image.values[i] += trend.values[i];
+  return with_region(heights, filled);
+}
+
+}  // namespace
+
+PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
+                   const InpaintParams& params, const NearestFieldSearch& search) {
+  check(image, hole, params);
+  if (std::none_of(hole.begin(), hole.end(), [](uint8_t v) { return v != 0; })) return image;
+  const int levels = level_count(hole, image.width, image.height, params.patch);
+  switch (params.values) {
+    case LayerValues::Continuous:
+      return with_region(image, complete(image, hole, levels, params, search));
+    case LayerValues::Heights:
+      return inpaint_heights(image, hole, levels, params, search);
+    case LayerValues::Classes: {
+      const ClassChannels channels = class_channels(image, hole);
+      const Completion filled = complete(channels.one_hot, hole, levels, params, search);
+      return with_region(image, {class_labels(filled.image, channels.classes), filled.region});
+    }
+  }
+  return image;
 }
 
 }  // namespace maquette::synthesis

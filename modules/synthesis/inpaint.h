@@ -24,6 +24,14 @@
 
 namespace maquette::synthesis {
 
+// What a layer's values are (layer_values.h): colours or other continuous values, compared and
+// averaged as they are; heights (1 channel, metres), their smooth trend under the hole kept and the
+// detail above it completed (patches compared and copied as detail, so a fill meets the slope
+// around it); classes (1 channel of class codes), compared and voted as one channel per class, each
+// pixel of the finest level taking its most voted class, so the fill holds only classes found
+// outside the hole, never an average of codes.
+enum class LayerValues { Continuous, Heights, Classes };
+
 struct InpaintParams {
   int patch = 7;              // side of the square patches (odd, >= 3)
   int band = 3;               // pixels around the hole resynthesized too (>= 0)
@@ -31,6 +39,7 @@ struct InpaintParams {
   int search_iterations = 2;  // passes of the field search per iteration (>= 1)
   double completeness = 3;    // weight of the completeness votes (0: coherence alone, Wexler)
   uint64_t seed = 0;          // of the search's random draws
+  LayerValues values = LayerValues::Continuous;
 };
 
 // `image` with its pixels where `hole` is non-zero (width * height) filled, and those within
@@ -38,8 +47,9 @@ struct InpaintParams {
 // empty). Pixels outside the hole with a NaN in any channel are nodata: never copied, kept as they
 // are (their neighbours are resynthesized from a provisional diffusion fill there). The result
 // depends on the inputs and params only, never on the thread count. Throws maquette::Error for
-// invalid params, a mask of another size, or an image where no patch lies wholly outside the hole,
-// its band and the nodata.
+// invalid params, a mask of another size, heights or classes of more than one channel, classes
+// with none outside the hole, or an image where no patch lies wholly outside the hole, its band and
+// the nodata.
 PatchImage inpaint(const PatchImage& image, const std::vector<uint8_t>& hole,
                    const InpaintParams& params, const NearestFieldSearch& search);
 

@@ -89,6 +89,39 @@ std::vector<int32_t> chessboard_distance(const std::vector<uint8_t>& mask, int w
   return d;
 }
 
+void fill_by_diffusion(PatchImage& image, std::vector<uint8_t> mask) {
+  const int w = image.width, h = image.height, c = image.channels;
+  std::vector<size_t> layer;
+  std::vector<float> values;
+  while (true) {
+    layer.clear();
+    values.clear();
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        if (mask[size_t(y) * w + x] == 0) continue;
+        std::vector<double> sum(c, 0.0);
+        int n = 0;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h || mask[size_t(ny) * w + nx] != 0) continue;
+            for (int i = 0; i < c; ++i) sum[i] += image.pixel(nx, ny)[i];
+            ++n;
+          }
+        }
+        if (n == 0) continue;
+        layer.push_back(size_t(y) * w + x);
+        for (int i = 0; i < c; ++i) values.push_back(float(sum[i] / n));
+      }
+    }
+    if (layer.empty()) return;
+    for (size_t k = 0; k < layer.size(); ++k) {
+      std::copy_n(values.begin() + k * c, c, image.values.begin() + layer[k] * c);
+      mask[layer[k]] = 0;
+    }
+  }
+}
+
 void sample_bilinear(const PatchImage& image, double x, double y, float* out) {
   x = std::clamp(x, 0.0, double(image.width - 1));
   y = std::clamp(y, 0.0, double(image.height - 1));

@@ -27,6 +27,11 @@ std::vector<MaskedImage> masked_pyramid(MaskedImage base, int levels);
 // above width + height when the mask is empty.
 std::vector<int32_t> chessboard_distance(const std::vector<uint8_t>& mask, int width, int height);
 
+// Gives the pixels of `mask` (width * height) the mean of their known 8-neighbours, layer by layer
+// from the known pixels inward (each layer from the state before it): a smooth provisional fill.
+// Pixels out of reach of any known one keep their values.
+void fill_by_diffusion(PatchImage& image, std::vector<uint8_t> mask);
+
 // The value of `image` at fractional pixel (x, y) (pixel centres at integers), bilinear, the
 // point clamped into the image (a NaN among the four pixels read gives NaN).
 void sample_bilinear(const PatchImage& image, double x, double y, float* out);
