@@ -43,40 +43,99 @@ void meet_surrounding_heights(const PatchImage& before, const std::vector<uint8_
   }
 }
 
+// The copy's map: a pixel's centre back to its point in the source, about the source's
+// bounding-box centre moved by the offset.
+class CopyMap {
+ public:
+  CopyMap(const std::vector<uint8_t>& source, int width, int height, const CloneParams& params)
+      : source_(source), w_(width), h_(height), linear_(params.linear) {
+    if (source.size() != size_t(w_) * h_) {
+      throw Error("clone: the source mask has " + std::to_string(source.size()) +
+                  " pixels, the image " + std::to_string(size_t(w_) * h_));
+    }
+    int x0 = w_, y0 = h_, x1 = -1, y1 = -1;
+    for (int y = 0; y < h_; ++y) {
+      for (int x = 0; x < w_; ++x) {
+        if (source[size_t(y) * w_ + x] == 0) continue;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+    }
+    if (x1 < 0) throw Error("clone: the source region is empty");
+    const auto [a, b, c, d] = linear_;
+    det_ = a * d - b * c;
+    if (!(std::abs(det_) > 1e-9)) throw Error("clone: the map is singular");
+    cx_ = (x0 + x1) / 2.0, cy_ = (y0 + y1) / 2.0;
+    tx_ = cx_ + params.offset_x, ty_ = cy_ + params.offset_y;
+    // The destination's box: the source's box (pixel edges) mapped, one pixel of margin.
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const double sx : {x0 - 0.5, x1 + 0.5}) {
+      for (const double sy : {y0 - 0.5, y1 + 0.5}) {
+        const double u = sx - cx_, v = sy - cy_;
+        const double p[2] = {tx_ + a * u + b * v, ty_ + c * u + d * v};
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+      }
+    }
+    box_ = {int64_t(std::floor(lo[0])) - 1, int64_t(std::floor(lo[1])) - 1,
+            int64_t(std::ceil(hi[0])) + 1, int64_t(std::ceil(hi[1])) + 1};
+  }
+
+  // Whether pixel (x, y) (anywhere, inside the image or not) takes a source value: its centre
+  // maps back onto a source pixel, at (sx, sy).
+  bool back(int64_t x, int64_t y, double& sx, double& sy) const {
+    const auto [a, b, c, d] = linear_;
+    const double u = double(x) - tx_, v = double(y) - ty_;
+    sx = cx_ + (d * u - b * v) / det_, sy = cy_ + (-c * u + a * v) / det_;
+    const long rx = std::lround(sx), ry = std::lround(sy);
+    return rx >= 0 && ry >= 0 && rx < w_ && ry < h_ && source_[size_t(ry) * w_ + rx] != 0;
+  }
+
+  // The pixels that may take a source value: x0, y0, x1, y1 (inclusive).
+  std::array<int64_t, 4> box() const { return box_; }
+
+ private:
+  const std::vector<uint8_t>& source_;
+  int w_, h_;
+  std::array<double, 4> linear_;
+  double det_ = 1, cx_ = 0, cy_ = 0, tx_ = 0, ty_ = 0;
+  std::array<int64_t, 4> box_{};
+};
+
 }  // namespace
+
+CopyFootprint copy_footprint(const std::vector<uint8_t>& source, int width, int height,
+                             const CloneParams& params) {
+  const CopyMap map(source, width, height, params);
+  CopyFootprint footprint{std::vector<uint8_t>(source.size(), 0), 0};
+  const auto [x0, y0, x1, y1] = map.box();
+  double sx = 0, sy = 0;
+  for (int64_t y = y0; y <= y1; ++y) {
+    for (int64_t x = x0; x <= x1; ++x) {
+      if (!map.back(x, y, sx, sy)) continue;
+      if (x < 0 || y < 0 || x >= width || y >= height) {
+        ++footprint.beyond;
+      } else {
+        footprint.destination[size_t(y) * width + size_t(x)] = 1;
+      }
+    }
+  }
+  return footprint;
+}
 
 PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
                  const CloneParams& params, const NearestFieldSearch& search) {
   const int w = image.width, h = image.height;
-  if (source.size() != size_t(w) * h) {
-    throw Error("clone: the source mask has " + std::to_string(source.size()) +
-                " pixels, the image " + std::to_string(size_t(w) * h));
-  }
-  int x0 = w, y0 = h, x1 = -1, y1 = -1;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (source[size_t(y) * w + x] == 0) continue;
-      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-    }
-  }
-  if (x1 < 0) throw Error("clone: the source region is empty");
-  const auto [a, b, c, d] = params.linear;
-  const double det = a * d - b * c;
-  if (!(std::abs(det) > 1e-9)) throw Error("clone: the map is singular");
-  const double cx = (x0 + x1) / 2.0, cy = (y0 + y1) / 2.0;
-  const double tx = cx + params.offset_x, ty = cy + params.offset_y;
+  const CopyMap map(source, w, h, params);
   // Each pixel whose centre maps back into the source takes the source's value there.
   PatchImage copied = image;
   std::vector<uint8_t> destination(source.size(), 0);
+  double sx = 0, sy = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const double u = x - tx, v = y - ty;
-      const double sx = cx + (d * u - b * v) / det, sy = cy + (-c * u + a * v) / det;
-      const long rx = std::lround(sx), ry = std::lround(sy);
-      if (rx < 0 || ry < 0 || rx >= w || ry >= h || source[size_t(ry) * w + rx] == 0) continue;
+      if (!map.back(x, y, sx, sy)) continue;
       destination[size_t(y) * w + x] = 1;
       if (params.fill.values == LayerValues::Classes) {  // classes copied whole, never mixed
-        std::copy_n(image.pixel(int(rx), int(ry)), image.channels, copied.pixel(x, y));
+        std::copy_n(image.pixel(int(std::lround(sx)), int(std::lround(sy))), image.channels,
+                    copied.pixel(x, y));
       } else {
         sample_bilinear(image, sx, sy, copied.pixel(x, y));
       }

@@ -23,14 +23,25 @@ struct CloneParams {
   InpaintParams fill;
 };
 
+// Where a copy lands: each pixel whose centre maps back (through the inverse of `linear`, about
+// the source's bounding-box centre moved by the offset) onto a pixel of `source` (width *
+// height). `destination` marks those in the image; `beyond` counts those outside it, which
+// clone() drops. Throws maquette::Error as clone() does for the source and the map.
+struct CopyFootprint {
+  std::vector<uint8_t> destination;
+  size_t beyond = 0;
+};
+CopyFootprint copy_footprint(const std::vector<uint8_t>& source, int width, int height,
+                             const CloneParams& params);
+
 // The foreshortening map of a texture moved from ground of slope `from_deg` to ground of slope
 // `to_deg` whose downhill direction makes `aspect_deg` with the image's x axis (clockwise, y
 // down): lengths along that direction scaled by cos(to) / cos(from), across it kept.
 std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspect_deg);
 
-// `image` with the destination of `source` (non-zero, width * height) set to the source's values
-// (bilinear, through the inverse of `linear`) and the pixels within `fill.band` of the
-// destination's edge, on both sides, resynthesized. Destination pixels outside the image are
+// `image` with the destination of `source` (non-zero, width * height; copy_footprint()) set to the
+// source's values (bilinear, through the inverse of `linear`) and the pixels within `fill.band` of
+// the destination's edge, on both sides, resynthesized. Destination pixels outside the image are
 // dropped. By `fill.values` (inpaint.h): classes are copied from the nearest source pixel (whole,
 // never mixed); heights are copied bilinearly, then moved by the mean difference between the
 // heights under the destination's edge (within `fill.band`, at least 1) before and after the copy,

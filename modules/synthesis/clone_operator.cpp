@@ -34,16 +34,16 @@ OperatorSpec clone_spec() {
       "destination's edge resynthesized (paper 002 §6)";
   s.kind = OperatorKind::Region;
   s.halo = kRegionContext;
-  s.inputs = {
-      {"image", "imagery (uint8 x 3)", false},
-      {"source", "features layer: the polygons copied", false, LayerKind::Features, 0},
-      {"destination",
-       "features layer: polygons where the copy goes (the centres of their samples' and of the "
-       "source's bounding boxes meet); or params.offset_m",
-       true, LayerKind::Features, 0},
-      {"dem", "heights (m): the copy resized by the slopes under source and destination", true}};
-  s.outputs = {{"rgb", "the image with the source cloned onto the destination", DType::U8, 3,
-                Semantics::Continuous, "", 0.0}};
+  s.inputs = filled_layer_inputs(
+      "heights (m): cloned for output heights; and the copy resized by the slopes under source "
+      "and destination");
+  s.inputs.push_back(
+      {"source", "features layer: the polygons copied", false, LayerKind::Features, 0});
+  s.inputs.push_back({"destination",
+                      "features layer: polygons where the copy goes (the centres of their "
+                      "samples' and of the source's bounding boxes meet); or params.offset_m",
+                      true, LayerKind::Features, 0});
+  s.outputs = filled_layer_outputs("with the source cloned onto the destination");
   json properties = inpaint_param_properties();
   properties["offset_m"] = {{"type", "array"},
                             {"items", {{"type", "number"}}},
@@ -104,6 +104,22 @@ std::array<double, 2> offset_samples(const MosaicGeometry& geometry, std::array<
   return {(*to)[0] - std::lround(from[0]), (*to)[1] - std::lround(from[1])};
 }
 
+// The runner keeps only the region's cells of the output: a copy reaching the context ring around
+// them, or beyond the mosaic, would lose that part silently. Throws naming `place` instead.
+void check_lands_in_region(const CopyFootprint& copy, const std::vector<uint8_t>& region,
+                           const char* place) {
+  size_t outside = copy.beyond, total = copy.beyond;
+  for (size_t i = 0; i < region.size(); ++i) {
+    total += copy.destination[i] != 0;
+    outside += copy.destination[i] != 0 && region[i] == 0;
+  }
+  if (outside == 0) return;
+  throw Error(std::string(place) + ": " + std::to_string(outside) + " of the copy's " +
+              std::to_string(total) +
+              " samples land outside the region's cells (in the context around them or beyond), "
+              "where they would be lost; move the copy or widen the run's region");
+}
+
 class Clone final : public RegionOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
@@ -112,8 +128,8 @@ class Clone final : public RegionOperator {
     const json& p = *ctx.params;
     CloneParams params;
     params.fill = read_inpaint_params(p);
-    const PatchImage picture = image_input(ctx, input, "synthesis.clone");
-    const int side = picture.width;
+    const std::vector<FilledLayer> layers = filled_layers(ctx, input, output, "synthesis.clone");
+    const int side = layers.front().picture.width;
     const auto source = polygon_mask(ctx, input, input.features.at("source"), side, "source");
     const auto from = box_centre(source, side);
     if (!from) throw Error("inputs.source: no sample of the region lies in its polygons");
@@ -122,6 +138,7 @@ class Clone final : public RegionOperator {
     if ((destination != input.features.end()) == offset) {
       throw Error("inputs.destination, params.offset_m: give one of them, the copy's place");
     }
+    const char* place = offset ? "params.offset_m" : "inputs.destination";
     const MosaicGeometry geometry(*ctx.grid, input.face, input.level, input.origin_col,
                                   input.origin_row);
     std::array<double, 2> shift{};
@@ -144,8 +161,9 @@ class Clone final : public RegionOperator {
     if (dem != input.layers.end()) {
       if (dem->second.size() != side) {
         throw Error("inputs.dem: layer '" + ctx.input_layer("dem").name + "' gives " +
-                    std::to_string(dem->second.size()) + " samples a side, the image " +
-                    std::to_string(side) + "; ingest both at the same level and tile size");
+                    std::to_string(dem->second.size()) + " samples a side, inputs." +
+                    layers.front().input + " " + std::to_string(side) +
+                    "; ingest both at the same level and tile size");
       }
       const auto heights = dem->second.data();
       const std::vector<float> z(heights.begin(), heights.end());
@@ -159,7 +177,12 @@ class Clone final : public RegionOperator {
           to_frame);
     }
     params.linear = slope_resize(from_slope, from_frame, to_slope, to_frame);
-    write_uint8(clone(picture, source, params, PatchMatch()), output.layers.at("rgb"));
+    check_lands_in_region(copy_footprint(source, side, side, params),
+                          region_cells(ctx, input, output, side), place);
+    for (const FilledLayer& layer : layers) {
+      params.fill.values = layer.values;
+      write_filled(layer, clone(layer.picture, source, params, PatchMatch()), output);
+    }
   }
 
  private:

@@ -27,12 +27,11 @@ OperatorSpec inpaint_spec() {
       "resynthesized (paper 002 §6)";
   s.kind = OperatorKind::Region;
   s.halo = kRegionContext;
-  s.inputs = {{"image", "imagery (uint8 x 3) to fill", false},
-              {"footprints", "features layer: polygons to fill (e.g. structures.bridge's)", true,
-               LayerKind::Features, 0},
-              {"mask", "raster layer: its non-zero samples filled", true}};
-  s.outputs = {
-      {"rgb", "the image with its holes filled", DType::U8, 3, Semantics::Continuous, "", 0.0}};
+  s.inputs = filled_layer_inputs("heights (float32 x 1, m), for output heights");
+  s.inputs.push_back({"footprints", "features layer: polygons to fill (e.g. structures.bridge's)",
+                      true, LayerKind::Features, 0});
+  s.inputs.push_back({"mask", "raster layer: its non-zero samples filled", true});
+  s.outputs = filled_layer_outputs("with its holes filled");
   s.params_schema = {{"type", "object"},
                      {"additionalProperties", false},
                      {"properties", inpaint_param_properties()}};
@@ -44,9 +43,9 @@ class Inpaint final : public RegionOperator {
   const OperatorSpec& spec() const override { return spec_; }
 
   void run(const StepContext& ctx, const Mosaic& input, Mosaic& output) const override {
-    const InpaintParams params = read_inpaint_params(*ctx.params);
-    const PatchImage picture = image_input(ctx, input, "synthesis.inpaint");
-    const int side = picture.width;
+    InpaintParams params = read_inpaint_params(*ctx.params);
+    const std::vector<FilledLayer> layers = filled_layers(ctx, input, output, "synthesis.inpaint");
+    const int side = layers.front().picture.width;
     const auto footprints = input.features.find("footprints");
     const auto mask = input.layers.find("mask");
     if (footprints == input.features.end() && mask == input.layers.end()) {
@@ -65,8 +64,12 @@ class Inpaint final : public RegionOperator {
       }
     }
     const bool any_hole = std::any_of(hole.begin(), hole.end(), [](uint8_t h) { return h != 0; });
-    const PatchImage filled = any_hole ? inpaint(picture, hole, params, PatchMatch()) : picture;
-    write_uint8(filled, output.layers.at("rgb"));
+    for (const FilledLayer& layer : layers) {
+      params.values = layer.values;
+      write_filled(layer,
+                   any_hole ? inpaint(layer.picture, hole, params, PatchMatch()) : layer.picture,
+                   output);
+    }
   }
 
  private:

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/mosaic_geometry.h"
 #include "core/polygon_set.h"
+#include "core/unfolded_faces.h"
 
 namespace maquette::synthesis {
 
@@ -46,16 +47,64 @@ InpaintParams read_inpaint_params(const json& p) {
   return params;
 }
 
-PatchImage image_input(const StepContext& ctx, const Mosaic& input, const char* op) {
-  const Tile<float>& image = input.layers.at("image");
-  if (image.channels() != 3) {
-    throw Error("inputs.image: layer '" + ctx.input_layer("image").name + "' has " +
-                std::to_string(image.channels()) + " channels; " + op +
-                " takes imagery of 3 (uint8 x 3)");
+namespace {
+
+// The layers the operators fill: input port, output port, values, channels.
+struct FilledKind {
+  const char* input;
+  const char* output;
+  LayerValues values;
+  int channels;
+};
+constexpr FilledKind kFilledKinds[] = {{"image", "rgb", LayerValues::Continuous, 3},
+                                       {"dem", "heights", LayerValues::Heights, 1},
+                                       {"landcover", "classes", LayerValues::Classes, 1}};
+
+}  // namespace
+
+std::vector<InputSpec> filled_layer_inputs(const char* dem_description) {
+  return {{"image", "imagery (uint8 x 3), for output rgb", true},
+          {"dem", dem_description, true},
+          {"landcover", "land-cover classes (1 channel), for output classes", true}};
+}
+
+std::vector<OutputSpec> filled_layer_outputs(const std::string& what) {
+  return {{"rgb", "the image " + what, DType::U8, 3, Semantics::Continuous, "", 0.0},
+          {"heights", "the DEM " + what, DType::F32, 1, Semantics::Continuous, "m", std::nullopt},
+          {"classes", "the land cover " + what + " (65535: none)", DType::U16, 1,
+           Semantics::Categorical, "", 65535.0}};
+}
+
+std::vector<FilledLayer> filled_layers(const StepContext& ctx, const Mosaic& input,
+                                       const Mosaic& output, const char* op) {
+  std::vector<FilledLayer> layers;
+  for (const FilledKind& kind : kFilledKinds) {
+    if (!output.layers.contains(kind.output)) continue;
+    const auto in = input.layers.find(kind.input);
+    if (in == input.layers.end()) {
+      throw Error(std::string("outputs.") + kind.output + ": " + op + " makes it from inputs." +
+                  kind.input + ", which the step does not map");
+    }
+    const Tile<float>& tile = in->second;
+    if (tile.channels() != kind.channels) {
+      throw Error(std::string("inputs.") + kind.input + ": layer '" +
+                  ctx.input_layer(kind.input).name + "' has " + std::to_string(tile.channels()) +
+                  " channels; " + op + " takes " + std::to_string(kind.channels));
+    }
+    if (!layers.empty() && tile.size() != layers.front().picture.width) {
+      throw Error(std::string("inputs.") + kind.input + ": layer '" +
+                  ctx.input_layer(kind.input).name + "' gives " + std::to_string(tile.size()) +
+                  " samples a side, inputs." + layers.front().input + " " +
+                  std::to_string(layers.front().picture.width) +
+                  "; ingest them at the same level and tile size");
+    }
+    PatchImage picture(tile.size(), tile.size(), kind.channels);
+    std::copy(tile.data().begin(), tile.data().end(), picture.values.begin());
+    layers.push_back({kind.input, kind.output, kind.values, std::move(picture)});
   }
-  PatchImage picture(image.size(), image.size(), 3);
-  std::copy(image.data().begin(), image.data().end(), picture.values.begin());
-  return picture;
+  if (layers.empty())
+    throw Error(std::string("outputs: ") + op + " writes rgb, heights or classes");
+  return layers;
 }
 
 std::vector<uint8_t> polygon_mask(const StepContext& ctx, const Mosaic& input,
@@ -90,12 +139,34 @@ std::vector<uint8_t> polygon_mask(const StepContext& ctx, const Mosaic& input,
   return mask;
 }
 
-void write_uint8(const PatchImage& image, Tile<float>& out) {
-  auto values = out.data();
+void write_filled(const FilledLayer& layer, const PatchImage& filled, Mosaic& output) {
+  auto values = output.layers.at(layer.output).data();
+  const bool colours = layer.values == LayerValues::Continuous;
   for (size_t i = 0; i < values.size(); ++i) {
-    values[i] =
-        std::isnan(image.values[i]) ? NAN : std::clamp(std::round(image.values[i]), 0.0f, 255.0f);
+    const float v = filled.values[i];
+    values[i] = std::isnan(v) || !colours ? v : std::clamp(std::round(v), 0.0f, 255.0f);
   }
+}
+
+std::vector<uint8_t> region_cells(const StepContext& ctx, const Mosaic& input, const Mosaic& output,
+                                  int side) {
+  std::vector<uint8_t> mask(size_t(side) * side, 0);
+  const UnfoldedFaces plane(*ctx.grid, input.face, input.level);
+  for (const auto& [cell, content] : output.content) {
+    const int n = 1 << (input.level - cell.level());
+    const auto at = plane.place_tile(cell, n);
+    if (!at) continue;
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) {
+        const int64_t col =
+            at->first[0] + c * at->col_step[0] + r * at->row_step[0] - input.origin_col;
+        const int64_t row =
+            at->first[1] + c * at->col_step[1] + r * at->row_step[1] - input.origin_row;
+        if (col >= 0 && row >= 0 && col < side && row < side) mask[size_t(row) * side + col] = 1;
+      }
+    }
+  }
+  return mask;
 }
 
 }  // namespace maquette::synthesis

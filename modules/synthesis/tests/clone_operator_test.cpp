@@ -64,7 +64,8 @@ struct CloneRun {
 
 // `clone_inputs` and `clone_params` complete the clone step.
 CloneRun run_clone(const std::string& name, int threads, const json& clone_inputs,
-                   const json& clone_params, const std::string& type = "Polygon") {
+                   const json& clone_params, const std::string& type = "Polygon",
+                   const json& clone_outputs = {{"rgb", "cloned"}}) {
   CloneRun run{
       fs::temp_directory_path() / ("maquette-clone-" + std::to_string(getpid()) + name), "", {}};
   fs::remove_all(run.dir);
@@ -102,7 +103,7 @@ CloneRun run_clone(const std::string& name, int threads, const json& clone_input
                            {{"op", "synthesis.clone"},
                             {"inputs", inputs},
                             {"params", clone_params},
-                            {"outputs", {{"rgb", "cloned"}}}}}}};
+                            {"outputs", clone_outputs}}}}};
   std::ofstream(run.dir / "pipeline.json") << pipeline.dump(1);
   run.result = test::run_maquette("run " + (run.dir / "pipeline.json").string() +
                                   " --quiet --threads " + std::to_string(threads));
@@ -122,6 +123,24 @@ std::map<std::pair<int64_t, int64_t>, float> first_channel(const Store& store,
       for (int col = 0; col < n; ++col) {
         out[{global_col(cell, n, col), global_row(cell, n, row)}] =
             float(std::to_integer<uint8_t>(tile.bytes[(size_t(row) * n + col) * 3]));
+      }
+    }
+  }
+  return out;
+}
+
+// A float32 layer's first channel by global face pixel (col, row).
+std::map<std::pair<int64_t, int64_t>, float> first_channel_f32(const Store& store,
+                                                               const std::string& layer, int& face,
+                                                               int& pixel_level) {
+  std::map<std::pair<int64_t, int64_t>, float> out;
+  for (const CellId cell : store.tile_cells(layer)) {
+    const Tile<float> tile = to_tile<float>(*store.get_tile(layer, cell));
+    const int n = tile.size();
+    face = cell.face(), pixel_level = cell.level() + log2_tile_size(n);
+    for (int row = 0; row < n; ++row) {
+      for (int col = 0; col < n; ++col) {
+        out[{global_col(cell, n, col), global_row(cell, n, row)}] = tile.at(col, row, 0);
       }
     }
   }
@@ -201,6 +220,79 @@ TEST(CloneOperator, ADestinationMissingOrGivenTwiceAndASourceThatIsNoPolygonAreN
   EXPECT_NE(error(run_clone("-line", 1, json::object(), {{"offset_m", {100, 0}}}, "LineString"))
                 .find("inputs.source: feature 1 is a LineString, not a Polygon or MultiPolygon"),
             std::string::npos);
+}
+
+// Review K-S1: the runner keeps only the region's cells, so a copy reaching the context around
+// them is refused naming the offset, not cut silently; a heights output without its DEM is named.
+TEST(CloneOperator, ACopyLandingBeyondTheRegionsCellsOrAnOutputWithoutItsInputIsNamed) {
+  const CloneRun plain = run_clone("-plain", 1, json::object(), {{"offset_m", {3000, 0}}});
+  ASSERT_EQ(plain.result.exit_code, 0) << plain.result.err;
+  const auto store = Store::open(plain.store, Store::Mode::ReadOnly);
+  int64_t east = 0;  // the first global column east of the region's cells
+  int face = 0, level = 0;
+  for (const CellId cell : store->tile_cells("cloned")) {
+    const int n = store->get_tile("cloned", cell)->size;
+    face = cell.face(), level = cell.level() + log2_tile_size(n);
+    east = std::max(east, global_col(cell, n, n - 1) + 1);
+  }
+  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
+  const double centre_lon = (kSourceWest + kSourceEast) / 2;
+  const auto source = *samples.sample({centre_lon, 0});
+  // The copy's centre 10 samples west of that edge: its eastern ~20 samples in the context.
+  const LonLat edge = face_point_lonlat(default_grid(), face, double(east - 10), source[1], level);
+  const json params = {{"offset_m", {(edge.lon - centre_lon) * kDegreeM, 0}}};
+  const CloneRun ring = run_clone("-ring", 1, json::object(), params);
+  EXPECT_NE(ring.result.exit_code, 0);
+  EXPECT_NE(ring.result.err.find("params.offset_m: "), std::string::npos) << ring.result.err;
+  EXPECT_NE(ring.result.err.find("samples land outside the region's cells"), std::string::npos)
+      << ring.result.err;
+  // 10 samples further west it lands inside them: accepted.
+  const LonLat inside =
+      face_point_lonlat(default_grid(), face, double(east - 45), source[1], level);
+  const CloneRun fits = run_clone("-fits", 1, json::object(),
+                                  {{"offset_m", {(inside.lon - centre_lon) * kDegreeM, 0}}});
+  EXPECT_EQ(fits.result.exit_code, 0) << fits.result.err;
+  const CloneRun no_dem = run_clone("-nodem", 1, json::object(), {{"offset_m", {3000, 0}}},
+                                    "Polygon", {{"heights", "cloned_dem"}});
+  EXPECT_NE(no_dem.result.exit_code, 0);
+  EXPECT_NE(no_dem.result.err.find(
+                "outputs.heights: synthesis.clone makes it from inputs.dem, which the step does "
+                "not map"),
+            std::string::npos)
+      << no_dem.result.err;
+  for (const auto* run : {&plain, &ring, &fits, &no_dem}) fs::remove_all(run->dir);
+}
+
+// A DEM cloned by the real program: the flat source's heights (0 m) land on the 30 degree slope
+// as one block moved to the mean height of the slope under the copy's edge, the imagery cloned
+// beside it the same.
+TEST(CloneOperator, AFlatTerrainPatchClonedOntoTheSlopeMeetsItsMeanHeight) {
+  const CloneRun run = run_clone("-heights", 1, {{"dem", "dem"}}, {{"offset_m", {kOffsetEastM, 0}}},
+                                 "Polygon", {{"rgb", "cloned"}, {"heights", "cloned_dem"}});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+  const auto store = Store::open(run.store, Store::Mode::ReadOnly);
+  int face = 0, level = 0;
+  const auto dem = first_channel_f32(*store, "dem", face, level);
+  const auto cloned = first_channel_f32(*store, "cloned_dem", face, level);
+  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
+  const double centre_lon = (kSourceWest + kSourceEast) / 2;
+  const auto to = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
+  const int64_t c = std::lround(to[0]), r = std::lround(to[1]);
+  // The copy's middle (its band is 3 samples wide at the edge, ~27 samples away): one height.
+  const float middle = cloned.at({c, r});
+  double low = 1e30, high = -1e30;
+  for (int64_t dr = -15; dr <= 15; ++dr) {
+    for (int64_t dc = -15; dc <= 15; ++dc) {
+      low = std::min(low, double(cloned.at({c + dc, r + dr})));
+      high = std::max(high, double(cloned.at({c + dc, r + dr})));
+    }
+  }
+  EXPECT_LE(high - low, 1e-3);
+  // The slope under the copy's centre (the mean under its symmetric edge), within 10 m.
+  EXPECT_NEAR(middle, dem.at({c, r}), 10) << "the slope there " << dem.at({c, r});
+  // Beyond the copy and its band, the DEM as it was.
+  EXPECT_EQ(cloned.at({c + 60, r}), dem.at({c + 60, r}));
+  fs::remove_all(run.dir);
 }
 
 }  // namespace
