@@ -20,6 +20,9 @@ std::array<double, 4> foreshortening(double from_deg, double to_deg, double aspe
 
 namespace {
 
+// Samples around the band's box whose patches its resynthesis draws from.
+constexpr int kBandContext = 48;
+
 // Moves the copied heights by the mean difference, over the destination's samples within `band`
 // of its edge, between the heights there before and the copy's (NaNs skipped): the copy meets its
 // surroundings on average and keeps its own relief (a Poisson blend would bend it to match every
@@ -100,6 +103,38 @@ class CopyMap {
   std::array<int64_t, 4> box_{};
 };
 
+// `image` with inpaint() of `hole` run on the hole's box grown by kBandContext (clipped to the
+// image): the band is resynthesized from the patches near it (the copy's inside, the
+// surroundings), and the pyramid, distance transforms and searches cover that window, not the
+// whole image.
+PatchImage inpaint_around(PatchImage image, const std::vector<uint8_t>& hole,
+                          const InpaintParams& params, const NearestFieldSearch& search) {
+  const int w = image.width, h = image.height, c = image.channels;
+  int x0 = w, y0 = h, x1 = -1, y1 = -1;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (hole[size_t(y) * w + x] == 0) continue;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  }
+  if (x1 < 0) return image;
+  x0 = std::max(x0 - kBandContext, 0), y0 = std::max(y0 - kBandContext, 0);
+  x1 = std::min(x1 + kBandContext, w - 1), y1 = std::min(y1 + kBandContext, h - 1);
+  const int cw = x1 - x0 + 1, ch = y1 - y0 + 1;
+  PatchImage window(cw, ch, c);
+  std::vector<uint8_t> window_hole(size_t(cw) * ch);
+  for (int y = 0; y < ch; ++y) {
+    std::copy_n(image.pixel(x0, y0 + y), size_t(cw) * c, window.pixel(0, y));
+    std::copy_n(hole.begin() + ptrdiff_t(size_t(y0 + y) * w + x0), cw,
+                window_hole.begin() + ptrdiff_t(size_t(y) * cw));
+  }
+  const PatchImage filled = inpaint(window, window_hole, params, search);
+  for (int y = 0; y < ch; ++y) {
+    std::copy_n(filled.pixel(0, y), size_t(cw) * c, image.pixel(x0, y0 + y));
+  }
+  return image;
+}
+
 }  // namespace
 
 CopyFootprint copy_footprint(const std::vector<uint8_t>& source, int width, int height,
@@ -156,7 +191,7 @@ PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
   }
   InpaintParams fill = params.fill;
   fill.band = 0;  // the band is the hole here
-  return inpaint(copied, band, fill, search);
+  return inpaint_around(copied, band, fill, search);
 }
 
 }  // namespace maquette::synthesis
