@@ -8,4 +8,5 @@ MAQUETTE_MODULE("texture", "1.0.0",
                 {"texture.cluster", &maquette::texture::make_cluster},
                 {"texture.fit", &maquette::texture::make_fit},
                 {"texture.assess", &maquette::texture::make_assess},
-                {"texture.calibrate", &maquette::texture::make_calibrate})
+                {"texture.calibrate", &maquette::texture::make_calibrate},
+                {"texture.landcover_share", &maquette::texture::make_landcover_share})

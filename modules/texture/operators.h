@@ -20,5 +20,6 @@ std::unique_ptr<Operator> make_cluster();
 std::unique_ptr<Operator> make_fit();
 std::unique_ptr<Operator> make_assess();
 std::unique_ptr<Operator> make_calibrate();
+std::unique_ptr<Operator> make_landcover_share();
 
 }  // namespace maquette::texture

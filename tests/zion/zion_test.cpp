@@ -3,7 +3,8 @@
 // western half of the cells, its procedural and assess steps on the eastern half. The scene is
 // the Landsat bands calibrated to true colour (texture.calibrate). Gates of issue 14 on the
 // eastern half: at least 4 surface types found by texture.cluster (CIELAB) and kept by the fit,
-// on height, slope and the categorical NLCD land cover; the blurred CIEDE2000 <= 6; each class's
+// on height, slope, the categorical NLCD land cover and the share of barren land around each
+// pixel (texture.landcover_share); the blurred CIEDE2000 <= 6; each class's
 // mean colour within CIEDE2000 5 of the scene's and its colour spread within 50-150 % of the
 // scene's, at its pixels and after a blur of 4 pixels (class colours from the pixels whose own
 // colour class it is); and, for the goals not met (modules/texture/README.md "Zion"), the
@@ -83,7 +84,9 @@ Outcome fit_and_assess(int threads) {
   const json whole = json::parse(
       slurp(std::string(MAQUETTE_SOURCE_DIR) + "/examples/texture-zion.json"))["region"];
   const CliResult ingest = run_maquette(
-      "-q run" + t + pipeline(dir, whole, {"ingest", "texture.calibrate", "terrain.derive"}));
+      "-q run" + t +
+      pipeline(dir, whole,
+               {"ingest", "texture.calibrate", "terrain.derive", "texture.landcover_share"}));
   EXPECT_EQ(ingest.exit_code, 0) << ingest.err;
   const CliResult fit = run_maquette(
       "-q run" + t + pipeline(dir, kWest, {"texture.cluster", "texture.classify", "texture.fit"}));
@@ -153,19 +156,21 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   std::cout << one.table;
   const json model = json::parse(one.model);
   EXPECT_GE(model["fitted_classes"].size(), 4u);  // texture.cluster's k = 5, all fitted on the west
-  const json landcover = {{"name", "landcover"}, {"range", {-0.5, 255.5}}};
-  EXPECT_NE(std::find(model["quantities"].begin(), model["quantities"].end(), landcover),
-            model["quantities"].end())
-      << model["quantities"];
+  for (const json& quantity : {json{{"name", "landcover"}, {"range", {-0.5, 255.5}}},
+                               json{{"name", "extra"}, {"range", {0, 1}}}})  // the barren share
+    EXPECT_NE(std::find(model["quantities"].begin(), model["quantities"].end(), quantity),
+              model["quantities"].end())
+        << model["quantities"];
   const json& r = one.report;
   ASSERT_TRUE(r.is_object()) << one.table;
   EXPECT_GE(r["class_colours"].size(), 4u) << "classes kept by the fit, predicted in the east";
   // Issue 14's goals not met (README "Zion": kappa >= 0.6, producer's accuracies >= 0.5), held
-  // at what the example reaches: the predicted classes compared at the observed map's minimum
-  // mapping unit (the same majority filter of radius 16) kappa 0.509, as rendered 0.388.
-  EXPECT_GE(r["kappa"].get<double>(), 0.50) << one.table;
-  EXPECT_GE(r["unfiltered"]["kappa"].get<double>(), 0.38) << one.table;
-  // Met since the calibration (5.30; 10.72 on the stretched scene).
+  // at what the example reaches with the share of barren land as a quantity: the predicted
+  // classes compared at the observed map's minimum mapping unit (the same majority filter of
+  // radius 16) kappa 0.597 (0.509 without the share), as rendered 0.444 (0.388).
+  EXPECT_GE(r["kappa"].get<double>(), 0.59) << one.table;
+  EXPECT_GE(r["unfiltered"]["kappa"].get<double>(), 0.44) << one.table;
+  // Met since the calibration (4.94; 5.30 without the share, 10.72 on the stretched scene).
   EXPECT_LE(r["ciede2000_mean"].get<double>(), 6) << one.table;
   for (const auto& [k, c] : r["class_colours"].items()) {
     EXPECT_LE(c["ciede2000"].get<double>(), 5) << "class " << k << ": " << c;
@@ -175,14 +180,16 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
     EXPECT_GE(c["sd_ratio_blurred"].get<double>(), 0.5) << "class " << k << ": " << c;
     EXPECT_LE(c["sd_ratio_blurred"].get<double>(), 1.5) << "class " << k << ": " << c;
   }
-  // Producer's accuracy >= 0.5 for 3 of the 5 classes, filtered and as rendered (0.72, 0.73,
-  // 0.81 and 0.55, 0.52, 0.76; the light red rock 0.01 and 0.14, the white sandstone 0.36 and
-  // 0.32: README "Zion").
-  for (const json& accuracies : {r["producers_accuracy"], r["unfiltered"]["producers_accuracy"]}) {
+  // Producer's accuracy >= 0.5 for 4 of the 5 classes filtered (0.88, 0.72, 0.82, 0.63: the light
+  // red rock 0), for 3 as rendered (0.73, 0.53, 0.77: the white sandstone 0.48, the light red
+  // rock 0.01; README "Zion").
+  const auto at_least_half = [](const json& accuracies) {
     int found = 0;
     for (const auto& [k, a] : accuracies.items()) found += a.get<double>() >= 0.5;
-    EXPECT_GE(found, 3) << one.table;
-  }
+    return found;
+  };
+  EXPECT_GE(at_least_half(r["producers_accuracy"]), 4) << one.table;
+  EXPECT_GE(at_least_half(r["unfiltered"]["producers_accuracy"]), 3) << one.table;
   const Outcome two = fit_and_assess(2);
   EXPECT_EQ(one.model, two.model);  // same bits
   EXPECT_EQ(one.table, two.table);  // same confusion matrix, kappa and colour difference
