@@ -21,17 +21,12 @@ struct ScreenVertex {
   double inv_z = 0;      // 1 / camera-frame z; 0: not drawable
 };
 
-// A corner of a triangle drawn: on screen, and its barycentric weights in the mesh triangle it
-// is part of (a unit vector at a mesh vertex; between them where the near plane cut it).
-struct DrawnVertex {
-  ScreenVertex screen;
-  std::array<double, 3> weights{};
-};
-
-// A piece of a mesh triangle cut by the near plane.
+// A piece of a mesh triangle cut by the near plane: its corners on screen, and their barycentric
+// weights in the mesh triangle (between its vertices' unit vectors where the near plane cut it).
 struct ClippedTriangle {
   uint32_t triangle = 0;
-  DrawnVertex v[3];
+  ScreenVertex v[3];
+  std::array<double, 3> weights[3];
 };
 
 // Twice the signed area of (a, b, p) in 1/256 square pixels: positive when p is left of a -> b
@@ -62,45 +57,55 @@ std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& 
   return {std::max<int64_t>(top, 0), std::min<int64_t>(bottom, height - 1)};
 }
 
-// Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1).
-void draw(DrawnVertex v0, DrawnVertex v1, DrawnVertex v2, uint32_t t, int row0, int row1,
-          Fragments& f) {
-  int64_t area = edge(v0.screen, v1.screen, v2.screen.x, v2.screen.y);
-  if (area == 0) return;
-  if (area < 0) {
-    std::swap(v1, v2);
-    area = -area;
-  }
-  const DrawnVertex* v[3] = {&v0, &v1, &v2};
-  const bool tl0 = top_left(v1.screen, v2.screen), tl1 = top_left(v2.screen, v0.screen),
-             tl2 = top_left(v0.screen, v1.screen);
-  const int64_t xmin = std::min({v0.screen.x, v1.screen.x, v2.screen.x}),
-                xmax = std::max({v0.screen.x, v1.screen.x, v2.screen.x});
-  const auto [first, last] = row_span(v0.screen, v1.screen, v2.screen, row1);
+// Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1); `weights`:
+// its corners' barycentric weights in `t`, or nullptr for `t` itself (unit weights: the weights
+// of the pixel's 2nd and 3rd corner are then the pixel's, the same bits as summing with zeros).
+// Most triangles cover no pixel centre (smaller than a pixel): they leave before the edge set-up.
+void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+          const std::array<double, 3>* weights, uint32_t t, int row0, int row1, Fragments& f) {
+  auto [first, last] = row_span(v0, v1, v2, row1);
+  first = std::max<int64_t>(first, row0);
+  if (first > last) return;
+  const int64_t xmin = std::min({v0.x, v1.x, v2.x}), xmax = std::max({v0.x, v1.x, v2.x});
   const int64_t c0 = std::max<int64_t>(0, (xmin - kOne / 2 + kOne - 1) >> kSubpixelBits);
   const int64_t c1 = std::min<int64_t>(f.width - 1, (xmax - kOne / 2) >> kSubpixelBits);
-  for (int64_t r = std::max<int64_t>(first, row0); r <= std::min<int64_t>(last, row1 - 1); ++r) {
+  if (c0 > c1) return;
+  int64_t area = edge(v0, v1, v2.x, v2.y);
+  if (area == 0) return;
+  // Clockwise on the screen: corner k is the given corner at[k] (the 2nd and 3rd swapped when
+  // the given order is anticlockwise; a swap, so the given corner k is also at[k]).
+  const bool swapped = area < 0;
+  const int at[3] = {0, swapped ? 2 : 1, swapped ? 1 : 2};
+  const ScreenVertex* given[3] = {&v0, &v1, &v2};
+  const ScreenVertex* v[3] = {given[at[0]], given[at[1]], given[at[2]]};
+  area = std::abs(area);
+  const bool tl0 = top_left(*v[1], *v[2]), tl1 = top_left(*v[2], *v[0]),
+             tl2 = top_left(*v[0], *v[1]);
+  for (int64_t r = first; r <= last; ++r) {
     const int64_t py = r * kOne + kOne / 2;
     for (int64_t c = c0; c <= c1; ++c) {
       const int64_t px = c * kOne + kOne / 2;
-      const int64_t e[3] = {edge(v1.screen, v2.screen, px, py), edge(v2.screen, v0.screen, px, py),
-                            edge(v0.screen, v1.screen, px, py)};
+      const int64_t e[3] = {edge(*v[1], *v[2], px, py), edge(*v[2], *v[0], px, py),
+                            edge(*v[0], *v[1], px, py)};
       if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
       if ((e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) || (e[2] == 0 && !tl2)) continue;
       // Screen-space weights, then perspective-correct ones through 1/z.
       double w[3], inv_z = 0;
       for (int k = 0; k < 3; ++k) {
-        w[k] = double(e[k]) / double(area) * v[k]->screen.inv_z;
+        w[k] = double(e[k]) / double(area) * v[k]->inv_z;
         inv_z += w[k];
       }
       const double z = 1 / inv_z;
       const size_t i = size_t(r - f.first_row) * size_t(f.width) + size_t(c);
       // The nearer wins; on equal depth the lower triangle index, whatever the drawing order.
       if (z > f.depth[i] || (z == f.depth[i] && t >= f.triangle[i])) continue;
-      double b1 = 0, b2 = 0;
-      for (int k = 0; k < 3; ++k) {
-        b1 += w[k] * v[k]->weights[1];
-        b2 += w[k] * v[k]->weights[2];
+      double b1 = w[at[1]], b2 = w[at[2]];
+      if (weights) {
+        b1 = b2 = 0;
+        for (int k = 0; k < 3; ++k) {
+          b1 += w[k] * weights[at[k]][1];
+          b2 += w[k] * weights[at[k]][2];
+        }
       }
       f.depth[i] = z;
       f.triangle[i] = t;
@@ -134,13 +139,15 @@ void clip(const PinholeCamera& camera, const Vec3d (&view)[3], uint32_t t, doubl
       polygon.emplace_back(p, wp);
     }
   }
-  std::vector<DrawnVertex> drawn;
-  for (const auto& [p, weights] : polygon) {
-    drawn.push_back({to_screen(camera, p), weights});
-    if (drawn.back().screen.inv_z == 0) return;
+  std::vector<ScreenVertex> drawn;
+  for (const auto& corner : polygon) {
+    drawn.push_back(to_screen(camera, corner.first));
+    if (drawn.back().inv_z == 0) return;
   }
   for (size_t k = 1; k + 1 < drawn.size(); ++k)
-    out.push_back({t, {drawn[0], drawn[k], drawn[k + 1]}});
+    out.push_back({t,
+                   {drawn[0], drawn[k], drawn[k + 1]},
+                   {polygon[0].second, polygon[k].second, polygon[k + 1].second}});
 }
 
 }  // namespace
@@ -184,8 +191,7 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
       const size_t before = clipped.size();
       clip(camera, corners, uint32_t(t), near, clipped);
       for (size_t k = before; k < clipped.size(); ++k)
-        bin(clipped[k].v[0].screen, clipped[k].v[1].screen, clipped[k].v[2].screen,
-            uint32_t(triangles + k));
+        bin(clipped[k].v[0], clipped[k].v[1], clipped[k].v[2], uint32_t(triangles + k));
     }
   }
 
@@ -203,12 +209,11 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     for (const uint32_t id : band_triangles[size_t(band)]) {
       if (id >= triangles) {
         const ClippedTriangle& c = clipped[id - triangles];
-        draw(c.v[0], c.v[1], c.v[2], c.triangle, row0, row1, f);
+        draw(c.v[0], c.v[1], c.v[2], c.weights, c.triangle, row0, row1, f);
         continue;
       }
       const uint32_t* i = &mesh.indices[3 * size_t(id)];
-      draw({screen[i[0]], {1, 0, 0}}, {screen[i[1]], {0, 1, 0}}, {screen[i[2]], {0, 0, 1}}, id,
-           row0, row1, f);
+      draw(screen[i[0]], screen[i[1]], screen[i[2]], nullptr, id, row0, row1, f);
     }
   });
   return f;
