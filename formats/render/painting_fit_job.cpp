@@ -1,5 +1,7 @@
 #include "render/painting_fit_job.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -110,10 +112,22 @@ Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJo
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const PicturePoint p = unwarp({i + 0.5, j + 0.5});
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+        throw Error("--panorama: the fit's warp sends pixel (" + std::to_string(i) + ", " +
+                    std::to_string(j) + ") nowhere (" + number(p[0]) + ", " + number(p[1]) + ")");
       sources[size_t(j) * size_t(w) + size_t(i)] = p;
       beyond = std::max({beyond, -p[0], p[0] - w, -p[1], p[1] - h});
     }
-  const int margin = beyond > 0 ? int(std::ceil(beyond)) : 0;  // none: the picture as drawn
+  // None: the picture as drawn. Capped: the sources beyond it are clamped onto its edge below.
+  const int most = std::max(w, h) / 2;
+  const int margin = beyond > 0 ? int(std::min(std::ceil(beyond), double(most))) : 0;
+  if (beyond > most)
+    spdlog::warn(
+        "--panorama: the fit's warp reaches {:.0f} px beyond the picture; drawn with a "
+        "margin of {} px (half its larger side), the pixels beyond take its edge",
+        beyond, margin);
+  else
+    spdlog::info("--panorama: drawn with a margin of {} px", margin);
   const double focal = PinholeCamera(render.camera).focal();
   render.camera.width = w + 2 * margin;
   render.camera.height = h + 2 * margin;
@@ -121,9 +135,9 @@ Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJo
   const Panorama wide = render_panorama(store, grid, render);
   const int ww = wide.width;
   std::vector<size_t> source(sources.size());
-  for (size_t k = 0; k < sources.size(); ++k) {  // clamped: a source on the far edge itself
-    const int x = std::clamp(int(std::floor(sources[k][0])) + margin, 0, ww - 1);
-    const int y = std::clamp(int(std::floor(sources[k][1])) + margin, 0, wide.height - 1);
+  for (size_t k = 0; k < sources.size(); ++k) {  // clamped: a source beyond takes the edge
+    const auto x = int(std::clamp(std::floor(sources[k][0]) + margin, 0.0, ww - 1.0));
+    const auto y = int(std::clamp(std::floor(sources[k][1]) + margin, 0.0, wide.height - 1.0));
     source[k] = size_t(y) * size_t(ww) + size_t(x);
   }
   const auto moved = [&source](const auto& values, size_t wide_pixels) {

@@ -45,8 +45,11 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
 // painting: each pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp)
 // sends its centre to (nearest). Where that lies beyond the picture, the view is drawn wider: with
 // a margin as wide as the farthest such pixel, at the same focal length and centre, so every pixel
-// shows what the camera sees there. Throws as render_panorama (a margin making the picture wider
-// than the camera allows among them).
+// shows what the camera sees there. The margin is at most half the picture's larger side (the
+// spline extrapolates linearly past the clicks: bunched clicks may send a corner thousands of
+// pixels out); a pixel sent beyond it takes the wide view's nearest edge pixel. Throws
+// maquette::Error naming the pixel that `unwarp` sends to no finite place, and as
+// render_panorama.
 Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJob render,
                                 const PictureWarp& unwarp);
 

@@ -17,6 +17,7 @@
 #include <numbers>
 
 #include "proj_enu.h"
+#include "render/painting_fit_job.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
 #include "test_camera.h"
@@ -210,6 +211,52 @@ TEST(PaintingFitCli, WarpedGuidesFollowThePainting) {
   std::printf("the guides on the painting's left edge %.2f px off, its own edge's %.2f px\n",
               at_edge, repeated);
   EXPECT_LE(at_edge, repeated / 2);
+}
+
+// A warp reaching far beyond the picture (what a spline extrapolating past bunched clicks does):
+// the picture stretched four times across about its centre, so the left edge is sent 1200 px
+// beyond it. The wide view is drawn with a margin of half the picture's larger side (400 px), not
+// as far as the warp reaches (a view of 3200 x 500 pixels and more), and the edge takes the wide
+// view's edge: the guides there name ground points the true camera draws 400 px left of the
+// picture, on the same row; a pixel near the centre, the ground point it is sent to.
+TEST(PaintingFitCli, AFarReachingWarpIsCapped) {
+  const Fixture& f = fixture();
+  const std::vector<PicturePoint> from = {{0, 0}, {800, 0}, {0, 500}, {800, 500}, {400, 250}};
+  std::vector<PicturePoint> to;
+  for (const auto& p : from) to.push_back({400 + 4 * (p[0] - 400), p[1]});
+  PanoramaJob render;
+  render.dem = "dem";
+  render.camera = {{kEyeLon, kEyeLat, kEyeHeight},
+                   kCamera.heading,
+                   kCamera.pitch,
+                   kCamera.fov,
+                   kCamera.width,
+                   kCamera.height};
+  const auto store = Store::open(f.store, Store::Mode::ReadOnly);
+  const Panorama p =
+      render_warped_panorama(*store, default_grid(), render, PictureWarp(from, to, 800, 0));
+  ASSERT_EQ(p.width, kCamera.width);
+  ASSERT_EQ(p.height, kCamera.height);
+  const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
+  auto drawn_at = [&](int col, int row) {
+    const size_t i = size_t(row) * size_t(p.width) + size_t(col);
+    const auto px = kCamera.project(enu({p.lon[i], p.lat[i]}, p.altitude[i]));
+    return std::array<double, 2>{px[0] + 0.5, px[1] + 0.5};
+  };
+  int on_ground = 0;
+  for (int row = 0; row < kCamera.height; row += 10) {
+    if (std::isnan(p.altitude[size_t(row) * size_t(p.width)])) continue;
+    ++on_ground;
+    const auto at = drawn_at(0, row);
+    EXPECT_NEAR(at[0], 0.5 - 400, 1.0) << row;
+    EXPECT_NEAR(at[1], row + 0.5, 1.0) << row;
+  }
+  std::printf("the left edge: %d of %d rows on the ground\n", on_ground, kCamera.height / 10);
+  EXPECT_GE(on_ground, 5);
+  // Pixel (400, 250) is sent 4 times its 0.5 px from the centre: into pixel 402.
+  const auto centre = drawn_at(400, 250);
+  EXPECT_NEAR(centre[0], 402.5, 1.0);
+  EXPECT_NEAR(centre[1], 250.5, 1.0);
 }
 
 // A bent painting seen from above the terraces (the bend's base on the DEM under the eye, 137 m):
