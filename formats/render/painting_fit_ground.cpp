@@ -53,7 +53,7 @@ double fade(double distance, double reach) {
 
 }  // namespace
 
-GroundWarp::GroundWarp(const PaintingFit& fit) : eye_(fit.camera.eye) {
+GroundWarp::GroundWarp(const PaintingFit& fit, double dem_sample_m) : eye_(fit.camera.eye) {
   std::vector<PicturePoint> from;
   double west = std::numeric_limits<double>::infinity(), east = -west, south = west, north = -west;
   for (size_t i = 0; i < fit.ground.size(); ++i) {
@@ -79,7 +79,7 @@ GroundWarp::GroundWarp(const PaintingFit& fit) : eye_(fit.camera.eye) {
       if (j != i)
         nearest = std::min(
             nearest, std::hypot(centres_[i][0] - centres_[j][0], centres_[i][1] - centres_[j][1]));
-    reach_.push_back(nearest);
+    reach_.push_back(std::max(nearest, 2 * dem_sample_m));
   }
 }
 

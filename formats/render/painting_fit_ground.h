@@ -10,7 +10,9 @@
 // Between the clicks, a thin-plate spline of those moves (the same spline, in metres, its scale
 // the moved points' extent); away from them it fades to nothing: in full within R_i of click i
 // (R_i the distance to its nearest other click), none beyond 2 R_i from every click (a smoothstep
-// between), so a DEM far from the clicks is left as it is, bit for bit.
+// between), so a DEM far from the clicks is left as it is, bit for bit. R_i is at least two of the
+// DEM's samples: clicks closer than that (a bridge's two ends) still move the four samples whose
+// bilinear blend draws each of them, so the feature moves (a reach below a sample moved none).
 #pragma once
 
 #include <vector>
@@ -26,9 +28,9 @@ class GroundWarp {
   // Throws maquette::Error naming
   // the click (its index) whose ground point no horizontal move puts on its pixel (a ray that
   // misses the height of the point, behind the eye or at the horizon), and the spline's errors
-  // (clicks whose moved points are collinear). Precondition: fit.warp was fitted (it may be the
-  // identity when the clicks fit exactly).
-  explicit GroundWarp(const PaintingFit& fit);
+  // (clicks whose moved points are collinear). `dem_sample_m`: the DEM's sample spacing (metres,
+  // > 0). Precondition: fit.warp was fitted (it may be the identity when the clicks fit exactly).
+  GroundWarp(const PaintingFit& fit, double dem_sample_m);
 
   // The point whose height the moved DEM takes at `p` (p - d(p)); `p` itself, the same bits,
   // where the warp has faded out.

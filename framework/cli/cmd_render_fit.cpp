@@ -33,7 +33,10 @@ void run(const FitOptions& o) {
   const PaintingFit fit = fit_painting_to_store(*store, default_grid(), job, points, o.points);
   // The ground warp is found before anything is written: a click it cannot move leaves no files.
   std::optional<GroundWarp> ground_warp;
-  if (o.warped_dem) ground_warp.emplace(fit);
+  if (o.warped_dem) {
+    const LayerInfo dem = *store->layer(job.dem);
+    ground_warp.emplace(fit, default_grid().level_info(dem.level, dem.tile_size).pixel_m);
+  }
   // The panorama is rendered before anything is written: bad --texture or --land-cover layers
   // leave no files.
   std::optional<Panorama> panorama;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "synthetic_painting.h"
@@ -28,7 +29,7 @@ TEST(PaintingFitGround, MovedGroundPointsAreDrawnWhereTheWarpSendsThem) {
   options.warp_smoothing = 0.001;
   options.ground_height = [](LonLat at) { return test::synthetic_terrain(at.lon, at.lat); };
   const PaintingFit fit = fit_painting(clicks, options);
-  const GroundWarp warp(fit);
+  const GroundWarp warp(fit, 30);
   ASSERT_EQ(warp.moves().size(), clicks.size());
 
   const CameraSpec& c = fit.camera;
@@ -60,6 +61,53 @@ TEST(PaintingFitGround, MovedGroundPointsAreDrawnWhereTheWarpSendsThem) {
   const LonLat source = warp.source(far);
   EXPECT_EQ(source.lon, far.lon);
   EXPECT_EQ(source.lat, far.lat);
+}
+
+// Two clicks 5 m apart on the ground (a bridge's two ends), far closer than the DEM's 30 m
+// samples, 10 km from three others: the plain painting's camera, its picture moved 20 px right
+// by the warp. The DEM's samples around the pair, 1.5 samples away, take the pair's whole move
+// (within 2 % of its length), so the feature the two mark is drawn where the painting has it;
+// with a reach of the 5 m between them the move faded out 10 m from them, and those samples
+// stayed where they were.
+TEST(PaintingFitGround, ClicksCloserThanASampleMoveTheSamplesAroundThem) {
+  const test::SyntheticPainting painting = test::plain_painting();
+  PaintingFit fit;
+  fit.camera = {{painting.eye_lon, painting.eye_lat, painting.eye_height},
+                painting.camera.heading,
+                painting.camera.pitch,
+                painting.camera.fov,
+                painting.camera.width,
+                painting.camera.height};
+  const EnuFrame eye(fit.camera.eye);
+  // East and north of the eye, metres: the pair 15 km ahead, the others 25 km ahead.
+  for (const auto& [east, north] : std::vector<std::array<double, 2>>{
+           {0, 15000}, {5, 15000}, {-2000, 25000}, {2000, 25000}, {0, 27000}}) {
+    GeodeticPoint g = eye.to_geodetic(east, north, 0);
+    g.height = test::synthetic_terrain(g.lon, g.lat);
+    fit.ground.push_back(g);
+  }
+  fit.fitted = project_ground(fit.camera, fit.bend, fit.ground);
+  std::vector<PicturePoint> moved;
+  for (const auto& p : fit.fitted) moved.push_back({p[0] + 20, p[1]});
+  fit.warp = PictureWarp(fit.fitted, moved, painting.camera.width, 0);
+  const GroundWarp warp(fit, 30);
+  EXPECT_EQ(warp.reach()[0], 60);
+  EXPECT_EQ(warp.reach()[1], 60);
+
+  const auto& move = warp.moves()[0];
+  const double length = std::hypot(move[0], move[1]);
+  std::printf("the pair's ground points move by %.0f m\n", length);
+  ASSERT_GT(length, 100);
+  const auto at = eye.to_enu(fit.ground[0].lon, fit.ground[0].lat, 0);
+  for (int k = 0; k < 8; ++k) {
+    const double angle = k * std::numbers::pi / 4;
+    const double east = at[0] + move[0] + 45 * std::cos(angle),
+                 north = at[1] + move[1] + 45 * std::sin(angle);
+    const GeodeticPoint p = eye.to_geodetic(east, north, at[2]);
+    const LonLat source = warp.source({p.lon, p.lat});
+    const auto s = eye.to_enu(source.lon, source.lat, 0);
+    EXPECT_LE(std::hypot(east - s[0] - move[0], north - s[1] - move[1]), 0.02 * length) << k;
+  }
 }
 
 }  // namespace
