@@ -91,7 +91,22 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
   });
 }
 
-bool on_stretch_grid(int row, int col, int step) { return row % step == 0 && col % step == 0; }
+// Appends to `texels` those of `found` (3 per pixel of a strip of rows `width` wide starting at
+// picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: a band a
+// task (the serial share of a picture on two cores otherwise).
+void append_stretch_texels(const std::vector<float>& found, int width, int first_row, int step,
+                           StretchTexels& texels) {
+  const int rows = int(found.size() / 3 / size_t(width));
+  tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
+    for (int row = 0; row < rows; ++row) {
+      if ((first_row + row) % step != 0) continue;
+      for (int col = 0; col < width; col += step) {
+        const float t = found[3 * (size_t(row) * size_t(width) + size_t(col)) + k];
+        if (!std::isnan(t)) texels[k].push_back(t);
+      }
+    }
+  });
+}
 
 }  // namespace
 
@@ -111,9 +126,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
         sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
     }
   });
-  for (size_t i = 0; i < found.size() / 3; ++i)
-    for (size_t k = 0; k < 3; ++k)
-      if (!std::isnan(found[3 * i + k])) texels[k].push_back(found[3 * i + k]);
+  append_stretch_texels(found, f.width, f.first_row, step, texels);
 }
 
 BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
@@ -198,14 +211,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     stretch = *given_stretch;
   } else {
     StretchTexels seen;
-    const int step = stretch_step(w, camera.spec().height);
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col) {
-        const size_t i = size_t(row) * size_t(w) + size_t(col);
-        if (on_stretch_grid(f.first_row + row, col, step))
-          for (size_t k = 0; k < 3; ++k)
-            if (!std::isnan(texels[3 * i + k])) seen[k].push_back(texels[3 * i + k]);
-      }
+    append_stretch_texels(texels, w, f.first_row, stretch_step(w, camera.spec().height), seen);
     stretch = texel_stretch(seen, look);
   }
 

@@ -165,35 +165,48 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     if (view[i][2] >= near) screen[i] = to_screen(camera, view[i]);
   });
 
-  // Triangles by the bands of rows (from `top`) their bounding boxes meet: mesh triangles wholly
-  // in front of the near plane by their index t, pieces of cut ones as triangle_count() + their
-  // index (the pieces of every triangle, whatever the rows drawn: the same ids for any strip).
+  // Triangles by the bands of rows (from `top`) their bounding boxes meet, binned side by side in
+  // chunks of the mesh's triangles: in a chunk's list of a band, mesh triangles wholly in front of
+  // the near plane by their index t, pieces of cut ones as triangle_count() + their index among
+  // the chunk's pieces (the pieces of every triangle, whatever the rows drawn). A band draws its
+  // chunks' lists in order (the drawing order does not change a pixel: the tie rule).
   const int bands = (bottom - top + kBandRows - 1) / kBandRows;
-  std::vector<std::vector<uint32_t>> band_triangles(static_cast<size_t>(bands));
-  auto bin = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t id) {
-    auto [first, last] = row_span(a, b, c, h);
-    first = std::max<int64_t>(first, top) - top;
-    last = std::min<int64_t>(last, bottom - 1) - top;
-    for (int64_t band = first / kBandRows; band <= last / kBandRows && first <= last; ++band)
-      band_triangles[size_t(band)].push_back(id);
-  };
-  std::vector<ClippedTriangle> clipped;
   const size_t triangles = mesh.triangle_count();
-  for (size_t t = 0; t < triangles; ++t) {
-    const uint32_t* i = &mesh.indices[3 * t];
-    const Vec3d corners[3] = {view[i[0]], view[i[1]], view[i[2]]};
-    const int in_front =
-        (corners[0][2] >= near) + (corners[1][2] >= near) + (corners[2][2] >= near);
-    if (in_front == 3) {
-      if (screen[i[0]].inv_z != 0 && screen[i[1]].inv_z != 0 && screen[i[2]].inv_z != 0)
-        bin(screen[i[0]], screen[i[1]], screen[i[2]], uint32_t(t));
-    } else if (in_front > 0) {
-      const size_t before = clipped.size();
-      clip(camera, corners, uint32_t(t), near, clipped);
-      for (size_t k = before; k < clipped.size(); ++k)
-        bin(clipped[k].v[0], clipped[k].v[1], clipped[k].v[2], uint32_t(triangles + k));
+  struct Chunk {
+    std::vector<std::vector<uint32_t>> band_triangles;
+    std::vector<ClippedTriangle> clipped;
+  };
+  constexpr size_t kChunkTriangles = size_t(1) << 16;
+  std::vector<Chunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
+  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t chunk) {
+    Chunk& out = chunks[chunk];
+    out.band_triangles.resize(size_t(bands));
+    auto bin = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                   uint32_t id) {
+      auto [first, last] = row_span(a, b, c, h);
+      first = std::max<int64_t>(first, top) - top;
+      last = std::min<int64_t>(last, bottom - 1) - top;
+      for (int64_t band = first / kBandRows; band <= last / kBandRows && first <= last; ++band)
+        out.band_triangles[size_t(band)].push_back(id);
+    };
+    const size_t end = std::min(triangles, (chunk + 1) * kChunkTriangles);
+    for (size_t t = chunk * kChunkTriangles; t < end; ++t) {
+      const uint32_t* i = &mesh.indices[3 * t];
+      const Vec3d corners[3] = {view[i[0]], view[i[1]], view[i[2]]};
+      const int in_front =
+          (corners[0][2] >= near) + (corners[1][2] >= near) + (corners[2][2] >= near);
+      if (in_front == 3) {
+        if (screen[i[0]].inv_z != 0 && screen[i[1]].inv_z != 0 && screen[i[2]].inv_z != 0)
+          bin(screen[i[0]], screen[i[1]], screen[i[2]], uint32_t(t));
+      } else if (in_front > 0) {
+        const size_t before = out.clipped.size();
+        clip(camera, corners, uint32_t(t), near, out.clipped);
+        for (size_t k = before; k < out.clipped.size(); ++k)
+          bin(out.clipped[k].v[0], out.clipped[k].v[1], out.clipped[k].v[2],
+              uint32_t(triangles + k));
+      }
     }
-  }
+  });
 
   Fragments f;
   f.width = w;
@@ -206,15 +219,16 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
                        [&] { f.b1.assign(n, 0); }, [&] { f.b2.assign(n, 0); });
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
-    for (const uint32_t id : band_triangles[size_t(band)]) {
-      if (id >= triangles) {
-        const ClippedTriangle& c = clipped[id - triangles];
-        draw(c.v[0], c.v[1], c.v[2], c.weights, c.triangle, row0, row1, f);
-        continue;
+    for (const Chunk& chunk : chunks)
+      for (const uint32_t id : chunk.band_triangles[size_t(band)]) {
+        if (id >= triangles) {
+          const ClippedTriangle& c = chunk.clipped[id - triangles];
+          draw(c.v[0], c.v[1], c.v[2], c.weights, c.triangle, row0, row1, f);
+          continue;
+        }
+        const uint32_t* i = &mesh.indices[3 * size_t(id)];
+        draw(screen[i[0]], screen[i[1]], screen[i[2]], nullptr, id, row0, row1, f);
       }
-      const uint32_t* i = &mesh.indices[3 * size_t(id)];
-      draw(screen[i[0]], screen[i[1]], screen[i[2]], nullptr, id, row0, row1, f);
-    }
   });
   return f;
 }
