@@ -157,12 +157,18 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
   const int w = camera.spec().width, h = camera.spec().height;
   const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
   const size_t vertex_count = mesh.positions.size() / 3;
-  std::vector<Vec3d> view(vertex_count);
+  auto view = [&](uint32_t v) {
+    return camera.to_view({mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1],
+                           mesh.positions[3 * size_t(v) + 2]});
+  };
+  // Each vertex's depth, and its place on screen when in front of the near plane (the camera
+  // frame's x and y are found again for the few triangles the near plane cuts).
+  std::vector<double> depth(vertex_count);
   std::vector<ScreenVertex> screen(vertex_count);
   tbb::parallel_for(size_t(0), vertex_count, [&](size_t i) {
-    view[i] = camera.to_view(
-        {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]});
-    if (view[i][2] >= near) screen[i] = to_screen(camera, view[i]);
+    const Vec3d v = view(uint32_t(i));
+    depth[i] = v[2];
+    if (v[2] >= near) screen[i] = to_screen(camera, v);
   });
 
   // Triangles by the bands of rows (from `top`) their bounding boxes meet, binned side by side in
@@ -192,13 +198,12 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     const size_t end = std::min(triangles, (chunk + 1) * kChunkTriangles);
     for (size_t t = chunk * kChunkTriangles; t < end; ++t) {
       const uint32_t* i = &mesh.indices[3 * t];
-      const Vec3d corners[3] = {view[i[0]], view[i[1]], view[i[2]]};
-      const int in_front =
-          (corners[0][2] >= near) + (corners[1][2] >= near) + (corners[2][2] >= near);
+      const int in_front = (depth[i[0]] >= near) + (depth[i[1]] >= near) + (depth[i[2]] >= near);
       if (in_front == 3) {
         if (screen[i[0]].inv_z != 0 && screen[i[1]].inv_z != 0 && screen[i[2]].inv_z != 0)
           bin(screen[i[0]], screen[i[1]], screen[i[2]], uint32_t(t));
       } else if (in_front > 0) {
+        const Vec3d corners[3] = {view(i[0]), view(i[1]), view(i[2])};
         const size_t before = out.clipped.size();
         clip(camera, corners, uint32_t(t), near, out.clipped);
         for (size_t k = before; k < out.clipped.size(); ++k)
