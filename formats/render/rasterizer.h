@@ -3,9 +3,10 @@
 // pixel belongs to a triangle when its centre is inside, or on a top or left edge (the top-left
 // rule: a centre on an edge shared by two triangles is drawn by exactly one of them). Depth is
 // the camera-frame z, interpolated perspective-correctly; the nearer surface wins, and on equal
-// depth the lower triangle index. Rows are split into bands of 8, each band rasterized by one
-// oneTBB task over its triangles in index order, writing only its own rows: the result is the
-// same bits for any number of threads (the tie rule does not depend on the drawing order).
+// depth the lower triangle index. Rows are split into bands of 8, the triangles binned into them
+// by oneTBB tasks over chunks of the mesh, each band rasterized by one oneTBB task over its
+// triangles in index order, writing only its own rows: the result is the same bits for any number
+// of threads (the tie rule does not depend on the drawing order).
 // Triangles are clipped at `near` metres in front of the eye (the pieces keep their barycentric
 // weights in the mesh triangle); a triangle (or piece) with a corner projected further than 2^22
 // pixels from the picture is left out. There is no back-face culling.
