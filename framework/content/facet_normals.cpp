@@ -1,8 +1,5 @@
 #include "content/facet_normals.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,6 +7,8 @@
 #include <numbers>
 #include <numeric>
 #include <vector>
+
+#include "core/parallel_chunks.h"
 
 namespace maquette {
 namespace {
@@ -29,15 +28,8 @@ Normal face_normal(const std::vector<float>& positions, const uint32_t* corners)
   return n;
 }
 
-// f(first, last) over [0, n) in parallel by ranges of at least kRange (triangles or vertices): a
-// building's few are done in one call, without TBB.
-template <typename F>
-void in_ranges(size_t n, const F& f) {
-  constexpr size_t kRange = 4096;
-  if (n <= kRange) return f(0, n);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kRange),
-                    [&](const tbb::blocked_range<size_t>& r) { f(r.begin(), r.end()); });
-}
+// Triangles or vertices per parallel chunk: a building's few are done in one call, without TBB.
+constexpr size_t kChunk = 4096;
 
 }  // namespace
 
@@ -45,7 +37,7 @@ MeshObject with_facet_normals(const MeshObject& object) {
   const size_t vertices = object.positions.size() / 3, triangles = object.indices.size() / 3;
   const std::vector<uint32_t>& indices = object.indices;
   std::vector<Normal> normal(triangles);
-  in_ranges(triangles, [&](size_t first, size_t last) {
+  parallel_chunks(triangles, kChunk, [&](size_t first, size_t last) {
     for (size_t t = first; t < last; ++t)
       normal[t] = face_normal(object.positions, &indices[3 * t]);
   });
@@ -67,7 +59,7 @@ MeshObject with_facet_normals(const MeshObject& object) {
   out.material = object.material;
   out.indices.resize(by_vertex.size());
   std::vector<uint32_t> copies(vertices + 1, 0);
-  in_ranges(vertices, [&](size_t first, size_t last) {
+  parallel_chunks(vertices, kChunk, [&](size_t first, size_t last) {
     std::vector<const Normal*> own;
     for (uint32_t v = uint32_t(first); v < last; ++v) {
       own.clear();
@@ -101,7 +93,7 @@ MeshObject with_facet_normals(const MeshObject& object) {
     if (uvs)
       for (size_t k = 0; k < 2; ++k) out.uvs[2 * to + k] = object.uvs[2 * size_t(v) + k];
   };
-  in_ranges(vertices, [&](size_t first, size_t last) {
+  parallel_chunks(vertices, kChunk, [&](size_t first, size_t last) {
     for (uint32_t v = uint32_t(first); v < last; ++v) {
       uint32_t made = 0;
       for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
