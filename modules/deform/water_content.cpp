@@ -90,12 +90,12 @@ MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const 
   return object;
 }
 
-void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
-  const LakeMesh mesh = lake_mesh(basin, body);
+LakeContent::Lake LakeContent::placed(const VectorFeature& f, const BasinRaster& basin,
+                                      const WaterBody& body, LakeBottom bottom) const {
+  const LakeMesh mesh = lake_mesh(basin, body, bottom);
   // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
   // the mosaic's face (a lake may cross a face seam).
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
-  if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;
@@ -122,8 +122,14 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
   lake.fog.voxel = {side, side, deepest / kVoxelsDeep};
   lake.fog.name = "water";
+  return lake;
+}
+
+void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
+  if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   const CellContent& any = output_.content.begin()->second;
   if (any.wants("mesh")) {
+    const Lake lake = placed(f, basin, body, LakeBottom::Flat);
     const auto& first = lake.places.front();
     const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
     MeshContent& content = output_.content.at(cell).mesh("mesh");
@@ -132,7 +138,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     content.objects.push_back(object(lake, content.origin));
     content.objects.back().material = 0;
   }
-  if (any.wants("volume")) lakes_.push_back(std::move(lake));
+  if (any.wants("volume")) lakes_.push_back(placed(f, basin, body, LakeBottom::Terrain));
 }
 
 void LakeContent::finish() {
