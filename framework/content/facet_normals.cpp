@@ -16,17 +16,24 @@ namespace {
 using Normal = std::array<double, 3>;
 constexpr Normal kUpNormal{0, 0, 1};  // a degenerate triangle's or unused vertex's copy
 
-// The unit normal of triangle `corners` (counter-clockwise), zero when it has no area.
+// The unit normal of triangle `corners` (counter-clockwise), zero when it is a sliver: lower
+// than kFacetMinHeightM over its longest side.
 Normal face_normal(const std::vector<float>& positions, const uint32_t* corners) {
   const float *a = &positions[3 * size_t(corners[0])], *b = &positions[3 * size_t(corners[1])],
               *c = &positions[3 * size_t(corners[2])];
   const Normal u{double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]},
       w{double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
   Normal n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  const double length = std::hypot(n[0], n[1], n[2]);
-  for (double& x : n) x = length > 0 ? x / length : 0;
+  const double length = std::hypot(n[0], n[1], n[2]);  // twice the area
+  const auto squared = [](const Normal& v) { return v[0] * v[0] + v[1] * v[1] + v[2] * v[2]; };
+  const double longest = std::sqrt(
+      std::max({squared(u), squared(w), squared({w[0] - u[0], w[1] - u[1], w[2] - u[2]})}));
+  const bool sliver = !(length > kFacetMinHeightM * longest);
+  for (double& x : n) x = sliver ? 0 : x / length;
   return n;
 }
+
+bool degenerate(const Normal& n) { return n[0] == 0 && n[1] == 0 && n[2] == 0; }
 
 // Triangles or vertices per parallel chunk: a building's few are done in one call, without TBB.
 constexpr size_t kChunk = 4096;
@@ -51,8 +58,10 @@ MeshObject with_facet_normals(const MeshObject& object) {
     for (size_t c = 0; c < by_vertex.size(); ++c) by_vertex[next[indices[c]]++] = uint32_t(c);
   }
   // Per vertex, its orientations in the order its corners meet them, each corner taking the
-  // first within kFacetNormalTurnDeg of its face's normal: out.indices first holds each corner's
-  // orientation among its vertex's, copies[v] their count (vertices in parallel).
+  // first within kFacetNormalTurnDeg of its face's normal, a degenerate corner the first of them
+  // (wherever it comes: a sliver met first would otherwise make a copy of its vertex of its own,
+  // facing up, that no other face shares): out.indices first holds each corner's orientation
+  // among its vertex's, copies[v] their count (vertices in parallel).
   const double min_dot = std::cos(kFacetNormalTurnDeg * std::numbers::pi / 180);
   MeshObject out;
   out.provenance = object.provenance;
@@ -66,21 +75,27 @@ MeshObject with_facet_normals(const MeshObject& object) {
       for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
         const uint32_t c = by_vertex[i];
         const Normal& n = normal[c / 3];
-        const bool degenerate = n[0] == 0 && n[1] == 0 && n[2] == 0;
+        if (degenerate(n)) continue;
         size_t o = 0;
-        for (; o < own.size() && !degenerate; ++o) {
+        for (; o < own.size(); ++o) {
           const Normal& m = *own[o];
           if (!(m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < min_dot)) break;
         }
-        if (o == own.size()) own.push_back(degenerate ? &kUpNormal : &n);
+        if (o == own.size()) own.push_back(&n);
         out.indices[c] = uint32_t(o);
+      }
+      for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
+        const uint32_t c = by_vertex[i];
+        if (!degenerate(normal[c / 3])) continue;
+        if (own.empty()) own.push_back(&kUpNormal);
+        out.indices[c] = 0;
       }
       copies[v + 1] = uint32_t(std::max<size_t>(own.size(), 1));  // an unused vertex: one copy
     }
   });
   std::partial_sum(copies.begin(), copies.end(), copies.begin());
-  // The copies, each vertex's in the order of its orientations (the corner meeting one first
-  // gives its normal), written in parallel at their final places.
+  // The copies, each vertex's in the order of its orientations (the first of its corners that is
+  // not degenerate gives its normal), written in parallel at their final places.
   const bool uvs = !object.uvs.empty();
   out.positions.resize(3 * size_t(copies.back()));
   out.normals.resize(out.positions.size());
@@ -99,8 +114,12 @@ MeshObject with_facet_normals(const MeshObject& object) {
       for (uint32_t i = begin[v]; i < begin[v + 1]; ++i) {
         const uint32_t c = by_vertex[i], o = out.indices[c];
         if (o == made) {  // the corner that met this orientation first
-          const Normal& n = normal[c / 3];
-          copy(v, copies[v] + made, n[0] == 0 && n[1] == 0 && n[2] == 0 ? kUpNormal : n);
+          const Normal* n = &kUpNormal;
+          for (uint32_t j = i; j < begin[v + 1] && n == &kUpNormal; ++j) {
+            const uint32_t d = by_vertex[j];  // not renumbered yet (j >= i)
+            if (out.indices[d] == o && !degenerate(normal[d / 3])) n = &normal[d / 3];
+          }
+          copy(v, copies[v] + made, *n);
           ++made;
         }
         out.indices[c] = copies[v] + o;
