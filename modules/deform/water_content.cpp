@@ -1,6 +1,5 @@
 #include "water_content.h"
 
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include "core/enu_frame.h"
 #include "core/error.h"
 #include "core/halo.h"
+#include "core/parallel_chunks.h"
 #include "core/unfolded_faces.h"
 #include "plugins/vdb_content.h"
 #include "runtime/plugin.h"
@@ -34,22 +34,8 @@ std::array<double, 3> box_centre(const std::vector<float>& positions) {
   return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
 }
 
-// f(i) for i in [0, n), in parallel by chunks of consecutive indices; a failure rethrown is the
-// one of the smallest i that failed (each chunk stops at its first), whatever the threads.
-template <typename F>
-void for_each_index(size_t n, const F& f) {
-  constexpr size_t kChunk = 4096;
-  std::vector<std::exception_ptr> failed((n + kChunk - 1) / kChunk);
-  tbb::parallel_for(size_t(0), failed.size(), [&](size_t chunk) {
-    try {
-      for (size_t i = chunk * kChunk; i < std::min(n, (chunk + 1) * kChunk); ++i) f(i);
-    } catch (...) {
-      failed[chunk] = std::current_exception();
-    }
-  });
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
-}
+// Mesh vertices per parallel chunk.
+constexpr size_t kChunk = 4096;
 
 }  // namespace
 
@@ -94,31 +80,36 @@ MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const 
   object.provenance = lake.fog.mesh.provenance;
   object.indices = lake.fog.mesh.indices;
   object.positions.resize(3 * lake.places.size());
-  for_each_index(lake.places.size(), [&](size_t i) {
-    const auto& [lon, lat, height] = lake.places[i];
-    const auto [x, y, z] = frame.to_enu(lon, lat, height);
-    std::copy_n(std::array{float(x), float(y), float(z)}.begin(), 3, &object.positions[3 * i]);
+  parallel_chunks(lake.places.size(), kChunk, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      const auto& [lon, lat, height] = lake.places[i];
+      const auto [x, y, z] = frame.to_enu(lon, lat, height);
+      std::copy_n(std::array{float(x), float(y), float(z)}.begin(), 3, &object.positions[3 * i]);
+    }
   });
   return object;
 }
 
-void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
-  const LakeMesh mesh = lake_mesh(basin, body);
+LakeContent::Lake LakeContent::placed(const VectorFeature& f, const BasinRaster& basin,
+                                      const WaterBody& body, LakeBottom bottom) const {
+  const LakeMesh mesh = lake_mesh(basin, body, bottom);
   // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
   // the mosaic's face (a lake may cross a face seam).
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
-  if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   Lake lake;
   lake.where = describe(f);
   lake.level = body.level;
   lake.places.resize(mesh.vertices.size());
-  for_each_index(mesh.vertices.size(), [&](size_t i) {
-    // A corner of a wet pixel, which has a place.
-    const LakeVertex& v = mesh.vertices[i];
-    const UnfoldedFaces::FacePoint at = *plane.from_anchor(double(input_.origin_col) + v.col - 0.5,
-                                                           double(input_.origin_row) + v.row - 0.5);
-    const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
-    lake.places[i] = {p.lon, p.lat, (*to_ellipsoid_)(p, v.height)};
+  // In order within each chunk: a failure (of the geoid's grid) is the lowest vertex's.
+  parallel_chunks(mesh.vertices.size(), kChunk, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      // A corner of a wet pixel, which has a place.
+      const LakeVertex& v = mesh.vertices[i];
+      const UnfoldedFaces::FacePoint at = *plane.from_anchor(
+          double(input_.origin_col) + v.col - 0.5, double(input_.origin_row) + v.row - 0.5);
+      const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
+      lake.places[i] = {p.lon, p.lat, (*to_ellipsoid_)(p, v.height)};
+    }
   });
   for (const LakeVertex& v : mesh.vertices) lake.on_surface.push_back(v.height == body.level);
   lake.fog.mesh.provenance = {
@@ -131,8 +122,14 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
   const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
   lake.fog.voxel = {side, side, deepest / kVoxelsDeep};
   lake.fog.name = "water";
+  return lake;
+}
+
+void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
+  if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   const CellContent& any = output_.content.begin()->second;
   if (any.wants("mesh")) {
+    const Lake lake = placed(f, basin, body, LakeBottom::Flat);
     const auto& first = lake.places.front();
     const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
     MeshContent& content = output_.content.at(cell).mesh("mesh");
@@ -141,7 +138,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     content.objects.push_back(object(lake, content.origin));
     content.objects.back().material = 0;
   }
-  if (any.wants("volume")) lakes_.push_back(std::move(lake));
+  if (any.wants("volume")) lakes_.push_back(placed(f, basin, body, LakeBottom::Terrain));
 }
 
 void LakeContent::finish() {

@@ -1,8 +1,9 @@
-// deform.water's 3D content: each lake's closed mesh (water_mesh.h) on the mesh port, with facet
-// normals (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and a water
-// material (water_material), and its
-// fog volume on the volume port, built by the volume plug-in (plugins/vdb_content.h:
-// mesh_to_fog of the same closed mesh) so that the module does not link OpenVDB. Each object is
+// deform.water's 3D content: each lake's closed mesh with a flat bottom (water_mesh.h: the prism
+// of its outline, the bottom under the terrain) on the mesh port, with facet normals
+// (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and a water material
+// (water_material), and its fog volume on the volume port, built by the volume plug-in
+// (plugins/vdb_content.h: mesh_to_fog of the closed mesh with the terrain's bottom, the water's
+// own volume) so that the module does not link OpenVDB. Each object is
 // written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of
 // its active voxels (content/content.h).
 //
@@ -20,6 +21,7 @@
 #include "runtime/operator.h"
 #include "vdb/mesh_fog.h"
 #include "water_body.h"
+#include "water_mesh.h"
 
 namespace maquette::deform {
 
@@ -64,6 +66,10 @@ class LakeContent {
     CellId cell;
     size_t object = 0;
   };
+  // The lake's mesh with `bottom`, its vertices placed (the heights on the ellipsoid), its fog
+  // body's provenance, indices and voxels set.
+  Lake placed(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body,
+              LakeBottom bottom) const;
   void write_volumes();
   MeshObject object(const Lake& lake, const EnuOrigin& origin) const;
   CellId owner(const std::string& what, double lon, double lat) const;

@@ -2,15 +2,19 @@
 // the level, triangulated from the shoreline (its vertices are the shoreline's corners only: one
 // strip per wet run of a row, between the run's two corner lines, zipped from the shoreline
 // corners on each line; no vertex inside the lake, no degenerate triangle), walls down from the
-// shoreline to the terrain, one quad per dry pixel side, and a bottom following the terrain, one
-// quad per wet pixel. Vertices are in pixel-corner coordinates (col, row: the raster's corner
-// lattice, row down), each bottom corner at the mean terrain of the wet pixels around it. Time
-// and memory are linear in the lake's pixels (and its bounding box's corners). Built by blocks of
-// 64 pixel rows in parallel: the triangles block by block (in each, the top strips of its rows,
-// then each wet pixel's bottom and walls), the vertices numbered block by block in the order of
-// first use, a corner shared with the rows above belonging to the block above; the blocks fixed
-// from the lake's first row, so the same mesh for any thread count. The first vertex is the
-// first top strip's first corner, on the shore.
+// shoreline, one quad per dry pixel side, and a bottom (LakeBottom):
+// - Terrain: following the terrain, one quad per wet pixel, each bottom corner at the mean
+//   terrain of the wet pixels around it: the water's own volume (the fog volume's mesh);
+// - Flat: the top's triangulation (facing down) at lake_flat_bottom, below the lowest bed: the
+//   prism of the lake's outline, what a viewer draws (the bottom lies under the terrain, never
+//   seen) with no vertex inside the lake; its volume is not the water's.
+// Vertices are in pixel-corner coordinates (col, row: the raster's corner lattice, row down).
+// Time and memory are linear in the lake's pixels (and its bounding box's corners). Built by
+// blocks of 64 pixel rows in parallel: the triangles block by block (in each, the top strips of
+// its rows, with the flat bottom's, then each wet pixel's terrain bottom and walls), the vertices
+// numbered block by block in the order of first use, a corner shared with the rows above
+// belonging to the block above; the blocks fixed from the lake's first row, so the same mesh for
+// any thread count. The first vertex is the first top strip's first corner, on the shore.
 //
 // Contract: a non-empty body of `basin` (fill_basin). The mesh is closed and consistently
 // oriented: each edge is in exactly two triangles, once in each direction; triangles are
@@ -34,6 +38,11 @@ struct LakeMesh {
   std::vector<uint32_t> indices;  // triangles
 };
 
-LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body);
+enum class LakeBottom { Terrain, Flat };
+
+// The flat bottom's height: 1 m below the lowest terrain of the lake's pixels.
+double lake_flat_bottom(const BasinRaster& basin, const WaterBody& body);
+
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body, LakeBottom bottom);
 
 }  // namespace maquette::deform

@@ -37,13 +37,14 @@ OperatorSpec water_spec() {
   s.outputs.push_back(depth);
   OutputSpec mesh;
   mesh.name = "mesh";
-  mesh.description = "one closed mesh per lake: top at the level, walls, bottom on the terrain";
+  mesh.description =
+      "one closed mesh per lake: top at the level, walls, a flat bottom below the lowest bed";
   mesh.kind = LayerKind::Mesh;
   s.outputs.push_back(mesh);
   OutputSpec volume;
   volume.name = "volume";
   volume.description =
-      "one OpenVDB fog volume per lake (grid \"water\"): the inside of its closed mesh";
+      "one OpenVDB fog volume per lake (grid \"water\"): the water from its bed to its level";
   volume.kind = LayerKind::Volume;
   s.outputs.push_back(volume);
   s.params_schema = {{"type", "object"},

@@ -447,14 +447,16 @@ TEST(CampusExample, FootbridgeSpansTheFilledCanalFromBankToBank) {
 // decoded positions' cross product: counter-clockwise from outside) within 1.5 degrees: faces
 // within 1 degree share a normal (facet_normals.h; the overviews' simplified walls), Draco's 10
 // bits (0.2), the node's rotation (0.01). Triangles of less than 1e-4 m^2 of doubled area are too
-// small for a direction. A sliver (a triangle whose height over its longest side is below the
-// positions' quantization step, mesh_glb.h) has no direction of its own either: meshoptimizer's
-// edge collapses leave such triangles in the overviews, three corners on one line of a flat face
-// closing a T-junction (the lake's bed along a wall at levels 13 to 10: its decoded face normal
-// 90 to 135 degrees off), drawn as nothing; each of its corners must carry the normal of a
-// triangle with a direction that shares a vertex with it (a neighbour's): checked above for a
-// corner that such a triangle uses, below for a corner only slivers use. Returns the corners
-// checked; counts the slivers.
+// small for a direction. A sliver (a triangle whose height over its longest side is within the
+// reach of the positions' quantization, mesh_glb.h: each coordinate rounded by up to half a
+// step, a flat triangle's corner can stand sqrt(3) steps off the line of the other two) has no
+// direction of its own either: meshoptimizer's edge collapses leave such triangles in the
+// overviews, three corners on one line of a flat face closing a T-junction (the lake's bed along
+// a wall at levels 13 to 10: its decoded face normal 90 to 135 degrees off), drawn as nothing;
+// each of its corners must carry the normal of a triangle with a direction that has a corner at
+// its place (a neighbour's; by place, since Draco may give a sliver's corners vertices of their
+// own): checked above for a corner that such a triangle uses, below for a corner only slivers
+// use. Returns the corners checked; counts the slivers.
 size_t check_normals(const DecodedPrimitive& p, size_t& slivers) {
   EXPECT_EQ(p.normals.size(), p.positions.size());
   if (p.normals.size() != p.positions.size()) return 0;
@@ -476,7 +478,7 @@ size_t check_normals(const DecodedPrimitive& p, size_t& slivers) {
     if (area2 < 1e-4) continue;  // too small for a direction
     const double longest = std::max({std::hypot(u[0], u[1], u[2]), std::hypot(w[0], w[1], w[2]),
                                      std::hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2])});
-    if (area2 / longest < step) {
+    if (area2 / longest < std::sqrt(3.0) * step) {
       sliver_faces.push_back(f);
       continue;
     }
@@ -489,12 +491,17 @@ size_t check_normals(const DecodedPrimitive& p, size_t& slivers) {
       ++checked;
     }
   }
+  // The directions of the faces at each place.
+  std::map<std::array<double, 3>, std::vector<Direction>> faces_at_place;
+  for (size_t v = 0; v < p.positions.size(); ++v)
+    for (const Direction& n : faces_at[v]) faces_at_place[p.positions[v]].push_back(n);
   for (const auto& f : sliver_faces)
     for (const uint32_t v : f) {
       if (!faces_at[v].empty()) continue;  // checked against a face with a direction above
       bool neighbours = false;
       for (const uint32_t shared : f)
-        for (const Direction& n : faces_at[shared]) neighbours = neighbours || along(v, n);
+        for (const Direction& n : faces_at_place[p.positions[shared]])
+          neighbours = neighbours || along(v, n);
       EXPECT_TRUE(neighbours) << "corner " << v << " of a sliver: not a neighbour's normal";
       ++checked;
     }

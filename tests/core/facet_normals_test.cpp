@@ -88,7 +88,9 @@ TEST(FacetNormals, AnUnusedVertexKeepsOneCopyFacingUp) {
 
 // The first implementation, kept as the oracle of the present one's bits: per vertex a vector of
 // its orientations in the order met, each corner taking the first within kFacetNormalTurnDeg of
-// its face's normal (a degenerate face the first, +z when none), the copies in vertex order.
+// its face's normal, the copies in vertex order; a degenerate face's corner (no area, or lower
+// than kFacetMinHeightM over its longest side) takes the first orientation of its vertex's other
+// faces, +z when none.
 MeshObject facet_normals_by_vertex_vectors(const MeshObject& object) {
   const size_t vertices = object.positions.size() / 3, triangles = object.indices.size() / 3;
   const auto position = [&](uint32_t v) {
@@ -98,6 +100,7 @@ MeshObject facet_normals_by_vertex_vectors(const MeshObject& object) {
   const double min_dot = std::cos(kFacetNormalTurnDeg * std::numbers::pi / 180);
   std::vector<std::vector<std::array<double, 3>>> orientations(vertices);
   std::vector<uint32_t> corner_orientation(object.indices.size());
+  std::vector<size_t> degenerate;  // triangles
   for (size_t t = 0; t < triangles; ++t) {
     const auto a = position(object.indices[3 * t]), b = position(object.indices[3 * t + 1]),
                c = position(object.indices[3 * t + 2]);
@@ -106,18 +109,28 @@ MeshObject facet_normals_by_vertex_vectors(const MeshObject& object) {
     std::array<double, 3> n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
                             u[0] * w[1] - u[1] * w[0]};
     const double length = std::hypot(n[0], n[1], n[2]);
-    for (double& x : n) x = length > 0 ? x / length : 0;
-    const bool degenerate = n[0] == 0 && n[1] == 0 && n[2] == 0;
+    const double longest = std::max({std::hypot(u[0], u[1], u[2]), std::hypot(w[0], w[1], w[2]),
+                                     std::hypot(w[0] - u[0], w[1] - u[1], w[2] - u[2])});
+    if (!(length > kFacetMinHeightM * longest)) {
+      degenerate.push_back(t);
+      continue;
+    }
+    for (double& x : n) x /= length;
     for (size_t k = 0; k < 3; ++k) {
       std::vector<std::array<double, 3>>& own = orientations[object.indices[3 * t + k]];
       size_t o = 0;
-      while (o < own.size() && !degenerate &&
-             own[o][0] * n[0] + own[o][1] * n[1] + own[o][2] * n[2] < min_dot)
+      while (o < own.size() && own[o][0] * n[0] + own[o][1] * n[1] + own[o][2] * n[2] < min_dot)
         ++o;
-      if (o == own.size()) own.push_back(degenerate ? std::array<double, 3>{0, 0, 1} : n);
-      corner_orientation[3 * t + k] = uint32_t(std::min(o, own.size() - 1));
+      if (o == own.size()) own.push_back(n);
+      corner_orientation[3 * t + k] = uint32_t(o);
     }
   }
+  for (const size_t t : degenerate)
+    for (size_t k = 0; k < 3; ++k) {
+      std::vector<std::array<double, 3>>& own = orientations[object.indices[3 * t + k]];
+      if (own.empty()) own.push_back({0, 0, 1});
+      corner_orientation[3 * t + k] = 0;
+    }
   MeshObject out;
   std::vector<uint32_t> first_copy(vertices);
   for (uint32_t v = 0; v < vertices; ++v) {

@@ -12,6 +12,7 @@
 #include <openvdb/openvdb.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -176,6 +177,7 @@ Lake expect_paraboloid_lake(const Site& site) {
   const double pixel_area = default_grid().area(0) / std::ldexp(1.0, 2 * (kLevel + 6));
   double volume = 0;
   size_t wet = 0;
+  float lowest_bed = INFINITY;
   for (const CellId cell : st->tile_cells("dem")) {
     const Tile<float> dem = test::float_tile(*st, "dem", cell),
                       depth = test::float_tile(*st, "water_depth", cell);
@@ -187,6 +189,7 @@ Lake expect_paraboloid_lake(const Site& site) {
         if (d > 0) {
           ++wet;
           volume += d;
+          lowest_bed = std::min(lowest_bed, z);
           EXPECT_NEAR(d, level - z, 1e-4);
         } else {
           EXPECT_EQ(d, 0);
@@ -206,11 +209,25 @@ Lake expect_paraboloid_lake(const Site& site) {
   EXPECT_NEAR(bodies[0]["level"].get<double>(), level, 1e-3);
   EXPECT_NEAR(bodies[0]["area_m2"].get<double>(), double(wet) * pixel_area, 1e-6);
   EXPECT_NEAR(bodies[0]["volume_m3"].get<double>(), volume, 1e-9 * volume);
-  // One closed mesh (water_mesh_test.cpp checks its shape), stored once, in its owner cell.
+  // One closed mesh (water_mesh_test.cpp checks its shape), stored once, in its owner cell: the
+  // prism of the shoreline (no triangle per wet pixel), every vertex at the level or on the flat
+  // bottom 1 m below the lowest bed (the DEM's heights: ellipsoidal here; the GLB's millimetres).
   const ContentLayerStats mesh = st->content_stats("water_mesh");
   EXPECT_EQ(mesh.cells, 1u);
   EXPECT_EQ(mesh.content.objects, 1u);
-  EXPECT_GT(mesh.content.triangles, 2 * wet);  // the bottom's two per pixel, walls and top
+  EXPECT_LT(mesh.content.triangles, wet / 4);
+  const MeshContent stored = stored_lake_mesh(basin.store);
+  const GeographicLib::LocalCartesian mesh_frame(stored.origin.lat, stored.origin.lon,
+                                                 stored.origin.height);
+  size_t off_level_and_floor = 0;
+  for (size_t k = 0; k + 2 < stored.objects.at(0).positions.size(); k += 3) {
+    const float* p = &stored.objects[0].positions[k];
+    double lat = 0, lon = 0, height = 0;
+    mesh_frame.Reverse(p[0], p[1], p[2], lat, lon, height);
+    off_level_and_floor +=
+        std::abs(height - level) > 0.01 && std::abs(height - (double(lowest_bed) - 1)) > 0.01;
+  }
+  EXPECT_EQ(off_level_and_floor, 0u) << "of " << stored.objects[0].positions.size() / 3;
 
   // The lake's fog volume, stored once, decoded with OpenVDB: its active voxels hold the raster's
   // volume within 1 %; their bounding box is the lake: the disk of radius 1500 m around the
@@ -302,7 +319,8 @@ TEST(DeformWater, OnAnEgm96DemTheLakeSitsOnTheEllipsoidalTerrain) {
 
 // The lake's mesh carries facet normals (CesiumJS draws a mesh without normals unlit): one unit
 // normal per vertex, each triangle's corners holding its own face's normal (computed here from
-// the decoded positions) within 2 degrees, so the surface's normals face up and the bottom's down;
+// the decoded positions) within 2 degrees, so the surface's normals face up and the bottom's down
+// (the flat bottom mirrors the surface: as many triangles);
 // welded by position (a corner copied once per face orientation), the mesh is still closed and
 // oriented: each edge once in each direction.
 TEST(DeformWater, LakeMeshCarriesFacetNormals) {
@@ -354,8 +372,8 @@ TEST(DeformWater, LakeMeshCarriesFacetNormals) {
                                     weld(lake.indices[t + 2])};
     for (size_t k = 0; k < 3; ++k) ++edges[{v[k], v[(k + 1) % 3]}];
   }
-  EXPECT_GT(up, 100u);         // the surface's strips
-  EXPECT_GT(down, 2 * 5000u);  // the bottom: two triangles per wet pixel
+  EXPECT_GT(up, 100u);  // the surface's strips
+  EXPECT_EQ(down, up);  // the flat bottom: the surface's triangles facing down
   for (const auto& [edge, count] : edges) {
     ASSERT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
     ASSERT_EQ(edges.count({edge.second, edge.first}), 1u)

@@ -1,15 +1,20 @@
 // lake_mesh (water_mesh.h): closed (each edge in exactly two triangles, once in each
 // direction), no degenerate triangle, its enclosed volume (divergence theorem) close to the
-// raster volume, the top triangulated from the shoreline (no vertex inside the lake); the same
-// mesh for any thread count.
+// raster volume with the terrain's bottom, and equal to the lake's area times its height with
+// the flat one; the top (and the flat bottom) triangulated from the shoreline (no vertex inside
+// the lake); the same mesh for any thread count.
 #include "../water_mesh.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <utility>
+#include <vector>
 
 #include "water_basins.h"
 
@@ -64,7 +69,7 @@ void expect_closed_and_oriented(const LakeMesh& m) {
 TEST(WaterMesh, HillsLakeIsClosedWithTheRasterVolume) {
   const Basin b = hills();
   const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
-  const LakeMesh m = lake_mesh(b.raster(), body);
+  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
   expect_closed_and_oriented(m);
   EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.01 * body.volume_m3);
 }
@@ -75,7 +80,7 @@ TEST(WaterMesh, LargeHillsLakeIsClosedWithTheRasterVolume) {
   const Basin b = hills(1000, 1000);
   const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
   ASSERT_GT(body.wet.size(), 300000u);
-  const LakeMesh m = lake_mesh(b.raster(), body);
+  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
   expect_closed_and_oriented(m);
   EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.01 * body.volume_m3);
 }
@@ -85,25 +90,27 @@ TEST(WaterMesh, LargeHillsLakeIsClosedWithTheRasterVolume) {
 TEST(WaterMesh, SameMeshForOneThreadAndMore) {
   const Basin b = hills(1000, 1000);
   const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
-  LakeMesh one;
-  {
-    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = lake_mesh(b.raster(), body);
-  }
-  const LakeMesh many = lake_mesh(b.raster(), body);
-  EXPECT_EQ(one.indices, many.indices);
-  ASSERT_EQ(one.vertices.size(), many.vertices.size());
-  for (size_t i = 0; i < one.vertices.size(); ++i) {
-    ASSERT_EQ(one.vertices[i].col, many.vertices[i].col) << i;
-    ASSERT_EQ(one.vertices[i].row, many.vertices[i].row) << i;
-    ASSERT_EQ(one.vertices[i].height, many.vertices[i].height) << i;
+  for (const LakeBottom bottom : {LakeBottom::Terrain, LakeBottom::Flat}) {
+    LakeMesh one;
+    {
+      const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+      one = lake_mesh(b.raster(), body, bottom);
+    }
+    const LakeMesh many = lake_mesh(b.raster(), body, bottom);
+    EXPECT_EQ(one.indices, many.indices);
+    ASSERT_EQ(one.vertices.size(), many.vertices.size());
+    for (size_t i = 0; i < one.vertices.size(); ++i) {
+      ASSERT_EQ(one.vertices[i].col, many.vertices[i].col) << i;
+      ASSERT_EQ(one.vertices[i].row, many.vertices[i].row) << i;
+      ASSERT_EQ(one.vertices[i].height, many.vertices[i].height) << i;
+    }
   }
 }
 
 TEST(WaterMesh, ParaboloidTopHasOnlyShorelineVertices) {
   const Basin b = paraboloid();
   const WaterBody body = fill_basin(b.raster(), 100);
-  const LakeMesh m = lake_mesh(b.raster(), body);
+  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
   expect_closed_and_oriented(m);
   EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.005 * body.volume_m3);
   // Top vertices (at the level): the shoreline's corners only, each touching a dry pixel, far
@@ -122,6 +129,66 @@ TEST(WaterMesh, ParaboloidTopHasOnlyShorelineVertices) {
     EXPECT_TRUE(shore) << "top vertex at corner (" << c << ", " << r << ") inside the lake";
   }
   EXPECT_LT(top, body.wet.size() / 20);
+}
+
+// Whether corner (col, row) touches a dry pixel.
+bool on_shore(const Basin& b, const WaterBody& body, const LakeVertex& v) {
+  const int64_t c = int64_t(v.col), r = int64_t(v.row);
+  bool shore = false;
+  for (int q = 0; q < 4; ++q) {
+    const int64_t pc = c - 1 + (q & 1), pr = r - 1 + (q >> 1);
+    shore = shore || !std::binary_search(body.wet.begin(), body.wet.end(), pr * b.width + pc);
+  }
+  return shore;
+}
+
+// The flat bottom: the prism of the lake's outline (islands as holes), 1 m below its lowest bed;
+// every vertex a shoreline corner, at the level or at the bottom; its volume the wet pixels'
+// area times the prism's height (the divergence theorem's sum, to rounding); the top the same
+// as the terrain-bottomed mesh's.
+void expect_flat_prism(const Basin& b, const WaterBody& body) {
+  const LakeMesh flat = lake_mesh(b.raster(), body, LakeBottom::Flat);
+  expect_closed_and_oriented(flat);
+  float lowest = INFINITY;
+  for (const int64_t i : body.wet) lowest = std::min(lowest, b.terrain[size_t(i)]);
+  const double floor = double(lowest) - 1;
+  EXPECT_EQ(lake_flat_bottom(b.raster(), body), floor);
+  const double area = double(body.wet.size()) * b.pixel_m * b.pixel_m;
+  EXPECT_NEAR(enclosed_volume(flat, b.pixel_m), area * (body.level - floor),
+              1e-9 * area * (body.level - floor));
+  size_t faults = 0;
+  for (const LakeVertex& v : flat.vertices)
+    faults += !on_shore(b, body, v) || (v.height != body.level && v.height != floor);
+  EXPECT_EQ(faults, 0u) << "of " << flat.vertices.size() << " vertices";
+  // The top's triangles (at the level), as corners, are the terrain-bottomed mesh's.
+  const auto top = [&](const LakeMesh& m) {
+    std::vector<std::array<double, 6>> out;
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+      std::array<double, 6> corners;
+      bool at_level = true;
+      for (size_t k = 0; k < 3; ++k) {
+        const LakeVertex& v = m.vertices[m.indices[t + k]];
+        at_level = at_level && v.height == body.level;
+        corners[2 * k] = v.col, corners[2 * k + 1] = v.row;
+      }
+      if (at_level) out.push_back(corners);
+    }
+    return out;
+  };
+  const LakeMesh terrain = lake_mesh(b.raster(), body, LakeBottom::Terrain);
+  EXPECT_EQ(top(flat), top(terrain));
+  std::printf("flat bottom: %zu triangles, %zu vertices; on the terrain: %zu, %zu\n",
+              flat.indices.size() / 3, flat.vertices.size(), terrain.indices.size() / 3,
+              terrain.vertices.size());
+}
+
+TEST(WaterMesh, FlatBottomMakesThePrismOfTheShoreline) {
+  const Basin p = paraboloid();
+  expect_flat_prism(p, fill_basin(p.raster(), 100));
+  const Basin h = hills(600, 500);
+  expect_flat_prism(h, fill_basin(h.raster(), water_level(h.raster(), {})));
+  const Basin large = hills(1000, 1000);
+  expect_flat_prism(large, fill_basin(large.raster(), water_level(large.raster(), {})));
 }
 
 }  // namespace
