@@ -1,6 +1,7 @@
 #include "runtime/cell_plan.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace maquette {
 
@@ -13,12 +14,19 @@ std::span<const CellId> CellPlan::chunk(size_t i) const {
                                                  std::min(chunk_size_, cells_.size() - begin));
 }
 
-CellPlan CellPlan::share(int rank, int ranks) const {
+CellPlan CellPlan::share(int rank, int ranks, double first_weight) const {
   const size_t n = cells_.size(), r = size_t(rank), k = size_t(ranks);
-  const size_t begin = n / k * r + std::min(r, n % k);
-  const size_t end = begin + n / k + (r < n % k ? 1 : 0);
-  return CellPlan(std::vector<CellId>(cells_.begin() + long(begin), cells_.begin() + long(end)),
-                  chunk_size_);
+  const auto part = [&](size_t begin, size_t end) {
+    return CellPlan(std::vector<CellId>(cells_.begin() + long(begin), cells_.begin() + long(end)),
+                    chunk_size_);
+  };
+  const size_t first =
+      std::min(n, size_t(std::ceil(double(n) * first_weight / (first_weight + double(k - 1)))));
+  if (r == 0) return part(0, first);
+  // The other k - 1 ranks share the rest evenly: rank r is the (r - 1)-th of them.
+  const size_t rest = n - first, i = r - 1, others = k - 1;
+  const size_t begin = first + rest / others * i + std::min(i, rest % others);
+  return part(begin, begin + rest / others + (i < rest % others ? 1 : 0));
 }
 
 size_t default_chunk_size(size_t cells, int threads) {

@@ -24,9 +24,12 @@ class CellPlan {
   size_t chunk_begin(size_t i) const { return i * chunk_size_; }
   std::span<const CellId> chunk(size_t i) const;
 
-  // The contiguous part `rank` of `ranks` (sizes differ by at most one cell). For sharing a run
-  // among MPI ranks (a later issue): not used by the runner yet, only unit-tested.
-  CellPlan share(int rank, int ranks) const;
+  // The contiguous part `rank` of `ranks`, for sharing a step among MPI ranks. Rank 0's part is
+  // weighted `first_weight` (> 0) against 1 for each other rank: it gets
+  // ceil(cells * first_weight / (first_weight + ranks - 1)) cells (all of them when alone), the
+  // others the rest, their sizes differing by at most one cell. A weight of 1 gives every part
+  // the same size within one cell.
+  CellPlan share(int rank, int ranks, double first_weight = 1.0) const;
 
  private:
   std::vector<CellId> cells_;

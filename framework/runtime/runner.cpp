@@ -26,6 +26,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Under --store-copies, the writer's weight (the other ranks' is 1) in sharing the cells of a
+// step whose batches it alone commits (no later step reads them on the copies): it also commits
+// the other ranks' batches and builds every output layer's overviews while they wait. 0.7 made
+// the 2 ranks' CPU times equal within 3 % on benchmarks/mpi (benchmarks/README.md); the bits do
+// not depend on it.
+constexpr double kWriterWeight = 0.7;
+
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -421,7 +428,9 @@ class Runner {
 
   // This rank's contiguous part of `cells` (sorted), in chunks for its threads.
   CellPlan share(std::vector<CellId> cells) const {
-    const CellPlan part = CellPlan(std::move(cells), 1).share(ranks_.rank(), ranks_.size());
+    const CellPlan part =
+        CellPlan(std::move(cells), 1)
+            .share(ranks_.rank(), ranks_.size(), copies_ && !to_copies_ ? kWriterWeight : 1.0);
     return CellPlan(part.cells(), default_chunk_size(part.size(), threads_));
   }
 

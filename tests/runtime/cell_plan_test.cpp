@@ -38,6 +38,27 @@ TEST(CellPlan, SharesAreDisjointContiguousAndInOrder) {
   EXPECT_EQ(plan.share(15, 20).size(), 0u);
 }
 
+// Rank 0 weighted 0.8 against 1: ceil(256 * 0.8 / 1.8) = 114 of 256 cells, the other 142; with
+// 3 ranks ceil(256 * 0.8 / 2.8) = 74, the other two 91 each. Contiguous and in order either way.
+TEST(CellPlan, WeightedFirstShareIsSmaller) {
+  const CellPlan plan(cells(256), 1);
+  for (const auto& [ranks, sizes] : std::vector<std::pair<int, std::vector<size_t>>>{
+           {1, {256}}, {2, {114, 142}}, {3, {74, 91, 91}}}) {
+    std::vector<CellId> joined;
+    for (int rank = 0; rank < ranks; ++rank) {
+      const CellPlan share = plan.share(rank, ranks, 0.8);
+      EXPECT_EQ(share.size(), sizes[size_t(rank)]) << rank << " of " << ranks;
+      joined.insert(joined.end(), share.cells().begin(), share.cells().end());
+    }
+    EXPECT_EQ(joined, plan.cells());
+  }
+  // Fewer cells than ranks: rank 0 still gets its rounded-up part, the others what is left.
+  const CellPlan few(cells(2), 1);
+  EXPECT_EQ(few.share(0, 3, 0.8).size(), 1u);
+  EXPECT_EQ(few.share(1, 3, 0.8).size(), 1u);
+  EXPECT_EQ(few.share(2, 3, 0.8).size(), 0u);
+}
+
 TEST(CellPlan, DefaultChunkSizeBalancesThreads) {
   EXPECT_EQ(default_chunk_size(0, 4), 1u);
   EXPECT_EQ(default_chunk_size(320, 4), 10u);
