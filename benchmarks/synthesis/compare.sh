@@ -4,11 +4,13 @@
 # ebsynth (public domain) is cloned into a temporary folder, or taken from EBSYNTH_SRC, and
 # compiled into the driver only (never committed).
 # Usage: benchmarks/synthesis/compare.sh [build-dir (build)] [side (512)] [threads (2)]
+#        [coherence step (2): the measure's sample, every step-th column and row]
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-build}
 side=${2:-512}
 threads=${3:-2}
+step=${4:-2}
 src=${EBSYNTH_SRC:-}
 if [ -z "$src" ]; then
   src=$(mktemp -d)/ebsynth
@@ -18,5 +20,5 @@ cmake -S "$root" -B "$build" -DEBSYNTH_SRC="$src" >/dev/null
 cmake --build "$build" --target synthesis_ebsynth_compare synthesis_benchmark
 # Leaves the build as it was: no driver without a clone.
 cmake -S "$root" -B "$build" -UEBSYNTH_SRC >/dev/null
-"$build/bin/synthesis_ebsynth_compare" "$side" "$threads"
+"$build/bin/synthesis_ebsynth_compare" "$side" "$threads" "$step"
 "$build/bin/synthesis_benchmark" --benchmark_counters_tabular=true

@@ -4,8 +4,10 @@
 // pixels, which no target pixel has), the target's classes the same way; ebsynth's command-line
 // defaults otherwise (5 x 5 patches, uniformity 3500, plain votes, 6 search-vote and 4
 // PatchMatch iterations per level). Prints CPU and wall times, s per output megapixel and both
-// outputs' measures (assess_metrics.h; ebsynth's sources from its nearest-neighbour field).
-// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)]
+// outputs' measures (assess_metrics.h; ebsynth's sources from its nearest-neighbour field), the
+// coherence at every `step`-th column and row (the exact 5 x 5 search at every 2nd pixel takes
+// minutes of CPU per image; 8 is what benchmarks/README.md's later rows use).
+// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)] [coherence step (2)]
 #include <omp.h>
 
 #include <chrono>
@@ -53,7 +55,7 @@ void print(const char* name, const Metrics& m) {
   std::printf("\n");
 }
 
-int run(int side, int threads) {
+int run(int side, int threads, int step) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
@@ -101,9 +103,9 @@ int run(int side, int threads) {
               ebsynth_time.cpu / mp, ebsynth_time.wall, ebsynth_time.wall / mp);
   std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth_time.cpu / ours_time.cpu,
               ebsynth_time.wall / ours_time.wall);
-  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, 2));
+  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, step));
   const Metrics ebsynth_m =
-      metrics(e, tally(e, assessed(out, ebsynth_source, ebsynth_rgb), out, 2));
+      metrics(e, tally(e, assessed(out, ebsynth_source, ebsynth_rgb), out, step));
   print("ours", ours_m);
   print("ebsynth", ebsynth_m);
   std::printf("coherence ours / ebsynth: %.2f\n", ours_m.coherence / ebsynth_m.coherence);
@@ -116,5 +118,10 @@ int run(int side, int threads) {
 int main(int argc, char** argv) {
   const int side = argc > 1 ? std::stoi(argv[1]) : 512;
   const int threads = argc > 2 ? std::stoi(argv[2]) : 2;
-  return maquette::synthesis::bench::run(side, threads);
+  const int step = argc > 3 ? std::stoi(argv[3]) : 2;
+  if (step < 1) {
+    std::fprintf(stderr, "synthesis_ebsynth_compare: coherence step %d: must be >= 1\n", step);
+    return 1;
+  }
+  return maquette::synthesis::bench::run(side, threads, step);
 }
