@@ -21,6 +21,10 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180;
 using Rgb = std::array<double, 3>;
 constexpr Rgb kEarth{196, 184, 160};
+// Terrain the texture has no texel for (a DEM reaching past the imagery's edge): the middle of
+// the display range, about a stretched texel's mean. The light earth colour drew such a strip
+// along a far edge as a bright rim on the skyline (Zion's DEM reaches 600 m past its Landsat).
+constexpr Rgb kNoTexel{128, 128, 128};
 
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
@@ -224,7 +228,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     for (int col = 0; col < w; ++col) {
       const size_t i = start + size_t(col);
       if (f.triangle[i] == Fragments::kSky) continue;
-      Rgb colour = kEarth;
+      Rgb colour = look.texture ? kNoTexel : kEarth;
       if (!std::isnan(texels[3 * i]))
         for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texels[3 * i + k], stretch[k]);
       for (double& c : colour) c *= p.shading[i];

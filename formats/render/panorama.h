@@ -1,7 +1,8 @@
 // A panorama and its guides from what each pixel sees (render/rasterizer.h) of a terrain scene
 // (render/terrain_scene.h): the surface's colour (an imagery layer sampled bilinearly where the
 // pixel sees it: at the point of the grid's plane interpolated in its triangle, or at its lon/lat
-// where a corner is off its tile's face; stretched for display, or a plain earth colour), shaded
+// where a corner is off its tile's face; stretched for display; where it has no texel, the middle
+// of the display range, grey 128; without imagery, a plain earth colour), shaded
 // by the DEM's normals under a sun, faded into the haze with distance (aerial perspective: a
 // fraction 1 - exp(-distance / haze_distance) of the haze colour), over a sky graded from the haze
 // colour at the horizon to blue at 30 degrees up (render/sky.h). Guides per pixel: the DEM's

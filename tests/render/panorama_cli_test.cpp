@@ -5,8 +5,9 @@
 // silhouette, the land-cover guide the class at the guide's lon/lat; --look-at and --above-ground
 // aim and place the camera where PROJ says, --exaggeration scales the heights; a bent panorama
 // (--bend-radius) puts each guide point where the test's own bend of PROJ's point projects, its
-// horizon higher than the unbent one's, an infinite radius the unbent picture bit for bit; the
-// same bytes for 1 and 2 threads, bent or not; bad input named.
+// horizon higher than the unbent one's, an infinite radius the unbent picture bit for bit; terrain
+// without a texel drawn grey 128 (times its shading); the same bytes for 1 and 2 threads, bent or
+// not; bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -385,6 +386,50 @@ std::vector<uint8_t> picture(const std::string& path) {
                          nullptr),
             CE_None);
   return rgb;
+}
+
+// Imagery over the west half of the DEM only: terrain without a texel is drawn in the middle of
+// the display range (128 grey) times its shading, not in a light earth colour that drew a strip of
+// DEM past the imagery's edge as a bright rim on the skyline; terrain with one shows it. The
+// colours are checked from the shading guide, with no haze (a huge haze distance) and
+// the values as stored (--no-stretch).
+TEST(PanoramaCli, TerrainWithoutTexelIsMidGrey) {
+  const Fixture& f = fixture();
+  const std::string dir = test::temp_dir(), store = dir + "/half.mqt";
+  std::filesystem::copy_file(f.store, store);
+  test::RasterSpec west = test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte");
+  west.width = 300;  // up to lon 10.15
+  west.bands = 3;
+  const std::array<double, 3> texel{60, 90, 40};
+  test::write_raster(dir + "/west.tif", west,
+                     [&](int band, double, double) { return texel[size_t(band - 1)]; });
+  const auto t =
+      run_maquette("-q ingest " + store + " --layer rgb --as imagery " + dir + "/west.tif");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const std::string out = dir + "/half.png";
+  const auto r = run_maquette("render panorama " + store + " " + out +
+                              " --dem dem --texture rgb --no-stretch --haze-distance 1e15 " +
+                              "--camera 10.15 45.02 1500 " + kView);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::unique_ptr<GDALDataset> guides(
+      GDALDataset::Open((dir + "/half-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(guides);
+  const auto lon = band(*guides, 3), shading = band(*guides, guides->GetRasterCount());
+  const std::vector<uint8_t> rgb = picture(out);
+  ASSERT_EQ(rgb.size(), lon.size() * 3);
+  size_t textured = 0, bare = 0;
+  double worst = 0;
+  for (size_t i = 0; i < lon.size(); ++i) {
+    if (std::isnan(lon[i]) || std::abs(lon[i] - 10.15) < 0.001)
+      continue;  // sky, 2 samples of the edge
+    const bool has_texel = lon[i] < 10.15;
+    ++(has_texel ? textured : bare);
+    for (size_t k = 0; k < 3; ++k)
+      worst = std::max(worst, std::abs(rgb[3 * i + k] - (has_texel ? texel[k] : 128) * shading[i]));
+  }
+  EXPECT_LE(worst, 0.5 + 1e-6);  // rounding alone
+  EXPECT_GT(textured, 5000u);
+  EXPECT_GT(bare, 5000u);
 }
 
 // A sample on a tile's border is drawn by both tiles (the halo's ring overlaps the neighbour):
