@@ -64,7 +64,9 @@ void PixelMapper::map(CellId cell, int size, PixelMap& out) {
   size_t centre = 0;
   for (const Block& b : blocks) {
     const auto [c0, c1, r0, r1, k00, k01, k10, k11, check] = b;
-    const auto interp = [&](const std::vector<double>& v, double fc, double fr) {
+    // (k00 = k00, ...: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+    const auto interp = [k00 = k00, k01 = k01, k10 = k10, k11 = k11](const std::vector<double>& v,
+                                                                     double fc, double fr) {
       return (1 - fr) * ((1 - fc) * v[k00] + fc * v[k01]) + fr * ((1 - fc) * v[k10] + fc * v[k11]);
     };
     // Interpolation fills the block when it is within kMaxError of the exact centre.

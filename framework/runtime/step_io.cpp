@@ -39,7 +39,8 @@ CellData StepIO::load(CellId cell, int halo) {
   CellData data;
   for (const auto& [port, layer] : plan_.inputs) {
     // Without a halo each tile is read once: caching it would only evict useful tiles.
-    auto fetch = [&](CellId c) -> std::optional<Tile<float>> {
+    // (&layer = layer: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+    auto fetch = [&, &layer = layer](CellId c) -> std::optional<Tile<float>> {
       if (halo == 0) return read(layer, c);
       return *cache_.get(layer.name, c, [&] { return read(layer, c); });
     };

@@ -31,7 +31,8 @@ size_t Store::Impl::rebuild_stale(sqlite::Connection& c, const LayerEntry& e, in
   std::vector<std::vector<std::byte>> blobs(cells.size());
   std::vector<RawTile> overviews(cells.size());
   const Codec codec = parse_codec(e.info.codec);
-  tbb::this_task_arena::isolate([&] {
+  // (&cells = cells: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+  tbb::this_task_arena::isolate([&, &cells = cells, &children = children] {
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
       std::array<std::optional<RawTile>, 4> tiles;
       std::array<const RawTile*, 4> ptrs{};

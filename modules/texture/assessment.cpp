@@ -164,7 +164,8 @@ std::string assessment_table(const nlohmann::json& r) {
                   a[0].get<double>(), a[1].get<double>(), a[2].get<double>(), b[0].get<double>(),
                   b[1].get<double>(), b[2].get<double>());
     s += buf;
-    const auto ratio = [&](const char* key) {
+    // (&c = c: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+    const auto ratio = [&c = c](const char* key) {
       return c.contains(key) && !c[key].is_null() ? c[key].get<double>() : 0.0;
     };
     std::snprintf(buf, sizeof buf, "   %9.2f  %8.1f  %10.1f  %5.2f  %7.2f\n",

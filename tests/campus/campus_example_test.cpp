@@ -519,7 +519,8 @@ TEST(CampusExample, BuildingsDeckAndWaterAreLitWhereTheSunDoesNotReach) {
   const std::array<std::string, 3> kLit{"buildings", "bridge", "water"};
   std::map<std::string, size_t> checked, slivers;
   for (const auto& [uri, glb] : out.glbs) {
-    const auto layer = std::find_if(kLit.begin(), kLit.end(), [&](const std::string& l) {
+    // (&uri = uri: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+    const auto layer = std::find_if(kLit.begin(), kLit.end(), [&uri = uri](const std::string& l) {
       return uri.ends_with("." + l + ".glb");
     });
     if (layer == kLit.end()) continue;

@@ -196,7 +196,8 @@ TEST(MeshGlb, PropertyTableFollowsExtStructuralMetadata) {
   EXPECT_EQ(table["class"], "object");
   const json& properties = table["properties"];
   EXPECT_EQ(properties.size(), ext["schema"]["classes"]["object"]["properties"].size());
-  const auto view = [&](const json& index) {
+  // (&j = j, ...: clang 14, the fuzz build's compiler, cannot capture a structured binding)
+  const auto view = [&j = j, &bin = bin](const json& index) {
     const json& v = j["bufferViews"][index.get<size_t>()];
     return std::pair{v["byteOffset"].get<size_t>(),
                      bin.substr(v["byteOffset"].get<size_t>(), v["byteLength"].get<size_t>())};
