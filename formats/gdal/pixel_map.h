@@ -23,8 +23,7 @@ class PixelMapper {
   static constexpr int kStep = 16;
   static constexpr double kMaxError = 0.125;  // source pixels
 
-  PixelMapper(const Grid& grid, const RasterSource& source)
-      : grid_(grid), source_(source), transform_(source) {}
+  PixelMapper(const Grid& grid, const RasterSource& source) : grid_(grid), transform_(source) {}
 
   void map(CellId cell, int size, PixelMap& out);
 
@@ -32,7 +31,6 @@ class PixelMapper {
   // Exact source pixel coordinates of tile samples (col, row) given as doubles.
   void exact(CellId cell, int size, std::vector<double>& col_x, std::vector<double>& row_y);
   const Grid& grid_;
-  const RasterSource& source_;
   SourceTransform transform_;
 };
 

@@ -95,7 +95,7 @@ MeshObject simplified_once(const MeshObject& o, double max_error_m) {
 bool has_facet_normals(const MeshObject& o) {
   if (o.normals.size() != o.positions.size()) return false;
   const double tolerance = std::cos(2 * kFacetNormalTurnDeg * M_PI / 180);
-  const auto at = [&o](const std::vector<float>& values, uint32_t v) {
+  const auto at = [](const std::vector<float>& values, uint32_t v) {
     return std::array<double, 3>{values[3 * v], values[3 * v + 1], values[3 * v + 2]};
   };
   for (size_t t = 0; t + 2 < o.indices.size(); t += 3) {
