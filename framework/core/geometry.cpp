@@ -102,6 +102,9 @@ class WkbReader {
     // Ingest stores finite coordinates only; NaN would reach the callers' arithmetic unchecked.
     if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || (h.has_z && !std::isfinite(p.z)))
       fail("has a coordinate that is not finite");
+    // Stored geometries are lon/lat (ingest transforms them to WGS84); callers' geodesy turns a
+    // latitude beyond a pole into NaN.
+    if (std::abs(p.lat) > 90) fail("has a latitude of " + std::to_string(p.lat) + " degrees");
     return p;
   }
 

@@ -38,8 +38,8 @@ struct Geometry {
 // Parses ISO or EWKB (2D, Z, M or ZM: M is dropped), either byte order. Throws maquette::Error
 // prefixed with `where` (e.g. "feature 3 of 'roads'"): "... has truncated WKB", "... is a
 // GeometryCollection, not a Point, LineString, Polygon or one of their Multi* forms", a Multi*
-// part of another type, or "... has a coordinate that is not finite" (lon, lat, or Z when it has
-// Z).
+// part of another type, "... has a coordinate that is not finite" (lon, lat, or Z when it has
+// Z), or "... has a latitude of 7782.348801 degrees" (outside [-90, 90]).
 Geometry parse_wkb(std::span<const std::byte> wkb, const std::string& where);
 
 }  // namespace maquette

@@ -30,8 +30,10 @@ bool polygon_contains(const PolygonRings& polygon, LonLat p) {
 }
 
 size_t PolygonSet::Banded::band(double lat) const {
-  const double k = (lat - south) * bands_per_degree;  // monotonic in lat
-  return size_t(std::clamp(k, 0.0, double(first.size() - 2)));
+  // Monotonic in lat. NaN at the south edge of a polygon whose extent is so small (subnormal)
+  // that bands_per_degree is infinite (0 * inf): band 0, as NaN must not be converted.
+  const double k = (lat - south) * bands_per_degree;
+  return size_t(k > 0 ? std::min(k, double(first.size() - 2)) : 0.0);
 }
 
 PolygonSet::PolygonSet(const std::vector<PolygonRings>& polygons) {

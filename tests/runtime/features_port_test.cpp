@@ -27,6 +27,7 @@
 #include "core/geo_distance.h"
 #include "core/geometry.h"
 #include "core/grid.h"
+#include "core/polygon_set.h"
 #include "run_cli.h"
 #include "store/store.h"
 #include "test_util.h"
@@ -483,6 +484,22 @@ TEST(FeaturesPort, WkbWithANonFiniteCoordinateIsRefused) {
   for (const auto& wkb : {line(2, {0, 0, 1, nan}), line(1002, {0, 0, 1, 1, 1, inf})})
     EXPECT_EQ(test::error_of([&] { parse_wkb(wkb, "feature 3 of 'lakes'"); }),
               "feature 3 of 'lakes' has a coordinate that is not finite");
+  // Found by fuzz_strokes (UBSan: a vegetation stroke's NaN latitude converted to an integer).
+  EXPECT_NO_THROW(parse_wkb(line(2, {0, -90, 1, 90}), "f"));
+  EXPECT_EQ(test::error_of([&] {
+              parse_wkb(line(2, {0, 0, 1, -90.5}), "feature 3 of 'lakes'");
+            }),
+            "feature 3 of 'lakes' has a latitude of -90.500000 degrees");
+}
+
+// Found by fuzz_strokes (UBSan): a polygon so flat (a subnormal extent in latitude) that its
+// bands per degree are infinite put its south edge in band NaN (0 * inf).
+TEST(FeaturesPort, PolygonSetOfSubnormalHeightAgreesWithItsRings) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const PolygonRings square{{{0, 0}, {1, 0}, {1, tiny}, {0, tiny}, {0, 0}}};
+  const PolygonSet set({square});
+  for (const LonLat p : {LonLat{0.5, 0}, LonLat{0.5, tiny}, LonLat{0.5, -1}, LonLat{2, 0}})
+    EXPECT_EQ(set.contains(p), polygon_contains(square, p));
 }
 
 // distance_m from a point against GEOS on the plane, for every stroke and points around.
