@@ -7,6 +7,7 @@
 #include <chrono>
 #include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <list>
 #include <numeric>
@@ -103,6 +104,13 @@ class MpiRanks final : public Ranks {
       return done != 0;
     });
     return posted_.size();
+  }
+
+  [[noreturn]] void abort(const std::string& message) override {
+    std::fprintf(stderr, "%s\n", message.c_str());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, EXIT_FAILURE);
+    std::_Exit(EXIT_FAILURE);  // MPI_Abort does not return; the compiler cannot know
   }
 
  private:

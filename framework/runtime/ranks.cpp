@@ -2,6 +2,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "core/error.h"
@@ -21,6 +22,11 @@ class SingleProcess final : public Ranks {
   }
   std::optional<Message> poll() override { return std::nullopt; }
   size_t sending() override { return 0; }
+  [[noreturn]] void abort(const std::string& message) override {
+    std::fprintf(stderr, "%s\n", message.c_str());
+    std::fflush(stderr);
+    std::_Exit(EXIT_FAILURE);
+  }
 };
 
 // Open MPI's mpirun, MPICH's and Intel's mpiexec (PMI), srun with PMI-2 or PMIx.

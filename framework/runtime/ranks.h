@@ -35,6 +35,10 @@ class Ranks {
   virtual std::optional<Message> poll() = 0;
   // Moves the posted messages along; how many are not yet sent to every rank they go to.
   virtual size_t sending() = 0;
+  // Writes `message` to this rank's stderr and ends every rank of the job, non-zero. For a
+  // failure the other ranks cannot hear of: they wait for messages this rank will never send,
+  // so they would never reach a collective that reports it.
+  [[noreturn]] virtual void abort(const std::string& message) = 0;
 };
 
 // This process alone.

@@ -1,5 +1,7 @@
 #include "runtime/write_relay.h"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -70,14 +72,24 @@ void WriteRelay::run(const std::function<void()>& work, bool to_copies) {
     pass_messages(working, write_failure);
   } catch (...) {
     // Passing messages failed (out of memory, say): the work is stopped (relay() throws) and
-    // joined before the error leaves.
+    // joined. The other ranks wait for this rank's messages and would never reach the collective
+    // that reports an error, so with other ranks the job ends here, naming the rank.
     {
       std::lock_guard lock(mutex_);
       stopped_ = true;
     }
     room_.notify_all();
     worker.join();
-    throw;
+    if (ranks_.size() == 1) throw;
+    std::string what = "an unknown error";
+    try {
+      throw;
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    ranks_.abort(fmt::format("rank {} of {}: passing the batches between the ranks failed: {}",
+                             ranks_.rank(), ranks_.size(), what));
   }
   worker.join();
   if (failure) std::rethrow_exception(failure);

@@ -48,7 +48,9 @@ class WriteRelay {
   // `to_copies`: whether the batches go to the copies too (false when no later step reads them
   // there: the writer alone writes them). Returns once every rank's work has ended and every
   // batch is written where it goes; then rethrows what `work` threw, or else the first error
-  // writing a batch received.
+  // writing a batch received. When passing the messages itself fails (out of memory receiving a
+  // batch, say), the other ranks would wait for this rank forever: with other ranks the job is
+  // ended (Ranks::abort) with a message naming this rank and the error.
   void run(const std::function<void()>& work, bool to_copies);
   // Whether this rank commits its own batches to its store (the writer's, or a copy that keeps
   // them), and whether it relays them (to the writer, or from the writer to the copies): StepIO

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 
 #include "runtime/message_pieces.h"
 #include "runtime/ranks.h"
@@ -99,6 +100,55 @@ TEST(MpiWriteRelay, MemoryIsBoundedAndEveryStoreGetsEveryBatch) {
   }
   ranks.all_gather("");  // every rank is done with its store
   if (ranks.root()) fs::remove_all(dir);
+}
+
+// This job's ranks, except that rank 1's poll() fails as if out of memory receiving a batch.
+class FailingPollOnRank1 final : public Ranks {
+ public:
+  explicit FailingPollOnRank1(Ranks& ranks) : ranks_(ranks) {}
+  int rank() const override { return ranks_.rank(); }
+  int size() const override { return ranks_.size(); }
+  std::vector<std::string> all_gather(const std::string& bytes) override {
+    return ranks_.all_gather(bytes);
+  }
+  void post(const std::vector<int>& to, std::string bytes) override {
+    ranks_.post(to, std::move(bytes));
+  }
+  std::optional<Message> poll() override {
+    if (ranks_.rank() == 1) throw std::bad_alloc();
+    return ranks_.poll();
+  }
+  size_t sending() override { return ranks_.sending(); }
+  [[noreturn]] void abort(const std::string& message) override { ranks_.abort(message); }
+
+ private:
+  Ranks& ranks_;
+};
+
+// Run as a test of its own (CMakeLists.txt): the job must end within its timeout, its output
+// naming the failing rank and the error; before, the other ranks waited for rank 1 forever.
+TEST(MpiWriteRelayFailure, AFailurePassingMessagesEndsTheJobNamingTheRank) {
+  FailingPollOnRank1 ranks(*the_ranks);
+  ASSERT_EQ(ranks.size(), 3) << "run under mpirun -np 3";
+  // In the test's working directory, which the job ends without cleaning.
+  const std::string path = "relay-failure-rank" + std::to_string(ranks.rank()) + ".mqt";
+  fs::remove(path);
+  auto store = Store::open(path, Store::Mode::Create);
+  store->create_layer(noise_layer());
+  WriteRelay relay(ranks, *store);
+  const std::vector<CellId> all = cells();
+  relay.run(
+      [&] {
+        for (size_t i = size_t(ranks.rank()); i < 64; i += size_t(ranks.size())) {
+          Store::Batch batch(*store);
+          batch.put_tile("noise", all[i], tile_of(all[i]));
+          std::string bytes = batch.serialize();
+          batch.commit();
+          relay.relay(std::move(bytes));
+        }
+      },
+      true);
+  ADD_FAILURE() << "rank " << ranks.rank() << " returned from a relay that failed on rank 1";
 }
 
 }  // namespace
