@@ -32,6 +32,18 @@ class MpiRanks final : public Ranks {
       MPI_Finalize();
       throw Error("the MPI library does not provide MPI_THREAD_FUNNELED");
     }
+    // A message's sender and receiver must cut it into the same pieces: a rank given another
+    // size (mpirun passes a variable to other nodes only with -x) is refused here, by every
+    // rank alike, not by MPI's truncation error in the middle of a run.
+    const std::vector<std::string> limits = all_gather(std::to_string(piece_limit_));
+    for (size_t r = 1; r < limits.size(); ++r)
+      if (limits[r] != limits[0]) {
+        MPI_Finalize();
+        throw Error(
+            fmt::format("{} differs between the ranks: {} on rank 0, {} on rank {}: give "
+                        "every rank the same (mpirun -x {})",
+                        kPieceLimitVariable, limits[0], limits[r], r, kPieceLimitVariable));
+      }
   }
   ~MpiRanks() override { MPI_Finalize(); }
   MpiRanks(const MpiRanks&) = delete;
@@ -136,8 +148,7 @@ class MpiRanks final : public Ranks {
   }
 
   int rank_ = 0, size_ = 1;
-  // The sender's and the receiver's must be the same: every rank reads it from the environment
-  // the launcher gives all.
+  // The sender's and the receiver's must be the same: checked when the ranks start.
   size_t piece_limit_ = piece_limit(std::getenv(kPieceLimitVariable));
   std::list<Posted> posted_;  // a list: requests keep their address while others complete
 };

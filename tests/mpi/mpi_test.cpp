@@ -535,6 +535,26 @@ TEST(MpiStoreCopies, DifferentCopyIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(fs::exists(rank_dir(dir, 2) / "out.mqt"));
 }
 
+// Ranks cutting messages into pieces of different sizes are refused when they start, naming the
+// variable and the ranks (the variable set for rank 1's program only).
+TEST(MpiStoreCopies, DifferentPieceSizesAreRefused) {
+  const std::string dir = write_pipeline();
+  copy_store(dir, 2);
+  std::string command = copies_command(dir, 2);
+  const std::string rank1 = "-wdir " + rank_dir(dir, 1).string() + " ";
+  const size_t at = command.find(rank1);
+  ASSERT_NE(at, std::string::npos) << command;
+  command.insert(at + rank1.size(), "env MAQUETTE_MPI_PIECE_BYTES=4096 ");
+  const Result r = run_shell(command, dir);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("MAQUETTE_MPI_PIECE_BYTES differs between the ranks: 1073741824 on rank 0, "
+                       "4096 on rank 1: give every rank the same (mpirun -x "
+                       "MAQUETTE_MPI_PIECE_BYTES)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "out.mqt"));
+}
+
 // An ingest writes the store outside the relayed batches: refused before the store is made.
 TEST(MpiStoreCopies, IngestIsRefused) {
   const fs::path dir = new_dir();
