@@ -62,6 +62,22 @@ RawTile tile_of(CellId cell) {
   return t;
 }
 
+// Relays this rank's share of `cells` (every ranks.size()-th from its rank), a batch of one tile
+// each, committed to `store` and handed to `relay`, to the copies too.
+void relay_tiles(Ranks& ranks, Store& store, WriteRelay& relay, const std::vector<CellId>& cells) {
+  relay.run(
+      [&] {
+        for (size_t i = size_t(ranks.rank()); i < cells.size(); i += size_t(ranks.size())) {
+          Store::Batch batch(store);
+          batch.put_tile("noise", cells[i], tile_of(cells[i]));
+          std::string bytes = batch.serialize();
+          batch.commit();
+          relay.relay(std::move(bytes));
+        }
+      },
+      true);
+}
+
 TEST(MpiWriteRelay, MemoryIsBoundedAndEveryStoreGetsEveryBatch) {
   Ranks& ranks = *the_ranks;
   ASSERT_EQ(ranks.size(), 3) << "run under mpirun -np 3";
@@ -77,17 +93,7 @@ TEST(MpiWriteRelay, MemoryIsBoundedAndEveryStoreGetsEveryBatch) {
     store->create_layer(noise_layer());
     WriteRelay relay(ranks, *store);
     const std::vector<CellId> all = cells();
-    relay.run(
-        [&] {
-          for (size_t i = size_t(ranks.rank()); i < all.size(); i += size_t(ranks.size())) {
-            Store::Batch batch(*store);
-            batch.put_tile("noise", all[i], tile_of(all[i]));
-            std::string bytes = batch.serialize();
-            batch.commit();
-            relay.relay(std::move(bytes));
-          }
-        },
-        true);
+    relay_tiles(ranks, *store, relay, all);
     std::printf("rank %d held at most %zu batches (bound %zu)\n", ranks.rank(), relay.most_held(),
                 WriteRelay::kMaxHeld);
     EXPECT_LE(relay.most_held(), WriteRelay::kMaxHeld);
@@ -141,17 +147,7 @@ TEST(MpiWriteRelayFailure, AFailurePassingMessagesEndsTheJobNamingTheRank) {
   store->create_layer(noise_layer());
   WriteRelay relay(ranks, *store);
   const std::vector<CellId> all = cells();
-  relay.run(
-      [&] {
-        for (size_t i = size_t(ranks.rank()); i < 64; i += size_t(ranks.size())) {
-          Store::Batch batch(*store);
-          batch.put_tile("noise", all[i], tile_of(all[i]));
-          std::string bytes = batch.serialize();
-          batch.commit();
-          relay.relay(std::move(bytes));
-        }
-      },
-      true);
+  relay_tiles(ranks, *store, relay, std::vector<CellId>(all.begin(), all.begin() + 64));
   ADD_FAILURE() << "rank " << ranks.rank() << " returned from a relay that failed on rank 1";
 }
 
