@@ -65,6 +65,10 @@ OperatorSpec fit_spec() {
         {"noise_scale", {{"type", "number"}, {"default", 0.1}}},
         {"noise_wavelength_m", {{"type", "number"}, {"minimum", 0.001}, {"default", 200}}},
         {"noise_octaves", {{"type", "integer"}, {"minimum", 1}, {"maximum", 12}, {"default", 3}}},
+        {"noise_persistence",
+         number_param(0.05, 1, 0.5,
+                      "amplitude ratio between successive octaves of the level-1 and variation "
+                      "noise (larger: more of the variation at finer scales)")},
         {"variation",
          {{"type", "boolean"},
           {"default", true},
@@ -253,6 +257,7 @@ class Fit : public ReduceOperator {
     h.noise_scale = params.at("noise_scale").get<double>();
     h.noise.wavelength_m = params.at("noise_wavelength_m").get<double>();
     h.noise.octaves = params.at("noise_octaves").get<int>();
+    h.noise.persistence = params.at("noise_persistence").get<double>();
     h.variation = params.at("variation").get<bool>();
     h.variation_noise_scale = params.at("variation_noise_scale").get<double>();
     h.pixel_m = merged.is_null() ? 0 : merged.begin()->value("pixel_m", 0.0);

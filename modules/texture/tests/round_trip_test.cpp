@@ -150,15 +150,32 @@ TEST(RoundTrip, HatModelIsRecovered) {
 // Each class's colours given a spread along a known axis e (a checkerboard of -+ 20 along e
 // around the rendered colour): the fit finds the axis (the class layer and its variation child
 // differ along e) and the synthesized texture has each class's mean colour and spread.
-TEST(RoundTrip, VariationGivesEachClassItsMeanAndSpread) {
+const std::array<double, 3> kSpreadAxis = {2 / 3.0, 1 / 3.0, 2 / 3.0};  // unit
+
+// The hat scene with each class's colours spread by a checkerboard of -+ 20 along kSpreadAxis.
+Scene spread_scene() {
   Scene s = make_scene(kHatModel);
-  const std::array<double, 3> e = {2 / 3.0, 1 / 3.0, 2 / 3.0};  // unit
   for (const CellId c : s.cells)
     for (int r = 0; r < kSize; ++r)
       for (int col = 0; col < kSize; ++col)
         for (int k = 0; k < 3; ++k)
           if (!std::isnan(s.classes[c].at(col, r)))
-            s.rgb[c].at(col, r, k) += float(((col + r) % 2 ? 20 : -20) * e[size_t(k)]);
+            s.rgb[c].at(col, r, k) += float(((col + r) % 2 ? 20 : -20) * kSpreadAxis[size_t(k)]);
+  return s;
+}
+
+// Each class's texture within CIEDE2000 3 of its scene colour and its spread within 67-150 %.
+void expect_class_means_and_spreads(const json& report) {
+  for (const auto& [k, c] : report["class_colours"].items()) {
+    EXPECT_LT(c["ciede2000"].get<double>(), 3) << "class " << k << ": " << c;
+    EXPECT_GT(c["sd_ratio"].get<double>(), 0.67) << "class " << k << ": " << c;
+    EXPECT_LT(c["sd_ratio"].get<double>(), 1.5) << "class " << k << ": " << c;
+  }
+}
+
+TEST(RoundTrip, VariationGivesEachClassItsMeanAndSpread) {
+  Scene s = spread_scene();
+  const std::array<double, 3>& e = kSpreadAxis;
   // Noise of 2 km: its 3 octaves are longer than 2 pixels of 153 m (level 10, 64-pixel tiles),
   // so none is left out as too fine to show.
   json given = kFit;
@@ -180,11 +197,7 @@ TEST(RoundTrip, VariationGivesEachClassItsMeanAndSpread) {
   }
   EXPECT_EQ(variations, 4);  // one per class
   const json report = assess(s, model);
-  for (const auto& [k, c] : report["class_colours"].items()) {
-    EXPECT_LT(c["ciede2000"].get<double>(), 3) << "class " << k << ": " << c;
-    EXPECT_GT(c["sd_ratio"].get<double>(), 0.67) << "class " << k << ": " << c;
-    EXPECT_LT(c["sd_ratio"].get<double>(), 1.5) << "class " << k << ": " << c;
-  }
+  expect_class_means_and_spreads(report);
   // Without the variation, one colour per class (spread only where classes blend): less spread,
   // on the whole (the white class, near 255, has little room for its variation).
   given["variation"] = false;
@@ -195,6 +208,25 @@ TEST(RoundTrip, VariationGivesEachClassItsMeanAndSpread) {
     with += report["class_colours"][k]["texture_sd"].get<double>() / 4;
   }
   EXPECT_GT(with, without + 3) << plain["class_colours"];
+}
+
+// `noise_persistence` (the Zion example's 0.7: more of the variation in the finer octaves) is
+// the model's noise, level-1 layers and variation children alike, and the variation still gives
+// each class its mean and spread: its coverage moments are measured on that noise.
+TEST(RoundTrip, NoisePersistenceIsTheModelsAndKeepsTheSpread) {
+  Scene s = spread_scene();
+  json given = kFit;
+  given["noise_wavelength_m"] = 2000;
+  given["noise_persistence"] = 0.8;
+  const json model = fit(s, given);
+  int noisy = 0;
+  for (const Layer& l : parse_model(model, "fitted").layers)
+    if (l.noise_scale != 0) {
+      EXPECT_EQ(l.noise.persistence, 0.8) << l.name;
+      ++noisy;
+    }
+  EXPECT_GE(noisy, 4);  // at least the variation children
+  expect_class_means_and_spreads(assess(s, model));
 }
 
 // The prior-aware fit (class odds, calibrated biases, as the Zion example uses) recovers the
