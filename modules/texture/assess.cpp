@@ -56,6 +56,7 @@ OperatorSpec assess_spec() {
              "the predicted classes compared after texture.classify's majority filter "
              "of this radius (the observed map's minimum mapping unit; 0: as they are)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
+  s.params_schema["properties"].update(colour_incidence_param());
   return s;
 }
 
@@ -128,9 +129,11 @@ class Assess : public ReduceOperator {
     json moments = json::object();  // class -> {"image": moments, "texture": moments}
     Tile<float> scene;              // the image, its illumination removed when asked
     std::vector<std::array<double, 3>> a, b;
+    const auto light = illumination_of(*ctx.params, data, "texture.assess");
+    const double lit_cos = colour_incidence(*ctx.params, light, "texture.assess");
     if (colour) {
       scene = data.inputs.at("rgb");
-      if (const auto light = illumination_of(*ctx.params, data, "texture.assess"))
+      if (light)
         for (int r = -kBlur; r < n + kBlur; ++r)
           for (int c = -kBlur; c < n + kBlur; ++c) {
             const auto x =
@@ -165,9 +168,12 @@ class Assess : public ReduceOperator {
         const auto as_float = [](const std::array<double, 3>& x) {
           return std::array<float, 3>{float(x[0]), float(x[1]), float(x[2])};
         };
+        // A class's colour from its lit pixels (colour_min_incidence_cos), as texture.fit's; after
+        // the blur from all of them (the blur mixes lit and shaded neighbours anyway).
         if (const auto x = pixel(scene, c, r);
             !std::isnan(o) && known(x) && (!own || own->at(c, r) == o)) {
-          add_moments(moments[std::to_string(int(o))]["image"], x);
+          if (!light || light->lit(c, r, lit_cos))
+            add_moments(moments[std::to_string(int(o))]["image"], x);
           if (known(as_float(u)))
             add_moments(moments[std::to_string(int(o))]["image_blurred"], as_float(u));
         }

@@ -102,6 +102,7 @@ OperatorSpec fit_spec() {
           {"default", ""},
           {"description", "also write the model document to this file (for model_file)"}}}}}};
   s.params_schema["properties"].update(illumination_params_schema());
+  s.params_schema["properties"].update(colour_incidence_param());
   return s;
 }
 
@@ -153,6 +154,7 @@ class Fit : public ReduceOperator {
       throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
                   std::to_string(rgb.channels()));
     const std::optional<Illumination> light = illumination_of(*ctx.params, data, kOp);
+    const double lit_cos = colour_incidence(*ctx.params, light, kOp);
     std::map<int, ClassStats> stats;
     std::map<int, std::vector<int>> sample;
     const int step =
@@ -167,7 +169,7 @@ class Fit : public ReduceOperator {
         ClassStats& s = stats[int(k)];
         if (s.hist.empty()) s.hist.resize(qs.size(), {});
         ++s.pixels;
-        const bool colour = !own || own->at(c, r) == k;
+        const bool colour = (!own || own->at(c, r) == k) && (!light || light->lit(c, r, lit_cos));
         std::array<float, 3> x = {rgb.at(c, r, 0), rgb.at(c, r, 1), rgb.at(c, r, 2)};
         if (light) x = light->corrected(x, c, r);
         s.colour_pixels += colour;
@@ -232,7 +234,8 @@ class Fit : public ReduceOperator {
         c.colour_pixels = s.at("colour_n").get<uint64_t>();
         if (c.colour_pixels == 0)
           throw Error(std::string(kOp) + ": class " + id +
-                      ": no pixel whose own class (inputs.colour_classes) it is: no colour");
+                      ": no pixel whose own class (inputs.colour_classes) it is, lit at "
+                      "params.colour_min_incidence_cos: no colour");
         c.sum = s.at("sum").get<std::array<double, 3>>();
         c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
         c.sum_cross = s.at("sum_cross").get<std::array<double, 3>>();

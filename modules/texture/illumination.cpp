@@ -20,6 +20,27 @@ std::array<float, 3> Illumination::corrected(std::array<float, 3> rgb, int c, in
   return rgb;
 }
 
+bool Illumination::lit(int c, int r, double lit_cos) const {
+  return lit_cos <= 0 || (double(hillshade->at(c, r)) - 1) / 254 >= lit_cos;
+}
+
+nlohmann::json colour_incidence_param() {
+  return {{"colour_min_incidence_cos",
+           number_param(0, 1, 0,
+                        "a class's colour (mean and spread) from the pixels lit at cos i >= "
+                        "this only, i from inputs.hillshade as in the correction: the shaded "
+                        "pixels' grey, which the correction on a coarse DEM leaves in, kept out "
+                        "of the surface's colours (0: every pixel)")}};
+}
+
+double colour_incidence(const nlohmann::json& params, const std::optional<Illumination>& light,
+                        const std::string& op) {
+  const double lit_cos = params.at("colour_min_incidence_cos").get<double>();
+  if (lit_cos > 0 && !light)
+    throw Error(op + ": params.colour_min_incidence_cos needs params.sun_altitude > 0");
+  return lit_cos;
+}
+
 nlohmann::json illumination_params_schema() {
   return {{"sun_altitude",
            number_param(0, 90, 0,

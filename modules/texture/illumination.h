@@ -27,11 +27,24 @@ struct Illumination {
   // keeps every channel <= 255, so hue and saturation are unchanged. Unknown illumination (NaN)
   // leaves it as is.
   std::array<float, 3> corrected(std::array<float, 3> rgb, int c, int r) const;
+
+  // Whether the pixel is lit at cos i >= `lit_cos` (always when lit_cos <= 0; never when its
+  // illumination is unknown otherwise): a class's colour statistics from lit pixels only, since
+  // shaded slopes keep a grey the correction does not remove on a coarse DEM.
+  bool lit(int c, int r, double lit_cos) const;
 };
 
 // The parameters "sun_altitude" (degrees, 0: no correction), "min_incidence_cos" and
 // "c_correction".
 nlohmann::json illumination_params_schema();
+
+// The parameter "colour_min_incidence_cos" of texture.fit and texture.assess: a class's colour
+// (mean and spread) from the pixels lit at cos i >= it only (0: every pixel).
+nlohmann::json colour_incidence_param();
+
+// Its value; throws naming `op` when it is > 0 without an illumination (sun_altitude 0).
+double colour_incidence(const nlohmann::json& params, const std::optional<Illumination>& light,
+                        const std::string& op);
 
 // The correction asked for by params, reading inputs.hillshade; nullopt when sun_altitude is 0.
 // Throws naming `op` when the hillshade input is not mapped.

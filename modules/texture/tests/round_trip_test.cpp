@@ -83,7 +83,9 @@ Scene make_scene(const json& model) {
   return s;
 }
 
-json fit(const Scene& s, const json& params) {
+// texture.fit on the scene, with `hillshade` as inputs.hillshade when given.
+json fit(const Scene& s, const json& params,
+         const std::map<CellId, Tile<float>>* hillshade = nullptr) {
   return run_reduce(
       "texture.fit", s.cells, kSize,
       [&](CellId c) {
@@ -91,6 +93,7 @@ json fit(const Scene& s, const json& params) {
         d.inputs.emplace("classes", s.classes.at(c));
         d.inputs.emplace("rgb", s.rgb.at(c));
         d.inputs.emplace("dem", s.dem_halo(c));
+        if (hillshade) d.inputs.emplace("hillshade", hillshade->at(c));
         return d;
       },
       params);
@@ -363,7 +366,45 @@ TEST(RoundTrip, ColourClassesKeepOtherPixelsOutOfTheColours) {
         } catch (const Error& e) {
           EXPECT_STREQ(e.what(),
                        "texture.fit: class 3: no pixel whose own class (inputs.colour_classes) it "
-                       "is: no colour");
+                       "is, lit at params.colour_min_incidence_cos: no colour");
+          throw;
+        }
+      },
+      Error);
+}
+
+// colour_min_incidence_cos: a class's colours from its lit pixels only. A third of the pixels
+// painted dark grey and shaded (hillshade at cos i = 0.3, the sun at 30 degrees: corrected x 1.67
+// but still grey), the rest lit as flat ground (cos i = 0.5): with the pixels lit at cos i >= 0.4
+// the fitted model is the unpainted scene's, with every pixel it is not; without a sun, an error.
+TEST(RoundTrip, ShadedPixelsKeptOutOfTheColours) {
+  const Scene s = make_scene(kHatModel);
+  Scene painted = s;
+  std::map<CellId, Tile<float>> shade;
+  for (const CellId c : s.cells) {
+    shade[c] = Tile<float>(kSize, 1, 0, 1 + 254 * 0.5f);
+    for (int r = 0; r < kSize; ++r)
+      for (int col = 0; col < kSize; ++col)
+        if ((col + 2 * r) % 3 == 0) {
+          shade[c].at(col, r) = 1 + 254 * 0.3f;
+          for (int k = 0; k < 3; ++k) painted.rgb[c].at(col, r, k) = 30;
+        }
+  }
+  const auto fit_lit = [&](const Scene& scene, double lit_cos, double sun) {
+    json p = kFit;
+    p["sun_altitude"] = sun, p["colour_min_incidence_cos"] = lit_cos;
+    return fit(scene, p, &shade);
+  };
+  EXPECT_EQ(fit_lit(painted, 0.4, 30), fit_lit(s, 0.4, 30));
+  EXPECT_NE(fit_lit(painted, 0, 30), fit_lit(s, 0, 30));
+  EXPECT_THROW(
+      {
+        try {
+          fit_lit(s, 0.4, 0);
+        } catch (const Error& e) {
+          EXPECT_STREQ(
+              e.what(),
+              "texture.fit: params.colour_min_incidence_cos needs params.sun_altitude > 0");
           throw;
         }
       },
