@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -29,6 +30,7 @@
 #include "ring_feature.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "synthetic_raster.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {
@@ -43,13 +45,36 @@ const std::string kLandsat = kShared + "/zion/landsat_rgb_b4b3b2_8bit.tif";
 constexpr double kWest = -113.03, kEast = -112.98, kSouth = 37.255, kNorth = 37.295;
 constexpr double kHalfWidth = 0.0007;  // degrees of latitude: ~78 m
 
+PolygonRings deck_rings() {
+  return {{{kWest, kSouth - kHalfWidth},
+           {kEast, kNorth - kHalfWidth},
+           {kEast, kNorth + kHalfWidth},
+           {kWest, kSouth + kHalfWidth},
+           {kWest, kSouth - kHalfWidth}}};
+}
+
+Geometry deck_geometry() {
+  Geometry deck;
+  deck.type = GeometryType::Polygon;
+  const PolygonRings rings = deck_rings();
+  GeoPath outline;
+  for (const LonLat& q : rings[0]) outline.push_back({q.lon, q.lat});
+  deck.polygons.push_back({{outline}});
+  return deck;
+}
+
 std::string footprint(const std::string& type) {
-  const json ring = {{kWest, kSouth - kHalfWidth},
-                     {kEast, kNorth - kHalfWidth},
-                     {kEast, kNorth + kHalfWidth},
-                     {kWest, kSouth + kHalfWidth},
-                     {kWest, kSouth - kHalfWidth}};
+  const PolygonRings rings = deck_rings();
+  json ring = json::array();
+  for (const LonLat& q : rings[0]) ring.push_back({q.lon, q.lat});
   return test::ring_feature(ring, type);
+}
+
+// The land cover: stripes 0.005 degrees (~440 m) wide running north-south, across the deck,
+// of classes 11 (water) and 90 (woody wetlands) in turn.
+constexpr double kStripesWest = -113.13;
+int stripe_class(double lon) {
+  return int(std::floor((lon - kStripesWest) / 0.005)) % 2 == 0 ? 11 : 90;
 }
 
 struct InpaintRun {
@@ -58,13 +83,20 @@ struct InpaintRun {
   test::CliResult result;
 };
 
-InpaintRun run_inpaint(const std::string& name, int threads, const std::string& type = "Polygon") {
+// `inputs` and `outputs`: the inpaint step's (layers: "landsat", "landcover", the footprint
+// "bridge").
+InpaintRun run_inpaint(const std::string& name, int threads, const std::string& type = "Polygon",
+                       const json& inputs = {{"image", "landsat"}, {"footprints", "bridge"}},
+                       const json& outputs = {{"rgb", "filled"}}) {
   InpaintRun run{
       fs::temp_directory_path() / ("maquette-inpaint-" + std::to_string(getpid()) + name), "", {}};
   fs::remove_all(run.dir);
   fs::create_directories(run.dir);
   run.store = (run.dir / "zion.mqt").string();
   std::ofstream(run.dir / "bridge.geojson") << footprint(type);
+  test::write_raster((run.dir / "stripes.tif").string(),
+                     test::lonlat_raster(kStripesWest, 37.40, 1100, 2e-4, "Byte"),
+                     [](int, double lon, double) { return stripe_class(lon); });
   const json pipeline = {
       {"store", run.store},
       {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
@@ -74,11 +106,13 @@ InpaintRun run_inpaint(const std::string& name, int threads, const std::string& 
          {"outputs", {{"layer", "landsat"}}},
          {"params", {{"sources", {kLandsat}}, {"as", "imagery"}, {"level", 10}}}},
         {{"op", "ingest"},
+         {"outputs", {{"layer", "landcover"}}},
+         {"params",
+          {{"sources", {(run.dir / "stripes.tif").string()}}, {"as", "landcover"}, {"level", 10}}}},
+        {{"op", "ingest"},
          {"outputs", {{"layer", "bridge"}}},
          {"params", {{"sources", {(run.dir / "bridge.geojson").string()}}, {"as", "features"}}}},
-        {{"op", "synthesis.inpaint"},
-         {"inputs", {{"image", "landsat"}, {"footprints", "bridge"}}},
-         {"outputs", {{"rgb", "filled"}}}}}}};
+        {{"op", "synthesis.inpaint"}, {"inputs", inputs}, {"outputs", outputs}}}}};
   std::ofstream(run.dir / "pipeline.json") << pipeline.dump(1);
   run.result = test::run_maquette("run " + (run.dir / "pipeline.json").string() +
                                   " --quiet --threads " + std::to_string(threads));
@@ -94,16 +128,8 @@ TEST(InpaintOperator, FillsTheFootprintAcrossCellsKeepsTheRestSameBitsOnTwoThrea
   const auto b = Store::open(two.store, Store::Mode::ReadOnly);
   const std::vector<CellId> cells = a->tile_cells("filled");
   ASSERT_GE(cells.size(), 2u);
-  const PolygonRings deck = {{{kWest, kSouth - kHalfWidth},
-                              {kEast, kNorth - kHalfWidth},
-                              {kEast, kNorth + kHalfWidth},
-                              {kWest, kSouth + kHalfWidth},
-                              {kWest, kSouth - kHalfWidth}}};
-  Geometry deck_geometry;
-  deck_geometry.type = GeometryType::Polygon;
-  GeoPath outline;
-  for (const LonLat& q : deck[0]) outline.push_back({q.lon, q.lat});
-  deck_geometry.polygons.push_back({{outline}});
+  const PolygonRings deck = deck_rings();
+  const Geometry deck_outline = deck_geometry();
   size_t under = 0, changed_under = 0, nodata_under = 0, changed_far = 0, cells_with_deck = 0;
   for (const CellId cell : cells) {
     const RawTile filled = *a->get_tile("filled", cell);
@@ -129,7 +155,7 @@ TEST(InpaintOperator, FillsTheFootprintAcrossCellsKeepsTheRestSameBitsOnTwoThrea
           nodata_under += nodata;
         } else if (differs) {
           // The band (3 samples of ~35 m) and rounding: nothing beyond 150 m of the deck.
-          changed_far += distance_m(p, deck_geometry) > 150;
+          changed_far += distance_m(p, deck_outline) > 150;
         }
       }
     }
@@ -142,6 +168,51 @@ TEST(InpaintOperator, FillsTheFootprintAcrossCellsKeepsTheRestSameBitsOnTwoThrea
   EXPECT_EQ(changed_far, 0u);
   fs::remove_all(one.dir);
   fs::remove_all(two.dir);
+}
+
+// Land cover through the program (review C-R-S2): stripes of classes 11 and 90 across the deck,
+// filled under it as classes into a uint16 layer: every sample under the deck one of the two (an
+// average of their codes would be neither), >= 90 % of them the class of the stripe they lie in
+// (the stripes, wider than the deck, continued across it), nothing changed beyond 150 m.
+TEST(InpaintOperator, LandCoverStripesAreContinuedAcrossTheFootprintAsClasses) {
+  if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const InpaintRun run =
+      run_inpaint("-classes", 2, "Polygon", {{"landcover", "landcover"}, {"footprints", "bridge"}},
+                  {{"classes", "filled_classes"}});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+  const auto s = Store::open(run.store, Store::Mode::ReadOnly);
+  const LayerInfo info = s->require_layer("filled_classes");
+  EXPECT_EQ(info.dtype, DType::U16);
+  EXPECT_EQ(info.semantics, Semantics::Categorical);
+  const PolygonRings rings = deck_rings();
+  const Geometry deck = deck_geometry();
+  size_t under = 0, other_class = 0, its_stripe = 0, changed_far = 0;
+  for (const CellId cell : s->tile_cells("filled_classes")) {
+    const Tile<uint16_t> filled = to_tile<uint16_t>(*s->get_tile("filled_classes", cell));
+    const Tile<uint16_t> original = to_tile<uint16_t>(*s->get_tile("landcover", cell));
+    const int n = filled.size(), level = cell.level() + log2_tile_size(n);
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) {
+        const LonLat p = pixel_centre(
+            default_grid(), {cell.face(), global_col(cell, n, c), global_row(cell, n, r)}, level);
+        const uint16_t got = filled.at(c, r);
+        if (polygon_contains(rings, p)) {
+          ++under;
+          other_class += got != 11 && got != 90;
+          its_stripe += got == stripe_class(p.lon);
+        } else if (distance_m(p, deck) > 150) {
+          changed_far += got != original.at(c, r);
+        }
+      }
+    }
+  }
+  std::cout << "land cover under the deck: " << its_stripe << " of " << under
+            << " samples the class of their stripe\n";
+  EXPECT_GT(under, 300u);
+  EXPECT_EQ(other_class, 0u);
+  EXPECT_GE(double(its_stripe), 0.9 * double(under));
+  EXPECT_EQ(changed_far, 0u);
+  fs::remove_all(run.dir);
 }
 
 // Paper 002's Fig. 16 in the pipeline: an orthophoto showing a bridge's deck (the Landsat image
