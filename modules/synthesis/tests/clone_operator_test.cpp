@@ -57,6 +57,19 @@ std::string polygon(const std::string& type) {
   return test::ring_feature(ring, type);
 }
 
+// The imagery: squares of grey 200 and 40.
+double checker(double lon, double lat) {
+  const long i = std::lround(std::floor((lon - kWest) / kSquareDeg)) +
+                 std::lround(std::floor(lat / kSquareDeg));
+  return i % 2 != 0 ? 200.0 : 40.0;
+}
+
+// The land cover: on the flat part the checkerboard's squares as classes 90 (its bright squares)
+// and 11, on the slope class 41.
+double land_cover(double lon, double lat) {
+  return lon > kCrease ? 41 : checker(lon, lat) > 120 ? 90 : 11;
+}
+
 struct CloneRun {
   fs::path dir;
   std::string store;
@@ -81,11 +94,9 @@ CloneRun run_clone(const std::string& name, int threads, const json& clone_input
   test::write_raster((run.dir / "dem.tif").string(), raster("Float32", 1),
                      [](int, double lon, double) { return terrain_height(lon); });
   test::write_raster((run.dir / "checker.tif").string(), raster("Byte", 3),
-                     [](int, double lon, double lat) {
-                       const long i = std::lround(std::floor((lon - kWest) / kSquareDeg)) +
-                                      std::lround(std::floor(lat / kSquareDeg));
-                       return i % 2 != 0 ? 200.0 : 40.0;
-                     });
+                     [](int, double lon, double lat) { return checker(lon, lat); });
+  test::write_raster((run.dir / "classes.tif").string(), raster("Byte", 1),
+                     [](int, double lon, double lat) { return land_cover(lon, lat); });
   std::ofstream(run.dir / "source.geojson") << polygon(type);
   json inputs = {{"image", "checker"}, {"source", "source"}};
   inputs.update(clone_inputs);
@@ -100,6 +111,7 @@ CloneRun run_clone(const std::string& name, int threads, const json& clone_input
                          {"steps",
                           {ingest("dem.tif", "dem", "dem"),
                            ingest("checker.tif", "checker", "imagery"),
+                           ingest("classes.tif", "landcover", "landcover"),
                            ingest("source.geojson", "source", "features"),
                            {{"op", "synthesis.clone"},
                             {"inputs", inputs},
@@ -296,6 +308,50 @@ TEST(CloneOperator, AFlatTerrainPatchClonedOntoTheSlopeMeetsItsMeanHeight) {
   EXPECT_NEAR(middle, dem.at({c, r}), 1) << "the slope there " << dem.at({c, r});
   // Beyond the copy and its band, the DEM as it was.
   EXPECT_EQ(cloned.at({c + 60, r}), dem.at({c + 60, r}));
+  fs::remove_all(run.dir);
+}
+
+// Land cover cloned by the real program beside the imagery (review C-R-S2), onto the slope with
+// the DEM: a uint16 categorical layer; inside the copy every sample is the class of the cloned
+// imagery's square there (both layers copied through the same resize: 90 where the imagery is
+// bright, 11 where dark); only the classes 11, 41 and 90 where there was land cover (an average
+// of codes would be neither); beyond the copy and its band the land cover as it was.
+TEST(CloneOperator, LandCoverIsClonedAsClassesThroughTheImagerysMap) {
+  const CloneRun run = run_clone("-classes", 2, {{"dem", "dem"}, {"landcover", "landcover"}},
+                                 {{"offset_m", {kOffsetEastM, 0}}}, "Polygon",
+                                 {{"rgb", "cloned"}, {"classes", "cloned_classes"}});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+  const auto store = Store::open(run.store, Store::Mode::ReadOnly);
+  const LayerInfo info = store->require_layer("cloned_classes");
+  EXPECT_EQ(info.dtype, DType::U16);
+  EXPECT_EQ(info.semantics, Semantics::Categorical);
+  int face = 0, level = 0;
+  const auto imagery = first_channel(*store, "cloned", face, level);
+  const auto before = first_channel_f32(*store, "landcover", face, level);
+  const auto classes = first_channel_f32(*store, "cloned_classes", face, level);
+  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
+  const double centre_lon = (kSourceWest + kSourceEast) / 2;
+  const auto to = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
+  const int64_t c = std::lround(to[0]), r = std::lround(to[1]);
+  size_t inside = 0, agree = 0, other = 0, changed_beyond = 0;
+  const auto is_class = [](float k) { return k == 11 || k == 41 || k == 90; };
+  for (const auto& [at, k] : classes) {
+    if (!is_class(before.at(at))) continue;  // beyond the GeoTIFF: no land cover
+    other += !is_class(k);
+    const int64_t dc = std::abs(at.first - c), dr = std::abs(at.second - r);
+    if (dc <= 20 && dr <= 25) {  // inside the copy (~55 x 63 samples), clear of its band
+      ++inside;
+      agree += k == (imagery.at(at) > 120 ? 90 : 11);
+    } else if (dc > 45 || dr > 45) {
+      changed_beyond += k != before.at(at);
+    }
+  }
+  std::cout << "cloned land cover: " << agree << " of " << inside
+            << " samples in the copy the class of the cloned imagery's square\n";
+  EXPECT_GT(inside, 1500u);
+  EXPECT_GE(double(agree), 0.95 * double(inside));
+  EXPECT_EQ(other, 0u);
+  EXPECT_EQ(changed_beyond, 0u);
   fs::remove_all(run.dir);
 }
 

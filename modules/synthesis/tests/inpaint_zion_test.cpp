@@ -1,10 +1,12 @@
 // The completion on real imagery (Landsat 8 over Zion, ../shared/data) with holes of known
 // content: 5 % and 20 % of a 128 x 128 window and a bridge-like strip across it. Against the
-// original: no seam and little blur on the hole's edge (its mean gradient at most 1.25 x the
-// original's there and at least the 0.8 for the 5 % hole, measured 0.82; the 20 % hole
-// and the strip miss it, measured 0.72, gated at 0.7); against OpenCV xphoto's shift-map and FSR
-// fills of the same holes: a lower bidirectional-similarity energy (inpaint_measures.h); the same
-// bits on one and two threads.
+// original: no seam and little blur on the hole's edge, judged over seeds 0-3 (review C-R-S3: one
+// seed's ratio moves by up to 0.15 with the draw alone): each seed's mean gradient there at most
+// 1.25 x the original's, and the mean over the seeds at least the 0.8 for the 5 % hole
+// (measured 0.87); the 20 % hole and the strip miss it (measured 0.71 and 0.74, gated at 0.7).
+// Against OpenCV xphoto's shift-map and FSR fills of the same holes: a lower
+// bidirectional-similarity energy for every seed (inpaint_measures.h). The same bits on one and
+// two threads.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -23,6 +25,9 @@ namespace {
 
 const std::string kLandsat = kShared + "/zion/landsat_rgb_b4b3b2_8bit.tif";
 constexpr int kSide = 128;
+// The seeds each hole is filled with: the gradient gate is on their mean, the fill's sharpness
+// rather than one draw's (the worst of them would judge the draw: 0.65 for the 20 % hole).
+constexpr uint64_t kSeeds = 4;
 
 // The window of the Landsat RGB at (x0, y0), as GDAL reads it.
 cv::Mat landsat_window(int x0, int y0) {
@@ -40,7 +45,7 @@ cv::Mat landsat_window(int x0, int y0) {
 struct Hole {
   std::string name;
   std::vector<uint8_t> mask;
-  double least_edge_gradient;  // the 0.8 where it is met, else what is met (0.72) less 0.02
+  double least_edge_gradient;  // of the seeds' mean: the 0.8 where met, else 0.7
 };
 
 std::vector<Hole> holes() {
@@ -65,8 +70,10 @@ std::vector<Hole> holes() {
           {"strip", strip, 0.7}};
 }
 
-cv::Mat ours(const cv::Mat& rgb, const std::vector<uint8_t>& hole) {
-  return test::to_mat(inpaint(test::to_patch_image(rgb), hole, InpaintParams{}, PatchMatch()));
+cv::Mat ours(const cv::Mat& rgb, const std::vector<uint8_t>& hole, uint64_t seed = 0) {
+  InpaintParams params;
+  params.seed = seed;
+  return test::to_mat(inpaint(test::to_patch_image(rgb), hole, params, PatchMatch()));
 }
 
 cv::Mat xphoto(const cv::Mat& rgb, const std::vector<uint8_t>& hole, int algorithm) {
@@ -83,22 +90,28 @@ TEST(InpaintZion, NoSeamAndLowerEnergyThanXphotoOnHolesOfKnownContent) {
   const cv::Mat rgb = landsat_window(560, 700);
   const int band = InpaintParams{}.band;
   for (const Hole& hole : holes()) {
-    const cv::Mat filled = ours(rgb, hole.mask);
-    const double ratio =
-        test::edge_gradient(filled, hole.mask) / test::edge_gradient(rgb, hole.mask);
-    const auto energy = test::bidirectional_energy(rgb, filled, hole.mask, band);
     const auto shiftmap = test::bidirectional_energy(
         rgb, xphoto(rgb, hole.mask, cv::xphoto::INPAINT_SHIFTMAP), hole.mask, band);
     const auto fsr = test::bidirectional_energy(
         rgb, xphoto(rgb, hole.mask, cv::xphoto::INPAINT_FSR_FAST), hole.mask, band);
-    std::cout << hole.name << ": edge gradient ratio " << ratio << "; energy (coherence + "
-              << "completeness) ours " << energy.coherence << " + " << energy.completeness
-              << ", shift-map " << shiftmap.coherence << " + " << shiftmap.completeness
-              << ", FSR fast " << fsr.coherence << " + " << fsr.completeness << "\n";
-    EXPECT_GE(ratio, hole.least_edge_gradient) << hole.name;
-    EXPECT_LE(ratio, 1.25) << hole.name;
-    EXPECT_LT(energy.total(), shiftmap.total()) << hole.name;
-    EXPECT_LT(energy.total(), fsr.total()) << hole.name;
+    std::cout << hole.name << ": energy (coherence + completeness) shift-map " << shiftmap.coherence
+              << " + " << shiftmap.completeness << ", FSR fast " << fsr.coherence << " + "
+              << fsr.completeness << "\n";
+    double mean_ratio = 0;
+    for (uint64_t seed = 0; seed < kSeeds; ++seed) {
+      const cv::Mat filled = ours(rgb, hole.mask, seed);
+      const double ratio =
+          test::edge_gradient(filled, hole.mask) / test::edge_gradient(rgb, hole.mask);
+      mean_ratio += ratio / kSeeds;
+      const auto energy = test::bidirectional_energy(rgb, filled, hole.mask, band);
+      std::cout << "  seed " << seed << ": edge gradient ratio " << ratio << "; energy ours "
+                << energy.coherence << " + " << energy.completeness << "\n";
+      EXPECT_LE(ratio, 1.25) << hole.name << ", seed " << seed;
+      EXPECT_LT(energy.total(), shiftmap.total()) << hole.name << ", seed " << seed;
+      EXPECT_LT(energy.total(), fsr.total()) << hole.name << ", seed " << seed;
+    }
+    std::cout << "  mean edge gradient ratio " << mean_ratio << "\n";
+    EXPECT_GE(mean_ratio, hole.least_edge_gradient) << hole.name;
   }
 }
 
