@@ -191,7 +191,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       const SurfacePoint at = surface_point(scene, f, i);
       p.lon[i] = at.lonlat.lon;
       p.lat[i] = at.lonlat.lat;
-      p.altitude[i] = interpolate(scene.altitude, 1, 0);
+      p.altitude[i] = float(interpolate(scene.altitude, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, &texels[3 * i]);
@@ -207,8 +207,9 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
       double sunlit = 1;
       if (look.shadow) {
-        p.cast_shadow[i] = interpolate(*look.shadow, 1, 0);
-        sunlit = 1 - p.cast_shadow[i];
+        const double shadow = interpolate(*look.shadow, 1, 0);
+        p.cast_shadow[i] = float(shadow);
+        sunlit = 1 - shadow;
       }
       p.shading[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
