@@ -13,6 +13,7 @@
 #include "core/round_half_away.h"
 #include "image/layer_sampler.h"
 #include "image/stretch.h"
+#include "render/edge_texels.h"
 #include "render/sky.h"
 
 namespace maquette {
@@ -21,9 +22,9 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180;
 using Rgb = std::array<double, 3>;
 constexpr Rgb kEarth{196, 184, 160};
-// Terrain the texture has no texel for (a DEM reaching past the imagery's edge): the middle of
-// the display range, about a stretched texel's mean. The light earth colour drew such a strip
-// along a far edge as a bright rim on the skyline (Zion's DEM reaches 600 m past its Landsat).
+// Terrain the texture has no texel for within the reach (a DEM reaching far past the imagery's
+// edge): the middle of the display range, about a stretched texel's mean. The light earth colour
+// drew such a strip along a far edge as a bright rim on the skyline.
 constexpr Rgb kNoTexel{128, 128, 128};
 
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
@@ -33,6 +34,7 @@ Rgb mix(const Rgb& a, const Rgb& b, double t) {
 // Samplers of one thread (LayerSampler caches tiles and is not shared between threads).
 struct Samplers {
   std::optional<LayerSampler> texture, land_cover;
+  std::optional<EdgeTexels> edge;  // the texture past its edge (kTextureReach)
   // Each row a run of its own (LayerSampler::start_run): its values whatever rows came before.
   void start_row() {
     if (texture) texture->start_run();
@@ -88,7 +90,10 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
                                                         const PanoramaLook& look) {
   return tbb::enumerable_thread_specific<Samplers>([&] {
     Samplers s;
-    if (look.texture) s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
+    if (look.texture) {
+      s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
+      s.edge.emplace(store, grid, *look.texture, kTextureReach);
+    }
     if (look.land_cover)
       s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
     return s;
@@ -186,7 +191,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       const SurfacePoint at = surface_point(scene, f, i);
       p.lon[i] = at.lonlat.lon;
       p.lat[i] = at.lonlat.lat;
-      p.altitude[i] = interpolate(scene.altitude, 1, 0);
+      p.altitude[i] = float(interpolate(scene.altitude, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, &texels[3 * i]);
@@ -202,8 +207,9 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
       double sunlit = 1;
       if (look.shadow) {
-        p.cast_shadow[i] = interpolate(*look.shadow, 1, 0);
-        sunlit = 1 - p.cast_shadow[i];
+        const double shadow = interpolate(*look.shadow, 1, 0);
+        p.cast_shadow[i] = float(shadow);
+        sunlit = 1 - shadow;
       }
       p.shading[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
@@ -219,7 +225,10 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     stretch = texel_stretch(seen, look);
   }
 
+  // Colour: the texel, or past the imagery's edge its nearest within the reach (not stretched
+  // over: the imagery's own texels set the stretch), shaded and hazed.
   tbb::parallel_for(0, h, [&](int row) {
+    Samplers& s = samplers.local();
     const size_t start = size_t(row) * size_t(w);
     if (std::find(f.triangle.begin() + std::ptrdiff_t(start),
                   f.triangle.begin() + std::ptrdiff_t(start + size_t(w)),
@@ -229,8 +238,13 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       const size_t i = start + size_t(col);
       if (f.triangle[i] == Fragments::kSky) continue;
       Rgb colour = look.texture ? kNoTexel : kEarth;
-      if (!std::isnan(texels[3 * i]))
-        for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texels[3 * i + k], stretch[k]);
+      float* texel = &texels[3 * i];
+      if (std::isnan(texel[0]) && s.edge) {
+        const SurfacePoint at = surface_point(scene, f, i);
+        s.edge->sample(std::isnan(at.plane.x) ? grid.forward(at.lonlat) : at.plane, texel);
+      }
+      if (!std::isnan(texel[0]))
+        for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texel[k], stretch[k]);
       for (double& c : colour) c *= p.shading[i];
       colour = mix(colour, kHazeColour, 1 - std::exp(-p.distance[i] / look.haze_distance));
       for (int k = 0; k < 3; ++k)

@@ -1,9 +1,10 @@
 // A panorama and its guides from what each pixel sees (render/rasterizer.h) of a terrain scene
 // (render/terrain_scene.h): the surface's colour (an imagery layer sampled bilinearly where the
 // pixel sees it: at the point of the grid's plane interpolated in its triangle, or at its lon/lat
-// where a corner is off its tile's face; stretched for display; where it has no texel, the middle
-// of the display range, grey 128; without imagery, a plain earth colour), shaded
-// by the DEM's normals under a sun, faded into the haze with distance (aerial perspective: a
+// where a corner is off its tile's face; stretched for display; where it has no texel, the nearest
+// texel's within a reach (render/edge_texels.h), the stretch taken over the imagery's own texels
+// only; beyond, the middle of the display range, grey 128; without imagery, an earth colour),
+// shaded by the DEM's normals under a sun, faded into the haze with distance (aerial perspective: a
 // fraction 1 - exp(-distance / haze_distance) of the haze colour), over a sky graded from the haze
 // colour at the horizon to blue at 30 degrees up (render/sky.h). Guides per pixel: the DEM's
 // altitude, the distance from the eye, lon/lat, the land-cover class when a categorical layer is
@@ -27,6 +28,11 @@
 
 namespace maquette {
 
+// Terrain the texture has no texel for takes its nearest texel's colour within this many texels
+// of the texture's level (render/edge_texels.h: the imagery carried past its edge; Zion's DEM
+// reaches up to 17 of its 35 m texels past the Landsat scene); farther, grey 128.
+constexpr int kTextureReach = 32;
+
 struct PanoramaLook {
   const LayerInfo* texture = nullptr;     // uint8 imagery of 1, 3 or 4 channels, or none
   const LayerInfo* land_cover = nullptr;  // a categorical layer, or none
@@ -45,12 +51,15 @@ struct Panorama {
   int width = 0, height = 0;
   int first_row = 0;         // of the picture: the panorama may be a strip of it
   std::vector<uint8_t> rgb;  // 3 per pixel, row-major
-  // Per pixel, NaN on the sky: metres of the DEM's datum, metres from the eye, degrees, class.
-  std::vector<double> altitude, distance, lon, lat, land_cover;
-  std::vector<double> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
+  // Per pixel, NaN on the sky: metres from the eye, degrees (float64: the haze and silhouettes
+  // are computed from the distance, lon/lat to a millimetre); metres of the DEM's datum and
+  // class (float32: a tenth of a millimetre at 2 km, the DEM's own float32; fewer fresh pages).
+  std::vector<double> distance, lon, lat;
+  std::vector<float> altitude, land_cover;
+  std::vector<float> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
   // The factor the surface's colour was shaded by: hillshade times sunlit share, 0.3 to 1 (the
   // transfer in the picture blends its colours with it).
-  std::vector<double> shading;
+  std::vector<float> shading;
   std::vector<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <vector>
 
 #include "core/output_file.h"
 #include "core/sibling_path.h"
@@ -33,19 +35,29 @@ struct PanoramaWriter::Files {
 
 namespace {
 
+// A guide's values, float64 or float32 (render/panorama.h), or none (the file's bands named).
+struct GuideBand {
+  const char* name;
+  const void* values = nullptr;
+  GDALDataType type = GDT_Float64;
+};
+
+template <typename T>
+GuideBand guide_band(const char* name, const std::vector<T>* values) {
+  return {name, values ? values->data() : nullptr,
+          std::is_same_v<T, float> ? GDT_Float32 : GDT_Float64};
+}
+
 // The guides written, in band order: the four always there, those computed, then the shading
 // (last, so that the earlier bands keep their numbers).
-std::vector<std::pair<const char*, const std::vector<double>*>> guide_bands(const Panorama* p,
-                                                                            bool land_cover,
-                                                                            bool cast_shadow) {
-  std::vector<std::pair<const char*, const std::vector<double>*>> bands = {
-      {"altitude", p ? &p->altitude : nullptr},
-      {"distance", p ? &p->distance : nullptr},
-      {"lon", p ? &p->lon : nullptr},
-      {"lat", p ? &p->lat : nullptr}};
-  if (land_cover) bands.emplace_back("land_cover", p ? &p->land_cover : nullptr);
-  if (cast_shadow) bands.emplace_back("cast_shadow", p ? &p->cast_shadow : nullptr);
-  bands.emplace_back("shading", p ? &p->shading : nullptr);
+std::vector<GuideBand> guide_bands(const Panorama* p, bool land_cover, bool cast_shadow) {
+  std::vector<GuideBand> bands = {guide_band("altitude", p ? &p->altitude : nullptr),
+                                  guide_band("distance", p ? &p->distance : nullptr),
+                                  guide_band("lon", p ? &p->lon : nullptr),
+                                  guide_band("lat", p ? &p->lat : nullptr)};
+  if (land_cover) bands.push_back(guide_band("land_cover", p ? &p->land_cover : nullptr));
+  if (cast_shadow) bands.push_back(guide_band("cast_shadow", p ? &p->cast_shadow : nullptr));
+  bands.push_back(guide_band("shading", p ? &p->shading : nullptr));
   return bands;
 }
 
@@ -66,7 +78,7 @@ PanoramaWriter::PanoramaWriter(const std::string& out, int width, int height, bo
     if (!f.guides) gdal_error("cannot create " + f.guides_file.temp_path());
     for (size_t b = 0; b < bands.size(); ++b) {
       GDALRasterBand* band = f.guides->GetRasterBand(int(b) + 1);
-      band->SetDescription(bands[b].first);
+      band->SetDescription(bands[b].name);
       band->SetNoDataValue(NAN);
     }
   });
@@ -84,12 +96,14 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
               f.silhouette.begin() + std::ptrdiff_t(size_t(first) * size_t(f.width)));
   const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
   f.guides_file.write([&] {
-    for (size_t b = 0; b < bands.size(); ++b)
-      if (f.guides->GetRasterBand(int(b) + 1)
-              ->RasterIO(GF_Write, 0, first, f.width, last - first,
-                         const_cast<double*>(bands[b].second->data() + offset), f.width,
-                         last - first, GDT_Float64, 0, 0) != CE_None)
+    for (const GuideBand& band : bands) {
+      const auto* values = static_cast<const char*>(band.values) +
+                           offset * size_t(GDALGetDataTypeSizeBytes(band.type));
+      if (f.guides->GetRasterBand(int(&band - bands.data()) + 1)
+              ->RasterIO(GF_Write, 0, first, f.width, last - first, const_cast<char*>(values),
+                         f.width, last - first, band.type, 0, 0) != CE_None)
         gdal_error("cannot write " + f.guides_file.temp_path());
+    }
   });
 }
 

@@ -22,6 +22,7 @@
 
 #include "core/grid.h"
 #include "proj_enu.h"
+#include "render/panorama.h"
 #include "render/terrain_scene.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
@@ -388,12 +389,14 @@ std::vector<uint8_t> picture(const std::string& path) {
   return rgb;
 }
 
-// Imagery over the west half of the DEM only: terrain without a texel is drawn in the middle of
-// the display range (128 grey) times its shading, not in a light earth colour that drew a strip of
-// DEM past the imagery's edge as a bright rim on the skyline; terrain with one shows it. The
-// colours are checked from the shading guide, with no haze (a huge haze distance) and
-// the values as stored (--no-stretch).
-TEST(PanoramaCli, TerrainWithoutTexelIsMidGrey) {
+// Imagery over the west half of the DEM only (up to lon 10.15). Terrain within the reach past the
+// imagery's edge (kTextureReach texels of its level, measured in the grid's plane from the edge's
+// meridian) takes the edge's colour, as if the imagery went on; farther, it is drawn in the middle
+// of the display range (128 grey), not in a light earth colour that drew a strip of DEM past the
+// imagery's edge as a bright rim on the skyline. Each times its shading guide, with no haze (a huge
+// haze distance) and the values as stored (--no-stretch). Without the reach, the pixels within it
+// were grey (the strip along Zion's skyline).
+TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
   const Fixture& f = fixture();
   const std::string dir = test::temp_dir(), store = dir + "/half.mqt";
   std::filesystem::copy_file(f.store, store);
@@ -414,21 +417,38 @@ TEST(PanoramaCli, TerrainWithoutTexelIsMidGrey) {
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((dir + "/half-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
-  const auto lon = band(*guides, 3), shading = band(*guides, guides->GetRasterCount());
+  const auto lon = band(*guides, 3), lat = band(*guides, 4);
+  const auto shading = band(*guides, guides->GetRasterCount());
   const std::vector<uint8_t> rgb = picture(out);
   ASSERT_EQ(rgb.size(), lon.size() * 3);
-  size_t textured = 0, bare = 0;
+  const Grid& grid = default_grid();
+  const LayerInfo layer = Store::open(store, Store::Mode::ReadOnly)->require_layer("rgb");
+  const double texel_m =
+      grid.level_info(layer.level, layer.tile_size).plane_side_m / layer.tile_size;
+  // The edge's meridian in the plane every 0.0001 degree of lat (11 m, a third of a texel) from
+  // lat 45 to 45.3; a pixel's distance from it over 0.03 degree (3 km, ~90 texels) either side.
+  std::vector<PlanePoint> edge;
+  for (int j = 0; j <= 3000; ++j) edge.push_back(grid.forward({10.15, 45.0 + j * 0.0001}));
+  size_t textured = 0, reached = 0, bare = 0;
   double worst = 0;
   for (size_t i = 0; i < lon.size(); ++i) {
-    if (std::isnan(lon[i]) || std::abs(lon[i] - 10.15) < 0.001)
-      continue;  // sky, 2 samples of the edge
-    const bool has_texel = lon[i] < 10.15;
-    ++(has_texel ? textured : bare);
+    if (std::isnan(lon[i])) continue;  // sky
+    const PlanePoint q = grid.forward({lon[i], lat[i]});
+    const int j = int((lat[i] - 45.0) / 0.0001);
+    double d = INFINITY;  // texels from the edge
+    for (int k = std::max(0, j - 300); k <= std::min(3000, j + 300); ++k)
+      d = std::min(d, std::hypot(q.x - edge[size_t(k)].x, q.y - edge[size_t(k)].y) / texel_m);
+    const bool past = lon[i] > 10.15;
+    if (d < 2 || (past && std::abs(d - kTextureReach) < 2))
+      continue;  // the edge's texels (half a texel either side), the reach's rim
+    const bool coloured = !past || d < kTextureReach;
+    ++(!past ? textured : coloured ? reached : bare);
     for (size_t k = 0; k < 3; ++k)
-      worst = std::max(worst, std::abs(rgb[3 * i + k] - (has_texel ? texel[k] : 128) * shading[i]));
+      worst = std::max(worst, std::abs(rgb[3 * i + k] - (coloured ? texel[k] : 128) * shading[i]));
   }
   EXPECT_LE(worst, 0.5 + 1e-6);  // rounding alone
   EXPECT_GT(textured, 5000u);
+  EXPECT_GT(reached, 500u);
   EXPECT_GT(bare, 5000u);
 }
 
