@@ -6,11 +6,16 @@
 // PatchMatch iterations per level). Prints CPU and wall times, s per output megapixel and both
 // outputs' measures (assess_metrics.h; ebsynth's sources from its nearest-neighbour field), the
 // coherence at every `step`-th column and row (the exact 5 x 5 search at every 2nd pixel takes
-// minutes of CPU per image; 8 is what benchmarks/README.md's later rows use).
-// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)] [coherence step (2)]
+// minutes of CPU per image; 8 is what benchmarks/README.md's later rows use). Ours is measured
+// with its vote of radius `vote` (synthesis.h), and its copy with ebsynth's plain vote applied
+// (each pixel the mean colour of the 5 x 5 overlapping patches' proposals), so that the
+// smoothing of a mean vote is measured apart from the copy's coherence.
+// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)] [coherence step (2)] [vote (1)]
 #include <omp.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -45,6 +50,35 @@ std::vector<uint8_t> one_hot(const std::vector<uint8_t>& labels,
   return g;
 }
 
+// ebsynth's plain vote of a copy `source` over `out` (row-major): each pixel the mean colour of
+// the exemplar pixels S(q) - (q - p) proposed by the 5 x 5 patches around it that lie in `out`
+// and propose an allowed pixel inside the exemplar.
+std::vector<float> plain_vote(const Exemplar& e, const PixelRect& out,
+                              const std::vector<int32_t>& source) {
+  constexpr int kRadius = 2;
+  std::vector<float> rgb(source.size() * 3);
+  for (int64_t row = 0; row < out.height; ++row)
+    for (int64_t col = 0; col < out.width; ++col) {
+      std::array<double, 3> sum{};
+      int n = 0;
+      for (int64_t dy = -kRadius; dy <= kRadius; ++dy)
+        for (int64_t dx = -kRadius; dx <= kRadius; ++dx) {
+          const int64_t qc = col + dx, qr = row + dy;
+          if (qc < 0 || qr < 0 || qc >= out.width || qr >= out.height) continue;
+          const int32_t s = source[size_t(qr * out.width + qc)];
+          const int64_t x = s % e.width - dx, y = s / e.width - dy;
+          if (x < 0 || y < 0 || x >= e.width || y >= e.height) continue;
+          const size_t c = size_t(y * e.width + x);
+          if (e.excluded[c]) continue;
+          for (size_t k = 0; k < 3; ++k) sum[k] += e.rgb[3 * c + k];
+          ++n;
+        }
+      for (size_t k = 0; k < 3; ++k)
+        rgb[3 * size_t(row * out.width + col) + k] = float(std::round(sum[k] / n));
+    }
+  return rgb;
+}
+
 void print(const char* name, const Metrics& m) {
   std::printf(
       "%-9s label %.4f  excluded %llu  coherence %.0f  distinct %.4f  max share %.5f  "
@@ -55,7 +89,7 @@ void print(const char* name, const Metrics& m) {
   std::printf("\n");
 }
 
-int run(int side, int threads, int step) {
+int run(int side, int threads, int step, const SynthesisParams& params) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
@@ -63,7 +97,7 @@ int run(int side, int threads, int step) {
   const Exemplar e = copied_exemplar(t->pyramid.levels[0]);
 
   std::vector<int32_t> ours;
-  const Timed ours_time = timed([&] { ours = synthesize_tiles(*t, out, 256, threads); });
+  const Timed ours_time = timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params); });
   std::vector<float> ours_rgb(ours.size() * 3);
   for (size_t i = 0; i < ours.size(); ++i)
     for (size_t k = 0; k < 3; ++k) ours_rgb[3 * i + k] = e.rgb[3 * size_t(ours[i]) + k];
@@ -106,9 +140,15 @@ int run(int side, int threads, int step) {
   const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, step));
   const Metrics ebsynth_m =
       metrics(e, tally(e, assessed(out, ebsynth_source, ebsynth_rgb), out, step));
+  const Metrics averaged_m =
+      metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours)), out, step));
+  std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
+              params.vote_radius);
   print("ours", ours_m);
+  print("ours+mean", averaged_m);
   print("ebsynth", ebsynth_m);
-  std::printf("coherence ours / ebsynth: %.2f\n", ours_m.coherence / ebsynth_m.coherence);
+  std::printf("coherence ours / ebsynth: %.2f, ours+mean / ebsynth: %.2f\n",
+              ours_m.coherence / ebsynth_m.coherence, averaged_m.coherence / ebsynth_m.coherence);
   return 0;
 }
 
@@ -123,5 +163,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "synthesis_ebsynth_compare: coherence step %d: must be >= 1\n", step);
     return 1;
   }
-  return maquette::synthesis::bench::run(side, threads, step);
+  maquette::synthesis::SynthesisParams params;
+  if (argc > 4) params.vote_radius = std::stoi(argv[4]);
+  if (params.vote_radius < 0 || params.vote_radius > maquette::synthesis::kVoteRadius) {
+    std::fprintf(stderr, "synthesis_ebsynth_compare: vote %d: must be 0 .. %d\n",
+                 params.vote_radius, maquette::synthesis::kVoteRadius);
+    return 1;
+  }
+  return maquette::synthesis::bench::run(side, threads, step, params);
 }

@@ -62,11 +62,10 @@ std::vector<uint8_t> zion_labels(const PixelRect& window) {
 }
 
 std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect& out, int tile,
-                                      int threads) {
+                                      int threads, const SynthesisParams& params) {
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
   const int64_t across = (out.width + tile - 1) / tile, down = (out.height + tile - 1) / tile;
   const int halo = synthesis_halo();
-  SynthesisParams params;
   tbb::task_arena(threads).execute([&] {
     tbb::parallel_for(int64_t(0), across * down, [&](int64_t i) {
       const PixelRect part{out.col0 + i % across * tile, out.row0 + i / across * tile,

@@ -26,9 +26,9 @@ std::vector<uint8_t> zion_labels(const PixelRect& window);
 
 // Our synthesis of `out` (pixels of the NLCD window) cut into tiles of `tile` pixels, each
 // computed from its own guides grown by synthesis_halo(), on `threads` threads (as the
-// operator's cells are): exemplar pixel per output pixel, row-major.
+// operator's cells are), with `params`: exemplar pixel per output pixel, row-major.
 std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect& out, int tile,
-                                      int threads);
+                                      int threads, const SynthesisParams& params = {});
 
 // `out`'s AssessedImage for exemplar pixels `source` and colours `rgb` (3 per pixel 0..255).
 AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb);

@@ -35,6 +35,16 @@
 // pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
 // on an allowed pixel.
 //
+// Last, the finest level's vote (ebsynth's coherence comes from votes of the overlapping patches;
+// here the vote picks a source, it does not average colours): the patches of side
+// 2 vote_radius + 1 around p each propose S(p + d) - d for it (inside the exemplar, allowed, of
+// p's target label when it has one), and p takes the proposal whose colour is nearest their mean
+// (counted with multiplicity; the first in row-major order of d on ties; none proposed: its own
+// source). A pixel with a depth break within the window keeps its source: the vote would join
+// patches across the silhouette that the correction kept apart. So the output is still a copy:
+// every pixel's colour is its source's, and the sources returned are the pixels whose colours the
+// output shows.
+//
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
 // equals the whole image cropped to it, bit for bit.
@@ -51,6 +61,7 @@ inline constexpr int kLevels = 4;            // pyramid levels synthesized (the 
 inline constexpr int kPasses = 2;            // correction passes per level
 inline constexpr int kSubPasses = 4;         // 2 x 2
 inline constexpr int kRepetitionRadius = 3;  // of the reuse penalty's window, at each level
+inline constexpr int kVoteRadius = 2;        // the widest vote (its patches' radius)
 
 struct SynthesisParams {
   double w_label = 2.0;
@@ -60,6 +71,7 @@ struct SynthesisParams {
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;
+  int vote_radius = 1;        // 0 .. kVoteRadius; 0: no vote
   int jitter = 1;             // amplitude of the upsampling jitter, pixels at each level (0: none)
   double depth_break = 1.05;  // a depth ratio that breaks coherence (with a depth guide)
   uint64_t seed = 0;

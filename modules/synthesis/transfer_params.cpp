@@ -69,6 +69,8 @@ nlohmann::json synthesis_params_schema() {
           {"w_repetition", weight(0.3)},
           {"coherence", weight(0.5)},
           {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
+          {"vote_radius",
+           {{"type", "integer"}, {"minimum", 0}, {"maximum", kVoteRadius}, {"default", 1}}},
           {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}};
 }
 
@@ -79,6 +81,7 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.w_repetition = params.at("w_repetition").get<double>();
   sp.coherence = params.at("coherence").get<double>();
   sp.jitter = params.at("jitter").get<int>();
+  sp.vote_radius = params.at("vote_radius").get<int>();
   sp.seed = params.at("seed").get<uint64_t>();
   return sp;
 }

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -26,11 +27,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// Gates at the measures of the transfer whose candidates of the pixel's own label come first
-// (label consistency 1, distinct sources 0.089, most used source 0.47 %, worst label histogram
-// 0.301, coherence 16,639, altitude mismatch 0.163), each with a small margin.
-constexpr double kLabelGate = 0.995, kDistinctGate = 0.08, kMaxShareGate = 0.0055;
-constexpr double kHistogramGate = 0.33, kCoherenceGate = 17500, kAltitudeGate = 0.18;
+// Gates at the measures of the transfer with the finest level's vote of radius 1 (label
+// consistency 1, distinct sources 0.093, most used source 0.50 %, worst label histogram 0.337,
+// coherence 15,682, altitude mismatch 0.161; without the vote 0.089, 0.47 %, 0.301, 16,639 and
+// 0.163), each with a small margin.
+constexpr double kLabelGate = 0.995, kDistinctGate = 0.085, kMaxShareGate = 0.0055;
+constexpr double kHistogramGate = 0.36, kCoherenceGate = 16500, kAltitudeGate = 0.18;
 
 // The exemplar and guides, the same for the transfer and its assessment.
 json transfer_params() {
@@ -102,6 +104,7 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   EXPECT_GT(report.at("coherence_patches").get<uint64_t>(), pixels / 17);
   EXPECT_LE(report.at("coherence_patches").get<uint64_t>(), pixels / 16);
 
+  std::printf("assessment: %s\n", report.dump().c_str());
   // Issue 18's measures at what is met now (README): the exclusion and label goals are met; the
   // others are gated at their current level so that a regression shows.
   EXPECT_EQ(report.at("excluded_pixels").get<uint64_t>(), 0u);                     // goal: 0

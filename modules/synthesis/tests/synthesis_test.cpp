@@ -1,7 +1,8 @@
 // The parallel synthesis (synthesis.h) on a synthetic two-class exemplar: windows computed with
 // their halo equal the whole image's crop (64^2 and 128^2 tiles, the guides cut to each window
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
-// target's labels; guides that miss the halo are refused.
+// target's labels; the finest level's vote is its definition and joins more neighbours
+// smooths the colours of neighbours; guides that miss the halo are refused.
 #include "../synthesis.h"
 
 #include <gtest/gtest.h>
@@ -167,6 +168,73 @@ TEST_F(SynthesisTest, CopiesPatchesNotScatteredPixels) {
     }
   // Sources drawn at random would be adjacent for ~1 pair in 10^4.
   EXPECT_GE(double(coherent) / double(pairs), 0.2);
+}
+
+// The vote against its definition, computed here from the copy without a vote (the state the
+// vote reads: a window without a vote, grown by the vote's radius, is that state cropped).
+TEST_F(SynthesisTest, TheVoteTakesTheProposalNearestTheProposalsMeanColour) {
+  const ExemplarLevel& e = pyramid_->levels[0];
+  const PixelRect window{kWhole.col0 + 64, kWhole.row0 + 64, 128, 128};
+  const PixelRect around = grown(window, kVoteRadius);
+  SynthesisParams copy;
+  copy.vote_radius = 0;
+  const auto state = synthesize(*pyramid_, guides(grown(around, synthesis_halo())), copy, around);
+  const auto voted = synthesize(*pyramid_, guides(grown(window, synthesis_halo())), {}, window);
+  const TargetGuides g = guides(around);
+  size_t differing = 0, moved = 0;
+  for (int64_t r = 0; r < window.height; ++r)
+    for (int64_t c = 0; c < window.width; ++c) {
+      const auto at = [&](int64_t dc, int64_t dr) {
+        return size_t((r + kVoteRadius + dr) * around.width + c + kVoteRadius + dc);
+      };
+      const uint8_t label = g.labels[at(0, 0)];
+      std::vector<int32_t> proposals;
+      double mean[3] = {0, 0, 0};
+      const int radius = SynthesisParams{}.vote_radius;
+      for (int dr = -radius; dr <= radius; ++dr)
+        for (int dc = -radius; dc <= radius; ++dc) {
+          const int32_t s = state[at(dc, dr)];
+          const int x = s % e.width - dc, y = s / e.width - dr;
+          if (x < 0 || y < 0 || x >= e.width || y >= e.height) continue;
+          const int32_t p = y * e.width + x;
+          if (e.excluded[size_t(p)] || (label != kUnknownLabel && e.labels[size_t(p)] != label))
+            continue;
+          proposals.push_back(p);
+          for (int k = 0; k < 3; ++k) mean[k] += e.rgb[3 * size_t(p) + size_t(k)];
+        }
+      int32_t expected = state[at(0, 0)];
+      double least = INFINITY;
+      for (const int32_t p : proposals) {
+        double d = 0;
+        for (int k = 0; k < 3; ++k)
+          d += std::pow(e.rgb[3 * size_t(p) + size_t(k)] - mean[k] / double(proposals.size()), 2);
+        if (d < least) least = d, expected = p;
+      }
+      const int32_t got = voted[size_t(r * window.width + c)];
+      differing += got != expected;
+      moved += got != state[at(0, 0)];
+    }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(moved, size_t(window.width * window.height / 20));  // the vote does change the copy
+}
+
+TEST_F(SynthesisTest, TheVoteSmoothsTheColoursOfNeighbours) {
+  // Mean squared colour difference of horizontal neighbours, with and without the vote.
+  const ExemplarLevel& e = pyramid_->levels[0];
+  const auto roughness = [&](const std::vector<int32_t>& src) {
+    double sum = 0;
+    for (int64_t r = 0; r < kWhole.height; ++r)
+      for (int64_t c = 0; c + 1 < kWhole.width; ++c)
+        for (size_t k = 0; k < 3; ++k)
+          sum += std::pow(e.rgb[3 * size_t(src[size_t(r * kWhole.width + c + 1)]) + k] -
+                              e.rgb[3 * size_t(src[size_t(r * kWhole.width + c)]) + k],
+                          2);
+    return sum;
+  };
+  SynthesisParams copy;
+  copy.vote_radius = 0;
+  const auto without = synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo())), copy, kWhole);
+  EXPECT_LT(roughness(*whole_), 0.9 * roughness(without));
 }
 
 TEST_F(SynthesisTest, RaisingTheAltitudeWeightLowersTheAltitudeMismatch) {
