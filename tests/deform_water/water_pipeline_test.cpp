@@ -246,11 +246,26 @@ Lake expect_paraboloid_lake(const Site& site) {
   if (!fog) return {};
   EXPECT_EQ(fog->getGridClass(), openvdb::GRID_FOG_VOLUME);
   EXPECT_EQ(fog->getName(), "water");
-  const openvdb::Vec3d voxel = fog->voxelSize();
-  const double fog_volume = double(fog->activeVoxelCount()) * voxel[0] * voxel[1] * voxel[2];
+  // The voxels are the pixels' lattice (turned by 90 degrees on face P), a voxel's volume its
+  // transform's determinant.
+  const double fog_volume = double(fog->activeVoxelCount()) * fog->transform().voxelVolume();
   EXPECT_NEAR(fog_volume, volume, 0.01 * volume);
-  const openvdb::CoordBBox box = fog->evalActiveVoxelBoundingBox();
-  const openvdb::Vec3d lo = fog->indexToWorld(box.min()), hi = fog->indexToWorld(box.max());
+  const openvdb::Vec3d sides = fog->voxelSize();
+  const openvdb::Vec3d voxel(std::max(sides[0], sides[1]), std::max(sides[0], sides[1]), sides[2]);
+  // The frame's box of the active voxels' centres (each tile's corner voxels).
+  openvdb::Vec3d lo(INFINITY), hi(-INFINITY);
+  for (auto v = fog->cbeginValueOn(); v; ++v) {
+    openvdb::CoordBBox box;
+    v.getBoundingBox(box);
+    for (int corner = 0; corner < 8; ++corner) {
+      const openvdb::Coord c((corner & 1 ? box.max() : box.min()).x(),
+                             (corner & 2 ? box.max() : box.min()).y(),
+                             (corner & 4 ? box.max() : box.min()).z());
+      const openvdb::Vec3d p = fog->indexToWorld(c);
+      lo = openvdb::math::minComponent(lo, p);
+      hi = openvdb::math::maxComponent(hi, p);
+    }
+  }
   const GeographicLib::LocalCartesian frame(origin.lat, origin.lon, origin.height);
   double x = 0, y = 0, top = 0, bottom = 0;
   frame.Forward(site.lat, site.lon, level, x, y, top);
