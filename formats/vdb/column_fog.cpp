@@ -55,16 +55,23 @@ Block block_voxels(const FogColumns& body, int32_t bi, int32_t bj) {
     tile[m] = k0 >= top_low && k0 + kLeafDim <= bottom_high;
     if (tile[m]) out.tiles.emplace_back(i0, j0, k0);
   }
+  // Each column's run of voxels in a leaf: 1s written and mask bits set at once (a column's 8
+  // voxels of a leaf are one byte of one 64-bit word of its mask).
   for (int32_t j = j0; j < j1; ++j)
     for (int32_t i = i0; i < i1; ++i) {
       const size_t at = size_t(j) * size_t(body.width) + size_t(i);
+      if (body.low[at] >= body.high[at]) continue;
       const openvdb::Index base = openvdb::Index(((i & 7) << 6) | ((j & 7) << 3));
-      for (int32_t k = body.low[at]; k < body.high[at]; ++k) {
-        const size_t m = size_t((k >> 3) - first);
+      for (int32_t k0 = body.low[at] & ~(kLeafDim - 1); k0 < body.high[at]; k0 += kLeafDim) {
+        const size_t m = size_t((k0 >> 3) - first);
         if (tile[m]) continue;
         Leaf*& leaf = leaves[m];
-        if (!leaf) leaf = new Leaf(openvdb::Coord(i0, j0, k & ~(kLeafDim - 1)), 0.0f, false);
-        leaf->setValueOn(base + openvdb::Index(k & 7), 1.0f);
+        if (!leaf) leaf = new Leaf(openvdb::Coord(i0, j0, k0), 0.0f, false);
+        const int32_t z0 = std::max(body.low[at], k0) - k0;
+        const int32_t z1 = std::min(body.high[at], k0 + kLeafDim) - k0;
+        std::fill_n(leaf->buffer().data() + base + openvdb::Index(z0), z1 - z0, 1.0f);
+        leaf->getValueMask().getWord<uint64_t>(base >> 6) |= ((uint64_t(1) << (z1 - z0)) - 1)
+                                                             << ((base & 63) + openvdb::Index(z0));
       }
     }
   for (Leaf* leaf : leaves)
