@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -477,6 +478,26 @@ TEST(DeformWater, SameBitsForOneAndTwoThreads) {
   EXPECT_GT(test::expect_same_tiles(*a, *b, "water_depth"), 0u);
   EXPECT_EQ(test::expect_same_content(*a, *b, "water_mesh"), 1u);
   EXPECT_EQ(test::expect_same_content(*a, *b, "water_volume"), 1u);
+}
+
+// Under mpirun with 2 ranks (the step runs once, on rank 0; the other rank's cells are written
+// through it): the same depth tiles, mesh and volume as one thread.
+TEST(DeformWater, SameBitsOnTwoMpiRanks) {
+#ifdef MAQUETTE_MPIEXEC
+  const Basin one(stroke(2000, json::object())), two(stroke(2000, json::object()));
+  ASSERT_EQ(one.run("-t 1").exit_code, 0);
+  const std::string command = std::string(MAQUETTE_MPIEXEC) +
+                              " --oversubscribe --allow-run-as-root -np 2 " + MAQUETTE_BIN_DIR +
+                              "/maquette -q run --threads 1 " + two.dir + "/pipeline.json 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const auto a = Store::open(one.store, Store::Mode::ReadOnly);
+  const auto b = Store::open(two.store, Store::Mode::ReadOnly);
+  EXPECT_GT(test::expect_same_tiles(*a, *b, "water_depth"), 0u);
+  EXPECT_EQ(test::expect_same_content(*a, *b, "water_mesh"), 1u);
+  EXPECT_EQ(test::expect_same_content(*a, *b, "water_volume"), 1u);
+#else
+  GTEST_SKIP() << "built without MPI: 2 ranks not tested";
+#endif
 }
 
 TEST(DeformWater, LevelAboveTheRimFailsNamingTheLeak) {
