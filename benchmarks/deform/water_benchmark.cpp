@@ -1,7 +1,7 @@
-// deform.water's water body (level + fill, water_body.h), its closed meshes (water_mesh.h: with
-// the terrain's bottom for the fog volume, with the flat one for the mesh port), its fog volume
-// (vdb/mesh_fog.h) and the mesh's store blob for a 1,000 x 1,000-sample basin: the tests' bowl of
-// hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
+// deform.water's water body (level + fill, water_body.h), its closed meshes (water_mesh.h: the
+// mesh port's has the flat bottom), its fog volume straight from the depth raster
+// (water_columns.h, vdb/column_fog.h) and the mesh's store blob for a 1,000 x 1,000-sample basin:
+// the tests' bowl of hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
 // Goals: <= 50 ms for the body, well under a second for the mesh. With --dem=PATH it writes that
 // DEM as a GeoTIFF and prints the level and the seed's coordinates for compare_rlake.sh (r.lake on
 // the same DEM), then exits.
@@ -16,7 +16,8 @@
 #include "gltf/mesh_glb.h"
 #include "main_thread_cpu.h"
 #include "tests/water_basins.h"
-#include "vdb/mesh_fog.h"
+#include "vdb/column_fog.h"
+#include "water_columns.h"
 #include "water_content.h"
 #include "water_mesh.h"
 
@@ -61,30 +62,39 @@ void BM_LakeMesh(benchmark::State& state) {
 }
 BENCHMARK(BM_LakeMesh)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
-// The lake's fog body as deform.water builds it (water_content.h: voxels of a pixel across, the
-// greatest depth over kVoxelsDeep high, faces at the surface), from its mesh in a plane frame
-// (col, -row scaled to metres).
-maquette::FogBody lake_fog(const WaterBody& body, const LakeMesh& mesh) {
-  maquette::FogBody fog;
+// The lake's mesh in a plane frame (col, -row scaled to metres).
+maquette::MeshObject plane_mesh(const LakeMesh& mesh) {
+  maquette::MeshObject object;
   for (const LakeVertex& v : mesh.vertices)
-    fog.mesh.positions.insert(fog.mesh.positions.end(),
-                              {float(v.col * kPixelM), float(-v.row * kPixelM), float(v.height)});
-  fog.mesh.indices = mesh.indices;
-  const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
-  fog.voxel = {kPixelM, kPixelM, deepest / LakeContent::kVoxelsDeep};
-  fog.corner = {0, 0, body.level};
-  fog.name = "water";
-  return fog;
+    object.positions.insert(object.positions.end(),
+                            {float(v.col * kPixelM), float(-v.row * kPixelM), float(v.height)});
+  object.indices = mesh.indices;
+  return object;
 }
 
-// The fog volume: mesh_to_fog, as the volume plug-in runs it.
+// The lake's fog columns as deform.water builds them (water_content.h: a column per wet pixel,
+// voxels of a pixel across, the greatest depth over kVoxelsDeep high), in the plane frame of
+// plane_mesh (pixel centres at (col + 1/2, -(row + 1/2)) pixels), the surface flat.
+maquette::FogColumns plane_columns(const BasinRaster& raster, const WaterBody& body) {
+  const auto centre = [&](int64_t pixel) {
+    return std::array{(double(pixel % raster.width) + 0.5) * kPixelM,
+                      -(double(pixel / raster.width) + 0.5) * kPixelM, body.level};
+  };
+  const PixelLattice lattice{centre(body.seed), {kPixelM, 0, 0}, {0, -kPixelM, 0}};
+  std::vector<std::array<double, 3>> surface(body.wet.size());
+  for (size_t w = 0; w < surface.size(); ++w) surface[w] = centre(body.wet[w]);
+  return lake_columns(raster, body, lattice, surface, LakeContent::kVoxelsDeep);
+}
+
+// The fog volume from the depth raster: the columns, and columns_to_fog as the volume plug-in
+// runs it.
 void BM_LakeVolume(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const maquette::FogBody fog = lake_fog(body, lake_mesh(raster, body, LakeBottom::Terrain));
   size_t bytes = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
-  for (auto _ : state) bytes = maquette::mesh_to_fog({fog}, {}, "lake").vdb.size();
+  for (auto _ : state)
+    bytes = maquette::columns_to_fog({plane_columns(raster, body)}, {}, "lake").vdb.size();
   main_cpu.stop();
   state.counters["wet"] = double(body.wet.size());
   state.counters["MB"] = double(bytes) / 1e6;
@@ -96,10 +106,10 @@ BENCHMARK(BM_LakeVolume)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()
 void BM_LakeMeshNormals(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const maquette::FogBody fog = lake_fog(body, lake_mesh(raster, body, LakeBottom::Flat));
+  const maquette::MeshObject mesh = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
   size_t vertices = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
-  for (auto _ : state) vertices = maquette::with_facet_normals(fog.mesh).positions.size() / 3;
+  for (auto _ : state) vertices = maquette::with_facet_normals(mesh).positions.size() / 3;
   main_cpu.stop();
   state.counters["vertices"] = double(vertices);
 }
@@ -114,7 +124,7 @@ void BM_LakeMeshBlob(benchmark::State& state) {
   maquette::MeshContent content;
   content.materials.emplace_back().name = "water";  // its factors do not change the work
   content.objects.push_back(
-      maquette::with_facet_normals(lake_fog(body, lake_mesh(raster, body, LakeBottom::Flat)).mesh));
+      maquette::with_facet_normals(plane_mesh(lake_mesh(raster, body, LakeBottom::Flat))));
   content.objects.back().material = 0;
   size_t bytes = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
@@ -125,18 +135,20 @@ void BM_LakeMeshBlob(benchmark::State& state) {
 BENCHMARK(BM_LakeMeshBlob)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The whole water body as deform.water makes it: level, fill, the flat-bottomed mesh with its
-// normals, and the fog volume of the terrain-bottomed mesh (the goal: <= 50 ms on 2 cores).
+// normals, and the fog volume from the depth raster (the goal: <= 50 ms on 2 cores).
 void BM_WaterBodyWhole(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
     const WaterBody body = fill_basin(raster, water_level(raster, {}));
-    const maquette::FogBody shown = lake_fog(body, lake_mesh(raster, body, LakeBottom::Flat));
-    const maquette::FogBody fog = lake_fog(body, lake_mesh(raster, body, LakeBottom::Terrain));
+    const maquette::MeshObject shown = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
     // The normals and the volume at once, as LakeContent::finish makes them.
     tbb::parallel_invoke(
-        [&] { benchmark::DoNotOptimize(maquette::with_facet_normals(shown.mesh).normals.data()); },
-        [&] { benchmark::DoNotOptimize(maquette::mesh_to_fog({fog}, {}, "lake").vdb.data()); });
+        [&] { benchmark::DoNotOptimize(maquette::with_facet_normals(shown).normals.data()); },
+        [&] {
+          benchmark::DoNotOptimize(
+              maquette::columns_to_fog({plane_columns(raster, body)}, {}, "lake").vdb.data());
+        });
   }
   main_cpu.stop();
 }

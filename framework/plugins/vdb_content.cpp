@@ -39,8 +39,8 @@ void maquette_vdb_overview(const std::vector<std::string>& children,
   overview = wrap_content(envelope, encode_volume(grids, level.origin).vdb);
 }
 
-void maquette_vdb_mesh_fog(const std::vector<maquette::FogBody>& bodies,
-                           const maquette::EnuOrigin& origin, const std::string& where,
-                           maquette::VolumeContent& volume) {
-  volume = maquette::mesh_to_fog(bodies, origin, where);
+void maquette_vdb_column_fog(const std::vector<maquette::FogColumns>& bodies,
+                             const maquette::EnuOrigin& origin, const std::string& where,
+                             maquette::VolumeContent& volume) {
+  volume = maquette::columns_to_fog(bodies, origin, where);
 }

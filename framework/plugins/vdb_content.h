@@ -1,6 +1,6 @@
 // The volume plug-in, libmaquette_vdb.so: volume blobs' payloads (VDB streams, formats/vdb)
 // meshed for export and counted for the store, and volumes built for modules that must not link
-// OpenVDB (a closed mesh's inside as a fog volume), opened by the commands that need them only, so
+// OpenVDB (voxel columns as a fog volume), opened by the commands that need them only, so
 // no other command loads OpenVDB.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 #include "content/content.h"
 #include "content/content_overviews.h"
-#include "vdb/mesh_fog.h"
+#include "vdb/column_fog.h"
 #include "vdb/volume_mesh.h"
 
 namespace maquette {
@@ -21,7 +21,7 @@ inline constexpr const char* kVdbMeshEntry = "maquette_vdb_mesh";
 inline constexpr const char* kVdbStatsEntry = "maquette_vdb_stats";
 inline constexpr const char* kVdbAnchorsEntry = "maquette_vdb_anchors";
 inline constexpr const char* kVdbOverviewEntry = "maquette_vdb_overview";
-inline constexpr const char* kVdbMeshFogEntry = "maquette_vdb_mesh_fog";
+inline constexpr const char* kVdbColumnFogEntry = "maquette_vdb_column_fog";
 
 }  // namespace maquette
 
@@ -43,7 +43,7 @@ extern "C" void maquette_vdb_anchors(const maquette::VolumeContent& volume,
 extern "C" void maquette_vdb_overview(const std::vector<std::string>& children,
                                       const maquette::ContentLevel& level, const std::string& where,
                                       std::optional<std::string>& overview);
-// mesh_to_fog (vdb/mesh_fog.h) into `volume`: closed meshes' insides as fog volumes.
-extern "C" void maquette_vdb_mesh_fog(const std::vector<maquette::FogBody>& bodies,
-                                      const maquette::EnuOrigin& origin, const std::string& where,
-                                      maquette::VolumeContent& volume);
+// columns_to_fog (vdb/column_fog.h) into `volume`: voxel columns as fog volumes.
+extern "C" void maquette_vdb_column_fog(const std::vector<maquette::FogColumns>& bodies,
+                                        const maquette::EnuOrigin& origin, const std::string& where,
+                                        maquette::VolumeContent& volume);

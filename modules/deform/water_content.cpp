@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <set>
+#include <span>
+#include <tuple>
 #include <utility>
 
 #include "content/enu_transform.h"
@@ -24,14 +27,25 @@
 namespace maquette::deform {
 namespace {
 
-// The centre of the bounding box of a mesh's positions.
-std::array<double, 3> box_centre(const std::vector<float>& positions) {
+// The centre of the bounding box of places (lon, lat, height) in the frame at the first one.
+GeodeticPoint box_centre(const std::vector<std::array<double, 3>>& places) {
+  const auto& first = places.front();
+  const EnuFrame frame = enu_frame({first[0], first[1], first[2]});
   std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  for (size_t i = 0; i < positions.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], double(positions[i]));
-    hi[i % 3] = std::max(hi[i % 3], double(positions[i]));
+  for (const auto& [lon, lat, height] : places) {
+    const auto [x, y, z] = frame.to_enu(lon, lat, height);
+    lo = {std::min(lo[0], x), std::min(lo[1], y), std::min(lo[2], z)};
+    hi = {std::max(hi[0], x), std::max(hi[1], y), std::max(hi[2], z)};
   }
-  return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+  return frame.to_geodetic((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+}
+
+// The lake's provenance: its stroke, level, area and volume.
+ObjectProvenance lake_provenance(const VectorFeature& f, const WaterBody& body) {
+  return {uint64_t(f.id),
+          f.id,
+          "deform.water",
+          {{"level", body.level}, {"area_m2", body.area_m2}, {"volume_m3", body.volume_m3}}};
 }
 
 // Mesh vertices per parallel chunk.
@@ -51,17 +65,6 @@ Material water_material(const std::array<double, 3>& srgb) {
   return m;
 }
 
-double LakeContent::surface_height(const Lake& lake, const MeshObject& object) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < lake.places.size(); ++i)
-    if (lake.on_surface[i]) {
-      sum += double(object.positions[3 * i + 2]);
-      ++n;
-    }
-  return sum / double(n);
-}
-
 LakeContent::LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output,
                          Material material)
     : ctx_(ctx), material_(std::move(material)), input_(input), output_(output) {}
@@ -77,8 +80,8 @@ CellId LakeContent::owner(const std::string& what, double lon, double lat) const
 MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const {
   const EnuFrame frame = enu_frame(origin);
   MeshObject object;
-  object.provenance = lake.fog.mesh.provenance;
-  object.indices = lake.fog.mesh.indices;
+  object.provenance = lake.provenance;
+  object.indices = lake.indices;
   object.positions.resize(3 * lake.places.size());
   parallel_chunks(lake.places.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
@@ -90,46 +93,90 @@ MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const 
   return object;
 }
 
+std::array<double, 3> LakeContent::place(const UnfoldedFaces& plane, double col, double row,
+                                         double height) const {
+  const UnfoldedFaces::FacePoint at =
+      *plane.from_anchor(double(input_.origin_col) + col, double(input_.origin_row) + row);
+  const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
+  return {p.lon, p.lat, (*to_ellipsoid_)(p, height)};
+}
+
 LakeContent::Lake LakeContent::placed(const VectorFeature& f, const BasinRaster& basin,
-                                      const WaterBody& body, LakeBottom bottom) const {
-  const LakeMesh mesh = lake_mesh(basin, body, bottom);
+                                      const WaterBody& body) const {
+  const LakeMesh mesh = lake_mesh(basin, body, LakeBottom::Flat);
   // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
   // the mosaic's face (a lake may cross a face seam).
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
   Lake lake;
   lake.where = describe(f);
-  lake.level = body.level;
   lake.places.resize(mesh.vertices.size());
   // In order within each chunk: a failure (of the geoid's grid) is the lowest vertex's.
   parallel_chunks(mesh.vertices.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
-      // A corner of a wet pixel, which has a place.
+      // A corner of a wet pixel.
       const LakeVertex& v = mesh.vertices[i];
-      const UnfoldedFaces::FacePoint at = *plane.from_anchor(
-          double(input_.origin_col) + v.col - 0.5, double(input_.origin_row) + v.row - 0.5);
-      const LonLat p = face_point_lonlat(*ctx_.grid, at.face, at.col, at.row, input_.level);
-      lake.places[i] = {p.lon, p.lat, (*to_ellipsoid_)(p, v.height)};
+      lake.places[i] = place(plane, v.col - 0.5, v.row - 0.5, v.height);
     }
   });
-  for (const LakeVertex& v : mesh.vertices) lake.on_surface.push_back(v.height == body.level);
-  lake.fog.mesh.provenance = {
-      uint64_t(f.id),
-      f.id,
-      "deform.water",
-      {{"level", body.level}, {"area_m2", body.area_m2}, {"volume_m3", body.volume_m3}}};
-  lake.fog.mesh.indices = mesh.indices;
-  const double side = std::sqrt(basin.pixel_area_m2);
-  const double deepest = double(*std::max_element(body.depth.begin(), body.depth.end()));
-  lake.fog.voxel = {side, side, deepest / kVoxelsDeep};
-  lake.fog.name = "water";
+  lake.provenance = lake_provenance(f, body);
+  lake.indices = mesh.indices;
   return lake;
+}
+
+LakeContent::Column LakeContent::columns(const VectorFeature& f, const BasinRaster& basin,
+                                         const WaterBody& body) const {
+  const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
+  Column column{{basin.width, basin.height, {}, {}, basin.pixel_area_m2},
+                body,
+                {},
+                lake_provenance(f, body),
+                describe(f)};
+  const size_t wet = body.wet.size();
+  const double seed_col = double(body.seed % basin.width),
+               seed_row = double(body.seed / basin.width);
+  const std::array<std::array<double, 2>, 4> sides{{{seed_col + 0.5, seed_row},
+                                                    {seed_col - 0.5, seed_row},
+                                                    {seed_col, seed_row + 0.5},
+                                                    {seed_col, seed_row - 0.5}}};
+  column.places.resize(wet + sides.size());
+  parallel_chunks(column.places.size(), kChunk, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i)
+      column.places[i] = i < wet ? place(plane, double(body.wet[i] % basin.width),
+                                         double(body.wet[i] / basin.width), body.level)
+                                 : place(plane, sides[i - wet][0], sides[i - wet][1], body.level);
+  });
+  return column;
+}
+
+FogColumns LakeContent::fog(const Column& column, const EnuOrigin& origin) {
+  const EnuFrame frame = enu_frame(origin);
+  const size_t wet = column.body.wet.size();
+  std::vector<std::array<double, 3>> at(column.places.size());
+  parallel_chunks(at.size(), kChunk, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      const auto& [lon, lat, height] = column.places[i];
+      const auto [x, y, z] = frame.to_enu(lon, lat, height);
+      at[i] = {x, y, z};
+    }
+  });
+  const auto& [east, west, south, north] = std::tie(at[wet], at[wet + 1], at[wet + 2], at[wet + 3]);
+  const size_t seed =
+      size_t(std::lower_bound(column.body.wet.begin(), column.body.wet.end(), column.body.seed) -
+             column.body.wet.begin());
+  const PixelLattice lattice{at[seed],
+                             {east[0] - west[0], east[1] - west[1], east[2] - west[2]},
+                             {south[0] - north[0], south[1] - north[1], south[2] - north[2]}};
+  FogColumns fog =
+      lake_columns(column.basin, column.body, lattice, std::span(at).first(wet), kVoxelsDeep);
+  fog.provenance = column.provenance;
+  return fog;
 }
 
 void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
   if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
   const CellContent& any = output_.content.begin()->second;
   if (any.wants("mesh")) {
-    const Lake lake = placed(f, basin, body, LakeBottom::Flat);
+    const Lake lake = placed(f, basin, body);
     const auto& first = lake.places.front();
     const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
     MeshContent& content = output_.content.at(cell).mesh("mesh");
@@ -138,7 +185,7 @@ void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const Wa
     content.objects.push_back(object(lake, content.origin));
     content.objects.back().material = 0;
   }
-  if (any.wants("volume")) lakes_.push_back(placed(f, basin, body, LakeBottom::Terrain));
+  if (any.wants("volume")) columns_.push_back(columns(f, basin, body));
 }
 
 void LakeContent::finish() {
@@ -167,19 +214,16 @@ void LakeContent::finish() {
 }
 
 void LakeContent::write_volumes() {
-  if (lakes_.empty()) return;
+  if (columns_.empty()) return;
   static auto* const fog_of =
-      plugin_function<decltype(maquette_vdb_mesh_fog)>(kVdbPlugin, kVdbMeshFogEntry);
+      plugin_function<decltype(maquette_vdb_column_fog)>(kVdbPlugin, kVdbColumnFogEntry);
   static auto* const anchors_of =
       plugin_function<decltype(maquette_vdb_anchors)>(kVdbPlugin, kVdbAnchorsEntry);
-  // First guess of each lake's owner: the cell of its mesh's bounding-box centre, in a frame at
-  // its first vertex; the grid's active voxels are within a voxel of that box.
+  // First guess of each lake's owner: the cell of the bounding-box centre of its wet pixels'
+  // centres, in a frame at the first; the grid's active voxels are within a voxel of that box.
   std::vector<CellId> owners;
-  for (const Lake& lake : lakes_) {
-    const auto& first = lake.places.front();
-    const EnuOrigin origin{first[0], first[1], first[2]};
-    const auto [x, y, z] = box_centre(object(lake, origin).positions);
-    const GeodeticPoint p = enu_frame(origin).to_geodetic(x, y, z);
+  for (const Column& lake : columns_) {
+    const GeodeticPoint p = box_centre(lake.places);
     owners.push_back(owner(lake.where + ": the lake's volume", p.lon, p.lat));
   }
   // Built in each owner's frame; a grid whose anchor falls in another cell (a lake centred within
@@ -189,13 +233,11 @@ void LakeContent::write_volumes() {
     bool moved = false;
     for (const CellId cell : std::set<CellId>(owners.begin(), owners.end())) {
       VolumeContent& volume = output_.content.at(cell).volume("volume");
-      std::vector<FogBody> bodies;
+      std::vector<FogColumns> bodies;
       std::vector<size_t> which;
-      for (size_t i = 0; i < lakes_.size(); ++i)
+      for (size_t i = 0; i < columns_.size(); ++i)
         if (owners[i] == cell) {
-          FogBody& fog = bodies.emplace_back(lakes_[i].fog);
-          fog.mesh = object(lakes_[i], volume.origin);
-          fog.corner[2] = surface_height(lakes_[i], fog.mesh);
+          bodies.push_back(fog(columns_[i], volume.origin));
           which.push_back(i);
         }
       fog_of(bodies, volume.origin, "deform.water, cell " + cell.ToText(), volume);
@@ -207,7 +249,7 @@ void LakeContent::write_volumes() {
         if (!anchors[k]) continue;
         const GeodeticPoint p =
             frame.to_geodetic((*anchors[k])[0], (*anchors[k])[1], (*anchors[k])[2]);
-        const CellId at = owner(lakes_[which[k]].where + ": the lake's volume", p.lon, p.lat);
+        const CellId at = owner(columns_[which[k]].where + ": the lake's volume", p.lon, p.lat);
         moved = moved || at != cell;
         owners[which[k]] = at;
       }

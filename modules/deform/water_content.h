@@ -2,10 +2,10 @@
 // of its outline, the bottom under the terrain) on the mesh port, with facet normals
 // (content/facet_normals.h: CesiumJS draws a mesh without normals unlit) and a water material
 // (water_material), and its fog volume on the volume port, built by the volume plug-in
-// (plugins/vdb_content.h: mesh_to_fog of the closed mesh with the terrain's bottom, the water's
-// own volume) so that the module does not link OpenVDB. Each object is
-// written by the cell that owns its anchor: the mesh's first vertex, the volume grid's centre of
-// its active voxels (content/content.h).
+// (plugins/vdb_content.h: columns_to_fog of the lake's depth raster, water_columns.h, the
+// water's own volume) so that the module does not link OpenVDB. Each object is written by the
+// cell that owns its anchor: the mesh's first vertex, the volume grid's centre of its active
+// voxels (content/content.h).
 //
 // Heights are the DEM's taken to the ellipsoid with its layer's recorded vertical datum
 // (gdal/vertical_datum.h), as the terrain export takes them, so a lake sits on the exported
@@ -17,10 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "core/unfolded_faces.h"
 #include "gdal/vertical_datum.h"
 #include "runtime/operator.h"
-#include "vdb/mesh_fog.h"
 #include "water_body.h"
+#include "water_columns.h"
 #include "water_mesh.h"
 
 namespace maquette::deform {
@@ -56,26 +57,39 @@ class LakeContent {
  private:
   struct Lake {
     std::vector<std::array<double, 3>> places;  // lon, lat, ellipsoidal height per mesh vertex
-    std::vector<bool> on_surface;               // per mesh vertex: on the water's surface
-    FogBody fog;                                // its mesh's positions set per owner cell
-    std::string where;                          // "feature 7 (tool water)"
-    double level = 0;
+    ObjectProvenance provenance;
+    std::vector<uint32_t> indices;  // the mesh's triangles
+    std::string where;              // "feature 7 (tool water)"
+  };
+  // A lake's volume: its body, and the places (lon, lat, ellipsoidal height) of its wet pixels'
+  // centres on the water's surface, then of the seed pixel's east, west, south and north sides'
+  // midpoints (its lattice's axes in a frame).
+  struct Column {
+    BasinRaster basin;  // its size only
+    WaterBody body;
+    std::vector<std::array<double, 3>> places;
+    ObjectProvenance provenance;
+    std::string where;
   };
   // A mesh added without its normals yet: its cell and its place in the cell's mesh port.
   struct Unlit {
     CellId cell;
     size_t object = 0;
   };
-  // The lake's mesh with `bottom`, its vertices placed (the heights on the ellipsoid), its fog
-  // body's provenance, indices and voxels set.
-  Lake placed(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body,
-              LakeBottom bottom) const;
+  // The lake's flat-bottomed mesh, its vertices placed (the heights on the ellipsoid).
+  Lake placed(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) const;
+  // The lake's volume: its wet pixels' centres and seed's sides placed.
+  Column columns(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) const;
+  // The place (lon, lat, ellipsoidal height) of the mosaic's pixel-centre coordinates (col, row)
+  // (corners at half-integers) in `plane` (unfolded around the mosaic's face) at `height` of the
+  // DEM's datum; the point lies on a wet pixel (which has a place).
+  std::array<double, 3> place(const UnfoldedFaces& plane, double col, double row,
+                              double height) const;
   void write_volumes();
   MeshObject object(const Lake& lake, const EnuOrigin& origin) const;
+  // The columns of `column` in the frame of `origin` (water_columns.h).
+  static FogColumns fog(const Column& column, const EnuOrigin& origin);
   CellId owner(const std::string& what, double lon, double lat) const;
-  // The mean height of the lake's surface vertices in `object` (the lake in a frame): a plane
-  // within the Earth's curvature over the lake of the water's surface.
-  static double surface_height(const Lake& lake, const MeshObject& object);
 
   const StepContext& ctx_;
   const Material material_;
@@ -84,7 +98,7 @@ class LakeContent {
   std::optional<EllipsoidalHeights> to_ellipsoid_;
   const Mosaic& input_;
   Mosaic& output_;
-  std::vector<Lake> lakes_;
+  std::vector<Column> columns_;
   std::vector<Unlit> unlit_;
 };
 

@@ -1,0 +1,67 @@
+#include "water_columns.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace maquette::deform {
+namespace {
+
+// A voxel index in the lattice's range (vdb/column_fog.h refuses a column beyond +-2^30).
+int32_t voxel_index(double k) { return int32_t(std::clamp(k, -2.0e9, 2.0e9)); }
+
+}  // namespace
+
+FogColumns lake_columns(const BasinRaster& basin, const WaterBody& body,
+                        const PixelLattice& lattice, std::span<const std::array<double, 3>> surface,
+                        int voxels_deep) {
+  using V = std::array<double, 3>;
+  const auto& [seed, a, along_row] = lattice;
+  const V b{-along_row[0], -along_row[1], -along_row[2]};
+  const V cross{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double norm = std::hypot(cross[0], cross[1], cross[2]);
+  const V up{cross[0] / norm, cross[1] / norm, cross[2] / norm};
+  const int64_t width = basin.width;
+  int64_t col0 = width, row0 = basin.height, col1 = -1, row1 = -1;  // inclusive
+  for (const int64_t w : body.wet) {
+    col0 = std::min(col0, w % width), col1 = std::max(col1, w % width);
+    row0 = std::min(row0, w / width), row1 = std::max(row1, w / width);
+  }
+  FogColumns fog;
+  fog.width = int32_t(col1 - col0 + 1);
+  fog.height = int32_t(row1 - row0 + 1);
+  fog.low.assign(size_t(fog.width) * size_t(fog.height), 0);
+  fog.high.assign(fog.low.size(), 0);
+  const double dz = double(*std::max_element(body.depth.begin(), body.depth.end())) / voxels_deep;
+  // Each wet pixel's surface height over the plane.
+  std::vector<double> height(body.wet.size());
+  double mean = 0;
+  for (size_t w = 0; w < height.size(); ++w) {
+    const V& p = surface[w];
+    height[w] = (p[0] - seed[0]) * up[0] + (p[1] - seed[1]) * up[1] + (p[2] - seed[2]) * up[2];
+    mean += height[w];
+  }
+  mean /= double(height.size());
+  // Voxel k of a column is centred at height base + k * dz: voxel -1's top face at the mean, so
+  // that a lake of flat surface fills whole leaves (k -8 to -1, -16 to -9, ...).
+  const double base = mean + dz / 2;
+  for (size_t w = 0; w < body.wet.size(); ++w) {
+    const int64_t col = body.wet[w] % width, row = body.wet[w] / width;
+    const size_t at = size_t(row1 - row) * size_t(fog.width) + size_t(col - col0);
+    // Centres strictly between the bed and the surface: low <= k < high.
+    fog.high[at] = voxel_index(std::ceil((height[w] - base) / dz));
+    fog.low[at] = voxel_index(std::floor((height[w] - double(body.depth[w]) - base) / dz) + 1);
+  }
+  const double dc = double(col0 - body.seed % width), dr = double(row1 - body.seed / width);
+  for (size_t x = 0; x < 3; ++x) {
+    fog.centre[x] = seed[x] + dc * a[x] + dr * along_row[x] + base * up[x];
+    fog.axes[0][x] = a[x];
+    fog.axes[1][x] = b[x];
+    fog.axes[2][x] = dz * up[x];
+  }
+  fog.name = "water";
+  return fog;
+}
+
+}  // namespace maquette::deform
