@@ -129,8 +129,10 @@ class Assess : public ReduceOperator {
     json moments = json::object();  // class -> {"image": moments, "texture": moments}
     Tile<float> scene;              // the image, its illumination removed when asked
     std::vector<std::array<double, 3>> a, b;
-    const auto light = illumination_of(*ctx.params, data, "texture.assess");
-    const double lit_cos = colour_incidence(*ctx.params, light, "texture.assess");
+    // Only the colour comparison needs the illumination (a kappa-only assessment takes no
+    // hillshade).
+    const auto light = colour ? illumination_of(*ctx.params, data, "texture.assess") : std::nullopt;
+    const double lit_cos = colour ? colour_incidence(*ctx.params, light, "texture.assess") : 0;
     if (colour) {
       scene = data.inputs.at("rgb");
       if (light)
@@ -168,12 +170,15 @@ class Assess : public ReduceOperator {
         const auto as_float = [](const std::array<double, 3>& x) {
           return std::array<float, 3>{float(x[0]), float(x[1]), float(x[2])};
         };
-        // A class's colour from its lit pixels (colour_min_incidence_cos), as texture.fit's; after
-        // the blur from all of them (the blur mixes lit and shaded neighbours anyway).
+        // A class's colour from all its pixels ("image") and, when colour_min_incidence_cos is
+        // set, from its lit pixels as texture.fit takes them ("image_lit": the albedo where the
+        // correction holds); after the blur from all of them (the blur mixes lit and shaded
+        // neighbours anyway).
         if (const auto x = pixel(scene, c, r);
             !std::isnan(o) && known(x) && (!own || own->at(c, r) == o)) {
-          if (!light || light->lit(c, r, lit_cos))
-            add_moments(moments[std::to_string(int(o))]["image"], x);
+          add_moments(moments[std::to_string(int(o))]["image"], x);
+          if (light && lit_cos > 0 && light->lit(c, r, lit_cos))
+            add_moments(moments[std::to_string(int(o))]["image_lit"], x);
           if (known(as_float(u)))
             add_moments(moments[std::to_string(int(o))]["image_blurred"], as_float(u));
         }

@@ -40,6 +40,15 @@ nlohmann::json class_colours(const nlohmann::json& moments) {
               {"image_sd", isd},
               {"texture_sd", tsd},
               {"sd_ratio", isd > 0 ? nlohmann::json(tsd / isd) : nlohmann::json()}};
+    // The same against the class's lit pixels only (texture.assess's colour_min_incidence_cos).
+    if (sets.contains("image_lit")) {
+      const auto [lm, lsd] = mean_and_sd(sets["image_lit"]);
+      out[k]["image_lit_mean"] = lm;
+      out[k]["ciede2000_lit"] =
+          ciede2000(srgb_to_lab(lm[0], lm[1], lm[2]), srgb_to_lab(tm[0], tm[1], tm[2]));
+      out[k]["image_lit_sd"] = lsd;
+      out[k]["sd_ratio_lit"] = lsd > 0 ? nlohmann::json(tsd / lsd) : nlohmann::json();
+    }
     // The same after the blur (sigma 4 px): the spread at scales of 4 pixels and more, which
     // single-pixel speckle does not reach.
     if (sets.contains("image_blurred") && sets.contains("texture_blurred")) {
@@ -172,6 +181,16 @@ std::string assessment_table(const nlohmann::json& r) {
                   c["ciede2000"].get<double>(), c["image_sd"].get<double>(),
                   c["texture_sd"].get<double>(), ratio("sd_ratio"), ratio("sd_ratio_blurred"));
     s += buf;
+    if (c.contains("image_lit_mean")) {
+      const auto& l = c["image_lit_mean"];
+      std::snprintf(buf, sizeof buf, "    lit  %4.0f %4.0f %4.0f   %14s", l[0].get<double>(),
+                    l[1].get<double>(), l[2].get<double>(), "");
+      s += buf;
+      std::snprintf(buf, sizeof buf, "   %9.2f  %8.1f  %10s  %5.2f\n",
+                    c["ciede2000_lit"].get<double>(), c["image_lit_sd"].get<double>(), "",
+                    ratio("sd_ratio_lit"));
+      s += buf;
+    }
   }
   return s;
 }

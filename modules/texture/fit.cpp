@@ -234,8 +234,11 @@ class Fit : public ReduceOperator {
         c.colour_pixels = s.at("colour_n").get<uint64_t>();
         if (c.colour_pixels == 0)
           throw Error(std::string(kOp) + ": class " + id +
-                      ": no pixel whose own class (inputs.colour_classes) it is, lit at "
-                      "params.colour_min_incidence_cos: no colour");
+                      ": no pixel whose own class (inputs.colour_classes) it is" +
+                      (params.at("colour_min_incidence_cos").get<double>() > 0
+                           ? ", lit at params.colour_min_incidence_cos"
+                           : "") +
+                      ": no colour");
         c.sum = s.at("sum").get<std::array<double, 3>>();
         c.sum_sq = s.at("sum_sq").get<std::array<double, 3>>();
         c.sum_cross = s.at("sum_cross").get<std::array<double, 3>>();

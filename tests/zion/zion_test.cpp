@@ -260,16 +260,25 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   EXPECT_GE(r["unfiltered"]["kappa"].get<double>(), 0.44) << one.table;
   // Met since the calibration (4.94; 5.30 without the share, 10.72 on the stretched scene).
   EXPECT_LE(r["ciede2000_mean"].get<double>(), 6) << one.table;
+  // Each class's colour against the scene's pixels of the class, all of them and the lit ones
+  // (colour_min_incidence_cos 0.7, where the correction holds: the albedo the fit takes).
+  // Spreads against the lit pixels': the texture is unshaded, and over all pixels the white
+  // sandstone's (class 4) spread is its shaded walls' grey (32.5 against 18.7 lit), which an
+  // albedo must not carry. Over all pixels its ratio is 0.45 (issue 14's 0.5 not met there; the
+  // other classes' 0.70-1.05), held at 0.4.
   for (const auto& [k, c] : r["class_colours"].items()) {
     EXPECT_LE(c["ciede2000"].get<double>(), 5) << "class " << k << ": " << c;
-    EXPECT_GE(c["sd_ratio"].get<double>(), 0.5) << "class " << k << ": " << c;
-    EXPECT_LE(c["sd_ratio"].get<double>(), 1.5) << "class " << k << ": " << c;
-    // The same after the blur: variation at the scene's scales, not single-pixel speckle. At
-    // most 1.7: the tan soil's (class 0) rose from 1.43 to 1.63 when the colours became the lit
-    // pixels' (the texture's blurred pixels of the class, predicted on twice its observed area,
-    // mix in the white sandstone, now lighter: 210 -> 222; its scene spread unchanged).
+    EXPECT_LE(c["ciede2000_lit"].get<double>(), 5) << "class " << k << ": " << c;
+    EXPECT_GE(c["sd_ratio_lit"].get<double>(), 0.5) << "class " << k << ": " << c;
+    EXPECT_LE(c["sd_ratio_lit"].get<double>(), 1.5) << "class " << k << ": " << c;
+    EXPECT_GE(c["sd_ratio"].get<double>(), 0.4) << "class " << k << ": " << c;
+    // The same after the blur: variation at the scene's scales, not single-pixel speckle. The
+    // tan soil's (class 0) at most 1.7: it rose from 1.43 to 1.63 when the colours became the
+    // lit pixels' (the texture's blurred pixels of the class, predicted on twice its observed
+    // area, mix in the white sandstone, now lighter: 210 -> 222; its scene spread unchanged).
     EXPECT_GE(c["sd_ratio_blurred"].get<double>(), 0.5) << "class " << k << ": " << c;
-    EXPECT_LE(c["sd_ratio_blurred"].get<double>(), 1.7) << "class " << k << ": " << c;
+    EXPECT_LE(c["sd_ratio_blurred"].get<double>(), k == "0" ? 1.7 : 1.5)
+        << "class " << k << ": " << c;
   }
   // Producer's accuracy >= 0.5 for 4 of the 5 classes filtered (0.88, 0.72, 0.82, 0.63: the light
   // red rock 0), for 3 as rendered (0.73, 0.53, 0.77: the white sandstone 0.48, the light red
@@ -292,13 +301,13 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   expect_seamless(*store, "texture_height");
 
   // Detail at 8.8 m (issue 14's variation): each class's spread in the texture two levels finer,
-  // over its own classes there, within 50-150 % of the scene's at its 30 m, and at least 5 % above
-  // the texture's at the DEM's level: the octaves finer than its 35 m pixels add variation (with
-  // the former noise, 3 octaves of persistence 0.5, 1-2 %; README "Zion", detail).
+  // over its own classes there, within 50-150 % of the scene's lit pixels' at its 30 m, and at
+  // least 5 % above the texture's at the DEM's level: the octaves finer than its 35 m pixels add
+  // variation (with the former noise, 3 octaves of persistence 0.5, 1-2 %; README "Zion", detail).
   const auto fine = class_spreads(*store, "texture_fine", "texture_fine_classes");
   for (const auto& [k, c] : r["class_colours"].items()) {
     ASSERT_TRUE(fine.count(k)) << "class " << k << " not in the texture at 8.8 m";
-    const double scene = c["image_sd"].get<double>(), coarse = c["texture_sd"].get<double>();
+    const double scene = c["image_lit_sd"].get<double>(), coarse = c["texture_sd"].get<double>();
     std::cout << "class " << k << " spread at 8.8 m " << fine.at(k) << " (35 m " << coarse
               << ", scene at 30 m " << scene << ")\n";
     EXPECT_GE(fine.at(k), 0.5 * scene) << "class " << k;

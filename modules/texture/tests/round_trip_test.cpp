@@ -366,7 +366,7 @@ TEST(RoundTrip, ColourClassesKeepOtherPixelsOutOfTheColours) {
         } catch (const Error& e) {
           EXPECT_STREQ(e.what(),
                        "texture.fit: class 3: no pixel whose own class (inputs.colour_classes) it "
-                       "is, lit at params.colour_min_incidence_cos: no colour");
+                       "is: no colour");
           throw;
         }
       },
