@@ -99,7 +99,10 @@ json fit(const Scene& s, const json& params,
       params);
 }
 
-json assess(Scene& s, const json& model) {
+// texture.assess of the model rendered on the scene; with a hillshade, `params` may ask for the
+// illumination (sun_altitude, colour_min_incidence_cos).
+json assess(Scene& s, const json& model, const json& params = json::object(),
+            const std::map<CellId, Tile<float>>* hillshade = nullptr) {
   for (const CellId c : s.cells) {
     CellData d;
     d.inputs.emplace("dem", s.dem_halo(c));
@@ -115,9 +118,10 @@ json assess(Scene& s, const json& model) {
         d.inputs.emplace("predicted", s.halo(s.predicted, c, kAssessHalo));
         d.inputs.emplace("rgb", s.halo(s.rgb, c, kAssessHalo));
         d.inputs.emplace("synthesized", s.halo(s.synthesized, c, kAssessHalo));
+        if (hillshade) d.inputs.emplace("hillshade", s.halo(*hillshade, c, kAssessHalo));
         return d;
       },
-      json::object());
+      params);
 }
 
 TEST(RoundTrip, HatModelIsRecovered) {
@@ -377,6 +381,7 @@ TEST(RoundTrip, ColourClassesKeepOtherPixelsOutOfTheColours) {
 // painted dark grey and shaded (hillshade at cos i = 0.3, the sun at 30 degrees: corrected x 1.67
 // but still grey), the rest lit as flat ground (cos i = 0.5): with the pixels lit at cos i >= 0.4
 // the fitted model is the unpainted scene's, with every pixel it is not; without a sun, an error.
+// texture.assess's lit colours likewise.
 TEST(RoundTrip, ShadedPixelsKeptOutOfTheColours) {
   const Scene s = make_scene(kHatModel);
   Scene painted = s;
@@ -397,6 +402,22 @@ TEST(RoundTrip, ShadedPixelsKeptOutOfTheColours) {
   };
   EXPECT_EQ(fit_lit(painted, 0.4, 30), fit_lit(s, 0.4, 30));
   EXPECT_NE(fit_lit(painted, 0, 30), fit_lit(s, 0, 30));
+  // texture.assess compares each class with its lit pixels beside all of them: the lit ones the
+  // unpainted scene's, all of them not (the grey third in).
+  const json model = fit_lit(s, 0.4, 30);
+  const json lit = {{"sun_altitude", 30}, {"colour_min_incidence_cos", 0.4}};
+  Scene plain = s;
+  const json a = assess(painted, model, lit, &shade)["class_colours"],
+             b = assess(plain, model, lit, &shade)["class_colours"];
+  ASSERT_FALSE(a.empty());
+  for (const auto& [k, c] : a.items()) {
+    ASSERT_TRUE(c.contains("image_lit_mean")) << c;
+    EXPECT_EQ(c["image_lit_mean"], b[k]["image_lit_mean"]) << "class " << k;
+    EXPECT_NE(c["image_mean"], c["image_lit_mean"]) << "class " << k;
+  }
+  EXPECT_FALSE(
+      assess(plain, model, {{"sun_altitude", 30}}, &shade)["class_colours"].begin()->contains(
+          "image_lit_mean"));
   EXPECT_THROW(
       {
         try {
