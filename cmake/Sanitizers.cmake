@@ -16,10 +16,10 @@ if(MAQUETTE_FUZZ)
 elseif(MAQUETTE_SANITIZE STREQUAL "address")
   # An undefined behaviour stops the program (a test fails) rather than printing and going on.
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all
-                      -fno-omit-frame-pointer -g)
+                      -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
 elseif(MAQUETTE_SANITIZE STREQUAL "thread")
-  add_compile_options(-fsanitize=thread -g)
+  add_compile_options(-fsanitize=thread)
   add_link_options(-fsanitize=thread)
 elseif(NOT MAQUETTE_SANITIZE STREQUAL "")
   message(FATAL_ERROR "MAQUETTE_SANITIZE=${MAQUETTE_SANITIZE}: expected address or thread")

@@ -31,9 +31,11 @@ else
   "$root/scripts/setup.sh"
   export CCACHE_BASEDIR="$root"
   if [ ! -f "$build/CMakeCache.txt" ]; then
-    # -O1: sanitized code builds and runs much faster than at -O3; assertions kept.
+    # -Og -g1: an instrumented file compiles in half the time of -O1 -g (framework/core/json_file.cpp
+    # under ASan + UBSan: 7.7 s against 15.5 s of CPU), still optimized enough to run the suite, and
+    # reports keep function names and line numbers; assertions kept.
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DMAQUETTE_SANITIZE="$sanitize" >/dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" -DMAQUETTE_SANITIZE="$sanitize" >/dev/null
   fi
   cmake --build "$build" --parallel "$(nproc)" "${targets[@]}"
   # Reports stop the program; leaks are reported too (exit code 23 fails the test).

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 
+#include "core/avx2_clones.h"
 #include "core/samples.h"
 
 namespace maquette {
@@ -59,9 +60,8 @@ T load(const std::byte* p, size_t i) {
 // value): the means mean() gives, without branches so that the loop vectorizes. Adding 0 for a
 // missing sample changes no sum (a sum from +0 is never -0), and a mean of floats is within the
 // float range, so cast_sample is the plain conversion.
-__attribute__((target_clones("avx2", "default"))) void mean_row_nan(const std::byte* top,
-                                                                    const std::byte* bottom,
-                                                                    size_t half, std::byte* out) {
+MAQUETTE_AVX2_CLONES void mean_row_nan(const std::byte* top, const std::byte* bottom, size_t half,
+                                       std::byte* out) {
   for (size_t c = 0; c < half; ++c) {
     const float a = load<float>(top, 2 * c), b = load<float>(top, 2 * c + 1),
                 d = load<float>(bottom, 2 * c), e = load<float>(bottom, 2 * c + 1);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/avx2_clones.h"
+
 namespace maquette::synthesis {
 
 NearestField empty_field(const PatchCentres& queries) {
@@ -24,11 +26,9 @@ NearestField empty_field(const PatchCentres& queries) {
 
 // Each row's squared differences summed in 8 interleaved lanes, then the lanes in a fixed order:
 // a vectorizable sum whose bits do not depend on the machine or the thread.
-__attribute__((target_clones("avx2", "default"))) float patch_distance(const PatchImage& query,
-                                                                       int qx, int qy,
-                                                                       const PatchImage& reference,
-                                                                       int rx, int ry, int patch,
-                                                                       float bound) {
+MAQUETTE_AVX2_CLONES float patch_distance(const PatchImage& query, int qx, int qy,
+                                          const PatchImage& reference, int rx, int ry, int patch,
+                                          float bound) {
   constexpr int kLanes = 8;
   const int half = patch / 2;
   const int row_values = patch * query.channels;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/avx2_clones.h"
 #include "core/error.h"
 #include "core/halo.h"
 
@@ -38,8 +39,7 @@ Taps taps(int t, int refine) {
 
 // In float (heights to a fraction of a millimetre), vectorized for AVX2 where the CPU has it
 // (the same operations, so the same bits).
-__attribute__((target_clones("avx2", "default"))) void upsample(const Tile<float>& tile, int refine,
-                                                                int ring, Plane& out) {
+MAQUETTE_AVX2_CLONES void upsample(const Tile<float>& tile, int refine, int ring, Plane& out) {
   const int m = tile.size() << refine;
   if (tile.halo() < kInputHalo)
     throw Error("texture: input tiles need a halo of " + std::to_string(kInputHalo) + " pixels");
@@ -101,8 +101,7 @@ Plane nearest(const Tile<float>& tile, int refine, int ring) {
 }
 
 // In float, vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
-__attribute__((target_clones("avx2", "default"))) void slope_degrees(const Plane& h, double pixel_m,
-                                                                     Plane& s) {
+MAQUETTE_AVX2_CLONES void slope_degrees(const Plane& h, double pixel_m, Plane& s) {
   s.reshape(h.size, h.ring - 1);
   const float k = float(1 / (2 * pixel_m)), deg = float(180 / M_PI);
   const size_t side = size_t(s.side()), h_side = size_t(h.side());
@@ -156,8 +155,8 @@ PixelPositions::PixelPositions(const Grid& grid, CellId cell, int size, int refi
 
 // Vectorized for AVX2 where the CPU has it (the same operations, so the same bits): the pixels
 // of one lattice cell at a time, whose 4 nodes are then constant, a coordinate at a time.
-__attribute__((target_clones("avx2", "default"))) void PixelPositions::along_row(
-    int col0, int step, int n, int row, const std::array<double*, 3>& out) const {
+MAQUETTE_AVX2_CLONES void PixelPositions::along_row(int col0, int step, int n, int row,
+                                                    const std::array<double*, 3>& out) const {
   const int64_t gr = gr0_ + row, mask = (int64_t(1) << shift_) - 1;
   const double inverse_step = 1 / double(mask + 1);  // exact: a power of two
   const double fy = double(gr & mask) * inverse_step;

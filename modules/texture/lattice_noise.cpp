@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "core/avx2_clones.h"
+
 namespace maquette::texture {
 namespace {
 
@@ -124,8 +126,8 @@ void LatticeNoise::evaluate_nodes(Lattice& l, int j, int i0, int i1, float* row)
 }
 
 // Vectorized for AVX2 where the CPU has it (the same operations, so the same bits).
-__attribute__((target_clones("avx2", "default"))) void LatticeNoise::add_interpolated(
-    Lattice& l, int r, int c0, int c1, int step, float* out) {
+MAQUETTE_AVX2_CLONES void LatticeNoise::add_interpolated(Lattice& l, int r, int c0, int c1,
+                                                         int step, float* out) {
   const int64_t gr = g_.row0 + r;
   const float* wy = &l.weights[4 * size_t(gr & ((int64_t(1) << l.shift) - 1))];
   const int j = int((gr >> l.shift) - 1 - l.node_row0);
@@ -166,8 +168,7 @@ __attribute__((target_clones("avx2", "default"))) void LatticeNoise::add_interpo
   for (int k = 0; k < n; ++k) out[k] += from[k];
 }
 
-__attribute__((target_clones("avx2", "default"))) void LatticeNoise::row(int r, int c0, int c1,
-                                                                         float* out) {
+MAQUETTE_AVX2_CLONES void LatticeNoise::row(int r, int c0, int c1, float* out) {
   if (g_.pixel_m == 0) {  // NoiseField itself
     for (int c = c0; c <= c1; ++c) out[c - c0] = field_(g_.position->at(c, r));
     return;

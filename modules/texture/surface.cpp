@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/avx2_clones.h"
 #include "lattice_noise.h"
 #include "layer_kernels.h"
 
@@ -17,9 +18,8 @@ PaddedTable padded(const Table& t) {
 }
 
 // The loops around the kernels vectorized for AVX2 where the CPU has it (the same bits).
-__attribute__((target_clones("avx2", "default"))) void evaluate(const Model& model,
-                                                                const SurfaceInputs& in,
-                                                                const SurfaceTargets& out) {
+MAQUETTE_AVX2_CLONES void evaluate(const Model& model, const SurfaceInputs& in,
+                                   const SurfaceTargets& out) {
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   const size_t side = size_t(in.height.side()), layers = model.layers.size();
   // The rows and columns of the planes in the rgb and classes targets.
@@ -171,8 +171,7 @@ Surface evaluate(const Model& model, const SurfaceInputs& in) {
 
 // In float, vectorized for AVX2 where the CPU has it (the same operations, so the same bits; the
 // sqrt vectorizes since this file does not set errno, CMakeLists.txt).
-__attribute__((target_clones("avx2", "default"))) void normals(const Plane& h, double pixel_m,
-                                                               float* out) {
+MAQUETTE_AVX2_CLONES void normals(const Plane& h, double pixel_m, float* out) {
   const float k = float(1 / (2 * pixel_m));
   const size_t m = size_t(h.size);
   for (int r = 0; r < h.size; ++r) {
