@@ -6,8 +6,8 @@
 // aim and place the camera where PROJ says, --exaggeration scales the heights; a bent panorama
 // (--bend-radius) puts each guide point where the test's own bend of PROJ's point projects, its
 // horizon higher than the unbent one's, an infinite radius the unbent picture bit for bit; terrain
-// without a texel drawn grey 128 (times its shading); the same bytes for 1 and 2 threads, bent or
-// not; bad input named.
+// past the imagery's edge takes the edge's colour within kTextureReach texels, farther grey 128
+// (times its shading); the same bytes for 1 and 2 threads, bent or not; bad input named.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
