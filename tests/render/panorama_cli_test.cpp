@@ -410,10 +410,21 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
       run_maquette("-q ingest " + store + " --layer rgb --as imagery " + dir + "/west.tif");
   ASSERT_EQ(t.exit_code, 0) << t.err;
   const std::string out = dir + "/half.png";
-  const auto r = run_maquette("render panorama " + store + " " + out +
-                              " --dem dem --texture rgb --no-stretch --haze-distance 1e15 " +
-                              "--camera 10.15 45.02 1500 " + kView);
+  auto render = [&](const std::string& name, const std::string& options) {
+    return run_maquette("render panorama " + store + " " + dir + "/" + name + ".png" +
+                        " --dem dem --texture rgb --no-stretch --haze-distance 1e15 " +
+                        "--camera 10.15 45.02 1500 " + kView + " " + options);
+  };
+  const auto r = render("half", "-t 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The edge's texels give the same bits on any thread count and strip size.
+  for (const char* options : {"-t 1", "--strip-rows 13"}) {
+    const std::string name = std::string("half") + (options[1] == 't' ? "1" : "13");
+    ASSERT_EQ(render(name, options).exit_code, 0) << options;
+    for (const char* file : {".png", "-silhouettes.png", "-guides.tif"})
+      EXPECT_TRUE(slurp(dir + "/" + name + file) == slurp(dir + "/half" + file))
+          << options << " " << file;
+  }
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((dir + "/half-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
