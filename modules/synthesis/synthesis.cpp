@@ -391,6 +391,9 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
   if (int(pyramid.levels.size()) != kLevels)
     throw Error("synthesis: the exemplar pyramid has " + std::to_string(pyramid.levels.size()) +
                 " levels, not " + std::to_string(kLevels));
+  if (params.vote_radius < 0 || params.vote_radius > kVoteRadius)
+    throw Error("synthesis: vote_radius " + std::to_string(params.vote_radius) + ": must be 0 .. " +
+                std::to_string(kVoteRadius));
   const auto plans = plan_levels(out);
   State state({});
   for (int l = kLevels - 1; l >= 0; --l) {

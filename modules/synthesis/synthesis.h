@@ -108,7 +108,8 @@ int synthesis_halo();
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
 // exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by
 // synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
-// maquette::Error when the guides do not cover it.
+// maquette::Error when the guides do not cover it or params.vote_radius is outside
+// 0 .. kVoteRadius.
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
                                 const SynthesisParams& params, const PixelRect& out);
 

@@ -2,12 +2,14 @@
 // their halo equal the whole image's crop (64^2 and 128^2 tiles, the guides cut to each window
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
 // target's labels; the finest level's vote is its definition and joins more neighbours
-// smooths the colours of neighbours; guides that miss the halo are refused.
+// smooths the colours of neighbours; guides that miss the halo and a vote radius outside
+// 0 .. kVoteRadius are refused.
 #include "../synthesis.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <thread>
 
 #include "../pixel_hash.h"
@@ -263,6 +265,26 @@ TEST_F(SynthesisTest, RaisingTheAltitudeWeightLowersTheAltitudeMismatch) {
 TEST_F(SynthesisTest, RefusesGuidesWithoutTheHalo) {
   EXPECT_THROW(synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo() - 8)), {}, kWhole),
                Error);
+}
+
+TEST_F(SynthesisTest, RefusesAVoteRadiusOutsideItsRange) {
+  const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
+  for (const int radius : {-1, kVoteRadius + 1}) {
+    SynthesisParams params;
+    params.vote_radius = radius;
+    try {
+      synthesize(*pyramid_, target, params, kWhole);
+      ADD_FAILURE() << "vote_radius " << radius << " accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "synthesis: vote_radius " + std::to_string(radius) +
+                                           ": must be 0 .. " + std::to_string(kVoteRadius));
+    }
+  }
+  for (const int radius : {0, kVoteRadius}) {
+    SynthesisParams params;
+    params.vote_radius = radius;
+    EXPECT_NO_THROW(synthesize(*pyramid_, target, params, kWhole)) << "vote_radius " << radius;
+  }
 }
 
 }  // namespace
