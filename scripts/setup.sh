@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache git ca-certificates clang-format
+  curl  # scripts/onetbb-tsan.sh fetches oneTBB's source from Debian's archive
   libgeographiclib-dev libeigen3-dev libproj-dev proj-bin proj-data libgdal-dev gdal-bin
   libopenvdb-dev libboost-dev libdraco-dev draco libopencv-dev
   libspdlog-dev libfmt-dev libtbb-dev libopenmpi-dev openmpi-bin
