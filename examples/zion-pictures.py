@@ -10,10 +10,13 @@ docs/zion-texture.jpg: the calibrated scene, the texture at 8.8 m and the summer
 example's PNG quicklooks side by side. docs/zion-closeup.jpg: the scene at 30 m, the texture at
 8.8 m (albedo: what the 3D Tiles carry) and the same texture lit as the viewer drapes it, each
 resampled to 8.8 m in UTM zone 12N. The lit texture is the albedo times the inverse of the
-C-correction that texture.fit removed from the scene, (max(cos i, 0.2) + c) / (sin 60 + c) with
-c = 0.77, i the incidence of the scene's sun (azimuth 129, altitude 60) on the texture's own
-8.8 m height: the shading the scene's colours were divided by, put back on the finer relief.
+C-correction that texture.fit removed from the scene, (max(cos i, m) + c) / (sin(altitude) + c),
+i the incidence of the scene's sun on the texture's own 8.8 m height: the shading the scene's
+colours were divided by, put back on the finer relief. The sun (the hillshade's azimuth and
+altitude), c and the floor m are the example's (texture-zion.json; m the operator's default
+when the example leaves it out, from `maquette modules --json`).
 """
+import json
 import math
 import os
 import subprocess
@@ -27,8 +30,24 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DOCS = os.path.join(HERE, "..", "docs")
 STORE = os.path.join(HERE, "zion.mqt")
 CLOSEUP_BBOX = ["-112.93", "37.22", "-112.898", "37.252"]  # W S E N
-SUN_AZIMUTH, SUN_ALTITUDE, C_CORRECTION, MIN_COS = 129.0, 60.0, 0.77, 0.2
 HEIGHT, GAP = 400, 10  # panel height and the white gap between panels, pixels
+
+
+def illumination(maquette):
+    """The example's sun (azimuth, altitude: its hillshade's), c of texture.fit's C-correction
+    and its floor of cos i."""
+    with open(os.path.join(HERE, "texture-zion.json")) as f:
+        steps = json.load(f)["steps"]
+    derive = next(s["params"] for s in steps if s["outputs"].get("hillshade") == "hillshade")
+    fit = next(s["params"] for s in steps if s["op"] == "texture.fit")
+    if "min_incidence_cos" not in fit:
+        modules = json.loads(subprocess.run([maquette, "modules", "--json"], check=True,
+                                            capture_output=True, text=True).stdout)
+        schema = next(o["params"] for m in modules for o in m["operators"]
+                      if o["name"] == "texture.fit")
+        fit["min_incidence_cos"] = schema["properties"]["min_incidence_cos"]["default"]
+    assert fit["sun_altitude"] == derive["altitude"], "the fit's sun is the hillshade's"
+    return derive["azimuth"], derive["altitude"], fit["c_correction"], fit["min_incidence_cos"]
 
 
 def scaled(rgb, height):
@@ -87,15 +106,17 @@ def inner_box(valid):
             right -= 1
 
 
-def lit(albedo, height, transform):
-    """The albedo lit by the scene's sun on `height` (the inverse C-correction, module doc)."""
+def lit(albedo, height, transform, light):
+    """The albedo lit by the scene's sun on `height` (the inverse C-correction, module doc);
+    `light` as illumination() returns it."""
+    sun_azimuth, sun_altitude, c_correction, min_cos = light
     dz_drow, dz_dcol = np.gradient(height)
     dz_dx = dz_dcol / transform[1]   # east
     dz_dy = dz_drow / transform[5]   # north (the rows' step is negative)
-    az, alt = math.radians(SUN_AZIMUTH), math.radians(SUN_ALTITUDE)
+    az, alt = math.radians(sun_azimuth), math.radians(sun_altitude)
     sun = (math.sin(az) * math.cos(alt), math.cos(az) * math.cos(alt), math.sin(alt))
     cos_i = (-dz_dx * sun[0] - dz_dy * sun[1] + sun[2]) / np.sqrt(dz_dx**2 + dz_dy**2 + 1)
-    factor = (np.maximum(cos_i, MIN_COS) + C_CORRECTION) / (math.sin(alt) + C_CORRECTION)
+    factor = (np.maximum(cos_i, min_cos) + c_correction) / (math.sin(alt) + c_correction)
     factor = np.where(np.isfinite(factor), factor, 1)
     return np.clip(albedo * factor, 0, 255)
 
@@ -116,7 +137,7 @@ def main():
     cols = min(a.shape[-1] for a in (scene, albedo, height))
     scene, albedo, height = scene[:, :rows, :cols], albedo[:, :rows, :cols], height[:rows, :cols]
     top, bottom, left, right = inner_box((scene.sum(0) > 0) & (albedo.sum(0) > 0))
-    panels = [scene, albedo, lit(albedo, height, transform)]
+    panels = [scene, albedo, lit(albedo, height, transform, illumination(maquette))]
     side_by_side([np.clip(p[:, top:bottom, left:right], 0, 255).astype(np.uint8) for p in panels],
                  os.path.join(DOCS, "zion-closeup.jpg"))
 

@@ -182,15 +182,15 @@ double brightness(const Tile<float>& t, int c, int r) {
 }
 
 // Per own class (pixel_classes), the 2nd percentile of the brightness of the scene's pixels lit
-// at cos i >= 0.7 (the sun within 46 degrees of the normal; flat ground 0.87) in the cells of
-// `cells_of`, their illumination removed by the fit's C-correction, written out here: cos i =
-// (hillshade - 1) / 254, the colour times (sin(sun altitude) + c) / (cos i + c), at most 255 /
-// its largest channel.
+// at cos i >= the fit's colour_min_incidence_cos (the example's 0.7: the sun within 46 degrees
+// of the normal; flat ground 0.87) in the cells of `cells_of`, their illumination removed by the
+// fit's C-correction, written out here: cos i = (hillshade - 1) / 254, the colour times
+// (sin(sun altitude) + c) / (cos i + c), at most 255 / its largest channel.
 std::map<std::string, double> lit_scene_p2(const Store& store, const json& fit,
                                            const std::string& cells_of) {
   const double pi = std::acos(-1.0), c_corr = fit["c_correction"].get<double>();
   const double flat = std::sin(fit["sun_altitude"].get<double>() * pi / 180);
-  constexpr double lit_cos = 0.7;
+  const double lit_cos = fit["colour_min_incidence_cos"].get<double>();
   std::map<std::string, std::vector<double>> values;
   for (const CellId cell : store.tile_cells(cells_of)) {
     const Tile<float> k = float_tile(store, "pixel_classes", cell),
