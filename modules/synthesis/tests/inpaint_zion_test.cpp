@@ -2,8 +2,10 @@
 // content: 5 % and 20 % of a 128 x 128 window and a bridge-like strip across it. Against the
 // original: no seam and little blur on the hole's edge, judged over seeds 0-3 (review C-R-S3: one
 // seed's ratio moves by up to 0.15 with the draw alone): each seed's mean gradient there at most
-// 1.25 x the original's, and the mean over the seeds at least the 0.8 for the 5 % hole
-// (measured 0.87); the 20 % hole and the strip miss it (measured 0.71 and 0.74, gated at 0.7).
+// 1.25 x the original's, and the mean over the seeds at least the 0.8 (measured 1.01 for
+// the 5 % hole, 0.83 for the 20 % hole and 0.86 for the strip: the 20 % hole's margin is 0.03,
+// less than one seed's spread, 0.76-0.92; with the finest level's last vote a mean instead of a
+// mode the means were 0.87, 0.71 and 0.74, and this gate fails).
 // Against OpenCV xphoto's shift-map and FSR fills of the same holes: a lower
 // bidirectional-similarity energy for every seed (inpaint_measures.h). The same bits on one and
 // two threads.
@@ -42,10 +44,12 @@ cv::Mat landsat_window(int x0, int y0) {
   return rgb;
 }
 
+// The least mean over the seeds of the edge gradient ratio: the issue's.
+constexpr double kLeastEdgeGradient = 0.8;
+
 struct Hole {
   std::string name;
   std::vector<uint8_t> mask;
-  double least_edge_gradient;  // of the seeds' mean: the 0.8 where met, else 0.7
 };
 
 std::vector<Hole> holes() {
@@ -65,9 +69,7 @@ std::vector<Hole> holes() {
       strip[size_t(y) * kSide + x] = std::abs((y - 64) - 0.58 * (x - 64)) * 0.866 < 4;
     }
   }
-  return {{"5 %", centred_square(0.05), 0.8},
-          {"20 %", centred_square(0.20), 0.7},
-          {"strip", strip, 0.7}};
+  return {{"5 %", centred_square(0.05)}, {"20 %", centred_square(0.20)}, {"strip", strip}};
 }
 
 cv::Mat ours(const cv::Mat& rgb, const std::vector<uint8_t>& hole, uint64_t seed = 0) {
@@ -111,7 +113,7 @@ TEST(InpaintZion, NoSeamAndLowerEnergyThanXphotoOnHolesOfKnownContent) {
       EXPECT_LT(energy.total(), fsr.total()) << hole.name << ", seed " << seed;
     }
     std::cout << "  mean edge gradient ratio " << mean_ratio << "\n";
-    EXPECT_GE(mean_ratio, hole.least_edge_gradient) << hole.name;
+    EXPECT_GE(mean_ratio, kLeastEdgeGradient) << hole.name;
   }
 }
 
