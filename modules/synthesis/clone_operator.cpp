@@ -45,6 +45,7 @@ OperatorSpec clone_spec() {
                       true, LayerKind::Features, 0});
   s.outputs = filled_layer_outputs("with the source cloned onto the destination");
   json properties = inpaint_param_properties();
+  properties["em_iterations"]["default"] = kCloneEmIterations;  // the band's ring (clone.h)
   properties["offset_m"] = {{"type", "array"},
                             {"items", {{"type", "number"}}},
                             {"minItems", 2},
