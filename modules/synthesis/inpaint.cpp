@@ -1,5 +1,6 @@
 #include "inpaint.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -17,7 +18,9 @@ namespace {
 // The patches' and pixels' roles at one pyramid level (inpaint.h).
 struct Roles {
   int width = 0, height = 0;
-  std::vector<uint8_t> region;  // resynthesized: the hole and its band, nodata excluded
+  std::vector<uint8_t> region;         // resynthesized: the hole and its band, nodata excluded
+  std::vector<int32_t> region_pixels;  // the region's pixels (y * width + x), row-major
+  std::vector<int32_t> region_slot;    // width * height: each pixel's place there, -1 elsewhere
   PatchCentres targets, references, completeness;
 };
 
@@ -31,6 +34,8 @@ Roles roles_at(const MaskedImage& level, const std::vector<uint8_t>& hole,
   Roles r{w,
           h,
           std::vector<uint8_t>(hole.size(), 0),
+          {},
+          std::vector<int32_t>(hole.size(), -1),
           PatchCentres(w, h),
           PatchCentres(w, h),
           PatchCentres(w, h)};
@@ -38,6 +43,10 @@ Roles roles_at(const MaskedImage& level, const std::vector<uint8_t>& hole,
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
       r.region[i] = to_hole[i] <= params.band && nodata[i] == 0;
+      if (r.region[i] != 0) {
+        r.region_slot[i] = int32_t(r.region_pixels.size());
+        r.region_pixels.push_back(int32_t(i));
+      }
       if (x < half || y < half || x >= w - half || y >= h - half) continue;
       const bool overlaps_region = to_hole[i] <= params.band + half;
       r.targets.member[i] = overlaps_region;
@@ -142,7 +151,13 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
   const double coherence_scale = 1.0 / double(std::max<size_t>(coherence.size(), 1));
   const double completeness_scale =
       params.completeness / double(std::max<size_t>(completeness.size(), 1));
-  std::vector<double> sum(size_t(w) * h * c, 0.0), weight(size_t(w) * h, 0.0);
+  // Sums and the new values by the region's pixels only (a thin band in a large box).
+  const size_t n = roles.region_pixels.size();
+  std::vector<double> sum(n * c, 0.0), weight(n, 0.0);
+  std::vector<float> next(n * c);
+  for (size_t s = 0; s < n; ++s) {
+    std::copy_n(image.values.data() + size_t(roles.region_pixels[s]) * c, c, next.data() + s * c);
+  }
   // Completeness: each reference patch near the region votes into its nearest target patch
   // (scattered, in the field's order).
   for (size_t e = 0; e < completeness.size(); ++e) {
@@ -151,32 +166,32 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
     const int tx = completeness.match_x[e], ty = completeness.match_y[e];
     for (int dy = -half; dy <= half; ++dy) {
       for (int dx = -half; dx <= half; ++dx) {
-        const size_t q = size_t(ty + dy) * w + (tx + dx);
-        if (roles.region[q] == 0) continue;
+        const int32_t s = roles.region_slot[size_t(ty + dy) * w + (tx + dx)];
+        if (s < 0) continue;
         const float* v = image.pixel(sx + dx, sy + dy);
-        for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
-        weight[q] += k;
+        for (int i = 0; i < c; ++i) sum[size_t(s) * c + i] += k * v[i];
+        weight[s] += k;
       }
     }
   }
   // Coherence: every target patch covering a pixel proposes its match's value there (gathered,
-  // rows in parallel, each pixel's votes in a fixed order). For the mode, the completeness votes
+  // pixels in parallel, each pixel's votes in a fixed order). For the mode, the completeness votes
   // count as one vote: their weighted mean with their total weight.
-  PatchImage next = image;
-  tbb::parallel_for(0, h, [&](int y) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& range) {
     std::vector<const float*> votes;
     std::vector<double> vote_weight;
     std::vector<float> completeness_mean(c);
     std::vector<double> mode(c), shifted(c);
-    for (int x = 0; x < w; ++x) {
-      const size_t q = size_t(y) * w + x;
-      if (roles.region[q] == 0) continue;
+    for (size_t s = range.begin(); s != range.end(); ++s) {
+      const int x = roles.region_pixels[s] % w, y = roles.region_pixels[s] / w;
+      double* pixel_sum = sum.data() + s * c;
+      float* out = next.data() + s * c;
       votes.clear();
       vote_weight.clear();
-      if (pick == Pick::Mode && weight[q] > 0) {
-        for (int i = 0; i < c; ++i) completeness_mean[i] = float(sum[q * c + i] / weight[q]);
+      if (pick == Pick::Mode && weight[s] > 0) {
+        for (int i = 0; i < c; ++i) completeness_mean[i] = float(pixel_sum[i] / weight[s]);
         votes.push_back(completeness_mean.data());
-        vote_weight.push_back(weight[q]);
+        vote_weight.push_back(weight[s]);
       }
       float best_cost = std::numeric_limits<float>::infinity();
       for (int dy = -half; dy <= half; ++dy) {
@@ -189,31 +204,33 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
           if (pick == Pick::Best) {
             if (coherence.cost[e] < best_cost) {
               best_cost = coherence.cost[e];
-              std::copy_n(v, c, next.pixel(x, y));
+              std::copy_n(v, c, out);
             }
             continue;
           }
           const double k = coherence_weights[e] * coherence_scale;
-          for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
-          weight[q] += k;
+          for (int i = 0; i < c; ++i) pixel_sum[i] += k * v[i];
+          weight[s] += k;
           if (pick == Pick::Mode) {
             votes.push_back(v);
             vote_weight.push_back(k);
           }
         }
       }
-      if (pick != Pick::Best && weight[q] > 0) {
-        for (int i = 0; i < c; ++i) mode[i] = sum[q * c + i] / weight[q];
+      if (pick != Pick::Best && weight[s] > 0) {
+        for (int i = 0; i < c; ++i) mode[i] = pixel_sum[i] / weight[s];
         if (pick == Pick::Mode) {
           mean_shift_mode(votes.data(), vote_weight.data(), votes.size(), c, mode.data(),
                           shifted.data());
         }
-        for (int i = 0; i < c; ++i) next.pixel(x, y)[i] = float(mode[i]);
+        for (int i = 0; i < c; ++i) out[i] = float(mode[i]);
       }
-      if (classes) snap_to_mode(next.pixel(x, y), c);
+      if (classes) snap_to_mode(out, c);
     }
   });
-  image = std::move(next);
+  for (size_t s = 0; s < n; ++s) {
+    std::copy_n(next.data() + s * c, c, image.values.data() + size_t(roles.region_pixels[s]) * c);
+  }
 }
 
 // Levels until the hole is at most half a patch thick, while the image keeps 4 patches a side.
