@@ -8,7 +8,8 @@
 // mode the means were 0.87, 0.71 and 0.74, and this gate fails).
 // Against OpenCV xphoto's shift-map and FSR fills of the same holes: a lower
 // bidirectional-similarity energy for every seed (inpaint_measures.h). The same bits on one and
-// two threads.
+// two threads. A clone-brush stroke on the same window: its band without a seam, against the
+// hard-edged copy.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
