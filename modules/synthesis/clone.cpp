@@ -164,8 +164,9 @@ PatchImage clone(const PatchImage& image, const std::vector<uint8_t>& source,
   PatchImage copied = image;
   std::vector<uint8_t> destination(source.size(), 0);
   double sx = 0, sy = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
+  const auto [x0, y0, x1, y1] = map.box();
+  for (int y = int(std::max<int64_t>(y0, 0)); y <= std::min<int64_t>(y1, h - 1); ++y) {
+    for (int x = int(std::max<int64_t>(x0, 0)); x <= std::min<int64_t>(x1, w - 1); ++x) {
       if (!map.back(x, y, sx, sy)) continue;
       destination[size_t(y) * w + x] = 1;
       if (params.fill.values == LayerValues::Classes) {  // classes copied whole, never mixed

@@ -45,6 +45,9 @@ OperatorSpec clone_spec() {
                       true, LayerKind::Features, 0});
   s.outputs = filled_layer_outputs("with the source cloned onto the destination");
   json properties = inpaint_param_properties();
+  // The band's ring needs fewer (clone.h).
+  properties["em_iterations"]["default"] = kCloneEmIterations;
+  properties["search_iterations"]["default"] = kCloneSearchIterations;
   properties["offset_m"] = {{"type", "array"},
                             {"items", {{"type", "number"}}},
                             {"minItems", 2},

@@ -1,5 +1,6 @@
 #include "inpaint.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -17,7 +18,9 @@ namespace {
 // The patches' and pixels' roles at one pyramid level (inpaint.h).
 struct Roles {
   int width = 0, height = 0;
-  std::vector<uint8_t> region;  // resynthesized: the hole and its band, nodata excluded
+  std::vector<uint8_t> region;         // resynthesized: the hole and its band, nodata excluded
+  std::vector<int32_t> region_pixels;  // the region's pixels (y * width + x), row-major
+  std::vector<int32_t> region_slot;    // width * height: each pixel's place there, -1 elsewhere
   PatchCentres targets, references, completeness;
 };
 
@@ -31,6 +34,8 @@ Roles roles_at(const MaskedImage& level, const std::vector<uint8_t>& hole,
   Roles r{w,
           h,
           std::vector<uint8_t>(hole.size(), 0),
+          {},
+          std::vector<int32_t>(hole.size(), -1),
           PatchCentres(w, h),
           PatchCentres(w, h),
           PatchCentres(w, h)};
@@ -38,6 +43,10 @@ Roles roles_at(const MaskedImage& level, const std::vector<uint8_t>& hole,
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
       r.region[i] = to_hole[i] <= params.band && nodata[i] == 0;
+      if (r.region[i] != 0) {
+        r.region_slot[i] = int32_t(r.region_pixels.size());
+        r.region_pixels.push_back(int32_t(i));
+      }
       if (x < half || y < half || x >= w - half || y >= h - half) continue;
       const bool overlaps_region = to_hole[i] <= params.band + half;
       r.targets.member[i] = overlaps_region;
@@ -87,18 +96,68 @@ FieldSearchParams start_params(const InpaintParams& params, int level) {
   return {params.patch, 0, params.seed, level * (params.em_iterations + 1)};
 }
 
-// One maximization step: each pixel of the region set to the weighted mean of its votes, or with
-// `best_only` to the value the lowest-cost target patch covering it proposes; with `mode` (one-hot
-// classes) then to its most voted class.
+// How a maximization step sets a pixel from the votes of the patches covering it: the value the
+// lowest-cost target patch proposes, the votes' weighted mean, or their weighted mode (below).
+enum class Pick { Best, Mean, Mode };
+
+// The votes' bandwidth for their mode: the kernel's variance over the votes' weighted variance
+// about their mean. Relative, so the same for colours and heights in metres.
+constexpr double kModeBandwidth = 0.25;
+// Mean-shift steps at most, and the step (squared, over the kernel's variance) that ends them.
+constexpr int kModeSteps = 10;
+constexpr double kModeSettled = 1e-4;
+
+// The weighted mode of `count` votes (`values`: `channels` each, `weights`) nearest their weighted
+// mean `mode` (in: the mean, out: the mode; `next`: room for `channels`): Wexler et al.'s
+// mean-shift (PAMI 2007, §3.2), a Gaussian kernel of variance kModeBandwidth times the votes'
+// weighted variance about the mean. Where the patches covering a pixel disagree, the mean blurs
+// them; the mode takes the value most of them agree on.
+void mean_shift_mode(const float* const* values, const double* weights, size_t count, int channels,
+                     double* mode, double* next) {
+  double variance = 0, total = 0;
+  for (size_t j = 0; j < count; ++j) {
+    for (int i = 0; i < channels; ++i) variance += weights[j] * std::pow(values[j][i] - mode[i], 2);
+    total += weights[j];
+  }
+  const double kernel = kModeBandwidth * variance / total;
+  if (!(kernel > 0)) return;  // the votes agree
+  for (int step = 0; step < kModeSteps; ++step) {
+    double sum = 0;
+    std::fill_n(next, channels, 0.0);
+    for (size_t j = 0; j < count; ++j) {
+      double d2 = 0;
+      for (int i = 0; i < channels; ++i) d2 += std::pow(values[j][i] - mode[i], 2);
+      const double k = weights[j] * std::exp(-d2 / (2 * kernel));
+      for (int i = 0; i < channels; ++i) next[i] += k * values[j][i];
+      sum += k;
+    }
+    if (!(sum > 0)) return;
+    double moved = 0;
+    for (int i = 0; i < channels; ++i) {
+      moved += std::pow(next[i] / sum - mode[i], 2);
+      mode[i] = next[i] / sum;
+    }
+    if (moved < kModeSettled * kernel) return;
+  }
+}
+
+// One maximization step: each pixel of the region set from its votes by `pick`; with `classes`
+// (one-hot channels) then to its most voted class.
 void vote(const Roles& roles, const NearestField& coherence, const NearestField& completeness,
-          const InpaintParams& params, PatchImage& image, bool best_only, bool mode) {
+          const InpaintParams& params, PatchImage& image, Pick pick, bool classes) {
   const int w = roles.width, h = roles.height, c = image.channels, half = params.patch / 2;
   const auto coherence_weights = vote_weights(coherence);
   const auto completeness_weights = vote_weights(completeness);
   const double coherence_scale = 1.0 / double(std::max<size_t>(coherence.size(), 1));
   const double completeness_scale =
       params.completeness / double(std::max<size_t>(completeness.size(), 1));
-  std::vector<double> sum(size_t(w) * h * c, 0.0), weight(size_t(w) * h, 0.0);
+  // Sums and the new values by the region's pixels only (a thin band in a large box).
+  const size_t n = roles.region_pixels.size();
+  std::vector<double> sum(n * c, 0.0), weight(n, 0.0);
+  std::vector<float> next(n * c);
+  for (size_t s = 0; s < n; ++s) {
+    std::copy_n(image.values.data() + size_t(roles.region_pixels[s]) * c, c, next.data() + s * c);
+  }
   // Completeness: each reference patch near the region votes into its nearest target patch
   // (scattered, in the field's order).
   for (size_t e = 0; e < completeness.size(); ++e) {
@@ -107,21 +166,33 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
     const int tx = completeness.match_x[e], ty = completeness.match_y[e];
     for (int dy = -half; dy <= half; ++dy) {
       for (int dx = -half; dx <= half; ++dx) {
-        const size_t q = size_t(ty + dy) * w + (tx + dx);
-        if (roles.region[q] == 0) continue;
+        const int32_t s = roles.region_slot[size_t(ty + dy) * w + (tx + dx)];
+        if (s < 0) continue;
         const float* v = image.pixel(sx + dx, sy + dy);
-        for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
-        weight[q] += k;
+        for (int i = 0; i < c; ++i) sum[size_t(s) * c + i] += k * v[i];
+        weight[s] += k;
       }
     }
   }
   // Coherence: every target patch covering a pixel proposes its match's value there (gathered,
-  // rows in parallel, each pixel's votes in a fixed order).
-  PatchImage next = image;
-  tbb::parallel_for(0, h, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t q = size_t(y) * w + x;
-      if (roles.region[q] == 0) continue;
+  // pixels in parallel, each pixel's votes in a fixed order). For the mode, the completeness votes
+  // count as one vote: their weighted mean with their total weight.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& range) {
+    std::vector<const float*> votes;
+    std::vector<double> vote_weight;
+    std::vector<float> completeness_mean(c);
+    std::vector<double> mode(c), shifted(c);
+    for (size_t s = range.begin(); s != range.end(); ++s) {
+      const int x = roles.region_pixels[s] % w, y = roles.region_pixels[s] / w;
+      double* pixel_sum = sum.data() + s * c;
+      float* out = next.data() + s * c;
+      votes.clear();
+      vote_weight.clear();
+      if (pick == Pick::Mode && weight[s] > 0) {
+        for (int i = 0; i < c; ++i) completeness_mean[i] = float(pixel_sum[i] / weight[s]);
+        votes.push_back(completeness_mean.data());
+        vote_weight.push_back(weight[s]);
+      }
       float best_cost = std::numeric_limits<float>::infinity();
       for (int dy = -half; dy <= half; ++dy) {
         for (int dx = -half; dx <= half; ++dx) {
@@ -129,27 +200,37 @@ void vote(const Roles& roles, const NearestField& coherence, const NearestField&
           if (tx < 0 || ty < 0 || tx >= w || ty >= h) continue;
           const int32_t e = coherence.index[size_t(ty) * w + tx];
           if (e < 0) continue;
-          if (best_only) {
+          const float* v = image.pixel(coherence.match_x[e] + dx, coherence.match_y[e] + dy);
+          if (pick == Pick::Best) {
             if (coherence.cost[e] < best_cost) {
               best_cost = coherence.cost[e];
-              std::copy_n(image.pixel(coherence.match_x[e] + dx, coherence.match_y[e] + dy), c,
-                          next.pixel(x, y));
+              std::copy_n(v, c, out);
             }
             continue;
           }
           const double k = coherence_weights[e] * coherence_scale;
-          const float* v = image.pixel(coherence.match_x[e] + dx, coherence.match_y[e] + dy);
-          for (int i = 0; i < c; ++i) sum[q * c + i] += k * v[i];
-          weight[q] += k;
+          for (int i = 0; i < c; ++i) pixel_sum[i] += k * v[i];
+          weight[s] += k;
+          if (pick == Pick::Mode) {
+            votes.push_back(v);
+            vote_weight.push_back(k);
+          }
         }
       }
-      if (!best_only && weight[q] > 0) {
-        for (int i = 0; i < c; ++i) next.pixel(x, y)[i] = float(sum[q * c + i] / weight[q]);
+      if (pick != Pick::Best && weight[s] > 0) {
+        for (int i = 0; i < c; ++i) mode[i] = pixel_sum[i] / weight[s];
+        if (pick == Pick::Mode) {
+          mean_shift_mode(votes.data(), vote_weight.data(), votes.size(), c, mode.data(),
+                          shifted.data());
+        }
+        for (int i = 0; i < c; ++i) out[i] = float(mode[i]);
       }
-      if (mode) snap_to_mode(next.pixel(x, y), c);
+      if (classes) snap_to_mode(out, c);
     }
   });
-  image = std::move(next);
+  for (size_t s = 0; s < n; ++s) {
+    std::copy_n(next.data() + s * c, c, image.values.data() + size_t(roles.region_pixels[s]) * c);
+  }
 }
 
 // Levels until the hole is at most half a patch thick, while the image keeps 4 patches a side.
@@ -243,8 +324,9 @@ Completion complete(const PatchImage& image, const std::vector<uint8_t>& hole, i
     // matches upsampled, with their own detail (searching from the bilinear start finds blur).
     search.improve(level, level, roles.references, start_params(params, l), coherence);
     search.improve(level, level, roles.targets, start_params(params, l), completeness);
-    const bool mode = params.values == LayerValues::Classes && l == 0;
-    vote(roles, coherence, completeness, params, level, coarsest, mode);
+    const bool classes = params.values == LayerValues::Classes && l == 0;
+    vote(roles, coherence, completeness, params, level, coarsest ? Pick::Best : Pick::Mean,
+         classes);
     for (int it = 0; it < params.em_iterations; ++it) {
       const FieldSearchParams fp{params.patch, params.search_iterations, params.seed,
                                  l * (params.em_iterations + 1) + it + 1};
@@ -252,7 +334,10 @@ Completion complete(const PatchImage& image, const std::vector<uint8_t>& hole, i
       if (params.completeness > 0 && completeness.size() > 0) {
         search.improve(level, level, roles.targets, fp, completeness);
       }
-      vote(roles, coherence, completeness, params, level, false, mode);
+      // The finest level's last step takes the votes' mode (sharp where the mean blurs); classes
+      // take their most voted class instead.
+      const bool last = l == 0 && it == params.em_iterations - 1 && !classes;
+      vote(roles, coherence, completeness, params, level, last ? Pick::Mode : Pick::Mean, classes);
     }
     work = std::move(level);
     coarse_w = roles.width;

@@ -14,7 +14,10 @@
 // is found in it), then sets each pixel of R to the weighted mean of the values the matched
 // patches covering it propose (weights exp(-SSD / 2 sigma^2), sigma^2 the 75th percentile of the
 // SSDs, as Wexler; the completeness votes scaled by `completeness` and both normalized by their
-// patch counts, as Simakov).
+// patch counts, as Simakov). The finest level's last iteration takes the votes' weighted mode
+// instead of their mean (Wexler's mean-shift, from the mean: where the patches disagree the mean
+// blurs the fill, the mode keeps the value most of them propose); classes take their most voted
+// class there instead.
 #pragma once
 
 #include <cstdint>

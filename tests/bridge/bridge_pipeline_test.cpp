@@ -11,10 +11,8 @@
 // bits for 1 and 2 threads and the same mask pixels for two tilings, and without the mesh mapped;
 // the same deck across the seam of two faces of the grid, its ends on both faces' DEM; bad
 // strokes fail naming the feature and field.
-#include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_geometry.h>
 #include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
@@ -30,6 +28,7 @@
 #include <tuple>
 #include <vector>
 
+#include "burn_deck.h"
 #include "content/content_blob.h"
 #include "core/grid.h"
 #include "egm96_oracle.h"
@@ -300,38 +299,15 @@ OGRSpatialReference rhealpix() {
 // they follow straight lines in degrees as the operator's) on `cell`'s tile in the rHEALPix
 // plane: 1 for the pixels whose centre lies inside.
 std::vector<uint8_t> rasterized_deck(CellId cell, int tile_size, const Site& site = alps()) {
-  OGRLinearRing ring;
-  for (const json& p : edge(-kHalfWidth, site))
-    ring.addPoint(p[0].get<double>(), p[1].get<double>());
-  const json second = edge(kHalfWidth, site);
-  for (auto p = second.rbegin(); p != second.rend(); ++p)
-    ring.addPoint((*p)[0].get<double>(), (*p)[1].get<double>());
-  ring.closeRings();
-  OGRPolygon polygon;
-  polygon.addRing(&ring);
-  polygon.segmentize(1e-6);
-  OGRSpatialReference wgs84;
-  wgs84.importFromEPSG(4326);
-  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  OGRSpatialReference plane = rhealpix();
-  plane.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  const std::unique_ptr<OGRCoordinateTransformation> to_plane(
-      OGRCreateCoordinateTransformation(&wgs84, &plane));
-  EXPECT_EQ(polygon.transform(to_plane.get()), OGRERR_NONE);
-
   const std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("MEM")->Create(
       "", tile_size, tile_size, 1, GDT_Byte, nullptr));
   const PlaneSquare square = default_grid().plane_square(cell);
   const double pixel = square.side / tile_size;
   double transform[6] = {square.x_min, pixel, 0, square.y_max, 0, -pixel};
   ds->SetGeoTransform(transform);
+  const OGRSpatialReference plane = rhealpix();
   ds->SetSpatialRef(&plane);
-  int band = 1;
-  double burn = 1;
-  OGRGeometryH geometry = OGRGeometry::ToHandle(&polygon);
-  EXPECT_EQ(GDALRasterizeGeometries(ds.get(), 1, &band, 1, &geometry, nullptr, nullptr, &burn,
-                                    nullptr, nullptr, nullptr),
-            CE_None);
+  EXPECT_TRUE(test::burn_deck(*ds, edge(-kHalfWidth, site), edge(kHalfWidth, site), {1}));
   std::vector<uint8_t> out(size_t(tile_size) * size_t(tile_size));
   EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, tile_size, tile_size, out.data(),
                                            tile_size, tile_size, GDT_Byte, 0, 0),

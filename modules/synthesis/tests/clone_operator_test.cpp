@@ -186,6 +186,19 @@ double square_side_m(const std::map<std::pair<int64_t, int64_t>, float>& values,
          double(crossings.size() - 1);
 }
 
+// The source's centre moved `east_m` east (in degrees at the equator), as a fractional global
+// pixel of `face` at `level`.
+std::array<double, 2> source_centre(int face, int level, double east_m) {
+  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
+  return *samples.sample({(kSourceWest + kSourceEast) / 2 + east_m / kDegreeM, 0});
+}
+
+// The sample nearest the centre of the copy `offset_m` [kOffsetEastM, 0] puts on the slope.
+std::pair<int64_t, int64_t> copy_centre(int face, int level) {
+  const auto to = source_centre(face, level, kOffsetEastM);
+  return {std::lround(to[0]), std::lround(to[1])};
+}
+
 TEST(CloneOperator, ACheckerboardClonedOntoA30DegreeSlopeKeepsItsGroundAreaSameBitsOnTwoThreads) {
   const json params = {{"offset_m", {kOffsetEastM, 0}}};
   const CloneRun one = run_clone("-1", 1, {{"dem", "dem"}}, params);
@@ -203,10 +216,8 @@ TEST(CloneOperator, ACheckerboardClonedOntoA30DegreeSlopeKeepsItsGroundAreaSameB
   int face = 0, level = 0;
   const auto before = first_channel(*a, "checker", face, level);
   const auto after = first_channel(*a, "cloned", face, level);
-  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
-  const double centre_lon = (kSourceWest + kSourceEast) / 2;
-  const auto source = *samples.sample({centre_lon, 0});
-  const auto destination = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
+  const auto source = source_centre(face, level, 0);
+  const auto destination = source_centre(face, level, kOffsetEastM);
   // The source is ~63 samples a side; its copy ~55 wide on the slope: measured inside the band.
   const double source_area = square_side_m(before, face, level, source, true, 26) *
                              square_side_m(before, face, level, source, false, 26);
@@ -248,9 +259,8 @@ TEST(CloneOperator, ACopyLandingBeyondTheRegionsCellsOrAnOutputWithoutItsInputIs
     face = cell.face(), level = cell.level() + log2_tile_size(n);
     east = std::max(east, global_col(cell, n, n - 1) + 1);
   }
-  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
   const double centre_lon = (kSourceWest + kSourceEast) / 2;
-  const auto source = *samples.sample({centre_lon, 0});
+  const auto source = source_centre(face, level, 0);
   // The copy's centre 10 samples west of that edge: its eastern ~20 samples in the context.
   const LonLat edge = face_point_lonlat(default_grid(), face, double(east - 10), source[1], level);
   const json params = {{"offset_m", {(edge.lon - centre_lon) * kDegreeM, 0}}};
@@ -287,10 +297,7 @@ TEST(CloneOperator, AFlatTerrainPatchClonedOntoTheSlopeMeetsItsMeanHeight) {
   int face = 0, level = 0;
   const auto dem = first_channel_f32(*store, "dem", face, level);
   const auto cloned = first_channel_f32(*store, "cloned_dem", face, level);
-  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
-  const double centre_lon = (kSourceWest + kSourceEast) / 2;
-  const auto to = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
-  const int64_t c = std::lround(to[0]), r = std::lround(to[1]);
+  const auto [c, r] = copy_centre(face, level);
   // The copy's middle (its band is 3 samples wide at the edge, ~27 samples away): one height.
   const float middle = cloned.at({c, r});
   double low = 1e30, high = -1e30;
@@ -329,10 +336,7 @@ TEST(CloneOperator, LandCoverIsClonedAsClassesThroughTheImagerysMap) {
   const auto imagery = first_channel(*store, "cloned", face, level);
   const auto before = first_channel_f32(*store, "landcover", face, level);
   const auto classes = first_channel_f32(*store, "cloned_classes", face, level);
-  const MosaicGeometry samples(default_grid(), face, level, 0, 0);
-  const double centre_lon = (kSourceWest + kSourceEast) / 2;
-  const auto to = *samples.sample({centre_lon + kOffsetEastM / kDegreeM, 0});
-  const int64_t c = std::lround(to[0]), r = std::lround(to[1]);
+  const auto [c, r] = copy_centre(face, level);
   size_t inside = 0, agree = 0, other = 0, changed_beyond = 0;
   const auto is_class = [](float k) { return k == 11 || k == 41 || k == 90; };
   for (const auto& [at, k] : classes) {

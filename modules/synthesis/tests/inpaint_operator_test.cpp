@@ -4,11 +4,8 @@
 // filled (changed, none left nodata); a footprint that is no polygon is refused, naming it. And
 // paper 002's Fig. 16 end to end: an orthophoto showing a bridge's deck, the deck removed under
 // structures.bridge's mask, the filled photo draped by the 3D Tiles export.
-#include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <ogr_geometry.h>
-#include <ogr_spatialref.h>
 #include <unistd.h>
 
 #include <array>
@@ -22,6 +19,7 @@
 #include <set>
 #include <string>
 
+#include "burn_deck.h"
 #include "core/geo_distance.h"
 #include "core/halo.h"
 #include "core/polygon_set.h"
@@ -276,28 +274,7 @@ class BridgeRemoved : public ::testing::Test {
     const GDALDatasetUniquePtr source(GDALDataset::Open(kLandsat.c_str(), GDAL_OF_RASTER));
     const GDALDatasetUniquePtr photo(GetGDALDriverManager()->GetDriverByName("GTiff")->CreateCopy(
         path.c_str(), source.get(), FALSE, nullptr, nullptr, nullptr));
-    OGRLinearRing ring;
-    for (const json& p : kEdges[0]) ring.addPoint(p[0].get<double>(), p[1].get<double>());
-    for (auto p = kEdges[1].rbegin(); p != kEdges[1].rend(); ++p)
-      ring.addPoint((*p)[0].get<double>(), (*p)[1].get<double>());
-    ring.closeRings();
-    OGRPolygon deck;
-    deck.addRing(&ring);
-    deck.segmentize(1e-6);
-    OGRSpatialReference wgs84;
-    wgs84.importFromEPSG(4326);
-    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    OGRSpatialReference utm(*photo->GetSpatialRef());
-    utm.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    const std::unique_ptr<OGRCoordinateTransformation> to_utm(
-        OGRCreateCoordinateTransformation(&wgs84, &utm));
-    ASSERT_EQ(deck.transform(to_utm.get()), OGRERR_NONE);
-    int bands[3] = {1, 2, 3};
-    double magenta[3] = {255, 0, 255};
-    OGRGeometryH geometry = OGRGeometry::ToHandle(&deck);
-    ASSERT_EQ(GDALRasterizeGeometries(photo.get(), 3, bands, 1, &geometry, nullptr, nullptr,
-                                      magenta, nullptr, nullptr, nullptr),
-              CE_None);
+    ASSERT_TRUE(maquette::test::burn_deck(*photo, kEdges[0], kEdges[1], {255, 0, 255}));
   }
 
   // The deck's colour, as the ingest's resampling leaves it (measured on the scene outside the

@@ -2,11 +2,14 @@
 // content: 5 % and 20 % of a 128 x 128 window and a bridge-like strip across it. Against the
 // original: no seam and little blur on the hole's edge, judged over seeds 0-3 (review C-R-S3: one
 // seed's ratio moves by up to 0.15 with the draw alone): each seed's mean gradient there at most
-// 1.25 x the original's, and the mean over the seeds at least the 0.8 for the 5 % hole
-// (measured 0.87); the 20 % hole and the strip miss it (measured 0.71 and 0.74, gated at 0.7).
+// 1.25 x the original's, and the mean over the seeds at least the 0.8 (measured 1.01 for
+// the 5 % hole, 0.83 for the 20 % hole and 0.86 for the strip: the 20 % hole's margin is 0.03,
+// less than one seed's spread, 0.76-0.92; with the finest level's last vote a mean instead of a
+// mode the means were 0.87, 0.71 and 0.74, and this gate fails).
 // Against OpenCV xphoto's shift-map and FSR fills of the same holes: a lower
 // bidirectional-similarity energy for every seed (inpaint_measures.h). The same bits on one and
-// two threads.
+// two threads. A clone-brush stroke on the same window: its band without a seam, against the
+// hard-edged copy.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -15,9 +18,11 @@
 #include <opencv2/xphoto/inpainting.hpp>
 #include <string>
 
+#include "../clone.h"
 #include "../inpaint.h"
 #include "../patchmatch.h"
 #include "inpaint_measures.h"
+#include "synthetic_images.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {
@@ -42,10 +47,12 @@ cv::Mat landsat_window(int x0, int y0) {
   return rgb;
 }
 
+// The least mean over the seeds of the edge gradient ratio: the issue's.
+constexpr double kLeastEdgeGradient = 0.8;
+
 struct Hole {
   std::string name;
   std::vector<uint8_t> mask;
-  double least_edge_gradient;  // of the seeds' mean: the 0.8 where met, else 0.7
 };
 
 std::vector<Hole> holes() {
@@ -65,9 +72,7 @@ std::vector<Hole> holes() {
       strip[size_t(y) * kSide + x] = std::abs((y - 64) - 0.58 * (x - 64)) * 0.866 < 4;
     }
   }
-  return {{"5 %", centred_square(0.05), 0.8},
-          {"20 %", centred_square(0.20), 0.7},
-          {"strip", strip, 0.7}};
+  return {{"5 %", centred_square(0.05)}, {"20 %", centred_square(0.20)}, {"strip", strip}};
 }
 
 cv::Mat ours(const cv::Mat& rgb, const std::vector<uint8_t>& hole, uint64_t seed = 0) {
@@ -111,8 +116,61 @@ TEST(InpaintZion, NoSeamAndLowerEnergyThanXphotoOnHolesOfKnownContent) {
       EXPECT_LT(energy.total(), fsr.total()) << hole.name << ", seed " << seed;
     }
     std::cout << "  mean edge gradient ratio " << mean_ratio << "\n";
-    EXPECT_GE(mean_ratio, hole.least_edge_gradient) << hole.name;
+    EXPECT_GE(mean_ratio, kLeastEdgeGradient) << hole.name;
   }
+}
+
+// A clone-brush stroke on the same window: a 44 x 44 square copied 68 pixels right and down. The
+// band across the destination's edge (3 pixels each side) against the hard-edged copy (band 0):
+// no seam and little blur there (the mean gradient on the destination's edge within 0.8-1.25 x
+// the original's there, the mean over seeds 0-3; the hard copy's seam is above it), and a lower
+// bidirectional-similarity energy of the band's patches than the hard copy's, for every seed
+// (both measured against the hard copy, the image the band is resynthesized in).
+TEST(CloneZion, TheBandAcrossTheCopysEdgeShowsNoSeamAndBeatsTheHardCopy) {
+  if (!std::filesystem::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const cv::Mat rgb = landsat_window(560, 700);
+  constexpr int kSource = 8, kSquare = 44, kOffset = 68;
+  const auto destination =
+      test::square_mask(kSide, kSide, kSource + kOffset, kSource + kOffset, kSquare);
+  CloneParams params;
+  params.offset_x = params.offset_y = kOffset;
+  const int band = params.fill.band;
+  // The band: pixels within `band` (chessboard) of the destination's edge, on either side.
+  std::vector<uint8_t> ring(destination.size(), 0);
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      const int lo = kSource + kOffset, hi = lo + kSquare - 1;
+      const int out = std::max({lo - x, x - hi, lo - y, y - hi});  // > 0 outside the square
+      const int in = std::min({x - lo, hi - x, y - lo, hi - y});   // >= 0 inside
+      ring[size_t(y) * kSide + x] = out > 0 ? out <= band : in < band;
+    }
+  }
+  const auto source = test::square_mask(kSide, kSide, kSource, kSource, kSquare);
+  CloneParams hard_params = params;
+  hard_params.fill.band = 0;
+  const cv::Mat hard =
+      test::to_mat(clone(test::to_patch_image(rgb), source, hard_params, PatchMatch()));
+  const double original_gradient = test::edge_gradient(rgb, destination);
+  const double hard_ratio = test::edge_gradient(hard, destination) / original_gradient;
+  const auto hard_energy = test::bidirectional_energy(hard, hard, ring, 0);
+  std::cout << "hard copy: edge gradient ratio " << hard_ratio << ", energy "
+            << hard_energy.coherence << " + " << hard_energy.completeness << "\n";
+  double mean_ratio = 0;
+  for (uint64_t seed = 0; seed < kSeeds; ++seed) {
+    params.fill.seed = seed;
+    const cv::Mat cloned =
+        test::to_mat(clone(test::to_patch_image(rgb), source, params, PatchMatch()));
+    const double ratio = test::edge_gradient(cloned, destination) / original_gradient;
+    mean_ratio += ratio / kSeeds;
+    const auto energy = test::bidirectional_energy(hard, cloned, ring, 0);
+    std::cout << "  seed " << seed << ": edge gradient ratio " << ratio << "; energy "
+              << energy.coherence << " + " << energy.completeness << "\n";
+    EXPECT_LE(ratio, 1.25) << "seed " << seed;
+    EXPECT_LT(energy.total(), hard_energy.total()) << "seed " << seed;
+  }
+  std::cout << "  mean edge gradient ratio " << mean_ratio << "\n";
+  EXPECT_GT(hard_ratio, 1.25);  // the seam the band removes
+  EXPECT_GE(mean_ratio, kLeastEdgeGradient);
 }
 
 TEST(InpaintZion, SameBitsOnOneAndTwoThreads) {
