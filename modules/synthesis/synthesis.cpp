@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "pixel_hash.h"
+#include "vote.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -126,12 +127,8 @@ double guide_mismatch(const std::vector<float>& target, size_t i,
 }
 
 // Whether target pixels `a` and `b` of a level lie on either side of a depth break.
-bool across_depth_break(const LevelGuides& g, const SynthesisParams& p, size_t a, size_t b) {
-  if (g.depth.empty()) return false;
-  const float da = g.depth[a], db = g.depth[b];
-  if (std::isnan(da) || std::isnan(db)) return false;
-  if (std::isinf(da) || std::isinf(db)) return std::isinf(da) != std::isinf(db);
-  return std::max(da, db) > p.depth_break * std::min(da, db);
+bool breaks_between(const LevelGuides& g, const SynthesisParams& p, size_t a, size_t b) {
+  return !g.depth.empty() && across_depth_break(g.depth[a], g.depth[b], p.depth_break);
 }
 
 // The reuse penalty's window: offsets at Chebyshev distance 2 .. kRepetitionRadius.
@@ -190,7 +187,7 @@ class Corrector {
         const int32_t s = state.at(col + dx, row + dy);
         shifted[m] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
                               std::clamp(s / e_.width - dy, 0, e_.height - 1));
-        if (across_depth_break(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy)))
+        if (breaks_between(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy)))
           forbidden[f++] = shifted[m];
         ++m;
       }
@@ -321,54 +318,6 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
   return state;
 }
 
-// The finest level's vote over `out`: each pixel takes, among the sources the overlapping
-// patches of side 2 vote_radius + 1 propose for it (S(p + d) - d, inside the exemplar, allowed,
-// of the pixel's target label), the one whose colour is nearest the proposals' mean colour
-// (counted with their multiplicity); none proposed, or a depth break within the window: its own
-// source.
-State voted(const State& state, const ExemplarLevel& e, const LevelGuides& g,
-            const SynthesisParams& p, const PixelRect& out) {
-  State result(out);
-  const int radius = p.vote_radius;
-  std::vector<int32_t> proposals;
-  for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
-    for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
-      const size_t i = g.index(col, row);
-      const uint8_t label = g.labels[i];
-      proposals.clear();
-      std::array<double, 3> mean{};
-      bool broken = false;  // a depth break within the vote's window
-      for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx)
-          broken = broken || across_depth_break(g, p, i, g.index(col + dx, row + dy));
-      if (broken) {
-        result.at(col, row) = state.at(col, row);
-        continue;
-      }
-      for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-          const int32_t s = state.at(col + dx, row + dy);
-          const int x = s % e.width - dx, y = s / e.width - dy;
-          if (x < 0 || y < 0 || x >= e.width || y >= e.height) continue;
-          const int32_t c = e.index(x, y);
-          if (e.excluded[size_t(c)] || (label != kUnknownLabel && e.labels[size_t(c)] != label))
-            continue;
-          proposals.push_back(c);
-          for (size_t k = 0; k < 3; ++k) mean[k] += e.rgb[3 * size_t(c) + k];
-        }
-      int32_t winner = state.at(col, row);
-      double least = std::numeric_limits<double>::infinity();
-      for (const int32_t c : proposals) {
-        double d = 0;
-        for (size_t k = 0; k < 3; ++k)
-          d += std::pow(double(e.rgb[3 * size_t(c) + k]) - mean[k] / double(proposals.size()), 2);
-        if (d < least) least = d, winner = c;
-      }
-      result.at(col, row) = winner;
-    }
-  return result;
-}
-
 }  // namespace
 
 int synthesis_halo() {
@@ -406,7 +355,12 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
     for (int pass = 0; pass < kPasses; ++pass)
       state =
           corrected(std::move(state), e, g, params, l, pyramid.k, plan.passes[size_t(pass)], pass);
-    if (l == 0) state = voted(state, e, g, params, out);
+    if (l == 0) {
+      State voted(out);
+      voted.src = vote(e, {state.rect, state.src, g.rect, g.labels, g.depth, params.depth_break},
+                       params.vote_radius, out);
+      state = std::move(voted);
+    }
   }
   return std::move(state.src);
 }

@@ -35,15 +35,12 @@
 // pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
 // on an allowed pixel.
 //
-// Last, the finest level's vote (ebsynth's coherence comes from votes of the overlapping patches;
-// here the vote picks a source, it does not average colours): the patches of side
-// 2 vote_radius + 1 around p each propose S(p + d) - d for it (inside the exemplar, allowed, of
-// p's target label when it has one), and p takes the proposal whose colour is nearest their mean
-// (counted with multiplicity; the first in row-major order of d on ties; none proposed: its own
-// source). A pixel with a depth break within the window keeps its source: the vote would join
-// patches across the silhouette that the correction kept apart. So the output is still a copy:
-// every pixel's colour is its source's, and the sources returned are the pixels whose colours the
-// output shows.
+// Last, the finest level's vote (vote.h; ebsynth's coherence comes from votes of the overlapping
+// patches, here the vote picks a source, it does not average colours): each pixel takes, among
+// the sources S(p + d) - d the patches of side 2 vote_radius + 1 around it propose (of its
+// target label), the one whose colour is nearest their mean; a pixel with a depth break within
+// the window keeps its source. So the output is still a copy: every pixel's colour is its
+// source's, and the sources returned are the pixels whose colours the output shows.
 //
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
