@@ -142,6 +142,9 @@ constexpr auto kRepetitionOffsets = [] {
   return offsets;
 }();
 
+// D_spread's hash purpose (the jitter's is 1, the random candidates' 16 and up).
+constexpr uint64_t kSpreadSalt = 7;
+
 // What the cost reads around a pixel, gathered once for all its candidates: the target labels
 // of its neighbourhood, and the snapshot's exemplar coordinates at kRepetitionOffsets.
 struct Around {
@@ -219,8 +222,10 @@ class Corrector {
     for (size_t i = 0; i < n; ++i) {
       const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
       if (winner_fits && !fits) continue;
-      const double cost = this->cost(candidates[i], feature, around, col, row) *
-                          (i < coherent ? 1.0 : 1.0 + p_.coherence);
+      const double cost = i < coherent ? this->cost(candidates[i], feature, around, col, row)
+                                       : this->cost(candidates[i], feature, around, col, row) *
+                                                 (1.0 + p_.coherence) +
+                                             p_.w_usage * usage(candidates[i]);
       if (cost < least || (fits && !winner_fits))
         least = cost, winner = candidates[i], winner_fits = fits;
     }
@@ -253,9 +258,19 @@ class Corrector {
     for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
       reused +=
           int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
+    const uint64_t h =
+        pixel_hash(col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
+                   kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
+                       uint64_t(cy >> kSpreadRegionShift) << 20);
+    const double spread = double(h >> 11) * 0x1.0p-53;  // [0, 1)
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_distance * distance +
-           p_.w_repetition * reused / double(kRepetitionOffsets.size());
+           p_.w_repetition * reused / double(kRepetitionOffsets.size()) + p_.w_spread * spread;
+  }
+
+  // D_usage (synthesis.h): the exemplar's measured over-use, at the coarser levels.
+  double usage(int32_t c) const {
+    return level_ > 0 && !e_.usage.empty() ? double(e_.usage[size_t(c)]) : 0.0;
   }
 
   const ExemplarLevel& e_;
