@@ -39,6 +39,8 @@ struct ExemplarLevel {
   std::vector<int32_t> similar;
   std::vector<int32_t> allowed;                    // pixels not excluded, ascending
   std::array<std::vector<int32_t>, 256> by_label;  // allowed pixels of each label, ascending
+  // How much the synthesis over-uses each pixel (exemplar_usage.h), or empty: not measured.
+  std::vector<float> usage;
 
   int32_t index(int x, int y) const { return y * width + x; }
   // The neighbourhood of (x, y) with coordinates clamped into the level.

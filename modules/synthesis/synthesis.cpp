@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "pixel_hash.h"
+#include "vote.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -126,12 +127,8 @@ double guide_mismatch(const std::vector<float>& target, size_t i,
 }
 
 // Whether target pixels `a` and `b` of a level lie on either side of a depth break.
-bool across_depth_break(const LevelGuides& g, const SynthesisParams& p, size_t a, size_t b) {
-  if (g.depth.empty()) return false;
-  const float da = g.depth[a], db = g.depth[b];
-  if (std::isnan(da) || std::isnan(db)) return false;
-  if (std::isinf(da) || std::isinf(db)) return std::isinf(da) != std::isinf(db);
-  return std::max(da, db) > p.depth_break * std::min(da, db);
+bool breaks_between(const LevelGuides& g, const SynthesisParams& p, size_t a, size_t b) {
+  return !g.depth.empty() && across_depth_break(g.depth[a], g.depth[b], p.depth_break);
 }
 
 // The reuse penalty's window: offsets at Chebyshev distance 2 .. kRepetitionRadius.
@@ -144,6 +141,9 @@ constexpr auto kRepetitionOffsets = [] {
       if (std::max(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy) >= 2) offsets[n++] = {dx, dy};
   return offsets;
 }();
+
+// D_spread's hash purpose (the jitter's is 1, the random candidates' 16 and up).
+constexpr uint64_t kSpreadSalt = 7;
 
 // What the cost reads around a pixel, gathered once for all its candidates: the target labels
 // of its neighbourhood, and the snapshot's exemplar coordinates at kRepetitionOffsets.
@@ -190,7 +190,7 @@ class Corrector {
         const int32_t s = state.at(col + dx, row + dy);
         shifted[m] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
                               std::clamp(s / e_.width - dy, 0, e_.height - 1));
-        if (across_depth_break(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy)))
+        if (breaks_between(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy)))
           forbidden[f++] = shifted[m];
         ++m;
       }
@@ -222,8 +222,10 @@ class Corrector {
     for (size_t i = 0; i < n; ++i) {
       const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
       if (winner_fits && !fits) continue;
-      const double cost = this->cost(candidates[i], feature, around, col, row) *
-                          (i < coherent ? 1.0 : 1.0 + p_.coherence);
+      const double cost = i < coherent ? this->cost(candidates[i], feature, around, col, row)
+                                       : this->cost(candidates[i], feature, around, col, row) *
+                                                 (1.0 + p_.coherence) +
+                                             p_.w_usage * usage(candidates[i]);
       if (cost < least || (fits && !winner_fits))
         least = cost, winner = candidates[i], winner_fits = fits;
     }
@@ -256,9 +258,19 @@ class Corrector {
     for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
       reused +=
           int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
+    const uint64_t h =
+        pixel_hash(col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
+                   kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
+                       uint64_t(cy >> kSpreadRegionShift) << 20);
+    const double spread = double(h >> 11) * 0x1.0p-53;  // [0, 1)
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_distance * distance +
-           p_.w_repetition * reused / double(kRepetitionOffsets.size());
+           p_.w_repetition * reused / double(kRepetitionOffsets.size()) + p_.w_spread * spread;
+  }
+
+  // D_usage (synthesis.h): the exemplar's measured over-use, at the coarser levels.
+  double usage(int32_t c) const {
+    return level_ > 0 && !e_.usage.empty() ? double(e_.usage[size_t(c)]) : 0.0;
   }
 
   const ExemplarLevel& e_;
@@ -321,54 +333,6 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
   return state;
 }
 
-// The finest level's vote over `out`: each pixel takes, among the sources the overlapping
-// patches of side 2 vote_radius + 1 propose for it (S(p + d) - d, inside the exemplar, allowed,
-// of the pixel's target label), the one whose colour is nearest the proposals' mean colour
-// (counted with their multiplicity); none proposed, or a depth break within the window: its own
-// source.
-State voted(const State& state, const ExemplarLevel& e, const LevelGuides& g,
-            const SynthesisParams& p, const PixelRect& out) {
-  State result(out);
-  const int radius = p.vote_radius;
-  std::vector<int32_t> proposals;
-  for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
-    for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
-      const size_t i = g.index(col, row);
-      const uint8_t label = g.labels[i];
-      proposals.clear();
-      std::array<double, 3> mean{};
-      bool broken = false;  // a depth break within the vote's window
-      for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx)
-          broken = broken || across_depth_break(g, p, i, g.index(col + dx, row + dy));
-      if (broken) {
-        result.at(col, row) = state.at(col, row);
-        continue;
-      }
-      for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-          const int32_t s = state.at(col + dx, row + dy);
-          const int x = s % e.width - dx, y = s / e.width - dy;
-          if (x < 0 || y < 0 || x >= e.width || y >= e.height) continue;
-          const int32_t c = e.index(x, y);
-          if (e.excluded[size_t(c)] || (label != kUnknownLabel && e.labels[size_t(c)] != label))
-            continue;
-          proposals.push_back(c);
-          for (size_t k = 0; k < 3; ++k) mean[k] += e.rgb[3 * size_t(c) + k];
-        }
-      int32_t winner = state.at(col, row);
-      double least = std::numeric_limits<double>::infinity();
-      for (const int32_t c : proposals) {
-        double d = 0;
-        for (size_t k = 0; k < 3; ++k)
-          d += std::pow(double(e.rgb[3 * size_t(c) + k]) - mean[k] / double(proposals.size()), 2);
-        if (d < least) least = d, winner = c;
-      }
-      result.at(col, row) = winner;
-    }
-  return result;
-}
-
 }  // namespace
 
 int synthesis_halo() {
@@ -406,7 +370,12 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
     for (int pass = 0; pass < kPasses; ++pass)
       state =
           corrected(std::move(state), e, g, params, l, pyramid.k, plan.passes[size_t(pass)], pass);
-    if (l == 0) state = voted(state, e, g, params, out);
+    if (l == 0) {
+      State voted(out);
+      voted.src = vote(e, {state.rect, state.src, g.rect, g.labels, g.depth, params.depth_break},
+                       params.vote_radius, out);
+      state = std::move(voted);
+    }
   }
   return std::move(state.src);
 }

@@ -8,10 +8,12 @@
 // 2 x 2 sub-passes (pixels of one parity of global column and row at a time, in the order
 // (0,0) (1,1) (0,1) (1,0)), replace every pixel by the candidate of least cost
 //   C = D_color + w_label D_label + w_altitude D_altitude + w_distance D_distance
-//       + w_repetition D_repetition
+//       + w_repetition D_repetition + w_spread D_spread
 // among its k-coherence candidates (for each 3 x 3 neighbour q = p + d, the exemplar pixel
 // S(q) - d and its k most similar patches) and two random pixels of its target label, the
-// candidates other than the S(q) - d at a cost (1 + coherence) times theirs. With a depth guide
+// candidates other than the S(q) - d at a cost (1 + coherence) times theirs plus w_usage D_usage
+// (the coherent candidates carry no D_usage: a copy under way is not broken for its source's
+// over-use). With a depth guide
 // (a panorama's distance from the eye), a neighbour q across a depth break from p (one of the
 // two sky, or farther than depth_break times the other: the renderer's silhouettes) makes its
 // S(q) - d no candidate at all (paper 000: silhouettes as coherence breaks, so that no patch is
@@ -29,21 +31,28 @@
 //    sits at candidate + o). Counting in the previous pass's state, in a fixed window, keeps the
 //    penalty a function of global pixel coordinates, independent of the order of pixels, of
 //    threads and of the window computed: the usage is local, not a global count.
+//  - D_usage: at the levels coarser than the finest, the exemplar's measured over-use of the
+//    candidate (ExemplarLevel::usage, exemplar_usage.h: Kaspar et al. 2015's occurrence map,
+//    measured once on the exemplar itself, so global without depending on the window); 0 when
+//    not measured; at the finest level the copy's coherence decides. Added to the candidates
+//    other than the S(q) - d only (above).
+//  - D_spread: a preference of each block of 16 x 16 pixels of a level (global pixel
+//    coordinates >> kSpreadBlockShift) for each region of 8 x 8 exemplar pixels, uniform in
+//    [0, 1) from a hash of both (and the level and seed): blocks prefer different copies among
+//    equally good ones, so the most used pixels are used less, at no cost in coherence within a
+//    block.
 // A candidate whose exemplar label is the pixel's target label beats any that is not (the cost
 // decides among those of one kind): the two random candidates of the label offer one (unless
 // forbidden) whenever the level's exemplar has that label, so such an output pixel ends on a
 // pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
 // on an allowed pixel.
 //
-// Last, the finest level's vote (ebsynth's coherence comes from votes of the overlapping patches;
-// here the vote picks a source, it does not average colours): the patches of side
-// 2 vote_radius + 1 around p each propose S(p + d) - d for it (inside the exemplar, allowed, of
-// p's target label when it has one), and p takes the proposal whose colour is nearest their mean
-// (counted with multiplicity; the first in row-major order of d on ties; none proposed: its own
-// source). A pixel with a depth break within the window keeps its source: the vote would join
-// patches across the silhouette that the correction kept apart. So the output is still a copy:
-// every pixel's colour is its source's, and the sources returned are the pixels whose colours the
-// output shows.
+// Last, the finest level's vote (vote.h; ebsynth's coherence comes from votes of the overlapping
+// patches, here the vote picks a source, it does not average colours): each pixel takes, among
+// the sources S(p + d) - d the patches of side 2 vote_radius + 1 around it propose (of its
+// target label), the one whose colour is nearest their mean; a pixel with a depth break within
+// the window keeps its source. So the output is still a copy: every pixel's colour is its
+// source's, and the sources returned are the pixels whose colours the output shows.
 //
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
@@ -57,17 +66,21 @@
 
 namespace maquette::synthesis {
 
-inline constexpr int kLevels = 4;            // pyramid levels synthesized (the exemplar's)
-inline constexpr int kPasses = 2;            // correction passes per level
-inline constexpr int kSubPasses = 4;         // 2 x 2
-inline constexpr int kRepetitionRadius = 3;  // of the reuse penalty's window, at each level
-inline constexpr int kVoteRadius = 2;        // the widest vote (its patches' radius)
+inline constexpr int kLevels = 4;             // pyramid levels synthesized (the exemplar's)
+inline constexpr int kPasses = 2;             // correction passes per level
+inline constexpr int kSubPasses = 4;          // 2 x 2
+inline constexpr int kRepetitionRadius = 3;   // of the reuse penalty's window, at each level
+inline constexpr int kVoteRadius = 2;         // the widest vote (its patches' radius)
+inline constexpr int kSpreadBlockShift = 4;   // D_spread's blocks: 16 x 16 pixels of a level
+inline constexpr int kSpreadRegionShift = 3;  // D_spread's exemplar regions: 8 x 8 pixels
 
 struct SynthesisParams {
   double w_label = 2.0;
   double w_altitude = 1.0;
   double w_distance = 0.0;
   double w_repetition = 0.3;
+  double w_usage = 0.05;
+  double w_spread = 0.15;
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;

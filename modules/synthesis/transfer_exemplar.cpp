@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "exemplar_usage.h"
 #include "painting.h"
 #include "synthesis.h"
 
@@ -67,6 +68,8 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   out->scale = scale;
   out->pyramid =
       analyse_exemplar(shrink_exemplar(e, out->scale), kLevels, params.at("k").get<int>());
+  // Measured with the default weights: the same exemplar serves every step's weights.
+  measure_usage(out->pyramid, SynthesisParams{});
   return out;
 }
 

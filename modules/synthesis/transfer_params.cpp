@@ -67,6 +67,8 @@ nlohmann::json synthesis_params_schema() {
   return {{"w_label", weight(2.0)},
           {"w_altitude", weight(1.0)},
           {"w_repetition", weight(0.3)},
+          {"w_usage", weight(0.05)},
+          {"w_spread", weight(0.15)},
           {"coherence", weight(0.5)},
           {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
           {"vote_radius",
@@ -79,6 +81,8 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.w_label = params.at("w_label").get<double>();
   sp.w_altitude = params.at("w_altitude").get<double>();
   sp.w_repetition = params.at("w_repetition").get<double>();
+  sp.w_usage = params.at("w_usage").get<double>();
+  sp.w_spread = params.at("w_spread").get<double>();
   sp.coherence = params.at("coherence").get<double>();
   sp.jitter = params.at("jitter").get<int>();
   sp.vote_radius = params.at("vote_radius").get<int>();

@@ -27,12 +27,13 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// Gates at the measures of the transfer with the finest level's vote of radius 1 (label
-// consistency 1, distinct sources 0.093, most used source 0.50 %, worst label histogram 0.337,
-// coherence 15,682, altitude mismatch 0.161; without the vote 0.089, 0.47 %, 0.301, 16,639 and
-// 0.163), each with a small margin.
-constexpr double kLabelGate = 0.995, kDistinctGate = 0.085, kMaxShareGate = 0.0055;
-constexpr double kHistogramGate = 0.36, kCoherenceGate = 16500, kAltitudeGate = 0.18;
+// Gates at the measures of the transfer with the exemplar's measured over-use and the blocks'
+// preferences (synthesis.h: D_usage, D_spread; label consistency 1, distinct sources 0.097, most
+// used source 0.34 %, worst label histogram 0.328, coherence 16,237, altitude mismatch 0.179;
+// before them, with the vote of radius 1: 0.093, 0.50 %, 0.337, 15,682 and 0.161; without the
+// vote 0.089, 0.47 %, 0.301, 16,639 and 0.163), each with a small margin.
+constexpr double kLabelGate = 0.995, kDistinctGate = 0.09, kMaxShareGate = 0.004;
+constexpr double kHistogramGate = 0.35, kCoherenceGate = 17000, kAltitudeGate = 0.19;
 
 // The exemplar and guides, the same for the transfer and its assessment.
 json transfer_params() {

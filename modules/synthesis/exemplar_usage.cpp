@@ -1,0 +1,60 @@
+#include "exemplar_usage.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace maquette::synthesis {
+
+void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
+  ExemplarLevel& finest = pyramid.levels[0];
+  const int w = finest.width, h = finest.height, halo = synthesis_halo();
+  for (ExemplarLevel& level : pyramid.levels) level.usage.clear();
+  TargetGuides own;
+  own.rect = {-halo, -halo, w + 2 * halo, h + 2 * halo};
+  own.labels.assign(size_t(own.rect.width) * size_t(own.rect.height), kUnknownLabel);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!finest.excluded[size_t(finest.index(x, y))])
+        own.labels[size_t(y + halo) * size_t(own.rect.width) + size_t(x + halo)] =
+            finest.labels[size_t(finest.index(x, y))];
+  SynthesisParams unpenalized = params;
+  unpenalized.w_usage = 0;
+  const std::vector<int32_t> source = synthesize(pyramid, own, unpenalized, {0, 0, w, h});
+
+  std::vector<double> count(source.size(), 0);
+  for (size_t i = 0; i < source.size(); ++i)
+    if (!finest.excluded[i]) count[size_t(source[i])] += 1;
+  finest.usage.assign(count.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double sum = 0;
+      int n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h ||
+              finest.excluded[size_t(finest.index(nx, ny))])
+            continue;
+          sum += count[size_t(finest.index(nx, ny))];
+          ++n;
+        }
+      finest.usage[size_t(finest.index(x, y))] = n > 0 ? float(std::max(0.0, sum / n - 1)) : 0.0f;
+    }
+  for (size_t l = 1; l < pyramid.levels.size(); ++l) {
+    const ExemplarLevel& fine = pyramid.levels[l - 1];
+    ExemplarLevel& coarse = pyramid.levels[l];
+    coarse.usage.assign(size_t(coarse.width) * size_t(coarse.height), 0);
+    for (int y = 0; y < coarse.height; ++y)
+      for (int x = 0; x < coarse.width; ++x) {
+        double sum = 0;
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx)
+            sum += fine.usage[size_t(fine.index(std::min(2 * x + dx, fine.width - 1),
+                                                std::min(2 * y + dy, fine.height - 1)))];
+        coarse.usage[size_t(coarse.index(x, y))] = float(sum / 4);
+      }
+  }
+}
+
+}  // namespace maquette::synthesis

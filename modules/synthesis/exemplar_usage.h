@@ -1,0 +1,23 @@
+// How much the synthesis over-uses each pixel of an exemplar, measured once per exemplar: Kaspar
+// et al. 2015's occurrence map (a penalty on each source by how often it is already used), made a
+// property of the exemplar so that the synthesis stays a function of global pixel coordinates
+// (a count over the output would make each pixel depend on every other, and on the window).
+//
+// The exemplar's own label map is synthesized with `params` (its excluded pixels' labels
+// unknown; the usage penalty off, whatever params.w_usage): a synthesis without bias would copy
+// each allowed pixel about once. Each allowed pixel of the finest level counts the output pixels
+// of a known label copied from it; its usage is the mean count over the allowed pixels of its
+// 3 x 3 neighbourhood, minus 1, at least 0 (0: used no more than its share). A coarser level's
+// pixel takes the mean of its 2 x 2 children (clamped at the border). Deterministic for any
+// threads (synthesize's contract).
+#pragma once
+
+#include "exemplar_pyramid.h"
+#include "synthesis.h"
+
+namespace maquette::synthesis {
+
+// Sets pyramid.levels[l].usage for every level. Precondition: the pyramid has kLevels levels.
+void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params);
+
+}  // namespace maquette::synthesis
