@@ -9,11 +9,8 @@
 #   bash tests/bridge/bridge_drape_picture.sh BUILD_DIR SHARED_DATA_DIR OUT.png X0 Y0 SIDE
 #
 # X0 Y0 SIDE: the window shown, in texels of the exported level-10 tiles' mosaic (the region's cells).
-set -euo pipefail
-build=$(cd "$1" && pwd) data=$(cd "$2" && pwd) out=$(realpath "$3")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-maquette="$build/bin/maquette"
+# shellcheck source=tests/bridge/picture.sh
+source "$(dirname "$0")/picture.sh"
 
 # The photo: the deck's outline (edges 2 km long, ~130 m apart) in magenta, in the image's grid.
 python3 - "$work" <<'PY'
@@ -89,14 +86,7 @@ for jpg, col, row in tiles:
                     str(-y - 256), jpg, jpg[:-4] + ".tif"], check=True)
 PY
 # Around the deck, each panel 3x, the photo's beside the fill's with a white gap.
-x0=$4 y0=$5 side=$6
 for layer in landsat filled; do
   gdalbuildvrt -q "$work/$layer.vrt" "$work"/${layer}_*.tif
 done
-zoom=$((3 * side)) gap=12
-gdal_translate -q -srcwin "$x0" "$y0" "$side" "$side" -outsize "$zoom" "$zoom" -r nearest \
-  -a_ullr 0 0 "$zoom" "-$zoom" "$work/landsat.vrt" "$work/left.tif"
-gdal_translate -q -srcwin "$x0" "$y0" "$side" "$side" -outsize "$zoom" "$zoom" -r nearest \
-  -a_ullr $((zoom + gap)) 0 $((2 * zoom + gap)) "-$zoom" "$work/filled.vrt" "$work/right.tif"
-gdalbuildvrt -q -vrtnodata 255 "$work/both.vrt" "$work/left.tif" "$work/right.tif"
-gdal_translate -q -of PNG -a_nodata none "$work/both.vrt" "$out"
+side_by_side "$out" "$4" "$5" "$6" "$6" 3 12 "$work/landsat.vrt" "$work/filled.vrt"

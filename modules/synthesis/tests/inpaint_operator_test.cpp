@@ -39,7 +39,8 @@ using nlohmann::json;
 
 const std::string kLandsat = kShared + "/zion/landsat_rgb_b4b3b2_8bit.tif";
 
-// A 6 km deck, 140 m wide, south-west to north-east across the region.
+// A 6.3 km deck, 0.0014 degrees of latitude (~110 m) wide, south-west to north-east across the
+// region.
 constexpr double kWest = -113.03, kEast = -112.98, kSouth = 37.255, kNorth = 37.295;
 constexpr double kHalfWidth = 0.0007;  // degrees of latitude: ~78 m
 
