@@ -8,8 +8,9 @@
 // skirt, a wall hanging from its halo's ring deeper than the tile's relief plus a sample, closes
 // the cracks where a neighbour is drawn at another level. Squares with a missing sample (nodata,
 // no neighbour tile) are left out, and the skirt along them. Heights go to the ellipsoid through
-// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are built in
-// parallel and joined in their cell order: the mesh is the same whatever the threads.
+// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are read and their
+// shares of the mesh counted in parallel, then each written in place (no copies joined) in their
+// cell order: the mesh is the same whatever the threads.
 #pragma once
 
 #include <optional>
