@@ -102,7 +102,7 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
 // Appends to `texels` those of `found` (3 per pixel of a strip of rows `width` wide starting at
 // picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: a band a
 // task (the serial share of a picture on two cores otherwise).
-void append_stretch_texels(const PixelArray<float>& found, int width, int first_row, int step,
+void append_stretch_texels(const FreshArray<float>& found, int width, int first_row, int step,
                            StretchTexels& texels) {
   const int rows = int(found.size() / 3 / size_t(width));
   tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
@@ -123,7 +123,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
                            StretchTexels& texels) {
   if (!look.texture || !look.stretch) return;
   auto samplers = make_samplers(store, grid, look);
-  PixelArray<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
+  FreshArray<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
     Samplers& s = samplers.local();
@@ -156,7 +156,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.height = h;
   p.first_row = f.first_row;
   // Every pixel of each array is written once below (fresh pages are not filled first).
-  PixelArray<float> texels(3 * n);  // the surface's texel, NaN for none
+  FreshArray<float> texels(3 * n);  // the surface's texel, NaN for none
   for (auto* a : {&p.altitude, &p.shading}) a->resize(n);
   for (auto* a : {&p.distance, &p.lon, &p.lat}) a->resize(n);
   p.land_cover.resize(look.land_cover ? n : 0);

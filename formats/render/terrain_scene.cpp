@@ -1,7 +1,6 @@
 #include "render/terrain_scene.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -293,12 +292,13 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   TerrainScene scene;
   scene.cells = cells;
   const size_t vertices = first_vertex.back();
-  // Sized side by side: touching their fresh pages is much of their cost.
-  tbb::parallel_invoke(
-      [&] { scene.mesh.positions.resize(3 * vertices); },
-      [&] { scene.mesh.indices.resize(first_index.back()); },
-      [&] { scene.lonlat.resize(2 * vertices); }, [&] { scene.plane.resize(2 * vertices); },
-      [&] { scene.altitude.resize(vertices); }, [&] { scene.normals.resize(3 * vertices); });
+  // Sized, not filled: each tile writes every element of its share.
+  scene.mesh.positions.resize(3 * vertices);
+  scene.mesh.indices.resize(first_index.back());
+  scene.lonlat.resize(2 * vertices);
+  scene.plane.resize(2 * vertices);
+  scene.altitude.resize(vertices);
+  scene.normals.resize(3 * vertices);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
     write_tile(grid, dem, cells[i], sources[i], camera, heights, exaggeration, first_vertex[i],
                first_index[i], scene);

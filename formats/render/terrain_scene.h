@@ -28,15 +28,15 @@ namespace maquette {
 struct TerrainScene {
   std::vector<CellId> cells;  // the tiles drawn (scene_cells)
   RenderMesh mesh;
-  std::vector<double> lonlat;  // degrees, 2 per vertex
+  FreshArray<double> lonlat;  // degrees, 2 per vertex
   // The grid's plane (render/sample_places.h SamplePlace::plane), 2 per vertex: a layer is read
   // at a pixel from these interpolated, without projecting its lon/lat; NaN off the tile's face.
-  std::vector<double> plane;
-  std::vector<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
+  FreshArray<double> plane;
+  FreshArray<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
   // Unit normals in the camera's ENU frame (central differences of the exaggerated surface, at a
   // tile's border too, from a second ring of halo: a sample drawn by two tiles has one normal;
   // one-sided only beside nodata), 3 per vertex.
-  std::vector<float> normals;
+  FreshArray<float> normals;
 };
 
 // The cells whose tiles draw the DEM: from the coarsest level holding overviews down, a cell is
