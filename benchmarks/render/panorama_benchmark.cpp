@@ -4,7 +4,9 @@
 // hills up to ~700 m on EGM96 heights, so PROJ's geoid is read per vertex as for SRTM) and an
 // RGB texture of the same cells, with their overviews, in a store file made once; seen from 3 km
 // above the DEM's edge towards its centre, into 2000 x 2000 (4 MP) and 8000 x 5000 pictures, on 1
-// and 2 threads.
+// and 2 threads. BM_PanoramaShadeNoDataCollar: the colour and guides with a texture whose tiles
+// hold no data in a collar 320 texels wide round the DEM (render/edge_texels.h's worst case: the
+// terrain past the data, inside tiles, far beyond the reach).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
@@ -19,6 +21,7 @@ namespace maquette {
 namespace {
 
 constexpr int kLevel = 10, kSize = 256, kTiles = 4, kFace = 1, kCol0 = 300, kRow0 = 500;
+constexpr int kCollar = 320;  // texels of no data round the DEM in the texture "rgb_collar"
 
 double height(int64_t col, int64_t row) {  // global sample column and row
   const double x = double(col), y = double(row);
@@ -42,26 +45,35 @@ struct PanoramaStore {
     rgb.channels = 3;
     rgb.units = "";
     store->create_layer(rgb);
+    LayerInfo collar = rgb;
+    collar.name = "rgb_collar";
+    collar.nodata = 0;
+    store->create_layer(collar);
     Store::Batch batch(*store);
     for (int r = 0; r < kTiles; ++r)
       for (int c = 0; c < kTiles; ++c) {
         const CellId cell = CellId::FromFaceColRow(kFace, kLevel, kCol0 + c, kRow0 + r);
         Tile<float> h(kSize, 1);
-        Tile<uint8_t> colour(kSize, 3);
+        Tile<uint8_t> colour(kSize, 3), collared(kSize, 3);
         for (int y = 0; y < kSize; ++y)
           for (int x = 0; x < kSize; ++x) {
             const double z = height(int64_t(kCol0 + c) * kSize + x, int64_t(kRow0 + r) * kSize + y);
             h.at(x, y) = float(z);
-            colour.at(x, y, 0) = uint8_t(90 + z / 10);
+            colour.at(x, y, 0) = uint8_t(90 + z / 10);  // never 0, the collar's nodata
             colour.at(x, y, 1) = uint8_t(140 - z / 12);
             colour.at(x, y, 2) = uint8_t(60 + (x ^ y) % 32);
+            const int gx = c * kSize + x, gy = r * kSize + y, end = kTiles * kSize - kCollar;
+            const bool inside = gx >= kCollar && gx < end && gy >= kCollar && gy < end;
+            for (int k = 0; k < 3; ++k) collared.at(x, y, k) = inside ? colour.at(x, y, k) : 0;
           }
         batch.put_tile("dem", cell, from_tile(h, DType::F32));
         batch.put_tile("rgb", cell, from_tile(colour, DType::U8));
+        batch.put_tile("rgb_collar", cell, from_tile(collared, DType::U8));
       }
     batch.commit();
     store->update_overviews("dem");
     store->update_overviews("rgb");
+    store->update_overviews("rgb_collar");
   }
   ~PanoramaStore() {
     for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
@@ -113,9 +125,10 @@ BENCHMARK(BM_Panorama)
 struct PanoramaSteps {
   std::unique_ptr<Store> store = Store::open(panorama_store().path, Store::Mode::ReadOnly);
   PanoramaJob j;
-  LayerInfo dem = *store->layer("dem"), texture = *store->layer("rgb");
+  LayerInfo dem = *store->layer("dem"), texture;
   PinholeCamera camera;
-  PanoramaSteps(int width, int height) : j(job(width, height)), camera(aimed(j)) {}
+  PanoramaSteps(int width, int height, const char* texture_layer = "rgb")
+      : j(job(width, height)), texture(*store->layer(texture_layer)), camera(aimed(j)) {}
   static CameraSpec aimed(const PanoramaJob& j) {
     CameraSpec spec = j.camera;
     const auto [heading, pitch] = aim(spec.eye, *j.look_at);
@@ -148,9 +161,10 @@ void BM_PanoramaRasterize(benchmark::State& state) {
 }
 BENCHMARK(BM_PanoramaRasterize)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_PanoramaShade(benchmark::State& state) {
+// The colour and guides of the 4 MP picture's fragments, `texture` draped.
+void shade(benchmark::State& state, const char* texture) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
-  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)));
+  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)), texture);
   const TerrainScene scene = steps.scene();
   const Fragments f = rasterize(scene.mesh, steps.camera);
   const PanoramaLook look = steps.look();
@@ -158,7 +172,15 @@ void BM_PanoramaShade(benchmark::State& state) {
     benchmark::DoNotOptimize(
         shade_panorama(*steps.store, default_grid(), scene, f, steps.camera, look));
 }
+
+void BM_PanoramaShade(benchmark::State& state) { shade(state, "rgb"); }
 BENCHMARK(BM_PanoramaShade)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PanoramaShadeNoDataCollar(benchmark::State& state) { shade(state, "rgb_collar"); }
+BENCHMARK(BM_PanoramaShadeNoDataCollar)
+    ->Args({2000, 2000})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_WritePanorama(benchmark::State& state) {
   const auto store = Store::open(panorama_store().path, Store::Mode::ReadOnly);

@@ -1,14 +1,31 @@
 #include "render/edge_texels.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <tuple>
 
 namespace maquette {
+namespace {
+
+int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a - 1) / b) - 1; }
+
+// The search order of offset (dx, dy) among those of its Chebyshev ring r (edge_texels.h): the
+// ring's rows dy = -r and r, x ascending, each column's two in that order; then its columns
+// dx = -r and r, y ascending (corners excluded), likewise.
+int64_t ring_order(int64_t dx, int64_t dy, int64_t r) {
+  if (std::abs(dy) == r) return 2 * (dx + r) + (dy > 0);
+  return 2 * (2 * r + 1) + 2 * (dy + r - 1) + (dx > 0);
+}
+
+}  // namespace
 
 EdgeTexels::EdgeTexels(const Store& store, const Grid& grid, const LayerInfo& texture, int reach)
     : sampler_(store, grid, texture, texture.level, false),
       channels_(texture.channels),
       reach_(reach),
-      tile_size_(texture.tile_size) {
+      tile_size_(texture.tile_size),
+      block_(std::max(64, 2 * reach)) {
   faces_.reserve(size_t(grid.num_faces()));
   for (int face = 0; face < grid.num_faces(); ++face)
     faces_.push_back(grid.plane_square(CellId::FromFace(face)));
@@ -27,47 +44,92 @@ bool EdgeTexels::read(Key k, Texel& out) {
   return true;
 }
 
-bool EdgeTexels::data(Key k, Texel& out) {
-  return read(k, out) && !std::isnan(out[0]) && !std::isnan(out[1]) && !std::isnan(out[2]);
+bool EdgeTexels::tiles_near(Key b) {
+  // The cells are read at points tile_size texels apart, so every cell holding a texel within the
+  // reach holds one of them (one more each side: the cells' lattice is the texels' shifted at
+  // level 0).
+  const int64_t n = block_, t = tile_size_, half = t / 2;
+  const int64_t x0 = floor_div(b.x * n - reach_, t) - 1,
+                x1 = floor_div(b.x * n + n - 1 + reach_, t) + 1;
+  const int64_t y0 = floor_div(b.y * n - reach_, t) - 1,
+                y1 = floor_div(b.y * n + n - 1 + reach_, t) + 1;
+  for (int64_t y = y0; y <= y1; ++y)
+    for (int64_t x = x0; x <= x1; ++x) {
+      auto it = has_tile_.find({x, y});
+      if (it == has_tile_.end()) {
+        Texel ignored;
+        it = has_tile_.emplace(Key{x, y}, read({x * t + half, y * t + half}, ignored)).first;
+      }
+      if (it->second) return true;
+    }
+  return false;
 }
 
-bool EdgeTexels::tiles_near(Key k) {
-  auto cell_of = [this](int64_t t) {
-    return t >= 0 ? t / tile_size_ : -((-t - 1) / tile_size_) - 1;  // floor division
-  };
-  const Key cell{cell_of(k.x), cell_of(k.y)};
-  auto [it, fresh] = tiles_near_.try_emplace(cell, false);
-  if (!fresh) return it->second;
-  // The cells are read at points n = tile_size texels apart, so every cell holding a texel within
-  // the reach holds one of them (one more: the cells' lattice is the texels' shifted at level 0).
-  const int64_t m = (reach_ + tile_size_ - 1) / tile_size_ + 1, half = tile_size_ / 2;
-  Texel ignored;
-  for (int64_t dy = -m; dy <= m && !it->second; ++dy)
-    for (int64_t dx = -m; dx <= m && !it->second; ++dx)
-      it->second =
-          read({(cell.x + dx) * tile_size_ + half, (cell.y + dy) * tile_size_ + half}, ignored);
-  return it->second;
+EdgeTexels::Block EdgeTexels::resolve_block(Key b) {
+  Block out;
+  if (!tiles_near(b)) return out;
+  // The window: the block and its reach around it, w texels a side from texel (x0, y0).
+  const int64_t n = block_, reach = reach_, w = n + 2 * reach, x0 = b.x * n - reach,
+                y0 = b.y * n - reach;
+  std::vector<Texel> window(size_t(w * w));
+  std::vector<uint8_t> has(size_t(w * w));
+  for (int64_t y = 0; y < w; ++y)
+    for (int64_t x = 0; x < w; ++x) {
+      Texel& t = window[size_t(y * w + x)];
+      has[size_t(y * w + x)] =
+          read({x0 + x, y0 + y}, t) && !std::isnan(t[0]) && !std::isnan(t[1]) && !std::isnan(t[2]);
+    }
+  // below / above [x * n + j]: rows from the block's row j (the window's reach + j) down / up to
+  // the nearest texel with data in the window's column x; reach + 1 where none within the reach.
+  const int64_t none = reach + 1;
+  std::vector<int64_t> below(size_t(w * n), none), above(size_t(w * n), none);
+  for (int64_t x = 0; x < w; ++x) {
+    for (int64_t y = 0, last = -2 * w; y < reach + n; ++y) {
+      if (has[size_t(y * w + x)]) last = y;
+      if (y >= reach) below[size_t(x * n + y - reach)] = std::min(none, y - last);
+    }
+    for (int64_t y = w - 1, last = 3 * w; y >= reach; --y) {
+      if (has[size_t(y * w + x)]) last = y;
+      if (y < reach + n) above[size_t(x * n + y - reach)] = std::min(none, last - y);
+    }
+  }
+  // The nearest texel with data of a texel is, in its column, the column's nearest to its row:
+  // among those 2 (2 reach + 1), the least squared distance, ties by the rings' order.
+  out.resize(size_t(n * n));
+  for (int64_t j = 0; j < n; ++j)
+    for (int64_t i = 0; i < n; ++i) {
+      const size_t at = size_t((reach + j) * w + reach + i);
+      Texel& value = out[size_t(j * n + i)];
+      value = has[at] ? window[at] : Texel{NAN, NAN, NAN};
+      if (has[at]) continue;
+      int64_t best = reach * reach + 1, best_dx = 0, best_dy = 0;  // beyond the reach: none
+      for (int64_t dx = -reach; dx <= reach; ++dx) {
+        const size_t column = size_t((reach + i + dx) * n + j);
+        for (const int64_t dy : {-below[column], above[column]}) {
+          const int64_t d2 = dx * dx + dy * dy;
+          if (d2 > best || d2 > reach * reach) continue;
+          if (d2 == best) {
+            const int64_t r = std::max(std::abs(dx), std::abs(dy));
+            const int64_t best_r = std::max(std::abs(best_dx), std::abs(best_dy));
+            if (std::tuple(r, ring_order(dx, dy, r)) >=
+                std::tuple(best_r, ring_order(best_dx, best_dy, best_r)))
+              continue;
+          }
+          best = d2, best_dx = dx, best_dy = dy;
+          value = window[size_t((reach + j + dy) * w + reach + i + dx)];
+        }
+      }
+    }
+  return out;
 }
 
 const EdgeTexels::Texel& EdgeTexels::resolved(Key k) {
-  auto [it, fresh] = resolved_.try_emplace(k, Texel{NAN, NAN, NAN});
-  Texel& value = it->second;
-  if (!fresh || data(k, value)) return value;
-  value = {NAN, NAN, NAN};
-  if (!tiles_near(k)) return value;
-  // Rings of growing Chebyshev radius r; a ring's texels are at least r from k, so the search
-  // stops once r * r reaches the nearest squared distance found.
-  int64_t best = int64_t(reach_) * reach_ + 1;  // beyond the reach: none
-  Texel found;
-  auto consider = [&](int64_t dx, int64_t dy) {
-    const int64_t d2 = dx * dx + dy * dy;
-    if (d2 < best && data({k.x + dx, k.y + dy}, found)) best = d2, value = found;
-  };
-  for (int64_t r = 1; r <= reach_ && r * r < best; ++r) {
-    for (int64_t d = -r; d <= r; ++d) consider(d, -r), consider(d, r);
-    for (int64_t d = -r + 1; d < r; ++d) consider(-r, d), consider(r, d);
-  }
-  return value;
+  static const Texel kNone{NAN, NAN, NAN};
+  const Key b{floor_div(k.x, block_), floor_div(k.y, block_)};
+  auto it = blocks_.find(b);
+  if (it == blocks_.end()) it = blocks_.emplace(b, resolve_block(b)).first;
+  if (it->second.empty()) return kNone;
+  return it->second[size_t((k.y - b.y * block_) * block_ + k.x - b.x * block_)];
 }
 
 bool EdgeTexels::sample(PlanePoint q, float* out) {

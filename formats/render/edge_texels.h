@@ -3,14 +3,19 @@
 // texel with data, clamp-to-edge within a reach. On the texel lattice of the imagery's level (in
 // the grid's plane: every cell's square is `tile_size` texels a side), each texel without data
 // takes the value of the nearest texel with data whose centre is at most `reach` texels from its
-// own (Euclidean, in texels; ties: the first in a fixed order of rings), none beyond; a point is
-// read bilinearly from the four texel centres around it, the weights renormalized over those that
-// have a value. Texels with data keep their own value. Texel centres off the six squares of the
-// plane are taken as without data. Cost: a texel without data looks among the ~3.14 reach^2
-// texels within the reach, unless no cell within the reach has a tile (then at once): a large
-// area of no-data texels inside tiles would be slow. Values depend on the point alone (not on the
-// calls before): the same bits for any thread count. One object per thread (it caches tiles and
-// the texels it has resolved).
+// own (Euclidean, in texels; ties: the first in a fixed order of rings: the Chebyshev radius r,
+// then in ring r its rows dy = -r and r, x ascending, each column's two in that order, then its
+// columns dx = -r and r, y ascending, likewise), none beyond; a point is read bilinearly from the
+// four texel centres around it, the weights renormalized over those that have a value. Texels with
+// data keep their own value. Texel centres off the six squares of the plane are taken as without
+// data. Cost: the lattice is resolved a block of B = max(64, 2 reach) texels a side at a time, on
+// the first point that needs one of its texels: nothing when no cell within the reach of the block
+// has a tile, else the block and its reach read once ((B + 2 reach)^2 <= 4 B^2 texels), each
+// column's nearest texel with data above and below each row found by one scan, and each texel
+// without data takes the least of the 2 (2 reach + 1) candidates those give (the nearest texel
+// with data in each column within the reach is one of them): O(reach) a texel whatever the
+// no-data areas inside tiles. Values depend on the point alone (not on the calls before): the
+// same bits for any thread count. One object per thread (it caches tiles and resolved blocks).
 #pragma once
 
 #include <array>
@@ -35,7 +40,7 @@ class EdgeTexels {
 
  private:
   using Texel = std::array<float, 3>;  // NaN: no data within the reach
-  struct Key {                         // a texel (or a cell) of the lattice: x right, y up
+  struct Key {                         // a texel, a block or a cell of the lattice: x right, y up
     int64_t x, y;
     bool operator==(const Key&) const = default;
   };
@@ -44,19 +49,22 @@ class EdgeTexels {
       return std::hash<int64_t>()(k.x) ^ (std::hash<int64_t>()(k.y) * 0x9e3779b97f4a7c15ull);
     }
   };
+  // A block's texels, row by row: each its own value or its nearest's; empty when no cell within
+  // the reach of the block has a tile (all without a value).
+  using Block = std::vector<Texel>;
   const Texel& resolved(Key k);  // the lattice texel k's own value or its nearest's
+  Block resolve_block(Key b);
   // The imagery's texel k (NaN where no data); false where its cell has no tile or k is off the
   // plane.
   bool read(Key k, Texel& out);
-  bool data(Key k, Texel& out);  // read, and with data
-  bool tiles_near(Key k);        // whether a cell within the reach of texel k has a tile
+  bool tiles_near(Key b);  // whether a cell within the reach of block b's texels has a tile
 
   LayerSampler sampler_;  // nearest: a texel's own value at its centre
-  int channels_, reach_, tile_size_;
+  int channels_, reach_, tile_size_, block_;
   double texel_;  // metres of the plane per texel
   std::vector<PlaneSquare> faces_;
-  std::unordered_map<Key, Texel, KeyHash> resolved_;
-  std::unordered_map<Key, bool, KeyHash> tiles_near_;  // by cell (texels / tile_size)
+  std::unordered_map<Key, Block, KeyHash> blocks_;
+  std::unordered_map<Key, bool, KeyHash> has_tile_;  // by cell (texels / tile_size)
 };
 
 }  // namespace maquette

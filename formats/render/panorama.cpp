@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <optional>
 
@@ -103,7 +102,7 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
 // Appends to `texels` those of `found` (3 per pixel of a strip of rows `width` wide starting at
 // picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: a band a
 // task (the serial share of a picture on two cores otherwise).
-void append_stretch_texels(const std::vector<float>& found, int width, int first_row, int step,
+void append_stretch_texels(const FreshArray<float>& found, int width, int first_row, int step,
                            StretchTexels& texels) {
   const int rows = int(found.size() / 3 / size_t(width));
   tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
@@ -124,7 +123,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
                            StretchTexels& texels) {
   if (!look.texture || !look.stretch) return;
   auto samplers = make_samplers(store, grid, look);
-  std::vector<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
+  FreshArray<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
     Samplers& s = samplers.local();
@@ -156,20 +155,14 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.width = w;
   p.height = h;
   p.first_row = f.first_row;
-  // The picture's arrays filled side by side: touching their fresh pages is much of their cost.
-  std::vector<float> texels;
-  const std::vector<std::function<void()>> fills = {
-      [&] { p.rgb.assign(3 * n, 0); },
-      [&] { p.altitude.assign(n, NAN); },
-      [&] { p.distance.assign(n, NAN); },
-      [&] { p.lon.assign(n, NAN); },
-      [&] { p.lat.assign(n, NAN); },
-      [&] { p.shading.assign(n, NAN); },
-      [&] { p.land_cover.assign(look.land_cover ? n : 0, NAN); },
-      [&] { p.cast_shadow.assign(look.shadow ? n : 0, NAN); },
-      [&] { p.silhouette.assign(n, 0); },
-      [&] { texels.assign(3 * n, NAN); }};  // the surface's texel, NaN for none
-  tbb::parallel_for(size_t(0), fills.size(), [&](size_t k) { fills[k](); });
+  // Every pixel of each array is written once below (fresh pages are not filled first).
+  FreshArray<float> texels(3 * n);  // the surface's texel, NaN for none
+  for (auto* a : {&p.altitude, &p.shading}) a->resize(n);
+  for (auto* a : {&p.distance, &p.lon, &p.lat}) a->resize(n);
+  p.land_cover.resize(look.land_cover ? n : 0);
+  p.cast_shadow.resize(look.shadow ? n : 0);
+  p.rgb.resize(3 * n);
+  p.silhouette.resize(n);
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto samplers = make_samplers(store, grid, look);
@@ -180,7 +173,15 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     s.start_row();
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
-      if (f.triangle[i] == Fragments::kSky) continue;
+      float* texel = &texels[3 * i];
+      texel[0] = texel[1] = texel[2] = NAN;
+      if (f.triangle[i] == Fragments::kSky) {  // NaN guides
+        p.distance[i] = p.lon[i] = p.lat[i] = NAN;
+        p.altitude[i] = p.shading[i] = NAN;
+        if (look.land_cover) p.land_cover[i] = NAN;
+        if (look.shadow) p.cast_shadow[i] = NAN;
+        continue;
+      }
       const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
       const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
       auto interpolate = [&](const auto& values, int stride, int k) {
@@ -194,10 +195,11 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
       p.altitude[i] = float(interpolate(scene.altitude, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
-      if (s.texture) sample_texel(s, grid, look, at, &texels[3 * i]);
+      if (s.texture) sample_texel(s, grid, look, at, texel);
       if (s.land_cover) {
         float label = NAN;
-        if (sample_at(*s.land_cover, grid, *look.land_cover, at, &label)) p.land_cover[i] = label;
+        p.land_cover[i] =
+            sample_at(*s.land_cover, grid, *look.land_cover, at, &label) ? label : NAN;
       }
       const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
                          interpolate(scene.normals, 3, 2)};
@@ -256,6 +258,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   tbb::parallel_for(0, h, [&](int row) {
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
+      p.silhouette[i] = 0;
       if (f.triangle[i] == Fragments::kSky) continue;
       const double limit = p.distance[i] * look.silhouette_jump;
       auto beyond = [&](int c, int r) {

@@ -49,18 +49,18 @@ struct PanoramaLook {
 
 struct Panorama {
   int width = 0, height = 0;
-  int first_row = 0;         // of the picture: the panorama may be a strip of it
-  std::vector<uint8_t> rgb;  // 3 per pixel, row-major
+  int first_row = 0;        // of the picture: the panorama may be a strip of it
+  FreshArray<uint8_t> rgb;  // 3 per pixel, row-major
   // Per pixel, NaN on the sky: metres from the eye, degrees (float64: the haze and silhouettes
   // are computed from the distance, lon/lat to a millimetre); metres of the DEM's datum and
   // class (float32: a tenth of a millimetre at 2 km, the DEM's own float32; fewer fresh pages).
-  std::vector<double> distance, lon, lat;
-  std::vector<float> altitude, land_cover;
-  std::vector<float> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
+  FreshArray<double> distance, lon, lat;
+  FreshArray<float> altitude, land_cover;
+  FreshArray<float> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
   // The factor the surface's colour was shaded by: hillshade times sunlit share, 0.3 to 1 (the
   // transfer in the picture blends its colours with it).
-  std::vector<float> shading;
-  std::vector<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
+  FreshArray<float> shading;
+  FreshArray<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 
 using BandStretch = std::array<StretchRange, 3>;          // per band of the texture

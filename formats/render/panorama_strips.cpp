@@ -43,7 +43,7 @@ struct GuideBand {
 };
 
 template <typename T>
-GuideBand guide_band(const char* name, const std::vector<T>* values) {
+GuideBand guide_band(const char* name, const FreshArray<T>* values) {
   return {name, values ? values->data() : nullptr,
           std::is_same_v<T, float> ? GDT_Float32 : GDT_Float64};
 }

@@ -15,7 +15,7 @@ void check_bend(const ProgressiveBend& bend) {
     throw Error("--bend-start " + std::to_string(bend.start) + " must be finite and >= 0");
 }
 
-void bend_positions(std::vector<double>& positions, const ProgressiveBend& bend) {
+void bend_positions(std::span<double> positions, const ProgressiveBend& bend) {
   if (!bend.bends()) return;
   tbb::parallel_for(size_t(0), positions.size() / 3, [&](size_t v) {
     double* p = &positions[3 * v];

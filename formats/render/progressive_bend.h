@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace maquette {
@@ -33,6 +34,6 @@ void check_bend(const ProgressiveBend& bend);
 // Bends ENU `positions` (3 per vertex) in place as above; nothing changes (bit for bit) when the
 // radius is infinite. Vertices are bent in parallel, each on its own: the same bits whatever the
 // threads. Precondition: check_bend(bend) passes.
-void bend_positions(std::vector<double>& positions, const ProgressiveBend& bend);
+void bend_positions(std::span<double> positions, const ProgressiveBend& bend);
 
 }  // namespace maquette

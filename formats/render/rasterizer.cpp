@@ -1,7 +1,6 @@
 #include "render/rasterizer.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -218,12 +217,19 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
   f.height = bottom - top;
   f.first_row = top;
   const size_t n = size_t(w) * size_t(f.height);
-  // Filled side by side: touching the fresh pages is much of their cost.
-  tbb::parallel_invoke([&] { f.triangle.assign(n, Fragments::kSky); },
-                       [&] { f.depth.assign(n, std::numeric_limits<double>::infinity()); },
-                       [&] { f.b1.assign(n, 0); }, [&] { f.b2.assign(n, 0); });
+  // Each band clears its own rows before drawing them: fresh pages touched once, while in cache.
+  f.triangle.resize(n);
+  f.depth.resize(n);
+  f.b1.resize(n);
+  f.b2.resize(n);
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
+    const size_t first = size_t(row0 - top) * size_t(w), count = size_t(row1 - row0) * size_t(w);
+    std::fill_n(f.triangle.begin() + std::ptrdiff_t(first), count, Fragments::kSky);
+    std::fill_n(f.depth.begin() + std::ptrdiff_t(first), count,
+                std::numeric_limits<double>::infinity());
+    std::fill_n(f.b1.begin() + std::ptrdiff_t(first), count, 0.0f);
+    std::fill_n(f.b2.begin() + std::ptrdiff_t(first), count, 0.0f);
     for (const Chunk& chunk : chunks)
       for (const uint32_t id : chunk.band_triangles[size_t(band)]) {
         if (id >= triangles) {

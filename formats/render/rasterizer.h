@@ -16,13 +16,20 @@
 #include <limits>
 #include <vector>
 
+#include "core/tile.h"
 #include "render/camera.h"
 
 namespace maquette {
 
+// An array resized without being initialised (core/tile.h's DefaultInitAllocator): the step that
+// makes it writes each element once, so its fresh pages are not written twice (the meshes' and
+// the pictures' arrays).
+template <typename T>
+using FreshArray = std::vector<T, DefaultInitAllocator<T>>;
+
 struct RenderMesh {
-  std::vector<double> positions;  // the eye's ENU frame, metres, 3 per vertex
-  std::vector<uint32_t> indices;  // 3 per triangle
+  FreshArray<double> positions;  // the eye's ENU frame, metres, 3 per vertex
+  FreshArray<uint32_t> indices;  // 3 per triangle
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
@@ -32,11 +39,11 @@ struct Fragments {
   static constexpr uint32_t kSky = std::numeric_limits<uint32_t>::max();
   int width = 0, height = 0;
   int first_row = 0;
-  std::vector<uint32_t> triangle;  // index of the triangle seen, kSky for none
-  std::vector<double> depth;       // camera-frame z (metres), +inf for none
+  FreshArray<uint32_t> triangle;  // index of the triangle seen, kSky for none
+  FreshArray<double> depth;       // camera-frame z (metres), +inf for none
   // Perspective-correct barycentric weights of the triangle's 2nd and 3rd vertex at the pixel's
   // centre (the 1st's is 1 - b1 - b2).
-  std::vector<float> b1, b2;
+  FreshArray<float> b1, b2;
 };
 
 // Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn, into

@@ -1,7 +1,6 @@
 #include "render/terrain_scene.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,71 +18,108 @@ namespace {
 
 constexpr uint32_t kNoVertex = std::numeric_limits<uint32_t>::max();
 
-// One tile's share of the mesh, with indices local to its vertices: `cell`'s tile (a
-// full-resolution tile or an overview) with its ring of halo samples.
-TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell,
-                       const PinholeCamera& camera, const EllipsoidalHeights& heights,
-                       double exaggeration) {
+// Two rings of halo: the outer one only for the drawn ring's normals, so that a sample's normal is
+// the same central difference in every tile that draws it (no seam in the shading).
+constexpr int kHalo = 2;
+
+// The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
+std::vector<std::array<int, 2>> halo_ring(int n) {
+  std::vector<std::array<int, 2>> ring;
+  ring.reserve(4 * size_t(n + 1));
+  for (int c = -1; c < n; ++c) ring.push_back({c, -1});
+  for (int r = -1; r < n; ++r) ring.push_back({n, r});
+  for (int c = n; c > -1; --c) ring.push_back({c, n});
+  for (int r = n; r > -1; --r) ring.push_back({-1, r});
+  return ring;
+}
+
+// A tile (a full-resolution tile or an overview) with its two rings of halo, and its share of the
+// mesh: a vertex per drawn sample (-1 .. n) with data and per such sample of the inner ring (the
+// skirt's), two triangles per square of four such samples and per ring edge between two. Every
+// sample within the halo has a place (render/sample_places.h: known within a face width), so
+// the counts follow from the heights alone and the mesh is written in place (write_tile).
+struct TileSource {
+  Tile<float> heights{1, 1};
+  size_t vertices = 0, indices = 0;
+};
+
+TileSource tile_source(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
   const int n = dem.tile_size;
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
   const bool overview = cell.level() < dem.level;
-  // Two rings of halo: the outer one only for the drawn ring's normals, so that a sample's
-  // normal is the same central difference in every tile that draws it (no seam in the shading).
-  const int halo = 2;
-  const Tile<float> tile =
-      assemble_halo(grid, cell, n, halo, [&](CellId c) -> std::optional<Tile<float>> {
-        const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
-        if (!raw) return std::nullopt;
-        return to_tile<float>(*raw, nodata);
-      });
-  const SamplePlaces places(grid, cell, n, halo, camera.frame(), heights);
-  const int side = n + 2 * halo;
-  auto slot = [&](int c, int r) { return size_t(r + halo) * size_t(side) + size_t(c + halo); };
+  TileSource t;
+  t.heights = assemble_halo(grid, cell, n, kHalo, [&](CellId c) -> std::optional<Tile<float>> {
+    const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
+    if (!raw) return std::nullopt;
+    return to_tile<float>(*raw, nodata);
+  });
+  auto has = [&](int c, int r) { return !std::isnan(t.heights.at(c, r)); };
+  for (int r = -1; r <= n; ++r)
+    for (int c = -1; c <= n; ++c) {
+      t.vertices += has(c, r);
+      if (r < n && c < n && has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1))
+        t.indices += 6;
+    }
+  const auto ring = halo_ring(n);
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const auto& a = ring[k];
+    const auto& b = ring[(k + 1) % ring.size()];
+    t.vertices += has(a[0], a[1]);
+    if (has(a[0], a[1]) && has(b[0], b[1])) t.indices += 6;
+  }
+  return t;
+}
+
+// Writes `cell`'s share of the mesh (tile_source) into `scene` from vertex `first_vertex` and index
+// `first_index`: the drawn samples' vertices in row order, then the skirt's in ring order; the
+// squares' triangles in row order, then the skirt's.
+void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileSource& source,
+                const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
+                size_t first_vertex, size_t first_index, TerrainScene& scene) {
+  const int n = dem.tile_size;
+  const Tile<float>& tile = source.heights;
+  const SamplePlaces places(grid, cell, n, kHalo, camera.frame(), heights);
+  const int side = n + 2 * kHalo;
+  auto slot = [&](int c, int r) { return size_t(r + kHalo) * size_t(side) + size_t(c + kHalo); };
   // Each sample's exaggerated position (samples -2 .. n + 1); NaN where there is none.
   std::vector<Vec3d> position(size_t(side) * size_t(side), Vec3d{NAN, NAN, NAN});
-  for (int r = -halo; r < n + halo; ++r)
-    for (int c = -halo; c < n + halo; ++c) {
+  for (int r = -kHalo; r < n + kHalo; ++r)
+    for (int c = -kHalo; c < n + kHalo; ++c) {
       const float z = tile.at(c, r);
       const SamplePlace& place = places.at(c, r);
-      if (std::isnan(z) || !place.known) continue;
+      if (std::isnan(z)) continue;
       // Heights of the datum run along the ellipsoid's normal: exaggerated above the datum.
       const double h = exaggeration * z;
       for (size_t k = 0; k < 3; ++k) position[slot(c, r)][k] = place.base[k] + h * place.up[k];
     }
-  // The drawn samples (-1 .. n, the halo's inner ring included) become vertices.
+  auto& positions = scene.mesh.positions;
+  auto& indices = scene.mesh.indices;
+  size_t next_vertex = first_vertex, next_index = first_index;
+  // The drawn samples (-1 .. n, the halo's inner ring included) become vertices (scene indices).
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
-  TerrainScene part;
-  // At most a vertex per drawn sample and per ring sample (the skirt's), two triangles per square
-  // and per ring edge: reserved, so the arrays are not copied as they grow.
-  const size_t ring_size = 4 * size_t(n + 1);
-  const size_t most_vertices = size_t(n + 2) * size_t(n + 2) + ring_size;
-  part.mesh.positions.reserve(3 * most_vertices);
-  part.mesh.indices.reserve(6 * (size_t(n + 1) * size_t(n + 1) + ring_size));
-  part.lonlat.reserve(2 * most_vertices);
-  part.plane.reserve(2 * most_vertices);
-  part.altitude.reserve(most_vertices);
-  part.normals.reserve(3 * most_vertices);
   float lowest = INFINITY, highest = -INFINITY;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
-      const Vec3d& p = position[slot(c, r)];
-      if (std::isnan(p[0])) continue;
       const float z = tile.at(c, r);
+      if (std::isnan(z)) continue;
       lowest = std::min(lowest, z);
       highest = std::max(highest, z);
-      vertex[slot(c, r)] = uint32_t(part.altitude.size());
-      part.mesh.positions.insert(part.mesh.positions.end(), p.begin(), p.end());
+      const size_t v = next_vertex++;
+      vertex[slot(c, r)] = uint32_t(v);
+      const Vec3d& p = position[slot(c, r)];
+      std::copy(p.begin(), p.end(), positions.begin() + std::ptrdiff_t(3 * v));
       const SamplePlace& place = places.at(c, r);
-      part.lonlat.insert(part.lonlat.end(), {place.position.lon, place.position.lat});
-      part.plane.insert(part.plane.end(), {place.plane.x, place.plane.y});
-      part.altitude.push_back(z);
+      scene.lonlat[2 * v] = place.position.lon;
+      scene.lonlat[2 * v + 1] = place.position.lat;
+      scene.plane[2 * v] = place.plane.x;
+      scene.plane[2 * v + 1] = place.plane.y;
+      scene.altitude[v] = z;
     }
   auto at = [&](int c, int r) {
     return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
   };
   // Normals: the cross product of the column and row central differences, turned up; one-sided
   // only where a neighbour has no data.
-  part.normals.resize(part.altitude.size() * 3);
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
       const uint32_t v = at(c, r);
@@ -103,14 +139,17 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
       const double up = nrm[0] * pv[0] + nrm[1] * pv[1] + nrm[2] * (pv[2] + 6.371e6);
       const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
       for (int k = 0; k < 3; ++k)
-        part.normals[3 * size_t(v) + size_t(k)] = float(nrm[size_t(k)] * s);
-      if (len == 0) part.normals[3 * size_t(v) + 2] = 1;
+        scene.normals[3 * size_t(v) + size_t(k)] = float(nrm[size_t(k)] * s);
+      if (len == 0) scene.normals[3 * size_t(v) + 2] = 1;
     }
+  auto triangles = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {  // a, b, c and a, c, d
+    for (const uint32_t k : {a, b, c, a, c, d}) indices[next_index++] = k;
+  };
   for (int r = -1; r < n; ++r)
     for (int c = -1; c < n; ++c) {
       const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
       if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
-      part.mesh.indices.insert(part.mesh.indices.end(), {a, b, e, a, e, d});
+      triangles(a, b, e, d);
     }
   // The skirt: a wall hanging from the halo's ring, deeper than the tile's relief plus a sample,
   // so that where a neighbour is drawn at another level (its surface above or below this one
@@ -118,24 +157,21 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
   const double depth =
       exaggeration * (double(highest - lowest) + grid.level_info(cell.level(), n).pixel_m);
   auto hang = [&](uint32_t v) {
-    const auto base = uint32_t(part.altitude.size());
-    const LonLat p{part.lonlat[2 * size_t(v)], part.lonlat[2 * size_t(v) + 1]};
-    const float z = part.altitude[v];
+    const size_t below = next_vertex++;
+    const LonLat p{scene.lonlat[2 * size_t(v)], scene.lonlat[2 * size_t(v) + 1]};
+    const float z = scene.altitude[v];
     const double h = heights(p, z) + (exaggeration - 1) * z - depth;
     const auto e = camera.frame().to_enu(p.lon, p.lat, h);
-    part.mesh.positions.insert(part.mesh.positions.end(), e.begin(), e.end());
-    part.lonlat.insert(part.lonlat.end(), {p.lon, p.lat});
-    part.plane.insert(part.plane.end(), {part.plane[2 * size_t(v)], part.plane[2 * size_t(v) + 1]});
-    part.altitude.push_back(z);
-    for (int k = 0; k < 3; ++k) part.normals.push_back(part.normals[3 * size_t(v) + size_t(k)]);
-    return base;
+    std::copy(e.begin(), e.end(), positions.begin() + std::ptrdiff_t(3 * below));
+    scene.lonlat[2 * below] = p.lon;
+    scene.lonlat[2 * below + 1] = p.lat;
+    scene.plane[2 * below] = scene.plane[2 * size_t(v)];
+    scene.plane[2 * below + 1] = scene.plane[2 * size_t(v) + 1];
+    scene.altitude[below] = z;
+    for (size_t k = 0; k < 3; ++k) scene.normals[3 * below + k] = scene.normals[3 * size_t(v) + k];
+    return uint32_t(below);
   };
-  std::vector<std::array<int, 2>> ring;  // the halo's ring, once round
-  ring.reserve(ring_size);
-  for (int c = -1; c < n; ++c) ring.push_back({c, -1});
-  for (int r = -1; r < n; ++r) ring.push_back({n, r});
-  for (int c = n; c > -1; --c) ring.push_back({c, n});
-  for (int r = n; r > -1; --r) ring.push_back({-1, r});
+  const auto ring = halo_ring(n);
   std::vector<uint32_t> below(ring.size(), kNoVertex);
   for (size_t k = 0; k < ring.size(); ++k)
     if (const uint32_t v = at(ring[k][0], ring[k][1]); v != kNoVertex) below[k] = hang(v);
@@ -143,10 +179,8 @@ TerrainScene tile_part(const Store& store, const Grid& grid, const LayerInfo& de
     const size_t next = (k + 1) % ring.size();
     const uint32_t a = at(ring[k][0], ring[k][1]), b = at(ring[next][0], ring[next][1]);
     if (a == kNoVertex || b == kNoVertex) continue;
-    part.mesh.indices.insert(part.mesh.indices.end(),
-                             {a, b, below[next], a, below[next], below[k]});
+    triangles(a, b, below[next], below[k]);
   }
-  return part;
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
@@ -246,39 +280,29 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   const EllipsoidalHeights heights = ellipsoidal_heights(dem);
-  std::vector<TerrainScene> parts(cells.size());
-  tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    parts[i] = tile_part(store, grid, dem, cells[i], camera, heights, exaggeration);
-  });
-  // The parts joined in cell order, each copied in parallel to its place.
-  std::vector<size_t> first_vertex(parts.size() + 1, 0), first_index(parts.size() + 1, 0);
-  for (size_t i = 0; i < parts.size(); ++i) {
-    first_vertex[i + 1] = first_vertex[i] + parts[i].altitude.size();
-    first_index[i + 1] = first_index[i] + parts[i].mesh.indices.size();
+  // The tiles read and their shares counted in parallel, then each written in place, in cell order.
+  std::vector<TileSource> sources(cells.size());
+  tbb::parallel_for(size_t(0), cells.size(),
+                    [&](size_t i) { sources[i] = tile_source(store, grid, dem, cells[i]); });
+  std::vector<size_t> first_vertex(cells.size() + 1, 0), first_index(cells.size() + 1, 0);
+  for (size_t i = 0; i < cells.size(); ++i) {
+    first_vertex[i + 1] = first_vertex[i] + sources[i].vertices;
+    first_index[i + 1] = first_index[i] + sources[i].indices;
   }
   TerrainScene scene;
   scene.cells = cells;
   const size_t vertices = first_vertex.back();
-  // Sized side by side: touching their fresh pages is much of their cost.
-  tbb::parallel_invoke(
-      [&] { scene.mesh.positions.resize(3 * vertices); },
-      [&] { scene.mesh.indices.resize(first_index.back()); },
-      [&] { scene.lonlat.resize(2 * vertices); }, [&] { scene.plane.resize(2 * vertices); },
-      [&] { scene.altitude.resize(vertices); }, [&] { scene.normals.resize(3 * vertices); });
-  tbb::parallel_for(size_t(0), parts.size(), [&](size_t i) {
-    const TerrainScene& part = parts[i];
-    const size_t v = first_vertex[i];
-    auto copy = [v](const auto& from, auto& to, size_t per_vertex) {
-      std::copy(from.begin(), from.end(), to.begin() + std::ptrdiff_t(per_vertex * v));
-    };
-    copy(part.mesh.positions, scene.mesh.positions, 3);
-    copy(part.lonlat, scene.lonlat, 2);
-    copy(part.plane, scene.plane, 2);
-    copy(part.altitude, scene.altitude, 1);
-    copy(part.normals, scene.normals, 3);
-    std::transform(part.mesh.indices.begin(), part.mesh.indices.end(),
-                   scene.mesh.indices.begin() + std::ptrdiff_t(first_index[i]),
-                   [base = uint32_t(v)](uint32_t k) { return base + k; });
+  // Sized, not filled: each tile writes every element of its share.
+  scene.mesh.positions.resize(3 * vertices);
+  scene.mesh.indices.resize(first_index.back());
+  scene.lonlat.resize(2 * vertices);
+  scene.plane.resize(2 * vertices);
+  scene.altitude.resize(vertices);
+  scene.normals.resize(3 * vertices);
+  tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
+    write_tile(grid, dem, cells[i], sources[i], camera, heights, exaggeration, first_vertex[i],
+               first_index[i], scene);
+    sources[i] = TileSource{};  // its heights no longer needed
   });
   return scene;
 }

@@ -8,8 +8,9 @@
 // skirt, a wall hanging from its halo's ring deeper than the tile's relief plus a sample, closes
 // the cracks where a neighbour is drawn at another level. Squares with a missing sample (nodata,
 // no neighbour tile) are left out, and the skirt along them. Heights go to the ellipsoid through
-// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are built in
-// parallel and joined in their cell order: the mesh is the same whatever the threads.
+// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are read and their
+// shares of the mesh counted in parallel, then each written in place (no copies joined) in their
+// cell order: the mesh is the same whatever the threads.
 #pragma once
 
 #include <optional>
@@ -27,15 +28,15 @@ namespace maquette {
 struct TerrainScene {
   std::vector<CellId> cells;  // the tiles drawn (scene_cells)
   RenderMesh mesh;
-  std::vector<double> lonlat;  // degrees, 2 per vertex
+  FreshArray<double> lonlat;  // degrees, 2 per vertex
   // The grid's plane (render/sample_places.h SamplePlace::plane), 2 per vertex: a layer is read
   // at a pixel from these interpolated, without projecting its lon/lat; NaN off the tile's face.
-  std::vector<double> plane;
-  std::vector<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
+  FreshArray<double> plane;
+  FreshArray<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
   // Unit normals in the camera's ENU frame (central differences of the exaggerated surface, at a
   // tile's border too, from a second ring of halo: a sample drawn by two tiles has one normal;
   // one-sided only beside nodata), 3 per vertex.
-  std::vector<float> normals;
+  FreshArray<float> normals;
 };
 
 // The cells whose tiles draw the DEM: from the coarsest level holding overviews down, a cell is

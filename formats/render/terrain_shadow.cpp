@@ -38,7 +38,7 @@ std::optional<double> terrain_up(LayerSampler& sampler, const Grid& grid, const 
 std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const LayerInfo& dem,
                                      const TerrainScene& scene, const PinholeCamera& camera,
                                      double exaggeration, double sun_azimuth, double sun_altitude) {
-  const std::vector<double>& pos = scene.mesh.positions;
+  const auto& pos = scene.mesh.positions;
   const size_t vertices = pos.size() / 3;
   if (vertices == 0) return {};
   double west = pos[0], east = pos[0], south = pos[1], north = pos[1];
