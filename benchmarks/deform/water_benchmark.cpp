@@ -1,5 +1,5 @@
-// deform.water's water body (level + fill, water_body.h), its closed meshes (water_mesh.h: the
-// mesh port's has the flat bottom), its fog volume straight from the depth raster
+// deform.water's water body (level + fill, water_body.h), its closed mesh (water_mesh.h: a
+// flat bottom under the terrain), its fog volume straight from the depth raster
 // (water_columns.h, vdb/column_fog.h) and the mesh's store blob for a 1,000 x 1,000-sample basin:
 // the tests' bowl of hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
 // Goals: <= 50 ms for the body, well under a second for the mesh. With --dem=PATH it writes that
@@ -44,15 +44,14 @@ void BM_WaterBody(benchmark::State& state) {
 }
 BENCHMARK(BM_WaterBody)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
-// The mesh with the bottom of the benchmark's argument: 0 the terrain's, 1 flat.
+// The lake's closed mesh (its flat bottom under the terrain).
 void BM_LakeMesh(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const LakeBottom bottom = state.range(0) == 0 ? LakeBottom::Terrain : LakeBottom::Flat;
   size_t triangles = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
-    const LakeMesh mesh = lake_mesh(raster, body, bottom);
+    const LakeMesh mesh = lake_mesh(raster, body);
     triangles = mesh.indices.size() / 3;
     benchmark::DoNotOptimize(mesh.vertices.data());
   }
@@ -60,7 +59,7 @@ void BM_LakeMesh(benchmark::State& state) {
   state.counters["wet"] = double(body.wet.size());
   state.counters["triangles"] = double(triangles);
 }
-BENCHMARK(BM_LakeMesh)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_LakeMesh)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The lake's mesh in a plane frame (col, -row scaled to metres).
 maquette::MeshObject plane_mesh(const LakeMesh& mesh) {
@@ -106,7 +105,7 @@ BENCHMARK(BM_LakeVolume)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()
 void BM_LakeMeshNormals(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const maquette::MeshObject mesh = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
+  const maquette::MeshObject mesh = plane_mesh(lake_mesh(raster, body));
   size_t vertices = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) vertices = maquette::with_facet_normals(mesh).positions.size() / 3;
@@ -123,8 +122,7 @@ void BM_LakeMeshBlob(benchmark::State& state) {
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
   maquette::MeshContent content;
   content.materials.emplace_back().name = "water";  // its factors do not change the work
-  content.objects.push_back(
-      maquette::with_facet_normals(plane_mesh(lake_mesh(raster, body, LakeBottom::Flat))));
+  content.objects.push_back(maquette::with_facet_normals(plane_mesh(lake_mesh(raster, body))));
   content.objects.back().material = 0;
   size_t bytes = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
@@ -141,7 +139,7 @@ void BM_WaterBodyWhole(benchmark::State& state) {
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
     const WaterBody body = fill_basin(raster, water_level(raster, {}));
-    const maquette::MeshObject shown = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
+    const maquette::MeshObject shown = plane_mesh(lake_mesh(raster, body));
     // The normals and the volume at once, as LakeContent::finish makes them.
     tbb::parallel_invoke(
         [&] { benchmark::DoNotOptimize(maquette::with_facet_normals(shown).normals.data()); },
