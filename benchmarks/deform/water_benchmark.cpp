@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "content/facet_normals.h"
+#include "core/parallel_chunks.h"
 #include "gltf/mesh_glb.h"
 #include "main_thread_cpu.h"
 #include "tests/water_basins.h"
@@ -73,7 +74,8 @@ maquette::MeshObject plane_mesh(const LakeMesh& mesh) {
 
 // The lake's fog columns as deform.water builds them (water_content.h: a column per wet pixel,
 // voxels of a pixel across, the greatest depth over kVoxelsDeep high), in the plane frame of
-// plane_mesh (pixel centres at (col + 1/2, -(row + 1/2)) pixels), the surface flat.
+// plane_mesh (pixel centres at (col + 1/2, -(row + 1/2)) pixels), the surface flat, its places
+// made in parallel as LakeContent::fog makes them.
 maquette::FogColumns plane_columns(const BasinRaster& raster, const WaterBody& body) {
   const auto centre = [&](int64_t pixel) {
     return std::array{(double(pixel % raster.width) + 0.5) * kPixelM,
@@ -81,7 +83,9 @@ maquette::FogColumns plane_columns(const BasinRaster& raster, const WaterBody& b
   };
   const PixelLattice lattice{centre(body.seed), {kPixelM, 0, 0}, {0, -kPixelM, 0}};
   std::vector<std::array<double, 3>> surface(body.wet.size());
-  for (size_t w = 0; w < surface.size(); ++w) surface[w] = centre(body.wet[w]);
+  maquette::parallel_chunks(surface.size(), 4096, [&](size_t first, size_t last) {
+    for (size_t w = first; w < last; ++w) surface[w] = centre(body.wet[w]);
+  });
   return lake_columns(raster, body, lattice, surface, LakeContent::kVoxelsDeep);
 }
 
