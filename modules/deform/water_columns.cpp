@@ -29,21 +29,20 @@ FogColumns lake_columns(const BasinRaster& basin, const WaterBody& body,
   const V up{cross[0] / norm, cross[1] / norm, cross[2] / norm};
   const int64_t width = basin.width;
   const size_t wet = body.wet.size();
-  // Each wet pixel's column and row and its surface height over the plane, and the chunks'
-  // bounding boxes, in parallel; the mean summed in order (the same bits for any threads).
-  std::vector<int64_t> col(wet), row(wet);
+  // Each wet pixel's surface height over the plane, and the chunks' bounding boxes, in parallel;
+  // the mean summed in order (the same bits for any threads).
   std::vector<double> height(wet);
   std::vector<std::array<int64_t, 4>> boxes((wet + kChunk - 1) / kChunk);
   parallel_chunks(wet, kChunk, [&](size_t first, size_t last) {
-    std::array<int64_t, 4>& box = boxes[first / kChunk];  // col0, row0, col1, row1 (inclusive)
-    box = {width, basin.height, -1, -1};
+    int64_t c0 = width, r0 = basin.height, c1 = -1, r1 = -1;  // inclusive
     for (size_t w = first; w < last; ++w) {
-      col[w] = body.wet[w] % width, row[w] = body.wet[w] / width;
-      box = {std::min(box[0], col[w]), std::min(box[1], row[w]), std::max(box[2], col[w]),
-             std::max(box[3], row[w])};
+      const int64_t col = body.wet[w] % width, row = body.wet[w] / width;
+      c0 = std::min(c0, col), c1 = std::max(c1, col), r0 = std::min(r0, row),
+      r1 = std::max(r1, row);
       const V& p = surface[w];
       height[w] = (p[0] - seed[0]) * up[0] + (p[1] - seed[1]) * up[1] + (p[2] - seed[2]) * up[2];
     }
+    boxes[first / kChunk] = {c0, r0, c1, r1};
   });
   int64_t col0 = width, row0 = basin.height, col1 = -1, row1 = -1;
   for (const auto& box : boxes)
@@ -63,7 +62,8 @@ FogColumns lake_columns(const BasinRaster& basin, const WaterBody& body,
   const double base = mean + dz / 2;
   parallel_chunks(wet, kChunk, [&](size_t first, size_t last) {
     for (size_t w = first; w < last; ++w) {
-      const size_t at = size_t(row1 - row[w]) * size_t(fog.width) + size_t(col[w] - col0);
+      const int64_t col = body.wet[w] % width, row = body.wet[w] / width;
+      const size_t at = size_t(row1 - row) * size_t(fog.width) + size_t(col - col0);
       // Centres strictly between the bed and the surface: low <= k < high.
       fog.high[at] = voxel_index(std::ceil((height[w] - base) / dz));
       fog.low[at] = voxel_index(std::floor((height[w] - double(body.depth[w]) - base) / dz) + 1);
