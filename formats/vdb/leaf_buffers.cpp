@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <optional>
@@ -52,8 +53,10 @@ std::pair<int8_t, int64_t> delayed_load_entry(std::string_view leaf) {
 }
 
 // A leaf's active values' count and value bits when they are all one value and its inactive
-// values all the background, bit for bit; nothing otherwise (or without active values).
+// values all the background, bit for bit; nothing otherwise (or without active values, or for a
+// NaN background, which OpenVDB's mask compression does not find equal to itself).
 std::optional<uint64_t> uniform_key(const Leaf& leaf, float background) {
+  if (std::isnan(background)) return std::nullopt;
   const auto& mask = leaf.valueMask();
   const openvdb::Index first = mask.findFirstOn();
   if (first >= Leaf::SIZE) return std::nullopt;

@@ -8,6 +8,7 @@
 #include <openvdb/io/Stream.h>
 
 #include <cstring>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -65,9 +66,12 @@ TEST(VdbStreamWriter, SameBytesAsOpenVdbsWriter) {
   auto vectors = openvdb::Vec3SGrid::create();  // written by OpenVDB
   vectors->fill(openvdb::CoordBBox({0, 0, 0}, {9, 3, 3}), openvdb::Vec3s(1, 2, 3));
   auto empty = openvdb::FloatGrid::create(0.0f);  // no leaves: empty delayed-load metadata
+  // A NaN background: OpenVDB's mask compression finds no inactive value equal to it.
+  auto nan = openvdb::FloatGrid::create(std::numeric_limits<float>::quiet_NaN());
+  nan->fill(openvdb::CoordBBox({0, 0, 0}, {9, 3, 3}), 1.0f);
   const auto shared = openvdb::FloatGrid::create(fog->treePtr());  // an instance of fog's tree
   shared->setName("mixed");
-  const openvdb::GridPtrVec grids{sphere, fog, half, vectors, empty, shared};
+  const openvdb::GridPtrVec grids{sphere, fog, half, vectors, empty, nan, shared};
   const std::string expected = openvdb_bytes(grids);
   ASSERT_GT(expected.size(), 100000u);
   EXPECT_EQ(compare_bytes(writer_bytes(grids), expected), "same");
