@@ -1,5 +1,5 @@
-// deform.water's water body (level + fill, water_body.h), its closed meshes (water_mesh.h: the
-// mesh port's has the flat bottom), its fog volume straight from the depth raster
+// deform.water's water body (level + fill, water_body.h), its closed mesh (water_mesh.h: a
+// flat bottom under the terrain), its fog volume straight from the depth raster
 // (water_columns.h, vdb/column_fog.h) and the mesh's store blob for a 1,000 x 1,000-sample basin:
 // the tests' bowl of hills (islands, a ragged shore) inside an ellipse, filled to the spill level.
 // Goals: <= 50 ms for the body, well under a second for the mesh. With --dem=PATH it writes that
@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "content/facet_normals.h"
+#include "core/parallel_chunks.h"
 #include "gltf/mesh_glb.h"
 #include "main_thread_cpu.h"
 #include "tests/water_basins.h"
@@ -44,15 +45,14 @@ void BM_WaterBody(benchmark::State& state) {
 }
 BENCHMARK(BM_WaterBody)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
-// The mesh with the bottom of the benchmark's argument: 0 the terrain's, 1 flat.
+// The lake's closed mesh (its flat bottom under the terrain).
 void BM_LakeMesh(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const LakeBottom bottom = state.range(0) == 0 ? LakeBottom::Terrain : LakeBottom::Flat;
   size_t triangles = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
-    const LakeMesh mesh = lake_mesh(raster, body, bottom);
+    const LakeMesh mesh = lake_mesh(raster, body);
     triangles = mesh.indices.size() / 3;
     benchmark::DoNotOptimize(mesh.vertices.data());
   }
@@ -60,7 +60,7 @@ void BM_LakeMesh(benchmark::State& state) {
   state.counters["wet"] = double(body.wet.size());
   state.counters["triangles"] = double(triangles);
 }
-BENCHMARK(BM_LakeMesh)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_LakeMesh)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The lake's mesh in a plane frame (col, -row scaled to metres).
 maquette::MeshObject plane_mesh(const LakeMesh& mesh) {
@@ -74,7 +74,8 @@ maquette::MeshObject plane_mesh(const LakeMesh& mesh) {
 
 // The lake's fog columns as deform.water builds them (water_content.h: a column per wet pixel,
 // voxels of a pixel across, the greatest depth over kVoxelsDeep high), in the plane frame of
-// plane_mesh (pixel centres at (col + 1/2, -(row + 1/2)) pixels), the surface flat.
+// plane_mesh (pixel centres at (col + 1/2, -(row + 1/2)) pixels), the surface flat, its places
+// made in parallel as LakeContent::fog makes them.
 maquette::FogColumns plane_columns(const BasinRaster& raster, const WaterBody& body) {
   const auto centre = [&](int64_t pixel) {
     return std::array{(double(pixel % raster.width) + 0.5) * kPixelM,
@@ -82,7 +83,9 @@ maquette::FogColumns plane_columns(const BasinRaster& raster, const WaterBody& b
   };
   const PixelLattice lattice{centre(body.seed), {kPixelM, 0, 0}, {0, -kPixelM, 0}};
   std::vector<std::array<double, 3>> surface(body.wet.size());
-  for (size_t w = 0; w < surface.size(); ++w) surface[w] = centre(body.wet[w]);
+  maquette::parallel_chunks(surface.size(), 4096, [&](size_t first, size_t last) {
+    for (size_t w = first; w < last; ++w) surface[w] = centre(body.wet[w]);
+  });
   return lake_columns(raster, body, lattice, surface, LakeContent::kVoxelsDeep);
 }
 
@@ -106,7 +109,7 @@ BENCHMARK(BM_LakeVolume)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()
 void BM_LakeMeshNormals(benchmark::State& state) {
   const BasinRaster raster = basin().raster();
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
-  const maquette::MeshObject mesh = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
+  const maquette::MeshObject mesh = plane_mesh(lake_mesh(raster, body));
   size_t vertices = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) vertices = maquette::with_facet_normals(mesh).positions.size() / 3;
@@ -123,8 +126,7 @@ void BM_LakeMeshBlob(benchmark::State& state) {
   const WaterBody body = fill_basin(raster, water_level(raster, {}));
   maquette::MeshContent content;
   content.materials.emplace_back().name = "water";  // its factors do not change the work
-  content.objects.push_back(
-      maquette::with_facet_normals(plane_mesh(lake_mesh(raster, body, LakeBottom::Flat))));
+  content.objects.push_back(maquette::with_facet_normals(plane_mesh(lake_mesh(raster, body))));
   content.objects.back().material = 0;
   size_t bytes = 0;
   maquette::bench::MainThreadCpu main_cpu(state);
@@ -141,7 +143,7 @@ void BM_WaterBodyWhole(benchmark::State& state) {
   maquette::bench::MainThreadCpu main_cpu(state);
   for (auto _ : state) {
     const WaterBody body = fill_basin(raster, water_level(raster, {}));
-    const maquette::MeshObject shown = plane_mesh(lake_mesh(raster, body, LakeBottom::Flat));
+    const maquette::MeshObject shown = plane_mesh(lake_mesh(raster, body));
     // The normals and the volume at once, as LakeContent::finish makes them.
     tbb::parallel_invoke(
         [&] { benchmark::DoNotOptimize(maquette::with_facet_normals(shown).normals.data()); },

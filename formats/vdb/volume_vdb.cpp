@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "vdb/vdb_stream_writer.h"
 
 namespace maquette {
 
@@ -51,12 +52,7 @@ VolumeContent encode_volume(const openvdb::GridPtrVec& grids, const EnuOrigin& o
   for (size_t i = 0; i < grids.size(); ++i) {
     if (!grids[i]) throw Error("encode_volume: grid " + std::to_string(i) + " is null");
   }
-  std::ostringstream out(std::ios::binary);
-  openvdb::io::Stream stream(out);
-  stream.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-  stream.setGridStatsMetadataEnabled(false);
-  stream.write(grids);
-  VolumeContent volume{origin, std::move(out).str()};
+  VolumeContent volume{origin, write_vdb_stream(grids)};
   // OpenVDB drew a random UUID: the content's instead (README.md).
   volume.vdb.replace(kVdbUuidOffset, kVdbUuidBytes, content_uuid(volume.vdb));
   return volume;

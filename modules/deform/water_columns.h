@@ -13,7 +13,8 @@
 // holds the voxels whose centres lie between its surface height and that minus its depth (none for
 // a pixel shallower than half a voxel; voxels_deep for the deepest). Dry pixels' columns are
 // empty. Made of the surface's places and the lattice alone, the volume is the same body in any
-// frame (to rounding). Time and memory are linear in the bounding box's pixels; serial.
+// frame (to rounding). Time and memory are linear in the bounding box's pixels; in parallel by
+// chunks of wet pixels (TBB), the same bits for any thread count.
 #pragma once
 
 #include <array>

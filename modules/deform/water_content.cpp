@@ -103,7 +103,7 @@ std::array<double, 3> LakeContent::place(const UnfoldedFaces& plane, double col,
 
 LakeContent::Lake LakeContent::placed(const VectorFeature& f, const BasinRaster& basin,
                                       const WaterBody& body) const {
-  const LakeMesh mesh = lake_mesh(basin, body, LakeBottom::Flat);
+  const LakeMesh mesh = lake_mesh(basin, body);
   // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
   // the mosaic's face (a lake may cross a face seam).
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);

@@ -2,16 +2,14 @@
 // the level, triangulated from the shoreline (its vertices are the shoreline's corners only: one
 // strip per wet run of a row, between the run's two corner lines, zipped from the shoreline
 // corners on each line; no vertex inside the lake, no degenerate triangle), walls down from the
-// shoreline, one quad per dry pixel side, and a bottom (LakeBottom):
-// - Terrain: following the terrain, one quad per wet pixel, each bottom corner at the mean
-//   terrain of the wet pixels around it: the water's own volume (the fog volume's mesh);
-// - Flat: the top's triangulation (facing down) at lake_flat_bottom, below the lowest bed: the
-//   prism of the lake's outline, what a viewer draws (the bottom lies under the terrain, never
-//   seen) with no vertex inside the lake; its volume is not the water's.
+// shoreline, one quad per dry pixel side, and a flat bottom: the top's triangulation (facing down)
+// at lake_flat_bottom, below the lowest bed. The prism of the lake's outline, what a viewer draws
+// (the bottom lies under the terrain, never seen), with no vertex inside the lake; its volume is
+// not the water's (the fog volume is made from the depths: water_columns.h).
 // Vertices are in pixel-corner coordinates (col, row: the raster's corner lattice, row down).
 // Time and memory are linear in the lake's pixels (and its bounding box's corners). Built by
 // blocks of 64 pixel rows in parallel: the triangles block by block (in each, the top strips of
-// its rows, with the flat bottom's, then each wet pixel's terrain bottom and walls), the vertices
+// its rows with the bottom's, then each wet pixel's walls), the vertices
 // numbered block by block in the order of first use, a corner shared with the rows above
 // belonging to the block above; the blocks fixed from the lake's first row, so the same mesh for
 // any thread count. The first vertex is the first top strip's first corner, on the shore.
@@ -38,11 +36,9 @@ struct LakeMesh {
   std::vector<uint32_t> indices;  // triangles
 };
 
-enum class LakeBottom { Terrain, Flat };
-
 // The flat bottom's height: 1 m below the lowest terrain of the lake's pixels.
 double lake_flat_bottom(const BasinRaster& basin, const WaterBody& body);
 
-LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body, LakeBottom bottom);
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body);
 
 }  // namespace maquette::deform

@@ -5,13 +5,14 @@
 // the channel's bottom is 5 m below the plane on the curve, the samples far from it keep the
 // input's bits, and a stroke leaving the region fails the run naming the step and feature. Steps
 // with "refine" write the layer 2^refine times finer, with the same bits for both tilings and
-// thread counts, one layer per resolution.
+// thread counts, one layer per resolution; and the same bits on 2 MPI ranks as on one.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/UTMUPS.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -198,6 +199,48 @@ TEST(DeformProgram, SameBitsForTwoTilingsAndThreadCounts) {
   EXPECT_GT(lowered, 800);  // the bottom: 150 m by 12 m, ~1250 samples of ~1.2 m
   EXPECT_GT(kept, 0);       // and every sample beyond the band unchanged (else negative)
   for (const Case* c : {&fine, &fine2, &coarse}) fs::remove_all(c->dir);
+}
+
+// The cells whose bytes differ between two runs' tiles, or that only one of them has.
+size_t differing_tiles(const std::map<CellId, Tile<float>>& a,
+                       const std::map<CellId, Tile<float>>& b) {
+  size_t n = 0;
+  for (const auto& [cell, t] : a) {
+    const auto it = b.find(cell);
+    n += it == b.end() || it->second.size() != t.size() ||
+         std::memcmp(t.data().data(), it->second.data().data(), t.data().size_bytes()) != 0;
+  }
+  for (const auto& [cell, t] : b) n += !a.count(cell);
+  return n;
+}
+
+// Under mpirun with 2 ranks (a region step, placed as the runner places it; rank 0 writes the
+// tiles): the same bits as one rank, at the input's level and one finer; and the comparison sees
+// a change: a channel ending 5 m further north differs.
+TEST(DeformProgram, SameBitsOnTwoMpiRanks) {
+#ifdef MAQUETTE_MPIEXEC
+  for (const int refine : {0, 1}) {
+    SCOPED_TRACE("refine " + std::to_string(refine));
+    const std::string r = std::to_string(refine);
+    const Case one = make_case("mpi1_" + r, 17, 64, channel(), plane_height, {}, refine);
+    const Case two = make_case("mpi2_" + r, 17, 64, channel(), plane_height, {}, refine);
+    const Case moved = make_case("mpim_" + r, 17, 64, channel(90, 50), plane_height, {}, refine);
+    for (const Case* c : {&one, &moved}) ASSERT_EQ(run(*c, 1).exit_code, 0);
+    const std::string command = std::string(MAQUETTE_MPIEXEC) +
+                                " --oversubscribe --allow-run-as-root -np 2 " + MAQUETTE_BIN_DIR +
+                                "/maquette -q run --threads 1 " +
+                                (two.dir / "pipeline.json").string() + " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    const auto a = tiles(one, "carved"), b = tiles(two, "carved"), m = tiles(moved, "carved");
+    EXPECT_GE(a.size(), 4u);
+    EXPECT_EQ(a.begin()->second.size(), 64 << refine);
+    EXPECT_EQ(differing_tiles(a, b), 0u) << "of " << a.size();
+    EXPECT_GT(differing_tiles(a, m), 0u) << "of " << a.size();
+    for (const Case* c : {&one, &two, &moved}) fs::remove_all(c->dir);
+  }
+#else
+  GTEST_SKIP() << "built without MPI: 2 ranks not tested";
+#endif
 }
 
 // A step with "refine": 1 at the current site: the same bits for two tilings (regions ending at

@@ -2,6 +2,8 @@
 
 #include <openvdb/tools/LevelSetSphere.h>
 
+#include <algorithm>
+
 namespace maquette::test {
 
 openvdb::FloatGrid::Ptr sphere_level_set(const std::string& name) {
@@ -21,6 +23,13 @@ openvdb::FloatGrid::Ptr fog_box(const openvdb::CoordBBox& box, double voxel,
   grid->fill(box, 1.0f, /*active=*/true);
   grid->setName(name);
   return grid;
+}
+
+std::string compare_bytes(const std::string& a, const std::string& b) {
+  if (a == b) return "same";
+  const auto [i, j] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  return "first difference at byte " + std::to_string(i - a.begin()) + " of " +
+         std::to_string(a.size()) + " and " + std::to_string(b.size());
 }
 
 }  // namespace maquette::test

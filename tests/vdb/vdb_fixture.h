@@ -4,6 +4,8 @@
 
 #include <openvdb/openvdb.h>
 
+#include <string>
+
 #include "content/content.h"
 
 namespace maquette::test {
@@ -19,6 +21,9 @@ openvdb::FloatGrid::Ptr sphere_level_set(const std::string& name);
 // side `voxel` metres, named `name`.
 openvdb::FloatGrid::Ptr fog_box(const openvdb::CoordBBox& box, double voxel,
                                 const std::string& name);
+
+// "same", or where two streams first differ (a failure prints this, not megabytes of bytes).
+std::string compare_bytes(const std::string& a, const std::string& b);
 
 inline const EnuOrigin kVolumeOrigin{-122.3321, 47.6062, 56.0};
 

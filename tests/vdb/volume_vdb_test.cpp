@@ -24,14 +24,6 @@ openvdb::GridPtrVec two_grids() {
   return {sphere, fog_box(openvdb::CoordBBox({-3, 2, 0}, {12, 9, 4}), 0.5, "cloud")};
 }
 
-// "same" or where two streams first differ (a failure prints this, not megabytes of bytes).
-std::string compare_bytes(const std::string& a, const std::string& b) {
-  if (a == b) return "same";
-  const auto [i, j] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
-  return "first difference at byte " + std::to_string(i - a.begin()) + " of " +
-         std::to_string(a.size()) + " and " + std::to_string(b.size());
-}
-
 uint32_t bits(float value) {
   uint32_t b;
   std::memcpy(&b, &value, sizeof b);

@@ -1,15 +1,13 @@
 // lake_mesh (water_mesh.h): closed (each edge in exactly two triangles, once in each
-// direction), no degenerate triangle, its enclosed volume (divergence theorem) close to the
-// raster volume with the terrain's bottom, and equal to the lake's area times its height with
-// the flat one; the top (and the flat bottom) triangulated from the shoreline (no vertex inside
-// the lake); the same mesh for any thread count.
+// direction), no degenerate triangle, its enclosed volume (divergence theorem) the lake's area
+// times the prism's height; the top and the bottom triangulated from the shoreline (no vertex
+// inside the lake); the same mesh for any thread count.
 #include "../water_mesh.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -66,69 +64,24 @@ void expect_closed_and_oriented(const LakeMesh& m) {
   EXPECT_EQ(faults, 0u) << "of " << directed.size() << " directed edges";
 }
 
-TEST(WaterMesh, HillsLakeIsClosedWithTheRasterVolume) {
-  const Basin b = hills();
-  const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
-  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
-  expect_closed_and_oriented(m);
-  EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.01 * body.volume_m3);
-}
-
-// The benchmark's basin (a ragged shore, islands, a lake touching itself at pixel corners), where
-// GEOS's triangulation of the shoreline failed.
-TEST(WaterMesh, LargeHillsLakeIsClosedWithTheRasterVolume) {
-  const Basin b = hills(1000, 1000);
-  const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
-  ASSERT_GT(body.wet.size(), 300000u);
-  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
-  expect_closed_and_oriented(m);
-  EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.01 * body.volume_m3);
-}
-
 // Built by blocks of rows in parallel (16 blocks here): the same vertices and triangles on one
 // thread as on all.
 TEST(WaterMesh, SameMeshForOneThreadAndMore) {
   const Basin b = hills(1000, 1000);
   const WaterBody body = fill_basin(b.raster(), water_level(b.raster(), {}));
-  for (const LakeBottom bottom : {LakeBottom::Terrain, LakeBottom::Flat}) {
-    LakeMesh one;
-    {
-      const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-      one = lake_mesh(b.raster(), body, bottom);
-    }
-    const LakeMesh many = lake_mesh(b.raster(), body, bottom);
-    EXPECT_EQ(one.indices, many.indices);
-    ASSERT_EQ(one.vertices.size(), many.vertices.size());
-    for (size_t i = 0; i < one.vertices.size(); ++i) {
-      ASSERT_EQ(one.vertices[i].col, many.vertices[i].col) << i;
-      ASSERT_EQ(one.vertices[i].row, many.vertices[i].row) << i;
-      ASSERT_EQ(one.vertices[i].height, many.vertices[i].height) << i;
-    }
+  LakeMesh one;
+  {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = lake_mesh(b.raster(), body);
   }
-}
-
-TEST(WaterMesh, ParaboloidTopHasOnlyShorelineVertices) {
-  const Basin b = paraboloid();
-  const WaterBody body = fill_basin(b.raster(), 100);
-  const LakeMesh m = lake_mesh(b.raster(), body, LakeBottom::Terrain);
-  expect_closed_and_oriented(m);
-  EXPECT_NEAR(enclosed_volume(m, b.pixel_m), body.volume_m3, 0.005 * body.volume_m3);
-  // Top vertices (at the level): the shoreline's corners only, each touching a dry pixel, far
-  // fewer than the lake's pixels.
-  size_t top = 0;
-  for (const LakeVertex& v : m.vertices) {
-    if (v.height != body.level) continue;
-    ++top;
-    const int64_t c = int64_t(v.col), r = int64_t(v.row);
-    bool shore = false;
-    for (int q = 0; q < 4; ++q) {
-      const int64_t pc = c - 1 + (q & 1), pr = r - 1 + (q >> 1);
-      const int64_t i = pr * b.width + pc;
-      shore = shore || !std::binary_search(body.wet.begin(), body.wet.end(), i);
-    }
-    EXPECT_TRUE(shore) << "top vertex at corner (" << c << ", " << r << ") inside the lake";
+  const LakeMesh many = lake_mesh(b.raster(), body);
+  EXPECT_EQ(one.indices, many.indices);
+  ASSERT_EQ(one.vertices.size(), many.vertices.size());
+  for (size_t i = 0; i < one.vertices.size(); ++i) {
+    ASSERT_EQ(one.vertices[i].col, many.vertices[i].col) << i;
+    ASSERT_EQ(one.vertices[i].row, many.vertices[i].row) << i;
+    ASSERT_EQ(one.vertices[i].height, many.vertices[i].height) << i;
   }
-  EXPECT_LT(top, body.wet.size() / 20);
 }
 
 // Whether corner (col, row) touches a dry pixel.
@@ -144,10 +97,9 @@ bool on_shore(const Basin& b, const WaterBody& body, const LakeVertex& v) {
 
 // The flat bottom: the prism of the lake's outline (islands as holes), 1 m below its lowest bed;
 // every vertex a shoreline corner, at the level or at the bottom; its volume the wet pixels'
-// area times the prism's height (the divergence theorem's sum, to rounding); the top the same
-// as the terrain-bottomed mesh's.
-void expect_flat_prism(const Basin& b, const WaterBody& body) {
-  const LakeMesh flat = lake_mesh(b.raster(), body, LakeBottom::Flat);
+// area times the prism's height (the divergence theorem's sum, to rounding). Returns the mesh.
+LakeMesh expect_flat_prism(const Basin& b, const WaterBody& body) {
+  const LakeMesh flat = lake_mesh(b.raster(), body);
   expect_closed_and_oriented(flat);
   float lowest = INFINITY;
   for (const int64_t i : body.wet) lowest = std::min(lowest, b.terrain[size_t(i)]);
@@ -160,31 +112,16 @@ void expect_flat_prism(const Basin& b, const WaterBody& body) {
   for (const LakeVertex& v : flat.vertices)
     faults += !on_shore(b, body, v) || (v.height != body.level && v.height != floor);
   EXPECT_EQ(faults, 0u) << "of " << flat.vertices.size() << " vertices";
-  // The top's triangles (at the level), as corners, are the terrain-bottomed mesh's.
-  const auto top = [&](const LakeMesh& m) {
-    std::vector<std::array<double, 6>> out;
-    for (size_t t = 0; t < m.indices.size(); t += 3) {
-      std::array<double, 6> corners;
-      bool at_level = true;
-      for (size_t k = 0; k < 3; ++k) {
-        const LakeVertex& v = m.vertices[m.indices[t + k]];
-        at_level = at_level && v.height == body.level;
-        corners[2 * k] = v.col, corners[2 * k + 1] = v.row;
-      }
-      if (at_level) out.push_back(corners);
-    }
-    return out;
-  };
-  const LakeMesh terrain = lake_mesh(b.raster(), body, LakeBottom::Terrain);
-  EXPECT_EQ(top(flat), top(terrain));
-  std::printf("flat bottom: %zu triangles, %zu vertices; on the terrain: %zu, %zu\n",
-              flat.indices.size() / 3, flat.vertices.size(), terrain.indices.size() / 3,
-              terrain.vertices.size());
+  std::printf("%zu triangles, %zu vertices for %zu wet pixels\n", flat.indices.size() / 3,
+              flat.vertices.size(), body.wet.size());
+  return flat;
 }
 
 TEST(WaterMesh, FlatBottomMakesThePrismOfTheShoreline) {
   const Basin p = paraboloid();
-  expect_flat_prism(p, fill_basin(p.raster(), 100));
+  const WaterBody round = fill_basin(p.raster(), 100);
+  // The shoreline's corners only, at the top and the bottom: far fewer than the lake's pixels.
+  EXPECT_LT(expect_flat_prism(p, round).vertices.size(), round.wet.size() / 10);
   const Basin h = hills(600, 500);
   expect_flat_prism(h, fill_basin(h.raster(), water_level(h.raster(), {})));
   const Basin large = hills(1000, 1000);
