@@ -1,9 +1,10 @@
 #!/bin/sh
 # Strong scaling of `maquette run` under mpirun: a compute-bound pipeline (terrain.synthesize,
 # then terrain.derive) over 256 cells of 128 pixels, with 1 and 2 ranks of one thread each.
-# Prints the best wall-clock time of REPEATS runs per rank count, the parallel efficiency
-# T1 / (2 * T2), and the ratio of the CPU times of both runs (the work the second rank adds: it
-# holds on a loaded machine, where wall-clock times do not). With --store-copies each rank runs
+# Runs REPEATS rounds, each of 1 rank, 2 ranks and two single runs side by side (the machine's own
+# ceiling), and prints each round's parallel efficiency T1 / (2 * T2), the ratio of the CPU times
+# of both runs (the work the second rank adds: it holds on a loaded machine, where wall-clock times
+# do not) and the ceiling, then their medians. With --store-copies each rank runs
 # in its own directory with its own store (`maquette run --store-copies`: rank 0 writes for all).
 # Usage: benchmarks/mpi/scaling.sh [BUILD_DIR] [REPEATS] [--store-copies]
 set -eu
@@ -46,30 +47,52 @@ launch() {
   done
 }
 
-# "WALL CPU": the best wall-clock seconds of `repeats` fresh runs with $1 ranks, and the CPU
-# seconds (user + system, all processes) of that run.
-best_time() {
-  best=""
-  i=0
-  while [ "$i" -lt "$repeats" ]; do
-    rm -rf "$work"/bench.mqt* "$work"/rank*
-    args=$(launch "$1")
-    # shellcheck disable=SC2086 # the arguments are split on purpose
-    /usr/bin/time -f "%e %U %S" -o "$work/time" \
-      mpirun --oversubscribe --allow-run-as-root $args
-    read -r t user sys <"$work/time"
-    if [ -z "$best" ] || [ "$(echo "$t < $best" | bc -l)" = 1 ]; then
-      best=$t
-      cpu=$(echo "$user + $sys" | bc -l)
-    fi
-    i=$((i + 1))
-  done
-  echo "$best $cpu"
+# "WALL CPU" of one fresh run with $1 ranks: wall-clock seconds, CPU seconds (user + system, all
+# processes).
+one_run() {
+  rm -rf "$work"/bench.mqt* "$work"/rank*
+  args=$(launch "$1")
+  # shellcheck disable=SC2086 # the arguments are split on purpose
+  /usr/bin/time -f "%e %U %S" -o "$work/time" \
+    mpirun --oversubscribe --allow-run-as-root $args
+  read -r t user sys <"$work/time"
+  echo "$t $(echo "$user + $sys" | bc -l)"
 }
 
-set -- $(best_time 1) $(best_time 2)
-printf 'ranks  wall s (best of %d)  CPU s\n' "$repeats"
-printf '1      %6.2f             %6.2f\n2      %6.2f             %6.2f\n' "$1" "$2" "$3" "$4"
-printf 'speed-up %.2f, parallel efficiency %.0f%% (CPU time ratio %.0f%%)\n' \
-  "$(echo "$1 / $3" | bc -l)" "$(echo "100 * $1 / (2 * $3)" | bc -l)" \
-  "$(echo "100 * $2 / $4" | bc -l)"
+# The machine's own ceiling: the wall-clock seconds of two independent single-process runs (no
+# MPI, a store each) started together. Where the two cores slow each other down (shared caches,
+# memory bandwidth, a host's hyperthreads behind the virtual cores), this is longer than one run
+# alone, and no 2-rank run can beat it.
+pair_run() {
+  rm -rf "$work"/pair*
+  mkdir -p "$work/pair0" "$work/pair1"
+  cp "$work/pipeline.json" "$work/pair0/"
+  cp "$work/pipeline.json" "$work/pair1/"
+  /usr/bin/time -f "%e" -o "$work/time" sh -c "
+    cd $work/pair0 && $build/bin/maquette -q run --threads 1 pipeline.json &
+    cd $work/pair1 && $build/bin/maquette -q run --threads 1 pipeline.json &
+    wait"
+  cat "$work/time"
+}
+
+median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+
+# Rounds of (1 rank, 2 ranks, two single runs side by side), interleaved: a virtual machine's speed
+# drifts by several percent from one run to the next, so each round's ratios are taken between
+# runs minutes apart at most, and the medians of the rounds are reported.
+printf 'round  1 rank: wall s  CPU s   2 ranks: wall s  CPU s   side by side s  efficiency  CPU ratio  ceiling\n'
+: >"$work/rounds"
+i=1
+while [ "$i" -le "$repeats" ]; do
+  set -- $(one_run 1) $(one_run 2) $(pair_run)
+  eff=$(echo "100 * $1 / (2 * $3)" | bc -l)
+  cpu=$(echo "100 * $2 / $4" | bc -l)
+  ceiling=$(echo "100 * $1 / $5" | bc -l)
+  printf '%5d  %14.2f  %6.2f  %15.2f  %6.2f  %14.2f  %9.0f%%  %8.0f%%  %6.0f%%\n' \
+    "$i" "$1" "$2" "$3" "$4" "$5" "$eff" "$cpu" "$ceiling"
+  echo "$eff $cpu $ceiling" >>"$work/rounds"
+  i=$((i + 1))
+done
+printf 'medians of %d rounds: parallel efficiency T1 / (2 T2) %.0f%%, CPU time ratio %.0f%%, the machine'"'"'s ceiling (T1 / side by side) %.0f%%\n' \
+  "$repeats" "$(cut -d' ' -f1 "$work/rounds" | median)" "$(cut -d' ' -f2 "$work/rounds" | median)" \
+  "$(cut -d' ' -f3 "$work/rounds" | median)"
