@@ -6,17 +6,17 @@
 # stealing and reports a task's memory, freed or reused on another thread, as a race in every
 # parallel loop. The same source as the installed package (its upstream version, from Debian's
 # archive), built with oneTBB's own TBB_SANITIZE=thread, makes those reports go away without
-# suppressing anything. Nothing is done when DIR/lib/libtbb.so.12 exists.
+# suppressing anything. Nothing is done when DIR/lib holds a build of the installed version.
 # Usage: scripts/onetbb-tsan.sh DIR
 set -eu
 dir=$1
-[ -f "$dir/lib/libtbb.so.12" ] && exit 0
 version=$(dpkg-query -W -f='${source:Upstream-Version}' libtbb12)
+[ -f "$dir/lib/libtbb.so.12" ] && [ "$(cat "$dir/lib/version" 2>/dev/null)" = "$version" ] && exit 0
 tarball=onetbb_$version.orig.tar.xz
 mkdir -p "$dir"
 cd "$dir"
 echo "onetbb-tsan: building oneTBB $version with ThreadSanitizer in $dir"
-curl -sSfO "http://deb.debian.org/debian/pool/main/o/onetbb/$tarball"
+curl -sSfO "https://deb.debian.org/debian/pool/main/o/onetbb/$tarball"
 rm -rf src
 mkdir src
 tar xJf "$tarball" -C src --strip-components=1
@@ -25,4 +25,5 @@ cmake -S src -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTBB_SANITIZE=
 cmake --build build --parallel "$(nproc)" >/dev/null
 mkdir -p lib
 cp -P build/*_relwithdebinfo/libtbb.so* lib/
+echo "$version" >lib/version
 rm -rf src build "$tarball"

@@ -42,6 +42,10 @@ else
   export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:exitcode=23}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
   export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$root/scripts/tsan-suppressions.txt}
+  if [ "$sanitize" = thread ]; then  # oneTBB built with TSan in place of Debian's libtbb
+    "$root/scripts/onetbb-tsan.sh" "$build/onetbb"
+    export LD_LIBRARY_PATH="$build/onetbb/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  fi
 fi
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@"

@@ -91,7 +91,6 @@ void kill_writers_and_check(Store::Mode mode, Writes writes = Writes::Tiles) {
   const bool bulk = mode == Store::Mode::CreateBulk;
   std::mt19937 rng(20240607);
   std::set<int64_t> reported;  // batches committed to the store of this round
-  size_t committed = 0;        // in all rounds
   for (int round = 0; round < 6; ++round) {
     const std::string path = dir.file("crash" + std::to_string(bulk ? round : 0) + ".mqs");
     if (bulk) reported.clear();
@@ -109,13 +108,12 @@ void kill_writers_and_check(Store::Mode mode, Writes writes = Writes::Tiles) {
     ASSERT_EQ(::read(fds[0], &opened, sizeof opened), ssize_t(sizeof opened)) << "writer failed";
     ASSERT_EQ(opened, kOpened);
     // Round r waits for r commits before its random delay, so that the rounds kill stores holding
-    // batches however slow the writer runs (a sanitizer's, on a loaded machine); round 0 may kill
-    // before the first commit.
+    // batches however slow the writer runs (a sanitizer's, on a loaded machine): 15 at least in
+    // all; round 0 may kill before the first commit.
     for (int i = 0; i < round; ++i) {
       int64_t b = 0;
       ASSERT_EQ(::read(fds[0], &b, sizeof b), ssize_t(sizeof b)) << "writer failed";
       reported.insert(b);
-      ++committed;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(30 + rng() % 150));
     ASSERT_EQ(::kill(child, SIGKILL), 0);
@@ -125,7 +123,6 @@ void kill_writers_and_check(Store::Mode mode, Writes writes = Writes::Tiles) {
     int64_t b;
     while (::read(fds[0], &b, sizeof b) == sizeof b) {
       reported.insert(b);
-      ++committed;
     }
     ::close(fds[0]);
 
@@ -162,7 +159,6 @@ void kill_writers_and_check(Store::Mode mode, Writes writes = Writes::Tiles) {
     testing::Test::RecordProperty("round" + std::to_string(round) + "_batches",
                                   int(tiles_per_batch.size()));
   }
-  EXPECT_GT(committed, 10u) << "the child wrote too little for the test to mean much";
 }
 
 // A writer killed in the middle of a commit to a store being filled in bulk leaves a hot

@@ -9,28 +9,21 @@
 #include <algorithm>
 
 #include "core/splitmix64.h"
+#include "painted_exemplar.h"
 
 namespace maquette::synthesis {
 namespace {
 
 ExemplarPyramid pyramid() {
-  Exemplar e;
-  e.width = 96;
-  e.height = 64;
-  const size_t n = size_t(e.width) * size_t(e.height);
-  e.rgb.resize(3 * n);
-  e.labels.resize(n);
-  e.excluded.resize(n);
-  for (int y = 0; y < e.height; ++y)
-    for (int x = 0; x < e.width; ++x) {
-      const size_t i = size_t(y) * size_t(e.width) + size_t(x);
-      const bool right = x >= e.width / 2;
-      e.labels[i] = right ? 1 : 0;
-      e.excluded[i] = x >= 10 && x < 20 && y >= 10 && y < 20;
-      for (size_t k = 0; k < 3; ++k)
-        e.rgb[3 * i + k] = right ? float(splitmix64_mix(3 * i + k) % 256) : 120.0f;
-    }
-  ExemplarPyramid p = analyse_exemplar(e, kLevels, 2);
+  const Exemplar exemplar =
+      test::painted_exemplar(96, 64, false, [](Exemplar& e, int x, int y, size_t i) {
+        const bool right = x >= e.width / 2;
+        e.labels[i] = right ? 1 : 0;
+        e.excluded[i] = x >= 10 && x < 20 && y >= 10 && y < 20;
+        for (size_t k = 0; k < 3; ++k)
+          e.rgb[3 * i + k] = right ? float(splitmix64_mix(3 * i + k) % 256) : 120.0f;
+      });
+  ExemplarPyramid p = analyse_exemplar(exemplar, kLevels, 2);
   measure_usage(p, {});
   return p;
 }

@@ -18,6 +18,7 @@
 #include "../pixel_hash.h"
 #include "../vote.h"
 #include "core/error.h"
+#include "painted_exemplar.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -25,32 +26,21 @@ namespace {
 // Left half label 0 (warm stripes), right half label 1 (green blobs), each with an excluded
 // magenta square; altitude rising from bottom to top.
 Exemplar two_class_exemplar() {
-  Exemplar e;
-  e.width = 128;
-  e.height = 96;
-  const size_t n = size_t(e.width) * size_t(e.height);
-  e.rgb.resize(3 * n);
-  e.labels.resize(n);
-  e.excluded.resize(n);
-  e.altitude.resize(n);
-  for (int y = 0; y < e.height; ++y)
-    for (int x = 0; x < e.width; ++x) {
-      const size_t i = size_t(y) * size_t(e.width) + size_t(x);
-      const float noise = float(splitmix64_mix(i) % 41) - 20.0f;
-      const bool right = x >= e.width / 2;
-      e.labels[i] = right ? 1 : 0;
-      const bool hole =
-          (x >= 20 && x < 32 && y >= 40 && y < 52) || (x >= 90 && x < 102 && y >= 10 && y < 22);
-      e.excluded[i] = hole;
-      e.altitude[i] = 1.0f - float(y) / float(e.height - 1);
-      const float r = hole    ? 255
-                      : right ? 40 + 30 * std::sin(x * 0.7f) * std::sin(y * 0.6f) + noise
-                              : 200 + 40 * std::sin(x / 3.0f) + noise;
-      const float g = hole ? 0 : right ? 110 + noise : 170 + noise;
-      const float b = hole ? 255 : right ? 50 : 60 + noise;
-      e.rgb[3 * i] = r, e.rgb[3 * i + 1] = g, e.rgb[3 * i + 2] = b;
-    }
-  return e;
+  return test::painted_exemplar(128, 96, true, [](Exemplar& e, int x, int y, size_t i) {
+    const float noise = float(splitmix64_mix(i) % 41) - 20.0f;
+    const bool right = x >= e.width / 2;
+    e.labels[i] = right ? 1 : 0;
+    const bool hole =
+        (x >= 20 && x < 32 && y >= 40 && y < 52) || (x >= 90 && x < 102 && y >= 10 && y < 22);
+    e.excluded[i] = hole;
+    e.altitude[i] = 1.0f - float(y) / float(e.height - 1);
+    const float r = hole    ? 255
+                    : right ? 40 + 30 * std::sin(x * 0.7f) * std::sin(y * 0.6f) + noise
+                            : 200 + 40 * std::sin(x / 3.0f) + noise;
+    const float g = hole ? 0 : right ? 110 + noise : 170 + noise;
+    const float b = hole ? 255 : right ? 50 : 60 + noise;
+    e.rgb[3 * i] = r, e.rgb[3 * i + 1] = g, e.rgb[3 * i + 2] = b;
+  });
 }
 
 constexpr PixelRect kWhole{4096 + 7, 37, 256, 256};
