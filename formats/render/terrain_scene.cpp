@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/halo.h"
@@ -181,6 +182,14 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
     if (a == kNoVertex || b == kNoVertex) continue;
     triangles(a, b, below[next], below[k]);
   }
+  // The arrays were sized by tile_source's counts and are not initialized: a share that differs
+  // would leave garbage or overrun a neighbour's, so the two loops' agreement is checked.
+  if (next_vertex - first_vertex != source.vertices || next_index - first_index != source.indices)
+    throw std::logic_error("panorama mesh of cell " + cell.ToText() + ": wrote " +
+                           std::to_string(next_vertex - first_vertex) + " vertices and " +
+                           std::to_string(next_index - first_index) + " indices, counted " +
+                           std::to_string(source.vertices) + " and " +
+                           std::to_string(source.indices));
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when

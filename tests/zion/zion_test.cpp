@@ -188,9 +188,9 @@ double brightness(const Tile<float>& t, int c, int r) {
 // (sin(sun altitude) + c) / (cos i + c), at most 255 / its largest channel.
 std::map<std::string, double> lit_scene_p2(const Store& store, const json& fit,
                                            const std::string& cells_of) {
-  const double pi = std::acos(-1.0), c_corr = fit["c_correction"].get<double>();
-  const double flat = std::sin(fit["sun_altitude"].get<double>() * pi / 180);
-  const double lit_cos = fit["colour_min_incidence_cos"].get<double>();
+  const double pi = std::acos(-1.0), c_corr = fit.at("c_correction").get<double>();
+  const double flat = std::sin(fit.at("sun_altitude").get<double>() * pi / 180);
+  const double lit_cos = fit.at("colour_min_incidence_cos").get<double>();
   std::map<std::string, std::vector<double>> values;
   for (const CellId cell : store.tile_cells(cells_of)) {
     const Tile<float> k = float_tile(store, "pixel_classes", cell),
