@@ -55,7 +55,7 @@ class StreamWriter : public io::Archive {
       } else {
         const auto floats = openvdb::gridConstPtrCast<openvdb::FloatGrid>(grid);
         if (floats && !floats->saveFloatAsHalf())
-          write_float_grid(gd, *floats, os);
+          write_float_grid(gd, *floats, os, stream);
         else
           writeGrid(gd, grid, os, /*seekable=*/false);
         trees[&grid->baseTree()] = gd;
@@ -67,10 +67,11 @@ class StreamWriter : public io::Archive {
 
  private:
   // Archive::writeGrid's steps for a non-seekable stream, the delayed-load metadata and the
-  // buffers from leaf_buffers.
-  void write_float_grid(io::GridDescriptor& gd, const openvdb::FloatGrid& grid,
-                        std::ostream& os) const {
-    io::StreamMetadata::Ptr file = io::getStreamMetadataPtr(os);
+  // buffers from leaf_buffers. OpenVDB's stream keeps the address of the shared pointer it is given
+  // (setStreamMetadataPtr stores &meta), so the file's metadata is restored from `file`, the
+  // caller's pointer, which outlives the stream's use: a local copy would leave it dangling.
+  void write_float_grid(io::GridDescriptor& gd, const openvdb::FloatGrid& grid, std::ostream& os,
+                        io::StreamMetadata::Ptr& file) const {
     auto stream = std::make_shared<io::StreamMetadata>(*file);
     stream->setHalfFloat(false);
     stream->gridMetadata() = static_cast<const openvdb::MetaMap&>(grid);
