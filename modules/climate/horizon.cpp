@@ -77,15 +77,20 @@ void HorizonAngles::compute(const DilatedDem& surfaces, float zmax, const std::v
         }
         std::fill(on, on + c_lo, 0.f);
         std::fill(on + std::max(c_lo, c_hi), on + B, 0.f);
-        const float* __restrict first = &surface.at(col0 + dc, row);
+        // Block column c (c_lo <= c < c_hi) reads the pixel of column col0 + dc + c, inside the
+        // tile and its halo: `first` and `second` point at column c_lo's (column 0's may not
+        // exist).
+        const float* __restrict first = &surface.at(col0 + dc + c_lo, row);
         const float* __restrict z_0 = &z0[size_t(r * B)];
         float* __restrict b = &best[size_t(r * B)];
         if (w > 0) {
-          const float* __restrict second = below ? &surface.at(col0 + dc, row + 1) : first + 1;
+          const float* __restrict second =
+              below ? &surface.at(col0 + dc + c_lo, row + 1) : first + 1;
           for (int c = c_lo; c < c_hi; ++c)
-            take((1 - w) * first[c] + w * second[c], z_0[c], drop, inv_d, on[c], b[c]);
+            take((1 - w) * first[c - c_lo] + w * second[c - c_lo], z_0[c], drop, inv_d, on[c],
+                 b[c]);
         } else {
-          for (int c = c_lo; c < c_hi; ++c) take(first[c], z_0[c], drop, inv_d, on[c], b[c]);
+          for (int c = c_lo; c < c_hi; ++c) take(first[c - c_lo], z_0[c], drop, inv_d, on[c], b[c]);
         }
         if (check)
           for (int c = 0; c < B; ++c)

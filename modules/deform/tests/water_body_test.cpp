@@ -42,10 +42,13 @@ TEST(WaterBody, SpillLevelIsTheLowestBoundaryHeight) {
   for (int r = 0; r < b.height; ++r)
     for (int c = 0; c < b.width; ++c) {
       const size_t i = size_t(r) * size_t(b.width) + size_t(c);
-      bool edge = false;
+      bool edge = false;  // a neighbour outside the region or off the grid
       for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc)
-          edge = edge || !b.inside[size_t(r + dr) * size_t(b.width) + size_t(c + dc)];
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int nr = r + dr, nc = c + dc;
+          edge = edge || nr < 0 || nr >= b.height || nc < 0 || nc >= b.width ||
+                 !b.inside[size_t(nr) * size_t(b.width) + size_t(nc)];
+        }
       if (b.inside[i] && edge) lowest = std::min(lowest, double(b.terrain[i]));
     }
   EXPECT_EQ(water_level(b.raster(), {}), lowest);
