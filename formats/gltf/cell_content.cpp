@@ -97,7 +97,7 @@ Box mesh_box(const json& gltf, const std::string& where) {
   return box;
 }
 
-CellContent mesh_content(std::string glb, const EnuOrigin& origin, const std::string& where) {
+CellGlb mesh_content(std::string glb, const EnuOrigin& origin, const std::string& where) {
   const Box box = mesh_box(split_glb(glb, "content GLB (" + where + ")").gltf, where);
   return {std::move(glb), origin, box_region(origin, box)};
 }
@@ -113,7 +113,7 @@ double model_radius(const MeshContent& model) {
   return std::sqrt(r2);
 }
 
-std::optional<CellContent> instances_content(const InstancesContent& c,
+std::optional<CellGlb> instances_content(const InstancesContent& c,
                                              const std::vector<const MeshContent*>& models) {
   if (c.size() == 0) return std::nullopt;
   std::vector<double> radius;
@@ -127,10 +127,10 @@ std::optional<CellContent> instances_content(const InstancesContent& c,
     extend(box, {p[0] - r, p[1] - r, p[2] - r}, {p[0] + r, p[1] + r, p[2] + r});
   }
   const std::vector<char> glb = instances_glb(c, models);
-  return CellContent{{glb.begin(), glb.end()}, c.origin, box_region(c.origin, box)};
+  return CellGlb{{glb.begin(), glb.end()}, c.origin, box_region(c.origin, box)};
 }
 
-std::optional<CellContent> volume_content(const VolumeContent& volume, const std::string& where) {
+std::optional<CellGlb> volume_content(const VolumeContent& volume, const std::string& where) {
   static auto* const mesh_volume =
       plugin_function<decltype(maquette_vdb_mesh)>(kVdbPlugin, kVdbMeshEntry);
   MeshContent mesh;
@@ -168,7 +168,7 @@ void require_content_layer(const Store& store, const std::string& layer) {
                 "; content layers are of kind mesh, instances or volume)");
 }
 
-std::optional<CellContent> CellContentReader::read(const std::string& layer, CellId cell) {
+std::optional<CellGlb> CellContentReader::read(const std::string& layer, CellId cell) {
   const std::optional<std::string> blob = store_.get_content(layer, cell);
   if (!blob) return std::nullopt;
   const std::string where = "layer " + layer + ", cell " + cell.ToText();

@@ -20,7 +20,9 @@
 
 namespace maquette {
 
-struct CellContent {
+// Not runtime/operator.h's CellContent (what an operator makes): one name for two types would break
+// the one-definition rule.
+struct CellGlb {
   std::string glb;  // in the east-north-up frame at `origin`, glTF axes (x east, y up, z south)
   EnuOrigin origin;
   // What the content covers: west, south, east, north (radians), min, max height (metres), the
@@ -37,7 +39,7 @@ class CellContentReader {
   // level), nullopt when there is none (or a volume that meshes to nothing). Throws
   // maquette::Error naming the layer and cell for a corrupt blob, an unknown prototype or a cell
   // finer than the layer's level.
-  std::optional<CellContent> read(const std::string& layer, CellId cell);
+  std::optional<CellGlb> read(const std::string& layer, CellId cell);
 
  private:
   const Store& store_;

@@ -63,7 +63,7 @@ void export_glb(const Store& store, const Grid& grid, const GlbExport& spec,
   if (spec.content.empty()) return write_file(out, terrain);
 
   CellContentReader reader(store);
-  std::vector<std::pair<std::string, CellContent>> contents;  // by layer, then cell
+  std::vector<std::pair<std::string, CellGlb>> contents;  // by layer, then cell
   for (const std::string& layer : spec.content)
     for (CellId cell : cells)
       if (auto c = reader.read(layer, cell)) contents.emplace_back(layer + " " + cell.ToText(), *c);

@@ -121,7 +121,7 @@ int64_t export_tiles3d(const Store& store, const Grid& grid, const Tiles3dExport
       const std::string stem = tile_stem(l, cell);
       node->contents = {stem + ".glb"};
       for (const std::string& layer : spec.content) {
-        const std::optional<CellContent> content = content_reader.read(layer, cell);
+        const std::optional<CellGlb> content = content_reader.read(layer, cell);
         if (!content) continue;
         node->contents.push_back(stem + "." + layer + ".glb");
         // Placed in the export's frame by a node matrix around the GLB's own scene.

@@ -171,7 +171,7 @@ TEST(BadInput, DeepNestingAndHugeValuesGiveShortErrors) {
 // `cells cover --max-cells`, a billion by default; pipelines hold their cells: 2e7), under a
 // memory cap that an attempt to list them would exceed at once.
 TEST(BadInput, CoverTooFineIsRefusedWithTheEstimateUnderAMemoryCap) {
-  if (std::system("command -v prlimit >/dev/null") != 0) GTEST_SKIP() << "no prlimit";
+  if (const std::string why = address_space_cap_unavailable(); !why.empty()) GTEST_SKIP() << why;
   const std::string cap = "prlimit --as=2000000000";
   for (const char* compact : {"", " --compact"}) {
     const CliResult r = run_maquette_under(

@@ -28,7 +28,7 @@ std::vector<CellId> lines_to_cells(const std::string& text) {
 }
 
 TEST(CellsCover, TheGlobeAtLevel10StreamsUnderAMemoryCap) {
-  if (std::system("command -v prlimit >/dev/null") != 0) GTEST_SKIP() << "no prlimit";
+  if (const std::string why = address_space_cap_unavailable(); !why.empty()) GTEST_SKIP() << why;
   const CliResult r =
       run_maquette_under(kCap, "cells cover --bbox -180 -90 180 90 --level 10 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -50,7 +50,7 @@ TEST(CellsCover, TheGlobeAtLevel10StreamsUnderAMemoryCap) {
 }
 
 TEST(CellsCover, CompactIsComputedAsTheCellsCome) {
-  if (std::system("command -v prlimit >/dev/null") != 0) GTEST_SKIP() << "no prlimit";
+  if (const std::string why = address_space_cap_unavailable(); !why.empty()) GTEST_SKIP() << why;
   // 25 million cells at level 11, compacted to the six faces.
   const CliResult globe =
       run_maquette_under(kCap, "cells cover --bbox -180 -90 180 90 --level 11 --compact");

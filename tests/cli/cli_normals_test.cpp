@@ -77,7 +77,8 @@ TEST(CliNormals, DeriveStoresNormalsCompactlyWithinFourHundredthsOfADegree) {
 
   const CliResult info = run_maquette("info " + dir + "/z.mqt --json");
   ASSERT_EQ(info.exit_code, 0) << info.err;
-  for (const json& l : json::parse(info.out)["layers"])
+  const json listed = json::parse(info.out);  // a temporary would die before the loop's body
+  for (const json& l : listed["layers"])
     EXPECT_EQ(l["codec"], l["name"] == "normal" ? "normal_oct" : "zstd") << l.dump();
 
   for (const char* layer : {"normal", "slope", "aspect"}) {

@@ -68,6 +68,14 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
   return run_prefixed(env.empty() ? "" : "env " + env + " ", args);
 }
 
+std::string address_space_cap_unavailable() {
+#if defined(__SANITIZE_ADDRESS__)
+  return "an AddressSanitizer build reserves terabytes of address space: no cap can hold it";
+#else
+  return std::system("command -v prlimit >/dev/null") != 0 ? "no prlimit" : "";
+#endif
+}
+
 CliResult run_maquette_under(const std::string& wrapper, const std::string& args) {
   return run_prefixed(wrapper + " ", args);
 }

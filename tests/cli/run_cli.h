@@ -19,6 +19,11 @@ CliResult run_maquette(const std::string& args, const std::string& env = "");
 // "setpriv --reuid=65534 ..." (another user).
 CliResult run_maquette_under(const std::string& wrapper, const std::string& args);
 
+// Why `maquette` cannot be run under an address-space cap (prlimit --as) here, or "" when it can:
+// no prlimit, or an AddressSanitizer build (its shadow memory reserves terabytes of address space
+// at start, so any cap fails it before main).
+std::string address_space_cap_unavailable();
+
 // `maquette ARGS` as run_maquette, stopped with SIGINT if still running after `seconds` (for a
 // command that may not return, such as a server): exit code 124 then.
 CliResult run_maquette_limited(const std::string& args, int seconds);
