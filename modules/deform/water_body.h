@@ -16,9 +16,12 @@
 //   Nodata pixels are dry and stop the water. When the seed is not below the level there is no
 //   lake (an empty body).
 // - A leak, the water reaching a pixel outside the polygon (a given level above the spill level),
-//   is reported in `leak` (the first such pixel in fill order) and the lake is not filled:
+//   is reported in `leak` (the first such pixel in row-major order) and the lake is not filled:
 //   `wet` is then empty.
-// Deterministic: the fill order is a breadth-first search in a fixed neighbour order.
+// How: the runs of pixels below the level, row by row, in parallel by strips of rows (TBB); the
+// runs of neighbouring rows joined into 8-connected sets (union-find, one sweep); the seed's set is
+// the lake. Its result does not depend on the order of that work: the same bits for any threads.
+// Time linear in the pixels, memory in the runs and the lake. water_level also by strips.
 #pragma once
 
 #include <cstdint>
@@ -53,7 +56,7 @@ struct WaterBody {
   std::vector<int64_t> wet;  // the lake's pixels, sorted
   std::vector<float> depth;  // level - terrain, per wet pixel
   double area_m2 = 0, volume_m3 = 0;
-  std::optional<int64_t> leak;  // the first outside pixel the water reached
+  std::optional<int64_t> leak;  // the first outside pixel the water reaches (row-major)
 };
 
 // The level `rule` gives on `basin`'s boundary; throws when no boundary height is known (and the

@@ -77,15 +77,16 @@ CellId LakeContent::owner(const std::string& what, double lon, double lat) const
   return cell;
 }
 
-MeshObject LakeContent::object(const Lake& lake, const EnuOrigin& origin) const {
+MeshObject LakeContent::object(const Lake& lake, const PlacedMesh& mesh,
+                               const EnuOrigin& origin) const {
   const EnuFrame frame = enu_frame(origin);
   MeshObject object;
   object.provenance = lake.provenance;
-  object.indices = lake.indices;
-  object.positions.resize(3 * lake.places.size());
-  parallel_chunks(lake.places.size(), kChunk, [&](size_t first, size_t last) {
+  object.indices = mesh.indices;
+  object.positions.resize(3 * mesh.places.size());
+  parallel_chunks(mesh.places.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
-      const auto& [lon, lat, height] = lake.places[i];
+      const auto& [lon, lat, height] = mesh.places[i];
       const auto [x, y, z] = frame.to_enu(lon, lat, height);
       std::copy_n(std::array{float(x), float(y), float(z)}.begin(), 3, &object.positions[3 * i]);
     }
@@ -101,39 +102,32 @@ std::array<double, 3> LakeContent::place(const UnfoldedFaces& plane, double col,
   return {p.lon, p.lat, (*to_ellipsoid_)(p, height)};
 }
 
-LakeContent::Lake LakeContent::placed(const VectorFeature& f, const BasinRaster& basin,
-                                      const WaterBody& body) const {
-  const LakeMesh mesh = lake_mesh(basin, body);
+LakeContent::PlacedMesh LakeContent::placed(const Lake& lake) const {
+  LakeMesh mesh = lake_mesh(lake.basin, lake.body, lake.bottom);
   // Corner (col, row) of the mosaic lies on the face holding it in the plane unfolded around
   // the mosaic's face (a lake may cross a face seam).
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
-  Lake lake;
-  lake.where = describe(f);
-  lake.places.resize(mesh.vertices.size());
+  PlacedMesh placed;
+  placed.places.resize(mesh.vertices.size());
   // In order within each chunk: a failure (of the geoid's grid) is the lowest vertex's.
   parallel_chunks(mesh.vertices.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
       // A corner of a wet pixel.
       const LakeVertex& v = mesh.vertices[i];
-      lake.places[i] = place(plane, v.col - 0.5, v.row - 0.5, v.height);
+      placed.places[i] = place(plane, v.col - 0.5, v.row - 0.5, v.height);
     }
   });
-  lake.provenance = lake_provenance(f, body);
-  lake.indices = mesh.indices;
-  return lake;
+  placed.indices = std::move(mesh.indices);
+  return placed;
 }
 
-LakeContent::Column LakeContent::columns(const VectorFeature& f, const BasinRaster& basin,
-                                         const WaterBody& body) const {
+LakeContent::Column LakeContent::columns(const Lake& lake) const {
   const UnfoldedFaces plane(*ctx_.grid, input_.face, input_.level);
-  Column column{{basin.width, basin.height, {}, {}, basin.pixel_area_m2},
-                body,
-                {},
-                lake_provenance(f, body),
-                describe(f)};
+  const WaterBody& body = lake.body;
+  Column column{&lake, {}};
   const size_t wet = body.wet.size();
-  const double seed_col = double(body.seed % basin.width),
-               seed_row = double(body.seed / basin.width);
+  const int64_t width = lake.basin.width;
+  const double seed_col = double(body.seed % width), seed_row = double(body.seed / width);
   const std::array<std::array<double, 2>, 4> sides{{{seed_col + 0.5, seed_row},
                                                     {seed_col - 0.5, seed_row},
                                                     {seed_col, seed_row + 0.5},
@@ -141,8 +135,8 @@ LakeContent::Column LakeContent::columns(const VectorFeature& f, const BasinRast
   column.places.resize(wet + sides.size());
   parallel_chunks(column.places.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i)
-      column.places[i] = i < wet ? place(plane, double(body.wet[i] % basin.width),
-                                         double(body.wet[i] / basin.width), body.level)
+      column.places[i] = i < wet ? place(plane, double(body.wet[i] % width),
+                                         double(body.wet[i] / width), body.level)
                                  : place(plane, sides[i - wet][0], sides[i - wet][1], body.level);
   });
   return column;
@@ -150,7 +144,8 @@ LakeContent::Column LakeContent::columns(const VectorFeature& f, const BasinRast
 
 FogColumns LakeContent::fog(const Column& column, const EnuOrigin& origin) {
   const EnuFrame frame = enu_frame(origin);
-  const size_t wet = column.body.wet.size();
+  const WaterBody& body = column.lake->body;
+  const size_t wet = body.wet.size();
   std::vector<std::array<double, 3>> at(column.places.size());
   parallel_chunks(at.size(), kChunk, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
@@ -161,60 +156,64 @@ FogColumns LakeContent::fog(const Column& column, const EnuOrigin& origin) {
   });
   const auto& [east, west, south, north] = std::tie(at[wet], at[wet + 1], at[wet + 2], at[wet + 3]);
   const size_t seed =
-      size_t(std::lower_bound(column.body.wet.begin(), column.body.wet.end(), column.body.seed) -
-             column.body.wet.begin());
+      size_t(std::lower_bound(body.wet.begin(), body.wet.end(), body.seed) - body.wet.begin());
   const PixelLattice lattice{at[seed],
                              {east[0] - west[0], east[1] - west[1], east[2] - west[2]},
                              {south[0] - north[0], south[1] - north[1], south[2] - north[2]}};
   FogColumns fog =
-      lake_columns(column.basin, column.body, lattice, std::span(at).first(wet), kVoxelsDeep);
-  fog.provenance = column.provenance;
+      lake_columns(column.lake->basin, body, lattice, std::span(at).first(wet), kVoxelsDeep);
+  fog.provenance = column.lake->provenance;
   return fog;
 }
 
 void LakeContent::add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) {
   if (!to_ellipsoid_) to_ellipsoid_.emplace(ellipsoidal_heights(ctx_.input_layer("dem")));
-  const CellContent& any = output_.content.begin()->second;
-  if (any.wants("mesh")) {
-    const Lake lake = placed(f, basin, body);
-    const auto& first = lake.places.front();
-    const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
-    MeshContent& content = output_.content.at(cell).mesh("mesh");
-    if (content.materials.empty()) content.materials.push_back(material_);
-    unlit_.push_back({cell, content.objects.size()});
-    content.objects.push_back(object(lake, content.origin));
-    content.objects.back().material = 0;
-  }
-  if (any.wants("volume")) columns_.push_back(columns(f, basin, body));
+  lakes_.push_back({{basin.width, basin.height, {}, {}, basin.pixel_area_m2},
+                    body,
+                    lake_flat_bottom(basin, body),
+                    lake_provenance(f, body),
+                    describe(f)});
 }
 
 void LakeContent::finish() {
-  // Each side's failure kept, the volumes' rethrown first: the same error whatever the threads.
-  std::exception_ptr normals_failed, volumes_failed;
+  if (lakes_.empty()) return;
+  const CellContent& any = output_.content.begin()->second;
+  // Each side's failure kept, the meshes' rethrown first: the same error whatever the threads.
+  std::exception_ptr meshes_failed, volumes_failed;
   tbb::parallel_invoke(
       [&] {
         try {
-          for (const Unlit& mesh : unlit_) {
-            MeshObject& water = output_.content.at(mesh.cell).mesh("mesh").objects[mesh.object];
-            water = with_facet_normals(water);
-          }
+          if (any.wants("mesh")) add_meshes();
         } catch (...) {
-          normals_failed = std::current_exception();
+          meshes_failed = std::current_exception();
         }
       },
       [&] {
         try {
-          write_volumes();
+          if (any.wants("volume")) write_volumes();
         } catch (...) {
           volumes_failed = std::current_exception();
         }
       });
+  if (meshes_failed) std::rethrow_exception(meshes_failed);
   if (volumes_failed) std::rethrow_exception(volumes_failed);
-  if (normals_failed) std::rethrow_exception(normals_failed);
+}
+
+void LakeContent::add_meshes() {
+  for (const Lake& lake : lakes_) {
+    const PlacedMesh mesh = placed(lake);
+    const auto& first = mesh.places.front();
+    const CellId cell = owner(lake.where + ": the lake's mesh", first[0], first[1]);
+    MeshContent& content = output_.content.at(cell).mesh("mesh");
+    if (content.materials.empty()) content.materials.push_back(material_);
+    content.objects.push_back(with_facet_normals(object(lake, mesh, content.origin)));
+    content.objects.back().material = 0;
+  }
 }
 
 void LakeContent::write_volumes() {
-  if (columns_.empty()) return;
+  std::vector<Column> lakes;
+  for (const Lake& lake : lakes_) lakes.push_back(columns(lake));
   static auto* const fog_of =
       plugin_function<decltype(maquette_vdb_column_fog)>(kVdbPlugin, kVdbColumnFogEntry);
   static auto* const anchors_of =
@@ -222,9 +221,9 @@ void LakeContent::write_volumes() {
   // First guess of each lake's owner: the cell of the bounding-box centre of its wet pixels'
   // centres, in a frame at the first; the grid's active voxels are within a voxel of that box.
   std::vector<CellId> owners;
-  for (const Column& lake : columns_) {
+  for (const Column& lake : lakes) {
     const GeodeticPoint p = box_centre(lake.places);
-    owners.push_back(owner(lake.where + ": the lake's volume", p.lon, p.lat));
+    owners.push_back(owner(lake.lake->where + ": the lake's volume", p.lon, p.lat));
   }
   // Built in each owner's frame; a grid whose anchor falls in another cell (a lake centred within
   // a voxel of a cell's edge) moves there once, and the volumes are built again (the runner then
@@ -235,9 +234,9 @@ void LakeContent::write_volumes() {
       VolumeContent& volume = output_.content.at(cell).volume("volume");
       std::vector<FogColumns> bodies;
       std::vector<size_t> which;
-      for (size_t i = 0; i < columns_.size(); ++i)
+      for (size_t i = 0; i < lakes.size(); ++i)
         if (owners[i] == cell) {
-          bodies.push_back(fog(columns_[i], volume.origin));
+          bodies.push_back(fog(lakes[i], volume.origin));
           which.push_back(i);
         }
       fog_of(bodies, volume.origin, "deform.water, cell " + cell.ToText(), volume);
@@ -249,7 +248,7 @@ void LakeContent::write_volumes() {
         if (!anchors[k]) continue;
         const GeodeticPoint p =
             frame.to_geodetic((*anchors[k])[0], (*anchors[k])[1], (*anchors[k])[2]);
-        const CellId at = owner(columns_[which[k]].where + ": the lake's volume", p.lon, p.lat);
+        const CellId at = owner(lakes[which[k]].lake->where + ": the lake's volume", p.lon, p.lat);
         moved = moved || at != cell;
         owners[which[k]] = at;
       }

@@ -40,53 +40,54 @@ class LakeContent {
   // their meshes of `material`.
   LakeContent(const StepContext& ctx, const Mosaic& input, Mosaic& output, Material material);
 
-  // The lake of water stroke `f` (a non-empty body of `basin`): its mesh added to its owner
-  // cell's mesh port, when the step maps it (its normals set by finish), and kept for the volume.
+  // The lake of water stroke `f` (a non-empty body of `basin`), kept for finish (of `basin`, its
+  // size and pixel area only: the raster need not outlive the call).
   void add(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body);
 
-  // Once the lakes are added: their meshes' facet normals and, when the step maps the volume
-  // port, their volumes, the two at once (TBB: the volumes' serial writing beside the normals;
-  // the same content for any thread count). The volumes: one VDB stream per owner cell, a fog
-  // grid "water" per lake (horizontal voxels of a pixel's side, vertical ones of the lake's
-  // greatest depth over kVoxelsDeep, a layer of voxel faces at the water's surface, so that no
-  // voxel layer is cut by it).
+  // Once the lakes are added, their content, for the ports the step maps: the meshes beside the
+  // volumes (TBB: each side in parallel too, and the volumes' serial writing beside the meshes'
+  // work; the same content for any thread count). The meshes: each lake's added to its owner
+  // cell's mesh port, in the lakes' order, with its facet normals. The volumes: one VDB stream
+  // per owner cell, a fog grid "water" per lake (horizontal voxels of a pixel's side, vertical
+  // ones of the lake's greatest depth over kVoxelsDeep, a layer of voxel faces at the water's
+  // surface, so that no voxel layer is cut by it). A failure of the meshes is thrown before one
+  // of the volumes.
   void finish();
 
   static constexpr int kVoxelsDeep = 32;
 
  private:
+  // A lake added: its body and what its content is made of.
   struct Lake {
-    std::vector<std::array<double, 3>> places;  // lon, lat, ellipsoidal height per mesh vertex
-    ObjectProvenance provenance;
-    std::vector<uint32_t> indices;  // the mesh's triangles
-    std::string where;              // "feature 7 (tool water)"
-  };
-  // A lake's volume: its body, and the places (lon, lat, ellipsoidal height) of its wet pixels'
-  // centres on the water's surface, then of the seed pixel's east, west, south and north sides'
-  // midpoints (its lattice's axes in a frame).
-  struct Column {
-    BasinRaster basin;  // its size only
+    BasinRaster basin;  // its size and pixel area only
     WaterBody body;
-    std::vector<std::array<double, 3>> places;
+    double bottom = 0;  // its mesh's flat bottom (lake_flat_bottom)
     ObjectProvenance provenance;
-    std::string where;
+    std::string where;  // "feature 7 (tool water)"
   };
-  // A mesh added without its normals yet: its cell and its place in the cell's mesh port.
-  struct Unlit {
-    CellId cell;
-    size_t object = 0;
+  // A lake's flat-bottomed mesh, its vertices placed: lon, lat, ellipsoidal height.
+  struct PlacedMesh {
+    std::vector<std::array<double, 3>> places;
+    std::vector<uint32_t> indices;  // the mesh's triangles
   };
-  // The lake's flat-bottomed mesh, its vertices placed (the heights on the ellipsoid).
-  Lake placed(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) const;
-  // The lake's volume: its wet pixels' centres and seed's sides placed.
-  Column columns(const VectorFeature& f, const BasinRaster& basin, const WaterBody& body) const;
+  // A lake's volume: the places (lon, lat, ellipsoidal height) of its wet pixels' centres on the
+  // water's surface, then of the seed pixel's east, west, south and north sides' midpoints (its
+  // lattice's axes in a frame).
+  struct Column {
+    const Lake* lake = nullptr;
+    std::vector<std::array<double, 3>> places;
+  };
+  PlacedMesh placed(const Lake& lake) const;
+  Column columns(const Lake& lake) const;
   // The place (lon, lat, ellipsoidal height) of the mosaic's pixel-centre coordinates (col, row)
   // (corners at half-integers) in `plane` (unfolded around the mosaic's face) at `height` of the
   // DEM's datum; the point lies on a wet pixel (which has a place).
   std::array<double, 3> place(const UnfoldedFaces& plane, double col, double row,
                               double height) const;
+  // Each lake's mesh with its normals on its owner cell's mesh port, in the lakes' order.
+  void add_meshes();
   void write_volumes();
-  MeshObject object(const Lake& lake, const EnuOrigin& origin) const;
+  MeshObject object(const Lake& lake, const PlacedMesh& mesh, const EnuOrigin& origin) const;
   // The columns of `column` in the frame of `origin` (water_columns.h).
   static FogColumns fog(const Column& column, const EnuOrigin& origin);
   CellId owner(const std::string& what, double lon, double lat) const;
@@ -98,8 +99,7 @@ class LakeContent {
   std::optional<EllipsoidalHeights> to_ellipsoid_;
   const Mosaic& input_;
   Mosaic& output_;
-  std::vector<Column> columns_;
-  std::vector<Unlit> unlit_;
+  std::vector<Lake> lakes_;
 };
 
 }  // namespace maquette::deform

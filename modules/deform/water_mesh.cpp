@@ -252,10 +252,9 @@ double lake_flat_bottom(const BasinRaster& basin, const WaterBody& body) {
   return double(lowest) - 1;
 }
 
-LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body) {
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body, double bottom) {
   if (body.wet.empty()) throw Error("lake_mesh: an empty body");
   const WetRaster wet(basin, body);
-  const double bottom = lake_flat_bottom(basin, body);
   // Blocks of kBlockRows pixel rows from the lake's first row, built in parallel; then joined in
   // block order, each block's vertices after those of the blocks before, its references to the
   // block before's vertices resolved.

@@ -39,6 +39,8 @@ struct LakeMesh {
 // The flat bottom's height: 1 m below the lowest terrain of the lake's pixels.
 double lake_flat_bottom(const BasinRaster& basin, const WaterBody& body);
 
-LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body);
+// The mesh with its flat bottom at `bottom` (lake_flat_bottom, below the lake's bed); of `basin`
+// only its width and height are read (the caller may build the mesh after the raster is gone).
+LakeMesh lake_mesh(const BasinRaster& basin, const WaterBody& body, double bottom);
 
 }  // namespace maquette::deform

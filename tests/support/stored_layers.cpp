@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <vector>
 
 namespace maquette::test {
@@ -14,14 +15,22 @@ Tile<float> float_tile(const Store& store, const std::string& layer, CellId cell
   return to_tile<float>(*raw, info.nodata ? &*info.nodata : nullptr);
 }
 
-size_t expect_same_tiles(const Store& a, const Store& b, const std::string& layer) {
-  const std::vector<CellId> cells = a.tile_cells(layer);
-  EXPECT_EQ(cells, b.tile_cells(layer)) << layer;
+std::vector<CellId> differing_tiles(const Store& a, const Store& b, const std::string& layer) {
+  const std::vector<CellId> in_a = a.tile_cells(layer), in_b = b.tile_cells(layer);
+  std::set<CellId> cells(in_a.begin(), in_a.end());
+  cells.insert(in_b.begin(), in_b.end());
+  std::vector<CellId> differ;
   for (const CellId cell : cells) {
-    const auto in_a = a.get_tile(layer, cell), in_b = b.get_tile(layer, cell);
-    EXPECT_TRUE(in_a && in_b && in_a->bytes == in_b->bytes) << layer << ", cell " << cell.ToText();
+    const auto tile_a = a.get_tile(layer, cell), tile_b = b.get_tile(layer, cell);
+    if (!tile_a || !tile_b || tile_a->bytes != tile_b->bytes) differ.push_back(cell);
   }
-  return cells.size();
+  return differ;
+}
+
+size_t expect_same_tiles(const Store& a, const Store& b, const std::string& layer) {
+  for (const CellId cell : differing_tiles(a, b, layer))
+    ADD_FAILURE() << layer << ", cell " << cell.ToText() << ": not the same tile in both stores";
+  return a.tile_cells(layer).size();
 }
 
 size_t expect_same_content(const Store& a, const Store& b, const std::string& layer) {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/cell_id.h"
 #include "core/tile.h"
@@ -16,8 +17,12 @@ namespace maquette::test {
 // the store does not have.
 Tile<float> float_tile(const Store& store, const std::string& layer, CellId cell);
 
+// The cells of raster layer `layer` whose tiles' bytes differ between `a` and `b`, or that only
+// one of them holds, in order (no test failure: a test may expect some).
+std::vector<CellId> differing_tiles(const Store& a, const Store& b, const std::string& layer);
+
 // Test failures (gtest) unless `a` and `b` hold tiles of raster layer `layer` in the same cells,
-// with the same bytes; the number of cells of `a`.
+// with the same bytes (one per differing_tiles cell); the number of cells of `a`.
 size_t expect_same_tiles(const Store& a, const Store& b, const std::string& layer);
 // The same for the content blobs of content layer `layer`.
 size_t expect_same_content(const Store& a, const Store& b, const std::string& layer);

@@ -5,6 +5,7 @@
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -90,6 +91,63 @@ TEST(WaterBody, LevelFromAttributes) {
       EXPECT_NE(std::string(e.what()).find(bad.begin()->dump()), std::string::npos) << e.what();
     }
   }
+}
+
+// The pixels below `level` 8-connected to `seed` (a breadth-first flood, the oracle), flagged.
+std::vector<uint8_t> flood(const Basin& b, double level, int64_t seed) {
+  std::vector<uint8_t> wet(b.terrain.size(), 0);
+  std::vector<int64_t> queue{seed};
+  wet[size_t(seed)] = 1;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int64_t col = queue[head] % b.width, row = queue[head] / b.width;
+    for (int64_t r = std::max<int64_t>(row - 1, 0); r <= std::min<int64_t>(row + 1, b.height - 1);
+         ++r)
+      for (int64_t c = std::max<int64_t>(col - 1, 0); c <= std::min<int64_t>(col + 1, b.width - 1);
+           ++c) {
+        const size_t j = size_t(r * b.width + c);
+        if (!wet[j] && b.terrain[j] < level) wet[j] = 1, queue.push_back(int64_t(j));
+      }
+  }
+  return wet;
+}
+
+// A channel winding down 120 rows (many of the fill's strips of rows), each turn joined by
+// diagonal steps only, beside pockets just one dry row or column away; the lake against the
+// oracle's flood, and with two outlets cut through the stroke its leak: the first outside pixel
+// of the flood in row-major order.
+TEST(WaterBody, WindingChannelAsTheFloodFillsIt) {
+  Basin b{40, 120, 1.0, {}, {}};
+  b.terrain.assign(size_t(b.width) * size_t(b.height), 10.0f);
+  b.inside.assign(b.terrain.size(), 0);
+  for (int r = 1; r + 1 < b.height; ++r)
+    for (int c = 1; c + 1 < b.width; ++c) b.inside[size_t(r * b.width + c)] = 1;
+  const auto low = [&](int c, int r) {
+    b.terrain[size_t(r * b.width + c)] = float((c * 7 + r * 3) % 5);
+  };
+  for (int r = 2; r < b.height - 2; r += 4) {
+    for (int c = 2; c < b.width - 2; ++c) low(c, r);
+    const bool right = r / 4 % 2 == 0;  // the turn: a diagonal zigzag to the next corridor
+    const int c = right ? b.width - 3 : 2, in = right ? 1 : -1;
+    if (r + 4 < b.height - 2) low(c + in, r + 1), low(c, r + 2), low(c + in, r + 3);
+    low(right ? 4 : b.width - 5, r + 2);  // a pocket: one dry row from the corridors
+  }
+  const double level = 6;
+  const WaterBody body = fill_basin(b.raster(), level);
+  ASSERT_FALSE(body.leak);
+  const std::vector<uint8_t> oracle = flood(b, level, body.seed);
+  std::vector<int64_t> wet;
+  for (size_t i = 0; i < oracle.size(); ++i)
+    if (oracle[i]) wet.push_back(int64_t(i));
+  EXPECT_EQ(body.wet, wet);
+  EXPECT_GT(body.wet.size(), size_t(29 * 36));  // every corridor, not the pockets
+  for (size_t k = 0; k < body.wet.size(); ++k)
+    EXPECT_EQ(body.depth[k], float(level - double(b.terrain[size_t(body.wet[k])])));
+
+  for (const int r : {62, 30}) low(0, r), low(1, r);  // two outlets to the raster's edge
+  const WaterBody leaking = fill_basin(b.raster(), level);
+  ASSERT_TRUE(leaking.leak);
+  EXPECT_EQ(*leaking.leak, 30 * b.width);
+  EXPECT_TRUE(leaking.wet.empty());
 }
 
 // r.lake's depths (NaN: dry) at `level` from the seed pixel.

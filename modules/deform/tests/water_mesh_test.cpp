@@ -72,9 +72,9 @@ TEST(WaterMesh, SameMeshForOneThreadAndMore) {
   LakeMesh one;
   {
     const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = lake_mesh(b.raster(), body);
+    one = lake_mesh(b.raster(), body, lake_flat_bottom(b.raster(), body));
   }
-  const LakeMesh many = lake_mesh(b.raster(), body);
+  const LakeMesh many = lake_mesh(b.raster(), body, lake_flat_bottom(b.raster(), body));
   EXPECT_EQ(one.indices, many.indices);
   ASSERT_EQ(one.vertices.size(), many.vertices.size());
   for (size_t i = 0; i < one.vertices.size(); ++i) {
@@ -99,7 +99,7 @@ bool on_shore(const Basin& b, const WaterBody& body, const LakeVertex& v) {
 // every vertex a shoreline corner, at the level or at the bottom; its volume the wet pixels'
 // area times the prism's height (the divergence theorem's sum, to rounding). Returns the mesh.
 LakeMesh expect_flat_prism(const Basin& b, const WaterBody& body) {
-  const LakeMesh flat = lake_mesh(b.raster(), body);
+  const LakeMesh flat = lake_mesh(b.raster(), body, lake_flat_bottom(b.raster(), body));
   expect_closed_and_oriented(flat);
   float lowest = INFINITY;
   for (const int64_t i : body.wet) lowest = std::min(lowest, b.terrain[size_t(i)]);
