@@ -9,8 +9,12 @@
 // minutes of CPU per image; 8 is what benchmarks/README.md's later rows use). Ours is measured
 // with its vote of radius `vote` (synthesis.h), and its copy with ebsynth's plain vote applied
 // (each pixel the mean colour of the 5 x 5 overlapping patches' proposals), so that the
-// smoothing of a mean vote is measured apart from the copy's coherence.
+// smoothing of a mean vote is measured apart from the copy's coherence. `params`, a JSON object
+// of synthesis.transfer's weights (synthesis_params_schema(): "w_spread", "w_usage", ...),
+// overrides the defaults for ours; "ours" as the last argument skips ebsynth (a variant's run,
+// measured against an earlier run's ebsynth).
 // Usage: synthesis_ebsynth_compare [side (512)] [threads (2)] [coherence step (2)] [vote (1)]
+//                                  [params ({})] [ours]
 #include <omp.h>
 
 #include <array>
@@ -21,6 +25,7 @@
 #include <string>
 
 #include "ebsynth.h"
+#include "transfer_params.h"
 #include "zion_fixture.h"
 
 namespace maquette::synthesis::bench {
@@ -89,7 +94,42 @@ void print(const char* name, const Metrics& m) {
   std::printf("\n");
 }
 
-int run(int side, int threads, int step, const SynthesisParams& params) {
+struct EbsynthRun {
+  Timed time;
+  std::vector<int32_t> source;  // exemplar pixel per output pixel (its nearest-neighbour field)
+  std::vector<float> rgb;       // its votes' colours
+};
+
+// ebsynth on the fixture's side x side window, on `threads` OpenMP threads.
+EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads) {
+  EbsynthRun r;
+  const int channels = zion_params().at("classes").get<int>() + 1;
+  std::vector<uint8_t> style(e.rgb.size());
+  for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
+  std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
+  std::vector<uint8_t> target_guide = one_hot(zion_labels({0, 0, side, side}), nullptr, channels);
+  std::vector<float> style_weights(3, 1.0f / 3), guide_weights(size_t(channels), 1.0f / channels);
+  constexpr int kPatch = 5;
+  int levels = 0;  // as ebsynth's command line: while the smaller image is >= 2 patches + 1
+  while (std::min({e.width, e.height, side}) >> levels >= 2 * kPatch + 1) ++levels;
+  std::vector<int> search_vote(size_t(levels), 6), patch_match(size_t(levels), 4),
+      stop(size_t(levels), 5);
+  std::vector<int> nnf(size_t(side) * size_t(side) * 2);
+  std::vector<uint8_t> image(size_t(side) * size_t(side) * 3);
+  omp_set_num_threads(threads);
+  r.time = timed([&] {
+    ebsynthRun(EBSYNTH_BACKEND_CPU, 3, channels, e.width, e.height, style.data(),
+               source_guide.data(), side, side, target_guide.data(), nullptr, style_weights.data(),
+               guide_weights.data(), 3500.0f, kPatch, EBSYNTH_VOTEMODE_PLAIN, levels,
+               search_vote.data(), patch_match.data(), stop.data(), 0, nnf.data(), image.data());
+  });
+  r.source.resize(nnf.size() / 2);
+  for (size_t i = 0; i < r.source.size(); ++i) r.source[i] = nnf[2 * i + 1] * e.width + nnf[2 * i];
+  r.rgb.assign(image.begin(), image.end());
+  return r;
+}
+
+int run(int side, int threads, int step, const SynthesisParams& params, bool with_ebsynth) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
@@ -102,50 +142,27 @@ int run(int side, int threads, int step, const SynthesisParams& params) {
   for (size_t i = 0; i < ours.size(); ++i)
     for (size_t k = 0; k < 3; ++k) ours_rgb[3 * i + k] = e.rgb[3 * size_t(ours[i]) + k];
 
-  const int channels = zion_params().at("classes").get<int>() + 1;
-  std::vector<uint8_t> style(e.rgb.size());
-  for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
-  std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
-  std::vector<uint8_t> target_guide = one_hot(zion_labels(out), nullptr, channels);
-  std::vector<float> style_weights(3, 1.0f / 3), guide_weights(size_t(channels), 1.0f / channels);
-  constexpr int kPatch = 5;
-  int levels = 0;  // as ebsynth's command line: while the smaller image is >= 2 patches + 1
-  while (std::min({e.width, e.height, side}) >> levels >= 2 * kPatch + 1) ++levels;
-  std::vector<int> search_vote(size_t(levels), 6), patch_match(size_t(levels), 4),
-      stop(size_t(levels), 5);
-  std::vector<int> nnf(size_t(side) * size_t(side) * 2);
-  std::vector<uint8_t> image(size_t(side) * size_t(side) * 3);
-  omp_set_num_threads(threads);
-  const Timed ebsynth_time = timed([&] {
-    ebsynthRun(EBSYNTH_BACKEND_CPU, 3, channels, e.width, e.height, style.data(),
-               source_guide.data(), side, side, target_guide.data(), nullptr, style_weights.data(),
-               guide_weights.data(), 3500.0f, kPatch, EBSYNTH_VOTEMODE_PLAIN, levels,
-               search_vote.data(), patch_match.data(), stop.data(), 0, nnf.data(), image.data());
-  });
-  std::vector<int32_t> ebsynth_source(nnf.size() / 2);
-  for (size_t i = 0; i < ebsynth_source.size(); ++i)
-    ebsynth_source[i] = nnf[2 * i + 1] * e.width + nnf[2 * i];
-  const std::vector<float> ebsynth_rgb(image.begin(), image.end());
-
   std::printf("output %d x %d (%.3f MP), exemplar %d x %d, %d threads\n", side, side, mp, e.width,
               e.height, threads);
   std::printf("exemplar analysis (ours, once): CPU %.1f s, wall %.1f s\n", analysis.cpu,
               analysis.wall);
   std::printf("ours:    CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ours_time.cpu,
               ours_time.cpu / mp, ours_time.wall, ours_time.wall / mp);
-  std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth_time.cpu,
-              ebsynth_time.cpu / mp, ebsynth_time.wall, ebsynth_time.wall / mp);
-  std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth_time.cpu / ours_time.cpu,
-              ebsynth_time.wall / ours_time.wall);
   const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, step));
-  const Metrics ebsynth_m =
-      metrics(e, tally(e, assessed(out, ebsynth_source, ebsynth_rgb), out, step));
   const Metrics averaged_m =
       metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours)), out, step));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
   print("ours", ours_m);
   print("ours+mean", averaged_m);
+  if (!with_ebsynth) return 0;
+  const EbsynthRun ebsynth = run_ebsynth(e, side, threads);
+  std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth.time.cpu,
+              ebsynth.time.cpu / mp, ebsynth.time.wall, ebsynth.time.wall / mp);
+  std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth.time.cpu / ours_time.cpu,
+              ebsynth.time.wall / ours_time.wall);
+  const Metrics ebsynth_m =
+      metrics(e, tally(e, assessed(out, ebsynth.source, ebsynth.rgb), out, step));
   print("ebsynth", ebsynth_m);
   std::printf("coherence ours / ebsynth: %.2f, ours+mean / ebsynth: %.2f\n",
               ours_m.coherence / ebsynth_m.coherence, averaged_m.coherence / ebsynth_m.coherence);
@@ -163,12 +180,23 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "synthesis_ebsynth_compare: coherence step %d: must be >= 1\n", step);
     return 1;
   }
-  maquette::synthesis::SynthesisParams params;
+  // The weights: the schema's defaults, overridden by argument 5.
+  const nlohmann::json schema = maquette::synthesis::synthesis_params_schema();
+  const nlohmann::json given = argc > 5 ? nlohmann::json::parse(argv[5]) : nlohmann::json::object();
+  nlohmann::json weights;
+  for (const auto& [key, value] : schema.items()) weights[key] = given.value(key, value["default"]);
+  for (const auto& [key, value] : given.items())
+    if (!schema.contains(key)) {
+      std::fprintf(stderr, "synthesis_ebsynth_compare: params: no weight \"%s\"\n", key.c_str());
+      return 1;
+    }
+  maquette::synthesis::SynthesisParams params = maquette::synthesis::synthesis_params(weights);
   if (argc > 4) params.vote_radius = std::stoi(argv[4]);
   if (params.vote_radius < 0 || params.vote_radius > maquette::synthesis::kVoteRadius) {
     std::fprintf(stderr, "synthesis_ebsynth_compare: vote %d: must be 0 .. %d\n",
                  params.vote_radius, maquette::synthesis::kVoteRadius);
     return 1;
   }
-  return maquette::synthesis::bench::run(side, threads, step, params);
+  const bool with_ebsynth = !(argc > 6 && std::string(argv[6]) == "ours");
+  return maquette::synthesis::bench::run(side, threads, step, params, with_ebsynth);
 }

@@ -6,6 +6,30 @@
 
 namespace maquette::synthesis {
 
+std::vector<float> usage_of_copy(const ExemplarLevel& finest, const std::vector<int32_t>& source) {
+  const int w = finest.width, h = finest.height;
+  std::vector<double> count(source.size(), 0);
+  for (size_t i = 0; i < source.size(); ++i)
+    if (!finest.excluded[i]) count[size_t(source[i])] += 1;
+  std::vector<float> usage(count.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double sum = 0;
+      int n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h ||
+              finest.excluded[size_t(finest.index(nx, ny))])
+            continue;
+          sum += count[size_t(finest.index(nx, ny))];
+          ++n;
+        }
+      usage[size_t(finest.index(x, y))] = n > 0 ? float(std::max(0.0, sum / n - 1)) : 0.0f;
+    }
+  return usage;
+}
+
 void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
   ExemplarLevel& finest = pyramid.levels[0];
   const int w = finest.width, h = finest.height, halo = synthesis_halo();
@@ -22,25 +46,7 @@ void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
   unpenalized.w_usage = 0;
   const std::vector<int32_t> source = synthesize(pyramid, own, unpenalized, {0, 0, w, h});
 
-  std::vector<double> count(source.size(), 0);
-  for (size_t i = 0; i < source.size(); ++i)
-    if (!finest.excluded[i]) count[size_t(source[i])] += 1;
-  finest.usage.assign(count.size(), 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      double sum = 0;
-      int n = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= w || ny >= h ||
-              finest.excluded[size_t(finest.index(nx, ny))])
-            continue;
-          sum += count[size_t(finest.index(nx, ny))];
-          ++n;
-        }
-      finest.usage[size_t(finest.index(x, y))] = n > 0 ? float(std::max(0.0, sum / n - 1)) : 0.0f;
-    }
+  finest.usage = usage_of_copy(finest, source);
   for (size_t l = 1; l < pyramid.levels.size(); ++l) {
     const ExemplarLevel& fine = pyramid.levels[l - 1];
     ExemplarLevel& coarse = pyramid.levels[l];

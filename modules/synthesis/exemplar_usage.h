@@ -20,4 +20,11 @@ namespace maquette::synthesis {
 // Sets pyramid.levels[l].usage for every level. Precondition: the pyramid has kLevels levels.
 void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params);
 
+// The finest level's usage from a copy of its own label map: `source` holds, for each pixel of
+// the copy (the level's size, row-major), the level's pixel it copies. Each pixel counts the
+// allowed pixels of the copy that copy it (the excluded ones are not counted); every pixel's
+// usage is the mean count over the allowed pixels of its 3 x 3 neighbourhood (within the level),
+// minus 1, at least 0; 0 when it has no allowed neighbour.
+std::vector<float> usage_of_copy(const ExemplarLevel& finest, const std::vector<int32_t>& source);
+
 }  // namespace maquette::synthesis

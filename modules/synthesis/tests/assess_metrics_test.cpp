@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "../pixel_hash.h"
+#include "painted_exemplar.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -17,23 +18,11 @@ namespace {
 // width x height pixels of hashed colours (0..255 integers, so no two 5 x 5 patches are
 // equal), label 0 on the left half and 1 on the right, altitude x / (width - 1), none excluded.
 Exemplar noise_exemplar(int width, int height, uint64_t seed) {
-  Exemplar e;
-  e.width = width;
-  e.height = height;
-  const size_t n = size_t(width) * size_t(height);
-  e.rgb.resize(3 * n);
-  e.labels.resize(n);
-  e.excluded.assign(n, 0);
-  e.altitude.resize(n);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const size_t i = size_t(y) * size_t(width) + size_t(x);
-      for (size_t k = 0; k < 3; ++k)
-        e.rgb[3 * i + k] = float(splitmix64_mix(seed + 3 * i + k) % 256);
-      e.labels[i] = x >= width / 2 ? 1 : 0;
-      e.altitude[i] = float(x) / float(width - 1);
-    }
-  return e;
+  return test::painted_exemplar(width, height, true, [seed](Exemplar& e, int x, int, size_t i) {
+    for (size_t k = 0; k < 3; ++k) e.rgb[3 * i + k] = float(splitmix64_mix(seed + 3 * i + k) % 256);
+    e.labels[i] = x >= e.width / 2 ? 1 : 0;
+    e.altitude[i] = float(x) / float(e.width - 1);
+  });
 }
 
 Exemplar constant_exemplar(int width, int height, float grey) {

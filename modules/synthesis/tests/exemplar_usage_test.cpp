@@ -1,12 +1,15 @@
 // The exemplar's measured over-use (exemplar_usage.h) on a two-class exemplar whose left class
 // is one flat colour (every patch alike) and whose right class is noise, with an excluded square:
-// every level has a usage, never negative, some pixel above its share; a coarser level's is the
-// mean of its 2 x 2 children; a measure repeated gives the same values.
+// every level has a usage, never negative, some pixel above its share; the flat class is
+// over-used more than the noise; a coarser level's is the mean of its 2 x 2 children; a measure
+// repeated gives the same values. And the count itself (usage_of_copy) on a hand-built copy
+// whose counts are known.
 #include "../exemplar_usage.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
 #include "core/splitmix64.h"
 #include "painted_exemplar.h"
@@ -36,6 +39,61 @@ TEST(ExemplarUsage, EveryLevelHasAUsageNeverNegative) {
   }
   // The synthesis is not a permutation of the exemplar: some pixel is used above its share.
   EXPECT_GT(*std::max_element(p.levels[0].usage.begin(), p.levels[0].usage.end()), 0.0f);
+}
+
+// Per class of the fixture (0: flat, 1: noise), the mean and the largest usage of its allowed
+// pixels at the finest level.
+std::array<std::array<double, 2>, 2> class_usage(const ExemplarLevel& level) {
+  std::array<std::array<double, 2>, 2> out{};
+  std::array<int, 2> n{};
+  for (const int32_t i : level.allowed) {
+    const size_t c = level.labels[size_t(i)];
+    out[c][0] += level.usage[size_t(i)];
+    out[c][1] = std::max(out[c][1], double(level.usage[size_t(i)]));
+    ++n[c];
+  }
+  for (size_t c = 0; c < 2; ++c) out[c][0] /= n[c];
+  return out;
+}
+
+// In the flat class every patch is alike: the colour term does not tell its candidates apart and
+// every pixel's k similar ones are the same few (ties go to the lower index), so its copy piles
+// on a few pixels (its largest usage over 4 times the noise class's, its mean above it); the
+// noise class's similar candidates differ from pixel to pixel.
+TEST(ExemplarUsage, TheFlatClassIsOverUsedMoreThanTheNoise) {
+  const auto u = class_usage(pyramid().levels[0]);
+  EXPECT_GT(u[0][1], 4 * u[1][1]);
+  EXPECT_GT(u[0][0], u[1][0]);
+}
+
+// A 4 x 3 level with (3, 2) excluded, and a copy of it: copy pixels (0, 0) and (1, 0) copy
+// level pixel (2, 1), the excluded copy pixel (3, 2) copies (2, 1) too (not counted), the other
+// 9 copy (0, 0). Counts: (0, 0) 9, (2, 1) 2, others 0. Each usage worked out by hand as the mean
+// count over the allowed pixels of the 3 x 3 neighbourhood within the level, minus 1, at least 0.
+TEST(ExemplarUsage, CountsTheAllowedCopiesOfEachPixel) {
+  ExemplarLevel level;
+  level.width = 4;
+  level.height = 3;
+  level.excluded.assign(12, 0);
+  level.excluded[size_t(level.index(3, 2))] = 1;
+  std::vector<int32_t> source(12, level.index(0, 0));
+  source[size_t(level.index(0, 0))] = source[size_t(level.index(1, 0))] =
+      source[size_t(level.index(3, 2))] = level.index(2, 1);
+  const std::vector<float> expected = {9.0f / 4 - 1,
+                                       11.0f / 6 - 1,
+                                       0,
+                                       0,  // row 0: (2, 0) 2 / 6, (3, 0) 2 / 4: below 1
+                                       9.0f / 6 - 1,
+                                       11.0f / 9 - 1,
+                                       0,
+                                       0,  // row 1: (2, 1) 2 / 8, (3, 1) 2 / 5
+                                       0,
+                                       0,
+                                       0,
+                                       0};  // row 2: 0 / 4, 2 / 6, 2 / 5, 2 / 3 (the excluded)
+  const std::vector<float> usage = usage_of_copy(level, source);
+  ASSERT_EQ(usage.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(usage[i], expected[i], 1e-6) << i;
 }
 
 TEST(ExemplarUsage, ACoarserLevelTakesTheMeanOfItsChildren) {
