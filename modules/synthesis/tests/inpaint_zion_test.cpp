@@ -127,8 +127,10 @@ TEST(InpaintZion, NoSeamAndLowerEnergyThanXphotoOnHolesOfKnownContent) {
 // bidirectional-similarity energy of the band's patches than the hard copy's, for every seed
 // (both measured against the hard copy, the image the band is resynthesized in). The clone's
 // short completion (clone.h: 2 EM iterations of 1 search pass, for the stroke's speed) against
-// the inpainting's 8 x 2 of the same seed: an energy at most kShortCompletionEnergy times its
-// (measured 1.08-1.12; the margin, 3 %, is about one seed's spread).
+// the inpainting's 8 x 2 (seed 0 only: its seeds 0-3 spread by 2 %, and it is the test's
+// costliest fill): an energy at most kShortCompletionEnergy times its for every seed (measured
+// 1.09-1.12; the margin, 3 %, is about the short completion's spread over the seeds; the hard
+// copy: 1.31).
 constexpr double kShortCompletionEnergy = 1.15;
 
 TEST(CloneZion, TheBandAcrossTheCopysEdgeShowsNoSeamAndBeatsTheHardCopy) {
@@ -163,17 +165,19 @@ TEST(CloneZion, TheBandAcrossTheCopysEdgeShowsNoSeamAndBeatsTheHardCopy) {
   CloneParams full_params = params;
   full_params.fill.em_iterations = InpaintParams{}.em_iterations;
   full_params.fill.search_iterations = InpaintParams{}.search_iterations;
+  const auto full_energy = test::bidirectional_energy(
+      hard, test::to_mat(clone(test::to_patch_image(rgb), source, full_params, PatchMatch())), ring,
+      0);
+  std::cout << "the 8 x 2 completion: energy " << full_energy.coherence << " + "
+            << full_energy.completeness << "\n";
   double mean_ratio = 0;
   for (uint64_t seed = 0; seed < kSeeds; ++seed) {
-    params.fill.seed = full_params.fill.seed = seed;
+    params.fill.seed = seed;
     const cv::Mat cloned =
         test::to_mat(clone(test::to_patch_image(rgb), source, params, PatchMatch()));
     const double ratio = test::edge_gradient(cloned, destination) / original_gradient;
     mean_ratio += ratio / kSeeds;
     const auto energy = test::bidirectional_energy(hard, cloned, ring, 0);
-    const auto full_energy = test::bidirectional_energy(
-        hard, test::to_mat(clone(test::to_patch_image(rgb), source, full_params, PatchMatch())),
-        ring, 0);
     std::cout << "  seed " << seed << ": edge gradient ratio " << ratio << "; energy "
               << energy.coherence << " + " << energy.completeness << ", "
               << energy.total() / full_energy.total() << " x the 8 x 2 completion's\n";
