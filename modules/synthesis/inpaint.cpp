@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "inpaint_mode.h"
 #include "layer_values.h"
 #include "masked_pyramid.h"
 
@@ -97,49 +98,9 @@ FieldSearchParams start_params(const InpaintParams& params, int level) {
 }
 
 // How a maximization step sets a pixel from the votes of the patches covering it: the value the
-// lowest-cost target patch proposes, the votes' weighted mean, or their weighted mode (below).
+// lowest-cost target patch proposes, the votes' weighted mean, or their weighted mode
+// (inpaint_mode.h).
 enum class Pick { Best, Mean, Mode };
-
-// The votes' bandwidth for their mode: the kernel's variance over the votes' weighted variance
-// about their mean. Relative, so the same for colours and heights in metres.
-constexpr double kModeBandwidth = 0.25;
-// Mean-shift steps at most, and the step (squared, over the kernel's variance) that ends them.
-constexpr int kModeSteps = 10;
-constexpr double kModeSettled = 1e-4;
-
-// The weighted mode of `count` votes (`values`: `channels` each, `weights`) nearest their weighted
-// mean `mode` (in: the mean, out: the mode; `next`: room for `channels`): Wexler et al.'s
-// mean-shift (PAMI 2007, §3.2), a Gaussian kernel of variance kModeBandwidth times the votes'
-// weighted variance about the mean. Where the patches covering a pixel disagree, the mean blurs
-// them; the mode takes the value most of them agree on.
-void mean_shift_mode(const float* const* values, const double* weights, size_t count, int channels,
-                     double* mode, double* next) {
-  double variance = 0, total = 0;
-  for (size_t j = 0; j < count; ++j) {
-    for (int i = 0; i < channels; ++i) variance += weights[j] * std::pow(values[j][i] - mode[i], 2);
-    total += weights[j];
-  }
-  const double kernel = kModeBandwidth * variance / total;
-  if (!(kernel > 0)) return;  // the votes agree
-  for (int step = 0; step < kModeSteps; ++step) {
-    double sum = 0;
-    std::fill_n(next, channels, 0.0);
-    for (size_t j = 0; j < count; ++j) {
-      double d2 = 0;
-      for (int i = 0; i < channels; ++i) d2 += std::pow(values[j][i] - mode[i], 2);
-      const double k = weights[j] * std::exp(-d2 / (2 * kernel));
-      for (int i = 0; i < channels; ++i) next[i] += k * values[j][i];
-      sum += k;
-    }
-    if (!(sum > 0)) return;
-    double moved = 0;
-    for (int i = 0; i < channels; ++i) {
-      moved += std::pow(next[i] / sum - mode[i], 2);
-      mode[i] = next[i] / sum;
-    }
-    if (moved < kModeSettled * kernel) return;
-  }
-}
 
 // One maximization step: each pixel of the region set from its votes by `pick`; with `classes`
 // (one-hot channels) then to its most voted class.

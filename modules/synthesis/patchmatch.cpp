@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 #include "pixel_hash.h"
@@ -100,15 +101,33 @@ class Pass {
     try_candidate(qx, qy, source.match_x[n] + (qx - nx), source.match_y[n] + (qy - ny), best);
   }
 
+  // The draws' offsets from the best match do not depend on it: all drawn first, and the
+  // candidates they give around the best match so far prefetched (the wide windows' candidates
+  // lie anywhere in the image: their reads miss the cache, and most draws leave the best as it
+  // is); then tried in order, each around the best match as the draws before left it.
   void random_search(int qx, int qy, Match& best) const {
-    int radius = std::max(references_.width, references_.height);
-    for (uint64_t draw = 0; radius >= 1; ++draw, radius /= 2) {
-      const uint64_t h = pixel_hash(qx, qy, params_.round, params_.seed,
-                                    (kSearchSalt << 56) ^ (uint64_t(pass_) << 16) ^ draw);
-      const int rx = best.x + rounded(signed_unit(h) * radius);
-      const int ry = best.y + rounded(signed_unit(h >> 32) * radius);
-      try_candidate(qx, qy, std::clamp(rx, 0, references_.width - 1),
-                    std::clamp(ry, 0, references_.height - 1), best);
+    constexpr int kMaxDraws = 32;  // windows halving from a side below 2^31
+    int dx[kMaxDraws], dy[kMaxDraws], draws = 0;
+    for (int radius = std::max(references_.width, references_.height); radius >= 1; radius /= 2) {
+      const uint64_t h =
+          pixel_hash(qx, qy, params_.round, params_.seed,
+                     (kSearchSalt << 56) ^ (uint64_t(pass_) << 16) ^ uint64_t(draws));
+      dx[draws] = rounded(signed_unit(h) * radius);
+      dy[draws++] = rounded(signed_unit(h >> 32) * radius);
+    }
+    const auto candidate = [&](int d) {
+      return std::pair{std::clamp(best.x + dx[d], 0, references_.width - 1),
+                       std::clamp(best.y + dy[d], 0, references_.height - 1)};
+    };
+    const int half = params_.patch / 2;
+    for (int d = 0; d < draws; ++d) {
+      const auto [rx, ry] = candidate(d);
+      __builtin_prefetch(&references_.member[size_t(ry) * references_.width + rx]);
+      if (rx >= half && ry >= half) __builtin_prefetch(reference_.pixel(rx - half, ry - half));
+    }
+    for (int d = 0; d < draws; ++d) {
+      const auto [rx, ry] = candidate(d);
+      try_candidate(qx, qy, rx, ry, best);
     }
   }
 
