@@ -14,19 +14,13 @@
 
 #include <cstdint>
 #include <limits>
-#include <vector>
 
-#include "core/tile.h"
 #include "render/camera.h"
+#include "render/fresh_array.h"
 
 namespace maquette {
 
-// An array resized without being initialised (core/tile.h's DefaultInitAllocator): the step that
-// makes it writes each element once, so its fresh pages are not written twice (the meshes' and
-// the pictures' arrays).
-template <typename T>
-using FreshArray = std::vector<T, DefaultInitAllocator<T>>;
-
+// Its arrays are FreshArrays (render/fresh_array.h): whoever sizes one writes every element.
 struct RenderMesh {
   FreshArray<double> positions;  // the eye's ENU frame, metres, 3 per vertex
   FreshArray<uint32_t> indices;  // 3 per triangle
@@ -35,6 +29,7 @@ struct RenderMesh {
 
 // What each pixel of rows first_row .. first_row + height - 1 of the picture sees, row-major from
 // the top-left of that strip.
+// Its arrays are FreshArrays (render/fresh_array.h): rasterize writes every pixel of each.
 struct Fragments {
   static constexpr uint32_t kSky = std::numeric_limits<uint32_t>::max();
   int width = 0, height = 0;

@@ -25,6 +25,8 @@
 
 namespace maquette {
 
+// Its arrays are FreshArrays (render/fresh_array.h): each tile writes every element of its share
+// (build_terrain_scene checks the share it wrote against the one it counted).
 struct TerrainScene {
   std::vector<CellId> cells;  // the tiles drawn (scene_cells)
   RenderMesh mesh;
