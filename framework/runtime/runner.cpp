@@ -324,9 +324,16 @@ class Runner {
                           done.end(), std::back_inserter(todo));
       s.computed = int64_t(todo.size());
       const CellPlan mine = share(std::move(todo));
+      io.group_siblings(mine.cells());
       relayed_exchange([&] {
         Progress progress(s.label, int64_t(mine.size()), quiet_);
-        run_cell_step(sp, mine, io, progress, arena_);
+        try {
+          run_cell_step(sp, mine, io, progress, arena_);
+        } catch (...) {
+          io.flush();  // the cells computed before the failing one are kept, as without groups
+          throw;
+        }
+        io.flush();
       });
     } else if (done.empty()) {
       // Reduce, region and task steps record all their cells at once, when complete.
