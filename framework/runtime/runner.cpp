@@ -28,10 +28,10 @@ using Clock = std::chrono::steady_clock;
 
 // Under --store-copies, the writer's weight (the other ranks' is 1) in sharing the cells of a
 // step whose batches it alone commits (no later step reads them on the copies): it also commits
-// the other ranks' batches and builds every output layer's overviews while they wait. 0.7 made
-// the 2 ranks' CPU times equal within 3 % on benchmarks/mpi (benchmarks/README.md); the bits do
-// not depend on it.
-constexpr double kWriterWeight = 0.7;
+// the other ranks' batches and builds the coarser overview levels of every output layer while
+// they wait (the computing ranks' batches bring the finest). 0.85 made the 2 ranks' CPU times
+// equal within 2 % on benchmarks/mpi (benchmarks/README.md); the bits do not depend on it.
+constexpr double kWriterWeight = 0.85;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -324,9 +324,16 @@ class Runner {
                           done.end(), std::back_inserter(todo));
       s.computed = int64_t(todo.size());
       const CellPlan mine = share(std::move(todo));
+      io.group_siblings(mine.cells());
       relayed_exchange([&] {
         Progress progress(s.label, int64_t(mine.size()), quiet_);
-        run_cell_step(sp, mine, io, progress, arena_);
+        try {
+          run_cell_step(sp, mine, io, progress, arena_);
+        } catch (...) {
+          io.flush();  // the cells computed before the failing one are kept, as without groups
+          throw;
+        }
+        io.flush();
       });
     } else if (done.empty()) {
       // Reduce, region and task steps record all their cells at once, when complete.

@@ -101,8 +101,44 @@ std::vector<ContentBlob> StepIO::encode_content(CellId cell, const CellContent& 
   return encode_cell_content(content, cell, default_grid(), models_);
 }
 
+void StepIO::group_siblings(std::span<const CellId> cells) {
+  for (const CellId cell : cells)
+    if (cell.level() > 0) ++groups_[cell.parent()].expected;
+}
+
 void StepIO::write(std::span<const CellOutput> cells) {
-  Store::Batch batch(store_);
+  const auto group = cells.size() == 1 && cells.front().cell.level() > 0
+                         ? groups_.find(cells.front().cell.parent())
+                         : groups_.end();
+  if (group == groups_.end()) {
+    Store::Batch batch(store_);
+    add(batch, cells);
+    return commit(batch);
+  }
+  Group& g = group->second;
+  std::unique_ptr<Store::Batch> full;
+  {
+    std::lock_guard lock(g.mutex);
+    if (!g.batch) g.batch = std::make_unique<Store::Batch>(store_);
+    try {
+      add(*g.batch, cells);
+    } catch (...) {
+      g.batch.reset();  // no cell half-written: the group's others are computed again on resume
+      throw;
+    }
+    if (++g.written == g.expected) full = std::move(g.batch);
+  }
+  if (full) commit(*full);
+}
+
+void StepIO::flush() {
+  for (auto& [parent, g] : groups_) {
+    std::lock_guard lock(g.mutex);
+    if (const std::unique_ptr<Store::Batch> held = std::move(g.batch)) commit(*held);
+  }
+}
+
+void StepIO::add(Store::Batch& batch, std::span<const CellOutput> cells) const {
   for (const auto& [cell, tiles, content] : cells) {
     for (const auto& [port, layer] : plan_.outputs) {
       if (layer.kind != LayerKind::Raster) continue;
@@ -123,7 +159,6 @@ void StepIO::write(std::span<const CellOutput> cells) {
     }
     batch.mark_done(run_id_, plan_.step->index, cell);
   }
-  commit(batch);
 }
 
 void StepIO::write_done(std::span<const CellId> cells, const Artifact* artifact) {

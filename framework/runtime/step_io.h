@@ -5,11 +5,18 @@
 // batches are encoded in the calling thread and committed one at a time under its write mutex.
 // Input tiles read for a halo go through a TileCache of at most kTileCacheBytes of decoded tiles
 // (and at least 4 tiles), so each is decoded about once per step.
+//
+// A cell step's cells that share a parent are written in one batch (group_siblings), which
+// builds the parent's overview from their tiles in memory (Store::Batch): the threads and ranks
+// computing the cells build the finest overview level, and update_overviews only the coarser
+// ones, from the stored overviews rather than from every tile decoded again.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <span>
@@ -61,18 +68,34 @@ class StepIO {
 
   // One batch: the output tiles and content of all `cells` and their run records. A mapped
   // content output without a blob (the operator left it empty) removes the cell's content there.
+  // A single cell of a group (group_siblings) waits in its group's batch until the group's other
+  // cells are written; the last one commits the batch.
   void write(std::span<const CellOutput> cells);
+  // `cells` (sorted, distinct) are the cells this process writes one at a time in the step: those
+  // sharing a parent form a group, written in one batch. Call before any write.
+  void group_siblings(std::span<const CellId> cells);
+  // Commits the groups some of whose cells were not written (one failed): the cells that were.
+  void flush();
   // One batch: the run records of all `cells` (a task's, a reduce's with its artifact).
   void write_done(std::span<const CellId> cells, const Artifact* artifact = nullptr);
 
  private:
+  // The batch of the cells sharing a parent, once all `expected` of them are written.
+  struct Group {
+    std::mutex mutex;
+    int expected = 0, written = 0;
+    std::unique_ptr<Store::Batch> batch;
+  };
+
+  void add(Store::Batch& batch, std::span<const CellOutput> cells) const;
   void commit(Store::Batch& batch);
 
   Store& store_;
   const StepPlan& plan_;
   int64_t run_id_;
   WriteRelay* relay_;
-  std::set<std::string> models_;  // the store's model layers: instances' prototypes
+  std::set<std::string> models_;    // the store's model layers: instances' prototypes
+  std::map<CellId, Group> groups_;  // by parent; fixed by group_siblings
   TileCache cache_;
   mutable std::atomic<int64_t> decoded_{0};
 };
