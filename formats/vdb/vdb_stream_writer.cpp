@@ -75,6 +75,12 @@ class StreamWriter : public io::Archive {
     auto stream = std::make_shared<io::StreamMetadata>(*file);
     stream->setHalfFloat(false);
     stream->gridMetadata() = static_cast<const openvdb::MetaMap&>(grid);
+    struct Restore {  // the file's metadata back on the stream however this ends, before `stream`
+                      // dies
+      std::ostream& os;
+      io::StreamMetadata::Ptr& file;
+      ~Restore() { io::setStreamMetadataPtr(os, file, /*transfer=*/false); }
+    } restore{os, file};
     io::setStreamMetadataPtr(os, stream, /*transfer=*/false);
     gd.writeHeader(os);
     gd.writeStreamPos(os);
@@ -88,7 +94,6 @@ class StreamWriter : public io::Archive {
     grid.writeTopology(os);
     for (const std::string& part : buffers.parts)
       os.write(part.data(), std::streamsize(part.size()));
-    io::setStreamMetadataPtr(os, file, /*transfer=*/false);
   }
 };
 

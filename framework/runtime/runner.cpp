@@ -330,7 +330,12 @@ class Runner {
         try {
           run_cell_step(sp, mine, io, progress, arena_);
         } catch (...) {
-          io.flush();  // the cells computed before the failing one are kept, as without groups
+          // The cells computed before the failing one are kept, as without groups; a failure to
+          // keep them must not hide the error that names the step and the cell.
+          try {
+            io.flush();
+          } catch (...) {
+          }
           throw;
         }
         io.flush();

@@ -104,6 +104,8 @@ WaterLevel WaterLevel::from_attributes(const nlohmann::json& attributes, const s
 
 double water_level(const BasinRaster& basin, const WaterLevel& rule) {
   if (rule.rule == WaterLevel::Rule::Given) return rule.value;
+  if (basin.width <= 0 || basin.height <= 0)
+    throw Error("no terrain height known on the stroke's boundary (an empty raster)");
   // The boundary's known heights in row-major order, by strips of rows.
   std::vector<std::vector<float>> strips(size_t(basin.height + kStripRows - 1) / kStripRows);
   by_strips(basin, [&](int row_begin, int row_end) {
@@ -142,9 +144,33 @@ double water_level(const BasinRaster& basin, const WaterLevel& rule) {
   return heights[k];
 }
 
+// Where the lake's water crosses the stroke: the first outside pixel of the lake's runs, in
+// row-major order, with an 8-neighbour inside the polygon below the level (that neighbour is in
+// the lake too, so such a pixel exists when the lake has an outside pixel).
+int64_t crossing(const BasinRaster& b, double level, const std::vector<Run>& runs,
+                 const std::vector<size_t>& lake_runs) {
+  const auto wet_inside = [&](int row, int col) {
+    if (row < 0 || row >= b.height || col < 0 || col >= b.width) return false;
+    const size_t at = size_t(row) * size_t(b.width) + size_t(col);
+    return b.inside[at] && b.terrain[at] < level;
+  };
+  for (const size_t k : lake_runs) {
+    const Run& run = runs[k];
+    if (!run.outside) continue;
+    for (int col = run.col0; col < run.col1; ++col) {
+      if (b.inside[size_t(run.row) * size_t(b.width) + size_t(col)]) continue;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if (wet_inside(run.row + dr, col + dc)) return int64_t(run.row) * b.width + col;
+    }
+  }
+  throw std::logic_error("fill_basin: a leaking lake without a crossing of its stroke");
+}
+
 WaterBody fill_basin(const BasinRaster& basin, double level) {
   WaterBody body;
   body.level = level;
+  if (basin.width <= 0 || basin.height <= 0) return body;
   // Each strip's runs below the level and lowest inside pixel; then in row order.
   std::vector<StripRuns> strips(size_t(basin.height + kStripRows - 1) / kStripRows);
   by_strips(basin, [&](int row_begin, int row_end) {
@@ -174,22 +200,19 @@ WaterBody fill_basin(const BasinRaster& basin, double level) {
       sets.unite(uint32_t(i), uint32_t(k));
   }
   // The lake: the seed's set, its runs in row-major order. A run with a pixel outside the polygon
-  // is a leak: the first such pixel in row-major order.
+  // is a leak.
   const uint32_t lake = sets.find(uint32_t(seed_run));
   std::vector<size_t> wet_runs;
   std::vector<size_t> first{0};  // each wet run's first place in body.wet
+  bool leaks = false;
   for (size_t k = 0; k < runs.size(); ++k) {
     if (sets.find(uint32_t(k)) != lake) continue;
-    const Run& run = runs[k];
-    if (run.outside) {
-      const size_t base = size_t(run.row) * size_t(basin.width);
-      int col = run.col0;
-      while (basin.inside[base + size_t(col)]) ++col;
-      return WaterBody{level, body.seed, {}, {}, 0, 0, int64_t(base) + col};
-    }
+    leaks = leaks || runs[k].outside;
     wet_runs.push_back(k);
-    first.push_back(first.back() + size_t(run.col1 - run.col0));
+    first.push_back(first.back() + size_t(runs[k].col1 - runs[k].col0));
   }
+  if (leaks)
+    return WaterBody{level, body.seed, {}, {}, 0, 0, crossing(basin, level, runs, wet_runs)};
   body.wet.resize(first.back());
   body.depth.resize(first.back());
   parallel_chunks(wet_runs.size(), kRunsPerTask, [&](size_t begin, size_t end) {

@@ -16,7 +16,9 @@
 //   Nodata pixels are dry and stop the water. When the seed is not below the level there is no
 //   lake (an empty body).
 // - A leak, the water reaching a pixel outside the polygon (a given level above the spill level),
-//   is reported in `leak` (the first such pixel in row-major order) and the lake is not filled:
+//   is reported in `leak` (where the water crosses the stroke: the first outside pixel of the lake,
+//   in row-major order, with an 8-neighbour inside the polygon below the level) and the lake is
+//   not filled:
 //   `wet` is then empty.
 // How: the runs of pixels below the level, row by row, in parallel by strips of rows (TBB); the
 // runs of neighbouring rows joined into 8-connected sets (union-find, one sweep); the seed's set is
@@ -56,7 +58,7 @@ struct WaterBody {
   std::vector<int64_t> wet;  // the lake's pixels, sorted
   std::vector<float> depth;  // level - terrain, per wet pixel
   double area_m2 = 0, volume_m3 = 0;
-  std::optional<int64_t> leak;  // the first outside pixel the water reaches (row-major)
+  std::optional<int64_t> leak;  // where the water crosses the stroke (above)
 };
 
 // The level `rule` gives on `basin`'s boundary; throws when no boundary height is known (and the

@@ -64,9 +64,20 @@ TEST(WaterBody, SpillLevelIsTheLowestBoundaryHeight) {
 
 TEST(WaterBody, LevelAboveTheRimLeaks) {
   const Basin b = paraboloid();
-  const WaterBody body = fill_basin(b.raster(), 250);  // the rim is at 202.5 m
+  const double level = 250;  // the rim is at 202.5 m
+  const WaterBody body = fill_basin(b.raster(), level);
   ASSERT_TRUE(body.leak);
   EXPECT_FALSE(b.inside[size_t(*body.leak)]);
+  // Where the water crosses the stroke: beside an inside pixel below the level, not anywhere the
+  // outside water reaches (here the disk below 250 m touches the raster's first row, ~50 m out).
+  const int row = int(*body.leak / b.width), col = int(*body.leak % b.width);
+  bool beside_the_lake = false;
+  for (int r = std::max(row - 1, 0); r <= std::min(row + 1, b.height - 1); ++r)
+    for (int c = std::max(col - 1, 0); c <= std::min(col + 1, b.width - 1); ++c) {
+      const size_t at = size_t(r) * size_t(b.width) + size_t(c);
+      beside_the_lake = beside_the_lake || (b.inside[at] && b.terrain[at] < level);
+    }
+  EXPECT_TRUE(beside_the_lake) << "leak at column " << col << ", row " << row;
   EXPECT_TRUE(body.wet.empty());
   EXPECT_EQ(body.volume_m3, 0);
 }
@@ -113,8 +124,8 @@ std::vector<uint8_t> flood(const Basin& b, double level, int64_t seed) {
 
 // A channel winding down 120 rows (many of the fill's strips of rows), each turn joined by
 // diagonal steps only, beside pockets just one dry row or column away; the lake against the
-// oracle's flood, and with two outlets cut through the stroke its leak: the first outside pixel
-// of the flood in row-major order.
+// oracle's flood, and with two outlets cut through the stroke its leak: the first crossing of
+// the stroke in row-major order.
 TEST(WaterBody, WindingChannelAsTheFloodFillsIt) {
   Basin b{40, 120, 1.0, {}, {}};
   b.terrain.assign(size_t(b.width) * size_t(b.height), 10.0f);

@@ -57,7 +57,7 @@ TEST(InpaintMode, TakesThePeakOfTheVotesNotTheirMean) {
   std::cout << "mode " << mode << ", the grid's peak " << peak << "\n";
   // The steps stop once one moves less than 1e-2 kernel widths: within 0.003 of the peak.
   EXPECT_NEAR(mode, peak, 0.003);
-  // A vote of weight 3 counts as three votes (the completeness votes' mean enters a pixel's
+  // A vote of weight 2 counts as two votes (the completeness votes' mean enters a pixel's
   // vote once, with their total weight).
   EXPECT_DOUBLE_EQ(mode_of({0, 0.1f, 1, 1}, {2, 1, 1, 1}), mode);
   // The weights decide: the two votes at 1 weighing 4 each take the mode there.
