@@ -9,7 +9,9 @@
 // A cell step's cells that share a parent are written in one batch (group_siblings), which
 // builds the parent's overview from their tiles in memory (Store::Batch): the threads and ranks
 // computing the cells build the finest overview level, and update_overviews only the coarser
-// ones, from the stored overviews rather than from every tile decoded again.
+// ones, from the stored overviews rather than from every tile decoded again. A group's tiles are
+// encoded under the group's lock (rarely contended: siblings are computed by one thread unless a
+// chunk boundary or a steal splits them).
 #pragma once
 
 #include <atomic>
