@@ -15,8 +15,6 @@
 #include <cmath>
 #include <filesystem>
 
-#include "image/stretch.h"
-#include "render/quantile_select.h"
 #include "render/render_job.h"
 #include "render/terrain_scene.h"
 
@@ -192,34 +190,6 @@ BENCHMARK(BM_PanoramaShade)->Args({2000, 2000})->Unit(benchmark::kMillisecond)->
 void BM_PanoramaShadeNoDataCollar(benchmark::State& state) { shade(state, "rgb_collar"); }
 BENCHMARK(BM_PanoramaShadeNoDataCollar)
     ->Args({2000, 2000})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-
-// The display stretch's quantiles of the 4 MP picture's texels (3 bands, 1.4 M terrain pixels):
-// range(2) 0 by image/stretch.h's two nth_elements over all of them (a copy each, which they
-// reorder), 1 by render/quantile_select.h's radix select (as texel_stretch does).
-void BM_PanoramaStretch(benchmark::State& state) {
-  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
-  const PanoramaSteps steps(int(state.range(0)), int(state.range(1)));
-  const TerrainScene scene = steps.scene();
-  const Fragments f = rasterize(scene.mesh, steps.camera);
-  StretchTexels texels;
-  gather_stretch_texels(*steps.store, default_grid(), scene, f, steps.look(), 1, texels);
-  for (auto _ : state)
-    for (const std::vector<float>& band : texels) {
-      if (state.range(2) == 0) {
-        std::vector<float> copy = band;
-        benchmark::DoNotOptimize(
-            quantile_range(copy, kDisplayStretch.first, kDisplayStretch.second));
-      } else {
-        benchmark::DoNotOptimize(
-            select_quantile_range(band, kDisplayStretch.first, kDisplayStretch.second));
-      }
-    }
-}
-BENCHMARK(BM_PanoramaStretch)
-    ->Args({2000, 2000, 0})
-    ->Args({2000, 2000, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

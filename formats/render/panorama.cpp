@@ -13,7 +13,6 @@
 #include "image/layer_sampler.h"
 #include "image/stretch.h"
 #include "render/edge_texels.h"
-#include "render/quantile_select.h"
 #include "render/sky.h"
 
 namespace maquette {
@@ -138,11 +137,11 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
   append_stretch_texels(found, f.width, f.first_row, step, texels);
 }
 
-BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look) {
+BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
   BandStretch stretch{StretchRange{0, 255}, StretchRange{0, 255}, StretchRange{0, 255}};
   if (look.texture && look.stretch)
     tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
-      stretch[k] = select_quantile_range(texels[k], kDisplayStretch.first, kDisplayStretch.second);
+      stretch[k] = quantile_range(texels[k], kDisplayStretch.first, kDisplayStretch.second);
     });
   return stretch;
 }

@@ -78,9 +78,9 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
                            const Fragments& f, const PanoramaLook& look, int step,
                            StretchTexels& texels);
 
-// The stretch of `texels`: the 2 and 98 % quantiles per band (render/quantile_select.h), or the
-// values as stored without a texture or with look.stretch false.
-BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look);
+// The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
+// stored without a texture or with look.stretch false.
+BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
 
 // The rows of `f` shaded; `stretch`: the whole picture's (nullptr: `f` is the whole picture, its
 // stretch taken from its own texels).
