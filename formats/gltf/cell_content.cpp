@@ -114,7 +114,7 @@ double model_radius(const MeshContent& model) {
 }
 
 std::optional<CellGlb> instances_content(const InstancesContent& c,
-                                             const std::vector<const MeshContent*>& models) {
+                                         const std::vector<const MeshContent*>& models) {
   if (c.size() == 0) return std::nullopt;
   std::vector<double> radius;
   for (const MeshContent* m : models) radius.push_back(model_radius(*m));
