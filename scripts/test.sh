@@ -41,6 +41,7 @@ else
   # Reports stop the program; leaks are reported too (exit code 23 fails the test); a stack slot
   # read after its function returned too (OpenVDB's streams keep pointers to their callers' locals).
   export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:exitcode=23:detect_stack_use_after_return=1}
+  export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/lsan-suppressions.txt}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
   export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$root/scripts/tsan-suppressions.txt}
   if [ "$sanitize" = thread ]; then  # oneTBB built with TSan in place of Debian's libtbb

@@ -106,7 +106,8 @@ void check_float32_exact(const Store& store, const LayerInfo& layer,
     const auto raw = level == layer.level ? store.get_tile(layer.name, cell)
                                           : store.get_overview(layer.name, cell);
     if (!raw) continue;
-    for (double v : to_tile<double>(*raw, nodata).data())
+    const Tile<double> tile = to_tile<double>(*raw, nodata);  // a range-for would not keep it
+    for (double v : tile.data())
       if (std::abs(v) > kExact)
         throw Error("layer '" + layer.name + "' holds " + std::string(dtype_name(layer.dtype)) +
                     " value " + std::to_string(int64_t(v)) + " in cell " + cell.ToText() +

@@ -76,6 +76,14 @@ std::string address_space_cap_unavailable() {
 #endif
 }
 
+std::string resident_memory_unmeasurable() {
+#if defined(__SANITIZE_ADDRESS__)
+  return "an AddressSanitizer build keeps freed memory resident in its quarantine";
+#else
+  return "";
+#endif
+}
+
 CliResult run_maquette_under(const std::string& wrapper, const std::string& args) {
   return run_prefixed(wrapper + " ", args);
 }

@@ -24,6 +24,11 @@ CliResult run_maquette_under(const std::string& wrapper, const std::string& args
 // at start, so any cap fails it before main).
 std::string address_space_cap_unavailable();
 
+// Why a peak resident set size of `maquette` says nothing of the program's own, or "" when it
+// does: an AddressSanitizer build keeps freed blocks resident in its quarantine (256 MiB) and
+// adds an eighth of what the heap touches as shadow memory.
+std::string resident_memory_unmeasurable();
+
 // `maquette ARGS` as run_maquette, stopped with SIGINT if still running after `seconds` (for a
 // command that may not return, such as a server): exit code 124 then.
 CliResult run_maquette_limited(const std::string& args, int seconds);
