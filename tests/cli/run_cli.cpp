@@ -62,6 +62,17 @@ CliResult run_prefixed(const std::string& prefix, const std::string& args) {
   return r;
 }
 
+// The sanitizer this build runs under, or nullptr (GCC defines these macros under -fsanitize).
+const char* sanitizer() {
+#if defined(__SANITIZE_ADDRESS__)
+  return "AddressSanitizer";
+#elif defined(__SANITIZE_THREAD__)
+  return "ThreadSanitizer";
+#else
+  return nullptr;
+#endif
+}
+
 }  // namespace
 
 CliResult run_maquette(const std::string& args, const std::string& env) {
@@ -69,19 +80,17 @@ CliResult run_maquette(const std::string& args, const std::string& env) {
 }
 
 std::string address_space_cap_unavailable() {
-#if defined(__SANITIZE_ADDRESS__)
-  return "an AddressSanitizer build reserves terabytes of address space: no cap can hold it";
-#else
+  if (sanitizer())
+    return std::string("a build under ") + sanitizer() +
+           " reserves terabytes of address space: no cap can hold it";
   return std::system("command -v prlimit >/dev/null") != 0 ? "no prlimit" : "";
-#endif
 }
 
 std::string resident_memory_unmeasurable() {
-#if defined(__SANITIZE_ADDRESS__)
-  return "an AddressSanitizer build keeps freed memory resident in its quarantine";
-#else
+  if (sanitizer())
+    return std::string("a build under ") + sanitizer() +
+           " keeps shadow memory (and freed blocks) resident";
   return "";
-#endif
 }
 
 CliResult run_maquette_under(const std::string& wrapper, const std::string& args) {

@@ -20,13 +20,13 @@ CliResult run_maquette(const std::string& args, const std::string& env = "");
 CliResult run_maquette_under(const std::string& wrapper, const std::string& args);
 
 // Why `maquette` cannot be run under an address-space cap (prlimit --as) here, or "" when it can:
-// no prlimit, or an AddressSanitizer build (its shadow memory reserves terabytes of address space
-// at start, so any cap fails it before main).
+// no prlimit, or a sanitizer build (its shadow memory reserves terabytes of address space at
+// start, so any cap fails it before main).
 std::string address_space_cap_unavailable();
 
 // Why a peak resident set size of `maquette` says nothing of the program's own, or "" when it
-// does: an AddressSanitizer build keeps freed blocks resident in its quarantine (256 MiB) and
-// adds an eighth of what the heap touches as shadow memory.
+// does: a sanitizer build adds shadow memory in proportion to what the program touches, and
+// AddressSanitizer keeps freed blocks resident in its quarantine (256 MiB).
 std::string resident_memory_unmeasurable();
 
 // `maquette ARGS` as run_maquette, stopped with SIGINT if still running after `seconds` (for a
