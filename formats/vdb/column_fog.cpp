@@ -3,8 +3,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/error.h"
@@ -26,8 +28,10 @@ struct Block {
   std::vector<openvdb::Coord> tiles;
 };
 
-// Block (bi, bj): each column's voxels set active at 1, in leaves made here by increasing k, or
-// in a tile where all 64 columns fill the leaf's 8 voxels.
+// Block (bi, bj): each column's voxels set active at 1, in leaves by increasing k, or in a tile
+// where all 64 columns fill the leaf's 8 voxels. A leaf's mask is made first (a column's 8 voxels
+// of a leaf are one byte of one 64-bit word of it), then its values written once from the mask:
+// no leaf is filled with the background first.
 Block block_voxels(const FogColumns& body, int32_t bi, int32_t bj) {
   const int32_t i0 = bi * kLeafDim, i1 = std::min(body.width, i0 + kLeafDim);
   const int32_t j0 = bj * kLeafDim, j1 = std::min(body.height, j0 + kLeafDim);
@@ -46,36 +50,32 @@ Block block_voxels(const FogColumns& body, int32_t bi, int32_t bj) {
     }
   Block out;
   if (low >= high) return out;
-  // The leaves by k >> 3 from the lowest, made when a column first reaches them; tiles marked.
-  const int32_t first = low >> 3;
-  std::vector<Leaf*> leaves(size_t(((high - 1) >> 3) - first + 1), nullptr);
-  std::vector<uint8_t> tile(leaves.size(), 0);
-  for (size_t m = 0; m < leaves.size() && whole; ++m) {
-    const int32_t k0 = (first + int32_t(m)) * kLeafDim;
-    tile[m] = k0 >= top_low && k0 + kLeafDim <= bottom_high;
-    if (tile[m]) out.tiles.emplace_back(i0, j0, k0);
-  }
-  // Each column's run of voxels in a leaf: 1s written and mask bits set at once (a column's 8
-  // voxels of a leaf are one byte of one 64-bit word of its mask).
-  for (int32_t j = j0; j < j1; ++j)
-    for (int32_t i = i0; i < i1; ++i) {
-      const size_t at = size_t(j) * size_t(body.width) + size_t(i);
-      if (body.low[at] >= body.high[at]) continue;
-      const openvdb::Index base = openvdb::Index(((i & 7) << 6) | ((j & 7) << 3));
-      for (int32_t k0 = body.low[at] & ~(kLeafDim - 1); k0 < body.high[at]; k0 += kLeafDim) {
-        const size_t m = size_t((k0 >> 3) - first);
-        if (tile[m]) continue;
-        Leaf*& leaf = leaves[m];
-        if (!leaf) leaf = new Leaf(openvdb::Coord(i0, j0, k0), 0.0f, false);
+  for (int32_t k0 = low & ~(kLeafDim - 1); k0 < high; k0 += kLeafDim) {
+    if (whole && k0 >= top_low && k0 + kLeafDim <= bottom_high) {
+      out.tiles.emplace_back(i0, j0, k0);
+      continue;
+    }
+    std::array<uint64_t, Leaf::SIZE / 64> words{};
+    for (int32_t j = j0; j < j1; ++j)
+      for (int32_t i = i0; i < i1; ++i) {
+        const size_t at = size_t(j) * size_t(body.width) + size_t(i);
         const int32_t z0 = std::max(body.low[at], k0) - k0;
         const int32_t z1 = std::min(body.high[at], k0 + kLeafDim) - k0;
-        std::fill_n(leaf->buffer().data() + base + openvdb::Index(z0), z1 - z0, 1.0f);
-        leaf->getValueMask().getWord<uint64_t>(base >> 6) |= ((uint64_t(1) << (z1 - z0)) - 1)
-                                                             << ((base & 63) + openvdb::Index(z0));
+        if (z0 >= z1) continue;
+        const openvdb::Index base = openvdb::Index(((i & 7) << 6) | ((j & 7) << 3));
+        words[base >> 6] |= ((uint64_t(1) << (z1 - z0)) - 1) << ((base & 63) + openvdb::Index(z0));
       }
-    }
-  for (Leaf* leaf : leaves)
-    if (leaf) out.leaves.push_back(leaf);
+    if (std::all_of(words.begin(), words.end(), [](uint64_t w) { return w == 0; })) continue;
+    auto leaf = std::make_unique<Leaf>(openvdb::PartialCreate(), openvdb::Coord(i0, j0, k0));
+    leaf->buffer().allocate();
+    float* values = leaf->buffer().data();
+    for (openvdb::Index n = 0; n < Leaf::SIZE; ++n)
+      values[n] = float((words[n >> 6] >> (n & 63)) & 1);
+    for (openvdb::Index w = 0; w < words.size(); ++w)
+      leaf->getValueMask().getWord<uint64_t>(w) = words[w];
+    out.leaves.push_back(leaf.get());
+    leaf.release();
+  }
   return out;
 }
 

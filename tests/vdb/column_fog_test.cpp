@@ -3,7 +3,8 @@
 // from the columns, empty columns, columns crossing leaves and blocks filling whole leaves, which
 // are tiles, included), 1, each voxel's centre
 // where the lattice puts it, the provenance kept; the same bytes on any thread count and through
-// the entry; bad input named, with the body.
+// the entry, and as OpenVDB's own tree of the voxels set one by one; bad input named, with the
+// body.
 #include "vdb/column_fog.h"
 
 #include <gtest/gtest.h>
@@ -82,6 +83,29 @@ TEST(ColumnFog, ExactlyTheColumnsVoxelsWhereTheLatticePutsThem) {
   EXPECT_EQ(fog->metaValue<int64_t>("object_id"), 77);
   EXPECT_EQ(fog->metaValue<int64_t>("feature_id"), 7);
   EXPECT_EQ(fog->metaValue<std::string>("tool"), "deform.water");
+}
+
+// The same bytes as OpenVDB's own tree of the columns: each voxel set on, 1, one by one
+// (Tree::setValueOn, every other value the background), pruned (a leaf all on at 1 becomes a
+// tile), with the grid's transform and metadata, written by encode_volume: a leaf's inactive
+// values not the background bit for bit, or a missing or extra leaf or tile, changes the bytes.
+TEST(ColumnFog, SameBytesAsOpenVdbsTreeBuiltVoxelByVoxel) {
+  const FogColumns body = columns(45, 37);
+  const VolumeContent volume = columns_to_fog({body}, kVolumeOrigin, "columns");
+  const auto made = openvdb::gridPtrCast<openvdb::FloatGrid>(decode_volume(volume, "columns")[0]);
+  ASSERT_TRUE(made);
+  const openvdb::FloatGrid::Ptr oracle = openvdb::FloatGrid::create(0.0f);
+  for (int32_t j = 0; j < body.height; ++j)
+    for (int32_t i = 0; i < body.width; ++i) {
+      const size_t c = size_t(j * body.width + i);
+      for (int32_t k = body.low[c]; k < body.high[c]; ++k)
+        oracle->tree().setValueOn(openvdb::Coord(i, j, k), 1.0f);
+    }
+  oracle->tree().prune();
+  EXPECT_GE(oracle->tree().activeTileCount(), 8u);
+  oracle->setTransform(made->transform().copy());
+  static_cast<openvdb::MetaMap&>(*oracle) = static_cast<const openvdb::MetaMap&>(*made);
+  EXPECT_EQ(compare_bytes(encode_volume({oracle}, kVolumeOrigin).vdb, volume.vdb), "same");
 }
 
 // Many leaf blocks: the same bytes on one thread as on all, and through the plug-in's entry.
