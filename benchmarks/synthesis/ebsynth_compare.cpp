@@ -9,12 +9,8 @@
 // minutes of CPU per image; 8 is what benchmarks/README.md's later rows use). Ours is measured
 // with its vote of radius `vote` (synthesis.h), and its copy with ebsynth's plain vote applied
 // (each pixel the mean colour of the 5 x 5 overlapping patches' proposals), so that the
-// smoothing of a mean vote is measured apart from the copy's coherence. `params`, a JSON object
-// of synthesis.transfer's weights (synthesis_params_schema(): "w_spread", "w_usage", ...),
-// overrides the defaults for ours; "ours" as the last argument skips ebsynth (a variant's run,
-// measured against an earlier run's ebsynth).
-// Usage: synthesis_ebsynth_compare [side (512)] [threads (2)] [coherence step (2)] [vote (1)]
-//                                  [params ({})] [ours]
+// smoothing of a mean vote is measured apart from the copy's coherence. The arguments: kUsage
+// below (printed with every argument error and by --help).
 #include <omp.h>
 
 #include <array>
@@ -22,9 +18,12 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <map>
 #include <string>
 
+#include "core/error.h"
 #include "ebsynth.h"
+#include "runtime/params_schema.h"
 #include "transfer_params.h"
 #include "zion_fixture.h"
 
@@ -82,6 +81,25 @@ std::vector<float> plain_vote(const Exemplar& e, const PixelRect& out,
         rgb[3 * size_t(row * out.width + col) + k] = float(std::round(sum[k] / n));
     }
   return rgb;
+}
+
+// The most distinct sources a copy of `labels` (target labels, row-major) can have with every
+// pixel copied from a usable exemplar pixel of its label: the sum over labels of min(target
+// pixels, usable exemplar pixels), as a fraction of the target pixels with a label.
+double distinct_bound(const Exemplar& e, const std::vector<uint8_t>& labels) {
+  std::map<uint8_t, std::array<int64_t, 2>> count;  // label -> target pixels, exemplar pixels
+  for (const uint8_t l : labels)
+    if (l != kUnknownLabel) ++count[l][0];
+  for (size_t i = 0; i < e.labels.size(); ++i)
+    if (!e.excluded[i]) ++count[e.labels[i]][1];
+  int64_t bound = 0, target = 0;
+  for (const auto& [label, n] : count) {
+    bound += std::min(n[0], n[1]);
+    target += n[0];
+    std::printf("  class %d: %lld target pixels, %lld usable exemplar pixels\n", int(label),
+                (long long)n[0], (long long)n[1]);
+  }
+  return double(bound) / double(target);
 }
 
 void print(const char* name, const Metrics& m) {
@@ -153,6 +171,9 @@ int run(int side, int threads, int step, const SynthesisParams& params, bool wit
       metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours)), out, step));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
+  std::printf("the window's classes (painting classes through the class table):\n");
+  const double bound = distinct_bound(e, zion_labels(out));
+  std::printf("distinct-source bound with label consistency 1: %.4f\n", bound);
   print("ours", ours_m);
   print("ours+mean", averaged_m);
   if (!with_ebsynth) return 0;
@@ -172,31 +193,82 @@ int run(int side, int threads, int step, const SynthesisParams& params, bool wit
 }  // namespace
 }  // namespace maquette::synthesis::bench
 
-int main(int argc, char** argv) {
-  const int side = argc > 1 ? std::stoi(argv[1]) : 512;
-  const int threads = argc > 2 ? std::stoi(argv[2]) : 2;
-  const int step = argc > 3 ? std::stoi(argv[3]) : 2;
-  if (step < 1) {
-    std::fprintf(stderr, "synthesis_ebsynth_compare: coherence step %d: must be >= 1\n", step);
-    return 1;
+namespace {
+
+constexpr const char* kProgram = "synthesis_ebsynth_compare";
+constexpr const char* kUsage =
+    R"(usage: synthesis_ebsynth_compare [side] [threads] [step] [vote] [params] [ours]
+  side     the output window's side in pixels (512)
+  threads  threads for both syntheses (2)
+  step     the coherence measure's sample: every step-th column and row (2; >= 1)
+  vote     our vote's radius, synthesis.transfer's "vote_radius" (its default, 1; 0 .. 2)
+  params   a JSON object of synthesis.transfer's weights and choices ("w_spread", "w_usage",
+           "coherence", "seed", ...: synthesis_params_schema(); the defaults otherwise),
+           validated against that schema: an unknown key, or a value of the wrong type or out of
+           range, is an error naming it; its "vote_radius" and `vote` are one setting, given
+           twice with different values an error
+  ours     skip ebsynth (a variant measured against an earlier run's ebsynth)
+)";
+
+// Argument `i` as an integer >= `min` (the whole argument: "2x" is refused), `fallback` when
+// absent.
+int int_argument(int argc, char** argv, int i, const char* name, int fallback, int min) {
+  if (argc <= i) return fallback;
+  const std::string text = argv[i];
+  size_t used = 0;
+  int value = 0;
+  try {
+    value = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
   }
-  // The weights: the schema's defaults, overridden by argument 5.
-  const nlohmann::json schema = maquette::synthesis::synthesis_params_schema();
-  const nlohmann::json given = argc > 5 ? nlohmann::json::parse(argv[5]) : nlohmann::json::object();
-  nlohmann::json weights;
-  for (const auto& [key, value] : schema.items()) weights[key] = given.value(key, value["default"]);
-  for (const auto& [key, value] : given.items())
-    if (!schema.contains(key)) {
-      std::fprintf(stderr, "synthesis_ebsynth_compare: params: no weight \"%s\"\n", key.c_str());
-      return 1;
-    }
-  maquette::synthesis::SynthesisParams params = maquette::synthesis::synthesis_params(weights);
-  if (argc > 4) params.vote_radius = std::stoi(argv[4]);
-  if (params.vote_radius < 0 || params.vote_radius > maquette::synthesis::kVoteRadius) {
-    std::fprintf(stderr, "synthesis_ebsynth_compare: vote %d: must be 0 .. %d\n",
-                 params.vote_radius, maquette::synthesis::kVoteRadius);
-    return 1;
+  if (used == 0 || used != text.size() || value < min)
+    throw maquette::Error(std::string(kProgram) + ": " + name + " '" + text +
+                          "': expected an integer >= " + std::to_string(min));
+  return value;
+}
+
+// The synthesis's params: argument 5 (a JSON object) with argument 4 as its "vote_radius",
+// validated against synthesis_params_schema() with the defaults filled in.
+nlohmann::json synthesis_weights(int argc, char** argv) {
+  nlohmann::json given = nlohmann::json::object();
+  if (argc > 5) {
+    given = nlohmann::json::parse(argv[5], nullptr, false);
+    if (!given.is_object())
+      throw maquette::Error(std::string(kProgram) + ": params '" + argv[5] +
+                            "': expected a JSON object of synthesis.transfer's weights");
   }
+  if (argc > 4) {
+    const nlohmann::json vote = int_argument(argc, argv, 4, "vote", 0, 0);
+    if (given.contains("vote_radius") && given.at("vote_radius") != vote)
+      throw maquette::Error(std::string(kProgram) + ": vote " + vote.dump() +
+                            " and params.vote_radius " + given.at("vote_radius").dump() +
+                            " disagree: give the vote's radius once");
+    given["vote_radius"] = vote;
+  }
+  const nlohmann::json schema = {{"type", "object"},
+                                 {"properties", maquette::synthesis::synthesis_params_schema()},
+                                 {"additionalProperties", false}};
+  return maquette::validate_params(schema, given, kProgram);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  const int side = int_argument(argc, argv, 1, "side", 512, 1);
+  const int threads = int_argument(argc, argv, 2, "threads", 2, 1);
+  const int step = int_argument(argc, argv, 3, "step", 2, 1);
+  const auto params = maquette::synthesis::synthesis_params(synthesis_weights(argc, argv));
   const bool with_ebsynth = !(argc > 6 && std::string(argv[6]) == "ours");
+  if (argc > 7 || (argc > 6 && with_ebsynth))
+    throw maquette::Error(std::string(kProgram) +
+                          ": too many arguments: side threads step vote params [ours]");
   return maquette::synthesis::bench::run(side, threads, step, params, with_ebsynth);
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
+  return 1;
 }

@@ -20,13 +20,14 @@ constexpr int kOriginCol = 20, kOriginRow = 160;
 }  // namespace
 
 nlohmann::json zion_params() {
-  return {{"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
-          {"classes", 8},
-          {"exclude_classes", {0}},
-          {"landcover_classes",
-           {{"1", 7}, {"2", 3}, {"3", 5}, {"4", 6}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", 6}}},
-          {"exemplar_scale", 2},
-          {"k", 2}};
+  return {
+      {"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
+      {"classes", 8},
+      {"exclude_classes", {0}},
+      {"landcover_classes",
+       {{"1", 7}, {"2", 3}, {"3", 5}, {"4", {6, 1}}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", {6, 1}}}},
+      {"exemplar_scale", 2},
+      {"k", 2}};
 }
 
 std::shared_ptr<const TransferExemplar> zion_exemplar() { return transfer_exemplar(zion_params()); }

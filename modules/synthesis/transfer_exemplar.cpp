@@ -12,6 +12,7 @@
 #include "exemplar_usage.h"
 #include "painting.h"
 #include "synthesis.h"
+#include "transfer_params.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -60,6 +61,10 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   }
   for (const int c : params.at("exclude_classes").get<std::vector<int>>())
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
+  // The class table's sets of classes taken as one (exclusions are by the painting's classes).
+  if (params.contains("landcover_classes"))
+    for (const auto& [from, to] : class_groups(params.at("landcover_classes"), kOp))
+      std::replace(e.labels.begin(), e.labels.end(), from, to);
   if (params.contains("painting_altitude"))
     e.altitude = painting_guide(params.at("painting_altitude").get<std::string>(), e, "altitude");
   if (params.contains("painting_distance"))
@@ -80,6 +85,8 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
   for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
                             "painting_altitude", "painting_distance", "exemplar_scale", "k"})
     if (params.contains(field)) key[field] = params.at(field);
+  if (params.contains("landcover_classes"))
+    key["groups"] = class_groups(params.at("landcover_classes"), kOp);
   struct Slot {
     tbb::collaborative_once_flag once;
     std::shared_ptr<const TransferExemplar> exemplar;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/error.h"
 #include "exemplar.h"
@@ -36,8 +37,8 @@ nlohmann::json exemplar_params_schema() {
       {"landcover_classes",
        {{"type", "object"},
         {"description",
-         "target land-cover value (a string key) -> painting class; other values match any "
-         "class"}}},
+         "target land-cover value (a string key) -> painting class, or an array of painting "
+         "classes taken as one (a class in one set only); other values match any class"}}},
       {"altitude_range",
        {{"type", "array"},
         {"items", {{"type", "number"}}},
@@ -90,8 +91,34 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   return sp;
 }
 
-std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op) {
-  std::map<int, uint8_t> out;
+namespace {
+
+// The painting classes of one "landcover_classes" value: an integer or a non-empty array of them,
+// each 0..254, sorted.
+std::vector<uint8_t> table_classes(const nlohmann::json& value, const std::string& where) {
+  const auto fail = [&] {
+    return Error(where + ": " + value.dump() +
+                 " is not a painting class 0..254 nor a non-empty array of them");
+  };
+  const auto one = [&](const nlohmann::json& v) {
+    if (!v.is_number_integer() || v.get<int>() < 0 || v.get<int>() >= kUnknownLabel) throw fail();
+    return uint8_t(v.get<int>());
+  };
+  std::vector<uint8_t> out;
+  if (value.is_array())
+    for (const auto& v : value) out.push_back(one(v));
+  else
+    out.push_back(one(value));
+  if (out.empty()) throw fail();
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// Every table entry's classes, by target value; throws on a key that is no integer.
+std::map<int, std::vector<uint8_t>> table_entries(const nlohmann::json& table,
+                                                  const std::string& op) {
+  std::map<int, std::vector<uint8_t>> out;
   for (const auto& [key, value] : table.items()) {
     int target = 0;
     size_t used = 0;
@@ -102,11 +129,32 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
     }
     if (used != key.size() || key.empty())
       throw Error(op + ".landcover_classes: key '" + key + "' is not an integer class value");
-    if (!value.is_number_integer() || value.get<int>() < 0 || value.get<int>() >= kUnknownLabel)
-      throw Error(op + ".landcover_classes." + key + ": " + value.dump() +
-                  " is not a painting class 0..254");
-    out[target] = uint8_t(value.get<int>());
+    out[target] = table_classes(value, op + ".landcover_classes." + key);
   }
+  return out;
+}
+
+}  // namespace
+
+std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op) {
+  std::map<int, uint8_t> out;
+  for (const auto& [target, classes] : table_entries(table, op)) out[target] = classes.front();
+  return out;
+}
+
+std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op) {
+  std::map<uint8_t, uint8_t> out;
+  std::map<uint8_t, std::vector<uint8_t>> group_of;
+  for (const auto& [target, classes] : table_entries(table, op))
+    for (const uint8_t c : classes) {
+      const auto [it, fresh] = group_of.emplace(c, classes);
+      if (!fresh && it->second != classes)
+        throw Error(op + ".landcover_classes." + std::to_string(target) + ": painting class " +
+                    std::to_string(c) + " is in two different sets of classes (" +
+                    nlohmann::json(it->second).dump() + " and " + nlohmann::json(classes).dump() +
+                    "): a class is in one set, given whole wherever it appears");
+      out[c] = classes.front();
+    }
   return out;
 }
 

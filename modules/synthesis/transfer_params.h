@@ -26,9 +26,17 @@ nlohmann::json synthesis_params_schema();
 // SynthesisParams from params validated against synthesis_params_schema() (defaults filled).
 SynthesisParams synthesis_params(const nlohmann::json& params);
 
-// Target land-cover value -> painting class, from "landcover_classes". Throws maquette::Error
-// naming `op`, the field and the key or value at fault.
+// Target land-cover value -> painting class, from "landcover_classes" (each value a painting
+// class, or an array of them taken as one: the array's smallest class stands for the set, see
+// class_groups). Throws maquette::Error naming `op`, the field and the key or value at fault.
 std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::string& op);
+
+// The painting classes "landcover_classes" takes as one: class -> the smallest class of its set
+// (the exemplar's pixels are relabelled so, so that a target class may take any of its set's
+// pixels and label consistency counts through the table). Classes in no array map to
+// themselves. Throws maquette::Error naming `op` and the key when a class is in two different
+// sets.
+std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op);
 
 // The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
 // not in the table.

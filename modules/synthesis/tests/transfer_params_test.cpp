@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
@@ -72,6 +74,35 @@ TEST(TransferParams, AltitudeGuideNeedsBothHalves) {
   };
   refused(with_range, false, "synthesis.transfer.altitude_range is given without inputs.dem");
   refused(nlohmann::json::object(), true, "synthesis.transfer: inputs.dem is given without");
+}
+
+TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
+  // Forest and wetlands take painting classes 6 and 1 (in either order), shrubland 7 alone.
+  const nlohmann::json table = {{"4", {6, 1}}, {"8", {1, 6}}, {"1", 7}};
+  EXPECT_EQ(class_table(table, "op"), (std::map<int, uint8_t>{{1, 7}, {4, 1}, {8, 1}}));
+  EXPECT_EQ(class_groups(table, "op"), (std::map<uint8_t, uint8_t>{{1, 1}, {6, 1}, {7, 7}}));
+  const auto refused = [](const nlohmann::json& t, const std::string& message) {
+    try {
+      class_groups(t, "synthesis.transfer");
+      ADD_FAILURE() << "accepted: " << t.dump();
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  refused({{"4", {6, 1}}, {"8", 6}},
+          "synthesis.transfer.landcover_classes.8: painting class 6 is in two different sets");
+  refused({{"4", nlohmann::json::array()}}, "synthesis.transfer.landcover_classes.4: []");
+  refused({{"4", {6, 255}}}, "synthesis.transfer.landcover_classes.4: [6,255] is not");
+
+  // The exemplar's pixels are relabelled: the ramp's two colour classes become one.
+  nlohmann::json p = params(painting_png(64), 1);
+  const auto labels = [](const nlohmann::json& with) {
+    const auto& l = transfer_exemplar(with)->pyramid.levels[0].labels;
+    return std::set<uint8_t>(l.begin(), l.end());
+  };
+  EXPECT_EQ(labels(p), (std::set<uint8_t>{0, 1}));
+  p["landcover_classes"] = {{"3", {1, 0}}};
+  EXPECT_EQ(labels(p), (std::set<uint8_t>{0}));
 }
 
 }  // namespace
