@@ -100,9 +100,15 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
     const int64_t py = r * kOne + kOne / 2, px0 = c0 * kOne + kOne / 2;
     int64_t e[3] = {edge(*v[1], *v[2], px0, py), edge(*v[2], *v[0], px0, py),
                     edge(*v[0], *v[1], px0, py)};
+    // A row meets the (convex) triangle in one run of pixels: the first pixel past it ends the row.
+    bool entered = false;
     for (int64_t c = c0; c <= c1; ++c, e[0] += step[0], e[1] += step[1], e[2] += step[2]) {
-      if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
-      if ((e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) || (e[2] == 0 && !tl2)) continue;
+      if (e[0] < 0 || e[1] < 0 || e[2] < 0 || (e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) ||
+          (e[2] == 0 && !tl2)) {
+        if (entered) break;
+        continue;
+      }
+      entered = true;
       const size_t i = size_t(r - f.first_row) * size_t(f.width) + size_t(c);
       if (nearest > f.depth[i]) continue;
       // Screen-space weights, then perspective-correct ones through 1/z.
