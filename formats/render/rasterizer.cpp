@@ -50,22 +50,22 @@ ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
 
 // The pixels [first, last] whose centre (pixel + 0.5) lies within [lo, hi] (1/16 pixels), within
 // [0, size).
-std::pair<int64_t, int64_t> centre_span(int64_t lo, int64_t hi, int size) {
+inline std::pair<int64_t, int64_t> centre_span(int64_t lo, int64_t hi, int size) {
   const int64_t first = (lo - kOne / 2 + kOne - 1) >> kSubpixelBits;
   const int64_t last = (hi - kOne / 2) >> kSubpixelBits;
   return {std::max<int64_t>(first, 0), std::min<int64_t>(last, size - 1)};
 }
 
 // Rows [first, last] whose centre (row + 0.5) may be inside a triangle, within the picture.
-std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& b,
-                                     const ScreenVertex& c, int height) {
-  return centre_span(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height);
+inline std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& b,
+                                            const ScreenVertex& c, int height) {
+  return centre_span(std::min(a.y, std::min(b.y, c.y)), std::max(a.y, std::max(b.y, c.y)), height);
 }
 
 // Columns [first, last] whose centre (column + 0.5) may be inside a triangle, within the picture.
-std::pair<int64_t, int64_t> column_span(const ScreenVertex& a, const ScreenVertex& b,
-                                        const ScreenVertex& c, int width) {
-  return centre_span(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width);
+inline std::pair<int64_t, int64_t> column_span(const ScreenVertex& a, const ScreenVertex& b,
+                                               const ScreenVertex& c, int width) {
+  return centre_span(std::min(a.x, std::min(b.x, c.x)), std::max(a.x, std::max(b.x, c.x)), width);
 }
 
 // Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1); `weights`:
