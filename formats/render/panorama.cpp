@@ -100,19 +100,32 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
 }
 
 // Appends to `texels` those of `found` (3 per pixel of a strip of rows `width` wide starting at
-// picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: a band a
-// task (the serial share of a picture on two cores otherwise).
+// picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: each row's
+// texels counted, then copied to their places, rows side by side (no serial share, no regrowth).
 void append_stretch_texels(const FreshArray<float>& found, int width, int first_row, int step,
                            StretchTexels& texels) {
   const int rows = int(found.size() / 3 / size_t(width));
-  tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
-    for (int row = 0; row < rows; ++row) {
-      if ((first_row + row) % step != 0) continue;
-      for (int col = 0; col < width; col += step) {
+  using Counts = std::array<size_t, 3>;
+  auto each_texel = [&](int row, auto&& take) {
+    if ((first_row + row) % step != 0) return;
+    for (int col = 0; col < width; col += step)
+      for (size_t k = 0; k < 3; ++k) {
         const float t = found[3 * (size_t(row) * size_t(width) + size_t(col)) + k];
-        if (!std::isnan(t)) texels[k].push_back(t);
+        if (!std::isnan(t)) take(k, t);
       }
-    }
+  };
+  std::vector<Counts> offset(size_t(rows) + 1, Counts{});  // row's first texel per band
+  tbb::parallel_for(0, rows, [&](int row) {
+    each_texel(row, [&](size_t k, float) { ++offset[size_t(row) + 1][k]; });
+  });
+  for (size_t k = 0; k < 3; ++k) {
+    offset[0][k] = texels[k].size();
+    for (size_t row = 1; row <= size_t(rows); ++row) offset[row][k] += offset[row - 1][k];
+    texels[k].resize(offset[size_t(rows)][k]);
+  }
+  tbb::parallel_for(0, rows, [&](int row) {
+    Counts next = offset[size_t(row)];
+    each_texel(row, [&](size_t k, float t) { texels[k][next[k]++] = t; });
   });
 }
 
@@ -173,15 +186,19 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     s.start_row();
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
-      float* texel = &texels[3 * i];
-      texel[0] = texel[1] = texel[2] = NAN;
-      if (f.triangle[i] == Fragments::kSky) {  // NaN guides
-        p.distance[i] = p.lon[i] = p.lat[i] = NAN;
-        p.altitude[i] = p.shading[i] = NAN;
-        if (look.land_cover) p.land_cover[i] = NAN;
-        if (look.shadow) p.cast_shadow[i] = NAN;
+      if (f.triangle[i] == Fragments::kSky) {  // NaN guides and texels, a run of sky at once
+        int end = col + 1;
+        while (end < w && f.triangle[i + size_t(end - col)] == Fragments::kSky) ++end;
+        const auto run = size_t(end - col);
+        std::fill_n(&texels[3 * i], 3 * run, NAN);
+        for (auto* a : {&p.distance, &p.lon, &p.lat}) std::fill_n(&(*a)[i], run, NAN);
+        for (auto* a : {&p.altitude, &p.shading, &p.land_cover, &p.cast_shadow})
+          if (!a->empty()) std::fill_n(&(*a)[i], run, NAN);
+        col = end - 1;
         continue;
       }
+      float* texel = &texels[3 * i];
+      texel[0] = texel[1] = texel[2] = NAN;
       const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
       const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
       auto interpolate = [&](const auto& values, int stride, int k) {

@@ -48,12 +48,24 @@ ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
   return {round_half_away(p[0] * kOne), round_half_away(p[1] * kOne), 1 / v[2]};
 }
 
+// The pixels [first, last] whose centre (pixel + 0.5) lies within [lo, hi] (1/16 pixels), within
+// [0, size).
+inline std::pair<int64_t, int64_t> centre_span(int64_t lo, int64_t hi, int size) {
+  const int64_t first = (lo - kOne / 2 + kOne - 1) >> kSubpixelBits;
+  const int64_t last = (hi - kOne / 2) >> kSubpixelBits;
+  return {std::max<int64_t>(first, 0), std::min<int64_t>(last, size - 1)};
+}
+
 // Rows [first, last] whose centre (row + 0.5) may be inside a triangle, within the picture.
-std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& b,
-                                     const ScreenVertex& c, int height) {
-  const int64_t top = (std::min({a.y, b.y, c.y}) - kOne / 2 + kOne - 1) >> kSubpixelBits;
-  const int64_t bottom = (std::max({a.y, b.y, c.y}) - kOne / 2) >> kSubpixelBits;
-  return {std::max<int64_t>(top, 0), std::min<int64_t>(bottom, height - 1)};
+inline std::pair<int64_t, int64_t> row_span(const ScreenVertex& a, const ScreenVertex& b,
+                                            const ScreenVertex& c, int height) {
+  return centre_span(std::min(a.y, std::min(b.y, c.y)), std::max(a.y, std::max(b.y, c.y)), height);
+}
+
+// Columns [first, last] whose centre (column + 0.5) may be inside a triangle, within the picture.
+inline std::pair<int64_t, int64_t> column_span(const ScreenVertex& a, const ScreenVertex& b,
+                                               const ScreenVertex& c, int width) {
+  return centre_span(std::min(a.x, std::min(b.x, c.x)), std::max(a.x, std::max(b.x, c.x)), width);
 }
 
 // Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1); `weights`:
@@ -65,9 +77,7 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
   auto [first, last] = row_span(v0, v1, v2, row1);
   first = std::max<int64_t>(first, row0);
   if (first > last) return;
-  const int64_t xmin = std::min({v0.x, v1.x, v2.x}), xmax = std::max({v0.x, v1.x, v2.x});
-  const int64_t c0 = std::max<int64_t>(0, (xmin - kOne / 2 + kOne - 1) >> kSubpixelBits);
-  const int64_t c1 = std::min<int64_t>(f.width - 1, (xmax - kOne / 2) >> kSubpixelBits);
+  const auto [c0, c1] = column_span(v0, v1, v2, f.width);
   if (c0 > c1) return;
   int64_t area = edge(v0, v1, v2.x, v2.y);
   if (area == 0) return;
@@ -80,14 +90,27 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
   area = std::abs(area);
   const bool tl0 = top_left(*v[1], *v[2]), tl1 = top_left(*v[2], *v[0]),
              tl2 = top_left(*v[0], *v[1]);
+  // The edge functions at the row's first centre, stepped along it by exact integer increments.
+  const int64_t step[3] = {-(v[2]->y - v[1]->y) * kOne, -(v[0]->y - v[2]->y) * kOne,
+                           -(v[1]->y - v[0]->y) * kOne};
+  // The nearest a pixel of the triangle can be (its corners' nearest, less a margin far above the
+  // rounding of the perspective-correct depth below): a pixel already nearer is kept without it.
+  const double nearest = (1 - 1e-12) / std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z});
   for (int64_t r = first; r <= last; ++r) {
-    const int64_t py = r * kOne + kOne / 2;
-    for (int64_t c = c0; c <= c1; ++c) {
-      const int64_t px = c * kOne + kOne / 2;
-      const int64_t e[3] = {edge(*v[1], *v[2], px, py), edge(*v[2], *v[0], px, py),
-                            edge(*v[0], *v[1], px, py)};
-      if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
-      if ((e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) || (e[2] == 0 && !tl2)) continue;
+    const int64_t py = r * kOne + kOne / 2, px0 = c0 * kOne + kOne / 2;
+    int64_t e[3] = {edge(*v[1], *v[2], px0, py), edge(*v[2], *v[0], px0, py),
+                    edge(*v[0], *v[1], px0, py)};
+    // A row meets the (convex) triangle in one run of pixels: the first pixel past it ends the row.
+    bool entered = false;
+    for (int64_t c = c0; c <= c1; ++c, e[0] += step[0], e[1] += step[1], e[2] += step[2]) {
+      if (e[0] < 0 || e[1] < 0 || e[2] < 0 || (e[0] == 0 && !tl0) || (e[1] == 0 && !tl1) ||
+          (e[2] == 0 && !tl2)) {
+        if (entered) break;
+        continue;
+      }
+      entered = true;
+      const size_t i = size_t(r - f.first_row) * size_t(f.width) + size_t(c);
+      if (nearest > f.depth[i]) continue;
       // Screen-space weights, then perspective-correct ones through 1/z.
       double w[3], inv_z = 0;
       for (int k = 0; k < 3; ++k) {
@@ -95,7 +118,6 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
         inv_z += w[k];
       }
       const double z = 1 / inv_z;
-      const size_t i = size_t(r - f.first_row) * size_t(f.width) + size_t(c);
       // The nearer wins; on equal depth the lower triangle index, whatever the drawing order.
       if (z > f.depth[i] || (z == f.depth[i] && t >= f.triangle[i])) continue;
       double b1 = w[at[1]], b2 = w[at[2]];
@@ -191,7 +213,11 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
       auto [first, last] = row_span(a, b, c, h);
       first = std::max<int64_t>(first, top) - top;
       last = std::min<int64_t>(last, bottom - 1) - top;
-      for (int64_t band = first / kBandRows; band <= last / kBandRows && first <= last; ++band)
+      // Left out when no pixel centre is within its bounding box or it has no area (as draw
+      // would leave it): a third of the triangles of a far terrain smaller than a pixel.
+      const auto [c0, c1] = column_span(a, b, c, w);
+      if (first > last || c0 > c1 || edge(a, b, c.x, c.y) == 0) return;
+      for (int64_t band = first / kBandRows; band <= last / kBandRows; ++band)
         out.band_triangles[size_t(band)].push_back(id);
     };
     const size_t end = std::min(triangles, (chunk + 1) * kChunkTriangles);
