@@ -2,10 +2,14 @@
 # Strong scaling of `maquette run` under mpirun: a compute-bound pipeline (terrain.synthesize,
 # then terrain.derive) over 256 cells of 128 pixels, with 1 and 2 ranks of one thread each.
 # Runs REPEATS rounds, each of 1 rank, 2 ranks and two single runs side by side (the machine's own
-# ceiling), and prints each round's parallel efficiency T1 / (2 * T2), the ratio of the CPU times
-# of both runs (the work the second rank adds: it holds on a loaded machine, where wall-clock times
-# do not) and the ceiling, then their medians. With --store-copies each rank runs
-# in its own directory with its own store (`maquette run --store-copies`: rank 0 writes for all).
+# ceiling), and prints each round's parallel efficiency T1 / (2 * T2) twice: of the whole job (the
+# wall-clock time of mpirun: launching the processes, MPI_Init, loading the modules, the run, MPI's
+# finalization) and of the run alone (the time `maquette run` reports for its setup, steps and
+# overviews: what more ranks can shorten); then the ratio of the CPU times of both jobs (the work
+# the second rank adds: it holds on a loaded machine, where wall-clock times do not), the CPU time
+# of each of the 2 ranks (the longer is the critical path on 2 idle cores) and the ceiling; then
+# the medians of the rounds. With --store-copies each rank runs in its own directory with its own
+# store (`maquette run --store-copies`: rank 0 writes for all).
 # Usage: benchmarks/mpi/scaling.sh [BUILD_DIR] [REPEATS] [--store-copies]
 set -eu
 build=$(cd "${1:-build}" && pwd)
@@ -30,33 +34,40 @@ cat >"$work/pipeline.json" <<'JSON'
 }
 JSON
 
-# The mpirun arguments of a run with $1 ranks: one app context per rank, each in its own
-# directory, under --store-copies; all ranks in $work otherwise.
+# The mpirun arguments of a run with $1 ranks: one app context per rank, each timed on its own
+# (user and system CPU seconds into $work/cpu.R) and, under --store-copies, in its own directory;
+# all ranks in $work otherwise.
 launch() {
-  if [ -z "$copies" ]; then
-    echo "-np $1 $build/bin/maquette -q run --threads 1 $work/pipeline.json"
-    return
-  fi
   r=0
   while [ "$r" -lt "$1" ]; do
-    mkdir -p "$work/rank$r"
-    cp "$work/pipeline.json" "$work/rank$r/"
+    dir=$work
+    if [ -n "$copies" ]; then
+      dir=$work/rank$r
+      mkdir -p "$dir"
+      cp "$work/pipeline.json" "$dir/"
+    fi
     [ "$r" -gt 0 ] && printf ' : '
-    printf '%s' "-np 1 -wdir $work/rank$r $build/bin/maquette -q run --threads 1 $copies pipeline.json"
+    printf '%s' "-np 1 -wdir $dir /usr/bin/time -f %U+%S -o $work/cpu.$r $build/bin/maquette run --threads 1 $copies pipeline.json"
     r=$((r + 1))
   done
 }
 
-# "WALL CPU" of one fresh run with $1 ranks: wall-clock seconds, CPU seconds (user + system, all
-# processes).
+# "WALL RUN CPU RANKS" of one fresh run with $1 ranks: the job's wall-clock seconds, the run's
+# (as rank 0 reports it), the CPU seconds (user + system) of all processes, and each rank's CPU
+# seconds joined by "/".
 one_run() {
-  rm -rf "$work"/bench.mqt* "$work"/rank*
+  rm -rf "$work"/bench.mqt* "$work"/rank* "$work"/cpu.*
   args=$(launch "$1")
   # shellcheck disable=SC2086 # the arguments are split on purpose
   /usr/bin/time -f "%e %U %S" -o "$work/time" \
-    mpirun --oversubscribe --allow-run-as-root $args
+    mpirun --oversubscribe --allow-run-as-root $args 2>"$work/log" || {
+    cat "$work/log" >&2
+    exit 1
+  }
   read -r t user sys <"$work/time"
-  echo "$t $(echo "$user + $sys" | bc -l)"
+  run=$(sed -n 's/.*info: run [0-9]* finished in \([0-9.]*\) s$/\1/p' "$work/log")
+  ranks=$(for f in "$work"/cpu.*; do bc -l <"$f"; done | paste -sd/)
+  echo "$t $run $(echo "$user + $sys" | bc -l) $ranks"
 }
 
 # The machine's own ceiling: the wall-clock seconds of two independent single-process runs (a
@@ -84,19 +95,21 @@ median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (
 # Rounds of (1 rank, 2 ranks, two single runs side by side), interleaved: a virtual machine's speed
 # drifts by several percent from one run to the next, so each round's ratios are taken between
 # runs minutes apart at most, and the medians of the rounds are reported.
-printf 'round  1 rank: wall s  CPU s   2 ranks: wall s  CPU s   side by side s  efficiency  CPU ratio  ceiling\n'
+printf 'round  1 rank: job s  run s  CPU s   2 ranks: job s  run s  CPU s  rank 0 / rank 1 CPU s   side by side s   efficiency: job  run   CPU ratio  ceiling\n'
 : >"$work/rounds"
 i=1
 while [ "$i" -le "$repeats" ]; do
+  # shellcheck disable=SC2046 # the fields are split on purpose
   set -- $(one_run 1) $(one_run 2) $(pair_run)
-  eff=$(echo "100 * $1 / (2 * $3)" | bc -l)
-  cpu=$(echo "100 * $2 / $4" | bc -l)
-  ceiling=$(echo "100 * $1 / $5" | bc -l)
-  printf '%5d  %14.2f  %6.2f  %15.2f  %6.2f  %14.2f  %9.0f%%  %8.0f%%  %6.0f%%\n' \
-    "$i" "$1" "$2" "$3" "$4" "$5" "$eff" "$cpu" "$ceiling"
-  echo "$eff $cpu $ceiling" >>"$work/rounds"
+  job=$(echo "100 * $1 / (2 * $5)" | bc -l)
+  run=$(echo "100 * $2 / (2 * $6)" | bc -l)
+  cpu=$(echo "100 * $3 / $7" | bc -l)
+  ceiling=$(echo "100 * $1 / $9" | bc -l)
+  printf '%5d  %12.2f  %5.2f  %5.2f  %14.2f  %5.2f  %5.2f  %22s  %15.2f  %15.0f%%  %3.0f%%  %9.0f%%  %6.0f%%\n' \
+    "$i" "$1" "$2" "$3" "$5" "$6" "$7" "$8" "$9" "$job" "$run" "$cpu" "$ceiling"
+  echo "$job $run $cpu $ceiling" >>"$work/rounds"
   i=$((i + 1))
 done
-printf 'medians of %d rounds: parallel efficiency T1 / (2 T2) %.0f%%, CPU time ratio %.0f%%, the machine'"'"'s ceiling (T1 / side by side) %.0f%%\n' \
+printf 'medians of %d rounds: parallel efficiency T1 / (2 T2) of the job %.0f%%, of the run %.0f%%; CPU time ratio %.0f%%; the machine'"'"'s ceiling (T1 / side by side) %.0f%%\n' \
   "$repeats" "$(cut -d' ' -f1 "$work/rounds" | median)" "$(cut -d' ' -f2 "$work/rounds" | median)" \
-  "$(cut -d' ' -f3 "$work/rounds" | median)"
+  "$(cut -d' ' -f3 "$work/rounds" | median)" "$(cut -d' ' -f4 "$work/rounds" | median)"
