@@ -99,6 +99,7 @@ double distinct_bound(const Exemplar& e, const std::vector<uint8_t>& labels) {
     std::printf("  class %d: %lld target pixels, %lld usable exemplar pixels\n", int(label),
                 (long long)n[0], (long long)n[1]);
   }
+  if (target == 0) throw maquette::Error("the window holds no pixel of a land-cover class");
   return double(bound) / double(target);
 }
 
@@ -264,7 +265,10 @@ int main(int argc, char** argv) try {
   const int step = int_argument(argc, argv, 3, "step", 2, 1);
   const auto params = maquette::synthesis::synthesis_params(synthesis_weights(argc, argv));
   const bool with_ebsynth = !(argc > 6 && std::string(argv[6]) == "ours");
-  if (argc > 7 || (argc > 6 && with_ebsynth))
+  if (argc > 6 && with_ebsynth)
+    throw maquette::Error(std::string(kProgram) + ": argument 6 '" + argv[6] +
+                          "': expected \"ours\" (our transfer alone)");
+  if (argc > 7)
     throw maquette::Error(std::string(kProgram) +
                           ": too many arguments: side threads step vote params [ours]");
   return maquette::synthesis::bench::run(side, threads, step, params, with_ebsynth);

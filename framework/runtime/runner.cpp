@@ -331,10 +331,12 @@ class Runner {
           run_cell_step(sp, mine, io, progress, arena_);
         } catch (...) {
           // The cells computed before the failing one are kept, as without groups; a failure to
-          // keep them must not hide the error that names the step and the cell.
+          // keep them must not hide the error that names the step and the cell, but is said.
           try {
             io.flush();
-          } catch (...) {
+          } catch (const std::exception& e) {
+            spdlog::error("{}: the cells finished before the failure were not kept either: {}",
+                          s.label, e.what());
           }
           throw;
         }

@@ -144,6 +144,8 @@ double water_level(const BasinRaster& basin, const WaterLevel& rule) {
   return heights[k];
 }
 
+namespace {
+
 // Where the lake's water crosses the stroke: the first outside pixel of the lake's runs, in
 // row-major order, with an 8-neighbour inside the polygon below the level (that neighbour is in
 // the lake too, so such a pixel exists when the lake has an outside pixel).
@@ -166,6 +168,8 @@ int64_t crossing(const BasinRaster& b, double level, const std::vector<Run>& run
   }
   throw std::logic_error("fill_basin: a leaking lake without a crossing of its stroke");
 }
+
+}  // namespace
 
 WaterBody fill_basin(const BasinRaster& basin, double level) {
   WaterBody body;

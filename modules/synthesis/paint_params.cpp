@@ -78,7 +78,11 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
     if (std::find(excluded.begin(), excluded.end(), sky) != excluded.end())
       throw Error(source + ".sky_class: class " + std::to_string(sky) +
                   " is in exclude_classes: the sky could never be copied from it");
-    p.sky_class = uint8_t(sky);
+    // A sky class in a set of classes is relabelled in the exemplar as the set's smallest
+    // (class_groups): the sky's label is that class too.
+    const auto groups = class_groups(j.at("landcover_classes"), source);
+    const auto group = groups.find(uint8_t(sky));
+    p.sky_class = group == groups.end() ? uint8_t(sky) : group->second;
   }
   p.silhouettes = j.at("silhouettes").get<bool>();
   p.shading = j.at("shading").get<double>();

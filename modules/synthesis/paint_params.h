@@ -19,7 +19,7 @@ struct PaintParams {
   std::map<int, uint8_t> classes;                       // land-cover value -> painting class
   std::optional<std::array<double, 2>> altitude_range;  // metres -> 0..1
   std::optional<std::array<double, 2>> distance_range;  // metres from the eye -> 0..1 (log)
-  std::optional<uint8_t> sky_class;  // the sky painted from this painting class, else kept
+  std::optional<uint8_t> sky_class;  // the sky painted from this class (its set's label), else kept
   bool silhouettes = true;           // coherence breaks where the depth jumps (depth_break)
   double shading = 0;                // strength of the blend with the render's shading, 0..1
   int tile = 256;                    // output pixels a side synthesized at once

@@ -103,6 +103,15 @@ const Scene& scene() {
   return s;
 }
 
+TEST(PaintPanorama, ASkyClassInASetOfClassesIsTheSetsLabel) {
+  nlohmann::json params = scene().params();
+  params["landcover_classes"] = {{"41", {1, 2}}, {"52", 0}};
+  params["sky_class"] = 2;
+  EXPECT_EQ(int(*paint_params(params, "p.json").sky_class), 1);  // the set [1, 2] is labelled 1
+  params["landcover_classes"] = {{"41", 1}, {"52", 0}};
+  EXPECT_EQ(int(*paint_params(params, "p.json").sky_class), 2);
+}
+
 PaintedPanorama paint(const nlohmann::json& raw) {
   const PaintParams params = paint_params(raw, "params.json");
   const PanoramaPicture picture = read_panorama(scene().picture, true);
