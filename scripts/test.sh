@@ -38,6 +38,8 @@ else
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" -DMAQUETTE_SANITIZE="$sanitize" >/dev/null
   fi
   cmake --build "$build" --parallel "$(nproc)" "${targets[@]}"
+  # The demo's data, which setup.sh puts in build/demo-data, next to this tree's bin/ too.
+  [ -e "$build/demo-data" ] || ln -s "$root/build/demo-data" "$build/demo-data"
   # Reports stop the program; leaks are reported too (exit code 23 fails the test); a stack slot
   # read after its function returned too (OpenVDB's streams keep pointers to their callers' locals).
   export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:exitcode=23:detect_stack_use_after_return=1}
