@@ -99,8 +99,13 @@ printf 'round  1 rank: job s  run s  CPU s   2 ranks: job s  run s  CPU s  rank 
 : >"$work/rounds"
 i=1
 while [ "$i" -le "$repeats" ]; do
-  # shellcheck disable=SC2046 # the fields are split on purpose
-  set -- $(one_run 1) $(one_run 2) $(pair_run)
+  # Each run into a variable first: a failed run then stops the script (set -e), where inside
+  # set's arguments it would only shift the fields that follow.
+  one=$(one_run 1)
+  two=$(one_run 2)
+  pair=$(pair_run)
+  # shellcheck disable=SC2086 # the fields are split on purpose
+  set -- $one $two $pair
   job=$(echo "100 * $1 / (2 * $5)" | bc -l)
   run=$(echo "100 * $2 / (2 * $6)" | bc -l)
   cpu=$(echo "100 * $3 / $7" | bc -l)
