@@ -19,9 +19,11 @@
 #include <cstdio>
 #include <ctime>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
+#include "core/whole_int.h"
 #include "ebsynth.h"
 #include "runtime/params_schema.h"
 #include "transfer_params.h"
@@ -216,17 +218,11 @@ constexpr const char* kUsage =
 int int_argument(int argc, char** argv, int i, const char* name, int fallback, int min) {
   if (argc <= i) return fallback;
   const std::string text = argv[i];
-  size_t used = 0;
-  int value = 0;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || value < min)
+  const std::optional<int> value = maquette::whole_int<int>(text);
+  if (!value || *value < min)
     throw maquette::Error(std::string(kProgram) + ": " + name + " '" + text +
                           "': expected an integer >= " + std::to_string(min));
-  return value;
+  return *value;
 }
 
 // The synthesis's params: argument 5 (a JSON object) with argument 4 as its "vote_radius",

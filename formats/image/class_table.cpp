@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/whole_int.h"
 
 namespace maquette {
 namespace {
@@ -32,10 +33,9 @@ ClassTable class_table(const LayerInfo& info) {
   const std::string where = "layer '" + info.name + "' provenance.classes";
   if (!it->is_object()) throw Error(where + " is not an object");
   for (const auto& [key, entry] : it->items()) {
-    int64_t value = 0;
-    if (std::from_chars(key.data(), key.data() + key.size(), value).ptr != key.data() + key.size())
-      throw Error(where + ": class value '" + key + "' is not an integer");
-    ClassEntry& c = table[value];
+    const std::optional<int64_t> value = whole_int<int64_t>(key);
+    if (!value) throw Error(where + ": class value '" + key + "' is not an integer");
+    ClassEntry& c = table[*value];
     if (!entry.is_object()) continue;
     c.name = entry.value("name", "");
     if (entry.contains("color")) {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/error.h"
+#include "core/whole_int.h"
 #include "exemplar.h"
 
 namespace maquette::synthesis {
@@ -120,16 +122,10 @@ std::map<int, std::vector<uint8_t>> table_entries(const nlohmann::json& table,
                                                   const std::string& op) {
   std::map<int, std::vector<uint8_t>> out;
   for (const auto& [key, value] : table.items()) {
-    int target = 0;
-    size_t used = 0;
-    try {
-      target = std::stoi(key, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != key.size() || key.empty())
+    const std::optional<int> target = whole_int<int>(key);
+    if (!target)
       throw Error(op + ".landcover_classes: key '" + key + "' is not an integer class value");
-    out[target] = table_classes(value, op + ".landcover_classes." + key);
+    out[*target] = table_classes(value, op + ".landcover_classes." + key);
   }
   return out;
 }
