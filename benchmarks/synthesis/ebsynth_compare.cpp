@@ -122,13 +122,14 @@ struct EbsynthRun {
 };
 
 // ebsynth on the fixture's side x side window, on `threads` OpenMP threads.
-EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads) {
+EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann::json& classes) {
   EbsynthRun r;
   const int channels = zion_params().at("classes").get<int>() + 1;
   std::vector<uint8_t> style(e.rgb.size());
   for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
   std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
-  std::vector<uint8_t> target_guide = one_hot(zion_labels({0, 0, side, side}), nullptr, channels);
+  std::vector<uint8_t> target_guide =
+      one_hot(zion_labels({0, 0, side, side}, classes), nullptr, channels);
   std::vector<float> style_weights(3, 1.0f / 3), guide_weights(size_t(channels), 1.0f / channels);
   constexpr int kPatch = 5;
   int levels = 0;  // as ebsynth's command line: while the smaller image is >= 2 patches + 1
@@ -150,15 +151,17 @@ EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads) {
   return r;
 }
 
-int run(int side, int threads, int step, const SynthesisParams& params, bool with_ebsynth) {
+int run(int side, int threads, int step, const SynthesisParams& params,
+        const nlohmann::json& classes, bool with_ebsynth) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
-  const Timed analysis = timed([&] { t = zion_exemplar(); });
+  const Timed analysis = timed([&] { t = zion_exemplar(classes); });
   const Exemplar e = copied_exemplar(t->pyramid.levels[0]);
 
   std::vector<int32_t> ours;
-  const Timed ours_time = timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params); });
+  const Timed ours_time =
+      timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params, classes); });
   std::vector<float> ours_rgb(ours.size() * 3);
   for (size_t i = 0; i < ours.size(); ++i)
     for (size_t k = 0; k < 3; ++k) ours_rgb[3 * i + k] = e.rgb[3 * size_t(ours[i]) + k];
@@ -169,24 +172,24 @@ int run(int side, int threads, int step, const SynthesisParams& params, bool wit
               analysis.wall);
   std::printf("ours:    CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ours_time.cpu,
               ours_time.cpu / mp, ours_time.wall, ours_time.wall / mp);
-  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb), out, step));
+  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb, classes), out, step));
   const Metrics averaged_m =
-      metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours)), out, step));
+      metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
   std::printf("the window's classes (painting classes through the class table):\n");
-  const double bound = distinct_bound(e, zion_labels(out));
+  const double bound = distinct_bound(e, zion_labels(out, classes));
   std::printf("distinct-source bound with label consistency 1: %.4f\n", bound);
   print("ours", ours_m);
   print("ours+mean", averaged_m);
   if (!with_ebsynth) return 0;
-  const EbsynthRun ebsynth = run_ebsynth(e, side, threads);
+  const EbsynthRun ebsynth = run_ebsynth(e, side, threads, classes);
   std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth.time.cpu,
               ebsynth.time.cpu / mp, ebsynth.time.wall, ebsynth.time.wall / mp);
   std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth.time.cpu / ours_time.cpu,
               ebsynth.time.wall / ours_time.wall);
   const Metrics ebsynth_m =
-      metrics(e, tally(e, assessed(out, ebsynth.source, ebsynth.rgb), out, step));
+      metrics(e, tally(e, assessed(out, ebsynth.source, ebsynth.rgb, classes), out, step));
   print("ebsynth", ebsynth_m);
   std::printf("coherence ours / ebsynth: %.2f, ours+mean / ebsynth: %.2f\n",
               ours_m.coherence / ebsynth_m.coherence, averaged_m.coherence / ebsynth_m.coherence);
@@ -209,7 +212,8 @@ constexpr const char* kUsage =
            "coherence", "seed", ...: synthesis_params_schema(); the defaults otherwise),
            validated against that schema: an unknown key, or a value of the wrong type or out of
            range, is an error naming it; its "vote_radius" and `vote` are one setting, given
-           twice with different values an error
+           twice with different values an error; "landcover_classes" replaces the fixture's
+           class table (zion_fixture.h) for both syntheses and the measures
   ours     skip ebsynth (a variant measured against an earlier run's ebsynth)
 )";
 
@@ -226,7 +230,8 @@ int int_argument(int argc, char** argv, int i, const char* name, int fallback, i
 }
 
 // The synthesis's params: argument 5 (a JSON object) with argument 4 as its "vote_radius",
-// validated against synthesis_params_schema() with the defaults filled in.
+// validated against synthesis_params_schema() and the class table's schema, the defaults filled
+// in (the fixture's class table among them).
 nlohmann::json synthesis_weights(int argc, char** argv) {
   nlohmann::json given = nlohmann::json::object();
   if (argc > 5) {
@@ -243,9 +248,12 @@ nlohmann::json synthesis_weights(int argc, char** argv) {
                             " disagree: give the vote's radius once");
     given["vote_radius"] = vote;
   }
-  const nlohmann::json schema = {{"type", "object"},
-                                 {"properties", maquette::synthesis::synthesis_params_schema()},
-                                 {"additionalProperties", false}};
+  nlohmann::json properties = maquette::synthesis::synthesis_params_schema();
+  properties["landcover_classes"] =
+      maquette::synthesis::exemplar_params_schema().at("landcover_classes");
+  properties["landcover_classes"]["default"] = maquette::synthesis::bench::zion_classes();
+  const nlohmann::json schema = {
+      {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
   return maquette::validate_params(schema, given, kProgram);
 }
 
@@ -259,7 +267,8 @@ int main(int argc, char** argv) try {
   const int side = int_argument(argc, argv, 1, "side", 512, 1);
   const int threads = int_argument(argc, argv, 2, "threads", 2, 1);
   const int step = int_argument(argc, argv, 3, "step", 2, 1);
-  const auto params = maquette::synthesis::synthesis_params(synthesis_weights(argc, argv));
+  const nlohmann::json weights = synthesis_weights(argc, argv);
+  const auto params = maquette::synthesis::synthesis_params(weights);
   const bool with_ebsynth = !(argc > 6 && std::string(argv[6]) == "ours");
   if (argc > 6 && with_ebsynth)
     throw maquette::Error(std::string(kProgram) + ": argument 6 '" + argv[6] +
@@ -267,7 +276,8 @@ int main(int argc, char** argv) try {
   if (argc > 7)
     throw maquette::Error(std::string(kProgram) +
                           ": too many arguments: side threads step vote params [ours]");
-  return maquette::synthesis::bench::run(side, threads, step, params, with_ebsynth);
+  return maquette::synthesis::bench::run(side, threads, step, params,
+                                         weights.at("landcover_classes"), with_ebsynth);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
   return 1;

@@ -19,20 +19,24 @@ constexpr int kOriginCol = 20, kOriginRow = 160;
 
 }  // namespace
 
-nlohmann::json zion_params() {
-  return {
-      {"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
-      {"classes", 8},
-      {"exclude_classes", {0}},
-      {"landcover_classes",
-       {{"1", 7}, {"2", 3}, {"3", 5}, {"4", {6, 1}}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", {6, 1}}}},
-      {"exemplar_scale", 2},
-      {"k", 2}};
+nlohmann::json zion_classes() {
+  return {{"1", 7}, {"2", 3}, {"3", 5}, {"4", {6, 1}}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", {6, 1}}};
 }
 
-std::shared_ptr<const TransferExemplar> zion_exemplar() { return transfer_exemplar(zion_params()); }
+nlohmann::json zion_params(const nlohmann::json& classes) {
+  return {{"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
+          {"classes", 8},
+          {"exclude_classes", {0}},
+          {"landcover_classes", classes},
+          {"exemplar_scale", 2},
+          {"k", 2}};
+}
 
-std::vector<uint8_t> zion_labels(const PixelRect& window) {
+std::shared_ptr<const TransferExemplar> zion_exemplar(const nlohmann::json& classes) {
+  return transfer_exemplar(zion_params(classes));
+}
+
+std::vector<uint8_t> zion_labels(const PixelRect& window, const nlohmann::json& classes) {
   struct Raster {
     int width = 0, height = 0;
     std::vector<uint8_t> classes;
@@ -49,7 +53,7 @@ std::vector<uint8_t> zion_labels(const PixelRect& window) {
       throw Error(path + ": cannot read band 1");
     return r;
   }();
-  const auto table = class_table(zion_params().at("landcover_classes"), "zion fixture");
+  const auto table = class_table(classes, "zion fixture");
   std::vector<uint8_t> out(size_t(window.width) * size_t(window.height), kUnknownLabel);
   for (int64_t r = 0; r < window.height; ++r)
     for (int64_t c = 0; c < window.width; ++c) {
@@ -63,7 +67,8 @@ std::vector<uint8_t> zion_labels(const PixelRect& window) {
 }
 
 std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect& out, int tile,
-                                      int threads, const SynthesisParams& params) {
+                                      int threads, const SynthesisParams& params,
+                                      const nlohmann::json& classes) {
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
   const int64_t across = (out.width + tile - 1) / tile, down = (out.height + tile - 1) / tile;
   const int halo = synthesis_halo();
@@ -74,7 +79,7 @@ std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect
                            std::min<int64_t>(tile, out.height - i / across * tile)};
       TargetGuides g;
       g.rect = {part.col0 - halo, part.row0 - halo, part.width + 2 * halo, part.height + 2 * halo};
-      g.labels = zion_labels(g.rect);
+      g.labels = zion_labels(g.rect, classes);
       const std::vector<int32_t> src = synthesize(t.pyramid, g, params, part);
       for (int64_t r = 0; r < part.height; ++r)
         std::copy_n(
@@ -85,12 +90,13 @@ std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect
   return result;
 }
 
-AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb) {
+AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb,
+                       const nlohmann::json& classes) {
   AssessedImage a;
   a.rect = out;
   a.source = std::move(source);
   a.rgb = std::move(rgb);
-  a.labels = zion_labels(out);
+  a.labels = zion_labels(out, classes);
   return a;
 }
 

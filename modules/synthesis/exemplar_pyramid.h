@@ -41,6 +41,9 @@ struct ExemplarLevel {
   std::array<std::vector<int32_t>, 256> by_label;  // allowed pixels of each label, ascending
   // How much the synthesis over-uses each pixel (exemplar_usage.h), or empty: not measured.
   std::vector<float> usage;
+  // How much more often the synthesis shows each pixel's colour than the exemplar has it, per
+  // label (exemplar_usage.h), or empty: not measured.
+  std::vector<float> colour_excess;
 
   int32_t index(int x, int y) const { return y * width + x; }
   // The neighbourhood of (x, y) with coordinates clamped into the level.

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <vector>
+
+#include "assess_metrics.h"
 
 namespace maquette::synthesis {
 
@@ -30,10 +33,41 @@ std::vector<float> usage_of_copy(const ExemplarLevel& finest, const std::vector<
   return usage;
 }
 
+std::vector<float> colour_excess_of_copy(const ExemplarLevel& finest,
+                                         const std::vector<int32_t>& source) {
+  const auto bin = [&](size_t i) {
+    const float* c = &finest.rgb[3 * i];
+    return size_t(histogram_bin(c[0] * 255.0f, c[1] * 255.0f, c[2] * 255.0f));
+  };
+  struct Counts {
+    std::vector<double> copy = std::vector<double>(kHistogramBins, 0),
+                        exemplar = std::vector<double>(kHistogramBins, 0);
+    double pixels = 0;
+  };
+  std::map<uint8_t, Counts> by_label;
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (finest.excluded[i]) continue;
+    Counts& n = by_label[finest.labels[i]];
+    n.copy[bin(size_t(source[i]))] += 1;
+    n.exemplar[bin(i)] += 1;
+    n.pixels += 1;
+  }
+  std::vector<float> excess(source.size(), 1.0f);
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (finest.excluded[i]) continue;
+    const Counts& n = by_label.at(finest.labels[i]);
+    const size_t b = bin(i);
+    const double ratio =
+        (n.copy[b] / n.pixels + kExcessFloor) / (n.exemplar[b] / n.pixels + kExcessFloor);
+    excess[i] = float(std::clamp(ratio, 1 / kExcessClamp, kExcessClamp));
+  }
+  return excess;
+}
+
 void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
   ExemplarLevel& finest = pyramid.levels[0];
   const int w = finest.width, h = finest.height, halo = synthesis_halo();
-  for (ExemplarLevel& level : pyramid.levels) level.usage.clear();
+  for (ExemplarLevel& level : pyramid.levels) level.usage.clear(), level.colour_excess.clear();
   TargetGuides own;
   own.rect = {-halo, -halo, w + 2 * halo, h + 2 * halo};
   own.labels.assign(size_t(own.rect.width) * size_t(own.rect.height), kUnknownLabel);
@@ -47,6 +81,7 @@ void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
   const std::vector<int32_t> source = synthesize(pyramid, own, unpenalized, {0, 0, w, h});
 
   finest.usage = usage_of_copy(finest, source);
+  finest.colour_excess = colour_excess_of_copy(finest, source);
   for (size_t l = 1; l < pyramid.levels.size(); ++l) {
     const ExemplarLevel& fine = pyramid.levels[l - 1];
     ExemplarLevel& coarse = pyramid.levels[l];

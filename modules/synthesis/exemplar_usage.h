@@ -8,8 +8,9 @@
 // each allowed pixel about once. Each allowed pixel of the finest level counts the output pixels
 // of a known label copied from it; its usage is the mean count over the allowed pixels of its
 // 3 x 3 neighbourhood, minus 1, at least 0 (0: used no more than its share). A coarser level's
-// pixel takes the mean of its 2 x 2 children (clamped at the border). Deterministic for any
-// threads (synthesize's contract).
+// pixel takes the mean of its 2 x 2 children (clamped at the border). The same copy gives the
+// finest level's colour excess (colour_excess_of_copy), which the vote's histogram balance reads
+// (vote.h). Deterministic for any threads (synthesize's contract).
 #pragma once
 
 #include "exemplar_pyramid.h"
@@ -17,7 +18,8 @@
 
 namespace maquette::synthesis {
 
-// Sets pyramid.levels[l].usage for every level. Precondition: the pyramid has kLevels levels.
+// Sets pyramid.levels[l].usage for every level and the finest level's colour_excess. Precondition:
+// the pyramid has kLevels levels.
 void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params);
 
 // The finest level's usage from a copy of its own label map: `source` holds, for each pixel of
@@ -26,5 +28,18 @@ void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params);
 // usage is the mean count over the allowed pixels of its 3 x 3 neighbourhood (within the level),
 // minus 1, at least 0; 0 when it has no allowed neighbour.
 std::vector<float> usage_of_copy(const ExemplarLevel& finest, const std::vector<int32_t>& source);
+
+// The colour excess's floor and clamp (colour_excess_of_copy).
+inline constexpr double kExcessFloor = 0.002, kExcessClamp = 4;
+
+// The finest level's colour excess from a copy of its own label map (`source` as for
+// usage_of_copy): for each label, the share of the copy's allowed pixels of that label whose
+// source's colour falls in each bin (histogram_bin: 8 x 8 x 8, as synthesis.assess's
+// histograms), over the share of the level's allowed pixels of that label in the bin, each share
+// plus kExcessFloor (bins that are nearly empty stay near 1), clamped to [1 / kExcessClamp,
+// kExcessClamp]. Every allowed pixel takes the ratio of its own colour's bin under its label; an
+// excluded pixel 1. Above 1: the synthesis shows the colour more often than the exemplar has it.
+std::vector<float> colour_excess_of_copy(const ExemplarLevel& finest,
+                                         const std::vector<int32_t>& source);
 
 }  // namespace maquette::synthesis

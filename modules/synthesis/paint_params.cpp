@@ -78,11 +78,15 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
     if (std::find(excluded.begin(), excluded.end(), sky) != excluded.end())
       throw Error(source + ".sky_class: class " + std::to_string(sky) +
                   " is in exclude_classes: the sky could never be copied from it");
-    // A sky class in a set of classes is relabelled in the exemplar as the set's smallest
-    // (class_groups): the sky's label is that class too.
-    const auto groups = class_groups(j.at("landcover_classes"), source);
-    const auto group = groups.find(uint8_t(sky));
-    p.sky_class = group == groups.end() ? uint8_t(sky) : group->second;
+    // The sky is a class of its own: a class that paints land cover too would copy the sky's
+    // pixels onto the land and the land's into the sky.
+    for (const auto& [key, value] : j.at("landcover_classes").items())
+      if (value == sky ||
+          (value.is_array() && std::find(value.begin(), value.end(), sky) != value.end()))
+        throw Error(source + ".sky_class: class " + std::to_string(sky) +
+                    " also paints land-cover class " + key +
+                    " (landcover_classes): the sky must be a class of its own");
+    p.sky_class = uint8_t(sky);
   }
   p.silhouettes = j.at("silhouettes").get<bool>();
   p.shading = j.at("shading").get<double>();

@@ -19,7 +19,7 @@ struct PaintParams {
   std::map<int, uint8_t> classes;                       // land-cover value -> painting class
   std::optional<std::array<double, 2>> altitude_range;  // metres -> 0..1
   std::optional<std::array<double, 2>> distance_range;  // metres from the eye -> 0..1 (log)
-  std::optional<uint8_t> sky_class;  // the sky painted from this class (its set's label), else kept
+  std::optional<uint8_t> sky_class;  // the sky painted from this class, else kept
   bool silhouettes = true;           // coherence breaks where the depth jumps (depth_break)
   double shading = 0;                // strength of the blend with the render's shading, 0..1
   int tile = 256;                    // output pixels a side synthesized at once
@@ -31,7 +31,8 @@ nlohmann::json paint_params_schema();
 
 // The params from `raw` (read from `source`, which errors name): validated, defaults filled,
 // each guide's two halves given together (altitude_range with painting_altitude,
-// distance_range with painting_distance; w_distance not without them), sky_class not excluded.
+// distance_range with painting_distance; w_distance not without them), sky_class not excluded
+// and in no land-cover class's value of landcover_classes (the sky is a class of its own).
 PaintParams paint_params(const nlohmann::json& raw, const std::string& source);
 
 // Distance from the eye mapped onto the range logarithmically (perspective shrinks the far

@@ -372,7 +372,9 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
           corrected(std::move(state), e, g, params, l, pyramid.k, plan.passes[size_t(pass)], pass);
     if (l == 0) {
       State voted(out);
-      voted.src = vote(e, {state.rect, state.src, g.rect, g.labels, g.depth, params.depth_break},
+      voted.src = vote(e,
+                       {state.rect, state.src, g.rect, g.labels, g.depth, params.depth_break,
+                        params.vote_balance},
                        params.vote_radius, out);
       state = std::move(voted);
     }

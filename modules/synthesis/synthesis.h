@@ -50,9 +50,10 @@
 // Last, the finest level's vote (vote.h; ebsynth's coherence comes from votes of the overlapping
 // patches, here the vote picks a source, it does not average colours): each pixel takes, among
 // the sources S(p + d) - d the patches of side 2 vote_radius + 1 around it propose (of its
-// target label), the one whose colour is nearest their mean; a pixel with a depth break within
-// the window keeps its source. So the output is still a copy: every pixel's colour is its
-// source's, and the sources returned are the pixels whose colours the output shows.
+// target label), the one whose colour is nearest their mean (with vote_balance, weighed by how
+// much the synthesis over-shows its colour, measured on the exemplar: vote.h); a pixel with a
+// depth break within the window keeps its source. So the output is still a copy: every pixel's
+// colour is its source's, and the sources returned are the pixels whose colours the output shows.
 //
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
@@ -85,6 +86,7 @@ struct SynthesisParams {
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;
   int vote_radius = 1;        // 0 .. kVoteRadius; 0: no vote
+  double vote_balance = 0;    // the vote's histogram balance (vote.h), an exponent; 0: none
   int jitter = 1;             // amplitude of the upsampling jitter, pixels at each level (0: none)
   double depth_break = 1.05;  // a depth ratio that breaks coherence (with a depth guide)
   uint64_t seed = 0;

@@ -76,6 +76,7 @@ nlohmann::json synthesis_params_schema() {
           {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
           {"vote_radius",
            {{"type", "integer"}, {"minimum", 0}, {"maximum", kVoteRadius}, {"default", 1}}},
+          {"vote_balance", weight(0.0)},
           {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}};
 }
 
@@ -89,6 +90,7 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.coherence = params.at("coherence").get<double>();
   sp.jitter = params.at("jitter").get<int>();
   sp.vote_radius = params.at("vote_radius").get<int>();
+  sp.vote_balance = params.at("vote_balance").get<double>();
   sp.seed = params.at("seed").get<uint64_t>();
   return sp;
 }

@@ -56,6 +56,8 @@ std::vector<int32_t> vote(const ExemplarLevel& e, const VoteInputs& in, int radi
         double d = 0;
         for (size_t k = 0; k < 3; ++k)
           d += std::pow(double(e.rgb[3 * size_t(c) + k]) - mean[k] / double(proposals.size()), 2);
+        if (in.balance > 0 && !e.colour_excess.empty())
+          d = (d + kBalanceFloor) * std::pow(double(e.colour_excess[size_t(c)]), in.balance);
         if (d < least) least = d, winner = c;
       }
     }

@@ -9,6 +9,15 @@
 // with their multiplicity; on ties the first in row-major order of d; when none is kept, its own
 // source S(p). A pixel with a depth break (across_depth_break) between it and any pixel of its
 // window keeps S(p): the vote would join patches across a silhouette.
+//
+// The histogram balance (Kaspar et al. 2015's histogram-preserving vote, made a property of the
+// exemplar): nearest the mean favours a class's middle tones, so its histogram narrows. With
+// `balance` > 0 and the level's colour excess measured (ExemplarLevel::colour_excess: how much
+// more often the synthesis of the exemplar's own labels shows each pixel's colour than the
+// exemplar has it, exemplar_usage.h), a proposal's squared distance to the mean, plus
+// kBalanceFloor, is multiplied by its colour excess to the power `balance`: colours the vote
+// over-shows must lie nearer the mean to win, the under-shown ones win from farther. A function
+// of the exemplar and the window's state alone, as before.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +33,10 @@ namespace maquette::synthesis {
 // Unknown depths break nothing.
 bool across_depth_break(float a, float b, double ratio);
 
+// Added to a proposal's squared distance (RGB 0..1) before the balance's factor: a proposal at
+// the mean itself is still weighed by its excess.
+inline constexpr double kBalanceFloor = 1e-4;
+
 // Rasters over rectangles of global pixels, row-major.
 struct VoteInputs {
   PixelRect state_rect;                // covers `out` grown by radius
@@ -32,6 +45,7 @@ struct VoteInputs {
   const std::vector<uint8_t>& labels;  // target labels (painting classes)
   const std::vector<float>& depth;     // depth from the eye, or empty: no breaks
   double depth_break = 1.05;           // the ratio that breaks
+  double balance = 0;                  // the colour excess's exponent (0: no balance)
 };
 
 // The voted exemplar pixel of each pixel of `out`, row-major. Preconditions: radius >= 0, the

@@ -96,6 +96,30 @@ TEST(ExemplarUsage, CountsTheAllowedCopiesOfEachPixel) {
   for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(usage[i], expected[i], 1e-6) << i;
 }
 
+// A 7 x 1 level: label 0 black, black, white, white; label 1 grey, white and an excluded white
+// pixel. The copy: label 0's pixels copy black, black, black, white (shares 3 / 4 and 1 / 4
+// against the level's 2 / 4 each); label 1's grey and white pixels both copy the white one
+// (white 2 / 2, grey 0 / 2, against 1 / 2 each); the excluded pixel copies black (not counted).
+// Each ratio worked out by hand with the floor; grey's, below 1 / kExcessClamp, is clamped.
+TEST(ExemplarUsage, TheColourExcessIsTheCopysShareOfEachColourOverTheExemplarsPerLabel) {
+  ExemplarLevel level;
+  level.width = 7;
+  level.height = 1;
+  const float greys[7] = {0, 0, 1, 1, 0.5f, 1, 1};
+  for (const float g : greys) level.rgb.insert(level.rgb.end(), {g, g, g});
+  level.labels = {0, 0, 0, 0, 1, 1, 1};
+  level.excluded = {0, 0, 0, 0, 0, 0, 1};
+  const std::vector<int32_t> source = {0, 1, 0, 2, 5, 5, 0};
+  const double f = kExcessFloor;
+  const double black0 = (0.75 + f) / (0.5 + f), white0 = (0.25 + f) / (0.5 + f),
+               white1 = (1 + f) / (0.5 + f);
+  const std::vector<double> expected = {black0,           black0, white0, white0,
+                                        1 / kExcessClamp, white1, 1};
+  const std::vector<float> excess = colour_excess_of_copy(level, source);
+  ASSERT_EQ(excess.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(excess[i], expected[i], 1e-6) << i;
+}
+
 TEST(ExemplarUsage, ACoarserLevelTakesTheMeanOfItsChildren) {
   const ExemplarPyramid p = pyramid();
   for (size_t l = 1; l < p.levels.size(); ++l) {

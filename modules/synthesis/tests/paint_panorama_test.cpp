@@ -19,6 +19,7 @@
 #include <fstream>
 
 #include "../pixel_hash.h"
+#include "core/error.h"
 #include "core/json_file.h"
 #include "gdal/image_file.h"
 #include "run_cli.h"
@@ -103,13 +104,22 @@ const Scene& scene() {
   return s;
 }
 
-TEST(PaintPanorama, ASkyClassInASetOfClassesIsTheSetsLabel) {
+TEST(PaintPanorama, TheSkyIsAClassOfItsOwn) {
   nlohmann::json params = scene().params();
-  params["landcover_classes"] = {{"41", {1, 2}}, {"52", 0}};
   params["sky_class"] = 2;
-  EXPECT_EQ(int(*paint_params(params, "p.json").sky_class), 1);  // the set [1, 2] is labelled 1
   params["landcover_classes"] = {{"41", 1}, {"52", 0}};
   EXPECT_EQ(int(*paint_params(params, "p.json").sky_class), 2);
+  for (const nlohmann::json& value : {nlohmann::json{1, 2}, nlohmann::json(2)}) {
+    params["landcover_classes"] = {{"41", value}, {"52", 0}};
+    try {
+      paint_params(params, "p.json");
+      ADD_FAILURE() << value.dump() << ": the sky's class paints land cover, and it ran";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "p.json.sky_class: class 2 also paints land-cover class 41 (landcover_classes): "
+                "the sky must be a class of its own");
+    }
+  }
 }
 
 PaintedPanorama paint(const nlohmann::json& raw) {

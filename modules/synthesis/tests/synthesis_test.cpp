@@ -83,15 +83,15 @@ class SynthesisTest : public ::testing::Test {
     delete whole_;
   }
 
-  // The tiles of `side` computed on `threads` threads, pasted into one image.
-  static std::vector<int32_t> tiled(int side, int threads) {
+  // The tiles of `side` computed on `threads` threads with `params`, pasted into one image.
+  static std::vector<int32_t> tiled(int side, int threads, const SynthesisParams& params = {}) {
     std::vector<int32_t> out(whole_->size(), -1);
     const int per_row = int(kWhole.width / side), count = per_row * int(kWhole.height / side);
     const auto work = [&](int first) {
       for (int t = first; t < count; t += threads) {
         const PixelRect tile{kWhole.col0 + (t % per_row) * side, kWhole.row0 + (t / per_row) * side,
                              side, side};
-        const auto src = synthesize(*pyramid_, guides(grown(tile, synthesis_halo())), {}, tile);
+        const auto src = synthesize(*pyramid_, guides(grown(tile, synthesis_halo())), params, tile);
         for (int r = 0; r < side; ++r)
           for (int c = 0; c < side; ++c)
             out[size_t(tile.row0 - kWhole.row0 + r) * size_t(kWhole.width) +
@@ -132,6 +132,24 @@ TEST_F(SynthesisTest, AShiftedOddWindowEqualsTheWholeImage) {
 }
 
 TEST_F(SynthesisTest, SameBitsOnTwoThreads) { EXPECT_EQ(differing(tiled(64, 2), *whole_), 0u); }
+
+// The widest vote with the histogram balance (vote.h: the colour excess measured on the
+// exemplar) keeps the output a function of global pixel coordinates, and the balance changes it.
+TEST_F(SynthesisTest, TheBalancedVoteOfRadius2TilesEqualTheWholeImage) {
+  SynthesisParams balanced;
+  balanced.vote_radius = 2;
+  balanced.vote_balance = 1;
+  const auto whole =
+      synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo())), balanced, kWhole);
+  EXPECT_EQ(differing(tiled(64, 2, balanced), whole), 0u);
+  EXPECT_EQ(differing(tiled(128, 1, balanced), whole), 0u);
+  SynthesisParams unbalanced = balanced;
+  unbalanced.vote_balance = 0;
+  EXPECT_GT(
+      differing(synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo())), unbalanced, kWhole),
+                whole),
+      whole.size() / 100);
+}
 
 TEST_F(SynthesisTest, NeverCopiesAnExcludedPixel) {
   size_t excluded = 0;

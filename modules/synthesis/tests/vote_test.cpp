@@ -66,6 +66,25 @@ TEST(Vote, TakesTheProposalNearestTheMeanNotTheMajorityAndIgnoresAnExcludedOne) 
   EXPECT_EQ(voted(e, state, 0), at(kX));  // counted, X is nearest the mean
 }
 
+// The histogram balance: with B's colour over-shown 4 times and A's under-shown (excess 0.25),
+// B's squared distance to the mean 3 x 0.25^2 = 0.1875 weighs 0.75 and A's 3 x 0.35^2 = 0.3675
+// weighs 0.092: A wins; at balance 0, or with no excess measured, B as above.
+TEST(Vote, TheBalanceWeighsEachProposalByItsColoursExcess) {
+  ExemplarLevel e = exemplar(kGreys);
+  e.excluded[size_t(at(kX))] = 1;
+  const auto state = state_of(kProposals);
+  const std::vector<uint8_t> labels(9, 0);
+  const auto balanced = [&](double balance) {
+    return vote(e, {kWindow, state, kWindow, labels, {}, 1.05, balance}, 1, kPixel).at(0);
+  };
+  EXPECT_EQ(balanced(1), at(kB));  // no excess measured
+  e.colour_excess.assign(kSide * kSide, 1.0f);
+  e.colour_excess[size_t(at(kA))] = 0.25f;
+  e.colour_excess[size_t(at(kB))] = 4.0f;
+  EXPECT_EQ(balanced(0), at(kB));
+  EXPECT_EQ(balanced(1), at(kA));
+}
+
 TEST(Vote, IgnoresAProposalOfAnotherLabelUnlessThePixelsIsUnknown) {
   ExemplarLevel e = exemplar(kGreys);
   e.labels[size_t(at(kX))] = 1;
