@@ -90,7 +90,7 @@ TEST(ColumnFog, ExactlyTheColumnsVoxelsWhereTheLatticePutsThem) {
 // tile), with the grid's transform and metadata, written by OpenVDB's own writer (io::Stream): a
 // missing or extra voxel, leaf or tile, or one out of order, changes the bytes.
 TEST(ColumnFog, SameBytesAsOpenVdbsTreeBuiltVoxelByVoxel) {
-  const FogColumns body = columns(45, 37);
+  const FogColumns body = columns(300, 140);  // across lower nodes (128 voxels) in x and y
   const VolumeContent volume = columns_to_fog({body}, kVolumeOrigin, "columns");
   const auto made = openvdb::gridPtrCast<openvdb::FloatGrid>(decode_volume(volume, "columns")[0]);
   ASSERT_TRUE(made);
