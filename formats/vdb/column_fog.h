@@ -30,13 +30,15 @@ struct FogColumns {
 // `centre`): the columns' voxels active, of density 1, the rest inactive, 0; an 8^3 region of a
 // leaf that all its 64 columns fill is an active tile (no leaf: less to build and write; its
 // voxels count and mesh as the leaf's would). Built in parallel (TBB) by the 8 x 8 columns of a
-// VDB leaf, each block's leaves whole (no per-voxel descent of the tree), added to the tree in
-// block order: the same bodies give the same bytes whatever the thread count. Time and memory are
-// linear in the columns and the leaves set. Each grid's metadata carries the provenance
-// ("object_id", "feature_id", "tool"), as volume_to_mesh reads it back (a grid named "water" meshes
-// as water). Throws maquette::Error naming `where` and the body for a negative size, low or high
-// not of width * height columns, an axis or the centre not finite, axes that do not span space, or
-// a column whose voxels reach beyond +-2^30 (the grid's 32-bit coordinates with room for a leaf).
+// VDB leaf, each block's leaves' masks whole, into a FogTree (fog_tree.h: no OpenVDB tree, no
+// leaf buffer) sorted in tree order and written from it: the same bytes as OpenVDB's writer of
+// the tree of these voxels, whatever the thread count. Time linear in the columns and the leaves
+// set (and n log n in the leaves, their sort); memory linear in the columns and the leaves. Each
+// grid's metadata carries the provenance ("object_id", "feature_id", "tool"), as volume_to_mesh
+// reads it back (a grid named "water" meshes as water). Throws maquette::Error naming `where` and
+// the body for a negative size, low or high not of width * height columns, an axis or the centre
+// not finite, axes that do not span space, or a column whose voxels reach beyond +-2^30 (the
+// grid's 32-bit coordinates with room for a leaf).
 VolumeContent columns_to_fog(const std::vector<FogColumns>& bodies, const EnuOrigin& origin,
                              const std::string& where);
 

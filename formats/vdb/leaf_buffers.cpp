@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/avx2_clones.h"
@@ -87,15 +88,77 @@ std::optional<uint64_t> uniform_key(const Leaf& leaf, float background) {
   return uint64_t(mask.countOn()) << 32 | value;
 }
 
-// The values' stream (io::writeData) of `key`'s count of its value.
-std::string uniform_values(uint64_t key, uint32_t compression) {
-  const uint32_t bits = uint32_t(key);
-  float value;
-  std::memcpy(&value, &bits, sizeof value);
-  const std::vector<float> values(size_t(key >> 32), value);
-  std::ostringstream out(std::ios::binary);
-  io::writeData(out, values.data(), openvdb::Index(values.size()), compression);
-  return std::move(out).str();
+// The values' streams (io::writeData) of uniform leaves: for each distinct key (the count of
+// active values << 32 | their value's bits), that count of that value, compressed once.
+class UniformStreams {
+ public:
+  UniformStreams(std::vector<uint64_t> keys, uint32_t compression) : keys_(std::move(keys)) {
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    streams_.resize(keys_.size());
+    tbb::parallel_for(size_t(0), keys_.size(), [&](size_t k) {
+      const uint32_t bits = uint32_t(keys_[k]);
+      const std::vector<float> values(size_t(keys_[k] >> 32), std::bit_cast<float>(bits));
+      std::ostringstream out(std::ios::binary);
+      io::writeData(out, values.data(), openvdb::Index(values.size()), compression);
+      streams_[k] = std::move(out).str();
+    });
+  }
+
+  // The stream of a key among those given.
+  const std::string& of(uint64_t key) const {
+    return streams_[size_t(std::lower_bound(keys_.begin(), keys_.end(), key) - keys_.begin())];
+  }
+
+ private:
+  std::vector<uint64_t> keys_;
+  std::vector<std::string> streams_;
+};
+
+// What LeafNode::writeBuffers writes for a leaf of value mask `mask` whose active values are one
+// value and whose inactive values are the background (io::writeCompressedValues by active mask):
+// the mask, the kind "no inactive values" and the active values' stream.
+void write_uniform_leaf(std::ostream& part, const uint64_t* mask, const std::string& values) {
+  part.write(reinterpret_cast<const char*>(mask), Leaf::NodeMaskType::memUsage());
+  part.put(char(io::NO_MASK_OR_INACTIVE_VALS));
+  part.write(values.data(), std::streamsize(values.size()));
+}
+
+// The buffers of `count` leaves, leaf l written by write(l, part), in parts of kLeavesPerPart
+// leaves made in parallel on streams of `compression` and the grid's `background`, and their
+// delayed-load metadata for `archive_compression`, read from their bytes.
+template <typename Write>
+LeafBuffers by_parts(size_t count, uint32_t compression, uint32_t archive_compression,
+                     const float* background, const Write& write) {
+  LeafBuffers out;
+  out.parts.resize((count + kLeavesPerPart - 1) / kLeavesPerPart);
+  std::vector<std::pair<int8_t, int64_t>> entries(count);
+  tbb::parallel_for(size_t(0), out.parts.size(), [&](size_t p) {
+    std::ostringstream part(std::ios::binary);
+    io::setDataCompression(part, compression);
+    io::setGridBackgroundValuePtr(part, background);
+    const size_t first = p * kLeavesPerPart, end = std::min(count, first + kLeavesPerPart);
+    std::vector<size_t> starts;
+    for (size_t l = first; l < end; ++l) {
+      starts.push_back(size_t(part.tellp()));
+      write(l, part);
+    }
+    starts.push_back(size_t(part.tellp()));
+    out.parts[p] = std::move(part).str();
+    const std::string_view bytes = out.parts[p];
+    for (size_t l = first; l < end; ++l)
+      entries[l] = delayed_load_entry(
+          bytes.substr(starts[l - first], starts[l - first + 1] - starts[l - first]));
+  });
+  if (count == 0) return out;  // OpenVDB leaves a tree without leaves' metadata empty
+  out.delayed.resizeMask(count);
+  const bool sizes = archive_compression & (io::COMPRESS_BLOSC | io::COMPRESS_ZIP);
+  if (sizes) out.delayed.resizeCompressedSize(count);
+  for (size_t l = 0; l < count; ++l) {
+    out.delayed.setMask(l, entries[l].first);
+    if (sizes) out.delayed.setCompressedSize(l, entries[l].second);
+  }
+  return out;
 }
 
 }  // namespace
@@ -111,53 +174,36 @@ LeafBuffers leaf_buffers(const openvdb::FloatTree& tree, uint32_t compression,
   if (compression & io::COMPRESS_ACTIVE_MASK)
     tbb::parallel_for(size_t(0), leaves.size(),
                       [&](size_t l) { keys[l] = uniform_key(*leaves[l], tree.background()); });
-  std::vector<uint64_t> distinct;
+  std::vector<uint64_t> uniform;
   for (const auto& key : keys)
-    if (key) distinct.push_back(*key);
-  std::sort(distinct.begin(), distinct.end());
-  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-  std::vector<std::string> streams(distinct.size());
-  tbb::parallel_for(size_t(0), distinct.size(),
-                    [&](size_t k) { streams[k] = uniform_values(distinct[k], compression); });
-  LeafBuffers out;
-  out.parts.resize((leaves.size() + kLeavesPerPart - 1) / kLeavesPerPart);
-  std::vector<std::pair<int8_t, int64_t>> entries(leaves.size());
-  tbb::parallel_for(size_t(0), out.parts.size(), [&](size_t p) {
-    std::ostringstream part(std::ios::binary);
-    io::setDataCompression(part, compression);
-    io::setGridBackgroundValuePtr(part, &tree.background());
-    const size_t first = p * kLeavesPerPart, end = std::min(leaves.size(), first + kLeavesPerPart);
-    std::vector<size_t> starts;
-    for (size_t l = first; l < end; ++l) {
-      starts.push_back(size_t(part.tellp()));
-      if (!keys[l]) {
-        leaves[l]->writeBuffers(part, /*toHalf=*/false);
-        continue;
-      }
-      // What LeafNode::writeBuffers writes for it: io::writeCompressedValues of a leaf whose
-      // inactive values are the background writes the kind and its active values only.
-      leaves[l]->valueMask().save(part);
-      part.put(char(io::NO_MASK_OR_INACTIVE_VALS));
-      const std::string& values = streams[size_t(
-          std::lower_bound(distinct.begin(), distinct.end(), *keys[l]) - distinct.begin())];
-      part.write(values.data(), std::streamsize(values.size()));
-    }
-    starts.push_back(size_t(part.tellp()));
-    out.parts[p] = std::move(part).str();
-    const std::string_view bytes = out.parts[p];
-    for (size_t l = first; l < end; ++l)
-      entries[l] = delayed_load_entry(
-          bytes.substr(starts[l - first], starts[l - first + 1] - starts[l - first]));
-  });
-  if (leaves.empty()) return out;  // OpenVDB leaves a tree without leaves' metadata empty
-  out.delayed.resizeMask(leaves.size());
-  const bool sizes = archive_compression & (io::COMPRESS_BLOSC | io::COMPRESS_ZIP);
-  if (sizes) out.delayed.resizeCompressedSize(leaves.size());
-  for (size_t l = 0; l < leaves.size(); ++l) {
-    out.delayed.setMask(l, entries[l].first);
-    if (sizes) out.delayed.setCompressedSize(l, entries[l].second);
+    if (key) uniform.push_back(*key);
+  const UniformStreams streams(std::move(uniform), compression);
+  return by_parts(leaves.size(), compression, archive_compression, &tree.background(),
+                  [&](size_t l, std::ostream& part) {
+                    if (!keys[l]) return leaves[l]->writeBuffers(part, /*toHalf=*/false);
+                    std::array<uint64_t, Leaf::SIZE / 64> mask;
+                    for (openvdb::Index w = 0; w < mask.size(); ++w)
+                      mask[w] = leaves[l]->valueMask().template getWord<uint64_t>(w);
+                    write_uniform_leaf(part, mask.data(), streams.of(*keys[l]));
+                  });
+}
+
+LeafBuffers fog_leaf_buffers(const FogTree& tree, uint32_t compression,
+                             uint32_t archive_compression) {
+  if (!(compression & io::COMPRESS_ACTIVE_MASK))
+    throw Error("VDB writer: a fog tree's leaves are written with active-mask compression only");
+  // Every leaf is uniform: its active values kFogDensity, its inactive ones the background.
+  std::vector<uint64_t> keys(tree.leaves.size());
+  for (size_t l = 0; l < keys.size(); ++l) {
+    uint64_t on = 0;
+    for (const uint64_t word : tree.leaves[l].mask) on += uint64_t(std::popcount(word));
+    keys[l] = on << 32 | std::bit_cast<uint32_t>(kFogDensity);
   }
-  return out;
+  const UniformStreams streams(keys, compression);
+  return by_parts(tree.leaves.size(), compression, archive_compression, &kFogBackground,
+                  [&](size_t l, std::ostream& part) {
+                    write_uniform_leaf(part, tree.leaves[l].mask.data(), streams.of(keys[l]));
+                  });
 }
 
 }  // namespace maquette

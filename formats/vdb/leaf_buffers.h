@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "vdb/fog_tree.h"
+
 namespace maquette {
 
 struct LeafBuffers {
@@ -29,5 +31,11 @@ struct LeafBuffers {
 // writes them.
 LeafBuffers leaf_buffers(const openvdb::FloatTree& tree, uint32_t compression,
                          uint32_t archive_compression);
+
+// The same for the openvdb::FloatTree that `tree` (in tree order: sort_in_tree_order) stands for,
+// from its masks alone: every leaf is uniform, its stream compressed once per count of active
+// voxels met. Throws maquette::Error unless `compression` compresses by active mask.
+LeafBuffers fog_leaf_buffers(const FogTree& tree, uint32_t compression,
+                             uint32_t archive_compression);
 
 }  // namespace maquette

@@ -8,7 +8,9 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <vector>
 
+#include "core/error.h"
 #include "vdb/leaf_buffers.h"
 
 namespace maquette {
@@ -16,8 +18,14 @@ namespace {
 
 namespace io = openvdb::io;
 
+// A grid to write, and the FogTree that stands for its tree when it has one.
+struct Entry {
+  openvdb::GridBase::ConstPtr grid;
+  const FogTree* fog = nullptr;
+};
+
 // io::Stream's write (io::Archive::write and writeGrid of OpenVDB 10.0), float grids' leaves
-// compressed by leaf_buffers.
+// compressed by leaf_buffers, fog trees' written by write_fog_topology and fog_leaf_buffers.
 class StreamWriter : public io::Archive {
  public:
   StreamWriter() {
@@ -25,7 +33,7 @@ class StreamWriter : public io::Archive {
     setGridStatsMetadataEnabled(false);
   }
 
-  std::string bytes(const openvdb::GridPtrVec& grids) const {
+  std::string bytes(const std::vector<Entry>& grids) const {
     std::ostringstream os(std::ios::binary);
     auto stream = std::make_shared<io::StreamMetadata>();
     io::setStreamMetadataPtr(os, stream, /*transfer=*/false);
@@ -37,10 +45,10 @@ class StreamWriter : public io::Archive {
     os.write(reinterpret_cast<const char*>(&count), sizeof count);
     // Unique names as OpenVDB makes them: a suffix for an empty or repeated name.
     std::map<std::string, int> names;
-    for (const auto& grid : grids) ++names[grid->getName()];
+    for (const auto& [grid, fog] : grids) ++names[grid->getName()];
     std::set<std::string> unique;
     std::map<const openvdb::TreeBase*, io::GridDescriptor> trees;
-    for (const auto& grid : grids) {
+    for (const auto& [grid, fog] : grids) {
       std::string name = grid->getName();
       if (name.empty() || names[name] > 1) name = io::GridDescriptor::addSuffix(name, 0);
       for (int n = 1; unique.count(name); ++n)
@@ -48,8 +56,10 @@ class StreamWriter : public io::Archive {
       unique.insert(name);
       io::GridDescriptor gd(name, grid->type(), grid->saveFloatAsHalf());
       const auto tree = trees.find(&grid->baseTree());
-      if (isInstancingEnabled() && tree != trees.end() &&
-          tree->second.saveFloatAsHalf() == gd.saveFloatAsHalf()) {
+      if (fog) {
+        write_float_grid(gd, static_cast<const openvdb::FloatGrid&>(*grid), os, stream, fog);
+      } else if (isInstancingEnabled() && tree != trees.end() &&
+                 tree->second.saveFloatAsHalf() == gd.saveFloatAsHalf()) {
         gd.setInstanceParentName(tree->second.uniqueName());
         writeGridInstance(gd, grid, os, /*seekable=*/false);
       } else {
@@ -71,7 +81,7 @@ class StreamWriter : public io::Archive {
   // (setStreamMetadataPtr stores &meta), so the file's metadata is restored from `file`, the
   // caller's pointer, which outlives the stream's use: a local copy would leave it dangling.
   void write_float_grid(io::GridDescriptor& gd, const openvdb::FloatGrid& grid, std::ostream& os,
-                        io::StreamMetadata::Ptr& file) const {
+                        io::StreamMetadata::Ptr& file, const FogTree* fog = nullptr) const {
     auto stream = std::make_shared<io::StreamMetadata>(*file);
     stream->setHalfFloat(false);
     stream->gridMetadata() = static_cast<const openvdb::MetaMap&>(grid);
@@ -86,12 +96,16 @@ class StreamWriter : public io::Archive {
     gd.writeStreamPos(os);
     setGridCompression(os, grid);
     const LeafBuffers buffers =
-        leaf_buffers(grid.tree(), io::getDataCompression(os), compression());
+        fog ? fog_leaf_buffers(*fog, io::getDataCompression(os), compression())
+            : leaf_buffers(grid.tree(), io::getDataCompression(os), compression());
     openvdb::MetaMap meta(grid);
     meta.insertMeta(openvdb::GridBase::META_FILE_DELAYED_LOAD, buffers.delayed);
     meta.writeMeta(os);
     grid.writeTransform(os);
-    grid.writeTopology(os);
+    if (fog)
+      write_fog_topology(os, *fog);
+    else
+      grid.writeTopology(os);
     for (const std::string& part : buffers.parts)
       os.write(part.data(), std::streamsize(part.size()));
   }
@@ -100,7 +114,19 @@ class StreamWriter : public io::Archive {
 }  // namespace
 
 std::string write_vdb_stream(const openvdb::GridPtrVec& grids) {
-  return StreamWriter().bytes(grids);
+  std::vector<Entry> entries;
+  for (const auto& grid : grids) entries.push_back({grid});
+  return StreamWriter().bytes(entries);
+}
+
+std::string write_vdb_stream(const std::vector<FogGrid>& grids) {
+  std::vector<Entry> entries;
+  for (size_t i = 0; i < grids.size(); ++i) {
+    if (!grids[i].grid || grids[i].grid->saveFloatAsHalf())
+      throw Error("VDB writer: fog grid " + std::to_string(i) + " is null or saved as half floats");
+    entries.push_back({grids[i].grid, &grids[i].tree});
+  }
+  return StreamWriter().bytes(entries);
 }
 
 }  // namespace maquette

@@ -5,6 +5,9 @@
 #include <openvdb/openvdb.h>
 
 #include <string>
+#include <vector>
+
+#include "vdb/fog_tree.h"
 
 namespace maquette {
 
@@ -20,5 +23,19 @@ namespace maquette {
 // compressed leaves twice (the parts and the stream). Throws openvdb::Exception as OpenVDB's
 // writer does, and maquette::Error if a leaf's bytes are not laid out as OpenVDB 10 writes them.
 std::string write_vdb_stream(const openvdb::GridPtrVec& grids);
+
+// A float grid whose tree is a FogTree (fog_tree.h): `grid` gives its name, class, metadata and
+// transform, `tree` its voxels (the grid's own tree is not read).
+struct FogGrid {
+  openvdb::FloatGrid::ConstPtr grid;
+  FogTree tree;  // in tree order (sort_in_tree_order)
+};
+
+// The bytes of io::Stream's write, as above, of the grids the FogGrids stand for (each grid with
+// the openvdb::FloatTree its FogTree stands for; none an instance of another): the topology
+// written from the tree's origins and masks (write_fog_topology), the leaves' buffers from their
+// masks (fog_leaf_buffers), no tree built. Throws maquette::Error for a null grid or one saved as
+// half floats.
+std::string write_vdb_stream(const std::vector<FogGrid>& grids);
 
 }  // namespace maquette

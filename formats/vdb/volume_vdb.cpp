@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "core/error.h"
-#include "vdb/vdb_stream_writer.h"
 
 namespace maquette {
 
@@ -45,6 +45,13 @@ std::string content_uuid(std::string_view stream) {
   return boost::uuids::to_string(uuid);
 }
 
+// The volume of `stream`, its random UUID replaced with the content's (README.md).
+VolumeContent named(const EnuOrigin& origin, std::string stream) {
+  VolumeContent volume{origin, std::move(stream)};
+  volume.vdb.replace(kVdbUuidOffset, kVdbUuidBytes, content_uuid(volume.vdb));
+  return volume;
+}
+
 }  // namespace
 
 VolumeContent encode_volume(const openvdb::GridPtrVec& grids, const EnuOrigin& origin) {
@@ -52,10 +59,12 @@ VolumeContent encode_volume(const openvdb::GridPtrVec& grids, const EnuOrigin& o
   for (size_t i = 0; i < grids.size(); ++i) {
     if (!grids[i]) throw Error("encode_volume: grid " + std::to_string(i) + " is null");
   }
-  VolumeContent volume{origin, write_vdb_stream(grids)};
-  // OpenVDB drew a random UUID: the content's instead (README.md).
-  volume.vdb.replace(kVdbUuidOffset, kVdbUuidBytes, content_uuid(volume.vdb));
-  return volume;
+  return named(origin, write_vdb_stream(grids));
+}
+
+VolumeContent encode_volume(const std::vector<FogGrid>& grids, const EnuOrigin& origin) {
+  openvdb::initialize();
+  return named(origin, write_vdb_stream(grids));
 }
 
 openvdb::GridPtrVec decode_volume(const VolumeContent& volume, const std::string& where) {

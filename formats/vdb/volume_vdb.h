@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "content/content.h"
+#include "vdb/vdb_stream_writer.h"
 
 namespace maquette {
 
@@ -28,6 +29,10 @@ inline constexpr size_t kVdbUuidBytes = 36;
 // in-memory size depends on the library build, not on the grids), the grids' own metadata,
 // names and transforms kept, in the given order. Throws maquette::Error for a null grid.
 VolumeContent encode_volume(const openvdb::GridPtrVec& grids, const EnuOrigin& origin);
+
+// The same for the grids fog grids stand for (vdb_stream_writer.h), without building their trees:
+// the same bytes as encode_volume of those grids.
+VolumeContent encode_volume(const std::vector<FogGrid>& grids, const EnuOrigin& origin);
 
 // The grids of a volume written by encode_volume, in the order written. Throws maquette::Error
 // naming `where` (e.g. "layer lakes, cell N3021") for bytes that are not one whole such stream:

@@ -1,8 +1,12 @@
 #include "vdb_fixture.h"
 
+#include <openvdb/io/Stream.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include <algorithm>
+#include <sstream>
+
+#include "vdb/volume_vdb.h"
 
 namespace maquette::test {
 
@@ -23,6 +27,19 @@ openvdb::FloatGrid::Ptr fog_box(const openvdb::CoordBBox& box, double voxel,
   grid->fill(box, 1.0f, /*active=*/true);
   grid->setName(name);
   return grid;
+}
+
+std::string openvdb_bytes(const openvdb::GridPtrVec& grids) {
+  std::ostringstream out(std::ios::binary);
+  openvdb::io::Stream stream(out);
+  stream.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+  stream.setGridStatsMetadataEnabled(false);
+  stream.write(grids);
+  return without_uuid(std::move(out).str());
+}
+
+std::string without_uuid(std::string stream) {
+  return stream.replace(kVdbUuidOffset, kVdbUuidBytes, kVdbUuidBytes, '-');
 }
 
 std::string compare_bytes(const std::string& a, const std::string& b) {

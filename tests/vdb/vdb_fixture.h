@@ -22,6 +22,13 @@ openvdb::FloatGrid::Ptr sphere_level_set(const std::string& name);
 openvdb::FloatGrid::Ptr fog_box(const openvdb::CoordBBox& box, double voxel,
                                 const std::string& name);
 
+// OpenVDB's own writer (io::Stream) of `grids` with encode_volume's options (Blosc, active-mask
+// compression, no grid statistics metadata), the oracle of our writer.
+std::string openvdb_bytes(const openvdb::GridPtrVec& grids);
+
+// A VDB stream with its header's UUID (random in OpenVDB's, the content's in ours) blanked.
+std::string without_uuid(std::string stream);
+
 // "same", or where two streams first differ (a failure prints this, not megabytes of bytes).
 std::string compare_bytes(const std::string& a, const std::string& b);
 

@@ -5,12 +5,13 @@
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/global_control.h>
-#include <openvdb/io/Stream.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <random>
-#include <sstream>
+#include <set>
+#include <vector>
 
 #include "vdb/volume_vdb.h"
 #include "vdb_fixture.h"
@@ -18,18 +19,8 @@
 namespace maquette::test {
 namespace {
 
-// OpenVDB's writer with encode_volume's options, its UUID blanked.
-std::string openvdb_bytes(const openvdb::GridPtrVec& grids) {
-  std::ostringstream out(std::ios::binary);
-  openvdb::io::Stream stream(out);
-  stream.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-  stream.setGridStatsMetadataEnabled(false);
-  stream.write(grids);
-  return std::move(out).str().replace(kVdbUuidOffset, kVdbUuidBytes, kVdbUuidBytes, '-');
-}
-
 std::string writer_bytes(const openvdb::GridPtrVec& grids) {
-  return write_vdb_stream(grids).replace(kVdbUuidOffset, kVdbUuidBytes, kVdbUuidBytes, '-');
+  return without_uuid(write_vdb_stream(grids));
 }
 
 // A fog box whose full leaves (x from -16 to 23 in leaves of 8, y 0 to 7, z -8 to 23) hold each
@@ -91,6 +82,59 @@ TEST(VdbStreamWriter, SameBytesForManyLeavesAndForOne) {
   EXPECT_EQ(compare_bytes(writer_bytes(many), openvdb_bytes(many)), "same");
   const openvdb::GridPtrVec one{fog_box(openvdb::CoordBBox({1, 1, 1}, {2, 2, 2}), 1, "one")};
   EXPECT_EQ(compare_bytes(writer_bytes(one), openvdb_bytes(one)), "same");
+}
+
+// Fog trees (FogGrid) against OpenVDB's writer of the trees they stand for, built by OpenVDB's own
+// calls (Tree::addLeaf, Tree::addTile): leaves across root children on every axis (negative
+// coordinates too), many in one lower node, masks of one voxel, of random voxels and of all 512,
+// active tiles beside leaves and alone; given out of order (sort_in_tree_order puts them in
+// order). Two grids, one of them without leaves or tiles.
+TEST(VdbStreamWriter, FogTreesSameBytesAsOpenVdbsTreesAndWriter) {
+  std::mt19937 random(11);
+  const openvdb::FloatGrid::Ptr lake = fog_box(openvdb::CoordBBox(), 0.5, "lake");
+  lake->insertMeta("tool", openvdb::StringMetadata("deform.water"));
+  FogGrid fog{lake, {}};
+  const openvdb::FloatGrid::Ptr oracle = openvdb::FloatGrid::create(kFogBackground);
+  std::set<openvdb::Coord> used;
+  std::vector<openvdb::Coord> origins;
+  const auto draw = [&] { return (int(random() % 1200) - 600) * 8; };
+  for (int n = 0; n < 600; ++n) {  // +-4800 voxels: 3 or 4 root children on each axis
+    const int x = draw(), y = draw();
+    origins.emplace_back(x, y, draw());
+  }
+  for (int x = -24; x <= 8; x += 8)
+    for (int y = -24; y <= 8; y += 8)
+      for (int z = -24; z <= 8; z += 8) origins.emplace_back(x, y, z);
+  std::shuffle(origins.begin(), origins.end(), random);
+  for (size_t n = 0; n < origins.size(); ++n) {
+    const openvdb::Coord origin = origins[n];
+    if (!used.insert(origin).second) continue;
+    if (n % 9 == 4) {
+      fog.tree.tiles.push_back(origin);
+      oracle->tree().addTile(1, origin, kFogDensity, /*active=*/true);
+      continue;
+    }
+    FogLeaf leaf{origin};
+    for (uint64_t& word : leaf.mask)
+      word = n % 7 == 0 ? ~uint64_t(0) : n % 7 == 1 ? 0 : uint64_t(random()) << 32 | random();
+    if (n % 7 == 1) leaf.mask[n % 8] = uint64_t(1) << (n % 64);
+    fog.tree.leaves.push_back(leaf);
+    auto* node = new openvdb::FloatTree::LeafNodeType(origin, kFogBackground);
+    for (openvdb::Index v = 0; v < node->SIZE; ++v)
+      if (leaf.mask[v / 64] >> (v % 64) & 1) node->setValueOn(v, kFogDensity);
+    oracle->tree().addLeaf(node);
+  }
+  ASSERT_GT(fog.tree.leaves.size(), 500u);
+  ASSERT_GT(fog.tree.tiles.size(), 50u);
+  sort_in_tree_order(fog.tree);
+  oracle->setTransform(fog.grid->transform().copy());
+  static_cast<openvdb::MetaMap&>(*oracle) = static_cast<const openvdb::MetaMap&>(*fog.grid);
+  const FogGrid empty{fog_box(openvdb::CoordBBox(), 1, "empty"), {}};
+  const openvdb::FloatGrid::Ptr empty_oracle = empty.grid->deepCopy();
+  const std::string expected = openvdb_bytes({oracle, empty_oracle});
+  EXPECT_EQ(compare_bytes(without_uuid(write_vdb_stream({fog, empty})), expected), "same");
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_EQ(compare_bytes(without_uuid(write_vdb_stream({fog, empty})), expected), "same");
 }
 
 }  // namespace

@@ -125,7 +125,9 @@ std::vector<uint8_t> flood(const Basin& b, double level, int64_t seed) {
 // A channel winding down 120 rows (many of the fill's strips of rows), each turn joined by
 // diagonal steps only, beside pockets just one dry row or column away; the lake against the
 // oracle's flood, and with two outlets cut through the stroke its leak: the first crossing of
-// the stroke in row-major order.
+// the stroke in row-major order. The first outlet's water runs on outside, along the raster's
+// first row, to column 5: the leak is where it crosses (row 0, column 19, beside the outlet at
+// row 1, column 20), not the first outside pixel it reaches (column 5, the rule before).
 TEST(WaterBody, WindingChannelAsTheFloodFillsIt) {
   Basin b{40, 120, 1.0, {}, {}};
   b.terrain.assign(size_t(b.width) * size_t(b.height), 10.0f);
@@ -154,10 +156,12 @@ TEST(WaterBody, WindingChannelAsTheFloodFillsIt) {
   for (size_t k = 0; k < body.wet.size(); ++k)
     EXPECT_EQ(body.depth[k], float(level - double(b.terrain[size_t(body.wet[k])])));
 
-  for (const int r : {62, 30}) low(0, r), low(1, r);  // two outlets to the raster's edge
+  low(0, 62), low(1, 62);                   // an outlet to the raster's left edge
+  low(20, 1);                               // one from the first corridor to the first row,
+  for (int c = 5; c <= 20; ++c) low(c, 0);  // which carries the water on to column 5
   const WaterBody leaking = fill_basin(b.raster(), level);
   ASSERT_TRUE(leaking.leak);
-  EXPECT_EQ(*leaking.leak, 30 * b.width);
+  EXPECT_EQ(*leaking.leak, 19);
   EXPECT_TRUE(leaking.wet.empty());
 }
 
