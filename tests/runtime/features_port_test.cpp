@@ -199,9 +199,6 @@ struct Oracle {
   std::map<int64_t, double> centre_cell_distance;  // by feature id
 };
 
-// The GeoJSON through GDAL's own reader. Under ThreadSanitizer, GDAL's driver manager takes its two
-// mutexes in both orders inside Open and the report's stack ends at this function's caller:
-// scripts/tsan-suppressions.txt names compute_oracle.
 GDALDatasetUniquePtr open_geojson(const std::string& path) {
   GDALAllRegister();
   GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR));
@@ -209,8 +206,17 @@ GDALDatasetUniquePtr open_geojson(const std::string& path) {
   return ds;
 }
 
-Oracle compute_oracle(const std::string& geojson_path) {
-  const GDALDatasetUniquePtr ds = open_geojson(geojson_path);
+// The strokes written as GeoJSON in `dir` and read back through GDAL's own reader. Under
+// ThreadSanitizer, GDAL's driver manager takes its two mutexes in both orders inside Open and the
+// report's stack ends at open_geojson's caller, this function, which scripts/tsan-suppressions.txt
+// names.
+GDALDatasetUniquePtr open_strokes(const test::TempDir& dir) {
+  const std::string path = dir.file("strokes.geojson");
+  std::ofstream(path) << strokes().collection.dump();
+  return open_geojson(path);
+}
+
+Oracle compute_oracle(GDALDataset& ds) {
   struct F {
     int64_t id;
     double w;
@@ -218,7 +224,7 @@ Oracle compute_oracle(const std::string& geojson_path) {
   };
   std::vector<F> features;
   int64_t position = 0;
-  for (const auto& f : *ds->GetLayer(0))
+  for (const auto& f : *ds.GetLayer(0))
     features.push_back(
         {++position, f->GetFieldAsDouble("w"), plane().project(*f->GetGeometryRef())});
   Oracle o;
@@ -250,9 +256,9 @@ struct StoreDir {
 
 const Oracle& oracle() {
   static const Oracle o = [] {
-    test::TempDir dir;
-    std::ofstream(dir.file("strokes.geojson")) << strokes().collection.dump();
-    return compute_oracle(dir.file("strokes.geojson"));
+    const test::TempDir dir;
+    const GDALDatasetUniquePtr ds = open_strokes(dir);
+    return compute_oracle(*ds);
   }();
   return o;
 }
@@ -512,10 +518,8 @@ TEST(FeaturesPort, PolygonSetOfSubnormalHeightAgreesWithItsRings) {
 
 // distance_m from a point against GEOS on the plane, for every stroke and points around.
 TEST(FeaturesPort, PointDistancesMatchGeos) {
-  GDALAllRegister();
-  test::TempDir dir;
-  std::ofstream(dir.file("strokes.geojson")) << strokes().collection.dump();
-  GDALDatasetUniquePtr ds(GDALDataset::Open(dir.file("strokes.geojson").c_str(), GDAL_OF_VECTOR));
+  const test::TempDir dir;
+  const GDALDatasetUniquePtr ds = open_strokes(dir);
   ASSERT_TRUE(ds);
   Lcg rng;
   int checked = 0;
