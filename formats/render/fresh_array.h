@@ -2,7 +2,9 @@
 // initialised (core/tile.h's DefaultInitAllocator): the step that makes an array writes each
 // element once, so its fresh pages are not written twice. Contract: that step must write EVERY
 // element; one left unwritten holds whatever the memory held (zero on a fresh page, old bytes on a
-// reused one). Under AddressSanitizer or ThreadSanitizer builds (GCC and Clang define
+// reused one). The one exception, said where each is declared: a step's own scratch array read
+// by that step alone, which writes every element it reads (the untouched pages cost nothing). Under
+// AddressSanitizer or ThreadSanitizer builds (GCC and Clang define
 // __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__ under -fsanitize) each array's storage is filled at
 // allocation with a pattern of its own (8 bytes from the clock and a count of allocations,
 // repeated), so an element left unwritten differs between two renders, in one process or two, and

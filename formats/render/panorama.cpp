@@ -99,20 +99,23 @@ tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, cons
   });
 }
 
-// Appends to `texels` those of `found` (3 per pixel of a strip of rows `width` wide starting at
-// picture row `first_row`; NaN for none) on the stretch grid of `step`, in row order: each row's
-// texels counted, then copied to their places, rows side by side (no serial share, no regrowth).
-void append_stretch_texels(const FreshArray<float>& found, int width, int first_row, int step,
+// Appends to `texels` those of `found` (3 per pixel of the strip of rows of `f`; NaN for none; read
+// on its terrain pixels only) on the stretch grid of `step`, in row order: each row's texels
+// counted, then copied to their places, rows side by side (no serial share, no regrowth).
+void append_stretch_texels(const FreshArray<float>& found, const Fragments& f, int step,
                            StretchTexels& texels) {
-  const int rows = int(found.size() / 3 / size_t(width));
+  const int rows = f.height, width = f.width;
   using Counts = std::array<size_t, 3>;
   auto each_texel = [&](int row, auto&& take) {
-    if ((first_row + row) % step != 0) return;
-    for (int col = 0; col < width; col += step)
+    if ((f.first_row + row) % step != 0) return;
+    for (int col = 0; col < width; col += step) {
+      const size_t i = size_t(row) * size_t(width) + size_t(col);
+      if (f.triangle[i] == Fragments::kSky) continue;
       for (size_t k = 0; k < 3; ++k) {
-        const float t = found[3 * (size_t(row) * size_t(width) + size_t(col)) + k];
+        const float t = found[3 * i + k];
         if (!std::isnan(t)) take(k, t);
       }
+    }
   };
   std::vector<Counts> offset(size_t(rows) + 1, Counts{});  // row's first texel per band
   tbb::parallel_for(0, rows, [&](int row) {
@@ -136,18 +139,21 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
                            StretchTexels& texels) {
   if (!look.texture || !look.stretch) return;
   auto samplers = make_samplers(store, grid, look);
-  FreshArray<float> found(3 * size_t(f.width) * size_t(f.height), NAN);
+  // Written on the terrain pixels of the stretch grid only, the only ones read: the other rows'
+  // pages are never touched.
+  FreshArray<float> found(3 * size_t(f.width) * size_t(f.height));
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
     Samplers& s = samplers.local();
     s.start_row();
     for (int col = 0; col < f.width; col += step) {
       const size_t i = size_t(row) * size_t(f.width) + size_t(col);
-      if (f.triangle[i] != Fragments::kSky)
-        sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
+      if (f.triangle[i] == Fragments::kSky) continue;
+      std::fill_n(&found[3 * i], 3, NAN);
+      sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
     }
   });
-  append_stretch_texels(found, f.width, f.first_row, step, texels);
+  append_stretch_texels(found, f, step, texels);
 }
 
 BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
@@ -169,7 +175,9 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   p.height = h;
   p.first_row = f.first_row;
   // Every pixel of each array is written once below (fresh pages are not filled first).
-  FreshArray<float> texels(3 * n);  // the surface's texel, NaN for none
+  // The surface's texel, NaN for none; written and read on terrain pixels only (the sky's pages
+  // are never touched).
+  FreshArray<float> texels(3 * n);
   for (auto* a : {&p.altitude, &p.shading}) a->resize(n);
   for (auto* a : {&p.distance, &p.lon, &p.lat}) a->resize(n);
   p.land_cover.resize(look.land_cover ? n : 0);
@@ -186,11 +194,10 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     s.start_row();
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
-      if (f.triangle[i] == Fragments::kSky) {  // NaN guides and texels, a run of sky at once
+      if (f.triangle[i] == Fragments::kSky) {  // NaN guides, a run of sky at once
         int end = col + 1;
         while (end < w && f.triangle[i + size_t(end - col)] == Fragments::kSky) ++end;
         const auto run = size_t(end - col);
-        std::fill_n(&texels[3 * i], 3 * run, NAN);
         for (auto* a : {&p.distance, &p.lon, &p.lat}) std::fill_n(&(*a)[i], run, NAN);
         for (auto* a : {&p.altitude, &p.shading, &p.land_cover, &p.cast_shadow})
           if (!a->empty()) std::fill_n(&(*a)[i], run, NAN);
@@ -240,7 +247,7 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
     stretch = *given_stretch;
   } else {
     StretchTexels seen;
-    append_stretch_texels(texels, w, f.first_row, stretch_step(w, camera.spec().height), seen);
+    append_stretch_texels(texels, f, stretch_step(w, camera.spec().height), seen);
     stretch = texel_stretch(seen, look);
   }
 

@@ -171,6 +171,32 @@ void clip(const PinholeCamera& camera, const Vec3d (&view)[3], uint32_t t, doubl
                    {polygon[0].second, polygon[k].second, polygon[k + 1].second}});
 }
 
+// A block of the mesh's consecutive triangles: the bounding box on screen (1/16 pixels; empty
+// when none is drawable) and the nearest depth of those wholly in front of the near plane and
+// drawable, and the pieces of its triangles the near plane cuts.
+struct Block {
+  int64_t x0 = std::numeric_limits<int64_t>::max(), x1 = std::numeric_limits<int64_t>::min();
+  int64_t y0 = std::numeric_limits<int64_t>::max(), y1 = std::numeric_limits<int64_t>::min();
+  double nearest = std::numeric_limits<double>::infinity();
+  std::vector<ClippedTriangle> clipped;
+};
+
+// Whether every pixel of rows [row0, row1) whose centre lies within the bounding box [x0, x1] x
+// [y0, y1] (1/16 pixels) is nearer than `nearest`: then a block of triangles none nearer than
+// that writes none of them (draw keeps a pixel nearer than a triangle's nearest corner).
+bool hidden(const Fragments& f, int row0, int row1, int64_t x0, int64_t x1, int64_t y0, int64_t y1,
+            double nearest) {
+  const auto [c0, c1] = centre_span(x0, x1, f.width);
+  auto [r0, r1] = centre_span(y0, y1, row1);
+  r0 = std::max<int64_t>(r0, row0);
+  for (int64_t r = r0; r <= r1; ++r) {
+    const double* d = &f.depth[size_t(r - f.first_row) * size_t(f.width)];
+    for (int64_t c = c0; c <= c1; ++c)
+      if (!(d[c] < nearest)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
@@ -192,51 +218,74 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     if (v[2] >= near) screen[i] = to_screen(camera, v);
   });
 
-  // Triangles by the bands of rows (from `top`) their bounding boxes meet, binned side by side in
-  // chunks of the mesh's triangles: in a chunk's list of a band, mesh triangles wholly in front of
-  // the near plane by their index t, pieces of cut ones as triangle_count() + their index among
-  // the chunk's pieces (the pieces of every triangle, whatever the rows drawn). A band draws its
-  // chunks' lists in order (the drawing order does not change a pixel: the tie rule).
-  const int bands = (bottom - top + kBandRows - 1) / kBandRows;
+  // The mesh's triangles in blocks of kCullBlockTriangles consecutive ones (a terrain's run of
+  // squares): each block's bounding box on screen and nearest depth over its triangles wholly in
+  // front of the near plane and drawable, and the pieces of those the near plane cuts.
   const size_t triangles = mesh.triangle_count();
-  struct Chunk {
-    std::vector<std::vector<uint32_t>> band_triangles;
-    std::vector<ClippedTriangle> clipped;
-  };
-  constexpr size_t kChunkTriangles = size_t(1) << 16;
-  std::vector<Chunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
-  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t chunk) {
-    Chunk& out = chunks[chunk];
-    out.band_triangles.resize(size_t(bands));
-    auto bin = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-                   uint32_t id) {
-      auto [first, last] = row_span(a, b, c, h);
-      first = std::max<int64_t>(first, top) - top;
-      last = std::min<int64_t>(last, bottom - 1) - top;
-      // Left out when no pixel centre is within its bounding box or it has no area (as draw
-      // would leave it): a third of the triangles of a far terrain smaller than a pixel.
-      const auto [c0, c1] = column_span(a, b, c, w);
-      if (first > last || c0 > c1 || edge(a, b, c.x, c.y) == 0) return;
-      for (int64_t band = first / kBandRows; band <= last / kBandRows; ++band)
-        out.band_triangles[size_t(band)].push_back(id);
-    };
-    const size_t end = std::min(triangles, (chunk + 1) * kChunkTriangles);
-    for (size_t t = chunk * kChunkTriangles; t < end; ++t) {
+  std::vector<Block> blocks((triangles + kCullBlockTriangles - 1) / kCullBlockTriangles);
+  tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
+    Block& block = blocks[b];
+    const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
+    double nearest_inv_z = 0;
+    for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
       const uint32_t* i = &mesh.indices[3 * t];
+      const ScreenVertex* v[3] = {&screen[i[0]], &screen[i[1]], &screen[i[2]]};
+      if (v[0]->inv_z != 0 && v[1]->inv_z != 0 && v[2]->inv_z != 0) {
+        for (const ScreenVertex* c : v) {
+          block.x0 = std::min(block.x0, c->x);
+          block.x1 = std::max(block.x1, c->x);
+          block.y0 = std::min(block.y0, c->y);
+          block.y1 = std::max(block.y1, c->y);
+          nearest_inv_z = std::max(nearest_inv_z, c->inv_z);
+        }
+        continue;
+      }
       const int in_front = (depth[i[0]] >= near) + (depth[i[1]] >= near) + (depth[i[2]] >= near);
-      if (in_front == 3) {
-        if (screen[i[0]].inv_z != 0 && screen[i[1]].inv_z != 0 && screen[i[2]].inv_z != 0)
-          bin(screen[i[0]], screen[i[1]], screen[i[2]], uint32_t(t));
-      } else if (in_front > 0) {
+      if (in_front == 1 || in_front == 2) {  // 3: a corner too far off the picture
         const Vec3d corners[3] = {view(i[0]), view(i[1]), view(i[2])};
-        const size_t before = out.clipped.size();
-        clip(camera, corners, uint32_t(t), near, out.clipped);
-        for (size_t k = before; k < out.clipped.size(); ++k)
-          bin(out.clipped[k].v[0], out.clipped[k].v[1], out.clipped[k].v[2],
-              uint32_t(triangles + k));
+        clip(camera, corners, uint32_t(t), near, block.clipped);
       }
     }
+    // The nearest any of its pixels can be, with draw's margin.
+    block.nearest = (1 - 1e-12) / nearest_inv_z;
   });
+
+  // Near to far, each band's pieces of cut triangles, then its blocks by their nearest depth (the
+  // drawing order changes no pixel: the tie rule), binned by the rows their bounding boxes meet.
+  const int bands = (bottom - top + kBandRows - 1) / kBandRows;
+  std::vector<const ClippedTriangle*> pieces;
+  for (const Block& block : blocks)
+    for (const ClippedTriangle& c : block.clipped) pieces.push_back(&c);
+  std::vector<uint32_t> order;
+  for (size_t b = 0; b < blocks.size(); ++b)
+    if (blocks[b].x0 <= blocks[b].x1) order.push_back(uint32_t(b));
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return blocks[a].nearest < blocks[b].nearest ||
+           (blocks[a].nearest == blocks[b].nearest && a < b);
+  });
+  std::vector<std::vector<const ClippedTriangle*>> band_pieces(static_cast<size_t>(bands));
+  std::vector<std::vector<uint32_t>> band_blocks(static_cast<size_t>(bands));
+  // The bands [first, last] (from `top`) whose rows' centres a bounding box (1/16 px) meets, none
+  // when no pixel centre is within it.
+  auto band_span = [&](int64_t x0, int64_t x1, int64_t y0, int64_t y1) {
+    auto [first, last] = centre_span(y0, y1, h);
+    first = std::max<int64_t>(first, top) - top;
+    last = std::min<int64_t>(last, bottom - 1) - top;
+    const auto [c0, c1] = centre_span(x0, x1, w);
+    if (first > last || c0 > c1) return std::pair<int64_t, int64_t>{1, 0};
+    return std::pair<int64_t, int64_t>{first / kBandRows, last / kBandRows};
+  };
+  for (const ClippedTriangle* c : pieces) {
+    const auto [x0, x1] = std::minmax({c->v[0].x, c->v[1].x, c->v[2].x});
+    const auto [y0, y1] = std::minmax({c->v[0].y, c->v[1].y, c->v[2].y});
+    const auto [first, last] = band_span(x0, x1, y0, y1);
+    for (int64_t band = first; band <= last; ++band) band_pieces[size_t(band)].push_back(c);
+  }
+  for (const uint32_t b : order) {
+    const Block& block = blocks[b];
+    const auto [first, last] = band_span(block.x0, block.x1, block.y0, block.y1);
+    for (int64_t band = first; band <= last; ++band) band_blocks[size_t(band)].push_back(b);
+  }
 
   Fragments f;
   f.width = w;
@@ -256,16 +305,20 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
                 std::numeric_limits<double>::infinity());
     std::fill_n(f.b1.begin() + std::ptrdiff_t(first), count, 0.0f);
     std::fill_n(f.b2.begin() + std::ptrdiff_t(first), count, 0.0f);
-    for (const Chunk& chunk : chunks)
-      for (const uint32_t id : chunk.band_triangles[size_t(band)]) {
-        if (id >= triangles) {
-          const ClippedTriangle& c = chunk.clipped[id - triangles];
-          draw(c.v[0], c.v[1], c.v[2], c.weights, c.triangle, row0, row1, f);
-          continue;
-        }
-        const uint32_t* i = &mesh.indices[3 * size_t(id)];
-        draw(screen[i[0]], screen[i[1]], screen[i[2]], nullptr, id, row0, row1, f);
+    for (const ClippedTriangle* c : band_pieces[size_t(band)]) {
+      draw(c->v[0], c->v[1], c->v[2], c->weights, c->triangle, row0, row1, f);
+    }
+    for (const uint32_t b : band_blocks[size_t(band)]) {
+      const Block& block = blocks[b];
+      if (hidden(f, row0, row1, block.x0, block.x1, block.y0, block.y1, block.nearest)) continue;
+      const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
+      for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        const ScreenVertex &v0 = screen[i[0]], &v1 = screen[i[1]], &v2 = screen[i[2]];
+        if (v0.inv_z != 0 && v1.inv_z != 0 && v2.inv_z != 0)
+          draw(v0, v1, v2, nullptr, uint32_t(t), row0, row1, f);
       }
+    }
   });
   return f;
 }

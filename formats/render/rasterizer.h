@@ -7,11 +7,18 @@
 // by oneTBB tasks over chunks of the mesh, each band rasterized by one oneTBB task over its
 // triangles in index order, writing only its own rows: the result is the same bits for any number
 // of threads (the tie rule does not depend on the drawing order).
+// Hidden triangles are left out a block at a time: the mesh's triangles in blocks of
+// kCullBlockTriangles consecutive ones, each band draws its blocks near to far (by their nearest
+// corner's depth) and leaves out a block when every pixel of the band within its bounding box is
+// already nearer than that corner (it would write none of them): the same bits, far less work
+// where most of the terrain is hidden, when a block's triangles lie close together (a patch of a
+// height field, not a long row of it).
 // Triangles are clipped at `near` metres in front of the eye (the pieces keep their barycentric
 // weights in the mesh triangle); a triangle (or piece) with a corner projected further than 2^22
 // pixels from the picture is left out. There is no back-face culling.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -19,6 +26,9 @@
 #include "render/fresh_array.h"
 
 namespace maquette {
+
+// The rasterizer's blocks of consecutive triangles, culled whole when hidden.
+constexpr size_t kCullBlockTriangles = 32;
 
 // Its arrays are FreshArrays (render/fresh_array.h): whoever sizes one writes every element.
 struct RenderMesh {

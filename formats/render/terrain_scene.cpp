@@ -23,6 +23,11 @@ constexpr uint32_t kNoVertex = std::numeric_limits<uint32_t>::max();
 // the same central difference in every tile that draws it (no seam in the shading).
 constexpr int kHalo = 2;
 
+// The squares' triangles are written in patches of kBlockSquares x kBlockSquares squares, one of
+// the rasterizer's blocks each (render/rasterizer.h: hidden blocks are culled whole).
+constexpr int kBlockSquares = 4;
+static_assert(2 * kBlockSquares * kBlockSquares == kCullBlockTriangles);
+
 // The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
 std::vector<std::array<int, 2>> halo_ring(int n) {
   std::vector<std::array<int, 2>> ring;
@@ -73,7 +78,8 @@ TileSource tile_source(const Store& store, const Grid& grid, const LayerInfo& de
 
 // Writes `cell`'s share of the mesh (tile_source) into `scene` from vertex `first_vertex` and index
 // `first_index`: the drawn samples' vertices in row order, then the skirt's in ring order; the
-// squares' triangles in row order, then the skirt's.
+// squares' triangles in patches of kBlockSquares x kBlockSquares squares (the patches in row
+// order, each in row order), then the skirt's.
 void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileSource& source,
                 const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
                 size_t first_vertex, size_t first_index, TerrainScene& scene) {
@@ -146,12 +152,14 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
   auto triangles = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {  // a, b, c and a, c, d
     for (const uint32_t k : {a, b, c, a, c, d}) indices[next_index++] = k;
   };
-  for (int r = -1; r < n; ++r)
-    for (int c = -1; c < n; ++c) {
-      const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
-      if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
-      triangles(a, b, e, d);
-    }
+  for (int r0 = -1; r0 < n; r0 += kBlockSquares)
+    for (int c0 = -1; c0 < n; c0 += kBlockSquares)
+      for (int r = r0; r < std::min(n, r0 + kBlockSquares); ++r)
+        for (int c = c0; c < std::min(n, c0 + kBlockSquares); ++c) {
+          const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
+          if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
+          triangles(a, b, e, d);
+        }
   // The skirt: a wall hanging from the halo's ring, deeper than the tile's relief plus a sample,
   // so that where a neighbour is drawn at another level (its surface above or below this one
   // near the seam) no ray passes between the two.

@@ -3,14 +3,15 @@
 // overview of a coarser level), padded with a one-pixel halo from its neighbours of the same level
 // (core/halo.h, across face seams too), gives a vertex at every sample centre, halo included
 // (core/tile_frame.h: where the sample really lies), and two triangles per square of four samples,
-// always split along the same diagonal. The halo's squares reach into the neighbours, so tiles of
-// one level share the squares along their seams (drawn twice, the same triangles), and a tile's
-// skirt, a wall hanging from its halo's ring deeper than the tile's relief plus a sample, closes
-// the cracks where a neighbour is drawn at another level. Squares with a missing sample (nodata,
-// no neighbour tile) are left out, and the skirt along them. Heights go to the ellipsoid through
-// the layer's vertical datum, exaggerated by a factor above that datum. Tiles are read and their
-// shares of the mesh counted in parallel, then each written in place (no copies joined) in their
-// cell order: the mesh is the same whatever the threads.
+// always split along the same diagonal, written in patches of 4 x 4 squares (the rasterizer's
+// blocks, culled whole when hidden: render/rasterizer.h). The halo's squares reach into the
+// neighbours, so tiles of one level share the squares along their seams (drawn twice, the same
+// triangles), and a tile's skirt, a wall hanging from its halo's ring deeper than the tile's relief
+// plus a sample, closes the cracks where a neighbour is drawn at another level. Squares with a
+// missing sample (nodata, no neighbour tile) are left out, and the skirt along them. Heights go to
+// the ellipsoid through the layer's vertical datum, exaggerated by a factor above that datum. Tiles
+// are read and their shares of the mesh counted in parallel, then each written in place (no copies
+// joined) in their cell order: the mesh is the same whatever the threads.
 #pragma once
 
 #include <optional>
