@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <compare>
+#include <string>
 #include <utility>
+
+#include "core/error.h"
 
 namespace maquette {
 namespace {
@@ -83,6 +86,17 @@ void write_fog_topology(std::ostream& os, const FogTree& tree) {
                    : Child{place(tree.tiles[t++]), -1};
     }
   }
+  for (size_t c = 1; c < children.size(); ++c)
+    if (!(children[c - 1].where < children[c].where)) {
+      const Place& at = children[c].where;
+      throw Error(
+          "VDB writer: a fog tree's leaves and tiles are not in tree order or hold an "
+          "origin twice (in the upper node at " +
+          std::to_string(at.x) + ", " + std::to_string(at.y) + ", " + std::to_string(at.z) +
+          ", lower " + std::to_string(at.upper) + ", leaf " + std::to_string(at.lower) + ")");
+    }
+  // Child slots hold zero in OpenVDB's InternalNode::writeTopology: the background here.
+  static_assert(kFogBackground == 0.0f);
   const auto same_upper = [](const Child& a, const Child& b) {
     return a.where.x == b.where.x && a.where.y == b.where.y && a.where.z == b.where.z;
   };

@@ -41,7 +41,8 @@ void sort_in_tree_order(FogTree& tree);
 // The bytes Tree::writeTopology (not as half floats) writes for the openvdb::FloatTree `tree`
 // stands for, on `os` (its data compression set, io::setDataCompression), which is left with the
 // grid background pointer set (io::setGridBackgroundValuePtr) to kFogBackground, as OpenVDB's
-// root node leaves it. Precondition: `tree` in tree order (sort_in_tree_order).
+// root node leaves it. Precondition: `tree` in tree order (sort_in_tree_order), no origin twice:
+// else an Error naming the first origin out of order.
 void write_fog_topology(std::ostream& os, const FogTree& tree);
 
 }  // namespace maquette

@@ -191,7 +191,10 @@ LeafBuffers leaf_buffers(const openvdb::FloatTree& tree, uint32_t compression,
 LeafBuffers fog_leaf_buffers(const FogTree& tree, uint32_t compression,
                              uint32_t archive_compression) {
   if (!(compression & io::COMPRESS_ACTIVE_MASK))
-    throw Error("VDB writer: a fog tree's leaves are written with active-mask compression only");
+    throw Error(
+        "VDB writer: a fog tree's leaves are written with active-mask compression only "
+        "(compression flags " +
+        std::to_string(compression) + ")");
   // Every leaf is uniform: its active values kFogDensity, its inactive ones the background.
   std::vector<uint64_t> keys(tree.leaves.size());
   for (size_t l = 0; l < keys.size(); ++l) {

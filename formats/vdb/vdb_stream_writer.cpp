@@ -122,8 +122,10 @@ std::string write_vdb_stream(const openvdb::GridPtrVec& grids) {
 std::string write_vdb_stream(const std::vector<FogGrid>& grids) {
   std::vector<Entry> entries;
   for (size_t i = 0; i < grids.size(); ++i) {
-    if (!grids[i].grid || grids[i].grid->saveFloatAsHalf())
-      throw Error("VDB writer: fog grid " + std::to_string(i) + " is null or saved as half floats");
+    if (!grids[i].grid) throw Error("VDB writer: fog grid " + std::to_string(i) + " is null");
+    if (grids[i].grid->saveFloatAsHalf())
+      throw Error("VDB writer: fog grid " + std::to_string(i) +
+                  " is saved as half floats (a fog tree is written as full floats only)");
     entries.push_back({grids[i].grid, &grids[i].tree});
   }
   return StreamWriter().bytes(entries);

@@ -34,8 +34,8 @@ struct FogGrid {
 // The bytes of io::Stream's write, as above, of the grids the FogGrids stand for (each grid with
 // the openvdb::FloatTree its FogTree stands for; none an instance of another): the topology
 // written from the tree's origins and masks (write_fog_topology), the leaves' buffers from their
-// masks (fog_leaf_buffers), no tree built. Throws maquette::Error for a null grid or one saved as
-// half floats.
+// masks (fog_leaf_buffers), no tree built. Throws maquette::Error for a null grid, one saved as
+// half floats, or a tree out of tree order or with an origin twice.
 std::string write_vdb_stream(const std::vector<FogGrid>& grids);
 
 }  // namespace maquette

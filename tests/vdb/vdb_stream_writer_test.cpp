@@ -11,8 +11,10 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "vdb/volume_vdb.h"
 #include "vdb_fixture.h"
 
@@ -115,8 +117,10 @@ TEST(VdbStreamWriter, FogTreesSameBytesAsOpenVdbsTreesAndWriter) {
       continue;
     }
     FogLeaf leaf{origin};
-    for (uint64_t& word : leaf.mask)
-      word = n % 7 == 0 ? ~uint64_t(0) : n % 7 == 1 ? 0 : uint64_t(random()) << 32 | random();
+    for (uint64_t& word : leaf.mask) {
+      const uint64_t high = uint64_t(random()), low = uint64_t(random());  // in this order
+      word = n % 7 == 0 ? ~uint64_t(0) : n % 7 == 1 ? 0 : high << 32 | low;
+    }
     if (n % 7 == 1) leaf.mask[n % 8] = uint64_t(1) << (n % 64);
     fog.tree.leaves.push_back(leaf);
     auto* node = new openvdb::FloatTree::LeafNodeType(origin, kFogBackground);
@@ -135,6 +139,28 @@ TEST(VdbStreamWriter, FogTreesSameBytesAsOpenVdbsTreesAndWriter) {
   EXPECT_EQ(compare_bytes(without_uuid(write_vdb_stream({fog, empty})), expected), "same");
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   EXPECT_EQ(compare_bytes(without_uuid(write_vdb_stream({fog, empty})), expected), "same");
+}
+
+// A fog tree out of tree order, or with an origin twice, is refused naming the place, not
+// written as a corrupt stream.
+TEST(VdbStreamWriter, FogTreesOutOfOrderAreRefused) {
+  const auto grid = fog_box(openvdb::CoordBBox(), 1, "unordered");
+  FogLeaf a{openvdb::Coord(0, 0, 0)}, b{openvdb::Coord(8, 0, 0)};
+  a.mask[0] = b.mask[0] = 1;
+  const auto error_of = [&](std::vector<FogLeaf> leaves) -> std::string {
+    try {
+      write_vdb_stream({FogGrid{grid, FogTree{std::move(leaves), {}}}});
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "written";
+  };
+  EXPECT_EQ(error_of({a, b}), "written");
+  EXPECT_NE(error_of({b, a}).find("not in tree order or hold an origin twice"), std::string::npos)
+      << error_of({b, a});
+  EXPECT_NE(error_of({a, a}).find("(in the upper node at 0, 0, 0, lower 0, leaf 0)"),
+            std::string::npos)
+      << error_of({a, a});
 }
 
 }  // namespace
