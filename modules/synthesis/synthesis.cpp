@@ -176,24 +176,36 @@ class Corrector {
       around.x[i] = s & 0xffff;
       around.y[i] = s >> 16;
     }
-    size_t t = 0;
-    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
-      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx)
-        around.labels[t++] = g_.labels[g_.index(col + dx, row + dy)];
-
     // The neighbours' sources shifted; those of neighbours across a depth break are forbidden:
-    // they would continue a patch across a silhouette.
+    // they would continue a patch across a silhouette. Nor are such neighbours matched: their
+    // target labels count as unknown and their colours as the candidate's own (below), so that a
+    // pixel beside a silhouette (the sky above a skyline) is not drawn to the painting's pixels
+    // beside another class.
     std::array<int32_t, kPatchSide * kPatchSide> shifted{}, forbidden{};
+    std::array<bool, kPatchSide * kPatchSide> across{};
     size_t m = 0, f = 0;
     for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
       for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
         const int32_t s = state.at(col + dx, row + dy);
         shifted[m] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
                               std::clamp(s / e_.width - dy, 0, e_.height - 1));
-        if (breaks_between(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy)))
-          forbidden[f++] = shifted[m];
+        across[m] = breaks_between(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy));
+        if (across[m]) forbidden[f++] = shifted[m];
+        around.labels[m] = across[m] ? kUnknownLabel : g_.labels[g_.index(col + dx, row + dy)];
         ++m;
       }
+    const bool beside_break = f > 0;
+    // The neighbourhood's feature compared with candidate c's: beside a break, the neighbours
+    // across it take c's own colours there (equal on both sides: not matched).
+    const auto feature_for = [&](int32_t c) {
+      if (!beside_break) return feature;
+      std::array<float, kPatchValues> mixed = patch;
+      const auto own = e_.patch(c % e_.width, c / e_.width);
+      for (size_t j = 0; j < across.size(); ++j)
+        if (across[j])
+          std::copy_n(own.begin() + ptrdiff_t(3 * j), 3, mixed.begin() + ptrdiff_t(3 * j));
+      return e_.basis.project(mixed);
+    };
     const uint8_t label = g_.labels[g_.index(col, row)];
     std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
     size_t n = 0;
@@ -222,10 +234,9 @@ class Corrector {
     for (size_t i = 0; i < n; ++i) {
       const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
       if (winner_fits && !fits) continue;
-      const double cost = i < coherent ? this->cost(candidates[i], feature, around, col, row)
-                                       : this->cost(candidates[i], feature, around, col, row) *
-                                                 (1.0 + p_.coherence) +
-                                             p_.w_usage * usage(candidates[i]);
+      const double base = this->cost(candidates[i], feature_for(candidates[i]), around, col, row);
+      const double cost =
+          i < coherent ? base : base * (1.0 + p_.coherence) + p_.w_usage * usage(candidates[i]);
       if (cost < least || (fits && !winner_fits))
         least = cost, winner = candidates[i], winner_fits = fits;
     }

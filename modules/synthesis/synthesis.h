@@ -18,7 +18,9 @@
 // two sky, or farther than depth_break times the other: the renderer's silhouettes) makes its
 // S(q) - d no candidate at all (paper 000: silhouettes as coherence breaks, so that no patch is
 // planted across ridges at different depths; a pixel with every candidate forbidden keeps its
-// source):
+// source), and is not matched either: in D_color it takes each candidate's own colours (no
+// difference), in D_label it counts as unknown (so the sky beside a skyline is not drawn to the
+// painting's sky beside its land):
 //  - D_color: squared distance between the PCA features of the output's neighbourhood (the
 //    exemplar colours at S(p + d)) and of the candidate's;
 //  - D_label: the fraction of the 3 x 3 neighbourhood whose target label differs from the
