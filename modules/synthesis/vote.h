@@ -17,7 +17,9 @@
 // exemplar has it, exemplar_usage.h), a proposal's squared distance to the mean, plus
 // kBalanceFloor, is multiplied by its colour excess to the power `balance`: colours the vote
 // over-shows must lie nearer the mean to win, the under-shown ones win from farther. A function
-// of the exemplar and the window's state alone, as before.
+// of the exemplar and the window's state alone, as before. The excess is measured once per
+// exemplar with the default SynthesisParams (vote radius 1, no balance; transfer_exemplar.cpp),
+// whatever the step's own radius: with radius 2 it under-states the wider vote's narrowing.
 #pragma once
 
 #include <cstdint>
