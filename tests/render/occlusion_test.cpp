@@ -2,11 +2,15 @@
 // consecutive triangles left out whole when every pixel they could write is nearer) changes no
 // bit: on hills seen from low down, where most triangles are hidden, the whole mesh's fragments
 // are those of its blocks rasterized one at a time (nothing to hide them) and merged by the
-// contract's rule, the nearer and on equal depth the lower triangle index.
+// contract's rule, the nearer and on equal depth the lower triangle index. A strip of the
+// picture is those rows of it, and 1 and 2 threads give the same bits (bands of many blocks).
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "render/rasterizer.h"
 
@@ -14,9 +18,9 @@ namespace maquette {
 namespace {
 
 // A height field of kSquares x kSquares squares 20 m apart (ridges up to 300 m across the view),
-// in front of an eye 250 m up, its triangles in blocks of 4 x 4 squares (kCullBlockTriangles).
-constexpr int kSquares = 96;
-static_assert(2 * 4 * 4 == kCullBlockTriangles);
+// in front of an eye 250 m up, its triangles in patches of 4 x 4 squares (2 squares wide or tall
+// along the last row and column: the triangle count is not a multiple of kCullBlockTriangles).
+constexpr int kSquares = 98;
 
 RenderMesh hills() {
   RenderMesh m;
@@ -29,8 +33,8 @@ RenderMesh hills() {
   auto at = [](int c, int r) { return uint32_t(r * (kSquares + 1) + c); };
   for (int r0 = 0; r0 < kSquares; r0 += 4)
     for (int c0 = 0; c0 < kSquares; c0 += 4)
-      for (int r = r0; r < r0 + 4; ++r)
-        for (int c = c0; c < c0 + 4; ++c)
+      for (int r = r0; r < std::min(kSquares, r0 + 4); ++r)
+        for (int c = c0; c < std::min(kSquares, c0 + 4); ++c)
           m.indices.insert(m.indices.end(), {at(c, r), at(c + 1, r), at(c + 1, r + 1), at(c, r),
                                              at(c + 1, r + 1), at(c, r + 1)});
   return m;
@@ -56,8 +60,9 @@ TEST(Occlusion, CulledBlocksChangeNoPixel) {
   for (size_t first = 0; first < mesh.triangle_count(); first += kCullBlockTriangles) {
     RenderMesh block;
     block.positions = mesh.positions;
+    const size_t end = std::min(mesh.triangle_count(), first + kCullBlockTriangles);
     block.indices.assign(mesh.indices.begin() + std::ptrdiff_t(3 * first),
-                         mesh.indices.begin() + std::ptrdiff_t(3 * (first + kCullBlockTriangles)));
+                         mesh.indices.begin() + std::ptrdiff_t(3 * end));
     const Fragments f = rasterize(block, camera);
     for (size_t i = 0; i < n; ++i) {
       if (f.triangle[i] == Fragments::kSky) continue;
@@ -84,6 +89,27 @@ TEST(Occlusion, CulledBlocksChangeNoPixel) {
   EXPECT_LT(seen, mesh.triangle_count() / 2) << seen << " of " << mesh.triangle_count();
   EXPECT_GT(terrain, n / 4);
   EXPECT_LT(terrain, n - n / 10);
+
+  // A strip of rows is those rows of the whole picture.
+  const int first_row = 37, rows = 90;
+  const Fragments strip = rasterize(mesh, camera, 1.0, first_row, rows);
+  const size_t skip = size_t(first_row) * size_t(spec.width), m = strip.triangle.size();
+  ASSERT_EQ(size_t(rows) * size_t(spec.width), m);
+  EXPECT_TRUE(std::equal(strip.triangle.begin(), strip.triangle.end(),
+                         whole.triangle.begin() + std::ptrdiff_t(skip)));
+  EXPECT_EQ(0, std::memcmp(strip.depth.data(), &whole.depth[skip], m * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(strip.b1.data(), &whole.b1[skip], m * sizeof(float)));
+  EXPECT_EQ(0, std::memcmp(strip.b2.data(), &whole.b2[skip], m * sizeof(float)));
+
+  // 1 and 2 threads: the same bits.
+  Fragments one, two;
+  tbb::task_arena(1).execute([&] { one = rasterize(mesh, camera); });
+  tbb::task_arena(2).execute([&] { two = rasterize(mesh, camera); });
+  EXPECT_TRUE(std::equal(one.triangle.begin(), one.triangle.end(), two.triangle.begin()));
+  EXPECT_EQ(0, std::memcmp(one.depth.data(), two.depth.data(), n * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(one.b1.data(), two.b1.data(), n * sizeof(float)));
+  EXPECT_EQ(0, std::memcmp(one.b2.data(), two.b2.data(), n * sizeof(float)));
+  EXPECT_TRUE(std::equal(one.triangle.begin(), one.triangle.end(), whole.triangle.begin()));
 }
 
 }  // namespace
