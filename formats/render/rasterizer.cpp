@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/round_half_away.h"
 
@@ -197,6 +198,22 @@ bool hidden(const Fragments& f, int row0, int row1, int64_t x0, int64_t x1, int6
   return true;
 }
 
+// The mesh's blocks (RenderMesh::block_first): block b is triangles [bounds[b], bounds[b + 1]).
+std::vector<size_t> block_bounds(const RenderMesh& mesh) {
+  std::vector<size_t> bounds;
+  auto run = [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; t += kCullBlockTriangles) bounds.push_back(t);
+  };
+  size_t begin = 0;
+  for (const uint32_t first : mesh.block_first) {
+    run(begin, first);
+    begin = first;
+  }
+  run(begin, mesh.triangle_count());
+  bounds.push_back(mesh.triangle_count());
+  return bounds;
+}
+
 }  // namespace
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
@@ -218,16 +235,15 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     if (v[2] >= near) screen[i] = to_screen(camera, v);
   });
 
-  // The mesh's triangles in blocks of kCullBlockTriangles consecutive ones (a terrain's run of
-  // squares): each block's bounding box on screen and nearest depth over its triangles wholly in
-  // front of the near plane and drawable, and the pieces of those the near plane cuts.
-  const size_t triangles = mesh.triangle_count();
-  std::vector<Block> blocks((triangles + kCullBlockTriangles - 1) / kCullBlockTriangles);
+  // The mesh's blocks (a terrain's patches of squares): each block's bounding box on screen and
+  // nearest depth over its triangles wholly in front of the near plane and drawable, and the
+  // pieces of those the near plane cuts.
+  const std::vector<size_t> bounds = block_bounds(mesh);
+  std::vector<Block> blocks(bounds.size() - 1);
   tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
     Block& block = blocks[b];
-    const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
     double nearest_inv_z = 0;
-    for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
+    for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
       const uint32_t* i = &mesh.indices[3 * t];
       const ScreenVertex* v[3] = {&screen[i[0]], &screen[i[1]], &screen[i[2]]};
       if (v[0]->inv_z != 0 && v[1]->inv_z != 0 && v[2]->inv_z != 0) {
@@ -311,8 +327,7 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     for (const uint32_t b : band_blocks[size_t(band)]) {
       const Block& block = blocks[b];
       if (hidden(f, row0, row1, block.x0, block.x1, block.y0, block.y1, block.nearest)) continue;
-      const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
-      for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
+      for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
         const uint32_t* i = &mesh.indices[3 * t];
         const ScreenVertex &v0 = screen[i[0]], &v1 = screen[i[1]], &v2 = screen[i[2]];
         if (v0.inv_z != 0 && v1.inv_z != 0 && v2.inv_z != 0)
