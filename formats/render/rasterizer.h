@@ -3,10 +3,13 @@
 // pixel belongs to a triangle when its centre is inside, or on a top or left edge (the top-left
 // rule: a centre on an edge shared by two triangles is drawn by exactly one of them). Depth is
 // the camera-frame z, interpolated perspective-correctly; the nearer surface wins, and on equal
-// depth the lower triangle index. Rows are split into bands of 8, the triangles binned into them
-// by oneTBB tasks over chunks of the mesh, each band rasterized by one oneTBB task over its
-// triangles in index order, writing only its own rows: the result is the same bits for any number
-// of threads (the tie rule does not depend on the drawing order).
+// depth the lower triangle index. Rows are split into bands of 8. The mesh's blocks (below) are
+// measured by oneTBB tasks (each block's bounding box on screen and nearest depth, and the pieces
+// of its triangles the near plane cuts), then binned serially into the bands their bounding boxes
+// meet: the pieces in triangle order, the blocks after a sort near to far (by nearest depth, then
+// index). Each band is rasterized by one oneTBB task, writing only its own rows: its near-plane
+// pieces first, then its blocks near to far, each block's triangles in index order. The result is
+// the same bits for any number of threads (the tie rule does not depend on the drawing order).
 // Hidden triangles are left out a block at a time: the mesh's blocks of consecutive triangles
 // (RenderMesh::block_first), each band draws its blocks near to far (by their nearest corner's
 // depth) and leaves out a block when every pixel of the band within its bounding box is already
