@@ -69,6 +69,11 @@ inline std::pair<int64_t, int64_t> column_span(const ScreenVertex& a, const Scre
   return centre_span(std::min(a.x, std::min(b.x, c.x)), std::max(a.x, std::max(b.x, c.x)), width);
 }
 
+// The nearest a pixel drawn from corners whose largest 1/z is `max_inv_z` can be: the nearest
+// corner's depth less a margin far above the rounding of draw's perspective-correct depth. Both
+// draw's test and a block's bound use it, so the bound is never farther than a depth draw writes.
+inline double nearest_depth(double max_inv_z) { return (1 - 1e-12) / max_inv_z; }
+
 // Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1); `weights`:
 // its corners' barycentric weights in `t`, or nullptr for `t` itself (unit weights: the weights
 // of the pixel's 2nd and 3rd corner are then the pixel's, the same bits as summing with zeros).
@@ -94,9 +99,8 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
   // The edge functions at the row's first centre, stepped along it by exact integer increments.
   const int64_t step[3] = {-(v[2]->y - v[1]->y) * kOne, -(v[0]->y - v[2]->y) * kOne,
                            -(v[1]->y - v[0]->y) * kOne};
-  // The nearest a pixel of the triangle can be (its corners' nearest, less a margin far above the
-  // rounding of the perspective-correct depth below): a pixel already nearer is kept without it.
-  const double nearest = (1 - 1e-12) / std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z});
+  // The nearest a pixel of the triangle can be: a pixel already nearer is kept without it.
+  const double nearest = nearest_depth(std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z}));
   for (int64_t r = first; r <= last; ++r) {
     const int64_t py = r * kOne + kOne / 2, px0 = c0 * kOne + kOne / 2;
     int64_t e[3] = {edge(*v[1], *v[2], px0, py), edge(*v[2], *v[0], px0, py),
@@ -262,8 +266,8 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
         clip(camera, corners, uint32_t(t), near, block.clipped);
       }
     }
-    // The nearest any of its pixels can be, with draw's margin.
-    block.nearest = (1 - 1e-12) / nearest_inv_z;
+    // The nearest any of its pixels can be (infinite when none is drawable).
+    block.nearest = nearest_depth(nearest_inv_z);
   });
 
   // Near to far, each band's pieces of cut triangles, then its blocks by their nearest depth (the
