@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/round_half_away.h"
 
@@ -68,6 +69,11 @@ inline std::pair<int64_t, int64_t> column_span(const ScreenVertex& a, const Scre
   return centre_span(std::min(a.x, std::min(b.x, c.x)), std::max(a.x, std::max(b.x, c.x)), width);
 }
 
+// The nearest a pixel drawn from corners whose largest 1/z is `max_inv_z` can be: the nearest
+// corner's depth less a margin far above the rounding of draw's perspective-correct depth. Both
+// draw's test and a block's bound use it, so the bound is never farther than a depth draw writes.
+inline double nearest_depth(double max_inv_z) { return (1 - 1e-12) / max_inv_z; }
+
 // Draws triangle (v0, v1, v2), a piece of mesh triangle `t`, into rows [row0, row1); `weights`:
 // its corners' barycentric weights in `t`, or nullptr for `t` itself (unit weights: the weights
 // of the pixel's 2nd and 3rd corner are then the pixel's, the same bits as summing with zeros).
@@ -93,9 +99,8 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
   // The edge functions at the row's first centre, stepped along it by exact integer increments.
   const int64_t step[3] = {-(v[2]->y - v[1]->y) * kOne, -(v[0]->y - v[2]->y) * kOne,
                            -(v[1]->y - v[0]->y) * kOne};
-  // The nearest a pixel of the triangle can be (its corners' nearest, less a margin far above the
-  // rounding of the perspective-correct depth below): a pixel already nearer is kept without it.
-  const double nearest = (1 - 1e-12) / std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z});
+  // The nearest a pixel of the triangle can be: a pixel already nearer is kept without it.
+  const double nearest = nearest_depth(std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z}));
   for (int64_t r = first; r <= last; ++r) {
     const int64_t py = r * kOne + kOne / 2, px0 = c0 * kOne + kOne / 2;
     int64_t e[3] = {edge(*v[1], *v[2], px0, py), edge(*v[2], *v[0], px0, py),
@@ -197,6 +202,22 @@ bool hidden(const Fragments& f, int row0, int row1, int64_t x0, int64_t x1, int6
   return true;
 }
 
+// The mesh's blocks (RenderMesh::block_first): block b is triangles [bounds[b], bounds[b + 1]).
+std::vector<size_t> block_bounds(const RenderMesh& mesh) {
+  std::vector<size_t> bounds;
+  auto run = [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; t += kCullBlockTriangles) bounds.push_back(t);
+  };
+  size_t begin = 0;
+  for (const uint32_t first : mesh.block_first) {
+    run(begin, first);
+    begin = first;
+  }
+  run(begin, mesh.triangle_count());
+  bounds.push_back(mesh.triangle_count());
+  return bounds;
+}
+
 }  // namespace
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
@@ -218,16 +239,15 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     if (v[2] >= near) screen[i] = to_screen(camera, v);
   });
 
-  // The mesh's triangles in blocks of kCullBlockTriangles consecutive ones (a terrain's run of
-  // squares): each block's bounding box on screen and nearest depth over its triangles wholly in
-  // front of the near plane and drawable, and the pieces of those the near plane cuts.
-  const size_t triangles = mesh.triangle_count();
-  std::vector<Block> blocks((triangles + kCullBlockTriangles - 1) / kCullBlockTriangles);
+  // The mesh's blocks (a terrain's patches of squares): each block's bounding box on screen and
+  // nearest depth over its triangles wholly in front of the near plane and drawable, and the
+  // pieces of those the near plane cuts.
+  const std::vector<size_t> bounds = block_bounds(mesh);
+  std::vector<Block> blocks(bounds.size() - 1);
   tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
     Block& block = blocks[b];
-    const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
     double nearest_inv_z = 0;
-    for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
+    for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
       const uint32_t* i = &mesh.indices[3 * t];
       const ScreenVertex* v[3] = {&screen[i[0]], &screen[i[1]], &screen[i[2]]};
       if (v[0]->inv_z != 0 && v[1]->inv_z != 0 && v[2]->inv_z != 0) {
@@ -246,8 +266,8 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
         clip(camera, corners, uint32_t(t), near, block.clipped);
       }
     }
-    // The nearest any of its pixels can be, with draw's margin.
-    block.nearest = (1 - 1e-12) / nearest_inv_z;
+    // The nearest any of its pixels can be (infinite when none is drawable).
+    block.nearest = nearest_depth(nearest_inv_z);
   });
 
   // Near to far, each band's pieces of cut triangles, then its blocks by their nearest depth (the
@@ -311,8 +331,7 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     for (const uint32_t b : band_blocks[size_t(band)]) {
       const Block& block = blocks[b];
       if (hidden(f, row0, row1, block.x0, block.x1, block.y0, block.y1, block.nearest)) continue;
-      const size_t end = std::min(triangles, (b + 1) * kCullBlockTriangles);
-      for (size_t t = b * kCullBlockTriangles; t < end; ++t) {
+      for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
         const uint32_t* i = &mesh.indices[3 * t];
         const ScreenVertex &v0 = screen[i[0]], &v1 = screen[i[1]], &v2 = screen[i[2]];
         if (v0.inv_z != 0 && v1.inv_z != 0 && v2.inv_z != 0)

@@ -3,16 +3,19 @@
 // pixel belongs to a triangle when its centre is inside, or on a top or left edge (the top-left
 // rule: a centre on an edge shared by two triangles is drawn by exactly one of them). Depth is
 // the camera-frame z, interpolated perspective-correctly; the nearer surface wins, and on equal
-// depth the lower triangle index. Rows are split into bands of 8, the triangles binned into them
-// by oneTBB tasks over chunks of the mesh, each band rasterized by one oneTBB task over its
-// triangles in index order, writing only its own rows: the result is the same bits for any number
-// of threads (the tie rule does not depend on the drawing order).
-// Hidden triangles are left out a block at a time: the mesh's triangles in blocks of
-// kCullBlockTriangles consecutive ones, each band draws its blocks near to far (by their nearest
-// corner's depth) and leaves out a block when every pixel of the band within its bounding box is
-// already nearer than that corner (it would write none of them): the same bits, far less work
-// where most of the terrain is hidden, when a block's triangles lie close together (a patch of a
-// height field, not a long row of it).
+// depth the lower triangle index. Rows are split into bands of 8. The mesh's blocks (below) are
+// measured by oneTBB tasks (each block's bounding box on screen and nearest depth, and the pieces
+// of its triangles the near plane cuts), then binned serially into the bands their bounding boxes
+// meet: the pieces in triangle order, the blocks after a sort near to far (by nearest depth, then
+// index). Each band is rasterized by one oneTBB task, writing only its own rows: its near-plane
+// pieces first, then its blocks near to far, each block's triangles in index order. The result is
+// the same bits for any number of threads (the tie rule does not depend on the drawing order).
+// Hidden triangles are left out a block at a time: the mesh's blocks of consecutive triangles
+// (RenderMesh::block_first), each band draws its blocks near to far (by their nearest corner's
+// depth) and leaves out a block when every pixel of the band within its bounding box is already
+// nearer than that corner (it would write none of them): the same bits, far less work where most
+// of the terrain is hidden, when a block's triangles lie close together (a patch of a height
+// field, not a long row of it).
 // Triangles are clipped at `near` metres in front of the eye (the pieces keep their barycentric
 // weights in the mesh triangle); a triangle (or piece) with a corner projected further than 2^22
 // pixels from the picture is left out. There is no back-face culling.
@@ -27,13 +30,19 @@
 
 namespace maquette {
 
-// The rasterizer's blocks of consecutive triangles, culled whole when hidden.
+// The most triangles in one of the rasterizer's blocks (culled whole when hidden).
 constexpr size_t kCullBlockTriangles = 32;
 
 // Its arrays are FreshArrays (render/fresh_array.h): whoever sizes one writes every element.
 struct RenderMesh {
   FreshArray<double> positions;  // the eye's ENU frame, metres, 3 per vertex
   FreshArray<uint32_t> indices;  // 3 per triangle
+  // Where the rasterizer's blocks start: triangle indices, non-decreasing, at most
+  // triangle_count(). A block runs to the next start (none between two equal ones), split into
+  // blocks of kCullBlockTriangles and a remainder when longer; the triangles before the first
+  // start are blocks of kCullBlockTriangles too (all of them when there is no start). The writer
+  // should start one at each compact patch of the surface (bounding boxes on screen are small).
+  FreshArray<uint32_t> block_first;
   size_t triangle_count() const { return indices.size() / 3; }
 };
 

@@ -23,10 +23,20 @@ constexpr uint32_t kNoVertex = std::numeric_limits<uint32_t>::max();
 // the same central difference in every tile that draws it (no seam in the shading).
 constexpr int kHalo = 2;
 
-// The squares' triangles are written in patches of kBlockSquares x kBlockSquares squares, one of
-// the rasterizer's blocks each (render/rasterizer.h: hidden blocks are culled whole).
+// The squares' triangles are written in patches of kBlockSquares x kBlockSquares squares (fewer
+// along the tile's last row and column of patches, and without the squares left out), each one of
+// the rasterizer's blocks (RenderMesh::block_first; render/rasterizer.h: hidden blocks are culled
+// whole), as is each side of the skirt (split by the rasterizer into blocks of at most
+// kCullBlockTriangles). A whole patch is one block: not split.
 constexpr int kBlockSquares = 4;
-static_assert(2 * kBlockSquares * kBlockSquares == kCullBlockTriangles);
+static_assert(2 * kBlockSquares * kBlockSquares <= kCullBlockTriangles);
+
+// A tile's blocks (block_first's entries): its patches (of its n + 1 squares a side: samples -1 ..
+// n), and the skirt's four sides.
+size_t tile_blocks(int n) {
+  const size_t patches = size_t(n + 1 + kBlockSquares - 1) / kBlockSquares;
+  return patches * patches + 4;
+}
 
 // The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
 std::vector<std::array<int, 2>> halo_ring(int n) {
@@ -76,13 +86,14 @@ TileSource tile_source(const Store& store, const Grid& grid, const LayerInfo& de
   return t;
 }
 
-// Writes `cell`'s share of the mesh (tile_source) into `scene` from vertex `first_vertex` and index
-// `first_index`: the drawn samples' vertices in row order, then the skirt's in ring order; the
-// squares' triangles in patches of kBlockSquares x kBlockSquares squares (the patches in row
-// order, each in row order), then the skirt's.
+// Writes `cell`'s share of the mesh (tile_source) into `scene` from vertex `first_vertex`, index
+// `first_index` and block start `first_block` (tile_blocks(n) of them): the drawn samples'
+// vertices in row order, then the skirt's in ring order; the squares' triangles in patches of
+// kBlockSquares x kBlockSquares squares (the patches in row order, each in row order), then the
+// skirt's, each patch and each side of the skirt starting a block.
 void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileSource& source,
                 const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
-                size_t first_vertex, size_t first_index, TerrainScene& scene) {
+                size_t first_vertex, size_t first_index, size_t first_block, TerrainScene& scene) {
   const int n = dem.tile_size;
   const Tile<float>& tile = source.heights;
   const SamplePlaces places(grid, cell, n, kHalo, camera.frame(), heights);
@@ -152,14 +163,18 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
   auto triangles = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {  // a, b, c and a, c, d
     for (const uint32_t k : {a, b, c, a, c, d}) indices[next_index++] = k;
   };
+  size_t next_block = first_block;
+  auto start_block = [&] { scene.mesh.block_first[next_block++] = uint32_t(next_index / 3); };
   for (int r0 = -1; r0 < n; r0 += kBlockSquares)
-    for (int c0 = -1; c0 < n; c0 += kBlockSquares)
+    for (int c0 = -1; c0 < n; c0 += kBlockSquares) {
+      start_block();
       for (int r = r0; r < std::min(n, r0 + kBlockSquares); ++r)
         for (int c = c0; c < std::min(n, c0 + kBlockSquares); ++c) {
           const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
           if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
           triangles(a, b, e, d);
         }
+    }
   // The skirt: a wall hanging from the halo's ring, deeper than the tile's relief plus a sample,
   // so that where a neighbour is drawn at another level (its surface above or below this one
   // near the seam) no ray passes between the two.
@@ -185,6 +200,7 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
   for (size_t k = 0; k < ring.size(); ++k)
     if (const uint32_t v = at(ring[k][0], ring[k][1]); v != kNoVertex) below[k] = hang(v);
   for (size_t k = 0; k < ring.size(); ++k) {
+    if (k % size_t(n + 1) == 0) start_block();  // a side of the ring
     const size_t next = (k + 1) % ring.size();
     const uint32_t a = at(ring[k][0], ring[k][1]), b = at(ring[next][0], ring[next][1]);
     if (a == kNoVertex || b == kNoVertex) continue;
@@ -312,13 +328,14 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   // Sized, not filled: each tile writes every element of its share.
   scene.mesh.positions.resize(3 * vertices);
   scene.mesh.indices.resize(first_index.back());
+  scene.mesh.block_first.resize(cells.size() * tile_blocks(dem.tile_size));
   scene.lonlat.resize(2 * vertices);
   scene.plane.resize(2 * vertices);
   scene.altitude.resize(vertices);
   scene.normals.resize(3 * vertices);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
     write_tile(grid, dem, cells[i], sources[i], camera, heights, exaggeration, first_vertex[i],
-               first_index[i], scene);
+               first_index[i], i * tile_blocks(dem.tile_size), scene);
     sources[i] = TileSource{};  // its heights no longer needed
   });
   return scene;

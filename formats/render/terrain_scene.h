@@ -3,8 +3,9 @@
 // overview of a coarser level), padded with a one-pixel halo from its neighbours of the same level
 // (core/halo.h, across face seams too), gives a vertex at every sample centre, halo included
 // (core/tile_frame.h: where the sample really lies), and two triangles per square of four samples,
-// always split along the same diagonal, written in patches of 4 x 4 squares (the rasterizer's
-// blocks, culled whole when hidden: render/rasterizer.h). The halo's squares reach into the
+// always split along the same diagonal, written in patches of 4 x 4 squares, each one of the
+// rasterizer's blocks (RenderMesh::block_first, culled whole when hidden: render/rasterizer.h),
+// as is each side of the skirt. The halo's squares reach into the
 // neighbours, so tiles of one level share the squares along their seams (drawn twice, the same
 // triangles), and a tile's skirt, a wall hanging from its halo's ring deeper than the tile's relief
 // plus a sample, closes the cracks where a neighbour is drawn at another level. Squares with a
