@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/round_half_away.h"
@@ -210,6 +212,10 @@ std::vector<size_t> block_bounds(const RenderMesh& mesh) {
   };
   size_t begin = 0;
   for (const uint32_t first : mesh.block_first) {
+    if (first < begin || first > mesh.triangle_count())  // a precondition (rasterizer.h)
+      throw std::logic_error("rasterize: block start " + std::to_string(first) + " after " +
+                             std::to_string(begin) + " of " +
+                             std::to_string(mesh.triangle_count()) + " triangles");
     run(begin, first);
     begin = first;
   }

@@ -208,12 +208,14 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
   }
   // The arrays were sized by tile_source's counts and are not initialized: a share that differs
   // would leave garbage or overrun a neighbour's, so the two loops' agreement is checked.
-  if (next_vertex - first_vertex != source.vertices || next_index - first_index != source.indices)
+  if (next_vertex - first_vertex != source.vertices || next_index - first_index != source.indices ||
+      next_block - first_block != tile_blocks(n))
     throw std::logic_error("panorama mesh of cell " + cell.ToText() + ": wrote " +
-                           std::to_string(next_vertex - first_vertex) + " vertices and " +
-                           std::to_string(next_index - first_index) + " indices, counted " +
-                           std::to_string(source.vertices) + " and " +
-                           std::to_string(source.indices));
+                           std::to_string(next_vertex - first_vertex) + " vertices, " +
+                           std::to_string(next_index - first_index) + " indices and " +
+                           std::to_string(next_block - first_block) + " block starts, counted " +
+                           std::to_string(source.vertices) + ", " + std::to_string(source.indices) +
+                           " and " + std::to_string(tile_blocks(n)));
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
