@@ -19,6 +19,7 @@
 #include "height_field.h"
 #include "mosaic_frame.h"
 #include "operators.h"
+#include "sample_positions.h"
 #include "stroke.h"
 #include "stroke_constraints.h"
 
@@ -86,25 +87,18 @@ double sample_spacing(const MosaicFrame& frame, int size, LonLat p) {
   return std::min(std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(d[0] - a[0], d[1] - a[1]));
 }
 
-// Fills the horizontal position of sample v.
-void place(const MosaicFrame& frame, HeightField& field, size_t v) {
-  if (!std::isnan(field.east[v])) return;
-  const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-  const EastNorth2 p = frame.local(frame.sample_lonlat(c, r));
-  field.east[v] = p[0];
-  field.north[v] = p[1];
-}
-
 // Fills the horizontal positions of the constraints' vertices and their neighbours.
 void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constraints,
                     HeightField& field) {
+  std::vector<char> wanted(field.z.size(), 0);
   for (const auto* list : {&constraints.control, &constraints.section})
     for (const HeightConstraint& h : *list)
       for (const size_t v : h.at.vertex) {
         const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-        place(frame, field, v);
-        for (const auto& n : kNeighbours) place(frame, field, field.index(c + n[0], r + n[1]));
+        wanted[v] = 1;
+        for (const auto& n : kNeighbours) wanted[field.index(c + n[0], r + n[1])] = 1;
       }
+  place_samples(frame, wanted, field);
 }
 
 // Refining reads the DEM kRefineMargin + refine samples around the constrained triangles (the
@@ -180,9 +174,11 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
   // Nodata samples of the window (in a corner gap of the plane too, which has no position) are
   // farther from the constraints than anything the refined zone reads (check_surroundings):
   // they keep no position, and their finer samples stay nodata.
+  std::vector<char> wanted(field.z.size(), 0);
   for (int r = window.row0; r <= window.row1; ++r)
     for (int c = window.col0; c <= window.col1; ++c)
-      if (const size_t v = field.index(c, r); !std::isnan(field.z[v])) place(frame, field, v);
+      if (const size_t v = field.index(c, r); !std::isnan(field.z[v])) wanted[v] = 1;
+  place_samples(frame, wanted, field);
   return on_strokes_port(
       [&] { return refined_heights(field, window, by_level, energy_weight, subdivision); });
 }

@@ -17,6 +17,7 @@
 
 #include "../line_samples.h"
 #include "../mosaic_frame.h"
+#include "../sample_positions.h"
 #include "core/error.h"
 #include "core/halo.h"
 #include "core/mosaic_geometry.h"
@@ -285,6 +286,45 @@ TEST(DeformSeams, LinesOfPointsLocatedAsEachPointAlone) {
         EXPECT_GT(quadratic_worst, 1e-4) << lon;
       }
     }
+  }
+}
+
+// Samples' horizontal positions by place_samples (stretches of 32 face pixels along rows): each
+// within 2e-7 m of its own (the grid's pixel centre in the test's tangent plane) on 160 x 160
+// samples around the seam point of N and O (rows along the seam) and of N and P (rows across it,
+// where the map has a kink).
+TEST(DeformSeams, SamplePositionsAsEachSampleAlone) {
+  for (const double lon : {-130.0, -40.0}) {
+    const Seam seam(lon);
+    const Mosaic m = seam.placed(1);
+    const MosaicFrame frame(default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row,
+                            seam_point(lon));
+    HeightField field;
+    field.width = field.height = 3 * kTile;
+    field.east.assign(size_t(field.width) * size_t(field.height), NAN);
+    field.north = field.east;
+    const auto at = *frame.sample(seam_point(lon));
+    const int c0 = int(at[0]) - 80, r0 = int(at[1]) - 80;
+    std::vector<char> wanted(field.east.size(), 0);
+    for (int r = r0; r < r0 + 160; ++r)
+      for (int c = c0; c < c0 + 160; ++c) wanted[field.index(c, r)] = 1;
+    place_samples(frame, wanted, field);
+    double worst = 0;
+    size_t placed = 0;
+    for (int r = 0; r < field.height; ++r)
+      for (int c = 0; c < field.width; ++c) {
+        const size_t v = field.index(c, r);
+        if (!wanted[v]) {
+          EXPECT_TRUE(std::isnan(field.east[v]));
+          continue;
+        }
+        const auto own = seam.sample_local(m, c, r);
+        worst =
+            std::max({worst, std::abs(field.east[v] - own[0]), std::abs(field.north[v] - own[1])});
+        ++placed;
+      }
+    EXPECT_EQ(placed, 160u * 160u);
+    EXPECT_LE(worst, 2e-7) << lon;
   }
 }
 
