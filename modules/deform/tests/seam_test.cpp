@@ -58,7 +58,9 @@ double trapezoid(double o) {
 
 // The tangent plane at the seam point of meridian `lon`.
 struct Seam : TangentPlane {
-  explicit Seam(double lon) : TangentPlane(seam_point(lon)) {}
+  explicit Seam(double lon) : TangentPlane(seam_point(lon)), point(seam_point(lon)) {}
+
+  LonLat point;
 
   // The plane unfolded around N at the base level and one level finer.
   std::array<UnfoldedFaces, 2> unfolded{UnfoldedFaces{default_grid(), kFaceN, kPixelLevel},
@@ -84,6 +86,11 @@ struct Seam : TangentPlane {
       }
     m.layers.emplace("dem", std::move(t));
     return m;
+  }
+
+  // The frame of deform.features on mosaic `m`, its tangent plane at the seam point.
+  MosaicFrame frame(const Mosaic& m) const {
+    return {default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row, point};
   }
 
   // That mosaic's place, without layers.
@@ -253,8 +260,7 @@ TEST(DeformSeams, LinesOfPointsLocatedAsEachPointAlone) {
   for (const double lon : {-130.0, -40.0}) {
     const Seam seam(lon);
     const Mosaic m = seam.placed(1);
-    const MosaicFrame frame(default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row,
-                            seam_point(lon));
+    const MosaicFrame frame = seam.frame(m);
     const MosaicGeometry grid(default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row);
     // From, to (metres east and north of the seam point) and whether the line crosses the seam.
     const std::array<std::tuple<EastNorth2, EastNorth2, bool>, 3> lines{
@@ -297,13 +303,12 @@ TEST(DeformSeams, SamplePositionsAsEachSampleAlone) {
   for (const double lon : {-130.0, -40.0}) {
     const Seam seam(lon);
     const Mosaic m = seam.placed(1);
-    const MosaicFrame frame(default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row,
-                            seam_point(lon));
+    const MosaicFrame frame = seam.frame(m);
     HeightField field;
     field.width = field.height = 3 * kTile;
     field.east.assign(size_t(field.width) * size_t(field.height), NAN);
     field.north = field.east;
-    const auto at = *frame.sample(seam_point(lon));
+    const auto at = *frame.sample(seam.point);
     const int c0 = int(at[0]) - 80, r0 = int(at[1]) - 80;
     std::vector<char> wanted(field.east.size(), 0);
     for (int r = r0; r < r0 + 160; ++r)
