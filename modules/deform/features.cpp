@@ -203,18 +203,23 @@ HeightField halo_heights(const Tile<float>& dem) {
 
 // The finer output mosaic (the region and its halo): the patch (in the region's finer samples)
 // where it is, elsewhere `grown` (halo_heights) linearly interpolated at the finer pixel centres.
-// Rows in parallel, each sample on its own.
+// Rows in parallel, each sample on its own (height_at_clamped, its coordinates clamped once per
+// column and row).
 void write_finer(const HeightField& grown, const RefinedPatch& patch, int refine,
                  Tile<float>& out) {
   const double scale = 1 << refine;
   const int shift = kHalo << refine;
+  std::vector<double> cols(size_t(out.size())), rows(size_t(out.size()));
+  for (int k = 0; k < out.size(); ++k) {
+    cols[size_t(k)] = clamped_col(grown, (k + 0.5) / scale - 0.5);
+    rows[size_t(k)] = clamped_row(grown, (k + 0.5) / scale - 0.5);
+  }
   tbb::parallel_for(0, out.size(), [&](int r) {
     for (int c = 0; c < out.size(); ++c) {
       const int j = c - shift - patch.col0, i = r - shift - patch.row0;
-      out.at(c, r) =
-          float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
-                    ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
-                    : height_at_clamped(grown, (c + 0.5) / scale - 0.5, (r + 0.5) / scale - 0.5));
+      out.at(c, r) = float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
+                               ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
+                               : height_at(grown, locate(grown, cols[size_t(c)], rows[size_t(r)])));
     }
   });
 }
