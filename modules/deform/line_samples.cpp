@@ -4,7 +4,11 @@
 #include <cstddef>
 
 namespace maquette::deform {
+namespace {
+
 using Sample = std::array<double, 2>;
+
+}  // namespace
 
 bool line_samples(const MosaicFrame& frame, std::span<const EastNorth2> points,
                   std::span<Sample> out) {
