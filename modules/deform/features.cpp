@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -106,17 +107,18 @@ void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constrain
 // the window would otherwise be cut at its edge, where Loop's border masks (the border curve's
 // B-spline) would replace the interior's, a different surface from uniform subdivision's. And
 // they must hold data: nodata there is an error naming the feature, where the solve would
-// otherwise meet it as a non-finite system.
+// otherwise meet it as a non-finite system. `control` and `section`: the stroke's constraints.
 void check_surroundings(const MosaicFrame& frame, const HeightField& field,
-                        const StrokeConstraints& constraints, int refine,
+                        std::span<const HeightConstraint> control,
+                        std::span<const HeightConstraint> section, int refine,
                         const FeatureStroke& stroke) {
   const int reach = kRefineMargin + refine;
   const std::string feature = "inputs.strokes: feature " + std::to_string(stroke.id);
   const std::string refined =
       ": refined " + std::to_string(refine) + " level(s), it needs the DEM's heights ";
   std::vector<char> seen(field.z.size(), 0);
-  for (const auto* list : {&constraints.control, &constraints.section})
-    for (const HeightConstraint& h : *list)
+  for (const auto list : {control, section})
+    for (const HeightConstraint& h : list)
       for (const size_t v : h.at.vertex) {
         if (seen[v]) continue;
         seen[v] = 1;
@@ -162,13 +164,11 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
   std::vector<StrokeConstraints> by_level(static_cast<size_t>(refine));
   for (int t = 0; t < refine; ++t)
     for (const FeatureStroke& stroke : strokes) {
-      StrokeConstraints one;
-      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", one);
-      check_surroundings(frame, field, one, refine, stroke);
       StrokeConstraints& all = by_level[size_t(t)];
-      all.control.insert(all.control.end(), one.control.begin(), one.control.end());
-      all.section.insert(all.section.end(), one.section.begin(), one.section.end());
-      all.bands.insert(all.bands.end(), one.bands.begin(), one.bands.end());
+      const size_t controls = all.control.size(), sections = all.section.size();
+      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", all);
+      check_surroundings(frame, field, std::span(all.control).subspan(controls),
+                         std::span(all.section).subspan(sections), refine, stroke);
     }
   const SampleWindow window = refinement_window(field, by_level);
   // Nodata samples of the window (in a corner gap of the plane too, which has no position) are
