@@ -3,6 +3,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -58,19 +60,37 @@ void row_through(const HeightConstraint& c, const SampleWindow& window, const No
                                      nodes.at(col + 1, row + 1)};
   const std::array<double, 3> weight =
       upper ? std::array{1 - fx, fx - fy, fy} : std::array{1 - fy, fy - fx, fx};
-  terms.clear();
-  for (size_t k = 0; k < 3; ++k)
-    for (SubdivisionMatrix::InnerIterator it(subdivision, Eigen::Index(vertex[k])); it; ++it)
-      terms.emplace_back(size_t(it.col()), weight[k] * it.value());
-  std::sort(terms.begin(), terms.end());
-  size_t merged = 0;
-  for (size_t i = 0; i < terms.size(); ++i) {
-    if (merged > 0 && terms[merged - 1].first == terms[i].first)
-      terms[merged - 1].second += terms[i].second;
-    else
-      terms[merged++] = terms[i];
+  // The three rows of the subdivision matrix (each sorted by column) merged: a column in several
+  // sums its terms from the smallest, as a sort of the (column, term) pairs would.
+  std::array<const int*, 3> column, end;
+  std::array<const double*, 3> value;
+  for (size_t k = 0; k < 3; ++k) {
+    const Eigen::Index first = subdivision.outerIndexPtr()[vertex[k]];
+    column[k] = subdivision.innerIndexPtr() + first;
+    end[k] = subdivision.innerIndexPtr() + subdivision.outerIndexPtr()[vertex[k] + 1];
+    value[k] = subdivision.valuePtr() + first;
   }
-  terms.resize(merged);
+  terms.clear();
+  for (;;) {
+    int next = INT_MAX;
+    for (size_t k = 0; k < 3; ++k)
+      if (column[k] != end[k]) next = std::min(next, *column[k]);
+    if (next == INT_MAX) break;
+    std::array<double, 3> sum{};
+    size_t count = 0;
+    for (size_t k = 0; k < 3; ++k)
+      if (column[k] != end[k] && *column[k] == next) {
+        sum[count++] = weight[k] * *value[k]++;
+        ++column[k];
+      }
+    // At most three: sorted by exchanges.
+    if (count == 3 && sum[1] > sum[2]) std::swap(sum[1], sum[2]);
+    if (count >= 2 && sum[0] > sum[1]) std::swap(sum[0], sum[1]);
+    if (count == 3 && sum[1] > sum[2]) std::swap(sum[1], sum[2]);
+    double total = sum[0];
+    for (size_t i = 1; i < count; ++i) total += sum[i];
+    terms.emplace_back(size_t(next), total);
+  }
 }
 
 // The constraints' rows (row_through), in their order: built by blocks in parallel, each row on
@@ -88,6 +108,12 @@ ConstraintRows rows_through(const std::vector<HeightConstraint>& constraints,
     }
   });
   ConstraintRows rows;
+  size_t terms = 0;
+  for (const ConstraintRows& block : blocks) terms += block.terms.size();
+  rows.terms.reserve(terms);
+  rows.starts.reserve(constraints.size() + 1);
+  rows.rhs.reserve(constraints.size());
+  rows.features.reserve(constraints.size());
   for (const ConstraintRows& block : blocks) {
     const size_t offset = rows.terms.size();
     rows.terms.insert(rows.terms.end(), block.terms.begin(), block.terms.end());

@@ -37,6 +37,16 @@ class System {
   const std::vector<size_t>& unknowns() const { return unknowns_; }
   bool unknown(size_t vertex) const { return column_[vertex] >= 0; }
 
+  // Room for `rows` constraint rows of `terms` terms in all and the unknowns' energy rows (at
+  // most 7 terms each on the height field and regular Loop vertices; more only grows).
+  void reserve(size_t rows, size_t terms) {
+    const size_t all_rows = rows + unknowns_.size();
+    starts_.reserve(all_rows + 1);
+    rhs_.reserve(all_rows);
+    columns_.reserve(terms + 7 * unknowns_.size());
+    values_.reserve(terms + 7 * unknowns_.size());
+  }
+
   // Adds the row weight * (sum terms = rhs); terms on vertices that are no unknowns go to the
   // right-hand side at their current height. A row without unknowns is dropped.
   void add(std::span<const Term> terms, double rhs, double weight) {
@@ -51,6 +61,7 @@ class System {
       }
     }
     if (columns_.size() == first) return;
+    sort_row(first);
     starts_.push_back(int(columns_.size()));
     rhs_.push_back(weight * rhs);
   }
@@ -89,23 +100,47 @@ class System {
  private:
   enum class Triangles { Lower, Both };
 
+  // Sorts the entries of the row begun at `first` by column (insertion sort: rows hold 3 to ~20
+  // terms, those through the subdivision matrix already sorted) and adds up repeated columns
+  // (none in deform_heights' rows): normal_equations reads each column once per row. The order of
+  // a row's terms changes none of its sums.
+  void sort_row(size_t first) {
+    for (size_t e = first + 1; e < columns_.size(); ++e)
+      for (size_t f = e; f > first && columns_[f - 1] > columns_[f]; --f) {
+        std::swap(columns_[f - 1], columns_[f]);
+        std::swap(values_[f - 1], values_[f]);
+      }
+    size_t kept = first;
+    for (size_t e = first; e < columns_.size(); ++e) {
+      if (e > first && columns_[e] == columns_[kept - 1]) {
+        values_[kept - 1] += values_[e];
+        continue;
+      }
+      columns_[kept] = columns_[e];
+      values_[kept++] = values_[e];
+    }
+    columns_.resize(kept);
+    values_.resize(kept);
+  }
+
   // The lower triangle of A^T A (what SimplicialLDLT reads) or both, and A^T b, by blocks of
-  // columns in parallel: entry (k, j) sums a_ij a_ik over the rows i of column j in increasing
-  // order, so the same bits for any thread count.
+  // columns in parallel: entry (k, j), k >= j, sums a_ij a_ik over the rows i of column j in
+  // increasing order (the terms of row i from column j on: rows are sorted by column), so the
+  // same bits for any thread count; the upper triangle is the lower's mirror (entry (j, k) would
+  // sum the same products in the same order).
   Eigen::SparseMatrix<double> normal_equations(Eigen::VectorXd& atb, Triangles triangles) const {
     const size_t n = unknowns_.size();
-    // A by columns: rows increasing in each (a counting sort of the entries in row order).
-    std::vector<int> col_starts(n + 1, 0), col_rows(values_.size());
-    std::vector<double> col_values(values_.size());
+    // A by columns: rows increasing in each (a counting sort of the entries in row order), with
+    // each entry's place in its row.
+    std::vector<int> col_starts(n + 1, 0), col_entries(values_.size());
     for (const int c : columns_) ++col_starts[size_t(c) + 1];
     for (size_t c = 0; c < n; ++c) col_starts[c + 1] += col_starts[c];
     std::vector<int> next(col_starts.begin(), col_starts.end() - 1);
+    for (size_t e = 0; e < columns_.size(); ++e)
+      col_entries[size_t(next[size_t(columns_[e])]++)] = int(e);
+    std::vector<int> row_of(values_.size());
     for (size_t i = 0; i + 1 < starts_.size(); ++i)
-      for (int e = starts_[i]; e < starts_[i + 1]; ++e) {
-        const int at = next[size_t(columns_[size_t(e)])]++;
-        col_rows[size_t(at)] = int(i);
-        col_values[size_t(at)] = values_[size_t(e)];
-      }
+      std::fill(row_of.begin() + starts_[i], row_of.begin() + starts_[i + 1], int(i));
     struct Block {
       std::vector<int> counts, rows;
       std::vector<double> values;
@@ -132,13 +167,13 @@ class System {
       for (size_t j = b * kColumns; j < std::min(n, (b + 1) * kColumns); ++j) {
         touched.clear();
         double rhs = 0;
-        for (int e = col_starts[j]; e < col_starts[j + 1]; ++e) {
-          const size_t i = size_t(col_rows[size_t(e)]);
-          const double aij = col_values[size_t(e)];
+        for (int c = col_starts[j]; c < col_starts[j + 1]; ++c) {
+          const int e = col_entries[size_t(c)];
+          const size_t i = size_t(row_of[size_t(e)]);
+          const double aij = values_[size_t(e)];
           rhs += aij * rhs_[i];
-          for (int f = starts_[i]; f < starts_[i + 1]; ++f) {
+          for (int f = e; f < starts_[i + 1]; ++f) {
             const int k = columns_[size_t(f)];
-            if (triangles == Triangles::Lower && size_t(k) < j) continue;
             if (seen[size_t(k)] != j) {
               seen[size_t(k)] = j;
               touched.push_back(k);
@@ -156,11 +191,11 @@ class System {
         }
       }
     });
-    Eigen::SparseMatrix<double> ata{Eigen::Index(n), Eigen::Index(n)};
+    Eigen::SparseMatrix<double> lower{Eigen::Index(n), Eigen::Index(n)};
     size_t entries = 0;
     for (const Block& block : blocks) entries += block.rows.size();
-    ata.resizeNonZeros(Eigen::Index(entries));
-    int* outer = ata.outerIndexPtr();
+    lower.resizeNonZeros(Eigen::Index(entries));
+    int* outer = lower.outerIndexPtr();
     size_t column = 0, at = 0;
     outer[0] = 0;
     for (const Block& block : blocks) {
@@ -168,11 +203,42 @@ class System {
         outer[column + 1] = outer[column] + count;
         ++column;
       }
-      std::copy(block.rows.begin(), block.rows.end(), ata.innerIndexPtr() + at);
-      std::copy(block.values.begin(), block.values.end(), ata.valuePtr() + at);
+      std::copy(block.rows.begin(), block.rows.end(), lower.innerIndexPtr() + at);
+      std::copy(block.values.begin(), block.values.end(), lower.valuePtr() + at);
       at += block.rows.size();
     }
-    return ata;
+    return triangles == Triangles::Lower ? lower : mirrored(lower);
+  }
+
+  // Both triangles of the symmetric matrix whose lower triangle (diagonal included) is `lower`:
+  // column j holds the entries of row j left of the diagonal (from the columns before j, in
+  // order), then column j of `lower`.
+  static Eigen::SparseMatrix<double> mirrored(const Eigen::SparseMatrix<double>& lower) {
+    const Eigen::Index n = lower.cols();
+    const int* outer = lower.outerIndexPtr();
+    const int* inner = lower.innerIndexPtr();
+    const double* value = lower.valuePtr();
+    Eigen::SparseMatrix<double> full{n, n};
+    int* out_outer = full.outerIndexPtr();
+    std::fill(out_outer, out_outer + n + 1, 0);
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (int e = outer[k]; e < outer[k + 1]; ++e) out_outer[inner[e] + 1] += inner[e] != k;
+    for (Eigen::Index j = 0; j < n; ++j)
+      out_outer[j + 1] += out_outer[j] + (outer[j + 1] - outer[j]);
+    full.resizeNonZeros(out_outer[n]);
+    std::vector<int> next(out_outer, out_outer + n);
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (int e = outer[k]; e < outer[k + 1]; ++e)
+        if (inner[e] != k) {
+          const int at = next[size_t(inner[e])]++;
+          full.innerIndexPtr()[at] = int(k);
+          full.valuePtr()[at] = value[e];
+        }
+    for (Eigen::Index j = 0; j < n; ++j) {
+      std::copy(inner + outer[j], inner + outer[j + 1], full.innerIndexPtr() + next[size_t(j)]);
+      std::copy(value + outer[j], value + outer[j + 1], full.valuePtr() + next[size_t(j)]);
+    }
+    return full;
   }
 
   // The first column without a non-zero coefficient, SIZE_MAX when every column has one.
@@ -243,6 +309,7 @@ std::vector<size_t> solve_stage(std::vector<double>& z, const ConstraintRows& ro
                                 Reads reads, LeastSquaresSolver solver, const std::string& what) {
   System system(z, touched(rows, fixed, may_move, z.size()));
   if (system.unknowns().empty()) return {};
+  system.reserve(rows.rhs.size(), rows.terms.size());
   for (size_t i = 0; i < rows.rhs.size(); ++i)
     system.add(std::span(rows.terms).subspan(rows.starts[i], rows.starts[i + 1] - rows.starts[i]),
                rows.rhs[i], 1.0);

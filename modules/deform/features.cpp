@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "height_field.h"
 #include "mosaic_frame.h"
 #include "operators.h"
+#include "sample_positions.h"
 #include "stroke.h"
 #include "stroke_constraints.h"
 
@@ -86,25 +88,18 @@ double sample_spacing(const MosaicFrame& frame, int size, LonLat p) {
   return std::min(std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(d[0] - a[0], d[1] - a[1]));
 }
 
-// Fills the horizontal position of sample v.
-void place(const MosaicFrame& frame, HeightField& field, size_t v) {
-  if (!std::isnan(field.east[v])) return;
-  const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-  const EastNorth2 p = frame.local(frame.sample_lonlat(c, r));
-  field.east[v] = p[0];
-  field.north[v] = p[1];
-}
-
 // Fills the horizontal positions of the constraints' vertices and their neighbours.
 void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constraints,
                     HeightField& field) {
+  std::vector<char> wanted(field.z.size(), 0);
   for (const auto* list : {&constraints.control, &constraints.section})
     for (const HeightConstraint& h : *list)
       for (const size_t v : h.at.vertex) {
         const int c = int(v % size_t(field.width)), r = int(v / size_t(field.width));
-        place(frame, field, v);
-        for (const auto& n : kNeighbours) place(frame, field, field.index(c + n[0], r + n[1]));
+        wanted[v] = 1;
+        for (const auto& n : kNeighbours) wanted[field.index(c + n[0], r + n[1])] = 1;
       }
+  place_samples(frame, wanted, field);
 }
 
 // Refining reads the DEM kRefineMargin + refine samples around the constrained triangles (the
@@ -112,17 +107,18 @@ void place_vertices(const MosaicFrame& frame, const StrokeConstraints& constrain
 // the window would otherwise be cut at its edge, where Loop's border masks (the border curve's
 // B-spline) would replace the interior's, a different surface from uniform subdivision's. And
 // they must hold data: nodata there is an error naming the feature, where the solve would
-// otherwise meet it as a non-finite system.
+// otherwise meet it as a non-finite system. `control` and `section`: the stroke's constraints.
 void check_surroundings(const MosaicFrame& frame, const HeightField& field,
-                        const StrokeConstraints& constraints, int refine,
+                        std::span<const HeightConstraint> control,
+                        std::span<const HeightConstraint> section, int refine,
                         const FeatureStroke& stroke) {
   const int reach = kRefineMargin + refine;
   const std::string feature = "inputs.strokes: feature " + std::to_string(stroke.id);
   const std::string refined =
       ": refined " + std::to_string(refine) + " level(s), it needs the DEM's heights ";
   std::vector<char> seen(field.z.size(), 0);
-  for (const auto* list : {&constraints.control, &constraints.section})
-    for (const HeightConstraint& h : *list)
+  for (const auto list : {control, section})
+    for (const HeightConstraint& h : list)
       for (const size_t v : h.at.vertex) {
         if (seen[v]) continue;
         seen[v] = 1;
@@ -168,21 +164,21 @@ RefinedPatch refine_near(const MosaicFrame& frame, HeightField& field,
   std::vector<StrokeConstraints> by_level(static_cast<size_t>(refine));
   for (int t = 0; t < refine; ++t)
     for (const FeatureStroke& stroke : strokes) {
-      StrokeConstraints one;
-      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", one);
-      check_surroundings(frame, field, one, refine, stroke);
       StrokeConstraints& all = by_level[size_t(t)];
-      all.control.insert(all.control.end(), one.control.begin(), one.control.end());
-      all.section.insert(all.section.end(), one.section.begin(), one.section.end());
-      all.bands.insert(all.bands.end(), one.bands.begin(), one.bands.end());
+      const size_t controls = all.control.size(), sections = all.section.size();
+      add_stroke_constraints(stroke, frame, field, step_m / double(1 << t), "inputs.strokes", all);
+      check_surroundings(frame, field, std::span(all.control).subspan(controls),
+                         std::span(all.section).subspan(sections), refine, stroke);
     }
   const SampleWindow window = refinement_window(field, by_level);
   // Nodata samples of the window (in a corner gap of the plane too, which has no position) are
   // farther from the constraints than anything the refined zone reads (check_surroundings):
   // they keep no position, and their finer samples stay nodata.
+  std::vector<char> wanted(field.z.size(), 0);
   for (int r = window.row0; r <= window.row1; ++r)
     for (int c = window.col0; c <= window.col1; ++c)
-      if (const size_t v = field.index(c, r); !std::isnan(field.z[v])) place(frame, field, v);
+      if (const size_t v = field.index(c, r); !std::isnan(field.z[v])) wanted[v] = 1;
+  place_samples(frame, wanted, field);
   return on_strokes_port(
       [&] { return refined_heights(field, window, by_level, energy_weight, subdivision); });
 }
@@ -207,18 +203,23 @@ HeightField halo_heights(const Tile<float>& dem) {
 
 // The finer output mosaic (the region and its halo): the patch (in the region's finer samples)
 // where it is, elsewhere `grown` (halo_heights) linearly interpolated at the finer pixel centres.
-// Rows in parallel, each sample on its own.
+// Rows in parallel, each sample on its own (height_at_clamped, its coordinates clamped once per
+// column and row).
 void write_finer(const HeightField& grown, const RefinedPatch& patch, int refine,
                  Tile<float>& out) {
   const double scale = 1 << refine;
   const int shift = kHalo << refine;
+  std::vector<double> cols(size_t(out.size())), rows(size_t(out.size()));
+  for (int k = 0; k < out.size(); ++k) {
+    cols[size_t(k)] = clamped_col(grown, (k + 0.5) / scale - 0.5);
+    rows[size_t(k)] = clamped_row(grown, (k + 0.5) / scale - 0.5);
+  }
   tbb::parallel_for(0, out.size(), [&](int r) {
     for (int c = 0; c < out.size(); ++c) {
       const int j = c - shift - patch.col0, i = r - shift - patch.row0;
-      out.at(c, r) =
-          float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
-                    ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
-                    : height_at_clamped(grown, (c + 0.5) / scale - 0.5, (r + 0.5) / scale - 0.5));
+      out.at(c, r) = float(j >= 0 && i >= 0 && j < patch.columns && i < patch.rows
+                               ? patch.z[size_t(i) * size_t(patch.columns) + size_t(j)]
+                               : height_at(grown, locate(grown, cols[size_t(c)], rows[size_t(r)])));
     }
   });
 }

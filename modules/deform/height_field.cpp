@@ -19,11 +19,15 @@ double height_at(const HeightField& field, const SurfacePoint& p) {
 }
 
 double height_at_clamped(const HeightField& field, double col, double row) {
-  // Below the last column and row, so that the triangle is inside the field.
-  const double last_col = std::nextafter(double(field.width - 1), 0.0);
-  const double last_row = std::nextafter(double(field.height - 1), 0.0);
-  return height_at(field,
-                   locate(field, std::clamp(col, 0.0, last_col), std::clamp(row, 0.0, last_row)));
+  return height_at(field, locate(field, clamped_col(field, col), clamped_row(field, row)));
+}
+
+double clamped_col(const HeightField& field, double col) {
+  return std::clamp(col, 0.0, std::nextafter(double(field.width - 1), 0.0));
+}
+
+double clamped_row(const HeightField& field, double row) {
+  return std::clamp(row, 0.0, std::nextafter(double(field.height - 1), 0.0));
 }
 
 std::array<double, 6> cotangent_weights(const HeightField& field, int col, int row) {

@@ -46,6 +46,10 @@ double height_at(const HeightField& field, const SurfacePoint& p);
 // The surface's height at fractional sample coordinates (col, row) moved into the field (the
 // nearest point of its samples' hull): the linear interpolation of the triangulation.
 double height_at_clamped(const HeightField& field, double col, double row);
+// The coordinates height_at_clamped locates: col in [0, width - 1), row in [0, height - 1) (below
+// the last column and row, so that the triangle is inside the field).
+double clamped_col(const HeightField& field, double col);
+double clamped_row(const HeightField& field, double row);
 
 // Normalized cotangent weights of the interior vertex (col, row) towards its kNeighbours, from the
 // horizontal positions (the height field's domain): (cot a + cot b) / 2 per edge, negative

@@ -17,6 +17,7 @@ constexpr double kEarthRadiusM = 6371008.8;
 MosaicFrame::MosaicFrame(const Grid& grid, int face, int pixel_level, int64_t origin_col,
                          int64_t origin_row, LonLat reference)
     : samples_(grid, face, pixel_level, origin_col, origin_row),
+      origin_{double(origin_col), double(origin_row)},
       tangent_plane_({reference.lon, reference.lat, 0}) {}
 
 EastNorth2 MosaicFrame::local(LonLat p) const {
@@ -45,6 +46,11 @@ LonLat MosaicFrame::sample_lonlat(int col, int row) const {
 
 std::optional<std::array<double, 2>> MosaicFrame::sample(LonLat p) const {
   return samples_.sample(p);
+}
+
+std::array<double, 2> MosaicFrame::local_sample(EastNorth2 p) const {
+  const auto s = sample(lonlat(p));
+  return s ? *s : std::array<double, 2>{NAN, NAN};
 }
 
 }  // namespace maquette::deform

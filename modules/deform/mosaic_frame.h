@@ -33,9 +33,15 @@ class MosaicFrame {
   // Fractional mosaic sample coordinates (col, row) of `p`; nullopt when its face has no place in
   // the unfolded plane (the face opposite the mosaic's).
   std::optional<std::array<double, 2>> sample(LonLat p) const;
+  // The same of the tangent plane's point p (on the ellipsoid below it), NaN where it has none.
+  std::array<double, 2> local_sample(EastNorth2 p) const;
+  // The face pixel of sample (0, 0) in the plane unfolded around the mosaic's face: sample(p)
+  // plus it is the same for every mosaic of that plane (a tiling-independent frame).
+  std::array<double, 2> origin() const { return origin_; }
 
  private:
   MosaicGeometry samples_;
+  std::array<double, 2> origin_;
   EnuFrame tangent_plane_;
 };
 

@@ -4,9 +4,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "core/error.h"
+#include "line_samples.h"
 #include "rmf.h"
 
 namespace maquette::deform {
@@ -19,45 +22,77 @@ class Locator {
       : frame_(frame), field_(field), where_(std::move(where)) {}
 
   SurfacePoint operator()(EastNorth2 p, const char* what) const {
-    const LonLat ll = frame_.lonlat(p);
-    const auto s = frame_.sample(ll);
-    // The triangle's vertices and their neighbours must lie in the mosaic (a point on a face
-    // without a place in its unfolded plane lies off it).
-    const double col = s ? (*s)[0] : NAN, row = s ? (*s)[1] : NAN;
-    if (!(col >= 1 && row >= 1 && col < field_.width - 2 && row < field_.height - 2))
-      throw Error(where_ + ": its " + what + " leaves the DEM (the step's region) at " +
-                  lonlat_text(ll));
-    const SurfacePoint sp = locate(field_, col, row);
-    for (const size_t v : sp.vertex) {
-      const int c = int(v % size_t(field_.width)), r = int(v / size_t(field_.width));
-      bool finite = std::isfinite(field_.z[v]);
-      for (const auto& n : kNeighbours)
-        finite = finite && std::isfinite(field_.z[field_.index(c + n[0], r + n[1])]);
-      if (!finite) throw Error(where_ + ": its " + what + " crosses nodata at " + lonlat_text(ll));
-    }
-    return sp;
+    return at(p, frame_.local_sample(p), what);
   }
 
   // Every point located, in parallel (each on its own: the same results for any thread count);
   // a point that fails throws the error of the first such point in `points`' order, as locating
   // them one by one would.
   std::vector<SurfacePoint> all(const std::vector<EastNorth2>& points, const char* what) const {
+    return located(points, 1, what);
+  }
+
+  // The same for points laid out as lines of `per_line` points equally spaced (the cross
+  // sections), their sample coordinates by line_samples; a point that fails from those is
+  // computed again, so that the errors are those of the points located one by one.
+  std::vector<SurfacePoint> lines(const std::vector<EastNorth2>& points, size_t per_line,
+                                  const char* what) const {
+    return located(points, per_line, what);
+  }
+
+ private:
+  using Sample = std::array<double, 2>;
+
+  // The point p at sample coordinates s, checked.
+  SurfacePoint at(EastNorth2 p, Sample s, const char* what) const {
+    const auto [col, row] = s;
+    // The triangle's vertices and their neighbours must lie in the mosaic (a point on a face
+    // without a place in its unfolded plane lies off it).
+    if (!(col >= 1 && row >= 1 && col < field_.width - 2 && row < field_.height - 2))
+      throw Error(where_ + ": its " + what + " leaves the DEM (the step's region) at " +
+                  lonlat_text(frame_.lonlat(p)));
+    const SurfacePoint sp = locate(field_, col, row);
+    for (const size_t v : sp.vertex) {
+      const int c = int(v % size_t(field_.width)), r = int(v / size_t(field_.width));
+      bool finite = std::isfinite(field_.z[v]);
+      for (const auto& n : kNeighbours)
+        finite = finite && std::isfinite(field_.z[field_.index(c + n[0], r + n[1])]);
+      if (!finite)
+        throw Error(where_ + ": its " + what + " crosses nodata at " +
+                    lonlat_text(frame_.lonlat(p)));
+    }
+    return sp;
+  }
+
+  // The points of lines of `per_line` (all: 1) located, each line on its own in parallel.
+  std::vector<SurfacePoint> located(const std::vector<EastNorth2>& points, size_t per_line,
+                                    const char* what) const {
     std::vector<SurfacePoint> out(points.size());
     std::vector<char> failed(points.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 256),
+    const auto line = [&](size_t begin, std::span<Sample> samples) {
+      line_samples(frame_, std::span(points).subspan(begin, per_line), samples);
+      for (size_t i = begin; i < begin + per_line; ++i) try {
+          out[i] = at(points[i], samples[i - begin], what);
+        } catch (const Error&) {
+          try {
+            out[i] = (*this)(points[i], what);
+          } catch (const Error&) {
+            failed[i] = 1;
+          }
+        }
+    };
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size() / per_line,
+                                                 std::max<size_t>(1, 256 / per_line)),
                       [&](const tbb::blocked_range<size_t>& range) {
-                        for (size_t i = range.begin(); i < range.end(); ++i) try {
-                            out[i] = (*this)(points[i], what);
-                          } catch (const Error&) {
-                            failed[i] = 1;
-                          }
+                        std::vector<Sample> samples(per_line);
+                        for (size_t k = range.begin(); k < range.end(); ++k)
+                          line(k * per_line, samples);
                       });
     const auto first = std::find(failed.begin(), failed.end(), 1);
     if (first != failed.end()) (*this)(points[size_t(first - failed.begin())], what);
     return out;
   }
 
- private:
   const MosaicFrame& frame_;
   const HeightField& field_;
   std::string where_;
@@ -143,7 +178,8 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
       across_z.push_back(z[k] + piecewise_linear(stroke.cross_section, o));
     }
   }
-  const std::vector<SurfacePoint> across_located = locator.all(across, "cross section");
+  const std::vector<SurfacePoint> across_located = locator.lines(across, m + 1, "cross section");
+  out.section.reserve(out.section.size() + across.size());
   for (size_t i = 0; i < across.size(); ++i)
     out.section.push_back({across_located[i], across_z[i], stroke.id});
 }

@@ -12,11 +12,15 @@
 #include <cstring>
 #include <numbers>
 #include <optional>
+#include <tuple>
 #include <vector>
 
+#include "../line_samples.h"
 #include "../mosaic_frame.h"
+#include "../sample_positions.h"
 #include "core/error.h"
 #include "core/halo.h"
+#include "core/mosaic_geometry.h"
 #include "core/unfolded_faces.h"
 #include "run_features.h"
 #include "sample_surface.h"
@@ -54,7 +58,9 @@ double trapezoid(double o) {
 
 // The tangent plane at the seam point of meridian `lon`.
 struct Seam : TangentPlane {
-  explicit Seam(double lon) : TangentPlane(seam_point(lon)) {}
+  explicit Seam(double lon) : TangentPlane(seam_point(lon)), point(seam_point(lon)) {}
+
+  LonLat point;
 
   // The plane unfolded around N at the base level and one level finer.
   std::array<UnfoldedFaces, 2> unfolded{UnfoldedFaces{default_grid(), kFaceN, kPixelLevel},
@@ -70,6 +76,25 @@ struct Seam : TangentPlane {
   // The mosaic of `cells` x `cells` cells of the plane unfolded around N, the cell of N at the
   // seam point `before` cells from its top-left; every sample the terrain at its pixel centre.
   Mosaic dem(int before, int cells) const {
+    Mosaic m = placed(before);
+    const int size = cells * kTile;
+    Tile<float> t(size, 1);
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < size; ++c) {
+        const auto q = sample_local(m, c, r);
+        t.at(c, r) = float(terrain(q[0], q[1]));
+      }
+    m.layers.emplace("dem", std::move(t));
+    return m;
+  }
+
+  // The frame of deform.features on mosaic `m`, its tangent plane at the seam point.
+  MosaicFrame frame(const Mosaic& m) const {
+    return {default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row, point};
+  }
+
+  // That mosaic's place, without layers.
+  Mosaic placed(int before) const {
     const PlaneSquare face = default_grid().plane_square(CellId::FromFace(kFaceN));
     const PlanePoint p = default_grid().forward(lonlat(0, 1));  // on N, 1 m north of the seam
     const double pixels = std::ldexp(1.0, kPixelLevel);
@@ -81,14 +106,6 @@ struct Seam : TangentPlane {
     m.level = kPixelLevel;
     m.origin_col = (cell_of((p.x - face.x_min) / face.side) - before) * kTile;
     m.origin_row = (cell_of((face.y_max - p.y) / face.side) - before) * kTile;
-    const int size = cells * kTile;
-    Tile<float> t(size, 1);
-    for (int r = 0; r < size; ++r)
-      for (int c = 0; c < size; ++c) {
-        const auto q = sample_local(m, c, r);
-        t.at(c, r) = float(terrain(q[0], q[1]));
-      }
-    m.layers.emplace("dem", std::move(t));
     return m;
   }
 
@@ -232,6 +249,88 @@ TEST(DeformSeams, RiverLeavingTheRegionAcrossASeamIsAnError) {
                        "region) at lon"),
             std::string::npos)
       << error;
+}
+
+// Points equally spaced on a line located by line_samples (the cross sections' points): each
+// within 2e-7 samples of its own place on the grid (core/mosaic_geometry.h of the test's tangent
+// plane), on lines 40 m long within face N and across its seams with O and P. On the lines across
+// a seam the quadratic through the line's ends and middle misses the grid by more than 1e-4
+// samples, so line_samples computes every point there.
+TEST(DeformSeams, LinesOfPointsLocatedAsEachPointAlone) {
+  for (const double lon : {-130.0, -40.0}) {
+    const Seam seam(lon);
+    const Mosaic m = seam.placed(1);
+    const MosaicFrame frame = seam.frame(m);
+    const MosaicGeometry grid(default_grid(), kFaceN, kPixelLevel, m.origin_col, m.origin_row);
+    // From, to (metres east and north of the seam point) and whether the line crosses the seam.
+    const std::array<std::tuple<EastNorth2, EastNorth2, bool>, 3> lines{
+        {{{-20, 30}, {20, 32}, false}, {{-3, 20}, {4, -20}, true}, {{15, -4}, {-12, 6}, true}}};
+    for (const auto& [from, to, across] : lines) {
+      constexpr size_t kPoints = 268;  // every 0.15 m, as the cross sections two levels finer
+      std::vector<EastNorth2> points(kPoints);
+      std::vector<std::array<double, 2>> own(kPoints), out(kPoints);
+      for (size_t j = 0; j < kPoints; ++j) {
+        const double t = double(j) / double(kPoints - 1);
+        points[j] = {from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])};
+        own[j] = *grid.sample(seam.lonlat(points[j][0], points[j][1]));
+      }
+      EXPECT_EQ(line_samples(frame, points, out), !across) << lon;
+      double worst = 0, quadratic_worst = 0;
+      const double x1 = double((kPoints - 1) / 2), x2 = double(kPoints - 1);
+      for (size_t j = 0; j < kPoints; ++j) {
+        const double x = double(j);
+        const double l0 = (x - x1) * (x - x2) / (x1 * x2), l1 = x * (x - x2) / (x1 * (x1 - x2)),
+                     l2 = x * (x - x1) / (x2 * (x2 - x1));
+        for (size_t a = 0; a < 2; ++a) {
+          worst = std::max(worst, std::abs(out[j][a] - own[j][a]));
+          const double q = l0 * own[0][a] + l1 * own[size_t(x1)][a] + l2 * own[kPoints - 1][a];
+          quadratic_worst = std::max(quadratic_worst, std::abs(q - own[j][a]));
+        }
+      }
+      EXPECT_LE(worst, 2e-7) << lon;
+      if (across) {
+        EXPECT_GT(quadratic_worst, 1e-4) << lon;
+      }
+    }
+  }
+}
+
+// Samples' horizontal positions by place_samples (stretches of 32 face pixels along rows): each
+// within 2e-7 m of its own (the grid's pixel centre in the test's tangent plane) on 160 x 160
+// samples around the seam point of N and O (rows along the seam) and of N and P (rows across it,
+// where the map has a kink).
+TEST(DeformSeams, SamplePositionsAsEachSampleAlone) {
+  for (const double lon : {-130.0, -40.0}) {
+    const Seam seam(lon);
+    const Mosaic m = seam.placed(1);
+    const MosaicFrame frame = seam.frame(m);
+    HeightField field;
+    field.width = field.height = 3 * kTile;
+    field.east.assign(size_t(field.width) * size_t(field.height), NAN);
+    field.north = field.east;
+    const auto at = *frame.sample(seam.point);
+    const int c0 = int(at[0]) - 80, r0 = int(at[1]) - 80;
+    std::vector<char> wanted(field.east.size(), 0);
+    for (int r = r0; r < r0 + 160; ++r)
+      for (int c = c0; c < c0 + 160; ++c) wanted[field.index(c, r)] = 1;
+    place_samples(frame, wanted, field);
+    double worst = 0;
+    size_t placed = 0;
+    for (int r = 0; r < field.height; ++r)
+      for (int c = 0; c < field.width; ++c) {
+        const size_t v = field.index(c, r);
+        if (!wanted[v]) {
+          EXPECT_TRUE(std::isnan(field.east[v]));
+          continue;
+        }
+        const auto own = seam.sample_local(m, c, r);
+        worst =
+            std::max({worst, std::abs(field.east[v] - own[0]), std::abs(field.north[v] - own[1])});
+        ++placed;
+      }
+    EXPECT_EQ(placed, 160u * 160u);
+    EXPECT_LE(worst, 2e-7) << lon;
+  }
 }
 
 // The quadrant diagonally beyond a corner of the anchor has no samples, the opposite face no place.

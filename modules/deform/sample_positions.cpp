@@ -1,0 +1,84 @@
+#include "sample_positions.h"
+
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+namespace maquette::deform {
+namespace {
+
+constexpr int64_t kStretch = 32;  // face pixels
+
+// The quadratic through the positions of a stretch's ends and middle, when it holds there.
+class Stretch {
+ public:
+  // The stretch of face pixel columns [first, first + kStretch] of mosaic row `row`, `origin`
+  // the face pixel column of mosaic column 0.
+  Stretch(const MosaicFrame& frame, int64_t origin, int64_t first, int row) {
+    const auto at = [&](int64_t offset) -> std::optional<EastNorth2> {
+      const auto centre = frame.sample_centre(int(first + offset - origin), row);
+      if (!centre) return std::nullopt;
+      return frame.local(*centre);
+    };
+    for (size_t k = 0; k < 3; ++k) {
+      const auto p = at(int64_t(k) * kStretch / 2);
+      if (!p) return;
+      node_[k] = *p;
+    }
+    for (const int64_t offset : {kStretch / 4, kStretch - kStretch / 4}) {
+      const auto p = at(offset);
+      if (!p) return;
+      const EastNorth2 q = quadratic(offset);
+      if (!(std::abs(q[0] - (*p)[0]) <= kPositionTolerance &&
+            std::abs(q[1] - (*p)[1]) <= kPositionTolerance))
+        return;
+    }
+    smooth_ = true;
+  }
+
+  bool smooth() const { return smooth_; }
+
+  // The quadratic at `offset` face pixels from the stretch's first.
+  EastNorth2 quadratic(int64_t offset) const {
+    const double x = double(offset), h = double(kStretch / 2);
+    // Lagrange's weights of the nodes at 0, h and 2h.
+    const double l0 = (x - h) * (x - 2 * h) / (2 * h * h), l1 = x * (2 * h - x) / (h * h),
+                 l2 = x * (x - h) / (2 * h * h);
+    return {l0 * node_[0][0] + l1 * node_[1][0] + l2 * node_[2][0],
+            l0 * node_[0][1] + l1 * node_[1][1] + l2 * node_[2][1]};
+  }
+
+ private:
+  std::array<EastNorth2, 3> node_{};
+  bool smooth_ = false;
+};
+
+}  // namespace
+
+void place_samples(const MosaicFrame& frame, const std::vector<char>& wanted, HeightField& field) {
+  const int64_t origin = int64_t(frame.origin()[0]);
+  tbb::parallel_for(0, field.height, [&](int r) {
+    std::optional<Stretch> stretch;
+    int64_t first = 0;
+    for (int c = 0; c < field.width; ++c) {
+      const size_t v = field.index(c, r);
+      if (!wanted[v] || !std::isnan(field.east[v])) continue;
+      const int64_t pixel = origin + c;
+      // The stretch holding the pixel: its first column a multiple of kStretch.
+      const int64_t start = pixel - ((pixel % kStretch) + kStretch) % kStretch;
+      if (!stretch || start != first) {
+        first = start;
+        stretch.emplace(frame, origin, first, r);
+      }
+      const EastNorth2 p = stretch->smooth() ? stretch->quadratic(pixel - first)
+                                             : frame.local(frame.sample_lonlat(c, r));
+      field.east[v] = p[0];
+      field.north[v] = p[1];
+    }
+  });
+}
+
+}  // namespace maquette::deform
