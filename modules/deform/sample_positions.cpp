@@ -1,11 +1,11 @@
 #include "sample_positions.h"
 
-#include <tbb/parallel_for.h>
-
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
+
+#include "core/parallel_chunks.h"
 
 namespace maquette::deform {
 namespace {
@@ -60,7 +60,9 @@ class Stretch {
 
 void place_samples(const MosaicFrame& frame, const std::vector<char>& wanted, HeightField& field) {
   const int64_t origin = int64_t(frame.origin()[0]);
-  tbb::parallel_for(0, field.height, [&](int r) {
+  // Rows in parallel; a failing row throws the first failing row's error whatever the threads.
+  parallel_chunks(size_t(field.height), 1, [&](size_t row, size_t) {
+    const int r = int(row);
     std::optional<Stretch> stretch;
     int64_t first = 0;
     for (int c = 0; c < field.width; ++c) {

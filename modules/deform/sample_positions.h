@@ -22,7 +22,8 @@ inline constexpr double kPositionTolerance = 1e-7;
 // quadratic through them gives its other samples' when it gives those a quarter and three
 // quarters along within kPositionTolerance of their own, computed too; else each is computed
 // (across a face seam or the edge of a polar cap, where the map has a kink, or a stretch reaching
-// a gap of the plane). Rows in parallel. Precondition: no wanted sample lies in a gap of the
+// a gap of the plane). Rows in parallel: a row that fails throws the error of the first failing
+// row, as the serial loop would. Precondition: no wanted sample lies in a gap of the
 // plane (MosaicFrame::sample_lonlat throws maquette::Error for one; deform.features asks only
 // samples with data).
 void place_samples(const MosaicFrame& frame, const std::vector<char>& wanted, HeightField& field);
