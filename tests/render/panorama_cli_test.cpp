@@ -510,8 +510,9 @@ TEST(PanoramaCli, TileBordersShareTheirNormals) {
   CameraSpec spec;
   spec.eye = {10.15, 45.15, 20000};
   spec.pitch = -90;
-  const TerrainScene scene =
+  TerrainScene scene =
       build_terrain_scene(*store, default_grid(), dem, PinholeCamera(spec), 1, 0, false);
+  attribute_vertices(scene, nullptr);
   const double eps = 0.01 * 0.0005;  // a hundredth of the DEM's 0.0005-degree sample
   std::vector<size_t> by_lon(scene.altitude.size());
   std::iota(by_lon.begin(), by_lon.end(), size_t(0));
