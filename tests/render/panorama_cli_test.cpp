@@ -504,14 +504,18 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
 // of a sample of each other (the inside's places are interpolated, the ring's exact: they differ
 // by up to a thousandth of a sample, sample_places.h). Before, the ring's normals were one-sided:
 // on these hills copies were up to ~60 degrees apart.
-TEST(PanoramaCli, TileBordersShareTheirNormals) {
+// The hills' terrain seen by `camera` (build_terrain_scene's sample_pixels and cull).
+TerrainScene hills_scene(const PinholeCamera& camera, double sample_pixels, bool cull) {
   const auto store = Store::open(hills_store(), Store::Mode::ReadOnly);
-  const LayerInfo dem = store->require_layer("dem");
+  return build_terrain_scene(*store, default_grid(), store->require_layer("dem"), camera, 1,
+                             sample_pixels, cull);
+}
+
+TEST(PanoramaCli, TileBordersShareTheirNormals) {
   CameraSpec spec;
   spec.eye = {10.15, 45.15, 20000};
   spec.pitch = -90;
-  TerrainScene scene =
-      build_terrain_scene(*store, default_grid(), dem, PinholeCamera(spec), 1, 0, false);
+  TerrainScene scene = hills_scene(PinholeCamera(spec), 0, false);
   attribute_vertices(scene, nullptr);
   const double eps = 0.01 * 0.0005;  // a hundredth of the DEM's 0.0005-degree sample
   std::vector<size_t> by_lon(scene.altitude.size());
@@ -533,6 +537,37 @@ TEST(PanoramaCli, TileBordersShareTheirNormals) {
   std::printf("%zu samples drawn twice, their normals at most %.4f degrees apart\n", copies, worst);
   EXPECT_GT(copies, 1000u);
   EXPECT_LT(worst, 0.05);
+}
+
+// attribute_vertices for the vertices a picture shows (strip by strip, as render_strips asks)
+// writes them with the same bits as for every vertex at once, and only them: the attributes are
+// a vertex's own, whichever vertices are asked for with it.
+TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
+  const PinholeCamera camera(
+      CameraSpec{.eye = {10.15, 45.02, 2500}, .pitch = -3, .width = 320, .height = 200});
+  TerrainScene all = hills_scene(camera, 1, true), shown = hills_scene(camera, 1, true);
+  attribute_vertices(all, nullptr);
+  std::vector<bool> seen(shown.altitude.size());
+  for (int first = 0; first < 200; first += 70) {  // three strips
+    const Fragments f = rasterize(shown.mesh, camera, 1.0, first, 70);
+    attribute_vertices(shown, &f);
+    for (const uint32_t t : f.triangle)
+      if (t != Fragments::kSky)
+        for (size_t j = 0; j < 3; ++j) seen[shown.mesh.indices[3 * size_t(t) + j]] = true;
+  }
+  size_t count = 0;
+  for (size_t v = 0; v < seen.size(); ++v) {
+    EXPECT_EQ(shown.attributed[v], seen[v] ? 2 : 0) << v;
+    if (!seen[v]) continue;
+    ++count;
+    EXPECT_EQ(std::memcmp(&shown.lonlat[2 * v], &all.lonlat[2 * v], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.plane[2 * v], &all.plane[2 * v], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.normals[3 * v], &all.normals[3 * v], 3 * sizeof(float)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.altitude[v], &all.altitude[v], sizeof(float)), 0) << v;
+  }
+  std::printf("%zu of %zu vertices shown\n", count, seen.size());
+  EXPECT_GT(count, 1000u);
+  EXPECT_LT(count, seen.size());
 }
 
 // Each tile at the level its distance needs: fewer triangles, several levels, no hole (no sky
