@@ -26,9 +26,10 @@ void poison_fresh(void* p, size_t bytes);
 
 // The storage of FreshArrays. A block of at least kKeptBlockBytes, once freed, is kept (up to
 // kKeptBytes in all, the oldest given back first) for the next FreshArray of at least half its
-// size: its pages are already the process's, so the next picture, strip or mesh writes them
-// without the kernel's page faults, zeroing and unmapping (a quarter of a picture's CPU when each
-// array is fresh). Thread-safe; the blocks kept are held until the process ends.
+// size: its pages are already the process's, so the next picture or mesh in the process writes
+// them without the kernel's page faults, zeroing and unmapping (a quarter of a picture's CPU when
+// each array is fresh). The cost: up to kKeptBytes more memory held, peaks included (blocks kept
+// that later arrays of other sizes do not fit). Thread-safe; held until the process ends.
 constexpr size_t kKeptBlockBytes = size_t(1) << 20;
 constexpr size_t kKeptBytes = size_t(1) << 30;
 void* fresh_allocate(size_t bytes);
