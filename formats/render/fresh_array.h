@@ -1,11 +1,10 @@
 // The panorama's big arrays (meshes, fragments, pictures, guides), resized without being
 // initialised (core/tile.h's DefaultInitAllocator): the step that makes an array writes each
-// element once, so its pages are not written twice. Contract: that step must write EVERY
-// element; one left unwritten holds whatever the memory held (zero on a fresh page, an earlier
-// array's bytes on a reused one: big blocks are kept for reuse, below). The one exception, said
-// where each is declared: a step's own scratch array read by that step alone, which writes every
-// element it reads (the untouched pages cost nothing). Under AddressSanitizer or ThreadSanitizer
-// builds (GCC and Clang define
+// element once, so its fresh pages are not written twice. Contract: that step must write EVERY
+// element; one left unwritten holds whatever the memory held (zero on a fresh page, old bytes on a
+// reused one). The one exception, said where each is declared: a step's own scratch array read
+// by that step alone, which writes every element it reads (the untouched pages cost nothing). Under
+// AddressSanitizer or ThreadSanitizer builds (GCC and Clang define
 // __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__ under -fsanitize) each array's storage is filled at
 // allocation with a pattern of its own (8 bytes from the clock and a count of allocations,
 // repeated), so an element left unwritten differs between two renders, in one process or two, and
@@ -24,17 +23,6 @@ namespace maquette {
 // this allocation's own (splitmix64 of the clock and a count of allocations); nothing otherwise.
 void poison_fresh(void* p, size_t bytes);
 
-// The storage of FreshArrays. A block of at least kKeptBlockBytes, once freed, is kept (up to
-// kKeptBytes in all, the oldest given back first) for the next FreshArray of at least half its
-// size: its pages are already the process's, so the next picture or mesh in the process writes
-// them without the kernel's page faults, zeroing and unmapping (a quarter of a picture's CPU when
-// each array is fresh). The cost: up to kKeptBytes more memory held, peaks included (blocks kept
-// that later arrays of other sizes do not fit). Thread-safe; held until the process ends.
-constexpr size_t kKeptBlockBytes = size_t(1) << 20;
-constexpr size_t kKeptBytes = size_t(1) << 30;
-void* fresh_allocate(size_t bytes);
-void fresh_deallocate(void* p, size_t bytes);  // `bytes` as allocated
-
 template <typename T>
 struct FreshAllocator : DefaultInitAllocator<T> {
   template <typename U>
@@ -45,11 +33,10 @@ struct FreshAllocator : DefaultInitAllocator<T> {
   template <typename U>
   FreshAllocator(const FreshAllocator<U>&) noexcept {}
   T* allocate(size_t n) {
-    T* p = static_cast<T*>(fresh_allocate(n * sizeof(T)));
+    T* p = DefaultInitAllocator<T>::allocate(n);
     poison_fresh(p, n * sizeof(T));
     return p;
   }
-  void deallocate(T* p, size_t n) noexcept { fresh_deallocate(p, n * sizeof(T)); }
 };
 
 template <typename T>
