@@ -27,23 +27,19 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
                            const EllipsoidalHeights& heights)
     : size_(size),
       halo_(halo),
+      grid_(&grid),
+      cell_(cell),
+      frame_(frame),
+      heights_(&heights),
+      pixel_level_(cell.level() + log2_tile_size(size)),
+      origin_(*pixel_source(grid, cell, size, 0, 0)),
       square_(grid.plane_square(cell)),
       border_(2 * size_t(halo) * size_t(size + 2 * halo) + 2 * size_t(halo) * size_t(size)) {
-  const int pixel_level = cell.level() + log2_tile_size(size);
-  const FaceCoord origin = *pixel_source(grid, cell, size, 0, 0);
-  auto place_exactly = [&](int col, int row, SamplePlace& s) {
-    const std::optional<FaceCoord> source = pixel_source(grid, cell, size, col, row);
-    if (!source) return;
-    s = exact(frame, heights, pixel_centre(grid, *source, pixel_level));
-    if (source->face == origin.face && source->col == origin.col + col &&
-        source->row == origin.row + row)
-      s.plane = plane(col, row);
-  };
   for (int ring = 1; ring <= halo; ++ring)
     for (int k = -ring; k < size + ring; ++k)
       for (const auto& [col, row] : {std::pair{k, -ring}, std::pair{k, size + ring - 1},
                                      std::pair{-ring, k}, std::pair{size + ring - 1, k}})
-        place_exactly(col, row, border_[border_slot(col, row)]);
+        border_[border_slot(col, row)] = exact_place(col, row);
   // The lattice on the cell's own face: nodes at samples i (size - 1) / m, i = 0 .. m.
   const int m = std::min(kLattice, size - 1);
   double west = INFINITY, east = -INFINITY, poleward = 0;
@@ -51,21 +47,28 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
     for (int i = 0; i <= m; ++i) {
       const double step = m == 0 ? 0 : double(size - 1) / m;
       nodes_.push_back(exact(frame, heights,
-                             face_point_lonlat(grid, origin.face, double(origin.col) + i * step,
-                                               double(origin.row) + j * step, pixel_level)));
+                             face_point_lonlat(grid, origin_.face, double(origin_.col) + i * step,
+                                               double(origin_.row) + j * step, pixel_level_)));
       west = std::min(west, nodes_.back().position.lon);
       east = std::max(east, nodes_.back().position.lon);
       poleward = std::max(poleward, std::abs(nodes_.back().position.lat));
     }
   if (m < 2 || east - west > 90 || poleward > kPolarLatitude) {
-    nodes_.clear();
-    inside_.resize(size_t(size) * size_t(size));
-    for (int row = 0; row < size; ++row)
-      for (int col = 0; col < size; ++col)
-        place_exactly(col, row, inside_[size_t(row) * size_t(size) + size_t(col)]);
+    nodes_.clear();  // every place exact, when asked
     return;
   }
   lattice_ = m;
+}
+
+SamplePlace SamplePlaces::exact_place(int col, int row) const {
+  SamplePlace s;
+  const std::optional<FaceCoord> source = pixel_source(*grid_, cell_, size_, col, row);
+  if (!source) return s;
+  s = exact(frame_, *heights_, pixel_centre(*grid_, *source, pixel_level_));
+  if (source->face == origin_.face && source->col == origin_.col + col &&
+      source->row == origin_.row + row)
+    s.plane = plane(col, row);
+  return s;
 }
 
 size_t SamplePlaces::border_slot(int col, int row) const {
@@ -83,7 +86,7 @@ PlanePoint SamplePlaces::plane(int col, int row) const {
 
 SamplePlace SamplePlaces::at(int col, int row) const {
   if (col < 0 || row < 0 || col >= size_ || row >= size_) return border_[border_slot(col, row)];
-  if (lattice_ == 0) return inside_[size_t(row) * size_t(size_) + size_t(col)];
+  if (lattice_ == 0) return exact_place(col, row);
   const int m = lattice_;
   const double y = double(row) * m / (size_ - 1);
   const int j = std::min(m - 1, int(y));

@@ -9,8 +9,8 @@
 // reaches beyond 80 degrees of latitude (longitudes bend fast near a pole). The error against PROJ
 // is tested (tests/render sample_places_test: within a thousandth of a sample; 4 mm for 35 m
 // samples). Only the lattice and the halo's places are kept (a quarter of a megabyte for a
-// 256-sample tile with two rings); an inside sample's place is interpolated when asked for, the
-// same bits each time.
+// 256-sample tile with two rings); an inside sample's place is interpolated, or without a lattice
+// placed exactly, when asked for, the same bits each time.
 #pragma once
 
 #include <cmath>
@@ -37,7 +37,8 @@ struct SamplePlace {
 class SamplePlaces {
  public:
   // Samples -halo .. size + halo - 1 (the halo's rings included) of `cell`'s tile of `size`
-  // samples. Precondition: 0 <= halo <= size.
+  // samples. Precondition: 0 <= halo <= size. `grid` and `heights` are used by `at` without a
+  // lattice: they must outlive the object.
   SamplePlaces(const Grid& grid, CellId cell, int size, int halo, const EnuFrame& frame,
                const EllipsoidalHeights& heights);
   // Precondition: -halo <= col, row < size + halo.
@@ -45,14 +46,20 @@ class SamplePlaces {
 
  private:
   size_t border_slot(int col, int row) const;
-  PlanePoint plane(int col, int row) const;  // the sample's centre on the cell's face
+  SamplePlace exact_place(int col, int row) const;  // unknown beyond one face width
+  PlanePoint plane(int col, int row) const;         // the sample's centre on the cell's face
 
   int size_, halo_;
-  int lattice_ = 0;                  // intervals per side; 0: every place exact (inside_)
+  const Grid* grid_;
+  CellId cell_;
+  EnuFrame frame_;
+  const EllipsoidalHeights* heights_;
+  int pixel_level_;                  // the samples' level
+  FaceCoord origin_;                 // sample (0, 0) on the cell's face
+  int lattice_ = 0;                  // intervals per side; 0: every place exact (exact_place)
   PlaneSquare square_{};             // the cell's square in the grid's plane
   std::vector<SamplePlace> border_;  // the halo's rings: rows above, rows below, then the sides
   std::vector<SamplePlace> nodes_;   // (lattice + 1)^2, row-major
-  std::vector<SamplePlace> inside_;  // size^2 exact places when there is no lattice
 };
 
 }  // namespace maquette

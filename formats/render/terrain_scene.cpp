@@ -353,9 +353,10 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   const std::vector<CellId> cells =
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
-  const EllipsoidalHeights heights = ellipsoidal_heights(dem);
-  const int n = dem.tile_size;
   TerrainScene scene;
+  scene.heights = std::make_unique<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  const EllipsoidalHeights& heights = *scene.heights;
+  const int n = dem.tile_size;
   scene.cells = cells;
   scene.exaggeration = exaggeration;
   scene.tiles.resize(cells.size());

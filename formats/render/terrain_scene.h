@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -61,6 +62,7 @@ struct TerrainScene {
   // (1) or written (2), 0 otherwise.
   std::vector<SceneTile> tiles;
   std::vector<uint8_t> attributed;
+  std::unique_ptr<const EllipsoidalHeights> heights;  // the DEM's datum, for the tiles' places
   double exaggeration = 1;
 };
 
@@ -79,7 +81,8 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
                                 double exaggeration, bool cull);
 
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
-// >= 0 and `cull` as scene_cells. Throws maquette::Error naming the value at fault.
+// >= 0 and `cull` as scene_cells. The scene's places refer to `grid`: it must outlive the scene.
+// Throws maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull);

@@ -504,11 +504,17 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
 // of a sample of each other (the inside's places are interpolated, the ring's exact: they differ
 // by up to a thousandth of a sample, sample_places.h). Before, the ring's normals were one-sided:
 // on these hills copies were up to ~60 degrees apart.
-// The hills' terrain seen by `camera` (build_terrain_scene's sample_pixels and cull).
-TerrainScene hills_scene(const PinholeCamera& camera, double sample_pixels, bool cull) {
-  const auto store = Store::open(hills_store(), Store::Mode::ReadOnly);
-  return build_terrain_scene(*store, default_grid(), store->require_layer("dem"), camera, 1,
+// The terrain of `store`'s layer dem seen by `camera` (build_terrain_scene's sample_pixels and
+// cull).
+TerrainScene scene_of(const std::string& store, const PinholeCamera& camera, double sample_pixels,
+                      bool cull) {
+  const auto opened = Store::open(store, Store::Mode::ReadOnly);
+  return build_terrain_scene(*opened, default_grid(), opened->require_layer("dem"), camera, 1,
                              sample_pixels, cull);
+}
+
+TerrainScene hills_scene(const PinholeCamera& camera, double sample_pixels, bool cull) {
+  return scene_of(hills_store(), camera, sample_pixels, cull);
 }
 
 TEST(PanoramaCli, TileBordersShareTheirNormals) {
@@ -541,11 +547,10 @@ TEST(PanoramaCli, TileBordersShareTheirNormals) {
 
 // attribute_vertices for the vertices a picture shows (strip by strip, as render_strips asks)
 // writes them with the same bits as for every vertex at once, and only them: the attributes are
-// a vertex's own, whichever vertices are asked for with it.
-TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
-  const PinholeCamera camera(
-      CameraSpec{.eye = {10.15, 45.02, 2500}, .pitch = -3, .width = 320, .height = 200});
-  TerrainScene all = hills_scene(camera, 1, true), shown = hills_scene(camera, 1, true);
+// a vertex's own, whichever vertices are asked for with it. `camera` 320 x 200 on `store`.
+void expect_shown_attributes_are_every_vertexs(const std::string& store,
+                                               const PinholeCamera& camera) {
+  TerrainScene all = scene_of(store, camera, 1, true), shown = scene_of(store, camera, 1, true);
   attribute_vertices(all, nullptr);
   std::vector<bool> seen(shown.altitude.size());
   for (int first = 0; first < 200; first += 70) {  // three strips
@@ -568,6 +573,32 @@ TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
   std::printf("%zu of %zu vertices shown\n", count, seen.size());
   EXPECT_GT(count, 1000u);
   EXPECT_LT(count, seen.size());
+}
+
+TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
+  expect_shown_attributes_are_every_vertexs(
+      hills_store(), PinholeCamera(CameraSpec{
+                         .eye = {10.15, 45.02, 2500}, .pitch = -3, .width = 320, .height = 200}));
+}
+
+// The same beyond 80 degrees of latitude, where a tile has no lattice and places a sample exactly
+// when asked for (render/sample_places.h): the hills 40 degrees north of the others.
+TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexsNearThePole) {
+  static const std::string store = [] {
+    const std::string dir = test::temp_dir(), tif = dir + "/polar.tif", path = dir + "/polar.mqt";
+    test::write_raster(tif, test::lonlat_raster(10, 85.3, 600, 0.0005, "Float32"),
+                       [](int, double lon, double lat) {
+                         return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
+                                          std::cos(lat * 2 * std::numbers::pi / 0.007);
+                       });
+    const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
+                                "--vertical-datum ellipsoid " + tif);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return path;
+  }();
+  expect_shown_attributes_are_every_vertexs(
+      store, PinholeCamera(CameraSpec{
+                 .eye = {10.15, 85.02, 2500}, .pitch = -3, .width = 320, .height = 200}));
 }
 
 // Each tile at the level its distance needs: fewer triangles, several levels, no hole (no sky
