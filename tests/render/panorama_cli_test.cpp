@@ -353,19 +353,26 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("bend_start": 2000)", "params.bend_start is given without params.bend_radius");
 }
 
-// Steep hills (800 m high, 700 m to 1 km apart) in 64-pixel tiles, so the level by distance
-// mixes levels within the view, and imagery (layer rgb) of stripes and a gradient.
+// A new store in `dir` holding steep hills (layer dem, 800 m high, 700 m to 1 km apart) from 10 E
+// to 10.3 E and from `north` - 0.3 to `north`, in 64-pixel tiles, so the level by distance mixes
+// levels within the view.
+std::string hills_dem(const std::string& dir, double north) {
+  const std::string tif = dir + "/hills.tif", path = dir + "/hills.mqt";
+  test::write_raster(tif, test::lonlat_raster(10, north, 600, 0.0005, "Float32"),
+                     [](int, double lon, double lat) {
+                       return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
+                                        std::cos(lat * 2 * std::numbers::pi / 0.007);
+                     });
+  const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
+                              "--vertical-datum ellipsoid " + tif);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return path;
+}
+
+// The hills at 45 N and imagery (layer rgb) of stripes and a gradient.
 const std::string& hills_store() {
   static const std::string store = [] {
-    const std::string dir = test::temp_dir(), tif = dir + "/hills.tif", path = dir + "/hills.mqt";
-    test::write_raster(tif, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
-                       [](int, double lon, double lat) {
-                         return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
-                                          std::cos(lat * 2 * std::numbers::pi / 0.007);
-                       });
-    const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
-                                "--vertical-datum ellipsoid " + tif);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::string dir = test::temp_dir(), path = hills_dem(dir, 45.3);
     test::RasterSpec rgb = test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte");
     rgb.bands = 3;
     test::write_raster(dir + "/rgb.tif", rgb, [](int band, double lon, double lat) {
@@ -584,18 +591,7 @@ TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
 // The same beyond 80 degrees of latitude, where a tile has no lattice and places a sample exactly
 // when asked for (render/sample_places.h): the hills 40 degrees north of the others.
 TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexsNearThePole) {
-  static const std::string store = [] {
-    const std::string dir = test::temp_dir(), tif = dir + "/polar.tif", path = dir + "/polar.mqt";
-    test::write_raster(tif, test::lonlat_raster(10, 85.3, 600, 0.0005, "Float32"),
-                       [](int, double lon, double lat) {
-                         return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
-                                          std::cos(lat * 2 * std::numbers::pi / 0.007);
-                       });
-    const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
-                                "--vertical-datum ellipsoid " + tif);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return path;
-  }();
+  const std::string store = hills_dem(test::temp_dir(), 85.3);
   expect_shown_attributes_are_every_vertexs(
       store, PinholeCamera(CameraSpec{
                  .eye = {10.15, 85.02, 2500}, .pitch = -3, .width = 320, .height = 200}));
