@@ -126,30 +126,35 @@ int default_strip_rows(int width) {
   return std::max(rows, kGuideBlockRows);
 }
 
-void render_strips(const Store& store, const Grid& grid, const TerrainScene& scene,
+void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                    const std::string& out) {
   const int w = camera.spec().width, h = camera.spec().height;
   PanoramaWriter writer(out, w, h, look.land_cover != nullptr, look.shadow != nullptr);
+  // Each strip's vertices given their attributes (render/terrain_scene.h) before it is shaded.
+  auto draw = [&](int first, int rows) {
+    Fragments f = rasterize(scene.mesh, camera, 1.0, first, rows);
+    attribute_vertices(scene, &f);
+    return f;
+  };
   if (strip_rows >= h) {
-    writer.write(shade_panorama(store, grid, scene, rasterize(scene.mesh, camera), camera, look), 0,
-                 h);
+    writer.write(shade_panorama(store, grid, scene, draw(0, h), camera, look), 0, h);
     writer.commit();
     return;
   }
   StretchTexels texels;
   if (look.texture && look.stretch)
     for (int first = 0; first < h; first += strip_rows)
-      gather_stretch_texels(store, grid, scene,
-                            rasterize(scene.mesh, camera, 1.0, first, strip_rows), look,
-                            stretch_step(w, h), texels);
+      gather_stretch_texels(store, grid, scene, draw(first, strip_rows), look, stretch_step(w, h),
+                            texels);
   const BandStretch stretch = texel_stretch(texels, look);
   for (int first = 0; first < h; first += strip_rows) {
     const int last = std::min(h, first + strip_rows);
     // A row of margin each side: the silhouettes of the strip's edge rows look at their neighbours.
     const int top = std::max(0, first - 1), bottom = std::min(h, last + 1);
-    const Fragments f = rasterize(scene.mesh, camera, 1.0, top, bottom - top);
-    writer.write(shade_panorama(store, grid, scene, f, camera, look, &stretch), first, last);
+    writer.write(
+        shade_panorama(store, grid, scene, draw(top, bottom - top), camera, look, &stretch), first,
+        last);
   }
   writer.commit();
 }

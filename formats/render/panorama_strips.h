@@ -39,8 +39,9 @@ void write_panorama(const Panorama& p, const std::string& out);
 // 256-row blocks.
 int default_strip_rows(int width);
 
-// Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0).
-void render_strips(const Store& store, const Grid& grid, const TerrainScene& scene,
+// Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0),
+// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
+void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                    const std::string& out);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/halo.h"
 #include "core/tile.h"
@@ -24,78 +25,92 @@ SamplePlace exact(const EnuFrame& frame, const EllipsoidalHeights& heights, LonL
 
 SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, const EnuFrame& frame,
                            const EllipsoidalHeights& heights)
-    : size_(size), halo_(halo), places_(size_t(size + 2 * halo) * size_t(size + 2 * halo)) {
-  const int pixel_level = cell.level() + log2_tile_size(size);
-  auto slot = [&](int col, int row) {
-    return size_t(row + halo) * size_t(size + 2 * halo) + size_t(col + halo);
-  };
-  const FaceCoord origin = *pixel_source(grid, cell, size, 0, 0);
-  const PlaneSquare square = grid.plane_square(cell);
-  auto plane = [&](int col, int row) {
-    return PlanePoint{square.x_min + (col + 0.5) * square.side / size,
-                      square.y_max - (row + 0.5) * square.side / size};
-  };
-  auto place_exactly = [&](int col, int row) {
-    const std::optional<FaceCoord> source = pixel_source(grid, cell, size, col, row);
-    if (!source) return;
-    SamplePlace& s = places_[slot(col, row)];
-    s = exact(frame, heights, pixel_centre(grid, *source, pixel_level));
-    if (source->face == origin.face && source->col == origin.col + col &&
-        source->row == origin.row + row)
-      s.plane = plane(col, row);
-  };
+    : size_(size),
+      halo_(halo),
+      grid_(&grid),
+      cell_(cell),
+      frame_(frame),
+      heights_(&heights),
+      pixel_level_(cell.level() + log2_tile_size(size)),
+      origin_(*pixel_source(grid, cell, size, 0, 0)),
+      square_(grid.plane_square(cell)),
+      border_(2 * size_t(halo) * size_t(size + 2 * halo) + 2 * size_t(halo) * size_t(size)) {
   for (int ring = 1; ring <= halo; ++ring)
-    for (int k = -ring; k < size + ring; ++k) {
-      place_exactly(k, -ring);
-      place_exactly(k, size + ring - 1);
-      place_exactly(-ring, k);
-      place_exactly(size + ring - 1, k);
-    }
+    for (int k = -ring; k < size + ring; ++k)
+      for (const auto& [col, row] : {std::pair{k, -ring}, std::pair{k, size + ring - 1},
+                                     std::pair{-ring, k}, std::pair{size + ring - 1, k}})
+        border_[border_slot(col, row)] = exact_place(col, row);
   // The lattice on the cell's own face: nodes at samples i (size - 1) / m, i = 0 .. m.
   const int m = std::min(kLattice, size - 1);
-  std::vector<SamplePlace> nodes;
   double west = INFINITY, east = -INFINITY, poleward = 0;
   for (int j = 0; j <= m; ++j)
     for (int i = 0; i <= m; ++i) {
       const double step = m == 0 ? 0 : double(size - 1) / m;
-      nodes.push_back(exact(frame, heights,
-                            face_point_lonlat(grid, origin.face, double(origin.col) + i * step,
-                                              double(origin.row) + j * step, pixel_level)));
-      west = std::min(west, nodes.back().position.lon);
-      east = std::max(east, nodes.back().position.lon);
-      poleward = std::max(poleward, std::abs(nodes.back().position.lat));
+      nodes_.push_back(exact(frame, heights,
+                             face_point_lonlat(grid, origin_.face, double(origin_.col) + i * step,
+                                               double(origin_.row) + j * step, pixel_level_)));
+      west = std::min(west, nodes_.back().position.lon);
+      east = std::max(east, nodes_.back().position.lon);
+      poleward = std::max(poleward, std::abs(nodes_.back().position.lat));
     }
   if (m < 2 || east - west > 90 || poleward > kPolarLatitude) {
-    for (int row = 0; row < size; ++row)
-      for (int col = 0; col < size; ++col) place_exactly(col, row);
+    nodes_.clear();  // every place exact, when asked
     return;
   }
-  for (int row = 0; row < size; ++row) {
-    const double y = double(row) * m / (size - 1);
-    const int j = std::min(m - 1, int(y));
-    const double fy = y - j;
-    for (int col = 0; col < size; ++col) {
-      const double x = double(col) * m / (size - 1);
-      const int i = std::min(m - 1, int(x));
-      const double fx = x - i;
-      const SamplePlace* q[4] = {
-          &nodes[size_t(j * (m + 1) + i)], &nodes[size_t(j * (m + 1) + i + 1)],
-          &nodes[size_t((j + 1) * (m + 1) + i)], &nodes[size_t((j + 1) * (m + 1) + i + 1)]};
-      const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-      SamplePlace& s = places_[slot(col, row)];
-      s.known = true;
-      s.plane = plane(col, row);
-      s.position = {0, 0};
-      for (int k = 0; k < 4; ++k) {
-        s.position.lon += w[k] * q[k]->position.lon;
-        s.position.lat += w[k] * q[k]->position.lat;
-        for (size_t a = 0; a < 3; ++a) {
-          s.base[a] += w[k] * q[k]->base[a];
-          s.up[a] += w[k] * q[k]->up[a];
-        }
-      }
+  lattice_ = m;
+}
+
+SamplePlace SamplePlaces::exact_place(int col, int row) const {
+  SamplePlace s;
+  const std::optional<FaceCoord> source = pixel_source(*grid_, cell_, size_, col, row);
+  if (!source) return s;
+  s = exact(frame_, *heights_, pixel_centre(*grid_, *source, pixel_level_));
+  if (source->face == origin_.face && source->col == origin_.col + col &&
+      source->row == origin_.row + row)
+    s.plane = plane(col, row);
+  return s;
+}
+
+size_t SamplePlaces::border_slot(int col, int row) const {
+  const size_t side = size_t(size_ + 2 * halo_), ring = size_t(halo_);
+  if (row < 0) return size_t(row + halo_) * side + size_t(col + halo_);
+  if (row >= size_) return (ring + size_t(row - size_)) * side + size_t(col + halo_);
+  return 2 * ring * side + size_t(row) * 2 * ring +
+         (col < 0 ? size_t(col + halo_) : ring + size_t(col - size_));
+}
+
+PlanePoint SamplePlaces::plane(int col, int row) const {
+  return {square_.x_min + (col + 0.5) * square_.side / size_,
+          square_.y_max - (row + 0.5) * square_.side / size_};
+}
+
+SamplePlace SamplePlaces::at(int col, int row) const {
+  if (col < 0 || row < 0 || col >= size_ || row >= size_) return border_[border_slot(col, row)];
+  if (lattice_ == 0) return exact_place(col, row);
+  const int m = lattice_;
+  const double y = double(row) * m / (size_ - 1);
+  const int j = std::min(m - 1, int(y));
+  const double fy = y - j;
+  const double x = double(col) * m / (size_ - 1);
+  const int i = std::min(m - 1, int(x));
+  const double fx = x - i;
+  const SamplePlace* q[4] = {&nodes_[size_t(j * (m + 1) + i)], &nodes_[size_t(j * (m + 1) + i + 1)],
+                             &nodes_[size_t((j + 1) * (m + 1) + i)],
+                             &nodes_[size_t((j + 1) * (m + 1) + i + 1)]};
+  const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+  SamplePlace s;
+  s.known = true;
+  s.plane = plane(col, row);
+  s.position = {0, 0};
+  for (int k = 0; k < 4; ++k) {
+    s.position.lon += w[k] * q[k]->position.lon;
+    s.position.lat += w[k] * q[k]->position.lat;
+    for (size_t a = 0; a < 3; ++a) {
+      s.base[a] += w[k] * q[k]->base[a];
+      s.up[a] += w[k] * q[k]->up[a];
     }
   }
+  return s;
 }
 
 }  // namespace maquette

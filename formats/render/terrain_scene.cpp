@@ -1,8 +1,10 @@
 #include "render/terrain_scene.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -49,27 +51,30 @@ std::vector<std::array<int, 2>> halo_ring(int n) {
   return ring;
 }
 
-// A tile (a full-resolution tile or an overview) with its two rings of halo, and its share of the
-// mesh: a vertex per drawn sample (-1 .. n) with data and per such sample of the inner ring (the
-// skirt's), two triangles per square of four such samples and per ring edge between two. Every
-// sample within the halo has a place (render/sample_places.h: known within a face width), so
-// the counts follow from the heights alone and the mesh is written in place (write_tile).
-struct TileSource {
-  Tile<float> heights{1, 1};
+// A tile's share of the mesh: a vertex per drawn sample (-1 .. n) with data and per such sample of
+// the inner ring (the skirt's), two triangles per square of four such samples and per ring edge
+// between two. Every sample within the halo has a place (render/sample_places.h: known within a
+// face width), so the counts follow from the heights alone and the mesh is written in place
+// (write_tile).
+struct TileShare {
   size_t vertices = 0, indices = 0;
 };
 
-TileSource tile_source(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
-  const int n = dem.tile_size;
+// `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
+Tile<float> tile_heights(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
   const bool overview = cell.level() < dem.level;
-  TileSource t;
-  t.heights = assemble_halo(grid, cell, n, kHalo, [&](CellId c) -> std::optional<Tile<float>> {
-    const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
-    if (!raw) return std::nullopt;
-    return to_tile<float>(*raw, nodata);
-  });
-  auto has = [&](int c, int r) { return !std::isnan(t.heights.at(c, r)); };
+  return assemble_halo(
+      grid, cell, dem.tile_size, kHalo, [&](CellId c) -> std::optional<Tile<float>> {
+        const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
+        if (!raw) return std::nullopt;
+        return to_tile<float>(*raw, nodata);
+      });
+}
+
+TileShare tile_share(const Tile<float>& heights, int n) {
+  TileShare t;
+  auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
       t.vertices += has(c, r);
@@ -86,85 +91,60 @@ TileSource tile_source(const Store& store, const Grid& grid, const LayerInfo& de
   return t;
 }
 
-// Writes `cell`'s share of the mesh (tile_source) into `scene` from vertex `first_vertex`, index
-// `first_index` and block start `first_block` (tile_blocks(n) of them): the drawn samples'
-// vertices in row order, then the skirt's in ring order; the squares' triangles in patches of
-// kBlockSquares x kBlockSquares squares (the patches in row order, each in row order), then the
-// skirt's, each patch and each side of the skirt starting a block.
-void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileSource& source,
-                const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
-                size_t first_vertex, size_t first_index, size_t first_block, TerrainScene& scene) {
+// Calls visit(vertex, col, row) for each of `tile`'s vertices in the order write_tile writes
+// them: the drawn samples with data in row order, then the skirt's, each with the ring sample it
+// hangs from.
+template <typename Visit>
+void each_vertex(const SceneTile& tile, int n, Visit&& visit) {
+  size_t v = tile.first_vertex;
+  for (int r = -1; r <= n; ++r)
+    for (int c = -1; c <= n; ++c)
+      if (!std::isnan(tile.heights.at(c, r))) visit(v++, c, r);
+  for (const auto& [c, r] : halo_ring(n))
+    if (!std::isnan(tile.heights.at(c, r))) visit(v++, c, r);
+}
+
+// Writes `tile`'s share of the mesh's positions, indices and block starts (its share counted by
+// tile_share) from index `first_index` and block start `first_block` (tile_blocks(n) of them):
+// the drawn samples' vertices in row order, then the skirt's in ring order (each_vertex); the
+// squares' triangles in patches of kBlockSquares x kBlockSquares squares (the patches in row
+// order, each in row order), then the skirt's, each patch and each side of the skirt starting a
+// block.
+void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const SceneTile& tile,
+                const TileShare& share, const PinholeCamera& camera,
+                const EllipsoidalHeights& heights, double exaggeration, size_t first_index,
+                size_t first_block, RenderMesh& mesh) {
   const int n = dem.tile_size;
-  const Tile<float>& tile = source.heights;
-  const SamplePlaces places(grid, cell, n, kHalo, camera.frame(), heights);
+  const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
   auto slot = [&](int c, int r) { return size_t(r + kHalo) * size_t(side) + size_t(c + kHalo); };
-  // Each sample's exaggerated position (samples -2 .. n + 1); NaN where there is none.
-  std::vector<Vec3d> position(size_t(side) * size_t(side), Vec3d{NAN, NAN, NAN});
-  for (int r = -kHalo; r < n + kHalo; ++r)
-    for (int c = -kHalo; c < n + kHalo; ++c) {
-      const float z = tile.at(c, r);
-      const SamplePlace& place = places.at(c, r);
-      if (std::isnan(z)) continue;
-      // Heights of the datum run along the ellipsoid's normal: exaggerated above the datum.
-      const double h = exaggeration * z;
-      for (size_t k = 0; k < 3; ++k) position[slot(c, r)][k] = place.base[k] + h * place.up[k];
-    }
-  auto& positions = scene.mesh.positions;
-  auto& indices = scene.mesh.indices;
-  size_t next_vertex = first_vertex, next_index = first_index;
-  // The drawn samples (-1 .. n, the halo's inner ring included) become vertices (scene indices).
+  auto& positions = mesh.positions;
+  auto& indices = mesh.indices;
+  size_t next_vertex = tile.first_vertex, next_index = first_index;
+  // The drawn samples (-1 .. n, the halo's inner ring included) become vertices (scene indices) at
+  // their exaggerated positions; heights of the datum run along the ellipsoid's normal.
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
   float lowest = INFINITY, highest = -INFINITY;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c) {
-      const float z = tile.at(c, r);
+      const float z = tile.heights.at(c, r);
       if (std::isnan(z)) continue;
       lowest = std::min(lowest, z);
       highest = std::max(highest, z);
       const size_t v = next_vertex++;
       vertex[slot(c, r)] = uint32_t(v);
-      const Vec3d& p = position[slot(c, r)];
-      std::copy(p.begin(), p.end(), positions.begin() + std::ptrdiff_t(3 * v));
-      const SamplePlace& place = places.at(c, r);
-      scene.lonlat[2 * v] = place.position.lon;
-      scene.lonlat[2 * v + 1] = place.position.lat;
-      scene.plane[2 * v] = place.plane.x;
-      scene.plane[2 * v + 1] = place.plane.y;
-      scene.altitude[v] = z;
+      const SamplePlace place = places.at(c, r);
+      const double h = exaggeration * z;
+      for (size_t k = 0; k < 3; ++k) positions[3 * v + k] = place.base[k] + h * place.up[k];
     }
   auto at = [&](int c, int r) {
     return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
   };
-  // Normals: the cross product of the column and row central differences, turned up; one-sided
-  // only where a neighbour has no data.
-  for (int r = -1; r <= n; ++r)
-    for (int c = -1; c <= n; ++c) {
-      const uint32_t v = at(c, r);
-      if (v == kNoVertex) continue;
-      const Vec3d& pv = position[slot(c, r)];
-      auto span = [&](int c0, int r0, int c1, int r1) {
-        const Vec3d* a = &position[slot(c0, r0)];
-        const Vec3d* b = &position[slot(c1, r1)];
-        if (std::isnan((*a)[0])) a = &pv;
-        if (std::isnan((*b)[0])) b = &pv;
-        return Vec3d{(*b)[0] - (*a)[0], (*b)[1] - (*a)[1], (*b)[2] - (*a)[2]};
-      };
-      const Vec3d u = span(c - 1, r, c + 1, r), w = span(c, r - 1, c, r + 1);
-      Vec3d nrm{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-      const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-      // The up direction at the vertex: from the earth's centre, near enough for the sign.
-      const double up = nrm[0] * pv[0] + nrm[1] * pv[1] + nrm[2] * (pv[2] + 6.371e6);
-      const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
-      for (int k = 0; k < 3; ++k)
-        scene.normals[3 * size_t(v) + size_t(k)] = float(nrm[size_t(k)] * s);
-      if (len == 0) scene.normals[3 * size_t(v) + 2] = 1;
-    }
   auto triangles = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {  // a, b, c and a, c, d
     for (const uint32_t k : {a, b, c, a, c, d}) indices[next_index++] = k;
   };
   size_t next_block = first_block;
-  auto start_block = [&] { scene.mesh.block_first[next_block++] = uint32_t(next_index / 3); };
+  auto start_block = [&] { mesh.block_first[next_block++] = uint32_t(next_index / 3); };
   for (int r0 = -1; r0 < n; r0 += kBlockSquares)
     for (int c0 = -1; c0 < n; c0 += kBlockSquares) {
       start_block();
@@ -180,25 +160,19 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
   // near the seam) no ray passes between the two.
   const double depth =
       exaggeration * (double(highest - lowest) + grid.level_info(cell.level(), n).pixel_m);
-  auto hang = [&](uint32_t v) {
+  auto hang = [&](int c, int r) {
     const size_t below = next_vertex++;
-    const LonLat p{scene.lonlat[2 * size_t(v)], scene.lonlat[2 * size_t(v) + 1]};
-    const float z = scene.altitude[v];
+    const LonLat p = places.at(c, r).position;
+    const float z = tile.heights.at(c, r);
     const double h = heights(p, z) + (exaggeration - 1) * z - depth;
     const auto e = camera.frame().to_enu(p.lon, p.lat, h);
     std::copy(e.begin(), e.end(), positions.begin() + std::ptrdiff_t(3 * below));
-    scene.lonlat[2 * below] = p.lon;
-    scene.lonlat[2 * below + 1] = p.lat;
-    scene.plane[2 * below] = scene.plane[2 * size_t(v)];
-    scene.plane[2 * below + 1] = scene.plane[2 * size_t(v) + 1];
-    scene.altitude[below] = z;
-    for (size_t k = 0; k < 3; ++k) scene.normals[3 * below + k] = scene.normals[3 * size_t(v) + k];
     return uint32_t(below);
   };
   const auto ring = halo_ring(n);
   std::vector<uint32_t> below(ring.size(), kNoVertex);
   for (size_t k = 0; k < ring.size(); ++k)
-    if (const uint32_t v = at(ring[k][0], ring[k][1]); v != kNoVertex) below[k] = hang(v);
+    if (at(ring[k][0], ring[k][1]) != kNoVertex) below[k] = hang(ring[k][0], ring[k][1]);
   for (size_t k = 0; k < ring.size(); ++k) {
     if (k % size_t(n + 1) == 0) start_block();  // a side of the ring
     const size_t next = (k + 1) % ring.size();
@@ -206,16 +180,81 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const TileS
     if (a == kNoVertex || b == kNoVertex) continue;
     triangles(a, b, below[next], below[k]);
   }
-  // The arrays were sized by tile_source's counts and are not initialized: a share that differs
+  // The arrays were sized by tile_share's counts and are not initialized: a share that differs
   // would leave garbage or overrun a neighbour's, so the two loops' agreement is checked.
-  if (next_vertex - first_vertex != source.vertices || next_index - first_index != source.indices ||
-      next_block - first_block != tile_blocks(n))
+  if (next_vertex - tile.first_vertex != share.vertices ||
+      next_index - first_index != share.indices || next_block - first_block != tile_blocks(n))
     throw std::logic_error("panorama mesh of cell " + cell.ToText() + ": wrote " +
-                           std::to_string(next_vertex - first_vertex) + " vertices, " +
+                           std::to_string(next_vertex - tile.first_vertex) + " vertices, " +
                            std::to_string(next_index - first_index) + " indices and " +
                            std::to_string(next_block - first_block) + " block starts, counted " +
-                           std::to_string(source.vertices) + ", " + std::to_string(source.indices) +
+                           std::to_string(share.vertices) + ", " + std::to_string(share.indices) +
                            " and " + std::to_string(tile_blocks(n)));
+}
+
+// A thread's memo of one tile's samples' exaggerated, unbent positions (samples -2 .. n + 1),
+// each computed when first asked for: an entry is the current tile's when its stamp is.
+struct PositionMemo {
+  std::vector<Vec3d> position;
+  std::vector<uint32_t> stamp;
+};
+
+// Writes the attributes of `tile`'s vertices asked for (scene.attributed 1): each that of the
+// sample it is (a skirt's vertex, the ring sample it hangs from).
+void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo) {
+  const SceneTile& tile = scene.tiles[index];
+  const SamplePlaces& places = *tile.places;
+  const int side = n + 2 * kHalo;
+  const auto stamp = uint32_t(index + 1);
+  if (memo.stamp.size() != size_t(side) * size_t(side)) {
+    memo.position.resize(size_t(side) * size_t(side));
+    memo.stamp.assign(size_t(side) * size_t(side), 0);
+  }
+  // The sample's position; NaN where it has none.
+  auto position = [&](int c, int r) -> const Vec3d& {
+    const size_t slot = size_t(r + kHalo) * size_t(side) + size_t(c + kHalo);
+    Vec3d& p = memo.position[slot];
+    if (memo.stamp[slot] != stamp) {
+      memo.stamp[slot] = stamp;
+      const float z = tile.heights.at(c, r);
+      if (std::isnan(z)) {
+        p = Vec3d{NAN, NAN, NAN};
+      } else {
+        const SamplePlace place = places.at(c, r);
+        const double h = scene.exaggeration * z;
+        for (size_t k = 0; k < 3; ++k) p[k] = place.base[k] + h * place.up[k];
+      }
+    }
+    return p;
+  };
+  each_vertex(tile, n, [&](size_t v, int c, int r) {
+    if (scene.attributed[v] != 1) return;
+    scene.attributed[v] = 2;
+    const SamplePlace place = places.at(c, r);
+    scene.lonlat[2 * v] = place.position.lon;
+    scene.lonlat[2 * v + 1] = place.position.lat;
+    scene.plane[2 * v] = place.plane.x;
+    scene.plane[2 * v + 1] = place.plane.y;
+    scene.altitude[v] = tile.heights.at(c, r);
+    // The normal: the cross product of the column and row central differences, turned up;
+    // one-sided only where a neighbour has no data.
+    const Vec3d pv = position(c, r);
+    auto span = [&](int c0, int r0, int c1, int r1) {
+      const Vec3d* a = &position(c0, r0);
+      const Vec3d* b = &position(c1, r1);
+      if (std::isnan((*a)[0])) a = &pv;
+      if (std::isnan((*b)[0])) b = &pv;
+      return Vec3d{(*b)[0] - (*a)[0], (*b)[1] - (*a)[1], (*b)[2] - (*a)[2]};
+    };
+    const Vec3d u = span(c - 1, r, c + 1, r), w = span(c, r - 1, c, r + 1);
+    Vec3d nrm{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    // The up direction at the vertex: from the earth's centre, near enough for the sign.
+    const double up = nrm[0] * pv[0] + nrm[1] * pv[1] + nrm[2] * (pv[2] + 6.371e6);
+    const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
+    for (size_t k = 0; k < 3; ++k) scene.normals[3 * v + k] = float(nrm[k] * s);
+    if (len == 0) scene.normals[3 * v + 2] = 1;
+  });
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
@@ -314,33 +353,70 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   const std::vector<CellId> cells =
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
-  const EllipsoidalHeights heights = ellipsoidal_heights(dem);
-  // The tiles read and their shares counted in parallel, then each written in place, in cell order.
-  std::vector<TileSource> sources(cells.size());
-  tbb::parallel_for(size_t(0), cells.size(),
-                    [&](size_t i) { sources[i] = tile_source(store, grid, dem, cells[i]); });
-  std::vector<size_t> first_vertex(cells.size() + 1, 0), first_index(cells.size() + 1, 0);
-  for (size_t i = 0; i < cells.size(); ++i) {
-    first_vertex[i + 1] = first_vertex[i] + sources[i].vertices;
-    first_index[i + 1] = first_index[i] + sources[i].indices;
-  }
   TerrainScene scene;
+  scene.heights = std::make_unique<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  const EllipsoidalHeights& heights = *scene.heights;
+  const int n = dem.tile_size;
   scene.cells = cells;
-  const size_t vertices = first_vertex.back();
-  // Sized, not filled: each tile writes every element of its share.
+  scene.exaggeration = exaggeration;
+  scene.tiles.resize(cells.size());
+  // The tiles read and their shares counted in parallel, then each written in place, in cell order.
+  std::vector<TileShare> shares(cells.size());
+  tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
+    scene.tiles[i].heights = tile_heights(store, grid, dem, cells[i]);
+    shares[i] = tile_share(scene.tiles[i].heights, n);
+  });
+  std::vector<size_t> first_index(cells.size() + 1, 0);
+  size_t vertices = 0;
+  for (size_t i = 0; i < cells.size(); ++i) {
+    scene.tiles[i].first_vertex = vertices;
+    vertices += shares[i].vertices;
+    first_index[i + 1] = first_index[i] + shares[i].indices;
+  }
+  // Sized, not filled: each tile writes every element of its share of the mesh; the attributes
+  // are written by attribute_vertices, for the vertices it is given.
   scene.mesh.positions.resize(3 * vertices);
   scene.mesh.indices.resize(first_index.back());
-  scene.mesh.block_first.resize(cells.size() * tile_blocks(dem.tile_size));
+  scene.mesh.block_first.resize(cells.size() * tile_blocks(n));
   scene.lonlat.resize(2 * vertices);
   scene.plane.resize(2 * vertices);
   scene.altitude.resize(vertices);
   scene.normals.resize(3 * vertices);
+  scene.attributed.assign(vertices, 0);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    write_tile(grid, dem, cells[i], sources[i], camera, heights, exaggeration, first_vertex[i],
-               first_index[i], i * tile_blocks(dem.tile_size), scene);
-    sources[i] = TileSource{};  // its heights no longer needed
+    SceneTile& tile = scene.tiles[i];
+    tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
+    write_tile(grid, dem, cells[i], tile, shares[i], camera, heights, exaggeration, first_index[i],
+               i * tile_blocks(n), scene.mesh);
   });
   return scene;
+}
+
+void attribute_vertices(TerrainScene& scene, const Fragments* f) {
+  auto& asked = scene.attributed;
+  if (!f) {
+    for (uint8_t& a : asked) a = std::max<uint8_t>(a, 1);
+  } else {
+    // Relaxed atomic stores: two rows may share a triangle's vertex (the same byte, the same
+    // value).
+    tbb::parallel_for(0, f->height, [&](int row) {
+      uint32_t previous = Fragments::kSky;
+      for (size_t i = size_t(row) * size_t(f->width), end = i + size_t(f->width); i < end; ++i) {
+        const uint32_t t = f->triangle[i];
+        if (t == Fragments::kSky || t == previous) continue;
+        previous = t;
+        for (size_t j = 0; j < 3; ++j) {
+          std::atomic_ref<uint8_t> a(asked[scene.mesh.indices[3 * size_t(t) + j]]);
+          if (a.load(std::memory_order_relaxed) == 0) a.store(1, std::memory_order_relaxed);
+        }
+      }
+    });
+  }
+  if (scene.tiles.empty()) return;
+  const int n = scene.tiles.front().heights.size();
+  tbb::enumerable_thread_specific<PositionMemo> memos;
+  tbb::parallel_for(size_t(0), scene.tiles.size(),
+                    [&](size_t i) { attribute_tile(scene, i, n, memos.local()); });
 }
 
 TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,

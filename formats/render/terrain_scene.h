@@ -12,23 +12,42 @@
 // missing sample (nodata, no neighbour tile) are left out, and the skirt along them. Heights go to
 // the ellipsoid through the layer's vertical datum, exaggerated by a factor above that datum. Tiles
 // are read and their shares of the mesh counted in parallel, then each written in place (no copies
-// joined) in their cell order: the mesh is the same whatever the threads.
+// joined) in their cell order: the mesh is the same whatever the threads. The vertices' other
+// attributes (lon/lat, plane point, altitude, normal) are made afterwards by attribute_vertices,
+// for the vertices of the triangles a picture shows only (on the render test's low view of its
+// hills 17,651 of 376,002: PanoramaCli.ShownVerticesAttributesAreEveryVertexs prints it): the
+// tiles' heights and sample places are kept for it.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "core/grid.h"
+#include "core/tile.h"
 #include "gdal/vertical_datum.h"
 #include "image/layer_sampler.h"
 #include "render/camera.h"
 #include "render/rasterizer.h"
+#include "render/sample_places.h"
 #include "store/store.h"
 
 namespace maquette {
 
-// Its arrays are FreshArrays (render/fresh_array.h): each tile writes every element of its share
-// (build_terrain_scene checks the share it wrote against the one it counted).
+// A drawn tile as attribute_vertices needs it: its heights with two rings of halo, its samples'
+// places, and the first of its vertices in the mesh.
+struct SceneTile {
+  Tile<float> heights{1, 1};
+  std::optional<SamplePlaces> places;
+  size_t first_vertex = 0;
+};
+
+// Its arrays are FreshArrays (render/fresh_array.h). The mesh's: each tile writes every element of
+// its share (build_terrain_scene checks the share it wrote against the one it counted). The
+// attributes (lonlat, plane, altitude, normals) are sized for every vertex but written by
+// attribute_vertices for the vertices it is given only (`attributed` 2, fresh_array.h's second
+// exception): the others must not be read.
 struct TerrainScene {
   std::vector<CellId> cells;  // the tiles drawn (scene_cells)
   RenderMesh mesh;
@@ -37,10 +56,16 @@ struct TerrainScene {
   // at a pixel from these interpolated, without projecting its lon/lat; NaN off the tile's face.
   FreshArray<double> plane;
   FreshArray<float> altitude;  // the DEM's height (its own datum, not exaggerated), per vertex
-  // Unit normals in the camera's ENU frame (central differences of the exaggerated surface, at a
-  // tile's border too, from a second ring of halo: a sample drawn by two tiles has one normal;
-  // one-sided only beside nodata), 3 per vertex.
+  // Unit normals in the camera's ENU frame (central differences of the exaggerated, unbent
+  // surface, at a tile's border too, from a second ring of halo: a sample drawn by two tiles has
+  // one normal; one-sided only beside nodata), 3 per vertex.
   FreshArray<float> normals;
+  // What attribute_vertices reads: per cell, and per vertex whether its attributes are asked for
+  // (1) or written (2), 0 otherwise.
+  std::vector<SceneTile> tiles;
+  std::vector<uint8_t> attributed;
+  std::unique_ptr<const EllipsoidalHeights> heights;  // the DEM's datum, for the tiles' places
+  double exaggeration = 1;
 };
 
 // The cells whose tiles draw the DEM: from the coarsest level holding overviews down, a cell is
@@ -58,10 +83,17 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
                                 double exaggeration, bool cull);
 
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
-// >= 0 and `cull` as scene_cells. Throws maquette::Error naming the value at fault.
+// >= 0 and `cull` as scene_cells. The scene's places refer to `grid`: it must outlive the scene.
+// Throws maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull);
+
+// Writes the attributes (lonlat, plane, altitude, normals) of the vertices of the triangles
+// `fragments` shows (nullptr: of every vertex) not written yet: a tile's vertices by one task, each
+// the same bits whichever pictures or strips asked for it, so it may be called once per strip.
+// Reads the mesh's indices only (not its positions: the normals are the unbent surface's).
+void attribute_vertices(TerrainScene& scene, const Fragments* fragments);
 
 // The drawn terrain's height above the ellipsoid at points: the DEM sampled bilinearly between
 // samples, converted to the ellipsoid and exaggerated as build_terrain_scene draws it (heights of

@@ -353,19 +353,26 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("bend_start": 2000)", "params.bend_start is given without params.bend_radius");
 }
 
-// Steep hills (800 m high, 700 m to 1 km apart) in 64-pixel tiles, so the level by distance
-// mixes levels within the view, and imagery (layer rgb) of stripes and a gradient.
+// A new store in `dir` holding steep hills (layer dem, 800 m high, 700 m to 1 km apart) from 10 E
+// to 10.3 E and from `north` - 0.3 to `north`, in 64-pixel tiles, so the level by distance mixes
+// levels within the view.
+std::string hills_dem(const std::string& dir, double north) {
+  const std::string tif = dir + "/hills.tif", path = dir + "/hills.mqt";
+  test::write_raster(tif, test::lonlat_raster(10, north, 600, 0.0005, "Float32"),
+                     [](int, double lon, double lat) {
+                       return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
+                                        std::cos(lat * 2 * std::numbers::pi / 0.007);
+                     });
+  const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
+                              "--vertical-datum ellipsoid " + tif);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return path;
+}
+
+// The hills at 45 N and imagery (layer rgb) of stripes and a gradient.
 const std::string& hills_store() {
   static const std::string store = [] {
-    const std::string dir = test::temp_dir(), tif = dir + "/hills.tif", path = dir + "/hills.mqt";
-    test::write_raster(tif, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
-                       [](int, double lon, double lat) {
-                         return 900 + 800 * std::sin(lon * 2 * std::numbers::pi / 0.009) *
-                                          std::cos(lat * 2 * std::numbers::pi / 0.007);
-                       });
-    const auto r = run_maquette("-q ingest " + path + " --layer dem --as dem --tile-size 64 " +
-                                "--vertical-datum ellipsoid " + tif);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::string dir = test::temp_dir(), path = hills_dem(dir, 45.3);
     test::RasterSpec rgb = test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte");
     rgb.bands = 3;
     test::write_raster(dir + "/rgb.tif", rgb, [](int band, double lon, double lat) {
@@ -504,14 +511,25 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
 // of a sample of each other (the inside's places are interpolated, the ring's exact: they differ
 // by up to a thousandth of a sample, sample_places.h). Before, the ring's normals were one-sided:
 // on these hills copies were up to ~60 degrees apart.
+// The terrain of `store`'s layer dem seen by `camera` (build_terrain_scene's sample_pixels and
+// cull).
+TerrainScene scene_of(const std::string& store, const PinholeCamera& camera, double sample_pixels,
+                      bool cull) {
+  const auto opened = Store::open(store, Store::Mode::ReadOnly);
+  return build_terrain_scene(*opened, default_grid(), opened->require_layer("dem"), camera, 1,
+                             sample_pixels, cull);
+}
+
+TerrainScene hills_scene(const PinholeCamera& camera, double sample_pixels, bool cull) {
+  return scene_of(hills_store(), camera, sample_pixels, cull);
+}
+
 TEST(PanoramaCli, TileBordersShareTheirNormals) {
-  const auto store = Store::open(hills_store(), Store::Mode::ReadOnly);
-  const LayerInfo dem = store->require_layer("dem");
   CameraSpec spec;
   spec.eye = {10.15, 45.15, 20000};
   spec.pitch = -90;
-  const TerrainScene scene =
-      build_terrain_scene(*store, default_grid(), dem, PinholeCamera(spec), 1, 0, false);
+  TerrainScene scene = hills_scene(PinholeCamera(spec), 0, false);
+  attribute_vertices(scene, nullptr);
   const double eps = 0.01 * 0.0005;  // a hundredth of the DEM's 0.0005-degree sample
   std::vector<size_t> by_lon(scene.altitude.size());
   std::iota(by_lon.begin(), by_lon.end(), size_t(0));
@@ -532,6 +550,51 @@ TEST(PanoramaCli, TileBordersShareTheirNormals) {
   std::printf("%zu samples drawn twice, their normals at most %.4f degrees apart\n", copies, worst);
   EXPECT_GT(copies, 1000u);
   EXPECT_LT(worst, 0.05);
+}
+
+// attribute_vertices for the vertices a picture shows (strip by strip, as render_strips asks)
+// writes them with the same bits as for every vertex at once, and only them: the attributes are
+// a vertex's own, whichever vertices are asked for with it. `camera` 320 x 200 on `store`.
+void expect_shown_attributes_are_every_vertexs(const std::string& store,
+                                               const PinholeCamera& camera) {
+  TerrainScene all = scene_of(store, camera, 1, true), shown = scene_of(store, camera, 1, true);
+  attribute_vertices(all, nullptr);
+  std::vector<bool> seen(shown.altitude.size());
+  for (int first = 0; first < 200; first += 70) {  // three strips
+    const Fragments f = rasterize(shown.mesh, camera, 1.0, first, 70);
+    attribute_vertices(shown, &f);
+    for (const uint32_t t : f.triangle)
+      if (t != Fragments::kSky)
+        for (size_t j = 0; j < 3; ++j) seen[shown.mesh.indices[3 * size_t(t) + j]] = true;
+  }
+  size_t count = 0;
+  for (size_t v = 0; v < seen.size(); ++v) {
+    EXPECT_EQ(shown.attributed[v], seen[v] ? 2 : 0) << v;
+    if (!seen[v]) continue;
+    ++count;
+    EXPECT_EQ(std::memcmp(&shown.lonlat[2 * v], &all.lonlat[2 * v], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.plane[2 * v], &all.plane[2 * v], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.normals[3 * v], &all.normals[3 * v], 3 * sizeof(float)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.altitude[v], &all.altitude[v], sizeof(float)), 0) << v;
+  }
+  std::printf("%zu of %zu vertices shown\n", count, seen.size());
+  EXPECT_GT(count, 1000u);
+  EXPECT_LT(count, seen.size());
+}
+
+TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexs) {
+  expect_shown_attributes_are_every_vertexs(
+      hills_store(), PinholeCamera(CameraSpec{
+                         .eye = {10.15, 45.02, 2500}, .pitch = -3, .width = 320, .height = 200}));
+}
+
+// The same beyond 80 degrees of latitude, where a tile has no lattice and places a sample exactly
+// when asked for (render/sample_places.h): the hills 40 degrees north of the others.
+TEST(PanoramaCli, ShownVerticesAttributesAreEveryVertexsNearThePole) {
+  const std::string store = hills_dem(test::temp_dir(), 85.3);
+  expect_shown_attributes_are_every_vertexs(
+      store, PinholeCamera(CameraSpec{
+                 .eye = {10.15, 85.02, 2500}, .pitch = -3, .width = 320, .height = 200}));
 }
 
 // Each tile at the level its distance needs: fewer triangles, several levels, no hole (no sky
