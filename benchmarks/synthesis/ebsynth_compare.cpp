@@ -13,6 +13,7 @@
 // below (printed with every argument error and by --help).
 #include <omp.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -124,7 +125,7 @@ struct EbsynthRun {
 // ebsynth on the fixture's side x side window, on `threads` OpenMP threads.
 EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann::json& classes) {
   EbsynthRun r;
-  const int channels = zion_params().at("classes").get<int>() + 1;
+  const int channels = *std::max_element(e.labels.begin(), e.labels.end()) + 2;
   std::vector<uint8_t> style(e.rgb.size());
   for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
   std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
@@ -152,11 +153,11 @@ EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann:
 }
 
 int run(int side, int threads, int step, const SynthesisParams& params,
-        const nlohmann::json& classes, bool with_ebsynth) {
+        const nlohmann::json& classes, const nlohmann::json& painting_classes, bool with_ebsynth) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
-  const Timed analysis = timed([&] { t = zion_exemplar(classes); });
+  const Timed analysis = timed([&] { t = zion_exemplar(classes, painting_classes); });
   const Exemplar e = copied_exemplar(t->pyramid.levels[0]);
 
   std::vector<int32_t> ours;
@@ -213,7 +214,9 @@ constexpr const char* kUsage =
            validated against that schema: an unknown key, or a value of the wrong type or out of
            range, is an error naming it; its "vote_radius" and `vote` are one setting, given
            twice with different values an error; "landcover_classes" replaces the fixture's
-           class table (zion_fixture.h) for both syntheses and the measures
+           class table (zion_fixture.h) for both syntheses and the measures; "labels" (a
+           class image, e.g. examples/bruegel-harvesters-classes.geojson) replaces the 8 colour
+           classes, with its "exclude_classes" ([] when absent)
   ours     skip ebsynth (a variant measured against an earlier run's ebsynth)
 )";
 
@@ -252,6 +255,9 @@ nlohmann::json synthesis_weights(int argc, char** argv) {
   properties["landcover_classes"] =
       maquette::synthesis::exemplar_params_schema().at("landcover_classes");
   properties["landcover_classes"]["default"] = maquette::synthesis::bench::zion_classes();
+  for (const char* key : {"labels", "exclude_classes"})
+    properties[key] = maquette::synthesis::exemplar_params_schema().at(key);
+  properties["exclude_classes"].erase("default");
   const nlohmann::json schema = {
       {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
   return maquette::validate_params(schema, given, kProgram);
@@ -276,8 +282,15 @@ int main(int argc, char** argv) try {
   if (argc > 7)
     throw maquette::Error(std::string(kProgram) +
                           ": too many arguments: side threads step vote params [ours]");
-  return maquette::synthesis::bench::run(side, threads, step, params,
-                                         weights.at("landcover_classes"), with_ebsynth);
+  if (weights.contains("exclude_classes") && !weights.contains("labels"))
+    throw maquette::Error(std::string(kProgram) +
+                          ": params.exclude_classes without params.labels: the 8 colour classes "
+                          "exclude their class 0");
+  nlohmann::json painting_classes = nlohmann::json::object();
+  for (const char* key : {"labels", "exclude_classes"})
+    if (weights.contains(key)) painting_classes[key] = weights.at(key);
+  return maquette::synthesis::bench::run(
+      side, threads, step, params, weights.at("landcover_classes"), painting_classes, with_ebsynth);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
   return 1;
