@@ -17,10 +17,11 @@
 namespace maquette::synthesis {
 namespace {
 
-std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what) {
+// `kinds`: GDAL_OF_RASTER, GDAL_OF_VECTOR or both.
+std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what,
+                                        unsigned kinds = GDAL_OF_RASTER) {
   GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
   if (!ds) throw Error(path + ": GDAL cannot open the " + what);
   return ds;
 }
@@ -49,13 +50,26 @@ std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path
   OGRLayer* layer = ds.GetLayer(0);
   const int field = layer->GetLayerDefn()->GetFieldIndex("class");
   if (field < 0) throw Error(path + ": the class image's polygons have no attribute \"class\"");
+  // A String field would be read (and burnt) as atof's value: "forest" as 0, "7a" as 7.
+  const OGRFieldType type = layer->GetLayerDefn()->GetFieldDefn(field)->GetType();
+  const bool numeric = type == OFTInteger || type == OFTInteger64 || type == OFTReal;
   for (const auto& feature : *layer) {
+    const std::string name = path + ": feature " + std::to_string(feature->GetFID());
+    const OGRGeometry* geometry = feature->GetGeometryRef();
+    const auto shape = geometry ? wkbFlatten(geometry->getGeometryType()) : wkbNone;
+    if (shape != wkbPolygon && shape != wkbMultiPolygon)
+      throw Error(name + " is " +
+                  (geometry ? std::string("a ") + geometry->getGeometryName() : "no geometry") +
+                  ", not a polygon");
     const double value = feature->GetFieldAsDouble(field);
-    if (!feature->IsFieldSetAndNotNull(field) || value != std::floor(value) || value < 0 ||
-        value >= kUnknownLabel)
-      throw Error(path + ": feature " + std::to_string(feature->GetFID()) + "'s class '" +
-                  feature->GetFieldAsString(field) + "' is not an integer in 0.." +
-                  std::to_string(kUnknownLabel - 1));
+    if (!numeric || !feature->IsFieldSetAndNotNull(field) || value != std::floor(value) ||
+        value < 0 || value >= kUnknownLabel)
+      throw Error(name + "'s class '" + feature->GetFieldAsString(field) +
+                  "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1) +
+                  (numeric ? ""
+                           : std::string(" (the attribute \"class\" is of type ") +
+                                 OGRFieldDefn::GetFieldTypeName(type) +
+                                 ": write the classes as numbers, not in quotes)"));
   }
   layer->ResetReading();
   std::vector<uint8_t> out(size_t(width) * size_t(height), kUnknownLabel);
@@ -121,10 +135,7 @@ std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
 }
 
 std::vector<uint8_t> read_class_image(const std::string& path, int width, int height) {
-  GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  if (!ds) throw Error(path + ": GDAL cannot open the class image");
+  const auto ds = open_image(path, "class image", GDAL_OF_RASTER | GDAL_OF_VECTOR);
   if (ds->GetRasterCount() > 0) return read_band(*ds, path, width, height, "class image");
   return rasterized_classes(*ds, path, width, height);
 }

@@ -26,7 +26,8 @@ std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
 // with an integer attribute "class" in 0..254 on every feature. Each pixel takes the class of the
 // last polygon, in the file's order, that holds its centre (GDAL's rasterizer), so a region drawn
 // later is drawn over those before it. Throws maquette::Error naming the file when a feature has
-// no class or one out of range, or when a pixel lies in no polygon.
+// no class, one out of range or not a number (a "class" written in quotes), when a feature is
+// not a polygon or multipolygon, or when a pixel lies in no polygon.
 std::vector<uint8_t> read_class_image(const std::string& path, int width, int height);
 
 // The radius, in painting pixels, of segment_by_colour's majority filter.

@@ -83,6 +83,25 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
       message(geojson(polygon(R"({"name": "sky"})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]")))
           .find("no attribute \"class\""),
       std::string::npos);
+  // One class in quotes makes the attribute a String for every feature (GDAL would read "7a" as
+  // 7, "forest" as 0): the first feature's 2 is refused, naming the type.
+  EXPECT_NE(
+      message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
+                      ", " +
+                      polygon(R"({"class": "7a"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")))
+          .find("feature 0's class '2' is not an integer in 0..254 (the attribute \"class\" is of "
+                "type String"),
+      std::string::npos);
+  EXPECT_NE(message(geojson(polygon(R"({"class": "forest"})",
+                                    "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]")))
+                .find("class 'forest' is not an integer"),
+            std::string::npos);
+  // A line drawn by mistake: GDAL would burn its path.
+  EXPECT_NE(message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
+                            R"(, {"type": "Feature", "properties": {"class": 3}, "geometry": )"
+                            R"({"type": "LineString", "coordinates": [[0, 0], [8, 6]]}})"))
+                .find("feature 1 is a LINESTRING, not a polygon"),
+            std::string::npos);
 }
 
 }  // namespace
