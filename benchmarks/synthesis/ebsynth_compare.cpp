@@ -9,10 +9,15 @@
 // minutes of CPU per image; 8 is what benchmarks/README.md's later rows use). Ours is measured
 // with its vote of radius `vote` (synthesis.h), and its copy with ebsynth's plain vote applied
 // (each pixel the mean colour of the 5 x 5 overlapping patches' proposals), so that the
-// smoothing of a mean vote is measured apart from the copy's coherence. The arguments: kUsage
-// below (printed with every argument error and by --help).
+// smoothing of a mean vote is measured apart from the copy's coherence. Given several seeds,
+// ours is run with each (ebsynth once: its randomness has no seed) and each measure's minimum,
+// median and maximum printed, with each class's histogram distance beside the distance a random
+// draw of as many of the class's exemplar pixels shows, single or in 5 x 5 squares (the noise of
+// the measure itself at that class's size). The arguments: kUsage below (printed with every
+// argument error and by --help).
 #include <omp.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -20,6 +25,7 @@
 #include <ctime>
 #include <map>
 #include <optional>
+#include <random>
 #include <string>
 
 #include "core/error.h"
@@ -85,15 +91,22 @@ std::vector<float> plain_vote(const Exemplar& e, const PixelRect& out,
   return rgb;
 }
 
-// The most distinct sources a copy of `labels` (target labels, row-major) can have with every
-// pixel copied from a usable exemplar pixel of its label: the sum over labels of min(target
-// pixels, usable exemplar pixels), as a fraction of the target pixels with a label.
-double distinct_bound(const Exemplar& e, const std::vector<uint8_t>& labels) {
-  std::map<uint8_t, std::array<int64_t, 2>> count;  // label -> target pixels, exemplar pixels
+// Label -> its target pixels in `labels` (row-major) and its usable exemplar pixels.
+using ClassPixels = std::map<uint8_t, std::array<int64_t, 2>>;
+
+ClassPixels class_pixels(const Exemplar& e, const std::vector<uint8_t>& labels) {
+  ClassPixels count;
   for (const uint8_t l : labels)
     if (l != kUnknownLabel) ++count[l][0];
   for (size_t i = 0; i < e.labels.size(); ++i)
     if (!e.excluded[i]) ++count[e.labels[i]][1];
+  return count;
+}
+
+// The most distinct sources a copy can have with every pixel copied from a usable exemplar pixel
+// of its label: the sum over labels of min(target pixels, usable exemplar pixels), as a fraction
+// of the target pixels with a label.
+double distinct_bound(const ClassPixels& count) {
   int64_t bound = 0, target = 0;
   for (const auto& [label, n] : count) {
     bound += std::min(n[0], n[1]);
@@ -115,6 +128,99 @@ void print(const char* name, const Metrics& m) {
   std::printf("\n");
 }
 
+// Minimum, median (the mean of the middle two for an even count) and maximum; `v` not empty.
+std::array<double, 3> spread(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return {v.front(), (v[(n - 1) / 2] + v[n / 2]) / 2, v.back()};
+}
+
+void print_spread(const char* name, const std::vector<double>& v, const char* format) {
+  const auto [low, median, high] = spread(v);
+  std::printf("  %-16s min ", name);
+  std::printf(format, low);
+  std::printf("  median ");
+  std::printf(format, median);
+  std::printf("  max ");
+  std::printf(format, high);
+  std::printf("\n");
+}
+
+// The total variation between the histogram of `label`'s usable exemplar pixels and that of
+// `pixels` of them drawn at random, as whole side x side squares (all usable pixels of the label;
+// side 1: single pixels) drawn uniformly with replacement, over kDraws draws: its median and
+// largest. The sampling noise of the measure at a class of that size: the output copies patches,
+// so its pixels are not independent draws and its noise lies nearer the squares'.
+constexpr int kDraws = 200;
+
+std::array<double, 2> random_draw_distance(const Exemplar& e, uint8_t label, int64_t pixels,
+                                           int side) {
+  const auto usable = [&](int x, int y) {
+    const size_t i = size_t(y) * size_t(e.width) + size_t(x);
+    return e.labels[i] == label && !e.excluded[i];
+  };
+  std::vector<std::array<int, 2>> corners;  // top-left corners of the squares inside the label
+  for (int y = 0; y + side <= e.height; ++y)
+    for (int x = 0; x + side <= e.width; ++x) {
+      bool inside = true;
+      for (int dy = 0; dy < side && inside; ++dy)
+        for (int dx = 0; dx < side && inside; ++dx) inside = usable(x + dx, y + dy);
+      if (inside) corners.push_back({x, y});
+    }
+  if (corners.empty()) return {1, 1};
+  const std::vector<uint64_t> exemplar = exemplar_histogram(e, label);
+  std::uniform_int_distribution<size_t> corner(0, corners.size() - 1);
+  std::mt19937_64 random(label);
+  const int64_t squares = std::max<int64_t>(1, (pixels + side * side / 2) / (side * side));
+  std::vector<double> d(kDraws);
+  for (double& distance : d) {
+    std::vector<uint64_t> drawn(exemplar.size(), 0);
+    for (int64_t k = 0; k < squares; ++k) {
+      const auto [x, y] = corners[corner(random)];
+      for (int dy = 0; dy < side; ++dy)
+        for (int dx = 0; dx < side; ++dx) {
+          const size_t i = size_t(y + dy) * size_t(e.width) + size_t(x + dx);
+          ++drawn[size_t(histogram_bin(e.rgb[3 * i], e.rgb[3 * i + 1], e.rgb[3 * i + 2]))];
+        }
+    }
+    distance = total_variation(drawn, exemplar);
+  }
+  const auto [low, median, high] = spread(d);
+  return {median, high};
+}
+
+// Ours' measures over the seeds: each measure's spread, and each class's histogram distance's
+// beside random draws' (random_draw_distance) of its target pixel count, single pixels and
+// 5 x 5 squares.
+void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const ClassPixels& count) {
+  const auto of = [&](auto measure) {
+    std::vector<double> v;
+    for (const Metrics& m : runs) v.push_back(double(measure(m)));
+    return v;
+  };
+  std::printf("ours over %zu seeds:\n", runs.size());
+  print_spread("label", of([](const Metrics& m) { return m.label_consistency; }), "%.4f");
+  print_spread("excluded", of([](const Metrics& m) { return m.excluded_pixels; }), "%.0f");
+  print_spread("coherence", of([](const Metrics& m) { return m.coherence; }), "%.0f");
+  print_spread("distinct", of([](const Metrics& m) { return m.distinct_source_fraction; }), "%.4f");
+  print_spread("max share", of([](const Metrics& m) { return m.max_source_share; }), "%.5f");
+  print_spread("worst histogram", of([](const Metrics& m) { return m.worst_histogram_distance; }),
+               "%.3f");
+  for (const auto& [label, n] : count) {
+    if (n[0] == 0) continue;
+    const auto [low, median, high] =
+        spread(of([label](const Metrics& m) { return m.histogram_distance.at(label); }));
+    const auto pixel = random_draw_distance(e, label, n[0], 1);
+    const auto patch = random_draw_distance(e, label, n[0], kCoherenceSide);
+    std::printf(
+        "  histogram [%d] (%lld target pixels): min %.3f  median %.3f  max %.3f; as many of its "
+        "exemplar pixels drawn at random (median, max of %d draws): single %.3f, %.3f; in %d x "
+        "%d squares %.3f, %.3f\n",
+        int(label), (long long)n[0], low, median, high, kDraws, pixel[0], pixel[1], kCoherenceSide,
+        kCoherenceSide, patch[0], patch[1]);
+  }
+}
+
 struct EbsynthRun {
   Timed time;
   std::vector<int32_t> source;  // exemplar pixel per output pixel (its nearest-neighbour field)
@@ -124,7 +230,7 @@ struct EbsynthRun {
 // ebsynth on the fixture's side x side window, on `threads` OpenMP threads.
 EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann::json& classes) {
   EbsynthRun r;
-  const int channels = zion_params().at("classes").get<int>() + 1;
+  const int channels = *std::max_element(e.labels.begin(), e.labels.end()) + 2;
   std::vector<uint8_t> style(e.rgb.size());
   for (size_t i = 0; i < style.size(); ++i) style[i] = uint8_t(e.rgb[i]);
   std::vector<uint8_t> source_guide = one_hot(e.labels, &e.excluded, channels);
@@ -151,48 +257,60 @@ EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann:
   return r;
 }
 
-int run(int side, int threads, int step, const SynthesisParams& params,
-        const nlohmann::json& classes, bool with_ebsynth) {
+// Ours with `seeds` seeds from params.seed on (and ebsynth once when `with_ebsynth`).
+int run(int side, int threads, int step, SynthesisParams params, const nlohmann::json& classes,
+        const nlohmann::json& painting_classes, bool with_ebsynth, int seeds) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
-  const Timed analysis = timed([&] { t = zion_exemplar(classes); });
+  const Timed analysis = timed([&] { t = zion_exemplar(classes, painting_classes); });
   const Exemplar e = copied_exemplar(t->pyramid.levels[0]);
-
-  std::vector<int32_t> ours;
-  const Timed ours_time =
-      timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params, classes); });
-  std::vector<float> ours_rgb(ours.size() * 3);
-  for (size_t i = 0; i < ours.size(); ++i)
-    for (size_t k = 0; k < 3; ++k) ours_rgb[3 * i + k] = e.rgb[3 * size_t(ours[i]) + k];
 
   std::printf("output %d x %d (%.3f MP), exemplar %d x %d, %d threads\n", side, side, mp, e.width,
               e.height, threads);
   std::printf("exemplar analysis (ours, once): CPU %.1f s, wall %.1f s\n", analysis.cpu,
               analysis.wall);
-  std::printf("ours:    CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ours_time.cpu,
-              ours_time.cpu / mp, ours_time.wall, ours_time.wall / mp);
-  const Metrics ours_m = metrics(e, tally(e, assessed(out, ours, ours_rgb, classes), out, step));
-  const Metrics averaged_m =
-      metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step));
+  std::printf("the window's classes (painting classes through the class table):\n");
+  const ClassPixels count = class_pixels(e, zion_labels(out, classes));
+  std::printf("distinct-source bound with label consistency 1: %.4f\n", distinct_bound(count));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
-  std::printf("the window's classes (painting classes through the class table):\n");
-  const double bound = distinct_bound(e, zion_labels(out, classes));
-  std::printf("distinct-source bound with label consistency 1: %.4f\n", bound);
-  print("ours", ours_m);
-  print("ours+mean", averaged_m);
+  std::vector<Metrics> ours_m, averaged_m;
+  const uint64_t first_seed = params.seed;
+  for (int i = 0; i < seeds; ++i) {
+    params.seed = first_seed + uint64_t(i);
+    std::vector<int32_t> ours;
+    const Timed ours_time =
+        timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params, classes); });
+    std::vector<float> ours_rgb(ours.size() * 3);
+    for (size_t p = 0; p < ours.size(); ++p)
+      for (size_t k = 0; k < 3; ++k) ours_rgb[3 * p + k] = e.rgb[3 * size_t(ours[p]) + k];
+    std::printf("ours, seed %llu: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n",
+                (unsigned long long)params.seed, ours_time.cpu, ours_time.cpu / mp, ours_time.wall,
+                ours_time.wall / mp);
+    ours_m.push_back(metrics(e, tally(e, assessed(out, ours, ours_rgb, classes), out, step)));
+    averaged_m.push_back(
+        metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step)));
+    print("ours", ours_m.back());
+    print("ours+mean", averaged_m.back());
+    std::fflush(stdout);
+  }
+  if (seeds > 1) print_seeds(e, ours_m, count);
   if (!with_ebsynth) return 0;
   const EbsynthRun ebsynth = run_ebsynth(e, side, threads, classes);
   std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth.time.cpu,
               ebsynth.time.cpu / mp, ebsynth.time.wall, ebsynth.time.wall / mp);
-  std::printf("ebsynth / ours: CPU %.2fx, wall %.2fx\n", ebsynth.time.cpu / ours_time.cpu,
-              ebsynth.time.wall / ours_time.wall);
   const Metrics ebsynth_m =
       metrics(e, tally(e, assessed(out, ebsynth.source, ebsynth.rgb, classes), out, step));
   print("ebsynth", ebsynth_m);
-  std::printf("coherence ours / ebsynth: %.2f, ours+mean / ebsynth: %.2f\n",
-              ours_m.coherence / ebsynth_m.coherence, averaged_m.coherence / ebsynth_m.coherence);
+  const auto coherence = [](const std::vector<Metrics>& runs) {
+    std::vector<double> v;
+    for (const Metrics& m : runs) v.push_back(m.coherence);
+    return spread(v)[1];
+  };
+  std::printf("coherence ours / ebsynth: %.2f, ours+mean / ebsynth: %.2f%s\n",
+              coherence(ours_m) / ebsynth_m.coherence, coherence(averaged_m) / ebsynth_m.coherence,
+              seeds > 1 ? " (ours' medians)" : "");
   return 0;
 }
 
@@ -203,7 +321,7 @@ namespace {
 
 constexpr const char* kProgram = "synthesis_ebsynth_compare";
 constexpr const char* kUsage =
-    R"(usage: synthesis_ebsynth_compare [side] [threads] [step] [vote] [params] [ours]
+    R"(usage: synthesis_ebsynth_compare [side] [threads] [step] [vote] [params] [ours|both] [seeds]
   side     the output window's side in pixels (512)
   threads  threads for both syntheses (2)
   step     the coherence measure's sample: every step-th column and row (2; >= 1)
@@ -213,8 +331,12 @@ constexpr const char* kUsage =
            validated against that schema: an unknown key, or a value of the wrong type or out of
            range, is an error naming it; its "vote_radius" and `vote` are one setting, given
            twice with different values an error; "landcover_classes" replaces the fixture's
-           class table (zion_fixture.h) for both syntheses and the measures
-  ours     skip ebsynth (a variant measured against an earlier run's ebsynth)
+           class table (zion_fixture.h) for both syntheses and the measures; "labels" (a
+           class image, e.g. examples/bruegel-harvesters-classes.geojson) replaces the 8 colour
+           classes, with its "exclude_classes" ([] when absent)
+  ours     skip ebsynth (a variant measured against an earlier run's ebsynth); both: run it
+  seeds    run ours with this many seeds, params.seed (0) and on, and print each measure's
+           min / median / max and each class's histogram distance beside a random draw's (1)
 )";
 
 // Argument `i` as an integer >= `min` (the whole argument: "2x" is refused), `fallback` when
@@ -252,6 +374,9 @@ nlohmann::json synthesis_weights(int argc, char** argv) {
   properties["landcover_classes"] =
       maquette::synthesis::exemplar_params_schema().at("landcover_classes");
   properties["landcover_classes"]["default"] = maquette::synthesis::bench::zion_classes();
+  for (const char* key : {"labels", "exclude_classes"})
+    properties[key] = maquette::synthesis::exemplar_params_schema().at(key);
+  properties["exclude_classes"].erase("default");
   const nlohmann::json schema = {
       {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
   return maquette::validate_params(schema, given, kProgram);
@@ -269,15 +394,25 @@ int main(int argc, char** argv) try {
   const int step = int_argument(argc, argv, 3, "step", 2, 1);
   const nlohmann::json weights = synthesis_weights(argc, argv);
   const auto params = maquette::synthesis::synthesis_params(weights);
-  const bool with_ebsynth = !(argc > 6 && std::string(argv[6]) == "ours");
-  if (argc > 6 && with_ebsynth)
-    throw maquette::Error(std::string(kProgram) + ": argument 6 '" + argv[6] +
-                          "': expected \"ours\" (our transfer alone)");
-  if (argc > 7)
+  const std::string which = argc > 6 ? argv[6] : "both";
+  if (which != "ours" && which != "both")
+    throw maquette::Error(std::string(kProgram) + ": argument 6 '" + which +
+                          "': expected \"ours\" (our transfer alone) or \"both\"");
+  const int seeds = int_argument(argc, argv, 7, "seeds", 1, 1);
+  if (argc > 8)
+    throw maquette::Error(
+        std::string(kProgram) +
+        ": too many arguments: side threads step vote params [ours|both] [seeds]");
+  if (weights.contains("exclude_classes") && !weights.contains("labels"))
     throw maquette::Error(std::string(kProgram) +
-                          ": too many arguments: side threads step vote params [ours]");
+                          ": params.exclude_classes without params.labels: the 8 colour classes "
+                          "exclude their class 0");
+  nlohmann::json painting_classes = nlohmann::json::object();
+  for (const char* key : {"labels", "exclude_classes"})
+    if (weights.contains(key)) painting_classes[key] = weights.at(key);
   return maquette::synthesis::bench::run(side, threads, step, params,
-                                         weights.at("landcover_classes"), with_ebsynth);
+                                         weights.at("landcover_classes"), painting_classes,
+                                         which == "both", seeds);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
   return 1;

@@ -23,17 +23,24 @@ nlohmann::json zion_classes() {
   return {{"1", 7}, {"2", 3}, {"3", 5}, {"4", {6, 1}}, {"5", 7}, {"6", 2}, {"7", 2}, {"8", {6, 1}}};
 }
 
-nlohmann::json zion_params(const nlohmann::json& classes) {
-  return {{"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
-          {"classes", 8},
-          {"exclude_classes", {0}},
-          {"landcover_classes", classes},
-          {"exemplar_scale", 2},
-          {"k", 2}};
+nlohmann::json zion_params(const nlohmann::json& classes, const nlohmann::json& painting_classes) {
+  nlohmann::json params = {{"painting", kData + "/painting/bruegel_the_harvesters_1565.png"},
+                           {"classes", 8},
+                           {"exclude_classes", {0}},
+                           {"landcover_classes", classes},
+                           {"exemplar_scale", 2},
+                           {"k", 2}};
+  if (painting_classes.contains("labels")) {
+    params.erase("classes");
+    params["labels"] = painting_classes.at("labels");
+    params["exclude_classes"] = painting_classes.value("exclude_classes", nlohmann::json::array());
+  }
+  return params;
 }
 
-std::shared_ptr<const TransferExemplar> zion_exemplar(const nlohmann::json& classes) {
-  return transfer_exemplar(zion_params(classes));
+std::shared_ptr<const TransferExemplar> zion_exemplar(const nlohmann::json& classes,
+                                                      const nlohmann::json& painting_classes) {
+  return transfer_exemplar(zion_params(classes, painting_classes));
 }
 
 std::vector<uint8_t> zion_labels(const PixelRect& window, const nlohmann::json& classes) {

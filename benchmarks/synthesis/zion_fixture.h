@@ -1,10 +1,11 @@
 // The synthesis benchmarks' fixture: the example's exemplar (examples/synthesis-zion.json:
-// Bruegel's painting, 8 colour classes, the sky's excluded, exemplar scale 2) and a window of
-// Zion's NLCD land cover at its own 30 m pixels as the target's labels (no altitude guide: ebsynth
-// is given the same labels and nothing else). Its class table (the example's): forest and
-// wetlands take the painting's near-black shade (class 1) with its dark olive foliage (6) as one
-// class (session 20: the distinct-source bound 0.270 -> 0.376); another table may be given.
-// Shared by synthesis_benchmark and ebsynth_compare.
+// Bruegel's painting, 8 colour classes, the sky's excluded, exemplar scale 2), or the painting
+// with another class image given (the hand-drawn examples/bruegel-harvesters-classes.geojson),
+// and a window of Zion's NLCD land cover at its own 30 m pixels as the target's labels (no
+// altitude guide: ebsynth is given the same labels and nothing else). Its class table (the
+// example's): forest and wetlands take the painting's near-black shade (class 1) with its dark
+// olive foliage (6) as one class (session 20: the distinct-source bound 0.270 -> 0.376); another
+// table may be given. Shared by synthesis_benchmark and ebsynth_compare.
 #pragma once
 
 #include <memory>
@@ -20,13 +21,17 @@ namespace maquette::synthesis::bench {
 // The fixture's class table (NLCD's grouped classes -> painting classes, above).
 nlohmann::json zion_classes();
 
-// The example's transfer params (painting, classes, exclusions, scale) with the class table
-// `classes`.
-nlohmann::json zion_params(const nlohmann::json& classes = zion_classes());
+// The transfer params (painting, classes, exclusions, scale) with the class table `classes`;
+// `painting_classes`, when it holds "labels" (a class image, synthesis.transfer's), replaces the
+// 8 colour classes with it and its "exclude_classes".
+nlohmann::json zion_params(const nlohmann::json& classes = zion_classes(),
+                           const nlohmann::json& painting_classes = nlohmann::json::object());
 
-// The exemplar analysed with the class table `classes` (transfer_exemplar: cached per process).
+// The exemplar analysed with zion_params(classes, painting_classes) (transfer_exemplar: cached
+// per process).
 std::shared_ptr<const TransferExemplar> zion_exemplar(
-    const nlohmann::json& classes = zion_classes());
+    const nlohmann::json& classes = zion_classes(),
+    const nlohmann::json& painting_classes = nlohmann::json::object());
 
 // The painting classes, through the class table `classes`, of NLCD pixels [col0, col0 + width)
 // x [row0, ...) of the fixture's window (kUnknownLabel outside the raster or for unmapped

@@ -1,8 +1,11 @@
 #include "painting.h"
 
+#include <gdal_alg.h>
 #include <gdal_priv.h>
+#include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 
@@ -14,12 +17,74 @@
 namespace maquette::synthesis {
 namespace {
 
-std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what) {
+// `kinds`: GDAL_OF_RASTER, GDAL_OF_VECTOR or both.
+std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what,
+                                        unsigned kinds = GDAL_OF_RASTER) {
   GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
   if (!ds) throw Error(path + ": GDAL cannot open the " + what);
   return ds;
+}
+
+// Band 1 of `ds` as bytes; it must have the painting's size.
+std::vector<uint8_t> read_band(GDALDataset& ds, const std::string& path, int width, int height,
+                               const std::string& what) {
+  if (ds.GetRasterXSize() != width || ds.GetRasterYSize() != height)
+    throw Error(path + ": the " + what + " is " + std::to_string(ds.GetRasterXSize()) + " x " +
+                std::to_string(ds.GetRasterYSize()) + ", the painting " + std::to_string(width) +
+                " x " + std::to_string(height));
+  std::vector<uint8_t> out(size_t(width) * size_t(height));
+  if (ds.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, out.data(), width, height,
+                                    GDT_Byte, 0, 0, nullptr) != CE_None)
+    throw Error(path + ": GDAL cannot read the " + what);
+  return out;
+}
+
+// The polygons of `ds` (read_class_image's hand-drawn class image) burnt in file order into the
+// painting's pixels, their "class" attribute checked first.
+std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path, int width,
+                                        int height) {
+  if (ds.GetLayerCount() != 1)
+    throw Error(path + ": a class image's polygons are one layer, not " +
+                std::to_string(ds.GetLayerCount()));
+  OGRLayer* layer = ds.GetLayer(0);
+  const int field = layer->GetLayerDefn()->GetFieldIndex("class");
+  if (field < 0) throw Error(path + ": the class image's polygons have no attribute \"class\"");
+  // A String field would be read (and burnt) as atof's value: "forest" as 0, "7a" as 7.
+  const OGRFieldType type = layer->GetLayerDefn()->GetFieldDefn(field)->GetType();
+  const bool numeric = type == OFTInteger || type == OFTInteger64 || type == OFTReal;
+  for (const auto& feature : *layer) {
+    const std::string name = path + ": feature " + std::to_string(feature->GetFID());
+    const OGRGeometry* geometry = feature->GetGeometryRef();
+    const auto shape = geometry ? wkbFlatten(geometry->getGeometryType()) : wkbNone;
+    if (shape != wkbPolygon && shape != wkbMultiPolygon)
+      throw Error(name + " is " +
+                  (geometry ? std::string("a ") + geometry->getGeometryName() : "no geometry") +
+                  ", not a polygon");
+    const double value = feature->GetFieldAsDouble(field);
+    if (!numeric || !feature->IsFieldSetAndNotNull(field) || value != std::floor(value) ||
+        value < 0 || value >= kUnknownLabel)
+      throw Error(name + "'s class '" + feature->GetFieldAsString(field) +
+                  "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1) +
+                  (numeric ? ""
+                           : std::string(" (the attribute \"class\" is of type ") +
+                                 OGRFieldDefn::GetFieldTypeName(type) +
+                                 ": write the classes as numbers, not in quotes)"));
+  }
+  layer->ResetReading();
+  std::vector<uint8_t> out(size_t(width) * size_t(height), kUnknownLabel);
+  double pixels[6] = {0, 1, 0, 0, 0, 1};  // x the column, y the row downwards
+  char attribute[] = "ATTRIBUTE=class";
+  char* options[] = {attribute, nullptr};
+  OGRLayerH layers[] = {OGRLayer::ToHandle(layer)};
+  if (GDALRasterizeLayersBuf(out.data(), width, height, GDT_Byte, 0, 0, 1, layers, nullptr, pixels,
+                             nullptr, nullptr, 0, options, nullptr, nullptr) != CE_None)
+    throw Error(path + ": GDAL cannot rasterize the class image's polygons");
+  const auto outside = std::count(out.begin(), out.end(), kUnknownLabel);
+  if (outside > 0)
+    throw Error(path + ": " + std::to_string(outside) +
+                " painting pixels lie in no polygon of the class image");
+  return out;
 }
 
 // The class map through texture's majority filter, which filters a square tile with a ring
@@ -66,16 +131,13 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
 
 std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
                                const std::string& what) {
-  const auto ds = open_image(path, what);
-  if (ds->GetRasterXSize() != width || ds->GetRasterYSize() != height)
-    throw Error(path + ": the " + what + " is " + std::to_string(ds->GetRasterXSize()) + " x " +
-                std::to_string(ds->GetRasterYSize()) + ", the painting " + std::to_string(width) +
-                " x " + std::to_string(height));
-  std::vector<uint8_t> out(size_t(width) * size_t(height));
-  if (ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, out.data(), width, height,
-                                     GDT_Byte, 0, 0, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the " + what);
-  return out;
+  return read_band(*open_image(path, what), path, width, height, what);
+}
+
+std::vector<uint8_t> read_class_image(const std::string& path, int width, int height) {
+  const auto ds = open_image(path, "class image", GDAL_OF_RASTER | GDAL_OF_VECTOR);
+  if (ds->GetRasterCount() > 0) return read_band(*ds, path, width, height, "class image");
+  return rasterized_classes(*ds, path, width, height);
 }
 
 std::vector<uint8_t> segment_by_colour(const Exemplar& painting, int k) {

@@ -20,6 +20,16 @@ Exemplar read_painting(const std::string& path, const std::string& what = "paint
 std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
                                const std::string& what);
 
+// The painting's class image: a one-band 8-bit image of the painting's size (read_mask), or
+// polygons drawn by hand: a vector file GDAL reads (GeoJSON...) whose coordinates are painting
+// pixels (x the column, y the row downwards, (0, 0) the top-left corner of the top-left pixel)
+// with an integer attribute "class" in 0..254 on every feature. Each pixel takes the class of the
+// last polygon, in the file's order, that holds its centre (GDAL's rasterizer), so a region drawn
+// later is drawn over those before it. Throws maquette::Error naming the file when a feature has
+// no class, one out of range or not a number (a "class" written in quotes), when a feature is
+// not a polygon or multipolygon, or when a pixel lies in no polygon.
+std::vector<uint8_t> read_class_image(const std::string& path, int width, int height);
+
 // The radius, in painting pixels, of segment_by_colour's majority filter.
 inline constexpr int kClassSmoothingRadius = 4;
 

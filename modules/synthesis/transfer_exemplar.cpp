@@ -46,7 +46,7 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
                 std::to_string(scale) + ": " + std::to_string(kLevels) + " levels need at least " +
                 std::to_string(least) + " pixels a side");
   if (params.contains("labels")) {
-    e.labels = read_mask(params.at("labels").get<std::string>(), e.width, e.height, "class image");
+    e.labels = read_class_image(params.at("labels").get<std::string>(), e.width, e.height);
     for (const uint8_t l : e.labels)
       if (l == kUnknownLabel)
         throw Error(std::string(kOp) + ".labels: class " + std::to_string(l) +

@@ -20,8 +20,9 @@ nlohmann::json exemplar_params_schema() {
       {"labels",
        {{"type", "string"},
         {"description",
-         "hand-drawn class image (one 8-bit band, the painting's size, classes 0..254); else "
-         "classes by colour"}}},
+         "hand-drawn class image (one 8-bit band, the painting's size, classes 0..254; or "
+         "polygons in painting pixels, x right and y down, with an integer \"class\", the later "
+         "drawn over the earlier, e.g. GeoJSON); else classes by colour"}}},
       {"classes",
        {{"type", "integer"},
         {"minimum", 1},
