@@ -61,24 +61,25 @@ class Stretch {
 void place_samples(const MosaicFrame& frame, const std::vector<char>& wanted, HeightField& field) {
   const int64_t origin = int64_t(frame.origin()[0]);
   // Rows in parallel; a failing row throws the first failing row's error whatever the threads.
-  parallel_chunks(size_t(field.height), 1, [&](size_t row, size_t) {
-    const int r = int(row);
-    std::optional<Stretch> stretch;
-    int64_t first = 0;
-    for (int c = 0; c < field.width; ++c) {
-      const size_t v = field.index(c, r);
-      if (!wanted[v] || !std::isnan(field.east[v])) continue;
-      const int64_t pixel = origin + c;
-      // The stretch holding the pixel: its first column a multiple of kStretch.
-      const int64_t start = pixel - ((pixel % kStretch) + kStretch) % kStretch;
-      if (!stretch || start != first) {
-        first = start;
-        stretch.emplace(frame, origin, first, r);
+  parallel_chunks(size_t(field.height), 1, [&](size_t first_row, size_t last_row) {
+    for (int r = int(first_row); r < int(last_row); ++r) {
+      std::optional<Stretch> stretch;
+      int64_t first = 0;
+      for (int c = 0; c < field.width; ++c) {
+        const size_t v = field.index(c, r);
+        if (!wanted[v] || !std::isnan(field.east[v])) continue;
+        const int64_t pixel = origin + c;
+        // The stretch holding the pixel: its first column a multiple of kStretch.
+        const int64_t start = pixel - ((pixel % kStretch) + kStretch) % kStretch;
+        if (!stretch || start != first) {
+          first = start;
+          stretch.emplace(frame, origin, first, r);
+        }
+        const EastNorth2 p = stretch->smooth() ? stretch->quadratic(pixel - first)
+                                               : frame.local(frame.sample_lonlat(c, r));
+        field.east[v] = p[0];
+        field.north[v] = p[1];
       }
-      const EastNorth2 p = stretch->smooth() ? stretch->quadratic(pixel - first)
-                                             : frame.local(frame.sample_lonlat(c, r));
-      field.east[v] = p[0];
-      field.north[v] = p[1];
     }
   });
 }

@@ -34,7 +34,9 @@ class Locator {
 
   // The same for points laid out as lines of `per_line` points equally spaced (the cross
   // sections), their sample coordinates by line_samples; a point that fails from those is
-  // computed again, so that the errors are those of the points located one by one.
+  // computed again, so that the errors are those of the points located one by one (a point
+  // the quadratic places within kLineTolerance of the DEM's edge may pass where alone it would
+  // not).
   std::vector<SurfacePoint> lines(const std::vector<EastNorth2>& points, size_t per_line,
                                   const char* what) const {
     return located(points, per_line, what);
@@ -179,7 +181,6 @@ void add_stroke_constraints(const FeatureStroke& stroke, const MosaicFrame& fram
     }
   }
   const std::vector<SurfacePoint> across_located = locator.lines(across, m + 1, "cross section");
-  out.section.reserve(out.section.size() + across.size());
   for (size_t i = 0; i < across.size(); ++i)
     out.section.push_back({across_located[i], across_z[i], stroke.id});
 }
