@@ -2,7 +2,9 @@
 // (1024 x 1024) with one river 1 km long, its bed (the curve) 5 m below the terrain under it, banks
 // 28 m on each side, so about 40,000 unknowns in the cross sections' solve (the issue's "one
 // feature edit on a 1 M-sample region"); and the refined edits (1 to 3 levels finer) of a 150 m
-// river, banks 20 m on each side, on a 256 x 256 region. Times the whole step as the runner calls
+// river, banks 20 m on each side, on a 256 x 256 region; and many strokes in one edit (parallel
+// rivers in one GeoJSON, as a river network or a road net gives), whose time must grow with the
+// strokes as their unknowns do, not faster. Times the whole step as the runner calls
 // it, without reading or writing the store. Beside it, CGAL's ARAP deformation of the same
 // 1 M-sample region (the band's samples free, the curve's moved to our solve's heights), the ratio
 // printed.
@@ -30,9 +32,9 @@ using namespace maquette;
 
 struct Scene {
   Mosaic input, output;
-  VectorFeature river;
+  std::vector<VectorFeature> rivers;
   // Every sample's position (e, n) in metres on the site's tangent plane, row by row, and the
-  // river's curve from `start` to `end` there.
+  // first river's curve from `start` to `end` there.
   std::vector<std::array<double, 2>> samples;
   std::array<double, 2> start, end;
 };
@@ -43,9 +45,10 @@ double terrain(double e, double n) {
          3 * std::sin(2 * std::numbers::pi * e / 80) * std::cos(2 * std::numbers::pi * n / 110);
 }
 
-// A region of side x side samples of ~1.2 m (pixel level 23) and a river `length` m long, its
-// banks `bank` m from the curve, output `refine` levels finer.
-Scene make_scene(int side, double length, double bank, int refine) {
+// A region of side x side samples of ~1.2 m (pixel level 23) and `rivers` parallel rivers
+// `length` m long, 3 x `bank` m apart, their banks `bank` m from their curves, output `refine`
+// levels finer.
+Scene make_scene(int side, double length, double bank, int refine, int rivers = 1) {
   const int pixel_level = 23, cell_level = pixel_level - int(std::log2(side));
   const CellId cell = default_grid().cell_from_point({-113.0, 37.2}, cell_level);
   const LonLat site = default_grid().centre(cell);
@@ -77,24 +80,31 @@ Scene make_scene(int side, double length, double bank, int refine) {
     return GeoPoint{lon, lat};
   };
   const double heading = 30 * std::numbers::pi / 180;
-  s.river.id = 1;
-  s.river.geometry.type = GeometryType::LineString;
-  const double e0 = -0.433 * length, n0 = -0.25 * length;  // centred on the site
-  s.start = {e0, n0};
-  s.end = {e0 + length * std::cos(heading), n0 + length * std::sin(heading)};
-  s.river.geometry.lines = {{lonlat(s.start[0], s.start[1]), lonlat(s.end[0], s.end[1])}};
-  // The curve is the bed, 5 m below the terrain under it (a profile every metre), the banks at
-  // the terrain's height (dz 5 m): the curve's elevation holds at offset 0.
-  json profile = json::array();
-  for (double d = 0; d < length + 1; d += 1) {
-    const double along = std::min(d, length);
-    profile.push_back(
-        {along, terrain(e0 + along * std::cos(heading), n0 + along * std::sin(heading)) - 5});
+  const std::array<double, 2> along = {std::cos(heading), std::sin(heading)},
+                              across = {-along[1], along[0]};
+  for (int k = 0; k < rivers; ++k) {
+    // Centred on the site, the rivers side by side across it.
+    const double shift = 3 * bank * (k - 0.5 * (rivers - 1));
+    const double e0 = -0.433 * length + shift * across[0], n0 = -0.25 * length + shift * across[1];
+    VectorFeature river;
+    river.id = k + 1;
+    river.geometry.type = GeometryType::LineString;
+    const std::array<double, 2> a = {e0, n0}, b = {e0 + length * along[0], n0 + length * along[1]};
+    if (k == 0) s.start = a, s.end = b;
+    river.geometry.lines = {{lonlat(a[0], a[1]), lonlat(b[0], b[1])}};
+    // The curve is the bed, 5 m below the terrain under it (a profile every metre), the banks at
+    // the terrain's height (dz 5 m): the curve's elevation holds at offset 0.
+    json profile = json::array();
+    for (double d = 0; d < length + 1; d += 1) {
+      const double t = std::min(d, length);
+      profile.push_back({t, terrain(e0 + t * along[0], n0 + t * along[1]) - 5});
+    }
+    river.attributes = {
+        {"tool", "feature"},
+        {"profile", profile},
+        {"cross_section", {{-bank, 5}, {-0.3 * bank, 0}, {0.3 * bank, 0}, {bank, 5}}}};
+    s.rivers.push_back(std::move(river));
   }
-  s.river.attributes = {
-      {"tool", "feature"},
-      {"profile", profile},
-      {"cross_section", {{-bank, 5}, {-0.3 * bank, 0}, {0.3 * bank, 0}, {bank, 5}}}};
   return s;
 }
 
@@ -103,7 +113,9 @@ double process_cpu_ms() { return 1e3 * double(std::clock()) / CLOCKS_PER_SEC; }
 
 // deform.features's step on the scene, as the runner calls it: s.output's dem is the edit.
 void edit(Scene& s) {
-  s.input.features["strokes"] = {&s.river};  // the copy's own feature
+  auto& strokes = s.input.features["strokes"];  // the copy's own features
+  strokes.clear();
+  for (const VectorFeature& river : s.rivers) strokes.push_back(&river);
   const json params = {{"energy_weight", 0.01}, {"subdivision", "adaptive"}};  // the defaults
   const auto op = deform::make_features();
   static_cast<const RegionOperator&>(*op).run({&default_grid(), &params, nullptr}, s.input,
@@ -134,6 +146,28 @@ BENCHMARK(one_feature_edit)
     ->Args({256, 150, 20, 1})
     ->Args({256, 150, 20, 2})
     ->Args({256, 150, 20, 3})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
+
+// state.range: strokes in one edit (parallel rivers 100 m long, banks 5 m, 15 m apart, on the
+// 1 M-sample region). The time per stroke should stay about flat as the strokes grow: each adds
+// its own unknowns and constraints, not work over the others'.
+void many_strokes_edit(benchmark::State& state) {
+  Scene s = make_scene(1024, 100, 5, 0, int(state.range(0)));
+  for (auto _ : state) {
+    edit(s);
+    benchmark::DoNotOptimize(s.output.layers.at("dem").data());
+  }
+  state.counters["s_per_stroke"] =
+      benchmark::Counter(double(state.range(0)) * double(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(many_strokes_edit)
+    ->Name("DeformFeaturesStrokes")
+    ->Arg(1)
+    ->Arg(8)
+    ->Arg(64)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime();
 
