@@ -1,7 +1,10 @@
 #include "render/panorama_strips.h"
 
+#include <tbb/global_control.h>
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -74,9 +77,14 @@ PanoramaWriter::PanoramaWriter(const std::string& out, int width, int height, bo
     const auto bands = guide_bands(nullptr, land_cover, cast_shadow);
     // DEFLATE at its fastest level: at GDAL's default (6) the guides' compression took ~4.4 s
     // of a 4 MP picture's ~6 s, ten times its rendering; level 1 takes ~1.5 s for a file 3.6 %
-    // larger (benchmarks/README.md, "The command's files").
+    // larger (benchmarks/README.md, "The command's files"). Its blocks compressed by as many
+    // threads as the caller allows oneTBB (the same bytes for any count).
     CPLStringList options = geotiff_creation_options(true);
     options.SetNameValue("ZLEVEL", "1");
+    options.SetNameValue("NUM_THREADS",
+                         std::to_string(tbb::global_control::active_value(
+                                            tbb::global_control::max_allowed_parallelism))
+                             .c_str());
     f.guides.reset(driver->Create(f.guides_file.temp_path().c_str(), width, height,
                                   int(bands.size()), GDT_Float64, options.List()));
     if (!f.guides) gdal_error("cannot create " + f.guides_file.temp_path());
