@@ -10,8 +10,8 @@
 
 namespace maquette::deform {
 
-// Within this many metres of each sample's own position (measured on the benchmark's region
-// near 37 degrees N, 1.2 m samples: 2.8e-9 m at most).
+// Within this many metres of each sample's own position (DeformSeams.
+// SamplePositionsAsEachSampleAlone checks the positions against the grid's pixel centres).
 inline constexpr double kPositionTolerance = 1e-7;
 
 // Fills field.east and field.north of every sample v with wanted[v] (row-major as the field)

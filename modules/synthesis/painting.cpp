@@ -65,9 +65,9 @@ std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path
     if (!numeric || !feature->IsFieldSetAndNotNull(field) || value != std::floor(value) ||
         value < 0 || value >= kUnknownLabel)
       throw Error(name + "'s class '" + feature->GetFieldAsString(field) +
-                  "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1) +
-                  (numeric ? ""
-                           : std::string(" (the attribute \"class\" is of type ") +
+                  (numeric ? "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1)
+                           : std::string("' is written as text (the attribute \"class\" is of "
+                                         "type ") +
                                  OGRFieldDefn::GetFieldTypeName(type) +
                                  ": write the classes as numbers, not in quotes)"));
   }

@@ -89,12 +89,12 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
       message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
                       ", " +
                       polygon(R"({"class": "7a"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")))
-          .find("feature 0's class '2' is not an integer in 0..254 (the attribute \"class\" is of "
-                "type String"),
+          .find("feature 0's class '2' is written as text (the attribute \"class\" is of type "
+                "String"),
       std::string::npos);
   EXPECT_NE(message(geojson(polygon(R"({"class": "forest"})",
                                     "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]")))
-                .find("class 'forest' is not an integer"),
+                .find("class 'forest' is written as text"),
             std::string::npos);
   // A line drawn by mistake: GDAL would burn its path.
   EXPECT_NE(message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
