@@ -78,7 +78,9 @@ PanoramaWriter::PanoramaWriter(const std::string& out, int width, int height, bo
     // DEFLATE at its fastest level: at GDAL's default (6) the guides' compression took ~4.4 s
     // of a 4 MP picture's ~6 s, ten times its rendering; level 1 takes ~1.5 s for a file 3.6 %
     // larger (benchmarks/README.md, "The command's files"). Its blocks compressed by as many
-    // threads as the caller allows oneTBB (the same bytes for any count).
+    // threads as the caller allows oneTBB (the same bytes for any count; GDAL writes the blocks in
+    // order). With 1, GDAL compresses on the calling thread; with more, in strips its pool may
+    // compress a strip's blocks while oneTBB draws the next, up to twice that many threads busy.
     CPLStringList options = geotiff_creation_options(true);
     options.SetNameValue("ZLEVEL", "1");
     options.SetNameValue("NUM_THREADS",
