@@ -1,11 +1,11 @@
 #include "sample_positions.h"
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 
 #include "core/parallel_chunks.h"
+#include "three_point_quadratic.h"
 
 namespace maquette::deform {
 namespace {
@@ -23,11 +23,9 @@ class Stretch {
       if (!centre) return std::nullopt;
       return frame.local(*centre);
     };
-    for (size_t k = 0; k < 3; ++k) {
-      const auto p = at(int64_t(k) * kStretch / 2);
-      if (!p) return;
-      node_[k] = *p;
-    }
+    const auto p0 = at(0), p1 = at(kStretch / 2), p2 = at(kStretch);
+    if (!p0 || !p1 || !p2) return;
+    quadratic_ = {double(kStretch / 2), double(kStretch), *p0, *p1, *p2};
     for (const int64_t offset : {kStretch / 4, kStretch - kStretch / 4}) {
       const auto p = at(offset);
       if (!p) return;
@@ -42,17 +40,10 @@ class Stretch {
   bool smooth() const { return smooth_; }
 
   // The quadratic at `offset` face pixels from the stretch's first.
-  EastNorth2 quadratic(int64_t offset) const {
-    const double x = double(offset), h = double(kStretch / 2);
-    // Lagrange's weights of the nodes at 0, h and 2h.
-    const double l0 = (x - h) * (x - 2 * h) / (2 * h * h), l1 = x * (2 * h - x) / (h * h),
-                 l2 = x * (x - h) / (2 * h * h);
-    return {l0 * node_[0][0] + l1 * node_[1][0] + l2 * node_[2][0],
-            l0 * node_[0][1] + l1 * node_[1][1] + l2 * node_[2][1]};
-  }
+  EastNorth2 quadratic(int64_t offset) const { return quadratic_(double(offset)); }
 
  private:
-  std::array<EastNorth2, 3> node_{};
+  ThreePointQuadratic quadratic_{};
   bool smooth_ = false;
 };
 
