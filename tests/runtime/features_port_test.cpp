@@ -21,7 +21,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,6 +31,7 @@
 #include "run_cli.h"
 #include "store/store.h"
 #include "test_util.h"
+#include "vector/ogr_source.h"
 
 namespace maquette {
 namespace {
@@ -200,21 +200,14 @@ struct Oracle {
   std::map<int64_t, double> centre_cell_distance;  // by feature id
 };
 
-GDALDatasetUniquePtr open_geojson(const std::string& path) {
-  GDALAllRegister();
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR));
-  if (!ds) throw std::runtime_error("GDAL cannot open " + path);
-  return ds;
-}
-
-// The strokes written as GeoJSON in `dir` and read back through GDAL's own reader. Under
-// ThreadSanitizer, GDAL's driver manager takes its two mutexes in both orders inside Open and the
-// report's stack ends at open_geojson's caller, this function, which scripts/tsan-suppressions.txt
-// names.
-GDALDatasetUniquePtr open_strokes(const test::TempDir& dir) {
+// The strokes written as GeoJSON in `dir` and read back through GDAL's own reader
+// (formats/vector's open_vector). Under ThreadSanitizer, GDAL's driver manager takes its two
+// mutexes in both orders inside Open and the report's stack ends at open_vector or its caller,
+// this function: scripts/tsan-suppressions.txt names both.
+VectorDataset open_strokes(const test::TempDir& dir) {
   const std::string path = dir.file("strokes.geojson");
   std::ofstream(path) << strokes().collection.dump();
-  return open_geojson(path);
+  return open_vector(path);
 }
 
 Oracle compute_oracle(GDALDataset& ds) {
@@ -258,7 +251,7 @@ struct StoreDir {
 const Oracle& oracle() {
   static const Oracle o = [] {
     const test::TempDir dir;
-    const GDALDatasetUniquePtr ds = open_strokes(dir);
+    const VectorDataset ds = open_strokes(dir);
     return compute_oracle(*ds);
   }();
   return o;
@@ -520,8 +513,7 @@ TEST(FeaturesPort, PolygonSetOfSubnormalHeightAgreesWithItsRings) {
 // distance_m from a point against GEOS on the plane, for every stroke and points around.
 TEST(FeaturesPort, PointDistancesMatchGeos) {
   const test::TempDir dir;
-  const GDALDatasetUniquePtr ds = open_strokes(dir);
-  ASSERT_TRUE(ds);
+  const VectorDataset ds = open_strokes(dir);
   Lcg rng;
   int checked = 0;
   for (const auto& f : *ds->GetLayer(0)) {
