@@ -203,6 +203,14 @@ struct PositionMemo {
 // sample it is (a skirt's vertex, the ring sample it hangs from).
 void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo) {
   const SceneTile& tile = scene.tiles[index];
+  // A tile's vertices are consecutive, up to the next tile's first: none asked, nothing to do
+  // (each strip of a picture asks again, of every tile).
+  const size_t end = index + 1 < scene.tiles.size() ? scene.tiles[index + 1].first_vertex
+                                                    : scene.attributed.size();
+  if (std::find(scene.attributed.begin() + std::ptrdiff_t(tile.first_vertex),
+                scene.attributed.begin() + std::ptrdiff_t(end),
+                uint8_t(1)) == scene.attributed.begin() + std::ptrdiff_t(end))
+    return;
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
   const auto stamp = uint32_t(index + 1);

@@ -14,9 +14,9 @@
 // are read and their shares of the mesh counted in parallel, then each written in place (no copies
 // joined) in their cell order: the mesh is the same whatever the threads. The vertices' other
 // attributes (lon/lat, plane point, altitude, normal) are made afterwards by attribute_vertices,
-// for the vertices of the triangles a picture shows only (on the render test's low view of its
-// hills 17,651 of 376,002: PanoramaCli.ShownVerticesAttributesAreEveryVertexs prints it): the
-// tiles' heights and sample places are kept for it.
+// for the vertices of the triangles a picture shows only (a small share on an oblique view:
+// PanoramaCli.ShownVerticesAttributesAreEveryVertexs prints its count): the tiles' heights and
+// sample places are kept for it.
 #pragma once
 
 #include <cstdint>

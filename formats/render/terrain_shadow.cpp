@@ -59,7 +59,7 @@ std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const
   heights_grid.height = int(std::ceil((north - south) / spacing)) + 1;
   heights_grid.z.assign(size_t(heights_grid.width) * size_t(heights_grid.height), NAN);
 
-  const EllipsoidalHeights heights = ellipsoidal_heights(dem);
+  const EllipsoidalHeights& heights = *scene.heights;  // the scene's datum, read once
   tbb::enumerable_thread_specific<std::optional<LayerSampler>> samplers;
   tbb::parallel_for(0, heights_grid.height, [&](int row) {
     auto& sampler = samplers.local();
