@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -323,6 +324,7 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
   f.depth.resize(n);
   f.b1.resize(n);
   f.b2.resize(n);
+  std::vector<size_t> culled(size_t(bands), 0);
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
     const size_t first = size_t(row0 - top) * size_t(w), count = size_t(row1 - row0) * size_t(w);
@@ -336,7 +338,10 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     }
     for (const uint32_t b : band_blocks[size_t(band)]) {
       const Block& block = blocks[b];
-      if (hidden(f, row0, row1, block.x0, block.x1, block.y0, block.y1, block.nearest)) continue;
+      if (hidden(f, row0, row1, block.x0, block.x1, block.y0, block.y1, block.nearest)) {
+        ++culled[size_t(band)];
+        continue;
+      }
       for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
         const uint32_t* i = &mesh.indices[3 * t];
         const ScreenVertex &v0 = screen[i[0]], &v1 = screen[i[1]], &v2 = screen[i[2]];
@@ -345,6 +350,7 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
       }
     }
   });
+  f.culled_blocks = std::accumulate(culled.begin(), culled.end(), size_t(0));
   return f;
 }
 

@@ -58,6 +58,9 @@ struct Fragments {
   // Perspective-correct barycentric weights of the triangle's 2nd and 3rd vertex at the pixel's
   // centre (the 1st's is 1 - b1 - b2).
   FreshArray<float> b1, b2;
+  // Blocks of the mesh left out of a band of rows as hidden behind nearer pixels (one count a
+  // band a block): what the occlusion test saved, reported so that a test can see it work.
+  size_t culled_blocks = 0;
 };
 
 // Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn, into
