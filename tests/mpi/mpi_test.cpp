@@ -611,7 +611,7 @@ void write_painting(const fs::path& file) {
     for (int x = 0; x < w; ++x) {
       const int noise = int((uint32_t(x * 7919 + y * 104729) * 2654435761u) >> 27);  // 0..31
       const bool right = x >= w / 2;
-      const char rgb[3] = {char(right ? 40 + 2 * (x % 9) + noise : 190 + 3 * (y % 13) + noise),
+      const char rgb[3] = {char(right ? 40 + 2 * (x % 9) + noise : 180 + 2 * (y % 13) + noise),
                            char(right ? 110 + noise : 170 + noise), char(right ? 50 : 60 + noise)};
       out.write(rgb, 3);
     }
@@ -692,7 +692,7 @@ TEST(MpiSynthesis, TransferGivesTheSameBitsOnTwoRanksAndOnAShiftedWindow) {
                          {"params",
                           {{"painting", (base / "painting.ppm").string()},
                            {"classes", 2},
-                           {"landcover_classes", {{"1", 0}, {"2", 1}}},
+                           {"landcover_classes", {{"0", 0}, {"1", 1}, {"2", 1}}},
                            {"exemplar_scale", 1}}}};
   const auto transfer_run = [&](const std::vector<CellId>& cells, int ranks) {
     const fs::path dir = new_dir();

@@ -111,9 +111,9 @@ class Seams : public ::testing::Test {
     return data.outputs.at("source");
   }
 
-  // One synthesis of plane window `out` (the equatorial row's pixels at kPixelLevel: columns
-  // modulo 4 faces, face O P Q R by column), its guides laid here: the exemplar's source of each
-  // pixel as (column, row).
+  // One synthesis of plane window `out` (pixels at kPixelLevel: the equatorial row's columns
+  // modulo 4 faces, face O P Q R by column; N above O and S below it), its guides laid here: the
+  // exemplar's source of each pixel as (column, row).
   static std::vector<std::array<int, 2>> whole(const PixelRect& out) {
     const Grid& grid = default_grid();
     const auto table = class_table(params_->at("landcover_classes"), "seams");
@@ -124,8 +124,11 @@ class Seams : public ::testing::Test {
     for (int64_t r = g.rect.row0; r < g.rect.row0 + g.rect.height; ++r)
       for (int64_t c = g.rect.col0; c < g.rect.col0 + g.rect.width; ++c) {
         const int64_t x = (c % g.col_period + g.col_period) % g.col_period;
-        const FaceCoord pixel{kFaceO + int(x / kFace), x % kFace, r};
-        EXPECT_TRUE(r >= 0 && r < kFace);
+        const bool row = r >= 0 && r < kFace;
+        EXPECT_TRUE(row || (x < kFace && r >= -kFace && r < 2 * kFace));
+        const FaceCoord pixel = row     ? FaceCoord{kFaceO + int(x / kFace), x % kFace, r}
+                                : r < 0 ? FaceCoord{kFaceN, x, r + kFace}
+                                        : FaceCoord{kFaceS, x, r - kFace};
         g.labels.push_back(
             painting_class(table, float(land_cover(pixel_centre(grid, pixel, kPixelLevel)))));
       }
@@ -232,6 +235,19 @@ TEST_F(Seams, CellsOnBothSidesOfTheAntimeridianEqualOneSynthesisAcrossIt) {
                       CellId::FromFaceColRow(kFaceR, kLevel, (1u << kLevel) - 1, kRow), compared),
             0u);
   EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, 0, kRow), compared),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, CellsOnBothSidesOfNsEdgeWithOEqualOneSynthesisAcrossIt) {
+  // N's last 32 rows above O's first 32 (N is laid unturned above O).
+  const PixelRect window{int64_t(kRow) * kSize + 70, -32, 96, 64};
+  const auto expected = whole(window);
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, expected,
+                      CellId::FromFaceColRow(kFaceN, kLevel, kRow, (1u << kLevel) - 1), compared),
+            0u);
+  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, kRow, 0), compared),
             0u);
   EXPECT_EQ(compared, size_t(window.width * window.height));
 }
