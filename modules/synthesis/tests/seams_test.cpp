@@ -166,7 +166,7 @@ class Seams : public ::testing::Test {
   static inline json* params_ = nullptr;
 };
 
-TEST(FacePlane, LaysTheRowAndThePolarFacesAsTheGridsTableSays) {
+TEST(FacePlaneSeams, LaysTheRowAndThePolarFacesAsTheGridsTableSays) {
   const FacePlane plane(default_grid());
   EXPECT_EQ(plane.ring_faces(), 4);
   const std::array<std::array<int64_t, 2>, 6> expected = {
@@ -190,7 +190,7 @@ std::array<std::array<int64_t, 2>, 2> halo_places(CellId cell, int col, int row)
            {(laid[0] % period + period) % period, laid[1]}}};
 }
 
-TEST(FacePlane, TheStoresHaloLaysANeighbourWhereThePlaneDoes) {
+TEST(FacePlaneSeams, TheStoresHaloLaysANeighbourWhereThePlaneDoes) {
   const uint32_t last = (1u << kLevel) - 1;
   struct Case {
     CellId cell;
