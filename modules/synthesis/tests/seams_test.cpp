@@ -93,20 +93,21 @@ class Seams : public ::testing::Test {
     delete params_;
   }
 
-  // The operator's `source` output on `cell`, its land cover sampled with the store's halo.
-  static Tile<float> transfer(CellId cell) {
+  // The operator's `source` output on `cell` (tiles of `size`), its land cover sampled with the
+  // store's halo.
+  static Tile<float> transfer(CellId cell, int size) {
     const Grid& grid = default_grid();
     CellContext ctx;
     ctx.cell = cell;
-    ctx.tile_size = kSize;
+    ctx.tile_size = size;
     ctx.grid = &grid;
     ctx.params = params_;
     CellData data;
     data.inputs.emplace("landcover",
-                        assemble_halo(grid, cell, kSize, operator_->spec().halo, [&](CellId c) {
-                          return std::optional(sample_field(grid, c, kSize, land_cover));
+                        assemble_halo(grid, cell, size, operator_->spec().halo, [&](CellId c) {
+                          return std::optional(sample_field(grid, c, size, land_cover));
                         }));
-    data.outputs.emplace("source", Tile<float>::uninitialized(kSize, 2));
+    data.outputs.emplace("source", Tile<float>::uninitialized(size, 2));
     static_cast<const CellOperator*>(operator_)->run(ctx, data);
     return data.outputs.at("source");
   }
@@ -140,18 +141,19 @@ class Seams : public ::testing::Test {
     return out_src;
   }
 
-  // Pixels of `window` (plane, columns modulo 4 faces) lying in `cell` whose source differs
-  // between the cell's transfer and the window's synthesis; `compared` counts those in both.
+  // Pixels of `window` (plane, columns modulo 4 faces) lying in `cell` (tiles of `size`) whose
+  // source differs between the cell's transfer and the window's synthesis; `compared` counts
+  // those in both.
   static size_t differing(const PixelRect& window, const std::vector<std::array<int, 2>>& expected,
-                          CellId cell, size_t& compared) {
-    const Tile<float> source = transfer(cell);
-    const auto first = FacePlane(default_grid()).tile_pixel(cell, kSize, 0, 0);
+                          CellId cell, size_t& compared, int size = kSize) {
+    const Tile<float> source = transfer(cell, size);
+    const auto first = FacePlane(default_grid()).tile_pixel(cell, size, 0, 0);
     size_t n = 0;
     for (int64_t r = 0; r < window.height; ++r)
       for (int64_t c = 0; c < window.width; ++c) {
         const int64_t col = ((window.col0 + c) % (4 * kFace) + 4 * kFace) % (4 * kFace) - first[0];
         const int64_t row = window.row0 + r - first[1];
-        if (col < 0 || col >= kSize || row < 0 || row >= kSize) continue;
+        if (col < 0 || col >= size || row < 0 || row >= size) continue;
         ++compared;
         const auto& e = expected[size_t(r * window.width + c)];
         n += source.at(int(col), int(row), 0) != float(e[0]) ||
@@ -224,6 +226,16 @@ TEST_F(Seams, CellsOnBothSidesOfAnEquatorialEdgeEqualOneSynthesisAcrossIt) {
   EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceP, kLevel, 0, kRow), compared),
             0u);
   EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, ACellOfAnotherTilingEqualsTheSynthesisAcrossTheEdge) {
+  // P's first cell one level coarser, tiles of 512: the same pixels, another tiling.
+  const PixelRect window{kFace - 96, int64_t(kRow) * kSize + 40, 192, 64};
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, whole(window),
+                      CellId::FromFaceColRow(kFaceP, kLevel - 1, 0, kRow / 2), compared, 2 * kSize),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height / 2));
 }
 
 TEST_F(Seams, CellsOnBothSidesOfTheAntimeridianEqualOneSynthesisAcrossIt) {
