@@ -1,10 +1,11 @@
 // Seamless across rHEALPix face edges (issue 18): the faces' plane (core/face_plane.h) lays the
 // faces where the grid's table says and where the store's halo puts a neighbour's pixels; then
-// synthesis.transfer's cells on both sides of the edge between O and P (longitude -90) and of the
-// antimeridian (R's right edge, O's left) against one synthesis of a window across the edge,
-// computed here in the plane laid by hand (O P Q R left to right, the row's columns modulo its
-// width): the same sources, pixel for pixel. A small synthetic painting and a land cover that is
-// a function of longitude and latitude.
+// synthesis.transfer's cells on both sides of the edge between O and P (longitude -90), of the
+// antimeridian (R's right edge, O's left) and of N's edge with O, and a cell of another tiling,
+// against one synthesis of a window across the edge computed here in the plane laid by hand (O P
+// Q R left to right, the row's columns modulo its width, N above O): the same sources, pixel for
+// pixel. A small synthetic painting and a land cover that is a function of longitude and
+// latitude. A column period that would break each level's parity is refused.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -18,6 +19,7 @@
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
 #include "../transfer_params.h"
+#include "core/error.h"
 #include "core/face_plane.h"
 #include "core/halo.h"
 #include "core/splitmix64.h"
@@ -262,6 +264,17 @@ TEST_F(Seams, CellsOnBothSidesOfNsEdgeWithOEqualOneSynthesisAcrossIt) {
   EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, kRow, 0), compared),
             0u);
   EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, RefusesAColumnPeriodThatIsNoMultipleOf16) {
+  const PixelRect out{0, 0, 16, 16};
+  TargetGuides g;
+  g.rect = {-200, -200, 416, 416};
+  g.labels.assign(size_t(g.rect.width) * size_t(g.rect.height), 0);
+  g.col_period = 4 * kFace + 8;  // each level's parity would disagree beyond it
+  EXPECT_THROW(synthesize(transfer_exemplar(*params_)->pyramid, g, {}, out), Error);
+  g.col_period = 4 * kFace;
+  EXPECT_NO_THROW(synthesize(transfer_exemplar(*params_)->pyramid, g, {}, out));
 }
 
 }  // namespace
