@@ -155,8 +155,8 @@ struct Around {
 class Corrector {
  public:
   Corrector(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p, int level,
-            int k)
-      : e_(e), g_(g), p_(p), level_(level), k_(k) {}
+            int k, int64_t col_period)
+      : e_(e), g_(g), p_(p), level_(level), k_(k), col_period_(col_period) {}
 
   // The best candidate for pixel (col, row) given the current state and the pass's snapshot
   // (packed coordinates, see corrected()).
@@ -223,8 +223,9 @@ class Corrector {
     for (const int32_t c : shifted)
       for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
     const std::vector<int32_t>& pool = start_pool(e_, label);
+    const int64_t hashed_col = wrapped_col(col, col_period_);
     for (uint64_t j = 0; j < 2; ++j)
-      add(pool[pixel_hash(col, row, level_, p_.seed, salt + j) % pool.size()]);
+      add(pool[pixel_hash(hashed_col, row, level_, p_.seed, salt + j) % pool.size()]);
 
     // A candidate of the pixel's own label beats any other (the pool's random candidates offer
     // one whenever the exemplar has that label); among equals the least cost wins.
@@ -234,7 +235,8 @@ class Corrector {
     for (size_t i = 0; i < n; ++i) {
       const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
       if (winner_fits && !fits) continue;
-      const double base = this->cost(candidates[i], feature_for(candidates[i]), around, col, row);
+      const double base =
+          this->cost(candidates[i], feature_for(candidates[i]), around, col, row, hashed_col);
       const double cost =
           i < coherent ? base : base * (1.0 + p_.coherence) + p_.w_usage * usage(candidates[i]);
       if (cost < least || (fits && !winner_fits))
@@ -244,8 +246,9 @@ class Corrector {
   }
 
  private:
+  // hashed_col: col as the hashes read it (wrapped_col).
   double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const Around& around,
-              int64_t col, int64_t row) const {
+              int64_t col, int64_t row, int64_t hashed_col) const {
     double colour = 0;
     for (int i = 0; i < kFeatureDims; ++i) {
       const double d =
@@ -270,7 +273,7 @@ class Corrector {
       reused +=
           int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
     const uint64_t h =
-        pixel_hash(col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
+        pixel_hash(hashed_col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
                    kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
                        uint64_t(cy >> kSpreadRegionShift) << 20);
     const double spread = double(h >> 11) * 0x1.0p-53;  // [0, 1)
@@ -288,28 +291,30 @@ class Corrector {
   const LevelGuides& g_;
   const SynthesisParams& p_;
   int level_, k_;
+  int64_t col_period_;  // at this level
 };
 
 State initial_state(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
-                    int level, const PixelRect& rect) {
+                    int level, int64_t col_period, const PixelRect& rect) {
   State s(rect);
   for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
     for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
       const std::vector<int32_t>& pool = start_pool(e, g.labels[g.index(col, row)]);
-      s.at(col, row) = pool[pixel_hash(col, row, level, p.seed, 0) % pool.size()];
+      s.at(col, row) =
+          pool[pixel_hash(wrapped_col(col, col_period), row, level, p.seed, 0) % pool.size()];
     }
   return s;
 }
 
 // Each pixel: its parent's exemplar pixel doubled, offset by the child's place, jittered.
 State upsampled(const State& coarse, const ExemplarLevel& coarse_e, const ExemplarLevel& e,
-                const SynthesisParams& p, int level, const PixelRect& rect) {
+                const SynthesisParams& p, int level, int64_t col_period, const PixelRect& rect) {
   State s(rect);
   const uint64_t span = uint64_t(2 * p.jitter + 1);
   for (int64_t row = rect.row0; row < rect.row0 + rect.height; ++row)
     for (int64_t col = rect.col0; col < rect.col0 + rect.width; ++col) {
       const int32_t parent = coarse.at(col >> 1, row >> 1);
-      const uint64_t h = pixel_hash(col, row, level, p.seed, 1);
+      const uint64_t h = pixel_hash(wrapped_col(col, col_period), row, level, p.seed, 1);
       const int jx = int((h & 0xffffffffu) % span) - p.jitter,
                 jy = int((h >> 32) % span) - p.jitter;
       const int x = 2 * (parent % coarse_e.width) + int(col & 1) + jx;
@@ -323,8 +328,8 @@ State upsampled(const State& coarse, const ExemplarLevel& coarse_e, const Exempl
 constexpr std::array<std::array<int, 2>, kSubPasses> kParities = {{{0, 0}, {1, 1}, {0, 1}, {1, 0}}};
 
 State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
-                int level, int k, const PassPlan& plan, int pass) {
-  const Corrector corrector(e, g, p, level, k);
+                int level, int k, int64_t col_period, const PassPlan& plan, int pass) {
+  const Corrector corrector(e, g, p, level, k, col_period);
   // The state at the start of the pass as packed coordinates x | y << 16 (the reuse penalty
   // compares coordinates many times per pixel: no divisions there).
   State snapshot = state;
@@ -369,18 +374,22 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
   if (params.vote_radius < 0 || params.vote_radius > kVoteRadius)
     throw Error("synthesis: vote_radius " + std::to_string(params.vote_radius) + ": must be 0 .. " +
                 std::to_string(kVoteRadius));
+  if (guides.col_period < 0 || guides.col_period % (int64_t(1) << kLevels) != 0)
+    throw Error("synthesis: col_period " + std::to_string(guides.col_period) +
+                ": must be a multiple of " + std::to_string(1 << kLevels));
   const auto plans = plan_levels(out);
   State state({});
   for (int l = kLevels - 1; l >= 0; --l) {
     const LevelPlan& plan = plans[size_t(l)];
     const ExemplarLevel& e = pyramid.levels[size_t(l)];
     const LevelGuides g = level_guides(guides, l, plan.start);
+    const int64_t period = guides.col_period >> l;
     state = l == kLevels - 1
-                ? initial_state(e, g, params, l, plan.start)
-                : upsampled(state, pyramid.levels[size_t(l) + 1], e, params, l, plan.start);
+                ? initial_state(e, g, params, l, period, plan.start)
+                : upsampled(state, pyramid.levels[size_t(l) + 1], e, params, l, period, plan.start);
     for (int pass = 0; pass < kPasses; ++pass)
-      state =
-          corrected(std::move(state), e, g, params, l, pyramid.k, plan.passes[size_t(pass)], pass);
+      state = corrected(std::move(state), e, g, params, l, pyramid.k, period,
+                        plan.passes[size_t(pass)], pass);
     if (l == 0) {
       State voted(out);
       voted.src = vote(e,

@@ -59,7 +59,19 @@
 //
 // So each output pixel is a function of its global pixel coordinates, the guides within
 // synthesis_halo() pixels of it, the exemplar and the parameters: a window computed with its halo
-// equals the whole image cropped to it, bit for bit.
+// equals the whole image cropped to it, bit for bit. With TargetGuides::col_period P, columns c
+// and c + P are one place: every hash reads the column modulo the level's period (P >> level),
+// so a window at c + P equals the window at c given the same guides (across the antimeridian).
+//
+// The coordinates are a plane's: those of one grid face, or the faces laid unturned in one plane
+// (core/face_plane.h, as synthesis.transfer does). The output is seamless where the guides the
+// caller gives around a window are the plane's own pixels at those coordinates: the store's halo
+// (core/halo.h) lays a neighbour face as it meets the cell's face, so across the edges between
+// equatorial faces, the antimeridian, and each polar face's edge with the equatorial face it is
+// laid against. Across a polar face's other three edges the neighbour is turned in the cell's
+// halo: the two sides are synthesized at different plane coordinates, each consistent for any
+// tiling of its own face, but a seam runs along the edge (as it does within synthesis_halo() of
+// a cube corner, where the halo's corner quadrant is folded from two faces).
 #pragma once
 
 #include <cstdint>
@@ -117,6 +129,9 @@ struct TargetGuides {
   std::vector<float> altitude;  // the same, or empty
   std::vector<float> distance;  // the same, or empty
   std::vector<float> depth;     // the same, or empty
+  // Output columns c and c + col_period are one place (0: none): a multiple of 2^kLevels, where
+  // the caller gives the same guides.
+  int64_t col_period = 0;
 };
 
 // Pixels of halo the guides need around an output window, at the output's resolution.
@@ -125,8 +140,8 @@ int synthesis_halo();
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
 // exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by
 // synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
-// maquette::Error when the guides do not cover it or params.vote_radius is outside
-// 0 .. kVoteRadius.
+// maquette::Error when the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius
+// or guides.col_period is not a multiple of 2^kLevels.
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
                                 const SynthesisParams& params, const PixelRect& out);
 

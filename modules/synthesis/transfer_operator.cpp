@@ -1,9 +1,11 @@
 // synthesis.transfer: paper 000's transfer of a painting onto the store's land cover (and
-// altitude), cell by cell, seamless: synthesis.h over each output tile's global pixels.
+// altitude), cell by cell, seamless: synthesis.h over each output tile's pixels in the plane of
+// the grid's faces (core/face_plane.h).
 #include <cmath>
 #include <map>
 
 #include "core/error.h"
+#include "core/face_plane.h"
 #include "operators.h"
 #include "runtime/input_halo.h"
 #include "synthesis.h"
@@ -52,9 +54,12 @@ class Transfer : public CellOperator {
     const Tile<float>& landcover = input_with_halo(spec_.name, ctx, data, "landcover", spec_.halo);
     const int halo = landcover.halo(), side = landcover.stride();
 
+    // Global pixels of the faces' plane (core/face_plane.h): the halo's pixels from a neighbour
+    // face laid unturned are there that face's own (synthesis.h: where it is seamless).
+    const FacePlane plane(*ctx.grid);
     TargetGuides guides;
-    guides.rect = {global_col(ctx.cell, ctx.tile_size, -halo),
-                   global_row(ctx.cell, ctx.tile_size, -halo), side, side};
+    const auto corner = plane.tile_pixel(ctx.cell, ctx.tile_size, -halo, -halo);
+    guides.rect = {corner[0], corner[1], side, side};
     guides.shift = ctx.refine;
     guides.labels.resize(size_t(side) * size_t(side));
     for (int r = 0; r < side; ++r)
@@ -73,7 +78,9 @@ class Transfer : public CellOperator {
 
     const SynthesisParams sp = synthesis_params(params);
     const int n = ctx.tile_size << ctx.refine;
-    const PixelRect out{global_col(ctx.cell, n, 0), global_row(ctx.cell, n, 0), n, n};
+    guides.col_period = plane.wrap_columns(ctx.cell, n);
+    const auto first = plane.tile_pixel(ctx.cell, n, 0, 0);
+    const PixelRect out{first[0], first[1], n, n};
     const std::vector<int32_t> src = synthesize(exemplar->pyramid, guides, sp, out);
 
     const ExemplarLevel& e = exemplar->pyramid.levels[0];

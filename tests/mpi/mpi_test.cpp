@@ -25,6 +25,7 @@
 #include <string>
 #include <thread>
 
+#include "core/grid.h"
 #include "run_cli.h"
 #include "store/store.h"
 
@@ -596,6 +597,120 @@ TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("resuming run 1"), std::string::npos) << r.err;
   EXPECT_EQ(blobs(dir), reference());
+}
+
+// synthesis.transfer (issue 18: the same bits for any ranks and window) on a land cover made by
+// texture.procedural: a 128 x 96 painting of two regions written as a binary PPM, cells of 256
+// pixels (the transfer's halo is 189). The land cover is made once over the windows and a ring
+// of cells around them, so that every window's halo reads it; each transfer runs on a copy.
+void write_painting(const fs::path& file) {
+  const int w = 128, h = 96;
+  std::ofstream out(file, std::ios::binary);
+  out << "P6\n" << w << " " << h << "\n255\n";
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int noise = int((uint32_t(x * 7919 + y * 104729) * 2654435761u) >> 27);  // 0..31
+      const bool right = x >= w / 2;
+      const char rgb[3] = {char(right ? 40 + 2 * (x % 9) + noise : 180 + 2 * (y % 13) + noise),
+                           char(right ? 110 + noise : 170 + noise), char(right ? 50 : 60 + noise)};
+      out.write(rgb, 3);
+    }
+}
+
+json synthesis_pipeline(const std::vector<std::string>& cells, const json& steps) {
+  return {{"store", "out.mqt"},
+          {"region", {{"cells", cells}}},
+          {"level", 3},
+          {"tile_size", 256},
+          {"steps", steps}};
+}
+
+std::vector<std::string> cell_texts(const std::vector<CellId>& cells) {
+  std::vector<std::string> out;
+  for (const CellId c : cells) out.push_back(c.ToText());
+  return out;
+}
+
+// The transfer's tile blobs of `cells` (all of them when empty).
+std::vector<std::string> painted(const std::string& dir, const std::vector<CellId>& cells = {}) {
+  std::vector<std::string> out;
+  for (const std::string& row : blobs(dir)) {
+    if (!row.starts_with("painted")) continue;
+    if (cells.empty() || std::any_of(cells.begin(), cells.end(), [&](CellId c) {
+          return row.find("|" + std::to_string(c.id()) + "|") != std::string::npos;
+        }))
+      out.push_back(row);
+  }
+  return out;
+}
+
+TEST(MpiSynthesis, TransferGivesTheSameBitsOnTwoRanksAndOnAShiftedWindow) {
+  const Grid& grid = default_grid();
+  // Window A: the 4 cells of Q21; window B: A's right column and the cells right of it.
+  const CellId q21 = CellId::Parse("Q21");
+  const std::vector<CellId> a = {q21.child(0), q21.child(1), q21.child(2), q21.child(3)};
+  std::vector<CellId> b, common;
+  for (const CellId c : a) {
+    const CellId right = grid.edge_neighbours(c)[1];
+    if (std::find(a.begin(), a.end(), right) != a.end()) continue;
+    common.push_back(c);
+    b.insert(b.end(), {c, right});
+  }
+  ASSERT_EQ(common.size(), 2u);
+  std::vector<CellId> around = b;
+  around.insert(around.end(), a.begin(), a.end());
+  for (const CellId c : std::vector<CellId>(around)) {
+    const auto ring = grid.vertex_neighbours(c);
+    around.insert(around.end(), ring.begin(), ring.end());
+  }
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+
+  const fs::path base = new_dir();
+  write_painting(base / "painting.ppm");
+  const json model = json::parse(R"({
+    "format": "maquette.texture.model", "version": 1,
+    "quantities": [{"name": "height", "range": [-500, 4000]}, {"name": "slope", "range": [0, 90]}],
+    "root": {"colour": [150, 110, 90], "class": 0, "children": [
+      {"class": 1, "colour": [90, 150, 60], "constraints": {"height": {"hat": [-500, 0, 300, 600]}}},
+      {"class": 2, "colour": [30, 75, 40], "constraints": {"slope": {"hat": [0, 0, 1, 3]}}}]}})");
+  std::ofstream(base / "pipeline.json")
+      << synthesis_pipeline(cell_texts(around), {{{"op", "terrain.synthesize"},
+                                                  {"outputs", {{"dem", "dem"}}},
+                                                  {"params", {{"seed", 7}}}},
+                                                 {{"op", "texture.procedural"},
+                                                  {"inputs", {{"dem", "dem"}}},
+                                                  {"outputs", {{"classes", "landcover"}}},
+                                                  {"params", {{"model", model}}}}})
+             .dump(2);
+  const Result made = run(base.string(), 0);
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+
+  const json transfer = {{"op", "synthesis.transfer"},
+                         {"inputs", {{"landcover", "landcover"}}},
+                         {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
+                         {"params",
+                          {{"painting", (base / "painting.ppm").string()},
+                           {"classes", 2},
+                           {"landcover_classes", {{"0", 0}, {"1", 1}, {"2", 1}}},
+                           {"exemplar_scale", 1}}}};
+  const auto transfer_run = [&](const std::vector<CellId>& cells, int ranks) {
+    const fs::path dir = new_dir();
+    for (const char* file : {"out.mqt", "out.mqt-wal"})
+      if (fs::exists(base / file)) fs::copy_file(base / file, dir / file);
+    std::ofstream(dir / "pipeline.json")
+        << synthesis_pipeline(cell_texts(cells), json::array({transfer})).dump(2);
+    const Result r = run(dir.string(), ranks);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return dir.string();
+  };
+  const std::string single = transfer_run(a, 0);
+  const std::vector<std::string> expected = painted(single);
+  ASSERT_EQ(expected.size(), 2 * a.size());  // rgb and source, every cell
+  EXPECT_EQ(painted(transfer_run(a, 2)), expected);
+  const std::vector<std::string> shifted = painted(transfer_run(b, 0), common);
+  ASSERT_EQ(shifted.size(), 2 * common.size());
+  EXPECT_EQ(shifted, painted(single, common));
 }
 
 }  // namespace

@@ -1,0 +1,281 @@
+// Seamless across rHEALPix face edges (issue 18): the faces' plane (core/face_plane.h) lays the
+// faces where the grid's table says and where the store's halo puts a neighbour's pixels; then
+// synthesis.transfer's cells on both sides of the edge between O and P (longitude -90), of the
+// antimeridian (R's right edge, O's left) and of N's edge with O, and a cell of another tiling,
+// against one synthesis of a window across the edge computed here in the plane laid by hand (O P
+// Q R left to right, the row's columns modulo its width, N above O): the same sources, pixel for
+// pixel. A small synthetic painting and a land cover that is a function of longitude and
+// latitude. A column period that would break each level's parity is refused.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../synthesis.h"
+#include "../transfer_exemplar.h"
+#include "../transfer_params.h"
+#include "core/error.h"
+#include "core/face_plane.h"
+#include "core/halo.h"
+#include "core/splitmix64.h"
+#include "runtime/operator_registry.h"
+#include "runtime/params_schema.h"
+
+namespace maquette::synthesis {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int kFaceN = 0, kFaceO = 1, kFaceP = 2, kFaceQ = 3, kFaceR = 4, kFaceS = 5;  // cell_id.h
+constexpr int kLevel = 5, kSize = 256;               // tiles of 256 pixels: the halo's 189 fit
+constexpr int64_t kFace = int64_t(kSize) << kLevel;  // pixels a face
+constexpr int kPixelLevel = kLevel + 8;
+constexpr uint32_t kRow = 1u << (kLevel - 1);  // cells on the equator, far from the cube corners
+
+// Land cover 1 and 2 in blobs a few kilometres across, a function of the point alone.
+double land_cover(LonLat p) {
+  const double x = p.lon * 40, y = p.lat * 40;
+  return std::sin(x) + std::sin(0.7 * y + 0.3 * x) > 0.2 ? 2 : 1;
+}
+
+// A 128 x 96 painting: warm stripes on the left, green blobs on the right.
+std::string write_painting(const fs::path& dir) {
+  GDALAllRegister();
+  const int w = 128, h = 96;
+  std::unique_ptr<GDALDataset> ds(
+      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", w, h, 3, GDT_Byte, nullptr));
+  std::vector<uint8_t> rgb(size_t(w) * size_t(h) * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * size_t(w) + size_t(x);
+      const double noise = double(splitmix64_mix(i) % 41) - 20;
+      const bool right = x >= w / 2;
+      rgb[3 * i] =
+          uint8_t(std::clamp(right ? 40 + 30 * std::sin(x * 0.7) * std::sin(y * 0.6) + noise
+                                   : 200 + 40 * std::sin(x / 3.0) + noise,
+                             0.0, 255.0));
+      rgb[3 * i + 1] = uint8_t(std::clamp((right ? 110 : 170) + noise, 0.0, 255.0));
+      rgb[3 * i + 2] = uint8_t(right ? 50 : 60 + noise / 2);
+    }
+  int bands[3] = {1, 2, 3};
+  EXPECT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, rgb.data(), w, h, GDT_Byte, 3, bands, 3, long(w) * 3,
+                         1, nullptr),
+            CE_None);
+  const std::string path = (dir / "painting.png").string();
+  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
+      path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
+  return path;
+}
+
+class Seams : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fs::temp_directory_path() / ("maquette-seams-" + std::to_string(getpid())));
+    fs::create_directories(*dir_);
+    registry_ = new OperatorRegistry;
+    registry_->add(load_module(MAQUETTE_MODULE_DIR "/libmaquette_synthesis.so"));
+    operator_ = registry_->find("synthesis.transfer");
+    params_ = new json(validate_params(operator_->spec().params_schema,
+                                       {{"painting", write_painting(*dir_)},
+                                        {"classes", 2},
+                                        {"landcover_classes", {{"1", 0}, {"2", 1}}},
+                                        {"exemplar_scale", 1}},
+                                       "seams"));
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+    delete registry_;
+    delete params_;
+  }
+
+  // The operator's `source` output on `cell` (tiles of `size`), its land cover sampled with the
+  // store's halo.
+  static Tile<float> transfer(CellId cell, int size) {
+    const Grid& grid = default_grid();
+    CellContext ctx;
+    ctx.cell = cell;
+    ctx.tile_size = size;
+    ctx.grid = &grid;
+    ctx.params = params_;
+    CellData data;
+    data.inputs.emplace("landcover",
+                        assemble_halo(grid, cell, size, operator_->spec().halo, [&](CellId c) {
+                          return std::optional(sample_field(grid, c, size, land_cover));
+                        }));
+    data.outputs.emplace("source", Tile<float>::uninitialized(size, 2));
+    static_cast<const CellOperator*>(operator_)->run(ctx, data);
+    return data.outputs.at("source");
+  }
+
+  // One synthesis of plane window `out` (pixels at kPixelLevel: the equatorial row's columns
+  // modulo 4 faces, face O P Q R by column; N above O and S below it), its guides laid here: the
+  // exemplar's source of each pixel as (column, row).
+  static std::vector<std::array<int, 2>> whole(const PixelRect& out) {
+    const Grid& grid = default_grid();
+    const auto table = class_table(params_->at("landcover_classes"), "seams");
+    TargetGuides g;
+    const int halo = synthesis_halo();
+    g.rect = {out.col0 - halo, out.row0 - halo, out.width + 2 * halo, out.height + 2 * halo};
+    g.col_period = 4 * kFace;
+    for (int64_t r = g.rect.row0; r < g.rect.row0 + g.rect.height; ++r)
+      for (int64_t c = g.rect.col0; c < g.rect.col0 + g.rect.width; ++c) {
+        const int64_t x = (c % g.col_period + g.col_period) % g.col_period;
+        const bool row = r >= 0 && r < kFace;
+        EXPECT_TRUE(row || (x < kFace && r >= -kFace && r < 2 * kFace));
+        const FaceCoord pixel = row     ? FaceCoord{kFaceO + int(x / kFace), x % kFace, r}
+                                : r < 0 ? FaceCoord{kFaceN, x, r + kFace}
+                                        : FaceCoord{kFaceS, x, r - kFace};
+        g.labels.push_back(
+            painting_class(table, float(land_cover(pixel_centre(grid, pixel, kPixelLevel)))));
+      }
+    const auto exemplar = transfer_exemplar(*params_);
+    const auto src = synthesize(exemplar->pyramid, g, synthesis_params(*params_), out);
+    const int width = exemplar->pyramid.levels[0].width;
+    std::vector<std::array<int, 2>> out_src;
+    for (const int32_t s : src) out_src.push_back({s % width, s / width});
+    return out_src;
+  }
+
+  // Pixels of `window` (plane, columns modulo 4 faces) lying in `cell` (tiles of `size`) whose
+  // source differs between the cell's transfer and the window's synthesis; `compared` counts
+  // those in both.
+  static size_t differing(const PixelRect& window, const std::vector<std::array<int, 2>>& expected,
+                          CellId cell, size_t& compared, int size = kSize) {
+    const Tile<float> source = transfer(cell, size);
+    const auto first = FacePlane(default_grid()).tile_pixel(cell, size, 0, 0);
+    size_t n = 0;
+    for (int64_t r = 0; r < window.height; ++r)
+      for (int64_t c = 0; c < window.width; ++c) {
+        const int64_t col = ((window.col0 + c) % (4 * kFace) + 4 * kFace) % (4 * kFace) - first[0];
+        const int64_t row = window.row0 + r - first[1];
+        if (col < 0 || col >= size || row < 0 || row >= size) continue;
+        ++compared;
+        const auto& e = expected[size_t(r * window.width + c)];
+        n += source.at(int(col), int(row), 0) != float(e[0]) ||
+             source.at(int(col), int(row), 1) != float(e[1]);
+      }
+    return n;
+  }
+
+  static inline fs::path* dir_ = nullptr;
+  static inline OperatorRegistry* registry_ = nullptr;
+  static inline const Operator* operator_ = nullptr;
+  static inline json* params_ = nullptr;
+};
+
+TEST(FacePlaneSeams, LaysTheRowAndThePolarFacesAsTheGridsTableSays) {
+  const FacePlane plane(default_grid());
+  EXPECT_EQ(plane.ring_faces(), 4);
+  const std::array<std::array<int64_t, 2>, 6> expected = {
+      {{0, -1}, {0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 1}}};  // N O P Q R S
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(plane.place(f), expected[size_t(f)]) << "face " << f;
+  const CellId cell = CellId::FromFaceColRow(kFaceQ, 3, 5, 6);
+  EXPECT_EQ(plane.tile_pixel(cell, 16, 2, -3), (std::array<int64_t, 2>{2 * 128 + 82, 93}));
+  EXPECT_EQ(plane.wrap_columns(cell, 16), 4 * 128);
+}
+
+// Halo pixel (col, row) of `cell`'s tile: where the store reads it (pixel_source, Grid::wrap) and
+// where the plane lays the cell's frame there, as plane pixels (columns modulo the row).
+std::array<std::array<int64_t, 2>, 2> halo_places(CellId cell, int col, int row) {
+  const Grid& grid = default_grid();
+  const FacePlane plane(grid);
+  const int64_t period = plane.wrap_columns(cell, kSize);
+  const FaceCoord src = *pixel_source(grid, cell, kSize, col, row);
+  const auto read = plane.tile_pixel(CellId::FromFace(src.face), int(kFace), src.col, src.row);
+  const auto laid = plane.tile_pixel(cell, kSize, col, row);
+  return {{{(read[0] % period + period) % period, read[1]},
+           {(laid[0] % period + period) % period, laid[1]}}};
+}
+
+TEST(FacePlaneSeams, TheStoresHaloLaysANeighbourWhereThePlaneDoes) {
+  const uint32_t last = (1u << kLevel) - 1;
+  struct Case {
+    CellId cell;
+    int col, row;
+  };
+  // Beyond O's right (P), P's left (O), R's right and O's left (the antimeridian), O's top (N),
+  // O's bottom (S), N's bottom (O), a few pixels beyond each edge.
+  for (const Case& c : {Case{CellId::FromFaceColRow(kFaceO, kLevel, last, kRow), kSize + 3, 7},
+                        Case{CellId::FromFaceColRow(kFaceP, kLevel, 0, kRow), -5, 200},
+                        Case{CellId::FromFaceColRow(kFaceR, kLevel, last, kRow), kSize + 150, 0},
+                        Case{CellId::FromFaceColRow(kFaceO, kLevel, 0, kRow), -1, 255},
+                        Case{CellId::FromFaceColRow(kFaceO, kLevel, 9, 0), 30, -20},
+                        Case{CellId::FromFaceColRow(kFaceO, kLevel, 9, last), 30, kSize + 4},
+                        Case{CellId::FromFaceColRow(kFaceN, kLevel, 3, last), 100, kSize + 1}}) {
+    const auto [read, laid] = halo_places(c.cell, c.col, c.row);
+    EXPECT_EQ(read, laid) << c.cell.ToText() << " " << c.col << ", " << c.row;
+  }
+  // Beyond P's top the store reads N turned by 90 degrees: elsewhere in the plane (synthesis.h).
+  const auto [read, laid] = halo_places(CellId::FromFaceColRow(kFaceP, kLevel, 9, 0), 30, -20);
+  EXPECT_NE(read, laid);
+}
+
+TEST_F(Seams, CellsOnBothSidesOfAnEquatorialEdgeEqualOneSynthesisAcrossIt) {
+  // A window of 192 x 64 across the edge between O and P, not aligned with the cells.
+  const PixelRect window{kFace - 96, int64_t(kRow) * kSize + 40, 192, 64};
+  const auto expected = whole(window);
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, expected,
+                      CellId::FromFaceColRow(kFaceO, kLevel, (1u << kLevel) - 1, kRow), compared),
+            0u);
+  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceP, kLevel, 0, kRow), compared),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, ACellOfAnotherTilingEqualsTheSynthesisAcrossTheEdge) {
+  // P's first cell one level coarser, tiles of 512: the same pixels, another tiling.
+  const PixelRect window{kFace - 96, int64_t(kRow) * kSize + 40, 192, 64};
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, whole(window),
+                      CellId::FromFaceColRow(kFaceP, kLevel - 1, 0, kRow / 2), compared, 2 * kSize),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height / 2));
+}
+
+TEST_F(Seams, CellsOnBothSidesOfTheAntimeridianEqualOneSynthesisAcrossIt) {
+  // R's last 96 columns, then O's first 96 (plane columns 4 faces on: the same place).
+  const PixelRect window{4 * kFace - 96, int64_t(kRow) * kSize + 150, 192, 64};
+  const auto expected = whole(window);
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, expected,
+                      CellId::FromFaceColRow(kFaceR, kLevel, (1u << kLevel) - 1, kRow), compared),
+            0u);
+  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, 0, kRow), compared),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, CellsOnBothSidesOfNsEdgeWithOEqualOneSynthesisAcrossIt) {
+  // N's last 32 rows above O's first 32 (N is laid unturned above O).
+  const PixelRect window{int64_t(kRow) * kSize + 70, -32, 96, 64};
+  const auto expected = whole(window);
+  size_t compared = 0;
+  EXPECT_EQ(differing(window, expected,
+                      CellId::FromFaceColRow(kFaceN, kLevel, kRow, (1u << kLevel) - 1), compared),
+            0u);
+  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, kRow, 0), compared),
+            0u);
+  EXPECT_EQ(compared, size_t(window.width * window.height));
+}
+
+TEST_F(Seams, RefusesAColumnPeriodThatIsNoMultipleOf16) {
+  const PixelRect out{0, 0, 16, 16};
+  TargetGuides g;
+  g.rect = {-200, -200, 416, 416};
+  g.labels.assign(size_t(g.rect.width) * size_t(g.rect.height), 0);
+  g.col_period = 4 * kFace + 8;  // each level's parity would disagree beyond it
+  EXPECT_THROW(synthesize(transfer_exemplar(*params_)->pyramid, g, {}, out), Error);
+  g.col_period = 4 * kFace;
+  EXPECT_NO_THROW(synthesize(transfer_exemplar(*params_)->pyramid, g, {}, out));
+}
+
+}  // namespace
+}  // namespace maquette::synthesis
