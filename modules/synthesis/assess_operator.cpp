@@ -105,8 +105,11 @@ class Assess : public ReduceOperator {
         const float which = source.channels() > 2 ? source.at(c, r, 2) : 0.0f;
         int32_t s = -1;
         if (!std::isnan(x) && !std::isnan(y) && !std::isnan(which)) {
-          s = exemplar->pixel_of(int(which), int(x), int(y));
-          if (s < 0 || which != std::floor(which) || x < 0 || y < 0) {
+          // A painting index that is no whole number of the list is refused before int().
+          const bool listed = which >= 0 && which < float(exemplar->parts.size()) &&
+                              which == std::floor(which) && x >= 0 && y >= 0;
+          s = listed ? exemplar->pixel_of(int(which), int(x), int(y)) : -1;
+          if (s < 0) {
             std::ostringstream what;
             what << kOp << ": inputs.source of cell " << ctx.cell.ToText() << ": (" << x << ", "
                  << y << ") of painting " << which << " lies outside the paintings' exemplar "

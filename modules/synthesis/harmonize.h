@@ -5,7 +5,6 @@
 // here), so that a class drawn from two paintings shows one palette.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -21,10 +20,6 @@ enum class Harmonization {
 
 // "none", "reinhard" or "histogram"; throws maquette::Error naming `where` otherwise.
 Harmonization parse_harmonization(const std::string& name, const std::string& where);
-
-// The CIELAB colour of sRGB (0..255 a component) and back (clamped to 0..255).
-std::array<double, 3> lab_of(const float* rgb);
-void rgb_of(const std::array<double, 3>& lab, float* rgb);
 
 // For each label, the allowed (not excluded) pixels of parts[1..] of that label take new
 // colours so that their CIELAB statistics match those of parts[0]'s allowed pixels of the label:
