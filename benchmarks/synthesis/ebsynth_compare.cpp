@@ -333,7 +333,8 @@ constexpr const char* kUsage =
            twice with different values an error; "landcover_classes" replaces the fixture's
            class table (zion_fixture.h) for both syntheses and the measures; "labels" (a
            class image, e.g. examples/bruegel-harvesters-classes.geojson) replaces the 8 colour
-           classes, with its "exclude_classes" ([] when absent)
+           classes, with its "exclude_classes" ([] when absent); "exemplars" (further paintings,
+           synthesis.transfer's, searched with Bruegel's) with "harmonize" (reinhard)
   ours     skip ebsynth (a variant measured against an earlier run's ebsynth); both: run it
   seeds    run ours with this many seeds, params.seed (0) and on, and print each measure's
            min / median / max and each class's histogram distance beside a random draw's (1)
@@ -377,6 +378,7 @@ nlohmann::json synthesis_weights(int argc, char** argv) {
   for (const char* key : {"labels", "exclude_classes"})
     properties[key] = maquette::synthesis::exemplar_params_schema().at(key);
   properties["exclude_classes"].erase("default");
+  properties.update(maquette::synthesis::further_exemplars_schema());
   const nlohmann::json schema = {
       {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
   return maquette::validate_params(schema, given, kProgram);
@@ -408,8 +410,9 @@ int main(int argc, char** argv) try {
                           ": params.exclude_classes without params.labels: the 8 colour classes "
                           "exclude their class 0");
   nlohmann::json painting_classes = nlohmann::json::object();
-  for (const char* key : {"labels", "exclude_classes"})
+  for (const char* key : {"labels", "exclude_classes", "exemplars"})
     if (weights.contains(key)) painting_classes[key] = weights.at(key);
+  if (weights.contains("exemplars")) painting_classes["harmonize"] = weights.at("harmonize");
   return maquette::synthesis::bench::run(side, threads, step, params,
                                          weights.at("landcover_classes"), painting_classes,
                                          which == "both", seeds);

@@ -35,6 +35,8 @@ nlohmann::json zion_params(const nlohmann::json& classes, const nlohmann::json& 
     params["labels"] = painting_classes.at("labels");
     params["exclude_classes"] = painting_classes.value("exclude_classes", nlohmann::json::array());
   }
+  for (const char* key : {"exemplars", "harmonize"})
+    if (painting_classes.contains(key)) params[key] = painting_classes.at(key);
   return params;
 }
 

@@ -23,7 +23,8 @@ nlohmann::json zion_classes();
 
 // The transfer params (painting, classes, exclusions, scale) with the class table `classes`;
 // `painting_classes`, when it holds "labels" (a class image, synthesis.transfer's), replaces the
-// 8 colour classes with it and its "exclude_classes".
+// 8 colour classes with it and its "exclude_classes"; its "exemplars" and "harmonize" (further
+// paintings searched with Bruegel's) are passed on.
 nlohmann::json zion_params(const nlohmann::json& classes = zion_classes(),
                            const nlohmann::json& painting_classes = nlohmann::json::object());
 

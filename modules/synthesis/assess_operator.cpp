@@ -29,7 +29,10 @@ OperatorSpec assess_spec() {
       "histogram distance, altitude mismatch";
   s.kind = OperatorKind::Reduce;
   s.inputs = {{"rgb", "the transfer's colours", false},
-              {"source", "the transfer's painting pixel (column, row) per output pixel", false},
+              {"source",
+               "the transfer's painting pixel (column, row) per output pixel, and its painting "
+               "(0 when absent: one painting)",
+               false},
               {"landcover", "the target land cover the transfer was given", false},
               {"dem", "the transfer's altitude guide (with altitude_range)", true}};
   s.outputs = {{"report", "the measures (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
@@ -38,6 +41,7 @@ OperatorSpec assess_spec() {
                      {"additionalProperties", false},
                      {"required", {"painting", "landcover_classes"}},
                      {"properties", exemplar_params_schema()}};
+  s.params_schema["properties"].update(further_exemplars_schema());
   s.params_schema["properties"]["coherence_step"] =
       integer_param(1, 64, 1,
                     "coherence measured at output pixels whose global column and row are "
@@ -98,17 +102,22 @@ class Assess : public ReduceOperator {
     for (int r = -h; r < n + h; ++r)
       for (int c = -h; c < n + h; ++c) {
         const float x = source.at(c, r, 0), y = source.at(c, r, 1);
+        const float which = source.channels() > 2 ? source.at(c, r, 2) : 0.0f;
         int32_t s = -1;
-        if (!std::isnan(x) && !std::isnan(y)) {
-          const int ex = int(x) / exemplar->scale, ey = int(y) / exemplar->scale;
-          if (ex < 0 || ey < 0 || ex >= e.width || ey >= e.height) {
+        if (!std::isnan(x) && !std::isnan(y) && !std::isnan(which)) {
+          // A painting index that is no whole number of the list is refused before int().
+          const bool listed = which >= 0 && which < float(exemplar->parts.size()) &&
+                              which == std::floor(which) && x >= 0 && y >= 0;
+          s = listed ? exemplar->pixel_of(int(which), int(x), int(y)) : -1;
+          if (s < 0) {
             std::ostringstream what;
             what << kOp << ": inputs.source of cell " << ctx.cell.ToText() << ": (" << x << ", "
-                 << y << ") lies outside the painting's exemplar pixels ("
-                 << e.width * exemplar->scale << " x " << e.height * exemplar->scale << ")";
+                 << y << ") of painting " << which << " lies outside the paintings' exemplar "
+                 << "pixels (" << exemplar->parts.size() << " paintings; the first "
+                 << exemplar->parts[0].width * exemplar->scale << " x "
+                 << exemplar->parts[0].height * exemplar->scale << ")";
             throw Error(what.str());
           }
-          s = ey * e.width + ex;
         }
         image.source.push_back(s);
         // The 8-bit rgb layer's nodata is 0: where a source was written, a missing sample is

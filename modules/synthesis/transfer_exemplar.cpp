@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "exemplar_usage.h"
+#include "harmonize.h"
 #include "painting.h"
 #include "synthesis.h"
 #include "transfer_params.h"
@@ -35,44 +36,87 @@ std::vector<float> painting_guide(const std::string& source, const Exemplar& e,
   return guide;
 }
 
-std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
-  const std::string painting = params.at("painting").get<std::string>();
+// One painting with its classes, exclusions and guides from `fields` (the params or one of
+// "exemplars"), named `where` in errors; its classes as they are (before any class table).
+Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, int scale) {
+  const std::string painting = fields.at("painting").get<std::string>();
   Exemplar e = read_painting(painting);
   // Each of the kLevels levels halves the shrunk painting: its coarsest must keep a pixel.
-  const int scale = params.at("exemplar_scale").get<int>(), least = scale << (kLevels - 1);
+  const int least = scale << (kLevels - 1);
   if (e.width < least || e.height < least)
-    throw Error(std::string(kOp) + ".painting: " + painting + " is " + std::to_string(e.width) +
-                " x " + std::to_string(e.height) + " pixels, too small for exemplar_scale " +
+    throw Error(where + ".painting: " + painting + " is " + std::to_string(e.width) + " x " +
+                std::to_string(e.height) + " pixels, too small for exemplar_scale " +
                 std::to_string(scale) + ": " + std::to_string(kLevels) + " levels need at least " +
                 std::to_string(least) + " pixels a side");
-  if (params.contains("labels")) {
-    e.labels = read_class_image(params.at("labels").get<std::string>(), e.width, e.height);
+  if (fields.contains("labels")) {
+    e.labels = read_class_image(fields.at("labels").get<std::string>(), e.width, e.height);
     for (const uint8_t l : e.labels)
       if (l == kUnknownLabel)
-        throw Error(std::string(kOp) + ".labels: class " + std::to_string(l) +
+        throw Error(where + ".labels: class " + std::to_string(l) +
                     " is reserved (unknown); classes are 0..254");
   } else {
-    e.labels = segment_by_colour(e, params.at("classes").get<int>());
+    e.labels = segment_by_colour(e, fields.at("classes").get<int>());
   }
-  if (params.contains("exclusion")) {
+  if (fields.contains("exclusion")) {
     const auto mask =
-        read_mask(params.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
+        read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
     for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] = mask[i] != 0;
   }
-  for (const int c : params.at("exclude_classes").get<std::vector<int>>())
+  for (const int c : fields.at("exclude_classes").get<std::vector<int>>())
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
+  if (fields.contains("painting_altitude"))
+    e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude");
+  if (fields.contains("painting_distance"))
+    e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance");
+  return e;
+}
+
+// The further paintings of "exemplars", read, relabelled into the first's classes (those their
+// tables do not name excluded) and shrunk.
+std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale) {
+  std::vector<Exemplar> out;
+  if (!params.contains("exemplars")) return out;
+  const nlohmann::json& list = params.at("exemplars");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string where = std::string(kOp) + ".exemplars[" + std::to_string(i) + "]";
+    const nlohmann::json& fields = list.at(i);
+    if (fields.contains("painting_altitude") != params.contains("painting_altitude"))
+      throw Error(where + ".painting_altitude: " +
+                  (fields.contains("painting_altitude")
+                       ? "given, but the first painting has none"
+                       : "missing, but the first painting has one") +
+                  ": give every painting an altitude or none");
+    Exemplar e = read_exemplar(fields, where, scale);
+    const auto labels =
+        further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), kOp, where);
+    for (size_t p = 0; p < e.labels.size(); ++p) {
+      const auto it = labels.find(e.labels[p]);
+      if (it == labels.end())
+        e.excluded[p] = 1;
+      else
+        e.labels[p] = it->second;
+    }
+    out.push_back(shrink_exemplar(e, scale));
+  }
+  return out;
+}
+
+std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
+  const int scale = params.at("exemplar_scale").get<int>();
+  Exemplar e = read_exemplar(params, kOp, scale);
   // The class table's sets of classes taken as one (exclusions are by the painting's classes).
   if (params.contains("landcover_classes"))
     for (const auto& [from, to] : class_groups(params.at("landcover_classes"), kOp))
       std::replace(e.labels.begin(), e.labels.end(), from, to);
-  if (params.contains("painting_altitude"))
-    e.altitude = painting_guide(params.at("painting_altitude").get<std::string>(), e, "altitude");
-  if (params.contains("painting_distance"))
-    e.distance = painting_guide(params.at("painting_distance").get<std::string>(), e, "distance");
+  std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
+  for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));
+  if (params.contains("harmonize"))
+    harmonize(parts, parse_harmonization(params.at("harmonize").get<std::string>(),
+                                         std::string(kOp) + ".harmonize"));
   auto out = std::make_shared<TransferExemplar>();
   out->scale = scale;
   out->pyramid =
-      analyse_exemplar(shrink_exemplar(e, out->scale), kLevels, params.at("k").get<int>());
+      analyse_exemplar(combine_exemplars(parts, out->parts), kLevels, params.at("k").get<int>());
   // Measured with the default weights: the same exemplar serves every step's weights.
   measure_usage(out->pyramid, SynthesisParams{});
   return out;
@@ -80,10 +124,26 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
 
 }  // namespace
 
+SourcePixel TransferExemplar::source_of(int32_t s) const {
+  const int width = pyramid.levels[0].width, x = s % width, y = s / width;
+  int p = 0;
+  while (p + 1 < int(parts.size()) && x >= parts[size_t(p) + 1].x0) ++p;
+  return {p, (x - parts[size_t(p)].x0) * scale, y * scale};
+}
+
+int32_t TransferExemplar::pixel_of(int exemplar, int col, int row) const {
+  if (exemplar < 0 || exemplar >= int(parts.size()) || col < 0 || row < 0) return -1;
+  const Placement& at = parts[size_t(exemplar)];
+  const int x = col / scale, y = row / scale;
+  if (x >= at.width || y >= at.height) return -1;
+  return pyramid.levels[0].index(at.x0 + x, y);
+}
+
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
   nlohmann::json key;
-  for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
-                            "painting_altitude", "painting_distance", "exemplar_scale", "k"})
+  for (const char* field :
+       {"painting", "labels", "classes", "exclusion", "exclude_classes", "painting_altitude",
+        "painting_distance", "exemplar_scale", "k", "exemplars", "harmonize"})
     if (params.contains(field)) key[field] = params.at(field);
   if (params.contains("landcover_classes"))
     key["groups"] = class_groups(params.at("landcover_classes"), kOp);

@@ -6,20 +6,41 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <vector>
 
+#include "combined_exemplar.h"
 #include "exemplar_pyramid.h"
 
 namespace maquette::synthesis {
 
+// A painting pixel an output pixel was copied from: the exemplar (0 the first painting, i the
+// params' exemplars[i - 1]) and the painting's column and row (the top-left pixel of its
+// exemplar_scale block).
+struct SourcePixel {
+  int exemplar = 0;
+  int col = 0, row = 0;
+};
+
 struct TransferExemplar {
-  int scale = 1;            // painting pixels per exemplar pixel (a side)
-  ExemplarPyramid pyramid;  // of the shrunk painting: levels[0] is what the output copies
+  int scale = 1;  // painting pixels per exemplar pixel (a side)
+  // Of the shrunk paintings side by side (combined_exemplar.h; one painting: itself): levels[0]
+  // is what the output copies, its colours harmonized (harmonize.h).
+  ExemplarPyramid pyramid;
+  std::vector<Placement> parts;  // each painting's place in levels[0], in exemplar pixels
+
+  // The painting pixel of levels[0]'s pixel `s`, which lies in a painting (an allowed pixel).
+  SourcePixel source_of(int32_t s) const;
+  // levels[0]'s pixel holding painting pixel (col, row) of exemplar `exemplar`; -1 when there is
+  // no such exemplar or the pixel lies outside it.
+  int32_t pixel_of(int exemplar, int col, int row) const;
 };
 
 // From the validated params (README: synthesis.transfer): "painting", "labels" or "classes",
 // "exclusion", "exclude_classes", "painting_altitude", "painting_distance" (maquette-paint's),
-// "exemplar_scale", "k". Throws
-// maquette::Error naming the op, field and file at fault.
+// "exemplar_scale", "k", and "exemplars" with "harmonize" (README: "Several paintings"; each
+// further painting read as the first, its classes through further_classes, those it does not
+// name excluded, shrunk, harmonized to the first, then all combined). Throws maquette::Error
+// naming the op, field (exemplars[i].field for a further painting) and file at fault.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
 
 }  // namespace maquette::synthesis

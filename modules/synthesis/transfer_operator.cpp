@@ -27,19 +27,15 @@ OperatorSpec transfer_spec() {
       {"rgb", "the painting's colours", DType::U8, 3, Semantics::Continuous, "", 0.0},
       {"source",
        "painting pixel (column, row) each output pixel was copied from: the top-left pixel of its "
-       "exemplar_scale block",
-       DType::F32, 2, Semantics::Continuous, "px",
+       "exemplar_scale block; and the painting (0: painting, i: exemplars[i - 1])",
+       DType::F32, 3, Semantics::Continuous, "px",
        std::nullopt},  // NaN where the land cover has no data
   };
   // In input pixels: the output's synthesis_halo() at refine 0, less at finer outputs.
   s.halo = synthesis_halo();
   s.refinable = true;
   s.writes_all_samples = true;
-  s.params_schema = {{"type", "object"},
-                     {"additionalProperties", false},
-                     {"required", {"painting", "landcover_classes"}},
-                     {"properties", exemplar_params_schema()}};
-  s.params_schema["properties"].update(synthesis_params_schema());
+  s.params_schema = transfer_params_schema();
   return s;
 }
 
@@ -92,13 +88,13 @@ class Transfer : public CellOperator {
       return &t;
     };
     Tile<float>* rgb = target("rgb", 3);
-    Tile<float>* source = target("source", 2);
+    Tile<float>* source = target("source", 3);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
         // Where the land cover has no data the output has none either (its nodata).
         if (std::isnan(landcover.at(c >> ctx.refine, r >> ctx.refine))) {
           for (int k = 0; k < 3 && rgb; ++k) rgb->at(c, r, k) = NAN;
-          for (int k = 0; k < 2 && source; ++k) source->at(c, r, k) = NAN;
+          for (int k = 0; k < 3 && source; ++k) source->at(c, r, k) = NAN;
           continue;
         }
         const size_t s = size_t(src[size_t(r) * size_t(n) + size_t(c)]);
@@ -106,8 +102,10 @@ class Transfer : public CellOperator {
           for (int k = 0; k < 3; ++k)
             rgb->at(c, r, k) = std::round(e.rgb[3 * s + size_t(k)] * 255.0f);
         if (source) {
-          source->at(c, r, 0) = float(int(s) % e.width * exemplar->scale);
-          source->at(c, r, 1) = float(int(s) / e.width * exemplar->scale);
+          const SourcePixel from = exemplar->source_of(int32_t(s));
+          source->at(c, r, 0) = float(from.col);
+          source->at(c, r, 1) = float(from.row);
+          source->at(c, r, 2) = float(from.exemplar);
         }
       }
   }

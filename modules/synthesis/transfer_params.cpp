@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -63,6 +64,34 @@ nlohmann::json exemplar_params_schema() {
         {"description", "k-coherence candidates per neighbour"}}}};
 }
 
+nlohmann::json further_exemplars_schema() {
+  using json = nlohmann::json;
+  const json first = exemplar_params_schema();
+  json item = {{"type", "object"},
+               {"additionalProperties", false},
+               {"required", {"painting", "landcover_classes"}},
+               {"properties", json::object()}};
+  for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
+                            "landcover_classes", "painting_altitude"})
+    item["properties"][field] = first.at(field);
+  item["properties"]["landcover_classes"]["description"] =
+      "target land-cover value -> this painting's class (or set of classes); every value must be "
+      "in the first painting's table; classes not named here are never copied";
+  return {{"exemplars",
+           {{"type", "array"},
+            {"items", item},
+            {"description",
+             "further paintings searched with the first, each with its own class image, "
+             "exclusions, class table and altitude (given for all paintings or none)"}}},
+          {"harmonize",
+           {{"type", "string"},
+            {"enum", {"none", "reinhard", "histogram"}},
+            {"default", "reinhard"},
+            {"description",
+             "each target class's colours of the further paintings matched to the first's, in "
+             "CIELAB: mean and deviation (reinhard) or histogram, or none"}}}};
+}
+
 nlohmann::json synthesis_params_schema() {
   using json = nlohmann::json;
   const auto weight = [](double fallback) {
@@ -79,6 +108,16 @@ nlohmann::json synthesis_params_schema() {
            {{"type", "integer"}, {"minimum", 0}, {"maximum", kVoteRadius}, {"default", 1}}},
           {"vote_balance", weight(0.0)},
           {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}};
+}
+
+nlohmann::json transfer_params_schema() {
+  nlohmann::json schema = {{"type", "object"},
+                           {"additionalProperties", false},
+                           {"required", {"painting", "landcover_classes"}},
+                           {"properties", exemplar_params_schema()}};
+  schema["properties"].update(further_exemplars_schema());
+  schema["properties"].update(synthesis_params_schema());
+  return schema;
 }
 
 SynthesisParams synthesis_params(const nlohmann::json& params) {
@@ -154,6 +193,33 @@ std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::
                     "): a class is in one set, given whole wherever it appears");
       out[c] = classes.front();
     }
+  return out;
+}
+
+std::map<uint8_t, uint8_t> further_classes(const nlohmann::json& first,
+                                           const nlohmann::json& further, const std::string& op,
+                                           const std::string& where) {
+  const auto first_table = class_table(first, op);
+  const std::string field = where + ".landcover_classes";
+  const auto groups = class_groups(further, where);
+  std::map<uint8_t, std::pair<uint8_t, int>> label_of;  // set -> first's class, a target value
+  for (const auto& [target, set] : class_table(further, where)) {
+    const auto it = first_table.find(target);
+    if (it == first_table.end())
+      throw Error(field + "." + std::to_string(target) + ": target value " +
+                  std::to_string(target) +
+                  " is not in the first painting's landcover_classes: a further painting serves "
+                  "the first's target classes");
+    const auto [seen, fresh] = label_of.emplace(set, std::pair{it->second, target});
+    if (!fresh && seen->second.first != it->second)
+      throw Error(field + "." + std::to_string(target) + ": painting class " + std::to_string(set) +
+                  " serves target values " + std::to_string(seen->second.second) + " and " +
+                  std::to_string(target) + ", which the first painting gives different classes (" +
+                  std::to_string(seen->second.first) + " and " + std::to_string(it->second) +
+                  "): one class of a further painting serves one class of the first");
+  }
+  std::map<uint8_t, uint8_t> out;
+  for (const auto& [c, set] : groups) out[c] = label_of.at(set).first;
   return out;
 }
 

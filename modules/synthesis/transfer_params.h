@@ -19,6 +19,30 @@ namespace maquette::synthesis {
 // "exemplar_scale", "k".
 nlohmann::json exemplar_params_schema();
 
+// JSON Schema "properties" of the further exemplars searched with the first (README:
+// "Several paintings"): "exemplars" (an array, each item an object of "painting", "labels",
+// "classes", "exclusion", "exclude_classes", "landcover_classes" and "painting_altitude", the
+// first exemplar's fields, "painting" and "landcover_classes" required) and "harmonize" ("none",
+// "reinhard", "histogram"; default "reinhard": harmonize.h).
+nlohmann::json further_exemplars_schema();
+
+// A further exemplar's painting classes as the combined exemplar's labels: each class its
+// "landcover_classes" (`further`) gives a target value takes the first painting's class for that
+// value (`first`, class_table), so that both paintings' pixels of a target class share one label;
+// classes of one set in `further` (class_groups) go together; classes it does not name are not
+// in the map (the caller excludes them). Throws maquette::Error naming `where` (e.g.
+// "synthesis.transfer.exemplars[0]"), the field, the target value and the classes at fault when
+// a target value is not in `first`, or one class (or set) of `further` serves target values the
+// first painting gives different classes.
+std::map<uint8_t, uint8_t> further_classes(const nlohmann::json& first,
+                                           const nlohmann::json& further, const std::string& op,
+                                           const std::string& where);
+
+// synthesis.transfer's params schema: an object of exemplar_params_schema(),
+// further_exemplars_schema() and synthesis_params_schema(), "painting" and "landcover_classes"
+// required, no other field.
+nlohmann::json transfer_params_schema();
+
 // JSON Schema "properties" of the synthesis's weights and choices (SynthesisParams): "w_label",
 // "w_altitude", "w_repetition", "coherence", "jitter", "seed".
 nlohmann::json synthesis_params_schema();

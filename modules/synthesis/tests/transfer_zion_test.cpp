@@ -120,10 +120,12 @@ TEST(TransferZion, SameBitsOnOneAndTwoThreadsAndColoursFromTheirSources) {
     const RawTile raw_source = *a->get_tile("painted_source", cell);
     EXPECT_EQ(raw_source.bytes, b->get_tile("painted_source", cell)->bytes) << cell.ToText();
     const Tile<float> source = to_tile<float>(raw_source);
+    ASSERT_EQ(source.channels(), 3);  // column, row, painting
     for (int r = 0; r < source.size(); ++r)
       for (int c = 0; c < source.size(); ++c) {
         if (std::isnan(source.at(c, r, 0))) continue;
         ++pixels;
+        EXPECT_EQ(source.at(c, r, 2), 0.0f);  // one painting: always the first
         const int sx = int(source.at(c, r, 0)), sy = int(source.at(c, r, 1));
         excluded += sy < int(std::ceil(kExcludedTop * height));
         for (int k = 0; k < 3; ++k) {
