@@ -229,6 +229,13 @@ std::vector<size_t> block_bounds(const RenderMesh& mesh) {
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
                     int rows) {
+  Fragments f;
+  rasterize(mesh, camera, near, first_row, rows, f);
+  return f;
+}
+
+void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
+               int rows, Fragments& f) {
   const int w = camera.spec().width, h = camera.spec().height;
   const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
   const size_t vertex_count = mesh.positions.size() / 3;
@@ -314,16 +321,16 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     for (int64_t band = first; band <= last; ++band) band_blocks[size_t(band)].push_back(b);
   }
 
-  Fragments f;
   f.width = w;
   f.height = bottom - top;
   f.first_row = top;
   const size_t n = size_t(w) * size_t(f.height);
-  // Each band clears its own rows before drawing them: fresh pages touched once, while in cache.
-  f.triangle.resize(n);
-  f.depth.resize(n);
-  f.b1.resize(n);
-  f.b2.resize(n);
+  // Each band clears its own rows before drawing them: fresh pages touched once, while in cache
+  // (an earlier strip's arrays are resized within their capacity: no page given twice).
+  resize_fresh(f.triangle, n);
+  resize_fresh(f.depth, n);
+  resize_fresh(f.b1, n);
+  resize_fresh(f.b2, n);
   std::vector<size_t> culled(size_t(bands), 0);
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
@@ -351,7 +358,6 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     }
   });
   f.culled_blocks = std::accumulate(culled.begin(), culled.end(), size_t(0));
-  return f;
 }
 
 }  // namespace maquette
