@@ -60,6 +60,14 @@ struct TileShare {
   size_t vertices = 0, indices = 0;
 };
 
+// Where a sample at `z` metres of the DEM's datum is drawn: `exaggeration` times z along the
+// ellipsoid's normal from its place at height 0 (unbent).
+Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
+  const double h = exaggeration * z;
+  return {place.base[0] + h * place.up[0], place.base[1] + h * place.up[1],
+          place.base[2] + h * place.up[2]};
+}
+
 // `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
 Tile<float> tile_heights(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
@@ -133,9 +141,8 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
       highest = std::max(highest, z);
       const size_t v = next_vertex++;
       vertex[slot(c, r)] = uint32_t(v);
-      const SamplePlace place = places.at(c, r);
-      const double h = exaggeration * z;
-      for (size_t k = 0; k < 3; ++k) positions[3 * v + k] = place.base[k] + h * place.up[k];
+      const Vec3d p = exaggerated(places.at(c, r), z, exaggeration);
+      std::copy(p.begin(), p.end(), positions.begin() + std::ptrdiff_t(3 * v));
     }
   auto at = [&](int c, int r) {
     return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
@@ -218,20 +225,16 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     memo.position.resize(size_t(side) * size_t(side));
     memo.stamp.assign(size_t(side) * size_t(side), 0);
   }
-  // The sample's position; NaN where it has none.
-  auto position = [&](int c, int r) -> const Vec3d& {
+  // The sample's position; NaN where it has none. `place`: the sample's, when the caller has it
+  // (a shown vertex's, not placed twice).
+  auto position = [&](int c, int r, const SamplePlace* place = nullptr) -> const Vec3d& {
     const size_t slot = size_t(r + kHalo) * size_t(side) + size_t(c + kHalo);
     Vec3d& p = memo.position[slot];
     if (memo.stamp[slot] != stamp) {
       memo.stamp[slot] = stamp;
       const float z = tile.heights.at(c, r);
-      if (std::isnan(z)) {
-        p = Vec3d{NAN, NAN, NAN};
-      } else {
-        const SamplePlace place = places.at(c, r);
-        const double h = scene.exaggeration * z;
-        for (size_t k = 0; k < 3; ++k) p[k] = place.base[k] + h * place.up[k];
-      }
+      p = std::isnan(z) ? Vec3d{NAN, NAN, NAN}
+                        : exaggerated(place ? *place : places.at(c, r), z, scene.exaggeration);
     }
     return p;
   };
@@ -246,7 +249,7 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     scene.altitude[v] = tile.heights.at(c, r);
     // The normal: the cross product of the column and row central differences, turned up;
     // one-sided only where a neighbour has no data.
-    const Vec3d pv = position(c, r);
+    const Vec3d pv = position(c, r, &place);
     auto span = [&](int c0, int r0, int c1, int r1) {
       const Vec3d* a = &position(c0, r0);
       const Vec3d* b = &position(c1, r1);
