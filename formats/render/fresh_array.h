@@ -44,4 +44,17 @@ struct FreshAllocator : DefaultInitAllocator<T> {
 template <typename T>
 using FreshArray = std::vector<T, FreshAllocator<T>>;
 
+// Resizes `a` to `n` elements for a step that writes every one (an array reused from one strip of
+// a picture to the next): within its capacity nothing is allocated; beyond it the old storage is
+// freed first and exactly `n` elements allocated, the old elements not copied (std::vector's
+// resize would copy them into twice the capacity).
+template <typename T>
+void resize_fresh(FreshArray<T>& a, size_t n) {
+  if (n > a.capacity()) {
+    FreshArray<T>().swap(a);
+    a.reserve(n);
+  }
+  a.resize(n);
+}
+
 }  // namespace maquette

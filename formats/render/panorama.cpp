@@ -136,12 +136,12 @@ void append_stretch_texels(const FreshArray<float>& found, const Fragments& f, i
 
 void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
                            const Fragments& f, const PanoramaLook& look, int step,
-                           StretchTexels& texels) {
+                           StretchTexels& texels, FreshArray<float>& found) {
   if (!look.texture || !look.stretch) return;
   auto samplers = make_samplers(store, grid, look);
   // Written on the terrain pixels of the stretch grid only, the only ones read: the other rows'
   // pages are never touched.
-  FreshArray<float> found(3 * size_t(f.width) * size_t(f.height));
+  resize_fresh(found, 3 * size_t(f.width) * size_t(f.height));
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
     Samplers& s = samplers.local();
@@ -167,23 +167,31 @@ BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
 
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look,
-                        const BandStretch* given_stretch) {
+                        const BandStretch* stretch) {
+  Panorama p;
+  FreshArray<float> texels;
+  shade_panorama(store, grid, scene, f, camera, look, stretch, p, texels);
+  return p;
+}
+
+void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
+                    const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look,
+                    const BandStretch* given_stretch, Panorama& p, FreshArray<float>& texels) {
   const int w = f.width, h = f.height;
   const size_t n = size_t(w) * size_t(h);
-  Panorama p;
   p.width = w;
   p.height = h;
   p.first_row = f.first_row;
   // Every pixel of each array is written once below (fresh pages are not filled first).
   // The surface's texel, NaN for none; written and read on terrain pixels only (the sky's pages
   // are never touched).
-  FreshArray<float> texels(3 * n);
-  for (auto* a : {&p.altitude, &p.shading}) a->resize(n);
-  for (auto* a : {&p.distance, &p.lon, &p.lat}) a->resize(n);
-  p.land_cover.resize(look.land_cover ? n : 0);
-  p.cast_shadow.resize(look.shadow ? n : 0);
-  p.rgb.resize(3 * n);
-  p.silhouette.resize(n);
+  resize_fresh(texels, 3 * n);
+  for (auto* a : {&p.altitude, &p.shading}) resize_fresh(*a, n);
+  for (auto* a : {&p.distance, &p.lon, &p.lat}) resize_fresh(*a, n);
+  resize_fresh(p.land_cover, look.land_cover ? n : 0);
+  resize_fresh(p.cast_shadow, look.shadow ? n : 0);
+  resize_fresh(p.rgb, 3 * n);
+  resize_fresh(p.silhouette, n);
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto samplers = make_samplers(store, grid, look);
@@ -295,7 +303,6 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
         p.silhouette[i] = 255;
     }
   });
-  return p;
 }
 
 }  // namespace maquette

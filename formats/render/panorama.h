@@ -74,9 +74,11 @@ int stretch_step(int width, int height);
 
 // Appends to `texels` those of the terrain pixels of `f` on the grid of `step` (picture rows, so
 // the strips of a picture gather the whole picture's); nothing without a texture to stretch.
+// `scratch`: resized to 3 floats a pixel of `f`, written and read on those pixels only (its memory
+// reused by the strips of a picture).
 void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
                            const Fragments& f, const PanoramaLook& look, int step,
-                           StretchTexels& texels);
+                           StretchTexels& texels, FreshArray<float>& scratch);
 
 // The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
 // stored without a texture or with look.stretch false.
@@ -87,5 +89,12 @@ BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const Fragments& fragments, const PinholeCamera& camera,
                         const PanoramaLook& look, const BandStretch* stretch = nullptr);
+// The same into `out`, whose arrays are resized to the rows of `fragments` and every pixel of them
+// written, and `texels` (scratch, 3 floats a pixel, written and read on terrain pixels only): the
+// strips of a picture shaded one after the other into the same arrays reuse their memory.
+void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
+                    const Fragments& fragments, const PinholeCamera& camera,
+                    const PanoramaLook& look, const BandStretch* stretch, Panorama& out,
+                    FreshArray<float>& texels);
 
 }  // namespace maquette

@@ -142,36 +142,57 @@ int default_strip_rows(int width) {
   return std::max(rows, kGuideBlockRows);
 }
 
-void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
-                   const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
-                   const std::string& out) {
+namespace {
+
+// Rasterizes and shades the panorama of `scene` in strips of `strip_rows` rows into `writer`
+// (render_strips). One strip's arrays are drawn into strip after strip, each sized for the largest
+// strip at its first use (render/fresh_array.h resize_fresh): their pages are given once a picture,
+// and freed when this returns, before the files are encoded.
+void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
+                 const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                 PanoramaWriter& writer) {
   const int w = camera.spec().width, h = camera.spec().height;
-  PanoramaWriter writer(out, w, h, look.land_cover != nullptr, look.shadow != nullptr);
+  Fragments fragments;
+  FreshArray<float> texels;
+  Panorama picture;
   // Each strip's vertices given their attributes (render/terrain_scene.h) before it is shaded.
-  auto draw = [&](int first, int rows) {
-    Fragments f = rasterize(scene.mesh, camera, 1.0, first, rows);
-    attribute_vertices(scene, &f);
-    return f;
+  auto draw = [&](int first, int rows) -> const Fragments& {
+    rasterize(scene.mesh, camera, 1.0, first, rows, fragments);
+    attribute_vertices(scene, &fragments);
+    return fragments;
+  };
+  auto shade = [&](const Fragments& f, const BandStretch* stretch) -> const Panorama& {
+    shade_panorama(store, grid, scene, f, camera, look, stretch, picture, texels);
+    return picture;
   };
   if (strip_rows >= h) {
-    writer.write(shade_panorama(store, grid, scene, draw(0, h), camera, look), 0, h);
-    writer.commit();
+    writer.write(shade(draw(0, h), nullptr), 0, h);
     return;
   }
-  StretchTexels texels;
+  StretchTexels stretch_texels;
   if (look.texture && look.stretch)
     for (int first = 0; first < h; first += strip_rows)
       gather_stretch_texels(store, grid, scene, draw(first, strip_rows), look, stretch_step(w, h),
-                            texels);
-  const BandStretch stretch = texel_stretch(texels, look);
+                            stretch_texels, texels);
+  const BandStretch stretch = texel_stretch(stretch_texels, look);
   for (int first = 0; first < h; first += strip_rows) {
     const int last = std::min(h, first + strip_rows);
-    // A row of margin each side: the silhouettes of the strip's edge rows look at their neighbours.
-    const int top = std::max(0, first - 1), bottom = std::min(h, last + 1);
-    writer.write(
-        shade_panorama(store, grid, scene, draw(top, bottom - top), camera, look, &stretch), first,
-        last);
+    // A row of margin each side: the silhouettes of the strip's edge rows look at their
+    // neighbours. Every strip but the last drawn strip_rows + 2 rows (the first its margin below
+    // and one more row), so that the first is the largest and its arrays serve every other.
+    const int top = std::max(0, first - 1), bottom = std::min(h, top + strip_rows + 2);
+    writer.write(shade(draw(top, bottom - top), &stretch), first, last);
   }
+}
+
+}  // namespace
+
+void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
+                   const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                   const std::string& out) {
+  PanoramaWriter writer(out, camera.spec().width, camera.spec().height, look.land_cover != nullptr,
+                        look.shadow != nullptr);
+  draw_strips(store, grid, scene, camera, look, strip_rows, writer);
   writer.commit();
 }
 

@@ -229,6 +229,13 @@ std::vector<size_t> block_bounds(const RenderMesh& mesh) {
 
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
                     int rows) {
+  Fragments f;
+  rasterize(mesh, camera, near, first_row, rows, f);
+  return f;
+}
+
+void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
+               int rows, Fragments& f) {
   const int w = camera.spec().width, h = camera.spec().height;
   const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
   const size_t vertex_count = mesh.positions.size() / 3;
@@ -292,38 +299,37 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
   });
   std::vector<std::vector<const ClippedTriangle*>> band_pieces(static_cast<size_t>(bands));
   std::vector<std::vector<uint32_t>> band_blocks(static_cast<size_t>(bands));
-  // The bands [first, last] (from `top`) whose rows' centres a bounding box (1/16 px) meets, none
-  // when no pixel centre is within it.
-  auto band_span = [&](int64_t x0, int64_t x1, int64_t y0, int64_t y1) {
-    auto [first, last] = centre_span(y0, y1, h);
-    first = std::max<int64_t>(first, top) - top;
-    last = std::min<int64_t>(last, bottom - 1) - top;
-    const auto [c0, c1] = centre_span(x0, x1, w);
-    if (first > last || c0 > c1) return std::pair<int64_t, int64_t>{1, 0};
-    return std::pair<int64_t, int64_t>{first / kBandRows, last / kBandRows};
+  // The bands [first, last] (from `top`) holding the picture's `rows` [r0, r1] whose centres a
+  // bounding box meets (centre_span), none when no pixel centre is within it (`columns` none).
+  using Span = std::pair<int64_t, int64_t>;
+  auto band_span = [&](Span rows, Span columns) {
+    const int64_t first = std::max<int64_t>(rows.first, top) - top;
+    const int64_t last = std::min<int64_t>(rows.second, bottom - 1) - top;
+    if (first > last || columns.first > columns.second) return Span{1, 0};
+    return Span{first / kBandRows, last / kBandRows};
   };
   for (const ClippedTriangle* c : pieces) {
-    const auto [x0, x1] = std::minmax({c->v[0].x, c->v[1].x, c->v[2].x});
-    const auto [y0, y1] = std::minmax({c->v[0].y, c->v[1].y, c->v[2].y});
-    const auto [first, last] = band_span(x0, x1, y0, y1);
+    const auto [first, last] = band_span(row_span(c->v[0], c->v[1], c->v[2], h),
+                                         column_span(c->v[0], c->v[1], c->v[2], w));
     for (int64_t band = first; band <= last; ++band) band_pieces[size_t(band)].push_back(c);
   }
   for (const uint32_t b : order) {
     const Block& block = blocks[b];
-    const auto [first, last] = band_span(block.x0, block.x1, block.y0, block.y1);
+    const auto [first, last] =
+        band_span(centre_span(block.y0, block.y1, h), centre_span(block.x0, block.x1, w));
     for (int64_t band = first; band <= last; ++band) band_blocks[size_t(band)].push_back(b);
   }
 
-  Fragments f;
   f.width = w;
   f.height = bottom - top;
   f.first_row = top;
   const size_t n = size_t(w) * size_t(f.height);
-  // Each band clears its own rows before drawing them: fresh pages touched once, while in cache.
-  f.triangle.resize(n);
-  f.depth.resize(n);
-  f.b1.resize(n);
-  f.b2.resize(n);
+  // Each band clears its own rows before drawing them: fresh pages touched once, while in cache
+  // (an earlier strip's arrays are resized within their capacity: no page given twice).
+  resize_fresh(f.triangle, n);
+  resize_fresh(f.depth, n);
+  resize_fresh(f.b1, n);
+  resize_fresh(f.b2, n);
   std::vector<size_t> culled(size_t(bands), 0);
   tbb::parallel_for(0, bands, [&](int band) {
     const int row0 = top + band * kBandRows, row1 = std::min(bottom, row0 + kBandRows);
@@ -351,7 +357,6 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
     }
   });
   f.culled_blocks = std::accumulate(culled.begin(), culled.end(), size_t(0));
-  return f;
 }
 
 }  // namespace maquette

@@ -60,6 +60,14 @@ struct TileShare {
   size_t vertices = 0, indices = 0;
 };
 
+// Where a sample at `z` metres of the DEM's datum is drawn: `exaggeration` times z along the
+// ellipsoid's normal from its place at height 0 (unbent).
+Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
+  const double h = exaggeration * z;
+  return {place.base[0] + h * place.up[0], place.base[1] + h * place.up[1],
+          place.base[2] + h * place.up[2]};
+}
+
 // `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
 Tile<float> tile_heights(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
   const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
@@ -72,41 +80,40 @@ Tile<float> tile_heights(const Store& store, const Grid& grid, const LayerInfo& 
       });
 }
 
+// The vertex numbering write_tile writes, tile_share counts and attribute_tile reads: calls
+// visit(vertex, col, row, k) for each vertex of a tile of `heights` whose first is `first`: the
+// drawn samples with data in row order (k -1), then the skirt's, each with the ring sample it
+// hangs from, the k-th of halo_ring(n).
+template <typename Visit>
+void each_vertex(const Tile<float>& heights, int n, size_t first, Visit&& visit) {
+  size_t v = first;
+  for (int r = -1; r <= n; ++r)
+    for (int c = -1; c <= n; ++c)
+      if (!std::isnan(heights.at(c, r))) visit(v++, c, r, -1);
+  const auto ring = halo_ring(n);
+  for (size_t k = 0; k < ring.size(); ++k)
+    if (!std::isnan(heights.at(ring[k][0], ring[k][1]))) visit(v++, ring[k][0], ring[k][1], int(k));
+}
+
 TileShare tile_share(const Tile<float>& heights, int n) {
   TileShare t;
+  each_vertex(heights, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
   auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
-  for (int r = -1; r <= n; ++r)
-    for (int c = -1; c <= n; ++c) {
-      t.vertices += has(c, r);
-      if (r < n && c < n && has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1))
-        t.indices += 6;
-    }
+  for (int r = -1; r < n; ++r)
+    for (int c = -1; c < n; ++c)
+      if (has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1)) t.indices += 6;
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k) {
     const auto& a = ring[k];
     const auto& b = ring[(k + 1) % ring.size()];
-    t.vertices += has(a[0], a[1]);
     if (has(a[0], a[1]) && has(b[0], b[1])) t.indices += 6;
   }
   return t;
 }
 
-// Calls visit(vertex, col, row) for each of `tile`'s vertices in the order write_tile writes
-// them: the drawn samples with data in row order, then the skirt's, each with the ring sample it
-// hangs from.
-template <typename Visit>
-void each_vertex(const SceneTile& tile, int n, Visit&& visit) {
-  size_t v = tile.first_vertex;
-  for (int r = -1; r <= n; ++r)
-    for (int c = -1; c <= n; ++c)
-      if (!std::isnan(tile.heights.at(c, r))) visit(v++, c, r);
-  for (const auto& [c, r] : halo_ring(n))
-    if (!std::isnan(tile.heights.at(c, r))) visit(v++, c, r);
-}
-
 // Writes `tile`'s share of the mesh's positions, indices and block starts (its share counted by
 // tile_share) from index `first_index` and block start `first_block` (tile_blocks(n) of them):
-// the drawn samples' vertices in row order, then the skirt's in ring order (each_vertex); the
+// the vertices as each_vertex numbers them (the drawn samples', then the skirt's); the
 // squares' triangles in patches of kBlockSquares x kBlockSquares squares (the patches in row
 // order, each in row order), then the skirt's, each patch and each side of the skirt starting a
 // block.
@@ -120,23 +127,34 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
   auto slot = [&](int c, int r) { return size_t(r + kHalo) * size_t(side) + size_t(c + kHalo); };
   auto& positions = mesh.positions;
   auto& indices = mesh.indices;
-  size_t next_vertex = tile.first_vertex, next_index = first_index;
+  size_t next_index = first_index;
   // The drawn samples (-1 .. n, the halo's inner ring included) become vertices (scene indices) at
-  // their exaggerated positions; heights of the datum run along the ellipsoid's normal.
+  // their exaggerated positions; heights of the datum run along the ellipsoid's normal. The skirt:
+  // a wall hanging from the halo's ring, deeper than the tile's relief plus a sample (the drawn
+  // samples, visited first, give the relief), so that where a neighbour is drawn at another level
+  // (its surface above or below this one near the seam) no ray passes between the two.
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
+  const auto ring = halo_ring(n);
+  std::vector<uint32_t> below(ring.size(), kNoVertex);
   float lowest = INFINITY, highest = -INFINITY;
-  for (int r = -1; r <= n; ++r)
-    for (int c = -1; c <= n; ++c) {
-      const float z = tile.heights.at(c, r);
-      if (std::isnan(z)) continue;
+  const double sample_m = grid.level_info(cell.level(), n).pixel_m;
+  each_vertex(tile.heights, n, tile.first_vertex, [&](size_t v, int c, int r, int k) {
+    const float z = tile.heights.at(c, r);
+    Vec3d p;
+    if (k < 0) {
       lowest = std::min(lowest, z);
       highest = std::max(highest, z);
-      const size_t v = next_vertex++;
       vertex[slot(c, r)] = uint32_t(v);
-      const SamplePlace place = places.at(c, r);
-      const double h = exaggeration * z;
-      for (size_t k = 0; k < 3; ++k) positions[3 * v + k] = place.base[k] + h * place.up[k];
+      p = exaggerated(places.at(c, r), z, exaggeration);
+    } else {
+      const double depth = exaggeration * (double(highest - lowest) + sample_m);
+      const LonLat place = places.at(c, r).position;
+      p = camera.frame().to_enu(place.lon, place.lat,
+                                heights(place, z) + (exaggeration - 1) * z - depth);
+      below[size_t(k)] = uint32_t(v);
     }
+    std::copy(p.begin(), p.end(), positions.begin() + std::ptrdiff_t(3 * v));
+  });
   auto at = [&](int c, int r) {
     return c < -1 || r < -1 || c > n || r > n ? kNoVertex : vertex[slot(c, r)];
   };
@@ -155,24 +173,6 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
           triangles(a, b, e, d);
         }
     }
-  // The skirt: a wall hanging from the halo's ring, deeper than the tile's relief plus a sample,
-  // so that where a neighbour is drawn at another level (its surface above or below this one
-  // near the seam) no ray passes between the two.
-  const double depth =
-      exaggeration * (double(highest - lowest) + grid.level_info(cell.level(), n).pixel_m);
-  auto hang = [&](int c, int r) {
-    const size_t below = next_vertex++;
-    const LonLat p = places.at(c, r).position;
-    const float z = tile.heights.at(c, r);
-    const double h = heights(p, z) + (exaggeration - 1) * z - depth;
-    const auto e = camera.frame().to_enu(p.lon, p.lat, h);
-    std::copy(e.begin(), e.end(), positions.begin() + std::ptrdiff_t(3 * below));
-    return uint32_t(below);
-  };
-  const auto ring = halo_ring(n);
-  std::vector<uint32_t> below(ring.size(), kNoVertex);
-  for (size_t k = 0; k < ring.size(); ++k)
-    if (at(ring[k][0], ring[k][1]) != kNoVertex) below[k] = hang(ring[k][0], ring[k][1]);
   for (size_t k = 0; k < ring.size(); ++k) {
     if (k % size_t(n + 1) == 0) start_block();  // a side of the ring
     const size_t next = (k + 1) % ring.size();
@@ -181,15 +181,14 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
     triangles(a, b, below[next], below[k]);
   }
   // The arrays were sized by tile_share's counts and are not initialized: a share that differs
-  // would leave garbage or overrun a neighbour's, so the two loops' agreement is checked.
-  if (next_vertex - tile.first_vertex != share.vertices ||
-      next_index - first_index != share.indices || next_block - first_block != tile_blocks(n))
+  // would leave garbage or overrun a neighbour's, so the triangles' loops are checked against its
+  // count (the vertices are numbered by each_vertex for both).
+  if (next_index - first_index != share.indices || next_block - first_block != tile_blocks(n))
     throw std::logic_error("panorama mesh of cell " + cell.ToText() + ": wrote " +
-                           std::to_string(next_vertex - tile.first_vertex) + " vertices, " +
                            std::to_string(next_index - first_index) + " indices and " +
                            std::to_string(next_block - first_block) + " block starts, counted " +
-                           std::to_string(share.vertices) + ", " + std::to_string(share.indices) +
-                           " and " + std::to_string(tile_blocks(n)));
+                           std::to_string(share.indices) + " and " +
+                           std::to_string(tile_blocks(n)));
 }
 
 // A thread's memo of one tile's samples' exaggerated, unbent positions (samples -2 .. n + 1),
@@ -218,24 +217,20 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     memo.position.resize(size_t(side) * size_t(side));
     memo.stamp.assign(size_t(side) * size_t(side), 0);
   }
-  // The sample's position; NaN where it has none.
-  auto position = [&](int c, int r) -> const Vec3d& {
+  // The sample's position; NaN where it has none. `place`: the sample's, when the caller has it
+  // (a shown vertex's, not placed twice).
+  auto position = [&](int c, int r, const SamplePlace* place = nullptr) -> const Vec3d& {
     const size_t slot = size_t(r + kHalo) * size_t(side) + size_t(c + kHalo);
     Vec3d& p = memo.position[slot];
     if (memo.stamp[slot] != stamp) {
       memo.stamp[slot] = stamp;
       const float z = tile.heights.at(c, r);
-      if (std::isnan(z)) {
-        p = Vec3d{NAN, NAN, NAN};
-      } else {
-        const SamplePlace place = places.at(c, r);
-        const double h = scene.exaggeration * z;
-        for (size_t k = 0; k < 3; ++k) p[k] = place.base[k] + h * place.up[k];
-      }
+      p = std::isnan(z) ? Vec3d{NAN, NAN, NAN}
+                        : exaggerated(place ? *place : places.at(c, r), z, scene.exaggeration);
     }
     return p;
   };
-  each_vertex(tile, n, [&](size_t v, int c, int r) {
+  each_vertex(tile.heights, n, tile.first_vertex, [&](size_t v, int c, int r, int) {
     if (scene.attributed[v] != 1) return;
     scene.attributed[v] = 2;
     const SamplePlace place = places.at(c, r);
@@ -246,7 +241,7 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     scene.altitude[v] = tile.heights.at(c, r);
     // The normal: the cross product of the column and row central differences, turned up;
     // one-sided only where a neighbour has no data.
-    const Vec3d pv = position(c, r);
+    const Vec3d pv = position(c, r, &place);
     auto span = [&](int c0, int r0, int c1, int r1) {
       const Vec3d* a = &position(c0, r0);
       const Vec3d* b = &position(c1, r1);

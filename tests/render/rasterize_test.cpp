@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <opencv2/calib3d.hpp>
 
@@ -173,6 +175,38 @@ TEST(Rasterize, SameBitsForOneAndTwoThreads) {
   EXPECT_EQ(0, std::memcmp(one.depth.data(), two.depth.data(), one.depth.size() * sizeof(double)));
   EXPECT_EQ(one.b1, two.b1);
   EXPECT_EQ(one.b2, two.b2);
+}
+
+TEST(Rasterize, StripsIntoOneReusedFragmentsAreTheWholePicturesRows) {
+  // A picture's strips drawn one after the other into the same Fragments (render_strips): each
+  // the whole picture's rows, though the arrays hold the previous strip's values (here
+  // overwritten with values no pixel gets, so a pixel left unwritten shows; the sky is in the top
+  // rows, drawn after the bottom ones), and the largest strip, drawn first, sizes the arrays for
+  // the others (no allocation after it).
+  const Scene s;
+  const PinholeCamera camera(s.spec);
+  const Fragments whole = rasterize(s.mesh, camera);
+  const int h = s.spec.height, w = s.spec.width;
+  Fragments f;
+  const uint32_t* storage = nullptr;
+  for (const auto& [first, rows] : {std::pair{150, 150}, std::pair{0, 150}, std::pair{60, 100}}) {
+    std::fill(f.triangle.begin(), f.triangle.end(), 7u);
+    std::fill(f.depth.begin(), f.depth.end(), -1.0);
+    std::fill(f.b1.begin(), f.b1.end(), 2.0f);
+    std::fill(f.b2.begin(), f.b2.end(), 2.0f);
+    rasterize(s.mesh, camera, 1.0, first, rows, f);
+    if (!storage) storage = f.triangle.data();
+    EXPECT_EQ(storage, f.triangle.data()) << "rows from " << first;
+    ASSERT_EQ(f.first_row, first);
+    ASSERT_EQ(f.height, std::min(rows, h - first));
+    const size_t skip = size_t(first) * size_t(w), m = size_t(f.height) * size_t(w);
+    ASSERT_EQ(f.triangle.size(), m);
+    EXPECT_TRUE(std::equal(f.triangle.begin(), f.triangle.end(), whole.triangle.begin() + skip))
+        << "rows from " << first;
+    EXPECT_EQ(0, std::memcmp(f.depth.data(), &whole.depth[skip], m * sizeof(double)));
+    EXPECT_EQ(0, std::memcmp(f.b1.data(), &whole.b1[skip], m * sizeof(float)));
+    EXPECT_EQ(0, std::memcmp(f.b2.data(), &whole.b2[skip], m * sizeof(float)));
+  }
 }
 
 TEST(Rasterize, SharedEdgesDrawNoPixelTwice) {
