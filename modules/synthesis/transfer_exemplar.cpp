@@ -145,8 +145,12 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
        {"painting", "labels", "classes", "exclusion", "exclude_classes", "painting_altitude",
         "painting_distance", "exemplar_scale", "k", "exemplars", "harmonize"})
     if (params.contains(field)) key[field] = params.at(field);
+  // The first painting's labels depend on the table's groups only; a further painting's on the
+  // table itself (each of its classes takes the first's class for the same target value).
   if (params.contains("landcover_classes"))
-    key["groups"] = class_groups(params.at("landcover_classes"), kOp);
+    key["groups"] = params.contains("exemplars")
+                        ? params.at("landcover_classes")
+                        : nlohmann::json(class_groups(params.at("landcover_classes"), kOp));
   struct Slot {
     tbb::collaborative_once_flag once;
     std::shared_ptr<const TransferExemplar> exemplar;

@@ -328,6 +328,21 @@ TEST(MultiExemplar, SourceMapsBackToThePaintingPixel) {
   EXPECT_EQ(t->pixel_of(2, 0, 0), -1);
 }
 
+// A further painting's labels follow the first painting's table, not only its groups: two tables
+// with the same groups, their classes swapped, are two exemplars (one cached analysis would give
+// the second the first's labels).
+TEST(MultiExemplar, AnotherFirstTableWithTheSameGroupsRelabelsTheFurtherPainting) {
+  const json params = two_paintings("none");  // the same files for both
+  json swapped = params;
+  swapped["landcover_classes"] = {{"10", 1}, {"20", 0}};
+  const auto t = transfer_exemplar(params), u = transfer_exemplar(swapped);
+  // The second painting's (10, 20) is class 5, serving target value 10.
+  const int32_t s = t->pixel_of(1, 10, 20);
+  ASSERT_GE(s, 0);
+  EXPECT_EQ(t->pyramid.levels[0].labels[size_t(s)], 0);
+  EXPECT_EQ(u->pyramid.levels[0].labels[size_t(s)], 1);
+}
+
 // The message of the error `params` raise, validated then built.
 std::string refusal(const json& params) {
   try {
