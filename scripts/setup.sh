@@ -58,18 +58,18 @@ fi
 
 # A second painting for synthesis.transfer's several exemplars (issue 18): Van Gogh's The Starry
 # Night (1889, public domain), 752 x 600, shipped by Debian's opencv-doc among OpenCV's sample
-# data; only the JPEG is extracted into build/demo-data (its class polygons:
+# data (a ~96 MB package: only the JPEG is extracted into build/demo-data; its class polygons:
 # examples/starry-night-classes.geojson). Without it the tests that need it are skipped.
 if [ ! -f "$demo_data/starry_night.jpg" ]; then
   tmp_doc=$(mktemp -d)
-  if (cd "$tmp_doc" && apt-get download -qq opencv-doc >/dev/null 2>&1); then
-    dpkg-deb --fsys-tarfile "$tmp_doc"/opencv-doc_*.deb |
-      tar -x -C "$tmp_doc" ./usr/share/doc/opencv-doc/examples/data/starry_night.jpg
+  painting=usr/share/doc/opencv-doc/examples/data/starry_night.jpg
+  if (cd "$tmp_doc" && apt-get download -qq opencv-doc >/dev/null 2>&1 &&
+    dpkg-deb --fsys-tarfile opencv-doc_*.deb | tar -x "./$painting"); then
     mkdir -p "$demo_data"
-    cp "$tmp_doc"/usr/share/doc/opencv-doc/examples/data/starry_night.jpg "$demo_data/"
+    cp "$tmp_doc/$painting" "$demo_data/"
     echo "setup: second painting (Debian opencv-doc: starry_night.jpg) in $demo_data"
   else
-    echo "setup: could not download opencv-doc (no second painting for synthesis.transfer)"
+    echo "setup: could not get starry_night.jpg from opencv-doc (no second painting for synthesis.transfer)"
   fi
   rm -rf "$tmp_doc"
 fi

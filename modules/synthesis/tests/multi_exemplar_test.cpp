@@ -258,6 +258,10 @@ TEST(MultiExemplar, DrawsFromBothEachPixelItsHarmonizedSourcesColour) {
   for (size_t i = 0; i < src.size(); ++i) {
     const SourcePixel s = t->source_of(src[i]);
     std::array<double, 3> expected{};
+    // Inside its painting (not the gap between the two), and not excluded there.
+    ASSERT_TRUE(s.col >= 0 && s.row >= 0 && s.col < (s.exemplar == 0 ? kWa : kWb) &&
+                s.row < (s.exemplar == 0 ? kHa : kHb))
+        << "a pixel outside painting " << s.exemplar << " copied: " << s.col << " " << s.row;
     if (s.exemplar == 0) {
       ASSERT_NE(class_a(s.col, s.row), 2) << "an excluded pixel of the first painting copied";
       expected = colour_a(s.col, s.row);
