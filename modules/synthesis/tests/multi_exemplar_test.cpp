@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../combined_exemplar.h"
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
 #include "../transfer_params.h"
@@ -330,6 +331,22 @@ TEST(MultiExemplar, SourceMapsBackToThePaintingPixel) {
   }
   EXPECT_EQ(t->pixel_of(1, kWb, 0), -1);
   EXPECT_EQ(t->pixel_of(2, 0, 0), -1);
+}
+
+// No pyramid level lets a patch straddle the two paintings: at every level the columns between
+// the first painting's last and the second's first are excluded on every row, and there are at
+// least kCombinedGap >> level of them.
+TEST(MultiExemplar, TheGapIsExcludedAtEveryLevel) {
+  const auto t = transfer_exemplar(two_paintings("none"));
+  ASSERT_EQ(t->parts.size(), 2u);
+  for (size_t l = 0; l < t->pyramid.levels.size(); ++l) {
+    const ExemplarLevel& e = t->pyramid.levels[l];
+    const int a_end = (t->parts[0].width + (1 << l) - 1) >> l, b_begin = t->parts[1].x0 >> l;
+    EXPECT_GE(b_begin - a_end, kCombinedGap >> l) << "level " << l;
+    for (int y = 0; y < e.height; ++y)
+      for (int x = a_end; x < b_begin; ++x)
+        ASSERT_EQ(e.excluded[size_t(e.index(x, y))], 1) << "level " << l << " at " << x << " " << y;
+  }
 }
 
 // A further painting's labels follow the first painting's table, not only its groups: two tables
