@@ -115,8 +115,14 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
                                          std::string(kOp) + ".harmonize"));
   auto out = std::make_shared<TransferExemplar>();
   out->scale = scale;
-  out->pyramid =
-      analyse_exemplar(combine_exemplars(parts, out->parts), kLevels, params.at("k").get<int>());
+  Exemplar combined = combine_exemplars(parts, out->parts);
+  // The synthesis packs an exemplar pixel's column and row as x | y << 16 in 32 bits.
+  if (combined.width > 65535 || combined.height > 32767)
+    throw Error(std::string(kOp) + ": the exemplar is " + std::to_string(combined.width) + " x " +
+                std::to_string(combined.height) +
+                " pixels (the paintings side by side, after exemplar_scale): at most 65535 x "
+                "32767; raise exemplar_scale or give fewer paintings");
+  out->pyramid = analyse_exemplar(std::move(combined), kLevels, params.at("k").get<int>());
   // Measured with the default weights: the same exemplar serves every step's weights.
   measure_usage(out->pyramid, SynthesisParams{});
   return out;

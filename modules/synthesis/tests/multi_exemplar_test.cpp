@@ -407,6 +407,19 @@ TEST(MultiExemplar, BadParamsNameTheExemplarTheFieldAndTheValue) {
   const std::string tiny = refusal(small);
   EXPECT_NE(tiny.find("synthesis.transfer.exemplars[1].painting: "), std::string::npos) << tiny;
   EXPECT_NE(tiny.find("is 4 x 4 pixels"), std::string::npos) << tiny;
+  // Two further paintings 33,000 pixels wide: side by side wider than a packed column allows.
+  json wide = good;
+  wide["exemplars"] = json::array();
+  for (const char* name : {"wide1", "wide2"})
+    wide["exemplars"].push_back(
+        {{"painting", write_png(std::string(name) + ".png", 33000, 16, 3,
+                                [](int x, int, int b) { return (x * 7 + b * 50) % 256; })},
+         {"labels", write_png(std::string(name) + "-classes.png", 33000, 16, 1,
+                              [](int, int, int) { return 5; })},
+         {"landcover_classes", {{"10", 5}}}});
+  const std::string too_wide = refusal(wide);
+  EXPECT_NE(too_wide.find("synthesis.transfer: the exemplar is 66"), std::string::npos) << too_wide;
+  EXPECT_NE(too_wide.find("at most 65535 x 32767"), std::string::npos) << too_wide;
   json harmonize = good;
   harmonize["harmonize"] = "mean";
   EXPECT_NE(refusal(harmonize).find("params.harmonize: \"mean\" is not one of"), std::string::npos)
