@@ -164,6 +164,16 @@ class Seams : public ::testing::Test {
     return n;
   }
 
+  // Every pixel of `window` equals one synthesis of it across the edge, read from the cells on
+  // both sides (tiles of kSize), which together cover the window.
+  static void expect_one_synthesis(const PixelRect& window, std::initializer_list<CellId> cells) {
+    const auto expected = whole(window);
+    size_t compared = 0;
+    for (const CellId cell : cells)
+      EXPECT_EQ(differing(window, expected, cell, compared), 0u) << cell.ToText();
+    EXPECT_EQ(compared, size_t(window.width * window.height));
+  }
+
   static inline fs::path* dir_ = nullptr;
   static inline OperatorRegistry* registry_ = nullptr;
   static inline const Operator* operator_ = nullptr;
@@ -220,14 +230,8 @@ TEST(FacePlaneSeams, TheStoresHaloLaysANeighbourWhereThePlaneDoes) {
 TEST_F(Seams, CellsOnBothSidesOfAnEquatorialEdgeEqualOneSynthesisAcrossIt) {
   // A window of 192 x 64 across the edge between O and P, not aligned with the cells.
   const PixelRect window{kFace - 96, int64_t(kRow) * kSize + 40, 192, 64};
-  const auto expected = whole(window);
-  size_t compared = 0;
-  EXPECT_EQ(differing(window, expected,
-                      CellId::FromFaceColRow(kFaceO, kLevel, (1u << kLevel) - 1, kRow), compared),
-            0u);
-  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceP, kLevel, 0, kRow), compared),
-            0u);
-  EXPECT_EQ(compared, size_t(window.width * window.height));
+  expect_one_synthesis(window, {CellId::FromFaceColRow(kFaceO, kLevel, (1u << kLevel) - 1, kRow),
+                                CellId::FromFaceColRow(kFaceP, kLevel, 0, kRow)});
 }
 
 TEST_F(Seams, ACellOfAnotherTilingEqualsTheSynthesisAcrossTheEdge) {
@@ -243,27 +247,15 @@ TEST_F(Seams, ACellOfAnotherTilingEqualsTheSynthesisAcrossTheEdge) {
 TEST_F(Seams, CellsOnBothSidesOfTheAntimeridianEqualOneSynthesisAcrossIt) {
   // R's last 96 columns, then O's first 96 (plane columns 4 faces on: the same place).
   const PixelRect window{4 * kFace - 96, int64_t(kRow) * kSize + 150, 192, 64};
-  const auto expected = whole(window);
-  size_t compared = 0;
-  EXPECT_EQ(differing(window, expected,
-                      CellId::FromFaceColRow(kFaceR, kLevel, (1u << kLevel) - 1, kRow), compared),
-            0u);
-  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, 0, kRow), compared),
-            0u);
-  EXPECT_EQ(compared, size_t(window.width * window.height));
+  expect_one_synthesis(window, {CellId::FromFaceColRow(kFaceR, kLevel, (1u << kLevel) - 1, kRow),
+                                CellId::FromFaceColRow(kFaceO, kLevel, 0, kRow)});
 }
 
 TEST_F(Seams, CellsOnBothSidesOfNsEdgeWithOEqualOneSynthesisAcrossIt) {
   // N's last 32 rows above O's first 32 (N is laid unturned above O).
   const PixelRect window{int64_t(kRow) * kSize + 70, -32, 96, 64};
-  const auto expected = whole(window);
-  size_t compared = 0;
-  EXPECT_EQ(differing(window, expected,
-                      CellId::FromFaceColRow(kFaceN, kLevel, kRow, (1u << kLevel) - 1), compared),
-            0u);
-  EXPECT_EQ(differing(window, expected, CellId::FromFaceColRow(kFaceO, kLevel, kRow, 0), compared),
-            0u);
-  EXPECT_EQ(compared, size_t(window.width * window.height));
+  expect_one_synthesis(window, {CellId::FromFaceColRow(kFaceN, kLevel, kRow, (1u << kLevel) - 1),
+                                CellId::FromFaceColRow(kFaceO, kLevel, kRow, 0)});
 }
 
 TEST_F(Seams, RefusesAColumnPeriodThatIsNoMultipleOf16) {
