@@ -200,6 +200,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto& threads = samplers.threads_->samplers;
+  std::vector<uint8_t> untextured(size_t(h), 0);  // rows with a terrain pixel without a texel
 
   // What each pixel sees: guides (its shading among them) and the surface's texel.
   tbb::parallel_for(0, h, [&](int row) {
@@ -233,6 +234,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[o] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, texel);
+      if (std::isnan(texel[0])) untextured[size_t(row)] = 1;
       if (s.land_cover) {
         float label = NAN;
         p.land_cover[o] =
@@ -260,6 +262,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
   // Past the imagery's edge, its nearest texel within the reach.
   if (look.texture)
     tbb::parallel_for(0, h, [&](int row) {
+      if (!untextured[size_t(row)]) return;
       Samplers& s = threads.local();
       for (int col = 0; col < w; ++col) {
         const size_t i = size_t(row) * size_t(w) + size_t(col);
