@@ -18,7 +18,7 @@ namespace maquette {
 
 constexpr int kGuideBlockRows = 256;  // geotiff_creation_options' blocks
 constexpr double kStripPixels = 16e6;
-constexpr double kFragmentPixels = 1 << 20;
+constexpr double kFragmentPixels = 1 << 21;
 
 struct PanoramaWriter::Files {
   std::string out, stem;
@@ -146,7 +146,7 @@ int default_strip_rows(int width) {
 
 namespace {
 
-// Rows of fragments drawn at once for a picture in memory: about 1 M pixels (20 MB of fragments),
+// Rows of fragments drawn at once for a picture in memory: about 2 M pixels (40 MB of fragments),
 // a multiple of the rasterizer's bands of 8 rows.
 int fragment_rows(int width) { return std::max(8, int(kFragmentPixels / width) / 8 * 8); }
 

@@ -39,7 +39,7 @@ void write_panorama(const Panorama& p, const std::string& out);
 // 256-row blocks.
 int default_strip_rows(int width);
 
-// The whole panorama of `scene` in memory: its fragments drawn in strips of about 1 M pixels into
+// The whole panorama of `scene` in memory: its fragments drawn in strips of about 2 M pixels into
 // one strip's arrays (render/panorama.h shade_panorama; the mesh measured once, render/
 // rasterizer.h RasterPlan), so that only the picture's guides, texels and colours are whole,
 // writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
