@@ -99,7 +99,11 @@ const LayerSampler::Halo& LayerSampler::halo(CellId cell) {
   if (fresh) {
     h.square = grid_.plane_square(cell);
     if (raw(cell))
-      h.tile = assemble_halo(grid_, cell, layer_.tile_size, 1, [this](CellId c) { return raw(c); });
+      h.tile =
+          assemble_halo(grid_, cell, layer_.tile_size, 1, [this](CellId c) -> const Tile<float>* {
+            const auto& tile = raw(c);  // in the cache: read, not copied
+            return tile ? &*tile : nullptr;
+          });
   }
   return h;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -85,24 +86,33 @@ void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, const
     for (int k = 0; k < 3; ++k) out[k] = texel[look.texture->channels < 3 ? 0 : k];
 }
 
-tbb::enumerable_thread_specific<Samplers> make_samplers(const Store& store, const Grid& grid,
-                                                        const PanoramaLook& look) {
-  return tbb::enumerable_thread_specific<Samplers>([&] {
-    Samplers s;
-    if (look.texture) {
-      s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
-      s.edge.emplace(store, grid, *look.texture, kTextureReach);
-    }
-    if (look.land_cover)
-      s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
-    return s;
-  });
-}
+}  // namespace
+
+struct PanoramaSamplers::Threads {
+  tbb::enumerable_thread_specific<Samplers> samplers;
+};
+
+PanoramaSamplers::PanoramaSamplers(const Store& store, const Grid& grid, const PanoramaLook& look)
+    : threads_(std::make_unique<Threads>(
+          Threads{tbb::enumerable_thread_specific<Samplers>([&store, &grid, look] {
+            Samplers s;
+            if (look.texture) {
+              s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
+              s.edge.emplace(store, grid, *look.texture, kTextureReach);
+            }
+            if (look.land_cover)
+              s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
+            return s;
+          })})) {}
+
+PanoramaSamplers::~PanoramaSamplers() = default;
+
+namespace {
 
 // Appends to `texels` those of `found` (3 per pixel of the strip of rows of `f`; NaN for none; read
 // on its terrain pixels only) on the stretch grid of `step`, in row order: each row's texels
 // counted, then copied to their places, rows side by side (no serial share, no regrowth).
-void append_stretch_texels(const FreshArray<float>& found, const Fragments& f, int step,
+void append_stretch_texels(const float* found, const Fragments& f, int step,
                            StretchTexels& texels) {
   const int rows = f.height, width = f.width;
   using Counts = std::array<size_t, 3>;
@@ -134,17 +144,16 @@ void append_stretch_texels(const FreshArray<float>& found, const Fragments& f, i
 
 }  // namespace
 
-void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
-                           const Fragments& f, const PanoramaLook& look, int step,
+void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fragments& f,
+                           const PanoramaLook& look, PanoramaSamplers& samplers, int step,
                            StretchTexels& texels, FreshArray<float>& found) {
   if (!look.texture || !look.stretch) return;
-  auto samplers = make_samplers(store, grid, look);
   // Written on the terrain pixels of the stretch grid only, the only ones read: the other rows'
   // pages are never touched.
   resize_fresh(found, 3 * size_t(f.width) * size_t(f.height));
   tbb::parallel_for(0, f.height, [&](int row) {
     if ((f.first_row + row) % step != 0) return;
-    Samplers& s = samplers.local();
+    Samplers& s = samplers.threads_->samplers.local();
     s.start_row();
     for (int col = 0; col < f.width; col += step) {
       const size_t i = size_t(row) * size_t(f.width) + size_t(col);
@@ -153,7 +162,7 @@ void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainSc
       sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
     }
   });
-  append_stretch_texels(found, f, step, texels);
+  append_stretch_texels(found.data(), f, step, texels);
 }
 
 BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
@@ -165,54 +174,51 @@ BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
   return stretch;
 }
 
-Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
-                        const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look,
-                        const BandStretch* stretch) {
-  Panorama p;
-  FreshArray<float> texels;
-  shade_panorama(store, grid, scene, f, camera, look, stretch, p, texels);
-  return p;
-}
-
-void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
-                    const Fragments& f, const PinholeCamera& camera, const PanoramaLook& look,
-                    const BandStretch* given_stretch, Panorama& p, FreshArray<float>& texels) {
-  const int w = f.width, h = f.height;
-  const size_t n = size_t(w) * size_t(h);
-  p.width = w;
-  p.height = h;
-  p.first_row = f.first_row;
-  // Every pixel of each array is written once below (fresh pages are not filled first).
-  // The surface's texel, NaN for none; written and read on terrain pixels only (the sky's pages
-  // are never touched).
-  resize_fresh(texels, 3 * n);
+void size_panorama(Panorama& p, int width, int first_row, int rows, const PanoramaLook& look) {
+  const size_t n = size_t(width) * size_t(rows);
+  p.width = width;
+  p.height = rows;
+  p.first_row = first_row;
   for (auto* a : {&p.altitude, &p.shading}) resize_fresh(*a, n);
   for (auto* a : {&p.distance, &p.lon, &p.lat}) resize_fresh(*a, n);
   resize_fresh(p.land_cover, look.land_cover ? n : 0);
   resize_fresh(p.cast_shadow, look.shadow ? n : 0);
   resize_fresh(p.rgb, 3 * n);
   resize_fresh(p.silhouette, n);
+}
+
+void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& f,
+                  const PinholeCamera& camera, const PanoramaLook& look, PanoramaSamplers& samplers,
+                  Panorama& p, FreshArray<float>& texels, StretchTexels* seen) {
+  const int w = f.width, h = f.height;
+  // f's pixels in p's arrays start at `offset`. Every pixel of f's rows of each guide is written
+  // once below (fresh pages are not filled first). The surface's texel, NaN for none; written and
+  // read on terrain pixels only (the sky's pages are never touched).
+  const size_t offset = size_t(f.first_row - p.first_row) * size_t(w);
+  resize_fresh(texels, 3 * size_t(p.width) * size_t(p.height));
+  float* const texel_of = &texels[3 * offset];
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
-  auto samplers = make_samplers(store, grid, look);
+  auto& threads = samplers.threads_->samplers;
+  std::vector<uint8_t> untextured(size_t(h), 0);  // rows with a terrain pixel without a texel
 
   // What each pixel sees: guides (its shading among them) and the surface's texel.
   tbb::parallel_for(0, h, [&](int row) {
-    Samplers& s = samplers.local();
+    Samplers& s = threads.local();
     s.start_row();
     for (int col = 0; col < w; ++col) {
-      const size_t i = size_t(row) * size_t(w) + size_t(col);
+      const size_t i = size_t(row) * size_t(w) + size_t(col), o = offset + i;
       if (f.triangle[i] == Fragments::kSky) {  // NaN guides, a run of sky at once
         int end = col + 1;
         while (end < w && f.triangle[i + size_t(end - col)] == Fragments::kSky) ++end;
         const auto run = size_t(end - col);
-        for (auto* a : {&p.distance, &p.lon, &p.lat}) std::fill_n(&(*a)[i], run, NAN);
+        for (auto* a : {&p.distance, &p.lon, &p.lat}) std::fill_n(&(*a)[o], run, NAN);
         for (auto* a : {&p.altitude, &p.shading, &p.land_cover, &p.cast_shadow})
-          if (!a->empty()) std::fill_n(&(*a)[i], run, NAN);
+          if (!a->empty()) std::fill_n(&(*a)[o], run, NAN);
         col = end - 1;
         continue;
       }
-      float* texel = &texels[3 * i];
+      float* texel = &texel_of[3 * i];
       texel[0] = texel[1] = texel[2] = NAN;
       const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
       const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
@@ -222,15 +228,16 @@ void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& sc
         return sum;
       };
       const SurfacePoint at = surface_point(scene, f, i);
-      p.lon[i] = at.lonlat.lon;
-      p.lat[i] = at.lonlat.lat;
-      p.altitude[i] = float(interpolate(scene.altitude, 1, 0));
+      p.lon[o] = at.lonlat.lon;
+      p.lat[o] = at.lonlat.lat;
+      p.altitude[o] = float(interpolate(scene.altitude, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
-      p.distance[i] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
+      p.distance[o] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, texel);
+      if (std::isnan(texel[0])) untextured[size_t(row)] = 1;
       if (s.land_cover) {
         float label = NAN;
-        p.land_cover[i] =
+        p.land_cover[o] =
             sample_at(*s.land_cover, grid, *look.land_cover, at, &label) ? label : NAN;
       }
       const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
@@ -242,41 +249,50 @@ void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& sc
       double sunlit = 1;
       if (look.shadow) {
         const double shadow = interpolate(*look.shadow, 1, 0);
-        p.cast_shadow[i] = float(shadow);
+        p.cast_shadow[o] = float(shadow);
         sunlit = 1 - shadow;
       }
-      p.shading[i] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
+      p.shading[o] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
   });
 
-  // The display stretch (image/stretch.h) of the texels on the stretch grid, per band.
-  BandStretch stretch;
-  if (given_stretch) {
-    stretch = *given_stretch;
-  } else {
-    StretchTexels seen;
-    append_stretch_texels(texels, f, stretch_step(w, camera.spec().height), seen);
-    stretch = texel_stretch(seen, look);
-  }
+  // The imagery's own texels on the stretch grid, before the edge's are added.
+  if (seen) append_stretch_texels(texel_of, f, stretch_step(w, camera.spec().height), *seen);
 
-  // Colour: the texel, or past the imagery's edge its nearest within the reach (not stretched
-  // over: the imagery's own texels set the stretch), shaded and hazed.
-  tbb::parallel_for(0, h, [&](int row) {
-    Samplers& s = samplers.local();
-    const size_t start = size_t(row) * size_t(w);
-    if (std::find(f.triangle.begin() + std::ptrdiff_t(start),
-                  f.triangle.begin() + std::ptrdiff_t(start + size_t(w)),
-                  Fragments::kSky) != f.triangle.begin() + std::ptrdiff_t(start + size_t(w)))
-      sky_row(camera, f.first_row + row, &p.rgb[3 * start]);  // the terrain drawn over it
-    for (int col = 0; col < w; ++col) {
-      const size_t i = start + size_t(col);
-      if (f.triangle[i] == Fragments::kSky) continue;
-      Rgb colour = look.texture ? kNoTexel : kEarth;
-      float* texel = &texels[3 * i];
-      if (std::isnan(texel[0]) && s.edge) {
+  // Past the imagery's edge, its nearest texel within the reach.
+  if (look.texture)
+    tbb::parallel_for(0, h, [&](int row) {
+      if (!untextured[size_t(row)]) return;
+      Samplers& s = threads.local();
+      for (int col = 0; col < w; ++col) {
+        const size_t i = size_t(row) * size_t(w) + size_t(col);
+        float* texel = &texel_of[3 * i];
+        if (f.triangle[i] == Fragments::kSky || !std::isnan(texel[0])) continue;
         const SurfacePoint at = surface_point(scene, f, i);
         s.edge->sample(std::isnan(at.plane.x) ? grid.forward(at.lonlat) : at.plane, texel);
       }
+    });
+}
+
+void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
+                     const BandStretch& stretch, const FreshArray<float>& texels, Panorama& p) {
+  const int w = p.width, h = p.height;
+  // The sky: NaN distance.
+  auto sky = [&p](size_t i) { return std::isnan(p.distance[i]); };
+  // Colour: the texel (or past the imagery's edge its nearest, not stretched over), shaded and
+  // hazed.
+  tbb::parallel_for(0, h, [&](int row) {
+    const size_t start = size_t(row) * size_t(w);
+    for (size_t i = start; i < start + size_t(w); ++i)
+      if (sky(i)) {
+        sky_row(camera, p.first_row + row, &p.rgb[3 * start]);  // the terrain drawn over it
+        break;
+      }
+    for (int col = 0; col < w; ++col) {
+      const size_t i = start + size_t(col);
+      if (sky(i)) continue;
+      Rgb colour = look.texture ? kNoTexel : kEarth;
+      const float* texel = &texels[3 * i];
       if (!std::isnan(texel[0]))
         for (size_t k = 0; k < 3; ++k) colour[k] = stretch_byte(texel[k], stretch[k]);
       for (double& c : colour) c *= p.shading[i];
@@ -291,18 +307,34 @@ void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& sc
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col);
       p.silhouette[i] = 0;
-      if (f.triangle[i] == Fragments::kSky) continue;
+      if (sky(i)) continue;
       const double limit = p.distance[i] * look.silhouette_jump;
       auto beyond = [&](int c, int r) {
         if (c < 0 || r < 0 || c >= w || r >= h) return false;
         const size_t j = size_t(r) * size_t(w) + size_t(c);
-        return f.triangle[j] == Fragments::kSky || p.distance[j] > limit;
+        return sky(j) || p.distance[j] > limit;
       };
       if (beyond(col - 1, row) || beyond(col + 1, row) || beyond(col, row - 1) ||
           beyond(col, row + 1))
         p.silhouette[i] = 255;
     }
   });
+}
+
+Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
+                        const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                        const DrawRows& draw) {
+  const int w = camera.spec().width, h = camera.spec().height;
+  Panorama p;
+  size_panorama(p, w, 0, h, look);
+  FreshArray<float> texels;
+  PanoramaSamplers samplers(store, grid, look);
+  StretchTexels seen;
+  for (int first = 0; first < h; first += strip_rows)
+    shade_guides(grid, scene, draw(first, std::min(strip_rows, h - first)), camera, look, samplers,
+                 p, texels, &seen);
+  colour_panorama(camera, look, texel_stretch(seen, look), texels, p);
+  return p;
 }
 
 }  // namespace maquette

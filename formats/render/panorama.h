@@ -18,6 +18,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/grid.h"
@@ -72,29 +74,67 @@ using StretchTexels = std::array<std::vector<float>, 3>;  // texels per band
 // of this step: 1 up to 4 MP, about 4 M pixels above.
 int stretch_step(int width, int height);
 
+// The layers' samplers of each thread (image/layer_sampler.h, render/edge_texels.h), kept across
+// the strips of a picture: each thread reads a tile and assembles its halo once a picture, not
+// once a strip. The layers of `look` must outlive it.
+class PanoramaSamplers {
+ public:
+  PanoramaSamplers(const Store& store, const Grid& grid, const PanoramaLook& look);
+  ~PanoramaSamplers();
+
+ private:
+  struct Threads;
+  std::unique_ptr<Threads> threads_;
+  friend void gather_stretch_texels(const Grid&, const TerrainScene&, const Fragments&,
+                                    const PanoramaLook&, PanoramaSamplers&, int, StretchTexels&,
+                                    FreshArray<float>&);
+  friend void shade_guides(const Grid&, const TerrainScene&, const Fragments&, const PinholeCamera&,
+                           const PanoramaLook&, PanoramaSamplers&, Panorama&, FreshArray<float>&,
+                           StretchTexels*);
+};
+
 // Appends to `texels` those of the terrain pixels of `f` on the grid of `step` (picture rows, so
 // the strips of a picture gather the whole picture's); nothing without a texture to stretch.
 // `scratch`: resized to 3 floats a pixel of `f`, written and read on those pixels only (its memory
 // reused by the strips of a picture).
-void gather_stretch_texels(const Store& store, const Grid& grid, const TerrainScene& scene,
-                           const Fragments& f, const PanoramaLook& look, int step,
+void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fragments& f,
+                           const PanoramaLook& look, PanoramaSamplers& samplers, int step,
                            StretchTexels& texels, FreshArray<float>& scratch);
 
 // The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
 // stored without a texture or with look.stretch false.
 BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
 
-// The rows of `f` shaded; `stretch`: the whole picture's (nullptr: `f` is the whole picture, its
-// stretch taken from its own texels).
+// Sizes `p`'s arrays for the rows [first_row, first_row + rows) of a picture `width` pixels wide
+// (shade_guides and colour_panorama write every pixel of them).
+void size_panorama(Panorama& p, int width, int first_row, int rows, const PanoramaLook& look);
+
+// The guides of the rows of `fragments` (shading among them; NaN on the sky) written into the same
+// rows of `p`, which holds them, and into `texels` (resized to 3 floats a pixel of `p`, written on
+// terrain pixels only) the imagery's texel where each pixel sees the surface (NaN for none). With
+// `seen`, those on the stretch grid (stretch_step of the picture) appended to it, in row order;
+// then the pixels without a texel given the imagery's nearest within the reach
+// (render/edge_texels.h: not stretched over).
+void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& fragments,
+                  const PinholeCamera& camera, const PanoramaLook& look, PanoramaSamplers& samplers,
+                  Panorama& p, FreshArray<float>& texels, StretchTexels* seen);
+
+// The colour and silhouettes of every pixel of `p` from its guides (the sky: NaN distance) and
+// `texels` (shade_guides'), the texels stretched by `stretch`. A pixel next to a row `p` does not
+// hold is not on a silhouette for it (a strip has a row of margin each side).
+void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
+                     const BandStretch& stretch, const FreshArray<float>& texels, Panorama& p);
+
+// The fragments of the picture's rows [first, first + rows), the attributes of the vertices they
+// show made (render/terrain_scene.h attribute_vertices); valid until the next call.
+using DrawRows = std::function<const Fragments&(int first, int rows)>;
+
+// The whole picture of `camera`, its fragments drawn by `draw` in strips of `strip_rows` rows (one
+// strip's fragments at a time), its guides and texels written strip by strip into the whole
+// picture's, then its display stretch taken over the whole picture and its colour and silhouettes
+// made: the same bits for any strips.
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
-                        const Fragments& fragments, const PinholeCamera& camera,
-                        const PanoramaLook& look, const BandStretch* stretch = nullptr);
-// The same into `out`, whose arrays are resized to the rows of `fragments` and every pixel of them
-// written, and `texels` (scratch, 3 floats a pixel, written and read on terrain pixels only): the
-// strips of a picture shaded one after the other into the same arrays reuse their memory.
-void shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
-                    const Fragments& fragments, const PinholeCamera& camera,
-                    const PanoramaLook& look, const BandStretch* stretch, Panorama& out,
-                    FreshArray<float>& texels);
+                        const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
+                        const DrawRows& draw);
 
 }  // namespace maquette

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -17,6 +18,7 @@ namespace maquette {
 
 constexpr int kGuideBlockRows = 256;  // geotiff_creation_options' blocks
 constexpr double kStripPixels = 16e6;
+constexpr double kFragmentPixels = 1 << 21;
 
 struct PanoramaWriter::Files {
   std::string out, stem;
@@ -144,6 +146,29 @@ int default_strip_rows(int width) {
 
 namespace {
 
+// Rows of fragments drawn at once for a picture in memory: about 2 M pixels (40 MB of fragments),
+// a multiple of the rasterizer's bands of 8 rows.
+int fragment_rows(int width) { return std::max(8, int(kFragmentPixels / width) / 8 * 8); }
+
+// The fragments of a picture's strips drawn one after the other into one strip's arrays, each
+// strip's vertices given their attributes (render/terrain_scene.h) before it is shaded, from one
+// plan of the mesh (render/rasterizer.h RasterPlan).
+class StripDrawer {
+ public:
+  StripDrawer(TerrainScene& scene, const PinholeCamera& camera)
+      : scene_(scene), plan_(scene.mesh, camera) {}
+  const Fragments& operator()(int first, int rows) {
+    rasterize(plan_, first, rows, fragments_);
+    attribute_vertices(scene_, &fragments_);
+    return fragments_;
+  }
+
+ private:
+  TerrainScene& scene_;
+  const RasterPlan plan_;
+  Fragments fragments_;
+};
+
 // Rasterizes and shades the panorama of `scene` in strips of `strip_rows` rows into `writer`
 // (render_strips). One strip's arrays are drawn into strip after strip, each sized for the largest
 // strip at its first use (render/fresh_array.h resize_fresh): their pages are given once a picture,
@@ -152,40 +177,42 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                  const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                  PanoramaWriter& writer) {
   const int w = camera.spec().width, h = camera.spec().height;
-  Fragments fragments;
-  FreshArray<float> texels;
-  Panorama picture;
-  // Each strip's vertices given their attributes (render/terrain_scene.h) before it is shaded.
-  auto draw = [&](int first, int rows) -> const Fragments& {
-    rasterize(scene.mesh, camera, 1.0, first, rows, fragments);
-    attribute_vertices(scene, &fragments);
-    return fragments;
-  };
-  auto shade = [&](const Fragments& f, const BandStretch* stretch) -> const Panorama& {
-    shade_panorama(store, grid, scene, f, camera, look, stretch, picture, texels);
-    return picture;
-  };
   if (strip_rows >= h) {
-    writer.write(shade(draw(0, h), nullptr), 0, h);
+    writer.write(draw_panorama(store, grid, scene, camera, look), 0, h);
     return;
   }
+  StripDrawer draw(scene, camera);
+  PanoramaSamplers samplers(store, grid, look);
+  FreshArray<float> texels;
   StretchTexels stretch_texels;
   if (look.texture && look.stretch)
     for (int first = 0; first < h; first += strip_rows)
-      gather_stretch_texels(store, grid, scene, draw(first, strip_rows), look, stretch_step(w, h),
-                            stretch_texels, texels);
+      gather_stretch_texels(grid, scene, draw(first, strip_rows), look, samplers,
+                            stretch_step(w, h), stretch_texels, texels);
   const BandStretch stretch = texel_stretch(stretch_texels, look);
+  Panorama strip;
   for (int first = 0; first < h; first += strip_rows) {
     const int last = std::min(h, first + strip_rows);
     // A row of margin each side: the silhouettes of the strip's edge rows look at their
     // neighbours. Every strip but the last drawn strip_rows + 2 rows (the first its margin below
     // and one more row), so that the first is the largest and its arrays serve every other.
     const int top = std::max(0, first - 1), bottom = std::min(h, top + strip_rows + 2);
-    writer.write(shade(draw(top, bottom - top), &stretch), first, last);
+    size_panorama(strip, w, top, bottom - top, look);
+    shade_guides(grid, scene, draw(top, bottom - top), camera, look, samplers, strip, texels,
+                 nullptr);
+    colour_panorama(camera, look, stretch, texels, strip);
+    writer.write(strip, first, last);
   }
 }
 
 }  // namespace
+
+Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
+                       const PinholeCamera& camera, const PanoramaLook& look) {
+  StripDrawer draw(scene, camera);
+  return shade_panorama(store, grid, scene, camera, look, fragment_rows(camera.spec().width),
+                        std::ref(draw));
+}
 
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,

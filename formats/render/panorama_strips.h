@@ -39,6 +39,13 @@ void write_panorama(const Panorama& p, const std::string& out);
 // 256-row blocks.
 int default_strip_rows(int width);
 
+// The whole panorama of `scene` in memory: its fragments drawn in strips of about 2 M pixels into
+// one strip's arrays (render/panorama.h shade_panorama; the mesh measured once, render/
+// rasterizer.h RasterPlan), so that only the picture's guides, texels and colours are whole,
+// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
+Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
+                       const PinholeCamera& camera, const PanoramaLook& look);
+
 // Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0),
 // writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,

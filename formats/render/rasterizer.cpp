@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -227,17 +228,24 @@ std::vector<size_t> block_bounds(const RenderMesh& mesh) {
 
 }  // namespace
 
-Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
-                    int rows) {
-  Fragments f;
-  rasterize(mesh, camera, near, first_row, rows, f);
-  return f;
-}
+// The measured mesh (RasterPlan): its vertices on screen, its blocks and the pieces of the
+// triangles the near plane cuts, sorted for drawing.
+struct RasterPlan::Parts {
+  const RenderMesh* mesh = nullptr;
+  int width = 0, height = 0;
+  std::vector<ScreenVertex> screen;
+  std::vector<size_t> bounds;
+  std::vector<Block> blocks;
+  std::vector<const ClippedTriangle*> pieces;  // in the blocks' triangle order
+  std::vector<uint32_t> order;                 // the blocks drawn, near to far
+};
 
-void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
-               int rows, Fragments& f) {
-  const int w = camera.spec().width, h = camera.spec().height;
-  const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
+RasterPlan::RasterPlan(const RenderMesh& mesh, const PinholeCamera& camera, double near)
+    : parts_(std::make_unique<Parts>()) {
+  Parts& p = *parts_;
+  p.mesh = &mesh;
+  p.width = camera.spec().width;
+  p.height = camera.spec().height;
   const size_t vertex_count = mesh.positions.size() / 3;
   auto view = [&](uint32_t v) {
     return camera.to_view({mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1],
@@ -246,7 +254,8 @@ void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near,
   // Each vertex's depth, and its place on screen when in front of the near plane (the camera
   // frame's x and y are found again for the few triangles the near plane cuts).
   std::vector<double> depth(vertex_count);
-  std::vector<ScreenVertex> screen(vertex_count);
+  std::vector<ScreenVertex>& screen = p.screen;
+  screen.resize(vertex_count);
   tbb::parallel_for(size_t(0), vertex_count, [&](size_t i) {
     const Vec3d v = view(uint32_t(i));
     depth[i] = v[2];
@@ -256,8 +265,10 @@ void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near,
   // The mesh's blocks (a terrain's patches of squares): each block's bounding box on screen and
   // nearest depth over its triangles wholly in front of the near plane and drawable, and the
   // pieces of those the near plane cuts.
-  const std::vector<size_t> bounds = block_bounds(mesh);
-  std::vector<Block> blocks(bounds.size() - 1);
+  p.bounds = block_bounds(mesh);
+  const std::vector<size_t>& bounds = p.bounds;
+  std::vector<Block>& blocks = p.blocks;
+  blocks.resize(bounds.size() - 1);
   tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
     Block& block = blocks[b];
     double nearest_inv_z = 0;
@@ -285,18 +296,41 @@ void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near,
   });
 
   // Near to far, each band's pieces of cut triangles, then its blocks by their nearest depth (the
-  // drawing order changes no pixel: the tie rule), binned by the rows their bounding boxes meet.
-  const int bands = (bottom - top + kBandRows - 1) / kBandRows;
-  std::vector<const ClippedTriangle*> pieces;
+  // drawing order changes no pixel: the tie rule).
   for (const Block& block : blocks)
-    for (const ClippedTriangle& c : block.clipped) pieces.push_back(&c);
-  std::vector<uint32_t> order;
+    for (const ClippedTriangle& c : block.clipped) p.pieces.push_back(&c);
   for (size_t b = 0; b < blocks.size(); ++b)
-    if (blocks[b].x0 <= blocks[b].x1) order.push_back(uint32_t(b));
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    if (blocks[b].x0 <= blocks[b].x1) p.order.push_back(uint32_t(b));
+  std::sort(p.order.begin(), p.order.end(), [&](uint32_t a, uint32_t b) {
     return blocks[a].nearest < blocks[b].nearest ||
            (blocks[a].nearest == blocks[b].nearest && a < b);
   });
+}
+
+RasterPlan::~RasterPlan() = default;
+
+Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
+                    int rows) {
+  Fragments f;
+  rasterize(mesh, camera, near, first_row, rows, f);
+  return f;
+}
+
+void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
+               int rows, Fragments& f) {
+  rasterize(RasterPlan(mesh, camera, near), first_row, rows, f);
+}
+
+void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& f) {
+  const RasterPlan::Parts& p = *plan.parts_;
+  const RenderMesh& mesh = *p.mesh;
+  const std::vector<size_t>& bounds = p.bounds;
+  const std::vector<Block>& blocks = p.blocks;
+  const std::vector<ScreenVertex>& screen = p.screen;
+  const int w = p.width, h = p.height;
+  const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
+  // The pieces and blocks binned by the rows their bounding boxes meet, in the plan's order.
+  const int bands = (bottom - top + kBandRows - 1) / kBandRows;
   std::vector<std::vector<const ClippedTriangle*>> band_pieces(static_cast<size_t>(bands));
   std::vector<std::vector<uint32_t>> band_blocks(static_cast<size_t>(bands));
   // The bands [first, last] (from `top`) holding the picture's `rows` [r0, r1] whose centres a
@@ -308,12 +342,12 @@ void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near,
     if (first > last || columns.first > columns.second) return Span{1, 0};
     return Span{first / kBandRows, last / kBandRows};
   };
-  for (const ClippedTriangle* c : pieces) {
+  for (const ClippedTriangle* c : p.pieces) {
     const auto [first, last] = band_span(row_span(c->v[0], c->v[1], c->v[2], h),
                                          column_span(c->v[0], c->v[1], c->v[2], w));
     for (int64_t band = first; band <= last; ++band) band_pieces[size_t(band)].push_back(c);
   }
-  for (const uint32_t b : order) {
+  for (const uint32_t b : p.order) {
     const Block& block = blocks[b];
     const auto [first, last] =
         band_span(centre_span(block.y0, block.y1, h), centre_span(block.x0, block.x1, w));

@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 #include "render/camera.h"
 #include "render/fresh_array.h"
@@ -63,6 +64,23 @@ struct Fragments {
   size_t culled_blocks = 0;
 };
 
+// `mesh` measured for drawing through `camera` (positions in camera.frame()), `near` metres the
+// nearest depth drawn: each vertex on screen, each block's bounding box and nearest depth, the
+// pieces of the triangles the near plane cuts, the blocks sorted near to far. What every strip of
+// a picture draws from: measured once a picture, not once a strip. It keeps a reference to `mesh`.
+class RasterPlan {
+ public:
+  RasterPlan(const RenderMesh& mesh, const PinholeCamera& camera, double near = 1.0);
+  ~RasterPlan();
+  RasterPlan(const RasterPlan&) = delete;
+  RasterPlan& operator=(const RasterPlan&) = delete;
+
+ private:
+  struct Parts;
+  std::unique_ptr<Parts> parts_;
+  friend void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& out);
+};
+
 // Rasterizes `mesh` (positions in camera.frame()) with `near` metres the nearest depth drawn, into
 // the picture's rows [first_row, first_row + rows) (rows < 0: to the last row). Each pixel gets
 // the same bits whatever the rows drawn with it (a strip of a picture is that picture's rows).
@@ -74,5 +92,8 @@ Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double 
 // kernel gives and zeroes each page once, not once a strip).
 void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
                int rows, Fragments& out);
+// The same from a plan of the mesh: the picture's rows [first_row, first_row + rows) drawn into
+// `out` (rows < 0: to the last row), the same bits.
+void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& out);
 
 }  // namespace maquette

@@ -121,9 +121,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
 
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) {
   const auto p = prepare(store, grid, std::move(job));
-  const Fragments f = rasterize(p->scene.mesh, *p->camera);
-  attribute_vertices(p->scene, &f);
-  return shade_panorama(store, grid, p->scene, f, *p->camera, p->look);
+  return draw_panorama(store, grid, p->scene, *p->camera, p->look);
 }
 
 void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,

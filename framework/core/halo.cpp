@@ -1,6 +1,7 @@
 #include "core/halo.h"
 
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <string>
 #include <utility>
@@ -47,6 +48,14 @@ LonLat face_point_lonlat(const Grid& grid, int face, double col, double row, int
 
 Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
                           const TileFetch& fetch) {
+  std::deque<std::optional<Tile<float>>> kept;  // the fetched tiles, at stable places
+  return assemble_halo(grid, cell, size, halo, [&](CellId c) -> const Tile<float>* {
+    const auto& tile = kept.emplace_back(fetch(c));
+    return tile ? &*tile : nullptr;
+  });
+}
+
+Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo, const TileFind& find) {
   const int log2_size = log2_tile_size(size);
   if (halo < 0 || halo > size)
     throw Error("halo: " + std::to_string(halo) + " pixels around a tile of " +
@@ -54,11 +63,11 @@ Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
 
   // First find every halo pixel's source, so each neighbour tile is fetched once (at most 8).
   std::vector<HaloSource> sources;
-  std::vector<std::pair<CellId, std::optional<Tile<float>>>> tiles{{cell, fetch(cell)}};
-  const auto cached = [&](CellId c) -> const std::optional<Tile<float>>& {
+  std::vector<std::pair<CellId, const Tile<float>*>> tiles{{cell, find(cell)}};
+  const auto cached = [&](CellId c) -> const Tile<float>* {
     for (const auto& [id, tile] : tiles)
       if (id == c) return tile;
-    return tiles.emplace_back(c, fetch(c)).second;
+    return tiles.emplace_back(c, find(c)).second;
   };
   const int mask = size - 1;
   for (int row = -halo; row < size + halo; ++row) {
@@ -86,12 +95,12 @@ Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
 
   Tile<float> out(size, channels == 0 ? 1 : channels, halo,
                   std::numeric_limits<float>::quiet_NaN());
-  if (const auto& own = tiles.front().second)
+  if (const Tile<float>* own = tiles.front().second)
     for (int row = 0; row < size; ++row)
       for (int col = 0; col < size; ++col)
         for (int k = 0; k < channels; ++k) out.at(col, row, k) = own->at(col, row, k);
   for (const HaloSource& s : sources)
-    if (const auto& tile = cached(s.cell))
+    if (const Tile<float>* tile = cached(s.cell))
       for (int k = 0; k < channels; ++k)
         out.at(s.col, s.row, k) = tile->at(s.src_col, s.src_row, k);
   return out;

@@ -32,6 +32,10 @@ using TileFetch = std::function<std::optional<Tile<float>>(CellId)>;
 // tile has another size or channel count.
 Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo,
                           const TileFetch& fetch);
+// The same from tiles the caller keeps (a cache): `find` returns a cell's stored tile, or nullptr
+// when there is none, read in place (no tile is copied) while assemble_halo runs.
+using TileFind = std::function<const Tile<float>*(CellId)>;
+Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo, const TileFind& find);
 
 // Where pixel (col, row) of `cell`'s tile (halo pixels included) really lies: the face pixel it
 // is read from, at pixel level cell.level() + log2(size). nullopt beyond one face width.
