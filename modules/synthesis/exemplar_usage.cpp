@@ -13,7 +13,7 @@ namespace maquette::synthesis {
 namespace {
 
 // The copy's tiles: synthesized in parallel, each with its halo from the same guides.
-constexpr int kCopyTile = 160;
+constexpr int kCopyTile = 256;
 
 // The finest level's pixel each pixel of the level copies, synthesized with `params` from
 // `guides` (which cover the level grown by synthesis_halo()) in tiles in parallel: the synthesis
