@@ -2,6 +2,8 @@
 // all threads (MeasureProcessCPUTime):
 //  - Analyse: the exemplar's analysis (pyramid, PCA, k-coherence candidates), once per process
 //    in a run, timed apart.
+//  - Usage: the exemplar's over-use measure (exemplar_usage.h: a synthesis of its own label
+//    map, in tiles on 2 threads), the rest of the analysis, timed apart.
 //  - Transfer/threads: a 512 x 512 output as 4 tiles of 256 (the operator's cells at level 10),
 //    each from its own guides and halo, on 1 and 2 threads; items are output pixels, so
 //    s per output megapixel = 1e6 / items_per_second.
@@ -10,6 +12,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include "exemplar_usage.h"
 #include "zion_fixture.h"
 
 namespace maquette::synthesis::bench {
@@ -28,6 +31,13 @@ void BM_Analyse(benchmark::State& state) {
         [&] { benchmark::DoNotOptimize(analyse_exemplar(e, kLevels, zion_params().at("k"))); });
 }
 BENCHMARK(BM_Analyse)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_Usage(benchmark::State& state) {
+  ExemplarPyramid pyramid = zion_exemplar()->pyramid;
+  for (auto _ : state)
+    tbb::task_arena(2).execute([&] { measure_usage(pyramid, SynthesisParams{}); });
+}
+BENCHMARK(BM_Usage)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
 
 void BM_Transfer(benchmark::State& state) {
   const auto t = zion_exemplar();

@@ -1,5 +1,7 @@
 #include "exemplar_pyramid.h"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cstdlib>
@@ -103,12 +105,14 @@ void analyse_level(ExemplarLevel& level, int k) {
                 " (all excluded)");
   level.basis = fit_basis(level);
   level.features.resize(size_t(n) * kFeatureDims);
-  for (int y = 0; y < level.height; ++y)
+  // Each row's features on their own (in parallel).
+  tbb::parallel_for(0, level.height, [&level](int y) {
     for (int x = 0; x < level.width; ++x) {
       const auto f = level.basis.project(level.patch(x, y));
       std::copy(f.begin(), f.end(),
                 level.features.begin() + ptrdiff_t(level.index(x, y)) * kFeatureDims);
     }
+  });
   // Candidates farther than a patch from the query: a neighbourhood overlapping the query's is
   // similar by construction and would only offer coherence the candidates already have.
   const int w = level.width;

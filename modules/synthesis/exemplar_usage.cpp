@@ -1,5 +1,7 @@
 #include "exemplar_usage.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <map>
@@ -8,6 +10,31 @@
 #include "assess_metrics.h"
 
 namespace maquette::synthesis {
+namespace {
+
+// The copy's tiles: synthesized in parallel, each with its halo from the same guides.
+constexpr int kCopyTile = 256;
+
+// The finest level's pixel each pixel of the level copies, synthesized with `params` from
+// `guides` (which cover the level grown by synthesis_halo()) in tiles in parallel: the synthesis
+// is a function of global pixel coordinates (synthesize's contract), so the tiles make up the
+// copy of the level as one window, bit for bit.
+std::vector<int32_t> tiled_copy(const ExemplarPyramid& pyramid, const TargetGuides& guides,
+                                const SynthesisParams& params) {
+  const int w = pyramid.levels[0].width, h = pyramid.levels[0].height;
+  const int across = (w + kCopyTile - 1) / kCopyTile, down = (h + kCopyTile - 1) / kCopyTile;
+  std::vector<int32_t> source(size_t(w) * size_t(h));
+  tbb::parallel_for(0, across * down, [&](int i) {
+    const int x0 = i % across * kCopyTile, y0 = i / across * kCopyTile;
+    const PixelRect tile{x0, y0, std::min(kCopyTile, w - x0), std::min(kCopyTile, h - y0)};
+    const std::vector<int32_t> part = synthesize(pyramid, guides, params, tile);
+    for (int64_t r = 0; r < tile.height; ++r)
+      std::copy_n(part.begin() + r * tile.width, tile.width, source.begin() + (y0 + r) * w + x0);
+  });
+  return source;
+}
+
+}  // namespace
 
 std::vector<float> usage_of_copy(const ExemplarLevel& finest, const std::vector<int32_t>& source) {
   const int w = finest.width, h = finest.height;
@@ -78,7 +105,7 @@ void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
             finest.labels[size_t(finest.index(x, y))];
   SynthesisParams unpenalized = params;
   unpenalized.w_usage = 0;
-  const std::vector<int32_t> source = synthesize(pyramid, own, unpenalized, {0, 0, w, h});
+  const std::vector<int32_t> source = tiled_copy(pyramid, own, unpenalized);
 
   finest.usage = usage_of_copy(finest, source);
   finest.colour_excess = colour_excess_of_copy(finest, source);

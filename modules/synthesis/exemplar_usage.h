@@ -10,7 +10,8 @@
 // 3 x 3 neighbourhood, minus 1, at least 0 (0: used no more than its share). A coarser level's
 // pixel takes the mean of its 2 x 2 children (clamped at the border). The same copy gives the
 // finest level's colour excess (colour_excess_of_copy), which the vote's histogram balance reads
-// (vote.h). Deterministic for any threads (synthesize's contract).
+// (vote.h). The copy is synthesized in tiles in parallel, each with its halo: the same bits as one
+// window and for any threads (synthesize's contract).
 #pragma once
 
 #include "exemplar_pyramid.h"

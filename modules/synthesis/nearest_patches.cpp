@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <utility>
 
@@ -17,24 +18,38 @@ struct Node {
   float split = 0;
 };
 
+using Entry = std::pair<float, int32_t>;  // (squared distance, point): the result's order
+
 class KdTree {
  public:
+  static constexpr int32_t kLeafSize = 12;
+
   KdTree(const std::vector<float>& points, int dims, std::vector<int32_t> order)
       : points_(points), dims_(dims), order_(std::move(order)) {
-    if (!order_.empty()) build(0, int32_t(order_.size()));
+    if (order_.empty()) return;
+    build(0, int32_t(order_.size()));
+    // Each leaf's coordinates again, dimension by dimension (its n points' first coordinates,
+    // then their second...): a leaf's distances are computed side by side.
+    leaf_coords_.resize(order_.size() * size_t(dims_));
+    for (const Node& node : nodes_) {
+      if (node.left >= 0) continue;
+      const int32_t n = node.end - node.begin;
+      float* at = &leaf_coords_[size_t(node.begin) * size_t(dims_)];
+      for (int32_t j = 0; j < n; ++j)
+        for (int d = 0; d < dims_; ++d)
+          at[size_t(d) * size_t(n) + size_t(j)] = coord(order_[size_t(node.begin + j)], d);
+    }
   }
 
-  // The k best (distance, index) pairs, sorted, of the accepted points.
+  // The k best entries, sorted, of the accepted points.
   void search(int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
-              std::vector<std::pair<float, int32_t>>& best) const {
+              std::vector<Entry>& best) const {
     best.clear();
     std::vector<float> offsets(size_t(dims_), 0.0f);
     if (!nodes_.empty()) visit(0, query, k, accept, best, offsets, 0.0f);
   }
 
  private:
-  static constexpr int32_t kLeafSize = 12;
-
   float coord(int32_t point, int dim) const {
     return points_[size_t(point) * size_t(dims_) + size_t(dim)];
   }
@@ -67,28 +82,33 @@ class KdTree {
     return id;
   }
 
-  float distance(int32_t a, int32_t b) const {
-    float d = 0;
-    for (int i = 0; i < dims_; ++i) {
-      const float x = coord(a, i) - coord(b, i);
-      d += x * x;
-    }
-    return d;
+  // The squared distances from the query to each of a leaf's points, each summed over the
+  // dimensions in order (the points side by side, each point's sum as a scalar loop's).
+  void leaf_distances(const Node& node, int32_t query, std::array<float, kLeafSize>& out) const {
+    const int32_t n = node.end - node.begin;
+    const float* at = &leaf_coords_[size_t(node.begin) * size_t(dims_)];
+    const float* q = &points_[size_t(query) * size_t(dims_)];
+    std::fill_n(out.begin(), n, 0.0f);
+    for (int d = 0; d < dims_; ++d, at += n)
+      for (int32_t j = 0; j < n; ++j) {
+        const float x = q[d] - at[j];
+        out[size_t(j)] += x * x;
+      }
   }
 
   // `bound`: a lower bound of the squared distance from the query to the node's box, the sum of
   // the squared `offsets` to the splits crossed so far, one per dimension (Arya & Mount's
   // incremental distance).
   void visit(int32_t id, int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
-             std::vector<std::pair<float, int32_t>>& best, std::vector<float>& offsets,
-             float bound) const {
+             std::vector<Entry>& best, std::vector<float>& offsets, float bound) const {
     const Node& node = nodes_[size_t(id)];
     if (node.left < 0) {
+      std::array<float, kLeafSize> distances;
+      leaf_distances(node, query, distances);
       for (int32_t i = node.begin; i < node.end; ++i) {
-        const int32_t p = order_[size_t(i)];
-        if (!accept(query, p)) continue;
-        const std::pair<float, int32_t> entry{distance(query, p), p};
+        const Entry entry{distances[size_t(i - node.begin)], order_[size_t(i)]};
         if (int(best.size()) == k && !(entry < best.back())) continue;
+        if (!accept(query, entry.second)) continue;
         best.insert(std::upper_bound(best.begin(), best.end(), entry), entry);
         if (int(best.size()) > k) best.pop_back();
       }
@@ -111,6 +131,7 @@ class KdTree {
   const std::vector<float>& points_;
   int dims_;
   std::vector<int32_t> order_;
+  std::vector<float> leaf_coords_;  // each leaf's points, by dimension, at its begin * dims_
   std::vector<Node> nodes_;
 };
 
@@ -125,7 +146,7 @@ std::vector<int32_t> nearest_patches(const std::vector<float>& points, int dims,
   // Queries are independent: each block writes its own entries, so any split gives the same.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, queries.size(), 1024),
                     [&](const tbb::blocked_range<size_t>& range) {
-                      std::vector<std::pair<float, int32_t>> best;
+                      std::vector<Entry> best;
                       for (size_t q = range.begin(); q != range.end(); ++q) {
                         tree.search(queries[q], k, accept, best);
                         for (size_t j = 0; j < best.size(); ++j)

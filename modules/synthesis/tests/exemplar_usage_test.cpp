@@ -139,6 +139,35 @@ TEST(ExemplarUsage, ACoarserLevelTakesTheMeanOfItsChildren) {
   }
 }
 
+// The copy is synthesized in tiles in parallel: on an exemplar of several tiles (the last ones
+// partial), the same usage and colour excess as from the copy synthesized as one window.
+TEST(ExemplarUsage, TheTiledCopyEqualsTheWholeWindowsCopy) {
+  const Exemplar exemplar =
+      test::painted_exemplar(352, 200, false, [](Exemplar& e, int x, int y, size_t i) {
+        e.labels[i] = uint8_t((x / 50 + y / 40) % 3);
+        e.excluded[i] = x >= 100 && x < 120 && y >= 30 && y < 60;
+        for (size_t k = 0; k < 3; ++k)
+          e.rgb[3 * i + k] = float((splitmix64_mix(3 * i + k) % 64) + 60 * e.labels[i]);
+      });
+  ExemplarPyramid p = analyse_exemplar(exemplar, kLevels, 2);
+  measure_usage(p, {});
+  const ExemplarLevel& finest = p.levels[0];
+  const int w = finest.width, h = finest.height, halo = synthesis_halo();
+  TargetGuides own;
+  own.rect = {-halo, -halo, w + 2 * halo, h + 2 * halo};
+  own.labels.assign(size_t(own.rect.width) * size_t(own.rect.height), kUnknownLabel);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!finest.excluded[size_t(finest.index(x, y))])
+        own.labels[size_t(y + halo) * size_t(own.rect.width) + size_t(x + halo)] =
+            finest.labels[size_t(finest.index(x, y))];
+  SynthesisParams params;
+  params.w_usage = 0;
+  const std::vector<int32_t> whole = synthesize(p, own, params, {0, 0, w, h});
+  EXPECT_EQ(finest.usage, usage_of_copy(finest, whole));
+  EXPECT_EQ(finest.colour_excess, colour_excess_of_copy(finest, whole));
+}
+
 TEST(ExemplarUsage, AMeasureRepeatedGivesTheSameValues) {
   EXPECT_EQ(pyramid().levels[0].usage, pyramid().levels[0].usage);
 }
