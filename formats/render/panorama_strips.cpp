@@ -208,10 +208,10 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
 }  // namespace
 
 Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
-                       const PinholeCamera& camera, const PanoramaLook& look) {
+                       const PinholeCamera& camera, const PanoramaLook& look, int rows) {
   StripDrawer draw(scene, camera);
-  return shade_panorama(store, grid, scene, camera, look, fragment_rows(camera.spec().width),
-                        std::ref(draw));
+  return shade_panorama(store, grid, scene, camera, look,
+                        rows > 0 ? rows : fragment_rows(camera.spec().width), std::ref(draw));
 }
 
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,

@@ -39,12 +39,14 @@ void write_panorama(const Panorama& p, const std::string& out);
 // 256-row blocks.
 int default_strip_rows(int width);
 
-// The whole panorama of `scene` in memory: its fragments drawn in strips of about 2 M pixels into
+// The whole panorama of `scene` in memory: its fragments drawn in strips of `fragment_rows` rows
+// (0: about 2 M pixels; the same bits for any) into
 // one strip's arrays (render/panorama.h shade_panorama; the mesh measured once, render/
 // rasterizer.h RasterPlan), so that only the picture's guides, texels and colours are whole,
 // writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
 Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
-                       const PinholeCamera& camera, const PanoramaLook& look);
+                       const PinholeCamera& camera, const PanoramaLook& look,
+                       int fragment_rows = 0);
 
 // Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0),
 // writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).

@@ -120,8 +120,9 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
 }  // namespace
 
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) {
+  const int fragment_rows = job.fragment_rows;
   const auto p = prepare(store, grid, std::move(job));
-  return draw_panorama(store, grid, p->scene, *p->camera, p->look);
+  return draw_panorama(store, grid, p->scene, *p->camera, p->look, fragment_rows);
 }
 
 void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,

@@ -33,6 +33,9 @@ struct PanoramaJob {
   double sun_azimuth = 315, sun_altitude = 45;
   bool shadows = false;  // the terrain's cast shadows (render/terrain_shadow.h) under that sun
   int strip_rows = 0;    // render_panorama_files: rows per strip (0: default_strip_rows)
+  // render_panorama: rows of a strip of fragments (0: about 2 M pixels; draw_panorama); the same
+  // picture for any.
+  int fragment_rows = 0;
 };
 
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the

@@ -25,6 +25,7 @@
 #include "core/grid.h"
 #include "proj_enu.h"
 #include "render/panorama.h"
+#include "render/render_job.h"
 #include "render/terrain_scene.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
@@ -713,6 +714,50 @@ TEST(PanoramaCli, StripsGiveTheWholePicture) {
   }
   // The picture is textured and stretched: its colours are not all the plain earth's.
   EXPECT_GT(whole.size(), 20000u);
+}
+
+// The picture in memory (render_panorama) drawn in strips of fragments of 8, 13 and 64 rows is
+// the one drawn in one strip, bit for bit: colours, silhouettes and every guide.
+TEST(PanoramaCli, FragmentStripsGiveTheWholePicture) {
+  const auto store = Store::open(hills_store(), Store::Mode::ReadOnly);
+  PanoramaJob job;
+  job.dem = "dem";
+  job.texture = "rgb";
+  job.camera = CameraSpec{.eye = {10.15, 45.02, 2500},
+                          .heading = 10,
+                          .pitch = -8,
+                          .fov = 60,
+                          .width = 300,
+                          .height = 170};
+  job.bend.radius = 60000;
+  job.sample_pixels = 3;
+  job.shadows = true;
+  job.sun_azimuth = 200;
+  job.sun_altitude = 25;
+  job.fragment_rows = 170;
+  const Panorama whole = render_panorama(*store, default_grid(), job);
+  const auto same = [](const auto& a, const auto& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+  };
+  for (const int rows : {8, 13, 64}) {
+    job.fragment_rows = rows;
+    const Panorama strips = render_panorama(*store, default_grid(), job);
+    EXPECT_TRUE(same(strips.rgb, whole.rgb)) << rows;
+    EXPECT_TRUE(same(strips.silhouette, whole.silhouette)) << rows;
+    EXPECT_TRUE(same(strips.distance, whole.distance)) << rows;
+    EXPECT_TRUE(same(strips.lon, whole.lon)) << rows;
+    EXPECT_TRUE(same(strips.lat, whole.lat)) << rows;
+    EXPECT_TRUE(same(strips.altitude, whole.altitude)) << rows;
+    EXPECT_TRUE(same(strips.cast_shadow, whole.cast_shadow)) << rows;
+    EXPECT_TRUE(same(strips.shading, whole.shading)) << rows;
+  }
+  // A textured, shadowed picture with terrain and sky.
+  EXPECT_GT(std::count_if(whole.distance.begin(), whole.distance.end(),
+                          [](double d) { return std::isnan(d); }),
+            0);
+  EXPECT_GT(std::count_if(whole.cast_shadow.begin(), whole.cast_shadow.end(),
+                          [](float s) { return s > 0.5f; }),
+            0);
 }
 
 TEST(PanoramaCli, BadInputIsNamed) {
