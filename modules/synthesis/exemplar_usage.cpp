@@ -91,10 +91,8 @@ std::vector<float> colour_excess_of_copy(const ExemplarLevel& finest,
   return excess;
 }
 
-void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
-  ExemplarLevel& finest = pyramid.levels[0];
+TargetGuides own_label_guides(const ExemplarLevel& finest) {
   const int w = finest.width, h = finest.height, halo = synthesis_halo();
-  for (ExemplarLevel& level : pyramid.levels) level.usage.clear(), level.colour_excess.clear();
   TargetGuides own;
   own.rect = {-halo, -halo, w + 2 * halo, h + 2 * halo};
   own.labels.assign(size_t(own.rect.width) * size_t(own.rect.height), kUnknownLabel);
@@ -103,6 +101,13 @@ void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
       if (!finest.excluded[size_t(finest.index(x, y))])
         own.labels[size_t(y + halo) * size_t(own.rect.width) + size_t(x + halo)] =
             finest.labels[size_t(finest.index(x, y))];
+  return own;
+}
+
+void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params) {
+  ExemplarLevel& finest = pyramid.levels[0];
+  for (ExemplarLevel& level : pyramid.levels) level.usage.clear(), level.colour_excess.clear();
+  const TargetGuides own = own_label_guides(finest);
   SynthesisParams unpenalized = params;
   unpenalized.w_usage = 0;
   const std::vector<int32_t> source = tiled_copy(pyramid, own, unpenalized);

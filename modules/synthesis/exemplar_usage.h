@@ -23,6 +23,11 @@ namespace maquette::synthesis {
 // the pyramid has kLevels levels.
 void measure_usage(ExemplarPyramid& pyramid, const SynthesisParams& params);
 
+// What measure_usage copies: the exemplar's own labels as a target, its excluded pixels and a
+// border of synthesis_halo() pixels around it unknown (kUnknownLabel), output pixels (0, 0) to
+// (width, height) the exemplar's.
+TargetGuides own_label_guides(const ExemplarLevel& finest);
+
 // The finest level's usage from a copy of its own label map: `source` holds, for each pixel of
 // the copy (the level's size, row-major), the level's pixel it copies. Each pixel counts the
 // allowed pixels of the copy that copy it (the excluded ones are not counted); every pixel's

@@ -152,18 +152,10 @@ TEST(ExemplarUsage, TheTiledCopyEqualsTheWholeWindowsCopy) {
   ExemplarPyramid p = analyse_exemplar(exemplar, kLevels, 2);
   measure_usage(p, {});
   const ExemplarLevel& finest = p.levels[0];
-  const int w = finest.width, h = finest.height, halo = synthesis_halo();
-  TargetGuides own;
-  own.rect = {-halo, -halo, w + 2 * halo, h + 2 * halo};
-  own.labels.assign(size_t(own.rect.width) * size_t(own.rect.height), kUnknownLabel);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (!finest.excluded[size_t(finest.index(x, y))])
-        own.labels[size_t(y + halo) * size_t(own.rect.width) + size_t(x + halo)] =
-            finest.labels[size_t(finest.index(x, y))];
   SynthesisParams params;
   params.w_usage = 0;
-  const std::vector<int32_t> whole = synthesize(p, own, params, {0, 0, w, h});
+  const std::vector<int32_t> whole =
+      synthesize(p, own_label_guides(finest), params, {0, 0, finest.width, finest.height});
   EXPECT_EQ(finest.usage, usage_of_copy(finest, whole));
   EXPECT_EQ(finest.colour_excess, colour_excess_of_copy(finest, whole));
 }
