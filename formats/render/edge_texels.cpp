@@ -132,6 +132,11 @@ const EdgeTexels::Texel& EdgeTexels::resolved(Key k) {
   return it->second[size_t((k.y - b.y * block_) * block_ + k.x - b.x * block_)];
 }
 
+void EdgeTexels::forget_unused() {
+  sampler_.forget_unused();
+  blocks_.clear();
+}
+
 bool EdgeTexels::sample(PlanePoint q, float* out) {
   const double u = q.x / texel_ - 0.5, v = q.y / texel_ - 0.5;
   const double x0 = std::floor(u), y0 = std::floor(v), fx = u - x0, fy = v - y0;

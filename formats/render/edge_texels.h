@@ -38,6 +38,10 @@ class EdgeTexels {
   // writing nothing, when none of the four texel centres around q has a value within the reach.
   bool sample(PlanePoint q, float* out);
 
+  // Drops the tiles not used since the last call and the resolved blocks (resolved again when
+  // asked: the same values), so that memory stays bounded over a picture's strips.
+  void forget_unused();
+
  private:
   using Texel = std::array<float, 3>;  // NaN: no data within the reach
   struct Key {                         // a texel, a block or a cell of the lattice: x right, y up

@@ -107,6 +107,14 @@ PanoramaSamplers::PanoramaSamplers(const Store& store, const Grid& grid, const P
 
 PanoramaSamplers::~PanoramaSamplers() = default;
 
+void PanoramaSamplers::forget_unused() {
+  for (Samplers& s : threads_->samplers) {
+    if (s.texture) s.texture->forget_unused();
+    if (s.edge) s.edge->forget_unused();
+    if (s.land_cover) s.land_cover->forget_unused();
+  }
+}
+
 namespace {
 
 // Appends to `texels` those of `found` (3 per pixel of the strip of rows of `f`; NaN for none; read
@@ -330,9 +338,11 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   FreshArray<float> texels;
   PanoramaSamplers samplers(store, grid, look);
   StretchTexels seen;
-  for (int first = 0; first < h; first += strip_rows)
+  for (int first = 0; first < h; first += strip_rows) {
     shade_guides(grid, scene, draw(first, std::min(strip_rows, h - first)), camera, look, samplers,
                  p, texels, &seen);
+    samplers.forget_unused();
+  }
   colour_panorama(camera, look, texel_stretch(seen, look), texels, p);
   return p;
 }

@@ -82,6 +82,11 @@ class PanoramaSamplers {
   PanoramaSamplers(const Store& store, const Grid& grid, const PanoramaLook& look);
   ~PanoramaSamplers();
 
+  // Every thread's samplers drop the tiles (and edge blocks) not used since the last call: called
+  // between strips, outside parallel work, it keeps a picture's memory bounded by about two
+  // strips' tiles. The samplers' values do not depend on what they keep.
+  void forget_unused();
+
  private:
   struct Threads;
   std::unique_ptr<Threads> threads_;

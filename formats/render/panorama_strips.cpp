@@ -186,9 +186,11 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
   FreshArray<float> texels;
   StretchTexels stretch_texels;
   if (look.texture && look.stretch)
-    for (int first = 0; first < h; first += strip_rows)
+    for (int first = 0; first < h; first += strip_rows) {
       gather_stretch_texels(grid, scene, draw(first, strip_rows), look, samplers,
                             stretch_step(w, h), stretch_texels, texels);
+      samplers.forget_unused();
+    }
   const BandStretch stretch = texel_stretch(stretch_texels, look);
   Panorama strip;
   for (int first = 0; first < h; first += strip_rows) {
@@ -200,6 +202,7 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
     size_panorama(strip, w, top, bottom - top, look);
     shade_guides(grid, scene, draw(top, bottom - top), camera, look, samplers, strip, texels,
                  nullptr);
+    samplers.forget_unused();
     colour_panorama(camera, look, stretch, texels, strip);
     writer.write(strip, first, last);
   }
