@@ -185,8 +185,8 @@ std::array<double, 2> random_draw_distance(const Exemplar& e, uint8_t label, int
     }
     distance = total_variation(drawn, exemplar);
   }
-  const auto [low, median, high] = spread(d);
-  return {median, high};
+  const auto s = spread(d);  // min, median, max
+  return {s[1], s[2]};
 }
 
 // Ours' measures over the seeds: each measure's spread, and each class's histogram distance's

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 #include "synthesis.h"
 
 namespace maquette::synthesis {
 
-Exemplar combine_exemplars(const std::vector<Exemplar>& parts, std::vector<Placement>& placement) {
+Exemplar combine_exemplars(std::vector<Exemplar> parts, std::vector<Placement>& placement) {
   placement.clear();
   constexpr int kAlign = 1 << (kLevels - 1);
   int end = 0, height = 0;
@@ -17,7 +18,7 @@ Exemplar combine_exemplars(const std::vector<Exemplar>& parts, std::vector<Place
     end = x0 + e.width;
     height = std::max(height, e.height);
   }
-  if (parts.size() == 1) return parts.front();
+  if (parts.size() == 1) return std::move(parts.front());  // one painting: itself, not a copy
   Exemplar c;
   c.width = end;
   c.height = height;

@@ -37,6 +37,6 @@ struct Placement {
 // colour (altitude, distance) of the nearest exemplar's pixel at their row clamped into it (the
 // nearest in columns, ties to the left). Preconditions: at least one exemplar; either all of them
 // have an altitude (a distance) or none. A single exemplar is returned as it is.
-Exemplar combine_exemplars(const std::vector<Exemplar>& parts, std::vector<Placement>& placement);
+Exemplar combine_exemplars(std::vector<Exemplar> parts, std::vector<Placement>& placement);
 
 }  // namespace maquette::synthesis

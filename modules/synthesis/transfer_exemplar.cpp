@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -115,7 +116,7 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
                                          std::string(kOp) + ".harmonize"));
   auto out = std::make_shared<TransferExemplar>();
   out->scale = scale;
-  Exemplar combined = combine_exemplars(parts, out->parts);
+  Exemplar combined = combine_exemplars(std::move(parts), out->parts);
   // The synthesis packs an exemplar pixel's column and row as x | y << 16 in 32 bits.
   if (combined.width > 65535 || combined.height > 32767)
     throw Error(std::string(kOp) + ": the exemplar is " + std::to_string(combined.width) + " x " +
