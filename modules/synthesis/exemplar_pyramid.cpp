@@ -65,8 +65,11 @@ ExemplarLevel coarser(const ExemplarLevel& f) {
 // The PCA basis of the neighbourhoods of the paintings' pixels at level `l` (painting by
 // painting, row by row).
 PatchBasis fit_basis(const ExemplarLevel& level, int l, const std::vector<Placement>& paintings) {
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(kPatchValues);
-  Eigen::MatrixXd scatter = Eigen::MatrixXd::Zero(kPatchValues, kPatchValues);
+  // Fixed sizes: no allocation per pixel.
+  using Vector = Eigen::Matrix<double, kPatchValues, 1>;
+  Vector mean = Vector::Zero();
+  Eigen::Matrix<double, kPatchValues, kPatchValues> scatter =
+      Eigen::Matrix<double, kPatchValues, kPatchValues>::Zero();
   double n = 0;
   for (const Placement& at : paintings) {
     const int x0 = at.x0 >> l, width = (at.width + (1 << l) - 1) >> l;
@@ -74,8 +77,8 @@ PatchBasis fit_basis(const ExemplarLevel& level, int l, const std::vector<Placem
     for (int y = 0; y < height; ++y)
       for (int x = x0; x < x0 + width; ++x) {
         const auto p = level.patch(x, y);
-        const Eigen::VectorXd v =
-            Eigen::Map<const Eigen::VectorXf>(p.data(), kPatchValues).cast<double>();
+        const Vector v =
+            Eigen::Map<const Eigen::Matrix<float, kPatchValues, 1>>(p.data()).cast<double>();
         mean += v;
         scatter.selfadjointView<Eigen::Lower>().rankUpdate(v);
       }
