@@ -12,8 +12,8 @@ namespace maquette::synthesis {
 // it in squared Euclidean distance among `candidates` for which accept(q, candidate) holds,
 // nearest first; ties go to the lower index, so the result is defined whatever the tree's shape.
 // Fewer than k (the rest -1) when fewer candidates are accepted. `points` holds `dims` floats per
-// point. The result has k entries per query, in the queries' order. Queries run in parallel
-// (TBB): `accept` must be safe to call from several threads.
+// point. The result has k entries per query, in the queries' order. The tree's halves are built
+// and the queries run in parallel (TBB): `accept` must be safe to call from several threads.
 std::vector<int32_t> nearest_patches(const std::vector<float>& points, int dims,
                                      const std::vector<int32_t>& candidates,
                                      const std::vector<int32_t>& queries, int k,
