@@ -62,18 +62,25 @@ ExemplarLevel coarser(const ExemplarLevel& f) {
   return c;
 }
 
-PatchBasis fit_basis(const ExemplarLevel& level) {
-  const int n = level.width * level.height;
+// The PCA basis of the neighbourhoods of the paintings' pixels at level `l` (painting by
+// painting, row by row).
+PatchBasis fit_basis(const ExemplarLevel& level, int l, const std::vector<Placement>& paintings) {
   Eigen::VectorXd mean = Eigen::VectorXd::Zero(kPatchValues);
   Eigen::MatrixXd scatter = Eigen::MatrixXd::Zero(kPatchValues, kPatchValues);
-  for (int y = 0; y < level.height; ++y)
-    for (int x = 0; x < level.width; ++x) {
-      const auto p = level.patch(x, y);
-      const Eigen::VectorXd v =
-          Eigen::Map<const Eigen::VectorXf>(p.data(), kPatchValues).cast<double>();
-      mean += v;
-      scatter.selfadjointView<Eigen::Lower>().rankUpdate(v);
-    }
+  double n = 0;
+  for (const Placement& at : paintings) {
+    const int x0 = at.x0 >> l, width = (at.width + (1 << l) - 1) >> l;
+    const int height = (at.height + (1 << l) - 1) >> l;
+    for (int y = 0; y < height; ++y)
+      for (int x = x0; x < x0 + width; ++x) {
+        const auto p = level.patch(x, y);
+        const Eigen::VectorXd v =
+            Eigen::Map<const Eigen::VectorXf>(p.data(), kPatchValues).cast<double>();
+        mean += v;
+        scatter.selfadjointView<Eigen::Lower>().rankUpdate(v);
+      }
+    n += double(width) * double(height);
+  }
   mean /= n;
   Eigen::MatrixXd covariance = scatter.selfadjointView<Eigen::Lower>();
   covariance = covariance / n - mean * mean.transpose();
@@ -92,7 +99,7 @@ PatchBasis fit_basis(const ExemplarLevel& level) {
   return basis;
 }
 
-void analyse_level(ExemplarLevel& level, int k) {
+void analyse_level(ExemplarLevel& level, int l, int k, const std::vector<Placement>& paintings) {
   const int n = level.width * level.height;
   for (int32_t i = 0; i < n; ++i)
     if (!level.excluded[size_t(i)]) {
@@ -103,7 +110,7 @@ void analyse_level(ExemplarLevel& level, int k) {
     throw Error("synthesis: the exemplar has no pixel left to copy at " +
                 std::to_string(level.width) + " x " + std::to_string(level.height) +
                 " (all excluded)");
-  level.basis = fit_basis(level);
+  level.basis = fit_basis(level, l, paintings);
   level.features.resize(size_t(n) * kFeatureDims);
   // Each row's features on their own (in parallel).
   tbb::parallel_for(0, level.height, [&level](int y) {
@@ -154,7 +161,8 @@ std::array<float, kPatchValues> ExemplarLevel::patch(int x, int y) const {
   return p;
 }
 
-ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k) {
+ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
+                                 const std::vector<Placement>& paintings) {
   ExemplarPyramid pyramid;
   pyramid.k = k;
   ExemplarLevel finest;
@@ -168,7 +176,9 @@ ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k) {
   finest.excluded = exemplar.excluded;
   pyramid.levels.push_back(std::move(finest));
   for (int l = 1; l < levels; ++l) pyramid.levels.push_back(coarser(pyramid.levels.back()));
-  for (ExemplarLevel& level : pyramid.levels) analyse_level(level, k);
+  const std::vector<Placement> whole{{0, exemplar.width, exemplar.height}};
+  for (int l = 0; l < levels; ++l)
+    analyse_level(pyramid.levels[size_t(l)], l, k, paintings.empty() ? whole : paintings);
   return pyramid;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "combined_exemplar.h"
 #include "exemplar.h"
 
 namespace maquette::synthesis {
@@ -58,8 +59,14 @@ struct ExemplarPyramid {
 // `levels` >= 1 levels, each half the size of the previous one (rounded up): colours,
 // altitude and distance filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and
 // decimated; labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
-// Deterministic for any threads (the k nearest searches run in parallel, each query on its own,
-// ties broken by index). Throws maquette::Error when a level has no allowed pixel.
-ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k);
+// `paintings`: where the paintings lie in a combined exemplar (combined_exemplar.h), each x0 a
+// multiple of 1 << (levels - 1); empty: the whole exemplar is one painting. Each level's PCA
+// basis is fitted over the paintings' pixels alone (at level l a painting's columns from
+// x0 >> l, its width and height divided by 2^l rounded up, from row 0), excluded ones included,
+// the gap's filler not. Deterministic for any threads (the k nearest searches run in parallel,
+// each query on its own, ties broken by index). Throws maquette::Error when a level has no
+// allowed pixel.
+ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
+                                 const std::vector<Placement>& paintings = {});
 
 }  // namespace maquette::synthesis

@@ -123,7 +123,7 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
                 std::to_string(combined.height) +
                 " pixels (the paintings side by side, after exemplar_scale): at most 65535 x "
                 "32767; raise exemplar_scale or give fewer paintings");
-  out->pyramid = analyse_exemplar(std::move(combined), kLevels, params.at("k").get<int>());
+  out->pyramid = analyse_exemplar(combined, kLevels, params.at("k").get<int>(), out->parts);
   // Measured with the default weights: the same exemplar serves every step's weights.
   measure_usage(out->pyramid, SynthesisParams{});
   return out;
