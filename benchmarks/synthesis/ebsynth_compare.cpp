@@ -26,6 +26,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 
 #include "core/error.h"
@@ -221,6 +222,71 @@ void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const Clas
   }
 }
 
+// Per class, the distinct sources copied against the class's bound (min of its target pixels and
+// its usable exemplar pixels: distinct_bound), and with several paintings each painting's share
+// of the class's usable exemplar pixels and of the output pixels copied, the distance of the
+// pixels copied from each painting to that painting's pixels of the class, and the output's
+// distance to the paintings' histograms mixed in the output's shares (what the measure would be
+// if each painting's share were as copied): so a histogram off because of the paintings' shares
+// is told from one off within a painting.
+void print_class_sources(const Exemplar& e, const TransferExemplar& t,
+                         const std::vector<uint8_t>& labels, const std::vector<int32_t>& source) {
+  const size_t paintings = t.parts.size();
+  const auto painting = [&](int32_t s) { return size_t(t.source_of(s).exemplar); };
+  const auto bin = [&](int32_t s) {
+    return size_t(
+        histogram_bin(e.rgb[3 * size_t(s)], e.rgb[3 * size_t(s) + 1], e.rgb[3 * size_t(s) + 2]));
+  };
+  using Histograms = std::vector<std::vector<uint64_t>>;  // per painting
+  std::map<uint8_t, std::array<Histograms, 2>> h;         // label -> exemplar's, output's
+  const auto of = [&](uint8_t label) -> std::array<Histograms, 2>& {
+    auto [it, fresh] = h.try_emplace(label);
+    if (fresh)
+      for (Histograms& side : it->second)
+        side.assign(paintings, std::vector<uint64_t>(kHistogramBins, 0));
+    return it->second;
+  };
+  for (size_t i = 0; i < e.labels.size(); ++i)
+    if (!e.excluded[i]) ++of(e.labels[i])[0][painting(int32_t(i))][bin(int32_t(i))];
+  for (size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] != kUnknownLabel && source[i] >= 0)
+      ++of(labels[i])[1][painting(source[i])][bin(source[i])];
+  const auto total = [](const std::vector<uint64_t>& v) {
+    uint64_t n = 0;
+    for (const uint64_t c : v) n += c;
+    return n;
+  };
+  for (const auto& [label, sides] : h) {
+    const auto& [exemplar, output] = sides;
+    uint64_t n[2] = {0, 0};
+    for (size_t p = 0; p < paintings; ++p) n[0] += total(exemplar[p]), n[1] += total(output[p]);
+    if (n[1] == 0) continue;
+    std::set<int32_t> distinct;
+    for (size_t i = 0; i < labels.size(); ++i)
+      if (labels[i] == label && source[i] >= 0) distinct.insert(source[i]);
+    std::printf("    class %d: %zu distinct sources of at most %lld", int(label), distinct.size(),
+                (long long)std::min(n[0], n[1]));
+    if (paintings < 2) {
+      std::printf("\n");
+      continue;
+    }
+    std::vector<double> mixed(kHistogramBins, 0), out(kHistogramBins, 0);
+    for (size_t p = 0; p < paintings; ++p) {
+      const uint64_t ne = total(exemplar[p]), no = total(output[p]);
+      std::printf("  painting %zu exemplar %.3f output %.3f", p, double(ne) / double(n[0]),
+                  double(no) / double(n[1]));
+      if (no > 0) std::printf(" (distance %.3f)", total_variation(output[p], exemplar[p]));
+      for (size_t b = 0; b < size_t(kHistogramBins); ++b) {
+        out[b] += double(output[p][b]) / double(n[1]);
+        if (ne > 0) mixed[b] += double(exemplar[p][b]) / double(ne) * double(no) / double(n[1]);
+      }
+    }
+    double d = 0;
+    for (size_t b = 0; b < size_t(kHistogramBins); ++b) d += std::abs(out[b] - mixed[b]);
+    std::printf("; at the output's shares %.3f\n", d / 2);
+  }
+}
+
 struct EbsynthRun {
   Timed time;
   std::vector<int32_t> source;  // exemplar pixel per output pixel (its nearest-neighbour field)
@@ -293,6 +359,7 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
         metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step)));
     print("ours", ours_m.back());
     print("ours+mean", averaged_m.back());
+    print_class_sources(e, *t, zion_labels(out, classes), ours);
     std::fflush(stdout);
   }
   if (seeds > 1) print_seeds(e, ours_m, count);

@@ -14,20 +14,12 @@ namespace {
 
 using Lab = std::array<double, 3>;
 
-// The inverse of CIELAB's f (texture/colour.cpp's lab_f).
-double lab_f_inverse(double f) { return f > 6.0 / 29 ? f * f * f : (116 * f - 16) * 27 / 24389; }
-
 // The CIELAB colour of sRGB (0..255 a component) and back (clamped to 0..255).
 Lab lab_of(const float* rgb) { return texture::srgb_to_lab(rgb[0], rgb[1], rgb[2]); }
 
 void rgb_of(const Lab& lab, float* rgb) {
-  const double fy = (lab[0] + 16) / 116, fx = fy + lab[1] / 500, fz = fy - lab[2] / 200;
-  const double x = lab_f_inverse(fx) * 0.95047, y = lab_f_inverse(fy),
-               z = lab_f_inverse(fz) * 1.08883;
-  const std::array<double, 3> linear = {3.2404542 * x - 1.5371385 * y - 0.4985314 * z,
-                                        -0.9692660 * x + 1.8760108 * y + 0.0415560 * z,
-                                        0.0556434 * x - 0.2040259 * y + 1.0572252 * z};
-  for (int c = 0; c < 3; ++c) rgb[c] = float(texture::srgb_from_linear(linear[size_t(c)]));
+  const Lab srgb = texture::lab_to_srgb(lab);
+  for (size_t c = 0; c < 3; ++c) rgb[c] = float(srgb[c]);
 }
 
 // The CIELAB colours of each label's allowed pixels of `e`, with the pixels' indices.

@@ -1,8 +1,8 @@
 // Per-label colour harmonization between several exemplars (issue 18: "several exemplars searched
 // at once with per-label colour harmonization between them"): before the exemplars are searched
 // as one, the colours of each further exemplar's pixels of a label are matched to the first
-// exemplar's pixels of that label, in CIELAB (D65, texture/colour.h's conversion and its inverse
-// here), so that a class drawn from two paintings shows one palette.
+// exemplar's pixels of that label, in CIELAB (D65, texture/colour.h's conversion and its
+// inverse), so that a class drawn from two paintings shows one palette.
 #pragma once
 
 #include <string>

@@ -15,6 +15,9 @@ double linear(double c) {
 
 double lab_f(double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; }
 
+// lab_f's inverse (its two pieces meet at f = 6 / 29, t = 216 / 24389).
+double lab_f_inverse(double f) { return f > 6.0 / 29 ? f * f * f : (116 * f - 16) * 27 / 24389; }
+
 }  // namespace
 
 double srgb_from_linear(double linear) {
@@ -39,6 +42,15 @@ std::array<double, 3> srgb_to_lab(double r, double g, double b) {
   const double z = (0.0193339 * R + 0.1191920 * G + 0.9503041 * B) / 1.08883;
   const double fx = lab_f(x), fy = lab_f(y), fz = lab_f(z);
   return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
+}
+
+std::array<double, 3> lab_to_srgb(const Lab& lab) {
+  const double fy = (lab[0] + 16) / 116, fx = fy + lab[1] / 500, fz = fy - lab[2] / 200;
+  const double x = lab_f_inverse(fx) * 0.95047, y = lab_f_inverse(fy),
+               z = lab_f_inverse(fz) * 1.08883;
+  return {srgb_from_linear(3.2404542 * x - 1.5371385 * y - 0.4985314 * z),
+          srgb_from_linear(-0.9692660 * x + 1.8760108 * y + 0.0415560 * z),
+          srgb_from_linear(0.0556434 * x - 0.2040259 * y + 1.0572252 * z)};
 }
 
 double ciede2000(const std::array<double, 3>& p, const std::array<double, 3>& q) {

@@ -1,4 +1,4 @@
-// Colour conversions: RGB -> HSV (paper 5.2.1), linear -> sRGB, sRGB -> CIELAB (D65) and the
+// Colour conversions: RGB -> HSV (paper 5.2.1), linear -> sRGB, sRGB <-> CIELAB (D65) and the
 // CIEDE2000 colour difference (Sharma, Wu and Dalal 2005).
 #pragma once
 
@@ -17,6 +17,11 @@ using Lab = std::array<double, 3>;  // L* 0..100, a*, b*
 Hsv rgb_to_hsv(double r, double g, double b);  // components 0..255
 double srgb_from_linear(double linear);        // linear [0, 1] (clamped) -> sRGB-encoded 0..255
 std::array<double, 3> srgb_to_lab(double r, double g, double b);  // components 0..255
+// srgb_to_lab's inverse: the sRGB colour (components 0..255) of a CIELAB colour, each linear
+// component clamped to [0, 1] first (a colour outside the gamut lands on its edge). Exact up to
+// the forward and inverse matrices' 7 digits within the gamut: lab_to_srgb(srgb_to_lab(c)) is c
+// within 1e-3.
+std::array<double, 3> lab_to_srgb(const Lab& lab);
 double ciede2000(const std::array<double, 3>& lab1, const std::array<double, 3>& lab2);
 
 }  // namespace maquette::texture

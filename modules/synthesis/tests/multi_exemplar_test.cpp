@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../../texture/colour.h"
 #include "../combined_exemplar.h"
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
@@ -188,6 +189,32 @@ std::vector<int32_t> synthesized(const TransferExemplar& t, const PixelRect& out
   return synthesize(t.pyramid,
                     target({out.col0 - h, out.row0 - h, out.width + 2 * h, out.height + 2 * h}), {},
                     out);
+}
+
+// The harmonization's way back from CIELAB (texture/colour.h's lab_to_srgb): OpenCV's float
+// conversion's colour (clamped to 0..255) within 0.2 of 255 for CIELAB colours across the gamut
+// and beyond it (OpenCV's sRGB curve is a spline: up to 0.09 apart measured), and srgb_to_lab's
+// inverse within 1e-3 over a grid of sRGB colours (the matrices' 7 digits: up to 4.3e-4 measured).
+TEST(Colour, LabToSrgbIsOpenCVsAndInvertsSrgbToLab) {
+  double opencv = 0, round_trip = 0;  // the largest differences
+  for (double l = 0; l <= 100; l += 10)
+    for (double a = -80; a <= 80; a += 16)
+      for (double b = -80; b <= 80; b += 16) {
+        const std::array<double, 3> ours = texture::lab_to_srgb({l, a, b});
+        const std::array<double, 3> theirs = rgb(cv::Vec3f{float(l), float(a), float(b)});
+        for (size_t c = 0; c < 3; ++c) opencv = std::max(opencv, std::abs(ours[c] - theirs[c]));
+      }
+  for (int r = 0; r <= 255; r += 15)
+    for (int g = 0; g <= 255; g += 15)
+      for (int b = 0; b <= 255; b += 15) {
+        const std::array<double, 3> back = texture::lab_to_srgb(texture::srgb_to_lab(r, g, b));
+        const std::array<int, 3> given = {r, g, b};
+        for (size_t c = 0; c < 3; ++c)
+          round_trip = std::max(round_trip, std::abs(back[c] - given[c]));
+      }
+  std::printf("largest differences: OpenCV %.4f, round trip %.2e\n", opencv, round_trip);
+  EXPECT_LT(opencv, 0.2);
+  EXPECT_LT(round_trip, 1e-3);
 }
 
 TEST(MultiExemplar, ReinhardMatchesEachLabelsStatisticsToTheFirstPainting) {
