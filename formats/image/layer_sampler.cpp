@@ -44,6 +44,7 @@ void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bi
 struct LayerSampler::Halo {
   std::once_flag made;
   std::optional<Tile<float>> tile;  // none when the cell has no tile
+  CellId cell;
   PlaneSquare square;
   bool used = true;
 };
@@ -66,6 +67,7 @@ class LayerSampler::Tiles {
   const Halo& halo(CellId cell) {
     Halo& h = entry(halo_, cell);
     std::call_once(h.made, [&] {
+      h.cell = cell;
       h.square = grid_.plane_square(cell);
       if (raw(cell))
         h.tile =
@@ -146,9 +148,9 @@ LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear)
     : tiles_(std::move(tiles)), layer_(tiles_->layer()), bilinear_(bilinear) {}
 
 bool LayerSampler::sample(LonLat p, CellId cell, float* out) {
-  const Halo& h = tiles_->halo(cell);
-  if (!h.tile) return false;
-  read(h, tiles_->grid().forward(p), out);
+  if (!last_cell_ || last_cell_->cell != cell) last_cell_ = &tiles_->halo(cell);
+  if (!last_cell_->tile) return false;
+  read(*last_cell_, tiles_->grid().forward(p), out);
   return true;
 }
 
@@ -174,7 +176,7 @@ void LayerSampler::read(const Halo& h, PlanePoint q, float* out) const {
 }
 
 void LayerSampler::forget_unused() {
-  last_ = nullptr;
+  start_run();
   tiles_->forget_unused();
 }
 

@@ -32,7 +32,8 @@ class LayerSampler {
   // Writes the layer's channels at `p` to out[0 .. channels - 1]; `cell` is the cell at the
   // sampler's level holding `p` (Grid::cells_from_points). Bilinear sampling leaves out missing
   // samples (weights renormalized); a point whose nearest sample is missing gets NaN. Returns
-  // false, writing nothing, when the cell has no tile.
+  // false, writing nothing, when the cell has no tile. The previous call's cell, when `cell` is
+  // it again, is not looked up.
   bool sample(LonLat p, CellId cell, float* out);
   // The same at `q`, a point of the grid's plane (Grid::forward), for callers that have it
   // without the projection: while q stays in the previous call's cell (its square, edges included:
@@ -43,7 +44,7 @@ class LayerSampler {
   // differ in the last bit: callers whose points come in runs (a picture's rows) call this at the
   // start of each run, so that a value depends on its run alone, never on which runs a thread
   // sampled before (the same bits for any thread count).
-  void start_run() { last_ = nullptr; }
+  void start_run() { last_ = last_cell_ = nullptr; }
 
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
   // a large region. Not for a sampler of shared tiles (forget_unused(Tiles&)).
@@ -56,7 +57,8 @@ class LayerSampler {
   std::shared_ptr<Tiles> tiles_;
   const LayerInfo& layer_;
   bool bilinear_;
-  const Halo* last_ = nullptr;  // the cell of the last plane point sampled
+  const Halo* last_ = nullptr;       // the cell of the last plane point sampled
+  const Halo* last_cell_ = nullptr;  // the last cell sampled at a lon/lat
 };
 
 }  // namespace maquette
