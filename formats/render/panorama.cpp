@@ -96,11 +96,11 @@ struct PanoramaSamplers::Threads {
         land_cover(look.land_cover ? LayerSampler::shared_tiles(store, grid, *look.land_cover,
                                                                 look.land_cover->level)
                                    : nullptr),
-        samplers([this, &store, &grid, look] {
+        samplers([this, &grid, look] {
           Samplers s;
           if (look.texture) {
             s.texture.emplace(texture, true);
-            s.edge.emplace(store, grid, *look.texture, kTextureReach);
+            s.edge.emplace(texture, grid, *look.texture, kTextureReach);
           }
           if (look.land_cover) s.land_cover.emplace(land_cover, false);
           return s;
