@@ -11,6 +11,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include "core/error.h"
 #include "core/halo.h"
@@ -379,7 +380,8 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
-                                 double sample_pixels, bool cull) {
+                                 double sample_pixels, bool cull,
+                                 std::shared_ptr<const EllipsoidalHeights> datum) {
   if (!(exaggeration > 0))
     throw Error("vertical exaggeration " + std::to_string(exaggeration) + " must be positive");
   if (!(sample_pixels >= 0))
@@ -388,7 +390,8 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   TerrainScene scene;
-  scene.heights = std::make_unique<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  scene.heights = datum ? std::move(datum)
+                        : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
   const EllipsoidalHeights& heights = *scene.heights;
   const int n = dem.tile_size;
   scene.cells = cells;
@@ -461,14 +464,14 @@ TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const Layer
     : grid_(grid),
       dem_(dem),
       sampler_(store, grid, dem_, dem_.level, true),
-      heights_(ellipsoidal_heights(dem_)),
+      heights_(std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem_))),
       exaggeration_(exaggeration) {}
 
 std::optional<double> TerrainHeights::operator()(LonLat p) {
   float z = NAN;
   if (!sampler_.sample(p, grid_.cell_from_point(p, dem_.level), &z) || std::isnan(z))
     return std::nullopt;
-  return heights_(p, z) + (exaggeration_ - 1) * z;
+  return (*heights_)(p, z) + (exaggeration_ - 1) * z;
 }
 
 }  // namespace maquette
