@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <tuple>
+#include <utility>
 
 #include "core/halo.h"
 #include "core/round_half_away.h"
@@ -37,19 +41,116 @@ void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bi
 
 }  // namespace
 
+struct LayerSampler::Halo {
+  std::once_flag made;
+  std::optional<Tile<float>> tile;  // none when the cell has no tile
+  CellId cell;
+  PlaneSquare square;
+  bool used = true;
+};
+
+class LayerSampler::Tiles {
+ public:
+  Tiles(const Store& store, const Grid& grid, const LayerInfo& layer, int level, bool shared)
+      : store_(store),
+        grid_(grid),
+        layer_(layer),
+        level_(level),
+        base_(level == layer.level),
+        shared_(shared) {}
+
+  const Grid& grid() const { return grid_; }
+  const LayerInfo& layer() const { return layer_; }
+  int level() const { return level_; }
+
+  // `cell`'s tile with its halo, assembled by the first sampler that asks.
+  const Halo& halo(CellId cell) {
+    Halo& h = entry(halo_, cell);
+    std::call_once(h.made, [&] {
+      h.cell = cell;
+      h.square = grid_.plane_square(cell);
+      if (raw(cell))
+        h.tile =
+            assemble_halo(grid_, cell, layer_.tile_size, 1, [this](CellId c) -> const Tile<float>* {
+              const auto& tile = raw(c);  // in the cache: read, not copied
+              return tile ? &*tile : nullptr;
+            });
+    });
+    return h;
+  }
+
+  void forget_unused() {
+    erase_unused(halo_);
+    erase_unused(raw_);
+  }
+
+ private:
+  struct Raw {
+    std::once_flag read;
+    std::optional<Tile<float>> tile;
+    bool used = true;
+  };
+
+  // `cell`'s entry of `entries`, made when missing and marked used (under the lock when shared:
+  // the maps' nodes stay put, so the entry is then read and made without it).
+  template <typename Map>
+  typename Map::mapped_type& entry(Map& entries, CellId cell) {
+    std::unique_lock<std::mutex> lock;
+    if (shared_) lock = std::unique_lock(mutex_);
+    auto& e = entries.try_emplace(cell).first->second;
+    e.used = true;
+    return e;
+  }
+
+  const std::optional<Tile<float>>& raw(CellId cell) {
+    Raw& r = entry(raw_, cell);
+    std::call_once(r.read, [&] {
+      const auto bytes =
+          base_ ? store_.get_tile(layer_.name, cell) : store_.get_overview(layer_.name, cell);
+      if (bytes) r.tile = to_tile<float>(*bytes, layer_.nodata ? &*layer_.nodata : nullptr);
+    });
+    return r.tile;
+  }
+
+  // Erases the entries not used since the last call and marks the others unused.
+  template <typename Map>
+  static void erase_unused(Map& entries) {
+    for (auto it = entries.begin(); it != entries.end();)
+      if (it->second.used)
+        (it++)->second.used = false;
+      else
+        it = entries.erase(it);
+  }
+
+  const Store& store_;
+  const Grid& grid_;
+  const LayerInfo& layer_;
+  int level_;
+  bool base_, shared_;
+  std::mutex mutex_;  // the maps' structure, when shared
+  std::map<CellId, Raw> raw_;
+  std::map<CellId, Halo> halo_;
+};
+
+std::shared_ptr<LayerSampler::Tiles> LayerSampler::shared_tiles(const Store& store,
+                                                                const Grid& grid,
+                                                                const LayerInfo& layer, int level) {
+  return std::make_shared<Tiles>(store, grid, layer, level, true);
+}
+
+void LayerSampler::forget_unused(Tiles& tiles) { tiles.forget_unused(); }
+
 LayerSampler::LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
                            bool bilinear)
-    : store_(store),
-      grid_(grid),
-      layer_(layer),
-      level_(level),
-      base_(level == layer.level),
-      bilinear_(bilinear) {}
+    : LayerSampler(std::make_shared<Tiles>(store, grid, layer, level, false), bilinear) {}
+
+LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear)
+    : tiles_(std::move(tiles)), layer_(tiles_->layer()), bilinear_(bilinear) {}
 
 bool LayerSampler::sample(LonLat p, CellId cell, float* out) {
-  const Halo& h = halo(cell);
-  if (!h.tile) return false;
-  read(h, grid_.forward(p), out);
+  if (!last_cell_ || last_cell_->cell != cell) last_cell_ = &tiles_->halo(cell);
+  if (!last_cell_->tile) return false;
+  read(*last_cell_, tiles_->grid().forward(p), out);
   return true;
 }
 
@@ -58,8 +159,10 @@ bool LayerSampler::sample(PlanePoint q, float* out) {
     return q.x >= sq.x_min && q.x <= sq.x_min + sq.side && q.y <= sq.y_max &&
            q.y >= sq.y_max - sq.side;
   };
-  if (!last_ || !inside(last_->square))
-    last_ = &halo(grid_.cell_from_point(grid_.inverse(q), level_));
+  if (!last_ || !inside(last_->square)) {
+    const Grid& grid = tiles_->grid();
+    last_ = &tiles_->halo(grid.cell_from_point(grid.inverse(q), tiles_->level()));
+  }
   if (!last_->tile) return false;
   read(*last_, q, out);
   return true;
@@ -72,52 +175,9 @@ void LayerSampler::read(const Halo& h, PlanePoint q, float* out) const {
   sample_tile(*h.tile, u, v, layer_.channels, bilinear_, out);
 }
 
-namespace {
-
-// Erases the entries not used since the last call and marks the others unused.
-template <typename Map>
-void erase_unused(Map& entries) {
-  for (auto it = entries.begin(); it != entries.end();)
-    if (it->second.used)
-      (it++)->second.used = false;
-    else
-      it = entries.erase(it);
-}
-
-}  // namespace
-
 void LayerSampler::forget_unused() {
-  last_ = nullptr;
-  erase_unused(halo_);
-  erase_unused(raw_);
-}
-
-const LayerSampler::Halo& LayerSampler::halo(CellId cell) {
-  auto [it, fresh] = halo_.try_emplace(cell);
-  Halo& h = it->second;
-  h.used = true;
-  if (fresh) {
-    h.square = grid_.plane_square(cell);
-    if (raw(cell))
-      h.tile =
-          assemble_halo(grid_, cell, layer_.tile_size, 1, [this](CellId c) -> const Tile<float>* {
-            const auto& tile = raw(c);  // in the cache: read, not copied
-            return tile ? &*tile : nullptr;
-          });
-  }
-  return h;
-}
-
-const std::optional<Tile<float>>& LayerSampler::raw(CellId cell) {
-  auto [it, fresh] = raw_.try_emplace(cell);
-  Raw& r = it->second;
-  r.used = true;
-  if (fresh) {
-    const auto bytes =
-        base_ ? store_.get_tile(layer_.name, cell) : store_.get_overview(layer_.name, cell);
-    if (bytes) r.tile = to_tile<float>(*bytes, layer_.nodata ? &*layer_.nodata : nullptr);
-  }
-  return r.tile;
+  start_run();
+  tiles_->forget_unused();
 }
 
 }  // namespace maquette

@@ -4,8 +4,7 @@
 // the quicklooks and the GeoTIFF exports to other CRSs.
 #pragma once
 
-#include <map>
-#include <optional>
+#include <memory>
 
 #include "core/grid.h"
 #include "core/tile.h"
@@ -15,14 +14,26 @@ namespace maquette {
 
 class LayerSampler {
  public:
+  // A layer's tiles at one level and their halos, each read and assembled once for all the
+  // samplers that share them (one a thread: safe to share between threads).
+  class Tiles;
+  static std::shared_ptr<Tiles> shared_tiles(const Store& store, const Grid& grid,
+                                             const LayerInfo& layer, int level);
+  // Drops the tiles and halos of `tiles` not used since the last call (by any of its samplers):
+  // called while none of them samples. Each sampler of them starts a run after it (start_run).
+  static void forget_unused(Tiles& tiles);
+
   // Reads `layer`'s tiles at `level` (the layer's level, or a coarser one's overview tiles).
   LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
                bool bilinear);
+  // Reads them from `tiles` (shared_tiles), shared with other samplers: the same values.
+  LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear);
 
   // Writes the layer's channels at `p` to out[0 .. channels - 1]; `cell` is the cell at the
   // sampler's level holding `p` (Grid::cells_from_points). Bilinear sampling leaves out missing
   // samples (weights renormalized); a point whose nearest sample is missing gets NaN. Returns
-  // false, writing nothing, when the cell has no tile.
+  // false, writing nothing, when the cell has no tile. The previous call's cell, when `cell` is
+  // it again, is not looked up.
   bool sample(LonLat p, CellId cell, float* out);
   // The same at `q`, a point of the grid's plane (Grid::forward), for callers that have it
   // without the projection: while q stays in the previous call's cell (its square, edges included:
@@ -33,34 +44,21 @@ class LayerSampler {
   // differ in the last bit: callers whose points come in runs (a picture's rows) call this at the
   // start of each run, so that a value depends on its run alone, never on which runs a thread
   // sampled before (the same bits for any thread count).
-  void start_run() { last_ = nullptr; }
+  void start_run() { last_ = last_cell_ = nullptr; }
 
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
-  // a large region.
+  // a large region. Not for a sampler of shared tiles (forget_unused(Tiles&)).
   void forget_unused();
 
  private:
-  struct Halo {
-    std::optional<Tile<float>> tile;  // none when the cell has no tile
-    PlaneSquare square;
-    bool used = true;
-  };
-  struct Raw {
-    std::optional<Tile<float>> tile;
-    bool used = true;
-  };
-  const Halo& halo(CellId cell);
-  const std::optional<Tile<float>>& raw(CellId cell);
+  struct Halo;
   void read(const Halo& h, PlanePoint q, float* out) const;
 
-  const Store& store_;
-  const Grid& grid_;
+  std::shared_ptr<Tiles> tiles_;
   const LayerInfo& layer_;
-  int level_;
-  bool base_, bilinear_;
-  std::map<CellId, Raw> raw_;
-  std::map<CellId, Halo> halo_;
-  const Halo* last_ = nullptr;  // the cell of the last plane point sampled
+  bool bilinear_;
+  const Halo* last_ = nullptr;       // the cell of the last plane point sampled
+  const Halo* last_cell_ = nullptr;  // the last cell sampled at a lon/lat
 };
 
 }  // namespace maquette

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <tuple>
+#include <utility>
 
 namespace maquette {
 namespace {
@@ -20,8 +21,9 @@ int64_t ring_order(int64_t dx, int64_t dy, int64_t r) {
 
 }  // namespace
 
-EdgeTexels::EdgeTexels(const Store& store, const Grid& grid, const LayerInfo& texture, int reach)
-    : sampler_(store, grid, texture, texture.level, false),
+EdgeTexels::EdgeTexels(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid,
+                       const LayerInfo& texture, int reach)
+    : sampler_(std::move(tiles), false),
       channels_(texture.channels),
       reach_(reach),
       tile_size_(texture.tile_size),
@@ -133,7 +135,7 @@ const EdgeTexels::Texel& EdgeTexels::resolved(Key k) {
 }
 
 void EdgeTexels::forget_unused() {
-  sampler_.forget_unused();
+  sampler_.start_run();
   blocks_.clear();
 }
 

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -31,15 +32,19 @@ namespace maquette {
 
 class EdgeTexels {
  public:
-  // `texture`: uint8 imagery of 1, 3 or 4 channels, read at its own level; reach >= 1 texels.
-  EdgeTexels(const Store& store, const Grid& grid, const LayerInfo& texture, int reach);
+  // `texture`: uint8 imagery of 1, 3 or 4 channels, read at its own level from `tiles`
+  // (LayerSampler::shared_tiles of it at that level, which may be shared with other samplers and
+  // other threads' EdgeTexels); reach >= 1 texels.
+  EdgeTexels(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid, const LayerInfo& texture,
+             int reach);
 
   // Writes the 3 bands (a single channel repeated) at `q`, a point of the grid's plane; false,
   // writing nothing, when none of the four texel centres around q has a value within the reach.
   bool sample(PlanePoint q, float* out);
 
-  // Drops the tiles not used since the last call and the resolved blocks (resolved again when
-  // asked: the same values), so that memory stays bounded over a picture's strips.
+  // Drops the resolved blocks (resolved again when asked: the same values), so that memory stays
+  // bounded over a picture's strips; the tiles are dropped by their owner
+  // (LayerSampler::forget_unused(Tiles&)).
   void forget_unused();
 
  private:

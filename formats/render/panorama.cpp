@@ -31,7 +31,7 @@ Rgb mix(const Rgb& a, const Rgb& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
 }
 
-// Samplers of one thread (LayerSampler caches tiles and is not shared between threads).
+// Samplers of one thread (a LayerSampler is not shared between threads; its tiles are).
 struct Samplers {
   std::optional<LayerSampler> texture, land_cover;
   std::optional<EdgeTexels> edge;  // the texture past its edge (kTextureReach)
@@ -89,29 +89,40 @@ void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, const
 }  // namespace
 
 struct PanoramaSamplers::Threads {
+  Threads(const Store& store, const Grid& grid, const PanoramaLook& look)
+      : texture(look.texture
+                    ? LayerSampler::shared_tiles(store, grid, *look.texture, look.texture->level)
+                    : nullptr),
+        land_cover(look.land_cover ? LayerSampler::shared_tiles(store, grid, *look.land_cover,
+                                                                look.land_cover->level)
+                                   : nullptr),
+        samplers([this, &grid, look] {
+          Samplers s;
+          if (look.texture) {
+            s.texture.emplace(texture, true);
+            s.edge.emplace(texture, grid, *look.texture, kTextureReach);
+          }
+          if (look.land_cover) s.land_cover.emplace(land_cover, false);
+          return s;
+        }) {}
+
+  // The texture's and land cover's tiles and halos, read once for all threads.
+  std::shared_ptr<LayerSampler::Tiles> texture, land_cover;
   tbb::enumerable_thread_specific<Samplers> samplers;
 };
 
 PanoramaSamplers::PanoramaSamplers(const Store& store, const Grid& grid, const PanoramaLook& look)
-    : threads_(std::make_unique<Threads>(
-          Threads{tbb::enumerable_thread_specific<Samplers>([&store, &grid, look] {
-            Samplers s;
-            if (look.texture) {
-              s.texture.emplace(store, grid, *look.texture, look.texture->level, true);
-              s.edge.emplace(store, grid, *look.texture, kTextureReach);
-            }
-            if (look.land_cover)
-              s.land_cover.emplace(store, grid, *look.land_cover, look.land_cover->level, false);
-            return s;
-          })})) {}
+    : threads_(std::make_unique<Threads>(store, grid, look)) {}
 
 PanoramaSamplers::~PanoramaSamplers() = default;
 
 void PanoramaSamplers::forget_unused() {
-  for (Samplers& s : threads_->samplers) {
-    if (s.texture) s.texture->forget_unused();
+  Threads& t = *threads_;
+  for (auto* tiles : {t.texture.get(), t.land_cover.get()})
+    if (tiles) LayerSampler::forget_unused(*tiles);
+  for (Samplers& s : t.samplers) {
+    s.start_row();
     if (s.edge) s.edge->forget_unused();
-    if (s.land_cover) s.land_cover->forget_unused();
   }
 }
 

@@ -312,13 +312,8 @@ RasterPlan::~RasterPlan() = default;
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
                     int rows) {
   Fragments f;
-  rasterize(mesh, camera, near, first_row, rows, f);
-  return f;
-}
-
-void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
-               int rows, Fragments& f) {
   rasterize(RasterPlan(mesh, camera, near), first_row, rows, f);
+  return f;
 }
 
 void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& f) {

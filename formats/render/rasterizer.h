@@ -87,13 +87,10 @@ class RasterPlan {
 // Precondition: 0 <= first_row < the picture's height.
 Fragments rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near = 1.0,
                     int first_row = 0, int rows = -1);
-// The same into `out`, whose arrays are resized to the rows drawn and every pixel of them written:
-// a picture's strips drawn one after the other into the same Fragments reuse its memory (the
-// kernel gives and zeroes each page once, not once a strip).
-void rasterize(const RenderMesh& mesh, const PinholeCamera& camera, double near, int first_row,
-               int rows, Fragments& out);
 // The same from a plan of the mesh: the picture's rows [first_row, first_row + rows) drawn into
-// `out` (rows < 0: to the last row), the same bits.
+// `out` (rows < 0: to the last row), the same bits. `out`'s arrays are resized to the rows drawn
+// and every pixel of them written: a picture's strips drawn one after the other into the same
+// Fragments reuse its memory (the kernel gives and zeroes each page once, not once a strip).
 void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& out);
 
 }  // namespace maquette

@@ -70,7 +70,8 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
   // The ground as drawn (exaggerated): the eye's height above it, the check and the bend's base.
-  const auto ground = TerrainHeights(store, grid, dem, job.exaggeration)(at);
+  TerrainHeights terrain(store, grid, dem, job.exaggeration);
+  const auto ground = terrain(at);
   if (job.above_ground) {
     if (!ground)
       throw Error("--above-ground: the --dem layer '" + dem.name +
@@ -92,7 +93,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   // cast: terrain beside or behind the picture throws shadows into it.
   TerrainScene& scene = prepared->scene =
       build_terrain_scene(store, grid, dem, camera, job.exaggeration, job.sample_pixels,
-                          !job.bend.bends() && !job.shadows);
+                          !job.bend.bends() && !job.shadows, terrain.datum());
   if (job.shadows)  // on the unbent terrain: the bend is a drawing device, not the sun's
     prepared->shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration,
                                        job.sun_azimuth, job.sun_altitude);

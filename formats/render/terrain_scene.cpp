@@ -8,7 +8,10 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include "core/error.h"
 #include "core/halo.h"
@@ -68,16 +71,45 @@ Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
           place.base[2] + h * place.up[2]};
 }
 
+// The DEM's tiles (full-resolution ones and overviews) decoded once for all the halos that read
+// them: a tile is read by its own halo and by up to eight neighbours' (each decoded up to nine
+// times before). Safe to share between threads: each tile is decoded by the first that asks.
+class DecodedTiles {
+ public:
+  DecodedTiles(const Store& store, const LayerInfo& dem) : store_(store), dem_(dem) {}
+
+  // `cell`'s tile, null when the store has none; valid while this lives.
+  const Tile<float>* find(CellId cell) {
+    Slot* slot = nullptr;
+    {
+      const std::lock_guard lock(mutex_);
+      auto& kept = slots_[cell];
+      if (!kept) kept = std::make_unique<Slot>();
+      slot = kept.get();
+    }
+    std::call_once(slot->once, [&] {
+      const auto raw = cell.level() < dem_.level ? store_.get_overview(dem_.name, cell)
+                                                 : store_.get_tile(dem_.name, cell);
+      if (raw) slot->tile = to_tile<float>(*raw, dem_.nodata ? &*dem_.nodata : nullptr);
+    });
+    return slot->tile ? &*slot->tile : nullptr;
+  }
+
+ private:
+  struct Slot {
+    std::once_flag once;
+    std::optional<Tile<float>> tile;
+  };
+  const Store& store_;
+  const LayerInfo& dem_;
+  std::mutex mutex_;
+  std::map<CellId, std::unique_ptr<Slot>> slots_;
+};
+
 // `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
-Tile<float> tile_heights(const Store& store, const Grid& grid, const LayerInfo& dem, CellId cell) {
-  const double* nodata = dem.nodata ? &*dem.nodata : nullptr;
-  const bool overview = cell.level() < dem.level;
-  return assemble_halo(
-      grid, cell, dem.tile_size, kHalo, [&](CellId c) -> std::optional<Tile<float>> {
-        const auto raw = overview ? store.get_overview(dem.name, c) : store.get_tile(dem.name, c);
-        if (!raw) return std::nullopt;
-        return to_tile<float>(*raw, nodata);
-      });
+Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell, DecodedTiles& tiles) {
+  return assemble_halo(grid, cell, dem.tile_size, kHalo,
+                       [&tiles](CellId c) { return tiles.find(c); });
 }
 
 // The vertex numbering write_tile writes, tile_share counts and attribute_tile reads: calls
@@ -348,7 +380,8 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
-                                 double sample_pixels, bool cull) {
+                                 double sample_pixels, bool cull,
+                                 std::shared_ptr<const EllipsoidalHeights> datum) {
   if (!(exaggeration > 0))
     throw Error("vertical exaggeration " + std::to_string(exaggeration) + " must be positive");
   if (!(sample_pixels >= 0))
@@ -357,7 +390,8 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   TerrainScene scene;
-  scene.heights = std::make_unique<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  scene.heights = datum ? std::move(datum)
+                        : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
   const EllipsoidalHeights& heights = *scene.heights;
   const int n = dem.tile_size;
   scene.cells = cells;
@@ -365,10 +399,13 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.tiles.resize(cells.size());
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
-  tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    scene.tiles[i].heights = tile_heights(store, grid, dem, cells[i]);
-    shares[i] = tile_share(scene.tiles[i].heights, n);
-  });
+  {
+    DecodedTiles decoded(store, dem);  // freed once the halos are made
+    tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
+      scene.tiles[i].heights = tile_heights(grid, dem, cells[i], decoded);
+      shares[i] = tile_share(scene.tiles[i].heights, n);
+    });
+  }
   std::vector<size_t> first_index(cells.size() + 1, 0);
   size_t vertices = 0;
   for (size_t i = 0; i < cells.size(); ++i) {
@@ -427,14 +464,14 @@ TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const Layer
     : grid_(grid),
       dem_(dem),
       sampler_(store, grid, dem_, dem_.level, true),
-      heights_(ellipsoidal_heights(dem_)),
+      heights_(std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem_))),
       exaggeration_(exaggeration) {}
 
 std::optional<double> TerrainHeights::operator()(LonLat p) {
   float z = NAN;
   if (!sampler_.sample(p, grid_.cell_from_point(p, dem_.level), &z) || std::isnan(z))
     return std::nullopt;
-  return heights_(p, z) + (exaggeration_ - 1) * z;
+  return (*heights_)(p, z) + (exaggeration_ - 1) * z;
 }
 
 }  // namespace maquette

@@ -64,7 +64,7 @@ struct TerrainScene {
   // (1) or written (2), 0 otherwise.
   std::vector<SceneTile> tiles;
   std::vector<uint8_t> attributed;
-  std::unique_ptr<const EllipsoidalHeights> heights;  // the DEM's datum, for the tiles' places
+  std::shared_ptr<const EllipsoidalHeights> heights;  // the DEM's datum, for the tiles' places
   double exaggeration = 1;
 };
 
@@ -84,10 +84,13 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
 // >= 0 and `cull` as scene_cells. The scene's places refer to `grid`: it must outlive the scene.
-// Throws maquette::Error naming the value at fault.
+// `datum`: the DEM's conversion to the ellipsoid when the caller has it (TerrainHeights::datum;
+// PROJ's operation is costly to set up), else made from `dem`. Throws maquette::Error naming the
+// value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
-                                 double sample_pixels, bool cull);
+                                 double sample_pixels, bool cull,
+                                 std::shared_ptr<const EllipsoidalHeights> datum = nullptr);
 
 // Writes the attributes (lonlat, plane, altitude, normals) of the vertices of the triangles
 // `fragments` shows (nullptr: of every vertex) not written yet: a tile's vertices by one task, each
@@ -105,12 +108,14 @@ class TerrainHeights {
                  double exaggeration = 1);
   // nullopt where the layer has no data.
   std::optional<double> operator()(LonLat p);
+  // The DEM's conversion to the ellipsoid, for build_terrain_scene.
+  const std::shared_ptr<const EllipsoidalHeights>& datum() const { return heights_; }
 
  private:
   const Grid& grid_;
   LayerInfo dem_;
   LayerSampler sampler_;
-  EllipsoidalHeights heights_;
+  std::shared_ptr<const EllipsoidalHeights> heights_;
   double exaggeration_;
 };
 

@@ -60,10 +60,12 @@ std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const
   heights_grid.z.assign(size_t(heights_grid.width) * size_t(heights_grid.height), NAN);
 
   const EllipsoidalHeights& heights = *scene.heights;  // the scene's datum, read once
+  // The DEM's tiles read and their halos assembled once for all threads.
+  const auto tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
   tbb::enumerable_thread_specific<std::optional<LayerSampler>> samplers;
   tbb::parallel_for(0, heights_grid.height, [&](int row) {
     auto& sampler = samplers.local();
-    if (!sampler) sampler.emplace(store, grid, dem, dem.level, true);
+    if (!sampler) sampler.emplace(tiles, true);
     for (int col = 0; col < heights_grid.width; ++col) {
       const auto up = terrain_up(*sampler, grid, dem, heights, camera.frame(), exaggeration,
                                  west + col * spacing, north - row * spacing);

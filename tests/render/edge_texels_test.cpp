@@ -117,7 +117,8 @@ TEST(EdgeTexels, EachTexelTakesItsNearestWithDataWithinTheReach) {
   const Imagery im;
   const auto store = Store::open(im.path, Store::Mode::ReadOnly);
   for (const int reach : {5, 33}) {
-    EdgeTexels edge(*store, default_grid(), im.layer, reach);
+    EdgeTexels edge(LayerSampler::shared_tiles(*store, default_grid(), im.layer, im.layer.level),
+                    default_grid(), im.layer, reach);
     // Points over the cells and `reach` + 1 texels around them.
     const int64_t lo_x = im.x0 + kMargin - reach - 1, lo_y = im.y0 + kMargin - reach - 1;
     const int64_t span = 3 * kSize + 2 * reach + 1;

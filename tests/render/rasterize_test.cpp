@@ -187,6 +187,7 @@ TEST(Rasterize, StripsIntoOneReusedFragmentsAreTheWholePicturesRows) {
   const PinholeCamera camera(s.spec);
   const Fragments whole = rasterize(s.mesh, camera);
   const int h = s.spec.height, w = s.spec.width;
+  const RasterPlan plan(s.mesh, camera);
   Fragments f;
   const uint32_t* storage = nullptr;
   for (const auto& [first, rows] : {std::pair{150, 150}, std::pair{0, 150}, std::pair{60, 100}}) {
@@ -194,7 +195,7 @@ TEST(Rasterize, StripsIntoOneReusedFragmentsAreTheWholePicturesRows) {
     std::fill(f.depth.begin(), f.depth.end(), -1.0);
     std::fill(f.b1.begin(), f.b1.end(), 2.0f);
     std::fill(f.b2.begin(), f.b2.end(), 2.0f);
-    rasterize(s.mesh, camera, 1.0, first, rows, f);
+    rasterize(plan, first, rows, f);
     if (!storage) storage = f.triangle.data();
     EXPECT_EQ(storage, f.triangle.data()) << "rows from " << first;
     ASSERT_EQ(f.first_row, first);
