@@ -10,10 +10,12 @@
 #include <spdlog/spdlog.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "../exemplar_codec.h"
 #include "../transfer_exemplar.h"
@@ -61,12 +63,13 @@ std::string key_of(const json& p) {
   return exemplar_cache_key(exemplar_key_params(p), exemplar_input_files(p)).value();
 }
 
-// The cache files in `dir`.
+// The files under `dir`, sorted.
 std::vector<fs::path> cache_files(const fs::path& dir) {
   std::vector<fs::path> out;
   if (fs::exists(dir))
     for (const auto& entry : fs::recursive_directory_iterator(dir))
       if (entry.is_regular_file()) out.push_back(entry.path());
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -244,6 +247,26 @@ TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {
   }
   // Stored under another key (a file renamed): refused.
   EXPECT_THROW(decode_exemplar(std::as_bytes(std::span(good.data(), good.size())), "other"), Error);
+}
+
+// Writers of one key at once (as MPI ranks or processes are) each leave a whole file: every one
+// of them gets the exemplar, no temporary file is left, and the file reads back.
+TEST(ExemplarCache, WritersOfOneKeyAtOnceLeaveAWholeFile) {
+  const std::string dir = test::temp_dir();
+  const json p = params(painting_png(dir + "/painting.png", 96, 11));
+  const auto analysed = transfer_exemplar(p);
+  const std::string key = key_of(p);
+  std::vector<std::shared_ptr<const TransferExemplar>> got(4);
+  std::vector<std::thread> writers;
+  for (auto& g : got)
+    writers.emplace_back([&] { g = cached_exemplar(dir, key, [&] { return analysed; }); });
+  for (auto& w : writers) w.join();
+  for (const auto& g : got) expect_same(*g, *analysed);
+  EXPECT_EQ(cache_files(dir),
+            (std::vector<fs::path>{exemplar_cache_file(dir, key), fs::path(dir) / "painting.png"}))
+      << "a temporary file left";
+  expect_same(*cached_exemplar(dir, key, [] { return std::shared_ptr<const TransferExemplar>(); }),
+              *analysed);
 }
 
 TEST(ExemplarCache, OffWritesNothingAndAnUnwritableDirectoryIsAWarning) {
