@@ -3,9 +3,11 @@
 #include <cpl_conv.h>
 #include <cpl_string.h>
 #include <cpl_vsi.h>
+#include <dlfcn.h>
 #include <gdal_priv.h>
 #include <openssl/evp.h>
 #include <spdlog/spdlog.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -64,10 +66,23 @@ bool add_file(EVP_MD_CTX* sha, const std::string& path) {
   return true;
 }
 
-// What the analysis reads besides its params and files.
+// The build of the analysis: the path, size and modification time of the file (program or
+// library) holding its code, so that a rebuild misses even where kExemplarCacheVersion was not
+// bumped; empty when the loader does not say.
+nlohmann::json analysis_build() {
+  Dl_info info{};
+  struct stat st {};
+  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname ||
+      stat(info.dli_fname, &st) != 0)
+    return nullptr;
+  return {info.dli_fname, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
+}
+
+// What the analysis reads besides its params and files, and its build.
 nlohmann::json analysis_constants() {
   const SynthesisParams d;
   return {{"version", kExemplarCacheVersion},
+          {"build", analysis_build()},
           {"levels", kLevels},
           {"patch_radius", kPatchRadius},
           {"feature_dims", kFeatureDims},
