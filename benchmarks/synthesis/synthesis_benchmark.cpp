@@ -5,6 +5,10 @@
 //    serial part).
 //  - Usage/threads: the exemplar's over-use measure (exemplar_usage.h: a synthesis of its own
 //    label map, in tiles), the rest of the analysis, timed apart, on 1 and 2 threads.
+//  - AnalyseCached: the whole analysed exemplar (transfer_exemplar's: the analysis and the usage)
+//    read back from the persistent cache (exemplar_cache.h): its key made (the painting's bytes
+//    hashed), the file read and decoded, what a run with a warm cache pays instead; CacheStore: the
+//    file encoded and written, what a cold run adds to the analysis.
 //  - Transfer/threads: a 512 x 512 output as 4 tiles of 256 (the operator's cells at level 10),
 //    each from its own guides and halo, on 1 and 2 threads; items are output pixels, so
 //    s per output megapixel = 1e6 / items_per_second.
@@ -12,7 +16,12 @@
 //    Transfer's time over this one.
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <string>
+
+#include "exemplar_cache.h"
 #include "exemplar_usage.h"
 #include "zion_fixture.h"
 
@@ -52,6 +61,41 @@ void BM_Usage(benchmark::State& state) {
     });
 }
 BENCHMARK(BM_Usage)->Apply(on_1_and_2_threads);
+
+// A cache directory of this process's own, removed when the benchmark ends.
+struct TemporaryCache {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("maquette-benchmark-cache-" + std::to_string(getpid()));
+  std::string key = "benchmark";
+  TemporaryCache() { std::filesystem::create_directories(dir); }
+  ~TemporaryCache() { std::filesystem::remove_all(dir); }
+};
+
+void BM_CacheStore(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  const TemporaryCache cache;
+  for (auto _ : state)
+    cached_exemplar(cache.dir, cache.key, [&] { return t; });  // nothing there yet: stored
+  state.SetBytesProcessed(
+      int64_t(std::filesystem::file_size(exemplar_cache_file(cache.dir, cache.key))));
+}
+BENCHMARK(BM_CacheStore)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_AnalyseCached(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  const TemporaryCache cache;
+  cached_exemplar(cache.dir, cache.key, [&] { return t; });
+  for (auto _ : state) {
+    // The key as a run makes it: the painting's bytes hashed.
+    benchmark::DoNotOptimize(exemplar_cache_key(exemplar_key_params(zion_params()),
+                                                exemplar_input_files(zion_params())));
+    benchmark::DoNotOptimize(cached_exemplar(cache.dir, cache.key, [&] {
+      state.SkipWithError("the cache missed");
+      return t;
+    }));
+  }
+}
+BENCHMARK(BM_AnalyseCached)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(3);
 
 void BM_Transfer(benchmark::State& state) {
   const auto t = zion_exemplar();

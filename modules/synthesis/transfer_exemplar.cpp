@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "exemplar_cache.h"
 #include "exemplar_usage.h"
 #include "harmonize.h"
 #include "painting.h"
@@ -102,6 +103,16 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
   return out;
 }
 
+// The files read_exemplar reads for `fields` (the params or one of "exemplars").
+void add_input_files(const nlohmann::json& fields, std::vector<std::string>& files) {
+  for (const char* field :
+       {"painting", "labels", "exclusion", "painting_altitude", "painting_distance"})
+    if (fields.contains(field) && fields.at(field) != "rows")
+      files.push_back(fields.at(field).get<std::string>());
+}
+
+// The analysis (cached by exemplar_cache.h: bump kExemplarCacheVersion, exemplar_codec.h, when
+// it gives other values for the same params and files, here or in what it calls).
 std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   const int scale = params.at("exemplar_scale").get<int>();
   Exemplar e = read_exemplar(params, kOp, scale);
@@ -146,8 +157,8 @@ int32_t TransferExemplar::pixel_of(int exemplar, int col, int row) const {
   return pyramid.levels[0].index(at.x0 + x, y);
 }
 
-std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
-  nlohmann::json key;
+nlohmann::json exemplar_key_params(const nlohmann::json& params) {
+  nlohmann::json key = nlohmann::json::object();
   for (const char* field :
        {"painting", "labels", "classes", "exclusion", "exclude_classes", "painting_altitude",
         "painting_distance", "exemplar_scale", "k", "exemplars", "harmonize"})
@@ -158,6 +169,19 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
     key["groups"] = params.contains("exemplars")
                         ? params.at("landcover_classes")
                         : nlohmann::json(class_groups(params.at("landcover_classes"), kOp));
+  return key;
+}
+
+std::vector<std::string> exemplar_input_files(const nlohmann::json& params) {
+  std::vector<std::string> files;
+  add_input_files(params, files);
+  if (params.contains("exemplars"))
+    for (const auto& further : params.at("exemplars")) add_input_files(further, files);
+  return files;
+}
+
+std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
+  const nlohmann::json key = exemplar_key_params(params);
   struct Slot {
     tbb::collaborative_once_flag once;
     std::shared_ptr<const TransferExemplar> exemplar;
@@ -171,9 +195,16 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
     if (!entry) entry = std::make_unique<Slot>();
     slot = entry.get();
   }
-  // One analysis per exemplar: the cells that need it meanwhile work on it (its parallel k
-  // nearest search) instead of waiting; a failed one is tried again by the next cell.
-  tbb::collaborative_call_once(slot->once, [&] { slot->exemplar = build(params); });
+  // One analysis per exemplar and process, read from the persistent cache (exemplar_cache.h) when
+  // it holds it: the cells that need it meanwhile work on it (its parallel k nearest search)
+  // instead of waiting; a failed one is tried again by the next cell.
+  tbb::collaborative_call_once(slot->once, [&] {
+    const auto directory = exemplar_cache_dir();
+    const auto disk_key =
+        directory ? exemplar_cache_key(key, exemplar_input_files(params)) : std::nullopt;
+    const auto analyse = [&] { return build(params); };
+    slot->exemplar = disk_key ? cached_exemplar(*directory, *disk_key, analyse) : analyse();
+  });
   return slot->exemplar;
 }
 

@@ -1,11 +1,13 @@
 // synthesis.transfer's exemplar from its step's params: the painting read, labelled (a hand
 // class image, else segment_by_colour), its exclusions applied, shrunk and analysed; built once
-// per process for each distinct set of those params (the cells waiting for it join the work)
+// per process for each distinct set of those params (the cells waiting for it join the work),
+// read back from the persistent cache of analyses (exemplar_cache.h) when it holds it,
 // and shared by the cells.
 #pragma once
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "combined_exemplar.h"
@@ -41,6 +43,17 @@ struct TransferExemplar {
 // further painting read as the first, its classes through further_classes, those it does not
 // name excluded, shrunk, harmonized to the first, then all combined). Throws maquette::Error
 // naming the op, field (exemplars[i].field for a further painting) and file at fault.
+// Cached by params (exemplar_key_params) in the process, and on disk (exemplar_cache.h, keyed by
+// those and the bytes of exemplar_input_files) across processes and runs.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
+
+// What of the params the analysis reads (not the synthesis's weights): the exemplar's fields,
+// and of "landcover_classes" the sets of classes taken as one (the whole table with
+// "exemplars"). Throws maquette::Error on a bad class table.
+nlohmann::json exemplar_key_params(const nlohmann::json& params);
+
+// The files the analysis reads: each painting's image, class image or polygons, exclusion mask,
+// altitude and distance images ("rows" is no file).
+std::vector<std::string> exemplar_input_files(const nlohmann::json& params);
 
 }  // namespace maquette::synthesis

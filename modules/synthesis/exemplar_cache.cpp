@@ -1,0 +1,191 @@
+#include "exemplar_cache.h"
+
+#include <cpl_conv.h>
+#include <cpl_string.h>
+#include <cpl_vsi.h>
+#include <dlfcn.h>
+#include <gdal_priv.h>
+#include <openssl/evp.h>
+#include <spdlog/spdlog.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <system_error>
+#include <thread>
+
+#include "combined_exemplar.h"
+#include "core/error.h"
+#include "exemplar_codec.h"
+#include "exemplar_pyramid.h"
+#include "painting.h"
+#include "synthesis.h"
+
+namespace maquette::synthesis {
+namespace {
+
+using Digest = std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)>;
+
+void add(EVP_MD_CTX* sha, const void* data, size_t size) { EVP_DigestUpdate(sha, data, size); }
+
+void add(EVP_MD_CTX* sha, const std::string& text) {
+  const uint64_t size = text.size();
+  add(sha, &size, sizeof size);
+  add(sha, text.data(), text.size());
+}
+
+// The files of the dataset GDAL opens at `path`, or nothing when it opens none.
+std::vector<std::string> dataset_files(const std::string& path) {
+  GDALAllRegister();
+  const std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(
+      path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!dataset) return {};
+  std::vector<std::string> out;
+  char** list = dataset->GetFileList();
+  for (char** f = list; f && *f; ++f) out.emplace_back(*f);
+  CSLDestroy(list);
+  return out;
+}
+
+// Adds the file's name, size and bytes (read through GDAL's virtual file system, as GDAL read
+// them); false when it cannot be read.
+bool add_file(EVP_MD_CTX* sha, const std::string& path) {
+  VSILFILE* f = VSIFOpenL(path.c_str(), "rb");
+  if (!f) return false;
+  add(sha, path);
+  std::vector<char> chunk(size_t(1) << 20);
+  uint64_t size = 0;
+  for (size_t n; (n = VSIFReadL(chunk.data(), 1, chunk.size(), f)) > 0; size += n)
+    add(sha, chunk.data(), n);
+  VSIFCloseL(f);
+  add(sha, &size, sizeof size);
+  return true;
+}
+
+// The build of the analysis: the path, size and modification time of the file (program or
+// library) holding its code, so that a rebuild misses even where kExemplarCacheVersion was not
+// bumped; empty when the loader does not say.
+nlohmann::json analysis_build() {
+  Dl_info info{};
+  struct stat st {};
+  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname ||
+      stat(info.dli_fname, &st) != 0)
+    return nullptr;
+  return {info.dli_fname, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
+}
+
+// What the analysis reads besides its params and files, and its build.
+nlohmann::json analysis_constants() {
+  const SynthesisParams d;
+  return {{"version", kExemplarCacheVersion},
+          {"build", analysis_build()},
+          {"levels", kLevels},
+          {"patch_radius", kPatchRadius},
+          {"feature_dims", kFeatureDims},
+          {"gap", kCombinedGap},
+          {"smoothing", kClassSmoothingRadius},
+          {"usage_params",
+           {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread,
+            d.coherence, d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}}};
+}
+
+std::string hex(const unsigned char* bytes, unsigned size) {
+  static constexpr char kDigits[] = "0123456789abcdef";
+  std::string out;
+  for (unsigned i = 0; i < size; ++i) {
+    out += kDigits[bytes[i] >> 4];
+    out += kDigits[bytes[i] & 15];
+  }
+  return out;
+}
+
+// The file's bytes, or nothing when it does not exist; throws maquette::Error when it exists but
+// cannot be read.
+std::optional<std::vector<std::byte>> read_file(const std::filesystem::path& file) {
+  std::error_code missing;
+  if (!std::filesystem::exists(file, missing)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw Error("cannot be read");
+  const auto* b = reinterpret_cast<const std::byte*>(bytes.data());
+  return std::vector<std::byte>(b, b + bytes.size());
+}
+
+// Writes `bytes` as `file`: under a name of this process and thread, renamed (atomic: a reader
+// sees the old file or the whole new one). A failure is a warning.
+void write_file(const std::filesystem::path& file, const std::vector<std::byte>& bytes) {
+  std::filesystem::path temporary = file;
+  temporary += ".tmp" + std::to_string(getpid()) + "-" +
+               std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+  std::error_code error;
+  std::filesystem::create_directories(file.parent_path(), error);
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    out.close();
+    if (out.fail()) error = std::make_error_code(std::errc::io_error);
+  }
+  if (!error) std::filesystem::rename(temporary, file, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: cannot write {}",
+                 file.string());
+  }
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> exemplar_cache_dir() {
+  if (const char* dir = std::getenv("MAQUETTE_CACHE_DIR"); dir && *dir)
+    return std::string(dir) == "off" ? std::nullopt : std::optional<std::filesystem::path>(dir);
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return std::filesystem::path(xdg) / "maquette";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".cache" / "maquette";
+  return std::nullopt;
+}
+
+std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
+                                              const std::vector<std::string>& inputs) {
+  const Digest sha(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
+  if (!sha || !EVP_DigestInit_ex(sha.get(), EVP_sha256(), nullptr)) return std::nullopt;
+  add(sha.get(), analysis_constants().dump());
+  add(sha.get(), params.dump());
+  for (const std::string& input : inputs) {
+    const auto files = dataset_files(input);
+    if (files.empty()) return std::nullopt;
+    for (const std::string& file : files)
+      if (!add_file(sha.get(), file)) return std::nullopt;
+  }
+  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  unsigned size = 0;
+  if (!EVP_DigestFinal_ex(sha.get(), digest.data(), &size)) return std::nullopt;
+  return hex(digest.data(), size);
+}
+
+std::filesystem::path exemplar_cache_file(const std::filesystem::path& directory,
+                                          const std::string& key) {
+  return directory / ("exemplar-" + key + ".zst");
+}
+
+std::shared_ptr<const TransferExemplar> cached_exemplar(
+    const std::filesystem::path& directory, const std::string& key,
+    const std::function<std::shared_ptr<const TransferExemplar>()>& analyse) {
+  const std::filesystem::path file = exemplar_cache_file(directory, key);
+  try {
+    if (const auto bytes = read_file(file))
+      return std::make_shared<const TransferExemplar>(decode_exemplar(*bytes, key));
+  } catch (const std::exception& e) {
+    spdlog::warn("synthesis.transfer: ignoring the cached exemplar {}: {}; analysing it again",
+                 file.string(), e.what());
+  }
+  auto exemplar = analyse();
+  write_file(file, encode_exemplar(*exemplar, key));
+  return exemplar;
+}
+
+}  // namespace maquette::synthesis

@@ -1,0 +1,45 @@
+// A persistent cache of analysed exemplars (transfer_exemplar.h), as PROJ and GDAL cache their
+// downloads: the analysis (seconds of CPU) is done once per set of inputs and read back by every
+// later run, process and MPI rank. One file per key in the cache directory, written under a
+// temporary name and renamed (several processes may store the same key at once); a file that
+// cannot be read back whole and valid is ignored with a warning, recomputed and rewritten; a
+// directory that cannot be written is a warning, never an error.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "transfer_exemplar.h"
+
+namespace maquette::synthesis {
+
+// The cache directory: $MAQUETTE_CACHE_DIR when set (the value "off": no cache, nullopt), else
+// $XDG_CACHE_HOME/maquette, else $HOME/.cache/maquette (nullopt without HOME). Not created here.
+std::optional<std::filesystem::path> exemplar_cache_dir();
+
+// The key of an analysis that reads `params` (the exemplar's params only, canonical JSON) and
+// the files `inputs` (each as GDAL opens it, with every file of its dataset: sidecars, a
+// shapefile's parts): SHA-256, as 64 hex digits, of kExemplarCacheVersion, the build (the
+// path, size and modification time of the program or library holding the analysis: a rebuild
+// misses), the analysis's constants (levels, patch and feature sizes, the paintings' gap, the
+// segmentation's radius, the default SynthesisParams the usage is measured with), `params` and
+// every file's name, size and bytes. nullopt when an input is no dataset GDAL opens or a file
+// cannot be read (the analysis then reports it; nothing is cached).
+std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
+                                              const std::vector<std::string>& inputs);
+
+// The exemplar of `key` read from `directory`, else `analyse()`'s, stored there.
+std::shared_ptr<const TransferExemplar> cached_exemplar(
+    const std::filesystem::path& directory, const std::string& key,
+    const std::function<std::shared_ptr<const TransferExemplar>()>& analyse);
+
+// The file of `key` in `directory`.
+std::filesystem::path exemplar_cache_file(const std::filesystem::path& directory,
+                                          const std::string& key);
+
+}  // namespace maquette::synthesis
