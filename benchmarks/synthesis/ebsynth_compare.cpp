@@ -223,14 +223,15 @@ void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const Clas
 }
 
 // Per class, the distinct sources copied against the class's bound (min of its target pixels and
-// its usable exemplar pixels: distinct_bound), and with several paintings each painting's share
-// of the class's usable exemplar pixels and of the output pixels copied, the distance of the
-// pixels copied from each painting to that painting's pixels of the class, and the output's
-// distance to the paintings' histograms mixed in the output's shares (what the measure would be
-// if each painting's share were as copied): so a histogram off because of the paintings' shares
-// is told from one off within a painting.
+// its usable exemplar pixels, as `count` has them: distinct_bound), and with several paintings each
+// painting's share of the class's usable exemplar pixels and of the output pixels copied, the
+// distance of the pixels copied from each painting to that painting's pixels of the class, and the
+// output's distance to the paintings' histograms mixed in the output's shares (what the measure
+// would be if each painting's share were as copied): so a histogram off because of the paintings'
+// shares is told from one off within a painting.
 void print_class_sources(const Exemplar& e, const TransferExemplar& t,
-                         const std::vector<uint8_t>& labels, const std::vector<int32_t>& source) {
+                         const std::vector<uint8_t>& labels, const ClassPixels& count,
+                         const std::vector<int32_t>& source) {
   const size_t paintings = t.parts.size();
   const auto painting = [&](int32_t s) { return size_t(t.source_of(s).exemplar); };
   const auto bin = [&](int32_t s) {
@@ -258,14 +259,13 @@ void print_class_sources(const Exemplar& e, const TransferExemplar& t,
   };
   for (const auto& [label, sides] : h) {
     const auto& [exemplar, output] = sides;
-    uint64_t n[2] = {0, 0};
-    for (size_t p = 0; p < paintings; ++p) n[0] += total(exemplar[p]), n[1] += total(output[p]);
-    if (n[1] == 0) continue;
+    const auto [targets, usable] = count.at(label);  // n[0], n[1] of distinct_bound
+    if (targets == 0) continue;
     std::set<int32_t> distinct;
     for (size_t i = 0; i < labels.size(); ++i)
       if (labels[i] == label && source[i] >= 0) distinct.insert(source[i]);
     std::printf("    class %d: %zu distinct sources of at most %lld", int(label), distinct.size(),
-                (long long)std::min(n[0], n[1]));
+                (long long)std::min(targets, usable));
     if (paintings < 2) {
       std::printf("\n");
       continue;
@@ -273,17 +273,15 @@ void print_class_sources(const Exemplar& e, const TransferExemplar& t,
     std::vector<double> mixed(kHistogramBins, 0), out(kHistogramBins, 0);
     for (size_t p = 0; p < paintings; ++p) {
       const uint64_t ne = total(exemplar[p]), no = total(output[p]);
-      std::printf("  painting %zu exemplar %.3f output %.3f", p, double(ne) / double(n[0]),
-                  double(no) / double(n[1]));
+      std::printf("  painting %zu exemplar %.3f output %.3f", p, double(ne) / double(usable),
+                  double(no) / double(targets));
       if (no > 0) std::printf(" (distance %.3f)", total_variation(output[p], exemplar[p]));
       for (size_t b = 0; b < size_t(kHistogramBins); ++b) {
-        out[b] += double(output[p][b]) / double(n[1]);
-        if (ne > 0) mixed[b] += double(exemplar[p][b]) / double(ne) * double(no) / double(n[1]);
+        out[b] += double(output[p][b]) / double(targets);
+        if (ne > 0) mixed[b] += double(exemplar[p][b]) / double(ne) * double(no) / double(targets);
       }
     }
-    double d = 0;
-    for (size_t b = 0; b < size_t(kHistogramBins); ++b) d += std::abs(out[b] - mixed[b]);
-    std::printf("; at the output's shares %.3f\n", d / 2);
+    std::printf("; at the output's shares %.3f\n", total_variation(out, mixed));
   }
 }
 
@@ -337,7 +335,8 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
   std::printf("exemplar analysis (ours, once): CPU %.1f s, wall %.1f s\n", analysis.cpu,
               analysis.wall);
   std::printf("the window's classes (painting classes through the class table):\n");
-  const ClassPixels count = class_pixels(e, zion_labels(out, classes));
+  const std::vector<uint8_t> labels = zion_labels(out, classes);
+  const ClassPixels count = class_pixels(e, labels);
   std::printf("distinct-source bound with label consistency 1: %.4f\n", distinct_bound(count));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
@@ -359,7 +358,7 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
         metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step)));
     print("ours", ours_m.back());
     print("ours+mean", averaged_m.back());
-    print_class_sources(e, *t, zion_labels(out, classes), ours);
+    print_class_sources(e, *t, labels, count, ours);
     std::fflush(stdout);
   }
   if (seeds > 1) print_seeds(e, ours_m, count);

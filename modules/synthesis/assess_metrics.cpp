@@ -173,17 +173,6 @@ std::vector<uint64_t> exemplar_histogram(const Exemplar& e, uint8_t label) {
   return h;
 }
 
-double total_variation(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b) {
-  uint64_t na = 0, nb = 0;
-  for (const uint64_t n : a) na += n;
-  for (const uint64_t n : b) nb += n;
-  if (na == 0 || nb == 0) return 1;
-  double d = 0;
-  for (size_t i = 0; i < a.size(); ++i)
-    d += std::abs(double(a[i]) / double(na) - double(b[i]) / double(nb));
-  return d / 2;
-}
-
 Metrics metrics(const Exemplar& e, const Tally& t) {
   Metrics m;
   m.pixels = t.pixels;

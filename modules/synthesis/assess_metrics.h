@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -91,7 +92,18 @@ Metrics metrics(const Exemplar& e, const Tally& t);
 // The exemplar's histogram of label `label` (its allowed pixels), kHistogramBins counts.
 std::vector<uint64_t> exemplar_histogram(const Exemplar& e, uint8_t label);
 
-// Total variation distance between two histograms' frequencies (1 when either is empty).
-double total_variation(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b);
+// Total variation distance between the frequencies of two histograms of the same bins, as counts
+// or weights (1 when either is empty).
+template <typename Count>
+double total_variation(const std::vector<Count>& a, const std::vector<Count>& b) {
+  Count na = 0, nb = 0;
+  for (const Count n : a) na += n;
+  for (const Count n : b) nb += n;
+  if (na == 0 || nb == 0) return 1;
+  double d = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+    d += std::abs(double(a[i]) / double(na) - double(b[i]) / double(nb));
+  return d / 2;
+}
 
 }  // namespace maquette::synthesis
