@@ -8,18 +8,16 @@
 #include <openssl/evp.h>
 #include <spdlog/spdlog.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <system_error>
-#include <thread>
 
 #include "combined_exemplar.h"
 #include "core/error.h"
+#include "core/json_file.h"
+#include "core/output_file.h"
 #include "exemplar_codec.h"
 #include "exemplar_pyramid.h"
 #include "painting.h"
@@ -103,40 +101,6 @@ std::string hex(const unsigned char* bytes, unsigned size) {
   return out;
 }
 
-// The file's bytes, or nothing when it does not exist; throws maquette::Error when it exists but
-// cannot be read.
-std::optional<std::vector<std::byte>> read_file(const std::filesystem::path& file) {
-  std::error_code missing;
-  if (!std::filesystem::exists(file, missing)) return std::nullopt;
-  std::ifstream in(file, std::ios::binary);
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error("cannot be read");
-  const auto* b = reinterpret_cast<const std::byte*>(bytes.data());
-  return std::vector<std::byte>(b, b + bytes.size());
-}
-
-// Writes `bytes` as `file`: under a name of this process and thread, renamed (atomic: a reader
-// sees the old file or the whole new one). A failure is a warning.
-void write_file(const std::filesystem::path& file, const std::vector<std::byte>& bytes) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp" + std::to_string(getpid()) + "-" +
-               std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-  std::error_code error;
-  std::filesystem::create_directories(file.parent_path(), error);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    out.close();
-    if (out.fail()) error = std::make_error_code(std::errc::io_error);
-  }
-  if (!error) std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: cannot write {}",
-                 file.string());
-  }
-}
-
 }  // namespace
 
 std::optional<std::filesystem::path> exemplar_cache_dir() {
@@ -177,14 +141,22 @@ std::shared_ptr<const TransferExemplar> cached_exemplar(
     const std::function<std::shared_ptr<const TransferExemplar>()>& analyse) {
   const std::filesystem::path file = exemplar_cache_file(directory, key);
   try {
-    if (const auto bytes = read_file(file))
-      return std::make_shared<const TransferExemplar>(decode_exemplar(*bytes, key));
+    std::error_code missing;
+    if (std::filesystem::exists(file, missing))
+      return std::make_shared<const TransferExemplar>(
+          decode_exemplar(read_text_file(file.string()), key));
   } catch (const std::exception& e) {
     spdlog::warn("synthesis.transfer: ignoring the cached exemplar {}: {}; analysing it again",
                  file.string(), e.what());
   }
   auto exemplar = analyse();
-  write_file(file, encode_exemplar(*exemplar, key));
+  std::error_code ignored;  // a directory that cannot be made: the write says why
+  std::filesystem::create_directories(directory, ignored);
+  try {
+    write_file_whole(file.string(), encode_exemplar(*exemplar, key));
+  } catch (const Error& e) {
+    spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: {}", e.what());
+  }
   return exemplar;
 }
 

@@ -246,7 +246,7 @@ TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {
     EXPECT_EQ(none.text.str(), "") << what;
   }
   // Stored under another key (a file renamed): refused.
-  EXPECT_THROW(decode_exemplar(std::as_bytes(std::span(good.data(), good.size())), "other"), Error);
+  EXPECT_THROW(decode_exemplar(good, "other"), Error);
 }
 
 // Writers of one key at once (as MPI ranks or processes are) each leave a whole file: every one
