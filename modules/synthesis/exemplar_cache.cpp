@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdlib>
+#include <filesystem>
 #include <optional>
 #include <system_error>
 
@@ -65,30 +66,41 @@ bool add_file(EVP_MD_CTX* sha, const std::string& path) {
 }
 
 // The build of the analysis: the path, size and modification time of the file (program or
-// library) holding its code, so that a rebuild misses even where kExemplarCacheVersion was not
-// bumped; empty when the loader does not say.
+// library) holding its code, so that a rebuild misses; null when it cannot be found. For code
+// linked into the program glibc's dladdr gives argv[0], a bare name when run through PATH: the
+// program is then /proc/self/exe.
 nlohmann::json analysis_build() {
   Dl_info info{};
-  struct stat st {};
-  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname ||
-      stat(info.dli_fname, &st) != 0)
+  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname)
     return nullptr;
-  return {info.dli_fname, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
+  std::string path = info.dli_fname;
+  std::error_code error;
+  if (path.find('/') == std::string::npos)
+    path = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  struct stat st {};
+  if (error || stat(path.c_str(), &st) != 0) return nullptr;
+  return {path, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
 }
 
-// What the analysis reads besides its params and files, and its build.
-nlohmann::json analysis_constants() {
+// What the key holds besides the params and files: the files' format, the release of GDAL (which
+// decodes the painting) and the analysis's build. Without the build (the loader does not say),
+// the analysis's constants instead: a change of its code then reads older files.
+nlohmann::json analysis_identity() {
+  nlohmann::json out = {{"format", kExemplarCacheVersion},
+                        {"gdal", GDALVersionInfo("RELEASE_NAME")},
+                        {"build", analysis_build()}};
+  if (!out["build"].is_null()) return out;
+  spdlog::debug("synthesis.transfer: the analysis's build is not in the exemplar cache's key");
   const SynthesisParams d;
-  return {{"version", kExemplarCacheVersion},
-          {"build", analysis_build()},
-          {"levels", kLevels},
-          {"patch_radius", kPatchRadius},
-          {"feature_dims", kFeatureDims},
-          {"gap", kCombinedGap},
-          {"smoothing", kClassSmoothingRadius},
-          {"usage_params",
-           {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread,
-            d.coherence, d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}}};
+  out["constants"] = {
+      kLevels,
+      kPatchRadius,
+      kFeatureDims,
+      kCombinedGap,
+      kClassSmoothingRadius,
+      {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread, d.coherence,
+       d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
+  return out;
 }
 
 std::string hex(const unsigned char* bytes, unsigned size) {
@@ -117,7 +129,7 @@ std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
                                               const std::vector<std::string>& inputs) {
   const Digest sha(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
   if (!sha || !EVP_DigestInit_ex(sha.get(), EVP_sha256(), nullptr)) return std::nullopt;
-  add(sha.get(), analysis_constants().dump());
+  add(sha.get(), analysis_identity().dump());
   add(sha.get(), params.dump());
   for (const std::string& input : inputs) {
     const auto files = dataset_files(input);

@@ -19,7 +19,7 @@ constexpr int kZstdLevel = 1;
 constexpr uint64_t kMostLevels = 64;
 
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
-// A field added to ExemplarLevel must be added to level_fields below, and the version bumped.
+// A field added to ExemplarLevel must be added to level_fields below, and the format bumped.
 static_assert(sizeof(ExemplarLevel) == 7368, "ExemplarLevel changed: update level_fields");
 #endif
 

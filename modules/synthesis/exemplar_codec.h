@@ -13,11 +13,10 @@
 
 namespace maquette::synthesis {
 
-// The cache's format and analysis version: part of every key and checked in every file. Bump it
-// when the analysis gives other values for the same inputs (transfer_exemplar.cpp's build and
-// what it calls: the painting's reading and segmentation, harmonize, analyse_exemplar,
-// measure_usage) or when TransferExemplar's layout changes; older files then miss and are
-// recomputed.
+// The cache files' format number: part of every key and checked in every file. Bump it when the
+// file's layout or TransferExemplar's changes (a static_assert in exemplar_codec.cpp catches a
+// field added to ExemplarLevel); older files then miss and are recomputed. A change of the
+// analysis needs no bump: the build holding it is in the key (exemplar_cache.h).
 inline constexpr uint32_t kExemplarCacheVersion = 1;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
