@@ -10,17 +10,15 @@
 // A string is its byte count (u32) and its bytes. All numbers little endian.
 #include "content/instances_codec.h"
 
-#include <zstd.h>
-
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <span>
 
 #include "content/content_blob.h"
 #include "content/little_endian.h"
 #include "core/error.h"
+#include "core/zstd_frame.h"
 #include "store/codec.h"
 
 namespace maquette {
@@ -113,36 +111,13 @@ class BodyReader {
   const std::string& where_;
 };
 
-// The frame's content, grown as it is decompressed (a header may claim any size).
+// The frame's content (core/zstd_frame.h), its faults named as the payload's.
 std::string decompress(std::string_view frame, const std::string& where) {
-  const auto fail = [&](const std::string& fault) { corrupt(where, fault); };
-  const unsigned long long declared = ZSTD_getFrameContentSize(frame.data(), frame.size());
-  if (declared == ZSTD_CONTENTSIZE_ERROR || declared == ZSTD_CONTENTSIZE_UNKNOWN)
-    fail("not a zstd frame with its content size");
-  if (const size_t size = ZSTD_findFrameCompressedSize(frame.data(), frame.size());
-      ZSTD_isError(size))
-    fail(std::string("zstd frame: ") + ZSTD_getErrorName(size));
-  else if (size != frame.size())
-    fail(std::to_string(frame.size() - size) + " bytes after the zstd frame");
-  const std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> d(ZSTD_createDCtx(), &ZSTD_freeDCtx);
-  std::string out;
-  ZSTD_inBuffer in{frame.data(), frame.size(), 0};
-  const size_t chunk = ZSTD_DStreamOutSize();
-  for (;;) {
-    const size_t at = out.size();
-    out.resize(at + chunk);
-    ZSTD_outBuffer o{out.data() + at, chunk, 0};
-    const size_t left = ZSTD_decompressStream(d.get(), &o, &in);
-    if (ZSTD_isError(left)) fail(std::string("zstd frame: ") + ZSTD_getErrorName(left));
-    out.resize(at + o.pos);
-    if (out.size() > declared) fail("the zstd frame holds more than its content size");
-    if (left == 0) break;  // the frame is whole and its checksum verified
-    if (in.pos == in.size && o.pos < chunk) fail("the zstd frame is truncated");
+  try {
+    return zstd_frame_content(frame);
+  } catch (const Error& e) {
+    corrupt(where, e.what());
   }
-  if (out.size() != declared)
-    fail("the zstd frame holds " + std::to_string(out.size()) + " bytes, not the " +
-         std::to_string(declared) + " it declares");
-  return out;
 }
 
 }  // namespace
@@ -214,15 +189,12 @@ std::string encode_instances(const InstancesContent& c) {
       }
   }
 
-  const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> z(ZSTD_createCCtx(), &ZSTD_freeCCtx);
-  ZSTD_CCtx_setParameter(z.get(), ZSTD_c_compressionLevel, kZstdLevel);
-  ZSTD_CCtx_setParameter(z.get(), ZSTD_c_checksumFlag, 1);
-  ZSTD_CCtx_setParameter(z.get(), ZSTD_c_contentSizeFlag, 1);
-  std::string frame(ZSTD_compressBound(body.size()), '\0');
-  const size_t size = ZSTD_compress2(z.get(), frame.data(), frame.size(), body.data(), body.size());
-  if (ZSTD_isError(size))
-    throw Error(std::string("cannot compress instances: ") + ZSTD_getErrorName(size));
-  frame.resize(size);
+  std::string frame;
+  try {
+    append_zstd_frame(body, kZstdLevel, frame);
+  } catch (const Error& e) {
+    throw Error(std::string("cannot compress instances: ") + e.what());
+  }
   return frame;
 }
 

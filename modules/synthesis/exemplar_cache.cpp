@@ -8,18 +8,17 @@
 #include <openssl/evp.h>
 #include <spdlog/spdlog.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
+#include <filesystem>
 #include <optional>
 #include <system_error>
-#include <thread>
 
 #include "combined_exemplar.h"
 #include "core/error.h"
+#include "core/json_file.h"
+#include "core/output_file.h"
 #include "exemplar_codec.h"
 #include "exemplar_pyramid.h"
 #include "painting.h"
@@ -67,30 +66,41 @@ bool add_file(EVP_MD_CTX* sha, const std::string& path) {
 }
 
 // The build of the analysis: the path, size and modification time of the file (program or
-// library) holding its code, so that a rebuild misses even where kExemplarCacheVersion was not
-// bumped; empty when the loader does not say.
+// library) holding its code, so that a rebuild misses; null when it cannot be found. For code
+// linked into the program glibc's dladdr gives argv[0], a bare name when run through PATH: the
+// program is then /proc/self/exe.
 nlohmann::json analysis_build() {
   Dl_info info{};
-  struct stat st {};
-  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname ||
-      stat(info.dli_fname, &st) != 0)
+  if (!dladdr(reinterpret_cast<const void*>(&analyse_exemplar), &info) || !info.dli_fname)
     return nullptr;
-  return {info.dli_fname, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
+  std::string path = info.dli_fname;
+  std::error_code error;
+  if (path.find('/') == std::string::npos)
+    path = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  struct stat st {};
+  if (error || stat(path.c_str(), &st) != 0) return nullptr;
+  return {path, st.st_size, st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
 }
 
-// What the analysis reads besides its params and files, and its build.
-nlohmann::json analysis_constants() {
+// What the key holds besides the params and files: the files' format, the release of GDAL (which
+// decodes the painting) and the analysis's build. Without the build (the loader does not say),
+// the analysis's constants instead: a change of its code then reads older files.
+nlohmann::json analysis_identity() {
+  nlohmann::json out = {{"format", kExemplarCacheVersion},
+                        {"gdal", GDALVersionInfo("RELEASE_NAME")},
+                        {"build", analysis_build()}};
+  if (!out["build"].is_null()) return out;
+  spdlog::debug("synthesis.transfer: the analysis's build is not in the exemplar cache's key");
   const SynthesisParams d;
-  return {{"version", kExemplarCacheVersion},
-          {"build", analysis_build()},
-          {"levels", kLevels},
-          {"patch_radius", kPatchRadius},
-          {"feature_dims", kFeatureDims},
-          {"gap", kCombinedGap},
-          {"smoothing", kClassSmoothingRadius},
-          {"usage_params",
-           {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread,
-            d.coherence, d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}}};
+  out["constants"] = {
+      kLevels,
+      kPatchRadius,
+      kFeatureDims,
+      kCombinedGap,
+      kClassSmoothingRadius,
+      {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread, d.coherence,
+       d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
+  return out;
 }
 
 std::string hex(const unsigned char* bytes, unsigned size) {
@@ -101,40 +111,6 @@ std::string hex(const unsigned char* bytes, unsigned size) {
     out += kDigits[bytes[i] & 15];
   }
   return out;
-}
-
-// The file's bytes, or nothing when it does not exist; throws maquette::Error when it exists but
-// cannot be read.
-std::optional<std::vector<std::byte>> read_file(const std::filesystem::path& file) {
-  std::error_code missing;
-  if (!std::filesystem::exists(file, missing)) return std::nullopt;
-  std::ifstream in(file, std::ios::binary);
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error("cannot be read");
-  const auto* b = reinterpret_cast<const std::byte*>(bytes.data());
-  return std::vector<std::byte>(b, b + bytes.size());
-}
-
-// Writes `bytes` as `file`: under a name of this process and thread, renamed (atomic: a reader
-// sees the old file or the whole new one). A failure is a warning.
-void write_file(const std::filesystem::path& file, const std::vector<std::byte>& bytes) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp" + std::to_string(getpid()) + "-" +
-               std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-  std::error_code error;
-  std::filesystem::create_directories(file.parent_path(), error);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    out.close();
-    if (out.fail()) error = std::make_error_code(std::errc::io_error);
-  }
-  if (!error) std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: cannot write {}",
-                 file.string());
-  }
 }
 
 }  // namespace
@@ -153,7 +129,7 @@ std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
                                               const std::vector<std::string>& inputs) {
   const Digest sha(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
   if (!sha || !EVP_DigestInit_ex(sha.get(), EVP_sha256(), nullptr)) return std::nullopt;
-  add(sha.get(), analysis_constants().dump());
+  add(sha.get(), analysis_identity().dump());
   add(sha.get(), params.dump());
   for (const std::string& input : inputs) {
     const auto files = dataset_files(input);
@@ -177,14 +153,22 @@ std::shared_ptr<const TransferExemplar> cached_exemplar(
     const std::function<std::shared_ptr<const TransferExemplar>()>& analyse) {
   const std::filesystem::path file = exemplar_cache_file(directory, key);
   try {
-    if (const auto bytes = read_file(file))
-      return std::make_shared<const TransferExemplar>(decode_exemplar(*bytes, key));
+    std::error_code missing;
+    if (std::filesystem::exists(file, missing))
+      return std::make_shared<const TransferExemplar>(
+          decode_exemplar(read_text_file(file.string()), key));
   } catch (const std::exception& e) {
     spdlog::warn("synthesis.transfer: ignoring the cached exemplar {}: {}; analysing it again",
                  file.string(), e.what());
   }
   auto exemplar = analyse();
-  write_file(file, encode_exemplar(*exemplar, key));
+  std::error_code ignored;  // a directory that cannot be made: the write says why
+  std::filesystem::create_directories(directory, ignored);
+  try {
+    write_file_whole(file.string(), encode_exemplar(*exemplar, key));
+  } catch (const Error& e) {
+    spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: {}", e.what());
+  }
   return exemplar;
 }
 

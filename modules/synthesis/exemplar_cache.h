@@ -24,12 +24,14 @@ std::optional<std::filesystem::path> exemplar_cache_dir();
 
 // The key of an analysis that reads `params` (the exemplar's params only, canonical JSON) and
 // the files `inputs` (each as GDAL opens it, with every file of its dataset: sidecars, a
-// shapefile's parts): SHA-256, as 64 hex digits, of kExemplarCacheVersion, the build (the
-// path, size and modification time of the program or library holding the analysis: a rebuild
-// misses), the analysis's constants (levels, patch and feature sizes, the paintings' gap, the
-// segmentation's radius, the default SynthesisParams the usage is measured with), `params` and
-// every file's name, size and bytes. nullopt when an input is no dataset GDAL opens or a file
-// cannot be read (the analysis then reports it; nothing is cached).
+// shapefile's parts): SHA-256, as 64 hex digits, of kExemplarCacheVersion (the files' format),
+// GDAL's release (it decodes the painting; not the codec libraries it calls, libjpeg, libpng),
+// the build (the path, size and modification time of the program or library holding the
+// analysis: a rebuild misses, so a change of the analysis never reads an older build's file;
+// where the build cannot be found, the analysis's constants instead: levels, patch and feature
+// sizes, the paintings' gap, the segmentation's radius, the default SynthesisParams the usage is
+// measured with), `params` and every file's name, size and bytes. nullopt when an input is no
+// dataset GDAL opens or a file cannot be read (the analysis then reports it; nothing is cached).
 std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
                                               const std::vector<std::string>& inputs);
 

@@ -1,15 +1,13 @@
 #include "exemplar_codec.h"
 
-#include <zstd.h>
-
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <memory>
 #include <string>
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/zstd_frame.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -21,18 +19,15 @@ constexpr int kZstdLevel = 1;
 constexpr uint64_t kMostLevels = 64;
 
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
-// A field added to ExemplarLevel must be added to level_fields below, and the version bumped.
+// A field added to ExemplarLevel must be added to level_fields below, and the format bumped.
 static_assert(sizeof(ExemplarLevel) == 7368, "ExemplarLevel changed: update level_fields");
 #endif
 
 // Appends fields to `out`.
 struct Writer {
-  std::vector<std::byte>& out;
+  std::string& out;
 
-  void bytes(const void* p, size_t n) {
-    const auto* b = static_cast<const std::byte*>(p);
-    out.insert(out.end(), b, b + n);
-  }
+  void bytes(const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
   template <class T>
   requires std::is_trivially_copyable_v<T>
   void operator()(const T& v) { bytes(&v, sizeof v); }
@@ -49,7 +44,7 @@ struct Writer {
 
 // Reads fields back from `in`, throwing when it ends early.
 struct Reader {
-  std::span<const std::byte> in;
+  std::string_view in;
   size_t at = 0;
 
   void bytes(void* p, size_t n) {
@@ -138,29 +133,20 @@ struct Header {
 
 }  // namespace
 
-std::vector<std::byte> encode_exemplar(const TransferExemplar& exemplar, std::string_view key) {
-  std::vector<std::byte> payload;
+std::string encode_exemplar(const TransferExemplar& exemplar, std::string_view key) {
+  std::string payload;
   Writer fields{payload};
   exemplar_fields(fields, exemplar);
 
-  std::vector<std::byte> file;
+  std::string file;
   Writer head{file};
   head(Header{kMagic, kExemplarCacheVersion, uint32_t(key.size())});
   head.bytes(key.data(), key.size());
-  const size_t at = file.size();
-  file.resize(at + ZSTD_compressBound(payload.size()));
-  const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> cctx(ZSTD_createCCtx(),
-                                                                  &ZSTD_freeCCtx);
-  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_compressionLevel, kZstdLevel);
-  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_checksumFlag, 1);
-  const size_t n = ZSTD_compress2(cctx.get(), file.data() + at, file.size() - at, payload.data(),
-                                  payload.size());
-  if (ZSTD_isError(n)) throw Error(std::string("zstd compression failed: ") + ZSTD_getErrorName(n));
-  file.resize(at + n);
+  append_zstd_frame(payload, kZstdLevel, file);
   return file;
 }
 
-TransferExemplar decode_exemplar(std::span<const std::byte> file, std::string_view key) {
+TransferExemplar decode_exemplar(std::string_view file, std::string_view key) {
   Reader head{file};
   Header header;
   head(header);
@@ -168,19 +154,10 @@ TransferExemplar decode_exemplar(std::span<const std::byte> file, std::string_vi
   if (header.version != kExemplarCacheVersion)
     throw Error("format version " + std::to_string(header.version) + ", expected " +
                 std::to_string(kExemplarCacheVersion));
-  std::string stored(header.key_size, '\0');
-  head.bytes(stored.data(), stored.size());
-  if (stored != key) throw Error("stored under another key");
-  const auto frame = file.subspan(head.at);
-  const unsigned long long size = ZSTD_getFrameContentSize(frame.data(), frame.size());
-  if (size == ZSTD_CONTENTSIZE_ERROR || size == ZSTD_CONTENTSIZE_UNKNOWN)
-    throw Error("no zstd frame with its size");
-  if (ZSTD_findFrameCompressedSize(frame.data(), frame.size()) != frame.size())
-    throw Error("truncated or trailing bytes");
-  std::vector<std::byte> payload(size);
-  const size_t n = ZSTD_decompress(payload.data(), payload.size(), frame.data(), frame.size());
-  if (ZSTD_isError(n)) throw Error(std::string("zstd: ") + ZSTD_getErrorName(n));
-  if (n != size) throw Error("truncated");
+  std::string stored(key.size(), '\0');
+  if (header.key_size == key.size()) head.bytes(stored.data(), stored.size());
+  if (header.key_size != key.size() || stored != key) throw Error("stored under another key");
+  const std::string payload = zstd_frame_content(file.substr(head.at));
   TransferExemplar out;
   Reader fields{payload};
   exemplar_fields(fields, out);

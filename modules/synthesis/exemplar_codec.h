@@ -1,32 +1,30 @@
 // The analysed exemplar (transfer_exemplar.h) as the bytes of a cache file (exemplar_cache.h) and
-// back. A file is a header (magic, format version, the key it was stored under, the payload's
-// size) then the payload, every field of TransferExemplar in native byte order (the cache is a
-// machine's own), as one zstd frame with its content size and checksum (XXH64).
+// back. A file is a header (magic, format version, the key it was stored under) then the payload,
+// every field of TransferExemplar in native byte order (the cache is a machine's own), as one zstd
+// frame with its content size and checksum (core/zstd_frame.h: a header's size is never trusted
+// before the frame is read).
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
-#include <span>
+#include <string>
 #include <string_view>
-#include <vector>
 
 #include "transfer_exemplar.h"
 
 namespace maquette::synthesis {
 
-// The cache's format and analysis version: part of every key and checked in every file. Bump it
-// when the analysis gives other values for the same inputs (transfer_exemplar.cpp's build and
-// what it calls: the painting's reading and segmentation, harmonize, analyse_exemplar,
-// measure_usage) or when TransferExemplar's layout changes; older files then miss and are
-// recomputed.
+// The cache files' format number: part of every key and checked in every file. Bump it when the
+// file's layout or TransferExemplar's changes (a static_assert in exemplar_codec.cpp catches a
+// field added to ExemplarLevel); older files then miss and are recomputed. A change of the
+// analysis needs no bump: the build holding it is in the key (exemplar_cache.h).
 inline constexpr uint32_t kExemplarCacheVersion = 1;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
-std::vector<std::byte> encode_exemplar(const TransferExemplar& exemplar, std::string_view key);
+std::string encode_exemplar(const TransferExemplar& exemplar, std::string_view key);
 
 // The exemplar of a file written by encode_exemplar under `key`. Throws maquette::Error saying
 // what is wrong when the file is not one (magic), another version, stored under another key,
 // truncated, its checksum or sizes do not match, or its fields disagree with their levels' sizes.
-TransferExemplar decode_exemplar(std::span<const std::byte> file, std::string_view key);
+TransferExemplar decode_exemplar(std::string_view file, std::string_view key);
 
 }  // namespace maquette::synthesis

@@ -111,8 +111,8 @@ void add_input_files(const nlohmann::json& fields, std::vector<std::string>& fil
       files.push_back(fields.at(field).get<std::string>());
 }
 
-// The analysis (cached by exemplar_cache.h: bump kExemplarCacheVersion, exemplar_codec.h, when
-// it gives other values for the same params and files, here or in what it calls).
+// The analysis (cached by exemplar_cache.h under a key holding the build: a change here or in
+// what it calls misses the older files).
 std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   const int scale = params.at("exemplar_scale").get<int>();
   Exemplar e = read_exemplar(params, kOp, scale);

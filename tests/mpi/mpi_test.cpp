@@ -38,8 +38,10 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const std::string kMaquette = std::string(MAQUETTE_BIN_DIR) + "/maquette";
-const std::string kEnv =
-    std::string("MAQUETTE_MODULE_PATH=") + MAQUETTE_FIXTURE_MODULE_DIR + "/good";
+// No exemplar cache (synthesis.transfer): each run analyses its painting, on its ranks, and
+// nothing is written to the user's cache.
+const std::string kEnv = std::string("MAQUETTE_MODULE_PATH=") + MAQUETTE_FIXTURE_MODULE_DIR +
+                         "/good MAQUETTE_CACHE_DIR=off";
 
 // `maquette run` of DIR/pipeline.json, alone (ranks 0) or under mpirun, one thread per process.
 // `rank_env` (NAME=value) is set for `program` only, not for mpirun.
@@ -48,7 +50,7 @@ std::string run_command(const std::string& dir, int ranks, const std::string& ex
   const std::string run = program + " run --threads 1 " + extra + " " + dir + "/pipeline.json";
   if (ranks == 0) return "env " + kEnv + " " + rank_env + " " + run;
   return "env " + kEnv + " " + MAQUETTE_MPIEXEC +
-         " --oversubscribe --allow-run-as-root -x MAQUETTE_MODULE_PATH " +
+         " --oversubscribe --allow-run-as-root -x MAQUETTE_MODULE_PATH -x MAQUETTE_CACHE_DIR " +
          (rank_env.empty() ? "" : "-x " + rank_env) + " -np " + std::to_string(ranks) + " " + run;
 }
 

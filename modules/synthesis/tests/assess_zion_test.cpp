@@ -6,7 +6,6 @@
 // the transfer meets now (README: synthesis.assess, beside the goals). And with a second
 // painting, The Starry Night: the sources counted by painting, column and row.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -47,17 +46,6 @@ json transfer_params() {
           {"altitude_range", {1100, 2700}},
           {"exemplar_scale", 4}};
 }
-
-// A fresh folder under the temporary directory, removed when done.
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "-" + std::to_string(getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // Zion ingested, synthesis.transfer with `params` and synthesis.assess with them (coherence at
 // every 4th column and row) run by the real program into `store`; the report.
@@ -123,9 +111,9 @@ uint64_t expect_the_stored_sources(const json& report, const Uses& uses) {
 TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
     GTEST_SKIP() << "../shared/data is absent";
-  const TempDir dir("maquette-synthesis-assess");
-  const std::string store = (dir.path / "zion.mqt").string();
-  const json report = transfer_and_assess(transfer_params(), dir.path, store);
+  const fs::path dir = test::temp_dir();
+  const std::string store = (dir / "zion.mqt").string();
+  const json report = transfer_and_assess(transfer_params(), dir, store);
   ASSERT_FALSE(report.is_null());
   const uint64_t pixels = expect_the_stored_sources(report, stored_uses(store));
   EXPECT_GE(report.at("distinct_source_bound").get<double>(), 0.3);  // 0.3 is reachable
@@ -164,9 +152,9 @@ TEST(AssessZion, CountsTheSourcesOfBothPaintings) {
        {"exclude_classes", {0, 1}},
        {"landcover_classes", {{"1", 5}, {"2", 4}, {"3", 3}, {"4", 2}, {"5", 5}, {"8", 2}}},
        {"painting_altitude", "rows"}}};
-  const TempDir dir("maquette-synthesis-assess-two");
-  const std::string store = (dir.path / "zion.mqt").string();
-  const json report = transfer_and_assess(params, dir.path, store);
+  const fs::path dir = test::temp_dir();
+  const std::string store = (dir / "zion.mqt").string();
+  const json report = transfer_and_assess(params, dir, store);
   ASSERT_FALSE(report.is_null());
   const Uses uses = stored_uses(store);
   const uint64_t pixels = expect_the_stored_sources(report, uses);

@@ -14,13 +14,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <latch>
 #include <sstream>
 #include <thread>
 
 #include "../exemplar_codec.h"
 #include "../transfer_exemplar.h"
+#include "../transfer_params.h"
 #include "core/error.h"
 #include "run_cli.h"
+#include "runtime/params_schema.h"
 #include "store/store.h"
 #include "zion_ingest.h"
 
@@ -49,14 +52,15 @@ std::string painting_png(const std::string& path, int size, int changed = -1) {
   return path;
 }
 
-// Validated transfer params (defaults filled) of `painting` in 3 colour classes.
+// Validated transfer params (the schema's defaults filled) of `painting` in 3 colour classes.
 json params(const std::string& painting, int scale = 1) {
-  return {{"painting", painting},    {"classes", 3},    {"exclude_classes", json::array()},
-          {"exemplar_scale", scale}, {"k", 2},          {"landcover_classes", {{"1", 0}}},
-          {"harmonize", "reinhard"}, {"w_label", 2.0},  {"w_altitude", 1.0},
-          {"w_repetition", 0.3},     {"w_usage", 0.05}, {"w_spread", 0.15},
-          {"coherence", 0.5},        {"jitter", 1},     {"vote_radius", 1},
-          {"vote_balance", 0.0},     {"seed", 0}};
+  return validate_params(transfer_params_schema(),
+                         {{"painting", painting},
+                          {"classes", 3},
+                          {"exemplar_scale", scale},
+                          {"k", 2},
+                          {"landcover_classes", {{"1", 0}}}},
+                         "test");
 }
 
 std::string key_of(const json& p) {
@@ -246,22 +250,41 @@ TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {
     EXPECT_EQ(none.text.str(), "") << what;
   }
   // Stored under another key (a file renamed): refused.
-  EXPECT_THROW(decode_exemplar(std::as_bytes(std::span(good.data(), good.size())), "other"), Error);
+  EXPECT_THROW(decode_exemplar(good, "other"), Error);
 }
 
-// Writers of one key at once (as MPI ranks or processes are) each leave a whole file: every one
-// of them gets the exemplar, no temporary file is left, and the file reads back.
+// Writers of one key at once (as MPI ranks or processes are), started together, each leave a
+// whole file: each either analysed (and wrote) or read the file back, at least one analysed, no
+// temporary file is left, and the file reads back.
 TEST(ExemplarCache, WritersOfOneKeyAtOnceLeaveAWholeFile) {
   const std::string dir = test::temp_dir();
   const json p = params(painting_png(dir + "/painting.png", 96, 11));
   const auto analysed = transfer_exemplar(p);
   const std::string key = key_of(p);
-  std::vector<std::shared_ptr<const TransferExemplar>> got(4);
+  constexpr int kWriters = 4;
+  std::vector<std::shared_ptr<const TransferExemplar>> got(kWriters);
+  std::vector<char> wrote(kWriters, 0);
+  std::latch start(kWriters);
   std::vector<std::thread> writers;
-  for (auto& g : got)
-    writers.emplace_back([&] { g = cached_exemplar(dir, key, [&] { return analysed; }); });
+  for (int i = 0; i < kWriters; ++i)
+    writers.emplace_back([&, i] {
+      start.arrive_and_wait();
+      got[size_t(i)] = cached_exemplar(dir, key, [&] {
+        wrote[size_t(i)] = 1;
+        return analysed;
+      });
+    });
   for (auto& w : writers) w.join();
-  for (const auto& g : got) expect_same(*g, *analysed);
+  EXPECT_GE(std::count(wrote.begin(), wrote.end(), 1), 1);
+  for (int i = 0; i < kWriters; ++i) {
+    ASSERT_TRUE(got[size_t(i)]) << i;
+    if (wrote[size_t(i)]) {
+      EXPECT_EQ(got[size_t(i)], analysed) << i;
+    } else {  // read back from the file another wrote
+      EXPECT_NE(got[size_t(i)], analysed) << i;
+      expect_same(*got[size_t(i)], *analysed);
+    }
+  }
   EXPECT_EQ(cache_files(dir),
             (std::vector<fs::path>{exemplar_cache_file(dir, key), fs::path(dir) / "painting.png"}))
       << "a temporary file left";
