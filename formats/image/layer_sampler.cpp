@@ -147,6 +147,8 @@ LayerSampler::LayerSampler(const Store& store, const Grid& grid, const LayerInfo
 LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear)
     : tiles_(std::move(tiles)), layer_(tiles_->layer()), bilinear_(bilinear) {}
 
+int LayerSampler::level() const { return tiles_->level(); }
+
 bool LayerSampler::sample(LonLat p, CellId cell, float* out) {
   if (!last_cell_ || last_cell_->cell != cell) last_cell_ = &tiles_->halo(cell);
   if (!last_cell_->tile) return false;

@@ -46,6 +46,10 @@ class LayerSampler {
   // sampled before (the same bits for any thread count).
   void start_run() { last_ = last_cell_ = nullptr; }
 
+  // The layer and the level of the tiles it reads.
+  const LayerInfo& layer() const { return layer_; }
+  int level() const;
+
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
   // a large region. Not for a sampler of shared tiles (forget_unused(Tiles&)).
   void forget_unused();
