@@ -9,7 +9,9 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -74,6 +76,8 @@ Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
 // The DEM's tiles (full-resolution ones and overviews) decoded once for all the halos that read
 // them: a tile is read by its own halo and by up to eight neighbours' (each decoded up to nine
 // times before). Safe to share between threads: each tile is decoded by the first that asks.
+// LayerSampler::Tiles (image/layer_sampler.h) keeps such a cache too, but of one level and with
+// halos of one ring: the scene's tiles are of several levels with two rings.
 class DecodedTiles {
  public:
   DecodedTiles(const Store& store, const LayerInfo& dem) : store_(store), dem_(dem) {}
@@ -83,9 +87,7 @@ class DecodedTiles {
     Slot* slot = nullptr;
     {
       const std::lock_guard lock(mutex_);
-      auto& kept = slots_[cell];
-      if (!kept) kept = std::make_unique<Slot>();
-      slot = kept.get();
+      slot = &slots_.try_emplace(cell).first->second;  // a map's nodes stay put
     }
     std::call_once(slot->once, [&] {
       const auto raw = cell.level() < dem_.level ? store_.get_overview(dem_.name, cell)
@@ -103,8 +105,15 @@ class DecodedTiles {
   const Store& store_;
   const LayerInfo& dem_;
   std::mutex mutex_;
-  std::map<CellId, std::unique_ptr<Slot>> slots_;
+  std::map<CellId, Slot> slots_;
 };
+
+// `datum` when given, else `dem`'s conversion to the ellipsoid.
+std::shared_ptr<const EllipsoidalHeights> given_or_made(
+    std::shared_ptr<const EllipsoidalHeights> datum, const LayerInfo& dem) {
+  return datum ? std::move(datum)
+               : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+}
 
 // `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
 Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell, DecodedTiles& tiles) {
@@ -390,8 +399,7 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   TerrainScene scene;
-  scene.heights = datum ? std::move(datum)
-                        : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  scene.heights = given_or_made(std::move(datum), dem);
   const EllipsoidalHeights& heights = *scene.heights;
   const int n = dem.tile_size;
   scene.cells = cells;
@@ -460,11 +468,11 @@ void attribute_vertices(TerrainScene& scene, const Fragments* f) {
 }
 
 TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,
-                               double exaggeration)
+                               double exaggeration, std::shared_ptr<const EllipsoidalHeights> datum)
     : grid_(grid),
       dem_(dem),
       sampler_(store, grid, dem_, dem_.level, true),
-      heights_(std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem_))),
+      heights_(given_or_made(std::move(datum), dem_)),
       exaggeration_(exaggeration) {}
 
 std::optional<double> TerrainHeights::operator()(LonLat p) {
