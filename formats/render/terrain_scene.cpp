@@ -77,7 +77,9 @@ Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
 // them: a tile is read by its own halo and by up to eight neighbours' (each decoded up to nine
 // times before). Safe to share between threads: each tile is decoded by the first that asks.
 // LayerSampler::Tiles (image/layer_sampler.h) keeps such a cache too, but of one level and with
-// halos of one ring: the scene's tiles are of several levels with two rings.
+// halos of one ring: the scene's tiles are of several levels with two rings. With --shadows the
+// full-resolution tiles are decoded once more, by shadow_vertices' shared Tiles (render/
+// terrain_shadow.cpp), after these are freed.
 class DecodedTiles {
  public:
   DecodedTiles(const Store& store, const LayerInfo& dem) : store_(store), dem_(dem) {}
