@@ -22,6 +22,10 @@ class LayerSampler {
   // Drops the tiles and halos of `tiles` not used since the last call (by any of its samplers):
   // called while none of them samples. Each sampler of them starts a run after it (start_run).
   static void forget_unused(Tiles& tiles);
+  // `cell`'s tile in `tiles` (of the layer's level, or a coarser level's overview tile), read and
+  // decoded by the first that asks; null when the store has none. Valid until forget_unused(tiles)
+  // drops it: for callers assembling their own halos (render/terrain_scene.h's two rings).
+  static const Tile<float>* tile(Tiles& tiles, CellId cell);
 
   // Reads `layer`'s tiles at `level` (the layer's level, or a coarser one's overview tiles).
   LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
