@@ -52,12 +52,7 @@ struct LayerSampler::Halo {
 class LayerSampler::Tiles {
  public:
   Tiles(const Store& store, const Grid& grid, const LayerInfo& layer, int level, bool shared)
-      : store_(store),
-        grid_(grid),
-        layer_(layer),
-        level_(level),
-        base_(level == layer.level),
-        shared_(shared) {}
+      : store_(store), grid_(grid), layer_(layer), level_(level), shared_(shared) {}
 
   const Grid& grid() const { return grid_; }
   const LayerInfo& layer() const { return layer_; }
@@ -84,6 +79,17 @@ class LayerSampler::Tiles {
     erase_unused(raw_);
   }
 
+  // `cell`'s tile, read and decoded by the first that asks (an overview's below the layer's level).
+  const std::optional<Tile<float>>& raw(CellId cell) {
+    Raw& r = entry(raw_, cell);
+    std::call_once(r.read, [&] {
+      const auto bytes = cell.level() < layer_.level ? store_.get_overview(layer_.name, cell)
+                                                     : store_.get_tile(layer_.name, cell);
+      if (bytes) r.tile = to_tile<float>(*bytes, layer_.nodata ? &*layer_.nodata : nullptr);
+    });
+    return r.tile;
+  }
+
  private:
   struct Raw {
     std::once_flag read;
@@ -102,16 +108,6 @@ class LayerSampler::Tiles {
     return e;
   }
 
-  const std::optional<Tile<float>>& raw(CellId cell) {
-    Raw& r = entry(raw_, cell);
-    std::call_once(r.read, [&] {
-      const auto bytes =
-          base_ ? store_.get_tile(layer_.name, cell) : store_.get_overview(layer_.name, cell);
-      if (bytes) r.tile = to_tile<float>(*bytes, layer_.nodata ? &*layer_.nodata : nullptr);
-    });
-    return r.tile;
-  }
-
   // Erases the entries not used since the last call and marks the others unused.
   template <typename Map>
   static void erase_unused(Map& entries) {
@@ -126,7 +122,7 @@ class LayerSampler::Tiles {
   const Grid& grid_;
   const LayerInfo& layer_;
   int level_;
-  bool base_, shared_;
+  bool shared_;
   std::mutex mutex_;  // the maps' structure, when shared
   std::map<CellId, Raw> raw_;
   std::map<CellId, Halo> halo_;
@@ -140,12 +136,19 @@ std::shared_ptr<LayerSampler::Tiles> LayerSampler::shared_tiles(const Store& sto
 
 void LayerSampler::forget_unused(Tiles& tiles) { tiles.forget_unused(); }
 
+const Tile<float>* LayerSampler::tile(Tiles& tiles, CellId cell) {
+  const auto& t = tiles.raw(cell);
+  return t ? &*t : nullptr;
+}
+
 LayerSampler::LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
                            bool bilinear)
     : LayerSampler(std::make_shared<Tiles>(store, grid, layer, level, false), bilinear) {}
 
 LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear)
     : tiles_(std::move(tiles)), layer_(tiles_->layer()), bilinear_(bilinear) {}
+
+int LayerSampler::level() const { return tiles_->level(); }
 
 bool LayerSampler::sample(LonLat p, CellId cell, float* out) {
   if (!last_cell_ || last_cell_->cell != cell) last_cell_ = &tiles_->halo(cell);

@@ -22,6 +22,10 @@ class LayerSampler {
   // Drops the tiles and halos of `tiles` not used since the last call (by any of its samplers):
   // called while none of them samples. Each sampler of them starts a run after it (start_run).
   static void forget_unused(Tiles& tiles);
+  // `cell`'s tile in `tiles` (of the layer's level, or a coarser level's overview tile), read and
+  // decoded by the first that asks; null when the store has none. Valid until forget_unused(tiles)
+  // drops it: for callers assembling their own halos (render/terrain_scene.h's two rings).
+  static const Tile<float>* tile(Tiles& tiles, CellId cell);
 
   // Reads `layer`'s tiles at `level` (the layer's level, or a coarser one's overview tiles).
   LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
@@ -45,6 +49,10 @@ class LayerSampler {
   // start of each run, so that a value depends on its run alone, never on which runs a thread
   // sampled before (the same bits for any thread count).
   void start_run() { last_ = last_cell_ = nullptr; }
+
+  // The layer and the level of the tiles it reads.
+  const LayerInfo& layer() const { return layer_; }
+  int level() const;
 
   // Drops the tiles not used since the last call: keeps memory bounded when points sweep across
   // a large region. Not for a sampler of shared tiles (forget_unused(Tiles&)).

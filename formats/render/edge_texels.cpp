@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 #include <tuple>
 #include <utility>
+
+#include "core/error.h"
 
 namespace maquette {
 namespace {
@@ -28,6 +31,10 @@ EdgeTexels::EdgeTexels(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& g
       reach_(reach),
       tile_size_(texture.tile_size),
       block_(std::max(64, 2 * reach)) {
+  if (sampler_.layer().name != texture.name || sampler_.level() != texture.level)
+    throw Error("EdgeTexels: the tiles are layer '" + sampler_.layer().name + "' at level " +
+                std::to_string(sampler_.level()) + ", not the texture '" + texture.name +
+                "' at its level " + std::to_string(texture.level));
   faces_.reserve(size_t(grid.num_faces()));
   for (int face = 0; face < grid.num_faces(); ++face)
     faces_.push_back(grid.plane_square(CellId::FromFace(face)));

@@ -34,7 +34,8 @@ class EdgeTexels {
  public:
   // `texture`: uint8 imagery of 1, 3 or 4 channels, read at its own level from `tiles`
   // (LayerSampler::shared_tiles of it at that level, which may be shared with other samplers and
-  // other threads' EdgeTexels); reach >= 1 texels.
+  // other threads' EdgeTexels); reach >= 1 texels. Throws maquette::Error naming both layers and
+  // levels when the tiles are another layer's or level's.
   EdgeTexels(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid, const LayerInfo& texture,
              int reach);
 

@@ -7,6 +7,8 @@
 #include <memory>
 
 #include "core/error.h"
+#include "gdal/vertical_datum.h"
+#include "image/layer_sampler.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
 #include "render/terrain_shadow.h"
@@ -69,9 +71,11 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
                 " must be in (0, 90) degrees for --shadows");
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
-  // The ground as drawn (exaggerated): the eye's height above it, the check and the bend's base.
-  TerrainHeights terrain(store, grid, dem, job.exaggeration);
-  const auto ground = terrain(at);
+  // The DEM's conversion to the ellipsoid, set up once for the eye's ground and the mesh.
+  const auto datum = std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  // The ground as drawn (exaggerated): the eye's height above it, the check and the bend's base
+  // (the DEM's tiles read for it freed before the mesh is made).
+  const auto ground = TerrainHeights(store, grid, dem, job.exaggeration, datum)(at);
   if (job.above_ground) {
     if (!ground)
       throw Error("--above-ground: the --dem layer '" + dem.name +
@@ -91,11 +95,14 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   const PinholeCamera& camera = prepared->camera.emplace(job.camera);
   // Tiles out of view are left out unless the vertices move afterwards (a bend) or shadows are
   // cast: terrain beside or behind the picture throws shadows into it.
+  // The DEM's tiles decoded once for the mesh and the shadows (kept for those only when cast).
+  const auto dem_tiles =
+      job.shadows ? LayerSampler::shared_tiles(store, grid, dem, dem.level) : nullptr;
   TerrainScene& scene = prepared->scene =
       build_terrain_scene(store, grid, dem, camera, job.exaggeration, job.sample_pixels,
-                          !job.bend.bends() && !job.shadows, terrain.datum());
+                          !job.bend.bends() && !job.shadows, datum, dem_tiles);
   if (job.shadows)  // on the unbent terrain: the bend is a drawing device, not the sun's
-    prepared->shadow = shadow_vertices(store, grid, dem, scene, camera, job.exaggeration,
+    prepared->shadow = shadow_vertices(dem_tiles, grid, dem, scene, camera, job.exaggeration,
                                        job.sun_azimuth, job.sun_altitude);
   job.bend.base = ground.value_or(0) - eye.height;  // the ENU up of the ground under the eye
   bend_positions(scene.mesh.positions, job.bend);

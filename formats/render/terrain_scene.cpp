@@ -8,8 +8,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
-#include <mutex>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -71,45 +71,19 @@ Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
           place.base[2] + h * place.up[2]};
 }
 
-// The DEM's tiles (full-resolution ones and overviews) decoded once for all the halos that read
-// them: a tile is read by its own halo and by up to eight neighbours' (each decoded up to nine
-// times before). Safe to share between threads: each tile is decoded by the first that asks.
-class DecodedTiles {
- public:
-  DecodedTiles(const Store& store, const LayerInfo& dem) : store_(store), dem_(dem) {}
+// `datum` when given, else `dem`'s conversion to the ellipsoid.
+std::shared_ptr<const EllipsoidalHeights> given_or_made(
+    std::shared_ptr<const EllipsoidalHeights> datum, const LayerInfo& dem) {
+  return datum ? std::move(datum)
+               : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+}
 
-  // `cell`'s tile, null when the store has none; valid while this lives.
-  const Tile<float>* find(CellId cell) {
-    Slot* slot = nullptr;
-    {
-      const std::lock_guard lock(mutex_);
-      auto& kept = slots_[cell];
-      if (!kept) kept = std::make_unique<Slot>();
-      slot = kept.get();
-    }
-    std::call_once(slot->once, [&] {
-      const auto raw = cell.level() < dem_.level ? store_.get_overview(dem_.name, cell)
-                                                 : store_.get_tile(dem_.name, cell);
-      if (raw) slot->tile = to_tile<float>(*raw, dem_.nodata ? &*dem_.nodata : nullptr);
-    });
-    return slot->tile ? &*slot->tile : nullptr;
-  }
-
- private:
-  struct Slot {
-    std::once_flag once;
-    std::optional<Tile<float>> tile;
-  };
-  const Store& store_;
-  const LayerInfo& dem_;
-  std::mutex mutex_;
-  std::map<CellId, std::unique_ptr<Slot>> slots_;
-};
-
-// `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo.
-Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell, DecodedTiles& tiles) {
+// `cell`'s tile (a full-resolution tile or an overview) with its two rings of halo, from `tiles`:
+// each DEM tile decoded once for all the halos that read it (its own and up to eight neighbours').
+Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell,
+                         LayerSampler::Tiles& tiles) {
   return assemble_halo(grid, cell, dem.tile_size, kHalo,
-                       [&tiles](CellId c) { return tiles.find(c); });
+                       [&tiles](CellId c) { return LayerSampler::tile(tiles, c); });
 }
 
 // The vertex numbering write_tile writes, tile_share counts and attribute_tile reads: calls
@@ -381,7 +355,8 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
-                                 std::shared_ptr<const EllipsoidalHeights> datum) {
+                                 std::shared_ptr<const EllipsoidalHeights> datum,
+                                 std::shared_ptr<LayerSampler::Tiles> tiles) {
   if (!(exaggeration > 0))
     throw Error("vertical exaggeration " + std::to_string(exaggeration) + " must be positive");
   if (!(sample_pixels >= 0))
@@ -390,8 +365,7 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
   if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
   TerrainScene scene;
-  scene.heights = datum ? std::move(datum)
-                        : std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem));
+  scene.heights = given_or_made(std::move(datum), dem);
   const EllipsoidalHeights& heights = *scene.heights;
   const int n = dem.tile_size;
   scene.cells = cells;
@@ -400,9 +374,9 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
   {
-    DecodedTiles decoded(store, dem);  // freed once the halos are made
+    if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);  // freed after
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-      scene.tiles[i].heights = tile_heights(grid, dem, cells[i], decoded);
+      scene.tiles[i].heights = tile_heights(grid, dem, cells[i], *tiles);
       shares[i] = tile_share(scene.tiles[i].heights, n);
     });
   }
@@ -460,11 +434,11 @@ void attribute_vertices(TerrainScene& scene, const Fragments* f) {
 }
 
 TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,
-                               double exaggeration)
+                               double exaggeration, std::shared_ptr<const EllipsoidalHeights> datum)
     : grid_(grid),
       dem_(dem),
       sampler_(store, grid, dem_, dem_.level, true),
-      heights_(std::make_shared<const EllipsoidalHeights>(ellipsoidal_heights(dem_))),
+      heights_(given_or_made(std::move(datum), dem_)),
       exaggeration_(exaggeration) {}
 
 std::optional<double> TerrainHeights::operator()(LonLat p) {

@@ -84,13 +84,16 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
 // >= 0 and `cull` as scene_cells. The scene's places refer to `grid`: it must outlive the scene.
-// `datum`: the DEM's conversion to the ellipsoid when the caller has it (TerrainHeights::datum;
-// PROJ's operation is costly to set up), else made from `dem`. Throws maquette::Error naming the
-// value at fault.
+// `datum`: the DEM's conversion to the ellipsoid when the caller has it (shared with
+// TerrainHeights; PROJ's operation is costly to set up), else made from `dem`. `tiles`: the DEM's
+// LayerSampler::shared_tiles at its level when the caller reads them again afterwards (the cast
+// shadows), else made here and freed once the tiles' halos are made. Throws maquette::Error naming
+// the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
-                                 std::shared_ptr<const EllipsoidalHeights> datum = nullptr);
+                                 std::shared_ptr<const EllipsoidalHeights> datum = nullptr,
+                                 std::shared_ptr<LayerSampler::Tiles> tiles = nullptr);
 
 // Writes the attributes (lonlat, plane, altitude, normals) of the vertices of the triangles
 // `fragments` shows (nullptr: of every vertex) not written yet: a tile's vertices by one task, each
@@ -101,15 +104,15 @@ void attribute_vertices(TerrainScene& scene, const Fragments* fragments);
 // The drawn terrain's height above the ellipsoid at points: the DEM sampled bilinearly between
 // samples, converted to the ellipsoid and exaggerated as build_terrain_scene draws it (heights of
 // the datum times `exaggeration`), so an eye placed above it is above what is drawn. The tiles
-// are read and the datum's transformation set up once for all the points. Not thread-safe.
+// are read and the datum's transformation set up once for all the points (`datum`, the DEM's
+// conversion to the ellipsoid, when the caller has it, else made from `dem`). Not thread-safe.
 class TerrainHeights {
  public:
   TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,
-                 double exaggeration = 1);
+                 double exaggeration = 1,
+                 std::shared_ptr<const EllipsoidalHeights> datum = nullptr);
   // nullopt where the layer has no data.
   std::optional<double> operator()(LonLat p);
-  // The DEM's conversion to the ellipsoid, for build_terrain_scene.
-  const std::shared_ptr<const EllipsoidalHeights>& datum() const { return heights_; }
 
  private:
   const Grid& grid_;

@@ -35,9 +35,10 @@ std::optional<double> terrain_up(LayerSampler& sampler, const Grid& grid, const 
 
 }  // namespace
 
-std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const LayerInfo& dem,
-                                     const TerrainScene& scene, const PinholeCamera& camera,
-                                     double exaggeration, double sun_azimuth, double sun_altitude) {
+std::vector<uint8_t> shadow_vertices(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid,
+                                     const LayerInfo& dem, const TerrainScene& scene,
+                                     const PinholeCamera& camera, double exaggeration,
+                                     double sun_azimuth, double sun_altitude) {
   const auto& pos = scene.mesh.positions;
   const size_t vertices = pos.size() / 3;
   if (vertices == 0) return {};
@@ -60,8 +61,7 @@ std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const
   heights_grid.z.assign(size_t(heights_grid.width) * size_t(heights_grid.height), NAN);
 
   const EllipsoidalHeights& heights = *scene.heights;  // the scene's datum, read once
-  // The DEM's tiles read and their halos assembled once for all threads.
-  const auto tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
+  // The DEM's tiles (the scene's) and their halos assembled once for all threads.
   tbb::enumerable_thread_specific<std::optional<LayerSampler>> samplers;
   tbb::parallel_for(0, heights_grid.height, [&](int row) {
     auto& sampler = samplers.local();

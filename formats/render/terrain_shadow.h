@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/grid.h"
+#include "image/layer_sampler.h"
 #include "render/camera.h"
 #include "render/terrain_scene.h"
 #include "store/store.h"
@@ -20,9 +22,11 @@ constexpr size_t kMaxShadowNodes = size_t(1) << 24;
 // 1 for each vertex of `scene` (unbent: before render/progressive_bend.h) in the shadow of the
 // terrain, 0 elsewhere. `dem` and `exaggeration` are those `scene` was built from; the sun's
 // altitude in (0, 90) degrees. Nodes are sampled in parallel, each on its own, and the march
-// gives the same bits for any threads.
-std::vector<uint8_t> shadow_vertices(const Store& store, const Grid& grid, const LayerInfo& dem,
-                                     const TerrainScene& scene, const PinholeCamera& camera,
-                                     double exaggeration, double sun_azimuth, double sun_altitude);
+// gives the same bits for any threads. `tiles`: the DEM's LayerSampler::shared_tiles at its level
+// (those `scene` was built from).
+std::vector<uint8_t> shadow_vertices(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid,
+                                     const LayerInfo& dem, const TerrainScene& scene,
+                                     const PinholeCamera& camera, double exaggeration,
+                                     double sun_azimuth, double sun_altitude);
 
 }  // namespace maquette

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/grid.h"
 #include "store/store.h"
 #include "test_tiles.h"
@@ -155,6 +156,21 @@ TEST(EdgeTexels, EachTexelTakesItsNearestWithDataWithinTheReach) {
     EXPECT_GT(without, 1000) << reach;
     EXPECT_GT(with_value, 10000) << reach;
     EXPECT_GT(filled, 3000) << reach;
+  }
+}
+
+// Tiles of another level (or layer) than the texture's are refused, naming both.
+TEST(EdgeTexels, RefusesTilesOfAnotherLevelNamingBoth) {
+  const Imagery im;
+  const auto store = Store::open(im.path, Store::Mode::ReadOnly);
+  const auto coarser = LayerSampler::shared_tiles(*store, default_grid(), im.layer, kLevel - 1);
+  try {
+    EdgeTexels edge(coarser, default_grid(), im.layer, 5);
+    FAIL() << "accepted tiles of level " << kLevel - 1;
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "EdgeTexels: the tiles are layer 'rgb' at level 3, not the texture "
+                 "'rgb' at its level 4");
   }
 }
 
