@@ -374,11 +374,13 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
   {
-    if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);  // freed after
+    // The caller's tiles (kept for its cast shadows), else ours, dropped once the halos are made.
+    if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
       scene.tiles[i].heights = tile_heights(grid, dem, cells[i], *tiles);
       shares[i] = tile_share(scene.tiles[i].heights, n);
     });
+    tiles.reset();
   }
   std::vector<size_t> first_index(cells.size() + 1, 0);
   size_t vertices = 0;
