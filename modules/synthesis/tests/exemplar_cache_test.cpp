@@ -25,6 +25,7 @@
 #include "run_cli.h"
 #include "runtime/params_schema.h"
 #include "store/store.h"
+#include "test_png.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {
@@ -33,23 +34,13 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// A `size` x `size` RGB PNG of a colour ramp (pixel i's bands i * 7, i * 3, i * 11), with
-// `changed` pixel's red one higher, written by GDAL.
+// A `size` x `size` RGB PNG of a colour ramp (pixel i's bands i * 7, i * 3, i * 11, modulo 256),
+// with `changed` pixel's red one higher.
 std::string painting_png(const std::string& path, int size, int changed = -1) {
-  GDALAllRegister();
-  std::unique_ptr<GDALDataset> mem(
-      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", size, size, 3, GDT_Byte, nullptr));
-  for (int b = 1; b <= 3; ++b) {
-    std::vector<uint8_t> ramp(size_t(size) * size_t(size));
-    for (size_t i = 0; i < ramp.size(); ++i)
-      ramp[i] = uint8_t(i * size_t(b == 1 ? 7 : b == 2 ? 3 : 11) + (b == 1 && int(i) == changed));
-    EXPECT_EQ(mem->GetRasterBand(b)->RasterIO(GF_Write, 0, 0, size, size, ramp.data(), size, size,
-                                              GDT_Byte, 0, 0),
-              CE_None);
-  }
-  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
-      path.c_str(), mem.get(), false, nullptr, nullptr, nullptr));
-  return path;
+  return test::write_png(path, size, size, 3, [size, changed](int x, int y, int b) {
+    const int i = y * size + x;
+    return double(uint8_t(i * (b == 0 ? 7 : b == 1 ? 3 : 11) + (b == 0 && i == changed)));
+  });
 }
 
 // Validated transfer params (the schema's defaults filled) of `painting` in 3 colour classes.

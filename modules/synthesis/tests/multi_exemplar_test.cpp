@@ -26,6 +26,7 @@
 #include "core/error.h"
 #include "run_cli.h"
 #include "runtime/params_schema.h"
+#include "test_png.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -79,48 +80,28 @@ std::array<double, 3> colour_b(int x, int y) {
       x, y);
 }
 
-// An 8-bit PNG of `bands` bands written by GDAL, value(x, y, band).
-template <class Value>
-std::string write_png(const std::string& name, int width, int height, int bands, Value value) {
-  GDALAllRegister();
-  const std::string path = test::temp_dir() + "/" + name;
-  std::unique_ptr<GDALDataset> mem(GetGDALDriverManager()->GetDriverByName("MEM")->Create(
-      "", width, height, bands, GDT_Byte, nullptr));
-  std::vector<uint8_t> band(size_t(width) * size_t(height));
-  for (int b = 0; b < bands; ++b) {
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x)
-        band[size_t(y) * size_t(width) + size_t(x)] =
-            uint8_t(std::clamp(std::lround(value(x, y, b)), 0L, 255L));
-    EXPECT_EQ(mem->GetRasterBand(b + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width,
-                                                  height, GDT_Byte, 0, 0),
-              CE_None);
-  }
-  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
-      path.c_str(), mem.get(), false, nullptr, nullptr, nullptr));
-  return path;
-}
-
 // The two paintings' params through synthesis.transfer's schema (defaults filled).
 json two_paintings(const std::string& harmonize) {
-  const std::string a = write_png("a.png", kWa, kHa, 3,
-                                  [](int x, int y, int b) { return colour_a(x, y)[size_t(b)]; });
-  const std::string b = write_png("b.png", kWb, kHb, 3,
-                                  [](int x, int y, int c) { return colour_b(x, y)[size_t(c)]; });
+  const std::string a =
+      test::write_png(test::temp_dir() + "/a.png", kWa, kHa, 3,
+                      [](int x, int y, int b) { return colour_a(x, y)[size_t(b)]; });
+  const std::string b =
+      test::write_png(test::temp_dir() + "/b.png", kWb, kHb, 3,
+                      [](int x, int y, int c) { return colour_b(x, y)[size_t(c)]; });
   const json params = {
       {"painting", a},
-      {"labels",
-       write_png("a-classes.png", kWa, kHa, 1, [](int x, int y, int) { return class_a(x, y); })},
+      {"labels", test::write_png(test::temp_dir() + "/a-classes.png", kWa, kHa, 1,
+                                 [](int x, int y, int) { return class_a(x, y); })},
       {"exclude_classes", {2}},
       {"landcover_classes", {{"10", 0}, {"20", 1}}},
       {"exemplar_scale", 1},
       {"harmonize", harmonize},
       {"exemplars",
        {{{"painting", b},
-         {"labels",
-          write_png("b-classes.png", kWb, kHb, 1, [](int x, int y, int) { return class_b(x, y); })},
-         {"exclusion",
-          write_png("b-mask.png", kWb, kHb, 1, [](int, int y, int) { return y < 8 ? 255 : 0; })},
+         {"labels", test::write_png(test::temp_dir() + "/b-classes.png", kWb, kHb, 1,
+                                    [](int x, int y, int) { return class_b(x, y); })},
+         {"exclusion", test::write_png(test::temp_dir() + "/b-mask.png", kWb, kHb, 1,
+                                       [](int, int y, int) { return y < 8 ? 255 : 0; })},
          {"landcover_classes", {{"10", 5}, {"20", 7}}}}}}};
   return validate_params(transfer_params_schema(), params, "test");
 }
@@ -430,7 +411,7 @@ TEST(MultiExemplar, BadParamsNameTheExemplarTheFieldAndTheValue) {
   json small = good;
   small["exemplars"].push_back(good["exemplars"][0]);
   small["exemplars"][1]["painting"] =
-      write_png("tiny.png", 4, 4, 3, [](int, int, int) { return 100; });
+      test::write_png(test::temp_dir() + "/tiny.png", 4, 4, 3, [](int, int, int) { return 100; });
   const std::string tiny = refusal(small);
   EXPECT_NE(tiny.find("synthesis.transfer.exemplars[1].painting: "), std::string::npos) << tiny;
   EXPECT_NE(tiny.find("is 4 x 4 pixels"), std::string::npos) << tiny;
@@ -439,10 +420,10 @@ TEST(MultiExemplar, BadParamsNameTheExemplarTheFieldAndTheValue) {
   wide["exemplars"] = json::array();
   for (const char* name : {"wide1", "wide2"})
     wide["exemplars"].push_back(
-        {{"painting", write_png(std::string(name) + ".png", 33000, 16, 3,
-                                [](int x, int, int b) { return (x * 7 + b * 50) % 256; })},
-         {"labels", write_png(std::string(name) + "-classes.png", 33000, 16, 1,
-                              [](int, int, int) { return 5; })},
+        {{"painting", test::write_png(test::temp_dir() + "/" + name + ".png", 33000, 16, 3,
+                                      [](int x, int, int b) { return (x * 7 + b * 50) % 256; })},
+         {"labels", test::write_png(test::temp_dir() + "/" + name + "-classes.png", 33000, 16, 1,
+                                    [](int, int, int) { return 5; })},
          {"landcover_classes", {{"10", 5}}}});
   const std::string too_wide = refusal(wide);
   EXPECT_NE(too_wide.find("synthesis.transfer: the exemplar is 66"), std::string::npos) << too_wide;

@@ -14,25 +14,15 @@
 #include "../transfer_exemplar.h"
 #include "core/error.h"
 #include "run_cli.h"
+#include "test_png.h"
 
 namespace maquette::synthesis {
 namespace {
 
-// A `size` x `size` RGB PNG of a grey ramp, written by GDAL.
+// A `size` x `size` RGB PNG of a grey ramp (pixel i: i * 7 modulo 256).
 std::string painting_png(int size) {
-  GDALAllRegister();
-  const std::string path = test::temp_dir() + "/painting.png";
-  std::unique_ptr<GDALDataset> mem(
-      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", size, size, 3, GDT_Byte, nullptr));
-  std::vector<uint8_t> ramp(size_t(size) * size_t(size));
-  for (size_t i = 0; i < ramp.size(); ++i) ramp[i] = uint8_t(i * 7);
-  for (int b = 1; b <= 3; ++b)
-    EXPECT_EQ(mem->GetRasterBand(b)->RasterIO(GF_Write, 0, 0, size, size, ramp.data(), size, size,
-                                              GDT_Byte, 0, 0),
-              CE_None);
-  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
-      path.c_str(), mem.get(), false, nullptr, nullptr, nullptr));
-  return path;
+  return test::write_png(maquette::test::temp_dir() + "/painting.png", size, size, 3,
+                         [size](int x, int y, int) { return double(uint8_t((y * size + x) * 7)); });
 }
 
 nlohmann::json params(const std::string& painting, int scale) {
