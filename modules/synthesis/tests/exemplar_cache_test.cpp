@@ -119,10 +119,13 @@ struct SetEnv {
 };
 
 TEST(ExemplarCache, TheDirectoryFromTheEnvironment) {
-  const SetEnv home("HOME", "/home/someone");
+  const fs::path root = test::temp_dir();  // the variables' values: nothing is created
+  const std::string home_dir = (root / "home").string(), cache = (root / "cache").string(),
+                    xdg_dir = (root / "xdg").string();
+  const SetEnv home("HOME", home_dir.c_str());
   {
-    const SetEnv dir("MAQUETTE_CACHE_DIR", "/data/cache"), xdg("XDG_CACHE_HOME", "/xdg");
-    EXPECT_EQ(exemplar_cache_dir(), fs::path("/data/cache"));
+    const SetEnv dir("MAQUETTE_CACHE_DIR", cache.c_str()), xdg("XDG_CACHE_HOME", xdg_dir.c_str());
+    EXPECT_EQ(exemplar_cache_dir(), fs::path(cache));
   }
   {
     const SetEnv dir("MAQUETTE_CACHE_DIR", "off");
@@ -130,11 +133,11 @@ TEST(ExemplarCache, TheDirectoryFromTheEnvironment) {
   }
   const SetEnv dir("MAQUETTE_CACHE_DIR", nullptr);
   {
-    const SetEnv xdg("XDG_CACHE_HOME", "/xdg");
-    EXPECT_EQ(exemplar_cache_dir(), fs::path("/xdg/maquette"));
+    const SetEnv xdg("XDG_CACHE_HOME", xdg_dir.c_str());
+    EXPECT_EQ(exemplar_cache_dir(), root / "xdg" / "maquette");
   }
   const SetEnv xdg("XDG_CACHE_HOME", nullptr);
-  EXPECT_EQ(exemplar_cache_dir(), fs::path("/home/someone/.cache/maquette"));
+  EXPECT_EQ(exemplar_cache_dir(), root / "home" / ".cache" / "maquette");
 }
 
 TEST(ExemplarCache, TheKeyFollowsTheFilesAndTheExemplarsParamsNotTheWeights) {
