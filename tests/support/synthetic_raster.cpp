@@ -3,7 +3,9 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <stdexcept>
 
@@ -27,6 +29,28 @@ Projector::~Projector() = default;
 std::array<double, 2> Projector::operator()(double x, double y) const {
   if (!impl_->t->Transform(1, &x, &y)) return {NAN, NAN};
   return {x, y};
+}
+
+std::string write_png(const std::string& path, int width, int height, int bands,
+                      const std::function<double(int x, int y, int band)>& value) {
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> mem(GetGDALDriverManager()->GetDriverByName("MEM")->Create(
+      "", width, height, bands, GDT_Byte, nullptr));
+  std::vector<uint8_t> band(size_t(width) * size_t(height));
+  for (int b = 0; b < bands; ++b) {
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        band[size_t(y) * size_t(width) + size_t(x)] =
+            uint8_t(std::clamp(std::lround(value(x, y, b)), 0L, 255L));
+    if (mem->GetRasterBand(b + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width,
+                                            height, GDT_Byte, 0, 0) != CE_None)
+      throw std::runtime_error("write failed: " + path);
+  }
+  GDALDataset* png = GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
+      path.c_str(), mem.get(), false, nullptr, nullptr, nullptr);
+  if (!png) throw std::runtime_error("cannot create " + path);
+  GDALClose(png);
+  return path;
 }
 
 void write_raster(const std::string& path, const RasterSpec& spec, const PixelValue& value) {

@@ -32,6 +32,12 @@ using PixelValue = std::function<double(int band, double x, double y)>;
 
 void write_raster(const std::string& path, const RasterSpec& spec, const PixelValue& value);
 
+// An 8-bit PNG without georeferencing (a painting, a class image): `bands` bands of width x
+// height, band b's pixel (x, y) value(x, y, b) rounded and clamped to 0..255 (b from 0), written
+// through a MEM dataset copied by GDAL's PNG driver. Returns `path`.
+std::string write_png(const std::string& path, int width, int height, int bands,
+                      const std::function<double(int x, int y, int band)>& value);
+
 // Transforms between two CRSs (traditional x/y order, e.g. "EPSG:4326" is lon, lat) with PROJ.
 class Projector {
  public:

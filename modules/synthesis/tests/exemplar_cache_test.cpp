@@ -25,7 +25,7 @@
 #include "run_cli.h"
 #include "runtime/params_schema.h"
 #include "store/store.h"
-#include "test_png.h"
+#include "synthetic_raster.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {

@@ -26,7 +26,7 @@
 #include "core/error.h"
 #include "run_cli.h"
 #include "runtime/params_schema.h"
-#include "test_png.h"
+#include "synthetic_raster.h"
 
 namespace maquette::synthesis {
 namespace {

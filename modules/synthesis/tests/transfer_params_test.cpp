@@ -14,7 +14,7 @@
 #include "../transfer_exemplar.h"
 #include "core/error.h"
 #include "run_cli.h"
-#include "test_png.h"
+#include "synthetic_raster.h"
 
 namespace maquette::synthesis {
 namespace {
