@@ -9,7 +9,9 @@
 #include <spdlog/spdlog.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -143,6 +145,55 @@ std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
   return hex(digest.data(), size);
 }
 
+uintmax_t exemplar_cache_budget() {
+  const char* text = std::getenv("MAQUETTE_CACHE_MAX_MB");
+  uintmax_t mb = kExemplarCacheDefaultMB;
+  if (text && *text) {
+    const char* end = text + std::char_traits<char>::length(text);
+    const auto [stop, error] = std::from_chars(text, end, mb);
+    if (error != std::errc() || stop != end || mb > UINTMAX_MAX / 1000000) {
+      spdlog::warn("MAQUETTE_CACHE_MAX_MB={}: not a whole number of megabytes; keeping {} MB", text,
+                   kExemplarCacheDefaultMB);
+      mb = kExemplarCacheDefaultMB;
+    }
+  }
+  return mb * 1000000;
+}
+
+void prune_exemplar_cache(const std::filesystem::path& directory, uintmax_t budget,
+                          const std::filesystem::path& keep) {
+  namespace fs = std::filesystem;
+  struct Entry {
+    fs::file_time_type used;
+    fs::path path;
+    uintmax_t size;
+  };
+  std::vector<Entry> entries;
+  uintmax_t total = 0;
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (!name.starts_with("exemplar-") || !name.ends_with(".zst")) continue;
+    std::error_code gone;  // deleted by another process meanwhile: not counted
+    const uintmax_t size = it->file_size(gone);
+    const auto used = it->last_write_time(gone);
+    if (gone) continue;
+    total += size;
+    if (it->path() != keep) entries.push_back({used, it->path(), size});
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.used != b.used ? a.used < b.used : a.path < b.path;
+  });
+  for (const Entry& e : entries) {
+    if (total <= budget) break;
+    std::error_code kept;
+    if (fs::remove(e.path, kept)) {
+      total -= e.size;
+      spdlog::debug("synthesis.transfer: the exemplar cache dropped {}", e.path.string());
+    }
+  }
+}
+
 std::filesystem::path exemplar_cache_file(const std::filesystem::path& directory,
                                           const std::string& key) {
   return directory / ("exemplar-" + key + ".zst");
@@ -154,9 +205,14 @@ std::shared_ptr<const TransferExemplar> cached_exemplar(
   const std::filesystem::path file = exemplar_cache_file(directory, key);
   try {
     std::error_code missing;
-    if (std::filesystem::exists(file, missing))
-      return std::make_shared<const TransferExemplar>(
+    if (std::filesystem::exists(file, missing)) {
+      auto exemplar = std::make_shared<const TransferExemplar>(
           decode_exemplar(read_text_file(file.string()), key));
+      std::error_code ignored;  // used now: the last the budget drops
+      std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(),
+                                       ignored);
+      return exemplar;
+    }
   } catch (const std::exception& e) {
     spdlog::warn("synthesis.transfer: ignoring the cached exemplar {}: {}; analysing it again",
                  file.string(), e.what());
@@ -166,6 +222,7 @@ std::shared_ptr<const TransferExemplar> cached_exemplar(
   std::filesystem::create_directories(directory, ignored);
   try {
     write_file_whole(file.string(), encode_exemplar(*exemplar, key));
+    prune_exemplar_cache(directory, exemplar_cache_budget(), file);
   } catch (const Error& e) {
     spdlog::warn("synthesis.transfer: the exemplar's analysis is not cached: {}", e.what());
   }

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -304,6 +305,73 @@ TEST(ExemplarCache, OffWritesNothingAndAnUnwritableDirectoryIsAWarning) {
   EXPECT_EQ(transfer_exemplar(p)->pyramid.k, 3);
   EXPECT_NE(warnings.text.str().find("not cached: cannot write " + blocked), std::string::npos)
       << warnings.text.str();
+}
+
+// Five exemplar files of 100 bytes used one after the other, the oldest the one just stored, and
+// a file of another kind: pruned to 250 bytes, the three oldest others go (500 -> 200 bytes), the
+// one stored and the other file stay.
+TEST(ExemplarCache, PruningDropsTheLeastRecentlyUsedBeyondTheBudget) {
+  const fs::path dir = test::temp_dir();
+  const auto t0 = fs::file_time_type::clock::now() - std::chrono::hours(10);
+  std::vector<fs::path> files;
+  for (int i = 0; i < 5; ++i) {
+    files.push_back(exemplar_cache_file(dir, std::string(64, char('a' + i))));
+    std::ofstream(files.back(), std::ios::binary) << std::string(100, 'x');
+    fs::last_write_time(files.back(), t0 + std::chrono::hours(i));
+  }
+  std::ofstream(dir / "notes.txt") << std::string(1000, 'x');
+  fs::last_write_time(dir / "notes.txt", t0 - std::chrono::hours(1));
+
+  prune_exemplar_cache(dir, 1000, files[0]);  // within the budget: nothing goes
+  EXPECT_EQ(cache_files(dir).size(), 6u);
+  prune_exemplar_cache(dir, 250, files[0]);
+  EXPECT_EQ(cache_files(dir), (std::vector<fs::path>{files[0], files[4], dir / "notes.txt"}));
+  prune_exemplar_cache(dir, 0, files[4]);  // a budget of 0 keeps the file stored alone
+  EXPECT_EQ(cache_files(dir), (std::vector<fs::path>{files[4], dir / "notes.txt"}));
+}
+
+// A file read back is touched (the budget drops it last); storing a second key within a budget
+// that holds one file drops the first.
+TEST(ExemplarCache, AReadMarksItsFileUsedAndAStorePrunes) {
+  const std::string dir = test::temp_dir();
+  const json p = params(painting_png(dir + "/painting.png", 64, 21));
+  const auto analyse = [&] { return transfer_exemplar(p); };
+  const std::string key = key_of(p);
+  const fs::path file = exemplar_cache_file(dir, key);
+  cached_exemplar(dir, key, analyse);
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(5);
+  fs::last_write_time(file, old);
+  cached_exemplar(dir, key, [] {
+    ADD_FAILURE() << "analysed again";
+    return std::shared_ptr<const TransferExemplar>();
+  });
+  EXPECT_GT(fs::last_write_time(file), old + std::chrono::hours(4));
+
+  const SetEnv budget("MAQUETTE_CACHE_MAX_MB", "0");
+  json other = p;
+  other["k"] = 3;
+  cached_exemplar(dir, key_of(other), [&] { return transfer_exemplar(other); });
+  EXPECT_EQ(cache_files(dir), (std::vector<fs::path>{exemplar_cache_file(dir, key_of(other)),
+                                                     fs::path(dir) / "painting.png"}));
+}
+
+TEST(ExemplarCache, TheBudgetFromTheEnvironment) {
+  {
+    const SetEnv unset("MAQUETTE_CACHE_MAX_MB", nullptr);
+    EXPECT_EQ(exemplar_cache_budget(), kExemplarCacheDefaultMB * 1000000);
+  }
+  {
+    const SetEnv set("MAQUETTE_CACHE_MAX_MB", "20");
+    EXPECT_EQ(exemplar_cache_budget(), 20000000u);
+  }
+  for (const char* bad : {"20MB", "-1", "lots", "99999999999999999999999"}) {
+    const SetEnv set("MAQUETTE_CACHE_MAX_MB", bad);
+    const Warnings warnings;
+    EXPECT_EQ(exemplar_cache_budget(), kExemplarCacheDefaultMB * 1000000) << bad;
+    EXPECT_NE(warnings.text.str().find(std::string("MAQUETTE_CACHE_MAX_MB=") + bad),
+              std::string::npos)
+        << warnings.text.str();
+  }
 }
 
 // The real program twice on Zion with one cache: the second run reads the first's analysis (the
