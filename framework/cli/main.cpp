@@ -31,6 +31,16 @@ int main(int argc, char** argv) {
       "export what the store holds.",
       "maquette"};
   app.set_version_flag("--version", std::string(MAQUETTE_VERSION_STRING));
+  app.footer(
+      "Environment:\n"
+      "  MAQUETTE_MODULE_PATH   directories of modules, ':'-separated (then lib/maquette next to "
+      "the program)\n"
+      "  MAQUETTE_CACHE_DIR     where analysed paintings are cached (default "
+      "$XDG_CACHE_HOME/maquette or ~/.cache/maquette; 'off': no cache)\n"
+      "  MAQUETTE_CACHE_MAX_MB  the cache's budget in megabytes (default 500; the least recently "
+      "used files go)\n"
+      "  GDAL_CACHEMAX, PROJ_DATA and GDAL's other settings apply to the files GDAL reads\n"
+      "See README.md.");
   app.add_flag("-q,--quiet", g_options.quiet, "Only print errors");
   app.add_flag("-v,--verbose", g_options.verbose, "Print debug messages");
   app.require_subcommand(1);

@@ -149,5 +149,15 @@ TEST(CliBadInput, NotAStoreIsNamed) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/nothing.mqt"));
 }
 
+// `maquette --help` names the environment variables the program reads (module_loader.cpp,
+// the synthesis module's exemplar_cache.cpp) with their defaults.
+TEST(CliHelp, NamesTheEnvironmentVariablesItReads) {
+  const CliResult res = run_maquette("--help");
+  EXPECT_EQ(res.exit_code, 0) << res.err;
+  for (const char* name : {"MAQUETTE_MODULE_PATH", "MAQUETTE_CACHE_DIR", "MAQUETTE_CACHE_MAX_MB",
+                           "GDAL_CACHEMAX", "default 500", "'off'"})
+    EXPECT_NE(res.out.find(name), std::string::npos) << name << " in\n" << res.out;
+}
+
 }  // namespace
 }  // namespace maquette::test
