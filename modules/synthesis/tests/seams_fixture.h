@@ -93,13 +93,14 @@ class Seams : public ::testing::Test {
     delete params_;
   }
 
-  // The operator's `source` output on `cell` (tiles of `size`), its land cover sampled with the
-  // store's halo.
-  static Tile<float> transfer(CellId cell, int size) {
+  // The operator's `source` output on `cell` (tiles of `size`, output `refine` levels finer), its
+  // land cover sampled with the store's halo.
+  static Tile<float> transfer(CellId cell, int size, int refine = 0) {
     const Grid& grid = default_grid();
     CellContext ctx;
     ctx.cell = cell;
     ctx.tile_size = size;
+    ctx.refine = refine;
     ctx.grid = &grid;
     ctx.params = params_;
     CellData data;
@@ -123,18 +124,24 @@ class Seams : public ::testing::Test {
   }
   using Lay = std::function<FaceCoord(int64_t x, int64_t r)>;
 
-  // One synthesis of plane window `out` (pixels at kPixelLevel), its guides laid here by `lay`
-  // (x modulo the row's 4 faces): the exemplar's source of each pixel as (column, row).
-  static std::vector<std::array<int, 2>> whole(const PixelRect& out, const Lay& lay = plane_pixel) {
+  // One synthesis of plane window `out` (pixels at kPixelLevel + shift), its guides laid here by
+  // `lay` at kPixelLevel (x modulo the row's 4 faces): the exemplar's source of each pixel as
+  // (column, row).
+  static std::vector<std::array<int, 2>> whole(const PixelRect& out, const Lay& lay = plane_pixel,
+                                               int shift = 0) {
     const Grid& grid = default_grid();
     const auto table = class_table(params_->at("landcover_classes"), "seams");
     TargetGuides g;
     const int halo = synthesis_halo();
-    g.rect = {out.col0 - halo, out.row0 - halo, out.width + 2 * halo, out.height + 2 * halo};
-    g.col_period = 4 * kFace;
+    g.shift = shift;
+    g.rect.col0 = (out.col0 - halo) >> shift;
+    g.rect.row0 = (out.row0 - halo) >> shift;
+    g.rect.width = ((out.col0 + out.width + halo - 1) >> shift) - g.rect.col0 + 1;
+    g.rect.height = ((out.row0 + out.height + halo - 1) >> shift) - g.rect.row0 + 1;
+    g.col_period = (4 * kFace) << shift;
     for (int64_t r = g.rect.row0; r < g.rect.row0 + g.rect.height; ++r)
       for (int64_t c = g.rect.col0; c < g.rect.col0 + g.rect.width; ++c) {
-        const FaceCoord pixel = lay((c % g.col_period + g.col_period) % g.col_period, r);
+        const FaceCoord pixel = lay((c % (4 * kFace) + 4 * kFace) % (4 * kFace), r);
         g.labels.push_back(
             painting_class(table, float(land_cover(pixel_centre(grid, pixel, kPixelLevel)))));
       }

@@ -4,8 +4,9 @@
 // the band of an N cell along that edge takes, between the edge and a cut, one synthesis of a
 // window across the edge in P's chart computed here (and P's cell that same synthesis on its
 // side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it): a cut
-// per row of the edge. A cell of another tiling gives the same bits. Across each of the six
-// turned edges (N and S with P, Q, R) the sources continue as coherently as within a face.
+// per row of the edge, and so at an output finer than the land cover (refine 1). A cell of
+// another tiling gives the same bits. Across each of the six turned edges (N and S with P, Q, R)
+// the sources continue as coherently as within a face.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -117,25 +118,26 @@ TEST_F(TurnedEdges, ACellOfAnotherTilingGivesTheSameBits) {
 // the coherent source (its own shifted by the step across), and the same fraction one row inside.
 std::array<double, 2> coherence(CellId cell, bool top) {
   const Grid& grid = default_grid();
-  const int edge = top ? 0 : kSize - 1, step = top ? -1 : 1;
-  const FaceCoord first = *pixel_source(grid, cell, kSize, 0, edge + step);
-  const CellId polar = CellId::FromFaceColRow(first.face, kLevel, uint32_t(first.col / kSize),
-                                              uint32_t(first.row / kSize));
+  const int n = kSize, edge = top ? 0 : n - 1, step = top ? -1 : 1;
+  const auto across_edge = [&](int c) { return *pixel_source(grid, cell, n, c, edge + step); };
+  const FaceCoord first = across_edge(0);
+  const CellId polar = CellId::FromFaceColRow(first.face, cell.level(), uint32_t(first.col / n),
+                                              uint32_t(first.row / n));
   const Tile<float> here = TurnedEdges::transfer(cell, kSize);
   const Tile<float> there = TurnedEdges::transfer(polar, kSize);
   size_t across = 0, inside = 0;
-  for (int c = 0; c < kSize; ++c) {
-    const FaceCoord q = *pixel_source(grid, cell, kSize, c, edge + step);
+  for (int c = 0; c < n; ++c) {
+    const FaceCoord q = across_edge(c);
     EXPECT_EQ(
-        CellId::FromFaceColRow(q.face, kLevel, uint32_t(q.col / kSize), uint32_t(q.row / kSize)),
+        CellId::FromFaceColRow(q.face, cell.level(), uint32_t(q.col / n), uint32_t(q.row / n)),
         polar);
-    const int qc = int(q.col % kSize), qr = int(q.row % kSize);
+    const int qc = int(q.col % n), qr = int(q.row % n);
     across += there.at(qc, qr, 0) == here.at(c, edge, 0) &&
               there.at(qc, qr, 1) == here.at(c, edge, 1) + float(step);
     inside += here.at(c, edge - step, 0) == here.at(c, edge, 0) &&
               here.at(c, edge - step, 1) == here.at(c, edge, 1) - float(step);
   }
-  return {double(across) / kSize, double(inside) / kSize};
+  return {double(across) / n, double(inside) / n};
 }
 
 TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
@@ -146,6 +148,35 @@ TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
       EXPECT_GT(inside, 0.2) << cell.ToText();
       EXPECT_GT(across, 0.7 * inside) << cell.ToText() << (top ? " N" : " S");
     }
+}
+
+TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand) {
+  // Output one level finer than the guides (refine 1, tiles of 512 from 256): P's chart over
+  // N's 64 rows above P and P's first 64, at level 14, its guides laid by hand at level 13.
+  const int n = 2 * kSize;
+  const PixelRect across{2 * (kFace + kEdgeCol), -64, n, 128};
+  const auto b = whole(across, p_chart, 1);
+  const auto differs = [&](const Tile<float>& out, int c, int r, int bc, int br) {
+    const auto& e = b[size_t(br * n + bc)];
+    return out.at(c, r, 0) != float(e[0]) || out.at(c, r, 1) != float(e[1]);
+  };
+  const Tile<float> p =
+      transfer(CellId::FromFaceColRow(kFaceP, kLevel, kEdgeCol / kSize, 0), kSize, 1);
+  size_t in_p = 0;
+  for (int r = 0; r < 64; ++r)
+    for (int c = 0; c < n; ++c) in_p += differs(p, c, r, c, r + 64);
+  EXPECT_EQ(in_p, 0u);
+  // N's pixel at depth t from the edge, row r of its cell: P's chart row -1 - t, column n - 1 - r.
+  const Tile<float> north = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize, 1);
+  size_t beside = 0, in_band = 0;
+  for (int t = 0; t < 2 * kBand; ++t)
+    for (int r = 0; r < n; ++r) {
+      const bool d = differs(north, n - 1 - t, r, n - 1 - r, 63 - t);
+      beside += t == 0 && d;
+      in_band += t < kBand && !d;
+    }
+  EXPECT_EQ(beside, 0u);
+  EXPECT_GT(in_band, size_t(n * kBand / 5));
 }
 
 }  // namespace
