@@ -14,6 +14,9 @@
 //    s per output megapixel = 1e6 / items_per_second.
 //  - WholeImage: the same 512 x 512 output synthesized as one window: the tiling overhead is
 //    Transfer's time over this one.
+//  - TurnedEdgeBand/band: one polar cell of 256 beside a turned edge (N's cell at level 2 next
+//    to P, turned_edges.h) on the fixture's labels, on one thread: its own synthesis alone
+//    (band:0, what any cell costs) and with the band synthesized in P's chart and cut in (band:1).
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 #include <unistd.h>
@@ -21,8 +24,11 @@
 #include <filesystem>
 #include <string>
 
+#include "core/face_plane.h"
+#include "core/grid.h"
 #include "exemplar_cache.h"
 #include "exemplar_usage.h"
+#include "turned_edges.h"
 #include "zion_fixture.h"
 
 namespace maquette::synthesis::bench {
@@ -111,6 +117,35 @@ void BM_WholeImage(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
 }
 BENCHMARK(BM_WholeImage)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_TurnedEdgeBand(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  const Grid& grid = default_grid();
+  const FacePlane plane(grid);
+  const CellId cell = CellId::FromFaceColRow(0, 2, 3, 1);  // N's right column, off the corners
+  const int halo = synthesis_halo();
+  TargetGuides g;
+  const auto corner = plane.tile_pixel(cell, kTile, -halo, -halo);
+  g.rect = {corner[0], corner[1], kTile + 2 * halo, kTile + 2 * halo};
+  g.labels = zion_labels({0, 0, g.rect.width, g.rect.height});
+  g.col_period = plane.wrap_columns(cell, kTile);
+  const auto first = plane.tile_pixel(cell, kTile, 0, 0);
+  const auto edges =
+      state.range(0) ? turned_edges(grid, plane, cell, kTile, 0) : std::vector<TurnedEdge>{};
+  if (state.range(0) && edges.size() != 1) state.SkipWithError("no turned edge beside the cell");
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        join_turned_edges(t->pyramid, {}, g, halo, edges,
+                          synthesize(t->pyramid, g, {}, {first[0], first[1], kTile, kTile})));
+  state.SetItemsProcessed(state.iterations() * kTile * kTile);
+}
+BENCHMARK(BM_TurnedEdgeBand)
+    ->ArgName("band")
+    ->Arg(0)
+    ->Arg(1)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace maquette::synthesis::bench

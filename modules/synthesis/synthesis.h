@@ -69,9 +69,9 @@
 // (core/halo.h) lays a neighbour face as it meets the cell's face, so across the edges between
 // equatorial faces, the antimeridian, and each polar face's edge with the equatorial face it is
 // laid against. Across a polar face's other three edges the neighbour is turned in the cell's
-// halo: the two sides are synthesized at different plane coordinates, each consistent for any
-// tiling of its own face, but a seam runs along the edge (as it does within synthesis_halo() of
-// a cube corner, where the halo's corner quadrant is folded from two faces).
+// halo: synthesized in this plane the two sides would meet in a straight seam; synthesis.transfer
+// joins there the neighbour's chart to the plane's synthesis by a minimum-error cut
+// (turned_edges.h), still a function of global pixel coordinates and guides.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,7 @@
 // synthesis.transfer: paper 000's transfer of a painting onto the store's land cover (and
 // altitude), cell by cell, seamless: synthesis.h over each output tile's pixels in the plane of
-// the grid's faces (core/face_plane.h).
+// the grid's faces (core/face_plane.h), and along a polar face's turned edges the equatorial
+// face's chart joined by a minimum-error cut (turned_edges.h).
 #include <cmath>
 #include <map>
 
@@ -11,6 +12,7 @@
 #include "synthesis.h"
 #include "transfer_exemplar.h"
 #include "transfer_params.h"
+#include "turned_edges.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -77,7 +79,11 @@ class Transfer : public CellOperator {
     guides.col_period = plane.wrap_columns(ctx.cell, n);
     const auto first = plane.tile_pixel(ctx.cell, n, 0, 0);
     const PixelRect out{first[0], first[1], n, n};
-    const std::vector<int32_t> src = synthesize(exemplar->pyramid, guides, sp, out);
+    // Along a polar face's turned edges, the band continued from the equatorial face's chart.
+    const std::vector<int32_t> src =
+        join_turned_edges(exemplar->pyramid, sp, guides, halo,
+                          turned_edges(*ctx.grid, plane, ctx.cell, ctx.tile_size, ctx.refine),
+                          synthesize(exemplar->pyramid, guides, sp, out));
 
     const ExemplarLevel& e = exemplar->pyramid.levels[0];
     const auto target = [&](const char* port, int channels) -> Tile<float>* {

@@ -6,15 +6,9 @@
 // Q R left to right, the row's columns modulo its width, N above O): the same sources, pixel for
 // pixel. A small synthetic painting and a land cover that is a function of longitude and
 // latitude. A column period that would break each level's parity is refused.
-#include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cmath>
-#include <filesystem>
-#include <memory>
-#include <string>
-#include <vector>
+#include <array>
 
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
@@ -22,163 +16,12 @@
 #include "core/error.h"
 #include "core/face_plane.h"
 #include "core/halo.h"
-#include "core/splitmix64.h"
-#include "runtime/operator_registry.h"
-#include "runtime/params_schema.h"
+#include "seams_fixture.h"
 
 namespace maquette::synthesis {
 namespace {
 
-namespace fs = std::filesystem;
-using nlohmann::json;
-
-constexpr int kFaceN = 0, kFaceO = 1, kFaceP = 2, kFaceQ = 3, kFaceR = 4, kFaceS = 5;  // cell_id.h
-constexpr int kLevel = 5, kSize = 256;               // tiles of 256 pixels: the halo's 189 fit
-constexpr int64_t kFace = int64_t(kSize) << kLevel;  // pixels a face
-constexpr int kPixelLevel = kLevel + 8;
-constexpr uint32_t kRow = 1u << (kLevel - 1);  // cells on the equator, far from the cube corners
-
-// Land cover 1 and 2 in blobs a few kilometres across, a function of the point alone.
-double land_cover(LonLat p) {
-  const double x = p.lon * 40, y = p.lat * 40;
-  return std::sin(x) + std::sin(0.7 * y + 0.3 * x) > 0.2 ? 2 : 1;
-}
-
-// A 128 x 96 painting: warm stripes on the left, green blobs on the right.
-std::string write_painting(const fs::path& dir) {
-  GDALAllRegister();
-  const int w = 128, h = 96;
-  std::unique_ptr<GDALDataset> ds(
-      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", w, h, 3, GDT_Byte, nullptr));
-  std::vector<uint8_t> rgb(size_t(w) * size_t(h) * 3);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      const double noise = double(splitmix64_mix(i) % 41) - 20;
-      const bool right = x >= w / 2;
-      rgb[3 * i] =
-          uint8_t(std::clamp(right ? 40 + 30 * std::sin(x * 0.7) * std::sin(y * 0.6) + noise
-                                   : 200 + 40 * std::sin(x / 3.0) + noise,
-                             0.0, 255.0));
-      rgb[3 * i + 1] = uint8_t(std::clamp((right ? 110 : 170) + noise, 0.0, 255.0));
-      rgb[3 * i + 2] = uint8_t(right ? 50 : 60 + noise / 2);
-    }
-  int bands[3] = {1, 2, 3};
-  EXPECT_EQ(ds->RasterIO(GF_Write, 0, 0, w, h, rgb.data(), w, h, GDT_Byte, 3, bands, 3, long(w) * 3,
-                         1, nullptr),
-            CE_None);
-  const std::string path = (dir / "painting.png").string();
-  GDALClose(GetGDALDriverManager()->GetDriverByName("PNG")->CreateCopy(
-      path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
-  return path;
-}
-
-class Seams : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new fs::path(fs::temp_directory_path() / ("maquette-seams-" + std::to_string(getpid())));
-    fs::create_directories(*dir_);
-    registry_ = new OperatorRegistry;
-    registry_->add(load_module(MAQUETTE_MODULE_DIR "/libmaquette_synthesis.so"));
-    operator_ = registry_->find("synthesis.transfer");
-    params_ = new json(validate_params(operator_->spec().params_schema,
-                                       {{"painting", write_painting(*dir_)},
-                                        {"classes", 2},
-                                        {"landcover_classes", {{"1", 0}, {"2", 1}}},
-                                        {"exemplar_scale", 1}},
-                                       "seams"));
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*dir_);
-    delete dir_;
-    delete registry_;
-    delete params_;
-  }
-
-  // The operator's `source` output on `cell` (tiles of `size`), its land cover sampled with the
-  // store's halo.
-  static Tile<float> transfer(CellId cell, int size) {
-    const Grid& grid = default_grid();
-    CellContext ctx;
-    ctx.cell = cell;
-    ctx.tile_size = size;
-    ctx.grid = &grid;
-    ctx.params = params_;
-    CellData data;
-    data.inputs.emplace("landcover",
-                        assemble_halo(grid, cell, size, operator_->spec().halo, [&](CellId c) {
-                          return std::optional(sample_field(grid, c, size, land_cover));
-                        }));
-    data.outputs.emplace("source", Tile<float>::uninitialized(size, 2));
-    static_cast<const CellOperator*>(operator_)->run(ctx, data);
-    return data.outputs.at("source");
-  }
-
-  // One synthesis of plane window `out` (pixels at kPixelLevel: the equatorial row's columns
-  // modulo 4 faces, face O P Q R by column; N above O and S below it), its guides laid here: the
-  // exemplar's source of each pixel as (column, row).
-  static std::vector<std::array<int, 2>> whole(const PixelRect& out) {
-    const Grid& grid = default_grid();
-    const auto table = class_table(params_->at("landcover_classes"), "seams");
-    TargetGuides g;
-    const int halo = synthesis_halo();
-    g.rect = {out.col0 - halo, out.row0 - halo, out.width + 2 * halo, out.height + 2 * halo};
-    g.col_period = 4 * kFace;
-    for (int64_t r = g.rect.row0; r < g.rect.row0 + g.rect.height; ++r)
-      for (int64_t c = g.rect.col0; c < g.rect.col0 + g.rect.width; ++c) {
-        const int64_t x = (c % g.col_period + g.col_period) % g.col_period;
-        const bool row = r >= 0 && r < kFace;
-        EXPECT_TRUE(row || (x < kFace && r >= -kFace && r < 2 * kFace));
-        const FaceCoord pixel = row     ? FaceCoord{kFaceO + int(x / kFace), x % kFace, r}
-                                : r < 0 ? FaceCoord{kFaceN, x, r + kFace}
-                                        : FaceCoord{kFaceS, x, r - kFace};
-        g.labels.push_back(
-            painting_class(table, float(land_cover(pixel_centre(grid, pixel, kPixelLevel)))));
-      }
-    const auto exemplar = transfer_exemplar(*params_);
-    const auto src = synthesize(exemplar->pyramid, g, synthesis_params(*params_), out);
-    const int width = exemplar->pyramid.levels[0].width;
-    std::vector<std::array<int, 2>> out_src;
-    for (const int32_t s : src) out_src.push_back({s % width, s / width});
-    return out_src;
-  }
-
-  // Pixels of `window` (plane, columns modulo 4 faces) lying in `cell` (tiles of `size`) whose
-  // source differs between the cell's transfer and the window's synthesis; `compared` counts
-  // those in both.
-  static size_t differing(const PixelRect& window, const std::vector<std::array<int, 2>>& expected,
-                          CellId cell, size_t& compared, int size = kSize) {
-    const Tile<float> source = transfer(cell, size);
-    const auto first = FacePlane(default_grid()).tile_pixel(cell, size, 0, 0);
-    size_t n = 0;
-    for (int64_t r = 0; r < window.height; ++r)
-      for (int64_t c = 0; c < window.width; ++c) {
-        const int64_t col = ((window.col0 + c) % (4 * kFace) + 4 * kFace) % (4 * kFace) - first[0];
-        const int64_t row = window.row0 + r - first[1];
-        if (col < 0 || col >= size || row < 0 || row >= size) continue;
-        ++compared;
-        const auto& e = expected[size_t(r * window.width + c)];
-        n += source.at(int(col), int(row), 0) != float(e[0]) ||
-             source.at(int(col), int(row), 1) != float(e[1]);
-      }
-    return n;
-  }
-
-  // Every pixel of `window` equals one synthesis of it across the edge, read from the cells on
-  // both sides (tiles of kSize), which together cover the window.
-  static void expect_one_synthesis(const PixelRect& window, std::initializer_list<CellId> cells) {
-    const auto expected = whole(window);
-    size_t compared = 0;
-    for (const CellId cell : cells)
-      EXPECT_EQ(differing(window, expected, cell, compared), 0u) << cell.ToText();
-    EXPECT_EQ(compared, size_t(window.width * window.height));
-  }
-
-  static inline fs::path* dir_ = nullptr;
-  static inline OperatorRegistry* registry_ = nullptr;
-  static inline const Operator* operator_ = nullptr;
-  static inline json* params_ = nullptr;
-};
+using namespace seams;
 
 TEST(FacePlaneSeams, LaysTheRowAndThePolarFacesAsTheGridsTableSays) {
   const FacePlane plane(default_grid());

@@ -1,0 +1,183 @@
+// synthesis.transfer across the polar faces' turned edges (issue 18, turned_edges.h). N's right
+// edge meets P's top turned by 90 degrees: N's pixel (X, Y) is P's (kFace - 1 - Y, X - kFace) in
+// P's frame continued above it, laid here by hand (and checked against the store's halo). Then:
+// the band of an N cell along that edge takes, between the edge and a cut, one synthesis of a
+// window across the edge in P's chart computed here (and P's cell that same synthesis on its
+// side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it): a cut
+// per row of the edge, and so at an output finer than the land cover (refine 1). A cell of
+// another tiling gives the same bits. Across each of the six turned edges (N and S with P, Q, R)
+// the sources continue as coherently as within a face.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "core/halo.h"
+#include "seams_fixture.h"
+
+namespace maquette::synthesis {
+namespace {
+
+using namespace seams;
+
+class TurnedEdges : public Seams {
+ public:
+  using Seams::plane_pixel;
+  using Seams::transfer;
+};
+
+constexpr int kBand = 32;                                 // turned_edges.h's kTurnedEdgeBand
+constexpr uint32_t kLast = (1u << kLevel) - 1;            // N's right column of cells
+constexpr int64_t kEdgeCol = kFace - (kRow + 1) * kSize;  // P's first column beside that cell
+
+// P's chart at kPixelLevel (plane pixels): N laid turned above P, as P's cells see it.
+FaceCoord p_chart(int64_t x, int64_t r) {
+  if (r < 0 && x >= kFace && x < 2 * kFace) return {kFaceN, kFace + r, kFace - 1 - (x - kFace)};
+  return TurnedEdges::plane_pixel(x, r);
+}
+// N's chart: the plane, with P laid turned to the right of N, as N's cells see it.
+FaceCoord n_chart(int64_t x, int64_t r) {
+  if (r < 0 && x >= kFace && x < 2 * kFace) return {kFaceP, -1 - r, x - kFace};
+  return TurnedEdges::plane_pixel(x, r);
+}
+
+TEST(TurnedEdgeCharts, TheChartsLaidByHandAreTheStoresHalo) {
+  const Grid& grid = default_grid();
+  const CellId n = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow);
+  const CellId p = CellId::FromFaceColRow(kFaceP, kLevel, uint32_t(kEdgeCol / kSize), 0);
+  for (const auto& [col, row] : {std::array{kSize + 5, 100}, std::array{kSize + 150, 3}}) {
+    const auto src = *pixel_source(grid, n, kSize, col, row);
+    const auto laid = n_chart(kFace + col - kSize, -kFace + int64_t(kRow) * kSize + row);
+    EXPECT_EQ((std::array<int64_t, 3>{src.face, src.col, src.row}),
+              (std::array<int64_t, 3>{laid.face, laid.col, laid.row}));
+  }
+  for (const auto& [col, row] : {std::array{30, -20}, std::array{255, -1}}) {
+    const auto src = *pixel_source(grid, p, kSize, col, row);
+    const auto laid = p_chart(kFace + kEdgeCol + col, row);
+    EXPECT_EQ((std::array<int64_t, 3>{src.face, src.col, src.row}),
+              (std::array<int64_t, 3>{laid.face, laid.col, laid.row}));
+  }
+}
+
+TEST_F(TurnedEdges, NsBandContinuesPsChartToACutThenItsOwn) {
+  // B: P's chart over the 32 rows above P (N's band) and P's first 32; A: the plane's N.
+  const PixelRect across{kFace + kEdgeCol, -kBand, kSize, 2 * kBand};
+  const auto b = whole(across, p_chart);
+  const PixelRect own{kFace - 48, -kFace + int64_t(kRow) * kSize, 48, kSize};
+  const auto a = whole(own, n_chart);
+  size_t compared = 0;
+  EXPECT_EQ(
+      differing(across, b, CellId::FromFaceColRow(kFaceP, kLevel, kEdgeCol / kSize, 0), compared),
+      0u);
+  EXPECT_EQ(compared, size_t(kSize * kBand));
+
+  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize);
+  const auto is = [&](int c, int r, const std::array<int, 2>& s) {
+    return out.at(c, r, 0) == float(s[0]) && out.at(c, r, 1) == float(s[1]);
+  };
+  size_t rows_cut = 0, took_b = 0, took_a = 0;
+  for (int r = 0; r < kSize; ++r) {  // N's row r: P's column kEdgeCol + kSize - 1 - r
+    const auto b_at = [&](int t) { return b[size_t((kBand - 1 - t) * kSize + (kSize - 1 - r))]; };
+    const auto a_at = [&](int t) { return a[size_t(r * 48 + 47 - t)]; };
+    bool cut_found = false;
+    for (int cut = 1; cut < kBand && !cut_found; ++cut) {
+      bool ok = true;
+      for (int t = 0; t < 48 && ok; ++t) ok = is(kSize - 1 - t, r, t < cut ? b_at(t) : a_at(t));
+      cut_found = ok;
+    }
+    rows_cut += cut_found;
+    for (int t = 0; t < kBand; ++t) {
+      took_b += b_at(t) != a_at(t) && is(kSize - 1 - t, r, b_at(t));
+      took_a += b_at(t) != a_at(t) && is(kSize - 1 - t, r, a_at(t));
+    }
+  }
+  EXPECT_EQ(rows_cut, size_t(kSize));
+  // Both sides of the cut hold a good share of the band.
+  EXPECT_GT(took_b, size_t(kSize * kBand / 5));
+  EXPECT_GT(took_a, size_t(kSize * kBand / 5));
+}
+
+TEST_F(TurnedEdges, ACellOfAnotherTilingGivesTheSameBits) {
+  // N's cell one level coarser (tiles of 512) holds the level-5 cell as a quarter: beside P's
+  // edge, and at the corner where N meets P and Q (two bands, a folded halo quadrant).
+  for (const uint32_t row : {kRow, 0u}) {
+    const Tile<float> fine = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, row), kSize);
+    const Tile<float> coarse =
+        transfer(CellId::FromFaceColRow(kFaceN, kLevel - 1, kLast / 2, row / 2), 2 * kSize);
+    const int dr = int(row % 2) * kSize;
+    size_t differ = 0;
+    for (int r = 0; r < kSize; ++r)
+      for (int c = 0; c < kSize; ++c)
+        for (int k = 0; k < 2; ++k) differ += fine.at(c, r, k) != coarse.at(c + kSize, r + dr, k);
+    EXPECT_EQ(differ, 0u) << "row " << row;
+  }
+}
+
+// Of the pixels of the equatorial cell `cell`'s edge row (row 0 for N above it, the last for S
+// below), the fraction whose neighbour across the edge (read where the store's halo reads it) has
+// the coherent source (its own shifted by the step across), and the same fraction one row inside.
+std::array<double, 2> coherence(CellId cell, bool top) {
+  const Grid& grid = default_grid();
+  const int n = kSize, edge = top ? 0 : n - 1, step = top ? -1 : 1;
+  const auto across_edge = [&](int c) { return *pixel_source(grid, cell, n, c, edge + step); };
+  const FaceCoord first = across_edge(0);
+  const CellId polar = CellId::FromFaceColRow(first.face, cell.level(), uint32_t(first.col / n),
+                                              uint32_t(first.row / n));
+  const Tile<float> here = TurnedEdges::transfer(cell, kSize);
+  const Tile<float> there = TurnedEdges::transfer(polar, kSize);
+  size_t across = 0, inside = 0;
+  for (int c = 0; c < n; ++c) {
+    const FaceCoord q = across_edge(c);
+    EXPECT_EQ(
+        CellId::FromFaceColRow(q.face, cell.level(), uint32_t(q.col / n), uint32_t(q.row / n)),
+        polar);
+    const int qc = int(q.col % n), qr = int(q.row % n);
+    across += there.at(qc, qr, 0) == here.at(c, edge, 0) &&
+              there.at(qc, qr, 1) == here.at(c, edge, 1) + float(step);
+    inside += here.at(c, edge - step, 0) == here.at(c, edge, 0) &&
+              here.at(c, edge - step, 1) == here.at(c, edge, 1) - float(step);
+  }
+  return {double(across) / n, double(inside) / n};
+}
+
+TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
+  for (const int face : {kFaceP, kFaceQ, kFaceR})
+    for (const bool top : {true, false}) {
+      const CellId cell = CellId::FromFaceColRow(face, kLevel, kRow, top ? 0 : kLast);
+      const auto [across, inside] = coherence(cell, top);
+      EXPECT_GT(inside, 0.2) << cell.ToText();
+      EXPECT_GT(across, 0.7 * inside) << cell.ToText() << (top ? " N" : " S");
+    }
+}
+
+TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand) {
+  // Output one level finer than the guides (refine 1, tiles of 512 from 256): P's chart over
+  // N's 64 rows above P and P's first 64, at level 14, its guides laid by hand at level 13.
+  const int n = 2 * kSize;
+  const PixelRect across{2 * (kFace + kEdgeCol), -64, n, 128};
+  const auto b = whole(across, p_chart, 1);
+  const auto differs = [&](const Tile<float>& out, int c, int r, int bc, int br) {
+    const auto& e = b[size_t(br * n + bc)];
+    return out.at(c, r, 0) != float(e[0]) || out.at(c, r, 1) != float(e[1]);
+  };
+  const Tile<float> p =
+      transfer(CellId::FromFaceColRow(kFaceP, kLevel, kEdgeCol / kSize, 0), kSize, 1);
+  size_t in_p = 0;
+  for (int r = 0; r < 64; ++r)
+    for (int c = 0; c < n; ++c) in_p += differs(p, c, r, c, r + 64);
+  EXPECT_EQ(in_p, 0u);
+  // N's pixel at depth t from the edge, row r of its cell: P's chart row -1 - t, column n - 1 - r.
+  const Tile<float> north = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize, 1);
+  size_t beside = 0, in_band = 0;
+  for (int t = 0; t < 2 * kBand; ++t)
+    for (int r = 0; r < n; ++r) {
+      const bool d = differs(north, n - 1 - t, r, n - 1 - r, 63 - t);
+      beside += t == 0 && d;
+      in_band += t < kBand && !d;
+    }
+  EXPECT_EQ(beside, 0u);
+  EXPECT_GT(in_band, size_t(n * kBand / 5));
+}
+
+}  // namespace
+}  // namespace maquette::synthesis
