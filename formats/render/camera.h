@@ -37,7 +37,11 @@ class PinholeCamera {
   double focal() const { return focal_; }
 
   // A point of the eye's ENU frame in the camera's frame: x right, y down, z forward (metres).
-  Vec3d to_view(const Vec3d& enu) const;
+  // Inline: the mesh's every vertex goes through it.
+  Vec3d to_view(const Vec3d& p) const {
+    auto dot = [&p](const Vec3d& a) { return a[0] * p[0] + a[1] * p[1] + a[2] * p[2]; };
+    return {dot(right_), dot(down_), dot(forward_)};
+  }
   // The picture coordinates of a camera-frame point with z > 0 (pixel centres at i + 0.5).
   std::array<double, 2> to_pixel(const Vec3d& view) const {
     return {spec_.width * 0.5 + focal_ * view[0] / view[2],
