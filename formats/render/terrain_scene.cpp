@@ -37,12 +37,11 @@ constexpr int kHalo = 2;
 constexpr int kBlockSquares = 4;
 static_assert(2 * kBlockSquares * kBlockSquares <= kCullBlockTriangles);
 
-// A tile's blocks (block_first's entries): its patches (of its n + 1 squares a side: samples -1 ..
-// n), and the skirt's four sides.
-size_t tile_blocks(int n) {
-  const size_t patches = size_t(n + 1 + kBlockSquares - 1) / kBlockSquares;
-  return patches * patches + 4;
-}
+// A tile's patches a side (of its n + 1 squares a side: samples -1 .. n).
+int tile_patches(int n) { return (n + 1 + kBlockSquares - 1) / kBlockSquares; }
+
+// A tile's blocks (block_first's entries): its patches and the skirt's four sides.
+size_t tile_blocks(int n) { return size_t(tile_patches(n)) * size_t(tile_patches(n)) + 4; }
 
 // Calls visit(k, c0, r0, c1, r1) for the k-th patch of a tile's squares (of its n + 1 squares a
 // side: samples -1 .. n), in row order: squares c0 .. c1 - 1 of rows r0 .. r1 - 1.
@@ -324,24 +323,32 @@ double horizontal_distance(const Grid& grid, const PinholeCamera& camera, CellId
 // Challenger Deep: -10,935 m), and the geoid's separation from the ellipsoid.
 constexpr double kLowest = -11000, kHighest = 9000, kGeoid = 120;
 
-// Whether every one of `points` (the eye's ENU frame) lies more than `margin` metres beyond one
-// side of the picture (the plane through the eye and that side) or behind the eye: then so does
-// their convex hull widened by `margin`.
-bool beyond_view(const PinholeCamera& camera, std::span<const Vec3d> points, double margin) {
+// Where `points` (the eye's ENU frame), their convex hull widened by `margin` metres, lie: wholly
+// beyond one side of the picture (the plane through the eye and that side) or behind the eye (every
+// point more than `margin` beyond it), wholly inside the view (every point more than `margin`
+// inside every side and in front of the eye), or across.
+enum class ViewSide { kOut, kIn, kAcross };
+ViewSide view_side(const PinholeCamera& camera, std::span<const Vec3d> points, double margin) {
   const double half_w = camera.spec().width / 2.0 / camera.focal(),
                half_h = camera.spec().height / 2.0 / camera.focal();
+  const double norm_w = std::hypot(1.0, half_w), norm_h = std::hypot(1.0, half_h);
   // Signed distances (metres) beyond the planes through the eye and the picture's sides, and
   // behind the eye: positive outside.
-  std::array<double, 5> inside{-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  std::array<double, 5> inside{-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY},
+      outside = inside;
   for (const Vec3d& p : points) {
     const Vec3d v = camera.to_view(p);
-    const double beyond[5] = {(-v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
-                              (v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
-                              (-v[1] - half_h * v[2]) / std::hypot(1.0, half_h),
-                              (v[1] - half_h * v[2]) / std::hypot(1.0, half_h), -v[2]};
+    const double beyond[5] = {(-v[0] - half_w * v[2]) / norm_w, (v[0] - half_w * v[2]) / norm_w,
+                              (-v[1] - half_h * v[2]) / norm_h, (v[1] - half_h * v[2]) / norm_h,
+                              -v[2]};
     for (size_t k = 0; k < 5; ++k) inside[k] = std::max(inside[k], -beyond[k]);
+    for (size_t k = 0; k < 5; ++k) outside[k] = std::max(outside[k], beyond[k]);
   }
-  return std::any_of(inside.begin(), inside.end(), [&](double d) { return d < -margin; });
+  if (std::any_of(inside.begin(), inside.end(), [&](double d) { return d < -margin; }))
+    return ViewSide::kOut;
+  return std::all_of(outside.begin(), outside.end(), [&](double d) { return d < -margin; })
+             ? ViewSide::kIn
+             : ViewSide::kAcross;
 }
 
 // Whether `cell`, widened by `margin` metres, between the lowest and highest heights, lies wholly
@@ -353,34 +360,59 @@ bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, dou
   for (const LonLat& p : grid.boundary(cell, 8))
     for (const double h : {kLowest * exaggeration - kGeoid, kHighest * exaggeration + kGeoid})
       points.push_back(camera.frame().to_enu(p.lon, p.lat, h));
-  return beyond_view(camera, points, margin);
+  return view_side(camera, points, margin) == ViewSide::kOut;
+}
+
+// Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side): their vertices are
+// those samples drawn at `exaggeration` times their heights along their places' normals
+// (write_tile), so within the hull of the four corners' places at the lowest and highest sample's
+// heights but for the places' departure from bilinear between the corners: the ellipsoid's and
+// the projection's bend over the squares (their side squared over the earth's radius bounds it, a
+// few millimetres for 16 samples at level 10; the lattice's interpolation, sample_places.h, is
+// within a thousandth of a sample), which the margin of a sample (`sample_m`) dwarfs. Inside: no
+// data.
+ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
+                      const PinholeCamera& camera, double sample_m, double exaggeration) {
+  const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
+  if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
+  std::array<Vec3d, 8> hull;
+  size_t next = 0;
+  for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
+    const SamplePlace place = tile.places->at(c, r);
+    for (const float z : {lowest, highest}) hull[next++] = exaggerated(place, z, exaggeration);
+  }
+  const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
+  return view_side(camera, hull, sample_m + side * side / 6.3e6);
 }
 
 // Per patch of `tile`'s squares (each_patch's order), whether it is drawn: with `cull`, not when
-// it lies wholly out of the view. Its vertices are its samples drawn at `exaggeration` times their
-// heights along their places' normals (write_tile), so within the hull of its four corners' places
-// at its lowest and highest samples' heights but for the places' departure from bilinear between
-// the corners: the ellipsoid's and the projection's bend over the patch (its side squared over
-// the earth's radius bounds it, a few millimetres at level 10; the lattice's interpolation,
-// sample_places.h, is within a thousandth of a sample), which the margin of a sample dwarfs. The
-// patches along the halo's ring (placed exactly, perhaps on another face) are always drawn.
+// it lies wholly out of the view (squares_side). The patches along the halo's ring (placed
+// exactly, perhaps on another face) are always drawn. The others are looked at by groups of
+// kGroupPatches x kGroupPatches: a group wholly out of the view or wholly in it decides for its
+// patches, a group across it leaves each to its own test.
+constexpr int kGroupPatches = 4;
 std::vector<uint8_t> drawn_patches(const SceneTile& tile, int n, const PinholeCamera& camera,
                                    double sample_m, double exaggeration, bool cull) {
-  std::vector<uint8_t> drawn(tile_blocks(n) - 4, 1);
+  const int patches = tile_patches(n);
+  std::vector<uint8_t> drawn(size_t(patches) * size_t(patches), 1);
   if (!cull) return drawn;
-  const double side = kBlockSquares * sample_m, margin = sample_m + side * side / 6.3e6;
-  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
-    if (c0 == -1 || r0 == -1 || c1 == n || r1 == n) return;
-    const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
-    if (!(lowest <= highest)) return;  // no sample with data: no square to draw
-    std::array<Vec3d, 8> hull;
-    size_t next = 0;
-    for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
-      const SamplePlace place = tile.places->at(c, r);
-      for (const float z : {lowest, highest}) hull[next++] = exaggerated(place, z, exaggeration);
+  // The inside patches: 1 .. patches - 2 a side (squares from 3 .. n - 1: samples 3 .. n - 1).
+  auto first_sample = [](int patch) { return -1 + patch * kBlockSquares; };
+  for (int gr = 1; gr < patches - 1; gr += kGroupPatches)
+    for (int gc = 1; gc < patches - 1; gc += kGroupPatches) {
+      const int gr1 = std::min(patches - 1, gr + kGroupPatches),
+                gc1 = std::min(patches - 1, gc + kGroupPatches);
+      const ViewSide group =
+          squares_side(tile, first_sample(gc), first_sample(gr), first_sample(gc1),
+                       first_sample(gr1), camera, sample_m, exaggeration);
+      if (group == ViewSide::kIn) continue;
+      for (int pr = gr; pr < gr1; ++pr)
+        for (int pc = gc; pc < gc1; ++pc)
+          drawn[size_t(pr) * size_t(patches) + size_t(pc)] =
+              group == ViewSide::kAcross &&
+              squares_side(tile, first_sample(pc), first_sample(pr), first_sample(pc + 1),
+                           first_sample(pr + 1), camera, sample_m, exaggeration) != ViewSide::kOut;
     }
-    drawn[k] = !beyond_view(camera, hull, margin);
-  });
   return drawn;
 }
 
