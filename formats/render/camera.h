@@ -48,8 +48,14 @@ class PinholeCamera {
             spec_.height * 0.5 + focal_ * view[1] / view[2]};
   }
   // The ray through picture coordinates (x, y) in the eye's ENU frame, scaled to a forward
-  // (camera z) component of 1: a point at camera depth z is z times it.
-  Vec3d ray(double x, double y) const;
+  // (camera z) component of 1: a point at camera depth z is z times it. Inline: every terrain
+  // pixel's distance goes through it.
+  Vec3d ray(double x, double y) const {
+    const double u = (x - spec_.width * 0.5) / focal_, v = (y - spec_.height * 0.5) / focal_;
+    Vec3d r;
+    for (int k = 0; k < 3; ++k) r[k] = forward_[k] + u * right_[k] + v * down_[k];
+    return r;
+  }
 
  private:
   CameraSpec spec_;
