@@ -38,16 +38,4 @@ PinholeCamera::PinholeCamera(const CameraSpec& spec) : spec_(spec), frame_(spec.
            forward_[0] * right_[1] - forward_[1] * right_[0]};
 }
 
-Vec3d PinholeCamera::to_view(const Vec3d& p) const {
-  auto dot = [&p](const Vec3d& a) { return a[0] * p[0] + a[1] * p[1] + a[2] * p[2]; };
-  return {dot(right_), dot(down_), dot(forward_)};
-}
-
-Vec3d PinholeCamera::ray(double x, double y) const {
-  const double u = (x - spec_.width * 0.5) / focal_, v = (y - spec_.height * 0.5) / focal_;
-  Vec3d r;
-  for (int k = 0; k < 3; ++k) r[k] = forward_[k] + u * right_[k] + v * down_[k];
-  return r;
-}
-
 }  // namespace maquette

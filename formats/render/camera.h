@@ -37,15 +37,25 @@ class PinholeCamera {
   double focal() const { return focal_; }
 
   // A point of the eye's ENU frame in the camera's frame: x right, y down, z forward (metres).
-  Vec3d to_view(const Vec3d& enu) const;
+  // Inline: the mesh's every vertex goes through it.
+  Vec3d to_view(const Vec3d& p) const {
+    auto dot = [&p](const Vec3d& a) { return a[0] * p[0] + a[1] * p[1] + a[2] * p[2]; };
+    return {dot(right_), dot(down_), dot(forward_)};
+  }
   // The picture coordinates of a camera-frame point with z > 0 (pixel centres at i + 0.5).
   std::array<double, 2> to_pixel(const Vec3d& view) const {
     return {spec_.width * 0.5 + focal_ * view[0] / view[2],
             spec_.height * 0.5 + focal_ * view[1] / view[2]};
   }
   // The ray through picture coordinates (x, y) in the eye's ENU frame, scaled to a forward
-  // (camera z) component of 1: a point at camera depth z is z times it.
-  Vec3d ray(double x, double y) const;
+  // (camera z) component of 1: a point at camera depth z is z times it. Inline: every terrain
+  // pixel's distance goes through it.
+  Vec3d ray(double x, double y) const {
+    const double u = (x - spec_.width * 0.5) / focal_, v = (y - spec_.height * 0.5) / focal_;
+    Vec3d r;
+    for (int k = 0; k < 3; ++k) r[k] = forward_[k] + u * right_[k] + v * down_[k];
+    return r;
+  }
 
  private:
   CameraSpec spec_;

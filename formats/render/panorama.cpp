@@ -322,21 +322,32 @@ void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
     }
   });
 
+  // Silhouettes: a terrain pixel with a 4-neighbour in `p` that is the sky (NaN) or more than
+  // silhouette_jump times farther, i.e. not at most that far (!(n <= limit), one test for both).
+  // A neighbour beyond `p`'s rows or columns is read as -infinity (never beyond); a sky pixel's
+  // NaN limit makes every neighbour beyond, so the sky is masked out. Branch-free along
+  // a row, its first and last columns apart.
+  const double jump = look.silhouette_jump;
+  const std::vector<double> none(size_t(w), -INFINITY);
+  auto silhouette = [jump](double d, double left, double right, double up, double down) {
+    const double limit = d * jump;
+    const bool beyond = !(left <= limit) | !(right <= limit) | !(up <= limit) | !(down <= limit);
+    return uint8_t(!std::isnan(d) & beyond ? 255 : 0);
+  };
   tbb::parallel_for(0, h, [&](int row) {
-    for (int col = 0; col < w; ++col) {
-      const size_t i = size_t(row) * size_t(w) + size_t(col);
-      p.silhouette[i] = 0;
-      if (sky(i)) continue;
-      const double limit = p.distance[i] * look.silhouette_jump;
-      auto beyond = [&](int c, int r) {
-        if (c < 0 || r < 0 || c >= w || r >= h) return false;
-        const size_t j = size_t(r) * size_t(w) + size_t(c);
-        return sky(j) || p.distance[j] > limit;
-      };
-      if (beyond(col - 1, row) || beyond(col + 1, row) || beyond(col, row - 1) ||
-          beyond(col, row + 1))
-        p.silhouette[i] = 255;
-    }
+    const size_t start = size_t(row) * size_t(w);
+    const double* d = &p.distance[start];
+    const double* up = row > 0 ? d - w : none.data();
+    const double* down = row + 1 < h ? d + w : none.data();
+    uint8_t* s = &p.silhouette[start];
+    auto side = [&](int col) {
+      s[col] = silhouette(d[col], col > 0 ? d[col - 1] : -INFINITY,
+                          col + 1 < w ? d[col + 1] : -INFINITY, up[col], down[col]);
+    };
+    side(0);
+    for (int col = 1; col + 1 < w; ++col)
+      s[col] = silhouette(d[col], d[col - 1], d[col + 1], up[col], down[col]);
+    if (w > 1) side(w - 1);
   });
 }
 

@@ -47,7 +47,7 @@ bool top_left(const ScreenVertex& a, const ScreenVertex& b) {
 
 // The screen vertex of a camera-frame point at least `near` in front; inv_z 0 when too far off
 // the picture for the integer edge functions.
-ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
+inline ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
   const auto p = camera.to_pixel(v);
   if (!(std::abs(p[0]) < kMaxPixels && std::abs(p[1]) < kMaxPixels)) return {};
   return {round_half_away(p[0] * kOne), round_half_away(p[1] * kOne), 1 / v[2]};

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -36,12 +37,24 @@ constexpr int kHalo = 2;
 constexpr int kBlockSquares = 4;
 static_assert(2 * kBlockSquares * kBlockSquares <= kCullBlockTriangles);
 
-// A tile's blocks (block_first's entries): its patches (of its n + 1 squares a side: samples -1 ..
-// n), and the skirt's four sides.
-size_t tile_blocks(int n) {
-  const size_t patches = size_t(n + 1 + kBlockSquares - 1) / kBlockSquares;
-  return patches * patches + 4;
+// A tile's patches a side (of its n + 1 squares a side: samples -1 .. n).
+int tile_patches(int n) { return (n + 1 + kBlockSquares - 1) / kBlockSquares; }
+
+// A tile's blocks (block_first's entries): its patches and the skirt's four sides.
+size_t tile_blocks(int n) { return size_t(tile_patches(n)) * size_t(tile_patches(n)) + 4; }
+
+// Calls visit(k, c0, r0, c1, r1) for the k-th patch of a tile's squares (of its n + 1 squares a
+// side: samples -1 .. n), in row order: squares c0 .. c1 - 1 of rows r0 .. r1 - 1.
+template <typename Visit>
+void each_patch(int n, Visit&& visit) {
+  size_t k = 0;
+  for (int r0 = -1; r0 < n; r0 += kBlockSquares)
+    for (int c0 = -1; c0 < n; c0 += kBlockSquares)
+      visit(k++, c0, r0, std::min(n, c0 + kBlockSquares), std::min(n, r0 + kBlockSquares));
 }
+
+// The slot of sample (c, r), -1 .. n, in SceneTile::used.
+size_t used_slot(int n, int c, int r) { return size_t(r + 1) * size_t(n + 2) + size_t(c + 1); }
 
 // The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
 std::vector<std::array<int, 2>> halo_ring(int n) {
@@ -71,6 +84,20 @@ Vec3d exaggerated(const SamplePlace& place, float z, double exaggeration) {
           place.base[2] + h * place.up[2]};
 }
 
+// The lowest and highest of `heights`' samples with data in columns c0 .. c1 and rows r0 .. r1
+// (infinity and -infinity for none).
+std::pair<float, float> relief(const Tile<float>& heights, int c0, int r0, int c1, int r1) {
+  float lowest = INFINITY, highest = -INFINITY;
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      const float z = heights.at(c, r);
+      if (std::isnan(z)) continue;
+      lowest = std::min(lowest, z);
+      highest = std::max(highest, z);
+    }
+  return {lowest, highest};
+}
+
 // `datum` when given, else `dem`'s conversion to the ellipsoid.
 std::shared_ptr<const EllipsoidalHeights> given_or_made(
     std::shared_ptr<const EllipsoidalHeights> datum, const LayerInfo& dem) {
@@ -87,27 +114,33 @@ Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell,
 }
 
 // The vertex numbering write_tile writes, tile_share counts and attribute_tile reads: calls
-// visit(vertex, col, row, k) for each vertex of a tile of `heights` whose first is `first`: the
-// drawn samples with data in row order (k -1), then the skirt's, each with the ring sample it
-// hangs from, the k-th of halo_ring(n).
+// visit(vertex, col, row, k) for each vertex of `tile` numbered from `first`: the used samples
+// with data in row order (k -1), then the skirt's, each with the ring sample it hangs from, the
+// k-th of halo_ring(n).
 template <typename Visit>
-void each_vertex(const Tile<float>& heights, int n, size_t first, Visit&& visit) {
+void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
+  const Tile<float>& heights = tile.heights;
   size_t v = first;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c)
-      if (!std::isnan(heights.at(c, r))) visit(v++, c, r, -1);
+      if (tile.used[used_slot(n, c, r)] && !std::isnan(heights.at(c, r))) visit(v++, c, r, -1);
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k)
     if (!std::isnan(heights.at(ring[k][0], ring[k][1]))) visit(v++, ring[k][0], ring[k][1], int(k));
 }
 
-TileShare tile_share(const Tile<float>& heights, int n) {
+// `drawn`: per patch (each_patch's order), whether its squares are drawn.
+TileShare tile_share(const SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
+  const Tile<float>& heights = tile.heights;
   TileShare t;
-  each_vertex(heights, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
+  each_vertex(tile, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
   auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
-  for (int r = -1; r < n; ++r)
-    for (int c = -1; c < n; ++c)
-      if (has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1)) t.indices += 6;
+  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
+    if (!drawn[k]) return;
+    for (int r = r0; r < r1; ++r)
+      for (int c = c0; c < c1; ++c)
+        if (has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1)) t.indices += 6;
+  });
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k) {
     const auto& a = ring[k];
@@ -124,9 +157,9 @@ TileShare tile_share(const Tile<float>& heights, int n) {
 // order, each in row order), then the skirt's, each patch and each side of the skirt starting a
 // block.
 void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const SceneTile& tile,
-                const TileShare& share, const PinholeCamera& camera,
-                const EllipsoidalHeights& heights, double exaggeration, size_t first_index,
-                size_t first_block, RenderMesh& mesh) {
+                const std::vector<uint8_t>& drawn, const TileShare& share,
+                const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
+                size_t first_index, size_t first_block, RenderMesh& mesh) {
   const int n = dem.tile_size;
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
@@ -136,20 +169,18 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
   size_t next_index = first_index;
   // The drawn samples (-1 .. n, the halo's inner ring included) become vertices (scene indices) at
   // their exaggerated positions; heights of the datum run along the ellipsoid's normal. The skirt:
-  // a wall hanging from the halo's ring, deeper than the tile's relief plus a sample (the drawn
-  // samples, visited first, give the relief), so that where a neighbour is drawn at another level
-  // (its surface above or below this one near the seam) no ray passes between the two.
+  // a wall hanging from the halo's ring, deeper than the tile's relief (all its samples -1 .. n,
+  // drawn or not) plus a sample, so that where a neighbour is drawn at another level (its surface
+  // above or below this one near the seam) no ray passes between the two.
   std::vector<uint32_t> vertex(size_t(side) * size_t(side), kNoVertex);
   const auto ring = halo_ring(n);
   std::vector<uint32_t> below(ring.size(), kNoVertex);
-  float lowest = INFINITY, highest = -INFINITY;
+  const auto [lowest, highest] = relief(tile.heights, -1, -1, n, n);
   const double sample_m = grid.level_info(cell.level(), n).pixel_m;
-  each_vertex(tile.heights, n, tile.first_vertex, [&](size_t v, int c, int r, int k) {
+  each_vertex(tile, n, tile.first_vertex, [&](size_t v, int c, int r, int k) {
     const float z = tile.heights.at(c, r);
     Vec3d p;
     if (k < 0) {
-      lowest = std::min(lowest, z);
-      highest = std::max(highest, z);
       vertex[slot(c, r)] = uint32_t(v);
       p = exaggerated(places.at(c, r), z, exaggeration);
     } else {
@@ -169,16 +200,16 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
   };
   size_t next_block = first_block;
   auto start_block = [&] { mesh.block_first[next_block++] = uint32_t(next_index / 3); };
-  for (int r0 = -1; r0 < n; r0 += kBlockSquares)
-    for (int c0 = -1; c0 < n; c0 += kBlockSquares) {
-      start_block();
-      for (int r = r0; r < std::min(n, r0 + kBlockSquares); ++r)
-        for (int c = c0; c < std::min(n, c0 + kBlockSquares); ++c) {
-          const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
-          if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
-          triangles(a, b, e, d);
-        }
-    }
+  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
+    start_block();  // an empty block when not drawn
+    if (!drawn[k]) return;
+    for (int r = r0; r < r1; ++r)
+      for (int c = c0; c < c1; ++c) {
+        const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
+        if (a == kNoVertex || b == kNoVertex || d == kNoVertex || e == kNoVertex) continue;
+        triangles(a, b, e, d);
+      }
+  });
   for (size_t k = 0; k < ring.size(); ++k) {
     if (k % size_t(n + 1) == 0) start_block();  // a side of the ring
     const size_t next = (k + 1) % ring.size();
@@ -236,7 +267,7 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     }
     return p;
   };
-  each_vertex(tile.heights, n, tile.first_vertex, [&](size_t v, int c, int r, int) {
+  each_vertex(tile, n, tile.first_vertex, [&](size_t v, int c, int r, int) {
     if (scene.attributed[v] != 1) return;
     scene.attributed[v] = 2;
     const SamplePlace place = places.at(c, r);
@@ -292,26 +323,109 @@ double horizontal_distance(const Grid& grid, const PinholeCamera& camera, CellId
 // Challenger Deep: -10,935 m), and the geoid's separation from the ellipsoid.
 constexpr double kLowest = -11000, kHighest = 9000, kGeoid = 120;
 
+// Where `points` (the eye's ENU frame), their convex hull widened by `margin` metres, lie: wholly
+// beyond one side of the picture (the plane through the eye and that side) or behind the eye (every
+// point more than `margin` beyond it), wholly inside the view (every point more than `margin`
+// inside every side and in front of the eye), or across.
+enum class ViewSide { kOut, kIn, kAcross };
+ViewSide view_side(const PinholeCamera& camera, std::span<const Vec3d> points, double margin) {
+  const double half_w = camera.spec().width / 2.0 / camera.focal(),
+               half_h = camera.spec().height / 2.0 / camera.focal();
+  const double norm_w = std::hypot(1.0, half_w), norm_h = std::hypot(1.0, half_h);
+  // Signed distances (metres) beyond the planes through the eye and the picture's sides, and
+  // behind the eye: positive outside.
+  std::array<double, 5> inside{-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY},
+      outside = inside;
+  for (const Vec3d& p : points) {
+    const Vec3d v = camera.to_view(p);
+    const double beyond[5] = {(-v[0] - half_w * v[2]) / norm_w, (v[0] - half_w * v[2]) / norm_w,
+                              (-v[1] - half_h * v[2]) / norm_h, (v[1] - half_h * v[2]) / norm_h,
+                              -v[2]};
+    for (size_t k = 0; k < 5; ++k) inside[k] = std::max(inside[k], -beyond[k]);
+    for (size_t k = 0; k < 5; ++k) outside[k] = std::max(outside[k], beyond[k]);
+  }
+  if (std::any_of(inside.begin(), inside.end(), [&](double d) { return d < -margin; }))
+    return ViewSide::kOut;
+  return std::all_of(outside.begin(), outside.end(), [&](double d) { return d < -margin; })
+             ? ViewSide::kIn
+             : ViewSide::kAcross;
+}
+
 // Whether `cell`, widened by `margin` metres, between the lowest and highest heights, lies wholly
 // beyond one side of the picture or behind the eye. Its boundary is sampled at 8 points per edge
 // (the margin covers the chords).
 bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, double margin,
                  double exaggeration) {
-  const double half_w = camera.spec().width / 2.0 / camera.focal(),
-               half_h = camera.spec().height / 2.0 / camera.focal();
-  // Signed distances (metres) beyond the planes through the eye and the picture's sides, and
-  // behind the eye: positive outside.
-  std::array<double, 5> inside{-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  std::vector<Vec3d> points;
   for (const LonLat& p : grid.boundary(cell, 8))
-    for (const double h : {kLowest * exaggeration - kGeoid, kHighest * exaggeration + kGeoid}) {
-      const Vec3d v = camera.to_view(camera.frame().to_enu(p.lon, p.lat, h));
-      const double beyond[5] = {(-v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
-                                (v[0] - half_w * v[2]) / std::hypot(1.0, half_w),
-                                (-v[1] - half_h * v[2]) / std::hypot(1.0, half_h),
-                                (v[1] - half_h * v[2]) / std::hypot(1.0, half_h), -v[2]};
-      for (size_t k = 0; k < 5; ++k) inside[k] = std::max(inside[k], -beyond[k]);
+    for (const double h : {kLowest * exaggeration - kGeoid, kHighest * exaggeration + kGeoid})
+      points.push_back(camera.frame().to_enu(p.lon, p.lat, h));
+  return view_side(camera, points, margin) == ViewSide::kOut;
+}
+
+// Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side): their vertices are
+// those samples drawn at `exaggeration` times their heights along their places' normals
+// (write_tile), so within the hull of the four corners' places at the lowest and highest sample's
+// heights but for the places' departure from bilinear between the corners: the ellipsoid's and
+// the projection's bend over the squares (their side squared over the earth's radius bounds it, a
+// few millimetres for 16 samples at level 10; the lattice's interpolation, sample_places.h, is
+// within a thousandth of a sample), which the margin of a sample (`sample_m`) dwarfs. Inside: no
+// data.
+ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
+                      const PinholeCamera& camera, double sample_m, double exaggeration) {
+  const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
+  if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
+  std::array<Vec3d, 8> hull;
+  size_t next = 0;
+  for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
+    const SamplePlace place = tile.places->at(c, r);
+    for (const float z : {lowest, highest}) hull[next++] = exaggerated(place, z, exaggeration);
+  }
+  const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
+  return view_side(camera, hull, sample_m + side * side / 6.3e6);
+}
+
+// Per patch of `tile`'s squares (each_patch's order), whether it is drawn: with `cull`, not when
+// it lies wholly out of the view (squares_side). The patches along the halo's ring (placed
+// exactly, perhaps on another face) are always drawn. The others are looked at by groups of
+// kGroupPatches x kGroupPatches: a group wholly out of the view or wholly in it decides for its
+// patches, a group across it leaves each to its own test.
+constexpr int kGroupPatches = 4;
+std::vector<uint8_t> drawn_patches(const SceneTile& tile, int n, const PinholeCamera& camera,
+                                   double sample_m, double exaggeration, bool cull) {
+  const int patches = tile_patches(n);
+  std::vector<uint8_t> drawn(size_t(patches) * size_t(patches), 1);
+  if (!cull) return drawn;
+  // The inside patches: 1 .. patches - 2 a side (squares from 3 .. n - 1: samples 3 .. n - 1).
+  auto first_sample = [](int patch) { return -1 + patch * kBlockSquares; };
+  for (int gr = 1; gr < patches - 1; gr += kGroupPatches)
+    for (int gc = 1; gc < patches - 1; gc += kGroupPatches) {
+      const int gr1 = std::min(patches - 1, gr + kGroupPatches),
+                gc1 = std::min(patches - 1, gc + kGroupPatches);
+      const ViewSide group =
+          squares_side(tile, first_sample(gc), first_sample(gr), first_sample(gc1),
+                       first_sample(gr1), camera, sample_m, exaggeration);
+      if (group == ViewSide::kIn) continue;
+      for (int pr = gr; pr < gr1; ++pr)
+        for (int pc = gc; pc < gc1; ++pc)
+          drawn[size_t(pr) * size_t(patches) + size_t(pc)] =
+              group == ViewSide::kAcross &&
+              squares_side(tile, first_sample(pc), first_sample(pr), first_sample(pc + 1),
+                           first_sample(pr + 1), camera, sample_m, exaggeration) != ViewSide::kOut;
     }
-  return std::any_of(inside.begin(), inside.end(), [&](double d) { return d < -margin; });
+  return drawn;
+}
+
+// `tile.used` from its drawn patches (drawn_patches): their samples and the halo's ring (the
+// skirt's).
+void mark_used(SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
+  tile.used.assign(size_t(n + 2) * size_t(n + 2), 0);
+  for (const auto& [c, r] : halo_ring(n)) tile.used[used_slot(n, c, r)] = 1;
+  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
+    if (!drawn[k]) return;
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) tile.used[used_slot(n, c, r)] = 1;
+  });
 }
 
 }  // namespace
@@ -373,12 +487,18 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.tiles.resize(cells.size());
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
+  std::vector<std::vector<uint8_t>> drawn(cells.size());
   {
     // The caller's tiles (kept for its cast shadows), else ours, dropped once the halos are made.
     if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-      scene.tiles[i].heights = tile_heights(grid, dem, cells[i], *tiles);
-      shares[i] = tile_share(scene.tiles[i].heights, n);
+      SceneTile& tile = scene.tiles[i];
+      tile.heights = tile_heights(grid, dem, cells[i], *tiles);
+      tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
+      drawn[i] = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
+                               exaggeration, cull);
+      mark_used(tile, drawn[i], n);
+      shares[i] = tile_share(tile, drawn[i], n);
     });
     tiles.reset();
   }
@@ -400,10 +520,8 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.normals.resize(3 * vertices);
   scene.attributed.assign(vertices, 0);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    SceneTile& tile = scene.tiles[i];
-    tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
-    write_tile(grid, dem, cells[i], tile, shares[i], camera, heights, exaggeration, first_index[i],
-               i * tile_blocks(n), scene.mesh);
+    write_tile(grid, dem, cells[i], scene.tiles[i], drawn[i], shares[i], camera, heights,
+               exaggeration, first_index[i], i * tile_blocks(n), scene.mesh);
   });
   return scene;
 }

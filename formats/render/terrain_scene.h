@@ -12,7 +12,9 @@
 // missing sample (nodata, no neighbour tile) are left out, and the skirt along them. Heights go to
 // the ellipsoid through the layer's vertical datum, exaggerated by a factor above that datum. Tiles
 // are read and their shares of the mesh counted in parallel, then each written in place (no copies
-// joined) in their cell order: the mesh is the same whatever the threads. The vertices' other
+// joined) in their cell order: the mesh is the same whatever the threads. With the cull, a patch
+// wholly out of the view is left out (its block empty) and its samples are no vertices unless a
+// drawn square or the skirt uses them. The vertices' other
 // attributes (lon/lat, plane point, altitude, normal) are made afterwards by attribute_vertices,
 // for the vertices of the triangles a picture shows only (a small share on an oblique view:
 // PanoramaCli.ShownVerticesAttributesAreEveryVertexs prints its count): the tiles' heights and
@@ -36,10 +38,14 @@
 namespace maquette {
 
 // A drawn tile as attribute_vertices needs it: its heights with two rings of halo, its samples'
-// places, and the first of its vertices in the mesh.
+// places, which of its samples are vertices, and the first of its vertices in the mesh.
 struct SceneTile {
   Tile<float> heights{1, 1};
   std::optional<SamplePlaces> places;
+  // Per sample -1 .. n (row-major, n + 2 a side): 1 when a drawn square or the skirt uses it. A
+  // sample is a vertex when used and with data. The squares of a patch wholly out of the view
+  // (build_terrain_scene's cull) are not drawn.
+  std::vector<uint8_t> used;
   size_t first_vertex = 0;
 };
 
@@ -83,7 +89,12 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
                                 double exaggeration, bool cull);
 
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
-// >= 0 and `cull` as scene_cells. The scene's places refer to `grid`: it must outlive the scene.
+// >= 0 and `cull` as scene_cells; with `cull`, also a tile's patch of squares (a rasterizer's
+// block) wholly out of the view is left out, its samples no vertices unless a drawn square or the
+// skirt uses them (the same pixels: beyond a side of the picture or behind the eye, every corner
+// of the patch's squares at its lowest and highest sample, with a margin of a sample and the
+// earth's bulge over the patch; the patches along the halo's ring and the skirt are always
+// drawn). The scene's places refer to `grid`: it must outlive the scene.
 // `datum`: the DEM's conversion to the ellipsoid when the caller has it (shared with
 // TerrainHeights; PROJ's operation is costly to set up), else made from `dem`. `tiles`: the DEM's
 // LayerSampler::shared_tiles at its level when the caller reads them again afterwards (the cast

@@ -691,6 +691,56 @@ TEST(PanoramaCli, TilesOutOfViewLeftOutChangeNoPixel) {
         << file;
 }
 
+// With the cull, a tile's patches of squares wholly out of the view are left out too (their
+// samples no vertices unless a drawn square or the skirt uses them), without changing what any
+// pixel sees: against the same tiles drawn whole (the culled scene's cells, each with no more
+// vertices than unculled and some with fewer), every pixel's depth and weights the same bits, the
+// sky the same pixels. The picture's sides cut through tiles, so patches just inside the view (a
+// corner peeking in) sit beside patches just outside it.
+TEST(PanoramaCli, PatchesOutOfViewLeftOutChangeNoPixel) {
+  const PinholeCamera camera(CameraSpec{.eye = {10.12, 44.99, 3000},
+                                        .heading = 15,
+                                        .pitch = -12,
+                                        .fov = 40,
+                                        .width = 200,
+                                        .height = 120});
+  const TerrainScene culled = hills_scene(camera, 1e-9, true),
+                     whole = hills_scene(camera, 1e-9, false);
+  auto vertices = [](const TerrainScene& s, size_t i) {
+    const size_t end = i + 1 < s.tiles.size() ? s.tiles[i + 1].first_vertex : s.altitude.size();
+    return end - s.tiles[i].first_vertex;
+  };
+  size_t fewer = 0;
+  for (size_t i = 0; i < culled.cells.size(); ++i) {
+    const auto at = std::find(whole.cells.begin(), whole.cells.end(), culled.cells[i]);
+    ASSERT_NE(at, whole.cells.end());
+    const size_t all = vertices(whole, size_t(at - whole.cells.begin()));
+    EXPECT_LE(vertices(culled, i), all);
+    fewer += vertices(culled, i) < all;
+  }
+  EXPECT_GT(fewer, 10u);
+  // Each vertex left is one of the whole's, at the same place (the skirts as deep).
+  auto points = [](const TerrainScene& s) {
+    std::vector<std::array<double, 3>> p(s.mesh.positions.size() / 3);
+    for (size_t v = 0; v < p.size(); ++v) std::copy_n(&s.mesh.positions[3 * v], 3, p[v].begin());
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  const auto left = points(culled), all = points(whole);
+  EXPECT_TRUE(std::includes(all.begin(), all.end(), left.begin(), left.end()));
+  const Fragments a = rasterize(culled.mesh, camera), b = rasterize(whole.mesh, camera);
+  size_t terrain = 0, differ = 0;
+  for (size_t i = 0; i < a.depth.size(); ++i) {
+    terrain += a.triangle[i] != Fragments::kSky;
+    differ += (a.triangle[i] == Fragments::kSky) != (b.triangle[i] == Fragments::kSky) ||
+              std::memcmp(&a.depth[i], &b.depth[i], sizeof(double)) != 0 ||
+              std::memcmp(&a.b1[i], &b.b1[i], sizeof(float)) != 0 ||
+              std::memcmp(&a.b2[i], &b.b2[i], sizeof(float)) != 0;
+  }
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(terrain, 200u * 60);
+}
+
 TEST(PanoramaCli, StripsGiveTheWholePicture) {
   GDALAllRegister();
   const std::string dir = test::temp_dir();
