@@ -646,11 +646,12 @@ std::vector<std::string> painted(const std::string& dir, const std::vector<CellI
   return out;
 }
 
-TEST(MpiSynthesis, TransferGivesTheSameBitsOnTwoRanksAndOnAShiftedWindow) {
+// Window A: the 4 children of `parent`; window B: A's right column and the cells right of it.
+// The transfer of A on 2 ranks is the single process's, and B's on A's right column is A's.
+void expect_transfer_same_bits_on_two_ranks_and_a_shifted_window(const char* parent) {
   const Grid& grid = default_grid();
-  // Window A: the 4 cells of Q21; window B: A's right column and the cells right of it.
-  const CellId q21 = CellId::Parse("Q21");
-  const std::vector<CellId> a = {q21.child(0), q21.child(1), q21.child(2), q21.child(3)};
+  const CellId p = CellId::Parse(parent);
+  const std::vector<CellId> a = {p.child(0), p.child(1), p.child(2), p.child(3)};
   std::vector<CellId> b, common;
   for (const CellId c : a) {
     const CellId right = grid.edge_neighbours(c)[1];
@@ -713,6 +714,21 @@ TEST(MpiSynthesis, TransferGivesTheSameBitsOnTwoRanksAndOnAShiftedWindow) {
   const std::vector<std::string> shifted = painted(transfer_run(b, 0), common);
   ASSERT_EQ(shifted.size(), 2 * common.size());
   EXPECT_EQ(shifted, painted(single, common));
+}
+
+TEST(MpiSynthesis, TransferGivesTheSameBitsOnTwoRanksAndOnAShiftedWindow) {
+  expect_transfer_same_bits_on_two_ranks_and_a_shifted_window("Q21");
+}
+
+// N13's right column lies on N's right edge, where an equatorial face meets N turned: those cells
+// synthesize their band in the neighbour's chart and cut it in (turned_edges.h); window B holds
+// the neighbour's cells beside them.
+TEST(MpiSynthesis, ACellBesideAPolarFacesTurnedEdgeToo) {
+  const Grid& grid = default_grid();
+  const CellId right = grid.edge_neighbours(CellId::Parse("N13").child(1))[1];
+  ASSERT_NE(right.face(), CellId::Parse("N").face());
+  ASSERT_NE(right.face(), CellId::Parse("O").face());  // not the edge laid unturned
+  expect_transfer_same_bits_on_two_ranks_and_a_shifted_window("N13");
 }
 
 }  // namespace
