@@ -3,15 +3,17 @@
 // P's frame continued above it, laid here by hand (and checked against the store's halo). Then:
 // the band of an N cell along that edge takes, between the edge and a cut, one synthesis of a
 // window across the edge in P's chart computed here (and P's cell that same synthesis on its
-// side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it): a cut
-// per row of the edge, and so at an output finer than the land cover (refine 1). A cell of
-// another tiling gives the same bits. Across each of the six turned edges (N and S with P, Q, R)
-// the sources continue as coherently as within a face.
+// side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it). The cut
+// is the minimum-error one of those two syntheses, computed here. At an output finer than the
+// land cover (refine 1) too, P's chart continues into N's band. A cell of another tiling gives
+// the same bits. Across each of the six turned edges (N and S with P, Q, R) the sources continue
+// as coherently as within a face.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <vector>
 
+#include "../seam_cut.h"
 #include "core/halo.h"
 #include "seams_fixture.h"
 
@@ -27,6 +29,7 @@ class TurnedEdges : public Seams {
 };
 
 constexpr int kBand = 32;                                 // turned_edges.h's kTurnedEdgeBand
+constexpr int kPin = 64;                                  // and kTurnedEdgePin
 constexpr uint32_t kLast = (1u << kLevel) - 1;            // N's right column of cells
 constexpr int64_t kEdgeCol = kFace - (kRow + 1) * kSize;  // P's first column beside that cell
 
@@ -59,7 +62,7 @@ TEST(TurnedEdgeCharts, TheChartsLaidByHandAreTheStoresHalo) {
   }
 }
 
-TEST_F(TurnedEdges, NsBandContinuesPsChartToACutThenItsOwn) {
+TEST_F(TurnedEdges, NsBandIsPsChartToTheMinimumErrorCutThenItsOwn) {
   // B: P's chart over the 32 rows above P (N's band) and P's first 32; A: the plane's N.
   const PixelRect across{kFace + kEdgeCol, -kBand, kSize, 2 * kBand};
   const auto b = whole(across, p_chart);
@@ -71,27 +74,45 @@ TEST_F(TurnedEdges, NsBandContinuesPsChartToACutThenItsOwn) {
       0u);
   EXPECT_EQ(compared, size_t(kSize * kBand));
 
-  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize);
-  const auto is = [&](int c, int r, const std::array<int, 2>& s) {
-    return out.at(c, r, 0) == float(s[0]) && out.at(c, r, 1) == float(s[1]);
+  // The cut the band must take: the minimum-error cut (seam_cut.h, itself checked against the
+  // exhaustive search in seam_cut_test.cpp) of the squared RGB error between a and b. N's row r
+  // lies along P's column kEdgeCol + kSize - 1 - r, the band's position i = kSize - 1 - r.
+  const auto b_at = [&](int r, int t) {
+    return b[size_t((kBand - 1 - t) * kSize + (kSize - 1 - r))];
   };
-  size_t rows_cut = 0, took_b = 0, took_a = 0;
-  for (int r = 0; r < kSize; ++r) {  // N's row r: P's column kEdgeCol + kSize - 1 - r
-    const auto b_at = [&](int t) { return b[size_t((kBand - 1 - t) * kSize + (kSize - 1 - r))]; };
-    const auto a_at = [&](int t) { return a[size_t(r * 48 + 47 - t)]; };
-    bool cut_found = false;
-    for (int cut = 1; cut < kBand && !cut_found; ++cut) {
-      bool ok = true;
-      for (int t = 0; t < 48 && ok; ++t) ok = is(kSize - 1 - t, r, t < cut ? b_at(t) : a_at(t));
-      cut_found = ok;
-    }
-    rows_cut += cut_found;
+  const auto a_at = [&](int r, int t) { return a[size_t(r * 48 + 47 - t)]; };
+  const ExemplarLevel& colours = transfer_exemplar(*params_)->pyramid.levels[0];
+  const auto colour = [&](const std::array<int, 2>& s, int k) {
+    return colours.rgb[3 * (size_t(s[1]) * size_t(colours.width) + size_t(s[0])) + size_t(k)];
+  };
+  std::vector<float> error(size_t(kSize) * kBand);
+  for (int r = 0; r < kSize; ++r)
     for (int t = 0; t < kBand; ++t) {
-      took_b += b_at(t) != a_at(t) && is(kSize - 1 - t, r, b_at(t));
-      took_a += b_at(t) != a_at(t) && is(kSize - 1 - t, r, a_at(t));
+      float d = 0;
+      for (int k = 0; k < 3; ++k) {
+        const float v = colour(b_at(r, t), k) - colour(a_at(r, t), k);
+        d += v * v;
+      }
+      error[size_t(t * kSize + kSize - 1 - r)] = d;
     }
-  }
-  EXPECT_EQ(rows_cut, size_t(kSize));
+  const std::vector<int> cut = seam_cut(error, kEdgeCol, kSize, kBand, kPin);
+  static_assert(kEdgeCol % kPin == 0);  // the pins: every kPin-th position from the first
+  for (int i = 0; i < kSize; i += kPin) EXPECT_EQ(cut[size_t(i)], kBand / 2) << i;
+
+  // Every pixel of N's 48 columns beside the edge: B before the cut, A beyond it.
+  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize);
+  size_t wrong = 0, took_b = 0, took_a = 0;
+  for (int r = 0; r < kSize; ++r)
+    for (int t = 0; t < 48; ++t) {
+      const bool takes_b = t < cut[size_t(kSize - 1 - r)];
+      const auto& e = takes_b ? b_at(r, t) : a_at(r, t);
+      wrong +=
+          out.at(kSize - 1 - t, r, 0) != float(e[0]) || out.at(kSize - 1 - t, r, 1) != float(e[1]);
+      const bool differ = t < kBand && b_at(r, t) != a_at(r, t);
+      took_b += differ && takes_b;
+      took_a += differ && !takes_b;
+    }
+  EXPECT_EQ(wrong, 0u);
   // Both sides of the cut hold a good share of the band.
   EXPECT_GT(took_b, size_t(kSize * kBand / 5));
   EXPECT_GT(took_a, size_t(kSize * kBand / 5));
