@@ -26,6 +26,7 @@ class TurnedEdges : public Seams {
  public:
   using Seams::plane_pixel;
   using Seams::transfer;
+  using Seams::whole;
 };
 
 constexpr int kBand = 32;                                 // turned_edges.h's kTurnedEdgeBand
@@ -118,20 +119,32 @@ TEST_F(TurnedEdges, NsBandIsPsChartToTheMinimumErrorCutThenItsOwn) {
   EXPECT_GT(took_a, size_t(kSize * kBand / 5));
 }
 
+// Pixels of N's cell (kLast, row) at kLevel (tiles of kSize, output `refine` levels finer) whose
+// source differs from that of the same pixel in N's cell one level coarser (tiles of 2 * kSize).
+size_t differs_from_the_coarser_tiling(uint32_t row, int refine) {
+  const Tile<float> fine =
+      TurnedEdges::transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, row), kSize, refine);
+  const Tile<float> coarse = TurnedEdges::transfer(
+      CellId::FromFaceColRow(kFaceN, kLevel - 1, kLast / 2, row / 2), 2 * kSize, refine);
+  const int n = kSize << refine, dr = int(row % 2) * n;
+  size_t differ = 0;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      for (int k = 0; k < 2; ++k) differ += fine.at(c, r, k) != coarse.at(c + n, r + dr, k);
+  return differ;
+}
+
 TEST_F(TurnedEdges, ACellOfAnotherTilingGivesTheSameBits) {
   // N's cell one level coarser (tiles of 512) holds the level-5 cell as a quarter: beside P's
-  // edge, and at the corner where N meets P and Q (two bands, a folded halo quadrant).
-  for (const uint32_t row : {kRow, 0u}) {
-    const Tile<float> fine = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, row), kSize);
-    const Tile<float> coarse =
-        transfer(CellId::FromFaceColRow(kFaceN, kLevel - 1, kLast / 2, row / 2), 2 * kSize);
-    const int dr = int(row % 2) * kSize;
-    size_t differ = 0;
-    for (int r = 0; r < kSize; ++r)
-      for (int c = 0; c < kSize; ++c)
-        for (int k = 0; k < 2; ++k) differ += fine.at(c, r, k) != coarse.at(c + kSize, r + dr, k);
-    EXPECT_EQ(differ, 0u) << "row " << row;
-  }
+  // edge, at the corner where N meets P and Q (two bands, a folded halo quadrant), and at the
+  // corner where N meets O and P (P's band runs into N's unturned edge with O).
+  for (const uint32_t row : {kRow, 0u, kLast})
+    EXPECT_EQ(differs_from_the_coarser_tiling(row, 0), 0u) << "row " << row;
+}
+
+TEST_F(TurnedEdges, AtRefine1ACellOfAnotherTilingGivesTheSameBits) {
+  // The pins along the edge come from the output's pixels (tiles of 512 and 1024 here).
+  EXPECT_EQ(differs_from_the_coarser_tiling(kRow, 1), 0u);
 }
 
 // Of the pixels of the equatorial cell `cell`'s edge row (row 0 for N above it, the last for S
@@ -169,6 +182,49 @@ TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
       EXPECT_GT(inside, 0.2) << cell.ToText();
       EXPECT_GT(across, 0.7 * inside) << cell.ToText() << (top ? " N" : " S");
     }
+}
+
+// The band of the polar cell across the edge row of the equatorial cell `cell` (row 0 for N above
+// it, the last for S below) against one synthesis of the 256 x 64 window across that edge in
+// `cell`'s chart, laid from the store's halo of `cell` (pixel_source: not UnfoldedFaces nor
+// turned_edges.h). The band is that synthesis beside the edge, and to a depth of at least
+// kBand / 2 at each pin (where the cut lies at kBand / 2), whatever the side and the turn.
+void expect_band_continues_the_halos_chart(CellId cell, bool top) {
+  const Grid& grid = default_grid();
+  const int edge = top ? 0 : kSize - 1, step = top ? -1 : 1;
+  const auto first = FacePlane(grid).tile_pixel(cell, kSize, 0, 0);
+  const PixelRect across{first[0], first[1] + (top ? -kBand : kSize - kBand), kSize, 2 * kBand};
+  const auto b = TurnedEdges::whole(across, [&](int64_t x, int64_t r) {
+    return *pixel_source(grid, cell, kSize, int(x - first[0]), int(r - first[1]));
+  });
+  const FaceCoord corner = *pixel_source(grid, cell, kSize, 0, edge + step);
+  const Tile<float> polar = TurnedEdges::transfer(
+      CellId::FromFaceColRow(corner.face, kLevel, uint32_t(corner.col / kSize),
+                             uint32_t(corner.row / kSize)),
+      kSize);
+  size_t beside = 0, short_pins = 0;
+  for (int c = 0; c < kSize; ++c) {
+    int matching = 0;  // depths 0 .. matching - 1 are the chart's
+    for (int t = 0; t < kBand && matching == t; ++t) {
+      const FaceCoord q = *pixel_source(grid, cell, kSize, c, edge + step * (1 + t));
+      const auto& e = b[size_t((top ? kBand - 1 - t : kBand + t) * kSize + c)];
+      const int qc = int(q.col % kSize), qr = int(q.row % kSize);
+      matching += polar.at(qc, qr, 0) == float(e[0]) && polar.at(qc, qr, 1) == float(e[1]);
+    }
+    beside += matching == 0;
+    short_pins += c % kPin == 0 && matching < kBand / 2;
+  }
+  EXPECT_EQ(beside, 0u) << cell.ToText();
+  EXPECT_EQ(short_pins, 0u) << cell.ToText();
+}
+
+TEST_F(TurnedEdges, SsBandsContinueTheChartsOfPQAndRFromTheStoresHalo) {
+  for (const int face : {kFaceP, kFaceQ, kFaceR})
+    expect_band_continues_the_halos_chart(CellId::FromFaceColRow(face, kLevel, kRow, kLast), false);
+}
+
+TEST_F(TurnedEdges, AcrossTheHalfTurnNsBandContinuesQsChartFromTheStoresHalo) {
+  expect_band_continues_the_halos_chart(CellId::FromFaceColRow(kFaceQ, kLevel, kRow, 0), true);
 }
 
 TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand) {
