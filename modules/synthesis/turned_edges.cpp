@@ -1,5 +1,6 @@
 #include "turned_edges.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdlib>
@@ -54,8 +55,9 @@ std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisP
       const Pixel p =
           cell_pixel({x - plane[0], y - plane[1]}, e.guide_first, e.col_step, e.row_step);
       if (p[0] < -halo || p[0] >= tile + halo || p[1] < -halo || p[1] >= tile + halo)
-        throw Error("synthesis.transfer: the band along face " + std::to_string(e.face) +
-                    " needs guides beyond the cell's halo of " + std::to_string(halo));
+        throw Error("synthesis.transfer: " + e.cell.ToText() + "'s band along face " +
+                    std::to_string(e.face) + " needs guides beyond its halo of " +
+                    std::to_string(halo));
       const size_t i = size_t(p[1] + halo) * size_t(side) + size_t(p[0] + halo);
       chart.labels.push_back(guides.labels[i]);
       if (altitude) chart.altitude.push_back(guides.altitude[i]);
@@ -105,6 +107,9 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
   const int face = cell.face();
   const auto& here = plane.place(face);
   if (here[1] == 0) return {};
+  if (!std::has_single_bit(unsigned(tile_size)))
+    throw Error("synthesis.transfer: tiles of " + std::to_string(tile_size) +
+                " pixels on a polar face, not a power of two");
   const int n = tile_size << refine;
   if (n % kTurnedEdgePin != 0)
     throw Error("synthesis.transfer: output tiles of " + std::to_string(n) +
@@ -119,6 +124,7 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
     const auto in = UnfoldedFaces(grid, g, guide_level).place_tile(cell, tile_size);
     if (!out || !in) throw Error("synthesis.transfer: face " + std::to_string(g) + " has no place");
     TurnedEdge e;
+    e.cell = cell;
     e.face = g;
     e.face_pixels = int64_t(n) << cell.level();
     e.first = out->first;
@@ -144,6 +150,9 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
                                        const std::vector<TurnedEdge>& edges,
                                        std::vector<int32_t> own) {
   if (edges.empty()) return own;
+  if (!guides.distance.empty() || !guides.depth.empty())
+    throw Error("synthesis.transfer: " + edges[0].cell.ToText() +
+                "'s band along a turned edge lays no distance or depth guides");
   const int n = (int(guides.rect.width) - 2 * halo) << guides.shift;
   const ExemplarLevel& level = pyramid.levels[0];
   const auto colour_error = [&](int32_t x, int32_t y) {

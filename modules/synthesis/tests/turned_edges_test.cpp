@@ -8,12 +8,16 @@
 // land cover (refine 1) too, P's chart continues into N's band. A cell of another tiling gives
 // the same bits. Across each of the six turned edges (N and S with P, Q, R) the sources continue
 // as coherently as within a face.
+#include "../turned_edges.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "../seam_cut.h"
+#include "core/error.h"
 #include "core/halo.h"
 #include "seams_fixture.h"
 
@@ -27,6 +31,8 @@ class TurnedEdges : public Seams {
   using Seams::plane_pixel;
   using Seams::transfer;
   using Seams::whole;
+  static std::shared_ptr<const TransferExemplar> exemplar() { return transfer_exemplar(*params_); }
+  static SynthesisParams sp() { return synthesis_params(*params_); }
 };
 
 constexpr int kBand = 32;                                 // turned_edges.h's kTurnedEdgeBand
@@ -254,6 +260,52 @@ TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand)
     }
   EXPECT_EQ(beside, 0u);
   EXPECT_GT(in_band, size_t(n * kBand / 5));
+}
+
+// join_turned_edges on N's cell beside P with guides of `halo` pixels a side (all class 0):
+// the message of the maquette::Error it throws, or "" if none.
+std::string join_error(int halo, bool distance) {
+  const Grid& grid = default_grid();
+  const CellId cell = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow);
+  const auto edges = turned_edges(grid, FacePlane(grid), cell, kSize, 0);
+  EXPECT_EQ(edges.size(), 1u);
+  TargetGuides guides;
+  const int side = kSize + 2 * halo;
+  guides.rect = {0, 0, side, side};
+  guides.labels.assign(size_t(side) * size_t(side), 0);
+  if (distance) guides.distance.assign(guides.labels.size(), 1.0f);
+  try {
+    join_turned_edges(TurnedEdges::exemplar()->pyramid, TurnedEdges::sp(), guides, halo, edges,
+                      std::vector<int32_t>(size_t(kSize) * kSize));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_F(TurnedEdges, ABandBeyondTheGuidesHaloOrWithGuidesItDoesNotLayIsAnErrorNamingTheCell) {
+  const std::string cell = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow).ToText();
+  const std::string small = join_error(100, false);
+  EXPECT_NE(small.find(cell + "'s band along face 2 needs guides beyond its halo of 100"),
+            std::string::npos)
+      << small;
+  const int halo = operator_->spec().halo;
+  EXPECT_EQ(join_error(halo, false), "");
+  const std::string distance = join_error(halo, true);
+  EXPECT_NE(distance.find(cell + "'s band along a turned edge lays no distance or depth guides"),
+            std::string::npos)
+      << distance;
+}
+
+TEST(TurnedEdgeTiles, OnAPolarFaceTilesNotAPowerOfTwoOrFinerThanThePinsAreAnError) {
+  const Grid& grid = default_grid();
+  const FacePlane plane(grid);
+  const CellId polar = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow);
+  EXPECT_THROW(turned_edges(grid, plane, polar, 384, 0), Error);
+  EXPECT_THROW(turned_edges(grid, plane, polar, 32, 0), Error);
+  EXPECT_EQ(turned_edges(grid, plane, polar, 32, 1).size(), 1u);
+  EXPECT_TRUE(
+      turned_edges(grid, plane, CellId::FromFaceColRow(kFaceP, kLevel, 0, 0), 384, 0).empty());
 }
 
 }  // namespace
