@@ -39,15 +39,12 @@ std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisP
   const Pixel lo = {std::min(a[0], b[0]), std::min(a[1], b[1])};
   const PixelRect window{e.plane[0] + lo[0], e.plane[1] + lo[1], std::abs(a[0] - b[0]) + 1,
                          std::abs(a[1] - b[1]) + 1};
-  const int shift = guides.shift, grown = synthesis_halo();
+  const int shift = guides.shift;
   const int side = int(guides.rect.width), tile = side - 2 * halo;
   TargetGuides chart;
   chart.shift = shift;
   chart.col_period = guides.col_period;
-  chart.rect.col0 = (window.col0 - grown) >> shift;
-  chart.rect.row0 = (window.row0 - grown) >> shift;
-  chart.rect.width = ((window.col0 + window.width + grown - 1) >> shift) - chart.rect.col0 + 1;
-  chart.rect.height = ((window.row0 + window.height + grown - 1) >> shift) - chart.rect.row0 + 1;
+  chart.rect = guide_rect(window, shift);
   const bool altitude = !guides.altitude.empty();
   const Pixel plane = {e.plane[0] >> shift, e.plane[1] >> shift};
   for (int64_t y = chart.rect.row0; y < chart.rect.row0 + chart.rect.height; ++y)
