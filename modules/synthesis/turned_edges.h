@@ -27,6 +27,7 @@
 #include "core/cell_id.h"
 #include "core/face_plane.h"
 #include "core/grid.h"
+#include "core/unfolded_faces.h"
 #include "synthesis.h"
 
 namespace maquette::synthesis {
@@ -41,10 +42,9 @@ struct TurnedEdge {
   int face = -1;  // G
   int side = 0;
   int64_t face_pixels = 0;  // G's pixels a side at the output's level
-  // The cell's pixel (c, r) lies at G-frame first + c * col_step + r * row_step, at the output's
-  // level and at the guides' (the tile's, no refine).
-  std::array<int64_t, 2> first{}, col_step{}, row_step{};
-  std::array<int64_t, 2> guide_first{};
+  // Where the cell lies in G's frame (UnfoldedFaces anchored on G), at the output's level and at
+  // the guides' (the tile's, no refine).
+  UnfoldedFaces::TilePlace place{}, guide_place{};
   std::array<int64_t, 2> plane{};  // G's first pixel in the plane, at the output's level
 
   // A G-frame pixel beyond the side: its depth (0 beside the edge) and position along the edge.
