@@ -54,6 +54,17 @@ class UnfoldedFaces {
   // no place.
   struct TilePlace {
     std::array<int64_t, 2> first, col_step, row_step;
+
+    // The anchor-frame pixel of the tile's pixel (c, r), and the tile's pixel at anchor-frame q
+    // (the steps are a rotation: its inverse is its transpose).
+    std::array<int64_t, 2> at(int64_t c, int64_t r) const {
+      return {first[0] + c * col_step[0] + r * row_step[0],
+              first[1] + c * col_step[1] + r * row_step[1]};
+    }
+    std::array<int64_t, 2> tile_pixel(const std::array<int64_t, 2>& q) const {
+      const int64_t dc = q[0] - first[0], dr = q[1] - first[1];
+      return {dc * col_step[0] + dr * col_step[1], dc * row_step[0] + dr * row_step[1]};
+    }
   };
   std::optional<TilePlace> place_tile(CellId cell, int size) const;
 

@@ -329,8 +329,7 @@ class Planner {
     for (const CellId c : cells) {
       const auto place = plane.place_tile(c, tile_size);  // the anchor's faces have a place
       for (const int64_t i : {int64_t(0), int64_t(tile_size - 1)}) {
-        const int64_t col = place->first[0] + i * (place->col_step[0] + place->row_step[0]);
-        const int64_t row = place->first[1] + i * (place->col_step[1] + place->row_step[1]);
+        const auto [col, row] = place->at(i, i);
         col0 = std::min(col0, col), row0 = std::min(row0, row);
         col1 = std::max(col1, col), row1 = std::max(row1, row);
       }

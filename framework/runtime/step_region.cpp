@@ -19,26 +19,21 @@ TilePlace mosaic_place(const UnfoldedFaces& plane, const Mosaic& mosaic, CellId 
   return p;
 }
 
-int mosaic_col(const TilePlace& at, int c, int r) {
-  return int(at.first[0] + c * at.col_step[0] + r * at.row_step[0]);
-}
-int mosaic_row(const TilePlace& at, int c, int r) {
-  return int(at.first[1] + c * at.col_step[1] + r * at.row_step[1]);
-}
-
 // Copies `src` (no halo) into `dst` at `at`, or the reverse.
 void paste(const Tile<float>& src, Tile<float>& dst, const TilePlace& at) {
   for (int r = 0; r < src.size(); ++r)
-    for (int c = 0; c < src.size(); ++c)
-      for (int k = 0; k < src.channels(); ++k)
-        dst.at(mosaic_col(at, c, r), mosaic_row(at, c, r), k) = src.at(c, r, k);
+    for (int c = 0; c < src.size(); ++c) {
+      const auto q = at.at(c, r);
+      for (int k = 0; k < src.channels(); ++k) dst.at(int(q[0]), int(q[1]), k) = src.at(c, r, k);
+    }
 }
 
 void cut(const Tile<float>& src, Tile<float>& dst, const TilePlace& at) {
   for (int r = 0; r < dst.size(); ++r)
-    for (int c = 0; c < dst.size(); ++c)
-      for (int k = 0; k < dst.channels(); ++k)
-        dst.at(c, r, k) = src.at(mosaic_col(at, c, r), mosaic_row(at, c, r), k);
+    for (int c = 0; c < dst.size(); ++c) {
+      const auto q = at.at(c, r);
+      for (int k = 0; k < dst.channels(); ++k) dst.at(c, r, k) = src.at(int(q[0]), int(q[1]), k);
+    }
 }
 
 // The features of the port within its reach of any of `cells`, by id.
@@ -66,16 +61,18 @@ void fill_halo(const UnfoldedFaces& plane, const Mosaic& input, const std::vecto
   for (const CellId c : cells) {
     places.push_back(mosaic_place(plane, input, c, tile_size));
     for (int r = 0; r < tile_size; ++r)
-      for (int k = 0; k < tile_size; ++k)
-        covered[size_t(mosaic_row(places.back(), k, r)) * size_t(side) +
-                size_t(mosaic_col(places.back(), k, r))] = 1;
+      for (int k = 0; k < tile_size; ++k) {
+        const auto q = places.back().at(k, r);
+        covered[size_t(q[1]) * size_t(side) + size_t(q[0])] = 1;
+      }
   }
   const int level = input.level - log2_tile_size(tile_size);
   std::map<CellId, std::optional<Tile<float>>> tiles;
   for (const TilePlace& at : places)
     for (int r = -halo; r < tile_size + halo; ++r)
       for (int c = -halo; c < tile_size + halo; ++c) {
-        const int col = mosaic_col(at, c, r), row = mosaic_row(at, c, r);
+        const auto q = at.at(c, r);
+        const int col = int(q[0]), row = int(q[1]);
         char& done = covered[size_t(row) * size_t(side) + size_t(col)];
         if (done) continue;  // a cell's own sample, or filled already
         done = 1;

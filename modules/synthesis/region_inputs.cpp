@@ -158,10 +158,8 @@ std::vector<uint8_t> region_cells(const StepContext& ctx, const Mosaic& input, c
     if (!at) continue;
     for (int r = 0; r < n; ++r) {
       for (int c = 0; c < n; ++c) {
-        const int64_t col =
-            at->first[0] + c * at->col_step[0] + r * at->row_step[0] - input.origin_col;
-        const int64_t row =
-            at->first[1] + c * at->col_step[1] + r * at->row_step[1] - input.origin_row;
+        const auto q = at->at(c, r);
+        const int64_t col = q[0] - input.origin_col, row = q[1] - input.origin_row;
         if (col >= 0 && row >= 0 && col < side && row < side) mask[size_t(row) * side + col] = 1;
       }
     }

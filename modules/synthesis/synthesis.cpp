@@ -366,6 +366,13 @@ int synthesis_halo() {
   return int(halo);
 }
 
+PixelRect guide_rect(const PixelRect& out, int shift) {
+  const int64_t halo = synthesis_halo();
+  const int64_t col0 = (out.col0 - halo) >> shift, row0 = (out.row0 - halo) >> shift;
+  return {col0, row0, ((out.col0 + out.width + halo - 1) >> shift) - col0 + 1,
+          ((out.row0 + out.height + halo - 1) >> shift) - row0 + 1};
+}
+
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
                                 const SynthesisParams& params, const PixelRect& out) {
   if (int(pyramid.levels.size()) != kLevels)

@@ -136,6 +136,9 @@ struct TargetGuides {
 
 // Pixels of halo the guides need around an output window, at the output's resolution.
 int synthesis_halo();
+// The guide pixels (guides.shift = shift) covering output window `out` grown by synthesis_halo():
+// the guides' rect synthesize() needs for `out`.
+PixelRect guide_rect(const PixelRect& out, int shift);
 
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
 // exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by

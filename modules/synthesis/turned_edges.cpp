@@ -1,5 +1,6 @@
 #include "turned_edges.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdlib>
@@ -15,19 +16,6 @@ namespace {
 
 using Pixel = std::array<int64_t, 2>;
 
-int64_t dot(const Pixel& a, const Pixel& b) { return a[0] * b[0] + a[1] * b[1]; }
-
-// The cell's pixel at G-frame q (the steps are a rotation: its inverse is its transpose).
-Pixel cell_pixel(const Pixel& q, const Pixel& first, const Pixel& col_step, const Pixel& row_step) {
-  const Pixel d = {q[0] - first[0], q[1] - first[1]};
-  return {dot(d, col_step), dot(d, row_step)};
-}
-
-Pixel frame_pixel(const TurnedEdge& e, int64_t c, int64_t r) {
-  return {e.first[0] + c * e.col_step[0] + r * e.row_step[0],
-          e.first[1] + c * e.col_step[1] + r * e.row_step[1]};
-}
-
 // B: the band of `e` over the cell (positions s0 .. s0 + n - 1, depths 0 .. kTurnedEdgeBand - 1)
 // synthesized in G's chart, indexed [t * n + s - s0].
 std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
@@ -38,24 +26,21 @@ std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisP
   const Pixel lo = {std::min(a[0], b[0]), std::min(a[1], b[1])};
   const PixelRect window{e.plane[0] + lo[0], e.plane[1] + lo[1], std::abs(a[0] - b[0]) + 1,
                          std::abs(a[1] - b[1]) + 1};
-  const int shift = guides.shift, grown = synthesis_halo();
+  const int shift = guides.shift;
   const int side = int(guides.rect.width), tile = side - 2 * halo;
   TargetGuides chart;
   chart.shift = shift;
   chart.col_period = guides.col_period;
-  chart.rect.col0 = (window.col0 - grown) >> shift;
-  chart.rect.row0 = (window.row0 - grown) >> shift;
-  chart.rect.width = ((window.col0 + window.width + grown - 1) >> shift) - chart.rect.col0 + 1;
-  chart.rect.height = ((window.row0 + window.height + grown - 1) >> shift) - chart.rect.row0 + 1;
+  chart.rect = guide_rect(window, shift);
   const bool altitude = !guides.altitude.empty();
   const Pixel plane = {e.plane[0] >> shift, e.plane[1] >> shift};
   for (int64_t y = chart.rect.row0; y < chart.rect.row0 + chart.rect.height; ++y)
     for (int64_t x = chart.rect.col0; x < chart.rect.col0 + chart.rect.width; ++x) {
-      const Pixel p =
-          cell_pixel({x - plane[0], y - plane[1]}, e.guide_first, e.col_step, e.row_step);
+      const Pixel p = e.guide_place.tile_pixel({x - plane[0], y - plane[1]});
       if (p[0] < -halo || p[0] >= tile + halo || p[1] < -halo || p[1] >= tile + halo)
-        throw Error("synthesis.transfer: the band along face " + std::to_string(e.face) +
-                    " needs guides beyond the cell's halo of " + std::to_string(halo));
+        throw Error("synthesis.transfer: " + e.cell.ToText() + "'s band along face " +
+                    std::to_string(e.face) + " needs guides beyond its halo of " +
+                    std::to_string(halo));
       const size_t i = size_t(p[1] + halo) * size_t(side) + size_t(p[0] + halo);
       chart.labels.push_back(guides.labels[i]);
       if (altitude) chart.altitude.push_back(guides.altitude[i]);
@@ -105,6 +90,9 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
   const int face = cell.face();
   const auto& here = plane.place(face);
   if (here[1] == 0) return {};
+  if (!std::has_single_bit(unsigned(tile_size)))
+    throw Error("synthesis.transfer: tiles of " + std::to_string(tile_size) +
+                " pixels on a polar face, not a power of two");
   const int n = tile_size << refine;
   if (n % kTurnedEdgePin != 0)
     throw Error("synthesis.transfer: output tiles of " + std::to_string(n) +
@@ -119,21 +107,20 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
     const auto in = UnfoldedFaces(grid, g, guide_level).place_tile(cell, tile_size);
     if (!out || !in) throw Error("synthesis.transfer: face " + std::to_string(g) + " has no place");
     TurnedEdge e;
+    e.cell = cell;
     e.face = g;
     e.face_pixels = int64_t(n) << cell.level();
-    e.first = out->first;
-    e.col_step = out->col_step;
-    e.row_step = out->row_step;
-    e.guide_first = in->first;
+    e.place = *out;
+    e.guide_place = *in;
     e.plane = {there[0] * e.face_pixels, there[1] * e.face_pixels};
-    const Pixel centre = frame_pixel(e, n / 2, n / 2);
+    const Pixel centre = e.place.at(n / 2, n / 2);
     e.side = centre[1] < 0                ? 0
              : centre[0] >= e.face_pixels ? 1
              : centre[1] >= e.face_pixels ? 2
                                           : 3;
-    int64_t nearest = e.depth(e.first);
+    int64_t nearest = e.depth(e.place.first);
     for (const auto& [c, r] : {std::pair{n - 1, 0}, std::pair{0, n - 1}, std::pair{n - 1, n - 1}})
-      nearest = std::min(nearest, e.depth(frame_pixel(e, c, r)));
+      nearest = std::min(nearest, e.depth(e.place.at(c, r)));
     if (nearest < kTurnedEdgeBand) edges.push_back(e);
   }
   return edges;
@@ -144,6 +131,9 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
                                        const std::vector<TurnedEdge>& edges,
                                        std::vector<int32_t> own) {
   if (edges.empty()) return own;
+  if (!guides.distance.empty() || !guides.depth.empty())
+    throw Error("synthesis.transfer: " + edges[0].cell.ToText() +
+                "'s band along a turned edge lays no distance or depth guides");
   const int n = (int(guides.rect.width) - 2 * halo) << guides.shift;
   const ExemplarLevel& level = pyramid.levels[0];
   const auto colour_error = [&](int32_t x, int32_t y) {
@@ -158,23 +148,22 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
   const auto owner = [&](int64_t c, int64_t r) {
     size_t best = 0;
     for (size_t k = 1; k < edges.size(); ++k)
-      if (edges[k].depth(frame_pixel(edges[k], c, r)) <
-          edges[best].depth(frame_pixel(edges[best], c, r)))
+      if (edges[k].depth(edges[k].place.at(c, r)) < edges[best].depth(edges[best].place.at(c, r)))
         best = k;
     return best;
   };
   std::vector<int32_t> out = own;
   for (size_t k = 0; k < edges.size(); ++k) {
     const TurnedEdge& e = edges[k];
-    int64_t s0 = e.along(e.first);
+    int64_t s0 = e.along(e.place.first);
     for (const int64_t c : {0, n - 1})
-      for (const int64_t r : {0, n - 1}) s0 = std::min(s0, e.along(frame_pixel(e, c, r)));
+      for (const int64_t r : {0, n - 1}) s0 = std::min(s0, e.along(e.place.at(c, r)));
     const std::vector<int32_t> band = chart_band(pyramid, sp, guides, halo, e, s0, n);
     std::vector<float> error(band.size());
     std::vector<size_t> at(band.size());  // each band pixel's index in the output
     for (int64_t t = 0; t < kTurnedEdgeBand; ++t)
       for (int64_t s = 0; s < n; ++s) {
-        const Pixel p = cell_pixel(e.at(s0 + s, t), e.first, e.col_step, e.row_step);
+        const Pixel p = e.place.tile_pixel(e.at(s0 + s, t));
         const size_t i = size_t(t * n + s);
         at[i] = size_t(p[1] * n + p[0]);
         error[i] = colour_error(band[i], own[at[i]]);

@@ -27,6 +27,7 @@
 #include "core/cell_id.h"
 #include "core/face_plane.h"
 #include "core/grid.h"
+#include "core/unfolded_faces.h"
 #include "synthesis.h"
 
 namespace maquette::synthesis {
@@ -37,13 +38,13 @@ inline constexpr int kTurnedEdgePin = 64;   // output pixels between the cut's p
 // One turned edge of a polar cell's face, in the face G across it: G's face frame at some pixel
 // level continued beyond its side (0 top, 1 right, 2 bottom, 3 left) over the cell.
 struct TurnedEdge {
+  CellId cell;    // the polar cell
   int face = -1;  // G
   int side = 0;
   int64_t face_pixels = 0;  // G's pixels a side at the output's level
-  // The cell's pixel (c, r) lies at G-frame first + c * col_step + r * row_step, at the output's
-  // level and at the guides' (the tile's, no refine).
-  std::array<int64_t, 2> first{}, col_step{}, row_step{};
-  std::array<int64_t, 2> guide_first{};
+  // Where the cell lies in G's frame (UnfoldedFaces anchored on G), at the output's level and at
+  // the guides' (the tile's, no refine).
+  UnfoldedFaces::TilePlace place{}, guide_place{};
   std::array<int64_t, 2> plane{};  // G's first pixel in the plane, at the output's level
 
   // A G-frame pixel beyond the side: its depth (0 beside the edge) and position along the edge.
@@ -56,13 +57,17 @@ struct TurnedEdge {
 // The turned edges of `cell`'s face that the cell's output (tiles of tile_size << refine) lies
 // within kTurnedEdgeBand pixels of: none on an equatorial face, nor on a polar face's edge laid
 // unturned in the plane. Read off the grid's adjacency (UnfoldedFaces) and the plane's places.
+// Throws maquette::Error on a polar face when tile_size is not a power of two (the store's tiles
+// are), when tile_size << refine is not a multiple of kTurnedEdgePin (the cut's pins must divide
+// every cell's stretch of the edge; tiles of 256 or more always are), or when G has no place.
 std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, CellId cell,
                                      int tile_size, int refine);
 
 // The cell's sources (`own`, synthesize()'s for its output tile, row-major) with each turned
 // edge's band joined as above. `guides` are the cell's own: its tile with a halo of `halo`
-// guide pixels, in the plane (as synthesis.transfer lays them). Throws maquette::Error if a band's
-// guides reach beyond that halo.
+// guide pixels, in the plane (as synthesis.transfer lays them): labels and altitude, which the
+// band lays turned into G's chart. Throws maquette::Error, naming the cell, if a band's guides
+// reach beyond that halo, or if `guides` hold distance or depth (the band does not lay them).
 std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
                                        const TargetGuides& guides, int halo,
                                        const std::vector<TurnedEdge>& edges,

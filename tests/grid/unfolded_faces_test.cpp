@@ -1,14 +1,16 @@
 // The faces unfolded around an anchor (core/unfolded_faces.h): the neighbour strips equal the
 // grid's own wrap on every pixel, to_anchor inverts from_anchor, the unturned N-O strip and the
 // turned N-P strip lie where PROJ's rhealpix puts the plane points (the P square turned about
-// the corner it shares with N), and across every seam of every anchor neighbouring samples are
-// as far apart on the ellipsoid (GeographicLib) as neighbours within a face.
+// the corner it shares with N), a placed tile's pixels lie at its place, and across every seam of
+// every anchor neighbouring samples are as far apart on the ellipsoid (GeographicLib) as neighbours
+// within a face.
 #include "core/unfolded_faces.h"
 
 #include <gtest/gtest.h>
 #include <proj.h>
 
 #include <GeographicLib/Geodesic.hpp>
+#include <array>
 #include <cmath>
 
 #include "core/halo.h"
@@ -59,6 +61,34 @@ TEST(UnfoldedFaces, StripsAreTheGridsWrapAndInvert) {
   EXPECT_TRUE(UnfoldedFaces::adjacent(grid, 0, 1));   // N, O
   EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 0, 5));  // N, S
   EXPECT_FALSE(UnfoldedFaces::adjacent(grid, 1, 3));  // O, Q
+}
+
+// Every placed tile's pixel (c, r) at TilePlace::at(c, r) is the cell's own pixel there, read
+// back with from_anchor, and tile_pixel() inverts at().
+TEST(UnfoldedFaces, APlacedTilesPixelsLieAtItsPlaceAndInvert) {
+  const Grid& grid = default_grid();
+  constexpr int kSize = 4, kCellLevel = kLevel - 2;
+  for (int anchor = 0; anchor < CellId::kNumFaces; ++anchor) {
+    const UnfoldedFaces plane(grid, anchor, kLevel);
+    for (int face = 0; face < CellId::kNumFaces; ++face) {
+      if (!plane.places(face)) continue;
+      for (const auto& [col, row] : {std::array<uint32_t, 2>{0, 0}, {3, 1}, {2, 3}}) {
+        const CellId cell = CellId::FromFaceColRow(face, kCellLevel, col, row);
+        const auto place = plane.place_tile(cell, kSize);
+        ASSERT_TRUE(place) << cell.ToText();
+        for (int r = 0; r < kSize; ++r)
+          for (int c = 0; c < kSize; ++c) {
+            const auto q = place->at(c, r);
+            const auto p = plane.from_anchor(q[0], q[1]);
+            ASSERT_TRUE(p) << anchor << " " << cell.ToText();
+            EXPECT_EQ((std::array<int64_t, 3>{p->face, p->col, p->row}),
+                      (std::array<int64_t, 3>{face, col * kSize + c, row * kSize + r}))
+                << anchor << " " << cell.ToText() << " " << c << " " << r;
+            EXPECT_EQ(place->tile_pixel(q), (std::array<int64_t, 2>{c, r}));
+          }
+      }
+    }
+  }
 }
 
 // Anchor N: the strip below it is O's plane as PROJ lays it (N sits above O); the strip right of

@@ -9,6 +9,10 @@
 #
 #   bash modules/synthesis/tests/polar_edge_picture.sh BUILD_AFTER SHARED_DATA_DIR OUT.jpg \
 #     BUILD_BEFORE
+if [[ $# -ne 4 ]]; then
+  echo "usage: $0 BUILD_AFTER SHARED_DATA_DIR OUT.jpg BUILD_BEFORE" >&2
+  exit 2
+fi
 # shellcheck source=tests/bridge/picture.sh
 source "$(dirname "$0")/../../../tests/bridge/picture.sh"
 before=$(cd "$4" && pwd)

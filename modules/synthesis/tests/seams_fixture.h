@@ -132,12 +132,8 @@ class Seams : public ::testing::Test {
     const Grid& grid = default_grid();
     const auto table = class_table(params_->at("landcover_classes"), "seams");
     TargetGuides g;
-    const int halo = synthesis_halo();
     g.shift = shift;
-    g.rect.col0 = (out.col0 - halo) >> shift;
-    g.rect.row0 = (out.row0 - halo) >> shift;
-    g.rect.width = ((out.col0 + out.width + halo - 1) >> shift) - g.rect.col0 + 1;
-    g.rect.height = ((out.row0 + out.height + halo - 1) >> shift) - g.rect.row0 + 1;
+    g.rect = guide_rect(out, shift);
     g.col_period = (4 * kFace) << shift;
     for (int64_t r = g.rect.row0; r < g.rect.row0 + g.rect.height; ++r)
       for (int64_t c = g.rect.col0; c < g.rect.col0 + g.rect.width; ++c) {

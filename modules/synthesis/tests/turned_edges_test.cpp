@@ -3,15 +3,21 @@
 // P's frame continued above it, laid here by hand (and checked against the store's halo). Then:
 // the band of an N cell along that edge takes, between the edge and a cut, one synthesis of a
 // window across the edge in P's chart computed here (and P's cell that same synthesis on its
-// side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it): a cut
-// per row of the edge, and so at an output finer than the land cover (refine 1). A cell of
-// another tiling gives the same bits. Across each of the six turned edges (N and S with P, Q, R)
-// the sources continue as coherently as within a face.
+// side), and beyond the cut the plane's synthesis of N (N's chart, P turned beside it). The cut
+// is the minimum-error one of those two syntheses, computed here. At an output finer than the
+// land cover (refine 1) too, P's chart continues into N's band. A cell of another tiling gives
+// the same bits. Across each of the six turned edges (N and S with P, Q, R) the sources continue
+// as coherently as within a face.
+#include "../turned_edges.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
+#include "../seam_cut.h"
+#include "core/error.h"
 #include "core/halo.h"
 #include "seams_fixture.h"
 
@@ -24,9 +30,13 @@ class TurnedEdges : public Seams {
  public:
   using Seams::plane_pixel;
   using Seams::transfer;
+  using Seams::whole;
+  static std::shared_ptr<const TransferExemplar> exemplar() { return transfer_exemplar(*params_); }
+  static SynthesisParams sp() { return synthesis_params(*params_); }
 };
 
 constexpr int kBand = 32;                                 // turned_edges.h's kTurnedEdgeBand
+constexpr int kPin = 64;                                  // and kTurnedEdgePin
 constexpr uint32_t kLast = (1u << kLevel) - 1;            // N's right column of cells
 constexpr int64_t kEdgeCol = kFace - (kRow + 1) * kSize;  // P's first column beside that cell
 
@@ -59,7 +69,7 @@ TEST(TurnedEdgeCharts, TheChartsLaidByHandAreTheStoresHalo) {
   }
 }
 
-TEST_F(TurnedEdges, NsBandContinuesPsChartToACutThenItsOwn) {
+TEST_F(TurnedEdges, NsBandIsPsChartToTheMinimumErrorCutThenItsOwn) {
   // B: P's chart over the 32 rows above P (N's band) and P's first 32; A: the plane's N.
   const PixelRect across{kFace + kEdgeCol, -kBand, kSize, 2 * kBand};
   const auto b = whole(across, p_chart);
@@ -71,46 +81,76 @@ TEST_F(TurnedEdges, NsBandContinuesPsChartToACutThenItsOwn) {
       0u);
   EXPECT_EQ(compared, size_t(kSize * kBand));
 
-  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize);
-  const auto is = [&](int c, int r, const std::array<int, 2>& s) {
-    return out.at(c, r, 0) == float(s[0]) && out.at(c, r, 1) == float(s[1]);
+  // The cut the band must take: the minimum-error cut (seam_cut.h, itself checked against the
+  // exhaustive search in seam_cut_test.cpp) of the squared RGB error between a and b. N's row r
+  // lies along P's column kEdgeCol + kSize - 1 - r, the band's position i = kSize - 1 - r.
+  const auto b_at = [&](int r, int t) {
+    return b[size_t((kBand - 1 - t) * kSize + (kSize - 1 - r))];
   };
-  size_t rows_cut = 0, took_b = 0, took_a = 0;
-  for (int r = 0; r < kSize; ++r) {  // N's row r: P's column kEdgeCol + kSize - 1 - r
-    const auto b_at = [&](int t) { return b[size_t((kBand - 1 - t) * kSize + (kSize - 1 - r))]; };
-    const auto a_at = [&](int t) { return a[size_t(r * 48 + 47 - t)]; };
-    bool cut_found = false;
-    for (int cut = 1; cut < kBand && !cut_found; ++cut) {
-      bool ok = true;
-      for (int t = 0; t < 48 && ok; ++t) ok = is(kSize - 1 - t, r, t < cut ? b_at(t) : a_at(t));
-      cut_found = ok;
-    }
-    rows_cut += cut_found;
+  const auto a_at = [&](int r, int t) { return a[size_t(r * 48 + 47 - t)]; };
+  const ExemplarLevel& colours = transfer_exemplar(*params_)->pyramid.levels[0];
+  const auto colour = [&](const std::array<int, 2>& s, int k) {
+    return colours.rgb[3 * (size_t(s[1]) * size_t(colours.width) + size_t(s[0])) + size_t(k)];
+  };
+  std::vector<float> error(size_t(kSize) * kBand);
+  for (int r = 0; r < kSize; ++r)
     for (int t = 0; t < kBand; ++t) {
-      took_b += b_at(t) != a_at(t) && is(kSize - 1 - t, r, b_at(t));
-      took_a += b_at(t) != a_at(t) && is(kSize - 1 - t, r, a_at(t));
+      float d = 0;
+      for (int k = 0; k < 3; ++k) {
+        const float v = colour(b_at(r, t), k) - colour(a_at(r, t), k);
+        d += v * v;
+      }
+      error[size_t(t * kSize + kSize - 1 - r)] = d;
     }
-  }
-  EXPECT_EQ(rows_cut, size_t(kSize));
+  const std::vector<int> cut = seam_cut(error, kEdgeCol, kSize, kBand, kPin);
+  static_assert(kEdgeCol % kPin == 0);  // the pins: every kPin-th position from the first
+  for (int i = 0; i < kSize; i += kPin) EXPECT_EQ(cut[size_t(i)], kBand / 2) << i;
+
+  // Every pixel of N's 48 columns beside the edge: B before the cut, A beyond it.
+  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow), kSize);
+  size_t wrong = 0, took_b = 0, took_a = 0;
+  for (int r = 0; r < kSize; ++r)
+    for (int t = 0; t < 48; ++t) {
+      const bool takes_b = t < cut[size_t(kSize - 1 - r)];
+      const auto& e = takes_b ? b_at(r, t) : a_at(r, t);
+      wrong +=
+          out.at(kSize - 1 - t, r, 0) != float(e[0]) || out.at(kSize - 1 - t, r, 1) != float(e[1]);
+      const bool differ = t < kBand && b_at(r, t) != a_at(r, t);
+      took_b += differ && takes_b;
+      took_a += differ && !takes_b;
+    }
+  EXPECT_EQ(wrong, 0u);
   // Both sides of the cut hold a good share of the band.
   EXPECT_GT(took_b, size_t(kSize * kBand / 5));
   EXPECT_GT(took_a, size_t(kSize * kBand / 5));
 }
 
+// Pixels of N's cell (kLast, row) at kLevel (tiles of kSize, output `refine` levels finer) whose
+// source differs from that of the same pixel in N's cell one level coarser (tiles of 2 * kSize).
+size_t differs_from_the_coarser_tiling(uint32_t row, int refine) {
+  const Tile<float> fine =
+      TurnedEdges::transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, row), kSize, refine);
+  const Tile<float> coarse = TurnedEdges::transfer(
+      CellId::FromFaceColRow(kFaceN, kLevel - 1, kLast / 2, row / 2), 2 * kSize, refine);
+  const int n = kSize << refine, dr = int(row % 2) * n;
+  size_t differ = 0;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      for (int k = 0; k < 2; ++k) differ += fine.at(c, r, k) != coarse.at(c + n, r + dr, k);
+  return differ;
+}
+
 TEST_F(TurnedEdges, ACellOfAnotherTilingGivesTheSameBits) {
   // N's cell one level coarser (tiles of 512) holds the level-5 cell as a quarter: beside P's
-  // edge, and at the corner where N meets P and Q (two bands, a folded halo quadrant).
-  for (const uint32_t row : {kRow, 0u}) {
-    const Tile<float> fine = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, row), kSize);
-    const Tile<float> coarse =
-        transfer(CellId::FromFaceColRow(kFaceN, kLevel - 1, kLast / 2, row / 2), 2 * kSize);
-    const int dr = int(row % 2) * kSize;
-    size_t differ = 0;
-    for (int r = 0; r < kSize; ++r)
-      for (int c = 0; c < kSize; ++c)
-        for (int k = 0; k < 2; ++k) differ += fine.at(c, r, k) != coarse.at(c + kSize, r + dr, k);
-    EXPECT_EQ(differ, 0u) << "row " << row;
-  }
+  // edge, at the corner where N meets P and Q (two bands, a folded halo quadrant), and at the
+  // corner where N meets O and P (P's band runs into N's unturned edge with O).
+  for (const uint32_t row : {kRow, 0u, kLast})
+    EXPECT_EQ(differs_from_the_coarser_tiling(row, 0), 0u) << "row " << row;
+}
+
+TEST_F(TurnedEdges, AtRefine1ACellOfAnotherTilingGivesTheSameBits) {
+  // The pins along the edge come from the output's pixels (tiles of 512 and 1024 here).
+  EXPECT_EQ(differs_from_the_coarser_tiling(kRow, 1), 0u);
 }
 
 // Of the pixels of the equatorial cell `cell`'s edge row (row 0 for N above it, the last for S
@@ -150,6 +190,49 @@ TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
     }
 }
 
+// The band of the polar cell across the edge row of the equatorial cell `cell` (row 0 for N above
+// it, the last for S below) against one synthesis of the 256 x 64 window across that edge in
+// `cell`'s chart, laid from the store's halo of `cell` (pixel_source: not UnfoldedFaces nor
+// turned_edges.h). The band is that synthesis beside the edge, and to a depth of at least
+// kBand / 2 at each pin (where the cut lies at kBand / 2), whatever the side and the turn.
+void expect_band_continues_the_halos_chart(CellId cell, bool top) {
+  const Grid& grid = default_grid();
+  const int edge = top ? 0 : kSize - 1, step = top ? -1 : 1;
+  const auto first = FacePlane(grid).tile_pixel(cell, kSize, 0, 0);
+  const PixelRect across{first[0], first[1] + (top ? -kBand : kSize - kBand), kSize, 2 * kBand};
+  const auto b = TurnedEdges::whole(across, [&](int64_t x, int64_t r) {
+    return *pixel_source(grid, cell, kSize, int(x - first[0]), int(r - first[1]));
+  });
+  const FaceCoord corner = *pixel_source(grid, cell, kSize, 0, edge + step);
+  const Tile<float> polar = TurnedEdges::transfer(
+      CellId::FromFaceColRow(corner.face, kLevel, uint32_t(corner.col / kSize),
+                             uint32_t(corner.row / kSize)),
+      kSize);
+  size_t beside = 0, short_pins = 0;
+  for (int c = 0; c < kSize; ++c) {
+    int matching = 0;  // depths 0 .. matching - 1 are the chart's
+    for (int t = 0; t < kBand && matching == t; ++t) {
+      const FaceCoord q = *pixel_source(grid, cell, kSize, c, edge + step * (1 + t));
+      const auto& e = b[size_t((top ? kBand - 1 - t : kBand + t) * kSize + c)];
+      const int qc = int(q.col % kSize), qr = int(q.row % kSize);
+      matching += polar.at(qc, qr, 0) == float(e[0]) && polar.at(qc, qr, 1) == float(e[1]);
+    }
+    beside += matching == 0;
+    short_pins += c % kPin == 0 && matching < kBand / 2;
+  }
+  EXPECT_EQ(beside, 0u) << cell.ToText();
+  EXPECT_EQ(short_pins, 0u) << cell.ToText();
+}
+
+TEST_F(TurnedEdges, SsBandsContinueTheChartsOfPQAndRFromTheStoresHalo) {
+  for (const int face : {kFaceP, kFaceQ, kFaceR})
+    expect_band_continues_the_halos_chart(CellId::FromFaceColRow(face, kLevel, kRow, kLast), false);
+}
+
+TEST_F(TurnedEdges, AcrossTheHalfTurnNsBandContinuesQsChartFromTheStoresHalo) {
+  expect_band_continues_the_halos_chart(CellId::FromFaceColRow(kFaceQ, kLevel, kRow, 0), true);
+}
+
 TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand) {
   // Output one level finer than the guides (refine 1, tiles of 512 from 256): P's chart over
   // N's 64 rows above P and P's first 64, at level 14, its guides laid by hand at level 13.
@@ -177,6 +260,52 @@ TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand)
     }
   EXPECT_EQ(beside, 0u);
   EXPECT_GT(in_band, size_t(n * kBand / 5));
+}
+
+// join_turned_edges on N's cell beside P with guides of `halo` pixels a side (all class 0):
+// the message of the maquette::Error it throws, or "" if none.
+std::string join_error(int halo, bool distance) {
+  const Grid& grid = default_grid();
+  const CellId cell = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow);
+  const auto edges = turned_edges(grid, FacePlane(grid), cell, kSize, 0);
+  EXPECT_EQ(edges.size(), 1u);
+  TargetGuides guides;
+  const int side = kSize + 2 * halo;
+  guides.rect = {0, 0, side, side};
+  guides.labels.assign(size_t(side) * size_t(side), 0);
+  if (distance) guides.distance.assign(guides.labels.size(), 1.0f);
+  try {
+    join_turned_edges(TurnedEdges::exemplar()->pyramid, TurnedEdges::sp(), guides, halo, edges,
+                      std::vector<int32_t>(size_t(kSize) * kSize));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_F(TurnedEdges, ABandBeyondTheGuidesHaloOrWithGuidesItDoesNotLayIsAnErrorNamingTheCell) {
+  const std::string cell = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow).ToText();
+  const std::string small = join_error(100, false);
+  EXPECT_NE(small.find(cell + "'s band along face 2 needs guides beyond its halo of 100"),
+            std::string::npos)
+      << small;
+  const int halo = operator_->spec().halo;
+  EXPECT_EQ(join_error(halo, false), "");
+  const std::string distance = join_error(halo, true);
+  EXPECT_NE(distance.find(cell + "'s band along a turned edge lays no distance or depth guides"),
+            std::string::npos)
+      << distance;
+}
+
+TEST(TurnedEdgeTiles, OnAPolarFaceTilesNotAPowerOfTwoOrFinerThanThePinsAreAnError) {
+  const Grid& grid = default_grid();
+  const FacePlane plane(grid);
+  const CellId polar = CellId::FromFaceColRow(kFaceN, kLevel, kLast, kRow);
+  EXPECT_THROW(turned_edges(grid, plane, polar, 384, 0), Error);
+  EXPECT_THROW(turned_edges(grid, plane, polar, 32, 0), Error);
+  EXPECT_EQ(turned_edges(grid, plane, polar, 32, 1).size(), 1u);
+  EXPECT_TRUE(
+      turned_edges(grid, plane, CellId::FromFaceColRow(kFaceP, kLevel, 0, 0), 384, 0).empty());
 }
 
 }  // namespace
