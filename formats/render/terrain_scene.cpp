@@ -365,22 +365,26 @@ bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, dou
 
 // Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side): their vertices are
 // those samples drawn at `exaggeration` times their heights along their places' normals
-// (write_tile), so within the hull of the four corners' places at the lowest and highest sample's
-// heights but for the places' departure from bilinear between the corners: the ellipsoid's and
-// the projection's bend over the squares (their side squared over the earth's radius bounds it, a
-// few millimetres for 16 samples at level 10; the lattice's interpolation, sample_places.h, is
-// within a thousandth of a sample), which the margin of a sample (`sample_m`) dwarfs. Inside: no
-// data.
+// (write_tile). The places of the samples on the squares' boundary, at the lowest and highest
+// sample's heights, bound them: the map from samples to places is smooth, or on a polar face
+// smooth on each side of a diagonal (where a row of samples bends by about 50 degrees on the
+// ground, so the corners alone do not bound it), and within each smooth piece the places depart
+// from the hull of the piece's boundary by the ellipsoid's bend (their side squared over the
+// earth's radius bounds it, a few centimetres for 16 samples at level 10) and between two
+// boundary samples a diagonal crosses by less than a sample: the margin of a sample
+// (`sample_m`) and the bend covers both. Inside: no data.
 ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
                       const PinholeCamera& camera, double sample_m, double exaggeration) {
   const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
   if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
-  std::array<Vec3d, 8> hull;
-  size_t next = 0;
-  for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
+  std::vector<Vec3d> hull;
+  hull.reserve(4 * size_t(c1 - c0 + r1 - r0));
+  auto add = [&](int c, int r) {
     const SamplePlace place = tile.places->at(c, r);
-    for (const float z : {lowest, highest}) hull[next++] = exaggerated(place, z, exaggeration);
-  }
+    for (const float z : {lowest, highest}) hull.push_back(exaggerated(place, z, exaggeration));
+  };
+  for (int c = c0; c < c1; ++c) add(c, r0), add(c + 1, r1);
+  for (int r = r0; r < r1; ++r) add(c1, r), add(c0, r + 1);
   const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
   return view_side(camera, hull, sample_m + side * side / 6.3e6);
 }
