@@ -53,8 +53,17 @@ void each_patch(int n, Visit&& visit) {
       visit(k++, c0, r0, std::min(n, c0 + kBlockSquares), std::min(n, r0 + kBlockSquares));
 }
 
-// The slot of sample (c, r), -1 .. n, in SceneTile::used.
-size_t used_slot(int n, int c, int r) { return size_t(r + 1) * size_t(n + 2) + size_t(c + 1); }
+// Whether sample (c, r), -1 .. n, of `tile` is used: on the halo's inner ring (the skirt's), or a
+// corner of a drawn square (squares c - 1 .. c and r - 1 .. r, in patches c / kBlockSquares ..
+// (c + 1) / kBlockSquares and alike for rows).
+bool used(const SceneTile& tile, int n, int c, int r) {
+  if (c < 0 || r < 0 || c >= n || r >= n) return true;
+  const size_t patches = size_t(tile_patches(n));
+  const size_t pc0 = size_t(c / kBlockSquares), pc1 = size_t((c + 1) / kBlockSquares),
+               pr0 = size_t(r / kBlockSquares), pr1 = size_t((r + 1) / kBlockSquares);
+  return tile.drawn[pr0 * patches + pc0] || tile.drawn[pr0 * patches + pc1] ||
+         tile.drawn[pr1 * patches + pc0] || tile.drawn[pr1 * patches + pc1];
+}
 
 // The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
 std::vector<std::array<int, 2>> halo_ring(int n) {
@@ -123,20 +132,19 @@ void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
   size_t v = first;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c)
-      if (tile.used[used_slot(n, c, r)] && !std::isnan(heights.at(c, r))) visit(v++, c, r, -1);
+      if (!std::isnan(heights.at(c, r)) && used(tile, n, c, r)) visit(v++, c, r, -1);
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k)
     if (!std::isnan(heights.at(ring[k][0], ring[k][1]))) visit(v++, ring[k][0], ring[k][1], int(k));
 }
 
-// `drawn`: per patch (each_patch's order), whether its squares are drawn.
-TileShare tile_share(const SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
+TileShare tile_share(const SceneTile& tile, int n) {
   const Tile<float>& heights = tile.heights;
   TileShare t;
   each_vertex(tile, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
   auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
   each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
-    if (!drawn[k]) return;
+    if (!tile.drawn[k]) return;
     for (int r = r0; r < r1; ++r)
       for (int c = c0; c < c1; ++c)
         if (has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1)) t.indices += 6;
@@ -157,9 +165,9 @@ TileShare tile_share(const SceneTile& tile, const std::vector<uint8_t>& drawn, i
 // order, each in row order), then the skirt's, each patch and each side of the skirt starting a
 // block.
 void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const SceneTile& tile,
-                const std::vector<uint8_t>& drawn, const TileShare& share,
-                const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
-                size_t first_index, size_t first_block, RenderMesh& mesh) {
+                const TileShare& share, const PinholeCamera& camera,
+                const EllipsoidalHeights& heights, double exaggeration, size_t first_index,
+                size_t first_block, RenderMesh& mesh) {
   const int n = dem.tile_size;
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
@@ -202,7 +210,7 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
   auto start_block = [&] { mesh.block_first[next_block++] = uint32_t(next_index / 3); };
   each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
     start_block();  // an empty block when not drawn
-    if (!drawn[k]) return;
+    if (!tile.drawn[k]) return;
     for (int r = r0; r < r1; ++r)
       for (int c = c0; c < c1; ++c) {
         const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
@@ -420,18 +428,6 @@ std::vector<uint8_t> drawn_patches(const SceneTile& tile, int n, const PinholeCa
   return drawn;
 }
 
-// `tile.used` from its drawn patches (drawn_patches): their samples and the halo's ring (the
-// skirt's).
-void mark_used(SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
-  tile.used.assign(size_t(n + 2) * size_t(n + 2), 0);
-  for (const auto& [c, r] : halo_ring(n)) tile.used[used_slot(n, c, r)] = 1;
-  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
-    if (!drawn[k]) return;
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) tile.used[used_slot(n, c, r)] = 1;
-  });
-}
-
 }  // namespace
 
 std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const LayerInfo& dem,
@@ -491,7 +487,6 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.tiles.resize(cells.size());
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
-  std::vector<std::vector<uint8_t>> drawn(cells.size());
   {
     // The caller's tiles (kept for its cast shadows), else ours, dropped once the halos are made.
     if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
@@ -499,10 +494,9 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       SceneTile& tile = scene.tiles[i];
       tile.heights = tile_heights(grid, dem, cells[i], *tiles);
       tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
-      drawn[i] = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
-                               exaggeration, cull);
-      mark_used(tile, drawn[i], n);
-      shares[i] = tile_share(tile, drawn[i], n);
+      tile.drawn = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
+                                 exaggeration, cull);
+      shares[i] = tile_share(tile, n);
     });
     tiles.reset();
   }
@@ -524,8 +518,8 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.normals.resize(3 * vertices);
   scene.attributed.assign(vertices, 0);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    write_tile(grid, dem, cells[i], scene.tiles[i], drawn[i], shares[i], camera, heights,
-               exaggeration, first_index[i], i * tile_blocks(n), scene.mesh);
+    write_tile(grid, dem, cells[i], scene.tiles[i], shares[i], camera, heights, exaggeration,
+               first_index[i], i * tile_blocks(n), scene.mesh);
   });
   return scene;
 }

@@ -42,10 +42,11 @@ namespace maquette {
 struct SceneTile {
   Tile<float> heights{1, 1};
   std::optional<SamplePlaces> places;
-  // Per sample -1 .. n (row-major, n + 2 a side): 1 when a drawn square or the skirt uses it. A
-  // sample is a vertex when used and with data. The squares of a patch wholly out of the view
-  // (build_terrain_scene's cull) are not drawn.
-  std::vector<uint8_t> used;
+  // Per patch of kBlockSquares x kBlockSquares squares (of the n + 1 squares a side: samples
+  // -1 .. n, row-major): 1 when its squares are drawn, 0 when it lies wholly out of the view
+  // (build_terrain_scene's cull). A sample is a vertex when a drawn square uses it or it is on
+  // the halo's inner ring (the skirt's), and it has data.
+  std::vector<uint8_t> drawn;
   size_t first_vertex = 0;
 };
 
