@@ -45,6 +45,9 @@ class SamplePlaces {
                const EllipsoidalHeights& heights);
   // Precondition: -halo <= col, row < size + halo.
   SamplePlace at(int col, int row) const;
+  // Whether the inside samples' places are interpolated from the lattice, whose rows and columns
+  // then turn by at most a hundredth of a radian at a node (else every place is exact).
+  bool interpolated() const { return lattice_ > 0; }
 
  private:
   size_t border_slot(int col, int row) const;
