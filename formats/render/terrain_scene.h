@@ -92,16 +92,17 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
 // >= 0 and `cull` as scene_cells; with `cull`, also a tile's patch of squares (a rasterizer's
 // block) wholly out of the view is left out, its samples no vertices unless a drawn square or the
-// skirt uses them (the same pixels: beyond a side of the picture or behind the eye, every sample
-// on the boundary of the patch's squares at its lowest and highest sample, with a margin of a
-// sample and the earth's bulge over the patch, which bound its squares also where a polar face's
-// diagonal bends its rows; groups of 4 x 4 patches are tested alike first, one wholly out or in
-// deciding for its patches; the patches along the halo's ring and the skirt are always drawn). The
-// scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's conversion to the
-// ellipsoid when the caller has it (shared with TerrainHeights; PROJ's operation is costly to set
-// up), else made from `dem`. `tiles`: the DEM's LayerSampler::shared_tiles at its level when the
-// caller reads them again afterwards (the cast shadows), else made here and freed once the tiles'
-// halos are made. Throws maquette::Error naming the value at fault.
+// skirt uses them (the same pixels: beyond a side of the picture or behind the eye, at its lowest
+// and highest sample, with a margin of a sample and the earth's bulge over the patch, the corners
+// of the patch's squares where the tile's places are interpolated (SamplePlaces::interpolated),
+// every sample on their boundary where they are exact, which bounds them also where a polar
+// face's diagonal bends their rows; groups of 4 x 4 patches are tested alike first, one wholly out
+// or in deciding for its patches; the patches along the halo's ring and the skirt are always
+// drawn). The scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's
+// conversion to the ellipsoid when the caller has it (shared with TerrainHeights; PROJ's operation
+// is costly to set up), else made from `dem`. `tiles`: the DEM's LayerSampler::shared_tiles at its
+// level when the caller reads them again afterwards (the cast shadows), else made here and freed
+// once the tiles' halos are made. Throws maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
