@@ -14,6 +14,31 @@ constexpr int kLattice = 32;  // lattice intervals per side
 // Beyond this latitude longitudes bend too fast across a lattice interval to interpolate them
 // (their error grows as the interval squared over the distance to the pole).
 constexpr double kPolarLatitude = 80;
+// A lattice whose rows or columns turn by more than this (radians) at a node is not smooth: on a
+// polar face a diagonal crosses it (the places' rows turn there by tens of degrees on the ground).
+// The ellipsoid's own bend, the interval over the earth's radius, reaches it only for intervals
+// of 60 km.
+constexpr double kKink = 1e-2;
+
+// Whether `nodes` ((m + 1)^2, row-major) turn by more than kKink at a node along a row or column:
+// the second difference of their places against the interval.
+bool kinked(const std::vector<SamplePlace>& nodes, int m) {
+  auto base = [&](int i, int j) { return nodes[size_t(j) * size_t(m + 1) + size_t(i)].base; };
+  auto turns = [](const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+    double d2 = 0, step = 0;
+    for (size_t k = 0; k < 3; ++k) {
+      d2 += (a[k] - 2 * b[k] + c[k]) * (a[k] - 2 * b[k] + c[k]);
+      step += (c[k] - a[k]) * (c[k] - a[k]) / 4;
+    }
+    return !(d2 <= kKink * kKink * step);
+  };
+  for (int j = 0; j <= m; ++j)
+    for (int i = 1; i < m; ++i)
+      if (turns(base(i - 1, j), base(i, j), base(i + 1, j)) ||
+          turns(base(j, i - 1), base(j, i), base(j, i + 1)))
+        return true;
+  return false;
+}
 
 SamplePlace exact(const EnuFrame& frame, const EllipsoidalHeights& heights, LonLat p) {
   std::array<double, 9> axes{};
@@ -53,7 +78,7 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
       east = std::max(east, nodes_.back().position.lon);
       poleward = std::max(poleward, std::abs(nodes_.back().position.lat));
     }
-  if (m < 2 || east - west > 90 || poleward > kPolarLatitude) {
+  if (m < 2 || east - west > 90 || poleward > kPolarLatitude || kinked(nodes_, m)) {
     nodes_.clear();  // every place exact, when asked
     return;
   }

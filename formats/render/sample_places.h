@@ -5,12 +5,14 @@
 // heights run along the normal). The tile's inside takes lon/lat, base and up bilinearly from a
 // lattice of exact places 1/32 of the tile apart (every 8 samples of a 256-sample tile); the
 // halo's rings, which may lie on another face turned (core/halo.h), are placed exactly, as is every
-// sample of a tile whose lattice spans more than 90 degrees of longitude (the antimeridian) or
-// reaches beyond 80 degrees of latitude (longitudes bend fast near a pole). The error against PROJ
-// is tested (tests/render sample_places_test: within a thousandth of a sample; 4 mm for 35 m
-// samples). Only the lattice and the halo's places are kept (a quarter of a megabyte for a
-// 256-sample tile with two rings); an inside sample's place is interpolated, or without a lattice
-// placed exactly, when asked for, the same bits each time.
+// sample of a tile whose lattice spans more than 90 degrees of longitude (the antimeridian),
+// reaches beyond 80 degrees of latitude (longitudes bend fast near a pole) or turns by more than
+// a hundredth of a radian at a node (a polar face's diagonal crosses it: the meridians 0, 90, 180
+// and -90 poleward of 42 degrees, where rows of samples bend by tens of degrees on the ground). The
+// error against PROJ is tested (tests/render sample_places_test: within a thousandth of a sample; 4
+// mm for 35 m samples). Only the lattice and the halo's places are kept (a quarter of a megabyte
+// for a 256-sample tile with two rings); an inside sample's place is interpolated, or without a
+// lattice placed exactly, when asked for, the same bits each time.
 #pragma once
 
 #include <cmath>
@@ -43,6 +45,9 @@ class SamplePlaces {
                const EllipsoidalHeights& heights);
   // Precondition: -halo <= col, row < size + halo.
   SamplePlace at(int col, int row) const;
+  // Whether the inside samples' places are interpolated from the lattice, whose rows and columns
+  // then turn by at most a hundredth of a radian at a node (else every place is exact).
+  bool interpolated() const { return lattice_ > 0; }
 
  private:
   size_t border_slot(int col, int row) const;

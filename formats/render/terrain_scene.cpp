@@ -53,8 +53,17 @@ void each_patch(int n, Visit&& visit) {
       visit(k++, c0, r0, std::min(n, c0 + kBlockSquares), std::min(n, r0 + kBlockSquares));
 }
 
-// The slot of sample (c, r), -1 .. n, in SceneTile::used.
-size_t used_slot(int n, int c, int r) { return size_t(r + 1) * size_t(n + 2) + size_t(c + 1); }
+// Whether sample (c, r), -1 .. n, of `tile` is used: on the halo's inner ring (the skirt's), or a
+// corner of a drawn square (squares c - 1 .. c and r - 1 .. r, in patches c / kBlockSquares ..
+// (c + 1) / kBlockSquares and alike for rows).
+bool used(const SceneTile& tile, int n, int c, int r) {
+  if (c < 0 || r < 0 || c >= n || r >= n) return true;
+  const size_t patches = size_t(tile_patches(n));
+  const size_t pc0 = size_t(c / kBlockSquares), pc1 = size_t((c + 1) / kBlockSquares),
+               pr0 = size_t(r / kBlockSquares), pr1 = size_t((r + 1) / kBlockSquares);
+  return tile.drawn[pr0 * patches + pc0] || tile.drawn[pr0 * patches + pc1] ||
+         tile.drawn[pr1 * patches + pc0] || tile.drawn[pr1 * patches + pc1];
+}
 
 // The halo's inner ring (samples -1 and n), once round: the skirt hangs from it.
 std::vector<std::array<int, 2>> halo_ring(int n) {
@@ -123,20 +132,19 @@ void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
   size_t v = first;
   for (int r = -1; r <= n; ++r)
     for (int c = -1; c <= n; ++c)
-      if (tile.used[used_slot(n, c, r)] && !std::isnan(heights.at(c, r))) visit(v++, c, r, -1);
+      if (!std::isnan(heights.at(c, r)) && used(tile, n, c, r)) visit(v++, c, r, -1);
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k)
     if (!std::isnan(heights.at(ring[k][0], ring[k][1]))) visit(v++, ring[k][0], ring[k][1], int(k));
 }
 
-// `drawn`: per patch (each_patch's order), whether its squares are drawn.
-TileShare tile_share(const SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
+TileShare tile_share(const SceneTile& tile, int n) {
   const Tile<float>& heights = tile.heights;
   TileShare t;
   each_vertex(tile, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
   auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
   each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
-    if (!drawn[k]) return;
+    if (!tile.drawn[k]) return;
     for (int r = r0; r < r1; ++r)
       for (int c = c0; c < c1; ++c)
         if (has(c, r) && has(c + 1, r) && has(c, r + 1) && has(c + 1, r + 1)) t.indices += 6;
@@ -157,9 +165,9 @@ TileShare tile_share(const SceneTile& tile, const std::vector<uint8_t>& drawn, i
 // order, each in row order), then the skirt's, each patch and each side of the skirt starting a
 // block.
 void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const SceneTile& tile,
-                const std::vector<uint8_t>& drawn, const TileShare& share,
-                const PinholeCamera& camera, const EllipsoidalHeights& heights, double exaggeration,
-                size_t first_index, size_t first_block, RenderMesh& mesh) {
+                const TileShare& share, const PinholeCamera& camera,
+                const EllipsoidalHeights& heights, double exaggeration, size_t first_index,
+                size_t first_block, RenderMesh& mesh) {
   const int n = dem.tile_size;
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
@@ -202,7 +210,7 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
   auto start_block = [&] { mesh.block_first[next_block++] = uint32_t(next_index / 3); };
   each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
     start_block();  // an empty block when not drawn
-    if (!drawn[k]) return;
+    if (!tile.drawn[k]) return;
     for (int r = r0; r < r1; ++r)
       for (int c = c0; c < c1; ++c) {
         const uint32_t a = at(c, r), b = at(c + 1, r), d = at(c, r + 1), e = at(c + 1, r + 1);
@@ -365,22 +373,34 @@ bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, dou
 
 // Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side): their vertices are
 // those samples drawn at `exaggeration` times their heights along their places' normals
-// (write_tile), so within the hull of the four corners' places at the lowest and highest sample's
-// heights but for the places' departure from bilinear between the corners: the ellipsoid's and
-// the projection's bend over the squares (their side squared over the earth's radius bounds it, a
-// few millimetres for 16 samples at level 10; the lattice's interpolation, sample_places.h, is
-// within a thousandth of a sample), which the margin of a sample (`sample_m`) dwarfs. Inside: no
-// data.
+// (write_tile), within the hull of these points, at the lowest and highest sample's heights:
+// - where the places are interpolated from a lattice (SamplePlaces::interpolated), the four
+//   corners' places: a row or column of places turns by at most a hundredth of a radian at a
+//   lattice node (h samples apart, up to 16 samples a side here), so it departs from its chord by
+//   at most 0.01 (16 / h)^2 h / 8 <= 0.32 samples (h >= 1), and the places from the corners'
+//   bilinear alike;
+// - else the places of every sample on the squares' boundary: the places may be exact across a
+//   polar face's diagonal, where a row of samples bends by about 50 degrees on the ground (a
+//   group's inside place lay 2.25 samples outside its corners' hull); on each side of the
+//   diagonal the map is smooth, so the places inside lie within the hull of their piece's
+//   boundary but for the ellipsoid's bend, and the diagonal's crossing of the boundary departs
+//   from the chord between two boundary samples by less than a sample.
+// The margin: a sample (`sample_m`) and the ellipsoid's bend (the side squared over the earth's
+// radius: a few centimetres for 16 samples at level 10). Inside: no data.
 ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
                       const PinholeCamera& camera, double sample_m, double exaggeration) {
   const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
   if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
-  std::array<Vec3d, 8> hull;
-  size_t next = 0;
-  for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
+  const bool corners = tile.places->interpolated();
+  const int dc = corners ? c1 - c0 : 1, dr = corners ? r1 - r0 : 1;  // steps along the boundary
+  std::vector<Vec3d> hull;
+  hull.reserve(4 * size_t((c1 - c0) / dc + (r1 - r0) / dr));
+  auto add = [&](int c, int r) {
     const SamplePlace place = tile.places->at(c, r);
-    for (const float z : {lowest, highest}) hull[next++] = exaggerated(place, z, exaggeration);
-  }
+    for (const float z : {lowest, highest}) hull.push_back(exaggerated(place, z, exaggeration));
+  };
+  for (int c = c0; c < c1; c += dc) add(c, r0), add(c + dc, r1);
+  for (int r = r0; r < r1; r += dr) add(c1, r), add(c0, r + dr);
   const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
   return view_side(camera, hull, sample_m + side * side / 6.3e6);
 }
@@ -414,18 +434,6 @@ std::vector<uint8_t> drawn_patches(const SceneTile& tile, int n, const PinholeCa
                            first_sample(pr + 1), camera, sample_m, exaggeration) != ViewSide::kOut;
     }
   return drawn;
-}
-
-// `tile.used` from its drawn patches (drawn_patches): their samples and the halo's ring (the
-// skirt's).
-void mark_used(SceneTile& tile, const std::vector<uint8_t>& drawn, int n) {
-  tile.used.assign(size_t(n + 2) * size_t(n + 2), 0);
-  for (const auto& [c, r] : halo_ring(n)) tile.used[used_slot(n, c, r)] = 1;
-  each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
-    if (!drawn[k]) return;
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) tile.used[used_slot(n, c, r)] = 1;
-  });
 }
 
 }  // namespace
@@ -487,7 +495,6 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.tiles.resize(cells.size());
   // The tiles read and their shares counted in parallel, then each written in place, in cell order.
   std::vector<TileShare> shares(cells.size());
-  std::vector<std::vector<uint8_t>> drawn(cells.size());
   {
     // The caller's tiles (kept for its cast shadows), else ours, dropped once the halos are made.
     if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
@@ -495,10 +502,9 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
       SceneTile& tile = scene.tiles[i];
       tile.heights = tile_heights(grid, dem, cells[i], *tiles);
       tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
-      drawn[i] = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
-                               exaggeration, cull);
-      mark_used(tile, drawn[i], n);
-      shares[i] = tile_share(tile, drawn[i], n);
+      tile.drawn = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
+                                 exaggeration, cull);
+      shares[i] = tile_share(tile, n);
     });
     tiles.reset();
   }
@@ -520,8 +526,8 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   scene.normals.resize(3 * vertices);
   scene.attributed.assign(vertices, 0);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
-    write_tile(grid, dem, cells[i], scene.tiles[i], drawn[i], shares[i], camera, heights,
-               exaggeration, first_index[i], i * tile_blocks(n), scene.mesh);
+    write_tile(grid, dem, cells[i], scene.tiles[i], shares[i], camera, heights, exaggeration,
+               first_index[i], i * tile_blocks(n), scene.mesh);
   });
   return scene;
 }

@@ -42,10 +42,11 @@ namespace maquette {
 struct SceneTile {
   Tile<float> heights{1, 1};
   std::optional<SamplePlaces> places;
-  // Per sample -1 .. n (row-major, n + 2 a side): 1 when a drawn square or the skirt uses it. A
-  // sample is a vertex when used and with data. The squares of a patch wholly out of the view
-  // (build_terrain_scene's cull) are not drawn.
-  std::vector<uint8_t> used;
+  // Per patch of kBlockSquares x kBlockSquares squares (of the n + 1 squares a side: samples
+  // -1 .. n, row-major): 1 when its squares are drawn, 0 when it lies wholly out of the view
+  // (build_terrain_scene's cull). A sample is a vertex when a drawn square uses it or it is on
+  // the halo's inner ring (the skirt's), and it has data.
+  std::vector<uint8_t> drawn;
   size_t first_vertex = 0;
 };
 
@@ -91,15 +92,17 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
 // >= 0 and `cull` as scene_cells; with `cull`, also a tile's patch of squares (a rasterizer's
 // block) wholly out of the view is left out, its samples no vertices unless a drawn square or the
-// skirt uses them (the same pixels: beyond a side of the picture or behind the eye, every corner
-// of the patch's squares at its lowest and highest sample, with a margin of a sample and the
-// earth's bulge over the patch; the patches along the halo's ring and the skirt are always
-// drawn). The scene's places refer to `grid`: it must outlive the scene.
-// `datum`: the DEM's conversion to the ellipsoid when the caller has it (shared with
-// TerrainHeights; PROJ's operation is costly to set up), else made from `dem`. `tiles`: the DEM's
-// LayerSampler::shared_tiles at its level when the caller reads them again afterwards (the cast
-// shadows), else made here and freed once the tiles' halos are made. Throws maquette::Error naming
-// the value at fault.
+// skirt uses them (the same pixels: beyond a side of the picture or behind the eye, at its lowest
+// and highest sample, with a margin of a sample and the earth's bulge over the patch, the corners
+// of the patch's squares where the tile's places are interpolated (SamplePlaces::interpolated),
+// every sample on their boundary where they are exact, which bounds them also where a polar
+// face's diagonal bends their rows; groups of 4 x 4 patches are tested alike first, one wholly out
+// or in deciding for its patches; the patches along the halo's ring and the skirt are always
+// drawn). The scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's
+// conversion to the ellipsoid when the caller has it (shared with TerrainHeights; PROJ's operation
+// is costly to set up), else made from `dem`. `tiles`: the DEM's LayerSampler::shared_tiles at its
+// level when the caller reads them again afterwards (the cast shadows), else made here and freed
+// once the tiles' halos are made. Throws maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
