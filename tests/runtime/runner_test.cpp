@@ -55,7 +55,9 @@ TEST(Runner, SameBitsWithOneTwoAndFourThreads) {
   for (const auto& [threads, dir] :
        {std::pair<int, test::TempDir*>{1, &one}, {2, &two}, {4, &four}}) {
     test::reset_fixture_threads();
-    run_in(*dir, demo_pipeline(1, 1), threads);  // slow cells, so that every thread gets some
+    // Slow cells (5 ms of sleep each, 0.64 s in all on one thread), so that every thread gets
+    // some even when a loaded machine is slow to wake a worker.
+    run_in(*dir, demo_pipeline(5, 5), threads);
     threads_seen[threads] = test::fixture_threads();
   }
   EXPECT_EQ(threads_seen[1], 1u);
