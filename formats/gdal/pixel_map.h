@@ -16,8 +16,12 @@ struct PixelMap {
 
 // Like GDAL's approximate transformer: the exact transform (grid inverse, then PROJ) runs on a
 // lattice every `kStep` samples; inside each lattice block the coordinates are interpolated
-// bilinearly when the interpolation error at the block's centre is below 1/8 source pixel, and
-// transformed exactly otherwise (near the poles, seams, antimeridian, projection edges).
+// bilinearly when the interpolation error at the block's centre is below 1/8 source pixel and the
+// lattice bends little enough at the ends of the block's edges that the edges are within 1/8
+// pixel too (a kink such as a polar face's diagonal, where rows of samples turn by ~50 degrees on
+// the ground, can cut a block's corner and leave its centre right), and transformed exactly
+// otherwise (near the poles, seams, antimeridian, projection edges, polar faces' diagonals).
+// pixel_map_test checks every sample within 1/8 source pixel on tiles across the diagonals.
 class PixelMapper {
  public:
   static constexpr int kStep = 16;
