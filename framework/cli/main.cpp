@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
       "the program)\n"
       "  MAQUETTE_CACHE_DIR     where analysed paintings are cached (default "
       "$XDG_CACHE_HOME/maquette or ~/.cache/maquette; 'off': no cache)\n"
-      "  MAQUETTE_CACHE_MAX_MB  the cache's budget in megabytes (default 500; the least recently "
-      "used files go)\n"
+      "  MAQUETTE_CACHE_MAX_MB  the cache's budget in megabytes (the least recently used files go "
+      "beyond it; its default in README.md)\n"
       "  GDAL_CACHEMAX, PROJ_DATA and GDAL's other settings apply to the files GDAL reads\n"
       "See README.md.");
   app.add_flag("-q,--quiet", g_options.quiet, "Only print errors");

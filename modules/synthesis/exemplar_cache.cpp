@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -21,6 +20,7 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/output_file.h"
+#include "core/whole_int.h"
 #include "exemplar_codec.h"
 #include "exemplar_pyramid.h"
 #include "painting.h"
@@ -147,17 +147,12 @@ std::optional<std::string> exemplar_cache_key(const nlohmann::json& params,
 
 uintmax_t exemplar_cache_budget() {
   const char* text = std::getenv("MAQUETTE_CACHE_MAX_MB");
-  uintmax_t mb = kExemplarCacheDefaultMB;
-  if (text && *text) {
-    const char* end = text + std::char_traits<char>::length(text);
-    const auto [stop, error] = std::from_chars(text, end, mb);
-    if (error != std::errc() || stop != end || mb > UINTMAX_MAX / 1000000) {
-      spdlog::warn("MAQUETTE_CACHE_MAX_MB={}: not a whole number of megabytes; keeping {} MB", text,
-                   kExemplarCacheDefaultMB);
-      mb = kExemplarCacheDefaultMB;
-    }
-  }
-  return mb * 1000000;
+  if (!text || !*text) return kExemplarCacheDefaultMB * 1000000;
+  const auto mb = whole_int<uintmax_t>(text);
+  if (mb && *mb <= UINTMAX_MAX / 1000000) return *mb * 1000000;
+  spdlog::warn("MAQUETTE_CACHE_MAX_MB={}: not a whole number of megabytes; keeping {} MB", text,
+               kExemplarCacheDefaultMB);
+  return kExemplarCacheDefaultMB * 1000000;
 }
 
 void prune_exemplar_cache(const std::filesystem::path& directory, uintmax_t budget,

@@ -1,13 +1,13 @@
 #include "turned_edges.h"
 
 #include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <cstdlib>
 #include <string>
 #include <utility>
 
 #include "core/error.h"
+#include "core/tile.h"
 #include "core/unfolded_faces.h"
 #include "seam_cut.h"
 
@@ -90,14 +90,11 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
   const int face = cell.face();
   const auto& here = plane.place(face);
   if (here[1] == 0) return {};
-  if (!std::has_single_bit(unsigned(tile_size)))
-    throw Error("synthesis.transfer: tiles of " + std::to_string(tile_size) +
-                " pixels on a polar face, not a power of two");
+  const int guide_level = cell.level() + log2_tile_size(tile_size);
   const int n = tile_size << refine;
   if (n % kTurnedEdgePin != 0)
     throw Error("synthesis.transfer: output tiles of " + std::to_string(n) +
                 " pixels on a polar face, not a multiple of " + std::to_string(kTurnedEdgePin));
-  const int guide_level = cell.level() + std::countr_zero(unsigned(tile_size));
   std::vector<TurnedEdge> edges;
   for (int g = 0; g < CellId::kNumFaces; ++g) {
     const auto& there = plane.place(g);
