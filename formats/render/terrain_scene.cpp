@@ -371,51 +371,42 @@ bool out_of_view(const Grid& grid, const PinholeCamera& camera, CellId cell, dou
   return view_side(camera, points, margin) == ViewSide::kOut;
 }
 
-// Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side): their vertices are
-// those samples drawn at `exaggeration` times their heights along their places' normals
-// (write_tile), within the hull of these points, at the lowest and highest sample's heights:
-// - where the places are interpolated from a lattice (SamplePlaces::interpolated), the four
-//   corners' places: a row or column of places turns by at most a hundredth of a radian at a
-//   lattice node (h samples apart, up to 16 samples a side here), so it departs from its chord by
-//   at most 0.01 (16 / h)^2 h / 8 <= 0.32 samples (h >= 1), and the places from the corners'
-//   bilinear alike;
-// - else the places of every sample on the squares' boundary: the places may be exact across a
-//   polar face's diagonal, where a row of samples bends by about 50 degrees on the ground (a
-//   group's inside place lay 2.25 samples outside its corners' hull); on each side of the
-//   diagonal the map is smooth, so the places inside lie within the hull of their piece's
-//   boundary but for the ellipsoid's bend, and the diagonal's crossing of the boundary departs
-//   from the chord between two boundary samples by less than a sample.
-// The margin: a sample (`sample_m`) and the ellipsoid's bend (the side squared over the earth's
-// radius: a few centimetres for 16 samples at level 10). Inside: no data.
+// Where the squares of `tile`'s samples c0 .. c1, r0 .. r1 lie (view_side), for a tile whose
+// places are interpolated from a lattice (SamplePlaces::interpolated): their vertices are those
+// samples drawn at `exaggeration` times their heights along their places' normals (write_tile),
+// within the hull of the four corners' places at the lowest and highest sample's heights. A row or
+// column of places turns by at most a hundredth of a radian at a lattice node (h samples apart,
+// up to 16 samples a side here), so it departs from its chord by at most 0.01 (16 / h)^2 h / 8 <=
+// 0.32 samples (h >= 1), and the places from the corners' bilinear alike. The margin: a sample
+// (`sample_m`) and the ellipsoid's bend (the side squared over the earth's radius: a few
+// centimetres for 16 samples at level 10). Inside: no data.
 ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
                       const PinholeCamera& camera, double sample_m, double exaggeration) {
   const auto [lowest, highest] = relief(tile.heights, c0, r0, c1, r1);
   if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
-  const bool corners = tile.places->interpolated();
-  const int dc = corners ? c1 - c0 : 1, dr = corners ? r1 - r0 : 1;  // steps along the boundary
   std::vector<Vec3d> hull;
-  hull.reserve(4 * size_t((c1 - c0) / dc + (r1 - r0) / dr));
-  auto add = [&](int c, int r) {
+  for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
     const SamplePlace place = tile.places->at(c, r);
     for (const float z : {lowest, highest}) hull.push_back(exaggerated(place, z, exaggeration));
-  };
-  for (int c = c0; c < c1; c += dc) add(c, r0), add(c + dc, r1);
-  for (int r = r0; r < r1; r += dr) add(c1, r), add(c0, r + dr);
+  }
   const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
   return view_side(camera, hull, sample_m + side * side / 6.3e6);
 }
 
 // Per patch of `tile`'s squares (each_patch's order), whether it is drawn: with `cull`, not when
 // it lies wholly out of the view (squares_side). The patches along the halo's ring (placed
-// exactly, perhaps on another face) are always drawn. The others are looked at by groups of
-// kGroupPatches x kGroupPatches: a group wholly out of the view or wholly in it decides for its
-// patches, a group across it leaves each to its own test.
+// exactly, perhaps on another face) are always drawn, and so is every patch of a tile placed
+// exactly (no lattice: beyond 80 degrees, across the antimeridian or a polar face's diagonal,
+// where a row of samples bends by about 50 degrees on the ground and four corners bound nothing;
+// bounding by every boundary sample would place each sample exactly again, for a few tiles). The
+// others are looked at by groups of kGroupPatches x kGroupPatches: a group wholly out of the view
+// or wholly in it decides for its patches, a group across it leaves each to its own test.
 constexpr int kGroupPatches = 4;
 std::vector<uint8_t> drawn_patches(const SceneTile& tile, int n, const PinholeCamera& camera,
                                    double sample_m, double exaggeration, bool cull) {
   const int patches = tile_patches(n);
   std::vector<uint8_t> drawn(size_t(patches) * size_t(patches), 1);
-  if (!cull) return drawn;
+  if (!cull || !tile.places->interpolated()) return drawn;
   // The inside patches: 1 .. patches - 2 a side (squares from 3 .. n - 1: samples 3 .. n - 1).
   auto first_sample = [](int patch) { return -1 + patch * kBlockSquares; };
   for (int gr = 1; gr < patches - 1; gr += kGroupPatches)

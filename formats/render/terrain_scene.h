@@ -94,11 +94,10 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 // block) wholly out of the view is left out, its samples no vertices unless a drawn square or the
 // skirt uses them (the same pixels: beyond a side of the picture or behind the eye, at its lowest
 // and highest sample, with a margin of a sample and the earth's bulge over the patch, the corners
-// of the patch's squares where the tile's places are interpolated (SamplePlaces::interpolated),
-// every sample on their boundary where they are exact, which bounds them also where a polar
-// face's diagonal bends their rows; groups of 4 x 4 patches are tested alike first, one wholly out
-// or in deciding for its patches; the patches along the halo's ring and the skirt are always
-// drawn). The scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's
+// of the patch's squares, on tiles whose places are interpolated (SamplePlaces::interpolated);
+// a tile placed exactly, as where a polar face's diagonal bends its rows, is drawn whole; groups of
+// 4 x 4 patches are tested alike first, one wholly out or in deciding for its patches; the
+// patches along the halo's ring and the skirt are always drawn). The scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's
 // conversion to the ellipsoid when the caller has it (shared with TerrainHeights; PROJ's operation
 // is costly to set up), else made from `dem`. `tiles`: the DEM's LayerSampler::shared_tiles at its
 // level when the caller reads them again afterwards (the cast shadows), else made here and freed
