@@ -97,11 +97,12 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 // of the patch's squares, on tiles whose places are interpolated (SamplePlaces::interpolated);
 // a tile placed exactly, as where a polar face's diagonal bends its rows, is drawn whole; groups of
 // 4 x 4 patches are tested alike first, one wholly out or in deciding for its patches; the
-// patches along the halo's ring and the skirt are always drawn). The scene's places refer to `grid`: it must outlive the scene. `datum`: the DEM's
-// conversion to the ellipsoid when the caller has it (shared with TerrainHeights; PROJ's operation
-// is costly to set up), else made from `dem`. `tiles`: the DEM's LayerSampler::shared_tiles at its
-// level when the caller reads them again afterwards (the cast shadows), else made here and freed
-// once the tiles' halos are made. Throws maquette::Error naming the value at fault.
+// patches along the halo's ring and the skirt are always drawn). The scene's places refer to
+// `grid`: it must outlive the scene. `datum`: the DEM's conversion to the ellipsoid when the caller
+// has it (shared with TerrainHeights; PROJ's operation is costly to set up), else made from `dem`.
+// `tiles`: the DEM's LayerSampler::shared_tiles at its level when the caller reads them again
+// afterwards (the cast shadows), else made here and freed once the tiles' halos are made. Throws
+// maquette::Error naming the value at fault.
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
