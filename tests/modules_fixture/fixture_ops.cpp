@@ -8,9 +8,12 @@
 // fill and blur take sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
 // they throw on it and its descendants) and fail_with ("exception": a std::runtime_error, "int":
 // an int). They record the threads they run on: fixture_thread_count() (a C entry point the tests
-// find with dlsym) tells how many distinct threads ran them since fixture_reset_threads().
+// find with dlsym) tells how many distinct threads ran them since fixture_reset_threads(); with
+// meet_threads N each cell waits until N distinct threads have run one (a latch: a test of the
+// threads' use that does not depend on how fast a loaded machine wakes a worker; 60 s at most).
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <memory>
 #include <mutex>
@@ -32,9 +35,11 @@ using maquette::OperatorSpec;
 const json kSlowAndFailing = {
     {"sleep_ms", {{"type", "integer"}, {"minimum", 0}, {"maximum", 10000}, {"default", 0}}},
     {"fail_on", {{"type", "string"}, {"default", ""}}},
-    {"fail_with", {{"type", "string"}, {"enum", {"exception", "int"}}, {"default", "exception"}}}};
+    {"fail_with", {{"type", "string"}, {"enum", {"exception", "int"}}, {"default", "exception"}}},
+    {"meet_threads", {{"type", "integer"}, {"minimum", 0}, {"maximum", 64}, {"default", 0}}}};
 
 std::mutex threads_mutex;
+std::condition_variable threads_met;
 std::set<std::thread::id> threads_seen;
 
 json schema(json properties, json required = json::array()) {
@@ -62,11 +67,15 @@ OperatorSpec make_spec(const std::string& name, const std::string& description,
 }
 
 void slow_and_failing(const CellContext& ctx) {
-  {
-    std::lock_guard lock(threads_mutex);
-    threads_seen.insert(std::this_thread::get_id());
-  }
   const json& p = *ctx.params;
+  {
+    std::unique_lock lock(threads_mutex);
+    threads_seen.insert(std::this_thread::get_id());
+    threads_met.notify_all();
+    const size_t meet = p.at("meet_threads").get<size_t>();
+    threads_met.wait_for(lock, std::chrono::seconds(60),
+                         [&] { return threads_seen.size() >= meet; });
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(p.at("sleep_ms").get<int>()));
   const std::string fail_on = p.at("fail_on").get<std::string>();
   if (!fail_on.empty() && ctx.cell.ToText().starts_with(fail_on)) {
