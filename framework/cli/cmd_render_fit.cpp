@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "core/output_clash.h"
 #include "render/painting_fit_dem.h"
 #include "render/painting_fit_job.h"
 #include "render/render_job.h"
@@ -26,6 +27,10 @@ struct FitOptions {
 
 void run(const FitOptions& o) {
   const PaintingFitJob& job = o.job;
+  std::vector<std::string> outputs = {o.out};
+  if (!o.panorama.empty())
+    for (const std::string& file : panorama_files(o.panorama)) outputs.push_back(file);
+  check_outputs_spare_inputs(outputs, {{"the store", o.store}, {"the control points", o.points}});
   const auto store =
       Store::open(o.store, o.warped_dem ? Store::Mode::ReadWrite : Store::Mode::ReadOnly);
   if (o.warped_dem) check_warped_dem_name(*store, *o.warped_dem);
