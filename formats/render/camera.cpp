@@ -16,9 +16,9 @@ constexpr double kDegree = std::numbers::pi / 180;
 }  // namespace
 
 std::string view_text(const CameraSpec& spec) {
-  return fmt::format("at lon {:.4f}, lat {:.4f}, {:.1f} m; heading {}, pitch {}, fov {}",
-                     spec.eye.lon, spec.eye.lat, spec.eye.height, spec.heading, spec.pitch,
-                     spec.fov);
+  return fmt::format(
+      "at lon {:.4f}, lat {:.4f}, {:.1f} m; heading {:.4g}, pitch {:.4g}, fov {:.4g}", spec.eye.lon,
+      spec.eye.lat, spec.eye.height, spec.heading, spec.pitch, spec.fov);
 }
 
 std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target) {
