@@ -374,6 +374,28 @@ TEST(PaintingFitCli, BadInputIsNamed) {
   EXPECT_FALSE(std::ifstream(f.dir + "/x.png"));
 }
 
+// Clicks the fit cannot put where they were clicked (the painting mirrored: each pixel paired with
+// another place) are warned of by name; the fixture's own clicks are not.
+TEST(PaintingFitCli, FarClicksAreWarnedOf) {
+  const Fixture& f = fixture();
+  const auto good =
+      run_maquette("render fit " + f.store + " " + f.points + " " + f.dir + "/good.json --dem dem");
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_EQ(good.err.find("clicks land farther"), std::string::npos) << good.err;
+  json mirrored = read_json(f.points);
+  for (json& p : mirrored.at("points")) p["x"] = kCamera.width - p.at("x").get<double>();
+  const std::string path = f.dir + "/mirrored.json";
+  std::ofstream(path) << mirrored.dump();
+  const auto r = run_maquette("render fit " + f.store + " " + path + " " + f.dir +
+                              "/mirrored-fit.json --dem dem");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + path + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" clicks land farther than 18.9 px (2 % of the painting's diagonal) from "
+                       "where they were clicked (points[0] by "),
+            std::string::npos)
+      << r.err;
+}
+
 // OUT or --panorama naming an input (the store, the clicks) is refused, and the input kept: the
 // fit's JSON replaced the store, or the user's clicks, exit 0.
 TEST(PaintingFitCli, OutputsSpareTheInputs) {
