@@ -1,5 +1,7 @@
 #include "render/camera.h"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -13,6 +15,12 @@ constexpr double kDegree = std::numbers::pi / 180;
 
 }  // namespace
 
+std::string view_text(const CameraSpec& spec) {
+  return fmt::format(
+      "at lon {:.4f}, lat {:.4f}, {:.1f} m; heading {:.4g}, pitch {:.4g}, fov {:.4g}", spec.eye.lon,
+      spec.eye.lat, spec.eye.height, spec.heading, spec.pitch, spec.fov);
+}
+
 std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target) {
   const auto d = EnuFrame(eye).to_enu(target.lon, target.lat, target.height);
   if (d[0] == 0 && d[1] == 0 && d[2] == 0) throw Error("--look-at is the camera's own position");
@@ -23,6 +31,8 @@ PinholeCamera::PinholeCamera(const CameraSpec& spec) : spec_(spec), frame_(spec.
   if (!(spec.fov > 0 && spec.fov <= 170))
     throw Error("camera fov " + std::to_string(spec.fov) +
                 " is out of range: the horizontal field of view must be in (0, 170] degrees");
+  if (!std::isfinite(spec.heading))
+    throw Error("camera heading " + std::to_string(spec.heading) + " is not finite");
   if (!(spec.pitch >= -90 && spec.pitch <= 90))
     throw Error("camera pitch " + std::to_string(spec.pitch) + " is out of range [-90, 90]");
   if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536)

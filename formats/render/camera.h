@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 
 #include "core/enu_frame.h"
 
@@ -22,13 +23,17 @@ struct CameraSpec {
   int width = 1600, height = 900;
 };
 
+// The camera's place and aim for messages: "at lon -113.1000, lat 37.1200, 6500.0 m; heading 45,
+// pitch -10, fov 50".
+std::string view_text(const CameraSpec& spec);
+
 // The heading and pitch (degrees) that aim the eye at `target`.
 std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target);
 
 class PinholeCamera {
  public:
-  // Throws maquette::Error naming the field at fault: fov outside (0, 170], pitch outside
-  // [-90, 90], width or height outside [1, 65536].
+  // Throws maquette::Error naming the field at fault: fov outside (0, 170], a heading not finite,
+  // pitch outside [-90, 90], width or height outside [1, 65536].
   explicit PinholeCamera(const CameraSpec& spec);
 
   const CameraSpec& spec() const { return spec_; }

@@ -126,8 +126,13 @@ std::pair<CameraSpec, double> pnp_camera(const EnuFrame& origin,
   const cv::Matx33d k(focal, 0, options.width * 0.5 - 0.5, 0, focal, options.height * 0.5 - 0.5, 0,
                       0, 1);
   cv::Vec3d rvec, tvec;
-  if (!cv::solvePnP(world, image, k, cv::noArray(), rvec, tvec, false, cv::SOLVEPNP_SQPNP))
+  // SQPnP asserts on degenerate points (every click on one pixel): no camera at this focal length.
+  try {
+    if (!cv::solvePnP(world, image, k, cv::noArray(), rvec, tvec, false, cv::SOLVEPNP_SQPNP))
+      return {{}, std::numeric_limits<double>::infinity()};
+  } catch (const cv::Exception&) {
     return {{}, std::numeric_limits<double>::infinity()};
+  }
   std::vector<cv::Point2d> projected;
   cv::projectPoints(world, rvec, tvec, k, cv::noArray(), projected);
   double error = 0;
@@ -179,7 +184,10 @@ CameraSpec scan_cameras(const EnuFrame& origin, const std::vector<GroundClick>& 
     auto candidate = pnp_camera(origin, world, image, f, options);
     if (candidate.second < best.second) best = candidate;
   }
-  if (!std::isfinite(best.second)) throw Error("painting fit: solvePnP found no camera");
+  if (!std::isfinite(best.second))
+    throw Error(
+        "painting fit: solvePnP found no camera: are the control points spread over the painting "
+        "and over the ground?");
   return best.first;
 }
 

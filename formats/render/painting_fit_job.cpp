@@ -27,11 +27,7 @@ std::string number(double v) {
 
 PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const PaintingFitJob& job,
                                   const PaintingPoints& points, const std::string& points_path) {
-  const auto dem = store.layer(job.dem);
-  if (!dem || dem->kind != LayerKind::Raster || dem->channels != 1)
-    throw Error("--dem layer '" + job.dem + "' is not a one-channel raster layer of the store " +
-                store.path());
-  TerrainHeights dem_heights(store, grid, *dem);
+  TerrainHeights dem_heights(store, grid, dem_layer(store, job.dem));
   std::vector<GroundClick> clicks;
   for (const ControlPoint& p : points.points) {
     GroundClick c{p.x, p.y, {p.lon, p.lat, 0}};

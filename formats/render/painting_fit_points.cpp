@@ -1,8 +1,10 @@
 #include "render/painting_fit_points.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -27,6 +29,17 @@ class Fields {
 
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
     throw Error(source_ + ": " + where + " " + what);
+  }
+  // Refuses a key of `object` not in `keys`: a misspelt "heigth" took the DEM's height silently.
+  void known(const json& object, const std::string& where,
+             std::initializer_list<const char*> keys) const {
+    for (const auto& [key, _] : object.items())
+      if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) ==
+          keys.end()) {
+        std::string list;
+        for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+        fail(where, "has an unknown field \"" + key + "\" (expected: " + list + ")");
+      }
   }
   const json* find(const json& object, const std::string& key) const {
     const auto it = object.find(key);
@@ -59,6 +72,7 @@ PaintingPoints parse_painting_points(const std::string& text, const std::string&
   // Nesting deeper than kMaxJsonDepth is refused: quoting such a value overflowed the stack.
   const json root = parse_json(text, source);
   if (!root.is_object()) fields.fail("the top level", "is not an object");
+  fields.known(root, "the top level", {"width", "height", "points"});
   PaintingPoints painting;
   for (const auto& [key, size] :
        {std::pair{"width", &painting.width}, {"height", &painting.height}}) {
@@ -79,6 +93,7 @@ PaintingPoints parse_painting_points(const std::string& text, const std::string&
       if (!name->is_string()) fields.fail(where + ".name", name->dump() + " is not a string");
       c.name = where + " (" + name->get<std::string>() + ")";
     }
+    fields.known(p, c.name, {"x", "y", "lon", "lat", "height", "name"});
     c.x = fields.in_range(p, "x", c.name + ".x", 0, painting.width);
     c.y = fields.in_range(p, "y", c.name + ".y", 0, painting.height);
     c.lon = fields.in_range(p, "lon", c.name + ".lon", -180, 180);

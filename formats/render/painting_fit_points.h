@@ -7,6 +7,7 @@
 // top-left corner, rows down, the centre of pixel (i, j) at (i + 0.5, j + 0.5) as in
 // render/camera.h, inside the painting; lon, lat: degrees; height (optional): metres above the
 // ellipsoid, else the DEM's height there (the caller fills it in); name (optional): for messages.
+// Any other field is refused (a misspelt "heigth" would take the DEM's height silently).
 #pragma once
 
 #include <optional>

@@ -51,7 +51,10 @@ int stretch_step(int width, int height) {
 namespace {
 
 // Where a terrain pixel `i` of `f` sees the surface: lon/lat and the grid's plane point,
-// interpolated in its triangle (the plane's NaN when a corner is off its tile's face).
+// interpolated in its triangle (the plane's NaN when a corner is off its tile's face). Longitudes
+// the short way round from the first corner's: a triangle across the antimeridian (179.99 and
+// -179.99) gave the pixels between lon ~0, a wrong lon guide and, where the plane is NaN (a halo's
+// square), a texel sampled half the globe away.
 struct SurfacePoint {
   LonLat lonlat{0, 0};
   PlanePoint plane{0, 0};
@@ -60,13 +63,17 @@ struct SurfacePoint {
 SurfacePoint surface_point(const TerrainScene& scene, const Fragments& f, size_t i) {
   const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
   const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
+  const double lon0 = scene.lonlat[2 * size_t(v[0])];
   SurfacePoint s;
   for (int j = 0; j < 3; ++j) {
-    s.lonlat.lon += b[j] * scene.lonlat[2 * size_t(v[j])];
+    const double lon = scene.lonlat[2 * size_t(v[j])];
+    s.lonlat.lon +=
+        b[j] * (std::abs(lon - lon0) > 180 ? lon0 + std::remainder(lon - lon0, 360.0) : lon);
     s.lonlat.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
     s.plane.x += b[j] * scene.plane[2 * size_t(v[j])];
     s.plane.y += b[j] * scene.plane[2 * size_t(v[j]) + 1];
   }
+  if (std::abs(s.lonlat.lon) > 180) s.lonlat.lon = std::remainder(s.lonlat.lon, 360.0);
   return s;
 }
 

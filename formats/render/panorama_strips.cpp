@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/error.h"
 #include "core/output_file.h"
 #include "core/sibling_path.h"
 #include "gdal/image_file.h"
@@ -21,22 +22,26 @@ constexpr double kStripPixels = 16e6;
 constexpr double kFragmentPixels = 1 << 21;
 
 struct PanoramaWriter::Files {
-  std::string out, stem;
+  std::string out;
   int width = 0, height = 0;
   std::vector<uint8_t> rgb, silhouette;  // the whole picture's
   bool land_cover = false, cast_shadow = false;
+  int64_t terrain_pixels = 0;  // written so far
   OutputFile guides_file;
   GdalSession gdal;
   DatasetPtr guides;
   Files(const std::string& path, int w, int h)
       : out(path),
-        stem(sibling_path(path, "")),
         width(w),
         height(h),
         rgb(3 * size_t(w) * size_t(h)),
         silhouette(size_t(w) * size_t(h)),
-        guides_file(stem + "-guides.tif", {".aux.xml"}) {}
+        guides_file(panorama_files(path)[1], {".aux.xml"}) {}
 };
+
+std::vector<std::string> panorama_files(const std::string& out) {
+  return {out, sibling_path(out, "-guides.tif"), sibling_path(out, "-silhouettes.png")};
+}
 
 namespace {
 
@@ -110,6 +115,9 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
               f.rgb.begin() + std::ptrdiff_t(3 * size_t(first) * size_t(f.width)));
   std::copy_n(strip.silhouette.begin() + std::ptrdiff_t(offset), pixels,
               f.silhouette.begin() + std::ptrdiff_t(size_t(first) * size_t(f.width)));
+  f.terrain_pixels += std::count_if(strip.distance.begin() + std::ptrdiff_t(offset),
+                                    strip.distance.begin() + std::ptrdiff_t(offset + pixels),
+                                    [](double d) { return !std::isnan(d); });
   const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
   f.guides_file.write([&] {
     for (const GuideBand& band : bands) {
@@ -123,13 +131,15 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
   });
 }
 
+int64_t PanoramaWriter::terrain_pixels() const { return files_->terrain_pixels; }
+
 void PanoramaWriter::commit() {
   Files& f = *files_;
   f.guides.reset();  // flushes the last blocks
   // zlib level 3: a third of the default level's (6) time for a file ~8 % larger.
   const ImageFormat png{"PNG", {"ZLEVEL=3"}};
   write_image(f.rgb, f.width, f.height, 3, png, f.out);
-  write_image(f.silhouette, f.width, f.height, 1, png, f.stem + "-silhouettes.png");
+  write_image(f.silhouette, f.width, f.height, 1, png, panorama_files(f.out)[2]);
   f.guides_file.commit();
 }
 
@@ -223,6 +233,12 @@ void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
   PanoramaWriter writer(out, camera.spec().width, camera.spec().height, look.land_cover != nullptr,
                         look.shadow != nullptr);
   draw_strips(store, grid, scene, camera, look, strip_rows, writer);
+  // Nothing of the terrain drawn, though tiles were in or near the view: an all-sky picture, exit
+  // 0.
+  if (writer.terrain_pixels() == 0)
+    throw Error("the picture shows none of the terrain (the camera " + view_text(camera.spec()) +
+                "): aimed away from it, at ground beyond the DEM's data, or a bend rolling it "
+                "over the eye; nothing written");
   writer.commit();
 }
 

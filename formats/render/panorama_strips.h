@@ -7,8 +7,10 @@
 // hold the same pixels, bit for bit, whatever the strips.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/panorama.h"
 
@@ -16,14 +18,16 @@ namespace maquette {
 
 // The panorama's files: OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF,
 // no georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
-// when computed; NaN on the sky) and stem + "-silhouettes.png" (8-bit), filled strip by strip. Each
-// file whole or not at all: nothing is in place before commit().
+// when computed, then shading; NaN on the sky) and stem + "-silhouettes.png" (8-bit), filled strip
+// by strip. Each file whole or not at all: nothing is in place before commit().
 class PanoramaWriter {
  public:
   PanoramaWriter(const std::string& out, int width, int height, bool land_cover, bool cast_shadow);
   ~PanoramaWriter();
   // Rows [first, last) of the picture, from `strip`, which holds them.
   void write(const Panorama& strip, int first, int last);
+  // Pixels showing terrain (a distance guide) in the rows written so far.
+  int64_t terrain_pixels() const;
   // Encodes the PNGs and puts the three files in place.
   void commit();
 
@@ -31,6 +35,9 @@ class PanoramaWriter {
   struct Files;
   std::unique_ptr<Files> files_;
 };
+
+// The files PanoramaWriter writes for OUT: OUT, its guides and its silhouettes.
+std::vector<std::string> panorama_files(const std::string& out);
 
 // The whole panorama `p` written as PanoramaWriter does.
 void write_panorama(const Panorama& p, const std::string& out);
@@ -50,6 +57,7 @@ Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene
 
 // Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0),
 // writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
+// Throws maquette::Error, writing nothing, when no pixel shows terrain.
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                    const std::string& out);

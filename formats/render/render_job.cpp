@@ -1,12 +1,15 @@
 #include "render/render_job.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
 
 #include "core/error.h"
+#include "core/output_clash.h"
 #include "gdal/vertical_datum.h"
 #include "image/layer_sampler.h"
 #include "render/rasterizer.h"
@@ -22,6 +25,15 @@ std::string metres(double v) {
   return text;
 }
 
+// A point given as --camera or --look-at: lon and lat swapped, or a NaN, were told as an invalid
+// grid point or a pitch out of range.
+void check_place(const std::string& option, const GeodeticPoint& p) {
+  if (!std::isfinite(p.lon) || !(std::abs(p.lat) <= 90) || !std::isfinite(p.height))
+    throw Error(option + " " + fmt::format("{} {} {}", p.lon, p.lat, p.height) +
+                ": expected LON LAT HEIGHT, a finite longitude, a latitude within +-90 degrees "
+                "and a finite height");
+}
+
 LayerInfo raster_layer(const Store& store, const std::string& option, const std::string& name) {
   const auto info = store.layer(name);
   if (!info) throw Error(option + " layer '" + name + "' is not in the store " + store.path());
@@ -30,6 +42,20 @@ LayerInfo raster_layer(const Store& store, const std::string& option, const std:
                 " layer: expected a raster");
   return *info;
 }
+
+}  // namespace
+
+LayerInfo dem_layer(const Store& store, const std::string& name) {
+  const LayerInfo dem = raster_layer(store, "--dem", name);
+  if (dem.channels != 1)
+    throw Error("--dem layer '" + dem.name + "' has " + std::to_string(dem.channels) +
+                " channels: expected one channel of heights");
+  if (dem.semantics == Semantics::Categorical)
+    throw Error("--dem layer '" + dem.name + "' is categorical (classes, not heights)");
+  return dem;
+}
+
+namespace {
 
 // What render_panorama and render_panorama_files share: the checked layers, the camera, the bent
 // terrain and the look (whose layer pointers point into this).
@@ -45,10 +71,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   auto prepared = std::make_unique<PreparedPanorama>();
   std::optional<LayerInfo>& texture = prepared->texture;
   std::optional<LayerInfo>& land_cover = prepared->land_cover;
-  const LayerInfo dem = raster_layer(store, "--dem", job.dem);
-  if (dem.channels != 1)
-    throw Error("--dem layer '" + dem.name + "' has " + std::to_string(dem.channels) +
-                " channels: expected one channel of heights");
+  const LayerInfo dem = dem_layer(store, job.dem);
   if (!job.texture.empty()) {
     texture = raster_layer(store, "--texture", job.texture);
     if (texture->dtype != DType::U8 || texture->channels == 2 || texture->channels > 4)
@@ -63,6 +86,11 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
       throw Error("--land-cover layer '" + job.land_cover + "' is not categorical");
   }
 
+  check_place("--camera", job.camera.eye);
+  if (job.look_at) check_place("--look-at", *job.look_at);
+  if (!std::isfinite(job.sun_azimuth) || !std::isfinite(job.sun_altitude))
+    throw Error("--sun " + fmt::format("{} {}", job.sun_azimuth, job.sun_altitude) +
+                " must be finite");
   if (!(job.haze_distance > 0))
     throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
   check_bend(job.bend);
@@ -135,6 +163,7 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
 
 void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,
                            const std::string& out) {
+  check_outputs_spare_inputs(panorama_files(out), {{"the store", store.path()}});
   if (job.strip_rows < 0)
     throw Error("--strip-rows " + std::to_string(job.strip_rows) + " must be 0 or more");
   const int rows = job.strip_rows > 0 ? job.strip_rows : default_strip_rows(job.camera.width);

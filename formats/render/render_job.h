@@ -38,16 +38,23 @@ struct PanoramaJob {
   int fragment_rows = 0;
 };
 
+// The layer `name` as --dem. Throws maquette::Error naming it when it is not in the store, not a
+// raster, not one channel, or categorical (land-cover classes drawn as heights of a few metres).
+LayerInfo dem_layer(const Store& store, const std::string& name);
+
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
-// wrong kind (--dem: a one-channel raster; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
+// wrong kind (--dem: dem_layer; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
 // categorical), a bend out of range (render/progressive_bend.h), a camera below the terrain (or
 // --above-ground where the DEM has no data), a field of view, pitch or size out of range
-// (render/camera.h), a sun altitude outside (0, 90) with --shadows.
+// (render/camera.h), a --camera or --look-at not a finite lon, a lat within +-90 and a finite
+// height, a --sun not finite, a sun altitude outside (0, 90) with --shadows, no tile of the DEM in
+// the view (render/terrain_scene.h build_terrain_scene).
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
 
 // The same written to OUT and its guides (render/panorama_strips.h), drawn in strips of
 // job.strip_rows rows: the same files as write_panorama(render_panorama(...)) whatever the strips,
-// in bounded memory. Throws as render_panorama, and for strip_rows < 0.
+// in bounded memory. Throws as render_panorama, for strip_rows < 0, and for an OUT (or its guides
+// or silhouettes) that is the store.
 void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,
                            const std::string& out);
 

@@ -1,5 +1,6 @@
 #include "render/terrain_scene.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -16,6 +17,7 @@
 
 #include "core/error.h"
 #include "core/halo.h"
+#include "core/lonlat_bounds.h"
 #include "gdal/vertical_datum.h"
 #include "image/layer_sampler.h"
 #include "render/sample_places.h"
@@ -465,18 +467,32 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
   return cells;
 }
 
+void check_exaggeration(double exaggeration) {
+  if (!(exaggeration > 0) || !std::isfinite(exaggeration))
+    throw Error("--exaggeration " + std::to_string(exaggeration) + " must be positive and finite");
+}
+
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
                                  std::shared_ptr<const EllipsoidalHeights> datum,
                                  std::shared_ptr<LayerSampler::Tiles> tiles) {
-  if (!(exaggeration > 0))
-    throw Error("vertical exaggeration " + std::to_string(exaggeration) + " must be positive");
+  check_exaggeration(exaggeration);
   if (!(sample_pixels >= 0))
     throw Error("--sample-pixels " + std::to_string(sample_pixels) + " must be 0 or more");
   const std::vector<CellId> cells =
       scene_cells(store, grid, dem, camera, sample_pixels, exaggeration, cull);
-  if (cells.empty()) throw Error("--dem layer '" + dem.name + "' holds no tiles");
+  if (cells.empty()) {
+    if (store.tile_cells(dem.name).empty())
+      throw Error("--dem layer '" + dem.name + "' holds no tiles");
+    // Its tiles all out of the view (scene_cells' cull): a camera aimed away or far from the store.
+    const LonLatBounds b = lonlat_bounds(grid, store.tile_cells(dem.name));
+    throw Error(fmt::format(
+        "none of the --dem layer '{}' (lon {:.4f} to {:.4f}, lat {:.4f} to {:.4f}) is in the "
+        "camera's view ({}): aim it at the terrain",
+        dem.name, b.west, b.east > 180 ? b.east - 360 : b.east, b.south, b.north,
+        view_text(camera.spec())));
+  }
   TerrainScene scene;
   scene.heights = given_or_made(std::move(datum), dem);
   const EllipsoidalHeights& heights = *scene.heights;
@@ -556,7 +572,9 @@ TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const Layer
       dem_(dem),
       sampler_(store, grid, dem_, dem_.level, true),
       heights_(given_or_made(std::move(datum), dem_)),
-      exaggeration_(exaggeration) {}
+      exaggeration_(exaggeration) {
+  check_exaggeration(exaggeration);
+}
 
 std::optional<double> TerrainHeights::operator()(LonLat p) {
   float z = NAN;

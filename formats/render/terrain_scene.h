@@ -89,6 +89,10 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
                                 const PinholeCamera& camera, double sample_pixels,
                                 double exaggeration, bool cull);
 
+// Throws maquette::Error unless `exaggeration` is finite and > 0 (build_terrain_scene and
+// TerrainHeights check it: an infinite one made every camera "below the terrain (inf m)").
+void check_exaggeration(double exaggeration);
+
 // `dem`: a one-channel raster layer of heights in metres; `exaggeration` > 0; `sample_pixels`
 // >= 0 and `cull` as scene_cells; with `cull`, also a tile's patch of squares (a rasterizer's
 // block) wholly out of the view is left out, its samples no vertices unless a drawn square or the
@@ -102,7 +106,7 @@ std::vector<CellId> scene_cells(const Store& store, const Grid& grid, const Laye
 // has it (shared with TerrainHeights; PROJ's operation is costly to set up), else made from `dem`.
 // `tiles`: the DEM's LayerSampler::shared_tiles at its level when the caller reads them again
 // afterwards (the cast shadows), else made here and freed once the tiles' halos are made. Throws
-// maquette::Error naming the value at fault.
+// maquette::Error naming the value at fault, and when no tile of the DEM is in the view (cull).
 TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const LayerInfo& dem,
                                  const PinholeCamera& camera, double exaggeration,
                                  double sample_pixels, bool cull,
@@ -120,6 +124,7 @@ void attribute_vertices(TerrainScene& scene, const Fragments* fragments);
 // the datum times `exaggeration`), so an eye placed above it is above what is drawn. The tiles
 // are read and the datum's transformation set up once for all the points (`datum`, the DEM's
 // conversion to the ellipsoid, when the caller has it, else made from `dem`). Not thread-safe.
+// Throws as check_exaggeration.
 class TerrainHeights {
  public:
   TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,

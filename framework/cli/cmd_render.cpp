@@ -62,8 +62,8 @@ void add_render_command(CLI::App& app) {
   CLI::App* cmd = render->add_subcommand(
       "panorama",
       "An oblique picture of the terrain from a camera (CPU, deterministic), and its guides: "
-      "OUT stem + -guides.tif (altitude, distance, lon, lat[, land_cover]; float64, NaN on the "
-      "sky; cast_shadow with --shadows), -silhouettes.png");
+      "OUT stem + -guides.tif (altitude, distance, lon, lat[, land_cover][, cast_shadow with "
+      "--shadows], shading; float64, NaN on the sky), -silhouettes.png");
   cmd->add_option("STORE", o->store, "Store file")->required();
   cmd->add_option("OUT", o->out, "Output PNG")->required();
   cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();

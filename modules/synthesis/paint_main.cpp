@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/json_file.h"
+#include "core/output_clash.h"
 #include "core/output_file.h"
 #include "core/sibling_path.h"
 #include "gdal/image_file.h"
@@ -65,13 +66,18 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::string picture_path = argv[1], params_path = argv[2], out = argv[3];
+    const std::string picture_path = argv[1], params_path = argv[2], out = argv[3],
+                      source = sibling_path(out, "-source.tif");
     const PaintParams params = paint_params(read_json_file(params_path), params_path);
+    check_outputs_spare_inputs(
+        {out, source}, {{"the panorama", picture_path},
+                        {"the params", params_path},
+                        {"the painting", params.exemplar.at("painting").get<std::string>()}});
     const PanoramaPicture picture = read_panorama(picture_path, params.shading > 0);
     const auto exemplar = transfer_exemplar(params.exemplar);
     const PaintedPanorama painted = paint_panorama(picture, *exemplar, params);
     write_image(painted.rgb, painted.width, painted.height, 3, ImageFormat{"PNG", {}}, out);
-    write_source(painted, sibling_path(out, "-source.tif"));
+    write_source(painted, source);
     std::printf("%s: %d x %d pixels painted from %s\n", out.c_str(), painted.width, painted.height,
                 params.exemplar.at("painting").get<std::string>().c_str());
     return 0;

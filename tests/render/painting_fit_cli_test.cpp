@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -357,8 +358,59 @@ TEST(PaintingFitCli, BadInputIsNamed) {
                    "12, lat 45.2");
   expect_error(fit + f.points + " " + out + " --dem dem --fov 200", "--fov");
   expect_error(fit + f.points + " " + out + " --dem dem --warp-smoothing -1", "--warp-smoothing");
+  expect_error(fit + f.points + " " + out + " --dem lc",
+               "--dem layer 'lc' is categorical (classes, not heights)");
+  // Every click on one pixel: OpenCV's SQPnP asserted, an internal error (exit 3).
+  const std::string one_pixel = f.dir + "/one_pixel.json";
+  std::ofstream(one_pixel) << R"({"width": 800, "height": 500, "points": [
+    {"x": 9, "y": 9, "lon": 10.1, "lat": 45.1}, {"x": 9, "y": 9, "lon": 10.2, "lat": 45.1},
+    {"x": 9, "y": 9, "lon": 10.1, "lat": 45.2}, {"x": 9, "y": 9, "lon": 10.2, "lat": 45.2}]})";
+  const auto r = run_maquette(fit + one_pixel + " " + out + " --dem dem");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("solvePnP found no camera: are the control points spread"),
+            std::string::npos)
+      << r.err;
   EXPECT_FALSE(std::ifstream(out));  // nothing written
   EXPECT_FALSE(std::ifstream(f.dir + "/x.png"));
+}
+
+// Clicks the fit cannot put where they were clicked (the painting mirrored: each pixel paired with
+// another place) are warned of by name; the fixture's own clicks are not.
+TEST(PaintingFitCli, FarClicksAreWarnedOf) {
+  const Fixture& f = fixture();
+  const auto good =
+      run_maquette("render fit " + f.store + " " + f.points + " " + f.dir + "/good.json --dem dem");
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_EQ(good.err.find("clicks land farther"), std::string::npos) << good.err;
+  json mirrored = read_json(f.points);
+  for (json& p : mirrored.at("points")) p["x"] = kCamera.width - p.at("x").get<double>();
+  const std::string path = f.dir + "/mirrored.json";
+  std::ofstream(path) << mirrored.dump();
+  const auto r = run_maquette("render fit " + f.store + " " + path + " " + f.dir +
+                              "/mirrored-fit.json --dem dem");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + path + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" clicks land farther than 18.9 px (2 % of the painting's diagonal) from "
+                       "where they were clicked (points[0] by "),
+            std::string::npos)
+      << r.err;
+}
+
+// OUT or --panorama naming an input (the store, the clicks) is refused, and the input kept: the
+// fit's JSON replaced the store, or the user's clicks, exit 0.
+TEST(PaintingFitCli, OutputsSpareTheInputs) {
+  const Fixture& f = fixture();
+  const std::string store = f.dir + "/kept.mqt", points = f.dir + "/kept.json";
+  std::filesystem::copy_file(f.store, store);
+  std::filesystem::copy_file(f.points, points);
+  const std::string fit = "render fit " + store + " " + points + " ";
+  expect_error(fit + store + " --dem dem", store + " is the store " + store + ": it would be");
+  expect_error(fit + points + " --dem dem",
+               points + " is the control points " + points + ": it would be replaced");
+  expect_error(fit + f.dir + "/ok.json --dem dem --panorama " + store, "is the store");
+  EXPECT_EQ(run_maquette("info " + store).exit_code, 0);
+  EXPECT_EQ(read_json(points), read_json(f.points));
+  EXPECT_FALSE(std::ifstream(f.dir + "/ok.json"));
 }
 
 }  // namespace

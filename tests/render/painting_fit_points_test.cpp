@@ -95,6 +95,13 @@ TEST(PaintingPoints, BadInputIsNamed) {
                "clicks.json: points has 1 points: the camera needs at least 4");
   expect_error(R"({"width": 4, "height": 3, "points": [5]})",
                "clicks.json: points[0] 5 is not an object");
+  // A misspelt field was ignored: the point took the DEM's height, the file its default.
+  expect_error(with("\"height\": 2100.5", "\"heigth\": 2100.5"),
+               "clicks.json: points[0] (summit) has an unknown field \"heigth\" (expected: x, y, "
+               "lon, lat, height, name)");
+  expect_error(with("\"width\": 400", "\"width\": 400, \"crs\": \"EPSG:4326\""),
+               "clicks.json: the top level has an unknown field \"crs\" (expected: width, height, "
+               "points)");
 }
 
 }  // namespace

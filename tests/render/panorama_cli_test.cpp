@@ -891,6 +891,54 @@ TEST(PanoramaCli, BadInputIsNamed) {
   expect_error(f.render(out, "--strip-rows -2"), "--strip-rows -2");
   expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
   expect_error(f.render(out, "--bend-start 5000"), "--bend-start requires --bend-radius");
+  // Land-cover classes drawn as heights of a few metres.
+  expect_error("render panorama " + f.store + " " + out + " --dem lc --camera 10.15 45.02 1500",
+               "--dem layer 'lc' is categorical (classes, not heights)");
+  // A camera that sees none of the DEM was told "--dem layer 'dem' holds no tiles", or drew an
+  // all-sky picture with exit 0 (the tiles near enough to be kept, or not culled: --shadows).
+  const std::string up =
+      "render panorama " + f.store + " " + out + " --dem dem --camera 10.15 45.02 12000 --pitch 90";
+  expect_error(up, "none of the --dem layer 'dem' (lon ");
+  expect_error(up,
+               "is in the camera's view (at lon 10.1500, lat 45.0200, 12000.0 m; heading 0, pitch "
+               "90, fov 60): aim it at the terrain");
+  expect_error(f.render(out, "--pitch 90 --shadows"),
+               "the picture shows none of the terrain (the camera at lon 10.1500, lat 45.0200, "
+               "1500.0 m; heading 0, pitch 90, fov 60): aimed away");
+  expect_error(f.render(out, "--heading nan"), "camera heading nan is not finite");
+  expect_error(f.render(out, "--exaggeration inf"),
+               "--exaggeration inf must be positive and finite");
+  expect_error(f.render(out, "--sun nan 40"), "--sun nan 40 must be finite");
+  // Lon and lat swapped, a NaN height or look-at: told as an invalid grid point, or as a pitch.
+  expect_error("render panorama " + f.store + " " + out + " --dem dem --camera 45.02 100.15 1500",
+               "--camera 45.02 100.15 1500: expected LON LAT HEIGHT");
+  expect_error("render panorama " + f.store + " " + out + " --dem dem --camera 10.15 45.02 nan",
+               "--camera 10.15 45.02 nan: expected LON LAT HEIGHT");
+  expect_error(f.render(out, "--look-at 10.15 nan 700"), "--look-at 10.15 nan 700: expected");
+}
+
+// OUT naming the store is refused and the store kept, from the command and from
+// the export step: the picture replaced the store, exit 0.
+TEST(PanoramaCli, OutputThatIsTheStoreIsRefused) {
+  const Fixture& f = fixture();
+  const std::string dir = test::temp_dir(), store = dir + "/kept.mqt";
+  std::filesystem::copy_file(f.store, store);
+  const std::string camera = " --dem dem --camera 10.15 45.02 1500 --size 20 10";
+  auto r = run_maquette("render panorama " + store + " " + store + camera);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(store + " is the store " + store + ": it would be replaced"),
+            std::string::npos)
+      << r.err;
+  std::ofstream(dir + "/pipeline.json")
+      << R"({"store": "kept.mqt", "region": {"bbox": [10, 45, 10.3, 45.3]}, "level": 9,
+            "steps": [{"op": "export", "params": {"format": "panorama", "out": "kept.mqt",
+            "dem": "dem", "camera": [10.15, 45.02, 1500], "size": [20, 10]}}]})";
+  r = run_maquette("-q run " + dir + "/pipeline.json");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("is the store"), std::string::npos) << r.err;
+  const auto info = run_maquette("info " + store);
+  EXPECT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("dem: raster float32"), std::string::npos) << info.out;
 }
 
 }  // namespace
