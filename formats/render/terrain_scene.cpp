@@ -78,6 +78,30 @@ std::vector<std::array<int, 2>> halo_ring(int n) {
   return ring;
 }
 
+// Per edge k of halo_ring(n) (from its k-th sample to the next): 1 when the skirt hangs along it.
+// A ring sample lies in a neighbour's tile; when that neighbour is drawn at the same level its
+// squares and `cell`'s ring squares are the same surface, overlapping by a square, so no ray
+// passes between them and a skirt there could only be seen from below the terrain (walls hanging
+// under the DEM's edge, seen from outside it). `drawn_cells`: the scene's cells, sorted.
+std::vector<uint8_t> skirted_edges(const Grid& grid, CellId cell, int n,
+                                   const std::vector<CellId>& drawn_cells) {
+  const int log2_size = log2_tile_size(n);
+  const auto ring = halo_ring(n);
+  std::vector<uint8_t> level_neighbour(ring.size(), 0);
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const std::optional<FaceCoord> src = pixel_source(grid, cell, n, ring[k][0], ring[k][1]);
+    level_neighbour[k] =
+        src && std::binary_search(
+                   drawn_cells.begin(), drawn_cells.end(),
+                   CellId::FromFaceColRow(src->face, cell.level(), uint32_t(src->col >> log2_size),
+                                          uint32_t(src->row >> log2_size)));
+  }
+  std::vector<uint8_t> skirted(ring.size());
+  for (size_t k = 0; k < ring.size(); ++k)
+    skirted[k] = !(level_neighbour[k] && level_neighbour[(k + 1) % ring.size()]);
+  return skirted;
+}
+
 // A tile's share of the mesh: a vertex per drawn sample (-1 .. n) with data and per such sample of
 // the inner ring (the skirt's), two triangles per square of four such samples and per ring edge
 // between two. Every sample within the halo has a place (render/sample_places.h: known within a
@@ -137,7 +161,9 @@ void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
       if (!std::isnan(heights.at(c, r)) && used(tile, n, c, r)) visit(v++, c, r, -1);
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k)
-    if (!std::isnan(heights.at(ring[k][0], ring[k][1]))) visit(v++, ring[k][0], ring[k][1], int(k));
+    if (!std::isnan(heights.at(ring[k][0], ring[k][1])) &&
+        (tile.skirted[k] || tile.skirted[(k + ring.size() - 1) % ring.size()]))
+      visit(v++, ring[k][0], ring[k][1], int(k));
 }
 
 TileShare tile_share(const SceneTile& tile, int n) {
@@ -155,7 +181,7 @@ TileShare tile_share(const SceneTile& tile, int n) {
   for (size_t k = 0; k < ring.size(); ++k) {
     const auto& a = ring[k];
     const auto& b = ring[(k + 1) % ring.size()];
-    if (has(a[0], a[1]) && has(b[0], b[1])) t.indices += 6;
+    if (tile.skirted[k] && has(a[0], a[1]) && has(b[0], b[1])) t.indices += 6;
   }
   return t;
 }
@@ -224,7 +250,7 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
     if (k % size_t(n + 1) == 0) start_block();  // a side of the ring
     const size_t next = (k + 1) % ring.size();
     const uint32_t a = at(ring[k][0], ring[k][1]), b = at(ring[next][0], ring[next][1]);
-    if (a == kNoVertex || b == kNoVertex) continue;
+    if (!tile.skirted[k] || a == kNoVertex || b == kNoVertex) continue;
     triangles(a, b, below[next], below[k]);
   }
   // The arrays were sized by tile_share's counts and are not initialized: a share that differs
@@ -505,9 +531,12 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
   {
     // The caller's tiles (kept for its cast shadows), else ours, dropped once the halos are made.
     if (!tiles) tiles = LayerSampler::shared_tiles(store, grid, dem, dem.level);
+    std::vector<CellId> sorted_cells = cells;
+    std::sort(sorted_cells.begin(), sorted_cells.end());
     tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
       SceneTile& tile = scene.tiles[i];
       tile.heights = tile_heights(grid, dem, cells[i], *tiles);
+      tile.skirted = skirted_edges(grid, cells[i], n, sorted_cells);
       tile.places.emplace(grid, cells[i], n, kHalo, camera.frame(), heights);
       tile.drawn = drawn_patches(tile, n, camera, grid.level_info(cells[i].level(), n).pixel_m,
                                  exaggeration, cull);

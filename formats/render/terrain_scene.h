@@ -8,7 +8,8 @@
 // as is each side of the skirt. The halo's squares reach into the
 // neighbours, so tiles of one level share the squares along their seams (drawn twice, the same
 // triangles), and a tile's skirt, a wall hanging from its halo's ring deeper than the tile's relief
-// plus a sample, closes the cracks where a neighbour is drawn at another level. Squares with a
+// plus a sample, closes the cracks where a neighbour is drawn at another level (it hangs only
+// there: along a neighbour of the same level it could be seen from below alone). Squares with a
 // missing sample (nodata, no neighbour tile) are left out, and the skirt along them. Heights go to
 // the ellipsoid through the layer's vertical datum, exaggerated by a factor above that datum. Tiles
 // are read and their shares of the mesh counted in parallel, then each written in place (no copies
@@ -47,6 +48,10 @@ struct SceneTile {
   // (build_terrain_scene's cull). A sample is a vertex when a drawn square uses it or it is on
   // the halo's inner ring (the skirt's), and it has data.
   std::vector<uint8_t> drawn;
+  // Per edge of the halo's inner ring (its samples once round, from the top-left, clockwise): 1
+  // when the skirt hangs along it, 0 where the ring lies on a neighbour drawn at the same level
+  // (the two surfaces overlap there: no seam to close).
+  std::vector<uint8_t> skirted;
   size_t first_vertex = 0;
 };
 
