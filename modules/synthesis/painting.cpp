@@ -118,14 +118,55 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
   e.width = ds->GetRasterXSize();
   e.height = ds->GetRasterYSize();
   const size_t n = size_t(e.width) * size_t(e.height);
-  std::vector<uint8_t> rgb(3 * n);
-  std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
-  if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, rgb.data(), e.width, e.height, GDT_Byte, 3,
-                   band_map.data(), 3, long(e.width) * 3, 1, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
-  e.rgb.assign(rgb.begin(), rgb.end());
+  e.rgb.resize(3 * n);
   e.labels.assign(n, 0);
   e.excluded.assign(n, 0);
+  GDALRasterBand* first = ds->GetRasterBand(1);
+  const GDALColorTable* palette =
+      first->GetColorInterpretation() == GCI_PaletteIndex ? first->GetColorTable() : nullptr;
+  if (palette) {
+    // A palette image's values are indices: its colours are the table's (transparent: excluded).
+    std::vector<int32_t> index(n);
+    if (first->RasterIO(GF_Read, 0, 0, e.width, e.height, index.data(), e.width, e.height,
+                        GDT_Int32, 0, 0, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+    for (size_t i = 0; i < n; ++i) {
+      const GDALColorEntry* c = palette->GetColorEntry(index[i]);
+      if (!c)
+        throw Error(path + ": pixel value " + std::to_string(index[i]) + " is not in the " + what +
+                    "'s colour table of " + std::to_string(palette->GetColorEntryCount()) +
+                    " entries");
+      e.rgb[3 * i] = c->c1;
+      e.rgb[3 * i + 1] = c->c2;
+      e.rgb[3 * i + 2] = c->c3;
+      e.excluded[i] = c->c4 == 0;
+    }
+  } else {
+    std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
+    // 8-bit values as they are; 16-bit ones over their whole range (as viewers show them).
+    const GDALDataType type = first->GetRasterDataType();
+    const float divisor = type == GDT_Byte ? 1.0f : type == GDT_UInt16 ? 257.0f : 0.0f;
+    for (const int b : band_map)
+      if (divisor == 0 || ds->GetRasterBand(b)->GetRasterDataType() != type)
+        throw Error(path + ": the " + what + "'s band " + std::to_string(b) + " is " +
+                    GDALGetDataTypeName(ds->GetRasterBand(b)->GetRasterDataType()) + ": a " + what +
+                    " is 8-bit or 16-bit (unsigned) in every band");
+    const auto size = GSpacing(sizeof(float));
+    if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, e.rgb.data(), e.width, e.height, GDT_Float32,
+                     3, band_map.data(), 3 * size, 3 * size * e.width, size, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+    if (divisor != 1)
+      for (float& v : e.rgb) v /= divisor;
+  }
+  // What is not the painting (transparent under an alpha band, nodata, outside GDAL's mask) is
+  // never copied.
+  if (!(first->GetMaskFlags() & GMF_ALL_VALID)) {
+    std::vector<uint8_t> mask(n);
+    if (first->GetMaskBand()->RasterIO(GF_Read, 0, 0, e.width, e.height, mask.data(), e.width,
+                                       e.height, GDT_Byte, 0, 0, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s transparency");
+    for (size_t i = 0; i < n; ++i) e.excluded[i] |= mask[i] == 0;
+  }
   return e;
 }
 

@@ -62,7 +62,7 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
   if (fields.contains("exclusion")) {
     const auto mask =
         read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
-    for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] = mask[i] != 0;
+    for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] |= mask[i] != 0;
   }
   for (const int c : fields.at("exclude_classes").get<std::vector<int>>())
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
