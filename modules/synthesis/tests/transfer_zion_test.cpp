@@ -16,6 +16,7 @@
 #include "core/tile.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "synthetic_raster.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {
@@ -164,6 +165,45 @@ TEST(TransferZion, AMissingPaintingAndABadClassTableAreNamed) {
             std::string::npos)
       << r.err;
   fs::remove_all(table.dir);
+}
+
+TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
+  if (!fs::exists(kShared + "/zion/nlcd.tif")) GTEST_SKIP() << "../shared/data is absent";
+  // 64 x 64: black on the left half, yellow (255, 200, 0) on the right; both classes may paint
+  // every land cover. The rgb layer's nodata is 0: a channel copied at 0 must not read as a hole.
+  const std::string painting = maquette::test::write_png(
+      maquette::test::temp_dir() + "/black.png", 64, 64, 3, [](int x, int, int b) {
+        return x < 32 ? 0.0 : b == 0 ? 255.0 : b == 1 ? 200.0 : 0.0;
+      });
+  const json any = {0, 1};
+  const TransferRun run =
+      run_transfer("-black", 2, "",
+                   {{"painting", painting},
+                    {"classes", 2},
+                    {"exemplar_scale", 1},
+                    {"landcover_classes", {{"3", any}, {"4", any}, {"5", any}, {"6", any}}}});
+  const auto store = Store::open(run.store, Store::Mode::ReadOnly);
+  size_t black = 0, yellow = 0, zero = 0;
+  for (const CellId cell : store->tile_cells("painted")) {
+    const RawTile rgb = *store->get_tile("painted", cell);
+    const Tile<float> source = to_tile<float>(*store->get_tile("painted_source", cell));
+    for (int r = 0; r < source.size(); ++r)
+      for (int c = 0; c < source.size(); ++c) {
+        if (std::isnan(source.at(c, r, 0))) continue;
+        const bool left = source.at(c, r, 0) < 32;
+        (left ? black : yellow) += 1;
+        for (int k = 0; k < 3; ++k) {
+          const int got = std::to_integer<int>(
+              rgb.bytes[(size_t(r) * size_t(rgb.size) + size_t(c)) * 3 + size_t(k)]);
+          zero += got == 0;
+          EXPECT_EQ(got, left ? 1 : k == 0 ? 255 : k == 1 ? 200 : 1) << cell.ToText();
+        }
+      }
+  }
+  EXPECT_GT(black, 1000u);
+  EXPECT_GT(yellow, 1000u);
+  EXPECT_EQ(zero, 0u);
+  fs::remove_all(run.dir);
 }
 
 }  // namespace
