@@ -67,8 +67,8 @@ std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value);
 
 // "altitude_range" [low, high] metres when given; throws maquette::Error naming `op` unless
-// high > low, and when one half of the altitude guide comes without the other (the range
-// without a `dem` input, `dem_given`, or a dem without the range): never silently dropped.
+// high > low, and when one part of the altitude guide comes without the others (the range, the
+// `dem` input, `dem_given`, and the painting's "painting_altitude"): never silently dropped.
 std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
                                                     const std::string& op, bool dem_given);
 
