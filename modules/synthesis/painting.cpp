@@ -3,6 +3,7 @@
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,13 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
   if (bands < 1 || bands > 4)
     throw Error(path + ": a " + what + " has 1 (grey), 3 or 4 (RGB, alpha) bands, not " +
                 std::to_string(bands));
+  // GDAL reads the pixels as stored; a viewer shows them turned by the EXIF orientation.
+  if (const char* turn = ds->GetMetadataItem("EXIF_Orientation"); turn && std::string(turn) != "1")
+    spdlog::warn(
+        "{}: EXIF orientation {}: the {} is read as stored, not turned as a viewer shows "
+        "it; its class image, masks and \"rows\" are taken in that orientation (save it "
+        "turned to use it as seen)",
+        path, turn, what);
   Exemplar e;
   e.width = ds->GetRasterXSize();
   e.height = ds->GetRasterYSize();

@@ -3,12 +3,14 @@
 // transparency, a palette or 16 bits read as a viewer shows them.
 #include "../painting.h"
 
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
 
 #include "core/error.h"
+#include "logged_warnings.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
 
@@ -161,6 +163,32 @@ TEST(ReadPainting, APaletteImageIsItsTablesColours) {
       EXPECT_EQ(e.rgb[3 * i + 2], 15 * index);
       EXPECT_EQ(e.excluded[i], 0);
     }
+}
+
+TEST(ReadPainting, AnExifOrientationIsReadAsStoredAndSaid) {
+  // A JPEG turned by its EXIF orientation 6 (a viewer shows it 90 degrees clockwise), and one of
+  // orientation 1.
+  const std::string dir = test::temp_dir();
+  const auto jpeg = [&](const char* orientation) {
+    std::unique_ptr<GDALDataset> mem(
+        GetGDALDriverManager()->GetDriverByName("MEM")->Create("", 16, 8, 3, GDT_Byte, nullptr));
+    mem->SetMetadataItem("EXIF_Orientation", orientation);
+    const std::string path = dir + "/turned" + orientation + ".jpg";
+    GDALClose(GetGDALDriverManager()->GetDriverByName("JPEG")->CreateCopy(
+        path.c_str(), mem.get(), false, nullptr, nullptr, nullptr));
+    return path;
+  };
+  const std::string turned = jpeg("6"), upright = jpeg("1");
+  const Warnings warnings;
+  const Exemplar e = read_painting(turned);
+  EXPECT_EQ(e.width, 16);  // as stored
+  EXPECT_NE(warnings.text.str().find(turned + ": EXIF orientation 6: the painting is read as "
+                                              "stored, not turned as a viewer shows it"),
+            std::string::npos)
+      << warnings.text.str();
+  const auto before = warnings.text.str().size();
+  read_painting(upright);
+  EXPECT_EQ(warnings.text.str().size(), before) << warnings.text.str();
 }
 
 TEST(ReadPainting, SixteenBitsSpanTheirRangeOtherTypesAreNamed) {
