@@ -1,5 +1,6 @@
 #include "painting.h"
 
+#include <cpl_vsi.h>
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -23,8 +25,17 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
                                         unsigned kinds = GDAL_OF_RASTER) {
   GDALAllRegister();
   std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
-  if (!ds) throw Error(path + ": GDAL cannot open the " + what);
-  return ds;
+  if (ds) return ds;
+  // A missing file said as such: a relative path is the working directory's, not the pipeline's
+  // (whose ingest sources are the pipeline file's).
+  VSIStatBufL stat;
+  if (VSIStatL(path.c_str(), &stat) != 0) {
+    std::error_code error;
+    const auto cwd = std::filesystem::current_path(error).string();
+    throw Error(path + ": GDAL cannot open the " + what + ": no such file" +
+                (path.starts_with("/") ? "" : " (relative to the working directory " + cwd + ")"));
+  }
+  throw Error(path + ": GDAL cannot open the " + what);
 }
 
 // Band 1 of `ds` as bytes; it must have the painting's size.

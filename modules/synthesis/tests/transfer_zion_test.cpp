@@ -155,7 +155,11 @@ TEST(TransferZion, AMissingPaintingAndABadClassTableAreNamed) {
   const TransferRun missing =
       run_transfer("-missing", 2, "", {{"painting", "no/such/painting.png"}}, &r);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("no/such/painting.png: GDAL cannot open the painting"), std::string::npos)
+  // A relative path is the working directory's (the pipeline's ingests take the pipeline file's).
+  EXPECT_NE(r.err.find("no/such/painting.png: GDAL cannot open the painting: no such file "
+                       "(relative to the working directory " +
+                       fs::current_path().string() + ")"),
+            std::string::npos)
       << r.err;
   fs::remove_all(missing.dir);
   const TransferRun table =
