@@ -87,6 +87,7 @@ class Assess : public ReduceOperator {
 
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
+    check_landcover_layer(ctx.input_layer("landcover"), kOp);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
     const auto exemplar = transfer_exemplar(params);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "store/store.h"
 #include "synthesis.h"
 
 namespace maquette::synthesis {
@@ -61,6 +62,11 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
 // themselves. Throws maquette::Error naming `op` and the key when a class is in two different
 // sets.
 std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op);
+
+// Throws maquette::Error naming `op`, the port and the layer unless `layer` (the "landcover"
+// input) is categorical: a quantity (a DEM mapped by mistake) would match no table entry, and
+// every pixel would take any class without a word.
+void check_landcover_layer(const LayerInfo& layer, const std::string& op);
 
 // The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
 // not in the table.

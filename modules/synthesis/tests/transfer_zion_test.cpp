@@ -60,9 +60,11 @@ void write_mask(const std::string& path, int width, int height) {
       path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
 }
 
-// The pipeline run in a fresh folder; `changes` overrides the transfer's params.
+// The pipeline run in a fresh folder; `changes` overrides the transfer's params, `inputs` its
+// inputs.
 TransferRun run_transfer(const std::string& name, int threads, const std::string& mask,
-                         const json& changes = json::object(), test::CliResult* result = nullptr) {
+                         const json& changes = json::object(), test::CliResult* result = nullptr,
+                         const json& inputs = {{"landcover", "landcover"}, {"dem", "dem"}}) {
   TransferRun run{
       fs::temp_directory_path() / ("maquette-synthesis-" + std::to_string(getpid()) + name), ""};
   fs::remove_all(run.dir);
@@ -73,7 +75,7 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
                    {"level", 10},
                    {"steps",
                     {{{"op", "synthesis.transfer"},
-                      {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+                      {"inputs", inputs},
                       {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
                       {"params",
                        {{"painting", kPainting},
@@ -149,26 +151,27 @@ TEST(TransferZion, SameBitsOnOneAndTwoThreadsAndColoursFromTheirSources) {
   fs::remove(mask);
 }
 
-TEST(TransferZion, AMissingPaintingAndABadClassTableAreNamed) {
+TEST(TransferZion, AMissingPaintingABadClassTableAndHeightsAsLandCoverAreNamed) {
   if (!fs::exists(kShared + "/zion/nlcd.tif")) GTEST_SKIP() << "../shared/data is absent";
-  test::CliResult r;
-  const TransferRun missing =
-      run_transfer("-missing", 2, "", {{"painting", "no/such/painting.png"}}, &r);
-  EXPECT_NE(r.exit_code, 0);
+  const auto refused = [](const std::string& name, const json& changes, const json& inputs,
+                          const std::string& message) {
+    test::CliResult r;
+    const TransferRun run = run_transfer(name, 2, "", changes, &r, inputs);
+    EXPECT_NE(r.exit_code, 0) << name;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    fs::remove_all(run.dir);
+  };
+  const json inputs = {{"landcover", "landcover"}, {"dem", "dem"}};
   // A relative path is the working directory's (the pipeline's ingests take the pipeline file's).
-  EXPECT_NE(r.err.find("no/such/painting.png: GDAL cannot open the painting: no such file "
-                       "(relative to the working directory " +
-                       fs::current_path().string() + ")"),
-            std::string::npos)
-      << r.err;
-  fs::remove_all(missing.dir);
-  const TransferRun table =
-      run_transfer("-table", 2, "", {{"landcover_classes", {{"forest", 3}}}}, &r);
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("synthesis.transfer.landcover_classes: key 'forest' is not an integer"),
-            std::string::npos)
-      << r.err;
-  fs::remove_all(table.dir);
+  refused("-missing", {{"painting", "no/such/painting.png"}}, inputs,
+          "no/such/painting.png: GDAL cannot open the painting: no such file (relative to the "
+          "working directory " +
+              fs::current_path().string() + ")");
+  refused("-table", {{"landcover_classes", {{"forest", 3}}}}, inputs,
+          "synthesis.transfer.landcover_classes: key 'forest' is not an integer");
+  // The DEM mapped as the land cover: no height is in the table, every pixel would take any class.
+  refused("-heights", json::object(), {{"landcover", "dem"}, {"dem", "dem"}},
+          "synthesis.transfer: inputs.landcover: layer 'dem' is continuous, not categorical");
 }
 
 TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
