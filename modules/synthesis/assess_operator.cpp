@@ -87,6 +87,7 @@ class Assess : public ReduceOperator {
 
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
+    check_landcover_layer(ctx.input_layer("landcover"), kOp);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
     const auto exemplar = transfer_exemplar(params);
@@ -153,20 +154,20 @@ class Assess : public ReduceOperator {
     const auto usable = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
     json distances = json::object();
     for (const auto& [label, d] : m.histogram_distance) distances[std::to_string(label)] = d;
-    const json report = {
-        {"pixels", m.pixels},
-        {"label_consistency", m.label_consistency},
-        {"excluded_pixels", m.excluded_pixels},
-        {"coherence", m.coherence},
-        {"coherence_patches", t.coherence_patches},
-        {"distinct_source_fraction", m.distinct_source_fraction},
-        // The fraction cannot exceed the exemplar's usable pixels over the output's.
-        {"distinct_source_bound", std::min(1.0, double(usable) / double(m.pixels))},
-        {"usable_exemplar_pixels", usable},
-        {"max_source_share", m.max_source_share},
-        {"histogram_distance", distances},
-        {"worst_histogram_distance", m.worst_histogram_distance},
-        {"altitude_mismatch", m.altitude_mismatch}};
+    json report = {{"pixels", m.pixels},
+                   {"label_consistency", m.label_consistency},
+                   {"excluded_pixels", m.excluded_pixels},
+                   {"coherence", m.coherence},
+                   {"coherence_patches", t.coherence_patches},
+                   {"distinct_source_fraction", m.distinct_source_fraction},
+                   // The fraction cannot exceed the exemplar's usable pixels over the output's.
+                   {"distinct_source_bound", std::min(1.0, double(usable) / double(m.pixels))},
+                   {"usable_exemplar_pixels", usable},
+                   {"max_source_share", m.max_source_share},
+                   {"histogram_distance", distances},
+                   {"worst_histogram_distance", m.worst_histogram_distance}};
+    // Without an altitude guide there is no mismatch: a 0 would read as a perfect match.
+    if (t.altitude_pixels > 0) report["altitude_mismatch"] = m.altitude_mismatch;
     std::ostringstream table;
     for (const auto& [key, value] : report.items())
       if (!value.is_object()) table << key << '\t' << value.dump() << '\n';

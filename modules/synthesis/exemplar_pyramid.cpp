@@ -110,9 +110,10 @@ void analyse_level(ExemplarLevel& level, int l, int k, const std::vector<Placeme
       level.by_label[level.labels[size_t(i)]].push_back(i);
     }
   if (level.allowed.empty())
-    throw Error("synthesis: the exemplar has no pixel left to copy at " +
-                std::to_string(level.width) + " x " + std::to_string(level.height) +
-                " (all excluded)");
+    throw Error("synthesis: the exemplar has no pixel left to copy at level " + std::to_string(l) +
+                ", " + std::to_string(level.width) + " x " + std::to_string(level.height) +
+                " (a pixel there is excluded when any of the 2 x 2 below it is: the exclusions "
+                "cover every block; exclude less, or lower exemplar_scale)");
   level.basis = fit_basis(level, l, paintings);
   level.features.resize(size_t(n) * kFeatureDims);
   // Each row's features on their own (in parallel).

@@ -1,11 +1,14 @@
 #include "painting.h"
 
+#include <cpl_vsi.h>
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -22,8 +25,17 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
                                         unsigned kinds = GDAL_OF_RASTER) {
   GDALAllRegister();
   std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
-  if (!ds) throw Error(path + ": GDAL cannot open the " + what);
-  return ds;
+  if (ds) return ds;
+  // A missing file said as such: a relative path is the working directory's, not the pipeline's
+  // (whose ingest sources are the pipeline file's).
+  VSIStatBufL stat;
+  if (VSIStatL(path.c_str(), &stat) != 0) {
+    std::error_code error;
+    const auto cwd = std::filesystem::current_path(error).string();
+    throw Error(path + ": GDAL cannot open the " + what + ": no such file" +
+                (path.starts_with("/") ? "" : " (relative to the working directory " + cwd + ")"));
+  }
+  throw Error(path + ": GDAL cannot open the " + what);
 }
 
 // Band 1 of `ds` as bytes; it must have the painting's size.
@@ -114,18 +126,66 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
   if (bands < 1 || bands > 4)
     throw Error(path + ": a " + what + " has 1 (grey), 3 or 4 (RGB, alpha) bands, not " +
                 std::to_string(bands));
+  // GDAL reads the pixels as stored; a viewer shows them turned by the EXIF orientation.
+  if (const char* turn = ds->GetMetadataItem("EXIF_Orientation"); turn && std::string(turn) != "1")
+    spdlog::warn(
+        "{}: EXIF orientation {}: the {} is read as stored, not turned as a viewer shows "
+        "it; its class image, masks and \"rows\" are taken in that orientation (save it "
+        "turned to use it as seen)",
+        path, turn, what);
   Exemplar e;
   e.width = ds->GetRasterXSize();
   e.height = ds->GetRasterYSize();
   const size_t n = size_t(e.width) * size_t(e.height);
-  std::vector<uint8_t> rgb(3 * n);
-  std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
-  if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, rgb.data(), e.width, e.height, GDT_Byte, 3,
-                   band_map.data(), 3, long(e.width) * 3, 1, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
-  e.rgb.assign(rgb.begin(), rgb.end());
+  e.rgb.resize(3 * n);
   e.labels.assign(n, 0);
   e.excluded.assign(n, 0);
+  GDALRasterBand* first = ds->GetRasterBand(1);
+  const GDALColorTable* palette =
+      first->GetColorInterpretation() == GCI_PaletteIndex ? first->GetColorTable() : nullptr;
+  if (palette) {
+    // A palette image's values are indices: its colours are the table's (transparent: excluded).
+    std::vector<int32_t> index(n);
+    if (first->RasterIO(GF_Read, 0, 0, e.width, e.height, index.data(), e.width, e.height,
+                        GDT_Int32, 0, 0, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+    for (size_t i = 0; i < n; ++i) {
+      const GDALColorEntry* c = palette->GetColorEntry(index[i]);
+      if (!c)
+        throw Error(path + ": pixel value " + std::to_string(index[i]) + " is not in the " + what +
+                    "'s colour table of " + std::to_string(palette->GetColorEntryCount()) +
+                    " entries");
+      e.rgb[3 * i] = c->c1;
+      e.rgb[3 * i + 1] = c->c2;
+      e.rgb[3 * i + 2] = c->c3;
+      e.excluded[i] = c->c4 == 0;
+    }
+  } else {
+    std::vector<int> band_map = bands >= 3 ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 1, 1};
+    // 8-bit values as they are; 16-bit ones over their whole range (as viewers show them).
+    const GDALDataType type = first->GetRasterDataType();
+    const float divisor = type == GDT_Byte ? 1.0f : type == GDT_UInt16 ? 257.0f : 0.0f;
+    for (const int b : band_map)
+      if (divisor == 0 || ds->GetRasterBand(b)->GetRasterDataType() != type)
+        throw Error(path + ": the " + what + "'s band " + std::to_string(b) + " is " +
+                    GDALGetDataTypeName(ds->GetRasterBand(b)->GetRasterDataType()) + ": a " + what +
+                    " is 8-bit or 16-bit (unsigned) in every band");
+    const auto size = GSpacing(sizeof(float));
+    if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, e.rgb.data(), e.width, e.height, GDT_Float32,
+                     3, band_map.data(), 3 * size, 3 * size * e.width, size, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+    if (divisor != 1)
+      for (float& v : e.rgb) v /= divisor;
+  }
+  // What is not the painting (transparent under an alpha band, nodata, outside GDAL's mask) is
+  // never copied.
+  if (!(first->GetMaskFlags() & GMF_ALL_VALID)) {
+    std::vector<uint8_t> mask(n);
+    if (first->GetMaskBand()->RasterIO(GF_Read, 0, 0, e.width, e.height, mask.data(), e.width,
+                                       e.height, GDT_Byte, 0, 0, nullptr) != CE_None)
+      throw Error(path + ": GDAL cannot read the " + what + "'s transparency");
+    for (size_t i = 0; i < n; ++i) e.excluded[i] |= mask[i] == 0;
+  }
   return e;
 }
 

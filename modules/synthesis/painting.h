@@ -1,5 +1,6 @@
-// Reading a painting and its hand-made masks (any 8-bit image GDAL reads), and the automatic
-// segmentation of a painting into colour classes when no hand-drawn class image is given.
+// Reading a painting (an 8-bit or 16-bit image GDAL reads) and its hand-made masks (8-bit), and
+// the automatic segmentation of a painting into colour classes when no hand-drawn class image is
+// given.
 #pragma once
 
 #include <cstdint>
@@ -10,9 +11,12 @@
 
 namespace maquette::synthesis {
 
-// The painting's pixels (RGB; a grey image's band repeated, an alpha band dropped), with no
-// labels, altitude or exclusion yet. Throws maquette::Error naming the file when GDAL cannot
-// open or read it or its bands do not fit, calling it `what`.
+// The painting's pixels (RGB 0..255; a grey image's band repeated, a palette image's indices
+// through its colour table, 16-bit values divided by 257), excluded where it is transparent (an
+// alpha band, a palette's transparent entries, nodata: GDAL's mask), with no labels or altitude
+// yet; warns when an EXIF orientation turns it in a viewer (it is read as stored). Throws
+// maquette::Error naming the file when GDAL cannot open or read it, or its bands' count or type
+// (8-bit or 16-bit unsigned) do not fit, calling it `what`.
 Exemplar read_painting(const std::string& path, const std::string& what = "painting");
 
 // A one-band 8-bit image (a class image, an exclusion mask, an altitude) that must have the

@@ -1,10 +1,13 @@
 #include "transfer_exemplar.h"
 
+#include <spdlog/spdlog.h>
 #include <tbb/collaborative_call_once.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,10 +65,15 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
   if (fields.contains("exclusion")) {
     const auto mask =
         read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
-    for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] = mask[i] != 0;
+    for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] |= mask[i] != 0;
   }
-  for (const int c : fields.at("exclude_classes").get<std::vector<int>>())
+  const auto excluded_classes = fields.at("exclude_classes").get<std::vector<int>>();
+  for (const int c : excluded_classes)
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == c;
+  if (std::find(e.excluded.begin(), e.excluded.end(), 0) == e.excluded.end())
+    throw Error(where + ": every pixel of " + painting +
+                " is excluded (by its transparency, exclusion or exclude_classes " +
+                nlohmann::json(excluded_classes).dump() + "): nothing is left to copy");
   if (fields.contains("painting_altitude"))
     e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude");
   if (fields.contains("painting_distance"))
@@ -89,15 +97,25 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
                        : "missing, but the first painting has one") +
                   ": give every painting an altitude or none");
     Exemplar e = read_exemplar(fields, where, scale);
-    const auto labels =
-        further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), kOp, where);
+    const nlohmann::json& table = fields.at("landcover_classes");
+    const auto labels = further_classes(params.at("landcover_classes"), table, kOp, where);
+    const auto groups = class_groups(table, where);
+    std::set<uint8_t> copied;  // the table's sets (by their smallest class) with pixels to copy
     for (size_t p = 0; p < e.labels.size(); ++p) {
       const auto it = labels.find(e.labels[p]);
-      if (it == labels.end())
+      if (it == labels.end()) {
         e.excluded[p] = 1;
-      else
-        e.labels[p] = it->second;
+        continue;
+      }
+      if (!e.excluded[p]) copied.insert(groups.at(e.labels[p]));
+      e.labels[p] = it->second;
     }
+    // A class without pixels would leave this painting unused for its land cover, unsaid.
+    for (const auto& [target, c] : class_table(table, where))
+      if (!copied.count(c))
+        throw Error(where + ".landcover_classes." + std::to_string(target) + ": painting class " +
+                    std::to_string(c) + " has no pixel to copy in " +
+                    fields.at("painting").get<std::string>() + " (not in it, or excluded)");
     out.push_back(shrink_exemplar(e, scale));
   }
   return out;
@@ -109,6 +127,15 @@ void add_input_files(const nlohmann::json& fields, std::vector<std::string>& fil
        {"painting", "labels", "exclusion", "painting_altitude", "painting_distance"})
     if (fields.contains(field) && fields.at(field) != "rows")
       files.push_back(fields.at(field).get<std::string>());
+}
+
+// The paintings of `params` by file, for messages: "painting P" or "paintings P, Q".
+std::string painting_names(const nlohmann::json& params) {
+  std::string names = params.at("painting").get<std::string>();
+  if (params.contains("exemplars"))
+    for (const auto& further : params.at("exemplars"))
+      names += ", " + further.at("painting").get<std::string>();
+  return (params.contains("exemplars") ? "paintings " : "painting ") + names;
 }
 
 // The analysis (cached by exemplar_cache.h under a key holding the build: a change here or in
@@ -134,10 +161,40 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
                 std::to_string(combined.height) +
                 " pixels (the paintings side by side, after exemplar_scale): at most 65535 x "
                 "32767; raise exemplar_scale or give fewer paintings");
-  out->pyramid = analyse_exemplar(combined, kLevels, params.at("k").get<int>(), out->parts);
+  // Minutes for a large painting (6000 x 4000 at exemplar_scale 2: 306 s of CPU), said before.
+  spdlog::info(
+      "{}: analysing {}: {} x {} exemplar pixels at exemplar_scale {} (once per set of "
+      "inputs; the exemplar cache keeps it)",
+      kOp, painting_names(params), combined.width, combined.height, scale);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    out->pyramid = analyse_exemplar(combined, kLevels, params.at("k").get<int>(), out->parts);
+  } catch (const Error& e) {
+    throw Error(std::string(kOp) + ": " + painting_names(params) + ": " + e.what());
+  }
   // Measured with the default weights: the same exemplar serves every step's weights.
   measure_usage(out->pyramid, SynthesisParams{});
+  spdlog::info("{}: {} analysed in {:.1f} s", kOp, painting_names(params),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return out;
+}
+
+// Refuses a class the table gives a target value that has no pixel to copy (absent from the
+// paintings, excluded, or lost to the exemplar's blocks): the synthesis would take any class's
+// pixels there instead (synthesis.cpp, start_pool), without a word.
+void check_table_classes(const TransferExemplar& t, const nlohmann::json& params) {
+  const ExemplarLevel& finest = t.pyramid.levels[0];
+  std::string present;
+  for (int l = 0; l < kUnknownLabel; ++l)
+    if (!finest.by_label[size_t(l)].empty())
+      present += (present.empty() ? "" : ", ") + std::to_string(l);
+  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
+    if (finest.by_label[c].empty())
+      throw Error(std::string(kOp) + ".landcover_classes." + std::to_string(target) +
+                  ": painting class " + std::to_string(c) +
+                  " has no pixel to copy (not in the painting, or excluded); the classes that "
+                  "have: " +
+                  present);
 }
 
 }  // namespace
@@ -205,6 +262,8 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
     const auto analyse = [&] { return build(params); };
     slot->exemplar = disk_key ? cached_exemplar(*directory, *disk_key, analyse) : analyse();
   });
+  // Not in the analysis: the table's classes are not all in the key (exemplar_key_params).
+  if (params.contains("landcover_classes")) check_table_classes(*slot->exemplar, params);
   return slot->exemplar;
 }
 

@@ -42,7 +42,9 @@ struct TransferExemplar {
 // "exemplar_scale", "k", and "exemplars" with "harmonize" (README: "Several paintings"; each
 // further painting read as the first, its classes through further_classes, those it does not
 // name excluded, shrunk, harmonized to the first, then all combined). Throws maquette::Error
-// naming the op, field (exemplars[i].field for a further painting) and file at fault.
+// naming the op, field (exemplars[i].field for a further painting) and file at fault, among
+// them a painting whose every pixel is excluded and a class "landcover_classes" gives a target
+// value that has no pixel left to copy (it would be painted from any class).
 // Cached by params (exemplar_key_params) in the process, and on disk (exemplar_cache.h, keyed by
 // those and the bytes of exemplar_input_files) across processes and runs.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);

@@ -2,6 +2,7 @@
 // altitude), cell by cell, seamless: synthesis.h over each output tile's pixels in the plane of
 // the grid's faces (core/face_plane.h), and along a polar face's turned edges the equatorial
 // face's chart joined by a minimum-error cut (turned_edges.h).
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -26,7 +27,8 @@ OperatorSpec transfer_spec() {
   s.inputs = {{"landcover", "target land-cover classes (categorical)", false},
               {"dem", "elevation in metres, the altitude guide (with altitude_range)", true}};
   s.outputs = {
-      {"rgb", "the painting's colours", DType::U8, 3, Semantics::Continuous, "", 0.0},
+      {"rgb", "the painting's colours (0 is nodata: a channel at 0 in the painting is written 1)",
+       DType::U8, 3, Semantics::Continuous, "", 0.0},
       {"source",
        "painting pixel (column, row) each output pixel was copied from: the top-left pixel of its "
        "exemplar_scale block; and the painting (0: painting, i: exemplars[i - 1])",
@@ -47,6 +49,7 @@ class Transfer : public CellOperator {
 
   void run(const CellContext& ctx, CellData& data) const override {
     const json& params = *ctx.params;
+    check_landcover_layer(ctx.input_layer("landcover"), spec_.name);
     const auto table = class_table(params.at("landcover_classes"), spec_.name);
     const auto exemplar = transfer_exemplar(params);
     const Tile<float>& landcover = input_with_halo(spec_.name, ctx, data, "landcover", spec_.halo);
@@ -104,9 +107,11 @@ class Transfer : public CellOperator {
           continue;
         }
         const size_t s = size_t(src[size_t(r) * size_t(n) + size_t(c)]);
+        // 0 is the 8-bit layer's nodata: a channel the painting has at 0 is written 1, else
+        // it would read back (and export) as a hole.
         if (rgb)
           for (int k = 0; k < 3; ++k)
-            rgb->at(c, r, k) = std::round(e.rgb[3 * s + size_t(k)] * 255.0f);
+            rgb->at(c, r, k) = std::max(1.0f, std::round(e.rgb[3 * s + size_t(k)] * 255.0f));
         if (source) {
           const SourcePixel from = exemplar->source_of(int32_t(s));
           source->at(c, r, 0) = float(from.col);

@@ -17,7 +17,9 @@ nlohmann::json exemplar_params_schema() {
   return {
       {"painting",
        {{"type", "string"},
-        {"description", "the painting (8-bit image; relative to the working directory)"}}},
+        {"description",
+         "the painting (8-bit or 16-bit grey, RGB(A) or palette image; transparent pixels never "
+         "copied; relative to the working directory)"}}},
       {"labels",
        {{"type", "string"},
         {"description",
@@ -42,7 +44,8 @@ nlohmann::json exemplar_params_schema() {
        {{"type", "object"},
         {"description",
          "target land-cover value (a string key) -> painting class, or an array of painting "
-         "classes taken as one (a class in one set only); other values match any class"}}},
+         "classes taken as one (a class in one set only); other values match any class; each class "
+         "named must have pixels to copy"}}},
       {"altitude_range",
        {{"type", "array"},
         {"items", {{"type", "number"}}},
@@ -94,20 +97,34 @@ nlohmann::json further_exemplars_schema() {
 
 nlohmann::json synthesis_params_schema() {
   using json = nlohmann::json;
-  const auto weight = [](double fallback) {
-    return json{{"type", "number"}, {"minimum", 0}, {"default", fallback}};
+  const auto weight = [](double fallback, const char* description) {
+    return json{
+        {"type", "number"}, {"minimum", 0}, {"default", fallback}, {"description", description}};
   };
-  return {{"w_label", weight(2.0)},
-          {"w_altitude", weight(1.0)},
-          {"w_repetition", weight(0.3)},
-          {"w_usage", weight(0.05)},
-          {"w_spread", weight(0.15)},
-          {"coherence", weight(0.5)},
-          {"jitter", {{"type", "integer"}, {"minimum", 0}, {"maximum", 4}, {"default", 1}}},
-          {"vote_radius",
-           {{"type", "integer"}, {"minimum", 0}, {"maximum", kVoteRadius}, {"default", 1}}},
-          {"vote_balance", weight(0.0)},
-          {"seed", {{"type", "integer"}, {"minimum", 0}, {"default", 0}}}};
+  const auto whole = [](int low, std::optional<int> high, int fallback, const char* description) {
+    json out = {{"type", "integer"}, {"minimum", low}, {"default", fallback}};
+    if (high) out["maximum"] = *high;
+    out["description"] = description;
+    return out;
+  };
+  return {{"w_label", weight(2.0, "weight of the 3 x 3 neighbourhood's label mismatch")},
+          {"w_altitude", weight(1.0,
+                                "weight of the altitude mismatch (with dem, altitude_range and "
+                                "painting_altitude)")},
+          {"w_repetition", weight(0.3, "penalty on a source patch used again nearby")},
+          {"w_usage", weight(0.05, "weight of the exemplar pixels' measured over-use")},
+          {"w_spread", weight(0.15,
+                              "weight of each block's preference among the exemplar's "
+                              "regions")},
+          {"coherence", weight(0.5,
+                               "a candidate that is no neighbour's source shifted costs 1 + "
+                               "coherence times more")},
+          {"jitter", whole(0, 4, 1, "jitter of the exemplar coordinates at each level, pixels")},
+          {"vote_radius", whole(0, kVoteRadius, 1,
+                                "radius of the finest level's vote among overlapping patches "
+                                "(0: none)")},
+          {"vote_balance", weight(0.0, "the vote's histogram balance, an exponent (0: none)")},
+          {"seed", whole(0, std::nullopt, 0, "of the jitter and the random candidates")}};
 }
 
 nlohmann::json transfer_params_schema() {
@@ -223,6 +240,13 @@ std::map<uint8_t, uint8_t> further_classes(const nlohmann::json& first,
   return out;
 }
 
+void check_landcover_layer(const LayerInfo& layer, const std::string& op) {
+  if (layer.semantics != Semantics::Categorical)
+    throw Error(op + ": inputs.landcover: layer '" + layer.name + "' is " +
+                std::string(semantics_name(layer.semantics)) +
+                ", not categorical: land-cover classes (ingest them with \"as\": \"landcover\")");
+}
+
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value) {
   const auto it = std::isnan(value) ? table.end() : table.find(int(std::lround(value)));
   return it == table.end() ? kUnknownLabel : it->second;
@@ -235,6 +259,14 @@ std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params
                                   " mapped to the guide's 0..1): give both or neither"
                                 : ".altitude_range is given without inputs.dem: give both or"
                                   " neither"));
+  // The painting's altitude is the guide's other half: without it the target's is never
+  // matched, and it alone matches nothing.
+  if (params.contains("painting_altitude") != dem_given)
+    throw Error(op + (dem_given ? ": inputs.dem and altitude_range are given without "
+                                  "painting_altitude (the painting's altitude: a grey image or "
+                                  "\"rows\"): give the three or none"
+                                : ".painting_altitude is given without inputs.dem and "
+                                  "altitude_range: give the three or none"));
   if (!dem_given) return std::nullopt;
   return range_param(params, "altitude_range", op);
 }

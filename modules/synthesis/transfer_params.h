@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "store/store.h"
 #include "synthesis.h"
 
 namespace maquette::synthesis {
@@ -62,13 +63,18 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
 // sets.
 std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op);
 
+// Throws maquette::Error naming `op`, the port and the layer unless `layer` (the "landcover"
+// input) is categorical: a quantity (a DEM mapped by mistake) would match no table entry, and
+// every pixel would take any class without a word.
+void check_landcover_layer(const LayerInfo& layer, const std::string& op);
+
 // The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
 // not in the table.
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value);
 
 // "altitude_range" [low, high] metres when given; throws maquette::Error naming `op` unless
-// high > low, and when one half of the altitude guide comes without the other (the range
-// without a `dem` input, `dem_given`, or a dem without the range): never silently dropped.
+// high > low, and when one part of the altitude guide comes without the others (the range, the
+// `dem` input, `dem_given`, and the painting's "painting_altitude"): never silently dropped.
 std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params,
                                                     const std::string& op, bool dem_given);
 

@@ -48,24 +48,26 @@ json transfer_params() {
 }
 
 // Zion ingested, synthesis.transfer with `params` and synthesis.assess with them (coherence at
-// every 4th column and row) run by the real program into `store`; the report.
-json transfer_and_assess(const json& params, const fs::path& dir, const std::string& store) {
+// every 4th column and row) run by the real program into `store`; the report. Both steps are
+// given the DEM unless `dem` is false.
+json transfer_and_assess(const json& params, const fs::path& dir, const std::string& store,
+                         bool dem = true) {
   json assess = params;
   assess["coherence_step"] = 4;
+  json transfer_inputs = {{"landcover", "landcover"}},
+       assess_inputs = {
+           {"rgb", "painted"}, {"source", "painted_source"}, {"landcover", "landcover"}};
+  if (dem) transfer_inputs["dem"] = assess_inputs["dem"] = "dem";
   json pipeline = {{"store", store},
                    {"region", {{"bbox", {-113.03, 37.25, -113.025, 37.255}}}},
                    {"level", 10},
                    {"steps",
                     {{{"op", "synthesis.transfer"},
-                      {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+                      {"inputs", transfer_inputs},
                       {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
                       {"params", params}},
                      {{"op", "synthesis.assess"},
-                      {"inputs",
-                       {{"rgb", "painted"},
-                        {"source", "painted_source"},
-                        {"landcover", "landcover"},
-                        {"dem", "dem"}}},
+                      {"inputs", assess_inputs},
                       {"outputs", {{"report", "assessment"}}},
                       {"params", assess}}}}};
   const json ingest = zion_ingest_steps();
@@ -131,6 +133,20 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   EXPECT_LE(report.at("worst_histogram_distance").get<double>(), kHistogramGate);  // goal: 0.25
   EXPECT_LE(report.at("coherence").get<double>(), kCoherenceGate);  // goal: 2 x ebsynth's
   EXPECT_LE(report.at("altitude_mismatch").get<double>(), kAltitudeGate);
+}
+
+TEST(AssessZion, WithoutAnAltitudeGuideNoAltitudeMismatchIsReported) {
+  if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
+    GTEST_SKIP() << "../shared/data is absent";
+  json params = transfer_params();
+  params.erase("painting_altitude");
+  params.erase("altitude_range");
+  const fs::path dir = test::temp_dir();
+  const json report = transfer_and_assess(params, dir, (dir / "zion.mqt").string(), false);
+  ASSERT_FALSE(report.is_null());
+  EXPECT_GT(report.at("pixels").get<uint64_t>(), 0u);
+  // Not 0, which would read as a perfect match (ReportsTheTransfersMeasures... has it).
+  EXPECT_FALSE(report.contains("altitude_mismatch")) << report.dump();
 }
 
 // With a second painting (The Starry Night, classed by hand, the benchmark's table;

@@ -6,8 +6,6 @@
 
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <spdlog/sinks/ostream_sink.h>
-#include <spdlog/spdlog.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -16,13 +14,13 @@
 #include <filesystem>
 #include <fstream>
 #include <latch>
-#include <sstream>
 #include <thread>
 
 #include "../exemplar_codec.h"
 #include "../transfer_exemplar.h"
 #include "../transfer_params.h"
 #include "core/error.h"
+#include "logged_warnings.h"
 #include "run_cli.h"
 #include "runtime/params_schema.h"
 #include "store/store.h"
@@ -68,15 +66,6 @@ std::vector<fs::path> cache_files(const fs::path& dir) {
   std::sort(out.begin(), out.end());
   return out;
 }
-
-// The warnings logged while it lives.
-struct Warnings {
-  std::ostringstream text;
-  std::shared_ptr<spdlog::sinks::ostream_sink_mt> sink =
-      std::make_shared<spdlog::sinks::ostream_sink_mt>(text);
-  Warnings() { spdlog::default_logger()->sinks().push_back(sink); }
-  ~Warnings() { std::erase(spdlog::default_logger()->sinks(), sink); }
-};
 
 void expect_same(const TransferExemplar& a, const TransferExemplar& b) {
   EXPECT_EQ(a.scale, b.scale);

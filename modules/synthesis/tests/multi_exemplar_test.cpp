@@ -403,6 +403,14 @@ TEST(MultiExemplar, BadParamsNameTheExemplarTheFieldAndTheValue) {
                        "serves target values 10 and 20"),
             std::string::npos)
       << twice;
+  // Class 8 is not in the second painting: it would serve target value 20 with nothing.
+  const std::string absent = with("landcover_classes", {{"10", 5}, {"20", 8}});
+  EXPECT_NE(absent.find("synthesis.transfer.exemplars[0].landcover_classes.20: painting class 8 "
+                        "has no pixel to copy in " +
+                        good["exemplars"][0]["painting"].get<std::string>() +
+                        " (not in it, or excluded)"),
+            std::string::npos)
+      << absent;
   const std::string altitude = with("painting_altitude", "rows");
   EXPECT_NE(altitude.find("synthesis.transfer.exemplars[0].painting_altitude: given, but the "
                           "first painting has none"),

@@ -1,14 +1,18 @@
 // The painting's segmentation by colour on a tiny analytic case: its majority filter; a class
-// image drawn as polygons, against the pixel centres' classes worked out by hand.
+// image drawn as polygons, against the pixel centres' classes worked out by hand; paintings with
+// transparency, a palette or 16 bits read as a viewer shows them.
 #include "../painting.h"
 
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
 
 #include "core/error.h"
+#include "logged_warnings.h"
 #include "run_cli.h"
+#include "synthetic_raster.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -102,6 +106,116 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
                             R"({"type": "LineString", "coordinates": [[0, 0], [8, 6]]}})"))
                 .find("feature 1 is a LINESTRING, not a polygon"),
             std::string::npos);
+}
+
+// The message of read_painting's error on `path`, or "no error".
+std::string painting_error(const std::string& path) {
+  try {
+    read_painting(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ReadPainting, TransparentPixelsAreExcludedTheirColoursKept) {
+  // RGBA and grey + alpha, 8 x 6: transparent (alpha 0) left of column 3 and at pixel (6, 4),
+  // half transparent (alpha 128: still the painting) at (5, 1).
+  const auto alpha = [](int x, int y) {
+    return x < 3 || (x == 6 && y == 4) ? 0 : x == 5 && y == 1 ? 128 : 255;
+  };
+  const std::string dir = test::temp_dir();
+  for (const int bands : {4, 2}) {
+    const std::string path = test::write_png(
+        dir + "/alpha" + std::to_string(bands) + ".png", 8, 6, bands, [&](int x, int y, int b) {
+          return b == bands - 1 ? alpha(x, y) : 25 * x + 6 * y + 11 * b;
+        });
+    const Exemplar e = read_painting(path);
+    ASSERT_EQ(e.excluded.size(), 48u);
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 8; ++x) {
+        const size_t i = size_t(y * 8 + x);
+        EXPECT_EQ(e.excluded[i], alpha(x, y) == 0) << bands << " bands, pixel " << x << ", " << y;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_EQ(e.rgb[3 * i + size_t(c)], 25 * x + 6 * y + (bands == 4 ? 11 * c : 0));
+      }
+  }
+}
+
+TEST(ReadPainting, APaletteImageIsItsTablesColours) {
+  // Indices (x + 2 y) mod 13 through the table entry i = (10 i, 20 i, 15 i) (synthetic_raster.h).
+  const std::string path = test::temp_dir() + "/palette.tif";
+  test::RasterSpec spec;
+  spec.width = 8;
+  spec.height = 6;
+  spec.type = "Byte";
+  spec.geotransform = {0, 1, 0, 0, 0, 1};
+  spec.colour_table = true;
+  test::write_raster(path, spec,
+                     [](int, double x, double y) { return double((int(x) + 2 * int(y)) % 13); });
+  const Exemplar e = read_painting(path);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) {
+      const size_t i = size_t(y * 8 + x);
+      const int index = (x + 2 * y) % 13;
+      EXPECT_EQ(e.rgb[3 * i], 10 * index);
+      EXPECT_EQ(e.rgb[3 * i + 1], 20 * index);
+      EXPECT_EQ(e.rgb[3 * i + 2], 15 * index);
+      EXPECT_EQ(e.excluded[i], 0);
+    }
+}
+
+TEST(ReadPainting, AnExifOrientationIsReadAsStoredAndSaid) {
+  // A JPEG turned by its EXIF orientation 6 (a viewer shows it 90 degrees clockwise), and one of
+  // orientation 1.
+  const std::string dir = test::temp_dir();
+  const auto jpeg = [&](const char* orientation) {
+    std::unique_ptr<GDALDataset> mem(
+        GetGDALDriverManager()->GetDriverByName("MEM")->Create("", 16, 8, 3, GDT_Byte, nullptr));
+    mem->SetMetadataItem("EXIF_Orientation", orientation);
+    const std::string path = dir + "/turned" + orientation + ".jpg";
+    GDALClose(GetGDALDriverManager()->GetDriverByName("JPEG")->CreateCopy(
+        path.c_str(), mem.get(), false, nullptr, nullptr, nullptr));
+    return path;
+  };
+  const std::string turned = jpeg("6"), upright = jpeg("1");
+  const Warnings warnings;
+  const Exemplar e = read_painting(turned);
+  EXPECT_EQ(e.width, 16);  // as stored
+  EXPECT_NE(warnings.text.str().find(turned + ": EXIF orientation 6: the painting is read as "
+                                              "stored, not turned as a viewer shows it"),
+            std::string::npos)
+      << warnings.text.str();
+  const auto before = warnings.text.str().size();
+  read_painting(upright);
+  EXPECT_EQ(warnings.text.str().size(), before) << warnings.text.str();
+}
+
+TEST(ReadPainting, SixteenBitsSpanTheirRangeOtherTypesAreNamed) {
+  const std::string dir = test::temp_dir();
+  test::RasterSpec spec;
+  spec.width = 8;
+  spec.height = 6;
+  spec.bands = 3;
+  spec.type = "UInt16";
+  spec.geotransform = {0, 1, 0, 0, 0, 1};
+  // Band b's pixel: 257 (8-bit value 30 x + 7 y + b) + 128, so 16-bit white is 255.
+  const auto value = [](int b, double x, double y) {
+    return 257.0 * (30 * int(x) + 7 * int(y) + b) + 128;
+  };
+  test::write_raster(dir + "/sixteen.tif", spec, value);
+  const Exemplar e = read_painting(dir + "/sixteen.tif");
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x)
+      for (int b = 1; b <= 3; ++b)
+        EXPECT_FLOAT_EQ(e.rgb[3 * size_t(y * 8 + x) + size_t(b - 1)],
+                        float(value(b, x + 0.5, y + 0.5) / 257));
+  spec.type = "Float32";
+  test::write_raster(dir + "/float.tif", spec, value);
+  EXPECT_NE(
+      painting_error(dir + "/float.tif")
+          .find("/float.tif: the painting's band 1 is Float32: a painting is 8-bit or 16-bit"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -103,6 +103,14 @@ class Seams : public ::testing::Test {
     ctx.refine = refine;
     ctx.grid = &grid;
     ctx.params = params_;
+    // The land cover's layer as a store describes it: categorical (the operator checks).
+    static const InputLayers layers = [] {
+      LayerInfo landcover;
+      landcover.name = "landcover";
+      landcover.semantics = Semantics::Categorical;
+      return InputLayers{{"landcover", landcover}};
+    }();
+    ctx.input_layers = &layers;
     CellData data;
     data.inputs.emplace("landcover",
                         assemble_halo(grid, cell, size, operator_->spec().halo, [&](CellId c) {

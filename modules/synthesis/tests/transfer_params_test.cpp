@@ -1,6 +1,7 @@
 // synthesis.transfer's params refused where they would be read wrong: a painting too small for
-// its exemplar_scale (its blocks would read past the image), one half of the altitude guide
-// without the other (it would be dropped without a word).
+// its exemplar_scale (its blocks would read past the image), one part of the altitude guide
+// without the others (it would be dropped without a word), a class the table asks for that has
+// no pixel to copy (any class would be copied instead), a painting wholly excluded.
 #include "../transfer_params.h"
 
 #include <gdal_priv.h>
@@ -50,10 +51,66 @@ TEST(TransferParams, PaintingSmallerThanItsScaleNeedsIsNamed) {
             size_t(kLevels));
 }
 
-TEST(TransferParams, AltitudeGuideNeedsBothHalves) {
+TEST(TransferParams, AClassWithNoPixelToCopyAndAPaintingAllExcludedAreNamed) {
+  // 16 x 16, dark on the left half, light on the right: 2 classes by colour, one a half each.
+  const std::string png = test::write_png(maquette::test::temp_dir() + "/halves.png", 16, 16, 3,
+                                          [](int x, int, int) { return x < 8 ? 40.0 : 200.0; });
+  const auto message = [](const nlohmann::json& p) {
+    try {
+      transfer_exemplar(p);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  nlohmann::json p = params(png, 1);
+  p["landcover_classes"] = {{"41", 0}, {"42", 1}};
+  EXPECT_EQ(message(p), "no error");
+  // A class the painting's 2 do not have: its land cover would be painted from any class.
+  p["landcover_classes"] = {{"41", 0}, {"42", 9}};
+  EXPECT_NE(message(p).find("synthesis.transfer.landcover_classes.42: painting class 9 has no "
+                            "pixel to copy (not in the painting, or excluded); the classes that "
+                            "have: 0, 1"),
+            std::string::npos)
+      << message(p);
+  p["landcover_classes"] = {{"41", 0}, {"42", 1}};
+  p["exclude_classes"] = {1};
+  EXPECT_NE(message(p).find("synthesis.transfer.landcover_classes.42: painting class 1 has no "
+                            "pixel to copy (not in the painting, or excluded); the classes that "
+                            "have: 0"),
+            std::string::npos)
+      << message(p);
+  p["exclude_classes"] = {0, 1};
+  EXPECT_NE(message(p).find("synthesis.transfer: every pixel of " + png +
+                            " is excluded (by its transparency, exclusion or exclude_classes "
+                            "[0,1]): nothing is left to copy"),
+            std::string::npos)
+      << message(p);
+  // The grey ramp's classes alternate in stripes: one excluded leaves no 2 x 2 block whole, so
+  // no pixel at a coarser level.
+  p = params(painting_png(16), 1);
+  p["landcover_classes"] = {{"41", 0}};
+  p["exclude_classes"] = {1};
+  EXPECT_NE(message(p).find("synthesis.transfer: painting " + p["painting"].get<std::string>() +
+                            ": synthesis: the exemplar has no pixel left to copy at level "),
+            std::string::npos)
+      << message(p);
+}
+
+TEST(TransferParams, EveryParamIsDescribed) {
+  // `maquette modules` prints the descriptions: a param without one is a number to guess.
+  const nlohmann::json schema = transfer_params_schema();
+  ASSERT_GE(schema.at("properties").size(), 20u);
+  for (const auto& [name, param] : schema.at("properties").items())
+    EXPECT_TRUE(param.contains("description")) << name;
+}
+
+TEST(TransferParams, AltitudeGuideNeedsItsThreeParts) {
   const nlohmann::json with_range = {{"altitude_range", {1000, 2600}}};
+  nlohmann::json whole = with_range;
+  whole["painting_altitude"] = "rows";
   EXPECT_EQ(altitude_range(nlohmann::json::object(), "op", false), std::nullopt);
-  EXPECT_EQ(*altitude_range(with_range, "op", true), (std::array<double, 2>{1000, 2600}));
+  EXPECT_EQ(*altitude_range(whole, "op", true), (std::array<double, 2>{1000, 2600}));
   const auto refused = [](const nlohmann::json& p, bool dem, const std::string& message) {
     try {
       altitude_range(p, "synthesis.transfer", dem);
@@ -64,6 +121,11 @@ TEST(TransferParams, AltitudeGuideNeedsBothHalves) {
   };
   refused(with_range, false, "synthesis.transfer.altitude_range is given without inputs.dem");
   refused(nlohmann::json::object(), true, "synthesis.transfer: inputs.dem is given without");
+  // The painting's altitude missing, or alone: the altitude weight would do nothing.
+  refused(with_range, true,
+          "synthesis.transfer: inputs.dem and altitude_range are given without painting_altitude");
+  refused({{"painting_altitude", "rows"}}, false,
+          "synthesis.transfer.painting_altitude is given without inputs.dem and altitude_range");
 }
 
 TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {

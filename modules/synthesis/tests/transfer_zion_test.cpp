@@ -16,6 +16,7 @@
 #include "core/tile.h"
 #include "run_cli.h"
 #include "store/store.h"
+#include "synthetic_raster.h"
 #include "zion_ingest.h"
 
 namespace maquette::synthesis {
@@ -59,9 +60,11 @@ void write_mask(const std::string& path, int width, int height) {
       path.c_str(), ds.get(), false, nullptr, nullptr, nullptr));
 }
 
-// The pipeline run in a fresh folder; `changes` overrides the transfer's params.
+// The pipeline run in a fresh folder; `changes` overrides the transfer's params, `inputs` its
+// inputs.
 TransferRun run_transfer(const std::string& name, int threads, const std::string& mask,
-                         const json& changes = json::object(), test::CliResult* result = nullptr) {
+                         const json& changes = json::object(), test::CliResult* result = nullptr,
+                         const json& inputs = {{"landcover", "landcover"}, {"dem", "dem"}}) {
   TransferRun run{
       fs::temp_directory_path() / ("maquette-synthesis-" + std::to_string(getpid()) + name), ""};
   fs::remove_all(run.dir);
@@ -72,7 +75,7 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
                    {"level", 10},
                    {"steps",
                     {{{"op", "synthesis.transfer"},
-                      {"inputs", {{"landcover", "landcover"}, {"dem", "dem"}}},
+                      {"inputs", inputs},
                       {"outputs", {{"rgb", "painted"}, {"source", "painted_source"}}},
                       {"params",
                        {{"painting", kPainting},
@@ -148,22 +151,66 @@ TEST(TransferZion, SameBitsOnOneAndTwoThreadsAndColoursFromTheirSources) {
   fs::remove(mask);
 }
 
-TEST(TransferZion, AMissingPaintingAndABadClassTableAreNamed) {
+TEST(TransferZion, AMissingPaintingABadClassTableAndHeightsAsLandCoverAreNamed) {
   if (!fs::exists(kShared + "/zion/nlcd.tif")) GTEST_SKIP() << "../shared/data is absent";
-  test::CliResult r;
-  const TransferRun missing =
-      run_transfer("-missing", 2, "", {{"painting", "no/such/painting.png"}}, &r);
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("no/such/painting.png: GDAL cannot open the painting"), std::string::npos)
-      << r.err;
-  fs::remove_all(missing.dir);
-  const TransferRun table =
-      run_transfer("-table", 2, "", {{"landcover_classes", {{"forest", 3}}}}, &r);
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("synthesis.transfer.landcover_classes: key 'forest' is not an integer"),
-            std::string::npos)
-      << r.err;
-  fs::remove_all(table.dir);
+  const auto refused = [](const std::string& name, const json& changes, const json& inputs,
+                          const std::string& message) {
+    test::CliResult r;
+    const TransferRun run = run_transfer(name, 2, "", changes, &r, inputs);
+    EXPECT_NE(r.exit_code, 0) << name;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    fs::remove_all(run.dir);
+  };
+  const json inputs = {{"landcover", "landcover"}, {"dem", "dem"}};
+  // A relative path is the working directory's (the pipeline's ingests take the pipeline file's).
+  refused("-missing", {{"painting", "no/such/painting.png"}}, inputs,
+          "no/such/painting.png: GDAL cannot open the painting: no such file (relative to the "
+          "working directory " +
+              fs::current_path().string() + ")");
+  refused("-table", {{"landcover_classes", {{"forest", 3}}}}, inputs,
+          "synthesis.transfer.landcover_classes: key 'forest' is not an integer");
+  // The DEM mapped as the land cover: no height is in the table, every pixel would take any class.
+  refused("-heights", json::object(), {{"landcover", "dem"}, {"dem", "dem"}},
+          "synthesis.transfer: inputs.landcover: layer 'dem' is continuous, not categorical");
+}
+
+TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
+  if (!fs::exists(kShared + "/zion/nlcd.tif")) GTEST_SKIP() << "../shared/data is absent";
+  // 64 x 64: black on the left half, yellow (255, 200, 0) on the right; both classes may paint
+  // every land cover. The rgb layer's nodata is 0: a channel copied at 0 must not read as a hole.
+  const std::string painting = maquette::test::write_png(
+      maquette::test::temp_dir() + "/black.png", 64, 64, 3, [](int x, int, int b) {
+        return x < 32 ? 0.0 : b == 0 ? 255.0 : b == 1 ? 200.0 : 0.0;
+      });
+  const json any = {0, 1};
+  const TransferRun run =
+      run_transfer("-black", 2, "",
+                   {{"painting", painting},
+                    {"classes", 2},
+                    {"exemplar_scale", 1},
+                    {"landcover_classes", {{"3", any}, {"4", any}, {"5", any}, {"6", any}}}});
+  const auto store = Store::open(run.store, Store::Mode::ReadOnly);
+  size_t black = 0, yellow = 0, zero = 0;
+  for (const CellId cell : store->tile_cells("painted")) {
+    const RawTile rgb = *store->get_tile("painted", cell);
+    const Tile<float> source = to_tile<float>(*store->get_tile("painted_source", cell));
+    for (int r = 0; r < source.size(); ++r)
+      for (int c = 0; c < source.size(); ++c) {
+        if (std::isnan(source.at(c, r, 0))) continue;
+        const bool left = source.at(c, r, 0) < 32;
+        (left ? black : yellow) += 1;
+        for (int k = 0; k < 3; ++k) {
+          const int got = std::to_integer<int>(
+              rgb.bytes[(size_t(r) * size_t(rgb.size) + size_t(c)) * 3 + size_t(k)]);
+          zero += got == 0;
+          EXPECT_EQ(got, left ? 1 : k == 0 ? 255 : k == 1 ? 200 : 1) << cell.ToText();
+        }
+      }
+  }
+  EXPECT_GT(black, 1000u);
+  EXPECT_GT(yellow, 1000u);
+  EXPECT_EQ(zero, 0u);
+  fs::remove_all(run.dir);
 }
 
 }  // namespace
