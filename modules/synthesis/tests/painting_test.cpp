@@ -168,6 +168,7 @@ TEST(ReadPainting, APaletteImageIsItsTablesColours) {
 TEST(ReadPainting, AnExifOrientationIsReadAsStoredAndSaid) {
   // A JPEG turned by its EXIF orientation 6 (a viewer shows it 90 degrees clockwise), and one of
   // orientation 1.
+  GDALAllRegister();  // run alone (ctest runs each test in its own process): no driver yet
   const std::string dir = test::temp_dir();
   const auto jpeg = [&](const char* orientation) {
     std::unique_ptr<GDALDataset> mem(
