@@ -3,7 +3,9 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <type_traits>
@@ -41,6 +43,20 @@ struct PanoramaWriter::Files {
 
 std::vector<std::string> panorama_files(const std::string& out) {
   return {out, sibling_path(out, "-guides.tif"), sibling_path(out, "-silhouettes.png")};
+}
+
+ImageFormat panorama_picture_format(const std::string& out) {
+  const std::filesystem::path path(out);
+  if (path.has_parent_path() && !std::filesystem::is_directory(path.parent_path()))
+    throw Error(out + ": the directory " + path.parent_path().string() + " does not exist");
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  // zlib level 3: a third of the default level's (6) time for a file ~8 % larger.
+  if (ext == ".png") return {"PNG", {"ZLEVEL=3"}};
+  if (ext == ".jpg" || ext == ".jpeg") return {"JPEG", {"QUALITY=90"}};
+  throw Error(out + ": a panorama is written as PNG (.png) or JPEG (.jpg, .jpeg), not '" + ext +
+              "'");
 }
 
 namespace {
@@ -136,10 +152,9 @@ int64_t PanoramaWriter::terrain_pixels() const { return files_->terrain_pixels; 
 void PanoramaWriter::commit() {
   Files& f = *files_;
   f.guides.reset();  // flushes the last blocks
-  // zlib level 3: a third of the default level's (6) time for a file ~8 % larger.
-  const ImageFormat png{"PNG", {"ZLEVEL=3"}};
-  write_image(f.rgb, f.width, f.height, 3, png, f.out);
-  write_image(f.silhouette, f.width, f.height, 1, png, panorama_files(f.out)[2]);
+  write_image(f.rgb, f.width, f.height, 3, panorama_picture_format(f.out), f.out);
+  write_image(f.silhouette, f.width, f.height, 1, panorama_picture_format(panorama_files(f.out)[2]),
+              panorama_files(f.out)[2]);
   f.guides_file.commit();
 }
 

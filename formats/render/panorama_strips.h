@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "gdal/image_file.h"
 #include "render/panorama.h"
 
 namespace maquette {
@@ -38,6 +39,11 @@ class PanoramaWriter {
 
 // The files PanoramaWriter writes for OUT: OUT, its guides and its silhouettes.
 std::vector<std::string> panorama_files(const std::string& out);
+
+// The picture's format, by OUT's extension (case aside): PNG for .png, JPEG (quality 90) for .jpg
+// and .jpeg. Throws maquette::Error for another extension, or when OUT's directory does not exist
+// (before anything is drawn: the guides' file, opened first, named it instead).
+ImageFormat panorama_picture_format(const std::string& out);
 
 // The whole panorama `p` written as PanoramaWriter does.
 void write_panorama(const Panorama& p, const std::string& out);

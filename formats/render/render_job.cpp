@@ -79,6 +79,9 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
                   std::string(dtype_name(texture->dtype)) + " with " +
                   std::to_string(texture->channels) +
                   " channels: expected uint8 imagery of 1, 3 or 4 channels");
+    if (texture->semantics == Semantics::Categorical)
+      throw Error("--texture layer '" + job.texture +
+                  "' is categorical (classes, not colours): give it as --land-cover");
   }
   if (!job.land_cover.empty()) {
     land_cover = raster_layer(store, "--land-cover", job.land_cover);
@@ -164,6 +167,7 @@ Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job) 
 void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job,
                            const std::string& out) {
   check_outputs_spare_inputs(panorama_files(out), {{"the store", store.path()}});
+  panorama_picture_format(out);  // a wrong extension or a missing directory said before drawing
   if (job.strip_rows < 0)
     throw Error("--strip-rows " + std::to_string(job.strip_rows) + " must be 0 or more");
   const int rows = job.strip_rows > 0 ? job.strip_rows : default_strip_rows(job.camera.width);

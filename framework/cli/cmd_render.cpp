@@ -65,7 +65,8 @@ void add_render_command(CLI::App& app) {
       "OUT stem + -guides.tif (altitude, distance, lon, lat[, land_cover][, cast_shadow with "
       "--shadows], shading; float64, NaN on the sky), -silhouettes.png");
   cmd->add_option("STORE", o->store, "Store file")->required();
-  cmd->add_option("OUT", o->out, "Output PNG")->required();
+  cmd->add_option("OUT", o->out, "Output picture: .png, or .jpg / .jpeg (JPEG quality 90)")
+      ->required();
   cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();
   cmd->add_option("--texture", o->job.texture,
                   "Imagery layer draped on the terrain (uint8, 1, 3 or 4 channels; default: a "

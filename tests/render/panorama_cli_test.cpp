@@ -954,6 +954,10 @@ TEST(PanoramaCli, BadInputIsNamed) {
   // Land-cover classes drawn as heights of a few metres.
   expect_error("render panorama " + f.store + " " + out + " --dem lc --camera 10.15 45.02 1500",
                "--dem layer 'lc' is categorical (classes, not heights)");
+  // Classes drawn as grey levels.
+  expect_error(f.render(out, "--texture lc"),
+               "--texture layer 'lc' is categorical (classes, not colours): give it as "
+               "--land-cover");
   // A camera that sees none of the DEM was told "--dem layer 'dem' holds no tiles", or drew an
   // all-sky picture with exit 0 (the tiles near enough to be kept, or not culled: --shadows).
   const std::string up =
@@ -999,6 +1003,33 @@ TEST(PanoramaCli, OutputThatIsTheStoreIsRefused) {
   const auto info = run_maquette("info " + store);
   EXPECT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("dem: raster float32"), std::string::npos) << info.out;
+}
+
+// OUT's extension says the picture's format (OUT.jpg was PNG bytes); another extension, or a
+// directory that does not exist (told through the guides' file's name), is refused before drawing.
+TEST(PanoramaCli, ThePicturesFormatIsItsExtensions) {
+  const Fixture& f = fixture();
+  const std::string dir = test::temp_dir();
+  const auto r = run_maquette(f.render(dir + "/view.JPG", "--size 40 20"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto magic = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(4, '\0');
+    in.read(bytes.data(), 4);
+    return bytes;
+  };
+  EXPECT_EQ(magic(dir + "/view.JPG").substr(0, 3), "\xFF\xD8\xFF");  // JPEG's start of image
+  EXPECT_EQ(magic(dir + "/view-silhouettes.png"), "\x89PNG");
+  for (const auto& [out, message] :
+       {std::pair<std::string, std::string>{dir + "/view.tif",
+                                            "a panorama is written as PNG (.png) or JPEG (.jpg, "
+                                            ".jpeg), not '.tif'"},
+        {dir + "/nosuch/view.png", "the directory " + dir + "/nosuch does not exist"}}) {
+    const auto bad = run_maquette(f.render(out, "--size 40 20"));
+    EXPECT_NE(bad.exit_code, 0) << out;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << out;
+  }
 }
 
 }  // namespace
