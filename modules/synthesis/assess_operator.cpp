@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "assess_metrics.h"
 #include "core/error.h"
@@ -81,6 +83,44 @@ Tally from_json(const json& j) {
   return t;
 }
 
+// The exemplar's params (exemplar_key_params) in which `params` differ from those of the
+// synthesis.transfer that made `source` (its layer's provenance); none when they agree, or when the
+// layer was made otherwise or by params this version no longer reads.
+std::vector<std::string> differing_exemplar_params(const LayerInfo& source, const json& params) {
+  const json& made_by = source.provenance;
+  if (made_by.value("operator", "") != "synthesis.transfer" || !made_by.contains("params"))
+    return {};
+  json made;
+  try {
+    made = exemplar_key_params(
+        validate_params(transfer_params_schema(), made_by.at("params"), "synthesis.transfer"));
+  } catch (const Error&) {
+    return {};
+  }
+  const json ours = exemplar_key_params(params);
+  std::vector<std::string> fields;
+  for (const auto& [key, value] : made.items())
+    if (!ours.contains(key) || ours.at(key) != value) fields.push_back(key);
+  for (const auto& [key, value] : ours.items())
+    if (!made.contains(key)) fields.push_back(key);
+  return fields;
+}
+
+// Throws maquette::Error when `params` differ from the transfer's that made `source` in the
+// exemplar's params: measured against another analysis (exemplar_scale 2 here, 4 there) the
+// figures were another exemplar's, silently, or its sources fell outside it.
+void check_same_exemplar(const LayerInfo& source, const json& params) {
+  const auto fields = differing_exemplar_params(source, params);
+  if (fields.empty()) return;
+  std::string list;
+  for (const std::string& f : fields) list += (list.empty() ? "" : ", ") + f;
+  throw Error(std::string(kOp) +
+              ": its exemplar params differ from those synthesis.transfer made layer '" +
+              source.name + "' with (" + list +
+              "; \"groups\" is the landcover_classes' grouping): give assess the transfer's "
+              "params");
+}
+
 class Assess : public ReduceOperator {
  public:
   const OperatorSpec& spec() const override { return spec_; }
@@ -88,6 +128,7 @@ class Assess : public ReduceOperator {
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
     check_landcover_layer(ctx.input_layer("landcover"), kOp);
+    check_same_exemplar(ctx.input_layer("source"), params);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
     const auto exemplar = transfer_exemplar(params);

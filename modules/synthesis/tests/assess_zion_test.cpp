@@ -149,6 +149,47 @@ TEST(AssessZion, WithoutAnAltitudeGuideNoAltitudeMismatchIsReported) {
   EXPECT_FALSE(report.contains("altitude_mismatch")) << report.dump();
 }
 
+// An assessment given other exemplar params than the transfer that made its source layer measured
+// against another analysis, silently (exemplar_scale 8 against 4: coherence 13,750 instead of
+// 15,847): refused, naming the field; a differently spelled but equal value (the default k given)
+// passes.
+TEST(AssessZion, ParamsOfAnotherExemplarThanTheTransfersAreRefused) {
+  if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
+    GTEST_SKIP() << "../shared/data is absent";
+  const fs::path dir = test::temp_dir();
+  const std::string store = (dir / "zion.mqt").string();
+  ASSERT_FALSE(transfer_and_assess(transfer_params(), dir, store).is_null());
+  auto assess_again = [&](const json& params) {
+    const json pipeline = {{"store", store},
+                           {"region", {{"bbox", {-113.03, 37.25, -113.025, 37.255}}}},
+                           {"level", 10},
+                           {"steps",
+                            {{{"op", "synthesis.assess"},
+                              {"inputs",
+                               {{"rgb", "painted"},
+                                {"source", "painted_source"},
+                                {"landcover", "landcover"},
+                                {"dem", "dem"}}},
+                              {"outputs", {{"report", "again"}}},
+                              {"params", params}}}}};
+    const fs::path path = dir / "again.json";
+    std::ofstream(path) << pipeline.dump(1);
+    return test::run_maquette("run " + path.string() + " --quiet");
+  };
+  json other = transfer_params();
+  other["exemplar_scale"] = 8;
+  const test::CliResult refused = assess_again(other);
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.err.find("synthesis.assess: its exemplar params differ from those "
+                             "synthesis.transfer made layer 'painted_source' with (exemplar_scale"),
+            std::string::npos)
+      << refused.err;
+  json same = transfer_params();
+  same["k"] = 2;  // its default
+  const test::CliResult passed = assess_again(same);
+  EXPECT_EQ(passed.exit_code, 0) << passed.err;
+}
+
 // With a second painting (The Starry Night, classed by hand, the benchmark's table;
 // benchmarks/README.md) the assessment reads the source layer's third channel, the painting: the
 // sources counted from the stored tiles by painting, column and row give the report's pixels,
