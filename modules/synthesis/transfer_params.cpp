@@ -267,7 +267,16 @@ std::optional<std::array<double, 2>> altitude_range(const nlohmann::json& params
                                   "\"rows\"): give the three or none"
                                 : ".painting_altitude is given without inputs.dem and "
                                   "altitude_range: give the three or none"));
-  if (!dem_given) return std::nullopt;
+  if (!dem_given) {
+    // A weight of a guide that is absent weighs nothing: said rather than ignored (the params
+    // come with their defaults filled in, so only a weight other than the default is seen).
+    const nlohmann::json unset = synthesis_params_schema().at("w_altitude").at("default");
+    if (params.contains("w_altitude") && params.at("w_altitude") != unset)
+      throw Error(op + ".w_altitude " + params.at("w_altitude").dump() +
+                  " weighs the altitude guide, which is not given: give inputs.dem, "
+                  "altitude_range and painting_altitude, or leave w_altitude out");
+    return std::nullopt;
+  }
   return range_param(params, "altitude_range", op);
 }
 

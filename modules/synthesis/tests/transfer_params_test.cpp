@@ -126,6 +126,15 @@ TEST(TransferParams, AltitudeGuideNeedsItsThreeParts) {
           "synthesis.transfer: inputs.dem and altitude_range are given without painting_altitude");
   refused({{"painting_altitude", "rows"}}, false,
           "synthesis.transfer.painting_altitude is given without inputs.dem and altitude_range");
+  // Its weight without the guide weighed nothing, silently; its default (filled in) is no choice.
+  refused({{"w_altitude", 3.0}}, false,
+          "synthesis.transfer.w_altitude 3.0 weighs the altitude guide, which is not given");
+  EXPECT_EQ(altitude_range({{"w_altitude", 1.0}}, "op", false), std::nullopt);
+  EXPECT_EQ(
+      *altitude_range(
+          {{"altitude_range", {1000, 2600}}, {"painting_altitude", "rows"}, {"w_altitude", 3.0}},
+          "op", true),
+      (std::array<double, 2>{1000, 2600}));
 }
 
 TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
