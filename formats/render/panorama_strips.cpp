@@ -1,5 +1,6 @@
 #include "render/panorama_strips.h"
 
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -29,6 +30,7 @@ struct PanoramaWriter::Files {
   std::vector<uint8_t> rgb, silhouette;  // the whole picture's
   bool land_cover = false, cast_shadow = false;
   int64_t terrain_pixels = 0;  // written so far
+  double nearest_terrain = INFINITY;
   OutputFile guides_file;
   GdalSession gdal;
   DatasetPtr guides;
@@ -131,9 +133,11 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
               f.rgb.begin() + std::ptrdiff_t(3 * size_t(first) * size_t(f.width)));
   std::copy_n(strip.silhouette.begin() + std::ptrdiff_t(offset), pixels,
               f.silhouette.begin() + std::ptrdiff_t(size_t(first) * size_t(f.width)));
-  f.terrain_pixels += std::count_if(strip.distance.begin() + std::ptrdiff_t(offset),
-                                    strip.distance.begin() + std::ptrdiff_t(offset + pixels),
-                                    [](double d) { return !std::isnan(d); });
+  for (size_t i = offset; i < offset + pixels; ++i)
+    if (const double d = strip.distance[i]; !std::isnan(d)) {
+      ++f.terrain_pixels;
+      f.nearest_terrain = std::min(f.nearest_terrain, d);
+    }
   const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
   f.guides_file.write([&] {
     for (const GuideBand& band : bands) {
@@ -148,6 +152,8 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
 }
 
 int64_t PanoramaWriter::terrain_pixels() const { return files_->terrain_pixels; }
+
+double PanoramaWriter::nearest_terrain() const { return files_->nearest_terrain; }
 
 void PanoramaWriter::commit() {
   Files& f = *files_;
@@ -254,6 +260,12 @@ void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
     throw Error("the picture shows none of the terrain (the camera " + view_text(camera.spec()) +
                 "): aimed away from it, at ground beyond the DEM's data, or a bend rolling it "
                 "over the eye; nothing written");
+  // Haze covers 1 - exp(-distance / haze_distance) of a pixel: beyond 3 haze distances, 95 %.
+  if (const double nearest = writer.nearest_terrain(); nearest > 3 * look.haze_distance)
+    spdlog::warn(
+        "the nearest terrain in the picture is {:.1f} km away, {:.1f} times --haze-distance {:g} "
+        "m: all of it is drawn at least 95 % in the haze's colour; raise --haze-distance",
+        nearest / 1000, nearest / look.haze_distance, look.haze_distance);
   writer.commit();
 }
 

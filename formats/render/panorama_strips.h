@@ -27,8 +27,10 @@ class PanoramaWriter {
   ~PanoramaWriter();
   // Rows [first, last) of the picture, from `strip`, which holds them.
   void write(const Panorama& strip, int first, int last);
-  // Pixels showing terrain (a distance guide) in the rows written so far.
+  // Pixels showing terrain (a distance guide) in the rows written so far, and the distance of the
+  // nearest (infinity for none).
   int64_t terrain_pixels() const;
+  double nearest_terrain() const;
   // Encodes the PNGs and puts the three files in place.
   void commit();
 

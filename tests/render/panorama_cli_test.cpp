@@ -1032,5 +1032,20 @@ TEST(PanoramaCli, ThePicturesFormatIsItsExtensions) {
   }
 }
 
+// Terrain wholly beyond three haze distances (95 % haze colour) is a picture of haze: said, with
+// the distance and the option to raise (a view from 40 km up drew nothing else, silently).
+TEST(PanoramaCli, TerrainLostInTheHazeIsSaid) {
+  const Fixture& f = fixture();
+  const std::string dir = test::temp_dir();
+  const std::string said = "all of it is drawn at least 95 % in the haze's colour";
+  const auto hazed = run_maquette(f.render(dir + "/hazed.png", "--size 40 20 --haze-distance 50"));
+  ASSERT_EQ(hazed.exit_code, 0) << hazed.err;
+  EXPECT_NE(hazed.err.find(said), std::string::npos) << hazed.err;
+  EXPECT_NE(hazed.err.find("times --haze-distance 50 m"), std::string::npos) << hazed.err;
+  const auto clear = run_maquette(f.render(dir + "/clear.png", "--size 40 20"));
+  ASSERT_EQ(clear.exit_code, 0) << clear.err;
+  EXPECT_EQ(clear.err.find(said), std::string::npos) << clear.err;
+}
+
 }  // namespace
 }  // namespace maquette
