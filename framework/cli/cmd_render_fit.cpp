@@ -55,6 +55,7 @@ void run(const FitOptions& o) {
   if (!o.panorama.empty())
     for (const std::string& file : panorama_files(o.panorama)) outputs.push_back(file);
   check_outputs_spare_inputs(outputs, {{"the store", o.store}, {"the control points", o.points}});
+  if (!o.panorama.empty()) panorama_picture_format(o.panorama);  // before the fit, not after it
   const auto store =
       Store::open(o.store, o.warped_dem ? Store::Mode::ReadWrite : Store::Mode::ReadOnly);
   if (o.warped_dem) check_warped_dem_name(*store, *o.warped_dem);

@@ -408,6 +408,9 @@ TEST(PaintingFitCli, OutputsSpareTheInputs) {
   expect_error(fit + points + " --dem dem",
                points + " is the control points " + points + ": it would be replaced");
   expect_error(fit + f.dir + "/ok.json --dem dem --panorama " + store, "is the store");
+  // --panorama's format, from its extension, checked before the fit writes OUT.
+  expect_error(fit + f.dir + "/ok.json --dem dem --panorama " + f.dir + "/view.tif",
+               "a panorama is written as PNG (.png) or JPEG (.jpg, .jpeg), not '.tif'");
   EXPECT_EQ(run_maquette("info " + store).exit_code, 0);
   EXPECT_EQ(read_json(points), read_json(f.points));
   EXPECT_FALSE(std::ifstream(f.dir + "/ok.json"));
