@@ -4,6 +4,8 @@
 // region (the cells are pasted into one mosaic, filled, and cut back), with kRegionContext samples
 // of context beyond the region's cells. It runs once, on one rank; inpaint() gives the same bits
 // for any thread count.
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -64,6 +66,20 @@ class Inpaint final : public RegionOperator {
       }
     }
     const bool any_hole = std::any_of(hole.begin(), hole.end(), [](uint8_t h) { return h != 0; });
+    if (!any_hole) {
+      // Footprints beside the region (or a mask of zeros) leave nothing to fill: a run that changes
+      // nothing is said, not passed off as a fill.
+      std::string where;
+      if (footprints != input.features.end())
+        where = "inputs.footprints' polygons (" + std::to_string(footprints->second.size()) +
+                " found near it)";
+      if (mask != input.layers.end())
+        where += (where.empty() ? "" : " or ") + std::string("inputs.mask's non-zero samples");
+      spdlog::warn(
+          "synthesis.inpaint: nothing to fill: no sample of the region lies in {}; the image is "
+          "written unchanged",
+          where);
+    }
     for (const FilledLayer& layer : layers) {
       params.values = layer.values;
       write_filled(layer,

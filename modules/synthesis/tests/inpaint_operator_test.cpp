@@ -76,6 +76,9 @@ int stripe_class(double lon) {
   return int(std::floor((lon - kStripesWest) / 0.005)) % 2 == 0 ? 11 : 90;
 }
 
+// The region's bbox the deck crosses.
+json deck_region() { return {-113.03, 37.25, -112.98, 37.30}; }
+
 struct InpaintRun {
   fs::path dir;
   std::string store;
@@ -83,10 +86,11 @@ struct InpaintRun {
 };
 
 // `inputs` and `outputs`: the inpaint step's (layers: "landsat", "landcover", the footprint
-// "bridge").
+// "bridge"); `bbox` the region's.
 InpaintRun run_inpaint(const std::string& name, int threads, const std::string& type = "Polygon",
                        const json& inputs = {{"image", "landsat"}, {"footprints", "bridge"}},
-                       const json& outputs = {{"rgb", "filled"}}) {
+                       const json& outputs = {{"rgb", "filled"}},
+                       const json& bbox = deck_region()) {
   InpaintRun run{
       fs::temp_directory_path() / ("maquette-inpaint-" + std::to_string(getpid()) + name), "", {}};
   fs::remove_all(run.dir);
@@ -98,7 +102,7 @@ InpaintRun run_inpaint(const std::string& name, int threads, const std::string& 
                      [](int, double lon, double) { return stripe_class(lon); });
   const json pipeline = {
       {"store", run.store},
-      {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
+      {"region", {{"bbox", bbox}}},
       {"level", 10},
       {"steps",
        {{{"op", "ingest"},
@@ -113,8 +117,8 @@ InpaintRun run_inpaint(const std::string& name, int threads, const std::string& 
          {"params", {{"sources", {(run.dir / "bridge.geojson").string()}}, {"as", "features"}}}},
         {{"op", "synthesis.inpaint"}, {"inputs", inputs}, {"outputs", outputs}}}}};
   std::ofstream(run.dir / "pipeline.json") << pipeline.dump(1);
-  run.result = test::run_maquette("run " + (run.dir / "pipeline.json").string() +
-                                  " --quiet --threads " + std::to_string(threads));
+  run.result = test::run_maquette("run " + (run.dir / "pipeline.json").string() + " --threads " +
+                                  std::to_string(threads));
   return run;
 }
 
@@ -249,10 +253,8 @@ class BridgeRemoved : public ::testing::Test {
     steps.push_back({{"op", "synthesis.inpaint"},
                      {"inputs", {{"image", "landsat"}, {"mask", "bridge_mask"}}},
                      {"outputs", {{"rgb", "filled"}}}});
-    const json pipeline = {{"store", store_},
-                           {"region", {{"bbox", {-113.03, 37.25, -112.98, 37.30}}}},
-                           {"level", 10},
-                           {"steps", steps}};
+    const json pipeline = {
+        {"store", store_}, {"region", {{"bbox", deck_region()}}}, {"level", 10}, {"steps", steps}};
     std::ofstream(dir_ / "pipeline.json") << pipeline.dump(1);
     run_ = test::run_maquette("run " + (dir_ / "pipeline.json").string() + " --quiet --threads 2");
   }
@@ -414,6 +416,28 @@ TEST(InpaintOperator, AFootprintThatIsNoPolygonIsNamed) {
                                 "MultiPolygon"),
             std::string::npos)
       << run.result.err;
+  fs::remove_all(run.dir);
+}
+
+// A footprint wholly beside the region leaves nothing to fill: said (it passed silently as a
+// fill), the image written as it was.
+TEST(InpaintOperator, AFootprintBesideTheRegionIsSaidAndChangesNothing) {
+  if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const InpaintRun run =
+      run_inpaint("-beside", 1, "Polygon", {{"image", "landsat"}, {"footprints", "bridge"}},
+                  {{"rgb", "filled"}}, {-113.20, 37.35, -113.17, 37.38});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+  EXPECT_NE(run.result.err.find("synthesis.inpaint: nothing to fill: no sample of the region lies "
+                                "in inputs.footprints' polygons (0 found near it); the image is "
+                                "written unchanged"),
+            std::string::npos)
+      << run.result.err;
+  const auto s = Store::open(run.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = s->tile_cells("filled");
+  ASSERT_FALSE(cells.empty());
+  for (const CellId cell : cells)
+    EXPECT_EQ(s->get_tile("filled", cell)->bytes, s->get_tile("landsat", cell)->bytes)
+        << cell.ToText();
   fs::remove_all(run.dir);
 }
 
