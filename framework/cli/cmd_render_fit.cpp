@@ -7,11 +7,15 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "cli/commands.h"
+#include "core/enu_frame.h"
 #include "core/output_clash.h"
 #include "render/painting_fit_dem.h"
 #include "render/painting_fit_job.h"
@@ -47,6 +51,40 @@ void warn_far_clicks(const PaintingFit& fit, const PaintingPoints& points,
         "{}: {} of {} clicks land farther than {:.1f} px (2 % of the painting's diagonal) from "
         "where they were clicked ({}{}): is each click's pixel paired with the place it shows?",
         path, count, points.points.size(), limit, far, count > 3 ? ", ..." : "");
+}
+
+// Control points whose places lie nearly on one line of the map (six clicks along one valley
+// fitted at 0.19 px, silently) leave the camera's turn about that line to their heights alone: a
+// fit that matches them may be far from the painter's eye. The line: the points' principal axis
+// on the ground (east, north about their centroid); "nearly": their spread across it under 5 % of
+// their spread along it.
+void warn_clicks_on_a_line(const PaintingFit& fit, const std::string& path) {
+  const EnuFrame frame(fit.ground.front());
+  double ex = 0, ny = 0;
+  std::vector<std::array<double, 3>> places;
+  for (const GeodeticPoint& g : fit.ground) {
+    places.push_back(frame.to_enu(g.lon, g.lat));
+    ex += places.back()[0];
+    ny += places.back()[1];
+  }
+  ex /= double(places.size());
+  ny /= double(places.size());
+  double xx = 0, yy = 0, xy = 0;
+  for (const auto& p : places) {
+    xx += (p[0] - ex) * (p[0] - ex);
+    yy += (p[1] - ny) * (p[1] - ny);
+    xy += (p[0] - ex) * (p[1] - ny);
+  }
+  // The 2 x 2 covariance's eigenvalues, in closed form.
+  const double mean = (xx + yy) / 2, half_gap = std::hypot((xx - yy) / 2, xy);
+  const double along = std::sqrt((mean + half_gap) / double(places.size()));
+  const double across = std::sqrt(std::max(0.0, mean - half_gap) / double(places.size()));
+  if (along > 0 && across < 0.05 * along)
+    spdlog::warn(
+        "{}: the {} control points lie nearly on one line of the map ({:.0f} m across it, {:.0f} "
+        "m along it, standard deviations): the camera's turn about that line rests on their "
+        "heights alone, so the fit may match them from the wrong place; add points away from it",
+        path, places.size(), across, along);
 }
 
 void run(const FitOptions& o) {
@@ -85,6 +123,7 @@ void run(const FitOptions& o) {
   spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
                points.points.size());
   warn_far_clicks(fit, points, o.points);
+  warn_clicks_on_a_line(fit, o.points);
   if (panorama) {
     write_panorama(*panorama, o.panorama);
     spdlog::info("wrote {} and its guides", o.panorama);

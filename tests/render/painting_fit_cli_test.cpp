@@ -396,6 +396,30 @@ TEST(PaintingFitCli, FarClicksAreWarnedOf) {
       << r.err;
 }
 
+// Clicks along one meridian (the fixture's at lon 10.15: 28 km of terraces) leave the camera's
+// turn about it to their heights: warned of; the fixture's three columns are not.
+TEST(PaintingFitCli, ClicksOnOneLineOfTheMapAreWarnedOf) {
+  const Fixture& f = fixture();
+  const auto good =
+      run_maquette("render fit " + f.store + " " + f.points + " " + f.dir + "/wide.json --dem dem");
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_EQ(good.err.find("nearly on one line"), std::string::npos) << good.err;
+  json line = read_json(f.points), points = json::array();
+  for (const json& p : line.at("points"))
+    if (p.at("lon").get<double>() == 10.15) points.push_back(p);
+  line["points"] = points;
+  ASSERT_GE(points.size(), 4u);
+  const std::string path = f.dir + "/line.json";
+  std::ofstream(path) << line.dump();
+  const auto r =
+      run_maquette("render fit " + f.store + " " + path + " " + f.dir + "/line-fit.json --dem dem");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + path + ": the " + std::to_string(points.size()) +
+                       " control points lie nearly on one line of the map (0 m across it, "),
+            std::string::npos)
+      << r.err;
+}
+
 // OUT or --panorama naming an input (the store, the clicks) is refused, and the input kept: the
 // fit's JSON replaced the store, or the user's clicks, exit 0.
 TEST(PaintingFitCli, OutputsSpareTheInputs) {
