@@ -1,6 +1,8 @@
 #include "render/rasterizer.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +22,12 @@ constexpr int64_t kOne = int64_t(1) << kSubpixelBits;
 constexpr double kMaxPixels = double(1 << 22);
 constexpr int kBandRows = 8;
 
+// No member initialisers: a plan's FreshArray of them is written whole by its tasks (no serial
+// zeroing first); ScreenVertex{} is the undrawable one. 16 bytes: x and y within +-2^26 (kMaxPixels
+// times kOne), widened to 64 bits in the edge functions.
 struct ScreenVertex {
-  int64_t x = 0, y = 0;  // 1/16 pixels
-  double inv_z = 0;      // 1 / camera-frame z; 0: not drawable
+  int32_t x, y;  // 1/16 pixels
+  double inv_z;  // 1 / camera-frame z; 0: not drawable
 };
 
 // A piece of a mesh triangle cut by the near plane: its corners on screen, and their barycentric
@@ -36,7 +41,7 @@ struct ClippedTriangle {
 // Twice the signed area of (a, b, p) in 1/256 square pixels: positive when p is left of a -> b
 // in picture coordinates (y down), i.e. clockwise on the screen.
 int64_t edge(const ScreenVertex& a, const ScreenVertex& b, int64_t px, int64_t py) {
-  return (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+  return (int64_t(b.x) - a.x) * (py - a.y) - (int64_t(b.y) - a.y) * (px - a.x);
 }
 
 // The top-left rule for a triangle of positive area (edge() > 0 inside, clockwise on the
@@ -50,7 +55,7 @@ bool top_left(const ScreenVertex& a, const ScreenVertex& b) {
 inline ScreenVertex to_screen(const PinholeCamera& camera, const Vec3d& v) {
   const auto p = camera.to_pixel(v);
   if (!(std::abs(p[0]) < kMaxPixels && std::abs(p[1]) < kMaxPixels)) return {};
-  return {round_half_away(p[0] * kOne), round_half_away(p[1] * kOne), 1 / v[2]};
+  return {int32_t(round_half_away(p[0] * kOne)), int32_t(round_half_away(p[1] * kOne)), 1 / v[2]};
 }
 
 // The pixels [first, last] whose centre (pixel + 0.5) lies within [lo, hi] (1/16 pixels), within
@@ -101,8 +106,9 @@ void draw(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2
   const bool tl0 = top_left(*v[1], *v[2]), tl1 = top_left(*v[2], *v[0]),
              tl2 = top_left(*v[0], *v[1]);
   // The edge functions at the row's first centre, stepped along it by exact integer increments.
-  const int64_t step[3] = {-(v[2]->y - v[1]->y) * kOne, -(v[0]->y - v[2]->y) * kOne,
-                           -(v[1]->y - v[0]->y) * kOne};
+  const int64_t step[3] = {-(int64_t(v[2]->y) - v[1]->y) * kOne,
+                           -(int64_t(v[0]->y) - v[2]->y) * kOne,
+                           -(int64_t(v[1]->y) - v[0]->y) * kOne};
   // The nearest a pixel of the triangle can be: a pixel already nearer is kept without it.
   const double nearest = nearest_depth(std::max({v[0]->inv_z, v[1]->inv_z, v[2]->inv_z}));
   for (int64_t r = first; r <= last; ++r) {
@@ -182,12 +188,10 @@ void clip(const PinholeCamera& camera, const Vec3d (&view)[3], uint32_t t, doubl
 
 // A block of the mesh's consecutive triangles: the bounding box on screen (1/16 pixels; empty
 // when none is drawable) and the nearest depth of those wholly in front of the near plane and
-// drawable, and the pieces of its triangles the near plane cuts.
+// drawable. No member initialisers: a plan's FreshArray of them is written whole by its tasks.
 struct Block {
-  int64_t x0 = std::numeric_limits<int64_t>::max(), x1 = std::numeric_limits<int64_t>::min();
-  int64_t y0 = std::numeric_limits<int64_t>::max(), y1 = std::numeric_limits<int64_t>::min();
-  double nearest = std::numeric_limits<double>::infinity();
-  std::vector<ClippedTriangle> clipped;
+  int64_t x0, x1, y0, y1;
+  double nearest;
 };
 
 // Whether every pixel of rows [row0, row1) whose centre lies within the bounding box [x0, x1] x
@@ -233,11 +237,11 @@ std::vector<size_t> block_bounds(const RenderMesh& mesh) {
 struct RasterPlan::Parts {
   const RenderMesh* mesh = nullptr;
   int width = 0, height = 0;
-  std::vector<ScreenVertex> screen;
+  FreshArray<ScreenVertex> screen;
   std::vector<size_t> bounds;
-  std::vector<Block> blocks;
-  std::vector<const ClippedTriangle*> pieces;  // in the blocks' triangle order
-  std::vector<uint32_t> order;                 // the blocks drawn, near to far
+  FreshArray<Block> blocks;
+  std::vector<ClippedTriangle> pieces;  // in triangle order
+  std::vector<uint32_t> order;          // the blocks drawn, near to far
 };
 
 RasterPlan::RasterPlan(const RenderMesh& mesh, const PinholeCamera& camera, double near)
@@ -251,57 +255,63 @@ RasterPlan::RasterPlan(const RenderMesh& mesh, const PinholeCamera& camera, doub
     return camera.to_view({mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1],
                            mesh.positions[3 * size_t(v) + 2]});
   };
-  // Each vertex's depth, and its place on screen when in front of the near plane (the camera
-  // frame's x and y are found again for the few triangles the near plane cuts).
-  std::vector<double> depth(vertex_count);
-  std::vector<ScreenVertex>& screen = p.screen;
+  // Each vertex's place on screen when in front of the near plane, else undrawable (the camera
+  // frame's points are found again for the few triangles with an undrawable corner). Sized, not
+  // zeroed: the tasks write every vertex (no serial first touch of its pages).
+  FreshArray<ScreenVertex>& screen = p.screen;
   screen.resize(vertex_count);
   tbb::parallel_for(size_t(0), vertex_count, [&](size_t i) {
     const Vec3d v = view(uint32_t(i));
-    depth[i] = v[2];
-    if (v[2] >= near) screen[i] = to_screen(camera, v);
+    screen[i] = v[2] >= near ? to_screen(camera, v) : ScreenVertex{};
   });
 
   // The mesh's blocks (a terrain's patches of squares): each block's bounding box on screen and
-  // nearest depth over its triangles wholly in front of the near plane and drawable, and the
-  // pieces of those the near plane cuts.
+  // nearest depth over its triangles wholly in front of the near plane and drawable (each block
+  // written whole by its task), and the pieces of those the near plane cuts (each thread's own,
+  // put in triangle order after).
   p.bounds = block_bounds(mesh);
   const std::vector<size_t>& bounds = p.bounds;
-  std::vector<Block>& blocks = p.blocks;
+  FreshArray<Block>& blocks = p.blocks;
   blocks.resize(bounds.size() - 1);
+  tbb::enumerable_thread_specific<std::vector<ClippedTriangle>> pieces;
   tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
-    Block& block = blocks[b];
+    Block block{std::numeric_limits<int64_t>::max(), std::numeric_limits<int64_t>::min(),
+                std::numeric_limits<int64_t>::max(), std::numeric_limits<int64_t>::min(), 0};
     double nearest_inv_z = 0;
     for (size_t t = bounds[b]; t < bounds[b + 1]; ++t) {
       const uint32_t* i = &mesh.indices[3 * t];
       const ScreenVertex* v[3] = {&screen[i[0]], &screen[i[1]], &screen[i[2]]};
       if (v[0]->inv_z != 0 && v[1]->inv_z != 0 && v[2]->inv_z != 0) {
         for (const ScreenVertex* c : v) {
-          block.x0 = std::min(block.x0, c->x);
-          block.x1 = std::max(block.x1, c->x);
-          block.y0 = std::min(block.y0, c->y);
-          block.y1 = std::max(block.y1, c->y);
+          block.x0 = std::min<int64_t>(block.x0, c->x);
+          block.x1 = std::max<int64_t>(block.x1, c->x);
+          block.y0 = std::min<int64_t>(block.y0, c->y);
+          block.y1 = std::max<int64_t>(block.y1, c->y);
           nearest_inv_z = std::max(nearest_inv_z, c->inv_z);
         }
         continue;
       }
-      const int in_front = (depth[i[0]] >= near) + (depth[i[1]] >= near) + (depth[i[2]] >= near);
-      if (in_front == 1 || in_front == 2) {  // 3: a corner too far off the picture
-        const Vec3d corners[3] = {view(i[0]), view(i[1]), view(i[2])};
-        clip(camera, corners, uint32_t(t), near, block.clipped);
-      }
+      const Vec3d corners[3] = {view(i[0]), view(i[1]), view(i[2])};
+      const int in_front =
+          (corners[0][2] >= near) + (corners[1][2] >= near) + (corners[2][2] >= near);
+      if (in_front == 1 || in_front == 2)  // 3: a corner too far off the picture
+        clip(camera, corners, uint32_t(t), near, pieces.local());
     }
     // The nearest any of its pixels can be (infinite when none is drawable).
     block.nearest = nearest_depth(nearest_inv_z);
+    blocks[b] = block;
   });
 
-  // Near to far, each band's pieces of cut triangles, then its blocks by their nearest depth (the
-  // drawing order changes no pixel: the tie rule).
-  for (const Block& block : blocks)
-    for (const ClippedTriangle& c : block.clipped) p.pieces.push_back(&c);
+  // Near to far, each band's pieces of cut triangles (a triangle's in the order clip made them),
+  // then its blocks by their nearest depth (the drawing order changes no pixel: the tie rule; the
+  // order is a total one, so the parallel sort's result is the serial one's).
+  for (const auto& local : pieces) p.pieces.insert(p.pieces.end(), local.begin(), local.end());
+  std::stable_sort(
+      p.pieces.begin(), p.pieces.end(),
+      [](const ClippedTriangle& a, const ClippedTriangle& b) { return a.triangle < b.triangle; });
   for (size_t b = 0; b < blocks.size(); ++b)
     if (blocks[b].x0 <= blocks[b].x1) p.order.push_back(uint32_t(b));
-  std::sort(p.order.begin(), p.order.end(), [&](uint32_t a, uint32_t b) {
+  tbb::parallel_sort(p.order.begin(), p.order.end(), [&](uint32_t a, uint32_t b) {
     return blocks[a].nearest < blocks[b].nearest ||
            (blocks[a].nearest == blocks[b].nearest && a < b);
   });
@@ -320,8 +330,8 @@ void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& f) {
   const RasterPlan::Parts& p = *plan.parts_;
   const RenderMesh& mesh = *p.mesh;
   const std::vector<size_t>& bounds = p.bounds;
-  const std::vector<Block>& blocks = p.blocks;
-  const std::vector<ScreenVertex>& screen = p.screen;
+  const FreshArray<Block>& blocks = p.blocks;
+  const FreshArray<ScreenVertex>& screen = p.screen;
   const int w = p.width, h = p.height;
   const int top = first_row, bottom = rows < 0 ? h : std::min(h, first_row + rows);
   // The pieces and blocks binned by the rows their bounding boxes meet, in the plan's order.
@@ -337,10 +347,10 @@ void rasterize(const RasterPlan& plan, int first_row, int rows, Fragments& f) {
     if (first > last || columns.first > columns.second) return Span{1, 0};
     return Span{first / kBandRows, last / kBandRows};
   };
-  for (const ClippedTriangle* c : p.pieces) {
-    const auto [first, last] = band_span(row_span(c->v[0], c->v[1], c->v[2], h),
-                                         column_span(c->v[0], c->v[1], c->v[2], w));
-    for (int64_t band = first; band <= last; ++band) band_pieces[size_t(band)].push_back(c);
+  for (const ClippedTriangle& c : p.pieces) {
+    const auto [first, last] =
+        band_span(row_span(c.v[0], c.v[1], c.v[2], h), column_span(c.v[0], c.v[1], c.v[2], w));
+    for (int64_t band = first; band <= last; ++band) band_pieces[size_t(band)].push_back(&c);
   }
   for (const uint32_t b : p.order) {
     const Block& block = blocks[b];

@@ -109,9 +109,8 @@ PlanePoint SamplePlaces::plane(int col, int row) const {
           square_.y_max - (row + 0.5) * square_.side / size_};
 }
 
-SamplePlace SamplePlaces::at(int col, int row) const {
-  if (col < 0 || row < 0 || col >= size_ || row >= size_) return border_[border_slot(col, row)];
-  if (lattice_ == 0) return exact_place(col, row);
+// Inlined: out of line, the two calls per sample cost more than the interpolation they spare.
+[[gnu::always_inline]] inline SamplePlaces::Corners SamplePlaces::corners(int col, int row) const {
   const int m = lattice_;
   const double y = double(row) * m / (size_ - 1);
   const int j = std::min(m - 1, int(y));
@@ -119,22 +118,40 @@ SamplePlace SamplePlaces::at(int col, int row) const {
   const double x = double(col) * m / (size_ - 1);
   const int i = std::min(m - 1, int(x));
   const double fx = x - i;
-  const SamplePlace* q[4] = {&nodes_[size_t(j * (m + 1) + i)], &nodes_[size_t(j * (m + 1) + i + 1)],
-                             &nodes_[size_t((j + 1) * (m + 1) + i)],
-                             &nodes_[size_t((j + 1) * (m + 1) + i + 1)]};
-  const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+  return {{&nodes_[size_t(j * (m + 1) + i)], &nodes_[size_t(j * (m + 1) + i + 1)],
+           &nodes_[size_t((j + 1) * (m + 1) + i)], &nodes_[size_t((j + 1) * (m + 1) + i + 1)]},
+          {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy}};
+}
+
+[[gnu::always_inline]] inline void SamplePlaces::add_ground(const Corners& c, SamplePlace& s) {
+  for (int k = 0; k < 4; ++k)
+    for (size_t a = 0; a < 3; ++a) {
+      s.base[a] += c.weight[k] * c.node[k]->base[a];
+      s.up[a] += c.weight[k] * c.node[k]->up[a];
+    }
+}
+
+SamplePlace SamplePlaces::at(int col, int row) const {
+  if (col < 0 || row < 0 || col >= size_ || row >= size_) return border_[border_slot(col, row)];
+  if (lattice_ == 0) return exact_place(col, row);
+  const Corners c = corners(col, row);
   SamplePlace s;
   s.known = true;
   s.plane = plane(col, row);
   s.position = {0, 0};
   for (int k = 0; k < 4; ++k) {
-    s.position.lon += w[k] * q[k]->position.lon;
-    s.position.lat += w[k] * q[k]->position.lat;
-    for (size_t a = 0; a < 3; ++a) {
-      s.base[a] += w[k] * q[k]->base[a];
-      s.up[a] += w[k] * q[k]->up[a];
-    }
+    s.position.lon += c.weight[k] * c.node[k]->position.lon;
+    s.position.lat += c.weight[k] * c.node[k]->position.lat;
   }
+  add_ground(c, s);
+  return s;
+}
+
+SamplePlace SamplePlaces::ground(int col, int row) const {
+  if (col < 0 || row < 0 || col >= size_ || row >= size_ || lattice_ == 0) return at(col, row);
+  SamplePlace s;
+  s.known = true;
+  add_ground(corners(col, row), s);
   return s;
 }
 

@@ -45,6 +45,9 @@ class SamplePlaces {
                const EllipsoidalHeights& heights);
   // Precondition: -halo <= col, row < size + halo.
   SamplePlace at(int col, int row) const;
+  // The same place's base and up alone (the same bits as at's; its position and plane left
+  // unset): what drawing a sample needs, without interpolating the rest.
+  SamplePlace ground(int col, int row) const;
   // Whether the inside samples' places are interpolated from the lattice, whose rows and columns
   // then turn by at most a hundredth of a radian at a node (else every place is exact).
   bool interpolated() const { return lattice_ > 0; }
@@ -53,6 +56,14 @@ class SamplePlaces {
   size_t border_slot(int col, int row) const;
   SamplePlace exact_place(int col, int row) const;  // unknown beyond one face width
   PlanePoint plane(int col, int row) const;         // the sample's centre on the cell's face
+  // An inside sample's four lattice nodes and their bilinear weights (a lattice required).
+  struct Corners {
+    const SamplePlace* node[4];
+    double weight[4];
+  };
+  Corners corners(int col, int row) const;
+  // Sets s.base and s.up from `c` (zero before).
+  static void add_ground(const Corners& c, SamplePlace& s);
 
   int size_, halo_;
   const Grid* grid_;

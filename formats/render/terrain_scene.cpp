@@ -151,25 +151,47 @@ Tile<float> tile_heights(const Grid& grid, const LayerInfo& dem, CellId cell,
 // The vertex numbering write_tile writes, tile_share counts and attribute_tile reads: calls
 // visit(vertex, col, row, k) for each vertex of `tile` numbered from `first`: the used samples
 // with data in row order (k -1), then the skirt's, each with the ring sample it hangs from, the
-// k-th of halo_ring(n).
+// k-th of halo_ring(n). Split: the samples' vertices of rows [r0, r1) (of -1 .. n) numbered from
+// `first`, and the skirt's numbered from `first`; both return the number after their last.
 template <typename Visit>
-void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
+size_t each_row_vertex(const SceneTile& tile, int n, int r0, int r1, size_t first, Visit&& visit) {
   const Tile<float>& heights = tile.heights;
   size_t v = first;
-  for (int r = -1; r <= n; ++r)
+  for (int r = r0; r < r1; ++r)
     for (int c = -1; c <= n; ++c)
       if (!std::isnan(heights.at(c, r)) && used(tile, n, c, r)) visit(v++, c, r, -1);
+  return v;
+}
+
+template <typename Visit>
+size_t each_skirt_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
+  const Tile<float>& heights = tile.heights;
+  size_t v = first;
   const auto ring = halo_ring(n);
   for (size_t k = 0; k < ring.size(); ++k)
     if (!std::isnan(heights.at(ring[k][0], ring[k][1])) &&
         (tile.skirted[k] || tile.skirted[(k + ring.size() - 1) % ring.size()]))
       visit(v++, ring[k][0], ring[k][1], int(k));
+  return v;
 }
 
-TileShare tile_share(const SceneTile& tile, int n) {
+template <typename Visit>
+void each_vertex(const SceneTile& tile, int n, size_t first, Visit&& visit) {
+  each_skirt_vertex(tile, n, each_row_vertex(tile, n, -1, n + 1, first, visit), visit);
+}
+
+// Also sets tile.row_first.
+TileShare tile_share(SceneTile& tile, int n) {
   const Tile<float>& heights = tile.heights;
   TileShare t;
-  each_vertex(tile, n, 0, [&](size_t, int, int, int) { ++t.vertices; });
+  tile.row_first.resize(size_t(n) + 3);
+  auto none = [](size_t, int, int, int) {};
+  for (int r = -1; r <= n; ++r) {
+    tile.row_first[size_t(r + 1)] = uint32_t(t.vertices);
+    t.vertices = each_row_vertex(tile, n, r, r + 1, t.vertices, none);
+  }
+  tile.row_first[size_t(n) + 2] = uint32_t(t.vertices);
+  t.vertices = each_skirt_vertex(tile, n, t.vertices, none);
   auto has = [&](int c, int r) { return !std::isnan(heights.at(c, r)); };
   each_patch(n, [&](size_t k, int c0, int r0, int c1, int r1) {
     if (!tile.drawn[k]) return;
@@ -218,7 +240,7 @@ void write_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const Scene
     Vec3d p;
     if (k < 0) {
       vertex[slot(c, r)] = uint32_t(v);
-      p = exaggerated(places.at(c, r), z, exaggeration);
+      p = exaggerated(places.ground(c, r), z, exaggeration);
     } else {
       const double depth = exaggeration * (double(highest - lowest) + sample_m);
       const LonLat place = places.at(c, r).position;
@@ -271,18 +293,27 @@ struct PositionMemo {
   std::vector<uint32_t> stamp;
 };
 
-// Writes the attributes of `tile`'s vertices asked for (scene.attributed 1): each that of the
-// sample it is (a skirt's vertex, the ring sample it hangs from).
-void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo) {
+// Rows of samples a task of attribute_vertices looks at (a tile's share of the work varies with
+// what the picture shows of it: many small tasks keep both threads busy to the end).
+constexpr int kAttributeRows = 16;
+
+// Writes the attributes of `tile`'s vertices asked for (scene.attributed 1) in rows [r0, r1) of
+// samples -1 .. n + 1, row n + 1 standing for the skirt: each that of the sample it is (a skirt's
+// vertex, the ring sample it hangs from). Rows without a vertex asked for are passed over.
+void attribute_tile(TerrainScene& scene, size_t index, int n, int r0, int r1, PositionMemo& memo) {
   const SceneTile& tile = scene.tiles[index];
-  // A tile's vertices are consecutive, up to the next tile's first: none asked, nothing to do
-  // (each strip of a picture asks again, of every tile).
-  const size_t end = index + 1 < scene.tiles.size() ? scene.tiles[index + 1].first_vertex
-                                                    : scene.attributed.size();
-  if (std::find(scene.attributed.begin() + std::ptrdiff_t(tile.first_vertex),
-                scene.attributed.begin() + std::ptrdiff_t(end),
-                uint8_t(1)) == scene.attributed.begin() + std::ptrdiff_t(end))
-    return;
+  // A row's vertices are consecutive, up to the next row's first (the skirt's up to the next
+  // tile's first).
+  const size_t tile_end = index + 1 < scene.tiles.size() ? scene.tiles[index + 1].first_vertex
+                                                         : scene.attributed.size();
+  auto row_first = [&](int r) {
+    return r <= n + 1 ? tile.first_vertex + tile.row_first[size_t(r + 1)] : tile_end;
+  };
+  auto asked = [&](int r) {
+    const auto begin = scene.attributed.begin() + std::ptrdiff_t(row_first(r)),
+               end = scene.attributed.begin() + std::ptrdiff_t(row_first(r + 1));
+    return std::find(begin, end, uint8_t(1)) != end;
+  };
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
   const auto stamp = uint32_t(index + 1);
@@ -299,11 +330,11 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
       memo.stamp[slot] = stamp;
       const float z = tile.heights.at(c, r);
       p = std::isnan(z) ? Vec3d{NAN, NAN, NAN}
-                        : exaggerated(place ? *place : places.at(c, r), z, scene.exaggeration);
+                        : exaggerated(place ? *place : places.ground(c, r), z, scene.exaggeration);
     }
     return p;
   };
-  each_vertex(tile, n, tile.first_vertex, [&](size_t v, int c, int r, int) {
+  auto attribute = [&](size_t v, int c, int r, int) {
     if (scene.attributed[v] != 1) return;
     scene.attributed[v] = 2;
     const SamplePlace place = places.at(c, r);
@@ -330,7 +361,15 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, PositionMemo& memo
     const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
     for (size_t k = 0; k < 3; ++k) scene.normals[3 * v + k] = float(nrm[k] * s);
     if (len == 0) scene.normals[3 * v + 2] = 1;
-  });
+  };
+  // Each strip of a picture asks again, of every row.
+  for (int r = r0; r < r1; ++r) {
+    if (!asked(r)) continue;
+    if (r <= n)
+      each_row_vertex(tile, n, r, r + 1, row_first(r), attribute);
+    else
+      each_skirt_vertex(tile, n, row_first(r), attribute);
+  }
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
@@ -414,7 +453,7 @@ ViewSide squares_side(const SceneTile& tile, int c0, int r0, int c1, int r1,
   if (!(lowest <= highest)) return ViewSide::kIn;  // no sample with data: no square to draw
   std::vector<Vec3d> hull;
   for (const auto& [c, r] : {std::pair{c0, r0}, {c1, r0}, {c0, r1}, {c1, r1}}) {
-    const SamplePlace place = tile.places->at(c, r);
+    const SamplePlace place = tile.places->ground(c, r);
     for (const float z : {lowest, highest}) hull.push_back(exaggerated(place, z, exaggeration));
   }
   const double side = double(std::max(c1 - c0, r1 - r0)) * sample_m;
@@ -590,9 +629,14 @@ void attribute_vertices(TerrainScene& scene, const Fragments* f) {
   }
   if (scene.tiles.empty()) return;
   const int n = scene.tiles.front().heights.size();
+  // Rows -1 .. n + 1 of each tile (n + 1: its skirt) in parts of kAttributeRows.
+  const int parts = (n + 3 + kAttributeRows - 1) / kAttributeRows;
   tbb::enumerable_thread_specific<PositionMemo> memos;
-  tbb::parallel_for(size_t(0), scene.tiles.size(),
-                    [&](size_t i) { attribute_tile(scene, i, n, memos.local()); });
+  tbb::parallel_for(size_t(0), scene.tiles.size() * size_t(parts), [&](size_t task) {
+    const int r0 = -1 + int(task % size_t(parts)) * kAttributeRows;
+    attribute_tile(scene, task / size_t(parts), n, r0, std::min(n + 2, r0 + kAttributeRows),
+                   memos.local());
+  });
 }
 
 TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const LayerInfo& dem,

@@ -53,6 +53,9 @@ struct SceneTile {
   // (the two surfaces overlap there: no seam to close).
   std::vector<uint8_t> skirted;
   size_t first_vertex = 0;
+  // Per row of samples -1 .. n, the number of its first vertex from first_vertex; then the skirt's
+  // first (n + 3 entries): attribute_vertices looks at the rows holding a vertex asked for only.
+  std::vector<uint32_t> row_first;
 };
 
 // Its arrays are FreshArrays (render/fresh_array.h). The mesh's: each tile writes every element of

@@ -3,12 +3,13 @@
 // position at several heights against PROJ's east-north-up frame at the eye (tests/support
 // proj_enu.h), on heights above the ellipsoid; for a cell in mid-latitudes, one on a face's edge
 // (its halo ring on the neighbouring face, turned) and one next to a pole; and each sample's point
-// of the grid's plane against Grid::forward.
+// of the grid's plane against Grid::forward; and SamplePlaces::ground against `at`, bit for bit.
 #include "render/sample_places.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "core/halo.h"
@@ -24,6 +25,7 @@ struct Worst {
   double plane = 0;   // metres of the grid's plane from Grid::forward of the exact centre
   int off_face = 0;   // samples read from another face (no plane point)
   int misplaced = 0;  // samples with a plane point off their face, or none on it
+  int ground = 0;     // samples whose ground() base or up differ from at()'s in a bit
 };
 
 constexpr int kHalo = 2;  // the terrain's two rings: the drawn one and the normals' (terrain_scene)
@@ -40,6 +42,9 @@ Worst worst_error(CellId cell, int size, GeodeticPoint eye) {
     for (int col = -kHalo; col < size + kHalo; ++col) {
       const auto source = pixel_source(grid, cell, size, col, row);
       const SamplePlace& place = places.at(col, row);
+      const SamplePlace ground = places.ground(col, row);
+      w.ground += std::memcmp(ground.base.data(), place.base.data(), sizeof place.base) != 0 ||
+                  std::memcmp(ground.up.data(), place.up.data(), sizeof place.up) != 0;
       EXPECT_EQ(place.known, source.has_value()) << col << " " << row;
       if (!source) continue;
       const LonLat exact = pixel_centre(grid, *source, level);
@@ -101,6 +106,7 @@ TEST(SamplePlaces, WithinAThousandthOfASampleOfProj) {
     // a sample: the same point), none for those read from another face.
     EXPECT_LE(w.plane, 1e-6 * sample) << c.name;
     EXPECT_EQ(w.misplaced, 0) << c.name;
+    EXPECT_EQ(w.ground, 0) << c.name;
     EXPECT_EQ(w.off_face > 0, std::string(c.name) == "face edge") << c.name;
   }
 }
