@@ -93,9 +93,10 @@ void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelR
                        points))
         queries.push_back(int32_t(candidates.size() + queries.size()));
   if (candidates.empty() || queries.empty()) return;
+  // The exact nearest (eps 0): the measure, not a synthesis's candidates.
   const std::vector<int32_t> nearest =
       nearest_patches(principal_axes(points, candidates.size()), kPatchFloats, candidates, queries,
-                      1, [](int32_t, int32_t) { return true; });
+                      1, 0.0f, [](int32_t, int32_t) { return true; });
   // The SSD itself from the colours (the rotation's float rounding left out).
   for (size_t q = 0; q < queries.size(); ++q)
     t.coherence_sum += ssd(points, queries[q], nearest[q]);

@@ -16,8 +16,10 @@ namespace maquette::synthesis {
 // The cache files' format number: part of every key and checked in every file. Bump it when the
 // file's layout or TransferExemplar's changes (a static_assert in exemplar_codec.cpp catches a
 // field added to ExemplarLevel); older files then miss and are recomputed. A change of the
-// analysis needs no bump: the build holding it is in the key (exemplar_cache.h).
-inline constexpr uint32_t kExemplarCacheVersion = 1;
+// analysis's code is told apart by the build holding it, in the key (exemplar_cache.h), but where
+// the build cannot be found only its constants are: a change of its results bumps the number too
+// (2: the k similar patches searched approximately).
+inline constexpr uint32_t kExemplarCacheVersion = 2;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
 std::string encode_exemplar(const TransferExemplar& exemplar, std::string_view key);

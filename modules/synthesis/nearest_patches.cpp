@@ -46,12 +46,13 @@ class KdTree {
     });
   }
 
-  // The k best entries, sorted, of the accepted points.
-  void search(int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
-              std::vector<Entry>& best) const {
+  // The k best entries, sorted, of the accepted points; `prune` scales a subtree's bound before
+  // it is compared with the k-th found ((1 + eps)^2 times the rounding's margin).
+  void search(int32_t query, int k, float prune,
+              const std::function<bool(int32_t, int32_t)>& accept, std::vector<Entry>& best) const {
     best.clear();
     std::vector<float> offsets(size_t(dims_), 0.0f);
-    if (!nodes_.empty()) visit(0, query, k, accept, best, offsets, 0.0f);
+    if (!nodes_.empty()) visit(0, query, k, prune, accept, best, offsets, 0.0f);
   }
 
  private:
@@ -119,8 +120,9 @@ class KdTree {
   // `bound`: a lower bound of the squared distance from the query to the node's box, the sum of
   // the squared `offsets` to the splits crossed so far, one per dimension (Arya & Mount's
   // incremental distance).
-  void visit(int32_t id, int32_t query, int k, const std::function<bool(int32_t, int32_t)>& accept,
-             std::vector<Entry>& best, std::vector<float>& offsets, float bound) const {
+  void visit(int32_t id, int32_t query, int k, float prune,
+             const std::function<bool(int32_t, int32_t)>& accept, std::vector<Entry>& best,
+             std::vector<float>& offsets, float bound) const {
     const Node& node = nodes_[size_t(id)];
     if (node.left < 0) {
       std::array<float, kLeafSize> distances;
@@ -136,14 +138,14 @@ class KdTree {
     }
     const float gap = coord(query, node.dim) - node.split;
     const int32_t near = gap < 0 ? node.left : node.right, far = gap < 0 ? node.right : node.left;
-    visit(near, query, k, accept, best, offsets, bound);
+    visit(near, query, k, prune, accept, best, offsets, bound);
     // Points equal to the split lie on either side: visit the far side unless strictly beyond
-    // (the bound shrunk by more than its rounding, so that no tie is lost).
+    // (`prune` holds the bound shrunk by more than its rounding, so that no tie is lost).
     float& offset = offsets[size_t(node.dim)];
     const float saved = offset, far_bound = bound - saved * saved + gap * gap;
-    if (int(best.size()) < k || far_bound * (1 - 1e-5f) <= best.back().first) {
+    if (int(best.size()) < k || far_bound * prune <= best.back().first) {
       offset = gap;
-      visit(far, query, k, accept, best, offsets, far_bound);
+      visit(far, query, k, prune, accept, best, offsets, far_bound);
       offset = saved;
     }
   }
@@ -159,16 +161,18 @@ class KdTree {
 
 std::vector<int32_t> nearest_patches(const std::vector<float>& points, int dims,
                                      const std::vector<int32_t>& candidates,
-                                     const std::vector<int32_t>& queries, int k,
+                                     const std::vector<int32_t>& queries, int k, float eps,
                                      const std::function<bool(int32_t, int32_t)>& accept) {
   const KdTree tree(points, dims, candidates);
+  // At eps 0 the factor is exactly the rounding's margin alone: the exact search's bits.
+  const float prune = (1 + eps) * (1 + eps) * (1 - 1e-5f);
   std::vector<int32_t> out(queries.size() * size_t(k), -1);
   // Queries are independent: each block writes its own entries, so any split gives the same.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, queries.size(), 1024),
                     [&](const tbb::blocked_range<size_t>& range) {
                       std::vector<Entry> best;
                       for (size_t q = range.begin(); q != range.end(); ++q) {
-                        tree.search(queries[q], k, accept, best);
+                        tree.search(queries[q], k, prune, accept, best);
                         for (size_t j = 0; j < best.size(); ++j)
                           out[q * size_t(k) + j] = best[j].second;
                       }
