@@ -191,7 +191,7 @@ void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fr
   append_stretch_texels(found.data(), f, step, texels);
 }
 
-BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look) {
+BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look) {
   BandStretch stretch{StretchRange{0, 255}, StretchRange{0, 255}, StretchRange{0, 255}};
   if (look.texture && look.stretch)
     tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {

@@ -106,9 +106,9 @@ void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fr
                            const PanoramaLook& look, PanoramaSamplers& samplers, int step,
                            StretchTexels& texels, FreshArray<float>& scratch);
 
-// The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
-// stored without a texture or with look.stretch false.
-BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
+// The stretch of `texels`: the 2 and 98 % quantiles per band, or the values as stored without a
+// texture or with look.stretch false.
+BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look);
 
 // Sizes `p`'s arrays for the rows [first_row, first_row + rows) of a picture `width` pixels wide
 // (shade_guides and colour_panorama write every pixel of them).
