@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <vector>
 
 namespace maquette {
 
@@ -27,7 +28,7 @@ constexpr uint32_t kFiniteBins[2] = {order_key(-std::numeric_limits<float>::max(
 
 }  // namespace
 
-StretchRange quantile_range(const std::vector<float>& v, double q0, double q1) {
+StretchRange quantile_range(std::span<const float> v, double q0, double q1) {
   // The values of ranks q * (count - 1) among the finite ones, found without sorting them all:
   // every value counted in its bin, then the finite ones of the bins holding the two ranks
   // gathered and the ranks selected among them (equal keys, equal values).

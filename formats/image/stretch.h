@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <utility>
-#include <vector>
 
 #include "core/round_half_away.h"
 
@@ -17,7 +17,7 @@ inline constexpr std::pair<double, double> kDisplayStretch = {0.02, 0.98};  // q
 
 // The q0 and q1 quantiles of the finite values (those of ranks q * (count - 1), as std::nth_element
 // selects them), hi > lo; (0, 1) when there is none.
-StretchRange quantile_range(const std::vector<float>& values, double q0, double q1);
+StretchRange quantile_range(std::span<const float> values, double q0, double q1);
 
 // A value stretched to a byte: `range` mapped to 0..255, clamped. Inline: the panorama stretches
 // three bands a pixel.

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "core/tile.h"
 #include "image/stretch.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
@@ -67,8 +68,9 @@ struct Panorama {
   FreshArray<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 
-using BandStretch = std::array<StretchRange, 3>;          // per band of the texture
-using StretchTexels = std::array<std::vector<float>, 3>;  // texels per band
+using BandStretch = std::array<StretchRange, 3>;  // per band of the texture
+// Texels per band (each appended texel written once: the vectors' growth does not fill them).
+using StretchTexels = std::array<std::vector<float, DefaultInitAllocator<float>>, 3>;
 
 // The display stretch is taken over the texels of the pixels whose row and column are multiples
 // of this step: 1 up to 4 MP, about 4 M pixels above.

@@ -56,7 +56,7 @@ TEST(Stretch, QuantilesAreTheNthElementsOfTheFiniteValues) {
       }
     }
   // Only NaN and infinities: none finite.
-  EXPECT_EQ(quantile_range({NAN, inf, -inf}, 0.02, 0.98), StretchRange(0.0, 1.0));
+  EXPECT_EQ(quantile_range(std::vector<float>{NAN, inf, -inf}, 0.02, 0.98), StretchRange(0.0, 1.0));
 }
 
 }  // namespace
