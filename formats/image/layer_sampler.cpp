@@ -5,7 +5,6 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <tuple>
 #include <utility>
 
 #include "core/halo.h"
@@ -14,28 +13,71 @@
 namespace maquette {
 namespace {
 
-// Samples every channel of a halo tile at (u, v), in pixels from the centre of pixel (0, 0), into
-// out[0 .. channels - 1]: the places and weights found once for all of them.
-void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bilinear,
-                 float* out) {
+// The nearest sample of a halo tile to (u, v), in pixels from the centre of pixel (0, 0): its
+// column and row.
+std::pair<int, int> nearest_sample(const Tile<float>& t, double u, double v) {
   const int n = t.size();
-  const int nc = std::clamp(int(round_half_away(u)), 0, n - 1);
-  const int nr = std::clamp(int(round_half_away(v)), 0, n - 1);
-  const int c0 = std::clamp(int(std::floor(u)), -1, n - 1);
-  const int r0 = std::clamp(int(std::floor(v)), -1, n - 1);
+  return {std::clamp(int(round_half_away(u)), 0, n - 1),
+          std::clamp(int(round_half_away(v)), 0, n - 1)};
+}
+
+// std::clamp(int(std::floor(x)), -1, n - 1), for x not NaN: the floor of x clamped first (the
+// same, as the bounds are whole), by truncation (x >= -1) and a step down where it rounded up.
+int floor_within(double x, int n) {
+  const double clamped = std::clamp(x, -1.0, double(n - 1));
+  const int whole = int(clamped);
+  return whole - int(double(whole) > clamped);
+}
+
+// Reads `channels` channels (kChannels when not 0: the loops unrolled) of a halo tile bilinearly
+// at (u, v) into out[0 .. channels - 1], leaving out samples not finite (the weights
+// renormalized), or the nearest's NaN when it is not finite: the places and weights found once
+// for all the channels.
+template <int kChannels>
+void bilinear(const Tile<float>& t, double u, double v, int channels, float* out) {
+  if constexpr (kChannels > 0) channels = kChannels;
+  const int n = t.size();
+  const int c0 = floor_within(u, n), r0 = floor_within(v, n);
   const double fx = std::clamp(u - c0, 0.0, 1.0), fy = std::clamp(v - r0, 0.0, 1.0);
-  const std::tuple<int, int, double> corners[4] = {
-      {0, 0, (1 - fx) * (1 - fy)}, {1, 0, fx * (1 - fy)}, {0, 1, (1 - fx) * fy}, {1, 1, fx * fy}};
+  const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+  // The corners (c0, r0), (c0 + 1, r0), (c0, r0 + 1), (c0 + 1, r0 + 1), each `channels` floats.
+  const float* const top = &t.at(c0, r0);
+  const float* const bottom = &t.at(c0, r0 + 1);
+  const float* const corner[4] = {top, top + channels, bottom, bottom + channels};
+  const double weight = 0.0 + w[0] + w[1] + w[2] + w[3];
   for (int k = 0; k < channels; ++k) {
-    const float nearest = t.at(nc, nr, k);
-    if (!bilinear || !std::isfinite(nearest)) {
+    // With the four samples finite (imagery without nodata near), the sum of all four: what the
+    // loop below gives then, in the same order. A sample not finite makes the sum not finite
+    // (its product with any weight, 0 too, is infinite or NaN).
+    const double all =
+        0.0 + w[0] * corner[0][k] + w[1] * corner[1][k] + w[2] * corner[2][k] + w[3] * corner[3][k];
+    if (std::isfinite(all)) {
+      out[k] = float(all / weight);
+      continue;
+    }
+    // Missing samples near: left out, or the nearest's NaN.
+    const auto [nc, nr] = nearest_sample(t, u, v);
+    if (const float nearest = t.at(nc, nr, k); !std::isfinite(nearest)) {
       out[k] = nearest;
       continue;
     }
-    double sum = 0, weight = 0;
-    for (const auto& [dc, dr, w] : corners)
-      if (const float s = t.at(c0 + dc, r0 + dr, k); std::isfinite(s)) sum += w * s, weight += w;
-    out[k] = float(sum / weight);  // the nearest sample is finite, so some weight is not 0
+    double sum = 0, partial = 0;
+    for (int j = 0; j < 4; ++j)
+      if (const float s = corner[j][k]; std::isfinite(s)) sum += w[j] * s, partial += w[j];
+    out[k] = float(sum / partial);  // the nearest sample (a corner) is finite: some weight is not 0
+  }
+}
+
+// Samples every channel of a halo tile at (u, v) into out[0 .. channels - 1].
+void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bilinear_read,
+                 float* out) {
+  if (!bilinear_read) {
+    const auto [nc, nr] = nearest_sample(t, u, v);
+    for (int k = 0; k < channels; ++k) out[k] = t.at(nc, nr, k);
+  } else if (channels == 3) {  // RGB imagery, the renderer's texture
+    bilinear<3>(t, u, v, channels, out);
+  } else {
+    bilinear<0>(t, u, v, channels, out);
   }
 }
 

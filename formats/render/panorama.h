@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "core/tile.h"
 #include "image/stretch.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
@@ -67,8 +68,9 @@ struct Panorama {
   FreshArray<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
 };
 
-using BandStretch = std::array<StretchRange, 3>;          // per band of the texture
-using StretchTexels = std::array<std::vector<float>, 3>;  // texels per band
+using BandStretch = std::array<StretchRange, 3>;  // per band of the texture
+// Texels per band (each appended texel written once: the vectors' growth does not fill them).
+using StretchTexels = std::array<std::vector<float, DefaultInitAllocator<float>>, 3>;
 
 // The display stretch is taken over the texels of the pixels whose row and column are multiples
 // of this step: 1 up to 4 MP, about 4 M pixels above.
@@ -106,9 +108,9 @@ void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fr
                            const PanoramaLook& look, PanoramaSamplers& samplers, int step,
                            StretchTexels& texels, FreshArray<float>& scratch);
 
-// The stretch of `texels` (which it reorders): the 2 and 98 % quantiles per band, or the values as
-// stored without a texture or with look.stretch false.
-BandStretch texel_stretch(StretchTexels& texels, const PanoramaLook& look);
+// The stretch of `texels`: the 2 and 98 % quantiles per band, or the values as stored without a
+// texture or with look.stretch false.
+BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look);
 
 // Sizes `p`'s arrays for the rows [first_row, first_row + rows) of a picture `width` pixels wide
 // (shade_guides and colour_panorama write every pixel of them).

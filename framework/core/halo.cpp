@@ -1,5 +1,6 @@
 #include "core/halo.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -96,9 +97,8 @@ Tile<float> assemble_halo(const Grid& grid, CellId cell, int size, int halo, con
   Tile<float> out(size, channels == 0 ? 1 : channels, halo,
                   std::numeric_limits<float>::quiet_NaN());
   if (const Tile<float>* own = tiles.front().second)
-    for (int row = 0; row < size; ++row)
-      for (int col = 0; col < size; ++col)
-        for (int k = 0; k < channels; ++k) out.at(col, row, k) = own->at(col, row, k);
+    for (int row = 0; row < size; ++row)  // a row's samples and channels at once
+      std::copy_n(&own->at(0, row), size_t(size) * size_t(channels), &out.at(0, row));
   for (const HaloSource& s : sources)
     if (const Tile<float>* tile = cached(s.cell))
       for (int k = 0; k < channels; ++k)

@@ -5,7 +5,10 @@
 // after the shared tiles dropped all their tiles and halos (re-read and re-made), and after they
 // dropped the half not used since. Tiles of 64 pixels, so the points cross many tile edges and
 // halos; one cell of the block has no tile. A point's value at its lon/lat is its value at its
-// plane point (two ways to its cell).
+// plane point (two ways to its cell). Bilinear values against an oracle computed here from the
+// stored texels at face pixel coordinates: 3-band imagery without nodata and 4-band imagery with
+// a fifth of its samples nodata, the samples of neighbours without a tile and nodata samples left
+// out (the weights renormalized), NaN where the nearest is missing.
 #include "image/layer_sampler.h"
 
 #include <gtest/gtest.h>
@@ -14,10 +17,12 @@
 #include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,13 +45,25 @@ uint8_t texel_value(int64_t col, int64_t row, int k) {
   return uint8_t(x ^ (x >> 31));
 }
 
-// A store of 3-band imagery (layer rgb) on kCells x kCells cells of kLevel, the top right one
-// without a tile.
+// Channel k of the layer "rgba" at the face pixel (col, row): texel_value, a fifth of them 0, its
+// nodata.
+uint8_t rgba_value(int64_t col, int64_t row, int k) {
+  const uint8_t v = texel_value(col, row, k);
+  return v % 5 == 0 ? 0 : v;
+}
+
+// A store of 3-band imagery (layer rgb) and of 4-band imagery with nodata 0 (layer rgba) on
+// kCells x kCells cells of kLevel, the top right one without a tile.
 struct Imagery {
   std::string path = (std::filesystem::temp_directory_path() /
                       ("maquette-layer-sampler-" + std::to_string(::getpid()) + ".mqt"))
                          .string();
   LayerInfo layer = test::layer_info("rgb", DType::U8, 3, kSize, kLevel);
+  LayerInfo rgba = [] {
+    LayerInfo l = test::layer_info("rgba", DType::U8, 4, kSize, kLevel);
+    l.nodata = 0;
+    return l;
+  }();
   std::vector<CellId> cells;  // those with a tile
 
   Imagery() {
@@ -54,6 +71,7 @@ struct Imagery {
     std::filesystem::remove(path);
     auto store = Store::open(path, Store::Mode::Create);
     store->create_layer(layer);
+    store->create_layer(rgba);
     Store::Batch batch(*store);
     for (int r = 0; r < kCells; ++r)
       for (int c = 0; c < kCells; ++c) {
@@ -64,6 +82,11 @@ struct Imagery {
             "rgb", cell,
             test::make_tile<uint8_t>(grid, cell, kSize, 3, [](const test::TileSample& s, int k) {
               return texel_value(s.col, s.row, k);
+            }));
+        batch.put_tile(
+            "rgba", cell,
+            test::make_tile<uint8_t>(grid, cell, kSize, 4, [](const test::TileSample& s, int k) {
+              return rgba_value(s.col, s.row, k);
             }));
       }
     batch.commit();
@@ -89,6 +112,89 @@ TEST(LayerSampler, NearestAtATexelCentreIsTheStoredTexel) {
         ASSERT_EQ(at_lonlat[k], stored) << "pixel " << s.col << ", " << s.row << " band " << k;
       }
     }
+}
+
+TEST(LayerSampler, BilinearLeavesOutMissingSamplesAsAnOracle) {
+  const Imagery im;
+  const auto store = Store::open(im.path, Store::Mode::ReadOnly);
+  const Grid& grid = default_grid();
+  const PlaneSquare first = grid.plane_square(CellId::FromFaceColRow(kFace, kLevel, kCol0, kRow0));
+  // A layer's stored value of channel k at the face pixel (col, row), NaN for its nodata.
+  using Stored = std::function<double(int64_t, int64_t, int)>;
+  // The bilinear value of `stored` at the face pixel coordinates (u, v) of the
+  // pixel centres into out[k], and into used[k] how many of the four samples it weighs (0: the
+  // nearest missing, NaN); false in a cell without a tile.
+  auto oracle = [&](double u, double v, int channels, const Stored& stored, float* out, int* used) {
+    auto has_tile = [](int64_t col, int64_t row) {
+      const int64_t c = col / kSize - kCol0, r = row / kSize - kRow0;
+      return c >= 0 && c < kCells && r >= 0 && r < kCells && !(r == 0 && c == kCells - 1);
+    };
+    auto value = [&](int64_t col, int64_t row, int k) {
+      return has_tile(col, row) ? stored(col, row, k) : NAN;
+    };
+    if (!has_tile(std::llround(u), std::llround(v))) return false;
+    const auto c0 = int64_t(std::floor(u)), r0 = int64_t(std::floor(v));
+    const double fx = u - double(c0), fy = v - double(r0);
+    for (int k = 0; k < channels; ++k) {
+      out[k] = NAN;
+      used[k] = 0;
+      if (std::isnan(value(std::llround(u), std::llround(v), k))) continue;
+      double sum = 0, weight = 0;
+      for (int dr = 0; dr < 2; ++dr)
+        for (int dc = 0; dc < 2; ++dc)
+          if (const double s = value(c0 + dc, r0 + dr, k); !std::isnan(s)) {
+            const double w = (dc ? fx : 1 - fx) * (dr ? fy : 1 - fy);
+            sum += w * s, weight += w, ++used[k];
+          }
+      out[k] = float(sum / weight);
+    }
+    return true;
+  };
+  // Points 0.3 texel apart over the block, a row a run.
+  constexpr int kSide = kCells * kSize * 10 / 3;
+  const double step = kCells * first.side / kSide;
+  // Counts the bands sampled by the samples weighed: four, fewer, none.
+  using Kinds = std::array<size_t, 3>;
+  auto expect_oracle = [&](const LayerInfo& layer, const Stored& stored, Kinds& kinds) {
+    LayerSampler sampler(*store, grid, layer, kLevel, true);
+    for (int row = 0; row < kSide; ++row) {
+      sampler.start_run();
+      for (int col = 0; col < kSide; ++col) {
+        const double x = step * (col + 0.37), y = step * (row + 0.41);
+        const double u = double(kCol0 * kSize) + x / first.side * kSize - 0.5;
+        const double v = double(kRow0 * kSize) + y / first.side * kSize - 0.5;
+        float got[4], want[4];
+        int used[4];
+        const bool sampled = sampler.sample(PlanePoint{first.x_min + x, first.y_max - y}, got);
+        ASSERT_EQ(sampled, oracle(u, v, layer.channels, stored, want, used))
+            << layer.name << " pixel " << u << ", " << v;
+        if (!sampled) continue;
+        for (int k = 0; k < layer.channels; ++k) {
+          ++kinds[used[k] == 4 ? 0 : used[k] == 0 ? 2 : 1];
+          if (used[k] == 0)
+            ASSERT_TRUE(std::isnan(got[k])) << layer.name << " pixel " << u << ", " << v;
+          else
+            ASSERT_NEAR(got[k], want[k], 1e-3)
+                << layer.name << " pixel " << u << ", " << v << " band " << k;
+        }
+      }
+    }
+  };
+  // Without nodata, samples are missing only beyond the block and next to the cell without a
+  // tile.
+  Kinds rgb{}, rgba{};
+  expect_oracle(
+      im.layer, [](int64_t c, int64_t r, int k) { return double(texel_value(c, r, k)); }, rgb);
+  EXPECT_GT(rgb[1], size_t(3000)) << "bands with samples missing";
+  EXPECT_GT(rgb[0], 50 * rgb[1]) << "bands of four samples";
+  expect_oracle(
+      im.rgba,
+      [](int64_t c, int64_t r, int k) {
+        const uint8_t v = rgba_value(c, r, k);
+        return v == 0 ? NAN : double(v);
+      },
+      rgba);
+  for (size_t kind = 0; kind < 3; ++kind) EXPECT_GT(rgba[kind], size_t(200000)) << kind;
 }
 
 TEST(LayerSampler, SharedTilesGiveEachSamplersOwnValuesAfterDroppingThem) {
