@@ -1,10 +1,14 @@
 #include "image/stretch.h"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -31,9 +35,22 @@ constexpr uint32_t kFiniteBins[2] = {order_key(-std::numeric_limits<float>::max(
 StretchRange quantile_range(std::span<const float> v, double q0, double q1) {
   // The values of ranks q * (count - 1) among the finite ones, found without sorting them all:
   // every value counted in its bin, then the finite ones of the bins holding the two ranks
-  // gathered and the ranks selected among them (equal keys, equal values).
-  std::vector<size_t> bins(size_t(1) << (32 - kShift), 0);
-  for (const float x : v) ++bins[order_key(x) >> kShift];
+  // gathered and the ranks selected among them (equal keys, equal values). Both passes in chunks
+  // side by side (a panorama's three bands shared evenly by two threads): the counts are exact
+  // whatever the order they are added in, the gathered values put in the chunks' order.
+  constexpr size_t kBins = size_t(1) << (32 - kShift), kChunk = size_t(1) << 16;
+  const size_t chunks = (v.size() + kChunk - 1) / kChunk;
+  auto chunk = [&](size_t c) {
+    return v.subspan(c * kChunk, std::min(kChunk, v.size() - c * kChunk));
+  };
+  tbb::enumerable_thread_specific<std::vector<size_t>> counted(kBins, size_t(0));
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    std::vector<size_t>& counts = counted.local();
+    for (const float x : chunk(c)) ++counts[order_key(x) >> kShift];
+  });
+  std::vector<size_t> bins(kBins, 0);
+  for (const std::vector<size_t>& counts : counted)
+    std::transform(bins.begin(), bins.end(), counts.begin(), bins.begin(), std::plus<>());
   const auto first = bins.begin() + kFiniteBins[0], end = bins.begin() + kFiniteBins[1] + 1;
   const size_t count = std::reduce(first, end, size_t(0));
   if (count == 0) return {0.0, 1.0};
@@ -46,10 +63,17 @@ StretchRange quantile_range(std::span<const float> v, double q0, double q1) {
     while (below + bins[bin[j]] <= rank[j]) below += bins[bin[j]++];
     within[j] = rank[j] - below;
   }
-  std::array<std::vector<float>, 2> of_bin;
-  for (const float x : v)
+  using OfBins = std::array<std::vector<float>, 2>;
+  std::vector<OfBins> of_chunk(chunks);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    for (const float x : chunk(c))
+      for (size_t j = 0; j < 2; ++j)
+        if (order_key(x) >> kShift == bin[j]) of_chunk[c][j].push_back(x);
+  });
+  OfBins of_bin;
+  for (const OfBins& gathered : of_chunk)
     for (size_t j = 0; j < 2; ++j)
-      if (order_key(x) >> kShift == bin[j]) of_bin[j].push_back(x);
+      of_bin[j].insert(of_bin[j].end(), gathered[j].begin(), gathered[j].end());
   auto select = [&](size_t j) {
     auto& values = of_bin[j];
     const auto it = values.begin() + std::ptrdiff_t(within[j]);
