@@ -421,7 +421,8 @@ void expect_same_guides(const std::string& path, const std::string& reference,
 // of the display range (128 grey), not in a light earth colour that drew a strip of DEM past the
 // imagery's edge as a bright rim on the skyline. Each times its shading guide, with no haze (a huge
 // haze distance) and the values as stored (--no-stretch). Without the reach, the pixels within it
-// were grey (the strip along Zion's skyline).
+// were grey (the strip along Zion's skyline). Stretched, the picture in one strip and in strips
+// (the stretch's texels read in two ways) are the same bytes.
 TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
   const Fixture& f = fixture();
   const std::string dir = test::temp_dir(), store = dir + "/half.mqt";
@@ -464,6 +465,18 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
           << options << " " << file;
     expect_same_guides(dir + "/" + name + "-guides.tif", dir + "/half-guides.tif", options);
   }
+  // Stretched, over the imagery's own texels only: the picture in one strip (its stretch read from
+  // its texels in place, those past the edge left out) is the picture in strips (the texels
+  // gathered before the edge's are made), byte for byte.
+  for (const char* name : {"stretched", "stretched13"}) {
+    const auto s =
+        run_maquette("render panorama " + store + " " + dir + "/" + name +
+                     ".png --dem dem --texture rgb --haze-distance 1e15 --camera " +
+                     "10.15 45.02 1500 " + kView + (name[9] == '1' ? " --strip-rows 13" : ""));
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+  }
+  EXPECT_TRUE(slurp(dir + "/stretched13.png") == slurp(dir + "/stretched.png"));
+  EXPECT_FALSE(slurp(dir + "/stretched.png") == slurp(out));  // stretched indeed
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((dir + "/half-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
