@@ -67,16 +67,17 @@ struct SurfacePoint {
 [[gnu::always_inline]] inline SurfacePoint surface_point(const TerrainScene& scene,
                                                          const Fragments& f, size_t i) {
   const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
+  const size_t a[3] = {scene.slot[v[0]], scene.slot[v[1]], scene.slot[v[2]]};  // attributes'
   const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
-  const double lon0 = scene.lonlat[2 * size_t(v[0])];
+  const double lon0 = scene.lonlat[2 * a[0]];
   SurfacePoint s;
   for (int j = 0; j < 3; ++j) {
-    const double lon = scene.lonlat[2 * size_t(v[j])];
+    const double lon = scene.lonlat[2 * a[j]];
     s.lonlat.lon +=
         b[j] * (std::abs(lon - lon0) > 180 ? lon0 + std::remainder(lon - lon0, 360.0) : lon);
-    s.lonlat.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
-    s.plane.x += b[j] * scene.plane[2 * size_t(v[j])];
-    s.plane.y += b[j] * scene.plane[2 * size_t(v[j]) + 1];
+    s.lonlat.lat += b[j] * scene.lonlat[2 * a[j] + 1];
+    s.plane.x += b[j] * scene.plane[2 * a[j]];
+    s.plane.y += b[j] * scene.plane[2 * a[j] + 1];
   }
   if (std::abs(s.lonlat.lon) > 180) s.lonlat.lon = std::remainder(s.lonlat.lon, 360.0);
   return s;
@@ -291,16 +292,18 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
       float* texel = &texel_of[3 * i];
       texel[0] = texel[1] = texel[2] = NAN;
       const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
+      const size_t a[3] = {scene.slot[v[0]], scene.slot[v[1]], scene.slot[v[2]]};  // attributes'
       const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
-      auto interpolate = [&](const auto& values, int stride, int k) {
+      // `values` at the corners `at` (slots or vertices), `stride` a corner, its k-th.
+      auto interpolate = [&](const auto& values, const auto& at, int stride, int k) {
         double sum = 0;
-        for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * v[j] + size_t(k)];
+        for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * at[j] + size_t(k)];
         return sum;
       };
       const SurfacePoint at = surface_point(scene, f, i);
       p.lon[o] = at.lonlat.lon;
       p.lat[o] = at.lonlat.lat;
-      p.altitude[o] = float(interpolate(scene.altitude, 1, 0));
+      p.altitude[o] = float(interpolate(scene.altitude, a, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[o] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, texel);
@@ -310,15 +313,15 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         p.land_cover[o] =
             sample_at(*s.land_cover, grid, *look.land_cover, at, &label) ? label : NAN;
       }
-      const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
-                         interpolate(scene.normals, 3, 2)};
+      const Vec3d normal{interpolate(scene.normals, a, 3, 0), interpolate(scene.normals, a, 3, 1),
+                         interpolate(scene.normals, a, 3, 2)};
       const double len =
           std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       const double lit =
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
       double sunlit = 1;
       if (look.shadow) {
-        const double shadow = interpolate(*look.shadow, 1, 0);
+        const double shadow = interpolate(*look.shadow, v, 1, 0);  // per vertex
         p.cast_shadow[o] = float(shadow);
         sunlit = 1 - shadow;
       }
