@@ -52,8 +52,9 @@ std::vector<StretchRange> quantile_ranges(size_t chunks, size_t bands, const Val
   // The values of ranks q * (count - 1) among each band's finite ones, found without sorting them
   // all: every value counted in its band's bin, then the finite ones of the bins holding the two
   // ranks gathered and the ranks selected among them (equal keys, equal values). Both passes in
-  // chunks side by side, every band at once (one read of values read in place): the counts are
-  // exact whatever the order they are added in, the gathered values put in the chunks' order.
+  // chunks side by side, every band at once (values read in place are read once a pass): the
+  // counts are exact whatever the order they are added in, the gathered values put in the
+  // chunks' order.
   constexpr size_t kBins = size_t(1) << (32 - kShift);
   tbb::enumerable_thread_specific<std::vector<float>> buffers;
   auto chunk = [&](size_t c) {
@@ -80,8 +81,9 @@ std::vector<StretchRange> quantile_ranges(size_t chunks, size_t bands, const Val
     const size_t count =
         std::reduce(of_band + kFiniteBins[0], of_band + kFiniteBins[1] + 1, size_t(0));
     none[k] = count == 0;
+    if (none[k]) continue;
     const Pair rank = {size_t(q0 * double(count - 1)), size_t(q1 * double(count - 1))};
-    for (size_t j = 0; j < 2 && count > 0; ++j) {
+    for (size_t j = 0; j < 2; ++j) {
       size_t below = 0;
       bin[k][j] = kFiniteBins[0];
       while (below + of_band[std::ptrdiff_t(bin[k][j])] <= rank[j])
