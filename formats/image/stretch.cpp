@@ -27,61 +27,95 @@ constexpr uint32_t order_key(float x) {
 // Values are counted by the top 16 bits of their keys. The infinities and NaNs have bins of their
 // own, below and above those of the finite values.
 constexpr int kShift = 16;
+constexpr size_t kChunk = size_t(1) << 16;  // values of a span counted by one task
 constexpr uint32_t kFiniteBins[2] = {order_key(-std::numeric_limits<float>::max()) >> kShift,
                                      order_key(std::numeric_limits<float>::max()) >> kShift};
 
 }  // namespace
 
 StretchRange quantile_range(std::span<const float> v, double q0, double q1) {
-  // The values of ranks q * (count - 1) among the finite ones, found without sorting them all:
-  // every value counted in its bin, then the finite ones of the bins holding the two ranks
-  // gathered and the ranks selected among them (equal keys, equal values). Both passes in chunks
-  // side by side (a panorama's three bands shared evenly by two threads): the counts are exact
-  // whatever the order they are added in, the gathered values put in the chunks' order.
-  constexpr size_t kBins = size_t(1) << (32 - kShift), kChunk = size_t(1) << 16;
-  const size_t chunks = (v.size() + kChunk - 1) / kChunk;
+  return quantile_ranges(v, 1, q0, q1)[0];
+}
+
+std::vector<StretchRange> quantile_ranges(std::span<const float> v, size_t bands, double q0,
+                                          double q1) {
+  const size_t chunk = kChunk / bands * bands;
+  return quantile_ranges((v.size() + chunk - 1) / chunk, bands,
+                         [v, chunk](size_t c, std::vector<float>&) {
+                           return v.subspan(c * chunk, std::min(chunk, v.size() - c * chunk));
+                         },
+                         q0, q1);
+}
+
+std::vector<StretchRange> quantile_ranges(size_t chunks, size_t bands, const ValueChunk& values,
+                                          double q0, double q1) {
+  // The values of ranks q * (count - 1) among each band's finite ones, found without sorting them
+  // all: every value counted in its band's bin, then the finite ones of the bins holding the two
+  // ranks gathered and the ranks selected among them (equal keys, equal values). Both passes in
+  // chunks side by side, every band at once (values read in place are read once a pass): the
+  // counts are exact whatever the order they are added in, the gathered values put in the
+  // chunks' order.
+  constexpr size_t kBins = size_t(1) << (32 - kShift);
+  tbb::enumerable_thread_specific<std::vector<float>> buffers;
   auto chunk = [&](size_t c) {
-    return v.subspan(c * kChunk, std::min(kChunk, v.size() - c * kChunk));
+    std::vector<float>& buffer = buffers.local();
+    buffer.clear();
+    return values(c, buffer);
   };
-  tbb::enumerable_thread_specific<std::vector<size_t>> counted(kBins, size_t(0));
+  tbb::enumerable_thread_specific<std::vector<size_t>> counted(bands * kBins, size_t(0));
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     std::vector<size_t>& counts = counted.local();
-    for (const float x : chunk(c)) ++counts[order_key(x) >> kShift];
+    const std::span<const float> v = chunk(c);
+    for (size_t i = 0; i < v.size(); i += bands)
+      for (size_t k = 0; k < bands; ++k) ++counts[k * kBins + (order_key(v[i + k]) >> kShift)];
   });
-  std::vector<size_t> bins(kBins, 0);
+  std::vector<size_t> bins(bands * kBins, 0);
   for (const std::vector<size_t>& counts : counted)
     std::transform(bins.begin(), bins.end(), counts.begin(), bins.begin(), std::plus<>());
-  const auto first = bins.begin() + kFiniteBins[0], end = bins.begin() + kFiniteBins[1] + 1;
-  const size_t count = std::reduce(first, end, size_t(0));
-  if (count == 0) return {0.0, 1.0};
-  const std::array<size_t, 2> rank = {size_t(q0 * double(count - 1)),
-                                      size_t(q1 * double(count - 1))};
-  std::array<uint32_t, 2> bin = {kFiniteBins[0], kFiniteBins[0]};
-  std::array<size_t, 2> within{};  // the rank among the values of its bin
-  for (size_t j = 0; j < 2; ++j) {
-    size_t below = 0;
-    while (below + bins[bin[j]] <= rank[j]) below += bins[bin[j]++];
-    within[j] = rank[j] - below;
+  // Per band: the bins holding the two ranks and the ranks within them; no value: none.
+  using Pair = std::array<size_t, 2>;
+  std::vector<Pair> bin(bands), within(bands);
+  std::vector<uint8_t> none(bands);
+  for (size_t k = 0; k < bands; ++k) {
+    const auto of_band = bins.begin() + std::ptrdiff_t(k * kBins);
+    const size_t count =
+        std::reduce(of_band + kFiniteBins[0], of_band + kFiniteBins[1] + 1, size_t(0));
+    none[k] = count == 0;
+    if (none[k]) continue;
+    const Pair rank = {size_t(q0 * double(count - 1)), size_t(q1 * double(count - 1))};
+    for (size_t j = 0; j < 2; ++j) {
+      size_t below = 0;
+      bin[k][j] = kFiniteBins[0];
+      while (below + of_band[std::ptrdiff_t(bin[k][j])] <= rank[j])
+        below += of_band[std::ptrdiff_t(bin[k][j]++)];
+      within[k][j] = rank[j] - below;
+    }
   }
-  using OfBins = std::array<std::vector<float>, 2>;
-  std::vector<OfBins> of_chunk(chunks);
+  using OfBins = std::vector<std::array<std::vector<float>, 2>>;  // per band
+  std::vector<OfBins> of_chunk(chunks, OfBins(bands));
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-    for (const float x : chunk(c))
-      for (size_t j = 0; j < 2; ++j)
-        if (order_key(x) >> kShift == bin[j]) of_chunk[c][j].push_back(x);
+    const std::span<const float> v = chunk(c);
+    for (size_t i = 0; i < v.size(); i += bands)
+      for (size_t k = 0; k < bands; ++k)
+        for (size_t j = 0; j < 2; ++j)
+          if (!none[k] && order_key(v[i + k]) >> kShift == bin[k][j])
+            of_chunk[c][k][j].push_back(v[i + k]);
   });
-  OfBins of_bin;
-  for (const OfBins& gathered : of_chunk)
-    for (size_t j = 0; j < 2; ++j)
-      of_bin[j].insert(of_bin[j].end(), gathered[j].begin(), gathered[j].end());
-  auto select = [&](size_t j) {
-    auto& values = of_bin[j];
-    const auto it = values.begin() + std::ptrdiff_t(within[j]);
-    std::nth_element(values.begin(), it, values.end());
-    return double(*it);
-  };
-  const double lo = select(0), hi = select(1);
-  return {lo, hi > lo ? hi : lo + 1.0};
+  std::vector<StretchRange> ranges(bands, StretchRange{0.0, 1.0});
+  for (size_t k = 0; k < bands; ++k) {
+    if (none[k]) continue;
+    auto select = [&](size_t j) {
+      std::vector<float> values;
+      for (const OfBins& gathered : of_chunk)
+        values.insert(values.end(), gathered[k][j].begin(), gathered[k][j].end());
+      const auto it = values.begin() + std::ptrdiff_t(within[k][j]);
+      std::nth_element(values.begin(), it, values.end());
+      return double(*it);
+    };
+    const double lo = select(0), hi = select(1);
+    ranges[k] = {lo, hi > lo ? hi : lo + 1.0};
+  }
+  return ranges;
 }
 
 }  // namespace maquette

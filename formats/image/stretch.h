@@ -3,9 +3,12 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
+#include <vector>
 
 #include "core/round_half_away.h"
 
@@ -18,6 +21,20 @@ inline constexpr std::pair<double, double> kDisplayStretch = {0.02, 0.98};  // q
 // The q0 and q1 quantiles of the finite values (those of ranks q * (count - 1), as std::nth_element
 // selects them), hi > lo; (0, 1) when there is none.
 StretchRange quantile_range(std::span<const float> values, double q0, double q1);
+
+// The same quantiles of each of `bands` bands of `values`, interleaved (value i of band
+// i % bands; the size a multiple of bands).
+std::vector<StretchRange> quantile_ranges(std::span<const float> values, size_t bands, double q0,
+                                          double q1);
+
+// Values in chunks, read where they are (a picture's texels among its other pixels): chunk c's
+// values, the same at every call, in `buffer` (given cleared, one per thread) or elsewhere.
+using ValueChunk = std::function<std::span<const float>(size_t c, std::vector<float>& buffer)>;
+
+// The same of the values of `chunks` chunks, each band interleaved (each chunk's size a multiple
+// of bands).
+std::vector<StretchRange> quantile_ranges(size_t chunks, size_t bands, const ValueChunk& chunk,
+                                          double q0, double q1);
 
 // A value stretched to a byte: `range` mapped to 0..255, clamped. Inline: the panorama stretches
 // three bands a pixel.

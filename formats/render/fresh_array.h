@@ -2,10 +2,8 @@
 // initialised (core/tile.h's DefaultInitAllocator): the step that makes an array writes each
 // element once, so its fresh pages are not written twice. Contract: that step must write EVERY
 // element; one left unwritten holds whatever the memory held (zero on a fresh page, old bytes on a
-// reused one). Two exceptions, said where each is declared: a step's own scratch array read by
-// that step alone, which writes every element it reads (the untouched pages cost nothing); and an
-// array whose elements are written as later steps ask for them, with a record of those written
-// that every reader keeps to (render/terrain_scene.h: the vertices' attributes). Under
+// reused one). One exception, said where it is declared: a step's own scratch array read by that
+// step alone, which writes every element it reads (the untouched pages cost nothing). Under
 // AddressSanitizer or ThreadSanitizer builds (GCC and Clang define
 // __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__ under -fsanitize) each array's storage is filled at
 // allocation with a pattern of its own (8 bytes from the clock and a count of allocations,

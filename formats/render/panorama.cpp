@@ -9,6 +9,8 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "core/round_half_away.h"
 #include "image/layer_sampler.h"
@@ -65,16 +67,17 @@ struct SurfacePoint {
 [[gnu::always_inline]] inline SurfacePoint surface_point(const TerrainScene& scene,
                                                          const Fragments& f, size_t i) {
   const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
+  const size_t a[3] = {scene.slot[v[0]], scene.slot[v[1]], scene.slot[v[2]]};  // attributes'
   const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
-  const double lon0 = scene.lonlat[2 * size_t(v[0])];
+  const double lon0 = scene.lonlat[2 * a[0]];
   SurfacePoint s;
   for (int j = 0; j < 3; ++j) {
-    const double lon = scene.lonlat[2 * size_t(v[j])];
+    const double lon = scene.lonlat[2 * a[j]];
     s.lonlat.lon +=
         b[j] * (std::abs(lon - lon0) > 180 ? lon0 + std::remainder(lon - lon0, 360.0) : lon);
-    s.lonlat.lat += b[j] * scene.lonlat[2 * size_t(v[j]) + 1];
-    s.plane.x += b[j] * scene.plane[2 * size_t(v[j])];
-    s.plane.y += b[j] * scene.plane[2 * size_t(v[j]) + 1];
+    s.lonlat.lat += b[j] * scene.lonlat[2 * a[j] + 1];
+    s.plane.x += b[j] * scene.plane[2 * a[j]];
+    s.plane.y += b[j] * scene.plane[2 * a[j] + 1];
   }
   if (std::abs(s.lonlat.lon) > 180) s.lonlat.lon = std::remainder(s.lonlat.lon, 360.0);
   return s;
@@ -139,35 +142,30 @@ void PanoramaSamplers::forget_unused() {
 namespace {
 
 // Appends to `texels` those of `found` (3 per pixel of the strip of rows of `f`; NaN for none; read
-// on its terrain pixels only) on the stretch grid of `step`, in row order: each row's texels
-// counted, then copied to their places, rows side by side (no serial share, no regrowth).
+// on its terrain pixels only) on the stretch grid of `step`, in row order: each row's pixels
+// counted, then their texels copied to their places, rows side by side (no serial share).
 void append_stretch_texels(const float* found, const Fragments& f, int step,
                            StretchTexels& texels) {
   const int rows = f.height, width = f.width;
-  using Counts = std::array<size_t, 3>;
-  auto each_texel = [&](int row, auto&& take) {
+  auto each_pixel = [&](int row, auto&& take) {
     if ((f.first_row + row) % step != 0) return;
     for (int col = 0; col < width; col += step) {
       const size_t i = size_t(row) * size_t(width) + size_t(col);
-      if (f.triangle[i] == Fragments::kSky) continue;
-      for (size_t k = 0; k < 3; ++k) {
-        const float t = found[3 * i + k];
-        if (!std::isnan(t)) take(k, t);
-      }
+      if (f.triangle[i] != Fragments::kSky) take(i);
     }
   };
-  std::vector<Counts> offset(size_t(rows) + 1, Counts{});  // row's first texel per band
+  std::vector<size_t> offset(size_t(rows) + 1, 0);  // each row's first texel
+  tbb::parallel_for(
+      0, rows, [&](int row) { each_pixel(row, [&](size_t) { offset[size_t(row) + 1] += 3; }); });
+  offset[0] = texels.size();
+  for (size_t row = 1; row <= size_t(rows); ++row) offset[row] += offset[row - 1];
+  texels.resize(offset[size_t(rows)]);
   tbb::parallel_for(0, rows, [&](int row) {
-    each_texel(row, [&](size_t k, float) { ++offset[size_t(row) + 1][k]; });
-  });
-  for (size_t k = 0; k < 3; ++k) {
-    offset[0][k] = texels[k].size();
-    for (size_t row = 1; row <= size_t(rows); ++row) offset[row][k] += offset[row - 1][k];
-    texels[k].resize(offset[size_t(rows)][k]);
-  }
-  tbb::parallel_for(0, rows, [&](int row) {
-    Counts next = offset[size_t(row)];
-    each_texel(row, [&](size_t k, float t) { texels[k][next[k]++] = t; });
+    size_t next = offset[size_t(row)];
+    each_pixel(row, [&](size_t i) {
+      std::copy_n(&found[3 * i], 3, &texels[next]);
+      next += 3;
+    });
   });
 }
 
@@ -194,13 +192,53 @@ void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fr
   append_stretch_texels(found.data(), f, step, texels);
 }
 
-BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look) {
+namespace {
+
+// Each band's stretch: the quantile_ranges (image/stretch.h) `ranges(q0, q1)` makes of texels, 3
+// a pixel; or the values as stored without a texture or with look.stretch false.
+template <typename Ranges>
+BandStretch band_stretch(const PanoramaLook& look, const Ranges& ranges) {
   BandStretch stretch{StretchRange{0, 255}, StretchRange{0, 255}, StretchRange{0, 255}};
-  if (look.texture && look.stretch)
-    tbb::parallel_for(size_t(0), size_t(3), [&](size_t k) {
-      stretch[k] = quantile_range(texels[k], kDisplayStretch.first, kDisplayStretch.second);
-    });
+  if (look.texture && look.stretch) {
+    const std::vector<StretchRange> r = ranges(kDisplayStretch.first, kDisplayStretch.second);
+    std::copy(r.begin(), r.end(), stretch.begin());
+  }
   return stretch;
+}
+
+// The stretch of the whole picture's `texels` (shade_guides') on the grid of `step`, read in place
+// a grid row at a time from `rows`: the imagery's own texels of its terrain pixels, those
+// gather_stretch_texels would copy.
+BandStretch picture_stretch(const FreshArray<float>& texels, const TexelRows& rows, int width,
+                            const PanoramaLook& look, int step) {
+  const auto w = size_t(width), grid = size_t(step);
+  auto grid_row = [&](size_t c, std::vector<float>& values) {
+    const size_t row = c * grid;
+    const auto& runs = rows.terrain[row];
+    const std::vector<uint32_t>& edge = rows.past_edge[row];
+    // A row whose terrain is one run, none of it past the edge: its texels in place, not copied.
+    if (grid == 1 && runs.size() == 1 && edge.empty())
+      return std::span<const float>(&texels[3 * (row * w + runs[0][0])],
+                                    3 * size_t(runs[0][1] - runs[0][0]));
+    size_t e = 0;
+    for (const auto& [first, end] : runs)
+      for (size_t col = (first + grid - 1) / grid * grid; col < end; col += grid) {
+        while (e < edge.size() && edge[e] < col) ++e;
+        if (e < edge.size() && edge[e] == col) continue;
+        for (size_t k = 0; k < 3; ++k) values.push_back(texels[3 * (row * w + col) + k]);
+      }
+    return std::span<const float>(values);
+  };
+  return band_stretch(look, [&](double q0, double q1) {
+    return quantile_ranges((rows.terrain.size() + grid - 1) / grid, 3, grid_row, q0, q1);
+  });
+}
+
+}  // namespace
+
+BandStretch texel_stretch(const StretchTexels& texels, const PanoramaLook& look) {
+  return band_stretch(look,
+                      [&](double q0, double q1) { return quantile_ranges(texels, 3, q0, q1); });
 }
 
 void size_panorama(Panorama& p, int width, int first_row, int rows, const PanoramaLook& look) {
@@ -218,7 +256,7 @@ void size_panorama(Panorama& p, int width, int first_row, int rows, const Panora
 
 void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& f,
                   const PinholeCamera& camera, const PanoramaLook& look, PanoramaSamplers& samplers,
-                  Panorama& p, FreshArray<float>& texels, StretchTexels* seen) {
+                  Panorama& p, FreshArray<float>& texels, TexelRows* rows) {
   const int w = f.width, h = f.height;
   // f's pixels in p's arrays start at `offset`. Every pixel of f's rows of each guide is written
   // once below (fresh pages are not filled first). The surface's texel, NaN for none; written and
@@ -235,6 +273,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
   tbb::parallel_for(0, h, [&](int row) {
     Samplers& s = threads.local();
     s.start_row();
+    auto* runs = rows ? &rows->terrain[size_t(f.first_row + row)] : nullptr;
     for (int col = 0; col < w; ++col) {
       const size_t i = size_t(row) * size_t(w) + size_t(col), o = offset + i;
       if (f.triangle[i] == Fragments::kSky) {  // NaN guides, a run of sky at once
@@ -247,19 +286,24 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         col = end - 1;
         continue;
       }
+      if (runs && (runs->empty() || runs->back()[1] != uint32_t(col)))
+        runs->push_back({uint32_t(col), uint32_t(col)});
+      if (runs) ++runs->back()[1];
       float* texel = &texel_of[3 * i];
       texel[0] = texel[1] = texel[2] = NAN;
       const uint32_t* v = &scene.mesh.indices[3 * size_t(f.triangle[i])];
+      const size_t a[3] = {scene.slot[v[0]], scene.slot[v[1]], scene.slot[v[2]]};  // attributes'
       const double b[3] = {1.0 - f.b1[i] - f.b2[i], f.b1[i], f.b2[i]};
-      auto interpolate = [&](const auto& values, int stride, int k) {
+      // `values` at the corners `at` (slots or vertices), `stride` a corner, its k-th.
+      auto interpolate = [&](const auto& values, const auto& at, int stride, int k) {
         double sum = 0;
-        for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * v[j] + size_t(k)];
+        for (int j = 0; j < 3; ++j) sum += b[j] * values[size_t(stride) * at[j] + size_t(k)];
         return sum;
       };
       const SurfacePoint at = surface_point(scene, f, i);
       p.lon[o] = at.lonlat.lon;
       p.lat[o] = at.lonlat.lat;
-      p.altitude[o] = float(interpolate(scene.altitude, 1, 0));
+      p.altitude[o] = float(interpolate(scene.altitude, a, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
       p.distance[o] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
       if (s.texture) sample_texel(s, grid, look, at, texel);
@@ -269,24 +313,21 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         p.land_cover[o] =
             sample_at(*s.land_cover, grid, *look.land_cover, at, &label) ? label : NAN;
       }
-      const Vec3d normal{interpolate(scene.normals, 3, 0), interpolate(scene.normals, 3, 1),
-                         interpolate(scene.normals, 3, 2)};
+      const Vec3d normal{interpolate(scene.normals, a, 3, 0), interpolate(scene.normals, a, 3, 1),
+                         interpolate(scene.normals, a, 3, 2)};
       const double len =
           std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       const double lit =
           len == 0 ? 1 : (normal[0] * sun[0] + normal[1] * sun[1] + normal[2] * sun[2]) / len;
       double sunlit = 1;
       if (look.shadow) {
-        const double shadow = interpolate(*look.shadow, 1, 0);
+        const double shadow = interpolate(*look.shadow, v, 1, 0);  // per vertex
         p.cast_shadow[o] = float(shadow);
         sunlit = 1 - shadow;
       }
       p.shading[o] = float(0.3 + 0.7 * std::max(0.0, lit) * sunlit);
     }
   });
-
-  // The imagery's own texels on the stretch grid, before the edge's are added.
-  if (seen) append_stretch_texels(texel_of, f, stretch_step(w, camera.spec().height), *seen);
 
   // Past the imagery's edge, its nearest texel within the reach.
   if (look.texture)
@@ -298,7 +339,9 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         float* texel = &texel_of[3 * i];
         if (f.triangle[i] == Fragments::kSky || !std::isnan(texel[0])) continue;
         const SurfacePoint at = surface_point(scene, f, i);
-        s.edge->sample(std::isnan(at.plane.x) ? grid.forward(at.lonlat) : at.plane, texel);
+        if (s.edge->sample(std::isnan(at.plane.x) ? grid.forward(at.lonlat) : at.plane, texel) &&
+            rows)
+          rows->past_edge[size_t(f.first_row + row)].push_back(uint32_t(col));
       }
     });
 }
@@ -369,13 +412,14 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
   size_panorama(p, w, 0, h, look);
   FreshArray<float> texels;
   PanoramaSamplers samplers(store, grid, look);
-  StretchTexels seen;
+  TexelRows rows(h);
   for (int first = 0; first < h; first += strip_rows) {
     shade_guides(grid, scene, draw(first, std::min(strip_rows, h - first)), camera, look, samplers,
-                 p, texels, &seen);
+                 p, texels, &rows);
     samplers.forget_unused();
   }
-  colour_panorama(camera, look, texel_stretch(seen, look), texels, p);
+  colour_panorama(camera, look, picture_stretch(texels, rows, w, look, stretch_step(w, h)), texels,
+                  p);
   return p;
 }
 

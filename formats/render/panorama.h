@@ -69,8 +69,19 @@ struct Panorama {
 };
 
 using BandStretch = std::array<StretchRange, 3>;  // per band of the texture
-// Texels per band (each appended texel written once: the vectors' growth does not fill them).
-using StretchTexels = std::array<std::vector<float, DefaultInitAllocator<float>>, 3>;
+// Texels, 3 floats each (NaN for none; each appended texel written once: the vector's growth does
+// not fill it).
+using StretchTexels = std::vector<float, DefaultInitAllocator<float>>;
+
+// Per row of a picture, where shade_guides wrote its texels: the runs of terrain pixels [first,
+// end), left to right, and among them the columns whose texel is the imagery's nearest past its
+// edge (render/edge_texels.h), ascending. The display stretch reads the texels in place from them
+// (the imagery's own only), not from a copy.
+struct TexelRows {
+  std::vector<std::vector<std::array<uint32_t, 2>>> terrain;
+  std::vector<std::vector<uint32_t>> past_edge;
+  explicit TexelRows(int rows) : terrain(size_t(rows)), past_edge(size_t(rows)) {}
+};
 
 // The display stretch is taken over the texels of the pixels whose row and column are multiples
 // of this step: 1 up to 4 MP, about 4 M pixels above.
@@ -97,7 +108,7 @@ class PanoramaSamplers {
                                     FreshArray<float>&);
   friend void shade_guides(const Grid&, const TerrainScene&, const Fragments&, const PinholeCamera&,
                            const PanoramaLook&, PanoramaSamplers&, Panorama&, FreshArray<float>&,
-                           StretchTexels*);
+                           TexelRows*);
 };
 
 // Appends to `texels` those of the terrain pixels of `f` on the grid of `step` (picture rows, so
@@ -118,13 +129,13 @@ void size_panorama(Panorama& p, int width, int first_row, int rows, const Panora
 
 // The guides of the rows of `fragments` (shading among them; NaN on the sky) written into the same
 // rows of `p`, which holds them, and into `texels` (resized to 3 floats a pixel of `p`, written on
-// terrain pixels only) the imagery's texel where each pixel sees the surface (NaN for none). With
-// `seen`, those on the stretch grid (stretch_step of the picture) appended to it, in row order;
-// then the pixels without a texel given the imagery's nearest within the reach
-// (render/edge_texels.h: not stretched over).
+// terrain pixels only) the imagery's texel where each pixel sees the surface (NaN for none); then
+// the pixels without a texel given the imagery's nearest within the reach (render/edge_texels.h:
+// not stretched over). With `rows` (sized for the picture's rows), those rows' terrain runs and
+// columns past the edge appended to it.
 void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& fragments,
                   const PinholeCamera& camera, const PanoramaLook& look, PanoramaSamplers& samplers,
-                  Panorama& p, FreshArray<float>& texels, StretchTexels* seen);
+                  Panorama& p, FreshArray<float>& texels, TexelRows* rows);
 
 // The colour and silhouettes of every pixel of `p` from its guides (the sky: NaN distance) and
 // `texels` (shade_guides'), the texels stretched by `stretch`. A pixel next to a row `p` does not
@@ -138,8 +149,8 @@ using DrawRows = std::function<const Fragments&(int first, int rows)>;
 
 // The whole picture of `camera`, its fragments drawn by `draw` in strips of `strip_rows` rows (one
 // strip's fragments at a time), its guides and texels written strip by strip into the whole
-// picture's, then its display stretch taken over the whole picture and its colour and silhouettes
-// made: the same bits for any strips.
+// picture's, then its display stretch taken over the whole picture's texels where they are
+// (TexelRows) and its colour and silhouettes made: the same bits for any strips.
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                         const DrawRows& draw);

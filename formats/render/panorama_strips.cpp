@@ -216,12 +216,17 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
   PanoramaSamplers samplers(store, grid, look);
   FreshArray<float> texels;
   StretchTexels stretch_texels;
-  if (look.texture && look.stretch)
+  if (look.texture && look.stretch) {
+    // Room for every pixel of the stretch grid (untouched pages cost nothing): the strips' texels
+    // appended without regrowth, whose copies into twice the capacity gave pages twice.
+    const int step = stretch_step(w, h);
+    stretch_texels.reserve(3 * size_t((w + step - 1) / step) * size_t((h + step - 1) / step));
     for (int first = 0; first < h; first += strip_rows) {
-      gather_stretch_texels(grid, scene, draw(first, strip_rows), look, samplers,
-                            stretch_step(w, h), stretch_texels, texels);
+      gather_stretch_texels(grid, scene, draw(first, strip_rows), look, samplers, step,
+                            stretch_texels, texels);
       samplers.forget_unused();
     }
+  }
   const BandStretch stretch = texel_stretch(stretch_texels, look);
   Panorama strip;
   for (int first = 0; first < h; first += strip_rows) {

@@ -143,7 +143,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   for (const auto& [level, count] : tiles)
     levels +=
         (levels.empty() ? "" : ", ") + std::to_string(count) + " at level " + std::to_string(level);
-  spdlog::debug("panorama: tiles {}; {} vertices, {} triangles", levels, scene.altitude.size(),
+  spdlog::debug("panorama: tiles {}; {} vertices, {} triangles", levels, scene.slot.size(),
                 scene.mesh.triangle_count());
   PanoramaLook& look = prepared->look;
   look.texture = texture ? &*texture : nullptr;

@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -297,22 +298,26 @@ struct PositionMemo {
 // what the picture shows of it: many small tasks keep both threads busy to the end).
 constexpr int kAttributeRows = 16;
 
-// Writes the attributes of `tile`'s vertices asked for (scene.attributed 1) in rows [r0, r1) of
-// samples -1 .. n + 1, row n + 1 standing for the skirt: each that of the sample it is (a skirt's
-// vertex, the ring sample it hangs from). Rows without a vertex asked for are passed over.
-void attribute_tile(TerrainScene& scene, size_t index, int n, int r0, int r1, PositionMemo& memo) {
+// The first vertex of row r of samples -1 .. n + 1 of tile `index` (row n + 1 standing for the
+// skirt; n + 2: the tile's end): a row's vertices are consecutive, up to the next row's first (the
+// skirt's up to the next tile's first).
+size_t row_first(const TerrainScene& scene, size_t index, int n, int r) {
+  if (r <= n + 1)
+    return scene.tiles[index].first_vertex + scene.tiles[index].row_first[size_t(r + 1)];
+  return index + 1 < scene.tiles.size() ? scene.tiles[index + 1].first_vertex : scene.slot.size();
+}
+
+// Writes the attributes of `tile`'s vertices asked for (TerrainScene::kAsked) in rows [r0, r1) of
+// samples -1 .. n + 1, row n + 1 standing for the skirt, into slots from `next` on in vertex
+// order: each that of the sample it is (a skirt's vertex, the ring sample it hangs from). Rows
+// without a vertex asked for are passed over. Returns the slot after the last written.
+size_t attribute_tile(TerrainScene& scene, size_t index, int n, int r0, int r1, size_t next,
+                      PositionMemo& memo) {
   const SceneTile& tile = scene.tiles[index];
-  // A row's vertices are consecutive, up to the next row's first (the skirt's up to the next
-  // tile's first).
-  const size_t tile_end = index + 1 < scene.tiles.size() ? scene.tiles[index + 1].first_vertex
-                                                         : scene.attributed.size();
-  auto row_first = [&](int r) {
-    return r <= n + 1 ? tile.first_vertex + tile.row_first[size_t(r + 1)] : tile_end;
-  };
   auto asked = [&](int r) {
-    const auto begin = scene.attributed.begin() + std::ptrdiff_t(row_first(r)),
-               end = scene.attributed.begin() + std::ptrdiff_t(row_first(r + 1));
-    return std::find(begin, end, uint8_t(1)) != end;
+    const auto begin = scene.slot.begin() + std::ptrdiff_t(row_first(scene, index, n, r)),
+               end = scene.slot.begin() + std::ptrdiff_t(row_first(scene, index, n, r + 1));
+    return std::find(begin, end, TerrainScene::kAsked) != end;
   };
   const SamplePlaces& places = *tile.places;
   const int side = n + 2 * kHalo;
@@ -335,14 +340,15 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, int r0, int r1, Po
     return p;
   };
   auto attribute = [&](size_t v, int c, int r, int) {
-    if (scene.attributed[v] != 1) return;
-    scene.attributed[v] = 2;
+    if (scene.slot[v] != TerrainScene::kAsked) return;
+    const size_t a = next++;
+    scene.slot[v] = uint32_t(a);
     const SamplePlace place = places.at(c, r);
-    scene.lonlat[2 * v] = place.position.lon;
-    scene.lonlat[2 * v + 1] = place.position.lat;
-    scene.plane[2 * v] = place.plane.x;
-    scene.plane[2 * v + 1] = place.plane.y;
-    scene.altitude[v] = tile.heights.at(c, r);
+    scene.lonlat[2 * a] = place.position.lon;
+    scene.lonlat[2 * a + 1] = place.position.lat;
+    scene.plane[2 * a] = place.plane.x;
+    scene.plane[2 * a + 1] = place.plane.y;
+    scene.altitude[a] = tile.heights.at(c, r);
     // The normal: the cross product of the column and row central differences, turned up;
     // one-sided only where a neighbour has no data.
     const Vec3d pv = position(c, r, &place);
@@ -359,17 +365,18 @@ void attribute_tile(TerrainScene& scene, size_t index, int n, int r0, int r1, Po
     // The up direction at the vertex: from the earth's centre, near enough for the sign.
     const double up = nrm[0] * pv[0] + nrm[1] * pv[1] + nrm[2] * (pv[2] + 6.371e6);
     const double s = len == 0 ? 0 : (up < 0 ? -1 : 1) / len;
-    for (size_t k = 0; k < 3; ++k) scene.normals[3 * v + k] = float(nrm[k] * s);
-    if (len == 0) scene.normals[3 * v + 2] = 1;
+    for (size_t k = 0; k < 3; ++k) scene.normals[3 * a + k] = float(nrm[k] * s);
+    if (len == 0) scene.normals[3 * a + 2] = 1;
   };
   // Each strip of a picture asks again, of every row.
   for (int r = r0; r < r1; ++r) {
     if (!asked(r)) continue;
     if (r <= n)
-      each_row_vertex(tile, n, r, r + 1, row_first(r), attribute);
+      each_row_vertex(tile, n, r, r + 1, row_first(scene, index, n, r), attribute);
     else
-      each_skirt_vertex(tile, n, row_first(r), attribute);
+      each_skirt_vertex(tile, n, row_first(scene, index, n, r), attribute);
   }
+  return next;
 }
 
 // The nearest horizontal distance (metres, in the eye's ENU frame) from the eye to `cell`: 0 when
@@ -590,16 +597,17 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
     vertices += shares[i].vertices;
     first_index[i + 1] = first_index[i] + shares[i].indices;
   }
-  // Sized, not filled: each tile writes every element of its share of the mesh; the attributes
-  // are written by attribute_vertices, for the vertices it is given.
+  // Sized, not filled: each tile writes every element of its share of the mesh. The attributes'
+  // room for every vertex reserved (pages untouched until written): attribute_vertices adds slots
+  // strip by strip without moving them.
   scene.mesh.positions.resize(3 * vertices);
   scene.mesh.indices.resize(first_index.back());
   scene.mesh.block_first.resize(cells.size() * tile_blocks(n));
-  scene.lonlat.resize(2 * vertices);
-  scene.plane.resize(2 * vertices);
-  scene.altitude.resize(vertices);
-  scene.normals.resize(3 * vertices);
-  scene.attributed.assign(vertices, 0);
+  scene.lonlat.reserve(2 * vertices);
+  scene.plane.reserve(2 * vertices);
+  scene.altitude.reserve(vertices);
+  scene.normals.reserve(3 * vertices);
+  scene.slot.assign(vertices, TerrainScene::kNoSlot);
   tbb::parallel_for(size_t(0), cells.size(), [&](size_t i) {
     write_tile(grid, dem, cells[i], scene.tiles[i], shares[i], camera, heights, exaggeration,
                first_index[i], i * tile_blocks(n), scene.mesh);
@@ -608,11 +616,13 @@ TerrainScene build_terrain_scene(const Store& store, const Grid& grid, const Lay
 }
 
 void attribute_vertices(TerrainScene& scene, const Fragments* f) {
-  auto& asked = scene.attributed;
+  auto& slot = scene.slot;
+  constexpr uint32_t kNoSlot = TerrainScene::kNoSlot, kAsked = TerrainScene::kAsked;
   if (!f) {
-    for (uint8_t& a : asked) a = std::max<uint8_t>(a, 1);
+    for (uint32_t& s : slot)
+      if (s == kNoSlot) s = kAsked;
   } else {
-    // Relaxed atomic stores: two rows may share a triangle's vertex (the same byte, the same
+    // Relaxed atomic stores: two rows may share a triangle's vertex (the same element, the same
     // value).
     tbb::parallel_for(0, f->height, [&](int row) {
       uint32_t previous = Fragments::kSky;
@@ -621,21 +631,49 @@ void attribute_vertices(TerrainScene& scene, const Fragments* f) {
         if (t == Fragments::kSky || t == previous) continue;
         previous = t;
         for (size_t j = 0; j < 3; ++j) {
-          std::atomic_ref<uint8_t> a(asked[scene.mesh.indices[3 * size_t(t) + j]]);
-          if (a.load(std::memory_order_relaxed) == 0) a.store(1, std::memory_order_relaxed);
+          std::atomic_ref<uint32_t> s(slot[scene.mesh.indices[3 * size_t(t) + j]]);
+          if (s.load(std::memory_order_relaxed) == kNoSlot)
+            s.store(kAsked, std::memory_order_relaxed);
         }
       }
     });
   }
   if (scene.tiles.empty()) return;
   const int n = scene.tiles.front().heights.size();
-  // Rows -1 .. n + 1 of each tile (n + 1: its skirt) in parts of kAttributeRows.
+  // Rows -1 .. n + 1 of each tile (n + 1: its skirt) in parts of kAttributeRows; each task's
+  // vertices asked for counted, then given the slots after the earlier tasks' (vertex order).
   const int parts = (n + 3 + kAttributeRows - 1) / kAttributeRows;
-  tbb::enumerable_thread_specific<PositionMemo> memos;
-  tbb::parallel_for(size_t(0), scene.tiles.size() * size_t(parts), [&](size_t task) {
+  const size_t tasks = scene.tiles.size() * size_t(parts);
+  auto rows = [&](size_t task) {
     const int r0 = -1 + int(task % size_t(parts)) * kAttributeRows;
-    attribute_tile(scene, task / size_t(parts), n, r0, std::min(n + 2, r0 + kAttributeRows),
-                   memos.local());
+    return std::pair{r0, std::min(n + 2, r0 + kAttributeRows)};
+  };
+  std::vector<size_t> first_slot(tasks + 1, 0);
+  tbb::parallel_for(size_t(0), tasks, [&](size_t task) {
+    const auto [r0, r1] = rows(task);
+    const size_t index = task / size_t(parts);
+    first_slot[task + 1] =
+        size_t(std::count(slot.begin() + std::ptrdiff_t(row_first(scene, index, n, r0)),
+                          slot.begin() + std::ptrdiff_t(row_first(scene, index, n, r1)), kAsked));
+  });
+  first_slot[0] = scene.altitude.size();
+  std::partial_sum(first_slot.begin(), first_slot.end(), first_slot.begin());
+  const size_t slots = first_slot.back();
+  scene.lonlat.resize(2 * slots);
+  scene.plane.resize(2 * slots);
+  scene.altitude.resize(slots);
+  scene.normals.resize(3 * slots);
+  tbb::enumerable_thread_specific<PositionMemo> memos;
+  tbb::parallel_for(size_t(0), tasks, [&](size_t task) {
+    const auto [r0, r1] = rows(task);
+    const size_t end =
+        attribute_tile(scene, task / size_t(parts), n, r0, r1, first_slot[task], memos.local());
+    if (end != first_slot[task + 1])  // every slot given is written
+      throw std::logic_error("panorama attributes of cell " +
+                             scene.cells[task / size_t(parts)].ToText() + " rows " +
+                             std::to_string(r0) + " to " + std::to_string(r1) + ": wrote " +
+                             std::to_string(end - first_slot[task]) + " vertices, counted " +
+                             std::to_string(first_slot[task + 1] - first_slot[task]));
   });
 }
 

@@ -45,7 +45,7 @@ int log2_tile_size(int size) {
 template <typename T>
 Tile<T> to_tile(const RawTile& raw, const double* nodata) {
   check_bytes(raw);
-  Tile<T> out(raw.size, raw.channels);
+  auto out = Tile<T>::uninitialized(raw.size, raw.channels);  // every sample written below
   std::span<T> dst = out.data();
   visit_dtype(raw.dtype, [&]<typename S>(std::type_identity<S>) {
     for (size_t i = 0; i < dst.size(); ++i) {

@@ -421,7 +421,8 @@ void expect_same_guides(const std::string& path, const std::string& reference,
 // of the display range (128 grey), not in a light earth colour that drew a strip of DEM past the
 // imagery's edge as a bright rim on the skyline. Each times its shading guide, with no haze (a huge
 // haze distance) and the values as stored (--no-stretch). Without the reach, the pixels within it
-// were grey (the strip along Zion's skyline).
+// were grey (the strip along Zion's skyline). Stretched, the picture in one strip and in strips
+// (the stretch's texels read in two ways) are the same bytes.
 TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
   const Fixture& f = fixture();
   const std::string dir = test::temp_dir(), store = dir + "/half.mqt";
@@ -464,6 +465,18 @@ TEST(PanoramaCli, TerrainPastTheImageryTakesItsEdgeWithinTheReach) {
           << options << " " << file;
     expect_same_guides(dir + "/" + name + "-guides.tif", dir + "/half-guides.tif", options);
   }
+  // Stretched, over the imagery's own texels only: the picture in one strip (its stretch read from
+  // its texels in place, those past the edge left out) is the picture in strips (the texels
+  // gathered before the edge's are made), byte for byte.
+  for (const char* name : {"stretched", "stretched13"}) {
+    const auto s =
+        run_maquette("render panorama " + store + " " + dir + "/" + name +
+                     ".png --dem dem --texture rgb --haze-distance 1e15 --camera " +
+                     "10.15 45.02 1500 " + kView + (name[9] == '1' ? " --strip-rows 13" : ""));
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+  }
+  EXPECT_TRUE(slurp(dir + "/stretched13.png") == slurp(dir + "/stretched.png"));
+  EXPECT_FALSE(slurp(dir + "/stretched.png") == slurp(out));  // stretched indeed
   std::unique_ptr<GDALDataset> guides(
       GDALDataset::Open((dir + "/half-guides.tif").c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(guides);
@@ -551,7 +564,7 @@ TEST(PanoramaCli, NoSkirtAlongANeighbourOfTheSameLevel) {
                                                                       uint32_t(int(c.col()) + dc),
                                                                       uint32_t(int(c.row()) + dr)));
     const size_t end =
-        i + 1 < scene.tiles.size() ? scene.tiles[i + 1].first_vertex : scene.altitude.size();
+        i + 1 < scene.tiles.size() ? scene.tiles[i + 1].first_vertex : scene.slot.size();
     const size_t vertices = end - scene.tiles[i].first_vertex;
     if (!surrounded) continue;
     EXPECT_EQ(vertices, ring) << c.ToText();
@@ -589,13 +602,14 @@ TEST(PanoramaCli, TileBordersShareTheirNormals) {
 }
 
 // attribute_vertices for the vertices a picture shows (strip by strip, as render_strips asks)
-// writes them with the same bits as for every vertex at once, and only them: the attributes are
-// a vertex's own, whichever vertices are asked for with it. `camera` 320 x 200 on `store`.
+// writes them with the same bits as for every vertex at once, and only them, each in a slot of its
+// own (as many slots as vertices shown): the attributes are a vertex's own, whichever vertices are
+// asked for with it. `camera` 320 x 200 on `store`.
 void expect_shown_attributes_are_every_vertexs(const std::string& store,
                                                const PinholeCamera& camera) {
   TerrainScene all = scene_of(store, camera, 1, true), shown = scene_of(store, camera, 1, true);
   attribute_vertices(all, nullptr);
-  std::vector<bool> seen(shown.altitude.size());
+  std::vector<bool> seen(shown.slot.size());
   for (int first = 0; first < 200; first += 70) {  // three strips
     const Fragments f = rasterize(shown.mesh, camera, 1.0, first, 70);
     attribute_vertices(shown, &f);
@@ -604,15 +618,22 @@ void expect_shown_attributes_are_every_vertexs(const std::string& store,
         for (size_t j = 0; j < 3; ++j) seen[shown.mesh.indices[3 * size_t(t) + j]] = true;
   }
   size_t count = 0;
+  std::vector<bool> slot_used(shown.altitude.size());
   for (size_t v = 0; v < seen.size(); ++v) {
-    EXPECT_EQ(shown.attributed[v], seen[v] ? 2 : 0) << v;
+    EXPECT_EQ(shown.slot[v] != TerrainScene::kNoSlot, seen[v]) << v;
     if (!seen[v]) continue;
     ++count;
-    EXPECT_EQ(std::memcmp(&shown.lonlat[2 * v], &all.lonlat[2 * v], 2 * sizeof(double)), 0) << v;
-    EXPECT_EQ(std::memcmp(&shown.plane[2 * v], &all.plane[2 * v], 2 * sizeof(double)), 0) << v;
-    EXPECT_EQ(std::memcmp(&shown.normals[3 * v], &all.normals[3 * v], 3 * sizeof(float)), 0) << v;
-    EXPECT_EQ(std::memcmp(&shown.altitude[v], &all.altitude[v], sizeof(float)), 0) << v;
+    const size_t s = shown.slot[v], a = all.slot[v];
+    ASSERT_LT(s, slot_used.size()) << v;
+    EXPECT_FALSE(slot_used[s]) << v;
+    slot_used[s] = true;
+    EXPECT_EQ(std::memcmp(&shown.lonlat[2 * s], &all.lonlat[2 * a], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.plane[2 * s], &all.plane[2 * a], 2 * sizeof(double)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.normals[3 * s], &all.normals[3 * a], 3 * sizeof(float)), 0) << v;
+    EXPECT_EQ(std::memcmp(&shown.altitude[s], &all.altitude[a], sizeof(float)), 0) << v;
   }
+  EXPECT_EQ(shown.altitude.size(), count);  // a slot for each vertex shown, no more
+  EXPECT_EQ(all.altitude.size(), seen.size());
   std::printf("%zu of %zu vertices shown\n", count, seen.size());
   EXPECT_GT(count, 1000u);
   EXPECT_LT(count, seen.size());
@@ -780,7 +801,7 @@ TEST(PanoramaCli, PatchesOutOfViewLeftOutChangeNoPixel) {
     const TerrainScene culled = hills_scene(camera, view.sample_pixels, true, view.exaggeration),
                        whole = hills_scene(camera, view.sample_pixels, false, view.exaggeration);
     auto vertices = [](const TerrainScene& s, size_t i) {
-      const size_t end = i + 1 < s.tiles.size() ? s.tiles[i + 1].first_vertex : s.altitude.size();
+      const size_t end = i + 1 < s.tiles.size() ? s.tiles[i + 1].first_vertex : s.slot.size();
       return end - s.tiles[i].first_vertex;
     };
     size_t fewer = 0;
