@@ -151,8 +151,9 @@ Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJo
   out.rgb = moved(wide.rgb, n);
   out.altitude = moved(wide.altitude, n);
   out.distance = moved(wide.distance, n);
-  out.lon = moved(wide.lon, n);
-  out.lat = moved(wide.lat, n);
+  out.origin = wide.origin;
+  out.lon_offset = moved(wide.lon_offset, n);
+  out.lat_offset = moved(wide.lat_offset, n);
   out.land_cover = moved(wide.land_cover, n);
   out.cast_shadow = moved(wide.cast_shadow, n);
   out.shading = moved(wide.shading, n);

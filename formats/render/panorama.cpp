@@ -246,8 +246,8 @@ void size_panorama(Panorama& p, int width, int first_row, int rows, const Panora
   p.width = width;
   p.height = rows;
   p.first_row = first_row;
-  for (auto* a : {&p.altitude, &p.shading}) resize_fresh(*a, n);
-  for (auto* a : {&p.distance, &p.lon, &p.lat}) resize_fresh(*a, n);
+  for (auto* a : {&p.distance, &p.lon_offset, &p.lat_offset, &p.altitude, &p.shading})
+    resize_fresh(*a, n);
   resize_fresh(p.land_cover, look.land_cover ? n : 0);
   resize_fresh(p.cast_shadow, look.shadow ? n : 0);
   resize_fresh(p.rgb, 3 * n);
@@ -262,6 +262,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
   // once below (fresh pages are not filled first). The surface's texel, NaN for none; written and
   // read on terrain pixels only (the sky's pages are never touched).
   const size_t offset = size_t(f.first_row - p.first_row) * size_t(w);
+  p.origin = {camera.spec().eye.lon, camera.spec().eye.lat};  // of the lon/lat offsets
   resize_fresh(texels, 3 * size_t(p.width) * size_t(p.height));
   float* const texel_of = &texels[3 * offset];
   const double az = look.sun_azimuth * kDegree, alt = look.sun_altitude * kDegree;
@@ -280,8 +281,8 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         int end = col + 1;
         while (end < w && f.triangle[i + size_t(end - col)] == Fragments::kSky) ++end;
         const auto run = size_t(end - col);
-        for (auto* a : {&p.distance, &p.lon, &p.lat}) std::fill_n(&(*a)[o], run, NAN);
-        for (auto* a : {&p.altitude, &p.shading, &p.land_cover, &p.cast_shadow})
+        for (auto* a : {&p.distance, &p.lon_offset, &p.lat_offset, &p.altitude, &p.shading,
+                        &p.land_cover, &p.cast_shadow})
           if (!a->empty()) std::fill_n(&(*a)[o], run, NAN);
         col = end - 1;
         continue;
@@ -301,11 +302,19 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
         return sum;
       };
       const SurfacePoint at = surface_point(scene, f, i);
-      p.lon[o] = at.lonlat.lon;
-      p.lat[o] = at.lonlat.lat;
+      // The short way round: both in [-180, 180], so one turn at most (std::remainder's value,
+      // exactly, without its cost a pixel).
+      double east = at.lonlat.lon - p.origin.lon;
+      if (east > 180)
+        east -= 360;
+      else if (east < -180)
+        east += 360;
+      p.lon_offset[o] = float(east);
+      p.lat_offset[o] = float(at.lonlat.lat - p.origin.lat);
       p.altitude[o] = float(interpolate(scene.altitude, a, 1, 0));
       const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
-      p.distance[o] = f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
+      p.distance[o] =
+          float(f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]));
       if (s.texture) sample_texel(s, grid, look, at, texel);
       if (std::isnan(texel[0])) untextured[size_t(row)] = 1;
       if (s.land_cover) {
@@ -381,7 +390,7 @@ void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
   // NaN limit makes every neighbour beyond, so the sky is masked out. Branch-free along
   // a row, its first and last columns apart.
   const double jump = look.silhouette_jump;
-  const std::vector<double> none(size_t(w), -INFINITY);
+  const std::vector<float> none(size_t(w), -INFINITY);
   auto silhouette = [jump](double d, double left, double right, double up, double down) {
     const double limit = d * jump;
     const bool beyond = !(left <= limit) | !(right <= limit) | !(up <= limit) | !(down <= limit);
@@ -389,9 +398,9 @@ void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
   };
   tbb::parallel_for(0, h, [&](int row) {
     const size_t start = size_t(row) * size_t(w);
-    const double* d = &p.distance[start];
-    const double* up = row > 0 ? d - w : none.data();
-    const double* down = row + 1 < h ? d + w : none.data();
+    const float* d = &p.distance[start];
+    const float* up = row > 0 ? d - w : none.data();
+    const float* down = row + 1 < h ? d + w : none.data();
     uint8_t* s = &p.silhouette[start];
     auto side = [&](int col) {
       s[col] = silhouette(d[col], col > 0 ? d[col - 1] : -INFINITY,

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -56,16 +57,26 @@ struct Panorama {
   int width = 0, height = 0;
   int first_row = 0;        // of the picture: the panorama may be a strip of it
   FreshArray<uint8_t> rgb;  // 3 per pixel, row-major
-  // Per pixel, NaN on the sky: metres from the eye, degrees (float64: the haze and silhouettes
-  // are computed from the distance, lon/lat to a millimetre); metres of the DEM's datum and
-  // class (float32: a tenth of a millimetre at 2 km, the DEM's own float32; fewer fresh pages).
-  FreshArray<double> distance, lon, lat;
+  // Per pixel, NaN on the sky, float32 (fewer fresh pages: a picture's guides are most of the
+  // memory it first touches): metres from the eye; lon/lat as degrees from `origin` (the eye's;
+  // the longitude's the short way round), lonlat() the pixel's own; both to about 1e-7 of the
+  // distance from the eye, a centimetre at 100 km. Metres of the DEM's datum and class (a tenth
+  // of a millimetre at 2 km, the DEM's own float32).
+  LonLat origin{0, 0};
+  FreshArray<float> distance, lon_offset, lat_offset;
   FreshArray<float> altitude, land_cover;
   FreshArray<float> cast_shadow;  // with PanoramaLook::shadow: 0 (sunlit) to 1 (in shadow)
   // The factor the surface's colour was shaded by: hillshade times sunlit share, 0.3 to 1 (the
   // transfer in the picture blends its colours with it).
   FreshArray<float> shading;
   FreshArray<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
+
+  // Pixel i's lon/lat in degrees (lon in [-180, 180]; NaN on the sky).
+  LonLat lonlat(size_t i) const {
+    const double lon = origin.lon + double(lon_offset[i]);
+    return {std::abs(lon) > 180 ? std::remainder(lon, 360.0) : lon,
+            origin.lat + double(lat_offset[i])};
+  }
 };
 
 using BandStretch = std::array<StretchRange, 3>;  // per band of the texture

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <functional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
@@ -63,17 +62,16 @@ ImageFormat panorama_picture_format(const std::string& out) {
 
 namespace {
 
-// A guide's values, float64 or float32 (render/panorama.h), or none (the file's bands named).
+// A guide's values (float32, render/panorama.h), or none (the file's bands named); lon and lat
+// are made from their offsets (Panorama::lonlat) as they are written.
 struct GuideBand {
   const char* name;
-  const void* values = nullptr;
-  GDALDataType type = GDT_Float64;
+  const float* values = nullptr;
+  int degrees = -1;  // 0 lon, 1 lat: the pixels' own, float64
 };
 
-template <typename T>
-GuideBand guide_band(const char* name, const FreshArray<T>* values) {
-  return {name, values ? values->data() : nullptr,
-          std::is_same_v<T, float> ? GDT_Float32 : GDT_Float64};
+GuideBand guide_band(const char* name, const FreshArray<float>* values) {
+  return {name, values ? values->data() : nullptr};
 }
 
 // The guides written, in band order: the four always there, those computed, then the shading
@@ -81,8 +79,8 @@ GuideBand guide_band(const char* name, const FreshArray<T>* values) {
 std::vector<GuideBand> guide_bands(const Panorama* p, bool land_cover, bool cast_shadow) {
   std::vector<GuideBand> bands = {guide_band("altitude", p ? &p->altitude : nullptr),
                                   guide_band("distance", p ? &p->distance : nullptr),
-                                  guide_band("lon", p ? &p->lon : nullptr),
-                                  guide_band("lat", p ? &p->lat : nullptr)};
+                                  {"lon", nullptr, 0},
+                                  {"lat", nullptr, 1}};
   if (land_cover) bands.push_back(guide_band("land_cover", p ? &p->land_cover : nullptr));
   if (cast_shadow) bands.push_back(guide_band("cast_shadow", p ? &p->cast_shadow : nullptr));
   bands.push_back(guide_band("shading", p ? &p->shading : nullptr));
@@ -141,12 +139,29 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
   const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
   f.guides_file.write([&] {
     for (const GuideBand& band : bands) {
-      const auto* values = static_cast<const char*>(band.values) +
-                           offset * size_t(GDALGetDataTypeSizeBytes(band.type));
-      if (f.guides->GetRasterBand(int(&band - bands.data()) + 1)
-              ->RasterIO(GF_Write, 0, first, f.width, last - first, const_cast<char*>(values),
-                         f.width, last - first, band.type, 0, 0) != CE_None)
-        gdal_error("cannot write " + f.guides_file.temp_path());
+      GDALRasterBand* out = f.guides->GetRasterBand(int(&band - bands.data()) + 1);
+      auto write_rows = [&](int row, int rows, void* values, GDALDataType type) {
+        if (out->RasterIO(GF_Write, 0, row, f.width, rows, values, f.width, rows, type, 0, 0) !=
+            CE_None)
+          gdal_error("cannot write " + f.guides_file.temp_path());
+      };
+      if (band.values) {
+        write_rows(first, last - first, const_cast<float*>(band.values + offset), GDT_Float32);
+        continue;
+      }
+      // lon or lat, a block of rows at a time (a strip's float64 degrees would be twice its
+      // offsets' memory).
+      std::vector<double> degrees;
+      for (int row = first; row < last; row += kGuideBlockRows) {
+        const int rows = std::min(kGuideBlockRows, last - row);
+        degrees.resize(size_t(rows) * size_t(f.width));
+        const size_t at = size_t(row - strip.first_row) * size_t(f.width);
+        for (size_t i = 0; i < degrees.size(); ++i) {
+          const LonLat p = strip.lonlat(at + i);
+          degrees[i] = band.degrees == 0 ? p.lon : p.lat;
+        }
+        write_rows(row, rows, degrees.data(), GDT_Float64);
+      }
     }
   });
 }

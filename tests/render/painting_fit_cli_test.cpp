@@ -241,7 +241,7 @@ TEST(PaintingFitCli, AFarReachingWarpIsCapped) {
   const test::ProjEnu enu(kEyeLon, kEyeLat, kEyeHeight);
   auto drawn_at = [&](int col, int row) {
     const size_t i = size_t(row) * size_t(p.width) + size_t(col);
-    const auto px = kCamera.project(enu({p.lon[i], p.lat[i]}, p.altitude[i]));
+    const auto px = kCamera.project(enu(p.lonlat(i), p.altitude[i]));
     return std::array<double, 2>{px[0] + 0.5, px[1] + 0.5};
   };
   int on_ground = 0;

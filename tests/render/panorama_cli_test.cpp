@@ -933,15 +933,15 @@ TEST(PanoramaCli, FragmentStripsGiveTheWholePicture) {
     EXPECT_TRUE(same(strips.rgb, whole.rgb)) << rows;
     EXPECT_TRUE(same(strips.silhouette, whole.silhouette)) << rows;
     EXPECT_TRUE(same(strips.distance, whole.distance)) << rows;
-    EXPECT_TRUE(same(strips.lon, whole.lon)) << rows;
-    EXPECT_TRUE(same(strips.lat, whole.lat)) << rows;
+    EXPECT_TRUE(same(strips.lon_offset, whole.lon_offset)) << rows;
+    EXPECT_TRUE(same(strips.lat_offset, whole.lat_offset)) << rows;
     EXPECT_TRUE(same(strips.altitude, whole.altitude)) << rows;
     EXPECT_TRUE(same(strips.cast_shadow, whole.cast_shadow)) << rows;
     EXPECT_TRUE(same(strips.shading, whole.shading)) << rows;
   }
   // A textured, shadowed picture with terrain and sky.
   EXPECT_GT(std::count_if(whole.distance.begin(), whole.distance.end(),
-                          [](double d) { return std::isnan(d); }),
+                          [](float d) { return std::isnan(d); }),
             0);
   EXPECT_GT(std::count_if(whole.cast_shadow.begin(), whole.cast_shadow.end(),
                           [](float s) { return s > 0.5f; }),
