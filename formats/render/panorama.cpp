@@ -35,11 +35,14 @@ Rgb mix(const Rgb& a, const Rgb& b, double t) {
 
 // Samplers of one thread (a LayerSampler is not shared between threads; its tiles are).
 struct Samplers {
-  std::optional<LayerSampler> texture, land_cover;
+  // The texture at its level and at each coarser level of its overviews: textures[j] at the
+  // texture's level - j (none without a texture).
+  std::vector<LayerSampler> textures;
+  std::optional<LayerSampler> land_cover;
   std::optional<EdgeTexels> edge;  // the texture past its edge (kTextureReach)
   // Each row a run of its own (LayerSampler::start_run): its values whatever rows came before.
   void start_row() {
-    if (texture) texture->start_run();
+    for (LayerSampler& t : textures) t.start_run();
     if (land_cover) land_cover->start_run();
   }
 };
@@ -83,44 +86,88 @@ struct SurfacePoint {
   return s;
 }
 
-// `layer`'s value at `p` through `sampler`: from the plane point (no projection) where it is
-// known, else from the lon/lat. False where the layer has no tile.
-bool sample_at(LayerSampler& sampler, const Grid& grid, const LayerInfo& layer,
-               const SurfacePoint& p, float* out) {
+// The sampler's layer's value at `p`: from the plane point (no projection) where it is known,
+// else from the lon/lat. False where the layer has no tile.
+bool sample_at(LayerSampler& sampler, const Grid& grid, const SurfacePoint& p, float* out) {
   if (!std::isnan(p.plane.x)) return sampler.sample(p.plane, out);
-  return sampler.sample(p.lonlat, grid.cell_from_point(p.lonlat, layer.level), out);
+  return sampler.sample(p.lonlat, grid.cell_from_point(p.lonlat, sampler.level()), out);
 }
 
-// The texture's texel at `p` (3 bands; NaN where it has none).
+// Metres from the eye to what pixel i of `f` (at `col`, `row` of the strip) sees.
+double pixel_distance(const PinholeCamera& camera, const Fragments& f, size_t i, int col, int row) {
+  const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
+  return f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
+}
+
+// A pixel's footprint across, in texels of the texture's level, per metre of distance: the
+// distance times this is the footprint, whose log2 picks the texture's levels (sample_texel).
+double texel_footprint_scale(const Grid& grid, const PanoramaLook& look,
+                             const PinholeCamera& camera) {
+  return 1 /
+         (camera.focal() * grid.level_info(look.texture->level, look.texture->tile_size).pixel_m);
+}
+
+// The texture's texel at `p` (3 bands; NaN where it has none), at the level the distance needs:
+// `footprint` is the pixel's width on the ground in texels of the texture's level (its distance
+// over the focal length; across the view, not along it, so that ground seen at a grazing angle is
+// not blurred). Up to 1 the texture's own level; beyond, the two levels whose texels are about
+// the footprint, blended by where log2(footprint) lies between them (trilinear, as a GPU's
+// mipmaps; the overviews are their children's means), down to the coarsest overview. A level
+// without the texel there leaves the other's.
 void sample_texel(Samplers& s, const Grid& grid, const PanoramaLook& look, const SurfacePoint& p,
-                  float* out) {
-  float texel[4] = {NAN, NAN, NAN, NAN};
-  if (sample_at(*s.texture, grid, *look.texture, p, texel))
-    for (int k = 0; k < 3; ++k) out[k] = texel[look.texture->channels < 3 ? 0 : k];
+                  double footprint, float* out) {
+  auto at_level = [&](size_t j, float* bands) {
+    float texel[4] = {NAN, NAN, NAN, NAN};
+    if (sample_at(s.textures[j], grid, p, texel))
+      for (int k = 0; k < 3; ++k) bands[k] = texel[look.texture->channels < 3 ? 0 : k];
+  };
+  const size_t coarsest = s.textures.size() - 1;
+  if (!(footprint > 1) || coarsest == 0) return at_level(0, out);
+  const double lod = std::min(std::log2(footprint), double(coarsest));
+  const auto j = size_t(lod);
+  const double t = lod - double(j);
+  float fine[3] = {NAN, NAN, NAN}, coarse[3] = {NAN, NAN, NAN};
+  at_level(j, fine);
+  if (j < coarsest && t > 0) at_level(j + 1, coarse);
+  for (int k = 0; k < 3; ++k)
+    out[k] = std::isnan(coarse[k]) ? fine[k]
+             : std::isnan(fine[k]) ? coarse[k]
+                                   : float((1 - t) * fine[k] + t * coarse[k]);
 }
 
 }  // namespace
 
+// The texture's tiles at its level and at each coarser level its overviews hold without a gap
+// (textures[j] at the level - j), read once for all threads.
+std::vector<std::shared_ptr<LayerSampler::Tiles>> texture_levels(const Store& store,
+                                                                 const Grid& grid,
+                                                                 const PanoramaLook& look) {
+  std::vector<std::shared_ptr<LayerSampler::Tiles>> levels;
+  if (!look.texture) return levels;
+  const std::vector<int> held = store.stats(look.texture->name).levels;  // ascending
+  for (int level = look.texture->level;
+       level == look.texture->level || std::binary_search(held.begin(), held.end(), level); --level)
+    levels.push_back(LayerSampler::shared_tiles(store, grid, *look.texture, level));
+  return levels;
+}
+
 struct PanoramaSamplers::Threads {
   Threads(const Store& store, const Grid& grid, const PanoramaLook& look)
-      : texture(look.texture
-                    ? LayerSampler::shared_tiles(store, grid, *look.texture, look.texture->level)
-                    : nullptr),
+      : textures(texture_levels(store, grid, look)),
         land_cover(look.land_cover ? LayerSampler::shared_tiles(store, grid, *look.land_cover,
                                                                 look.land_cover->level)
                                    : nullptr),
         samplers([this, &grid, look] {
           Samplers s;
-          if (look.texture) {
-            s.texture.emplace(texture, true);
-            s.edge.emplace(texture, grid, *look.texture, kTextureReach);
-          }
+          for (const auto& tiles : textures) s.textures.emplace_back(tiles, true);
+          if (look.texture) s.edge.emplace(textures.front(), grid, *look.texture, kTextureReach);
           if (look.land_cover) s.land_cover.emplace(land_cover, false);
           return s;
         }) {}
 
-  // The texture's and land cover's tiles and halos, read once for all threads.
-  std::shared_ptr<LayerSampler::Tiles> texture, land_cover;
+  // The texture's (at each level) and land cover's tiles and halos, read once for all threads.
+  std::vector<std::shared_ptr<LayerSampler::Tiles>> textures;
+  std::shared_ptr<LayerSampler::Tiles> land_cover;
   tbb::enumerable_thread_specific<Samplers> samplers;
 };
 
@@ -131,8 +178,8 @@ PanoramaSamplers::~PanoramaSamplers() = default;
 
 void PanoramaSamplers::forget_unused() {
   Threads& t = *threads_;
-  for (auto* tiles : {t.texture.get(), t.land_cover.get()})
-    if (tiles) LayerSampler::forget_unused(*tiles);
+  for (const auto& tiles : t.textures) LayerSampler::forget_unused(*tiles);
+  if (t.land_cover) LayerSampler::forget_unused(*t.land_cover);
   for (Samplers& s : t.samplers) {
     s.start_row();
     if (s.edge) s.edge->forget_unused();
@@ -172,9 +219,11 @@ void append_stretch_texels(const float* found, const Fragments& f, int step,
 }  // namespace
 
 void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fragments& f,
-                           const PanoramaLook& look, PanoramaSamplers& samplers, int step,
-                           StretchTexels& texels, FreshArray<float>& found) {
+                           const PinholeCamera& camera, const PanoramaLook& look,
+                           PanoramaSamplers& samplers, int step, StretchTexels& texels,
+                           FreshArray<float>& found) {
   if (!look.texture || !look.stretch) return;
+  const double footprint = texel_footprint_scale(grid, look, camera);
   // Written on the terrain pixels of the stretch grid only, the only ones read: the other rows'
   // pages are never touched.
   resize_fresh(found, 3 * size_t(f.width) * size_t(f.height));
@@ -186,7 +235,8 @@ void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fr
       const size_t i = size_t(row) * size_t(f.width) + size_t(col);
       if (f.triangle[i] == Fragments::kSky) continue;
       std::fill_n(&found[3 * i], 3, NAN);
-      sample_texel(s, grid, look, surface_point(scene, f, i), &found[3 * i]);
+      sample_texel(s, grid, look, surface_point(scene, f, i),
+                   pixel_distance(camera, f, i, col, row) * footprint, &found[3 * i]);
     }
   });
   append_stretch_texels(found.data(), f, step, texels);
@@ -269,6 +319,7 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
   const Vec3d sun{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
   auto& threads = samplers.threads_->samplers;
   std::vector<uint8_t> untextured(size_t(h), 0);  // rows with a terrain pixel without a texel
+  const double footprint = look.texture ? texel_footprint_scale(grid, look, camera) : 0;
 
   // What each pixel sees: guides (its shading among them) and the surface's texel.
   tbb::parallel_for(0, h, [&](int row) {
@@ -312,15 +363,13 @@ void shade_guides(const Grid& grid, const TerrainScene& scene, const Fragments& 
       p.lon_offset[o] = float(east);
       p.lat_offset[o] = float(at.lonlat.lat - p.origin.lat);
       p.altitude[o] = float(interpolate(scene.altitude, a, 1, 0));
-      const Vec3d ray = camera.ray(col + 0.5, f.first_row + row + 0.5);
-      p.distance[o] =
-          float(f.depth[i] * std::sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]));
-      if (s.texture) sample_texel(s, grid, look, at, texel);
+      const double distance = pixel_distance(camera, f, i, col, row);
+      p.distance[o] = float(distance);
+      if (look.texture) sample_texel(s, grid, look, at, distance * footprint, texel);
       if (std::isnan(texel[0])) untextured[size_t(row)] = 1;
       if (s.land_cover) {
         float label = NAN;
-        p.land_cover[o] =
-            sample_at(*s.land_cover, grid, *look.land_cover, at, &label) ? label : NAN;
+        p.land_cover[o] = sample_at(*s.land_cover, grid, at, &label) ? label : NAN;
       }
       const Vec3d normal{interpolate(scene.normals, a, 3, 0), interpolate(scene.normals, a, 3, 1),
                          interpolate(scene.normals, a, 3, 2)};

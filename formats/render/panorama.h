@@ -1,7 +1,9 @@
 // A panorama and its guides from what each pixel sees (render/rasterizer.h) of a terrain scene
 // (render/terrain_scene.h): the surface's colour (an imagery layer sampled bilinearly where the
 // pixel sees it: at the point of the grid's plane interpolated in its triangle, or at its lon/lat
-// where a corner is off its tile's face; stretched for display; where it has no texel, the nearest
+// where a corner is off its tile's face; at the level the distance needs, trilinearly between the
+// overviews whose texels are about the pixel's width on the ground where a pixel spans more than
+// a texel; stretched for display; where it has no texel, the nearest
 // texel's within a reach (render/edge_texels.h), the stretch taken over the imagery's own texels
 // only; beyond, the middle of the display range, grey 128; without imagery, an earth colour),
 // shaded by the DEM's normals under a sun, faded into the haze with distance (aerial perspective: a
@@ -115,8 +117,8 @@ class PanoramaSamplers {
   struct Threads;
   std::unique_ptr<Threads> threads_;
   friend void gather_stretch_texels(const Grid&, const TerrainScene&, const Fragments&,
-                                    const PanoramaLook&, PanoramaSamplers&, int, StretchTexels&,
-                                    FreshArray<float>&);
+                                    const PinholeCamera&, const PanoramaLook&, PanoramaSamplers&,
+                                    int, StretchTexels&, FreshArray<float>&);
   friend void shade_guides(const Grid&, const TerrainScene&, const Fragments&, const PinholeCamera&,
                            const PanoramaLook&, PanoramaSamplers&, Panorama&, FreshArray<float>&,
                            TexelRows*);
@@ -127,8 +129,9 @@ class PanoramaSamplers {
 // `scratch`: resized to 3 floats a pixel of `f`, written and read on those pixels only (its memory
 // reused by the strips of a picture).
 void gather_stretch_texels(const Grid& grid, const TerrainScene& scene, const Fragments& f,
-                           const PanoramaLook& look, PanoramaSamplers& samplers, int step,
-                           StretchTexels& texels, FreshArray<float>& scratch);
+                           const PinholeCamera& camera, const PanoramaLook& look,
+                           PanoramaSamplers& samplers, int step, StretchTexels& texels,
+                           FreshArray<float>& scratch);
 
 // The stretch of `texels`: the 2 and 98 % quantiles per band, or the values as stored without a
 // texture or with look.stretch false.

@@ -237,7 +237,7 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
     const int step = stretch_step(w, h);
     stretch_texels.reserve(3 * size_t((w + step - 1) / step) * size_t((h + step - 1) / step));
     for (int first = 0; first < h; first += strip_rows) {
-      gather_stretch_texels(grid, scene, draw(first, strip_rows), look, samplers, step,
+      gather_stretch_texels(grid, scene, draw(first, strip_rows), camera, look, samplers, step,
                             stretch_texels, texels);
       samplers.forget_unused();
     }
