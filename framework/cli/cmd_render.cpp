@@ -69,8 +69,9 @@ void add_render_command(CLI::App& app) {
       ->required();
   cmd->add_option("--dem", o->job.dem, "DEM layer (one-channel heights in metres)")->required();
   cmd->add_option("--texture", o->job.texture,
-                  "Imagery layer draped on the terrain (uint8, 1, 3 or 4 channels; default: a "
-                  "plain earth colour)");
+                  "Imagery layer draped on the terrain (uint8, 1, 3 or 4 channels; read from its "
+                  "overviews where a pixel spans more than a texel; default: a plain earth "
+                  "colour)");
   cmd->add_flag(
       "--no-stretch", [o](int64_t) { o->job.stretch = false; },
       "The texture's values as stored (default: stretched like `export png`, 2-98 % per band of "
