@@ -4,7 +4,8 @@
 // hills up to ~700 m on EGM96 heights, so PROJ's geoid is read per vertex as for SRTM) and an
 // RGB texture of the same cells, with their overviews, in a store file made once; seen from 3 km
 // above the DEM's edge towards its centre, into 2000 x 2000 (4 MP) and 8000 x 5000 pictures, on 1
-// and 2 threads. BM_PanoramaShadeNoDataCollar: the colour and guides with a texture whose tiles
+// and 2 threads; BM_PanoramaAntialias the 4 MP picture with 2 x 2 and 3 x 3 samples a pixel for its
+// colour. BM_PanoramaShadeNoDataCollar: the colour and guides with a texture whose tiles
 // hold no data in a collar 320 texels wide round the DEM (render/edge_texels.h's worst case: the
 // terrain past the data, inside tiles, far beyond the reach).
 #include <benchmark/benchmark.h>
@@ -118,6 +119,21 @@ BENCHMARK(BM_Panorama)
     ->Args({2000, 2000, 2})
     ->Args({8000, 5000, 1})
     ->Args({8000, 5000, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The same with the colour supersampled (render/panorama_supersample.h): K x K samples a pixel.
+void BM_PanoramaAntialias(benchmark::State& state) {
+  const auto store = Store::open(panorama_store().path, Store::Mode::ReadOnly);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(2)));
+  PanoramaJob j = job(int(state.range(0)), int(state.range(1)));
+  j.antialias = int(state.range(3));
+  for (auto _ : state) benchmark::DoNotOptimize(render_panorama(*store, default_grid(), j));
+  state.counters["Mpx"] = double(state.range(0) * state.range(1)) / 1e6;
+}
+BENCHMARK(BM_PanoramaAntialias)
+    ->Args({2000, 2000, 2, 2})
+    ->Args({2000, 2000, 2, 3})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -464,7 +464,7 @@ void colour_panorama(const PinholeCamera& camera, const PanoramaLook& look,
 
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
-                        const DrawRows& draw) {
+                        const DrawRows& draw, BandStretch* stretch) {
   const int w = camera.spec().width, h = camera.spec().height;
   Panorama p;
   size_panorama(p, w, 0, h, look);
@@ -476,8 +476,9 @@ Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene
                  p, texels, &rows);
     samplers.forget_unused();
   }
-  colour_panorama(camera, look, picture_stretch(texels, rows, w, look, stretch_step(w, h)), texels,
-                  p);
+  const BandStretch picture = picture_stretch(texels, rows, w, look, stretch_step(w, h));
+  colour_panorama(camera, look, picture, texels, p);
+  if (stretch) *stretch = picture;
   return p;
 }
 

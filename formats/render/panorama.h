@@ -51,6 +51,9 @@ struct PanoramaLook {
   // Per vertex of the scene, 1 in the terrain's cast shadow (render/terrain_shadow.h), or none:
   // a shadowed surface gets the hillshade's ambient share only, as a slope facing away does.
   const std::vector<uint8_t>* shadow = nullptr;
+  // Samples per pixel side: above 1, each pixel's colour the mean of K x K samples over it
+  // (render/panorama_supersample.h), its guides its centre's.
+  int antialias = 1;
 };
 
 // Its arrays are FreshArrays (render/fresh_array.h): shade_panorama writes every pixel of each it
@@ -164,9 +167,10 @@ using DrawRows = std::function<const Fragments&(int first, int rows)>;
 // The whole picture of `camera`, its fragments drawn by `draw` in strips of `strip_rows` rows (one
 // strip's fragments at a time), its guides and texels written strip by strip into the whole
 // picture's, then its display stretch taken over the whole picture's texels where they are
-// (TexelRows) and its colour and silhouettes made: the same bits for any strips.
+// (TexelRows) and its colour and silhouettes made: the same bits for any strips. That stretch
+// into `stretch` when given. look.antialias is not applied here (render/panorama_strips.h).
 Panorama shade_panorama(const Store& store, const Grid& grid, const TerrainScene& scene,
                         const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
-                        const DrawRows& draw);
+                        const DrawRows& draw, BandStretch* stretch = nullptr);
 
 }  // namespace maquette

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@
 #include "core/sibling_path.h"
 #include "gdal/image_file.h"
 #include "geotiff/gdal_util.h"
+#include "render/panorama_supersample.h"
+#include "render/strip_drawer.h"
 
 namespace maquette {
 
@@ -196,25 +199,6 @@ namespace {
 // a multiple of the rasterizer's bands of 8 rows.
 int fragment_rows(int width) { return std::max(8, int(kFragmentPixels / width) / 8 * 8); }
 
-// The fragments of a picture's strips drawn one after the other into one strip's arrays, each
-// strip's vertices given their attributes (render/terrain_scene.h) before it is shaded, from one
-// plan of the mesh (render/rasterizer.h RasterPlan).
-class StripDrawer {
- public:
-  StripDrawer(TerrainScene& scene, const PinholeCamera& camera)
-      : scene_(scene), plan_(scene.mesh, camera) {}
-  const Fragments& operator()(int first, int rows) {
-    rasterize(plan_, first, rows, fragments_);
-    attribute_vertices(scene_, &fragments_);
-    return fragments_;
-  }
-
- private:
-  TerrainScene& scene_;
-  const RasterPlan plan_;
-  Fragments fragments_;
-};
-
 // Rasterizes and shades the panorama of `scene` in strips of `strip_rows` rows into `writer`
 // (render_strips). One strip's arrays are drawn into strip after strip, each sized for the largest
 // strip at its first use (render/fresh_array.h resize_fresh): their pages are given once a picture,
@@ -229,6 +213,8 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
   }
   StripDrawer draw(scene, camera);
   PanoramaSamplers samplers(store, grid, look);
+  std::optional<Supersampler> samples;
+  if (look.antialias > 1) samples.emplace(store, grid, scene, camera, look);
   FreshArray<float> texels;
   StretchTexels stretch_texels;
   if (look.texture && look.stretch) {
@@ -255,6 +241,7 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                  nullptr);
     samplers.forget_unused();
     colour_panorama(camera, look, stretch, texels, strip);
+    if (samples) samples->colour(stretch, first, last, strip);
     writer.write(strip, first, last);
   }
 }
@@ -264,8 +251,13 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
 Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
                        const PinholeCamera& camera, const PanoramaLook& look, int rows) {
   StripDrawer draw(scene, camera);
-  return shade_panorama(store, grid, scene, camera, look,
-                        rows > 0 ? rows : fragment_rows(camera.spec().width), std::ref(draw));
+  BandStretch stretch;
+  Panorama p = shade_panorama(store, grid, scene, camera, look,
+                              rows > 0 ? rows : fragment_rows(camera.spec().width), std::ref(draw),
+                              &stretch);
+  if (look.antialias > 1)
+    Supersampler(store, grid, scene, camera, look).colour(stretch, 0, p.height, p);
+  return p;
 }
 
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,

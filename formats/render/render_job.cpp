@@ -3,7 +3,9 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -97,6 +99,13 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   if (!(job.haze_distance > 0))
     throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
   check_bend(job.bend);
+  if (job.antialias < 1 || job.antialias > 8)
+    throw Error("--antialias " + std::to_string(job.antialias) +
+                " must be 1 to 8 (samples per pixel side)");
+  if (int64_t(std::max(job.camera.width, job.camera.height)) * job.antialias > 65536)
+    throw Error("--antialias " + std::to_string(job.antialias) + " on a picture of " +
+                std::to_string(job.camera.width) + " x " + std::to_string(job.camera.height) +
+                " pixels: its samples would span more than 65536 pixels; lower it");
   if (job.shadows && !(job.sun_altitude > 0 && job.sun_altitude < 90))
     throw Error("--sun altitude " + std::to_string(job.sun_altitude) +
                 " must be in (0, 90) degrees for --shadows");
@@ -153,6 +162,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   look.sun_azimuth = job.sun_azimuth;
   look.sun_altitude = job.sun_altitude;
   look.shadow = job.shadows ? &prepared->shadow : nullptr;
+  look.antialias = job.antialias;
   return prepared;
 }
 

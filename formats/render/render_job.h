@@ -32,7 +32,10 @@ struct PanoramaJob {
   double haze_distance = 60000;
   double sun_azimuth = 315, sun_altitude = 45;
   bool shadows = false;  // the terrain's cast shadows (render/terrain_shadow.h) under that sun
-  int strip_rows = 0;    // render_panorama_files: rows per strip (0: default_strip_rows)
+  // Samples per pixel side for the colour, 1 to 8 (render/panorama_supersample.h); 1: each
+  // pixel's centre.
+  int antialias = 1;
+  int strip_rows = 0;  // render_panorama_files: rows per strip (0: default_strip_rows)
   // render_panorama: rows of a strip of fragments (0: about 2 M pixels; draw_panorama); the same
   // picture for any.
   int fragment_rows = 0;
@@ -48,7 +51,8 @@ LayerInfo dem_layer(const Store& store, const std::string& name);
 // --above-ground where the DEM has no data), a field of view, pitch or size out of range
 // (render/camera.h), a --camera or --look-at not a finite lon, a lat within +-90 and a finite
 // height, a --sun not finite, a sun altitude outside (0, 90) with --shadows, no tile of the DEM in
-// the view (render/terrain_scene.h build_terrain_scene).
+// the view (render/terrain_scene.h build_terrain_scene), an --antialias outside 1 to 8 or whose
+// samples would make a picture over 65536 pixels wide or high.
 Panorama render_panorama(const Store& store, const Grid& grid, PanoramaJob job);
 
 // The same written to OUT and its guides (render/panorama_strips.h), drawn in strips of

@@ -33,9 +33,10 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"glb", {"texture", "stretch", "draco", "*cells", "content", "dem"}},
         {"drc", {"*cells"}},
         {"panorama",
-         {"*dem", "texture", "stretch", "land_cover", "*camera", "above_ground", "heading", "pitch",
-          "look_at", "fov", "size", "exaggeration", "sample_pixels", "bend_radius", "bend_start",
-          "haze_distance", "sun", "shadows", "strip_rows"}}};
+         {"*dem",          "texture",      "stretch",       "land_cover",  "*camera",
+          "above_ground",  "heading",      "pitch",         "look_at",     "fov",
+          "size",          "exaggeration", "sample_pixels", "bend_radius", "bend_start",
+          "haze_distance", "sun",          "shadows",       "antialias",   "strip_rows"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
       for (const std::string& option : terrain)
         if (!(f == std::string("glb") && option == "*dem")) o[f].push_back(option);
@@ -109,6 +110,11 @@ OperatorSpec export_spec() {
         {"haze_distance", typed("number", "panorama: metres where haze hides 63 %")},
         {"sun", array_schema("number", "panorama: hillshading's sun, AZIMUTH ALTITUDE")},
         {"shadows", typed("boolean", "panorama: the terrain's cast shadows under the sun")},
+        {"antialias",
+         {{"type", "integer"},
+          {"minimum", 1},
+          {"maximum", 8},
+          {"description", "panorama: samples per pixel side for the colour"}}},
         {"strip_rows", {{"type", "integer"}, {"minimum", 0}}}}}};
   return s;
 }
@@ -205,6 +211,7 @@ PanoramaJob panorama_of(const json& p) {
   read_param(p, "haze_distance", job.haze_distance);
   read_param(p, "strip_rows", job.strip_rows);
   read_param(p, "shadows", job.shadows);
+  read_param(p, "antialias", job.antialias);
   if (p.contains("sun")) {
     job.sun_azimuth = p.at("sun")[0].get<double>();
     job.sun_altitude = p.at("sun")[1].get<double>();

@@ -325,7 +325,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const std::string options =
       "--look-at 10.15 45.15 700 --fov 40 --size 240 150 --exaggeration 1.5 --bend-radius 40000 "
       "--bend-start 2000 --haze-distance 30000 --sun 200 30 --shadows --land-cover lc "
-      "--no-stretch";
+      "--no-stretch --antialias 2";
   ASSERT_EQ(run_maquette(f.render(f.dir + "/cmd.png", options)).exit_code, 0);
   auto pipeline = [&](const std::string& params) {
     std::ofstream(f.dir + "/pipeline.json")
@@ -338,7 +338,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const auto r = pipeline(
       R"("look_at": [10.15, 45.15, 700], "fov": 40, "size": [240, 150], "exaggeration": 1.5,
          "bend_radius": 40000, "bend_start": 2000, "haze_distance": 30000, "sun": [200, 30],
-         "shadows": true, "land_cover": "lc", "stretch": false)");
+         "shadows": true, "land_cover": "lc", "stretch": false, "antialias": 2)");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(f.dir + "/step/pano.png"), slurp(f.dir + "/cmd.png"));
   EXPECT_EQ(slurp(f.dir + "/step/pano-guides.tif"), slurp(f.dir + "/cmd-guides.tif"));
@@ -355,6 +355,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("layer": "dem")", "params.layer: not an option of format panorama");
   expect_error(R"("fov": 175)", "camera fov 175");
   expect_error(R"("bend_start": 2000)", "params.bend_start is given without params.bend_radius");
+  expect_error(R"("antialias": 9)", "antialias");
 }
 
 // A new store in `dir` holding steep hills (layer dem, 800 m high, 700 m to 1 km apart) from 10 E
@@ -902,6 +903,17 @@ TEST(PanoramaCli, StripsGiveTheWholePicture) {
   }
   // The picture is textured and stretched: its colours are not all the plain earth's.
   EXPECT_GT(whole.size(), 20000u);
+
+  // Anti-aliased: the same in strips and threads; only the colours differ from one sample's.
+  render("whole3", "--antialias 3");
+  const std::string smooth = slurp(dir + "/whole3.png");
+  EXPECT_NE(smooth, whole);
+  EXPECT_EQ(slurp(dir + "/whole3-silhouettes.png"), slurp(dir + "/whole-silhouettes.png"));
+  expect_same_guides(dir + "/whole3-guides.tif", dir + "/whole-guides.tif", "antialias 3");
+  for (const char* options : {"--strip-rows 13 -t 1", "--strip-rows 64 -t 2", "-t 1"}) {
+    render("strips3", std::string("--antialias 3 ") + options);
+    EXPECT_EQ(slurp(dir + "/strips3.png"), smooth) << options;
+  }
 }
 
 // The picture in memory (render_panorama) drawn in strips of fragments of 8, 13 and 64 rows is
@@ -970,6 +982,11 @@ TEST(PanoramaCli, BadInputIsNamed) {
   expect_error(f.render(out, "--bend-radius -300"), "--bend-radius -300");
   expect_error(f.render(out, "--sample-pixels -1"), "--sample-pixels -1");
   expect_error(f.render(out, "--strip-rows -2"), "--strip-rows -2");
+  expect_error(f.render(out, "--antialias 0"), "--antialias 0 must be 1 to 8");
+  expect_error(f.render(out, "--antialias 9"), "--antialias 9 must be 1 to 8");
+  expect_error(f.render(out, "--size 9000 100 --antialias 8"),
+               "--antialias 8 on a picture of 9000 x 100 pixels: its samples would span more "
+               "than 65536 pixels");
   expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
   expect_error(f.render(out, "--bend-start 5000"), "--bend-start requires --bend-radius");
   // Land-cover classes drawn as heights of a few metres.

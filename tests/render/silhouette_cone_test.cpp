@@ -1,11 +1,7 @@
 // Silhouettes of `maquette render panorama` against the analytic occluding contours of a cone
 // (cone_dem.h, sampled every 20 m) on a plain, seen from 10 km south and 5 km above its foot.
-// The test's contour: the cone's surface is ruled by its generators (apex to a point of its
-// foot) and its tangent plane is the same all along one, so the view rays graze the cone along
-// the two generators whose tangent plane holds the eye: the roots in phi of
-// ((B(phi) - A) x B'(phi)) . (E - A) = 0, with A the apex, B(phi) the foot's point at azimuth phi
-// from the axis and E the eye, in PROJ's east-north-up frame at the eye (cone points from UTM 12
-// through PROJ), projected by the test's own pinhole (test_camera.h). The program marks a terrain
+// The test's contour: the two generators along which the view rays graze the cone (cone_view.h),
+// projected by the test's own pinhole (test_camera.h). The program marks a terrain
 // pixel next to one more than 1.05 times farther, so a contour point counts where the plain the
 // grazing ray meets behind the cone (its height on a sphere of 6371 km) is that much farther:
 // - recall: of the contour's points (every 0.25 px) whose ray meets the plain more than 1.1 times
@@ -22,7 +18,7 @@
 #include <vector>
 
 #include "cone_dem.h"
-#include "proj_enu.h"
+#include "cone_view.h"
 #include "run_cli.h"
 #include "synthetic_raster.h"
 #include "test_camera.h"
@@ -30,36 +26,12 @@
 namespace maquette {
 namespace {
 
-using Vec = std::array<double, 3>;
+using test::dot;
+using test::norm;
+using test::Vec;
 
 constexpr double kEyeLon = -111, kEyeLat = 37.21, kEyeHeight = 6000;
 constexpr double kEarthRadius = 6371000;
-
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
-
-struct Cone {
-  test::ProjEnu enu{kEyeLon, kEyeLat, kEyeHeight};
-  test::Projector lonlat{"EPSG:32612", "EPSG:4326"};
-  std::array<double, 2> axis = test::cone_axis();
-  Vec at(double azimuth, double r) const {  // the cone's surface r metres from the axis
-    const auto [lon, lat] =
-        lonlat(axis[0] + r * std::sin(azimuth), axis[1] + r * std::cos(azimuth));
-    return enu({lon, lat}, test::cone_height(r * std::sin(azimuth), r * std::cos(azimuth)));
-  }
-  Vec apex() const { return at(0, 0); }
-  // ((B - A) x B') . (E - A), E the eye (the origin).
-  double tangency(double phi) const {
-    const double h = 1e-4;
-    const Vec a = apex(), b = at(phi, test::kConeRadius);
-    const Vec db = sub(at(phi + h, test::kConeRadius), at(phi - h, test::kConeRadius));
-    return dot(cross(sub(b, a), db), sub(Vec{0, 0, 0}, a));
-  }
-};
 
 // The distance along the ray from the eye through `p` to where it meets the plain (the cone's
 // foot height on a sphere), beyond p.
@@ -99,19 +71,8 @@ TEST(Silhouettes, ConeContoursWithinOnePixel) {
                                                GDT_Float64, 0, 0),
             CE_None);
 
-  // The two tangent generators: sign changes of the tangency, then bisection.
-  const Cone cone;
-  std::vector<double> roots;
-  const int steps = 3600;
-  for (int k = 0; k < steps; ++k) {
-    double lo = 2 * std::numbers::pi * k / steps, hi = 2 * std::numbers::pi * (k + 1) / steps;
-    if ((cone.tangency(lo) > 0) == (cone.tangency(hi) > 0)) continue;
-    for (int it = 0; it < 60; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      ((cone.tangency(mid) > 0) == (cone.tangency(lo) > 0) ? lo : hi) = mid;
-    }
-    roots.push_back(0.5 * (lo + hi));
-  }
+  const test::ConeView cone(kEyeLon, kEyeLat, kEyeHeight);
+  const std::vector<double> roots = cone.tangent_azimuths();
   ASSERT_EQ(roots.size(), 2u);
 
   // The contour's points every ~0.25 px, with whether the plain behind is > 1.1 times farther.
