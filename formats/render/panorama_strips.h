@@ -58,13 +58,16 @@ int default_strip_rows(int width);
 // (0: about 2 M pixels; the same bits for any) into
 // one strip's arrays (render/panorama.h shade_panorama; the mesh measured once, render/
 // rasterizer.h RasterPlan), so that only the picture's guides, texels and colours are whole,
-// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
+// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices). With
+// look.antialias K > 1 the colours are then made again from K x K samples a pixel
+// (render/panorama_supersample.h), with the picture's display stretch.
 Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene,
                        const PinholeCamera& camera, const PanoramaLook& look,
                        int fragment_rows = 0);
 
 // Rasterizes, shades and writes the panorama of `scene` in strips of `strip_rows` rows (> 0),
-// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices).
+// writing into `scene` the attributes of the vertices each strip shows (attribute_vertices); with
+// look.antialias, each strip's colours from its samples (the same bits as draw_panorama's).
 // Throws maquette::Error, writing nothing, when no pixel shows terrain.
 void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
