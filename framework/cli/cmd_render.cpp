@@ -119,10 +119,11 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str()
       ->needs(bend_radius);
   add_panorama_look_options(cmd, o->job);
-  cmd->add_option("--antialias", o->job.antialias,
-                  "Samples per pixel side, 1 to 8: each pixel's colour the mean of K x K samples "
-                  "over it (smooth skylines and ridges; K^2 times the colour's cost); the guides "
-                  "stay the pixel centre's")
+  cmd->add_option(
+         "--antialias", o->job.antialias,
+         "K, samples per pixel side (1 to 8): each pixel's colour the mean of K x K samples "
+         "over it (smooth skylines and ridges; K^2 times the colour's cost); the guides "
+         "stay the pixel centre's")
       ->capture_default_str();
   cmd->add_option("--strip-rows", o->job.strip_rows,
                   "Draw and write the picture in strips of this many rows, for big pictures in "
