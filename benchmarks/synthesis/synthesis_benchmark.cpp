@@ -49,8 +49,8 @@ void on_1_and_2_threads(benchmark::internal::Benchmark* b) {
 
 void BM_Analyse(benchmark::State& state) {
   const ExemplarLevel& finest = zion_exemplar()->pyramid.levels[0];
-  Exemplar e{finest.width,    finest.height,   finest.rgb,     finest.labels,
-             finest.altitude, finest.excluded, finest.distance};
+  Exemplar e{finest.width,    finest.height,   finest.rgb,      finest.labels,
+             finest.altitude, finest.excluded, finest.distance, finest.light};
   for (float& v : e.rgb) v *= 255.0f;  // analyse_exemplar's input range
   for (auto _ : state)
     tbb::task_arena(int(state.range(0))).execute([&] {

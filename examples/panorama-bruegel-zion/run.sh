@@ -1,10 +1,11 @@
 #!/bin/sh
 # Paper 000's own pipeline on Zion: the panorama rendered with its guides (land cover, altitude,
 # distance, shading), Bruegel's The Harvesters transferred into the picture by maquette-paint (a
-# program: its target is a picture, not the store's cells), the result blended with the render's
-# shading. exclusion.png masks the painting's top 262 rows right of column 400 (the leaves of its
-# tree against the sky, in the sky's colour class) and a blue dot in its sky at (24..42, 14..32):
-# never copied. Writes
+# program: its target is a picture, not the store's cells), its dark and light strokes matched to
+# the render's shade and sun within each class (painting_light, w_light), the result blended with
+# the render's shading. exclusion.png masks the painting's top 262 rows right of column 400 (the
+# leaves of its tree against the sky, in the sky's colour class) and a blue dot in its sky at
+# (24..42, 14..32): never copied. Writes
 # ../panorama-bruegel-zion-output/: zion.png, zion-guides.tif, painted.png, painted-source.tif.
 # Usage: examples/panorama-bruegel-zion/run.sh [BUILD_BIN_DIR [THREADS]]
 set -eu

@@ -106,8 +106,8 @@ void tally_coherence(const Exemplar& e, const AssessedImage& image, const PixelR
 }  // namespace
 
 Exemplar copied_exemplar(const ExemplarLevel& finest) {
-  Exemplar e{finest.width,    finest.height,   finest.rgb,     finest.labels,
-             finest.altitude, finest.excluded, finest.distance};
+  Exemplar e{finest.width,    finest.height,   finest.rgb,      finest.labels,
+             finest.altitude, finest.excluded, finest.distance, finest.light};
   for (float& v : e.rgb) v = std::round(v * 255.0f);
   return e;
 }

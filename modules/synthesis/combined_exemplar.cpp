@@ -28,6 +28,7 @@ Exemplar combine_exemplars(std::vector<Exemplar> parts, std::vector<Placement>& 
   c.excluded.assign(n, 1);
   if (!parts.front().altitude.empty()) c.altitude.resize(n);
   if (!parts.front().distance.empty()) c.distance.resize(n);
+  if (!parts.front().light.empty()) c.light.resize(n);
   for (int x = 0; x < c.width; ++x) {
     // The nearest exemplar in columns (ties to the left) and the column clamped into it.
     size_t p = 0;
@@ -48,6 +49,7 @@ Exemplar combine_exemplars(std::vector<Exemplar> parts, std::vector<Placement>& 
       std::copy_n(e.rgb.begin() + std::ptrdiff_t(3 * j), 3, c.rgb.begin() + std::ptrdiff_t(3 * i));
       if (!c.altitude.empty()) c.altitude[i] = e.altitude[j];
       if (!c.distance.empty()) c.distance[i] = e.distance[j];
+      if (!c.light.empty()) c.light[i] = e.light[j];
       if (inside && y < e.height) {
         c.labels[i] = e.labels[j];
         c.excluded[i] = e.excluded[j];

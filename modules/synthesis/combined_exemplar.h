@@ -34,9 +34,9 @@ struct Placement {
 // The exemplars side by side, left to right in order, each at the first multiple of
 // 1 << (kLevels - 1) at least kCombinedGap pixels right of the previous one's end; the combined
 // height is the tallest one's. Pixels outside every exemplar are excluded, label 0, and take the
-// colour (altitude, distance) of the nearest exemplar's pixel at their row clamped into it (the
-// nearest in columns, ties to the left). Preconditions: at least one exemplar; either all of them
-// have an altitude (a distance) or none. A single exemplar is returned as it is.
+// colour (altitude, distance, light) of the nearest exemplar's pixel at their row clamped into it
+// (the nearest in columns, ties to the left). Preconditions: at least one exemplar; either all of
+// them have an altitude (a distance, a light) or none. A single exemplar is returned as it is.
 Exemplar combine_exemplars(std::vector<Exemplar> parts, std::vector<Placement>& placement);
 
 }  // namespace maquette::synthesis

@@ -15,6 +15,7 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
   s.excluded.assign(n, 0);
   if (!e.altitude.empty()) s.altitude.assign(n, 0.0f);
   if (!e.distance.empty()) s.distance.assign(n, 0.0f);
+  if (!e.light.empty()) s.light.assign(n, 0.0f);
   const float area = float(factor * factor);
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x) {
@@ -28,6 +29,7 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
           s.excluded[i] |= e.excluded[j];
           if (!e.altitude.empty()) s.altitude[i] += e.altitude[j] / area;
           if (!e.distance.empty()) s.distance[i] += e.distance[j] / area;
+          if (!e.light.empty()) s.light[i] += e.light[j] / area;
         }
     }
   return s;

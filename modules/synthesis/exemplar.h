@@ -17,12 +17,14 @@ struct Exemplar {
   std::vector<float> altitude;    // [0, 1] per pixel, or empty: no altitude guide
   std::vector<uint8_t> excluded;  // 1: never copied (shadows, frame, lettering, sky)
   std::vector<float> distance;    // [0, 1] per pixel (1: far from the viewer), or empty
+  std::vector<float> light;       // [0, 1] per pixel (1: the lightest of its class), or empty
 };
 
 // The exemplar shrunk `factor` times (a power of two >= 1) by box averaging: colours,
-// altitude and distance averaged, the label of each block its top-left pixel's, a block excluded
-// when any of its pixels is. Preconditions: the exemplar's vectors have its width x height pixels,
-// and its width and height are at least `factor` (transfer_exemplar refuses a smaller painting).
+// altitude, distance and light averaged, the label of each block its top-left pixel's, a block
+// excluded when any of its pixels is. Preconditions: the exemplar's vectors have its width x height
+// pixels, and its width and height are at least `factor` (transfer_exemplar refuses a smaller
+// painting).
 Exemplar shrink_exemplar(const Exemplar& e, int factor);
 
 }  // namespace maquette::synthesis

@@ -100,8 +100,8 @@ nlohmann::json analysis_identity() {
       kFeatureDims,
       kCombinedGap,
       kClassSmoothingRadius,
-      {d.w_label, d.w_altitude, d.w_distance, d.w_repetition, d.w_usage, d.w_spread, d.coherence,
-       d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
+      {d.w_label, d.w_altitude, d.w_distance, d.w_light, d.w_repetition, d.w_usage, d.w_spread,
+       d.coherence, d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
   return out;
 }
 

@@ -20,7 +20,7 @@ constexpr uint64_t kMostLevels = 64;
 
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
 // A field added to ExemplarLevel must be added to level_fields below, and the format bumped.
-static_assert(sizeof(ExemplarLevel) == 7368, "ExemplarLevel changed: update level_fields");
+static_assert(sizeof(ExemplarLevel) == 7392, "ExemplarLevel changed: update level_fields");
 #endif
 
 // Appends fields to `out`.
@@ -81,6 +81,7 @@ void level_fields(Archive& a, Level& l) {
   a(l.labels);
   a(l.altitude);
   a(l.distance);
+  a(l.light);
   a(l.excluded);
   a(l.basis);
   a(l.features);
@@ -116,7 +117,7 @@ void check_sizes(const TransferExemplar& t) {
     for (const auto& pixels : l.by_label) labelled += pixels.size();
     if (!per_pixel(l.rgb.size(), 3, false) || !per_pixel(l.labels.size(), 1, false) ||
         !per_pixel(l.altitude.size(), 1, true) || !per_pixel(l.distance.size(), 1, true) ||
-        !per_pixel(l.excluded.size(), 1, false) ||
+        !per_pixel(l.light.size(), 1, true) || !per_pixel(l.excluded.size(), 1, false) ||
         !per_pixel(l.features.size(), kFeatureDims, false) ||
         !per_pixel(l.similar.size(), size_t(t.pyramid.k), false) || l.allowed.size() > n ||
         labelled != l.allowed.size() || !per_pixel(l.usage.size(), 1, true) ||

@@ -46,6 +46,7 @@ ExemplarLevel coarser(const ExemplarLevel& f) {
     c.altitude = blur_decimate(f.altitude, f.width, f.height, 1, c.width, c.height);
   if (!f.distance.empty())
     c.distance = blur_decimate(f.distance, f.width, f.height, 1, c.width, c.height);
+  if (!f.light.empty()) c.light = blur_decimate(f.light, f.width, f.height, 1, c.width, c.height);
   c.labels.resize(size_t(c.width) * size_t(c.height));
   c.excluded.resize(c.labels.size());
   for (int y = 0; y < c.height; ++y)
@@ -184,6 +185,7 @@ ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
   finest.labels = exemplar.labels;
   finest.altitude = exemplar.altitude;
   finest.distance = exemplar.distance;
+  finest.light = exemplar.light;
   finest.excluded = exemplar.excluded;
   pyramid.levels.push_back(std::move(finest));
   for (int l = 1; l < levels; ++l) pyramid.levels.push_back(coarser(pyramid.levels.back()));

@@ -32,6 +32,7 @@ struct ExemplarLevel {
   std::vector<uint8_t> labels;    // painting class
   std::vector<float> altitude;    // [0, 1], or empty
   std::vector<float> distance;    // [0, 1] (1: far), or empty
+  std::vector<float> light;       // [0, 1] (1: the lightest of its class), or empty
   std::vector<uint8_t> excluded;  // 1: never a candidate
   PatchBasis basis;
   std::vector<float> features;  // kFeatureDims per pixel
@@ -57,10 +58,10 @@ struct ExemplarPyramid {
 };
 
 // `levels` >= 1 levels, each half the size of the previous one (rounded up): colours,
-// altitude and distance filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped) and
-// decimated; labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k >= 1.
-// `paintings`: where the paintings lie in a combined exemplar (combined_exemplar.h), each x0 a
-// multiple of 1 << (levels - 1); empty: the whole exemplar is one painting. Each level's PCA
+// altitude, distance and light filtered by the binomial kernel [1 4 6 4 1] / 16 (borders clamped)
+// and decimated; labels decimated; a pixel excluded when any pixel of its 2 x 2 block below is. k
+// >= 1. `paintings`: where the paintings lie in a combined exemplar (combined_exemplar.h), each x0
+// a multiple of 1 << (levels - 1); empty: the whole exemplar is one painting. Each level's PCA
 // basis is fitted over the paintings' pixels alone (at level l a painting's columns from
 // x0 >> l, its width and height divided by 2^l rounded up, from row 0), excluded ones included,
 // the gap's filler not. Deterministic for any threads (the k nearest searches run in parallel,

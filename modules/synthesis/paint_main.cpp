@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
         {out, source}, {{"the panorama", picture_path},
                         {"the params", params_path},
                         {"the painting", params.exemplar.at("painting").get<std::string>()}});
-    const PanoramaPicture picture = read_panorama(picture_path, params.shading > 0);
+    const PanoramaPicture picture =
+        read_panorama(picture_path, params.shading > 0 || params.synthesis.w_light > 0);
     const auto exemplar = transfer_exemplar(params.exemplar);
     const PaintedPanorama painted = paint_panorama(picture, *exemplar, params);
     write_image(painted.rgb, painted.width, painted.height, 3, ImageFormat{"PNG", {}}, out);

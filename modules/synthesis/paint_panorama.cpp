@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "light_guide.h"
 #include "transfer_params.h"
 
 namespace maquette::synthesis {
@@ -28,8 +29,17 @@ double median_shading(const PanoramaPicture& p) {
 
 }  // namespace
 
+std::vector<float> panorama_light(const PanoramaPicture& p, const PaintParams& params) {
+  std::vector<uint8_t> classes(p.shading.size()), terrain(p.shading.size());
+  for (size_t i = 0; i < p.shading.size(); ++i) {
+    terrain[i] = !is_sky(p, i);
+    classes[i] = painting_class(params.classes, p.land_cover[i]);
+  }
+  return class_quantiles(p.shading, classes, terrain);
+}
+
 TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params,
-                             const PixelRect& window) {
+                             const std::vector<float>& light, const PixelRect& window) {
   const int64_t halo = synthesis_halo();
   TargetGuides g;
   g.rect = {window.col0 - halo, window.row0 - halo, window.width + 2 * halo,
@@ -39,6 +49,7 @@ TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params
   if (params.altitude_range) g.altitude.resize(n);
   if (params.distance_range) g.distance.resize(n);
   if (params.silhouettes) g.depth.resize(n);
+  if (!light.empty()) g.light.resize(n);
   for (int64_t r = 0; r < g.rect.height; ++r)
     for (int64_t c = 0; c < g.rect.width; ++c) {
       const size_t o = size_t(r) * size_t(g.rect.width) + size_t(c);
@@ -54,23 +65,28 @@ TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params
         g.distance[o] = sky ? 1.0f : distance_guide(p.distance[i], *params.distance_range);
       if (params.silhouettes)
         g.depth[o] = sky ? std::numeric_limits<float>::infinity() : p.distance[i];
+      if (!light.empty()) g.light[o] = light[i];
     }
   return g;
 }
 
 PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar& exemplar,
                                const PaintParams& params) {
-  if (params.shading > 0 && p.shading.size() != size_t(p.width) * size_t(p.height))
-    throw Error("paint_panorama: shading " + std::to_string(params.shading) +
+  const bool lit = params.synthesis.w_light > 0;
+  if ((params.shading > 0 || lit) && p.shading.size() != size_t(p.width) * size_t(p.height))
+    throw Error("paint_panorama: " +
+                (lit ? "w_light " + std::to_string(params.synthesis.w_light)
+                     : "shading " + std::to_string(params.shading)) +
                 " asked of a picture read without its shading band");
+  const std::vector<float> light = lit ? panorama_light(p, params) : std::vector<float>();
   const int64_t t = params.tile;
   const int64_t across = (p.width + t - 1) / t, down = (p.height + t - 1) / t;
   std::vector<int32_t> src(size_t(p.width) * size_t(p.height));
   tbb::parallel_for(int64_t(0), across * down, [&](int64_t k) {
     const PixelRect window{k % across * t, k / across * t, std::min(t, p.width - k % across * t),
                            std::min(t, p.height - k / across * t)};
-    const std::vector<int32_t> tile =
-        synthesize(exemplar.pyramid, panorama_target(p, params, window), params.synthesis, window);
+    const std::vector<int32_t> tile = synthesize(
+        exemplar.pyramid, panorama_target(p, params, light, window), params.synthesis, window);
     for (int64_t r = 0; r < window.height; ++r)
       std::copy_n(tile.begin() + ptrdiff_t(r * window.width), window.width,
                   src.begin() + ptrdiff_t((window.row0 + r) * p.width + window.col0));

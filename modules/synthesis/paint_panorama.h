@@ -7,8 +7,9 @@
 // picture's edge, the nearest edge pixel's): by synthesis.h's contract the same bits for any
 // tile size and thread count. Guides per pixel: the land-cover class through the class table
 // (terrain without a class matches any; the sky: sky_class, or not painted), the altitude and
-// the distance guides (the sky is far: 1), and the depth for coherence breaks (the sky:
-// infinitely far), so that no coherent patch crosses a silhouette.
+// the distance guides (the sky is far: 1), the light guide (panorama_light; none on the sky),
+// and the depth for coherence breaks (the sky: infinitely far), so that no coherent patch
+// crosses a silhouette.
 #pragma once
 
 #include <cstdint>
@@ -27,16 +28,25 @@ struct PaintedPanorama {
   std::vector<float> source;  // 2 per pixel: the painting pixel (column, row) copied, or NaN
 };
 
-// The synthesis's guides of the picture over `window` grown by synthesis_halo().
+// The picture's light guide: each terrain pixel's shading factor as its quantile
+// (class_quantiles, light_guide.h) among the terrain pixels of its painting class (its land
+// cover through the class table; those without a class one more class), NaN on the sky (and
+// where the shading is NaN). A function of the whole picture: computed once, then windowed.
+// Precondition: the picture has its shading band.
+std::vector<float> panorama_light(const PanoramaPicture& picture, const PaintParams& params);
+
+// The synthesis's guides of the picture over `window` grown by synthesis_halo(); `light` the
+// picture's (panorama_light), or empty: no light guide.
 TargetGuides panorama_target(const PanoramaPicture& picture, const PaintParams& params,
-                             const PixelRect& window);
+                             const std::vector<float>& light, const PixelRect& window);
 
 // The picture painted. Each painted pixel is the painting's colour at its source times
 // (1 - shading) + shading * s / s_median, s the render's shading factor and s_median its median
 // over the terrain: ground lit as the picture's typical ground keeps the painting's colour,
 // slopes turned from the sun darken, those facing it brighten (paper 000's blend with a terrain
-// shading). Precondition: the picture has a shading band when params.shading > 0 (read_panorama
-// with_shading); throws maquette::Error otherwise.
+// shading). With w_light > 0 the light guide is the target's too (panorama_light).
+// Precondition: the picture has a shading band when params.shading > 0 or w_light > 0
+// (read_panorama with_shading); throws maquette::Error otherwise.
 PaintedPanorama paint_panorama(const PanoramaPicture& picture, const TransferExemplar& exemplar,
                                const PaintParams& params);
 

@@ -25,6 +25,18 @@ nlohmann::json paint_params_schema() {
          {"items", {{"type", "number"}}},
          {"description", "[near, far] metres from the eye mapped to distance 0..1 (log)"}}},
        {"w_distance", {{"type", "number"}, {"minimum", 0}, {"default", 1.0}}},
+       {"painting_light",
+        {{"type", "string"},
+         {"description",
+          "the painting's light: \"lightness\" (each pixel's L* as its quantile within its "
+          "class), or a grey image (its size, white light)"}}},
+       {"w_light",
+        {{"type", "number"},
+         {"minimum", 0},
+         {"default", 0.0},
+         {"description",
+          "weight of the light mismatch: the painting's light against the quantile of the "
+          "render's shading within each class (with painting_light)"}}},
        {"sky_class",
         {{"type", "integer"},
          {"minimum", 0},
@@ -69,6 +81,10 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
                   (j.contains(range) ? guide : range) + ": give both or neither");
   if (raw.contains("w_distance") && !j.contains("distance_range"))
     throw Error(source + ": w_distance is given without distance_range and painting_distance");
+  if (raw.contains("w_light") && !j.contains("painting_light"))
+    throw Error(source + ": w_light is given without painting_light");
+  if (j.contains("painting_light") && j.at("painting_light") == "rows")
+    throw Error(source + ".painting_light: \"rows\" is no light: \"lightness\" or a grey image");
   if (j.contains("altitude_range")) p.altitude_range = range_param(j, "altitude_range", source);
   if (j.contains("distance_range"))
     p.distance_range = range_param(j, "distance_range", source, true);
@@ -93,6 +109,8 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
   p.tile = j.at("tile").get<int>();
   p.synthesis = synthesis_params(j);
   p.synthesis.w_distance = p.distance_range ? j.at("w_distance").get<double>() : 0.0;
+  p.light = j.contains("painting_light");
+  p.synthesis.w_light = j.at("w_light").get<double>();
   p.synthesis.depth_break = j.at("depth_break").get<double>();
   return p;
 }

@@ -1,6 +1,7 @@
 // maquette-paint's params (a JSON file): synthesis.transfer's exemplar and synthesis params with
-// the same keys (transfer_params.h), and what the picture adds: the distance guide, the sky, the
-// coherence breaks at silhouettes, the blend with the render's shading (README: maquette-paint).
+// the same keys (transfer_params.h), and what the picture adds: the distance and light guides,
+// the sky, the coherence breaks at silhouettes, the blend with the render's shading (README:
+// maquette-paint).
 #pragma once
 
 #include <array>
@@ -21,6 +22,7 @@ struct PaintParams {
   std::optional<std::array<double, 2>> distance_range;  // metres from the eye -> 0..1 (log)
   std::optional<uint8_t> sky_class;  // the sky painted from this class, else kept
   bool silhouettes = true;           // coherence breaks where the depth jumps (depth_break)
+  bool light = false;                // the light guide (painting_light; w_light in synthesis)
   double shading = 0;                // strength of the blend with the render's shading, 0..1
   int tile = 256;                    // output pixels a side synthesized at once
   SynthesisParams synthesis;
@@ -31,7 +33,8 @@ nlohmann::json paint_params_schema();
 
 // The params from `raw` (read from `source`, which errors name): validated, defaults filled,
 // each guide's two halves given together (altitude_range with painting_altitude,
-// distance_range with painting_distance; w_distance not without them), sky_class not excluded
+// distance_range with painting_distance; w_distance not without them, w_light not without
+// painting_light, which is not "rows"), sky_class not excluded
 // and in no land-cover class's value of landcover_classes (the sky is a class of its own).
 PaintParams paint_params(const nlohmann::json& raw, const std::string& source);
 

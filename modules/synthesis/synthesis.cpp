@@ -78,7 +78,7 @@ struct State {
 struct LevelGuides {
   PixelRect rect;
   std::vector<uint8_t> labels;
-  std::vector<float> altitude, distance, depth;  // empty: none
+  std::vector<float> altitude, distance, depth, light;  // empty: none
 
   size_t index(int64_t col, int64_t row) const {
     return size_t(row - rect.row0) * size_t(rect.width) + size_t(col - rect.col0);
@@ -86,12 +86,13 @@ struct LevelGuides {
 };
 
 LevelGuides level_guides(const TargetGuides& g, int level, const PixelRect& rect) {
-  LevelGuides out{rect, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)), {}, {}, {}};
+  LevelGuides out{rect, std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)), {}, {}, {},
+                  {}};
   // The guides given, each sampled as the labels are.
   std::vector<std::pair<const std::vector<float>*, std::vector<float>*>> scalars;
   for (const auto& [from, to] :
        {std::pair{&g.altitude, &out.altitude}, std::pair{&g.distance, &out.distance},
-        std::pair{&g.depth, &out.depth}})
+        std::pair{&g.depth, &out.depth}, std::pair{&g.light, &out.light}})
     if (!from->empty()) {
       to->resize(out.labels.size());
       scalars.emplace_back(from, to);
@@ -268,6 +269,7 @@ class Corrector {
     const size_t i = g_.index(col, row);
     const double altitude = guide_mismatch(g_.altitude, i, e_.altitude, c);
     const double distance = p_.w_distance > 0 ? guide_mismatch(g_.distance, i, e_.distance, c) : 0;
+    const double light = p_.w_light > 0 ? guide_mismatch(g_.light, i, e_.light, c) : 0;
     int reused = 0;  // branch-free over contiguous arrays: vectorized
     for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
       reused +=
@@ -278,7 +280,7 @@ class Corrector {
                        uint64_t(cy >> kSpreadRegionShift) << 20);
     const double spread = double(h >> 11) * 0x1.0p-53;  // [0, 1)
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
-           p_.w_altitude * altitude + p_.w_distance * distance +
+           p_.w_altitude * altitude + p_.w_distance * distance + p_.w_light * light +
            p_.w_repetition * reused / double(kRepetitionOffsets.size()) + p_.w_spread * spread;
   }
 

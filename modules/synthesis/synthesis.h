@@ -8,7 +8,7 @@
 // 2 x 2 sub-passes (pixels of one parity of global column and row at a time, in the order
 // (0,0) (1,1) (0,1) (1,0)), replace every pixel by the candidate of least cost
 //   C = D_color + w_label D_label + w_altitude D_altitude + w_distance D_distance
-//       + w_repetition D_repetition + w_spread D_spread
+//       + w_light D_light + w_repetition D_repetition + w_spread D_spread
 // among its k-coherence candidates (for each 3 x 3 neighbour q = p + d, the exemplar pixel
 // S(q) - d and its k most similar patches) and two random pixels of its target label, the
 // candidates other than the S(q) - d at a cost (1 + coherence) times theirs plus w_usage D_usage
@@ -27,6 +27,11 @@
 //    candidate's exemplar labels (unknown target labels match anything);
 //  - D_altitude: the squared difference of target and exemplar altitude (when both have one);
 //  - D_distance: the same of the target's and exemplar's distance from the viewer;
+//  - D_light: the same of the target's and exemplar's light (StyLit's lighting guide, Fiser et
+//    al. 2016: so that the painting's dark strokes go where the target is in shade; each side's
+//    light a quantile within its class, so the two compare whatever the palette and the sun:
+//    light_guide.h). D_distance and D_light are added only when their weight is positive: with
+//    w_distance and w_light 0 the cost is what it was without them, bit for bit;
 //  - D_repetition: the fraction of kRepetitionOffsets pixels at Chebyshev distance 2 to
 //    kRepetitionRadius whose coordinates at the start of the pass lie within one pixel of the
 //    candidate: the same source reused nearby, not coherently (a coherent neighbour at offset o
@@ -93,6 +98,7 @@ struct SynthesisParams {
   double w_label = 2.0;
   double w_altitude = 1.0;
   double w_distance = 0.0;
+  double w_light = 0.0;
   double w_repetition = 0.3;
   double w_usage = 0.05;
   double w_spread = 0.15;
@@ -119,15 +125,16 @@ struct PixelRect {
 
 // The target's guides on a raster of global pixels `1 << shift` times coarser than the output's
 // (a step's refine): output pixel (c, r) reads guide sample ((c >> shift) - rect.col0,
-// (r >> shift) - rect.row0). Labels are painting classes (kUnknownLabel: any); altitude and
-// distance in [0, 1], NaN or empty for none; depth in metres from the eye (infinity: the sky),
-// empty for no coherence breaks.
+// (r >> shift) - rect.row0). Labels are painting classes (kUnknownLabel: any); altitude,
+// distance and light in [0, 1], NaN or empty for none; depth in metres from the eye (infinity:
+// the sky), empty for no coherence breaks.
 struct TargetGuides {
   PixelRect rect;
   int shift = 0;
   std::vector<uint8_t> labels;  // rect.width x rect.height, row-major
   std::vector<float> altitude;  // the same, or empty
   std::vector<float> distance;  // the same, or empty
+  std::vector<float> light;     // the same, or empty
   std::vector<float> depth;     // the same, or empty
   // Output columns c and c + col_period are one place (0: none): a multiple of 2^kLevels, where
   // the caller gives the same guides.

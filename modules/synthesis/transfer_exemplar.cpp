@@ -16,6 +16,7 @@
 #include "exemplar_cache.h"
 #include "exemplar_usage.h"
 #include "harmonize.h"
+#include "light_guide.h"
 #include "painting.h"
 #include "synthesis.h"
 #include "transfer_params.h"
@@ -121,11 +122,13 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
   return out;
 }
 
-// The files read_exemplar reads for `fields` (the params or one of "exemplars").
+// The files the analysis reads for `fields` (the params or one of "exemplars"): the guides'
+// keywords ("rows", "lightness") are no files.
 void add_input_files(const nlohmann::json& fields, std::vector<std::string>& files) {
-  for (const char* field :
-       {"painting", "labels", "exclusion", "painting_altitude", "painting_distance"})
-    if (fields.contains(field) && fields.at(field) != "rows")
+  for (const std::string field : {"painting", "labels", "exclusion", "painting_altitude",
+                                  "painting_distance", "painting_light"})
+    if (fields.contains(field) &&
+        fields.at(field) != (field == "painting_light" ? "lightness" : "rows"))
       files.push_back(fields.at(field).get<std::string>());
 }
 
@@ -147,6 +150,12 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   if (params.contains("landcover_classes"))
     for (const auto& [from, to] : class_groups(params.at("landcover_classes"), kOp))
       std::replace(e.labels.begin(), e.labels.end(), from, to);
+  // maquette-paint's light guide (one painting), after the table's sets: its quantiles are
+  // within the classes the synthesis matches.
+  if (params.contains("painting_light")) {
+    const std::string light = params.at("painting_light").get<std::string>();
+    e.light = light == "lightness" ? painting_lightness(e) : painting_guide(light, e, "light");
+  }
   std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
   for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));
   if (params.contains("harmonize"))
@@ -218,7 +227,7 @@ nlohmann::json exemplar_key_params(const nlohmann::json& params) {
   nlohmann::json key = nlohmann::json::object();
   for (const char* field :
        {"painting", "labels", "classes", "exclusion", "exclude_classes", "painting_altitude",
-        "painting_distance", "exemplar_scale", "k", "exemplars", "harmonize"})
+        "painting_distance", "painting_light", "exemplar_scale", "k", "exemplars", "harmonize"})
     if (params.contains(field)) key[field] = params.at(field);
   // The first painting's labels depend on the table's groups only; a further painting's on the
   // table itself (each of its classes takes the first's class for the same target value).

@@ -38,7 +38,8 @@ struct TransferExemplar {
 };
 
 // From the validated params (README: synthesis.transfer): "painting", "labels" or "classes",
-// "exclusion", "exclude_classes", "painting_altitude", "painting_distance" (maquette-paint's),
+// "exclusion", "exclude_classes", "painting_altitude", "painting_distance" and "painting_light"
+// (maquette-paint's; the light "lightness", light_guide.h, or a grey image, white light),
 // "exemplar_scale", "k", and "exemplars" with "harmonize" (README: "Several paintings"; each
 // further painting read as the first, its classes through further_classes, those it does not
 // name excluded, shrunk, harmonized to the first, then all combined). Throws maquette::Error
@@ -55,7 +56,7 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
 nlohmann::json exemplar_key_params(const nlohmann::json& params);
 
 // The files the analysis reads: each painting's image, class image or polygons, exclusion mask,
-// altitude and distance images ("rows" is no file).
+// altitude, distance and light images ("rows" and "lightness" are no files).
 std::vector<std::string> exemplar_input_files(const nlohmann::json& params);
 
 }  // namespace maquette::synthesis

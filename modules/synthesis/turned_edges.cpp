@@ -128,9 +128,9 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
                                        const std::vector<TurnedEdge>& edges,
                                        std::vector<int32_t> own) {
   if (edges.empty()) return own;
-  if (!guides.distance.empty() || !guides.depth.empty())
+  if (!guides.distance.empty() || !guides.depth.empty() || !guides.light.empty())
     throw Error("synthesis.transfer: " + edges[0].cell.ToText() +
-                "'s band along a turned edge lays no distance or depth guides");
+                "'s band along a turned edge lays no distance, depth or light guides");
   const int n = (int(guides.rect.width) - 2 * halo) << guides.shift;
   const ExemplarLevel& level = pyramid.levels[0];
   const auto colour_error = [&](int32_t x, int32_t y) {

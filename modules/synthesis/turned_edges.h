@@ -67,7 +67,8 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
 // edge's band joined as above. `guides` are the cell's own: its tile with a halo of `halo`
 // guide pixels, in the plane (as synthesis.transfer lays them): labels and altitude, which the
 // band lays turned into G's chart. Throws maquette::Error, naming the cell, if a band's guides
-// reach beyond that halo, or if `guides` hold distance or depth (the band does not lay them).
+// reach beyond that halo, or if `guides` hold distance, depth or light (the band does not lay
+// them).
 std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
                                        const TargetGuides& guides, int halo,
                                        const std::vector<TurnedEdge>& edges,

@@ -85,6 +85,7 @@ void expect_same(const TransferExemplar& a, const TransferExemplar& b) {
     EXPECT_EQ(x.labels, y.labels);
     EXPECT_EQ(x.altitude, y.altitude);
     EXPECT_EQ(x.distance, y.distance);
+    EXPECT_EQ(x.light, y.light);
     EXPECT_EQ(x.excluded, y.excluded);
     EXPECT_EQ(x.basis.mean, y.basis.mean);
     EXPECT_EQ(x.basis.axes, y.basis.axes);
@@ -148,7 +149,8 @@ TEST(ExemplarCache, TheKeyFollowsTheFilesAndTheExemplarsParamsNotTheWeights) {
                                      {"classes", 4},
                                      {"exclude_classes", {1}},
                                      {"landcover_classes", {{"1", {0, 1}}}},
-                                     {"painting_altitude", "rows"}}) {
+                                     {"painting_altitude", "rows"},
+                                     {"painting_light", "lightness"}}) {
     json changed = p;
     changed[field] = value;
     EXPECT_NE(key_of(changed), key) << field;
@@ -176,6 +178,7 @@ TEST(ExemplarCache, ACachedExemplarIsTheAnalysedOneFieldByField) {
   p["exclude_classes"] = {0};
   p["landcover_classes"] = {{"1", 1}, {"2", {2, 3}}};
   p["painting_altitude"] = "rows";
+  p["painting_light"] = "lightness";
   const auto analysed = transfer_exemplar(p);
   const auto files = cache_files(dir);
   ASSERT_EQ(files.size(), 1u);
@@ -188,6 +191,7 @@ TEST(ExemplarCache, ACachedExemplarIsTheAnalysedOneFieldByField) {
   EXPECT_NE(cached, analysed);
   expect_same(*cached, *analysed);
   EXPECT_GT(analysed->pyramid.levels[0].usage.size(), 0u);
+  EXPECT_GT(analysed->pyramid.levels[0].light.size(), 0u);
 }
 
 TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {

@@ -1,103 +1,22 @@
-// The transfer in the picture (paint_panorama.h, maquette-paint) on a panorama that `maquette
-// render panorama` draws of a synthetic scene: a 600 m plateau (forest) on a plain (shrub), so
-// the plateau's far edge stands against the plain behind it (a silhouette) and the horizon against
-// the sky. The painting is synthetic: two classes side by side, a sky class along its top, an
-// excluded square in each class. Checked: terrain sources keep the target's class (>= 0.97),
-// none is excluded, the sky stays the render's unless a sky class is asked for (then it is
-// painted from that class); the program's files are byte-identical for 1 and 2 threads and tiles
-// of 64 and 256 pixels; raising w_distance lowers the distance mismatch; no coherent copy across
-// a depth break with silhouettes on (counted, against the same run without); the shading blend
-// as stated; bad input named.
-#include "../paint_panorama.h"
-
+// The transfer in the picture (paint_panorama.h, maquette-paint) on panorama_scene.h's scene
+// without relief (a flat plateau on a flat plain). Checked: terrain sources keep the target's
+// class (>= 0.97), none is excluded, the sky stays the render's unless a sky class is asked for
+// (then it is painted from that class); the program's files are byte-identical for 1 and 2
+// threads and tiles of 64 and 256 pixels (with the light guide too); raising w_distance lowers
+// the distance mismatch; no coherent copy across a depth break with silhouettes on (counted,
+// against the same run without); the shading blend as stated; bad input named.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
-#include "../pixel_hash.h"
 #include "core/error.h"
-#include "core/json_file.h"
-#include "gdal/image_file.h"
-#include "run_cli.h"
-#include "synthetic_raster.h"
+#include "panorama_scene.h"
 
 namespace maquette::synthesis {
 namespace {
-
-constexpr int kPaintingWidth = 128, kPaintingHeight = 96, kSkyRows = 20;
-
-bool on_plateau(double lon, double lat) {
-  return lon > 10.12 && lon < 10.18 && lat > 45.12 && lat < 45.18;
-}
-bool excluded_at(int x, int y) {
-  return (x >= 20 && x < 32 && y >= 50 && y < 62) || (x >= 90 && x < 102 && y >= 30 && y < 42);
-}
-int painting_label(int x, int y) { return y < kSkyRows ? 2 : x >= kPaintingWidth / 2 ? 1 : 0; }
-
-struct Scene {
-  std::string dir = test::temp_dir();
-  std::string picture = dir + "/pano.png";
-  Scene() {
-    const std::string store = dir + "/s.mqt", dem = dir + "/dem.tif", lc = dir + "/lc.tif";
-    test::write_raster(
-        dem, test::lonlat_raster(10, 45.3, 600, 0.0005, "Float32"),
-        [](int, double lon, double lat) { return on_plateau(lon, lat) ? 700 : 100; });
-    test::write_raster(lc, test::lonlat_raster(10, 45.3, 600, 0.0005, "Byte"),
-                       [](int, double lon, double lat) { return on_plateau(lon, lat) ? 41 : 52; });
-    for (const std::string& args :
-         {"ingest " + store + " --layer dem --as dem --vertical-datum ellipsoid " + dem,
-          "ingest " + store + " --layer lc --as landcover " + lc,
-          "render panorama " + store + " " + picture +
-              " --dem dem --land-cover lc --camera 10.15 45.02 1500 --heading 0 --pitch -6 "
-              "--fov 50 --size 320 200",
-          "render panorama " + store + " " + dir +
-              "/bare.png --dem dem --camera 10.15 45.02 "
-              "1500 --heading 0 --pitch -6 --fov 50 --size 320 200"}) {
-      const auto r = test::run_maquette(args);
-      EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-    }
-    // The painting: warm stripes (class 0) left, green blobs (class 1) right, a blue sky (class
-    // 2) along the top; the excluded squares magenta.
-    std::vector<uint8_t> rgb(3 * kPaintingWidth * kPaintingHeight), labels(rgb.size() / 3),
-        excluded(labels.size());
-    for (int y = 0; y < kPaintingHeight; ++y)
-      for (int x = 0; x < kPaintingWidth; ++x) {
-        const size_t i = size_t(y) * kPaintingWidth + size_t(x);
-        const double noise = double(splitmix64_mix(i) % 41) - 20;
-        const int label = painting_label(x, y);
-        labels[i] = uint8_t(label);
-        excluded[i] = excluded_at(x, y) ? 255 : 0;
-        const double r = excluded[i]  ? 255
-                         : label == 2 ? 120 + noise
-                         : label == 1 ? 40 + 30 * std::sin(x * 0.7) * std::sin(y * 0.6) + noise
-                                      : 200 + 40 * std::sin(x / 3.0) + noise;
-        const double g = excluded[i]  ? 0
-                         : label == 2 ? 160 + noise
-                         : label == 1 ? 110 + noise
-                                      : 170 + noise;
-        const double b = excluded[i] ? 255 : label == 2 ? 230 : label == 1 ? 50 : 60 + noise;
-        rgb[3 * i] = uint8_t(r), rgb[3 * i + 1] = uint8_t(g), rgb[3 * i + 2] = uint8_t(b);
-      }
-    write_image(rgb, kPaintingWidth, kPaintingHeight, 3, {"PNG", {}}, dir + "/painting.png");
-    write_image(labels, kPaintingWidth, kPaintingHeight, 1, {"PNG", {}}, dir + "/labels.png");
-    write_image(excluded, kPaintingWidth, kPaintingHeight, 1, {"PNG", {}}, dir + "/excluded.png");
-  }
-
-  nlohmann::json params() const {
-    return {{"painting", dir + "/painting.png"},
-            {"labels", dir + "/labels.png"},
-            {"exclusion", dir + "/excluded.png"},
-            {"exemplar_scale", 1},
-            {"landcover_classes", {{"41", 1}, {"52", 0}}},
-            {"painting_distance", "rows"},
-            {"distance_range", {2000, 30000}},
-            {"tile", 128}};
-  }
-};
 
 const Scene& scene() {
   static const Scene s;
@@ -122,21 +41,9 @@ TEST(PaintPanorama, TheSkyIsAClassOfItsOwn) {
   }
 }
 
-PaintedPanorama paint(const nlohmann::json& raw) {
-  const PaintParams params = paint_params(raw, "params.json");
-  const PanoramaPicture picture = read_panorama(scene().picture, true);
-  return paint_panorama(picture, *transfer_exemplar(params.exemplar), params);
-}
-
-// The painting pixel of `p`'s pixel i (x, y), or {-1, -1} unpainted.
-std::array<int, 2> source_of(const PaintedPanorama& p, size_t i) {
-  if (std::isnan(p.source[2 * i])) return {-1, -1};
-  return {int(p.source[2 * i]), int(p.source[2 * i + 1])};
-}
-
 TEST(PaintPanorama, TerrainKeepsItsClassesNoExcludedSourceAndTheSkyStays) {
   const PanoramaPicture picture = read_panorama(scene().picture, true);
-  const PaintedPanorama p = paint(scene().params());
+  const PaintedPanorama p = paint(scene(), scene().params());
   size_t terrain = 0, kept = 0, sky = 0, excluded = 0;
   for (size_t i = 0; i < picture.distance.size(); ++i) {
     const auto [x, y] = source_of(p, i);
@@ -165,7 +72,7 @@ TEST(PaintPanorama, TheSkyIsPaintedFromTheSkyClassWhenAskedFor) {
   const PanoramaPicture picture = read_panorama(scene().picture, true);
   nlohmann::json params = scene().params();
   params["sky_class"] = 2;
-  const PaintedPanorama p = paint(params);
+  const PaintedPanorama p = paint(scene(), params);
   size_t sky = 0, from_sky = 0, terrain_from_sky = 0;
   for (size_t i = 0; i < picture.distance.size(); ++i) {
     const auto [x, y] = source_of(p, i);
@@ -200,7 +107,7 @@ TEST(PaintPanorama, RaisingTheDistanceWeightLowersTheDistanceMismatch) {
   for (const double w : {0.0, 2.0, 8.0}) {
     nlohmann::json params = scene().params();
     params["w_distance"] = w;
-    const double mismatch = distance_mismatch(paint(params), picture);
+    const double mismatch = distance_mismatch(paint(scene(), params), picture);
     std::printf("w_distance %g: mean distance mismatch %.4f\n", w, mismatch);
     EXPECT_LT(mismatch, previous) << "w_distance " << w;
     previous = mismatch;
@@ -235,9 +142,9 @@ TEST(PaintPanorama, NoCoherentCopyAcrossASilhouette) {
   nlohmann::json params = scene().params();
   params["sky_class"] = 2;
   size_t pairs = 0;
-  const size_t with = coherent_across_breaks(paint(params), picture, pairs);
+  const size_t with = coherent_across_breaks(paint(scene(), params), picture, pairs);
   params["silhouettes"] = false;
-  const size_t without = coherent_across_breaks(paint(params), picture, pairs);
+  const size_t without = coherent_across_breaks(paint(scene(), params), picture, pairs);
   std::printf(
       "%zu pixel pairs across a depth break: %zu coherent copies with silhouettes, %zu "
       "without\n",
@@ -251,9 +158,9 @@ TEST(PaintPanorama, ShadingBlendsAsStated) {
   const PanoramaPicture picture = read_panorama(scene().picture, true);
   nlohmann::json params = scene().params();
   params["shading"] = 0;
-  const PaintedPanorama flat = paint(params);
+  const PaintedPanorama flat = paint(scene(), params);
   params["shading"] = 0.7;
-  const PaintedPanorama shaded = paint(params);
+  const PaintedPanorama shaded = paint(scene(), params);
   ASSERT_EQ(std::memcmp(flat.source.data(), shaded.source.data(), 4 * flat.source.size()), 0);
   std::vector<float> lit;
   for (size_t i = 0; i < picture.shading.size(); ++i)
@@ -273,27 +180,18 @@ TEST(PaintPanorama, ShadingBlendsAsStated) {
   EXPECT_GT(checked, 30000u);
 }
 
-std::string run_paint(const std::string& args) {
-  return test::shell_output("(" + std::string(MAQUETTE_BIN_DIR) + "/maquette-paint " + args +
-                            " 2>&1; echo \"exit $?\")");
-}
-
-std::string write_params(const nlohmann::json& params, const std::string& name) {
-  const std::string path = scene().dir + "/" + name;
-  std::ofstream(path) << params.dump();
-  return path;
-}
-
 TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
   const Scene& s = scene();
   nlohmann::json params = s.params();
   params["sky_class"] = 2;
+  params["painting_light"] = "lightness";
+  params["w_light"] = 2;
   std::vector<std::string> runs;
   for (const auto& [tile, threads] : {std::pair{256, 1}, std::pair{64, 2}, std::pair{128, 2}}) {
     params["tile"] = tile;
     const std::string out = s.dir + "/painted-" + std::to_string(tile) + ".png";
-    const std::string r = run_paint(s.picture + " " + write_params(params, "p.json") + " " + out +
-                                    " -t " + std::to_string(threads));
+    const std::string r = run_paint(s.picture + " " + write_params(s, params, "p.json") + " " +
+                                    out + " -t " + std::to_string(threads));
     ASSERT_NE(r.find("exit 0"), std::string::npos) << r;
     runs.push_back(
         test::file_fingerprint(out) + " " +
@@ -306,30 +204,45 @@ TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
 
 TEST(PaintPanorama, BadInputIsNamed) {
   const Scene& s = scene();
-  const std::string good = write_params(s.params(), "good.json");
+  const std::string good = write_params(s, s.params(), "good.json");
   // The guides of a panorama rendered without --land-cover.
   std::string r = run_paint(s.dir + "/bare.png " + good + " " + s.dir + "/x.png");
   EXPECT_NE(r.find("bare-guides.tif: no band 'land_cover'"), std::string::npos) << r;
   EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
   nlohmann::json params = s.params();
   params.erase("painting_distance");
-  r = run_paint(s.picture + " " + write_params(params, "half.json") + " " + s.dir + "/x.png");
+  r = run_paint(s.picture + " " + write_params(s, params, "half.json") + " " + s.dir + "/x.png");
   EXPECT_NE(r.find("half.json: distance_range is given without painting_distance"),
             std::string::npos)
       << r;
   params.erase("distance_range");
   params["w_distance"] = 2;
-  r = run_paint(s.picture + " " + write_params(params, "weight.json") + " " + s.dir + "/x.png");
+  r = run_paint(s.picture + " " + write_params(s, params, "weight.json") + " " + s.dir + "/x.png");
   EXPECT_NE(r.find("weight.json: w_distance is given without distance_range"), std::string::npos)
       << r;
   params = s.params();
+  params["w_light"] = 1;
+  r = run_paint(s.picture + " " + write_params(s, params, "light.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("light.json: w_light is given without painting_light"), std::string::npos) << r;
+  params["painting_light"] = "rows";
+  r = run_paint(s.picture + " " + write_params(s, params, "rows.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("rows.json.painting_light: \"rows\" is no light"), std::string::npos) << r;
+  params["painting_light"] = s.dir + "/small-light.png";
+  write_image(std::vector<uint8_t>(10 * 10, 100), 10, 10, 1, {"PNG", {}},
+              s.dir + "/small-light.png");
+  r = run_paint(s.picture + " " + write_params(s, params, "size.json") + " " + s.dir + "/x.png");
+  EXPECT_NE(r.find("small-light.png: the light image is 10 x 10, the painting 128 x 96"),
+            std::string::npos)
+      << r;
+  EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  params = s.params();
   params["sky_class"] = 2;
   params["exclude_classes"] = {2};
-  r = run_paint(s.picture + " " + write_params(params, "sky.json") + " " + s.dir + "/x.png");
+  r = run_paint(s.picture + " " + write_params(s, params, "sky.json") + " " + s.dir + "/x.png");
   EXPECT_NE(r.find("sky.json.sky_class: class 2 is in exclude_classes"), std::string::npos) << r;
   params = s.params();
   params["w_distance"] = -1;
-  r = run_paint(s.picture + " " + write_params(params, "neg.json") + " " + s.dir + "/x.png");
+  r = run_paint(s.picture + " " + write_params(s, params, "neg.json") + " " + s.dir + "/x.png");
   EXPECT_NE(r.find("w_distance"), std::string::npos) << r;
   // Guides of another size than the picture's; guides rendered before the shading band.
   const std::vector<uint8_t> small(3 * 10 * 10, 100);
@@ -344,7 +257,7 @@ TEST(PaintPanorama, BadInputIsNamed) {
   EXPECT_NE(r.find("old-guides.tif: no band 'shading'"), std::string::npos) << r;
   params = s.params();
   params["shading"] = 0;  // without the blend, the old guides serve
-  r = run_paint(s.dir + "/old.png " + write_params(params, "flat.json") + " " + s.dir +
+  r = run_paint(s.dir + "/old.png " + write_params(s, params, "flat.json") + " " + s.dir +
                 "/old-painted.png");
   EXPECT_NE(r.find("exit 0"), std::string::npos) << r;
   r = run_paint(s.dir + "/missing.png " + good + " " + s.dir + "/x.png");

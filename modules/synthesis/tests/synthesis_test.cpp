@@ -52,6 +52,7 @@ TargetGuides guides(const PixelRect& rect) {
                  std::vector<uint8_t>(size_t(rect.width) * size_t(rect.height)),
                  std::vector<float>(size_t(rect.width) * size_t(rect.height)),
                  {},
+                 {},
                  {}};
   for (int64_t r = 0; r < rect.height; ++r)
     for (int64_t c = 0; c < rect.width; ++c) {

@@ -292,8 +292,9 @@ TEST_F(TurnedEdges, ABandBeyondTheGuidesHaloOrWithGuidesItDoesNotLayIsAnErrorNam
   const int halo = operator_->spec().halo;
   EXPECT_EQ(join_error(halo, false), "");
   const std::string distance = join_error(halo, true);
-  EXPECT_NE(distance.find(cell + "'s band along a turned edge lays no distance or depth guides"),
-            std::string::npos)
+  EXPECT_NE(
+      distance.find(cell + "'s band along a turned edge lays no distance, depth or light guides"),
+      std::string::npos)
       << distance;
 }
 
