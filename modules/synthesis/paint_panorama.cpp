@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "light_guide.h"
+#include "painting_guides.h"
 #include "transfer_params.h"
 
 namespace maquette::synthesis {
@@ -57,12 +58,11 @@ TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params
       const int64_t row = std::clamp<int64_t>(g.rect.row0 + r, 0, p.height - 1);
       const size_t i = size_t(row) * size_t(p.width) + size_t(col);
       const bool sky = is_sky(p, i);
-      g.labels[o] = sky ? params.sky_class.value_or(kUnknownLabel)
-                        : painting_class(params.classes, p.land_cover[i]);
+      g.labels[o] = picture_class(params.classes, params.sky_class, p.land_cover[i], p.distance[i]);
       if (params.altitude_range)
         g.altitude[o] = altitude_guide(p.altitude[i], *params.altitude_range);
       if (params.distance_range)
-        g.distance[o] = sky ? 1.0f : distance_guide(p.distance[i], *params.distance_range);
+        g.distance[o] = picture_distance(p.distance[i], *params.distance_range);
       if (params.silhouettes)
         g.depth[o] = sky ? std::numeric_limits<float>::infinity() : p.distance[i];
       if (!light.empty()) g.light[o] = light[i];

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -14,12 +15,24 @@ nlohmann::json paint_params_schema() {
   using json = nlohmann::json;
   json properties = exemplar_params_schema();
   properties.update(synthesis_params_schema());
+  // The painting's masks may come from its guides (painting_guides.h).
+  for (const auto& [field, band] : {std::pair{"labels", "land_cover through landcover_classes"},
+                                    std::pair{"painting_altitude", "altitude"}}) {
+    auto& description = properties[field]["description"];
+    description = description.get<std::string>() + "; or \"guides\": painting_guides' " + band;
+  }
   properties.update(
-      {{"painting_distance",
+      {{"painting_guides",
         {{"type", "string"},
          {"description",
-          "the painting's distance from its viewer: a grey image (its size, white far), or "
-          "\"rows\" (far at the top)"}}},
+          "the painting's guides: a float GeoTIFF of its size as render fit --panorama (or render "
+          "panorama) writes it, its bands by name; read for labels, painting_altitude and "
+          "painting_distance given as \"guides\""}}},
+       {"painting_distance",
+        {{"type", "string"},
+         {"description",
+          "the painting's distance from its viewer: a grey image (its size, white far), "
+          "\"rows\" (far at the top), or \"guides\": painting_guides' distance"}}},
        {"distance_range",
         {{"type", "array"},
          {"items", {{"type", "number"}}},
@@ -83,6 +96,20 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
     throw Error(source + ": w_distance is given without distance_range and painting_distance");
   if (raw.contains("w_light") && !j.contains("painting_light"))
     throw Error(source + ": w_light is given without painting_light");
+  // The painting's guides with a use, and a use with the guides: neither passes silently.
+  bool guided = false;
+  for (const char* field : {"labels", "painting_altitude", "painting_distance"})
+    if (j.contains(field) && j.at(field) == "guides") {
+      if (!j.contains("painting_guides"))
+        throw Error(source + "." + field +
+                    ": \"guides\" is given without painting_guides (the painting's guides file, "
+                    "as render fit --panorama writes it)");
+      guided = true;
+    }
+  if (j.contains("painting_guides") && !guided)
+    throw Error(source +
+                ".painting_guides: given, but none of labels, painting_altitude and "
+                "painting_distance is \"guides\": it would be read for nothing");
   if (j.contains("painting_light") && j.at("painting_light") == "rows")
     throw Error(source + ".painting_light: \"rows\" is no light: \"lightness\" or a grey image");
   if (j.contains("altitude_range")) p.altitude_range = range_param(j, "altitude_range", source);

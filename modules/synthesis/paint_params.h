@@ -34,7 +34,8 @@ nlohmann::json paint_params_schema();
 // The params from `raw` (read from `source`, which errors name): validated, defaults filled,
 // each guide's two halves given together (altitude_range with painting_altitude,
 // distance_range with painting_distance; w_distance not without them, w_light not without
-// painting_light, which is not "rows"), sky_class not excluded
+// painting_light, which is not "rows"; labels, painting_altitude and painting_distance
+// "guides" not without painting_guides, nor it without one of them), sky_class not excluded
 // and in no land-cover class's value of landcover_classes (the sky is a class of its own).
 PaintParams paint_params(const nlohmann::json& raw, const std::string& source);
 

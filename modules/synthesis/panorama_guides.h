@@ -1,6 +1,6 @@
 // A panorama drawn by `maquette render panorama` (formats/render/README.md) read back as the
 // target of the transfer in the picture: its colours and, from STEM-guides.tif beside it, the
-// guides by band name.
+// guides by band name (the reader also serves the painting's guides: painting_guides.h).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,22 @@ struct PanoramaPicture {
   // `shading` band: rendered before it existed).
   std::vector<float> land_cover, altitude, distance, shading;
 };
+
+// A band of a guides file, found by its name (its GDAL band description); `hint` is said when it
+// is missing and `required`.
+struct GuideBand {
+  std::string name, hint;
+  bool required = true;
+};
+
+// The bands `wanted` of the guides GeoTIFF `path` (float, NaN on the sky, as `render panorama`
+// and `render fit --panorama` write them), in their order: each width x height floats,
+// row-major, or empty (absent and not required). Throws maquette::Error naming `path` and what
+// is wrong: unreadable, not width x height pixels (then naming `of`, e.g. "the picture P.png",
+// and both sizes), a required band missing (its name and hint).
+std::vector<std::vector<float>> read_guide_bands(const std::string& path, int width, int height,
+                                                 const std::string& of,
+                                                 const std::vector<GuideBand>& wanted);
 
 // Reads PICTURE (8-bit RGB) and its guides (core/sibling_path.h: PICTURE's stem + "-guides.tif");
 // the `shading` band is required when `with_shading`, else read if present. Throws

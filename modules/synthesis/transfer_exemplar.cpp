@@ -18,6 +18,7 @@
 #include "harmonize.h"
 #include "light_guide.h"
 #include "painting.h"
+#include "painting_guides.h"
 #include "synthesis.h"
 #include "transfer_params.h"
 
@@ -54,7 +55,13 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
                 std::to_string(e.height) + " pixels, too small for exemplar_scale " +
                 std::to_string(scale) + ": " + std::to_string(kLevels) + " levels need at least " +
                 std::to_string(least) + " pixels a side");
-  if (fields.contains("labels")) {
+  // The masks made from the painting's guides (maquette-paint's painting_guides).
+  GuidedMasks guided;
+  if (fields.contains("painting_guides")) guided = guided_masks(fields, where, e.width, e.height);
+  if (!guided.labels.empty()) {
+    e.labels = std::move(guided.labels);
+    for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == kUnknownLabel;
+  } else if (fields.contains("labels")) {
     e.labels = read_class_image(fields.at("labels").get<std::string>(), e.width, e.height);
     for (const uint8_t l : e.labels)
       if (l == kUnknownLabel)
@@ -75,9 +82,13 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
     throw Error(where + ": every pixel of " + painting +
                 " is excluded (by its transparency, exclusion or exclude_classes " +
                 nlohmann::json(excluded_classes).dump() + "): nothing is left to copy");
-  if (fields.contains("painting_altitude"))
+  if (!guided.altitude.empty())
+    e.altitude = std::move(guided.altitude);
+  else if (fields.contains("painting_altitude"))
     e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude");
-  if (fields.contains("painting_distance"))
+  if (!guided.distance.empty())
+    e.distance = std::move(guided.distance);
+  else if (fields.contains("painting_distance"))
     e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance");
   return e;
 }
@@ -123,12 +134,13 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
 }
 
 // The files the analysis reads for `fields` (the params or one of "exemplars"): the guides'
-// keywords ("rows", "lightness") are no files.
+// keywords ("rows", "lightness", "guides" with painting_guides) are no files.
 void add_input_files(const nlohmann::json& fields, std::vector<std::string>& files) {
   for (const std::string field : {"painting", "labels", "exclusion", "painting_altitude",
-                                  "painting_distance", "painting_light"})
+                                  "painting_distance", "painting_light", "painting_guides"})
     if (fields.contains(field) &&
-        fields.at(field) != (field == "painting_light" ? "lightness" : "rows"))
+        fields.at(field) != (field == "painting_light" ? "lightness" : "rows") &&
+        !from_guides(fields, field))
       files.push_back(fields.at(field).get<std::string>());
 }
 
@@ -225,10 +237,12 @@ int32_t TransferExemplar::pixel_of(int exemplar, int col, int row) const {
 
 nlohmann::json exemplar_key_params(const nlohmann::json& params) {
   nlohmann::json key = nlohmann::json::object();
-  for (const char* field :
-       {"painting", "labels", "classes", "exclusion", "exclude_classes", "painting_altitude",
-        "painting_distance", "painting_light", "exemplar_scale", "k", "exemplars", "harmonize"})
+  for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
+                            "painting_altitude", "painting_distance", "painting_light",
+                            "painting_guides", "exemplar_scale", "k", "exemplars", "harmonize"})
     if (params.contains(field)) key[field] = params.at(field);
+  if (const nlohmann::json guided = guided_masks_key(params); !guided.empty())
+    key["guided"] = guided;
   // The first painting's labels depend on the table's groups only; a further painting's on the
   // table itself (each of its classes takes the first's class for the same target value).
   if (params.contains("landcover_classes"))

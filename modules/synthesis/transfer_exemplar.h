@@ -40,23 +40,26 @@ struct TransferExemplar {
 // From the validated params (README: synthesis.transfer): "painting", "labels" or "classes",
 // "exclusion", "exclude_classes", "painting_altitude", "painting_distance" and "painting_light"
 // (maquette-paint's; the light "lightness", light_guide.h, or a grey image, white light),
-// "exemplar_scale", "k", and "exemplars" with "harmonize" (README: "Several paintings"; each
-// further painting read as the first, its classes through further_classes, those it does not
-// name excluded, shrunk, harmonized to the first, then all combined). Throws maquette::Error
-// naming the op, field (exemplars[i].field for a further painting) and file at fault, among
-// them a painting whose every pixel is excluded and a class "landcover_classes" gives a target
-// value that has no pixel left to copy (it would be painted from any class).
-// Cached by params (exemplar_key_params) in the process, and on disk (exemplar_cache.h, keyed by
-// those and the bytes of exemplar_input_files) across processes and runs.
+// "painting_guides" (maquette-paint's: "labels", "painting_altitude" and "painting_distance" may
+// be "guides", made from its bands: painting_guides.h), "exemplar_scale", "k", and "exemplars" with
+// "harmonize" (README: "Several paintings"; each further painting read as the first, its classes
+// through further_classes, those it does not name excluded, shrunk, harmonized to the first, then
+// all combined). Throws maquette::Error naming the op, field (exemplars[i].field for a further
+// painting) and file at fault, among them a painting whose every pixel is excluded and a class
+// "landcover_classes" gives a target value that has no pixel left to copy (it would be painted from
+// any class). Cached by params (exemplar_key_params) in the process, and on disk (exemplar_cache.h,
+// keyed by those and the bytes of exemplar_input_files) across processes and runs.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
 
 // What of the params the analysis reads (not the synthesis's weights): the exemplar's fields,
 // and of "landcover_classes" the sets of classes taken as one (the whole table with
-// "exemplars"). Throws maquette::Error on a bad class table.
+// "exemplars"), and what the masks made from "painting_guides" are mapped with
+// (guided_masks_key). Throws maquette::Error on a bad class table.
 nlohmann::json exemplar_key_params(const nlohmann::json& params);
 
 // The files the analysis reads: each painting's image, class image or polygons, exclusion mask,
-// altitude, distance and light images ("rows" and "lightness" are no files).
+// altitude, distance and light images, and guides file ("rows", "lightness" and "guides" are no
+// files).
 std::vector<std::string> exemplar_input_files(const nlohmann::json& params);
 
 }  // namespace maquette::synthesis
