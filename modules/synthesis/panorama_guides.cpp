@@ -50,7 +50,9 @@ PanoramaPicture read_panorama(const std::string& picture, bool with_shading) {
       {{"land_cover", "render the panorama with --land-cover"},
        {"altitude", "not a panorama's guides?"},
        {"distance", "not a panorama's guides?"},
-       {"shading", "rendered before it existed: render the panorama again, or give \"shading\": 0",
+       {"shading",
+        "rendered before it existed: render the panorama again, or give \"shading\": 0 and no "
+        "\"w_light\"",
         with_shading}});
   p.land_cover = std::move(bands[0]);
   p.altitude = std::move(bands[1]);
