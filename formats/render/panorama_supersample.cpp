@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/srgb.h"
 #include "render/strip_drawer.h"
 
 namespace maquette {
@@ -34,10 +35,7 @@ struct LinearLight {
   std::array<float, 256> linear;
   std::array<float, 255> upper;  // upper[b]: between bytes b and b + 1
   LinearLight() {
-    auto to_linear = [](double v) {
-      v /= 255;
-      return float(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
-    };
+    auto to_linear = [](double v) { return float(srgb_to_linear(v / 255)); };
     for (int b = 0; b < 256; ++b) linear[size_t(b)] = to_linear(b);
     for (int b = 0; b < 255; ++b) upper[size_t(b)] = to_linear(b + 0.5);
   }

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/halo.h"
 #include "core/parallel_chunks.h"
+#include "core/srgb.h"
 #include "core/unfolded_faces.h"
 #include "plugins/vdb_content.h"
 #include "runtime/plugin.h"
@@ -57,8 +58,7 @@ Material water_material(const std::array<double, 3>& srgb) {
   Material m;
   m.name = "water";
   for (size_t k = 0; k < 3; ++k) {
-    const double c = srgb[k];  // IEC 61966-2-1's transfer function
-    m.base_colour[k] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    m.base_colour[k] = float(srgb_to_linear(srgb[k]));
   }
   m.metallic = 0;
   m.roughness = 0.2f;

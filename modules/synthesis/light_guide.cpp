@@ -27,18 +27,22 @@ std::vector<float> class_quantiles(const std::vector<float>& values,
   return out;
 }
 
-std::vector<float> painting_lightness(const Exemplar& e) {
-  std::vector<float> lightness(e.labels.size());
+std::vector<float> painting_light(const Exemplar& e, const std::vector<float>& values) {
   std::vector<uint8_t> allowed(e.labels.size());
-  for (size_t i = 0; i < lightness.size(); ++i) {
-    const float* rgb = &e.rgb[3 * i];
-    lightness[i] = float(texture::srgb_to_lab(rgb[0], rgb[1], rgb[2])[0]);
-    allowed[i] = !e.excluded[i];
-  }
-  std::vector<float> out = class_quantiles(lightness, e.labels, allowed);
+  for (size_t i = 0; i < allowed.size(); ++i) allowed[i] = !e.excluded[i];
+  std::vector<float> out = class_quantiles(values, e.labels, allowed);
   for (float& v : out)
     if (std::isnan(v)) v = 0.5f;
   return out;
+}
+
+std::vector<float> painting_lightness(const Exemplar& e) {
+  std::vector<float> lightness(e.labels.size());
+  for (size_t i = 0; i < lightness.size(); ++i) {
+    const float* rgb = &e.rgb[3 * i];
+    lightness[i] = float(texture::srgb_to_lab(rgb[0], rgb[1], rgb[2])[0]);
+  }
+  return lightness;
 }
 
 }  // namespace maquette::synthesis

@@ -21,10 +21,14 @@ std::vector<float> class_quantiles(const std::vector<float>& values,
                                    const std::vector<uint8_t>& classes,
                                    const std::vector<uint8_t>& counted);
 
-// The painting's light (maquette-paint's painting_light "lightness"): each pixel's CIE L*
-// (texture::srgb_to_lab) as its quantile (class_quantiles) among the allowed (not excluded)
-// pixels of its label; an excluded pixel takes the quantile its L* would have among them (never
-// copied, but the pyramid's filters read it), 0.5 when its label has no allowed pixel.
+// The painting's light from `values` (one a pixel of `e`: its CIE L* for painting_light
+// "lightness", painting_lightness; or a grey image's): each pixel's value as its quantile
+// (class_quantiles) among the allowed (not excluded) pixels of its label; an excluded pixel takes
+// the quantile its value would have among them (never copied, but the pyramid's filters read
+// it), 0.5 when its label has no allowed pixel or its value is NaN.
+std::vector<float> painting_light(const Exemplar& e, const std::vector<float>& values);
+
+// Each pixel's CIE L* (texture::srgb_to_lab): maquette-paint's painting_light "lightness".
 std::vector<float> painting_lightness(const Exemplar& e);
 
 }  // namespace maquette::synthesis

@@ -36,7 +36,10 @@ std::vector<float> panorama_light(const PanoramaPicture& p, const PaintParams& p
     terrain[i] = !is_sky(p, i);
     classes[i] = painting_class(params.classes, p.land_cover[i]);
   }
-  return class_quantiles(p.shading, classes, terrain);
+  std::vector<float> light = class_quantiles(p.shading, classes, terrain);
+  for (size_t i = 0; i < light.size(); ++i)  // the sky has no light, whatever its shading band
+    if (!terrain[i]) light[i] = std::numeric_limits<float>::quiet_NaN();
+  return light;
 }
 
 TargetGuides panorama_target(const PanoramaPicture& p, const PaintParams& params,

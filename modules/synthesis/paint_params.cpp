@@ -42,7 +42,8 @@ nlohmann::json paint_params_schema() {
         {{"type", "string"},
          {"description",
           "the painting's light: \"lightness\" (each pixel's L* as its quantile within its "
-          "class), or a grey image (its size, white light)"}}},
+          "class), or a grey image (its size, white light; its values as quantiles within each "
+          "class too)"}}},
        {"w_light",
         {{"type", "number"},
          {"minimum", 0},
@@ -136,7 +137,6 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
   p.tile = j.at("tile").get<int>();
   p.synthesis = synthesis_params(j);
   p.synthesis.w_distance = p.distance_range ? j.at("w_distance").get<double>() : 0.0;
-  p.light = j.contains("painting_light");
   p.synthesis.w_light = j.at("w_light").get<double>();
   p.synthesis.depth_break = j.at("depth_break").get<double>();
   return p;

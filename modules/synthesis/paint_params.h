@@ -22,7 +22,6 @@ struct PaintParams {
   std::optional<std::array<double, 2>> distance_range;  // metres from the eye -> 0..1 (log)
   std::optional<uint8_t> sky_class;  // the sky painted from this class, else kept
   bool silhouettes = true;           // coherence breaks where the depth jumps (depth_break)
-  bool light = false;                // the light guide (painting_light; w_light in synthesis)
   double shading = 0;                // strength of the blend with the render's shading, 0..1
   int tile = 256;                    // output pixels a side synthesized at once
   SynthesisParams synthesis;

@@ -166,7 +166,8 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   // within the classes the synthesis matches.
   if (params.contains("painting_light")) {
     const std::string light = params.at("painting_light").get<std::string>();
-    e.light = light == "lightness" ? painting_lightness(e) : painting_guide(light, e, "light");
+    e.light = painting_light(
+        e, light == "lightness" ? painting_lightness(e) : painting_guide(light, e, "light"));
   }
   std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
   for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));

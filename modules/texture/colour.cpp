@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/srgb.h"
+
 namespace maquette::texture {
 namespace {
 
 constexpr double kDeg = 180 / M_PI;
 
-double linear(double c) {
-  c /= 255;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+double linear(double c) { return srgb_to_linear(c / 255); }
 
 double lab_f(double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; }
 

@@ -145,7 +145,6 @@ TEST(Antialias, TheConesOutlineAgainstTheSkyCoversEachPixelsShare) {
             << ", p95 " << smooth.p95 << "\n";
   RecordProperty("mean_error_4x4", std::to_string(smooth.mean));
   EXPECT_GT(smooth.pixels, 100u);
-  EXPECT_EQ(aliased.pixels, smooth.pixels);
   EXPECT_LE(smooth.mean, 0.05);
   EXPECT_LE(smooth.p95, 0.12);
   EXPECT_GE(aliased.mean, 0.15);  // the measure sees the staircase
