@@ -122,7 +122,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option(
          "--antialias", o->job.antialias,
          "K, samples per pixel side (1 to 8): each pixel's colour the mean of K x K samples "
-         "over it (smooth skylines and ridges; K^2 times the colour's cost); the guides "
+         "over it (smooth skylines and ridges; K^2 samples drawn and shaded a pixel: a 4 MP "
+         "picture ~3 times as long with K 2); the guides "
          "stay the pixel centre's")
       ->capture_default_str();
   cmd->add_option("--strip-rows", o->job.strip_rows,
