@@ -8,6 +8,11 @@ function(maquette_target name)
   endif()
 endfunction()
 
+# Every GoogleTest executable's tests run with the analysed exemplars (modules/synthesis/
+# exemplar_cache.h) cached in the build, as scripts/test.sh sets it, so that a plain `ctest`
+# never writes into the user's cache either.
+set(MAQUETTE_TEST_ENVIRONMENT "MAQUETTE_CACHE_DIR=${PROJECT_BINARY_DIR}/test-exemplar-cache")
+
 # One line per module (OpenCV style): maquette_add_module(terrain SOURCES ... TESTS ...)
 # builds lib/maquette/libmaquette_<name>.so and a GoogleTest executable for its tests.
 function(maquette_add_module name)
@@ -29,7 +34,8 @@ function(maquette_add_module name)
       MAQUETTE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
     add_dependencies(${target}_test ${target} maquette_cli)
     maquette_target(${target}_test)
-    gtest_discover_tests(${target}_test DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(${target}_test DISCOVERY_TIMEOUT 60
+                         PROPERTIES ENVIRONMENT "${MAQUETTE_TEST_ENVIRONMENT}")
   endif()
 endfunction()
 
