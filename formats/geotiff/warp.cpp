@@ -40,7 +40,8 @@ class StripSampler {
         level_(level),
         spec_(spec),
         target_(target),
-        sampler_(store, grid, layer, level, !spec.nearest),
+        sampler_(store, grid, layer, level,
+                 spec.nearest ? LayerSampler::Read::kNearest : LayerSampler::Read::kBilinear),
         region_(cells) {
     std::sort(region_.begin(), region_.end());
     const OGRSpatialReference wgs84 = lonlat_crs();

@@ -1,6 +1,7 @@
 #include "image/layer_sampler.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -68,12 +69,49 @@ void bilinear(const Tile<float>& t, double u, double v, int channels, float* out
   }
 }
 
+// A quadratic B-spline's three weights at offset t in [-1/2, 1/2] from the middle sample.
+std::array<double, 3> quadratic_bspline(double t) {
+  return {0.5 * (0.5 - t) * (0.5 - t), 0.75 - t * t, 0.5 * (0.5 + t) * (0.5 + t)};
+}
+
+// Reads each channel of a halo tile at (u, v) as LayerSampler::Read::kSmoothLabels says: the value
+// of the 3 x 3 samples around the nearest whose quadratic B-spline weights sum highest.
+void smooth_labels(const Tile<float>& t, double u, double v, int channels, float* out) {
+  const auto [nc, nr] = nearest_sample(t, u, v);
+  const auto wx = quadratic_bspline(std::clamp(u - nc, -0.5, 0.5));
+  const auto wy = quadratic_bspline(std::clamp(v - nr, -0.5, 0.5));
+  // The nearest sample first, so that it wins ties; then the others in row order.
+  constexpr int kOrder[9][2] = {{1, 1}, {0, 0}, {1, 0}, {2, 0}, {0, 1},
+                                {2, 1}, {0, 2}, {1, 2}, {2, 2}};
+  for (int k = 0; k < channels; ++k) {
+    std::array<float, 9> value;
+    std::array<double, 9> weight;
+    int distinct = 0;
+    for (const auto& [i, j] : kOrder) {
+      const float label = t.at(nc + i - 1, nr + j - 1, k);
+      const double w = wx[size_t(i)] * wy[size_t(j)];
+      int d = 0;  // missing samples (NaN) are one value
+      while (d < distinct &&
+             !(value[size_t(d)] == label || (std::isnan(value[size_t(d)]) && std::isnan(label))))
+        ++d;
+      if (d == distinct) value[size_t(distinct)] = label, weight[size_t(distinct++)] = 0;
+      weight[size_t(d)] += w;
+    }
+    int best = 0;  // the first of the heaviest, in the order first met
+    for (int d = 1; d < distinct; ++d)
+      if (weight[size_t(d)] > weight[size_t(best)]) best = d;
+    out[k] = value[size_t(best)];
+  }
+}
+
 // Samples every channel of a halo tile at (u, v) into out[0 .. channels - 1].
-void sample_tile(const Tile<float>& t, double u, double v, int channels, bool bilinear_read,
+void sample_tile(const Tile<float>& t, double u, double v, int channels, LayerSampler::Read read,
                  float* out) {
-  if (!bilinear_read) {
+  if (read == LayerSampler::Read::kNearest) {
     const auto [nc, nr] = nearest_sample(t, u, v);
     for (int k = 0; k < channels; ++k) out[k] = t.at(nc, nr, k);
+  } else if (read == LayerSampler::Read::kSmoothLabels) {
+    smooth_labels(t, u, v, channels, out);
   } else if (channels == 3) {  // RGB imagery, the renderer's texture
     bilinear<3>(t, u, v, channels, out);
   } else {
@@ -184,11 +222,11 @@ const Tile<float>* LayerSampler::tile(Tiles& tiles, CellId cell) {
 }
 
 LayerSampler::LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
-                           bool bilinear)
-    : LayerSampler(std::make_shared<Tiles>(store, grid, layer, level, false), bilinear) {}
+                           Read read)
+    : LayerSampler(std::make_shared<Tiles>(store, grid, layer, level, false), read) {}
 
-LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear)
-    : tiles_(std::move(tiles)), layer_(tiles_->layer()), bilinear_(bilinear) {}
+LayerSampler::LayerSampler(std::shared_ptr<Tiles> tiles, Read read)
+    : tiles_(std::move(tiles)), layer_(tiles_->layer()), read_(read) {}
 
 int LayerSampler::level() const { return tiles_->level(); }
 
@@ -217,7 +255,7 @@ void LayerSampler::read(const Halo& h, PlanePoint q, float* out) const {
   const PlaneSquare& sq = h.square;
   const int n = layer_.tile_size;
   const double u = (q.x - sq.x_min) / sq.side * n - 0.5, v = (sq.y_max - q.y) / sq.side * n - 0.5;
-  sample_tile(*h.tile, u, v, layer_.channels, bilinear_, out);
+  sample_tile(*h.tile, u, v, layer_.channels, read_, out);
 }
 
 void LayerSampler::forget_unused() {

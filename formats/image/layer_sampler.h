@@ -1,7 +1,8 @@
 // A layer's tiles at one level sampled at points of the globe: the tile of the cell holding a
 // point, padded with a one-pixel halo from its neighbours (across faces too, core/halo.h), is
-// read bilinearly (or nearest), so sampling never stops at a tile edge or a face seam. Shared by
-// the quicklooks and the GeoTIFF exports to other CRSs.
+// read bilinearly, nearest, or as classes with smoothed boundaries, so sampling never stops at a
+// tile edge or a face seam. Shared by the quicklooks, the GeoTIFF exports to other CRSs and the
+// panorama's texture and guides.
 #pragma once
 
 #include <memory>
@@ -14,6 +15,25 @@ namespace maquette {
 
 class LayerSampler {
  public:
+  // How a point between samples is read (each channel on its own).
+  enum class Read {
+    kNearest,
+    // The four samples around, weighted bilinearly (missing ones left out).
+    kBilinear,
+    // A categorical layer's class with its boundaries smoothed: of the 3 x 3 samples around the
+    // nearest, the value whose samples weigh most under a quadratic B-spline (weights (1/2 - t)^2
+    // / 2, 3/4 - t^2, (1/2 + t)^2 / 2 along each axis, t the point's offset from the nearest
+    // sample, in samples; ties to the nearest sample's value, then to the value met first in row
+    // order). A class's area is then bounded by a smooth curve through its cells' staircase
+    // instead of the staircase, on the staircase's mean line: the generalization a painter's line
+    // makes of 30 m land-cover cells (tests/render/smooth_labels_test.cpp: turns of at most ~5
+    // degrees a twentieth of a cell where the staircase turns by right angles; up to 0.44 cell from
+    // a straight boundary's line, the staircase 0.68). Every value read is one of the 3 x 3
+    // samples (missing samples count as one value: NaN); a lone cell in another class shrinks to a
+    // rounded blob within it.
+    kSmoothLabels,
+  };
+
   // A layer's tiles at one level and their halos, each read and assembled once for all the
   // samplers that share them (one a thread: safe to share between threads).
   class Tiles;
@@ -28,10 +48,9 @@ class LayerSampler {
   static const Tile<float>* tile(Tiles& tiles, CellId cell);
 
   // Reads `layer`'s tiles at `level` (the layer's level, or a coarser one's overview tiles).
-  LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level,
-               bool bilinear);
+  LayerSampler(const Store& store, const Grid& grid, const LayerInfo& layer, int level, Read read);
   // Reads them from `tiles` (shared_tiles), shared with other samplers: the same values.
-  LayerSampler(std::shared_ptr<Tiles> tiles, bool bilinear);
+  LayerSampler(std::shared_ptr<Tiles> tiles, Read read);
 
   // Writes the layer's channels at `p` to out[0 .. channels - 1]; `cell` is the cell at the
   // sampler's level holding `p` (Grid::cells_from_points). Bilinear sampling leaves out missing
@@ -64,7 +83,7 @@ class LayerSampler {
 
   std::shared_ptr<Tiles> tiles_;
   const LayerInfo& layer_;
-  bool bilinear_;
+  Read read_;
   const Halo* last_ = nullptr;       // the cell of the last plane point sampled
   const Halo* last_cell_ = nullptr;  // the last cell sampled at a lon/lat
 };

@@ -55,7 +55,9 @@ PictureRaster mosaic_layer(const Store& store, const Grid& grid, const std::stri
   PictureRaster r;
   r.width = frame.width, r.height = frame.height, r.channels = info.channels, r.frame = frame;
   r.values.assign(size_t(r.width) * size_t(r.height) * size_t(r.channels), kNan);
-  LayerSampler sampler(store, grid, info, level, spec.bilinear);
+  LayerSampler sampler(
+      store, grid, info, level,
+      spec.bilinear ? LayerSampler::Read::kBilinear : LayerSampler::Read::kNearest);
   const FramePixels pixels(frame);
   std::vector<LonLat> points;
   std::vector<char> inside;

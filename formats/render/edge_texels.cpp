@@ -26,7 +26,7 @@ int64_t ring_order(int64_t dx, int64_t dy, int64_t r) {
 
 EdgeTexels::EdgeTexels(std::shared_ptr<LayerSampler::Tiles> tiles, const Grid& grid,
                        const LayerInfo& texture, int reach)
-    : sampler_(std::move(tiles), false),
+    : sampler_(std::move(tiles), LayerSampler::Read::kNearest),
       channels_(texture.channels),
       reach_(reach),
       tile_size_(texture.tile_size),

@@ -55,7 +55,7 @@ RawTile warped_tile(const Grid& grid, const LayerInfo& dem, CellId cell, const R
 
 void write_tiles(Store& store, const Grid& grid, const LayerInfo& dem, const GroundWarp& warp,
                  const std::string& out, int64_t run) {
-  LayerSampler sampler(store, grid, dem, dem.level, true);
+  LayerSampler sampler(store, grid, dem, dem.level, LayerSampler::Read::kBilinear);
   const std::vector<CellId> cells = store.tile_cells(dem.name);
   constexpr size_t kTilesPerBatch = 16;  // a commit costs about as much as a tile's work
   for (size_t begin = 0; begin < cells.size(); begin += kTilesPerBatch) {

@@ -159,9 +159,13 @@ struct PanoramaSamplers::Threads {
                                    : nullptr),
         samplers([this, &grid, look] {
           Samplers s;
-          for (const auto& tiles : textures) s.textures.emplace_back(tiles, true);
+          for (const auto& tiles : textures)
+            s.textures.emplace_back(tiles, LayerSampler::Read::kBilinear);
           if (look.texture) s.edge.emplace(textures.front(), grid, *look.texture, kTextureReach);
-          if (look.land_cover) s.land_cover.emplace(land_cover, false);
+          if (look.land_cover)
+            s.land_cover.emplace(land_cover, look.smooth_land_cover
+                                                 ? LayerSampler::Read::kSmoothLabels
+                                                 : LayerSampler::Read::kNearest);
           return s;
         }) {}
 

@@ -10,12 +10,13 @@
 // fraction 1 - exp(-distance / haze_distance) of the haze colour), over a sky graded from the haze
 // colour at the horizon to blue at 30 degrees up (render/sky.h). Guides per pixel: the DEM's
 // altitude, the distance from the eye, lon/lat, the land-cover class when a categorical layer is
-// given (nearest sample), the shading factor, and silhouettes: terrain pixels on the near side of
-// a depth discontinuity (a 4-neighbour is sky or more than `silhouette_jump` times farther). Rows
-// are shaded in parallel, each pixel from its own fragment: the same bits for any threads. A strip
-// of rows of the picture (render/panorama_strips.h) is shaded as the same rows of the whole
-// picture, given the whole picture's display stretch (its texels are those of the pixels on a grid
-// of stretch_step, gathered strip by strip).
+// given (the nearest sample's, or with its boundaries smoothed), the shading factor, and
+// silhouettes: terrain pixels on the near side of a depth discontinuity (a 4-neighbour is sky or
+// more than `silhouette_jump` times farther). Rows are shaded in parallel, each pixel from its own
+// fragment: the same bits for any threads. A strip of rows of the picture
+// (render/panorama_strips.h) is shaded as the same rows of the whole picture, given the whole
+// picture's display stretch (its texels are those of the pixels on a grid of stretch_step, gathered
+// strip by strip).
 #pragma once
 
 #include <array>
@@ -42,6 +43,10 @@ constexpr int kTextureReach = 32;
 struct PanoramaLook {
   const LayerInfo* texture = nullptr;     // uint8 imagery of 1, 3 or 4 channels, or none
   const LayerInfo* land_cover = nullptr;  // a categorical layer, or none
+  // The land-cover guide read with its classes' boundaries smoothed (image/layer_sampler.h
+  // Read::kSmoothLabels: curves through the cells' staircase, as a painter draws them), or as
+  // the nearest cell's class.
+  bool smooth_land_cover = false;
   // The texture with the quicklooks' display stretch (image/stretch.h: 2-98 % of each band over
   // the texels the picture shows), or as stored.
   bool stretch = true;

@@ -157,6 +157,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   PanoramaLook& look = prepared->look;
   look.texture = texture ? &*texture : nullptr;
   look.land_cover = land_cover ? &*land_cover : nullptr;
+  look.smooth_land_cover = job.smooth_land_cover;
   look.haze_distance = job.haze_distance;
   look.stretch = job.stretch;
   look.sun_azimuth = job.sun_azimuth;

@@ -16,6 +16,7 @@ namespace maquette {
 
 struct PanoramaJob {
   std::string dem, texture, land_cover;  // layer names; texture and land_cover may be ""
+  bool smooth_land_cover = false;        // render/panorama.h PanoramaLook::smooth_land_cover
   CameraSpec camera;                     // eye.height above the ellipsoid, or the terrain
   bool above_ground = false;             // camera.eye.height is above the terrain
   std::optional<GeodeticPoint> look_at;  // replaces camera.heading and pitch

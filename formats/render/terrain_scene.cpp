@@ -681,7 +681,7 @@ TerrainHeights::TerrainHeights(const Store& store, const Grid& grid, const Layer
                                double exaggeration, std::shared_ptr<const EllipsoidalHeights> datum)
     : grid_(grid),
       dem_(dem),
-      sampler_(store, grid, dem_, dem_.level, true),
+      sampler_(store, grid, dem_, dem_.level, LayerSampler::Read::kBilinear),
       heights_(given_or_made(std::move(datum), dem_)),
       exaggeration_(exaggeration) {
   check_exaggeration(exaggeration);

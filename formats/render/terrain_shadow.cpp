@@ -65,7 +65,7 @@ std::vector<uint8_t> shadow_vertices(std::shared_ptr<LayerSampler::Tiles> tiles,
   tbb::enumerable_thread_specific<std::optional<LayerSampler>> samplers;
   tbb::parallel_for(0, heights_grid.height, [&](int row) {
     auto& sampler = samplers.local();
-    if (!sampler) sampler.emplace(tiles, true);
+    if (!sampler) sampler.emplace(tiles, LayerSampler::Read::kBilinear);
     for (int col = 0; col < heights_grid.width; ++col) {
       const auto up = terrain_up(*sampler, grid, dem, heights, camera.frame(), exaggeration,
                                  west + col * spacing, north - row * spacing);

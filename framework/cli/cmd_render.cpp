@@ -53,6 +53,11 @@ void add_panorama_look_options(CLI::App* cmd, PanoramaJob& job) {
                     std::to_string(int(job.sun_altitude)));
   cmd->add_flag("--shadows", job.shadows,
                 "Cast shadows of the terrain under --sun (darkened, and a cast_shadow guide)");
+  cmd->add_flag("--smooth-land-cover", job.smooth_land_cover,
+                "The land_cover guide's class boundaries drawn as smooth curves through the "
+                "cells' staircase (each pixel the class weighing most under a quadratic B-spline "
+                "over the 3 x 3 cells around it), as a painter would draw them: for the transfer "
+                "of a painting into the picture (maquette-paint); default: the cell's class");
 }
 
 void add_render_command(CLI::App& app) {

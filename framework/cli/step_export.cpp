@@ -33,10 +33,11 @@ const std::map<std::string, std::vector<std::string>>& format_options() {
         {"glb", {"texture", "stretch", "draco", "*cells", "content", "dem"}},
         {"drc", {"*cells"}},
         {"panorama",
-         {"*dem",          "texture",      "stretch",       "land_cover",  "*camera",
-          "above_ground",  "heading",      "pitch",         "look_at",     "fov",
-          "size",          "exaggeration", "sample_pixels", "bend_radius", "bend_start",
-          "haze_distance", "sun",          "shadows",       "antialias",   "strip_rows"}}};
+         {"*dem",       "texture",       "stretch",      "land_cover",    "smooth_land_cover",
+          "*camera",    "above_ground",  "heading",      "pitch",         "look_at",
+          "fov",        "size",          "exaggeration", "sample_pixels", "bend_radius",
+          "bend_start", "haze_distance", "sun",          "shadows",       "antialias",
+          "strip_rows"}}};
     for (const char* f : {"tiles3d", "glb", "drc"})
       for (const std::string& option : terrain)
         if (!(f == std::string("glb") && option == "*dem")) o[f].push_back(option);
@@ -96,6 +97,8 @@ OperatorSpec export_spec() {
         {"content", array_schema("string", "tiles3d, glb: 3D content layers")},
         {"levels", typed("string", "tiles3d: cell levels A..B")},
         {"land_cover", typed("string", "panorama: categorical layer written as a guide")},
+        {"smooth_land_cover",
+         typed("boolean", "panorama: the land_cover guide's boundaries smoothed, not staircased")},
         {"camera", array_schema("number", "panorama: the eye, LON LAT HEIGHT")},
         {"above_ground", typed("boolean", "panorama: the camera's height is above the terrain")},
         {"heading", typed("number", "panorama: degrees clockwise from north")},
@@ -188,6 +191,7 @@ PanoramaJob panorama_of(const json& p) {
   read_param(p, "texture", job.texture);
   read_param(p, "stretch", job.stretch);
   read_param(p, "land_cover", job.land_cover);
+  read_param(p, "smooth_land_cover", job.smooth_land_cover);
   const auto camera = p.at("camera").get<std::vector<double>>();
   job.camera.eye = {camera[0], camera[1], camera[2]};
   read_param(p, "above_ground", job.above_ground);

@@ -100,7 +100,8 @@ TEST(LayerSampler, NearestAtATexelCentreIsTheStoredTexel) {
   const Imagery im;
   const auto store = Store::open(im.path, Store::Mode::ReadOnly);
   const Grid& grid = default_grid();
-  LayerSampler nearest(LayerSampler::shared_tiles(*store, grid, im.layer, kLevel), false);
+  LayerSampler nearest(LayerSampler::shared_tiles(*store, grid, im.layer, kLevel),
+                       LayerSampler::Read::kNearest);
   for (const CellId cell : im.cells)
     for (const test::TileSample& s : test::tile_samples(grid, cell, kSize)) {
       float at_plane[3], at_lonlat[3];
@@ -156,7 +157,7 @@ TEST(LayerSampler, BilinearLeavesOutMissingSamplesAsAnOracle) {
   // Counts the bands sampled by the samples weighed: four, fewer, none.
   using Kinds = std::array<size_t, 3>;
   auto expect_oracle = [&](const LayerInfo& layer, const Stored& stored, Kinds& kinds) {
-    LayerSampler sampler(*store, grid, layer, kLevel, true);
+    LayerSampler sampler(*store, grid, layer, kLevel, LayerSampler::Read::kBilinear);
     for (int row = 0; row < kSide; ++row) {
       sampler.start_run();
       for (int col = 0; col < kSide; ++col) {
@@ -229,7 +230,7 @@ TEST(LayerSampler, SharedTilesGiveEachSamplersOwnValuesAfterDroppingThem) {
   };
   Values own;
   tbb::task_arena(1).execute([&] {
-    LayerSampler s(*store, grid, layer, layer.level, true);
+    LayerSampler s(*store, grid, layer, layer.level, LayerSampler::Read::kBilinear);
     own = sample_rows(kSide, [&]() -> LayerSampler& { return s; });
   });
   // A point's value at its lon/lat (its cell given, the previous one's kept when the same) is its
@@ -251,7 +252,7 @@ TEST(LayerSampler, SharedTilesGiveEachSamplersOwnValuesAfterDroppingThem) {
   tbb::enumerable_thread_specific<std::optional<LayerSampler>> samplers;
   auto shared = [&]() -> LayerSampler& {
     auto& s = samplers.local();
-    if (!s) s.emplace(tiles, true);
+    if (!s) s.emplace(tiles, LayerSampler::Read::kBilinear);
     return *s;
   };
   auto expect_own = [&](const char* when) {

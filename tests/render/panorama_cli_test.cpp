@@ -325,7 +325,7 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const std::string options =
       "--look-at 10.15 45.15 700 --fov 40 --size 240 150 --exaggeration 1.5 --bend-radius 40000 "
       "--bend-start 2000 --haze-distance 30000 --sun 200 30 --shadows --land-cover lc "
-      "--no-stretch --antialias 2";
+      "--smooth-land-cover --no-stretch --antialias 2";
   ASSERT_EQ(run_maquette(f.render(f.dir + "/cmd.png", options)).exit_code, 0);
   auto pipeline = [&](const std::string& params) {
     std::ofstream(f.dir + "/pipeline.json")
@@ -338,7 +338,8 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   const auto r = pipeline(
       R"("look_at": [10.15, 45.15, 700], "fov": 40, "size": [240, 150], "exaggeration": 1.5,
          "bend_radius": 40000, "bend_start": 2000, "haze_distance": 30000, "sun": [200, 30],
-         "shadows": true, "land_cover": "lc", "stretch": false, "antialias": 2)");
+         "shadows": true, "land_cover": "lc", "smooth_land_cover": true, "stretch": false,
+         "antialias": 2)");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(f.dir + "/step/pano.png"), slurp(f.dir + "/cmd.png"));
   EXPECT_EQ(slurp(f.dir + "/step/pano-guides.tif"), slurp(f.dir + "/cmd-guides.tif"));
@@ -414,6 +415,61 @@ void expect_same_guides(const std::string& path, const std::string& reference,
     const auto x = band(*a, b), y = band(*e, b);
     EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0) << what << " " << b;
   }
+}
+
+// --smooth-land-cover changes the land_cover guide alone (the picture, silhouettes and every other
+// guide the same bytes) and only near the plateau's edge, a staircase of the grid's cells there (a
+// polar face's, turned to the meridians): away from it each pixel keeps the class at its lon/lat;
+// along it some pixels take the other class. The same bytes on one thread in strips of 13 rows.
+TEST(PanoramaCli, SmoothLandCoverRoundsOnlyTheClassesEdges) {
+  const Fixture& f = fixture();
+  GDALAllRegister();
+  // Down on the plateau's south-west corner from 4 km away, a cell of land cover ~8 pixels wide.
+  for (const auto& [name, options] :
+       {std::pair{"cells", ""},
+        {"smooth", " --smooth-land-cover"},
+        {"smooth-strips", " --smooth-land-cover -t 1 --strip-rows 13"}}) {
+    const auto r = run_maquette("render panorama " + f.store + " " + f.dir + "/" + name +
+                                ".png --dem dem --camera 10.11 45.10 4000 --look-at 10.12 45.12 "
+                                "700 --fov 20 --size 320 200 --land-cover lc" +
+                                options);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(slurp(f.dir + "/smooth.png"), slurp(f.dir + "/cells.png"));
+  EXPECT_EQ(slurp(f.dir + "/smooth-silhouettes.png"), slurp(f.dir + "/cells-silhouettes.png"));
+  expect_same_guides(f.dir + "/smooth-strips-guides.tif", f.dir + "/smooth-guides.tif",
+                     "strips of 13 rows, one thread");
+  std::unique_ptr<GDALDataset> cells(
+      GDALDataset::Open((f.dir + "/cells-guides.tif").c_str(), GDAL_OF_RASTER));
+  std::unique_ptr<GDALDataset> smooth(
+      GDALDataset::Open((f.dir + "/smooth-guides.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(cells && smooth);
+  for (const int b : {1, 2, 3, 4, 6}) {
+    const auto x = band(*smooth, b), y = band(*cells, b);
+    EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0) << b;
+  }
+  const auto lon = band(*cells, 3), lat = band(*cells, 4), before = band(*cells, 5),
+             after = band(*smooth, 5);
+  size_t away = 0, kept = 0, changed = 0, changed_near = 0;
+  for (size_t i = 0; i < lon.size(); ++i) {
+    if (std::isnan(lon[i])) {
+      EXPECT_TRUE(std::isnan(after[i])) << i;
+      continue;
+    }
+    EXPECT_TRUE(after[i] == 41 || after[i] == 52) << after[i];
+    // Two samples of the land cover (0.0005 degrees) and more from the plateau's edge.
+    const double margin = 0.001;
+    const bool near = on_plateau(lon[i] - margin, lat[i] - margin) !=
+                          on_plateau(lon[i] + margin, lat[i] + margin) ||
+                      on_plateau(lon[i] - margin, lat[i] + margin) !=
+                          on_plateau(lon[i] + margin, lat[i] - margin);
+    if (!near) ++away, kept += after[i] == land_cover(lon[i], lat[i]);
+    if (after[i] != before[i]) ++changed, changed_near += near;
+  }
+  EXPECT_EQ(kept, away);
+  EXPECT_GT(away, lon.size() / 2);
+  EXPECT_GT(changed, 20u);
+  EXPECT_EQ(changed_near, changed);
 }
 
 // Imagery over the west half of the DEM only (up to lon 10.15). Terrain within the reach past the
