@@ -308,12 +308,14 @@ TEST(PaintingFitCli, BentPaintingGuides) {
 }
 
 // --panorama's look is `render panorama`'s: --shadows adds the cast_shadow guide under --sun,
-// --haze-distance hazes the picture.
+// --haze-distance hazes the picture, --smooth-land-cover changes the land_cover guide along the
+// terraces' edges (a polar face's cells there: staircases) and not the picture.
 TEST(PaintingFitCli, PanoramaTakesTheLookOptions) {
   const Fixture& f = fixture();
   const std::string fit = "render fit " + f.store + " " + f.points + " " + f.dir +
                           "/look.json --dem dem --panorama " + f.dir;
-  ASSERT_EQ(run_maquette(fit + "/plain.png").exit_code, 0);
+  ASSERT_EQ(run_maquette(fit + "/plain.png --land-cover lc").exit_code, 0);
+  ASSERT_EQ(run_maquette(fit + "/smooth.png --land-cover lc --smooth-land-cover").exit_code, 0);
   ASSERT_EQ(run_maquette(fit + "/look.png --shadows --sun 200 20 --haze-distance 3000").exit_code,
             0);
   std::unique_ptr<GDALDataset> guides(
@@ -328,6 +330,24 @@ TEST(PaintingFitCli, PanoramaTakesTheLookOptions) {
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
   EXPECT_NE(bytes(f.dir + "/plain.png"), bytes(f.dir + "/look.png"));
+  EXPECT_EQ(bytes(f.dir + "/plain.png"), bytes(f.dir + "/smooth.png"));
+  auto land_cover = [](const std::string& path) {
+    std::unique_ptr<GDALDataset> g(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+    EXPECT_TRUE(g);
+    std::vector<double> v(size_t(kCamera.width) * size_t(kCamera.height));
+    if (!g) return v;
+    EXPECT_EQ(g->GetRasterBand(5)->RasterIO(GF_Read, 0, 0, kCamera.width, kCamera.height, v.data(),
+                                            kCamera.width, kCamera.height, GDT_Float64, 0, 0),
+              CE_None);
+    return v;
+  };
+  const auto cells = land_cover(f.dir + "/plain-guides.tif"),
+             smooth = land_cover(f.dir + "/smooth-guides.tif");
+  size_t changed = 0;
+  for (size_t i = 0; i < cells.size(); ++i)
+    changed += cells[i] != smooth[i] && !std::isnan(cells[i]);
+  EXPECT_GT(changed, 100u);
+  EXPECT_LT(changed, cells.size() / 20);
   const auto r = run_maquette(fit + "/low.png --shadows --sun 200 0");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("--sun altitude"), std::string::npos) << r.err;
