@@ -21,10 +21,11 @@ rm -f "$store"
 "$bin/maquette" ingest "$store" --layer rgb --as imagery --level 10 "$data/zion/landsat_rgb_b4b3b2_8bit.tif"
 "$bin/maquette" ingest "$store" --layer landcover --as landcover --level 10 "$data/zion/nlcd.tif"
 # The README's Zion panorama (docs/panorama-zion.png), twice the size; the land cover's class
-# boundaries drawn as curves through the 30 m cells' staircase, as a painter draws them.
+# boundaries drawn as curves through the 30 m cells' staircase, as a painter draws them; 3 x 3
+# samples a pixel, whose coverage guide anti-aliases the painted skyline too.
 "$bin/maquette" render panorama "$store" "$out/zion.png" --dem dem --texture rgb \
   --land-cover landcover --smooth-land-cover --camera -113.10 37.12 6500 \
-  --look-at -112.96 37.28 1400 --fov 50 --size 1600 940 --sun 225 40
+  --look-at -112.96 37.28 1400 --fov 50 --size 1600 940 --sun 225 40 --antialias 3
 # The painting's path in params.json is relative to the working directory.
 cd "$here/../.."
 "$bin/maquette-paint" "$out/zion.png" "$here/params.json" "$out/painted.png" ${threads:+-t "$threads"}

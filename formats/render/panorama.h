@@ -80,6 +80,10 @@ struct Panorama {
   // transfer in the picture blends its colours with it).
   FreshArray<float> shading;
   FreshArray<uint8_t> silhouette;  // 255 on a silhouette, 0 elsewhere
+  // With PanoramaLook::antialias K > 1 (render/panorama_supersample.h), the share of the pixel's
+  // K x K samples that see terrain, 0 to 1 (not NaN on the sky: a sky pixel beside the skyline
+  // has some); none otherwise.
+  FreshArray<float> coverage;
 
   // Pixel i's lon/lat in degrees (lon in [-180, 180]; NaN on the sky).
   LonLat lonlat(size_t i) const {

@@ -30,7 +30,7 @@ struct PanoramaWriter::Files {
   std::string out;
   int width = 0, height = 0;
   std::vector<uint8_t> rgb, silhouette;  // the whole picture's
-  bool land_cover = false, cast_shadow = false;
+  bool land_cover = false, cast_shadow = false, coverage = false;
   int64_t terrain_pixels = 0;  // written so far
   double nearest_terrain = INFINITY;
   OutputFile guides_file;
@@ -78,8 +78,9 @@ GuideBand guide_band(const char* name, const FreshArray<float>* values) {
 }
 
 // The guides written, in band order: the four always there, those computed, then the shading
-// (last, so that the earlier bands keep their numbers).
-std::vector<GuideBand> guide_bands(const Panorama* p, bool land_cover, bool cast_shadow) {
+// (so that the earlier bands keep their numbers) and, anti-aliased, the coverage.
+std::vector<GuideBand> guide_bands(const Panorama* p, bool land_cover, bool cast_shadow,
+                                   bool coverage) {
   std::vector<GuideBand> bands = {guide_band("altitude", p ? &p->altitude : nullptr),
                                   guide_band("distance", p ? &p->distance : nullptr),
                                   {"lon", nullptr, 0},
@@ -87,20 +88,22 @@ std::vector<GuideBand> guide_bands(const Panorama* p, bool land_cover, bool cast
   if (land_cover) bands.push_back(guide_band("land_cover", p ? &p->land_cover : nullptr));
   if (cast_shadow) bands.push_back(guide_band("cast_shadow", p ? &p->cast_shadow : nullptr));
   bands.push_back(guide_band("shading", p ? &p->shading : nullptr));
+  if (coverage) bands.push_back(guide_band("coverage", p ? &p->coverage : nullptr));
   return bands;
 }
 
 }  // namespace
 
 PanoramaWriter::PanoramaWriter(const std::string& out, int width, int height, bool land_cover,
-                               bool cast_shadow)
+                               bool cast_shadow, bool coverage)
     : files_(std::make_unique<Files>(out, width, height)) {
   Files& f = *files_;
   f.land_cover = land_cover;
   f.cast_shadow = cast_shadow;
+  f.coverage = coverage;
   f.guides_file.write([&] {
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
-    const auto bands = guide_bands(nullptr, land_cover, cast_shadow);
+    const auto bands = guide_bands(nullptr, land_cover, cast_shadow, coverage);
     // DEFLATE at its fastest level: at GDAL's default (6) the guides' compression took ~4.4 s
     // of a 4 MP picture's ~6 s, ten times its rendering; level 1 takes ~1.5 s for a file 3.6 %
     // larger (benchmarks/README.md, "The command's files"). Its blocks compressed by as many
@@ -139,7 +142,7 @@ void PanoramaWriter::write(const Panorama& strip, int first, int last) {
       ++f.terrain_pixels;
       f.nearest_terrain = std::min(f.nearest_terrain, d);
     }
-  const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow);
+  const auto bands = guide_bands(&strip, f.land_cover, f.cast_shadow, f.coverage);
   f.guides_file.write([&] {
     for (const GuideBand& band : bands) {
       GDALRasterBand* out = f.guides->GetRasterBand(int(&band - bands.data()) + 1);
@@ -183,7 +186,8 @@ void PanoramaWriter::commit() {
 }
 
 void write_panorama(const Panorama& p, const std::string& out) {
-  PanoramaWriter writer(out, p.width, p.height, !p.land_cover.empty(), !p.cast_shadow.empty());
+  PanoramaWriter writer(out, p.width, p.height, !p.land_cover.empty(), !p.cast_shadow.empty(),
+                        !p.coverage.empty());
   writer.write(p, 0, p.height);
   writer.commit();
 }
@@ -241,7 +245,7 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                  nullptr);
     samplers.forget_unused();
     colour_panorama(camera, look, stretch, texels, strip);
-    if (samples) samples->colour(stretch, first, last, strip);
+    if (samples) samples->colour(stretch, top, bottom, strip);  // the margin too: every coverage
     writer.write(strip, first, last);
   }
 }
@@ -264,7 +268,7 @@ void render_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                    const PinholeCamera& camera, const PanoramaLook& look, int strip_rows,
                    const std::string& out) {
   PanoramaWriter writer(out, camera.spec().width, camera.spec().height, look.land_cover != nullptr,
-                        look.shadow != nullptr);
+                        look.shadow != nullptr, look.antialias > 1);
   draw_strips(store, grid, scene, camera, look, strip_rows, writer);
   // Nothing of the terrain drawn, though tiles were in or near the view: an all-sky picture, exit
   // 0.

@@ -93,7 +93,14 @@ void Supersampler::colour(const BandStretch& stretch, int first, int last, Panor
     tbb::parallel_for(top, bottom, [&](int row) {
       uint8_t* out = &p.rgb[3 * size_t(row - p.first_row) * size_t(w)];
       const uint8_t* in = &s.strip.rgb[3 * size_t(k * (row - top)) * size_t(sw)];
-      for (int col = 0; col < w; ++col)
+      const float* distance = &s.strip.distance[size_t(k * (row - top)) * size_t(sw)];
+      float* coverage = &p.coverage[size_t(row - p.first_row) * size_t(w)];
+      for (int col = 0; col < w; ++col) {
+        int terrain = 0;
+        for (int j = 0; j < k; ++j)
+          for (int i = 0; i < k; ++i)
+            terrain += !std::isnan(distance[size_t(j) * size_t(sw) + size_t(k * col + i)]);
+        coverage[col] = float(terrain) / float(k * k);
         for (int band = 0; band < 3; ++band) {
           float sum = 0;
           for (int j = 0; j < k; ++j)
@@ -102,6 +109,7 @@ void Supersampler::colour(const BandStretch& stretch, int first, int last, Panor
                                      size_t(band)]];
           out[3 * size_t(col) + size_t(band)] = light.byte(sum / float(k * k));
         }
+      }
     });
   }
 }

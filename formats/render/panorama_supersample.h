@@ -31,7 +31,8 @@ class Supersampler {
   Supersampler& operator=(const Supersampler&) = delete;
 
   // Replaces the colours of the picture's rows [first, last) in `p` (which holds them) with the
-  // means of their samples, coloured with `stretch`, the picture's display stretch.
+  // means of their samples, coloured with `stretch`, the picture's display stretch, and writes
+  // their coverage (Panorama::coverage: the share of their samples that see terrain).
   void colour(const BandStretch& stretch, int first, int last, Panorama& p);
 
  private:

@@ -129,7 +129,8 @@ void add_render_command(CLI::App& app) {
          "K, samples per pixel side (1 to 8): each pixel's colour the mean of K x K samples "
          "over it (smooth skylines and ridges; K^2 samples drawn and shaded a pixel: a 4 MP "
          "picture ~3 times as long with K 2); the guides "
-         "stay the pixel centre's")
+         "stay the pixel centre's, and gain a last band, coverage: the share of the pixel's "
+         "samples that see terrain (maquette-paint anti-aliases its skyline with it)")
       ->capture_default_str();
   cmd->add_option("--strip-rows", o->job.strip_rows,
                   "Draw and write the picture in strips of this many rows, for big pictures in "

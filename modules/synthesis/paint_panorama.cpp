@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "light_guide.h"
 #include "painting_guides.h"
+#include "skyline_blend.h"
 #include "transfer_params.h"
 
 namespace maquette::synthesis {
@@ -113,6 +114,7 @@ PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar&
     out.source[2 * i] = float(int(s) % e.width * exemplar.scale);
     out.source[2 * i + 1] = float(int(s) / e.width * exemplar.scale);
   });
+  blend_skyline(p, params.sky_class.has_value(), out);
   return out;
 }
 

@@ -53,11 +53,13 @@ PanoramaPicture read_panorama(const std::string& picture, bool with_shading) {
        {"shading",
         "rendered before it existed: render the panorama again, or give \"shading\": 0 and no "
         "\"w_light\"",
-        with_shading}});
+        with_shading},
+       {"coverage", "", false}});
   p.land_cover = std::move(bands[0]);
   p.altitude = std::move(bands[1]);
   p.distance = std::move(bands[2]);
   p.shading = std::move(bands[3]);
+  p.coverage = std::move(bands[4]);
   return p;
 }
 

@@ -16,6 +16,9 @@ struct PanoramaPicture {
   // (metres), and the shading factor the render applied (0.3 to 1; empty when the guides have no
   // `shading` band: rendered before it existed).
   std::vector<float> land_cover, altitude, distance, shading;
+  // Rendered with --antialias: the share of each pixel's samples that see terrain (0 to 1, not
+  // NaN on the sky); else empty.
+  std::vector<float> coverage;
 };
 
 // A band of a guides file, found by its name (its GDAL band description); `hint` is said when it
@@ -35,7 +38,8 @@ std::vector<std::vector<float>> read_guide_bands(const std::string& path, int wi
                                                  const std::vector<GuideBand>& wanted);
 
 // Reads PICTURE (8-bit RGB) and its guides (core/sibling_path.h: PICTURE's stem + "-guides.tif");
-// the `shading` band is required when `with_shading`, else read if present. Throws
+// the `shading` band is required when `with_shading`, else read if present; `coverage` read if
+// present. Throws
 // maquette::Error naming the file and what is wrong: unreadable, a band missing (land_cover:
 // render with --land-cover), another size.
 PanoramaPicture read_panorama(const std::string& picture, bool with_shading);

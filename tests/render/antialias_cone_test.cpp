@@ -8,13 +8,16 @@
 // from the cone) and the cone's beside it (two pixels inside along the row): the mix's weight is
 // the coverage the picture shows. On the outline's pixels (coverage 0.05 to 0.95, rows from 12
 // below the apex to 2 above the horizon) that weight is within a small error of the analytic
-// coverage with 4 x 4 samples, and is 0 or 1 (an error of a quarter on average) with one. The
-// guides are the same bytes with and without the samples.
+// coverage with 4 x 4 samples, and is 0 or 1 (an error of a quarter on average) with one. So is
+// the coverage guide (the share of the pixel's samples that see terrain), and it is 0 on the sky
+// and 1 on the cone away from the outline. The other guides are the same bytes with and without
+// the samples.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -40,6 +43,21 @@ std::vector<uint8_t> read_rgb(const std::string& path) {
               CE_None);
   }
   return rgb;
+}
+
+// The guides' band `name` of `path` (a guides GeoTIFF of the picture's size), or empty.
+std::vector<double> guide(const std::string& path, const std::string& name) {
+  std::unique_ptr<GDALDataset> d(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  EXPECT_TRUE(d) << path;
+  for (int b = 1; d && b <= d->GetRasterCount(); ++b) {
+    if (d->GetRasterBand(b)->GetDescription() != name) continue;
+    std::vector<double> v(size_t(kWidth) * kHeight);
+    EXPECT_EQ(d->GetRasterBand(b)->RasterIO(GF_Read, 0, 0, kWidth, kHeight, v.data(), kWidth,
+                                            kHeight, GDT_Float64, 0, 0),
+              CE_None);
+    return v;
+  }
+  return {};
 }
 
 std::string file_bytes(const std::string& path) {
@@ -76,7 +94,14 @@ TEST(Antialias, TheConesOutlineAgainstTheSkyCoversEachPixelsShare) {
     return out;
   };
   const std::string one = render(1), four = render(4);
-  EXPECT_EQ(file_bytes(dir + "/aa1-guides.tif"), file_bytes(dir + "/aa4-guides.tif"));
+  for (const char* name : {"altitude", "distance", "lon", "lat", "shading"}) {
+    const auto a = guide(dir + "/aa1-guides.tif", name), b = guide(dir + "/aa4-guides.tif", name);
+    ASSERT_EQ(a.size(), b.size()) << name;
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0) << name;
+  }
+  EXPECT_TRUE(guide(dir + "/aa1-guides.tif", "coverage").empty());
+  const std::vector<double> covered = guide(dir + "/aa4-guides.tif", "coverage");
+  ASSERT_EQ(covered.size(), size_t(kWidth) * kHeight);
   EXPECT_EQ(file_bytes(dir + "/aa1-silhouettes.png"), file_bytes(dir + "/aa4-silhouettes.png"));
 
   // The outline: the two generators, and a point inside both (on the axis, half way up).
@@ -140,6 +165,44 @@ TEST(Antialias, TheConesOutlineAgainstTheSkyCoversEachPixelsShare) {
     return out;
   };
   const CoverageErrors aliased = errors(read_rgb(one)), smooth = errors(read_rgb(four));
+
+  // The coverage guide against the analytic coverage on the same outline pixels; 0 where the
+  // pixel and its 8 neighbours see the sky at their centres, 1 where they all see terrain (the
+  // cone is convex: nothing thinner than a pixel).
+  const std::vector<double> distance = guide(dir + "/aa4-guides.tif", "distance");
+  size_t sky = 0, ground = 0;
+  for (int row = 1; row + 1 < kHeight; ++row)
+    for (int col = 1; col + 1 < kWidth; ++col) {
+      int terrain = 0;
+      for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i)
+          terrain += !std::isnan(distance[size_t(row + j) * kWidth + size_t(col + i)]);
+      const double c = covered[size_t(row) * kWidth + size_t(col)];
+      if (terrain == 0) {
+        ++sky;
+        EXPECT_EQ(c, 0) << col << ", " << row;
+      } else if (terrain == 9) {
+        ++ground;
+        EXPECT_EQ(c, 1) << col << ", " << row;
+      }
+    }
+  EXPECT_GT(sky, size_t(kWidth) * 50);
+  EXPECT_GT(ground, size_t(kWidth) * 50);
+  std::vector<double> guide_errors;
+  for (int row = int(apex[1]) + 12; row < int(horizon) - 2; ++row)
+    for (int col = 4; col < kWidth - 4; ++col) {
+      const double a = coverage(col, row);
+      if (a < 0.05 || a > 0.95 || coverage(col < apex[0] ? col + 2 : col - 2, row) < 1) continue;
+      guide_errors.push_back(std::abs(covered[size_t(row) * kWidth + size_t(col)] - a));
+    }
+  ASSERT_GT(guide_errors.size(), 100u);
+  double guide_mean = 0;
+  for (const double x : guide_errors) guide_mean += x / double(guide_errors.size());
+  std::sort(guide_errors.begin(), guide_errors.end());
+  const double guide_p95 = guide_errors[size_t(0.95 * double(guide_errors.size() - 1))];
+  std::cout << "coverage guide error, 4 x 4: mean " << guide_mean << ", p95 " << guide_p95 << "\n";
+  EXPECT_LE(guide_mean, 0.05);
+  EXPECT_LE(guide_p95, 0.12);
   std::cout << "outline pixels " << smooth.pixels << "; coverage error, 1 sample: mean "
             << aliased.mean << ", p95 " << aliased.p95 << "; 4 x 4: mean " << smooth.mean
             << ", p95 " << smooth.p95 << "\n";

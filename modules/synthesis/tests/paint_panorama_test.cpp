@@ -4,7 +4,8 @@
 // (then it is painted from that class); the program's files are byte-identical for 1 and 2
 // threads and tiles of 64 and 256 pixels (with the light guide too); raising w_distance lowers
 // the distance mismatch; no coherent copy across a depth break with silhouettes on (counted,
-// against the same run without); the shading blend as stated; bad input named.
+// against the same run without); the shading blend as stated; the skyline blended by the
+// render's coverage as stated; bad input named.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/srgb.h"
 #include "panorama_scene.h"
 
 namespace maquette::synthesis {
@@ -178,6 +180,67 @@ TEST(PaintPanorama, ShadingBlendsAsStated) {
     ++checked;
   }
   EXPECT_GT(checked, 30000u);
+}
+
+// A picture rendered with --antialias 3 (its coverage guide): the painted skyline's pixels
+// (coverage strictly between 0 and 1) are their terrain's and sky's painted colours mixed in linear
+// light by the coverage (skyline_blend.h, worked here from the same picture painted without the
+// coverage), every other pixel and every source unchanged; with the sky painted and with the
+// render's sky kept.
+TEST(PaintPanorama, TheSkylineBlendsByCoverage) {
+  const Scene& s = scene();
+  const std::string aa = s.dir + "/aa.png";
+  const auto r = test::run_maquette("render panorama " + s.dir + "/s.mqt " + aa +
+                                    " --dem dem --land-cover lc --camera 10.15 45.02 1500 "
+                                    "--heading 0 --pitch -6 --fov 50 --size 320 200 --antialias 3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const PanoramaPicture picture = read_panorama(aa, true);
+  ASSERT_EQ(picture.coverage.size(), picture.distance.size());
+  PanoramaPicture without = picture;
+  without.coverage.clear();
+  auto linear = [](uint8_t b) { return srgb_to_linear(b / 255.0); };
+  for (const bool sky_painted : {false, true}) {
+    SCOPED_TRACE(sky_painted ? "sky painted" : "the render's sky");
+    nlohmann::json raw = s.params();
+    if (sky_painted) raw["sky_class"] = 2;
+    const PaintParams params = paint_params(raw, "params.json");
+    const auto exemplar = transfer_exemplar(params.exemplar);
+    const PaintedPanorama plain = paint_panorama(without, *exemplar, params);
+    const PaintedPanorama blended = paint_panorama(picture, *exemplar, params);
+    ASSERT_EQ(std::memcmp(plain.source.data(), blended.source.data(), 4 * plain.source.size()), 0);
+    const int w = picture.width;
+    auto sky = [&](size_t i) { return std::isnan(picture.distance[i]); };
+    size_t edge = 0, mixed = 0;
+    for (int row = 0; row < picture.height; ++row)
+      for (int col = 0; col < w; ++col) {
+        const size_t i = size_t(row) * size_t(w) + size_t(col);
+        const float c = picture.coverage[i];
+        if (c == 0 || c == 1) {
+          for (size_t k = 0; k < 3; ++k) ASSERT_EQ(blended.rgb[3 * i + k], plain.rgb[3 * i + k]);
+          continue;
+        }
+        ++edge;
+        // The terrain's and the sky's colours: its own, or its first neighbour's (above, left,
+        // right, below, diagonals) of the kind.
+        long terrain = sky(i) ? -1 : long(i), open_sky = sky(i) && sky_painted ? long(i) : -1;
+        for (const auto& [dc, dr] :
+             {std::pair{0, -1}, {-1, 0}, {1, 0}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}}) {
+          if (col + dc < 0 || col + dc >= w || row + dr < 0 || row + dr >= picture.height) continue;
+          const size_t j = size_t(row + dr) * size_t(w) + size_t(col + dc);
+          if (terrain < 0 && !sky(j)) terrain = long(j);
+          if (open_sky < 0 && picture.coverage[j] == 0) open_sky = long(j);
+        }
+        if (terrain < 0 || open_sky < 0) continue;
+        ++mixed;
+        for (size_t k = 0; k < 3; ++k) {
+          const double want = c * linear(plain.rgb[3 * size_t(terrain) + k]) +
+                              (1 - c) * linear(plain.rgb[3 * size_t(open_sky) + k]);
+          EXPECT_NEAR(linear(blended.rgb[3 * i + k]), want, 0.005) << col << ", " << row;
+        }
+      }
+    EXPECT_GT(edge, 150u);  // the far horizon (a level line: 215 pixels in all here)
+    EXPECT_GT(mixed, edge * 9 / 10);
+  }
 }
 
 TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
