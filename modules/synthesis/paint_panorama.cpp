@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "light_guide.h"
+#include "painted_haze.h"
 #include "painting_guides.h"
 #include "skyline_blend.h"
 #include "transfer_params.h"
@@ -114,6 +115,8 @@ PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar&
     out.source[2 * i] = float(int(s) % e.width * exemplar.scale);
     out.source[2 * i + 1] = float(int(s) / e.width * exemplar.scale);
   });
+  if (params.haze_distance > 0)
+    add_haze(p, params.haze_distance, params.haze_color, params.source, out);
   blend_skyline(p, params.sky_class.has_value(), out);
   return out;
 }

@@ -44,7 +44,8 @@ TargetGuides panorama_target(const PanoramaPicture& picture, const PaintParams& 
 // (1 - shading) + shading * s / s_median, s the render's shading factor and s_median its median
 // over the terrain: ground lit as the picture's typical ground keeps the painting's colour,
 // slopes turned from the sun darken, those facing it brighten (paper 000's blend with a terrain
-// shading). With w_light > 0 the light guide is the target's too (panorama_light). A picture
+// shading). With w_light > 0 the light guide is the target's too (panorama_light); with
+// haze_distance, aerial perspective (painted_haze.h), after the shading blend. A picture
 // rendered with --antialias (its coverage guide) gets its skyline anti-aliased in turn
 // (skyline_blend.h).
 // Precondition: the picture has a shading band when params.shading > 0 or w_light > 0

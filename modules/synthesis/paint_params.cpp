@@ -71,6 +71,19 @@ nlohmann::json paint_params_schema() {
          {"maximum", 1},
          {"default", 0.7},
          {"description", "strength of the blend with the render's shading"}}},
+       {"haze_distance",
+        {{"type", "number"},
+         {"minimum", 0},
+         {"default", 0.0},
+         {"description",
+          "aerial perspective: metres at which the painted terrain is 63 % haze (1 - "
+          "exp(-distance / haze_distance), mixed in linear light); 0: none"}}},
+       {"haze_color",
+        {{"type", "array"},
+         {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 255}}},
+         {"description",
+          "the haze's colour, 8-bit sRGB [r, g, b] (with haze_distance; default: the mean, in "
+          "linear light, of the painted picture's sky)"}}},
        {"tile",
         {{"type", "integer"},
          {"minimum", 16},
@@ -85,6 +98,7 @@ nlohmann::json paint_params_schema() {
 
 PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
   PaintParams p;
+  p.source = source;
   p.exemplar = validate_params(paint_params_schema(), raw, source);
   const nlohmann::json& j = p.exemplar;
   p.classes = class_table(j.at("landcover_classes"), source);
@@ -134,6 +148,16 @@ PaintParams paint_params(const nlohmann::json& raw, const std::string& source) {
   }
   p.silhouettes = j.at("silhouettes").get<bool>();
   p.shading = j.at("shading").get<double>();
+  p.haze_distance = j.at("haze_distance").get<double>();
+  if (j.contains("haze_color")) {
+    if (p.haze_distance == 0)
+      throw Error(source + ".haze_color: given without haze_distance: it would colour nothing");
+    const auto c = j.at("haze_color").get<std::vector<int>>();
+    if (c.size() != 3)
+      throw Error(source + ".haze_color: " + j.at("haze_color").dump() +
+                  " is not 3 numbers (8-bit red, green, blue)");
+    p.haze_color = std::array<uint8_t, 3>{uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2])};
+  }
   p.tile = j.at("tile").get<int>();
   p.synthesis = synthesis_params(j);
   p.synthesis.w_distance = p.distance_range ? j.at("w_distance").get<double>() : 0.0;

@@ -16,6 +16,7 @@
 namespace maquette::synthesis {
 
 struct PaintParams {
+  std::string source;                                   // the params' file, which errors name
   nlohmann::json exemplar;                              // the validated params: transfer_exemplar's
   std::map<int, uint8_t> classes;                       // land-cover value -> painting class
   std::optional<std::array<double, 2>> altitude_range;  // metres -> 0..1
@@ -23,7 +24,9 @@ struct PaintParams {
   std::optional<uint8_t> sky_class;  // the sky painted from this class, else kept
   bool silhouettes = true;           // coherence breaks where the depth jumps (depth_break)
   double shading = 0;                // strength of the blend with the render's shading, 0..1
-  int tile = 256;                    // output pixels a side synthesized at once
+  double haze_distance = 0;          // metres of aerial perspective (painted_haze.h); 0: none
+  std::optional<std::array<uint8_t, 3>> haze_color;  // sRGB; none: the painted sky's mean
+  int tile = 256;                                    // output pixels a side synthesized at once
   SynthesisParams synthesis;
 };
 
@@ -35,7 +38,8 @@ nlohmann::json paint_params_schema();
 // distance_range with painting_distance; w_distance not without them, w_light not without
 // painting_light, which is not "rows"; labels, painting_altitude and painting_distance
 // "guides" not without painting_guides, nor it without one of them), sky_class not excluded
-// and in no land-cover class's value of landcover_classes (the sky is a class of its own).
+// and in no land-cover class's value of landcover_classes (the sky is a class of its own),
+// haze_color not without haze_distance.
 PaintParams paint_params(const nlohmann::json& raw, const std::string& source);
 
 // Distance from the eye mapped onto the range logarithmically (perspective shrinks the far

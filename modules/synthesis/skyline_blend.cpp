@@ -2,7 +2,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -28,12 +27,6 @@ std::optional<size_t> first_neighbour(const PanoramaPicture& p, int col, int row
   return std::nullopt;
 }
 
-// A linear value back to the nearest sRGB byte.
-uint8_t srgb_byte(double linear) {
-  const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-  return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-}
-
 }  // namespace
 
 void blend_skyline(const PanoramaPicture& p, bool sky_painted, PaintedPanorama& painted) {
@@ -56,7 +49,7 @@ void blend_skyline(const PanoramaPicture& p, bool sky_painted, PaintedPanorama& 
       for (size_t k = 0; k < 3; ++k) {
         const double t = srgb_to_linear(before[3 * *terrain + k] / 255.0);
         const double s = srgb_to_linear(before[3 * *open_sky + k] / 255.0);
-        painted.rgb[3 * i + k] = srgb_byte(c * t + (1 - c) * s);
+        painted.rgb[3 * i + k] = linear_to_srgb_byte(c * t + (1 - c) * s);
       }
     }
   });

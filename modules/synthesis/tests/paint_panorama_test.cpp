@@ -5,9 +5,10 @@
 // threads and tiles of 64 and 256 pixels (with the light guide too); raising w_distance lowers
 // the distance mismatch; no coherent copy across a depth break with silhouettes on (counted,
 // against the same run without); the shading blend as stated; the skyline blended by the
-// render's coverage as stated; bad input named.
+// render's coverage as stated; the haze by distance as stated; bad input named.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -243,12 +244,101 @@ TEST(PaintPanorama, TheSkylineBlendsByCoverage) {
   }
 }
 
+// haze_distance: each terrain pixel mixed in linear light with the haze's colour by 1 -
+// exp(-d / haze_distance), d its distance guide (worked here from the same painting without haze):
+// the colour given, or the painted sky's mean; the sky and the sources unchanged; far pixels
+// more hazed than near ones. Bad params named.
+TEST(PaintPanorama, HazeFadesTheFarTerrainIntoTheSky) {
+  const Scene& s = scene();
+  const PanoramaPicture picture = read_panorama(s.picture, true);
+  auto linear = [](uint8_t b) { return srgb_to_linear(b / 255.0); };
+  nlohmann::json raw = s.params();
+  raw["sky_class"] = 2;
+  const PaintedPanorama plain = paint(s, raw);
+  std::array<double, 3> sky_mean{};
+  size_t sky = 0;
+  for (size_t i = 0; i < picture.distance.size(); ++i)
+    if (std::isnan(picture.distance[i])) {
+      ++sky;
+      for (size_t k = 0; k < 3; ++k) sky_mean[k] += linear(plain.rgb[3 * i + k]) / 1e6;
+    }
+  ASSERT_GT(sky, 1000u);
+  for (double& m : sky_mean) m *= 1e6 / double(sky);
+  for (const bool given : {false, true}) {
+    SCOPED_TRACE(given ? "haze_color given" : "the sky's mean");
+    raw["haze_distance"] = 20000;
+    if (given) raw["haze_color"] = {200, 180, 250};
+    const std::array<double, 3> haze =
+        given ? std::array<double, 3>{linear(200), linear(180), linear(250)} : sky_mean;
+    const PaintedPanorama hazed = paint(s, raw);
+    ASSERT_EQ(std::memcmp(plain.source.data(), hazed.source.data(), 4 * plain.source.size()), 0);
+    size_t terrain = 0;
+    double near_change = 0, far_change = 0;
+    size_t near = 0, far = 0;
+    for (size_t i = 0; i < picture.distance.size(); ++i) {
+      const double d = picture.distance[i];
+      if (std::isnan(d)) {
+        for (size_t k = 0; k < 3; ++k) ASSERT_EQ(hazed.rgb[3 * i + k], plain.rgb[3 * i + k]);
+        continue;
+      }
+      ++terrain;
+      const double f = 1 - std::exp(-d / 20000);
+      double change = 0;
+      for (size_t k = 0; k < 3; ++k) {
+        const double want = (1 - f) * linear(plain.rgb[3 * i + k]) + f * haze[k];
+        // In 8-bit sRGB (IEC 61966-2-1's encoding), to the rounding.
+        const double code =
+            255 * (want <= 0.0031308 ? 12.92 * want : 1.055 * std::pow(want, 1 / 2.4) - 0.055);
+        EXPECT_NEAR(hazed.rgb[3 * i + k], code, 0.51) << i;
+        change += std::abs(linear(hazed.rgb[3 * i + k]) - linear(plain.rgb[3 * i + k]));
+      }
+      if (d < 4000) near_change += change, ++near;
+      if (d > 12000) far_change += change, ++far;
+    }
+    EXPECT_GT(terrain, 30000u);
+    ASSERT_GT(near, 1000u);
+    ASSERT_GT(far, 1000u);
+    EXPECT_GT(far_change / double(far), 2 * near_change / double(near));
+  }
+
+  // A picture without sky and no colour; a colour without a distance; not three numbers.
+  PanoramaPicture no_sky = picture;
+  for (float& d : no_sky.distance)
+    if (std::isnan(d)) d = 50000;
+  nlohmann::json hazy = s.params();
+  hazy["haze_distance"] = 20000;
+  const PaintParams params = paint_params(hazy, "hazy.json");
+  try {
+    paint_panorama(no_sky, *transfer_exemplar(params.exemplar), params);
+    ADD_FAILURE() << "a haze without a colour, and no sky: it ran";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "hazy.json.haze_distance: the picture shows no sky to take the haze's colour from: "
+              "give haze_color");
+  }
+  auto expect_refused = [](const nlohmann::json& raw, const std::string& message) {
+    try {
+      paint_params(raw, "c.json");
+      ADD_FAILURE() << raw.dump() << ": accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  };
+  hazy = s.params();
+  hazy["haze_color"] = {1, 2, 3};
+  expect_refused(hazy, "c.json.haze_color: given without haze_distance: it would colour nothing");
+  hazy["haze_distance"] = 1000;
+  hazy["haze_color"] = {1, 2};
+  expect_refused(hazy, "c.json.haze_color: [1,2] is not 3 numbers (8-bit red, green, blue)");
+}
+
 TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
   const Scene& s = scene();
   nlohmann::json params = s.params();
   params["sky_class"] = 2;
   params["painting_light"] = "lightness";
   params["w_light"] = 2;
+  params["haze_distance"] = 20000;
   std::vector<std::string> runs;
   for (const auto& [tile, threads] : {std::pair{256, 1}, std::pair{64, 2}, std::pair{128, 2}}) {
     params["tile"] = tile;
