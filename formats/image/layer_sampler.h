@@ -23,14 +23,14 @@ class LayerSampler {
     // A categorical layer's class with its boundaries smoothed: of the 3 x 3 samples around the
     // nearest, the value whose samples weigh most under a quadratic B-spline (weights (1/2 - t)^2
     // / 2, 3/4 - t^2, (1/2 + t)^2 / 2 along each axis, t the point's offset from the nearest
-    // sample, in samples; ties to the nearest sample's value, then to the value met first in row
-    // order). A class's area is then bounded by a smooth curve through its cells' staircase
-    // instead of the staircase, on the staircase's mean line: the generalization a painter's line
-    // makes of 30 m land-cover cells (tests/render/smooth_labels_test.cpp: turns of at most ~5
-    // degrees a twentieth of a cell where the staircase turns by right angles; up to 0.44 cell from
-    // a straight boundary's line, the staircase 0.68). Every value read is one of the 3 x 3
-    // samples (missing samples count as one value: NaN); a lone cell in another class shrinks to a
-    // rounded blob within it.
+    // sample, in samples; ties, in practice at points half way between samples, to the nearest
+    // sample's value, then to the value met first in row order). A class's area is then bounded by
+    // a smooth curve through its cells' staircase instead of the staircase, on the staircase's mean
+    // line: the generalization a painter's line makes of 30 m land-cover cells
+    // (tests/render/smooth_labels_test.cpp: turns of at most ~5 degrees a twentieth of a cell where
+    // the staircase turns by right angles; up to 0.44 cell from a straight boundary's line, the
+    // staircase 0.68). Every value read is one of the 3 x 3 samples (missing samples count as one
+    // value: NaN); a lone cell in another class shrinks to a rounded blob within it.
     kSmoothLabels,
   };
 
@@ -54,7 +54,8 @@ class LayerSampler {
 
   // Writes the layer's channels at `p` to out[0 .. channels - 1]; `cell` is the cell at the
   // sampler's level holding `p` (Grid::cells_from_points). Bilinear sampling leaves out missing
-  // samples (weights renormalized); a point whose nearest sample is missing gets NaN. Returns
+  // samples (weights renormalized), and a point whose nearest sample is missing gets NaN;
+  // kSmoothLabels counts missing samples as one more value (NaN may win, or lose). Returns
   // false, writing nothing, when the cell has no tile. The previous call's cell, when `cell` is
   // it again, is not looked up.
   bool sample(LonLat p, CellId cell, float* out);
@@ -63,8 +64,9 @@ class LayerSampler {
   // the halo covers them) that cell's tile is read again, else the cell holding q is looked up.
   bool sample(PlanePoint q, float* out);
   // The next plane point's cell looked up afresh. A point on the edge of two squares is read from
-  // the previous call's cell when that is one of them, and the two tiles' bilinear reads may
-  // differ in the last bit: callers whose points come in runs (a picture's rows) call this at the
+  // the previous call's cell when that is one of them, and the two tiles' reads may differ (in the
+  // last bit bilinearly; by a class with kNearest or kSmoothLabels, whose nearest sample is then a
+  // tie): callers whose points come in runs (a picture's rows) call this at the
   // start of each run, so that a value depends on its run alone, never on which runs a thread
   // sampled before (the same bits for any thread count).
   void start_run() { last_ = last_cell_ = nullptr; }

@@ -304,7 +304,6 @@ void size_panorama(Panorama& p, int width, int first_row, int rows, const Panora
     resize_fresh(*a, n);
   resize_fresh(p.land_cover, look.land_cover ? n : 0);
   resize_fresh(p.cast_shadow, look.shadow ? n : 0);
-  resize_fresh(p.coverage, look.antialias > 1 ? n : 0);  // written by Supersampler::colour
   resize_fresh(p.rgb, 3 * n);
   resize_fresh(p.silhouette, n);
 }

@@ -245,7 +245,7 @@ void draw_strips(const Store& store, const Grid& grid, TerrainScene& scene,
                  nullptr);
     samplers.forget_unused();
     colour_panorama(camera, look, stretch, texels, strip);
-    if (samples) samples->colour(stretch, top, bottom, strip);  // the margin too: every coverage
+    if (samples) samples->colour(stretch, strip);
     writer.write(strip, first, last);
   }
 }
@@ -259,8 +259,7 @@ Panorama draw_panorama(const Store& store, const Grid& grid, TerrainScene& scene
   Panorama p = shade_panorama(store, grid, scene, camera, look,
                               rows > 0 ? rows : fragment_rows(camera.spec().width), std::ref(draw),
                               &stretch);
-  if (look.antialias > 1)
-    Supersampler(store, grid, scene, camera, look).colour(stretch, 0, p.height, p);
+  if (look.antialias > 1) Supersampler(store, grid, scene, camera, look).colour(stretch, p);
   return p;
 }
 

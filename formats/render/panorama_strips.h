@@ -20,8 +20,8 @@ namespace maquette {
 // The panorama's files: OUT (PNG, the picture), OUT's stem + "-guides.tif" (a float64 GeoTIFF,
 // no georeferencing, one band each: altitude, distance, lon, lat, and land_cover and cast_shadow
 // when computed, then shading, NaN on the sky; then, anti-aliased, coverage) and stem +
-// "-silhouettes.png" (8-bit), filled strip
-// by strip. Each file whole or not at all: nothing is in place before commit().
+// "-silhouettes.png" (8-bit), filled strip by strip. Each file whole or not at all: nothing is in
+// place before commit().
 class PanoramaWriter {
  public:
   PanoramaWriter(const std::string& out, int width, int height, bool land_cover, bool cast_shadow,

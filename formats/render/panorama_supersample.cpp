@@ -78,8 +78,10 @@ Supersampler::Supersampler(const Store& store, const Grid& grid, TerrainScene& s
 
 Supersampler::~Supersampler() = default;
 
-void Supersampler::colour(const BandStretch& stretch, int first, int last, Panorama& p) {
+void Supersampler::colour(const BandStretch& stretch, Panorama& p) {
   Parts& s = *parts_;
+  const int first = p.first_row, last = p.first_row + p.height;
+  resize_fresh(p.coverage, size_t(p.width) * size_t(p.height));  // every pixel written below
   const int k = s.k, w = p.width, sw = k * w;
   const int rows = std::max(1, int(kSampleStripPixels / (double(sw) * k)));
   const LinearLight& light = linear_light();

@@ -30,10 +30,10 @@ class Supersampler {
   Supersampler(const Supersampler&) = delete;
   Supersampler& operator=(const Supersampler&) = delete;
 
-  // Replaces the colours of the picture's rows [first, last) in `p` (which holds them) with the
-  // means of their samples, coloured with `stretch`, the picture's display stretch, and writes
-  // their coverage (Panorama::coverage: the share of their samples that see terrain).
-  void colour(const BandStretch& stretch, int first, int last, Panorama& p);
+  // Replaces the colours of every row of `p` (the picture, or a strip of it) with the means of
+  // their samples, coloured with `stretch`, the picture's display stretch, and sizes and writes
+  // its coverage (Panorama::coverage: the share of each pixel's samples that see terrain).
+  void colour(const BandStretch& stretch, Panorama& p);
 
  private:
   struct Parts;

@@ -57,7 +57,8 @@ void add_panorama_look_options(CLI::App* cmd, PanoramaJob& job) {
                 "The land_cover guide's class boundaries drawn as smooth curves through the "
                 "cells' staircase (each pixel the class weighing most under a quadratic B-spline "
                 "over the 3 x 3 cells around it), as a painter would draw them: for the transfer "
-                "of a painting into the picture (maquette-paint); default: the cell's class");
+                "of a painting into the picture (maquette-paint); default: the cell's class")
+      ->needs("--land-cover");
 }
 
 void add_render_command(CLI::App& app) {

@@ -191,6 +191,8 @@ PanoramaJob panorama_of(const json& p) {
   read_param(p, "texture", job.texture);
   read_param(p, "stretch", job.stretch);
   read_param(p, "land_cover", job.land_cover);
+  if (p.contains("smooth_land_cover") && !p.contains("land_cover"))
+    throw Error("params.smooth_land_cover is given without params.land_cover: it smooths nothing");
   read_param(p, "smooth_land_cover", job.smooth_land_cover);
   const auto camera = p.at("camera").get<std::vector<double>>();
   job.camera.eye = {camera[0], camera[1], camera[2]};

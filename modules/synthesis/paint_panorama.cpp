@@ -83,6 +83,7 @@ PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar&
                 (lit ? "w_light " + std::to_string(params.synthesis.w_light)
                      : "shading " + std::to_string(params.shading)) +
                 " asked of a picture read without its shading band");
+  check_haze_colour(p, params);  // before the painting's work, not after it
   const std::vector<float> light = lit ? panorama_light(p, params) : std::vector<float>();
   const int64_t t = params.tile;
   const int64_t across = (p.width + t - 1) / t, down = (p.height + t - 1) / t;
@@ -115,8 +116,7 @@ PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar&
     out.source[2 * i] = float(int(s) % e.width * exemplar.scale);
     out.source[2 * i + 1] = float(int(s) / e.width * exemplar.scale);
   });
-  if (params.haze_distance > 0)
-    add_haze(p, params.haze_distance, params.haze_color, params.source, out);
+  if (params.haze_distance > 0) add_haze(p, params.haze_distance, params.haze_color, out);
   blend_skyline(p, params.sky_class.has_value(), out);
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -9,9 +10,17 @@
 
 namespace maquette::synthesis {
 
+void check_haze_colour(const PanoramaPicture& picture, const PaintParams& params) {
+  if (params.haze_distance == 0 || params.haze_color) return;
+  if (std::none_of(picture.distance.begin(), picture.distance.end(),
+                   [](float d) { return std::isnan(d); }))
+    throw Error(params.source +
+                ".haze_distance: the picture shows no sky to take the haze's colour from: give "
+                "haze_color");
+}
+
 void add_haze(const PanoramaPicture& picture, double haze_distance,
-              const std::optional<std::array<uint8_t, 3>>& colour, const std::string& source,
-              PaintedPanorama& painted) {
+              const std::optional<std::array<uint8_t, 3>>& colour, PaintedPanorama& painted) {
   const size_t n = picture.distance.size();
   std::array<double, 3> haze{};
   if (colour) {
@@ -23,11 +32,7 @@ void add_haze(const PanoramaPicture& picture, double haze_distance,
         ++sky;
         for (size_t k = 0; k < 3; ++k) haze[k] += srgb_to_linear(painted.rgb[3 * i + k] / 255.0);
       }
-    if (sky == 0)
-      throw Error(source +
-                  ".haze_distance: the picture shows no sky to take the haze's colour from: give "
-                  "haze_color");
-    for (double& h : haze) h /= double(sky);
+    for (double& h : haze) h /= double(sky);  // sky > 0: check_haze_colour
   }
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
     const double d = picture.distance[i];

@@ -8,7 +8,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <string>
 
 #include "paint_panorama.h"
 #include "panorama_guides.h"
@@ -18,10 +17,13 @@ namespace maquette::synthesis {
 // Each terrain pixel of `painted` (the picture's distance d finite) becomes (1 - f) C + f H in
 // linear light (sRGB's transfer function), f = 1 - exp(-d / haze_distance), C its colour and H
 // `colour`, or without it the mean, in linear light, of the painted picture's sky pixels; the sky
-// and the sources unchanged. Preconditions: haze_distance > 0. Throws maquette::Error naming
-// `source`'s haze_color when no colour is given and the picture has no sky to take it from.
+// and the sources unchanged. Preconditions: haze_distance > 0; `colour` given or the picture
+// shows sky (check_haze_colour, before the painting's work).
 void add_haze(const PanoramaPicture& picture, double haze_distance,
-              const std::optional<std::array<uint8_t, 3>>& colour, const std::string& source,
-              PaintedPanorama& painted);
+              const std::optional<std::array<uint8_t, 3>>& colour, PaintedPanorama& painted);
+
+// Throws maquette::Error naming `params`' file and haze_distance when a haze is asked for without
+// a haze_color and the picture shows no sky to take its colour from.
+void check_haze_colour(const PanoramaPicture& picture, const PaintParams& params);
 
 }  // namespace maquette::synthesis

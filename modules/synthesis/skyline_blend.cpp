@@ -42,9 +42,9 @@ void blend_skyline(const PanoramaPicture& p, bool sky_painted, PaintedPanorama& 
           !sky(i) ? std::optional(i)
                   : first_neighbour(p, col, row, [&](size_t j) { return !sky(j); });
       const std::optional<size_t> open_sky =
-          sky(i) && sky_painted
-              ? std::optional(i)
-              : first_neighbour(p, col, row, [&](size_t j) { return p.coverage[j] == 0; });
+          sky(i) && sky_painted ? std::optional(i) : first_neighbour(p, col, row, [&](size_t j) {
+            return sky(j) && p.coverage[j] == 0;
+          });
       if (!terrain || !open_sky) continue;
       for (size_t k = 0; k < 3; ++k) {
         const double t = srgb_to_linear(before[3 * *terrain + k] / 255.0);

@@ -13,7 +13,8 @@ namespace maquette::synthesis {
 // strictly between 0 and 1 takes c T + (1 - c) S in linear light (sRGB's transfer function), T
 // its terrain's colour (its own when its centre sees terrain, else the first neighbour's whose
 // centre does) and S its sky's (its own when its centre sees the sky and `sky_painted`, else the
-// first neighbour's of coverage 0: the sky's pure colour, not a render's mix), neighbours taken
+// first neighbour's whose centre sees the sky and whose coverage is 0: the sky's pure colour, not
+// a render's mix; with an even K a pixel's centre is no sample), neighbours taken
 // in the order above, left, right, below, then the diagonals, from the colours before any
 // blending; a pixel without such neighbours keeps its colour. Nothing without coverage. The
 // sources (`painted.source`) are unchanged.

@@ -19,11 +19,6 @@ double lab_f_inverse(double f) { return f > 6.0 / 29 ? f * f * f : (116 * f - 16
 
 }  // namespace
 
-double srgb_from_linear(double linear) {
-  const double l = std::clamp(linear, 0.0, 1.0);
-  return 255 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
-}
-
 Hsv rgb_to_hsv(double r, double g, double b) {
   const double mx = std::max({r, g, b}), mn = std::min({r, g, b}), d = mx - mn;
   Hsv out{0, mx > 0 ? d / mx : 0, mx / 255};

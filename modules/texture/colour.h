@@ -1,5 +1,5 @@
-// Colour conversions: RGB -> HSV (paper 5.2.1), linear -> sRGB, sRGB <-> CIELAB (D65) and the
-// CIEDE2000 colour difference (Sharma, Wu and Dalal 2005).
+// Colour conversions: RGB -> HSV (paper 5.2.1), sRGB <-> CIELAB (D65; sRGB's transfer function is
+// core/srgb.h's) and the CIEDE2000 colour difference (Sharma, Wu and Dalal 2005).
 #pragma once
 
 #include <array>
@@ -14,8 +14,7 @@ struct Hsv {
 
 using Lab = std::array<double, 3>;  // L* 0..100, a*, b*
 
-Hsv rgb_to_hsv(double r, double g, double b);  // components 0..255
-double srgb_from_linear(double linear);        // linear [0, 1] (clamped) -> sRGB-encoded 0..255
+Hsv rgb_to_hsv(double r, double g, double b);                     // components 0..255
 std::array<double, 3> srgb_to_lab(double r, double g, double b);  // components 0..255
 // srgb_to_lab's inverse: the sRGB colour (components 0..255) of a CIELAB colour, each linear
 // component clamped to [0, 1] first (a colour outside the gamut lands on its edge). Exact up to

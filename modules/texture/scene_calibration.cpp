@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "colour.h"
+#include "core/srgb.h"
 
 namespace maquette::texture {
 

@@ -357,6 +357,8 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("fov": 175)", "camera fov 175");
   expect_error(R"("bend_start": 2000)", "params.bend_start is given without params.bend_radius");
   expect_error(R"("antialias": 9)", "antialias");
+  expect_error(R"("smooth_land_cover": true)",
+               "params.smooth_land_cover is given without params.land_cover: it smooths nothing");
 }
 
 // A new store in `dir` holding steep hills (layer dem, 800 m high, 700 m to 1 km apart) from 10 E
@@ -1051,6 +1053,7 @@ TEST(PanoramaCli, BadInputIsNamed) {
                "than 65536 pixels");
   expect_error(f.render(out, "--bend-radius 9000 --bend-start -5"), "--bend-start -5");
   expect_error(f.render(out, "--bend-start 5000"), "--bend-start requires --bend-radius");
+  expect_error(f.render(out, "--smooth-land-cover"), "--smooth-land-cover requires --land-cover");
   // Land-cover classes drawn as heights of a few metres.
   expect_error("render panorama " + f.store + " " + out + " --dem lc --camera 10.15 45.02 1500",
                "--dem layer 'lc' is categorical (classes, not heights)");

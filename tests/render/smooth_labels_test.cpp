@@ -6,7 +6,7 @@
 // smoothed read a curve (turns of at most ~5 degrees between points a twentieth of a cell apart,
 // closer to the line or circle, on the same mean line or radius). Every value read is one of the
 // 3 x 3 cells around. By hand: the quadratic B-spline's weights at three points of a 2 x 2 corner,
-// with a class and with missing samples (NaN wins as one value).
+// with a class and with missing samples (NaN wins as one value), and a lone cell's rounded blob.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -250,6 +250,28 @@ TEST(SmoothLabels, ACornersWeightsByHand) {
       EXPECT_EQ(got, 5);
     else
       EXPECT_TRUE(std::isnan(got));
+  }
+}
+
+TEST(SmoothLabels, ALoneCellIsARoundedBlobWithinIt) {
+  // Class 7 at one cell (c, r), class 3 around it. The cell keeps its class where its weight
+  // (3/4 - x^2)(3/4 - y^2) exceeds 1/2: along an axis to 0.289 (3/4 - x^2 > 2/3), along a diagonal
+  // to (0.207, 0.207) (3/4 - t^2 > 0.707): a rounded blob between a diamond (0.144 on the
+  // diagonal) and a square (0.289). Tent (bilinear) weights would keep (0.25, 0.25): 0.75^2.
+  const double c = kMidCol, r = kMidRow;
+  const Shapes store_of({{"lone", [c, r](double col, double row) {
+                            return uint16_t(col == c && row == r ? 7 : 3);
+                          }}});
+  const auto store = Store::open(store_of.path, Store::Mode::ReadOnly);
+  LayerSampler smooth(*store, default_grid(), store_of.layers[0], kLevel,
+                      LayerSampler::Read::kSmoothLabels);
+  const std::vector<std::array<double, 3>> expected = {
+      {0, 0, 7},     {0.28, 0, 7},    {0.30, 0, 3},   {0, -0.28, 7},    {0, -0.30, 3},
+      {0.2, 0.2, 7}, {0.25, 0.25, 3}, {-0.2, 0.2, 7}, {-0.22, -0.22, 3}};
+  for (const auto& [dx, dy, want] : expected) {
+    float got = 0;
+    ASSERT_TRUE(smooth.sample(plane_at(c + dx, r + dy), &got));
+    EXPECT_EQ(got, want) << dx << ", " << dy;
   }
 }
 
