@@ -95,11 +95,16 @@ std::vector<StretchRange> quantile_ranges(size_t chunks, size_t bands, const Val
   std::vector<OfBins> of_chunk(chunks, OfBins(bands));
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     const std::span<const float> v = chunk(c);
-    for (size_t i = 0; i < v.size(); i += bands)
-      for (size_t k = 0; k < bands; ++k)
-        for (size_t j = 0; j < 2; ++j)
-          if (!none[k] && order_key(v[i + k]) >> kShift == bin[k][j])
-            of_chunk[c][k][j].push_back(v[i + k]);
+    for (size_t k = 0; k < bands; ++k) {  // a band at a time: each key made once
+      if (none[k]) continue;
+      const size_t low = bin[k][0], high = bin[k][1];
+      auto& [of_low, of_high] = of_chunk[c][k];
+      for (size_t i = k; i < v.size(); i += bands) {
+        const size_t key = order_key(v[i]) >> kShift;
+        if (key == low) of_low.push_back(v[i]);
+        if (key == high) of_high.push_back(v[i]);
+      }
+    }
   });
   std::vector<StretchRange> ranges(bands, StretchRange{0.0, 1.0});
   for (size_t k = 0; k < bands; ++k) {

@@ -55,11 +55,19 @@ class PinholeCamera {
   // The ray through picture coordinates (x, y) in the eye's ENU frame, scaled to a forward
   // (camera z) component of 1: a point at camera depth z is z times it. Inline: every terrain
   // pixel's distance goes through it.
-  Vec3d ray(double x, double y) const {
-    const double u = (x - spec_.width * 0.5) / focal_, v = (y - spec_.height * 0.5) / focal_;
-    Vec3d r;
-    for (int k = 0; k < 3; ++k) r[k] = forward_[k] + u * right_[k] + v * down_[k];
-    return r;
+  Vec3d ray(double x, double y) const { return ray(column_ray(x), row_ray(y)); }
+  // That ray's two parts, column_ray(x) + row_ray(y) component by component (the same bits): the
+  // pixels of a row share the one, those of a column the other.
+  Vec3d column_ray(double x) const {
+    const double u = (x - spec_.width * 0.5) / focal_;
+    return {forward_[0] + u * right_[0], forward_[1] + u * right_[1], forward_[2] + u * right_[2]};
+  }
+  Vec3d row_ray(double y) const {
+    const double v = (y - spec_.height * 0.5) / focal_;
+    return {v * down_[0], v * down_[1], v * down_[2]};
+  }
+  static Vec3d ray(const Vec3d& column, const Vec3d& row) {
+    return {column[0] + row[0], column[1] + row[1], column[2] + row[2]};
   }
 
  private:

@@ -83,6 +83,11 @@ SamplePlaces::SamplePlaces(const Grid& grid, CellId cell, int size, int halo, co
     return;
   }
   lattice_ = m;
+  for (int k = 0; k < size; ++k) {
+    const double t = double(k) * m / (size - 1);
+    const int interval = std::min(m - 1, int(t));
+    steps_.push_back({interval, t - interval});
+  }
 }
 
 SamplePlace SamplePlaces::exact_place(int col, int row) const {
@@ -112,12 +117,8 @@ PlanePoint SamplePlaces::plane(int col, int row) const {
 // Inlined: out of line, the two calls per sample cost more than the interpolation they spare.
 [[gnu::always_inline]] inline SamplePlaces::Corners SamplePlaces::corners(int col, int row) const {
   const int m = lattice_;
-  const double y = double(row) * m / (size_ - 1);
-  const int j = std::min(m - 1, int(y));
-  const double fy = y - j;
-  const double x = double(col) * m / (size_ - 1);
-  const int i = std::min(m - 1, int(x));
-  const double fx = x - i;
+  const auto [j, fy] = steps_[size_t(row)];
+  const auto [i, fx] = steps_[size_t(col)];
   return {{&nodes_[size_t(j * (m + 1) + i)], &nodes_[size_t(j * (m + 1) + i + 1)],
            &nodes_[size_t((j + 1) * (m + 1) + i)], &nodes_[size_t((j + 1) * (m + 1) + i + 1)]},
           {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy}};

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/enu_frame.h"
@@ -76,6 +77,9 @@ class SamplePlaces {
   PlaneSquare square_{};             // the cell's square in the grid's plane
   std::vector<SamplePlace> border_;  // the halo's rings: rows above, rows below, then the sides
   std::vector<SamplePlace> nodes_;   // (lattice + 1)^2, row-major
+  // With a lattice, per sample 0 .. size - 1 (a row or a column: the same), the lattice interval
+  // holding it and its fraction along it: corners' two divisions a sample made once a tile.
+  std::vector<std::pair<int, double>> steps_;
 };
 
 }  // namespace maquette

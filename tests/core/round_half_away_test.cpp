@@ -29,6 +29,15 @@ TEST(RoundHalfAway, IsLlround) {
     for (const double v : {half, double(k)})
       values.insert(values.end(), {v, std::nextafter(v, -INFINITY), std::nextafter(v, INFINITY)});
   }
+  // Halves and whole numbers, and their neighbours, at the powers of two where the spacing of
+  // doubles doubles (up to 2^53, where every double is whole), and the largest double below 1/2.
+  for (int e = 0; e <= 54; ++e)
+    for (const double base : {std::exp2(e), std::exp2(e) - 0.5, std::exp2(e) + 0.5})
+      for (const double sign : {1.0, -1.0}) {
+        const double v = sign * base;
+        values.insert(values.end(), {v, std::nextafter(v, -INFINITY), std::nextafter(v, INFINITY)});
+      }
+  values.insert(values.end(), {0.49999999999999994, -0.49999999999999994});
   std::mt19937_64 random(19);
   std::uniform_real_distribution<double> exponent(-20, 62), unit(-1, 1);
   for (int i = 0; i < 100000; ++i) values.push_back(unit(random) * std::exp2(exponent(random)));
