@@ -12,8 +12,9 @@
 // smoothing of a mean vote is measured apart from the copy's coherence. Given several seeds,
 // ours is run with each (ebsynth once: its randomness has no seed) and each measure's minimum,
 // median and maximum printed, with each class's histogram distance beside the distance a random
-// draw of as many of the class's exemplar pixels shows, single or in 5 x 5 squares (the noise of
-// the measure itself at that class's size). The arguments: kUsage below (printed with every
+// draw of as many of the class's exemplar pixels shows, single, in 5 x 5 squares, or as the
+// class's own connected pieces in the window each copied whole (the noise of the measure itself
+// at that class's size and shape). The arguments: kUsage below (printed with every
 // argument error and by --help).
 #include <omp.h>
 
@@ -147,42 +148,101 @@ void print_spread(const char* name, const std::vector<double>& v, const char* fo
   std::printf("\n");
 }
 
+// A set of pixels copied whole: offsets from its bounding box's top-left corner.
+using Shape = std::vector<std::array<int, 2>>;
+
+Shape square(int side) {
+  Shape s;
+  for (int dy = 0; dy < side; ++dy)
+    for (int dx = 0; dx < side; ++dx) s.push_back({dx, dy});
+  return s;
+}
+
+// The target's pixels of `label` in the side x side window `labels` as 8-connected pieces.
+std::vector<Shape> pieces(const std::vector<uint8_t>& labels, int side, uint8_t label) {
+  std::vector<Shape> out;
+  std::vector<uint8_t> seen(labels.size(), 0);
+  for (size_t start = 0; start < labels.size(); ++start) {
+    if (labels[start] != label || seen[start]) continue;
+    std::vector<std::array<int, 2>> piece, stack{{int(start) % side, int(start) / side}};
+    seen[start] = 1;
+    while (!stack.empty()) {
+      const auto [x, y] = stack.back();
+      stack.pop_back();
+      piece.push_back({x, y});
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          const size_t i = size_t(ny) * size_t(side) + size_t(nx);
+          if (nx < 0 || ny < 0 || nx >= side || ny >= side || labels[i] != label || seen[i])
+            continue;
+          seen[i] = 1;
+          stack.push_back({nx, ny});
+        }
+    }
+    int x0 = side, y0 = side;
+    for (const auto& [x, y] : piece) x0 = std::min(x0, x), y0 = std::min(y0, y);
+    for (auto& [x, y] : piece) x -= x0, y -= y0;
+    out.push_back(std::move(piece));
+  }
+  return out;
+}
+
 // The total variation between the histogram of `label`'s usable exemplar pixels and that of
-// `pixels` of them drawn at random, as whole side x side squares (all usable pixels of the label;
-// side 1: single pixels) drawn uniformly with replacement, over kDraws draws: its median and
-// largest. The sampling noise of the measure at a class of that size: the output copies patches,
-// so its pixels are not independent draws and its noise lies nearer the squares'.
+// `shapes`, each copied whole from a place of the exemplar drawn uniformly among those where
+// every pixel of it is a usable pixel of the label (with replacement; a shape that fits nowhere
+// is copied as 5 x 5 squares of as many pixels), over kDraws draws: the median and largest. The
+// sampling noise of the measure for a copy made of such pieces: single pixels (independent
+// draws), 5 x 5 squares (the measure's patches), or the class's own connected pieces in the
+// target (a copy coherent over each piece, as a field copied from one place of the painting).
 constexpr int kDraws = 200;
 
-std::array<double, 2> random_draw_distance(const Exemplar& e, uint8_t label, int64_t pixels,
-                                           int side) {
+std::array<double, 2> shape_draw_distance(const Exemplar& e, uint8_t label,
+                                          const std::vector<Shape>& shapes) {
   const auto usable = [&](int x, int y) {
     const size_t i = size_t(y) * size_t(e.width) + size_t(x);
     return e.labels[i] == label && !e.excluded[i];
   };
-  std::vector<std::array<int, 2>> corners;  // top-left corners of the squares inside the label
-  for (int y = 0; y + side <= e.height; ++y)
-    for (int x = 0; x + side <= e.width; ++x) {
-      bool inside = true;
-      for (int dy = 0; dy < side && inside; ++dy)
-        for (int dx = 0; dx < side && inside; ++dx) inside = usable(x + dx, y + dy);
-      if (inside) corners.push_back({x, y});
+  const auto places_of = [&](const Shape& shape) {
+    int w = 0, h = 0;
+    for (const auto& [x, y] : shape) w = std::max(w, x + 1), h = std::max(h, y + 1);
+    std::vector<std::array<int, 2>> places;  // top-left corners
+    for (int y = 0; y + h <= e.height; ++y)
+      for (int x = 0; x + w <= e.width; ++x)
+        if (std::all_of(shape.begin(), shape.end(),
+                        [&](const auto& p) { return usable(x + p[0], y + p[1]); }))
+          places.push_back({x, y});
+    return places;
+  };
+  // Each shape with its places, the shapes that fit nowhere replaced by squares.
+  const Shape fallback = square(kCoherenceSide);
+  std::vector<std::pair<const Shape*, const std::vector<std::array<int, 2>>*>> drawn_shapes;
+  std::map<const Shape*, std::vector<std::array<int, 2>>> places;
+  std::map<size_t, std::vector<std::array<int, 2>>> by_size;  // squares: one list per side
+  for (const Shape& shape : shapes) {
+    auto& p = shape.size() == 1 || shape == fallback ? by_size[shape.size()] : places[&shape];
+    if (p.empty()) p = places_of(shape);
+    if (!p.empty()) {
+      drawn_shapes.emplace_back(&shape, &p);
+      continue;
     }
-  if (corners.empty()) return {1, 1};
+    auto& q = by_size[fallback.size()];
+    if (q.empty()) q = places_of(fallback);
+    if (q.empty()) return {1, 1};
+    for (size_t n = 0; n < (shape.size() + fallback.size() - 1) / fallback.size(); ++n)
+      drawn_shapes.emplace_back(&fallback, &q);
+  }
   const std::vector<uint64_t> exemplar = exemplar_histogram(e, label);
-  std::uniform_int_distribution<size_t> corner(0, corners.size() - 1);
   std::mt19937_64 random(label);
-  const int64_t squares = std::max<int64_t>(1, (pixels + side * side / 2) / (side * side));
   std::vector<double> d(kDraws);
   for (double& distance : d) {
     std::vector<uint64_t> drawn(exemplar.size(), 0);
-    for (int64_t k = 0; k < squares; ++k) {
-      const auto [x, y] = corners[corner(random)];
-      for (int dy = 0; dy < side; ++dy)
-        for (int dx = 0; dx < side; ++dx) {
-          const size_t i = size_t(y + dy) * size_t(e.width) + size_t(x + dx);
-          ++drawn[size_t(histogram_bin(e.rgb[3 * i], e.rgb[3 * i + 1], e.rgb[3 * i + 2]))];
-        }
+    for (const auto& [shape, at] : drawn_shapes) {
+      const auto [x, y] = (*at)[std::uniform_int_distribution<size_t>(0, at->size() - 1)(random)];
+      for (const auto& [dx, dy] : *shape) {
+        const size_t i = size_t(y + dy) * size_t(e.width) + size_t(x + dx);
+        ++drawn[size_t(histogram_bin(e.rgb[3 * i], e.rgb[3 * i + 1], e.rgb[3 * i + 2]))];
+      }
     }
     distance = total_variation(drawn, exemplar);
   }
@@ -190,10 +250,17 @@ std::array<double, 2> random_draw_distance(const Exemplar& e, uint8_t label, int
   return {s[1], s[2]};
 }
 
+// As many whole side x side squares as cover `pixels` (at least one).
+std::vector<Shape> squares(int64_t pixels, int side) {
+  return std::vector<Shape>(
+      size_t(std::max<int64_t>(1, (pixels + side * side / 2) / (side * side))), square(side));
+}
+
 // Ours' measures over the seeds: each measure's spread, and each class's histogram distance's
-// beside random draws' (random_draw_distance) of its target pixel count, single pixels and
-// 5 x 5 squares.
-void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const ClassPixels& count) {
+// beside random draws' (shape_draw_distance) of its target pixel count, single pixels and 5 x 5
+// squares, and of its pieces in the target window (`labels`, side x side).
+void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const ClassPixels& count,
+                 const std::vector<uint8_t>& labels, int side) {
   const auto of = [&](auto measure) {
     std::vector<double> v;
     for (const Metrics& m : runs) v.push_back(double(measure(m)));
@@ -211,14 +278,19 @@ void print_seeds(const Exemplar& e, const std::vector<Metrics>& runs, const Clas
     if (n[0] == 0) continue;
     const auto [low, median, high] =
         spread(of([label](const Metrics& m) { return m.histogram_distance.at(label); }));
-    const auto pixel = random_draw_distance(e, label, n[0], 1);
-    const auto patch = random_draw_distance(e, label, n[0], kCoherenceSide);
+    const auto pixel = shape_draw_distance(e, label, squares(n[0], 1));
+    const auto patch = shape_draw_distance(e, label, squares(n[0], kCoherenceSide));
+    const std::vector<Shape> own = pieces(labels, side, label);
+    const auto piece = shape_draw_distance(e, label, own);
+    size_t largest = 0;
+    for (const Shape& p : own) largest = std::max(largest, p.size());
     std::printf(
         "  histogram [%d] (%lld target pixels): min %.3f  median %.3f  max %.3f; as many of its "
         "exemplar pixels drawn at random (median, max of %d draws): single %.3f, %.3f; in %d x "
-        "%d squares %.3f, %.3f\n",
+        "%d squares %.3f, %.3f; as its %zu pieces in the window (the largest %zu pixels) %.3f, "
+        "%.3f\n",
         int(label), (long long)n[0], low, median, high, kDraws, pixel[0], pixel[1], kCoherenceSide,
-        kCoherenceSide, patch[0], patch[1]);
+        kCoherenceSide, patch[0], patch[1], own.size(), largest, piece[0], piece[1]);
   }
 }
 
@@ -361,7 +433,7 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
     print_class_sources(e, *t, labels, count, ours);
     std::fflush(stdout);
   }
-  if (seeds > 1) print_seeds(e, ours_m, count);
+  if (seeds > 1) print_seeds(e, ours_m, count, labels, side);
   if (!with_ebsynth) return 0;
   const EbsynthRun ebsynth = run_ebsynth(e, side, threads, classes);
   std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth.time.cpu,
