@@ -434,7 +434,12 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
     std::fflush(stdout);
   }
   if (seeds > 1) print_seeds(e, ours_m, count, labels, side);
-  if (!with_ebsynth) return 0;
+  if (!with_ebsynth) {
+    // ebsynth's coherence depends on the class table and the paintings (benchmarks/README.md,
+    // "Synthesis", session 31): a ratio against a figure from another fixture says nothing.
+    std::printf("ebsynth not run: no coherence ratio (run 'both' on the same fixture for it)\n");
+    return 0;
+  }
   const EbsynthRun ebsynth = run_ebsynth(e, side, threads, classes);
   std::printf("ebsynth: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n", ebsynth.time.cpu,
               ebsynth.time.cpu / mp, ebsynth.time.wall, ebsynth.time.wall / mp);
