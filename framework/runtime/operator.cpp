@@ -1,8 +1,21 @@
 #include "runtime/operator.h"
 
+#include <utility>
+
 #include "core/error.h"
 
 namespace maquette {
+
+InputSpec single_channel_input(std::string name, std::string description, Semantics semantics,
+                               bool optional) {
+  InputSpec in;
+  in.name = std::move(name);
+  in.description = std::move(description);
+  in.optional = optional;
+  in.semantics = semantics;
+  in.channels = {1};
+  return in;
+}
 
 std::string_view operator_kind_name(OperatorKind k) {
   switch (k) {

@@ -37,7 +37,18 @@ struct InputSpec {
   bool optional = false;
   LayerKind kind = LayerKind::Raster;  // Raster or Features
   double reach_m = 0;                  // features ports: metres around the cell (>= 0)
+  // Raster ports: the layers the port takes, checked when the pipeline is planned (a step given
+  // another is refused before anything runs, naming the port, the layer and what it is): their
+  // semantics (none: either) and channel counts (empty: any). A land-cover port takes
+  // Categorical layers of 1 channel, a DEM port Continuous ones of 1.
+  std::optional<Semantics> semantics = std::nullopt;
+  std::vector<int> channels = {};
 };
+
+// A raster port taking layers of one channel of `semantics`: heights (Continuous), land-cover
+// classes (Categorical).
+InputSpec single_channel_input(std::string name, std::string description, Semantics semantics,
+                               bool optional = false);
 
 // An output port. The layer it writes gets dtype/channels/semantics/units/codec from here and its
 // level and tile size from the step's first input (or the pipeline's level and tile size), the tile
@@ -96,7 +107,7 @@ struct OperatorSpec {
   // unfolding (Mosaic::face is the anchor; origin_col/row may lie beyond its edges).
   bool spans_faces = false;
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
-  // items, additionalProperties false) of the step's "params" object.
+  // items, minItems, maxItems, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
 };
 

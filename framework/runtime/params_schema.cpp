@@ -24,6 +24,7 @@ class Validator {
     if (schema.contains("enum")) check_enum(schema.at("enum"), out, path);
     if (out.is_number()) check_range(schema, out, path);
     if (out.is_object()) check_object(schema, out, path);
+    if (out.is_array()) check_length(schema, out, path);
     if (out.is_array() && schema.contains("items")) {
       for (size_t i = 0; i < out.size(); ++i)
         out[i] = check(schema.at("items"), out[i], path + "[" + std::to_string(i) + "]");
@@ -34,6 +35,16 @@ class Validator {
  private:
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw Error(context_ + ": " + path + ": " + what);
+  }
+
+  void check_length(const json& schema, const json& value, const std::string& path) const {
+    const auto items = [](size_t n) { return std::to_string(n) + (n == 1 ? " item" : " items"); };
+    if (schema.contains("minItems") && value.size() < schema.at("minItems").get<size_t>())
+      fail(path, "expected at least " + items(schema.at("minItems").get<size_t>()) + ", got " +
+                     excerpt(value));
+    if (schema.contains("maxItems") && value.size() > schema.at("maxItems").get<size_t>())
+      fail(path, "expected at most " + items(schema.at("maxItems").get<size_t>()) + ", got " +
+                     excerpt(value));
   }
 
   // Draft 7: "integer" also accepts a number with a zero fractional part (2.0), stored as 2.

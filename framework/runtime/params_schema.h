@@ -1,6 +1,6 @@
 // Validation of a step's "params" against its operator's JSON Schema (the draft 7 subset of
 // OperatorSpec::params_schema: type, properties, required, enum, minimum, maximum, default, items,
-// additionalProperties false).
+// minItems, maxItems, additionalProperties false).
 #pragma once
 
 #include <cstdint>

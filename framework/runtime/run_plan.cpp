@@ -46,7 +46,7 @@ class Planner {
         sp.features.push_back(features_port(step, in, it->second));
         continue;
       }
-      const LayerInfo info = input_layer(step, in.name, it->second, sp);
+      const LayerInfo info = input_layer(step, in, it->second, sp);
       if (sp.inputs.empty()) {
         sp.level = info.level;
         sp.tile_size = info.tile_size;
@@ -211,10 +211,24 @@ class Planner {
     return cells;
   }
 
-  LayerInfo input_layer(const PipelineStep& step, const std::string& port, const std::string& name,
+  LayerInfo input_layer(const PipelineStep& step, const InputSpec& port, const std::string& name,
                         const StepPlan& sp) const {
-    const std::string where = step.label() + ": inputs." + port + ": ";
+    const std::string where = step.label() + ": inputs." + port.name + ": ";
     const LayerInfo info = port_layer(where, name, LayerKind::Raster);
+    const std::string takes = " (" + port.description + ")";
+    if (port.semantics && info.semantics != *port.semantics)
+      throw Error(where + "layer '" + name + "' is " + std::string(semantics_name(info.semantics)) +
+                  ", but the port takes a " + std::string(semantics_name(*port.semantics)) +
+                  " layer" + takes);
+    if (!port.channels.empty() && std::find(port.channels.begin(), port.channels.end(),
+                                            info.channels) == port.channels.end()) {
+      std::string counts;
+      for (const int c : port.channels)
+        counts += (counts.empty() ? "" : " or ") + std::to_string(c);
+      throw Error(where + "layer '" + name + "' has " + std::to_string(info.channels) +
+                  (info.channels == 1 ? " channel" : " channels") + ", but the port takes " +
+                  counts + takes);
+    }
     if (!sp.inputs.empty() && (info.level != sp.level || info.tile_size != sp.tile_size))
       throw Error(where + "layer '" + name + "' has level " + std::to_string(info.level) +
                   " and tile size " + std::to_string(info.tile_size) +

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "content/content_overviews.h"
@@ -192,13 +193,14 @@ class Runner {
         });
         to_copies_ =
             copies_ && std::any_of(plan.steps.begin() + i + 1, plan.steps.end(), on_every_rank);
+        started_ = i + 1;
         summary.steps.push_back(run_step(plan.steps[i], done[i], summary.run_id));
       }
     } catch (const std::exception& e) {
-      fail(summary.run_id, std::string("failed: ") + e.what());
+      fail(summary.run_id, std::string("failed: ") + e.what(), plan);
       throw;
     } catch (...) {
-      fail(summary.run_id, "failed: unknown exception");
+      fail(summary.run_id, "failed: unknown exception", plan);
       throw;
     }
     exchange(ranks_, [&] {
@@ -234,9 +236,15 @@ class Runner {
       store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
     }
     // Creating every output layer first also checks them against existing layers before any
-    // cell is computed.
+    // cell is computed. The complete ones are kept to be restored if the run fails before
+    // writing them (restore_untouched).
+    untouched_.clear();
     for (const auto& sp : plan.steps)
-      for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
+      for (const auto& [port, layer] : sp.outputs) {
+        if (store_->layer(layer.name) && !store_->incomplete(layer.name))
+          untouched_.insert(layer.name);
+        store_->create_layer(layer);
+      }
 
     const nlohmann::json identity = run_identity(pipeline_);
     if (options_.resume) {
@@ -281,11 +289,34 @@ class Runner {
 
   // Marks the run failed (on the root); no rank leaves before, since a launcher may end the job
   // as soon as one rank exits with an error.
-  void fail(int64_t run_id, const std::string& status) {
+  void fail(int64_t run_id, const std::string& status, const RunPlan& plan) {
     exchange(ranks_, [&] {
-      if (ranks_.root() && run_id != 0) store_->finish_run(run_id, status);
+      if (ranks_.root() && run_id != 0) {
+        restore_untouched(run_id, plan);
+        store_->finish_run(run_id, status);
+      }
       return "";
     });
+  }
+
+  // A failed run leaves readable the layers that were complete before it and that it has not
+  // written: those of the steps it never started, and of the step that failed when that step
+  // recorded no cell in this run (cell, reduce and region steps record a cell with its tiles,
+  // in one transaction; a task, an ingest, writes its tiles first: its layers stay marked).
+  void restore_untouched(int64_t run_id, const RunPlan& plan) {
+    const auto wrote = [&](size_t i) {
+      const int step = plan.steps[i].step->index;
+      return i + 1 < started_ ||
+             (i + 1 == started_ && (plan.steps[i].step->op->spec().kind == OperatorKind::Task ||
+                                    !store_->done_cells(run_id, step).empty() ||
+                                    !store_->done_keys(run_id, step).empty()));
+    };
+    std::set<std::string> written;  // a layer two steps write is written if either wrote it
+    for (size_t i = 0; i < plan.steps.size(); ++i)
+      for (const auto& [port, layer] : plan.steps[i].outputs)
+        if (wrote(i)) written.insert(layer.name);
+    for (const std::string& layer : untouched_)
+      if (!written.count(layer)) store_->mark_complete(layer);
   }
 
   // The artifacts the step's params refer to, now written by the earlier steps, pasted in and
@@ -462,6 +493,10 @@ class Runner {
   // the run lasts.
   tbb::global_control parallelism_;
   tbb::task_arena arena_;
+  // On the root: the output layers complete before the run (restore_untouched); and how many
+  // steps the run has started.
+  std::set<std::string> untouched_;
+  size_t started_ = 0;
   std::unique_ptr<Store> store_;     // on ranks but the root under --store-copies: this rank's copy
   std::optional<WriteRelay> relay_;  // under --store-copies
 };

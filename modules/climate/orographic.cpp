@@ -33,7 +33,7 @@ OperatorSpec orographic_spec() {
   s.description =
       "Precipitation adjusted for windward lift and lee rain shadow along a main wind direction "
       "(linear upslope model with an exponential upwind memory, 64-pixel halo)";
-  s.inputs = {{"dem", "elevation in metres", false},
+  s.inputs = {single_channel_input("dem", "elevation in metres", Semantics::Continuous),
               {"precipitation", "precipitation before the adjustment", false}};
   s.outputs = {{"precipitation", "adjusted precipitation", DType::F32, 1, Semantics::Continuous,
                 "mm", std::nullopt},

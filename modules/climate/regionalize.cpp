@@ -23,7 +23,7 @@ OperatorSpec regionalize_spec() {
   s.description =
       "Temperature and precipitation from a DEM and the per-zone station regressions of "
       "climate.fit_stations";
-  s.inputs = {{"dem", "elevation in metres", false}};
+  s.inputs = {single_channel_input("dem", "elevation in metres", Semantics::Continuous)};
   s.outputs = {
       {"temperature", "regionalized temperature column", DType::F32, 1, Semantics::Continuous,
        "degC", std::nullopt},

@@ -26,7 +26,7 @@ OperatorSpec solar_spec() {
       "Potential direct solar radiation summed over days of the year (Wh/m^2) from the DEM's "
       "slope and aspect, latitude, solar constant and atmospheric transmissivity, with cast "
       "shadows (horizon angles over a 64-pixel halo)";
-  s.inputs = {{"dem", "elevation in metres", false}};
+  s.inputs = {single_channel_input("dem", "elevation in metres", Semantics::Continuous)};
   s.outputs = {{"radiation", "potential direct radiation summed over the period", DType::F32, 1,
                 Semantics::Continuous, "Wh/m2", std::nullopt}};
   s.halo = kHalo;

@@ -50,7 +50,7 @@ OperatorSpec features_spec() {
   s.spans_faces = true;       // MosaicFrame places samples across face seams
   s.halo = kHalo;
   s.inputs = {
-      {"dem", "elevation (m)", false},
+      single_channel_input("dem", "elevation (m)", Semantics::Continuous),
       {"strokes", "features layer with strokes of tool 'feature'", false, LayerKind::Features, 0}};
   s.outputs = {
       {"dem", "the deformed elevation", DType::F32, 1, Semantics::Continuous, "m", std::nullopt}};

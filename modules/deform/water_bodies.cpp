@@ -19,12 +19,8 @@ OperatorSpec bodies_spec() {
       "Each water stroke's body from deform.water's depth: feature id, level (m), area (m2) and "
       "volume (m3), as a JSON artifact";
   s.kind = OperatorKind::Reduce;
-  for (const char* name : {"dem", "depth"}) {
-    InputSpec in;
-    in.name = name;
-    in.description = name == std::string("dem") ? "terrain heights (m)" : "water depth (m)";
-    s.inputs.push_back(in);
-  }
+  s.inputs.push_back(single_channel_input("dem", "terrain heights (m)", Semantics::Continuous));
+  s.inputs.push_back(single_channel_input("depth", "water depth (m)", Semantics::Continuous));
   InputSpec strokes;
   strokes.name = "strokes";
   strokes.description = "features layer: Polygon strokes with tool 'water'";

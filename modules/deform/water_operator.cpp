@@ -21,10 +21,7 @@ OperatorSpec water_spec() {
   s.kind = OperatorKind::Region;
   // Pixel centres and the lake's corners are placed through the unfolded plane.
   s.spans_faces = true;
-  InputSpec dem;
-  dem.name = "dem";
-  dem.description = "terrain heights (m)";
-  s.inputs.push_back(dem);
+  s.inputs.push_back(single_channel_input("dem", "terrain heights (m)", Semantics::Continuous));
   InputSpec strokes;
   strokes.name = "strokes";
   strokes.description = "features layer: Polygon strokes with tool 'water'";

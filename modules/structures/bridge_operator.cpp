@@ -30,10 +30,8 @@ OperatorSpec bridge_spec() {
   // (core/mosaic_geometry.h): the DEM's samples and the mask's pixels beyond the seam are the
   // neighbour face's, laid beside it.
   s.spans_faces = true;
-  InputSpec dem;
-  dem.name = "dem";
-  dem.description = "terrain heights (m above the layer's vertical datum)";
-  s.inputs.push_back(dem);
+  s.inputs.push_back(single_channel_input(
+      "dem", "terrain heights (m above the layer's vertical datum)", Semantics::Continuous));
   InputSpec strokes;
   strokes.name = "strokes";
   strokes.description =

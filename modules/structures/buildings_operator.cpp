@@ -23,10 +23,8 @@ OperatorSpec buildings_spec() {
       "skillion), courtyards kept, checked as val3dity checks solids";
   s.kind = OperatorKind::Cell;
   s.halo = kDemHaloPixels;
-  InputSpec dem;
-  dem.name = "dem";
-  dem.description = "terrain heights (m above the layer's vertical datum)";
-  s.inputs.push_back(dem);
+  s.inputs.push_back(single_channel_input(
+      "dem", "terrain heights (m above the layer's vertical datum)", Semantics::Continuous));
   InputSpec orthophoto;
   orthophoto.name = "orthophoto";
   orthophoto.description = "imagery (grey, RGB or RGBA, 0-255) the roofs drape";

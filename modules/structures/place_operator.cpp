@@ -28,10 +28,8 @@ OperatorSpec place_spec() {
       "the terrain its base height";
   s.kind = OperatorKind::Cell;
   s.halo = kDemHaloPixels;  // the terrain under a model's base reaching beyond the cell
-  InputSpec dem;
-  dem.name = "dem";
-  dem.description = "terrain heights (m above the layer's vertical datum)";
-  s.inputs.push_back(dem);
+  s.inputs.push_back(single_channel_input(
+      "dem", "terrain heights (m above the layer's vertical datum)", Semantics::Continuous));
   InputSpec strokes;
   strokes.name = "strokes";
   strokes.description =

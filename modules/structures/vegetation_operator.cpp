@@ -30,7 +30,9 @@ OperatorSpec vegetation_spec() {
       "spacing_m, coloured from the orthophoto, based on the DEM, as instances";
   s.kind = OperatorKind::Cell;
   s.halo = 1;  // the bilinear height and the 3 x 3 colour of plants near the cell's edge
-  s.inputs = {{"dem", "terrain heights (m, on the layer's vertical datum): the plants' base"},
+  s.inputs = {single_channel_input(
+                  "dem", "terrain heights (m, on the layer's vertical datum): the plants' base",
+                  Semantics::Continuous),
               {"orthophoto", "imagery, bands 1-3 red, green, blue in 0..255: the plants' colour"},
               strokes_input()};
   OutputSpec plants;

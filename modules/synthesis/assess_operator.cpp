@@ -30,13 +30,17 @@ OperatorSpec assess_spec() {
       "mask, 5 x 5 patch coherence, distinct sources, most used source, per-label colour "
       "histogram distance, altitude mismatch";
   s.kind = OperatorKind::Reduce;
-  s.inputs = {{"rgb", "the transfer's colours", false},
+  InputSpec rgb{"rgb", "the transfer's colours", false};
+  rgb.channels = {3};
+  s.inputs = {rgb,
               {"source",
                "the transfer's painting pixel (column, row) per output pixel, and its painting "
                "(0 when absent: one painting)",
                false},
-              {"landcover", "the target land cover the transfer was given", false},
-              {"dem", "the transfer's altitude guide (with altitude_range)", true}};
+              single_channel_input("landcover", "the target land cover the transfer was given",
+                                   Semantics::Categorical),
+              single_channel_input("dem", "the transfer's altitude guide (with altitude_range)",
+                                   Semantics::Continuous, true)};
   s.outputs = {{"report", "the measures (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
   s.halo = kCoherenceRadius;
   s.params_schema = {{"type", "object"},
@@ -127,7 +131,6 @@ class Assess : public ReduceOperator {
 
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
-    check_landcover_layer(ctx.input_layer("landcover"), kOp);
     check_same_exemplar(ctx.input_layer("source"), params);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);

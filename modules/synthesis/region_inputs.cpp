@@ -63,9 +63,11 @@ constexpr FilledKind kFilledKinds[] = {{"image", "rgb", LayerValues::Continuous,
 }  // namespace
 
 std::vector<InputSpec> filled_layer_inputs(const char* dem_description) {
-  return {{"image", "imagery (uint8 x 3), for output rgb", true},
-          {"dem", dem_description, true},
-          {"landcover", "land-cover classes (1 channel), for output classes", true}};
+  InputSpec image{"image", "imagery (uint8 x 3), for output rgb", true};
+  image.channels = {3};
+  return {image, single_channel_input("dem", dem_description, Semantics::Continuous, true),
+          single_channel_input("landcover", "land-cover classes (1 channel), for output classes",
+                               Semantics::Categorical, true)};
 }
 
 std::vector<OutputSpec> filled_layer_outputs(const std::string& what) {

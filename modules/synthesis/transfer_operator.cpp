@@ -24,8 +24,14 @@ OperatorSpec transfer_spec() {
   s.description =
       "Paints the land cover with pieces of a painting (paper 000; Lefebvre & Hoppe 2005 "
       "parallel synthesis guided by land cover and altitude): colours and source coordinates";
-  s.inputs = {{"landcover", "target land-cover classes (categorical)", false},
-              {"dem", "elevation in metres, the altitude guide (with altitude_range)", true}};
+  s.inputs = {single_channel_input("landcover",
+                                   "target land-cover classes (ingest them with \"as\": "
+                                   "\"landcover\")",
+                                   Semantics::Categorical),
+              single_channel_input("dem",
+                                   "elevation in metres, the altitude guide (with "
+                                   "altitude_range)",
+                                   Semantics::Continuous, true)};
   s.outputs = {
       {"rgb", "the painting's colours (0 is nodata: a channel at 0 in the painting is written 1)",
        DType::U8, 3, Semantics::Continuous, "", 0.0},
@@ -49,7 +55,6 @@ class Transfer : public CellOperator {
 
   void run(const CellContext& ctx, CellData& data) const override {
     const json& params = *ctx.params;
-    check_landcover_layer(ctx.input_layer("landcover"), spec_.name);
     const auto table = class_table(params.at("landcover_classes"), spec_.name);
     const auto exemplar = transfer_exemplar(params);
     const Tile<float>& landcover = input_with_halo(spec_.name, ctx, data, "landcover", spec_.halo);

@@ -240,13 +240,6 @@ std::map<uint8_t, uint8_t> further_classes(const nlohmann::json& first,
   return out;
 }
 
-void check_landcover_layer(const LayerInfo& layer, const std::string& op) {
-  if (layer.semantics != Semantics::Categorical)
-    throw Error(op + ": inputs.landcover: layer '" + layer.name + "' is " +
-                std::string(semantics_name(layer.semantics)) +
-                ", not categorical: land-cover classes (ingest them with \"as\": \"landcover\")");
-}
-
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value) {
   const auto it = std::isnan(value) ? table.end() : table.find(int(std::lround(value)));
   return it == table.end() ? kUnknownLabel : it->second;

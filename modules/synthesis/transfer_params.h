@@ -63,11 +63,6 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
 // sets.
 std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op);
 
-// Throws maquette::Error naming `op`, the port and the layer unless `layer` (the "landcover"
-// input) is categorical: a quantity (a DEM mapped by mistake) would match no table entry, and
-// every pixel would take any class without a word.
-void check_landcover_layer(const LayerInfo& layer, const std::string& op);
-
 // The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
 // not in the table.
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value);

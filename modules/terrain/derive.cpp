@@ -22,7 +22,7 @@ OperatorSpec derive_spec() {
       "Slope, aspect, profile curvature, hillshade and surface normals of a DEM, with metric "
       "scale from the true cell geometry (seamless across faces)";
   s.kind = OperatorKind::Cell;
-  s.inputs = {{"dem", "elevation in metres", false}};
+  s.inputs = {single_channel_input("dem", "elevation in metres", Semantics::Continuous)};
   s.outputs = {
       {"slope", "slope angle", DType::F32, 1, Semantics::Continuous, "degrees", std::nullopt},
       {"aspect", "direction of steepest descent, clockwise from north; NaN where flat", DType::F32,

@@ -31,7 +31,7 @@ OperatorSpec fill_voids_spec() {
       "biharmonic equation solved per void up to 63 pixels, a multigrid membrane through the "
       "input's overview pyramid beyond; seamless across tiles";
   s.kind = OperatorKind::Cell;
-  s.inputs = {{"dem", "elevation with voids as nodata", false}};
+  s.inputs = {single_channel_input("dem", "elevation with voids as nodata", Semantics::Continuous)};
   s.outputs = {
       {"dem", "elevation with voids filled", DType::F32, 1, Semantics::Continuous, "m",
        std::nullopt},

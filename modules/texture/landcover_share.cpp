@@ -22,7 +22,8 @@ OperatorSpec landcover_share_spec() {
       "Share of the land-cover pixels of the (2r+1)^2 window around each pixel whose code is "
       "one of params.codes (pixels without land cover do not count)";
   s.kind = OperatorKind::Cell;
-  s.inputs = {{"landcover", "categorical land cover (e.g. NLCD codes)", false}};
+  s.inputs = {single_channel_input("landcover", "categorical land cover (e.g. NLCD codes)",
+                                   Semantics::Categorical)};
   s.outputs = {{"share", "share of the window's land cover in params.codes, 0..1 (NaN: none known)",
                 DType::F32, 1, Semantics::Continuous, "", std::nullopt}};
   s.halo = kMaxMajorityRadius;

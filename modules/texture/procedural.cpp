@@ -20,7 +20,7 @@ OperatorSpec procedural_spec() {
       "Evaluates a surface-layer model (paper 001 sections 4-5): B-spline-upsampled DEM, "
       "constraint functions, seamless noise; imagery, displaced height, normals, classes";
   s.kind = OperatorKind::Cell;
-  s.inputs = {{"dem", "elevation in metres", false}};
+  s.inputs = {single_channel_input("dem", "elevation in metres", Semantics::Continuous)};
   for (const std::string& q : kRasterPorts)
     s.inputs.push_back({q, "raster of the model quantity '" + q + "'", true});
   s.outputs = {

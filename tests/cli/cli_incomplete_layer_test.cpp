@@ -9,7 +9,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
 
 #include "run_cli.h"
@@ -204,6 +206,65 @@ TEST_F(IncompleteLayer, RunFailingMidwayLeavesItsOutputRefused) {
   const CliResult ok = run_maquette("run " + dir + "/ok.json", env);
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_EQ(export_png("v").exit_code, 0);
+}
+
+// A run failing before it writes a layer that was complete (its step failing on every cell, or
+// a later step never started) leaves that layer as it was: complete, the same tiles. A task
+// (an ingest) writes before it records its cells, so its layers stay marked whatever it wrote.
+TEST_F(IncompleteLayer, RunFailingBeforeItWritesALayerLeavesItReadable) {
+  std::string cells = run_maquette("cells cover --bbox 6 44 9 46 --level 5").out;
+  const std::string face = cells.substr(0, 1);  // every cell's id starts with its face
+  json p = {{"store", store},
+            {"region", {{"bbox", {6, 44, 9, 46}}}},
+            {"level", 5},
+            {"tile_size", 16},
+            {"steps",
+             {{{"op", "fixture.fill"}, {"outputs", {{"value", "v"}}}, {"params", {{"seed", 2}}}},
+              {{"op", "fixture.blur"},
+               {"inputs", {{"src", "v"}}},
+               {"outputs", {{"dst", "w"}}},
+               {"params", json::object()}}}}};
+  const std::string env =
+      "MAQUETTE_MODULE_PATH=" + std::string(MAQUETTE_FIXTURE_MODULE_DIR) + "/good";
+  const auto run = [&](const json& pipeline) {
+    std::ofstream(dir + "/p2.json") << pipeline.dump();
+    return run_maquette("run " + dir + "/p2.json --threads 2", env);
+  };
+  const auto png_bytes = [&](const std::string& layer) {
+    const CliResult r = export_png(layer);
+    EXPECT_EQ(r.exit_code, 0) << layer << ": " << r.err;
+    std::ifstream in(dir + "/" + layer + ".png", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  ASSERT_EQ(run(p).exit_code, 0);
+  const std::string v = png_bytes("v"), w = png_bytes("w");
+  ASSERT_FALSE(v.empty());
+
+  // The first step fails on every cell: neither layer is written, both stay readable.
+  json failing = p;
+  failing["steps"][0]["params"]["fail_on"] = face;
+  const CliResult first = run(failing);
+  ASSERT_EQ(first.exit_code, 1) << first.err;
+  EXPECT_NE(first.err.find("fixture failure requested"), std::string::npos) << first.err;
+  EXPECT_EQ(run_maquette("info " + store).out.find("INCOMPLETE"), std::string::npos);
+  EXPECT_EQ(png_bytes("v"), v);
+  EXPECT_EQ(png_bytes("w"), w);
+
+  // The second fails on every cell: the first rewrote v whole, w is as it was.
+  failing = p;
+  failing["steps"][1]["params"]["fail_on"] = face;
+  ASSERT_EQ(run(failing).exit_code, 1);
+  EXPECT_EQ(png_bytes("v"), v);
+  EXPECT_EQ(png_bytes("w"), w);
+
+  // Failing on its last cell, the first step has written the others: v is refused (as in
+  // RunFailingMidwayLeavesItsOutputRefused), w, never started, is not.
+  cells.pop_back();
+  failing = p;
+  failing["steps"][0]["params"]["fail_on"] = cells.substr(cells.rfind('\n') + 1);
+  ASSERT_EQ(run(failing).exit_code, 1);
+  EXPECT_EQ(export_png("v").exit_code, 1);
+  EXPECT_EQ(png_bytes("w"), w);
 }
 
 }  // namespace

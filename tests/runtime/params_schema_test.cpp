@@ -18,6 +18,8 @@ const json kSchema = {
       {"steps", {{"type", "integer"}, {"minimum", 1}}},
       {"mode", {{"type", "string"}, {"enum", {"mean", "max"}}, {"default", "mean"}}},
       {"weights", {{"type", "array"}, {"items", {{"type", "number"}}}}},
+      {"pair",
+       {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 2}}},
       {"fast", {{"type", "boolean"}, {"default", false}}},
       {"x", {{"type", "number"}}}}},
     {"required", {"x"}},
@@ -61,6 +63,11 @@ TEST(ParamsSchema, NamesStepFieldAndValue) {
             "step 2 (terrain.derive): params.mode: \"median\" is not one of [\"mean\",\"max\"]");
   EXPECT_EQ(err({{"x", 1}, {"weights", {1, "w"}}}),
             "step 2 (terrain.derive): params.weights[1]: expected a number, got \"w\"");
+  EXPECT_EQ(err({{"x", 1}, {"pair", {1000}}}),
+            "step 2 (terrain.derive): params.pair: expected at least 2 items, got [1000]");
+  EXPECT_EQ(err({{"x", 1}, {"pair", {1, 2, 3}}}),
+            "step 2 (terrain.derive): params.pair: expected at most 2 items, got [1,2,3]");
+  EXPECT_EQ(validate_params(kSchema, {{"x", 1}, {"pair", {1, 2}}}, kStep).at("pair"), json({1, 2}));
   EXPECT_EQ(err({{"x", 1}, {"fast", 1}}),
             "step 2 (terrain.derive): params.fast: expected a boolean, got 1");
   EXPECT_EQ(err(json::array()), "step 2 (terrain.derive): params: expected an object, got []");

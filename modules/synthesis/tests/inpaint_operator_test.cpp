@@ -408,6 +408,29 @@ TEST_F(BridgeRemoved, TheTilesExportDrapesTheFilledPhoto) {
   EXPECT_EQ(deck_contents, 1u);
 }
 
+// A layer of the wrong kind for a port (imagery as land cover or as heights, land cover as
+// imagery) is refused when the pipeline is planned, naming the port, the layer and what the port
+// takes, before the store is made (each inpainted as classes, heights would be a class per value).
+TEST(InpaintOperator, LayersOfTheWrongKindAreRefusedBeforeAnythingRuns) {
+  if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const auto refused = [](const std::string& name, const json& inputs, const json& outputs,
+                          const std::string& message) {
+    const InpaintRun run = run_inpaint(name, 1, "Polygon", inputs, outputs);
+    EXPECT_NE(run.result.exit_code, 0) << name;
+    EXPECT_NE(run.result.err.find(message), std::string::npos) << run.result.err;
+    EXPECT_FALSE(fs::exists(run.store)) << name;
+    fs::remove_all(run.dir);
+  };
+  refused("-cover", {{"landcover", "landsat"}, {"footprints", "bridge"}}, {{"classes", "c"}},
+          "(synthesis.inpaint): inputs.landcover: layer 'landsat' is continuous, but the port "
+          "takes a categorical layer (land-cover classes (1 channel), for output classes)");
+  refused("-dem", {{"dem", "landsat"}, {"footprints", "bridge"}}, {{"heights", "h"}},
+          "(synthesis.inpaint): inputs.dem: layer 'landsat' has 3 channels, but the port takes 1");
+  refused("-image", {{"image", "landcover"}, {"footprints", "bridge"}}, {{"rgb", "filled"}},
+          "(synthesis.inpaint): inputs.image: layer 'landcover' has 1 channel, but the port takes "
+          "3");
+}
+
 TEST(InpaintOperator, AFootprintThatIsNoPolygonIsNamed) {
   if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
   const InpaintRun run = run_inpaint("-line", 1, "LineString");

@@ -171,7 +171,9 @@ TEST(TransferZion, AMissingPaintingABadClassTableAndHeightsAsLandCoverAreNamed) 
           "synthesis.transfer.landcover_classes: key 'forest' is not an integer");
   // The DEM mapped as the land cover: no height is in the table, every pixel would take any class.
   refused("-heights", json::object(), {{"landcover", "dem"}, {"dem", "dem"}},
-          "synthesis.transfer: inputs.landcover: layer 'dem' is continuous, not categorical");
+          "(synthesis.transfer): inputs.landcover: layer 'dem' is continuous, but the port takes "
+          "a categorical layer (target land-cover classes (ingest them with \"as\": "
+          "\"landcover\"))");
 }
 
 TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
