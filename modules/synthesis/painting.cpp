@@ -38,9 +38,17 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
   throw Error(path + ": GDAL cannot open the " + what);
 }
 
-// Band 1 of `ds` as bytes; it must have the painting's size.
+// The one band of `ds` as bytes: it must be one 8-bit band of the painting's size. Read as bytes,
+// another type would be clamped (a float 0..1 altitude all 0 or 1, 16-bit classes all 255), and
+// of an RGB image band 1, its red, would be read alone.
 std::vector<uint8_t> read_band(GDALDataset& ds, const std::string& path, int width, int height,
                                const std::string& what) {
+  if (ds.GetRasterCount() != 1)
+    throw Error(path + ": the " + what + " has " + std::to_string(ds.GetRasterCount()) +
+                " bands: it must be one 8-bit band (grey, not RGB or with alpha)");
+  if (const GDALDataType type = ds.GetRasterBand(1)->GetRasterDataType(); type != GDT_Byte)
+    throw Error(path + ": the " + what + " is " + GDALGetDataTypeName(type) +
+                ": it must be one 8-bit band (Byte, values 0..255)");
   if (ds.GetRasterXSize() != width || ds.GetRasterYSize() != height)
     throw Error(path + ": the " + what + " is " + std::to_string(ds.GetRasterXSize()) + " x " +
                 std::to_string(ds.GetRasterYSize()) + ", the painting " + std::to_string(width) +

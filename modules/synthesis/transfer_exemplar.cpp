@@ -27,17 +27,29 @@ namespace {
 
 constexpr const char* kOp = "synthesis.transfer";
 
+// `read()`, its errors named by `field` (the params' field whose file it reads) too.
+template <class Read>
+auto reading(const std::string& field, Read&& read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    throw Error(field + ": " + e.what());
+  }
+}
+
 // A guide of the painting, 0..1 per pixel: "rows" (a panorama's far, high ground is painted near
-// its top: 1 on the top row, falling to 0 on the bottom one) or a grey image of its size.
+// its top: 1 on the top row, falling to 0 on the bottom one) or a grey image of its size; errors
+// name `field`.
 std::vector<float> painting_guide(const std::string& source, const Exemplar& e,
-                                  const std::string& what) {
+                                  const std::string& what, const std::string& field) {
   std::vector<float> guide(size_t(e.width) * size_t(e.height));
   if (source == "rows") {
     for (int y = 0; y < e.height; ++y)
       std::fill_n(guide.begin() + ptrdiff_t(y) * e.width, e.width,
                   1.0f - float(y) / float(std::max(1, e.height - 1)));
   } else {
-    const auto grey = read_mask(source, e.width, e.height, what + " image");
+    const auto grey =
+        reading(field, [&] { return read_mask(source, e.width, e.height, what + " image"); });
     for (size_t i = 0; i < grey.size(); ++i) guide[i] = float(grey[i]) / 255.0f;
   }
   return guide;
@@ -62,17 +74,21 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
     e.labels = std::move(guided.labels);
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == kUnknownLabel;
   } else if (fields.contains("labels")) {
-    e.labels = read_class_image(fields.at("labels").get<std::string>(), e.width, e.height);
+    const std::string labels = fields.at("labels").get<std::string>();
+    e.labels =
+        reading(where + ".labels", [&] { return read_class_image(labels, e.width, e.height); });
     for (const uint8_t l : e.labels)
       if (l == kUnknownLabel)
-        throw Error(where + ".labels: class " + std::to_string(l) +
+        throw Error(where + ".labels: " + labels + ": class " + std::to_string(l) +
                     " is reserved (unknown); classes are 0..254");
   } else {
     e.labels = segment_by_colour(e, fields.at("classes").get<int>());
   }
   if (fields.contains("exclusion")) {
-    const auto mask =
-        read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
+    const auto mask = reading(where + ".exclusion", [&] {
+      return read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height,
+                       "exclusion mask");
+    });
     for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] |= mask[i] != 0;
   }
   const auto excluded_classes = fields.at("exclude_classes").get<std::vector<int>>();
@@ -85,11 +101,13 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
   if (!guided.altitude.empty())
     e.altitude = std::move(guided.altitude);
   else if (fields.contains("painting_altitude"))
-    e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude");
+    e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude",
+                                where + ".painting_altitude");
   if (!guided.distance.empty())
     e.distance = std::move(guided.distance);
   else if (fields.contains("painting_distance"))
-    e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance");
+    e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance",
+                                where + ".painting_distance");
   return e;
 }
 
@@ -167,7 +185,9 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   if (params.contains("painting_light")) {
     const std::string light = params.at("painting_light").get<std::string>();
     e.light = painting_light(
-        e, light == "lightness" ? painting_lightness(e) : painting_guide(light, e, "light"));
+        e, light == "lightness"
+               ? painting_lightness(e)
+               : painting_guide(light, e, "light", std::string(kOp) + ".painting_light"));
   }
   std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
   for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));

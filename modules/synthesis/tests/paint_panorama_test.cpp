@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 #include "core/error.h"
 #include "core/srgb.h"
@@ -355,6 +356,70 @@ TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
   }
   EXPECT_EQ(runs[0], runs[1]);
   EXPECT_EQ(runs[0], runs[2]);
+}
+
+// The message of `run`'s maquette::Error, or "no error".
+template <class Run>
+std::string error_of(const Run& run) {
+  try {
+    run();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A class image, an exclusion mask, an altitude, distance or light image is one 8-bit band: a
+// float or 16-bit image, an RGB one, is refused naming the field, the file and its type or bands
+// (read as bytes, a float 0..1 altitude would be ~0 everywhere, an RGB image's red its classes).
+TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
+  const Scene& s = scene();
+  const auto refused = [&](const nlohmann::json& raw) {
+    return error_of([&] { transfer_exemplar(paint_params(raw, "m.json").exemplar); });
+  };
+  // The altitude as floats 0..1, the classes as 16 bits (values 256..258, read as 255).
+  test::RasterSpec spec;
+  spec.width = kPaintingWidth, spec.height = kPaintingHeight,
+  spec.geotransform = {0, 1, 0, 0, 0, 1};
+  const std::string altf = s.dir + "/altf.tif", classes16 = s.dir + "/classes16.tif";
+  test::write_raster(altf, spec, [](int, double, double y) { return 1 - y / kPaintingHeight; });
+  spec.type = "UInt16";
+  test::write_raster(classes16, spec,
+                     [](int, double x, double y) { return 256 + painting_label(int(x), int(y)); });
+  nlohmann::json params = s.params();
+  params["painting_altitude"] = altf;
+  params["altitude_range"] = {100, 700};
+  EXPECT_EQ(refused(params), "synthesis.transfer.painting_altitude: " + altf +
+                                 ": the altitude image is Float32: it must be one 8-bit band "
+                                 "(Byte, values 0..255)");
+  params = s.params();
+  params["labels"] = classes16;
+  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + classes16 +
+                                 ": the class image is UInt16: it must be one 8-bit band (Byte, "
+                                 "values 0..255)");
+  // The RGB painting itself as the class image, the exclusion mask, the altitude, the distance.
+  const std::string rgb = s.dir + "/painting.png";
+  for (const auto& [field, what] :
+       {std::pair{"labels", "class image"}, std::pair{"exclusion", "exclusion mask"},
+        std::pair{"painting_altitude", "altitude image"},
+        std::pair{"painting_distance", "distance image"}}) {
+    params = s.params();
+    params[field] = rgb;
+    params["altitude_range"] = {100, 700};
+    if (std::string(field) != "painting_altitude") params.erase("altitude_range");
+    EXPECT_EQ(refused(params), "synthesis.transfer." + std::string(field) + ": " + rgb + ": the " +
+                                   what +
+                                   " has 3 bands: it must be one 8-bit band (grey, not RGB or "
+                                   "with alpha)");
+  }
+  // Class 255 in an 8-bit class image: reserved, the file named.
+  const std::string reserved = s.dir + "/reserved.png";
+  write_image(std::vector<uint8_t>(size_t(kPaintingWidth) * kPaintingHeight, 255), kPaintingWidth,
+              kPaintingHeight, 1, {"PNG", {}}, reserved);
+  params = s.params();
+  params["labels"] = reserved;
+  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + reserved +
+                                 ": class 255 is reserved (unknown); classes are 0..254");
 }
 
 TEST(PaintPanorama, BadInputIsNamed) {

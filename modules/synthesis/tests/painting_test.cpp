@@ -108,6 +108,53 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
             std::string::npos);
 }
 
+// A class image, an exclusion mask or an altitude is one 8-bit band: read as bytes, a float 0..1
+// altitude would be 0 or 1, 16-bit classes 255, and of an RGB image its red band alone. Refused,
+// naming the file and its type or bands.
+TEST(ReadMask, OnlyOneByteBandIsRead) {
+  const std::string dir = test::temp_dir();
+  const auto message = [](const auto& read) {
+    try {
+      read();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto raster = [&](const std::string& name, const std::string& type, int bands) {
+    test::RasterSpec spec;
+    spec.width = 8, spec.height = 6, spec.bands = bands, spec.type = type;
+    spec.geotransform = {0, 1, 0, 0, 0, 1};
+    test::write_raster(dir + "/" + name, spec, [](int, double x, double) { return x / 8; });
+    return dir + "/" + name;
+  };
+  const std::string altitude = raster("altitude.tif", "Float32", 1);
+  EXPECT_EQ(message([&] { read_mask(altitude, 8, 6, "altitude image"); }),
+            altitude +
+                ": the altitude image is Float32: it must be one 8-bit band (Byte, "
+                "values 0..255)");
+  const std::string classes = raster("classes.tif", "UInt16", 1);
+  EXPECT_EQ(message([&] { read_class_image(classes, 8, 6); }),
+            classes +
+                ": the class image is UInt16: it must be one 8-bit band (Byte, values "
+                "0..255)");
+  const std::string rgb = test::write_png(dir + "/rgb.png", 8, 6, 3,
+                                          [](int x, int, int band) { return 40 * band + x; });
+  EXPECT_EQ(message([&] { read_mask(rgb, 8, 6, "exclusion mask"); }),
+            rgb +
+                ": the exclusion mask has 3 bands: it must be one 8-bit band (grey, not RGB "
+                "or with alpha)");
+  EXPECT_EQ(message([&] { read_class_image(rgb, 8, 6); }),
+            rgb +
+                ": the class image has 3 bands: it must be one 8-bit band (grey, not RGB or "
+                "with alpha)");
+  const std::string grey =
+      test::write_png(dir + "/grey.png", 8, 6, 1, [](int x, int y, int) { return x + 10 * y; });
+  const auto bytes = read_mask(grey, 8, 6, "exclusion mask");
+  ASSERT_EQ(bytes.size(), 48u);
+  EXPECT_EQ(bytes[13], 15);  // (5, 1)
+}
+
 // The message of read_painting's error on `path`, or "no error".
 std::string painting_error(const std::string& path) {
   try {
