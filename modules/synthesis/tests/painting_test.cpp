@@ -1,6 +1,7 @@
 // The painting's segmentation by colour on a tiny analytic case: its majority filter; a class
-// image drawn as polygons, against the pixel centres' classes worked out by hand; paintings with
-// transparency, a palette or 16 bits read as a viewer shows them.
+// image drawn as polygons, against the pixel centres' classes worked out by hand (a class written
+// as text named by its feature); masks of one 8-bit band only; paintings with transparency, a
+// palette or 16 bits read as a viewer shows them.
 #include "../painting.h"
 
 #include <gdal_priv.h>
@@ -88,14 +89,29 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
           .find("no attribute \"class\""),
       std::string::npos);
   // One class in quotes makes the attribute a String for every feature (GDAL would read "7a" as
-  // 7, "forest" as 0): the first feature's 2 is refused, naming the type.
+  // 7, "forest" as 0): the feature written in quotes is refused, naming its value and the type,
+  // not the first one, whose 2 is a number in the file.
   EXPECT_NE(
       message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
                       ", " +
                       polygon(R"({"class": "7a"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")))
-          .find("feature 0's class '2' is written as text (the attribute \"class\" is of type "
+          .find("feature 1's class '7a' is written as text (the attribute \"class\" is of type "
                 "String"),
       std::string::npos);
+  // A number in quotes among numbers (the bad-input report's file: feature 1 of 3).
+  const std::string quoted = message(
+      geojson(polygon(R"({"class": 0})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": "3"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": 8})", "[[0, 0], [2, 0], [2, 6], [0, 6], [0, 0]]")));
+  EXPECT_NE(quoted.find("classes.geojson: feature 1's class '3' is written as text"),
+            std::string::npos)
+      << quoted;
+  // Among text, a value that is no number at all: named as such, not as text.
+  const std::string listed = message(
+      geojson(polygon(R"({"class": [2]})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": "3"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")));
+  EXPECT_NE(listed.find("feature 0's class '[2]' is not an integer in 0..254"), std::string::npos)
+      << listed;
   EXPECT_NE(message(geojson(polygon(R"({"class": "forest"})",
                                     "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]")))
                 .find("class 'forest' is written as text"),
