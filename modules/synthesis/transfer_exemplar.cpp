@@ -151,15 +151,23 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
   return out;
 }
 
-// The files the analysis reads for `fields` (the params or one of "exemplars"): the guides'
-// keywords ("rows", "lightness", "guides" with painting_guides) are no files.
-void add_input_files(const nlohmann::json& fields, std::vector<std::string>& files) {
-  for (const std::string field : {"painting", "labels", "exclusion", "painting_altitude",
-                                  "painting_distance", "painting_light", "painting_guides"})
+// The files the analysis reads for `fields` (the params or one of "exemplars", whose fields
+// `prefix` names): the guides' keywords ("rows", "lightness", "guides" with painting_guides) are
+// no files.
+void add_inputs(const nlohmann::json& fields, const std::string& prefix,
+                std::vector<InputFile>& files) {
+  for (const auto& [field, what] : {std::pair<std::string, const char*>{"painting", "the painting"},
+                                    {"labels", "the class image"},
+                                    {"exclusion", "the exclusion mask"},
+                                    {"painting_altitude", "the painting's altitude image"},
+                                    {"painting_distance", "the painting's distance image"},
+                                    {"painting_light", "the painting's light image"},
+                                    {"painting_guides", "the painting's guides"}})
     if (fields.contains(field) &&
         fields.at(field) != (field == "painting_light" ? "lightness" : "rows") &&
         !from_guides(fields, field))
-      files.push_back(fields.at(field).get<std::string>());
+      files.push_back(
+          {std::string(what) + " (" + prefix + field + ")", fields.at(field).get<std::string>()});
 }
 
 // The paintings of `params` by file, for messages: "painting P" or "paintings P, Q".
@@ -225,21 +233,26 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
 // paintings, excluded, or lost to the exemplar's blocks): the synthesis would take any class's
 // pixels there instead (synthesis.cpp, start_pool), without a word.
 void check_table_classes(const TransferExemplar& t, const nlohmann::json& params) {
+  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
+    check_class_has_pixels(t, c, std::string(kOp) + ".landcover_classes." + std::to_string(target));
+}
+
+}  // namespace
+
+void check_class_has_pixels(const TransferExemplar& t, int painting_class,
+                            const std::string& field) {
   const ExemplarLevel& finest = t.pyramid.levels[0];
+  if (painting_class >= 0 && painting_class < kUnknownLabel &&
+      !finest.by_label[size_t(painting_class)].empty())
+    return;
   std::string present;
   for (int l = 0; l < kUnknownLabel; ++l)
     if (!finest.by_label[size_t(l)].empty())
       present += (present.empty() ? "" : ", ") + std::to_string(l);
-  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
-    if (finest.by_label[c].empty())
-      throw Error(std::string(kOp) + ".landcover_classes." + std::to_string(target) +
-                  ": painting class " + std::to_string(c) +
-                  " has no pixel to copy (not in the painting, or excluded); the classes that "
-                  "have: " +
-                  present);
+  throw Error(field + ": painting class " + std::to_string(painting_class) +
+              " has no pixel to copy (not in the painting, or excluded); the classes that have: " +
+              present);
 }
-
-}  // namespace
 
 SourcePixel TransferExemplar::source_of(int32_t s) const {
   const int width = pyramid.levels[0].width, x = s % width, y = s / width;
@@ -273,11 +286,18 @@ nlohmann::json exemplar_key_params(const nlohmann::json& params) {
   return key;
 }
 
+std::vector<InputFile> exemplar_inputs(const nlohmann::json& params) {
+  std::vector<InputFile> files;
+  add_inputs(params, "", files);
+  if (params.contains("exemplars"))
+    for (size_t i = 0; i < params.at("exemplars").size(); ++i)
+      add_inputs(params.at("exemplars").at(i), "exemplars[" + std::to_string(i) + "].", files);
+  return files;
+}
+
 std::vector<std::string> exemplar_input_files(const nlohmann::json& params) {
   std::vector<std::string> files;
-  add_input_files(params, files);
-  if (params.contains("exemplars"))
-    for (const auto& further : params.at("exemplars")) add_input_files(further, files);
+  for (const InputFile& input : exemplar_inputs(params)) files.push_back(input.path);
   return files;
 }
 
