@@ -13,7 +13,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "core/error.h"
 #include "core/json_file.h"
@@ -70,14 +69,8 @@ int main(int argc, char** argv) {
     const std::string picture_path = argv[1], params_path = argv[2], out = argv[3],
                       source = sibling_path(out, "-source.tif");
     const PaintParams params = paint_params(read_json_file(params_path), params_path);
-    std::vector<InputFile> inputs{
-        {"the panorama", picture_path},
-        {"the params", params_path},
-        {"the painting", params.exemplar.at("painting").get<std::string>()}};
-    if (params.exemplar.contains("painting_guides"))
-      inputs.push_back(
-          {"the painting's guides", params.exemplar.at("painting_guides").get<std::string>()});
-    check_outputs_spare_inputs({out, source}, inputs);
+    // Refused before anything is written: an output that is one of the run's inputs.
+    check_outputs_spare_inputs({out, source}, paint_inputs(picture_path, params_path, params));
     const PanoramaPicture picture =
         read_panorama(picture_path, params.shading > 0 || params.synthesis.w_light > 0);
     const auto exemplar = transfer_exemplar(params.exemplar);

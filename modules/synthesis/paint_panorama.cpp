@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
+#include "core/sibling_path.h"
 #include "light_guide.h"
 #include "painted_haze.h"
 #include "painting_guides.h"
@@ -31,6 +33,15 @@ double median_shading(const PanoramaPicture& p) {
 }
 
 }  // namespace
+
+std::vector<InputFile> paint_inputs(const std::string& picture, const std::string& params_path,
+                                    const PaintParams& params) {
+  std::vector<InputFile> inputs{{"the panorama", picture},
+                                {"the panorama's guides", sibling_path(picture, "-guides.tif")},
+                                {"the params", params_path}};
+  for (InputFile& input : exemplar_inputs(params.exemplar)) inputs.push_back(std::move(input));
+  return inputs;
+}
 
 std::vector<float> panorama_light(const PanoramaPicture& p, const PaintParams& params) {
   std::vector<uint8_t> classes(p.shading.size()), terrain(p.shading.size());
@@ -84,6 +95,9 @@ PaintedPanorama paint_panorama(const PanoramaPicture& p, const TransferExemplar&
                      : "shading " + std::to_string(params.shading)) +
                 " asked of a picture read without its shading band");
   check_haze_colour(p, params);  // before the painting's work, not after it
+  // A sky class without pixels would have the sky painted from any class (the land's).
+  if (params.sky_class)
+    check_class_has_pixels(exemplar, *params.sky_class, params.source + ".sky_class");
   const std::vector<float> light = lit ? panorama_light(p, params) : std::vector<float>();
   const int64_t t = params.tile;
   const int64_t across = (p.width + t - 1) / t, down = (p.height + t - 1) / t;

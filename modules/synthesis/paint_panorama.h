@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "paint_params.h"
@@ -27,6 +28,13 @@ struct PaintedPanorama {
   std::vector<uint8_t> rgb;   // 3 per pixel: painted, or the render's sky
   std::vector<float> source;  // 2 per pixel: the painting pixel (column, row) copied, or NaN
 };
+
+// The files a maquette-paint run reads, named for messages (core/output_clash.h): the panorama
+// `picture` and its guides (read_panorama's STEM-guides.tif), the params' file `params_path`, and
+// the exemplar's files (exemplar_inputs: the painting, its class image, exclusion mask, altitude,
+// distance and light images, guides; the further paintings' too). No output may be one of them.
+std::vector<InputFile> paint_inputs(const std::string& picture, const std::string& params_path,
+                                    const PaintParams& params);
 
 // The picture's light guide: each terrain pixel's shading factor as its quantile
 // (class_quantiles, light_guide.h) among the terrain pixels of its painting class (its land
@@ -49,7 +57,8 @@ TargetGuides panorama_target(const PanoramaPicture& picture, const PaintParams& 
 // rendered with --antialias (its coverage guide) gets its skyline anti-aliased in turn
 // (skyline_blend.h).
 // Precondition: the picture has a shading band when params.shading > 0 or w_light > 0
-// (read_panorama with_shading); throws maquette::Error otherwise.
+// (read_panorama with_shading); throws maquette::Error otherwise, and when sky_class has no pixel
+// to copy in the exemplar (check_class_has_pixels, naming params.source's sky_class).
 PaintedPanorama paint_panorama(const PanoramaPicture& picture, const TransferExemplar& exemplar,
                                const PaintParams& params);
 

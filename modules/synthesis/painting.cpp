@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "../texture/hs_histogram.h"
 #include "../texture/kmeans.h"
@@ -38,9 +39,17 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
   throw Error(path + ": GDAL cannot open the " + what);
 }
 
-// Band 1 of `ds` as bytes; it must have the painting's size.
+// The one band of `ds` as bytes: it must be one 8-bit band of the painting's size. Read as bytes,
+// another type would be clamped (a float 0..1 altitude all 0 or 1, 16-bit classes all 255), and
+// of an RGB image band 1, its red, would be read alone.
 std::vector<uint8_t> read_band(GDALDataset& ds, const std::string& path, int width, int height,
                                const std::string& what) {
+  if (ds.GetRasterCount() != 1)
+    throw Error(path + ": the " + what + " has " + std::to_string(ds.GetRasterCount()) +
+                " bands: it must be one 8-bit band (grey, not RGB or with alpha)");
+  if (const GDALDataType type = ds.GetRasterBand(1)->GetRasterDataType(); type != GDT_Byte)
+    throw Error(path + ": the " + what + " is " + GDALGetDataTypeName(type) +
+                ": it must be one 8-bit band (Byte, values 0..255)");
   if (ds.GetRasterXSize() != width || ds.GetRasterYSize() != height)
     throw Error(path + ": the " + what + " is " + std::to_string(ds.GetRasterXSize()) + " x " +
                 std::to_string(ds.GetRasterYSize()) + ", the painting " + std::to_string(width) +
@@ -49,6 +58,28 @@ std::vector<uint8_t> read_band(GDALDataset& ds, const std::string& path, int wid
   if (ds.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, out.data(), width, height,
                                     GDT_Byte, 0, 0, nullptr) != CE_None)
     throw Error(path + ": GDAL cannot read the " + what);
+  return out;
+}
+
+// The "class" of each feature of the GeoJSON `path` as written (its JSON value), by feature id;
+// empty when the file is no GeoJSON. A GeoJSON layer whose features mix numbers and text has its
+// attribute typed String, the numbers read as text too: only the features' own JSON (the
+// driver's NATIVE_DATA) tells which is written as text.
+std::map<GIntBig, nlohmann::json> written_classes(GDALDataset& ds, const std::string& path) {
+  std::map<GIntBig, nlohmann::json> out;
+  if (!ds.GetDriver() || std::string(ds.GetDriver()->GetDescription()) != "GeoJSON") return out;
+  const char* const options[] = {"NATIVE_DATA=YES", nullptr};
+  const char* const drivers[] = {"GeoJSON", nullptr};
+  std::unique_ptr<GDALDataset> native(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, options));
+  if (!native || native->GetLayerCount() != 1) return out;
+  for (const auto& feature : *native->GetLayer(0)) {
+    const char* text = feature->GetNativeData();
+    const auto json = nlohmann::json::parse(text ? text : "", nullptr, false);
+    if (json.is_object() && json.contains("properties") && json["properties"].is_object() &&
+        json["properties"].contains("class"))
+      out[feature->GetFID()] = json["properties"]["class"];
+  }
   return out;
 }
 
@@ -65,6 +96,8 @@ std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path
   // A String field would be read (and burnt) as atof's value: "forest" as 0, "7a" as 7.
   const OGRFieldType type = layer->GetLayerDefn()->GetFieldDefn(field)->GetType();
   const bool numeric = type == OFTInteger || type == OFTInteger64 || type == OFTReal;
+  // Not numeric: which features are written as text (without the file's own JSON, all of them).
+  const auto written = numeric ? std::map<GIntBig, nlohmann::json>() : written_classes(ds, path);
   for (const auto& feature : *layer) {
     const std::string name = path + ": feature " + std::to_string(feature->GetFID());
     const OGRGeometry* geometry = feature->GetGeometryRef();
@@ -73,15 +106,22 @@ std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path
       throw Error(name + " is " +
                   (geometry ? std::string("a ") + geometry->getGeometryName() : "no geometry") +
                   ", not a polygon");
+    const auto as_written = written.find(feature->GetFID());
+    const bool found = as_written != written.end();
+    const bool text = !numeric && (written.empty() || (found && as_written->second.is_string()));
+    const bool number = numeric || (found && as_written->second.is_number());
     const double value = feature->GetFieldAsDouble(field);
-    if (!numeric || !feature->IsFieldSetAndNotNull(field) || value != std::floor(value) ||
+    if (text || !number || !feature->IsFieldSetAndNotNull(field) || value != std::floor(value) ||
         value < 0 || value >= kUnknownLabel)
-      throw Error(name + "'s class '" + feature->GetFieldAsString(field) +
-                  (numeric ? "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1)
-                           : std::string("' is written as text (the attribute \"class\" is of "
-                                         "type ") +
-                                 OGRFieldDefn::GetFieldTypeName(type) +
-                                 ": write the classes as numbers, not in quotes)"));
+      throw Error(name + "'s class '" +
+                  (found && !as_written->second.is_string()
+                       ? as_written->second.dump()
+                       : std::string(feature->GetFieldAsString(field))) +
+                  (!text ? "' is not an integer in 0.." + std::to_string(kUnknownLabel - 1)
+                         : std::string("' is written as text (the attribute \"class\" is of "
+                                       "type ") +
+                               OGRFieldDefn::GetFieldTypeName(type) +
+                               ": write the classes as numbers, not in quotes)"));
   }
   layer->ResetReading();
   std::vector<uint8_t> out(size_t(width) * size_t(height), kUnknownLabel);

@@ -27,17 +27,29 @@ namespace {
 
 constexpr const char* kOp = "synthesis.transfer";
 
+// `read()`, its errors named by `field` (the params' field whose file it reads) too.
+template <class Read>
+auto reading(const std::string& field, Read&& read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    throw Error(field + ": " + e.what());
+  }
+}
+
 // A guide of the painting, 0..1 per pixel: "rows" (a panorama's far, high ground is painted near
-// its top: 1 on the top row, falling to 0 on the bottom one) or a grey image of its size.
+// its top: 1 on the top row, falling to 0 on the bottom one) or a grey image of its size; errors
+// name `field`.
 std::vector<float> painting_guide(const std::string& source, const Exemplar& e,
-                                  const std::string& what) {
+                                  const std::string& what, const std::string& field) {
   std::vector<float> guide(size_t(e.width) * size_t(e.height));
   if (source == "rows") {
     for (int y = 0; y < e.height; ++y)
       std::fill_n(guide.begin() + ptrdiff_t(y) * e.width, e.width,
                   1.0f - float(y) / float(std::max(1, e.height - 1)));
   } else {
-    const auto grey = read_mask(source, e.width, e.height, what + " image");
+    const auto grey =
+        reading(field, [&] { return read_mask(source, e.width, e.height, what + " image"); });
     for (size_t i = 0; i < grey.size(); ++i) guide[i] = float(grey[i]) / 255.0f;
   }
   return guide;
@@ -62,17 +74,21 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
     e.labels = std::move(guided.labels);
     for (size_t i = 0; i < e.labels.size(); ++i) e.excluded[i] |= e.labels[i] == kUnknownLabel;
   } else if (fields.contains("labels")) {
-    e.labels = read_class_image(fields.at("labels").get<std::string>(), e.width, e.height);
+    const std::string labels = fields.at("labels").get<std::string>();
+    e.labels =
+        reading(where + ".labels", [&] { return read_class_image(labels, e.width, e.height); });
     for (const uint8_t l : e.labels)
       if (l == kUnknownLabel)
-        throw Error(where + ".labels: class " + std::to_string(l) +
+        throw Error(where + ".labels: " + labels + ": class " + std::to_string(l) +
                     " is reserved (unknown); classes are 0..254");
   } else {
     e.labels = segment_by_colour(e, fields.at("classes").get<int>());
   }
   if (fields.contains("exclusion")) {
-    const auto mask =
-        read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height, "exclusion mask");
+    const auto mask = reading(where + ".exclusion", [&] {
+      return read_mask(fields.at("exclusion").get<std::string>(), e.width, e.height,
+                       "exclusion mask");
+    });
     for (size_t i = 0; i < mask.size(); ++i) e.excluded[i] |= mask[i] != 0;
   }
   const auto excluded_classes = fields.at("exclude_classes").get<std::vector<int>>();
@@ -85,11 +101,13 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
   if (!guided.altitude.empty())
     e.altitude = std::move(guided.altitude);
   else if (fields.contains("painting_altitude"))
-    e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude");
+    e.altitude = painting_guide(fields.at("painting_altitude").get<std::string>(), e, "altitude",
+                                where + ".painting_altitude");
   if (!guided.distance.empty())
     e.distance = std::move(guided.distance);
   else if (fields.contains("painting_distance"))
-    e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance");
+    e.distance = painting_guide(fields.at("painting_distance").get<std::string>(), e, "distance",
+                                where + ".painting_distance");
   return e;
 }
 
@@ -133,15 +151,23 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
   return out;
 }
 
-// The files the analysis reads for `fields` (the params or one of "exemplars"): the guides'
-// keywords ("rows", "lightness", "guides" with painting_guides) are no files.
-void add_input_files(const nlohmann::json& fields, std::vector<std::string>& files) {
-  for (const std::string field : {"painting", "labels", "exclusion", "painting_altitude",
-                                  "painting_distance", "painting_light", "painting_guides"})
+// The files the analysis reads for `fields` (the params or one of "exemplars", whose fields
+// `prefix` names): the guides' keywords ("rows", "lightness", "guides" with painting_guides) are
+// no files.
+void add_inputs(const nlohmann::json& fields, const std::string& prefix,
+                std::vector<InputFile>& files) {
+  for (const auto& [field, what] : {std::pair<std::string, const char*>{"painting", "the painting"},
+                                    {"labels", "the class image"},
+                                    {"exclusion", "the exclusion mask"},
+                                    {"painting_altitude", "the painting's altitude image"},
+                                    {"painting_distance", "the painting's distance image"},
+                                    {"painting_light", "the painting's light image"},
+                                    {"painting_guides", "the painting's guides"}})
     if (fields.contains(field) &&
         fields.at(field) != (field == "painting_light" ? "lightness" : "rows") &&
         !from_guides(fields, field))
-      files.push_back(fields.at(field).get<std::string>());
+      files.push_back(
+          {std::string(what) + " (" + prefix + field + ")", fields.at(field).get<std::string>()});
 }
 
 // The paintings of `params` by file, for messages: "painting P" or "paintings P, Q".
@@ -167,7 +193,9 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   if (params.contains("painting_light")) {
     const std::string light = params.at("painting_light").get<std::string>();
     e.light = painting_light(
-        e, light == "lightness" ? painting_lightness(e) : painting_guide(light, e, "light"));
+        e, light == "lightness"
+               ? painting_lightness(e)
+               : painting_guide(light, e, "light", std::string(kOp) + ".painting_light"));
   }
   std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
   for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));
@@ -205,21 +233,26 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
 // paintings, excluded, or lost to the exemplar's blocks): the synthesis would take any class's
 // pixels there instead (synthesis.cpp, start_pool), without a word.
 void check_table_classes(const TransferExemplar& t, const nlohmann::json& params) {
+  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
+    check_class_has_pixels(t, c, std::string(kOp) + ".landcover_classes." + std::to_string(target));
+}
+
+}  // namespace
+
+void check_class_has_pixels(const TransferExemplar& t, int painting_class,
+                            const std::string& field) {
   const ExemplarLevel& finest = t.pyramid.levels[0];
+  if (painting_class >= 0 && painting_class < kUnknownLabel &&
+      !finest.by_label[size_t(painting_class)].empty())
+    return;
   std::string present;
   for (int l = 0; l < kUnknownLabel; ++l)
     if (!finest.by_label[size_t(l)].empty())
       present += (present.empty() ? "" : ", ") + std::to_string(l);
-  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
-    if (finest.by_label[c].empty())
-      throw Error(std::string(kOp) + ".landcover_classes." + std::to_string(target) +
-                  ": painting class " + std::to_string(c) +
-                  " has no pixel to copy (not in the painting, or excluded); the classes that "
-                  "have: " +
-                  present);
+  throw Error(field + ": painting class " + std::to_string(painting_class) +
+              " has no pixel to copy (not in the painting, or excluded); the classes that have: " +
+              present);
 }
-
-}  // namespace
 
 SourcePixel TransferExemplar::source_of(int32_t s) const {
   const int width = pyramid.levels[0].width, x = s % width, y = s / width;
@@ -253,11 +286,18 @@ nlohmann::json exemplar_key_params(const nlohmann::json& params) {
   return key;
 }
 
+std::vector<InputFile> exemplar_inputs(const nlohmann::json& params) {
+  std::vector<InputFile> files;
+  add_inputs(params, "", files);
+  if (params.contains("exemplars"))
+    for (size_t i = 0; i < params.at("exemplars").size(); ++i)
+      add_inputs(params.at("exemplars").at(i), "exemplars[" + std::to_string(i) + "].", files);
+  return files;
+}
+
 std::vector<std::string> exemplar_input_files(const nlohmann::json& params) {
   std::vector<std::string> files;
-  add_input_files(params, files);
-  if (params.contains("exemplars"))
-    for (const auto& further : params.at("exemplars")) add_input_files(further, files);
+  for (const InputFile& input : exemplar_inputs(params)) files.push_back(input.path);
   return files;
 }
 

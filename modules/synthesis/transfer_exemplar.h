@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "combined_exemplar.h"
+#include "core/output_clash.h"
 #include "exemplar_pyramid.h"
 
 namespace maquette::synthesis {
@@ -51,6 +52,12 @@ struct TransferExemplar {
 // keyed by those and the bytes of exemplar_input_files) across processes and runs.
 std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
 
+// Throws maquette::Error when `painting_class` has no pixel to copy in the exemplar (not in the
+// paintings, excluded, or lost to its blocks), naming `field` (where the class is given), the
+// class and the classes that have pixels: the synthesis would copy any class's pixels for it.
+void check_class_has_pixels(const TransferExemplar& exemplar, int painting_class,
+                            const std::string& field);
+
 // What of the params the analysis reads (not the synthesis's weights): the exemplar's fields,
 // and of "landcover_classes" the sets of classes taken as one (the whole table with
 // "exemplars"), and what the masks made from "painting_guides" are mapped with
@@ -59,7 +66,9 @@ nlohmann::json exemplar_key_params(const nlohmann::json& params);
 
 // The files the analysis reads: each painting's image, class image or polygons, exclusion mask,
 // altitude, distance and light images, and guides file ("rows", "lightness" and "guides" are no
-// files).
+// files); in exemplar_inputs each named for messages by what it is and its field ("the class image
+// (exemplars[0].labels)").
+std::vector<InputFile> exemplar_inputs(const nlohmann::json& params);
 std::vector<std::string> exemplar_input_files(const nlohmann::json& params);
 
 }  // namespace maquette::synthesis

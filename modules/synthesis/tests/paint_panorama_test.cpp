@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <tuple>
+#include <utility>
 
 #include "core/error.h"
 #include "core/srgb.h"
@@ -355,6 +357,151 @@ TEST(PaintPanorama, TheProgramWritesTheSameBytesForThreadsAndTiles) {
   }
   EXPECT_EQ(runs[0], runs[1]);
   EXPECT_EQ(runs[0], runs[2]);
+}
+
+// The message of `run`'s maquette::Error, or "no error".
+template <class Run>
+std::string error_of(const Run& run) {
+  try {
+    run();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A sky class that the painting does not have (or has only excluded) would have the sky painted
+// from any class, the land's: refused, naming the params' field, the class and those the painting
+// has.
+TEST(PaintPanorama, ASkyClassWithoutPixelsIsRefused) {
+  const Scene& s = scene();
+  nlohmann::json params = s.params();
+  params["sky_class"] = 7;
+  EXPECT_EQ(error_of([&] { paint(s, params); }),
+            "params.json.sky_class: painting class 7 has no pixel to copy (not in the painting, "
+            "or excluded); the classes that have: 0, 1, 2");
+  // The program: refused before anything is written.
+  const std::string out = s.dir + "/no-sky.png";
+  const std::string r =
+      run_paint(s.picture + " " + write_params(s, params, "nosky.json") + " " + out);
+  EXPECT_NE(r.find("nosky.json.sky_class: painting class 7 has no pixel to copy"),
+            std::string::npos)
+      << r;
+  EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// A class image, an exclusion mask, an altitude, distance or light image is one 8-bit band: a
+// float or 16-bit image, an RGB one, is refused naming the field, the file and its type or bands
+// (read as bytes, a float 0..1 altitude would be ~0 everywhere, an RGB image's red its classes).
+TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
+  const Scene& s = scene();
+  const auto refused = [&](const nlohmann::json& raw) {
+    return error_of([&] { transfer_exemplar(paint_params(raw, "m.json").exemplar); });
+  };
+  // The altitude as floats 0..1, the classes as 16 bits (values 256..258, read as 255).
+  test::RasterSpec spec;
+  spec.width = kPaintingWidth, spec.height = kPaintingHeight,
+  spec.geotransform = {0, 1, 0, 0, 0, 1};
+  const std::string altf = s.dir + "/altf.tif", classes16 = s.dir + "/classes16.tif";
+  test::write_raster(altf, spec, [](int, double, double y) { return 1 - y / kPaintingHeight; });
+  spec.type = "UInt16";
+  test::write_raster(classes16, spec,
+                     [](int, double x, double y) { return 256 + painting_label(int(x), int(y)); });
+  nlohmann::json params = s.params();
+  params["painting_altitude"] = altf;
+  params["altitude_range"] = {100, 700};
+  EXPECT_EQ(refused(params), "synthesis.transfer.painting_altitude: " + altf +
+                                 ": the altitude image is Float32: it must be one 8-bit band "
+                                 "(Byte, values 0..255)");
+  params = s.params();
+  params["labels"] = classes16;
+  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + classes16 +
+                                 ": the class image is UInt16: it must be one 8-bit band (Byte, "
+                                 "values 0..255)");
+  // The RGB painting itself as the class image, the exclusion mask, the altitude, the distance.
+  const std::string rgb = s.dir + "/painting.png";
+  for (const auto& [field, what] :
+       {std::pair{"labels", "class image"}, std::pair{"exclusion", "exclusion mask"},
+        std::pair{"painting_altitude", "altitude image"},
+        std::pair{"painting_distance", "distance image"}}) {
+    params = s.params();
+    params[field] = rgb;
+    params["altitude_range"] = {100, 700};
+    if (std::string(field) != "painting_altitude") params.erase("altitude_range");
+    EXPECT_EQ(refused(params), "synthesis.transfer." + std::string(field) + ": " + rgb + ": the " +
+                                   what +
+                                   " has 3 bands: it must be one 8-bit band (grey, not RGB or "
+                                   "with alpha)");
+  }
+  // Class 255 in an 8-bit class image: reserved, the file named.
+  const std::string reserved = s.dir + "/reserved.png";
+  write_image(std::vector<uint8_t>(size_t(kPaintingWidth) * kPaintingHeight, 255), kPaintingWidth,
+              kPaintingHeight, 1, {"PNG", {}}, reserved);
+  params = s.params();
+  params["labels"] = reserved;
+  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + reserved +
+                                 ": class 255 is reserved (unknown); classes are 0..254");
+}
+
+// No output may be one of the run's inputs, however its path is spelled: the panorama's guides,
+// the class image, the exclusion mask, the altitude, distance and light images (the panorama,
+// the params, the painting and its guides too); nor may OUT-source.tif. Refused before anything
+// is written, naming the output and the input.
+TEST(PaintPanorama, NoOutputIsAnInput) {
+  const Scene& s = scene();
+  nlohmann::json params = s.params();
+  for (const char* guide : {"alt", "dist", "light"})
+    write_image(std::vector<uint8_t>(size_t(kPaintingWidth) * kPaintingHeight, 100), kPaintingWidth,
+                kPaintingHeight, 1, {"PNG", {}}, s.dir + "/" + guide + ".png");
+  params["painting_altitude"] = s.dir + "/alt.png";
+  params["altitude_range"] = {100, 700};
+  params["painting_distance"] = s.dir + "/dist.png";
+  params["painting_light"] = s.dir + "/light.png";
+  // The exclusion mask as a GeoTIFF named as another output's source companion.
+  test::shell_output("gdal_translate -q " + s.dir + "/excluded.png " + s.dir + "/mask-source.tif");
+  params["exclusion"] = s.dir + "/mask-source.tif";
+  const std::string json = write_params(s, params, "inputs.json");
+  for (const auto& [out, replaced, input] :
+       {std::tuple<std::string, std::string, std::string>{
+            s.dir + "/pano-guides.tif", s.dir + "/pano-guides.tif", "the panorama's guides"},
+        {s.dir + "/./labels.png", s.dir + "/labels.png", "the class image (labels)"},
+        {s.dir + "/alt.png", s.dir + "/alt.png",
+         "the painting's altitude image (painting_altitude)"},
+        {s.dir + "/../" + std::filesystem::path(s.dir).filename().string() + "/dist.png",
+         s.dir + "/dist.png", "the painting's distance image (painting_distance)"},
+        {s.dir + "/light.png", s.dir + "/light.png", "the painting's light image (painting_light)"},
+        {s.dir + "/mask.png", s.dir + "/mask-source.tif", "the exclusion mask (exclusion)"}}) {
+    const std::string before = test::file_fingerprint(replaced);
+    ASSERT_FALSE(before.empty()) << replaced;
+    const std::string r = run_paint(s.picture + " " + json + " " + out);
+    const std::string named =
+        out == s.dir + "/mask.png" ? s.dir + "/mask-source.tif" : out;  // the companion
+    EXPECT_NE(r.find(named + " is " + input + " " + replaced +
+                     ": it would be replaced; give another output path"),
+              std::string::npos)
+        << r;
+    EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+    EXPECT_EQ(test::file_fingerprint(replaced), before) << replaced;
+  }
+  // The same params with an output of its own run.
+  const std::string r = run_paint(s.picture + " " + json + " " + s.dir + "/own.png");
+  EXPECT_NE(r.find("exit 0"), std::string::npos) << r;
+  // The further paintings' files are inputs too, named by their field.
+  const nlohmann::json several = {
+      {"painting", "a.png"},
+      {"labels", "guides"},
+      {"painting_guides", "a-guides.tif"},
+      {"painting_distance", "rows"},
+      {"painting_light", "lightness"},
+      {"exemplars", {{{"painting", "b.png"}, {"labels", "b.geojson"}, {"exclusion", "bx.png"}}}}};
+  std::string listed;
+  for (const InputFile& input : exemplar_inputs(several))
+    listed += input.what + " " + input.path + "; ";
+  EXPECT_EQ(listed,
+            "the painting (painting) a.png; the painting's guides (painting_guides) a-guides.tif; "
+            "the painting (exemplars[0].painting) b.png; the class image (exemplars[0].labels) "
+            "b.geojson; the exclusion mask (exemplars[0].exclusion) bx.png; ");
 }
 
 TEST(PaintPanorama, BadInputIsNamed) {

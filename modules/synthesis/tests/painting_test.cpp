@@ -1,6 +1,7 @@
 // The painting's segmentation by colour on a tiny analytic case: its majority filter; a class
-// image drawn as polygons, against the pixel centres' classes worked out by hand; paintings with
-// transparency, a palette or 16 bits read as a viewer shows them.
+// image drawn as polygons, against the pixel centres' classes worked out by hand (a class written
+// as text named by its feature); masks of one 8-bit band only; paintings with transparency, a
+// palette or 16 bits read as a viewer shows them.
 #include "../painting.h"
 
 #include <gdal_priv.h>
@@ -88,14 +89,29 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
           .find("no attribute \"class\""),
       std::string::npos);
   // One class in quotes makes the attribute a String for every feature (GDAL would read "7a" as
-  // 7, "forest" as 0): the first feature's 2 is refused, naming the type.
+  // 7, "forest" as 0): the feature written in quotes is refused, naming its value and the type,
+  // not the first one, whose 2 is a number in the file.
   EXPECT_NE(
       message(geojson(polygon(R"({"class": 2})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") +
                       ", " +
                       polygon(R"({"class": "7a"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")))
-          .find("feature 0's class '2' is written as text (the attribute \"class\" is of type "
+          .find("feature 1's class '7a' is written as text (the attribute \"class\" is of type "
                 "String"),
       std::string::npos);
+  // A number in quotes among numbers (the bad-input report's file: feature 1 of 3).
+  const std::string quoted = message(
+      geojson(polygon(R"({"class": 0})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": "3"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": 8})", "[[0, 0], [2, 0], [2, 6], [0, 6], [0, 0]]")));
+  EXPECT_NE(quoted.find("classes.geojson: feature 1's class '3' is written as text"),
+            std::string::npos)
+      << quoted;
+  // Among text, a value that is no number at all: named as such, not as text.
+  const std::string listed = message(
+      geojson(polygon(R"({"class": [2]})", "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]") + ", " +
+              polygon(R"({"class": "3"})", "[[0, 0], [4, 0], [4, 6], [0, 6], [0, 0]]")));
+  EXPECT_NE(listed.find("feature 0's class '[2]' is not an integer in 0..254"), std::string::npos)
+      << listed;
   EXPECT_NE(message(geojson(polygon(R"({"class": "forest"})",
                                     "[[0, 0], [8, 0], [8, 6], [0, 6], [0, 0]]")))
                 .find("class 'forest' is written as text"),
@@ -106,6 +122,53 @@ TEST(ReadClassImage, RefusesUncoveredPixelsAndClassesOutOfRange) {
                             R"({"type": "LineString", "coordinates": [[0, 0], [8, 6]]}})"))
                 .find("feature 1 is a LINESTRING, not a polygon"),
             std::string::npos);
+}
+
+// A class image, an exclusion mask or an altitude is one 8-bit band: read as bytes, a float 0..1
+// altitude would be 0 or 1, 16-bit classes 255, and of an RGB image its red band alone. Refused,
+// naming the file and its type or bands.
+TEST(ReadMask, OnlyOneByteBandIsRead) {
+  const std::string dir = test::temp_dir();
+  const auto message = [](const auto& read) {
+    try {
+      read();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto raster = [&](const std::string& name, const std::string& type, int bands) {
+    test::RasterSpec spec;
+    spec.width = 8, spec.height = 6, spec.bands = bands, spec.type = type;
+    spec.geotransform = {0, 1, 0, 0, 0, 1};
+    test::write_raster(dir + "/" + name, spec, [](int, double x, double) { return x / 8; });
+    return dir + "/" + name;
+  };
+  const std::string altitude = raster("altitude.tif", "Float32", 1);
+  EXPECT_EQ(message([&] { read_mask(altitude, 8, 6, "altitude image"); }),
+            altitude +
+                ": the altitude image is Float32: it must be one 8-bit band (Byte, "
+                "values 0..255)");
+  const std::string classes = raster("classes.tif", "UInt16", 1);
+  EXPECT_EQ(message([&] { read_class_image(classes, 8, 6); }),
+            classes +
+                ": the class image is UInt16: it must be one 8-bit band (Byte, values "
+                "0..255)");
+  const std::string rgb = test::write_png(dir + "/rgb.png", 8, 6, 3,
+                                          [](int x, int, int band) { return 40 * band + x; });
+  EXPECT_EQ(message([&] { read_mask(rgb, 8, 6, "exclusion mask"); }),
+            rgb +
+                ": the exclusion mask has 3 bands: it must be one 8-bit band (grey, not RGB "
+                "or with alpha)");
+  EXPECT_EQ(message([&] { read_class_image(rgb, 8, 6); }),
+            rgb +
+                ": the class image has 3 bands: it must be one 8-bit band (grey, not RGB or "
+                "with alpha)");
+  const std::string grey =
+      test::write_png(dir + "/grey.png", 8, 6, 1, [](int x, int y, int) { return x + 10 * y; });
+  const auto bytes = read_mask(grey, 8, 6, "exclusion mask");
+  ASSERT_EQ(bytes.size(), 48u);
+  EXPECT_EQ(bytes[13], 15);  // (5, 1)
 }
 
 // The message of read_painting's error on `path`, or "no error".
