@@ -347,6 +347,10 @@ class Runner {
         throw Error(sp.step->label() + ": inputs." + port + ": " + e.what());
       }
     }
+    // A region over no tile of the first input (a bbox beside the data) computes nothing: said.
+    if (sp.cells.size() == 0 && !sp.inputs.empty() && !quiet_)
+      spdlog::warn("{}: no tile of inputs.{} (layer '{}') lies in the region: nothing computed",
+                   s.label, sp.inputs.front().first, sp.inputs.front().second.name);
     StepIO io(*store_, sp, run_id, relay_ ? &*relay_ : nullptr);
     const OperatorKind kind = sp.step->op->spec().kind;
     if (kind == OperatorKind::Cell) {

@@ -176,9 +176,13 @@ std::vector<uint8_t> table_classes(const nlohmann::json& value, const std::strin
   return out;
 }
 
-// Every table entry's classes, by target value; throws on a key that is no integer.
+// Every table entry's classes, by target value; throws on an empty table (every pixel would take
+// any class) and on a key that is no integer.
 std::map<int, std::vector<uint8_t>> table_entries(const nlohmann::json& table,
                                                   const std::string& op) {
+  if (table.empty())
+    throw Error(op + ".landcover_classes: {}: map at least one land-cover value to a painting " +
+                "class (with none, every pixel would take any class)");
   std::map<int, std::vector<uint8_t>> out;
   for (const auto& [key, value] : table.items()) {
     const std::optional<int> target = whole_int<int>(key);

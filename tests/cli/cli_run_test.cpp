@@ -160,6 +160,20 @@ TEST_F(CliRun, DryRunWritesNothing) {
   EXPECT_EQ(store_fingerprint(store_), before);
 }
 
+// A region beside the data computes nothing, and says so (it passed in silence).
+TEST_F(CliRun, ARegionBesideTheDataIsSaid) {
+  json p = small_pipeline(store_);
+  p["region"]["bbox"] = {100.0, 10.0, 101.0, 11.0};
+  p["steps"].erase(0);  // derive alone, from the stored dem
+  write_file(dir_ + "/beside.json", p.dump());
+  const CliResult r = run_maquette("run " + dir_ + "/beside.json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("step 1 (terrain.derive): no tile of inputs.dem (layer 'dem') lies in the "
+                       "region: nothing computed"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(CliRun, BadPipelinesAreRefusedBeforeAnythingRuns) {
   json p = small_pipeline(store_);
   expect_refused("{\"store\": \"s.mqt\",\n  \"steps\": [,]}", "line 2");

@@ -154,6 +154,8 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
           "synthesis.transfer.landcover_classes.8: painting class 6 is in two different sets");
   refused({{"4", nlohmann::json::array()}}, "synthesis.transfer.landcover_classes.4: []");
   refused({{"4", {6, 255}}}, "synthesis.transfer.landcover_classes.4: [6,255] is not");
+  refused(nlohmann::json::object(),
+          "synthesis.transfer.landcover_classes: {}: map at least one land-cover value");
 
   // The exemplar's pixels are relabelled: the ramp's two colour classes become one.
   nlohmann::json p = params(painting_png(64), 1);
