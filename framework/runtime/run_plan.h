@@ -68,7 +68,8 @@ TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 
 // Throws maquette::Error naming the step and field: an input layer neither in `store` (null: the
 // store does not exist yet) nor written by an earlier step, a layer of the wrong kind for its port
-// (a raster layer given to a features port, or the reverse), raster inputs of one step at
+// (a raster layer given to a features port, or the reverse) or of other semantics or channels
+// than the port takes (InputSpec::semantics, channels), raster inputs of one step at
 // different levels or tile sizes, a region operator over cells of several faces (or, for one that
 // spans faces, of faces that no face and its edge neighbours hold, or of three faces meeting at a
 // corner) or with a mosaic side above kMaxMosaicSide.
