@@ -33,6 +33,7 @@
 #include "core/error.h"
 #include "core/whole_int.h"
 #include "ebsynth.h"
+#include "gdal/image_file.h"
 #include "runtime/params_schema.h"
 #include "transfer_params.h"
 #include "zion_fixture.h"
@@ -393,9 +394,11 @@ EbsynthRun run_ebsynth(const Exemplar& e, int side, int threads, const nlohmann:
   return r;
 }
 
-// Ours with `seeds` seeds from params.seed on (and ebsynth once when `with_ebsynth`).
+// Ours with `seeds` seeds from params.seed on (and ebsynth once when `with_ebsynth`), each
+// written to `picture` + seed + ".png" when `picture` is not empty.
 int run(int side, int threads, int step, SynthesisParams params, const nlohmann::json& classes,
-        const nlohmann::json& painting_classes, bool with_ebsynth, int seeds) {
+        const nlohmann::json& painting_classes, bool with_ebsynth, int seeds,
+        const std::string& picture) {
   const PixelRect out{0, 0, side, side};
   const double mp = double(side) * side / 1e6;
   std::shared_ptr<const TransferExemplar> t;
@@ -425,6 +428,13 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
     std::printf("ours, seed %llu: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n",
                 (unsigned long long)params.seed, ours_time.cpu, ours_time.cpu / mp, ours_time.wall,
                 ours_time.wall / mp);
+    if (!picture.empty()) {
+      std::vector<uint8_t> pixels(ours_rgb.size());
+      for (size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] = uint8_t(std::clamp(std::lround(ours_rgb[i]), 0L, 255L));
+      write_image(pixels, side, side, 3, {"PNG", {}},
+                  picture + std::to_string(params.seed) + ".png");
+    }
     ours_m.push_back(metrics(e, tally(e, assessed(out, ours, ours_rgb, classes), out, step)));
     averaged_m.push_back(
         metrics(e, tally(e, assessed(out, ours, plain_vote(e, out, ours), classes), out, step)));
@@ -465,6 +475,7 @@ namespace {
 constexpr const char* kProgram = "synthesis_ebsynth_compare";
 constexpr const char* kUsage =
     R"(usage: synthesis_ebsynth_compare [side] [threads] [step] [vote] [params] [ours|both] [seeds]
+                                  [picture]
   side     the output window's side in pixels (512)
   threads  threads for both syntheses (2)
   step     the coherence measure's sample: every step-th column and row (2; >= 1)
@@ -481,6 +492,7 @@ constexpr const char* kUsage =
   ours     skip ebsynth (a variant measured against an earlier run's ebsynth); both: run it
   seeds    run ours with this many seeds, params.seed (0) and on, and print each measure's
            min / median / max and each class's histogram distance beside a random draw's (1)
+  picture  write each seed's output of ours to picture + seed + ".png" (none)
 )";
 
 // Argument `i` as an integer >= `min` (the whole argument: "2x" is refused), `fallback` when
@@ -544,10 +556,11 @@ int main(int argc, char** argv) try {
     throw maquette::Error(std::string(kProgram) + ": argument 6 '" + which +
                           "': expected \"ours\" (our transfer alone) or \"both\"");
   const int seeds = int_argument(argc, argv, 7, "seeds", 1, 1);
-  if (argc > 8)
+  const std::string picture = argc > 8 ? argv[8] : "";
+  if (argc > 9)
     throw maquette::Error(
         std::string(kProgram) +
-        ": too many arguments: side threads step vote params [ours|both] [seeds]");
+        ": too many arguments: side threads step vote params [ours|both] [seeds] [picture]");
   if (weights.contains("exclude_classes") && !weights.contains("labels"))
     throw maquette::Error(std::string(kProgram) +
                           ": params.exclude_classes without params.labels: the 8 colour classes "
@@ -558,7 +571,7 @@ int main(int argc, char** argv) try {
   if (weights.contains("exemplars")) painting_classes["harmonize"] = weights.at("harmonize");
   return maquette::synthesis::bench::run(side, threads, step, params,
                                          weights.at("landcover_classes"), painting_classes,
-                                         which == "both", seeds);
+                                         which == "both", seeds, picture);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
   return 1;

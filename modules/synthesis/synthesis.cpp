@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "patch_pass.h"
 #include "pixel_hash.h"
 #include "vote.h"
 
@@ -36,24 +37,38 @@ struct LevelPlan {
 };
 
 // From the finest level's window back to the coarsest (the vote reads kVoteRadius around the
-// output window): each sub-pass reads its state within
-// kPatchRadius, each pass its snapshot within kRepetitionRadius, each level its parent.
-std::array<LevelPlan, kLevels> plan_levels(const PixelRect& out) {
-  std::array<LevelPlan, kLevels> plans{};
+// output window, each patch pass's sub-pass its state within kPatchPassRadius): each sub-pass
+// reads its state within kPatchRadius, each pass its snapshot within kRepetitionRadius, each
+// level its parent.
+struct Plan {
+  std::array<PassPlan, kMaxPatchPasses> patch_passes{};
+  std::array<LevelPlan, kLevels> levels{};
+};
+
+Plan plan_levels(const PixelRect& out, int patch_passes) {
+  Plan plan;
   PixelRect need = grow(out, kVoteRadius);  // the finest level's vote reads it
+  for (int pass = patch_passes - 1; pass >= 0; --pass) {
+    PassPlan& p = plan.patch_passes[size_t(pass)];
+    p.outs[kSubPasses - 1] = need;
+    for (int s = kSubPasses - 2; s >= 0; --s)
+      p.outs[size_t(s)] = grow(p.outs[size_t(s) + 1], kPatchPassRadius);
+    p.start = grow(p.outs[0], kPatchPassRadius);
+    need = p.start;
+  }
   for (int l = 0; l < kLevels; ++l) {
     for (int pass = kPasses - 1; pass >= 0; --pass) {
-      PassPlan& p = plans[size_t(l)].passes[size_t(pass)];
+      PassPlan& p = plan.levels[size_t(l)].passes[size_t(pass)];
       p.outs[kSubPasses - 1] = need;
       for (int s = kSubPasses - 2; s >= 0; --s)
         p.outs[size_t(s)] = grow(p.outs[size_t(s) + 1], kPatchRadius);
       p.start = grow(p.outs[0], std::max(kPatchRadius, kRepetitionRadius));
       need = p.start;
     }
-    plans[size_t(l)].start = need;
+    plan.levels[size_t(l)].start = need;
     need = parent(need);
   }
-  return plans;
+  return plan;
 }
 
 // Exemplar pixel indices over a rectangle of global pixels of one level.
@@ -351,6 +366,24 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
   return state;
 }
 
+// The finest level's patch passes (patch_pass.h); their draws' salts follow the correction's.
+State patch_passed(State state, const ExemplarLevel& e, const LevelGuides& g,
+                   const SynthesisParams& p, int64_t col_period,
+                   const std::array<PassPlan, kMaxPatchPasses>& plans) {
+  const PatchPassInputs in{g.rect,          g.labels,       g.depth, p.depth_break,
+                           p.patch_balance, p.patch_search, p.seed,  col_period};
+  for (int pass = 0; pass < p.patch_passes; ++pass)
+    for (int sub = 0; sub < kSubPasses; ++sub) {
+      const PixelRect& r = plans[size_t(pass)].outs[size_t(sub)];
+      State next(r);
+      const auto [px, py] = kParities[size_t(sub)];
+      const uint64_t salt = 64 + uint64_t(pass * kSubPasses + sub) * kMaxPatchSearch;
+      next.src = patch_sub_pass(e, in, state.rect, state.src, r, px, py, salt);
+      state = std::move(next);
+    }
+  return state;
+}
+
 }  // namespace
 
 int synthesis_halo() {
@@ -359,9 +392,9 @@ int synthesis_halo() {
   const int64_t period = int64_t(1) << kLevels;
   for (int64_t offset = 0; offset < period; ++offset) {
     const PixelRect out{offset, offset, 1, 1};
-    const auto plans = plan_levels(out);
+    const Plan plan = plan_levels(out, kMaxPatchPasses);
     for (int l = 0; l < kLevels; ++l) {
-      const PixelRect& s = plans[size_t(l)].start;
+      const PixelRect& s = plan.levels[size_t(l)].start;
       halo = std::max({halo, out.col0 - (s.col0 << l), ((s.col0 + s.width) << l) - (out.col0 + 1)});
     }
   }
@@ -386,10 +419,16 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
   if (guides.col_period < 0 || guides.col_period % (int64_t(1) << kLevels) != 0)
     throw Error("synthesis: col_period " + std::to_string(guides.col_period) +
                 ": must be a multiple of " + std::to_string(1 << kLevels));
-  const auto plans = plan_levels(out);
+  if (params.patch_passes < 0 || params.patch_passes > kMaxPatchPasses)
+    throw Error("synthesis: patch_passes " + std::to_string(params.patch_passes) +
+                ": must be 0 .. " + std::to_string(kMaxPatchPasses));
+  if (params.patch_search < 0 || params.patch_search > kMaxPatchSearch)
+    throw Error("synthesis: patch_search " + std::to_string(params.patch_search) +
+                ": must be 0 .. " + std::to_string(kMaxPatchSearch));
+  const Plan plans = plan_levels(out, params.patch_passes);
   State state({});
   for (int l = kLevels - 1; l >= 0; --l) {
-    const LevelPlan& plan = plans[size_t(l)];
+    const LevelPlan& plan = plans.levels[size_t(l)];
     const ExemplarLevel& e = pyramid.levels[size_t(l)];
     const LevelGuides g = level_guides(guides, l, plan.start);
     const int64_t period = guides.col_period >> l;
@@ -400,6 +439,7 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
       state = corrected(std::move(state), e, g, params, l, pyramid.k, period,
                         plan.passes[size_t(pass)], pass);
     if (l == 0) {
+      state = patch_passed(std::move(state), e, g, params, period, plans.patch_passes);
       State voted(out);
       voted.src = vote(e,
                        {state.rect, state.src, g.rect, g.labels, g.depth, params.depth_break,

@@ -54,6 +54,13 @@
 // pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
 // on an allowed pixel.
 //
+// Then, with patch_passes > 0, the finest level's patch passes (patch_pass.h): each pixel takes,
+// among the copies under way around it (S(p + d) - d, d within 2), the one whose 5 x 5 exemplar
+// patch is nearest the output's (the coherence synthesis.assess measures; ebsynth's search
+// without its averaging), with patch_search places drawn around its source where the target's
+// classes meet, and patch_balance weighing them by their colour excess as the vote does; in the
+// same 2 x 2 sub-passes.
+//
 // Last, the finest level's vote (vote.h; ebsynth's coherence comes from votes of the overlapping
 // patches, here the vote picks a source, it does not average colours): each pixel takes, among
 // the sources S(p + d) - d the patches of side 2 vote_radius + 1 around it propose (of its
@@ -91,6 +98,7 @@ inline constexpr int kPasses = 2;             // correction passes per level
 inline constexpr int kSubPasses = 4;          // 2 x 2
 inline constexpr int kRepetitionRadius = 3;   // of the reuse penalty's window, at each level
 inline constexpr int kVoteRadius = 2;         // the widest vote (its patches' radius)
+inline constexpr int kMaxPatchPasses = 3;     // the finest level's patch passes (patch_pass.h)
 inline constexpr int kSpreadBlockShift = 4;   // D_spread's blocks: 16 x 16 pixels of a level
 inline constexpr int kSpreadRegionShift = 3;  // D_spread's exemplar regions: 8 x 8 pixels
 
@@ -105,6 +113,9 @@ struct SynthesisParams {
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;
+  int patch_passes = 0;       // 0 .. kMaxPatchPasses: the finest level's (patch_pass.h)
+  double patch_balance = 0;   // their histogram balance (patch_pass.h), an exponent; 0: none
+  int patch_search = 0;       // their places drawn per pixel where classes meet (patch_pass.h)
   int vote_radius = 1;        // 0 .. kVoteRadius; 0: no vote
   double vote_balance = 0;    // the vote's histogram balance (vote.h), an exponent; 0: none
   int jitter = 1;             // amplitude of the upsampling jitter, pixels at each level (0: none)

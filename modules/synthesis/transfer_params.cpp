@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/whole_int.h"
 #include "exemplar.h"
+#include "patch_pass.h"
 
 namespace maquette::synthesis {
 
@@ -107,24 +108,32 @@ nlohmann::json synthesis_params_schema() {
     out["description"] = description;
     return out;
   };
-  return {{"w_label", weight(2.0, "weight of the 3 x 3 neighbourhood's label mismatch")},
-          {"w_altitude", weight(1.0,
-                                "weight of the altitude mismatch (with dem, altitude_range and "
-                                "painting_altitude)")},
-          {"w_repetition", weight(0.3, "penalty on a source patch used again nearby")},
-          {"w_usage", weight(0.05, "weight of the exemplar pixels' measured over-use")},
-          {"w_spread", weight(0.15,
-                              "weight of each block's preference among the exemplar's "
-                              "regions")},
-          {"coherence", weight(0.5,
-                               "a candidate that is no neighbour's source shifted costs 1 + "
-                               "coherence times more")},
-          {"jitter", whole(0, 4, 1, "jitter of the exemplar coordinates at each level, pixels")},
-          {"vote_radius", whole(0, kVoteRadius, 1,
-                                "radius of the finest level's vote among overlapping patches "
-                                "(0: none)")},
-          {"vote_balance", weight(0.0, "the vote's histogram balance, an exponent (0: none)")},
-          {"seed", whole(0, std::nullopt, 0, "of the jitter and the random candidates")}};
+  return {
+      {"w_label", weight(2.0, "weight of the 3 x 3 neighbourhood's label mismatch")},
+      {"w_altitude", weight(1.0,
+                            "weight of the altitude mismatch (with dem, altitude_range and "
+                            "painting_altitude)")},
+      {"w_repetition", weight(0.3, "penalty on a source patch used again nearby")},
+      {"w_usage", weight(0.05, "weight of the exemplar pixels' measured over-use")},
+      {"w_spread", weight(0.15,
+                          "weight of each block's preference among the exemplar's "
+                          "regions")},
+      {"coherence", weight(0.5,
+                           "a candidate that is no neighbour's source shifted costs 1 + "
+                           "coherence times more")},
+      {"jitter", whole(0, 4, 1, "jitter of the exemplar coordinates at each level, pixels")},
+      {"patch_passes", whole(0, kMaxPatchPasses, 0,
+                             "passes at the finest level taking, among the copies under way "
+                             "around each pixel, the one whose 5 x 5 patch fits best")},
+      {"patch_balance", weight(0.0, "the patch passes' histogram balance, an exponent (0: none)")},
+      {"patch_search", whole(0, kMaxPatchSearch, 0,
+                             "places the patch passes draw around a pixel's source where the "
+                             "target's classes meet")},
+      {"vote_radius", whole(0, kVoteRadius, 1,
+                            "radius of the finest level's vote among overlapping patches "
+                            "(0: none)")},
+      {"vote_balance", weight(0.0, "the vote's histogram balance, an exponent (0: none)")},
+      {"seed", whole(0, std::nullopt, 0, "of the jitter and the random candidates")}};
 }
 
 nlohmann::json transfer_params_schema() {
@@ -146,6 +155,9 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.w_spread = params.at("w_spread").get<double>();
   sp.coherence = params.at("coherence").get<double>();
   sp.jitter = params.at("jitter").get<int>();
+  sp.patch_passes = params.at("patch_passes").get<int>();
+  sp.patch_balance = params.at("patch_balance").get<double>();
+  sp.patch_search = params.at("patch_search").get<int>();
   sp.vote_radius = params.at("vote_radius").get<int>();
   sp.vote_balance = params.at("vote_balance").get<double>();
   sp.seed = params.at("seed").get<uint64_t>();

@@ -20,6 +20,16 @@ bool across_depth_break(float a, float b, double ratio) {
   return std::max(a, b) > ratio * std::min(a, b);
 }
 
+bool depth_break_within(const std::vector<float>& depth, const PixelRect& rect, int64_t col,
+                        int64_t row, int radius, double ratio) {
+  if (depth.empty()) return false;
+  const float here = depth[offset(rect, col, row)];
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx)
+      if (across_depth_break(here, depth[offset(rect, col + dx, row + dy)], ratio)) return true;
+  return false;
+}
+
 std::vector<int32_t> vote(const ExemplarLevel& e, const VoteInputs& in, int radius,
                           const PixelRect& out) {
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
@@ -29,14 +39,7 @@ std::vector<int32_t> vote(const ExemplarLevel& e, const VoteInputs& in, int radi
       const size_t g = offset(in.guide_rect, col, row);
       int32_t& winner = result[offset(out, col, row)];
       winner = in.state[offset(in.state_rect, col, row)];
-      bool broken = false;  // a depth break within the vote's window
-      if (!in.depth.empty())
-        for (int dy = -radius; dy <= radius; ++dy)
-          for (int dx = -radius; dx <= radius; ++dx)
-            broken = broken || across_depth_break(
-                                   in.depth[g], in.depth[offset(in.guide_rect, col + dx, row + dy)],
-                                   in.depth_break);
-      if (broken) continue;
+      if (depth_break_within(in.depth, in.guide_rect, col, row, radius, in.depth_break)) continue;
       const uint8_t label = in.labels[g];
       proposals.clear();
       std::array<double, 3> mean{};

@@ -35,6 +35,12 @@ namespace maquette::synthesis {
 // Unknown depths break nothing.
 bool across_depth_break(float a, float b, double ratio);
 
+// Whether a depth break lies between pixel (col, row) and any pixel within `radius` (Chebyshev)
+// of it, `depth` holding the depths over `rect`, row-major (empty: no breaks). Precondition: the
+// window lies in `rect`.
+bool depth_break_within(const std::vector<float>& depth, const PixelRect& rect, int64_t col,
+                        int64_t row, int radius, double ratio);
+
 // Added to a proposal's squared distance (RGB 0..1) before the balance's factor: a proposal at
 // the mean itself is still weighed by its excess.
 inline constexpr double kBalanceFloor = 1e-4;

@@ -605,7 +605,7 @@ TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
 
 // synthesis.transfer (issue 18: the same bits for any ranks and window) on a land cover made by
 // texture.procedural: a 128 x 96 painting of two regions written as a binary PPM, cells of 256
-// pixels (the transfer's halo is 189). The land cover is made once over the windows and a ring
+// pixels (the transfer's halo is 213). The land cover is made once over the windows and a ring
 // of cells around them, so that every window's halo reads it; each transfer runs on a copy.
 void write_painting(const fs::path& file) {
   const int w = 128, h = 96;

@@ -31,7 +31,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kFaceN = 0, kFaceO = 1, kFaceP = 2, kFaceQ = 3, kFaceR = 4, kFaceS = 5;  // cell_id.h
-constexpr int kLevel = 5, kSize = 256;               // tiles of 256 pixels: the halo's 189 fit
+constexpr int kLevel = 5, kSize = 256;               // tiles of 256 pixels: the halo's 213 fit
 constexpr int64_t kFace = int64_t(kSize) << kLevel;  // pixels a face
 constexpr int kPixelLevel = kLevel + 8;
 constexpr uint32_t kRow = 1u << (kLevel - 1);  // cells on the equator, far from the cube corners

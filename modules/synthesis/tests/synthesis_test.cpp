@@ -2,8 +2,9 @@
 // their halo equal the whole image's crop (64^2 and 128^2 tiles, the guides cut to each window
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
 // target's labels; the output is the vote of the copy, and the vote smooths the colours of
-// neighbours; guides that miss the halo and a vote radius outside
-// 0 .. kVoteRadius are refused.
+// neighbours; the patch passes keep the tiles equal and lower the coherence; guides that miss the
+// halo, a vote radius outside 0 .. kVoteRadius and patch passes outside 0 .. kMaxPatchPasses are
+// refused.
 #include "../synthesis.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,9 @@
 #include <thread>
 #include <utility>
 
+#include "../assess_metrics.h"
 #include "../exemplar_usage.h"
+#include "../patch_pass.h"
 #include "../pixel_hash.h"
 #include "../vote.h"
 #include "core/error.h"
@@ -152,6 +155,39 @@ TEST_F(SynthesisTest, TheBalancedVoteOfRadius2TilesEqualTheWholeImage) {
       whole.size() / 100);
 }
 
+// The patch passes (patch_pass.h), the most of them, balanced and searching, keep the output a
+// function of global pixel coordinates (their reach is in the halo), change it, and lower its
+// coherence (synthesis.assess's: the SSD of each 5 x 5 output patch to its nearest exemplar patch).
+TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoherence) {
+  SynthesisParams passed;
+  passed.patch_passes = kMaxPatchPasses;
+  passed.patch_balance = 0.25;
+  passed.patch_search = kMaxPatchSearch;
+  const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
+  const auto whole = synthesize(*pyramid_, target, passed, kWhole);
+  EXPECT_EQ(differing(tiled(64, 2, passed), whole), 0u);
+  EXPECT_EQ(differing(tiled(128, 1, passed), whole), 0u);
+  const PixelRect window{kWhole.col0 + 37, kWhole.row0 + 53, 101, 67};
+  const auto shifted =
+      synthesize(*pyramid_, guides(grown(window, synthesis_halo())), passed, window);
+  size_t moved = 0;
+  for (int64_t r = 0; r < window.height; ++r)
+    for (int64_t c = 0; c < window.width; ++c)
+      moved +=
+          shifted[size_t(r * window.width + c)] != whole[size_t((r + 53) * kWhole.width + c + 37)];
+  EXPECT_EQ(moved, 0u);
+  const Exemplar copied = copied_exemplar(pyramid_->levels[0]);
+  const TargetGuides labels = guides(kWhole);
+  const auto coherence = [&](const std::vector<int32_t>& src) {
+    AssessedImage image{kWhole, std::vector<float>(3 * src.size()), src, labels.labels, {}};
+    for (size_t i = 0; i < src.size(); ++i)
+      for (size_t k = 0; k < 3; ++k) image.rgb[3 * i + k] = copied.rgb[3 * size_t(src[i]) + k];
+    return metrics(copied, tally(copied, image, kWhole, 4)).coherence;
+  };
+  EXPECT_GT(differing(whole, *whole_), whole.size() / 10);
+  EXPECT_LT(coherence(whole), 0.9 * coherence(*whole_));
+}
+
 TEST_F(SynthesisTest, NeverCopiesAnExcludedPixel) {
   size_t excluded = 0;
   for (const int32_t s : *whole_) {
@@ -270,8 +306,11 @@ TEST_F(SynthesisTest, RaisingTheAltitudeWeightLowersTheAltitudeMismatch) {
   }
 }
 
+// synthesis_halo() is the widest reach, that of the most patch passes.
 TEST_F(SynthesisTest, RefusesGuidesWithoutTheHalo) {
-  EXPECT_THROW(synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo() - 8)), {}, kWhole),
+  SynthesisParams passed;
+  passed.patch_passes = kMaxPatchPasses;
+  EXPECT_THROW(synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo() - 8)), passed, kWhole),
                Error);
 }
 
@@ -292,6 +331,21 @@ TEST_F(SynthesisTest, RefusesAVoteRadiusOutsideItsRange) {
     SynthesisParams params;
     params.vote_radius = radius;
     EXPECT_NO_THROW(synthesize(*pyramid_, target, params, kWhole)) << "vote_radius " << radius;
+  }
+}
+
+TEST_F(SynthesisTest, RefusesPatchPassesOutsideTheirRange) {
+  const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
+  for (const int passes : {-1, kMaxPatchPasses + 1}) {
+    SynthesisParams params;
+    params.patch_passes = passes;
+    try {
+      synthesize(*pyramid_, target, params, kWhole);
+      ADD_FAILURE() << "patch_passes " << passes << " accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "synthesis: patch_passes " + std::to_string(passes) +
+                                           ": must be 0 .. " + std::to_string(kMaxPatchPasses));
+    }
   }
 }
 

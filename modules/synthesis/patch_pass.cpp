@@ -1,0 +1,102 @@
+#include "patch_pass.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "pixel_hash.h"
+#include "vote.h"
+
+namespace maquette::synthesis {
+namespace {
+
+constexpr int kSide = 2 * kPatchPassRadius + 1;
+constexpr int kRowValues = 3 * kSide;  // RGB of one row of a patch
+// The vote's floor (RGB 0..1) for each pixel of a patch but its centre.
+constexpr float kPatchBalanceFloor = float(kBalanceFloor * (kSide * kSide - 1));
+
+size_t offset(const PixelRect& r, int64_t col, int64_t row) {
+  return size_t(row - r.row0) * size_t(r.width) + size_t(col - r.col0);
+}
+
+}  // namespace
+
+std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInputs& in,
+                                    const PixelRect& state_rect, const std::vector<int32_t>& state,
+                                    const PixelRect& out, int px, int py, uint64_t salt) {
+  constexpr int R = kPatchPassRadius;
+  std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
+  std::array<float, kSide * kRowValues> patch{};  // the output's colours around p, row by row
+  std::array<int32_t, kSide * kSide + kMaxPatchSearch> proposals{};
+  const bool balanced = in.balance > 0 && !e.colour_excess.empty();
+  for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
+    for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
+      int32_t& winner = result[offset(out, col, row)];
+      winner = state[offset(state_rect, col, row)];
+      if ((col & 1) != px || (row & 1) != py) continue;
+      if (depth_break_within(in.depth, in.guide_rect, col, row, R, in.depth_break)) continue;
+      const uint8_t label = in.labels[offset(in.guide_rect, col, row)];
+      size_t n = 0;
+      // Kept when its patch lies inside the exemplar, it is allowed and of p's label; once.
+      const auto offer = [&](int x, int y) {
+        if (x < R || y < R || x >= e.width - R || y >= e.height - R) return;
+        const int32_t c = e.index(x, y);
+        if (e.excluded[size_t(c)] || (label != kUnknownLabel && e.labels[size_t(c)] != label))
+          return;
+        if (std::find(proposals.begin(), proposals.begin() + std::ptrdiff_t(n), c) ==
+            proposals.begin() + std::ptrdiff_t(n))
+          proposals[n++] = c;
+      };
+      float* value = patch.data();
+      bool classes_meet = false;
+      for (int dy = -R; dy <= R; ++dy)
+        for (int dx = -R; dx <= R; ++dx) {
+          const int32_t s = state[offset(state_rect, col + dx, row + dy)];
+          value = std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(s), 3, value);
+          offer(s % e.width - dx, s / e.width - dy);
+          classes_meet =
+              classes_meet || in.labels[offset(in.guide_rect, col + dx, row + dy)] != label;
+        }
+      // Where the copies under way disagree and the target's classes meet, places drawn around
+      // p's own source.
+      if (n > 1 && classes_meet) {
+        const int64_t hashed_col = wrapped_col(col, in.col_period);
+        for (int j = 0; j < in.search; ++j) {
+          const int radius = kPatchSearchRadius >> j;
+          const uint64_t h = pixel_hash(hashed_col, row, 0, in.seed, salt + uint64_t(j));
+          offer(winner % e.width + int(h % uint64_t(2 * radius + 1)) - radius,
+                winner / e.width + int((h >> 32) % uint64_t(2 * radius + 1)) - radius);
+        }
+      }
+      if (n <= 1) {  // within a copy under way, or no proposal kept
+        if (n == 1) winner = proposals[0];
+        continue;
+      }
+      std::array<float, kSide * kSide + kMaxPatchSearch> excess_factor{};
+      if (balanced)
+        for (size_t i = 0; i < n; ++i)
+          excess_factor[i] =
+              float(std::pow(double(e.colour_excess[size_t(proposals[i])]), in.balance));
+      float* centre = patch.data() + R * kRowValues + 3 * R;
+      float least = std::numeric_limits<float>::infinity();
+      for (size_t i = 0; i < n; ++i) {
+        const int32_t c = proposals[i];
+        // p's own pixel left out of the distance: its colour will be the candidate's.
+        std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(c), 3, centre);
+        const float factor = balanced ? excess_factor[i] : 1.0f;
+        float d = balanced ? kPatchBalanceFloor : 0.0f;
+        for (int oy = -R; oy <= R && d * factor < least; ++oy) {
+          const float* a = patch.data() + (oy + R) * kRowValues;
+          const float* b =
+              e.rgb.data() + 3 * (std::ptrdiff_t(c) + std::ptrdiff_t(oy) * e.width - R);
+          for (int k = 0; k < kRowValues; ++k) d += (a[k] - b[k]) * (a[k] - b[k]);
+        }
+        if (d * factor < least) least = d * factor, winner = c;
+      }
+    }
+  return result;
+}
+
+}  // namespace maquette::synthesis
