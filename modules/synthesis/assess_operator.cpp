@@ -87,9 +87,17 @@ Tally from_json(const json& j) {
   return t;
 }
 
+// A param's value as a message shows it: its JSON, cut to 60 characters; "absent" for none.
+std::string shown(const json& value) {
+  if (value.is_null()) return "absent";
+  const std::string text = value.dump();
+  return text.size() <= 60 ? text : text.substr(0, 57) + "...";
+}
+
 // The exemplar's params (exemplar_key_params) in which `params` differ from those of the
-// synthesis.transfer that made `source` (its layer's provenance); none when they agree, or when the
-// layer was made otherwise or by params this version no longer reads.
+// synthesis.transfer that made `source` (its layer's provenance), each as "field: the transfer's
+// value, assess's value"; none when they agree, or when the layer was made otherwise or by params
+// this version no longer reads.
 std::vector<std::string> differing_exemplar_params(const LayerInfo& source, const json& params) {
   const json& made_by = source.provenance;
   if (made_by.value("operator", "") != "synthesis.transfer" || !made_by.contains("params"))
@@ -102,11 +110,15 @@ std::vector<std::string> differing_exemplar_params(const LayerInfo& source, cons
     return {};
   }
   const json ours = exemplar_key_params(params);
+  json keys = made;
+  keys.update(ours);
   std::vector<std::string> fields;
-  for (const auto& [key, value] : made.items())
-    if (!ours.contains(key) || ours.at(key) != value) fields.push_back(key);
-  for (const auto& [key, value] : ours.items())
-    if (!made.contains(key)) fields.push_back(key);
+  for (const auto& item : keys.items()) {
+    const std::string& key = item.key();
+    const json theirs = made.value(key, json()), mine = ours.value(key, json());
+    if (theirs != mine)
+      fields.push_back(key + ": the transfer's " + shown(theirs) + ", assess's " + shown(mine));
+  }
   return fields;
 }
 
@@ -117,7 +129,7 @@ void check_same_exemplar(const LayerInfo& source, const json& params) {
   const auto fields = differing_exemplar_params(source, params);
   if (fields.empty()) return;
   std::string list;
-  for (const std::string& f : fields) list += (list.empty() ? "" : ", ") + f;
+  for (const std::string& f : fields) list += (list.empty() ? "" : "; ") + f;
   throw Error(std::string(kOp) +
               ": its exemplar params differ from those synthesis.transfer made layer '" +
               source.name + "' with (" + list +

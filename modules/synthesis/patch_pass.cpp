@@ -16,6 +16,8 @@ constexpr int kSide = 2 * kPatchPassRadius + 1;
 constexpr int kRowValues = 3 * kSide;  // RGB of one row of a patch
 // The vote's floor (RGB 0..1) for each pixel of a patch but its centre.
 constexpr float kPatchBalanceFloor = float(kBalanceFloor * (kSide * kSide - 1));
+// The altitude weight's scale: a patch's pixels (but the centre) over a 3 x 3 neighbourhood's.
+constexpr double kAltitudeScale = double(kSide * kSide - 1) / double(kPatchSide * kPatchSide);
 
 size_t offset(const PixelRect& r, int64_t col, int64_t row) {
   return size_t(row - r.row0) * size_t(r.width) + size_t(col - r.col0);
@@ -37,7 +39,8 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
       winner = state[offset(state_rect, col, row)];
       if ((col & 1) != px || (row & 1) != py) continue;
       if (depth_break_within(in.depth, in.guide_rect, col, row, R, in.depth_break)) continue;
-      const uint8_t label = in.labels[offset(in.guide_rect, col, row)];
+      const size_t g = offset(in.guide_rect, col, row);
+      const uint8_t label = in.labels[g];
       size_t n = 0;
       // Kept when its patch lies inside the exemplar, it is allowed and of p's label; once.
       const auto offer = [&](int x, int y) {
@@ -86,14 +89,17 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
         // p's own pixel left out of the distance: its colour will be the candidate's.
         std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(c), 3, centre);
         const float factor = balanced ? excess_factor[i] : 1.0f;
+        const float guide = in.w_altitude > 0 ? float(in.w_altitude * kAltitudeScale *
+                                                      guide_mismatch(in.altitude, g, e.altitude, c))
+                                              : 0.0f;
         float d = balanced ? kPatchBalanceFloor : 0.0f;
-        for (int oy = -R; oy <= R && d * factor < least; ++oy) {
+        for (int oy = -R; oy <= R && d * factor + guide < least; ++oy) {
           const float* a = patch.data() + (oy + R) * kRowValues;
           const float* b =
               e.rgb.data() + 3 * (std::ptrdiff_t(c) + std::ptrdiff_t(oy) * e.width - R);
           for (int k = 0; k < kRowValues; ++k) d += (a[k] - b[k]) * (a[k] - b[k]);
         }
-        if (d * factor < least) least = d * factor, winner = c;
+        if (d * factor + guide < least) least = d * factor + guide, winner = c;
       }
     }
   return result;

@@ -16,6 +16,11 @@
 // the global pixel, the seed and `salt`, so a function of global pixel coordinates): an exemplar
 // patch whose own edge fits the target's.
 //
+// With an altitude guide (the target's and the exemplar's), w_altitude times the squared
+// difference of p's altitude and the candidate's, times (kSide^2 - 1) / 9 (the patch's pixels
+// over the correction's 3 x 3 neighbourhood's, whose colour term w_altitude weighs there), is
+// added to the candidate's cost: the passes keep the altitude fit the correction made.
+//
 // A proposal or draw is kept when its whole patch lies inside the exemplar, it is allowed and has
 // p's target label (any when p's is kUnknownLabel); when none is kept, or a depth break lies
 // between p and a pixel of its window (across_depth_break), p keeps its source; when one is, it
@@ -46,9 +51,11 @@ struct PatchPassInputs {
   PixelRect guide_rect;                // covers every rectangle below grown by kPatchPassRadius
   const std::vector<uint8_t>& labels;  // target labels (painting classes)
   const std::vector<float>& depth;     // depth from the eye, or empty: no breaks
+  const std::vector<float>& altitude;  // target altitude [0, 1] (NaN: none), or empty
   double depth_break = 1.05;           // the ratio that breaks
   double balance = 0;                  // the colour excess's exponent (0: no balance)
   int search = 0;                      // places drawn per pixel, 0 .. kMaxPatchSearch
+  double w_altitude = 0;               // the altitude mismatch's weight (synthesis.h's)
   uint64_t seed = 0;                   // of the draws
   int64_t col_period = 0;              // columns c and c + col_period are one place (0: none)
 };

@@ -134,14 +134,6 @@ const std::vector<int32_t>& start_pool(const ExemplarLevel& e, uint8_t label) {
   return e.allowed;
 }
 
-// The squared difference of a target guide at `i` and exemplar pixel `c`'s value (0 when either
-// has none).
-double guide_mismatch(const std::vector<float>& target, size_t i,
-                      const std::vector<float>& exemplar, int32_t c) {
-  if (target.empty() || exemplar.empty() || std::isnan(target[i])) return 0;
-  return std::pow(double(target[i]) - double(exemplar[size_t(c)]), 2);
-}
-
 // Whether target pixels `a` and `b` of a level lie on either side of a depth break.
 bool breaks_between(const LevelGuides& g, const SynthesisParams& p, size_t a, size_t b) {
   return !g.depth.empty() && across_depth_break(g.depth[a], g.depth[b], p.depth_break);
@@ -370,8 +362,8 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
 State patch_passed(State state, const ExemplarLevel& e, const LevelGuides& g,
                    const SynthesisParams& p, int64_t col_period,
                    const std::array<PassPlan, kMaxPatchPasses>& plans) {
-  const PatchPassInputs in{g.rect,          g.labels,       g.depth, p.depth_break,
-                           p.patch_balance, p.patch_search, p.seed,  col_period};
+  const PatchPassInputs in{g.rect,          g.labels,       g.depth,      g.altitude, p.depth_break,
+                           p.patch_balance, p.patch_search, p.w_altitude, p.seed,     col_period};
   for (int pass = 0; pass < p.patch_passes; ++pass)
     for (int sub = 0; sub < kSubPasses; ++sub) {
       const PixelRect& r = plans[size_t(pass)].outs[size_t(sub)];

@@ -189,7 +189,7 @@ std::vector<uint8_t> table_classes(const nlohmann::json& value, const std::strin
 }
 
 // Every table entry's classes, by target value; throws on an empty table (every pixel would take
-// any class) and on a key that is no integer.
+// any class) and on a key that is no integer or a negative one.
 std::map<int, std::vector<uint8_t>> table_entries(const nlohmann::json& table,
                                                   const std::string& op) {
   if (table.empty())
@@ -200,6 +200,9 @@ std::map<int, std::vector<uint8_t>> table_entries(const nlohmann::json& table,
     const std::optional<int> target = whole_int<int>(key);
     if (!target)
       throw Error(op + ".landcover_classes: key '" + key + "' is not an integer class value");
+    if (*target < 0)
+      throw Error(op + ".landcover_classes: key '" + key +
+                  "': land-cover values are 0 or more (it would match no pixel)");
     out[*target] = table_classes(value, op + ".landcover_classes." + key);
   }
   return out;

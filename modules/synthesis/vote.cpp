@@ -20,6 +20,12 @@ bool across_depth_break(float a, float b, double ratio) {
   return std::max(a, b) > ratio * std::min(a, b);
 }
 
+double guide_mismatch(const std::vector<float>& target, size_t i,
+                      const std::vector<float>& exemplar, int32_t c) {
+  if (target.empty() || exemplar.empty() || std::isnan(target[i])) return 0;
+  return std::pow(double(target[i]) - double(exemplar[size_t(c)]), 2);
+}
+
 bool depth_break_within(const std::vector<float>& depth, const PixelRect& rect, int64_t col,
                         int64_t row, int radius, double ratio) {
   if (depth.empty()) return false;

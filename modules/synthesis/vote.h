@@ -22,6 +22,7 @@
 // whatever the step's own radius: with radius 2 it under-states the wider vote's narrowing.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +35,11 @@ namespace maquette::synthesis {
 // side of a depth break: one of the two sky, or the farther beyond `ratio` times the nearer.
 // Unknown depths break nothing.
 bool across_depth_break(float a, float b, double ratio);
+
+// The squared difference of a target guide at `i` and exemplar pixel `c`'s value (0 when either
+// has none, or the target's is NaN): the correction's and the patch passes' guide terms.
+double guide_mismatch(const std::vector<float>& target, std::size_t i,
+                      const std::vector<float>& exemplar, int32_t c);
 
 // Whether a depth break lies between pixel (col, row) and any pixel within `radius` (Chebyshev)
 // of it, `depth` holding the depths over `rect`, row-major (empty: no breaks). Precondition: the

@@ -182,7 +182,8 @@ TEST(AssessZion, ParamsOfAnotherExemplarThanTheTransfersAreRefused) {
   const test::CliResult refused = assess_again(other);
   EXPECT_NE(refused.exit_code, 0);
   EXPECT_NE(refused.err.find("synthesis.assess: its exemplar params differ from those "
-                             "synthesis.transfer made layer 'painted_source' with (exemplar_scale"),
+                             "synthesis.transfer made layer 'painted_source' with (exemplar_scale: "
+                             "the transfer's 4, assess's 8;"),
             std::string::npos)
       << refused.err;
   json same = transfer_params();

@@ -56,12 +56,23 @@ std::vector<int32_t> window_state(std::pair<int, int> b = kB) {
   return state;
 }
 
+// The sub-pass's winner at pixel (0, 0), the target's altitude `altitude` throughout (none when
+// empty) weighed by w_altitude.
+int32_t passed_with_altitude(const ExemplarLevel& e, const std::vector<int32_t>& state,
+                             const std::vector<float>& altitude, double w_altitude,
+                             const std::vector<float>& depth = {}, double balance = 0, int px = 0,
+                             const std::vector<uint8_t>& labels = std::vector<uint8_t>(25, 0),
+                             int search = 0) {
+  return patch_sub_pass(e,
+                        {kWindow, labels, depth, altitude, 1.05, balance, search, w_altitude, 0, 0},
+                        kWindow, state, kPixel, px, 0, 64)
+      .at(0);
+}
+
 int32_t passed(const ExemplarLevel& e, const std::vector<int32_t>& state,
                const std::vector<float>& depth = {}, double balance = 0, int px = 0,
                const std::vector<uint8_t>& labels = std::vector<uint8_t>(25, 0), int search = 0) {
-  return patch_sub_pass(e, {kWindow, labels, depth, 1.05, balance, search, 0, 0}, kWindow, state,
-                        kPixel, px, 0, 64)
-      .at(0);
+  return passed_with_altitude(e, state, {}, 0, depth, balance, px, labels, search);
 }
 
 TEST(PatchPass, TheProposalWhosePatchFitsBestWinsNotTheMajorityNorTheOwnSource) {
@@ -128,6 +139,19 @@ TEST(PatchPass, WhereClassesMeetThePlacesDrawnAroundTheSourceCompete) {
   EXPECT_EQ(passed(e, window_state(), {}, 0, 0, std::vector<uint8_t>(25, 0), kMaxPatchSearch),
             at(kB));
   EXPECT_EQ(passed(e, window_state(), {}, 0, 0, meeting, 0), at(kB));
+}
+
+// The altitude guide: with B's altitude 0.5 away from the target's and A's and C's on it, B's
+// 0.12 + 1 x 24 / 9 x 0.25 = 0.787 loses to A's 0.75; with w_altitude 0.1 (0.187), or no target
+// altitude, B wins.
+TEST(PatchPass, TheAltitudeGuideIsWeighed) {
+  ExemplarLevel e = exemplar();
+  e.altitude.assign(e.labels.size(), 0.2f);
+  e.altitude[size_t(at(kB))] = 0.7f;
+  const std::vector<float> altitude(25, 0.2f);
+  EXPECT_EQ(passed_with_altitude(e, window_state(), altitude, 1), at(kA));
+  EXPECT_EQ(passed_with_altitude(e, window_state(), altitude, 0.1), at(kB));
+  EXPECT_EQ(passed_with_altitude(e, window_state(), {}, 1), at(kB));
 }
 
 }  // namespace

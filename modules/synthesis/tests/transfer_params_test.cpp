@@ -156,6 +156,8 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
   refused({{"4", {6, 255}}}, "synthesis.transfer.landcover_classes.4: [6,255] is not");
   refused(nlohmann::json::object(),
           "synthesis.transfer.landcover_classes: {}: map at least one land-cover value");
+  refused({{"-1", 6}}, "synthesis.transfer.landcover_classes: key '-1': land-cover values are 0");
+  refused({{"forest", 6}}, "synthesis.transfer.landcover_classes: key 'forest' is not an integer");
 
   // The exemplar's pixels are relabelled: the ramp's two colour classes become one.
   nlohmann::json p = params(painting_png(64), 1);
