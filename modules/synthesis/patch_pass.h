@@ -5,9 +5,10 @@
 //
 // The correction's cost compares 3 x 3 neighbourhoods through their PCA features; the
 // coherence the issue measures (synthesis.assess) is the distance of each 5 x 5 output patch to
-// its nearest exemplar patch, which is what ebsynth's search lowers. This pass is that search
-// restricted to the copies under way (its propagation step, without ebsynth's random search and
-// its averaging vote): the output stays a copy, every pixel's colour its source's.
+// its nearest exemplar patch, which is what ebsynth's search lowers. This pass is that search:
+// its propagation (the copies under way), its random search only where the target's classes
+// meet (below), and not its averaging vote: the output stays a copy, every pixel's colour its
+// source's.
 //
 // Where the proposals kept disagree and the target's classes meet within p's window (a target
 // label there other than p's: the copies of either side cannot both continue), `search` more
@@ -24,8 +25,8 @@
 // A proposal or draw is kept when its whole patch lies inside the exemplar, it is allowed and has
 // p's target label (any when p's is kUnknownLabel); when none is kept, or a depth break lies
 // between p and a pixel of its window (across_depth_break), p keeps its source; when one is, it
-// is taken. Ties go to the first
-// proposal in row-major order of d. With `balance` > 0 and the level's colour excess measured
+// is taken. Ties go to the first proposal in row-major order of d, then to the draws in their
+// order. With `balance` > 0 and the level's colour excess measured
 // (the vote's histogram balance, vote.h), a proposal's distance plus the vote's floor for each of
 // its pixels is multiplied by its colour excess to the power `balance`. Like the correction, each
 // pass runs in the 2 x 2 sub-passes of Lefebvre & Hoppe (pixels of one parity of global column and

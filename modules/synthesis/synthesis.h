@@ -161,8 +161,9 @@ PixelRect guide_rect(const PixelRect& out, int shift);
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
 // exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by
 // synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
-// maquette::Error when the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius
-// or guides.col_period is not a multiple of 2^kLevels.
+// maquette::Error when the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius,
+// params.patch_passes outside 0 .. kMaxPatchPasses, params.patch_search outside 0 ..
+// kMaxPatchSearch (patch_pass.h) or guides.col_period is not a multiple of 2^kLevels.
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
                                 const SynthesisParams& params, const PixelRect& out);
 

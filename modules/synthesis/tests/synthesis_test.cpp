@@ -3,7 +3,7 @@
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
 // target's labels; the output is the vote of the copy, and the vote smooths the colours of
 // neighbours; the patch passes keep the tiles equal and lower the coherence; guides that miss the
-// halo, a vote radius outside 0 .. kVoteRadius and patch passes outside 0 .. kMaxPatchPasses are
+// halo, a vote radius outside 0 .. kVoteRadius and patch passes or draws outside their ranges are
 // refused.
 #include "../synthesis.h"
 
@@ -334,18 +334,27 @@ TEST_F(SynthesisTest, RefusesAVoteRadiusOutsideItsRange) {
   }
 }
 
-TEST_F(SynthesisTest, RefusesPatchPassesOutsideTheirRange) {
+TEST_F(SynthesisTest, RefusesPatchPassesOrDrawsOutsideTheirRange) {
   const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
-  for (const int passes : {-1, kMaxPatchPasses + 1}) {
-    SynthesisParams params;
-    params.patch_passes = passes;
+  const auto refused = [&](const SynthesisParams& params, const std::string& message) {
     try {
       synthesize(*pyramid_, target, params, kWhole);
-      ADD_FAILURE() << "patch_passes " << passes << " accepted";
+      ADD_FAILURE() << "accepted: " << message;
     } catch (const Error& e) {
-      EXPECT_EQ(std::string(e.what()), "synthesis: patch_passes " + std::to_string(passes) +
-                                           ": must be 0 .. " + std::to_string(kMaxPatchPasses));
+      EXPECT_EQ(std::string(e.what()), message);
     }
+  };
+  for (const int n : {-1, kMaxPatchPasses + 1}) {
+    SynthesisParams params;
+    params.patch_passes = n;
+    refused(params, "synthesis: patch_passes " + std::to_string(n) + ": must be 0 .. " +
+                        std::to_string(kMaxPatchPasses));
+  }
+  for (const int n : {-1, kMaxPatchSearch + 1}) {
+    SynthesisParams params;
+    params.patch_search = n;
+    refused(params, "synthesis: patch_search " + std::to_string(n) + ": must be 0 .. " +
+                        std::to_string(kMaxPatchSearch));
   }
 }
 
