@@ -25,7 +25,7 @@
 //    (OperatorSpec::spans_faces, a Mosaic unfolded around one face); refinable region steps.
 // 10: OperatorSpec::max_refine.
 // 11: InputSpec::semantics and channels (the layers a raster port takes).
-#define MAQUETTE_ABI_VERSION 11u
+#define MAQUETTE_ABI_VERSION 12u
 #define MAQUETTE_MODULE_ENTRY "maquette_module_info"
 
 extern "C" {

@@ -8,10 +8,12 @@
 // count, order or number of processes.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -109,6 +111,13 @@ struct OperatorSpec {
   // JSON Schema (draft 7 subset: type, properties, required, enum, minimum, maximum, default,
   // items, minItems, maxItems, additionalProperties false) of the step's "params" object.
   json params_schema = {{"type", "object"}, {"properties", json::object()}};
+  // Checks of a step's params beyond the schema that need neither the store nor a cell: files
+  // they name exist, fields that exclude each other, params that need an input port mapped. Run
+  // when the pipeline is read (a dry run too), so that a fault is told before any step runs; for
+  // params holding artifacts (artifact_refs.h), once they are pasted in, before the step runs.
+  // Gets the params (validated, defaults filled in) and the input ports the step maps; throws
+  // maquette::Error naming the field and value (the caller prefixes the step). Empty: none.
+  std::function<void(const json& params, const std::set<std::string>& mapped_inputs)> check_params;
 };
 
 // The raster layers a step's input ports read: (port, layer), in the spec's order.

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/json_file.h"
 #include "core/tile.h"
+#include "runtime/artifact_refs.h"
 #include "runtime/params_schema.h"
 #include "runtime/pipeline_region.h"
 
@@ -122,6 +123,7 @@ PipelineStep parse_step(const json& s, int index, const OperatorRegistry& regist
   }
   step.params =
       validate_params(step.op->spec().params_schema, s.value("params", json::object()), label);
+  if (artifact_refs(step.params).empty()) check_step_params(step, step.params);
   return step;
 }
 
@@ -136,6 +138,18 @@ void check_distinct_outputs(const std::vector<PipelineStep>& steps) {
 }
 
 }  // namespace
+
+void check_step_params(const PipelineStep& step, const json& params) {
+  const auto& check = step.op->spec().check_params;
+  if (!check) return;
+  std::set<std::string> mapped;
+  for (const auto& [port, layer] : step.inputs) mapped.insert(port);
+  try {
+    check(params, mapped);
+  } catch (const Error& e) {
+    throw Error(step.label() + ": " + e.what());
+  }
+}
 
 std::string PipelineStep::label() const {
   return "step " + std::to_string(index) + " (" + excerpt(op_name) + ")";

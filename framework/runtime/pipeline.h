@@ -37,6 +37,10 @@ struct PipelineStep {
   std::string label() const;  // "step 2 (terrain.derive)"
 };
 
+// The step's operator's check_params (OperatorSpec) on `params`, the step's params or those with
+// their artifacts pasted in; its maquette::Error prefixed with the step's label.
+void check_step_params(const PipelineStep& step, const nlohmann::json& params);
+
 struct Pipeline {
   nlohmann::json document;  // the pipeline as written: part of the run's identity (--resume)
   std::string source;       // the file name, for messages

@@ -320,13 +320,14 @@ class Runner {
   }
 
   // The artifacts the step's params refer to, now written by the earlier steps, pasted in and
-  // validated against the operator's schema.
+  // validated against the operator's schema and checked (OperatorSpec::check_params).
   void paste_artifacts(StepPlan& sp) const {
     const PipelineStep& step = *sp.step;
     if (artifact_refs(step.params).empty()) return;
     sp.params = validate_params(step.op->spec().params_schema,
                                 maquette::paste_artifacts(step.params, *store_, step.label()),
                                 step.label());
+    check_step_params(step, sp.params);
   }
 
   // The features of the ports whose layers an earlier step has written in this run.

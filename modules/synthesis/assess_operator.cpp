@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "assess_metrics.h"
 #include "core/error.h"
+#include "exemplar_params_check.h"
 #include "operators.h"
 #include "runtime/input_halo.h"
 #include "runtime/params_schema.h"
@@ -52,6 +54,9 @@ OperatorSpec assess_spec() {
       integer_param(1, 64, 1,
                     "coherence measured at output pixels whose global column and row are "
                     "multiples of it (a sample; 1: every pixel)");
+  s.check_params = [](const json& params, const std::set<std::string>& mapped_inputs) {
+    check_exemplar_params(params, kOp, mapped_inputs.count("dem") > 0);
+  };
   return s;
 }
 

@@ -19,6 +19,18 @@
 #include "core/error.h"
 
 namespace maquette::synthesis {
+
+// A missing file said as such: a relative path is the working directory's, not the pipeline's
+// (whose ingest sources are the pipeline file's).
+void require_file(const std::string& path, const std::string& what) {
+  VSIStatBufL stat;
+  if (VSIStatL(path.c_str(), &stat) == 0) return;
+  std::error_code error;
+  const auto cwd = std::filesystem::current_path(error).string();
+  throw Error(path + ": " + what + ": no such file" +
+              (path.starts_with("/") ? "" : " (relative to the working directory " + cwd + ")"));
+}
+
 namespace {
 
 // `kinds`: GDAL_OF_RASTER, GDAL_OF_VECTOR or both.
@@ -27,15 +39,7 @@ std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::stri
   GDALAllRegister();
   std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
   if (ds) return ds;
-  // A missing file said as such: a relative path is the working directory's, not the pipeline's
-  // (whose ingest sources are the pipeline file's).
-  VSIStatBufL stat;
-  if (VSIStatL(path.c_str(), &stat) != 0) {
-    std::error_code error;
-    const auto cwd = std::filesystem::current_path(error).string();
-    throw Error(path + ": GDAL cannot open the " + what + ": no such file" +
-                (path.starts_with("/") ? "" : " (relative to the working directory " + cwd + ")"));
-  }
+  require_file(path, "GDAL cannot open the " + what);
   throw Error(path + ": GDAL cannot open the " + what);
 }
 

@@ -19,6 +19,10 @@ namespace maquette::synthesis {
 // (8-bit or 16-bit unsigned) do not fit, calling it `what`.
 Exemplar read_painting(const std::string& path, const std::string& what = "painting");
 
+// Throws maquette::Error "PATH: WHAT: no such file" (and for a relative path the working
+// directory it is relative to) when GDAL finds nothing at `path` (VSIStatL: virtual paths too).
+void require_file(const std::string& path, const std::string& what);
+
 // A one-band 8-bit image (a class image, an exclusion mask, an altitude) that must have the
 // painting's size; `what` names it in errors.
 std::vector<uint8_t> read_mask(const std::string& path, int width, int height,

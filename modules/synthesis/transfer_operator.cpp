@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "core/error.h"
 #include "core/face_plane.h"
+#include "exemplar_params_check.h"
 #include "operators.h"
 #include "runtime/input_halo.h"
 #include "synthesis.h"
@@ -46,6 +48,9 @@ OperatorSpec transfer_spec() {
   s.refinable = true;
   s.writes_all_samples = true;
   s.params_schema = transfer_params_schema();
+  s.check_params = [name = s.name](const json& params, const std::set<std::string>& mapped_inputs) {
+    check_exemplar_params(params, name, mapped_inputs.count("dem") > 0);
+  };
   return s;
 }
 

@@ -5,7 +5,8 @@
 //   fixture.region_scan  region: a running sum along each mosaic row (depends on the whole row);
 //   and the operators on features of fixture_features.cpp and across face seams of
 //   fixture_seams.cpp.
-// fill and blur take sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
+// fill refuses a seed of 20000 or more (its check_params, beyond its schema). fill and blur take
+// sleep_ms (per cell, to make runs slow enough to kill), fail_on (a cell id:
 // they throw on it and its descendants) and fail_with ("exception": a std::runtime_error, "int":
 // an int). They record the threads they run on: fixture_thread_count() (a C entry point the tests
 // find with dlsym) tells how many distinct threads ran them since fixture_reset_threads(); with
@@ -21,6 +22,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/error.h"
 #include "fixture_features.h"
 #include "fixture_seams.h"
 #include "runtime/module_abi.h"
@@ -97,6 +99,12 @@ class Fill : public maquette::CellOperator {
                {"weights",
                 {{"type", "array"}, {"items", {{"type", "number"}}}, {"default", json::array()}}}},
               {"seed"}));
+      // A check beyond the schema (OperatorSpec::check_params), for the runtime's tests of it.
+      s.check_params = [](const json& params, const std::set<std::string>&) {
+        if (params.at("seed").get<double>() >= 20000)
+          throw maquette::Error("params.seed: " + params.at("seed").dump() +
+                                " is 20000 or more (the fixture's check)");
+      };
       return s;
     }();
     return s;

@@ -219,6 +219,29 @@ TEST(Pipeline, ArtifactPartsByJsonPointer) {
                                     "artifact 'smooth_sum': "));
 }
 
+// An operator's check_params (fixture.fill: a seed under 20000) runs when the pipeline is read,
+// its message prefixed with the step; on an artifact's value once it is pasted in, before the
+// step runs (and after the steps before it).
+TEST(Pipeline, TheOperatorsCheckOfItsParamsRunsBeforeAnythingRuns) {
+  json doc = demo_pipeline();
+  doc["steps"][0]["params"]["seed"] = 20000;
+  EXPECT_EQ(parse_error(doc),
+            "step 1 (fixture.fill): params.seed: 20000 is 20000 or more (the fixture's check)");
+
+  doc = demo_pipeline();
+  doc["tile_size"] = 32;
+  json fill = doc["steps"][0];
+  fill["outputs"] = {{"value", "again"}};
+  fill["params"]["seed"] = {{"$artifact", "smooth_sum"}, {"pointer", "/count"}};  // 64 x 32^2
+  doc["steps"].push_back(fill);
+  test::TempDir dir;
+  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  RunOptions options;
+  options.quiet = true;
+  EXPECT_EQ(error_of([&] { run_pipeline(p, options); }),
+            "step 5 (fixture.fill): params.seed: 65536 is 20000 or more (the fixture's check)");
+}
+
 TEST(Pipeline, DryRunPrintsThePlanAndWritesNothing) {
   test::TempDir dir;
   const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, demo_pipeline()));
