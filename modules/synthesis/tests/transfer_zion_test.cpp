@@ -162,10 +162,11 @@ TEST(TransferZion, AMissingPaintingABadClassTableAndHeightsAsLandCoverAreNamed) 
     fs::remove_all(run.dir);
   };
   const json inputs = {{"landcover", "landcover"}, {"dem", "dem"}};
-  // A relative path is the working directory's (the pipeline's ingests take the pipeline file's).
+  // A relative path is the working directory's (the pipeline's ingests take the pipeline file's);
+  // told when the pipeline is read (exemplar_params_check.h).
   refused("-missing", {{"painting", "no/such/painting.png"}}, inputs,
-          "no/such/painting.png: GDAL cannot open the painting: no such file (relative to the "
-          "working directory " +
+          "step 3 (synthesis.transfer): no/such/painting.png: the painting (painting): no such "
+          "file (relative to the working directory " +
               fs::current_path().string() + ")");
   refused("-table", {{"landcover_classes", {{"forest", 3}}}}, inputs,
           "synthesis.transfer.landcover_classes: key 'forest' is not an integer");
