@@ -44,6 +44,7 @@ void check_exemplar_params(const nlohmann::json& params, const std::string& op, 
       further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), op, where);
     }
   altitude_range(params, op, dem_given);
+  if (params.contains("line_classes")) line_labels(params, op);
 }
 
 }  // namespace maquette::synthesis

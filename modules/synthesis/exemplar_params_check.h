@@ -16,7 +16,9 @@ namespace maquette::synthesis {
 // - "harmonize" other than its default is given without "exemplars": there is nothing to match;
 // - a "landcover_classes" table is malformed (class_groups, further_classes);
 // - altitude_range or painting_altitude is given without inputs.dem, or the reverse
-//   (altitude_range()).
+//   (altitude_range());
+// - "line_classes" (the transfer's) names a class the table does not, or comes without patch
+//   passes (line_labels()).
 // `op` prefixes the fields of messages that name them; `dem_given`: inputs.dem is mapped.
 // Preconditions: `params` validated against transfer_params_schema(), defaults filled in.
 void check_exemplar_params(const nlohmann::json& params, const std::string& op, bool dem_given);

@@ -13,7 +13,8 @@ namespace maquette::synthesis {
 namespace {
 
 constexpr int kSide = 2 * kPatchPassRadius + 1;
-constexpr int kRowValues = 3 * kSide;  // RGB of one row of a patch
+constexpr int kRowValues = 3 * kSide;                // RGB of one row of a patch
+constexpr int kMinOwnClass = kSide * kSide / 2 + 1;  // a strict majority of p's window
 // The vote's floor (RGB 0..1) for each pixel of a patch but its centre.
 constexpr float kPatchBalanceFloor = float(kBalanceFloor * (kSide * kSide - 1));
 // The altitude weight's scale: a patch's pixels (but the centre) over a 3 x 3 neighbourhood's.
@@ -53,15 +54,17 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
           proposals[n++] = c;
       };
       float* value = patch.data();
-      bool classes_meet = false;
+      int own_class = 0;  // window pixels of p's target label
       for (int dy = -R; dy <= R; ++dy)
         for (int dx = -R; dx <= R; ++dx) {
           const int32_t s = state[offset(state_rect, col + dx, row + dy)];
           value = std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(s), 3, value);
           offer(s % e.width - dx, s / e.width - dy);
-          classes_meet =
-              classes_meet || in.labels[offset(in.guide_rect, col + dx, row + dy)] != label;
+          own_class += in.labels[offset(in.guide_rect, col + dx, row + dy)] == label;
         }
+      if (own_class < kMinOwnClass && in.line_classes[label])
+        continue;  // a line thinner than p's window
+      const bool classes_meet = own_class < kSide * kSide;
       // Where the copies under way disagree and the target's classes meet, places drawn around
       // p's own source.
       if (n > 1 && classes_meet) {

@@ -24,9 +24,11 @@
 //
 // A proposal or draw is kept when its whole patch lies inside the exemplar, it is allowed and has
 // p's target label (any when p's is kUnknownLabel); when none is kept, or a depth break lies
-// between p and a pixel of its window (across_depth_break), p keeps its source; when one is, it
-// is taken. Ties go to the first proposal in row-major order of d, then to the draws in their
-// order. With `balance` > 0 and the level's colour excess measured
+// between p and a pixel of its window (across_depth_break), or p's label is one of line_classes
+// and holds fewer than a strict majority of its window's pixels (a road, a track: its best fit
+// would be a patch of the fields around it, pale at the road's edge, and the road would fade), p
+// keeps its source; when one is, it is taken. Ties go to the first proposal in row-major order of
+// d, then to the draws in their order. With `balance` > 0 and the level's colour excess measured
 // (the vote's histogram balance, vote.h), a proposal's distance plus the vote's floor for each of
 // its pixels is multiplied by its colour excess to the power `balance`. Like the correction, each
 // pass runs in the 2 x 2 sub-passes of Lefebvre & Hoppe (pixels of one parity of global column and
@@ -35,6 +37,7 @@
 // sub-passes that follow.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <vector>
 
@@ -59,6 +62,7 @@ struct PatchPassInputs {
   double w_altitude = 0;               // the altitude mismatch's weight (synthesis.h's)
   uint64_t seed = 0;                   // of the draws
   int64_t col_period = 0;              // columns c and c + col_period are one place (0: none)
+  std::bitset<256> line_classes{};     // labels whose thin pixels keep their source (above)
 };
 
 // One sub-pass: the pixels of `out` of parity (px, py) take their best proposal, the others keep

@@ -362,8 +362,9 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
 State patch_passed(State state, const ExemplarLevel& e, const LevelGuides& g,
                    const SynthesisParams& p, int64_t col_period,
                    const std::array<PassPlan, kMaxPatchPasses>& plans) {
-  const PatchPassInputs in{g.rect,          g.labels,       g.depth,      g.altitude, p.depth_break,
-                           p.patch_balance, p.patch_search, p.w_altitude, p.seed,     col_period};
+  const PatchPassInputs in{g.rect,        g.labels,        g.depth,        g.altitude,
+                           p.depth_break, p.patch_balance, p.patch_search, p.w_altitude,
+                           p.seed,        col_period,      p.line_classes};
   for (int pass = 0; pass < p.patch_passes; ++pass)
     for (int sub = 0; sub < kSubPasses; ++sub) {
       const PixelRect& r = plans[size_t(pass)].outs[size_t(sub)];

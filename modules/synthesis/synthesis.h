@@ -58,8 +58,9 @@
 // among the copies under way around it (S(p + d) - d, d within 2), the one whose 5 x 5 exemplar
 // patch is nearest the output's (the coherence synthesis.assess measures; ebsynth's search
 // without its averaging), with patch_search places drawn around its source where the target's
-// classes meet, and patch_balance weighing them by their colour excess as the vote does; in the
-// same 2 x 2 sub-passes.
+// classes meet, and patch_balance weighing them by their colour excess as the vote does (a pixel
+// of one of line_classes thinner than its window keeps its source); in the same 2 x 2
+// sub-passes.
 //
 // Last, the finest level's vote (vote.h; ebsynth's coherence comes from votes of the overlapping
 // patches, here the vote picks a source, it does not average colours): each pixel takes, among
@@ -86,6 +87,7 @@
 // (turned_edges.h), still a function of global pixel coordinates and guides.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <vector>
 
@@ -113,9 +115,12 @@ struct SynthesisParams {
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;
-  int patch_passes = 0;       // 0 .. kMaxPatchPasses: the finest level's (patch_pass.h)
-  double patch_balance = 0;   // their histogram balance (patch_pass.h), an exponent; 0: none
-  int patch_search = 0;       // their places drawn per pixel where classes meet (patch_pass.h)
+  int patch_passes = 0;      // 0 .. kMaxPatchPasses: the finest level's (patch_pass.h)
+  double patch_balance = 0;  // their histogram balance (patch_pass.h), an exponent; 0: none
+  int patch_search = 0;      // their places drawn per pixel where classes meet (patch_pass.h)
+  // Target labels of lines (roads, tracks, streams): where one is thinner than the passes'
+  // window its pixels keep their source through them (patch_pass.h).
+  std::bitset<256> line_classes{};
   int vote_radius = 1;        // 0 .. kVoteRadius; 0: no vote
   double vote_balance = 0;    // the vote's histogram balance (vote.h), an exponent; 0: none
   int jitter = 1;             // amplitude of the upsampling jitter, pixels at each level (0: none)

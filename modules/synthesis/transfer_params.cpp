@@ -129,6 +129,14 @@ nlohmann::json synthesis_params_schema() {
       {"patch_search", whole(0, kMaxPatchSearch, 0,
                              "places the patch passes draw around a pixel's source where the "
                              "target's classes meet")},
+      {"line_classes",
+       {{"type", "array"},
+        {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
+        {"default", json::array()},
+        {"description",
+         "painting classes of lines (roads, tracks, streams): where one is thinner than the "
+         "patch passes' 5 x 5 window its pixels keep their source through them, so the lines stay "
+         "dark and whole (with patch_passes)"}}},
       {"vote_radius", whole(0, kVoteRadius, 1,
                             "radius of the finest level's vote among overlapping patches "
                             "(0: none)")},
@@ -161,7 +169,27 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.vote_radius = params.at("vote_radius").get<int>();
   sp.vote_balance = params.at("vote_balance").get<double>();
   sp.seed = params.at("seed").get<uint64_t>();
+  sp.line_classes = line_labels(params, "synthesis.transfer");
   return sp;
+}
+
+std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op) {
+  std::bitset<256> out;
+  const auto classes = params.at("line_classes").get<std::vector<int>>();
+  if (classes.empty()) return out;
+  if (params.at("patch_passes").get<int>() == 0)
+    throw Error(op + ".line_classes " + params.at("line_classes").dump() +
+                " keep lines through the patch passes, and patch_passes is 0: give patch_passes "
+                "or leave line_classes out");
+  const auto groups = class_groups(params.at("landcover_classes"), op);
+  for (const int c : classes) {
+    const auto it = groups.find(uint8_t(c));
+    if (it == groups.end())
+      throw Error(op + ".line_classes: painting class " + std::to_string(c) +
+                  " is in no value of landcover_classes: no target pixel has it");
+    out.set(it->second);
+  }
+  return out;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -48,8 +49,15 @@ nlohmann::json transfer_params_schema();
 // "w_altitude", "w_repetition", "coherence", "jitter", "seed".
 nlohmann::json synthesis_params_schema();
 
-// SynthesisParams from params validated against synthesis_params_schema() (defaults filled).
+// SynthesisParams from params validated against synthesis_params_schema() (defaults filled) and
+// holding "landcover_classes"; throws maquette::Error as line_labels does.
 SynthesisParams synthesis_params(const nlohmann::json& params);
+
+// The target labels of "line_classes": each painting class as the table gives it (its set's
+// smallest class, class_groups). Throws maquette::Error naming `op` when a class is in no value
+// of "landcover_classes" (no target pixel has it) or "patch_passes" is 0 (only the passes read
+// them): either way the field would do nothing.
+std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op);
 
 // Target land-cover value -> painting class, from "landcover_classes" (each value a painting
 // class, or an array of them taken as one: the array's smallest class stands for the set, see

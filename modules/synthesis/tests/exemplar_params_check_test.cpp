@@ -111,6 +111,9 @@ TEST(ExemplarParamsCheck, FieldsThatWouldDoNothingAreRefused) {
             {"target value 7 is not in the first painting's landcover_classes"});
   f.refused("altitude", "synthesis.transfer", {{"altitude_range", {1000, 2000}}},
             {"synthesis.transfer.altitude_range is given without inputs.dem"});
+  f.refused("lines", "synthesis.transfer", {{"line_classes", {1}}},
+            {"synthesis.transfer.line_classes [1] keep lines through the patch passes, and "
+             "patch_passes is 0"});
 }
 
 TEST(ExemplarParamsCheck, ARightPipelinePassesItsDryRun) {

@@ -2,8 +2,9 @@
 // out here: the proposal whose 5 x 5 patch fits the output beats the majority and the pixel's own
 // source; proposals of another label, excluded, or whose patch leaves the exemplar are ignored
 // (ties then go to the first in row-major order); a depth break and the other parities keep the
-// pixel's source; the histogram balance weighs each proposal by its colour excess; places drawn
-// around the source compete where the target's classes meet, and only there.
+// pixel's source, and so does a pixel of a line class thinner than its window; the histogram
+// balance weighs each proposal by its colour excess; places drawn around the source compete where
+// the target's classes meet, and only there.
 #include "../patch_pass.h"
 
 #include <gtest/gtest.h>
@@ -108,6 +109,24 @@ TEST(PatchPass, ADepthBreakOrAnotherParityKeepsTheSource) {
 // With B's colour over-shown 4 times and A's under-shown (0.25): B's (0.12 + 24 floors) x 4 =
 // 0.4896 against A's (0.75 + 24 floors) x 0.25 = 0.1881 and C's (1 excess) 0.7524: A wins; with
 // no excess measured, or balance 0, B.
+// A line class (line_classes) thinner than the window keeps its source: with 13 of the window's
+// 25 pixels of another label p (label 0) keeps C when 0 is a line class, and takes B when it is
+// not or when 0 holds a strict majority (13 of 25).
+TEST(PatchPass, APixelOfALineClassThinnerThanItsWindowKeepsItsSource) {
+  const ExemplarLevel e = exemplar();
+  std::vector<uint8_t> labels(25, 0);
+  for (size_t i = 0; i < 12; ++i) labels[i] = 1;  // the first two rows and two more
+  const auto winner = [&](bool line) {
+    PatchPassInputs in{kWindow, labels, {}, {}, 1.05, 0, 0, 0, 0, 0};
+    in.line_classes.set(0, line);
+    return patch_sub_pass(e, in, kWindow, window_state(), kPixel, 0, 0, 64).at(0);
+  };
+  EXPECT_EQ(winner(true), at(kB));  // 13 of 25: a strict majority
+  labels[13] = 1;                   // (1, 0): 12 of 25
+  EXPECT_EQ(winner(true), at(kC));
+  EXPECT_EQ(winner(false), at(kB));
+}
+
 TEST(PatchPass, TheBalanceWeighsEachProposalByItsColoursExcess) {
   ExemplarLevel e = exemplar();
   EXPECT_EQ(passed(e, window_state(), {}, 1), at(kB));  // no excess measured

@@ -1,15 +1,18 @@
 // synthesis.transfer's params refused where they would be read wrong: a painting too small for
 // its exemplar_scale (its blocks would read past the image), one part of the altitude guide
 // without the others (it would be dropped without a word), a class the table asks for that has
-// no pixel to copy (any class would be copied instead), a painting wholly excluded.
+// no pixel to copy (any class would be copied instead), a painting wholly excluded, line classes
+// that would do nothing.
 #include "../transfer_params.h"
 
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
+#include <bitset>
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
 
 #include "../synthesis.h"
 #include "../transfer_exemplar.h"
@@ -24,6 +27,18 @@ namespace {
 std::string painting_png(int size) {
   return test::write_png(maquette::test::temp_dir() + "/painting.png", size, size, 3,
                          [size](int x, int y, int) { return double(uint8_t((y * size + x) * 7)); });
+}
+
+// Expects `call` to throw maquette::Error whose message holds `message`; `input` names what it
+// was given.
+template <typename Call>
+void expect_refused(const Call& call, const std::string& input, const std::string& message) {
+  try {
+    call();
+    ADD_FAILURE() << "accepted: " << input;
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+  }
 }
 
 nlohmann::json params(const std::string& painting, int scale) {
@@ -112,12 +127,8 @@ TEST(TransferParams, AltitudeGuideNeedsItsThreeParts) {
   EXPECT_EQ(altitude_range(nlohmann::json::object(), "op", false), std::nullopt);
   EXPECT_EQ(*altitude_range(whole, "op", true), (std::array<double, 2>{1000, 2600}));
   const auto refused = [](const nlohmann::json& p, bool dem, const std::string& message) {
-    try {
-      altitude_range(p, "synthesis.transfer", dem);
-      ADD_FAILURE() << "accepted: " << p.dump() << " dem " << dem;
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-    }
+    expect_refused([&] { altitude_range(p, "synthesis.transfer", dem); },
+                   p.dump() + " dem " + std::to_string(dem), message);
   };
   refused(with_range, false, "synthesis.transfer.altitude_range is given without inputs.dem");
   refused(nlohmann::json::object(), true, "synthesis.transfer: inputs.dem is given without");
@@ -143,12 +154,7 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
   EXPECT_EQ(class_table(table, "op"), (std::map<int, uint8_t>{{1, 7}, {4, 1}, {8, 1}}));
   EXPECT_EQ(class_groups(table, "op"), (std::map<uint8_t, uint8_t>{{1, 1}, {6, 1}, {7, 7}}));
   const auto refused = [](const nlohmann::json& t, const std::string& message) {
-    try {
-      class_groups(t, "synthesis.transfer");
-      ADD_FAILURE() << "accepted: " << t.dump();
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-    }
+    expect_refused([&] { class_groups(t, "synthesis.transfer"); }, t.dump(), message);
   };
   refused({{"4", {6, 1}}, {"8", 6}},
           "synthesis.transfer.landcover_classes.8: painting class 6 is in two different sets");
@@ -168,6 +174,32 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
   EXPECT_EQ(labels(p), (std::set<uint8_t>{0, 1}));
   p["landcover_classes"] = {{"3", {1, 0}}};
   EXPECT_EQ(labels(p), (std::set<uint8_t>{0}));
+}
+
+// line_classes are painting classes as the table gives them (a set's smallest class); one in no
+// table value, or without patch passes, would do nothing and is refused.
+TEST(TransferParams, LineClassesAreTheTablesLabels) {
+  nlohmann::json p = {{"landcover_classes", {{"2", 3}, {"4", {6, 1}}}},
+                      {"patch_passes", 2},
+                      {"line_classes", {3, 6}}};
+  const std::bitset<256> lines = line_labels(p, "op");
+  EXPECT_EQ(lines.count(), 2u);
+  EXPECT_TRUE(lines[3]);
+  EXPECT_TRUE(lines[1]);  // 6's set is labelled 1
+  const auto refused = [](const nlohmann::json& with, const std::string& message) {
+    expect_refused([&] { line_labels(with, "synthesis.transfer"); }, with.dump(), message);
+  };
+  p["line_classes"] = {3, 5};
+  refused(p,
+          "synthesis.transfer.line_classes: painting class 5 is in no value of "
+          "landcover_classes");
+  p["line_classes"] = {3};
+  p["patch_passes"] = 0;
+  refused(p,
+          "synthesis.transfer.line_classes [3] keep lines through the patch passes, and "
+          "patch_passes is 0");
+  p["line_classes"] = nlohmann::json::array();
+  EXPECT_TRUE(line_labels(p, "op").none());
 }
 
 }  // namespace
