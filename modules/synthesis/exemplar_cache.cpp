@@ -94,14 +94,15 @@ nlohmann::json analysis_identity() {
   if (!out["build"].is_null()) return out;
   spdlog::debug("synthesis.transfer: the analysis's build is not in the exemplar cache's key");
   const SynthesisParams d;
-  out["constants"] = {kLevels,
-                      kPatchRadius,
-                      kFeatureDims,
-                      kCombinedGap,
-                      kClassSmoothingRadius,
-                      {d.w_label, d.w_altitude, d.w_distance, d.w_light, d.w_repetition, d.w_usage,
-                       d.w_spread, d.coherence, d.patch_passes, d.patch_balance, d.patch_search,
-                       d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
+  out["constants"] = {
+      kLevels,
+      kPatchRadius,
+      kFeatureDims,
+      kCombinedGap,
+      kClassSmoothingRadius,
+      {d.w_label, d.w_altitude, d.w_distance, d.w_light, d.w_repetition, d.w_usage, d.w_spread,
+       d.coherence, d.patch_passes, d.patch_balance, d.patch_search, d.patch_edges, d.vote_radius,
+       d.vote_balance, d.jitter, d.depth_break, d.seed}};
   return out;
 }
 

@@ -1,11 +1,13 @@
 #include "exemplar_codec.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <type_traits>
 
+#include "class_edges.h"
 #include "core/error.h"
 #include "core/zstd_frame.h"
 
@@ -20,7 +22,7 @@ constexpr uint64_t kMostLevels = 64;
 
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
 // A field added to ExemplarLevel must be added to level_fields below, and the format bumped.
-static_assert(sizeof(ExemplarLevel) == 7392, "ExemplarLevel changed: update level_fields");
+static_assert(sizeof(ExemplarLevel) == 7416, "ExemplarLevel changed: update level_fields");
 #endif
 
 // Appends fields to `out`.
@@ -90,6 +92,7 @@ void level_fields(Archive& a, Level& l) {
   for (auto& pixels : l.by_label) a(pixels);
   a(l.usage);
   a(l.colour_excess);
+  a(l.class_edges);
 }
 
 template <class Archive, class Exemplar>
@@ -123,6 +126,10 @@ void check_sizes(const TransferExemplar& t) {
         labelled != l.allowed.size() || !per_pixel(l.usage.size(), 1, true) ||
         !per_pixel(l.colour_excess.size(), 1, true))
       throw fail("a level's fields");
+    // The passes read the pixels the class edges name.
+    if (std::any_of(l.class_edges.begin(), l.class_edges.end(),
+                    [n](uint64_t entry) { return size_t(class_edge_pixel(entry)) >= n; }))
+      throw fail("a level's class edges");
   }
 }
 

@@ -18,8 +18,9 @@ namespace maquette::synthesis {
 // field added to ExemplarLevel); older files then miss and are recomputed. A change of the
 // analysis's code is told apart by the build holding it, in the key (exemplar_cache.h), but where
 // the build cannot be found only its constants are: a change of its results bumps the number too
-// (2: the k similar patches searched approximately; 3: each level's light guide).
-inline constexpr uint32_t kExemplarCacheVersion = 3;
+// (2: the k similar patches searched approximately; 3: each level's light guide; 4: the finest
+// level's class edges).
+inline constexpr uint32_t kExemplarCacheVersion = 4;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
 std::string encode_exemplar(const TransferExemplar& exemplar, std::string_view key);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "class_edges.h"
 #include "core/error.h"
 #include "nearest_patches.h"
 
@@ -192,6 +193,7 @@ ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
   const std::vector<Placement> whole{{0, exemplar.width, exemplar.height}};
   for (int l = 0; l < levels; ++l)
     analyse_level(pyramid.levels[size_t(l)], l, k, paintings.empty() ? whole : paintings);
+  pyramid.levels[0].class_edges = class_edge_places(pyramid.levels[0]);
   return pyramid;
 }
 

@@ -46,6 +46,8 @@ struct ExemplarLevel {
   // How much more often the synthesis shows each pixel's colour than the exemplar has it, per
   // label (exemplar_usage.h), or empty: not measured.
   std::vector<float> colour_excess;
+  // The finest level's places beside another class (class_edges.h); empty at coarser levels.
+  std::vector<uint64_t> class_edges;
 
   int32_t index(int x, int y) const { return y * width + x; }
   // The neighbourhood of (x, y) with coordinates clamped into the level.
@@ -65,7 +67,8 @@ struct ExemplarPyramid {
 // basis is fitted over the paintings' pixels alone (at level l a painting's columns from
 // x0 >> l, its width and height divided by 2^l rounded up, from row 0), excluded ones included,
 // the gap's filler not. Deterministic for any threads (the k nearest searches run in parallel,
-// each query on its own, ties broken by index). Throws maquette::Error when a level has no
+// each query on its own, ties broken by index). The finest level's class_edges are indexed
+// (class_edges.h). Throws maquette::Error when a level has no
 // allowed pixel.
 ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
                                  const std::vector<Placement>& paintings = {});

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "class_edges.h"
 #include "pixel_hash.h"
 #include "vote.h"
 
@@ -20,8 +21,24 @@ constexpr float kPatchBalanceFloor = float(kBalanceFloor * (kSide * kSide - 1));
 // The altitude weight's scale: a patch's pixels (but the centre) over a 3 x 3 neighbourhood's.
 constexpr double kAltitudeScale = double(kSide * kSide - 1) / double(kPatchSide * kPatchSide);
 
+// The class edges' draws' salts, apart from the search's (salt + j, j < kMaxPatchSearch).
+constexpr uint64_t kEdgeSalt = uint64_t(1) << 20;
+
 size_t offset(const PixelRect& r, int64_t col, int64_t row) {
   return size_t(row - r.row0) * size_t(r.width) + size_t(col - r.col0);
+}
+
+// The label other than `own` and kUnknownLabel most present among `window`'s, the lower on a
+// tie; kUnknownLabel when there is none.
+uint8_t most_present_other(const std::array<uint8_t, kSide * kSide>& window, uint8_t own) {
+  uint8_t best = kUnknownLabel;
+  int best_count = 0;
+  for (const uint8_t l : window) {
+    if (l == own || l == kUnknownLabel) continue;
+    const int count = int(std::count(window.begin(), window.end(), l));
+    if (count > best_count || (count == best_count && l < best)) best = l, best_count = count;
+  }
+  return best;
 }
 
 }  // namespace
@@ -32,7 +49,8 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
   constexpr int R = kPatchPassRadius;
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
   std::array<float, kSide * kRowValues> patch{};  // the output's colours around p, row by row
-  std::array<int32_t, kSide * kSide + kMaxPatchSearch> proposals{};
+  std::array<int32_t, kSide * kSide + kMaxPatchSearch + kMaxPatchEdges> proposals{};
+  std::array<uint8_t, kSide * kSide> window_labels{};
   const bool balanced = in.balance > 0 && !e.colour_excess.empty();
   for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
     for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
@@ -60,13 +78,15 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
           const int32_t s = state[offset(state_rect, col + dx, row + dy)];
           value = std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(s), 3, value);
           offer(s % e.width - dx, s / e.width - dy);
-          own_class += in.labels[offset(in.guide_rect, col + dx, row + dy)] == label;
+          const uint8_t l = in.labels[offset(in.guide_rect, col + dx, row + dy)];
+          window_labels[size_t((dy + R) * kSide + dx + R)] = l;
+          own_class += l == label;
         }
       if (own_class < kMinOwnClass && in.line_classes[label])
         continue;  // a line thinner than p's window
       const bool classes_meet = own_class < kSide * kSide;
       // Where the copies under way disagree and the target's classes meet, places drawn around
-      // p's own source.
+      // p's own source, and from the exemplar's edges between p's class and the other.
       if (n > 1 && classes_meet) {
         const int64_t hashed_col = wrapped_col(col, in.col_period);
         for (int j = 0; j < in.search; ++j) {
@@ -75,12 +95,22 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
           offer(winner % e.width + int(h % uint64_t(2 * radius + 1)) - radius,
                 winner / e.width + int((h >> 32) % uint64_t(2 * radius + 1)) - radius);
         }
+        const auto edge =
+            in.edges > 0 && label != kUnknownLabel
+                ? class_edge_run(e.class_edges, label, most_present_other(window_labels, label))
+                : std::span<const uint64_t>{};
+        for (int j = 0; j < in.edges && !edge.empty(); ++j) {
+          const uint64_t h =
+              pixel_hash(hashed_col, row, 0, in.seed, salt + kEdgeSalt + uint64_t(j));
+          const int32_t c = class_edge_pixel(edge[size_t(h % uint64_t(edge.size()))]);
+          offer(c % e.width, c / e.width);
+        }
       }
       if (n <= 1) {  // within a copy under way, or no proposal kept
         if (n == 1) winner = proposals[0];
         continue;
       }
-      std::array<float, kSide * kSide + kMaxPatchSearch> excess_factor{};
+      std::array<float, kSide * kSide + kMaxPatchSearch + kMaxPatchEdges> excess_factor{};
       if (balanced)
         for (size_t i = 0; i < n; ++i)
           excess_factor[i] =

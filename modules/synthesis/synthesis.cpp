@@ -363,8 +363,8 @@ State patch_passed(State state, const ExemplarLevel& e, const LevelGuides& g,
                    const SynthesisParams& p, int64_t col_period,
                    const std::array<PassPlan, kMaxPatchPasses>& plans) {
   const PatchPassInputs in{g.rect,        g.labels,        g.depth,        g.altitude,
-                           p.depth_break, p.patch_balance, p.patch_search, p.w_altitude,
-                           p.seed,        col_period,      p.line_classes};
+                           p.depth_break, p.patch_balance, p.patch_search, p.patch_edges,
+                           p.w_altitude,  p.seed,          col_period,     p.line_classes};
   for (int pass = 0; pass < p.patch_passes; ++pass)
     for (int sub = 0; sub < kSubPasses; ++sub) {
       const PixelRect& r = plans[size_t(pass)].outs[size_t(sub)];
@@ -418,6 +418,9 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
   if (params.patch_search < 0 || params.patch_search > kMaxPatchSearch)
     throw Error("synthesis: patch_search " + std::to_string(params.patch_search) +
                 ": must be 0 .. " + std::to_string(kMaxPatchSearch));
+  if (params.patch_edges < 0 || params.patch_edges > kMaxPatchEdges)
+    throw Error("synthesis: patch_edges " + std::to_string(params.patch_edges) + ": must be 0 .. " +
+                std::to_string(kMaxPatchEdges));
   const Plan plans = plan_levels(out, params.patch_passes);
   State state({});
   for (int l = kLevels - 1; l >= 0; --l) {

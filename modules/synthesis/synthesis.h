@@ -57,8 +57,9 @@
 // Then, with patch_passes > 0, the finest level's patch passes (patch_pass.h): each pixel takes,
 // among the copies under way around it (S(p + d) - d, d within 2), the one whose 5 x 5 exemplar
 // patch is nearest the output's (the coherence synthesis.assess measures; ebsynth's search
-// without its averaging), with patch_search places drawn around its source where the target's
-// classes meet, and patch_balance weighing them by their colour excess as the vote does (a pixel
+// without its averaging), with patch_search places drawn around its source and patch_edges from
+// the exemplar's own edges between the two classes (class_edges.h) where the target's classes
+// meet, and patch_balance weighing them by their colour excess as the vote does (a pixel
 // of one of line_classes thinner than its window keeps its source); in the same 2 x 2
 // sub-passes.
 //
@@ -118,6 +119,7 @@ struct SynthesisParams {
   int patch_passes = 0;      // 0 .. kMaxPatchPasses: the finest level's (patch_pass.h)
   double patch_balance = 0;  // their histogram balance (patch_pass.h), an exponent; 0: none
   int patch_search = 0;      // their places drawn per pixel where classes meet (patch_pass.h)
+  int patch_edges = 0;       // and drawn there from the exemplar's class edges (patch_pass.h)
   // Target labels of lines (roads, tracks, streams): where one is thinner than the passes'
   // window its pixels keep their source through them (patch_pass.h).
   std::bitset<256> line_classes{};
@@ -168,7 +170,8 @@ PixelRect guide_rect(const PixelRect& out, int shift);
 // synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
 // maquette::Error when the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius,
 // params.patch_passes outside 0 .. kMaxPatchPasses, params.patch_search outside 0 ..
-// kMaxPatchSearch (patch_pass.h) or guides.col_period is not a multiple of 2^kLevels.
+// kMaxPatchSearch, params.patch_edges outside 0 .. kMaxPatchEdges (patch_pass.h) or
+// guides.col_period is not a multiple of 2^kLevels.
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
                                 const SynthesisParams& params, const PixelRect& out);
 

@@ -129,6 +129,9 @@ nlohmann::json synthesis_params_schema() {
       {"patch_search", whole(0, kMaxPatchSearch, 0,
                              "places the patch passes draw around a pixel's source where the "
                              "target's classes meet")},
+      {"patch_edges", whole(0, kMaxPatchEdges, 0,
+                            "places the patch passes draw where the target's classes meet from "
+                            "the painting's own edges between the two classes")},
       {"line_classes",
        {{"type", "array"},
         {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", 254}}},
@@ -166,6 +169,7 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.patch_passes = params.at("patch_passes").get<int>();
   sp.patch_balance = params.at("patch_balance").get<double>();
   sp.patch_search = params.at("patch_search").get<int>();
+  sp.patch_edges = params.at("patch_edges").get<int>();
   sp.vote_radius = params.at("vote_radius").get<int>();
   sp.vote_balance = params.at("vote_balance").get<double>();
   sp.seed = params.at("seed").get<uint64_t>();

@@ -95,6 +95,7 @@ void expect_same(const TransferExemplar& a, const TransferExemplar& b) {
     EXPECT_EQ(x.by_label, y.by_label);
     EXPECT_EQ(x.usage, y.usage);
     EXPECT_EQ(x.colour_excess, y.colour_excess);
+    EXPECT_EQ(x.class_edges, y.class_edges);
   }
 }
 
@@ -192,6 +193,7 @@ TEST(ExemplarCache, ACachedExemplarIsTheAnalysedOneFieldByField) {
   expect_same(*cached, *analysed);
   EXPECT_GT(analysed->pyramid.levels[0].usage.size(), 0u);
   EXPECT_GT(analysed->pyramid.levels[0].light.size(), 0u);
+  EXPECT_GT(analysed->pyramid.levels[0].class_edges.size(), 0u);
 }
 
 TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {

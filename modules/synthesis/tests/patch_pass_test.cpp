@@ -3,8 +3,9 @@
 // source; proposals of another label, excluded, or whose patch leaves the exemplar are ignored
 // (ties then go to the first in row-major order); a depth break and the other parities keep the
 // pixel's source, and so does a pixel of a line class thinner than its window; the histogram
-// balance weighs each proposal by its colour excess; places drawn around the source compete where
-// the target's classes meet, and only there.
+// balance weighs each proposal by its colour excess; places drawn around the source, and from the
+// exemplar's edges between the two classes, compete where the target's classes meet, and only
+// there.
 #include "../patch_pass.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,8 @@
 #include <limits>
 #include <tuple>
 #include <utility>
+
+#include "../class_edges.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -63,17 +66,18 @@ int32_t passed_with_altitude(const ExemplarLevel& e, const std::vector<int32_t>&
                              const std::vector<float>& altitude, double w_altitude,
                              const std::vector<float>& depth = {}, double balance = 0, int px = 0,
                              const std::vector<uint8_t>& labels = std::vector<uint8_t>(25, 0),
-                             int search = 0) {
-  return patch_sub_pass(e,
-                        {kWindow, labels, depth, altitude, 1.05, balance, search, w_altitude, 0, 0},
-                        kWindow, state, kPixel, px, 0, 64)
+                             int search = 0, int edges = 0) {
+  return patch_sub_pass(
+             e, {kWindow, labels, depth, altitude, 1.05, balance, search, edges, w_altitude, 0, 0},
+             kWindow, state, kPixel, px, 0, 64)
       .at(0);
 }
 
 int32_t passed(const ExemplarLevel& e, const std::vector<int32_t>& state,
                const std::vector<float>& depth = {}, double balance = 0, int px = 0,
-               const std::vector<uint8_t>& labels = std::vector<uint8_t>(25, 0), int search = 0) {
-  return passed_with_altitude(e, state, {}, 0, depth, balance, px, labels, search);
+               const std::vector<uint8_t>& labels = std::vector<uint8_t>(25, 0), int search = 0,
+               int edges = 0) {
+  return passed_with_altitude(e, state, {}, 0, depth, balance, px, labels, search, edges);
 }
 
 TEST(PatchPass, TheProposalWhosePatchFitsBestWinsNotTheMajorityNorTheOwnSource) {
@@ -117,7 +121,7 @@ TEST(PatchPass, APixelOfALineClassThinnerThanItsWindowKeepsItsSource) {
   std::vector<uint8_t> labels(25, 0);
   for (size_t i = 0; i < 12; ++i) labels[i] = 1;  // the first two rows and two more
   const auto winner = [&](bool line) {
-    PatchPassInputs in{kWindow, labels, {}, {}, 1.05, 0, 0, 0, 0, 0};
+    PatchPassInputs in{kWindow, labels, {}, {}, 1.05, 0, 0, 0, 0, 0, 0};
     in.line_classes.set(0, line);
     return patch_sub_pass(e, in, kWindow, window_state(), kPixel, 0, 0, 64).at(0);
   };
@@ -158,6 +162,42 @@ TEST(PatchPass, WhereClassesMeetThePlacesDrawnAroundTheSourceCompete) {
   EXPECT_EQ(passed(e, window_state(), {}, 0, 0, std::vector<uint8_t>(25, 0), kMaxPatchSearch),
             at(kB));
   EXPECT_EQ(passed(e, window_state(), {}, 0, 0, meeting, 0), at(kB));
+}
+
+// The exemplar's class edges: with its rows 0-1 of label 1 and 38-39 of label 2, its places of
+// label 0 beside label 1 are rows 2-9, beside label 2 rows 30-37 (class_edges.h). Where the
+// target's classes meet, a place drawn from the run of p's label and the other label most present
+// in its window (patch clear of the marks: 0) beats B; with one label throughout, or no draw
+// asked, B.
+TEST(PatchPass, WhereClassesMeetThePlacesDrawnFromTheExemplarsClassEdgesCompete) {
+  ExemplarLevel e = exemplar();
+  for (int x = 0; x < kSide; ++x)
+    for (const int y : {0, 1, 38, 39}) e.labels[size_t(e.index(x, y))] = y < 2 ? 1 : 2;
+  for (int32_t i = 0; i < kSide * kSide; ++i) e.allowed.push_back(i);
+  e.class_edges = class_edge_places(e);
+  const auto drawn_row = [&](const std::vector<uint8_t>& labels) {
+    const int32_t drawn = passed(e, window_state(), {}, 0, 0, labels, 0, kMaxPatchEdges);
+    EXPECT_NE(drawn, at(kA));
+    EXPECT_NE(drawn, at(kB));
+    EXPECT_NE(drawn, at(kC));
+    const int x = drawn % kSide, y = drawn / kSide;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx)
+        EXPECT_EQ(e.rgb[3 * size_t(e.index(x + dx, y + dy))], 0.5f) << dx << ", " << dy;
+    return y;
+  };
+  std::vector<uint8_t> meeting(25, 0);
+  meeting[0] = 1;
+  const int beside_1 = drawn_row(meeting);
+  EXPECT_GE(beside_1, 2);
+  EXPECT_LE(beside_1, 9);
+  meeting[1] = meeting[2] = 2;  // label 2 now the most present other
+  const int beside_2 = drawn_row(meeting);
+  EXPECT_GE(beside_2, 30);
+  EXPECT_LE(beside_2, 37);
+  EXPECT_EQ(passed(e, window_state(), {}, 0, 0, std::vector<uint8_t>(25, 0), 0, kMaxPatchEdges),
+            at(kB));
+  EXPECT_EQ(passed(e, window_state(), {}, 0, 0, meeting, 0, 0), at(kB));
 }
 
 // The altitude guide: with B's altitude 0.5 away from the target's and A's and C's on it, B's

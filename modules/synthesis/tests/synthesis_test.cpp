@@ -155,7 +155,8 @@ TEST_F(SynthesisTest, TheBalancedVoteOfRadius2TilesEqualTheWholeImage) {
       whole.size() / 100);
 }
 
-// The patch passes (patch_pass.h), the most of them, balanced and searching, keep the output a
+// The patch passes (patch_pass.h), the most of them, balanced, searching and drawing from the
+// exemplar's class edges, keep the output a
 // function of global pixel coordinates (their reach is in the halo), change it, and lower its
 // coherence (synthesis.assess's: the SSD of each 5 x 5 output patch to its nearest exemplar patch).
 TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoherence) {
@@ -163,6 +164,8 @@ TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoheren
   passed.patch_passes = kMaxPatchPasses;
   passed.patch_balance = 0.25;
   passed.patch_search = kMaxPatchSearch;
+  passed.patch_edges = kMaxPatchEdges;
+  ASSERT_FALSE(pyramid_->levels[0].class_edges.empty());
   passed.line_classes.set(1);  // its thin pixels keep their sources: a function of the labels too
   const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
   const auto whole = synthesize(*pyramid_, target, passed, kWhole);
@@ -356,6 +359,12 @@ TEST_F(SynthesisTest, RefusesPatchPassesOrDrawsOutsideTheirRange) {
     params.patch_search = n;
     refused(params, "synthesis: patch_search " + std::to_string(n) + ": must be 0 .. " +
                         std::to_string(kMaxPatchSearch));
+  }
+  for (const int n : {-1, kMaxPatchEdges + 1}) {
+    SynthesisParams params;
+    params.patch_edges = n;
+    refused(params, "synthesis: patch_edges " + std::to_string(n) + ": must be 0 .. " +
+                        std::to_string(kMaxPatchEdges));
   }
 }
 
