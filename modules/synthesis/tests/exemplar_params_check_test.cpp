@@ -1,8 +1,9 @@
 // synthesis.transfer's and synthesis.assess's params checked when the pipeline is read
 // (exemplar_params_check.h), through the real program: a painting path mistyped, a class count
 // beside a class image, a harmonization with one painting, a further painting's missing class
-// image are refused before the ingest step before them runs (no store is made), naming the
-// step, field and file; --dry-run tells them too; a pipeline that is right passes.
+// image, the patch passes' fields without the passes are refused before the ingest step before
+// them runs (no store is made), naming the step, field and file; --dry-run tells them too; a
+// pipeline that is right passes.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -114,16 +115,26 @@ TEST(ExemplarParamsCheck, FieldsThatWouldDoNothingAreRefused) {
   f.refused("lines", "synthesis.transfer", {{"line_classes", {1}}},
             {"synthesis.transfer.line_classes [1] keep lines through the patch passes, and "
              "patch_passes is 0"});
+  f.refused("edges", "synthesis.transfer", {{"patch_edges", 3}},
+            {"synthesis.transfer.patch_edges: 3 is a field of the patch passes, and patch_passes "
+             "is 0"});
+  f.refused("balance", "synthesis.transfer", {{"patch_balance", 0.25}},
+            {"synthesis.transfer.patch_balance: 0.25 is a field of the patch passes"});
 }
 
 TEST(ExemplarParamsCheck, ARightPipelinePassesItsDryRun) {
   const Fixture f;
-  // The class image beside the default class count, one painting with the default harmonization.
-  const auto r = test::run_maquette(
-      "run --dry-run " +
-          f.pipeline("right", "synthesis.transfer",
-                     {{"labels", f.classes}, {"classes", 6}, {"harmonize", "reinhard"}}),
-      "MAQUETTE_CACHE_DIR=off");
+  // The class image beside the default class count, one painting with the default harmonization,
+  // the passes with their fields.
+  const auto r = test::run_maquette("run --dry-run " + f.pipeline("right", "synthesis.transfer",
+                                                                  {{"labels", f.classes},
+                                                                   {"classes", 6},
+                                                                   {"harmonize", "reinhard"},
+                                                                   {"patch_passes", 1},
+                                                                   {"patch_search", 2},
+                                                                   {"patch_edges", 2},
+                                                                   {"patch_balance", 0.25}}),
+                                    "MAQUETTE_CACHE_DIR=off");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("step 2 (synthesis.transfer)"), std::string::npos) << r.out;
 }
