@@ -44,15 +44,7 @@ void check_exemplar_params(const nlohmann::json& params, const std::string& op, 
       further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), op, where);
     }
   altitude_range(params, op, dem_given);
-  if (params.contains("line_classes")) line_labels(params, op);
-  // The patch passes' own fields, without the passes (synthesis.transfer's params only).
-  if (params.contains("patch_passes") && params.at("patch_passes") == 0)
-    for (const char* field : {"patch_search", "patch_edges", "patch_balance"})
-      if (set_apart_from_default(params, synthesis_params_schema(), field))
-        throw Error(op + "." + field + ": " + params.at(field).dump() +
-                    " is a field of the patch passes, and patch_passes is 0: give patch_passes "
-                    "or leave out " +
-                    field);
+  if (params.contains("line_classes")) line_labels(params, op);  // the transfer's: the passes' too
 }
 
 }  // namespace maquette::synthesis

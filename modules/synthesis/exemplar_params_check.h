@@ -17,10 +17,9 @@ namespace maquette::synthesis {
 // - a "landcover_classes" table is malformed (class_groups, further_classes);
 // - altitude_range or painting_altitude is given without inputs.dem, or the reverse
 //   (altitude_range());
-// - "line_classes" (the transfer's) names a class the table does not, or comes without patch
-//   passes (line_labels());
-// - "patch_search", "patch_edges" or "patch_balance" (the transfer's) other than its default is
-//   given with "patch_passes" 0: the passes they weigh do not run.
+// - "line_classes" (the transfer's) names a class the table does not (line_labels()), or it,
+//   "patch_search", "patch_edges" or "patch_balance" is given with "patch_passes" 0: the passes
+//   they weigh do not run (check_patch_pass_fields()).
 // `op` prefixes the fields of messages that name them; `dem_given`: inputs.dem is mapped.
 // Preconditions: `params` validated against transfer_params_schema(), defaults filled in.
 void check_exemplar_params(const nlohmann::json& params, const std::string& op, bool dem_given);

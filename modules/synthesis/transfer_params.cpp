@@ -177,14 +177,26 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   return sp;
 }
 
-std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op) {
-  std::bitset<256> out;
-  const auto classes = params.at("line_classes").get<std::vector<int>>();
-  if (classes.empty()) return out;
-  if (params.at("patch_passes").get<int>() == 0)
+void check_patch_pass_fields(const nlohmann::json& params, const std::string& op) {
+  if (params.at("patch_passes").get<int>() != 0) return;
+  if (!params.at("line_classes").empty())
     throw Error(op + ".line_classes " + params.at("line_classes").dump() +
                 " keep lines through the patch passes, and patch_passes is 0: give patch_passes "
                 "or leave line_classes out");
+  const nlohmann::json schema = synthesis_params_schema();
+  for (const char* field : {"patch_search", "patch_edges", "patch_balance"})
+    if (params.contains(field) && params.at(field) != schema.at(field).at("default"))
+      throw Error(op + "." + field + ": " + params.at(field).dump() +
+                  " is a field of the patch passes, and patch_passes is 0: give patch_passes or "
+                  "leave out " +
+                  field);
+}
+
+std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op) {
+  check_patch_pass_fields(params, op);
+  std::bitset<256> out;
+  const auto classes = params.at("line_classes").get<std::vector<int>>();
+  if (classes.empty()) return out;
   const auto groups = class_groups(params.at("landcover_classes"), op);
   for (const int c : classes) {
     const auto it = groups.find(uint8_t(c));

@@ -50,13 +50,19 @@ nlohmann::json transfer_params_schema();
 nlohmann::json synthesis_params_schema();
 
 // SynthesisParams from params validated against synthesis_params_schema() (defaults filled) and
-// holding "landcover_classes"; throws maquette::Error as line_labels does.
+// holding "landcover_classes"; throws maquette::Error as line_labels does (maquette-paint's
+// params too).
 SynthesisParams synthesis_params(const nlohmann::json& params);
+
+// Throws maquette::Error naming `op` and the field when "patch_passes" is 0 and a field only the
+// passes read is given: "line_classes" not empty, "patch_search", "patch_edges" or
+// "patch_balance" (those present) other than its default.
+void check_patch_pass_fields(const nlohmann::json& params, const std::string& op);
 
 // The target labels of "line_classes": each painting class as the table gives it (its set's
 // smallest class, class_groups). Throws maquette::Error naming `op` when a class is in no value
-// of "landcover_classes" (no target pixel has it) or "patch_passes" is 0 (only the passes read
-// them): either way the field would do nothing.
+// of "landcover_classes" (no target pixel has it), or as check_patch_pass_fields does: either
+// way a field would do nothing.
 std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op);
 
 // Target land-cover value -> painting class, from "landcover_classes" (each value a painting

@@ -177,7 +177,8 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
 }
 
 // line_classes are painting classes as the table gives them (a set's smallest class); one in no
-// table value, or without patch passes, would do nothing and is refused.
+// table value, or without patch passes, would do nothing and is refused, as are the passes'
+// other fields without them.
 TEST(TransferParams, LineClassesAreTheTablesLabels) {
   nlohmann::json p = {{"landcover_classes", {{"2", 3}, {"4", {6, 1}}}},
                       {"patch_passes", 2},
@@ -199,6 +200,13 @@ TEST(TransferParams, LineClassesAreTheTablesLabels) {
           "synthesis.transfer.line_classes [3] keep lines through the patch passes, and "
           "patch_passes is 0");
   p["line_classes"] = nlohmann::json::array();
+  EXPECT_TRUE(line_labels(p, "op").none());
+  // The passes' other fields without the passes: refused the same way (check_patch_pass_fields).
+  p["patch_edges"] = 3;
+  refused(p,
+          "synthesis.transfer.patch_edges: 3 is a field of the patch passes, and patch_passes "
+          "is 0");
+  p["patch_passes"] = 1;
   EXPECT_TRUE(line_labels(p, "op").none());
 }
 
