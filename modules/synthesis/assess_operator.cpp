@@ -114,7 +114,7 @@ std::vector<std::string> differing_exemplar_params(const LayerInfo& source, cons
   } catch (const Error&) {
     return {};
   }
-  const json ours = exemplar_key_params(params);
+  const json ours = exemplar_key_params(params, kOp);
   json keys = made;
   keys.update(ours);
   std::vector<std::string> fields;
@@ -151,7 +151,7 @@ class Assess : public ReduceOperator {
     check_same_exemplar(ctx.input_layer("source"), params);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
-    const auto exemplar = transfer_exemplar(params);
+    const auto exemplar = transfer_exemplar(params, kOp);
     const Exemplar e = copied_exemplar(exemplar->pyramid.levels[0]);
     const Tile<float>& rgb = input_with_halo(kOp, ctx, data, "rgb", spec_.halo);
     const Tile<float>& source = input_with_halo(kOp, ctx, data, "source", spec_.halo);
@@ -210,7 +210,7 @@ class Assess : public ReduceOperator {
       throw Error(std::string(kOp) +
                   ": no output pixel with a source in the region (inputs.source)");
     const Tally t = from_json(merged);
-    const Exemplar e = copied_exemplar(transfer_exemplar(*ctx.params)->pyramid.levels[0]);
+    const Exemplar e = copied_exemplar(transfer_exemplar(*ctx.params, kOp)->pyramid.levels[0]);
     const Metrics m = metrics(e, t);
     const auto usable = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
     json distances = json::object();

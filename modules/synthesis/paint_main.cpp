@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     check_outputs_spare_inputs({out, source}, paint_inputs(picture_path, params_path, params));
     const PanoramaPicture picture =
         read_panorama(picture_path, params.shading > 0 || params.synthesis.w_light > 0);
-    const auto exemplar = transfer_exemplar(params.exemplar);
+    const auto exemplar = transfer_exemplar(params.exemplar, params_path);
     const PaintedPanorama painted = paint_panorama(picture, *exemplar, params);
     write_image(painted.rgb, painted.width, painted.height, 3, ImageFormat{"PNG", {}}, out);
     write_source(painted, source);

@@ -25,8 +25,6 @@
 namespace maquette::synthesis {
 namespace {
 
-constexpr const char* kOp = "synthesis.transfer";
-
 // `read()`, its errors named by `field` (the params' field whose file it reads) too.
 template <class Read>
 auto reading(const std::string& field, Read&& read) {
@@ -112,13 +110,14 @@ Exemplar read_exemplar(const nlohmann::json& fields, const std::string& where, i
 }
 
 // The further paintings of "exemplars", read, relabelled into the first's classes (those their
-// tables do not name excluded) and shrunk.
-std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale) {
+// tables do not name excluded) and shrunk; errors name `op` (transfer_exemplar).
+std::vector<Exemplar> further_exemplars(const nlohmann::json& params, const std::string& op,
+                                        int scale) {
   std::vector<Exemplar> out;
   if (!params.contains("exemplars")) return out;
   const nlohmann::json& list = params.at("exemplars");
   for (size_t i = 0; i < list.size(); ++i) {
-    const std::string where = std::string(kOp) + ".exemplars[" + std::to_string(i) + "]";
+    const std::string where = op + ".exemplars[" + std::to_string(i) + "]";
     const nlohmann::json& fields = list.at(i);
     if (fields.contains("painting_altitude") != params.contains("painting_altitude"))
       throw Error(where + ".painting_altitude: " +
@@ -128,7 +127,7 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, int scale)
                   ": give every painting an altitude or none");
     Exemplar e = read_exemplar(fields, where, scale);
     const nlohmann::json& table = fields.at("landcover_classes");
-    const auto labels = further_classes(params.at("landcover_classes"), table, kOp, where);
+    const auto labels = further_classes(params.at("landcover_classes"), table, op, where);
     const auto groups = class_groups(table, where);
     std::set<uint8_t> copied;  // the table's sets (by their smallest class) with pixels to copy
     for (size_t p = 0; p < e.labels.size(); ++p) {
@@ -180,34 +179,34 @@ std::string painting_names(const nlohmann::json& params) {
 }
 
 // The analysis (cached by exemplar_cache.h under a key holding the build: a change here or in
-// what it calls misses the older files).
-std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
+// what it calls misses the older files); errors name `op` (transfer_exemplar).
+std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params, const std::string& op) {
   const int scale = params.at("exemplar_scale").get<int>();
-  Exemplar e = read_exemplar(params, kOp, scale);
+  Exemplar e = read_exemplar(params, op, scale);
   // The class table's sets of classes taken as one (exclusions are by the painting's classes).
   if (params.contains("landcover_classes"))
-    for (const auto& [from, to] : class_groups(params.at("landcover_classes"), kOp))
+    for (const auto& [from, to] : class_groups(params.at("landcover_classes"), op))
       std::replace(e.labels.begin(), e.labels.end(), from, to);
   // maquette-paint's light guide (one painting), after the table's sets: its quantiles are
   // within the classes the synthesis matches.
   if (params.contains("painting_light")) {
     const std::string light = params.at("painting_light").get<std::string>();
-    e.light = painting_light(
-        e, light == "lightness"
-               ? painting_lightness(e)
-               : painting_guide(light, e, "light", std::string(kOp) + ".painting_light"));
+    e.light = painting_light(e, light == "lightness"
+                                    ? painting_lightness(e)
+                                    : painting_guide(light, e, "light", op + ".painting_light"));
   }
   std::vector<Exemplar> parts{shrink_exemplar(e, scale)};
-  for (Exemplar& further : further_exemplars(params, scale)) parts.push_back(std::move(further));
+  for (Exemplar& further : further_exemplars(params, op, scale))
+    parts.push_back(std::move(further));
   if (params.contains("harmonize"))
-    harmonize(parts, parse_harmonization(params.at("harmonize").get<std::string>(),
-                                         std::string(kOp) + ".harmonize"));
+    harmonize(parts,
+              parse_harmonization(params.at("harmonize").get<std::string>(), op + ".harmonize"));
   auto out = std::make_shared<TransferExemplar>();
   out->scale = scale;
   Exemplar combined = combine_exemplars(std::move(parts), out->parts);
   // The synthesis packs an exemplar pixel's column and row as x | y << 16 in 32 bits.
   if (combined.width > 65535 || combined.height > 32767)
-    throw Error(std::string(kOp) + ": the exemplar is " + std::to_string(combined.width) + " x " +
+    throw Error(op + ": the exemplar is " + std::to_string(combined.width) + " x " +
                 std::to_string(combined.height) +
                 " pixels (the paintings side by side, after exemplar_scale): at most 65535 x "
                 "32767; raise exemplar_scale or give fewer paintings");
@@ -215,16 +214,16 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
   spdlog::info(
       "{}: analysing {}: {} x {} exemplar pixels at exemplar_scale {} (once per set of "
       "inputs; the exemplar cache keeps it)",
-      kOp, painting_names(params), combined.width, combined.height, scale);
+      op, painting_names(params), combined.width, combined.height, scale);
   const auto start = std::chrono::steady_clock::now();
   try {
     out->pyramid = analyse_exemplar(combined, kLevels, params.at("k").get<int>(), out->parts);
   } catch (const Error& e) {
-    throw Error(std::string(kOp) + ": " + painting_names(params) + ": " + e.what());
+    throw Error(op + ": " + painting_names(params) + ": " + e.what());
   }
   // Measured with the default weights: the same exemplar serves every step's weights.
   measure_usage(out->pyramid, SynthesisParams{});
-  spdlog::info("{}: {} analysed in {:.1f} s", kOp, painting_names(params),
+  spdlog::info("{}: {} analysed in {:.1f} s", op, painting_names(params),
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return out;
 }
@@ -232,9 +231,10 @@ std::shared_ptr<const TransferExemplar> build(const nlohmann::json& params) {
 // Refuses a class the table gives a target value that has no pixel to copy (absent from the
 // paintings, excluded, or lost to the exemplar's blocks): the synthesis would take any class's
 // pixels there instead (synthesis.cpp, start_pool), without a word.
-void check_table_classes(const TransferExemplar& t, const nlohmann::json& params) {
-  for (const auto& [target, c] : class_table(params.at("landcover_classes"), kOp))
-    check_class_has_pixels(t, c, std::string(kOp) + ".landcover_classes." + std::to_string(target));
+void check_table_classes(const TransferExemplar& t, const nlohmann::json& params,
+                         const std::string& op) {
+  for (const auto& [target, c] : class_table(params.at("landcover_classes"), op))
+    check_class_has_pixels(t, c, op + ".landcover_classes." + std::to_string(target));
 }
 
 }  // namespace
@@ -269,7 +269,7 @@ int32_t TransferExemplar::pixel_of(int exemplar, int col, int row) const {
   return pyramid.levels[0].index(at.x0 + x, y);
 }
 
-nlohmann::json exemplar_key_params(const nlohmann::json& params) {
+nlohmann::json exemplar_key_params(const nlohmann::json& params, const std::string& op) {
   nlohmann::json key = nlohmann::json::object();
   for (const char* field : {"painting", "labels", "classes", "exclusion", "exclude_classes",
                             "painting_altitude", "painting_distance", "painting_light",
@@ -282,7 +282,7 @@ nlohmann::json exemplar_key_params(const nlohmann::json& params) {
   if (params.contains("landcover_classes"))
     key["groups"] = params.contains("exemplars")
                         ? params.at("landcover_classes")
-                        : nlohmann::json(class_groups(params.at("landcover_classes"), kOp));
+                        : nlohmann::json(class_groups(params.at("landcover_classes"), op));
   return key;
 }
 
@@ -301,8 +301,9 @@ std::vector<std::string> exemplar_input_files(const nlohmann::json& params) {
   return files;
 }
 
-std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params) {
-  const nlohmann::json key = exemplar_key_params(params);
+std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params,
+                                                          const std::string& op) {
+  const nlohmann::json key = exemplar_key_params(params, op);
   struct Slot {
     tbb::collaborative_once_flag once;
     std::shared_ptr<const TransferExemplar> exemplar;
@@ -323,11 +324,11 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& 
     const auto directory = exemplar_cache_dir();
     const auto disk_key =
         directory ? exemplar_cache_key(key, exemplar_input_files(params)) : std::nullopt;
-    const auto analyse = [&] { return build(params); };
+    const auto analyse = [&] { return build(params, op); };
     slot->exemplar = disk_key ? cached_exemplar(*directory, *disk_key, analyse) : analyse();
   });
   // Not in the analysis: the table's classes are not all in the key (exemplar_key_params).
-  if (params.contains("landcover_classes")) check_table_classes(*slot->exemplar, params);
+  if (params.contains("landcover_classes")) check_table_classes(*slot->exemplar, params, op);
   return slot->exemplar;
 }
 

@@ -49,8 +49,10 @@ struct TransferExemplar {
 // painting) and file at fault, among them a painting whose every pixel is excluded and a class
 // "landcover_classes" gives a target value that has no pixel left to copy (it would be painted from
 // any class). Cached by params (exemplar_key_params) in the process, and on disk (exemplar_cache.h,
-// keyed by those and the bytes of exemplar_input_files) across processes and runs.
-std::shared_ptr<const TransferExemplar> transfer_exemplar(const nlohmann::json& params);
+// keyed by those and the bytes of exemplar_input_files) across processes and runs. `op` names the
+// params in errors: the step's op, or maquette-paint's params file.
+std::shared_ptr<const TransferExemplar> transfer_exemplar(
+    const nlohmann::json& params, const std::string& op = "synthesis.transfer");
 
 // Throws maquette::Error when `painting_class` has no pixel to copy in the exemplar (not in the
 // paintings, excluded, or lost to its blocks), naming `field` (where the class is given), the
@@ -61,8 +63,9 @@ void check_class_has_pixels(const TransferExemplar& exemplar, int painting_class
 // What of the params the analysis reads (not the synthesis's weights): the exemplar's fields,
 // and of "landcover_classes" the sets of classes taken as one (the whole table with
 // "exemplars"), and what the masks made from "painting_guides" are mapped with
-// (guided_masks_key). Throws maquette::Error on a bad class table.
-nlohmann::json exemplar_key_params(const nlohmann::json& params);
+// (guided_masks_key). Throws maquette::Error naming `op` on a bad class table.
+nlohmann::json exemplar_key_params(const nlohmann::json& params,
+                                   const std::string& op = "synthesis.transfer");
 
 // The files the analysis reads: each painting's image, class image or polygons, exclusion mask,
 // altitude, distance and light images, and guides file ("rows", "lightness" and "guides" are no

@@ -264,7 +264,7 @@ TEST(PaintingGuides, BadInputIsNamed) {
   nlohmann::json params = views().params();
   params["painting_guides"] = s.dir + "/cut-guides.tif";
   std::string r = run(params, "cut.json");
-  EXPECT_NE(r.find("synthesis.transfer.painting_guides: " + s.dir +
+  EXPECT_NE(r.find("cut.json.painting_guides: " + s.dir +
                    "/cut-guides.tif: the guides are 100 x 80 pixels, the painting " + s.picture +
                    " 320 x 200"),
             std::string::npos)

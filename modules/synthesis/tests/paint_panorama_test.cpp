@@ -397,7 +397,7 @@ TEST(PaintPanorama, ASkyClassWithoutPixelsIsRefused) {
 TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
   const Scene& s = scene();
   const auto refused = [&](const nlohmann::json& raw) {
-    return error_of([&] { transfer_exemplar(paint_params(raw, "m.json").exemplar); });
+    return error_of([&] { transfer_exemplar(paint_params(raw, "m.json").exemplar, "m.json"); });
   };
   // The altitude as floats 0..1, the classes as 16 bits (values 256..258, read as 255).
   test::RasterSpec spec;
@@ -411,12 +411,12 @@ TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
   nlohmann::json params = s.params();
   params["painting_altitude"] = altf;
   params["altitude_range"] = {100, 700};
-  EXPECT_EQ(refused(params), "synthesis.transfer.painting_altitude: " + altf +
+  EXPECT_EQ(refused(params), "m.json.painting_altitude: " + altf +
                                  ": the altitude image is Float32: it must be one 8-bit band "
                                  "(Byte, values 0..255)");
   params = s.params();
   params["labels"] = classes16;
-  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + classes16 +
+  EXPECT_EQ(refused(params), "m.json.labels: " + classes16 +
                                  ": the class image is UInt16: it must be one 8-bit band (Byte, "
                                  "values 0..255)");
   // The RGB painting itself as the class image, the exclusion mask, the altitude, the distance.
@@ -429,8 +429,7 @@ TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
     params[field] = rgb;
     params["altitude_range"] = {100, 700};
     if (std::string(field) != "painting_altitude") params.erase("altitude_range");
-    EXPECT_EQ(refused(params), "synthesis.transfer." + std::string(field) + ": " + rgb + ": the " +
-                                   what +
+    EXPECT_EQ(refused(params), "m.json." + std::string(field) + ": " + rgb + ": the " + what +
                                    " has 3 bands: it must be one 8-bit band (grey, not RGB or "
                                    "with alpha)");
   }
@@ -440,8 +439,8 @@ TEST(PaintPanorama, MasksOfAnotherTypeOrBandsAreRefusedByField) {
               kPaintingHeight, 1, {"PNG", {}}, reserved);
   params = s.params();
   params["labels"] = reserved;
-  EXPECT_EQ(refused(params), "synthesis.transfer.labels: " + reserved +
-                                 ": class 255 is reserved (unknown); classes are 0..254");
+  EXPECT_EQ(refused(params),
+            "m.json.labels: " + reserved + ": class 255 is reserved (unknown); classes are 0..254");
 }
 
 // No output may be one of the run's inputs, however its path is spelled: the panorama's guides,
@@ -533,7 +532,8 @@ TEST(PaintPanorama, BadInputIsNamed) {
   write_image(std::vector<uint8_t>(10 * 10, 100), 10, 10, 1, {"PNG", {}},
               s.dir + "/small-light.png");
   r = run_paint(s.picture + " " + write_params(s, params, "size.json") + " " + s.dir + "/x.png");
-  EXPECT_NE(r.find("small-light.png: the light image is 10 x 10, the painting 128 x 96"),
+  EXPECT_NE(r.find("size.json.painting_light: " + s.dir +
+                   "/small-light.png: the light image is 10 x 10, the painting 128 x 96"),
             std::string::npos)
       << r;
   EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
