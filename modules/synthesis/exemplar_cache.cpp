@@ -100,9 +100,10 @@ nlohmann::json analysis_identity() {
       kFeatureDims,
       kCombinedGap,
       kClassSmoothingRadius,
+      kSpreadRegionShift,
       {d.w_label, d.w_altitude, d.w_distance, d.w_light, d.w_repetition, d.w_usage, d.w_spread,
-       d.coherence, d.patch_passes, d.patch_balance, d.patch_search, d.patch_edges, d.vote_radius,
-       d.vote_balance, d.jitter, d.depth_break, d.seed}};
+       d.spread_typical, d.coherence, d.patch_passes, d.patch_balance, d.patch_search,
+       d.patch_edges, d.vote_radius, d.vote_balance, d.jitter, d.depth_break, d.seed}};
   return out;
 }
 

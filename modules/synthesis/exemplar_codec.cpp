@@ -22,7 +22,7 @@ constexpr uint64_t kMostLevels = 64;
 
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
 // A field added to ExemplarLevel must be added to level_fields below, and the format bumped.
-static_assert(sizeof(ExemplarLevel) == 7416, "ExemplarLevel changed: update level_fields");
+static_assert(sizeof(ExemplarLevel) == 7440, "ExemplarLevel changed: update level_fields");
 #endif
 
 // Appends fields to `out`.
@@ -93,6 +93,7 @@ void level_fields(Archive& a, Level& l) {
   a(l.usage);
   a(l.colour_excess);
   a(l.class_edges);
+  a(l.region_quantile);
 }
 
 template <class Archive, class Exemplar>
@@ -124,7 +125,8 @@ void check_sizes(const TransferExemplar& t) {
         !per_pixel(l.features.size(), kFeatureDims, false) ||
         !per_pixel(l.similar.size(), size_t(t.pyramid.k), false) || l.allowed.size() > n ||
         labelled != l.allowed.size() || !per_pixel(l.usage.size(), 1, true) ||
-        !per_pixel(l.colour_excess.size(), 1, true))
+        !per_pixel(l.colour_excess.size(), 1, true) ||
+        !per_pixel(l.region_quantile.size(), 1, true))
       throw fail("a level's fields");
     // The passes read the pixels the class edges name.
     if (std::any_of(l.class_edges.begin(), l.class_edges.end(),

@@ -9,6 +9,7 @@
 #include "class_edges.h"
 #include "core/error.h"
 #include "nearest_patches.h"
+#include "spread_regions.h"
 
 namespace maquette::synthesis {
 namespace {
@@ -191,8 +192,11 @@ ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
   pyramid.levels.push_back(std::move(finest));
   for (int l = 1; l < levels; ++l) pyramid.levels.push_back(coarser(pyramid.levels.back()));
   const std::vector<Placement> whole{{0, exemplar.width, exemplar.height}};
-  for (int l = 0; l < levels; ++l)
-    analyse_level(pyramid.levels[size_t(l)], l, k, paintings.empty() ? whole : paintings);
+  for (int l = 0; l < levels; ++l) {
+    ExemplarLevel& level = pyramid.levels[size_t(l)];
+    analyse_level(level, l, k, paintings.empty() ? whole : paintings);
+    level.region_quantile = region_quantiles(level);
+  }
   pyramid.levels[0].class_edges = class_edge_places(pyramid.levels[0]);
   return pyramid;
 }

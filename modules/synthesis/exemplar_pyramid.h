@@ -48,6 +48,9 @@ struct ExemplarLevel {
   std::vector<float> colour_excess;
   // The finest level's places beside another class (class_edges.h); empty at coarser levels.
   std::vector<uint64_t> class_edges;
+  // Each pixel's region's lightness within its class (region_quantiles, spread_regions.h), or
+  // empty: every region typical.
+  std::vector<float> region_quantile;
 
   int32_t index(int x, int y) const { return y * width + x; }
   // The neighbourhood of (x, y) with coordinates clamped into the level.
@@ -68,8 +71,8 @@ struct ExemplarPyramid {
 // x0 >> l, its width and height divided by 2^l rounded up, from row 0), excluded ones included,
 // the gap's filler not. Deterministic for any threads (the k nearest searches run in parallel,
 // each query on its own, ties broken by index). The finest level's class_edges are indexed
-// (class_edges.h). Throws maquette::Error when a level has no
-// allowed pixel.
+// (class_edges.h), each level's region_quantile measured (spread_regions.h). Throws maquette::Error
+// when a level has no allowed pixel.
 ExemplarPyramid analyse_exemplar(const Exemplar& exemplar, int levels, int k,
                                  const std::vector<Placement>& paintings = {});
 

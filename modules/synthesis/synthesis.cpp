@@ -285,7 +285,9 @@ class Corrector {
         pixel_hash(hashed_col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
                    kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
                        uint64_t(cy >> kSpreadRegionShift) << 20);
-    const double spread = double(h >> 11) * 0x1.0p-53;  // [0, 1)
+    const bool preferable = e_.region_quantile.empty() ||
+                            typical_region(e_.region_quantile[size_t(c)], p_.spread_typical);
+    const double spread = preferable ? double(h >> 11) * 0x1.0p-53 : 1.0;  // [0, 1), or 1
     return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_distance * distance + p_.w_light * light +
            p_.w_repetition * reused / double(kRepetitionOffsets.size()) + p_.w_spread * spread;

@@ -47,7 +47,8 @@
 //    coordinates >> kSpreadBlockShift) for each region of 8 x 8 exemplar pixels, uniform in
 //    [0, 1) from a hash of both (and the level and seed): blocks prefer different copies among
 //    equally good ones, so the most used pixels are used less, at no cost in coherence within a
-//    block.
+//    block. A region outside the central spread_typical of its class by lightness
+//    (spread_regions.h) is preferred by none: 1.
 // A candidate whose exemplar label is the pixel's target label beats any that is not (the cost
 // decides among those of one kind): the two random candidates of the label offer one (unless
 // forbidden) whenever the level's exemplar has that label, so such an output pixel ends on a
@@ -93,17 +94,17 @@
 #include <vector>
 
 #include "exemplar_pyramid.h"
+#include "spread_regions.h"
 
 namespace maquette::synthesis {
 
-inline constexpr int kLevels = 4;             // pyramid levels synthesized (the exemplar's)
-inline constexpr int kPasses = 2;             // correction passes per level
-inline constexpr int kSubPasses = 4;          // 2 x 2
-inline constexpr int kRepetitionRadius = 3;   // of the reuse penalty's window, at each level
-inline constexpr int kVoteRadius = 2;         // the widest vote (its patches' radius)
-inline constexpr int kMaxPatchPasses = 3;     // the finest level's patch passes (patch_pass.h)
-inline constexpr int kSpreadBlockShift = 4;   // D_spread's blocks: 16 x 16 pixels of a level
-inline constexpr int kSpreadRegionShift = 3;  // D_spread's exemplar regions: 8 x 8 pixels
+inline constexpr int kLevels = 4;            // pyramid levels synthesized (the exemplar's)
+inline constexpr int kPasses = 2;            // correction passes per level
+inline constexpr int kSubPasses = 4;         // 2 x 2
+inline constexpr int kRepetitionRadius = 3;  // of the reuse penalty's window, at each level
+inline constexpr int kVoteRadius = 2;        // the widest vote (its patches' radius)
+inline constexpr int kMaxPatchPasses = 3;    // the finest level's patch passes (patch_pass.h)
+inline constexpr int kSpreadBlockShift = 4;  // D_spread's blocks: 16 x 16 pixels of a level
 
 struct SynthesisParams {
   double w_label = 2.0;
@@ -113,6 +114,8 @@ struct SynthesisParams {
   double w_repetition = 0.3;
   double w_usage = 0.05;
   double w_spread = 0.15;
+  // The central share of each class's exemplar regions D_spread may prefer (spread_regions.h).
+  double spread_typical = 1.0;
   // Ashikhmin's coherence: the cost of a candidate that is not a neighbour's source shifted
   // (a similar patch, a random pixel) is multiplied by 1 + coherence.
   double coherence = 0.5;

@@ -118,6 +118,15 @@ nlohmann::json synthesis_params_schema() {
       {"w_spread", weight(0.15,
                           "weight of each block's preference among the exemplar's "
                           "regions")},
+      {"spread_typical",
+       {{"type", "number"},
+        {"minimum", 0},
+        {"maximum", 1},
+        {"default", 1.0},
+        {"description",
+         "the central share of each class's exemplar regions, by lightness, that blocks may "
+         "prefer (w_spread): below 1 a pale or dark patch of the painting is never preferred, so "
+         "strong block preferences paint no blotches of it"}}},
       {"coherence", weight(0.5,
                            "a candidate that is no neighbour's source shifted costs 1 + "
                            "coherence times more")},
@@ -164,6 +173,7 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.w_repetition = params.at("w_repetition").get<double>();
   sp.w_usage = params.at("w_usage").get<double>();
   sp.w_spread = params.at("w_spread").get<double>();
+  sp.spread_typical = params.at("spread_typical").get<double>();
   sp.coherence = params.at("coherence").get<double>();
   sp.jitter = params.at("jitter").get<int>();
   sp.patch_passes = params.at("patch_passes").get<int>();

@@ -96,6 +96,7 @@ void expect_same(const TransferExemplar& a, const TransferExemplar& b) {
     EXPECT_EQ(x.usage, y.usage);
     EXPECT_EQ(x.colour_excess, y.colour_excess);
     EXPECT_EQ(x.class_edges, y.class_edges);
+    EXPECT_EQ(x.region_quantile, y.region_quantile);
   }
 }
 
@@ -194,6 +195,8 @@ TEST(ExemplarCache, ACachedExemplarIsTheAnalysedOneFieldByField) {
   EXPECT_GT(analysed->pyramid.levels[0].usage.size(), 0u);
   EXPECT_GT(analysed->pyramid.levels[0].light.size(), 0u);
   EXPECT_GT(analysed->pyramid.levels[0].class_edges.size(), 0u);
+  for (const ExemplarLevel& level : analysed->pyramid.levels)
+    EXPECT_EQ(level.region_quantile.size(), level.labels.size());
 }
 
 TEST(ExemplarCache, ABadFileIsIgnoredWarnedAboutAndRewritten) {

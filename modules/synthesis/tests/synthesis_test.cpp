@@ -2,7 +2,8 @@
 // their halo equal the whole image's crop (64^2 and 128^2 tiles, the guides cut to each window
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
 // target's labels; the output is the vote of the copy, and the vote smooths the colours of
-// neighbours; the patch passes keep the tiles equal and lower the coherence; guides that miss the
+// neighbours; the patch passes keep the tiles equal and lower the coherence; strong block
+// preferences with spread_typical keep off the atypical regions; guides that miss the
 // halo, a vote radius outside 0 .. kVoteRadius and patch passes or draws outside their ranges are
 // refused.
 #include "../synthesis.h"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <thread>
@@ -285,6 +287,28 @@ TEST_F(SynthesisTest, UsageAndSpreadUseMoreSources) {
   const auto [most, distinct] = uses(*whole_);
   EXPECT_GT(double(distinct), 1.1 * double(distinct_plain));
   EXPECT_LE(most, most_plain);
+}
+
+// With strong block preferences, spread_typical 0.6 keeps the blocks off the regions outside the
+// central 60 % of their class by lightness (spread_regions.h): 40 % of each class's allowed
+// pixels, which with every region preferable supply about as large a share of the output; the
+// colours still call for some of them.
+TEST_F(SynthesisTest, BlocksPreferNoRegionOutsideTheTypicalShare) {
+  const std::vector<float>& quantile = pyramid_->levels[0].region_quantile;
+  const auto atypical_share = [&](double spread_typical) {
+    SynthesisParams p;
+    p.w_spread = 8;
+    p.spread_typical = spread_typical;
+    const auto src = synthesize(*pyramid_, guides(grown(kWhole, synthesis_halo())), p, kWhole);
+    size_t n = 0;
+    for (const int32_t s : src) n += !typical_region(quantile[size_t(s)], 0.6);
+    return double(n) / double(src.size());
+  };
+  const double every = atypical_share(1.0), typical = atypical_share(0.6);
+  std::printf("sources in atypical regions: %.3f with every region preferable, %.3f without\n",
+              every, typical);
+  EXPECT_GT(every, 0.25);
+  EXPECT_LT(typical, 0.5 * every);
 }
 
 TEST_F(SynthesisTest, RaisingTheAltitudeWeightLowersTheAltitudeMismatch) {
