@@ -20,7 +20,7 @@ namespace maquette::synthesis {
 // the build cannot be found only its constants are: a change of its results bumps the number too
 // (2: the k similar patches searched approximately; 3: each level's light guide; 4: the finest
 // level's class edges).
-inline constexpr uint32_t kExemplarCacheVersion = 5;
+inline constexpr uint32_t kExemplarCacheVersion = 6;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
 std::string encode_exemplar(const TransferExemplar& exemplar, std::string_view key);

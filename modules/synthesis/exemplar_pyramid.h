@@ -48,9 +48,9 @@ struct ExemplarLevel {
   std::vector<float> colour_excess;
   // The finest level's places beside another class (class_edges.h); empty at coarser levels.
   std::vector<uint64_t> class_edges;
-  // Each pixel's region's lightness within its class (region_quantiles, spread_regions.h), or
-  // empty: every region typical.
-  std::vector<float> region_quantile;
+  // Each pixel's region's lightness within its class, in 255ths (region_quantiles,
+  // spread_regions.h), or empty: every region typical.
+  std::vector<uint8_t> region_quantile;
 
   int32_t index(int x, int y) const { return y * width + x; }
   // The neighbourhood of (x, y) with coordinates clamped into the level.

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "light_guide.h"
 
 namespace maquette::synthesis {
 
-std::vector<float> region_quantiles(const ExemplarLevel& level) {
+std::vector<uint8_t> region_quantiles(const ExemplarLevel& level) {
   const int side = 1 << kSpreadRegionShift, w = level.width, h = level.height;
   const size_t n = size_t(w) * size_t(h);
   // Each allowed pixel's value: the mean luma of its region's allowed pixels of its label.
@@ -34,10 +35,11 @@ std::vector<float> region_quantiles(const ExemplarLevel& level) {
     }
   std::vector<uint8_t> allowed(n);
   for (size_t i = 0; i < n; ++i) allowed[i] = !level.excluded[i];
-  std::vector<float> quantile = class_quantiles(region_mean, level.labels, allowed);
+  const std::vector<float> quantile = class_quantiles(region_mean, level.labels, allowed);
+  std::vector<uint8_t> out(n, 128);
   for (size_t i = 0; i < n; ++i)
-    if (!allowed[i]) quantile[i] = 0.5f;
-  return quantile;
+    if (allowed[i]) out[i] = uint8_t(std::lround(255.0 * double(quantile[i])));
+  return out;
 }
 
 }  // namespace maquette::synthesis

@@ -294,7 +294,7 @@ TEST_F(SynthesisTest, UsageAndSpreadUseMoreSources) {
 // pixels, which with every region preferable supply about as large a share of the output; the
 // colours still call for some of them.
 TEST_F(SynthesisTest, BlocksPreferNoRegionOutsideTheTypicalShare) {
-  const std::vector<float>& quantile = pyramid_->levels[0].region_quantile;
+  const std::vector<uint8_t>& quantile = pyramid_->levels[0].region_quantile;
   const auto atypical_share = [&](double spread_typical) {
     SynthesisParams p;
     p.w_spread = 8;
