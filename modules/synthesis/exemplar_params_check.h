@@ -19,7 +19,7 @@ namespace maquette::synthesis {
 //   (altitude_range());
 // - "line_classes" (the transfer's) names a class the table does not (line_labels()), or it,
 //   "patch_search", "patch_edges" or "patch_balance" is given with "patch_passes" 0: the passes
-//   they weigh do not run (check_patch_pass_fields()).
+//   they weigh do not run, or "spread_typical" with "w_spread" 0 (check_fields_without_effect()).
 // `op` prefixes the fields of messages that name them; `dem_given`: inputs.dem is mapped.
 // Preconditions: `params` validated against transfer_params_schema(), defaults filled in.
 void check_exemplar_params(const nlohmann::json& params, const std::string& op, bool dem_given);

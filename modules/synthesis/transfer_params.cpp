@@ -187,7 +187,12 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   return sp;
 }
 
-void check_patch_pass_fields(const nlohmann::json& params, const std::string& op) {
+void check_fields_without_effect(const nlohmann::json& params, const std::string& op) {
+  if (params.contains("spread_typical") && params.at("spread_typical").get<double>() != 1 &&
+      params.at("w_spread").get<double>() == 0)
+    throw Error(op + ".spread_typical: " + params.at("spread_typical").dump() +
+                " chooses the regions the blocks prefer, and w_spread is 0: give w_spread or "
+                "leave out spread_typical");
   if (params.at("patch_passes").get<int>() != 0) return;
   if (!params.at("line_classes").empty())
     throw Error(op + ".line_classes " + params.at("line_classes").dump() +
@@ -203,7 +208,7 @@ void check_patch_pass_fields(const nlohmann::json& params, const std::string& op
 }
 
 std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op) {
-  check_patch_pass_fields(params, op);
+  check_fields_without_effect(params, op);
   std::bitset<256> out;
   const auto classes = params.at("line_classes").get<std::vector<int>>();
   if (classes.empty()) return out;

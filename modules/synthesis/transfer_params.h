@@ -54,14 +54,15 @@ nlohmann::json synthesis_params_schema();
 // params too).
 SynthesisParams synthesis_params(const nlohmann::json& params);
 
-// Throws maquette::Error naming `op` and the field when "patch_passes" is 0 and a field only the
-// passes read is given: "line_classes" not empty, "patch_search", "patch_edges" or
-// "patch_balance" (those present) other than its default.
-void check_patch_pass_fields(const nlohmann::json& params, const std::string& op);
+// Throws maquette::Error naming `op` and the field when a field is given that what it weighs
+// does not read: with "patch_passes" 0, "line_classes" not empty, "patch_search", "patch_edges"
+// or "patch_balance" (those present) other than its default; with "w_spread" 0, "spread_typical"
+// (present) other than 1.
+void check_fields_without_effect(const nlohmann::json& params, const std::string& op);
 
 // The target labels of "line_classes": each painting class as the table gives it (its set's
 // smallest class, class_groups). Throws maquette::Error naming `op` when a class is in no value
-// of "landcover_classes" (no target pixel has it), or as check_patch_pass_fields does: either
+// of "landcover_classes" (no target pixel has it), or as check_fields_without_effect does: either
 // way a field would do nothing.
 std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op);
 

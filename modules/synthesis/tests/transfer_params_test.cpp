@@ -201,12 +201,21 @@ TEST(TransferParams, LineClassesAreTheTablesLabels) {
           "patch_passes is 0");
   p["line_classes"] = nlohmann::json::array();
   EXPECT_TRUE(line_labels(p, "op").none());
-  // The passes' other fields without the passes: refused the same way (check_patch_pass_fields).
+  // The passes' other fields without the passes: refused the same way
+  // (check_fields_without_effect).
   p["patch_edges"] = 3;
   refused(p,
           "synthesis.transfer.patch_edges: 3 is a field of the patch passes, and patch_passes "
           "is 0");
   p["patch_passes"] = 1;
+  EXPECT_TRUE(line_labels(p, "op").none());
+  // Nor is the blocks' typical share taken without their preferences.
+  p["spread_typical"] = 0.6;
+  p["w_spread"] = 0.0;
+  refused(p,
+          "synthesis.transfer.spread_typical: 0.6 chooses the regions the blocks prefer, and "
+          "w_spread is 0");
+  p["w_spread"] = 8.0;
   EXPECT_TRUE(line_labels(p, "op").none());
 }
 
