@@ -19,7 +19,7 @@ namespace maquette::synthesis {
 // analysis's code is told apart by the build holding it, in the key (exemplar_cache.h), but where
 // the build cannot be found only its constants are: a change of its results bumps the number too
 // (2: the k similar patches searched approximately; 3: each level's light guide; 4: the finest
-// level's class edges).
+// level's class edges; 5: each level's region quantiles, 6: as bytes).
 inline constexpr uint32_t kExemplarCacheVersion = 6;
 
 // The file holding `exemplar` stored under `key` (any bytes, e.g. a digest).
