@@ -44,7 +44,10 @@ void check_exemplar_params(const nlohmann::json& params, const std::string& op, 
       further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), op, where);
     }
   altitude_range(params, op, dem_given);
-  if (params.contains("line_classes")) line_labels(params, op);  // the transfer's: the passes' too
+  if (params.contains("line_classes")) {  // the transfer's fields (not the assessment's)
+    check_fields_without_effect(params, op);
+    line_labels(params, op);
+  }
 }
 
 }  // namespace maquette::synthesis

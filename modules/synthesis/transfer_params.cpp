@@ -183,6 +183,7 @@ SynthesisParams synthesis_params(const nlohmann::json& params) {
   sp.vote_radius = params.at("vote_radius").get<int>();
   sp.vote_balance = params.at("vote_balance").get<double>();
   sp.seed = params.at("seed").get<uint64_t>();
+  check_fields_without_effect(params, "synthesis.transfer");
   sp.line_classes = line_labels(params, "synthesis.transfer");
   return sp;
 }
@@ -208,7 +209,6 @@ void check_fields_without_effect(const nlohmann::json& params, const std::string
 }
 
 std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op) {
-  check_fields_without_effect(params, op);
   std::bitset<256> out;
   const auto classes = params.at("line_classes").get<std::vector<int>>();
   if (classes.empty()) return out;

@@ -50,8 +50,8 @@ nlohmann::json transfer_params_schema();
 nlohmann::json synthesis_params_schema();
 
 // SynthesisParams from params validated against synthesis_params_schema() (defaults filled) and
-// holding "landcover_classes"; throws maquette::Error as line_labels does (maquette-paint's
-// params too).
+// holding "landcover_classes"; throws maquette::Error as check_fields_without_effect and
+// line_labels do (maquette-paint's params too).
 SynthesisParams synthesis_params(const nlohmann::json& params);
 
 // Throws maquette::Error naming `op` and the field when a field is given that what it weighs
@@ -62,8 +62,7 @@ void check_fields_without_effect(const nlohmann::json& params, const std::string
 
 // The target labels of "line_classes": each painting class as the table gives it (its set's
 // smallest class, class_groups). Throws maquette::Error naming `op` when a class is in no value
-// of "landcover_classes" (no target pixel has it), or as check_fields_without_effect does: either
-// way a field would do nothing.
+// of "landcover_classes" (no target pixel has it): the field would do nothing.
 std::bitset<256> line_labels(const nlohmann::json& params, const std::string& op);
 
 // Target land-cover value -> painting class, from "landcover_classes" (each value a painting

@@ -188,7 +188,12 @@ TEST(TransferParams, LineClassesAreTheTablesLabels) {
   EXPECT_TRUE(lines[3]);
   EXPECT_TRUE(lines[1]);  // 6's set is labelled 1
   const auto refused = [](const nlohmann::json& with, const std::string& message) {
-    expect_refused([&] { line_labels(with, "synthesis.transfer"); }, with.dump(), message);
+    expect_refused(
+        [&] {
+          check_fields_without_effect(with, "synthesis.transfer");
+          line_labels(with, "synthesis.transfer");
+        },
+        with.dump(), message);
   };
   p["line_classes"] = {3, 5};
   refused(p,
@@ -201,14 +206,14 @@ TEST(TransferParams, LineClassesAreTheTablesLabels) {
           "patch_passes is 0");
   p["line_classes"] = nlohmann::json::array();
   EXPECT_TRUE(line_labels(p, "op").none());
-  // The passes' other fields without the passes: refused the same way
-  // (check_fields_without_effect).
+  // The passes' other fields without the passes: refused the same way.
   p["patch_edges"] = 3;
   refused(p,
           "synthesis.transfer.patch_edges: 3 is a field of the patch passes, and patch_passes "
           "is 0");
   p["patch_passes"] = 1;
   EXPECT_TRUE(line_labels(p, "op").none());
+  EXPECT_NO_THROW(check_fields_without_effect(p, "op"));
   // Nor is the blocks' typical share taken without their preferences.
   p["spread_typical"] = 0.6;
   p["w_spread"] = 0.0;
@@ -217,6 +222,7 @@ TEST(TransferParams, LineClassesAreTheTablesLabels) {
           "w_spread is 0");
   p["w_spread"] = 8.0;
   EXPECT_TRUE(line_labels(p, "op").none());
+  EXPECT_NO_THROW(check_fields_without_effect(p, "op"));
 }
 
 }  // namespace
