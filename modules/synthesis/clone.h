@@ -16,7 +16,7 @@ namespace maquette::synthesis {
 // (inpaint()'s defaults are 8 and 2): the band is a ring a patch thin between known pixels on both
 // sides, so two iterations of one pass resynthesize it without a seam on Zion's Landsat as eight
 // of two do (edge gradient; its energy 9 % higher, still 15 % below the hard copy's:
-// modules/synthesis/README.md) at under a third of the cost. One iteration is not enough: a
+// modules/synthesis/NOTES.md) at under a third of the cost. One iteration is not enough: a
 // periodic texture is no longer cloned exactly.
 constexpr int kCloneEmIterations = 2;
 constexpr int kCloneSearchIterations = 1;

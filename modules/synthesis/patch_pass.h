@@ -20,7 +20,7 @@
 // its places of p's label with that label within kClassEdgeReach (class_edges.h), uniformly,
 // hashed likewise: where the painting itself goes from one class to the other. Around the source
 // the fitting edge is rarely within reach; on the benchmark's window these draws lower the
-// coherence measure by 10-15 % (modules/synthesis/README.md, "The painting's own class edges").
+// coherence measure by 10-15 % (modules/synthesis/NOTES.md, "The painting's own class edges").
 //
 // With an altitude guide (the target's and the exemplar's), w_altitude times the squared
 // difference of p's altitude and the candidate's, times (kSide^2 - 1) / 9 (the patch's pixels

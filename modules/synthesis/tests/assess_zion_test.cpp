@@ -3,7 +3,7 @@
 // scale 4: 45,670 usable exemplar pixels for the 131,072 output pixels of 2 cells, so a
 // distinct-source fraction of 0.3 is within reach: at most 0.348). The report's counts of sources
 // are checked against a count of the stored source tiles, and issue 18's measures are gated at what
-// the transfer meets now (README: synthesis.assess, beside the issue's goals). And with a second
+// the transfer meets now (NOTES.md: synthesis.assess, beside the issue's goals). And with a second
 // painting, The Starry Night: the sources counted by painting, column and row. And the one-painting
 // example's weights, gated at their own levels.
 #include <gtest/gtest.h>
@@ -128,7 +128,7 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   EXPECT_LE(report.at("coherence_patches").get<uint64_t>(), pixels / 16);
 
   std::printf("assessment: %s\n", report.dump().c_str());
-  // Issue 18's measures at what is met now (README): the exclusion and label goals are met; the
+  // Issue 18's measures at what is met now (NOTES.md): the exclusion and label goals are met; the
   // others are gated at their current level so that a regression shows.
   EXPECT_EQ(report.at("excluded_pixels").get<uint64_t>(), 0u);                     // goal: 0
   EXPECT_GE(report.at("label_consistency").get<double>(), kLabelGate);             // goal: 0.97
