@@ -104,16 +104,9 @@ std::string shown(const json& value) {
 // value, assess's value"; none when they agree, or when the layer was made otherwise or by params
 // this version no longer reads.
 std::vector<std::string> differing_exemplar_params(const LayerInfo& source, const json& params) {
-  const json& made_by = source.provenance;
-  if (made_by.value("operator", "") != "synthesis.transfer" || !made_by.contains("params"))
-    return {};
-  json made;
-  try {
-    made = exemplar_key_params(
-        validate_params(transfer_params_schema(), made_by.at("params"), "synthesis.transfer"));
-  } catch (const Error&) {
-    return {};
-  }
+  const auto transfer = transfer_params_of(source);
+  if (!transfer) return {};
+  const json made = exemplar_key_params(*transfer);
   const json ours = exemplar_key_params(params, kOp);
   json keys = made;
   keys.update(ours);

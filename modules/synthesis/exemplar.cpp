@@ -13,9 +13,6 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
   s.rgb.assign(3 * n, 0.0f);
   s.labels.assign(n, 0);
   s.excluded.assign(n, 0);
-  if (!e.altitude.empty()) s.altitude.assign(n, 0.0f);
-  if (!e.distance.empty()) s.distance.assign(n, 0.0f);
-  if (!e.light.empty()) s.light.assign(n, 0.0f);
   const float area = float(factor * factor);
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x) {
@@ -27,12 +24,28 @@ Exemplar shrink_exemplar(const Exemplar& e, int factor) {
           const size_t j = corner + size_t(dy) * size_t(e.width) + size_t(dx);
           for (int c = 0; c < 3; ++c) s.rgb[3 * i + size_t(c)] += e.rgb[3 * j + size_t(c)] / area;
           s.excluded[i] |= e.excluded[j];
-          if (!e.altitude.empty()) s.altitude[i] += e.altitude[j] / area;
-          if (!e.distance.empty()) s.distance[i] += e.distance[j] / area;
-          if (!e.light.empty()) s.light[i] += e.light[j] / area;
         }
     }
+  s.altitude = shrink_band(e.altitude, e.width, e.height, factor);
+  s.distance = shrink_band(e.distance, e.width, e.height, factor);
+  s.light = shrink_band(e.light, e.width, e.height, factor);
   return s;
+}
+
+std::vector<float> shrink_band(const std::vector<float>& band, int width, int height, int factor) {
+  if (band.empty() || factor == 1) return band;
+  const int w = std::max(1, width / factor), h = std::max(1, height / factor);
+  std::vector<float> out(size_t(w) * size_t(h), 0.0f);
+  const float area = float(factor * factor);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t corner = size_t(y * factor) * size_t(width) + size_t(x * factor);
+      for (int dy = 0; dy < factor; ++dy)
+        for (int dx = 0; dx < factor; ++dx)
+          out[size_t(y) * size_t(w) + size_t(x)] +=
+              band[corner + size_t(dy) * size_t(width) + size_t(dx)] / area;
+    }
+  return out;
 }
 
 }  // namespace maquette::synthesis

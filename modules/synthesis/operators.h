@@ -11,5 +11,6 @@ std::unique_ptr<Operator> make_transfer();
 std::unique_ptr<Operator> make_assess();
 std::unique_ptr<Operator> make_inpaint();
 std::unique_ptr<Operator> make_clone();
+std::unique_ptr<Operator> make_apply();
 
 }  // namespace maquette::synthesis

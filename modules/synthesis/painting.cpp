@@ -238,6 +238,25 @@ std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
   return read_band(*open_image(path, what), path, width, height, what);
 }
 
+std::vector<float> read_value_band(const std::string& path, int& width, int& height,
+                                   const std::string& what) {
+  const auto ds = open_image(path, what);
+  if (ds->GetRasterCount() != 1)
+    throw Error(path + ": the " + what + " has " + std::to_string(ds->GetRasterCount()) +
+                " bands: it must be one band");
+  width = ds->GetRasterXSize();
+  height = ds->GetRasterYSize();
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  std::vector<float> values(size_t(width) * size_t(height));
+  if (band->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float32, 0, 0,
+                     nullptr) != CE_None)
+    throw Error(path + ": GDAL cannot read the " + what);
+  int has_nodata = 0;
+  if (const double nodata = band->GetNoDataValue(&has_nodata); has_nodata)
+    std::replace(values.begin(), values.end(), float(nodata), float(NAN));
+  return values;
+}
+
 std::vector<uint8_t> read_class_image(const std::string& path, int width, int height) {
   const auto ds = open_image(path, "class image", GDAL_OF_RASTER | GDAL_OF_VECTOR);
   if (ds->GetRasterCount() > 0) return read_band(*ds, path, width, height, "class image");

@@ -28,6 +28,12 @@ void require_file(const std::string& path, const std::string& what);
 std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
                                const std::string& what);
 
+// A one-band image of any type GDAL reads, as floats (its nodata NaN), row-major; its size in
+// `width` and `height`. Throws maquette::Error naming the file, calling it `what`, when it has
+// another count of bands or GDAL cannot read it.
+std::vector<float> read_value_band(const std::string& path, int& width, int& height,
+                                   const std::string& what);
+
 // The painting's class image: a one-band 8-bit image of the painting's size (read_mask), or
 // polygons drawn by hand: a vector file GDAL reads (GeoJSON...) whose coordinates are painting
 // pixels (x the column, y the row downwards, (0, 0) the top-left corner of the top-left pixel)

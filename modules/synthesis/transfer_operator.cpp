@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/face_plane.h"
+#include "exemplar.h"
 #include "exemplar_params_check.h"
 #include "operators.h"
 #include "runtime/input_halo.h"
@@ -117,11 +118,8 @@ class Transfer : public CellOperator {
           continue;
         }
         const size_t s = size_t(src[size_t(r) * size_t(n) + size_t(c)]);
-        // 0 is the 8-bit layer's nodata: a channel the painting has at 0 is written 1, else
-        // it would read back (and export) as a hole.
         if (rgb)
-          for (int k = 0; k < 3; ++k)
-            rgb->at(c, r, k) = std::max(1.0f, std::round(e.rgb[3 * s + size_t(k)] * 255.0f));
+          for (int k = 0; k < 3; ++k) rgb->at(c, r, k) = colour_byte(e.rgb[3 * s + size_t(k)]);
         if (source) {
           const SourcePixel from = exemplar->source_of(int32_t(s));
           source->at(c, r, 0) = float(from.col);

@@ -10,6 +10,7 @@
 #include "core/whole_int.h"
 #include "exemplar.h"
 #include "patch_pass.h"
+#include "runtime/params_schema.h"
 
 namespace maquette::synthesis {
 
@@ -362,6 +363,17 @@ std::array<double, 2> range_param(const nlohmann::json& params, const std::strin
 
 float altitude_guide(float metres, const std::array<double, 2>& range) {
   return float(std::clamp((double(metres) - range[0]) / (range[1] - range[0]), 0.0, 1.0));
+}
+
+std::optional<nlohmann::json> transfer_params_of(const LayerInfo& layer) {
+  const nlohmann::json& made_by = layer.provenance;
+  if (made_by.value("operator", "") != "synthesis.transfer" || !made_by.contains("params"))
+    return std::nullopt;
+  try {
+    return validate_params(transfer_params_schema(), made_by.at("params"), "synthesis.transfer");
+  } catch (const Error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace maquette::synthesis

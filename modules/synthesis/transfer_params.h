@@ -60,6 +60,11 @@ SynthesisParams synthesis_params(const nlohmann::json& params);
 // (present) other than 1.
 void check_fields_without_effect(const nlohmann::json& params, const std::string& op);
 
+// The params (validated, defaults filled in) of the synthesis.transfer that made `layer`, from
+// its provenance; none when the layer was made otherwise, or by params this version no longer
+// reads.
+std::optional<nlohmann::json> transfer_params_of(const LayerInfo& layer);
+
 // The target labels of "line_classes": each painting class as the table gives it (its set's
 // smallest class, class_groups). Throws maquette::Error naming `op` when a class is in no value
 // of "landcover_classes" (no target pixel has it): the field would do nothing.

@@ -61,10 +61,11 @@ void write_mask(const std::string& path, int width, int height) {
 }
 
 // The pipeline run in a fresh folder; `changes` overrides the transfer's params, `inputs` its
-// inputs.
+// inputs; `then` are steps after it.
 TransferRun run_transfer(const std::string& name, int threads, const std::string& mask,
                          const json& changes = json::object(), test::CliResult* result = nullptr,
-                         const json& inputs = {{"landcover", "landcover"}, {"dem", "dem"}}) {
+                         const json& inputs = {{"landcover", "landcover"}, {"dem", "dem"}},
+                         const json& then = json::array()) {
   TransferRun run{
       fs::temp_directory_path() / ("maquette-synthesis-" + std::to_string(getpid()) + name), ""};
   fs::remove_all(run.dir);
@@ -89,6 +90,7 @@ TransferRun run_transfer(const std::string& name, int threads, const std::string
   json& params = pipeline["steps"][2]["params"];
   if (mask.empty()) params.erase("exclusion");
   params.update(changes);
+  for (const json& step : then) pipeline["steps"].push_back(step);
   const fs::path path = run.dir / "pipeline.json";
   std::ofstream(path) << pipeline.dump(1);
   const test::CliResult r =
@@ -214,6 +216,85 @@ TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
   EXPECT_GT(yellow, 1000u);
   EXPECT_EQ(zero, 0u);
   fs::remove_all(run.dir);
+}
+
+// synthesis.apply (apply_sources.h) after the transfer: applied to the painting itself, the
+// transfer's colours byte for byte; applied to an image of the painting's columns, each pixel its
+// source's block: the mean of its columns, or (every column once, a tie) the first.
+TEST(TransferZion, TheSourcesAppliedToThePaintingAreTheTransfersColours) {
+  if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
+    GTEST_SKIP() << "../shared/data is absent";
+  int width = 0, height = 0;
+  painting_rgb(width, height);
+  test::RasterSpec spec;
+  spec.width = width;
+  spec.height = height;
+  spec.geotransform = {0, 1, 0, 0, 0, 1};  // pixel centres at (x + 0.5, y + 0.5)
+  const std::string columns = test::temp_dir() + "/painting-columns.tif";
+  test::write_raster(columns, spec, [](int, double x, double) { return std::floor(x); });
+  const auto apply = [](const std::string& output, const std::string& layer, const json& params) {
+    return json{{"op", "synthesis.apply"},
+                {"inputs", {{"source", "painted_source"}}},
+                {"outputs", {{output, layer}}},
+                {"params", params}};
+  };
+  const json then =
+      json::array({apply("rgb", "applied", {{"images", {kPainting}}}),
+                   apply("value", "column_mean", {{"images", {columns}}}),
+                   apply("value", "column_mode",
+                         {{"images", {columns}}, {"block", "mode"}, {"exemplar_scale", kScale}})});
+  const TransferRun run = run_transfer("-apply", 2, "", json::object(), nullptr,
+                                       {{"landcover", "landcover"}, {"dem", "dem"}}, then);
+  const auto store = Store::open(run.store, Store::Mode::ReadOnly);
+  const std::vector<CellId> cells = store->tile_cells("painted");
+  ASSERT_GE(cells.size(), 2u);
+  size_t sources = 0, wrong_mean = 0, wrong_mode = 0, missing = 0;
+  for (const CellId cell : cells) {
+    EXPECT_EQ(store->get_tile("applied", cell)->bytes, store->get_tile("painted", cell)->bytes)
+        << cell.ToText();
+    const Tile<float> source = to_tile<float>(*store->get_tile("painted_source", cell));
+    const Tile<float> mean = to_tile<float>(*store->get_tile("column_mean", cell));
+    const Tile<float> mode = to_tile<float>(*store->get_tile("column_mode", cell));
+    for (int r = 0; r < source.size(); ++r)
+      for (int c = 0; c < source.size(); ++c) {
+        const float col = source.at(c, r, 0);
+        if (std::isnan(col)) {
+          missing += !std::isnan(mean.at(c, r)) + !std::isnan(mode.at(c, r));
+          continue;
+        }
+        ++sources;
+        wrong_mean += mean.at(c, r) != col + (kScale - 1) / 2.0f;
+        wrong_mode += mode.at(c, r) != col;
+      }
+  }
+  EXPECT_GT(sources, 50000u);
+  EXPECT_EQ(wrong_mean, 0u);
+  EXPECT_EQ(wrong_mode, 0u);
+  EXPECT_EQ(missing, 0u);
+  fs::remove_all(run.dir);
+
+  // Another scale than the transfer's, or one image for... the images' count is the paintings'.
+  const auto refused = [&](const std::string& name, const json& params,
+                           const std::string& message) {
+    test::CliResult r;
+    const TransferRun bad =
+        run_transfer(name, 2, "", json::object(), &r, {{"landcover", "landcover"}, {"dem", "dem"}},
+                     json::array({apply("rgb", "applied", params)}));
+    EXPECT_NE(r.exit_code, 0) << name;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    fs::remove_all(bad.dir);
+  };
+  refused("-apply-scale", {{"images", {kPainting}}, {"exemplar_scale", 2}},
+          "synthesis.apply.exemplar_scale 2: the source layer 'painted_source' was made by "
+          "synthesis.transfer at exemplar_scale 4: give 4 or leave exemplar_scale out");
+  refused("-apply-images", {{"images", {kPainting, kPainting}}},
+          "synthesis.apply.images: 2 for the 1 painting(s) of the synthesis.transfer that made "
+          "'painted_source'");
+  refused("-apply-mode", {{"images", {kPainting}}, {"block", "mode"}},
+          "synthesis.apply.block \"mode\" takes the one-band images' most frequent values, and no "
+          "value output is mapped");
+  refused("-apply-missing", {{"images", {"no/such.png"}}}, "no/such.png");
+  fs::remove(columns);
 }
 
 }  // namespace
