@@ -8,7 +8,7 @@
 // mean colour within CIEDE2000 5 of the scene's and its colour spread within 50-150 % of the
 // scene's at its pixels, 50-170 % after a blur of 4 pixels (class colours from the pixels whose
 // own colour class it is, lit: colour_min_incidence_cos); and, for the goals not met
-// (modules/texture/README.md "Zion"), the measured values as floors against regressions: kappa (the
+// (modules/texture/NOTES.md), the measured values as floors against regressions: kappa (the
 // predicted classes compared after the observed map's majority filter, and as rendered), the
 // classes with a producer's accuracy of 0.5. The rest of the assessment printed. The same model and
 // assessment with 1 and 2 threads, and the texture two levels finer than the DEM without seams
@@ -252,10 +252,10 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   const json& r = one.report;
   ASSERT_TRUE(r.is_object()) << one.table;
   EXPECT_GE(r["class_colours"].size(), 4u) << "classes kept by the fit, predicted in the east";
-  // Issue 14's goals not met (README "Zion": kappa >= 0.6, producer's accuracies >= 0.5), held
-  // at what the example reaches with the share of barren land as a quantity: the predicted
-  // classes compared at the observed map's minimum mapping unit (the same majority filter of
-  // radius 16) kappa 0.597 (0.509 without the share), as rendered 0.444 (0.388).
+  // Issue 14's goals not met (modules/texture/README.md "Where it stands": kappa >= 0.6, producer's
+  // accuracies >= 0.5), held at what the example reaches with the share of barren land as a
+  // quantity: the predicted classes compared at the observed map's minimum mapping unit (the same
+  // majority filter of radius 16) kappa 0.597 (0.509 without the share), as rendered 0.444 (0.388).
   EXPECT_GE(r["kappa"].get<double>(), 0.59) << one.table;
   EXPECT_GE(r["unfiltered"]["kappa"].get<double>(), 0.44) << one.table;
   // Met since the calibration (4.94; 5.30 without the share, 10.72 on the stretched scene).
@@ -282,7 +282,7 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   }
   // Producer's accuracy >= 0.5 for 4 of the 5 classes filtered (0.88, 0.72, 0.82, 0.63: the light
   // red rock 0), for 3 as rendered (0.73, 0.53, 0.77: the white sandstone 0.48, the light red
-  // rock 0.01; README "Zion").
+  // rock 0.01; modules/texture/README.md "Where it stands").
   const auto at_least_half = [](const json& accuracies) {
     int found = 0;
     for (const auto& [k, a] : accuracies.items()) found += a.get<double>() >= 0.5;
@@ -303,7 +303,8 @@ TEST(Zion, HeldOutColoursAndDeterminism) {
   // Detail at 8.8 m (issue 14's variation): each class's spread in the texture two levels finer,
   // over its own classes there, within 50-150 % of the scene's lit pixels' at its 30 m, and at
   // least 5 % above the texture's at the DEM's level: the octaves finer than its 35 m pixels add
-  // variation (with the former noise, 3 octaves of persistence 0.5, 1-2 %; README "Zion", detail).
+  // variation (with the former noise, 3 octaves of persistence 0.5, 1-2 %;
+  // modules/texture/NOTES.md, "Detail at 8.8 m").
   const auto fine = class_spreads(*store, "texture_fine", "texture_fine_classes");
   for (const auto& [k, c] : r["class_colours"].items()) {
     ASSERT_TRUE(fine.count(k)) << "class " << k << " not in the texture at 8.8 m";
