@@ -52,6 +52,7 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
   std::array<int32_t, kSide * kSide + kMaxPatchSearch + kMaxPatchEdges> proposals{};
   std::array<uint8_t, kSide * kSide> window_labels{};
   const bool balanced = in.balance > 0 && !e.colour_excess.empty();
+  ExcessPower power(in.balance);
   for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
     for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
       int32_t& winner = result[offset(out, col, row)];
@@ -113,8 +114,7 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
       std::array<float, kSide * kSide + kMaxPatchSearch + kMaxPatchEdges> excess_factor{};
       if (balanced)
         for (size_t i = 0; i < n; ++i)
-          excess_factor[i] =
-              float(std::pow(double(e.colour_excess[size_t(proposals[i])]), in.balance));
+          excess_factor[i] = float(power(e.colour_excess[size_t(proposals[i])]));
       float* centre = patch.data() + R * kRowValues + 3 * R;
       float least = std::numeric_limits<float>::infinity();
       for (size_t i = 0; i < n; ++i) {

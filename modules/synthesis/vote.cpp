@@ -20,12 +20,6 @@ bool across_depth_break(float a, float b, double ratio) {
   return std::max(a, b) > ratio * std::min(a, b);
 }
 
-double guide_mismatch(const std::vector<float>& target, size_t i,
-                      const std::vector<float>& exemplar, int32_t c) {
-  if (target.empty() || exemplar.empty() || std::isnan(target[i])) return 0;
-  return std::pow(double(target[i]) - double(exemplar[size_t(c)]), 2);
-}
-
 bool depth_break_within(const std::vector<float>& depth, const PixelRect& rect, int64_t col,
                         int64_t row, int radius, double ratio) {
   if (depth.empty()) return false;
@@ -40,6 +34,7 @@ std::vector<int32_t> vote(const ExemplarLevel& e, const VoteInputs& in, int radi
                           const PixelRect& out) {
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
   std::vector<int32_t> proposals;
+  ExcessPower power(in.balance);
   for (int64_t row = out.row0; row < out.row0 + out.height; ++row)
     for (int64_t col = out.col0; col < out.col0 + out.width; ++col) {
       const size_t g = offset(in.guide_rect, col, row);
@@ -61,12 +56,16 @@ std::vector<int32_t> vote(const ExemplarLevel& e, const VoteInputs& in, int radi
           for (size_t k = 0; k < 3; ++k) mean[k] += e.rgb[3 * size_t(c) + k];
         }
       double least = std::numeric_limits<double>::infinity();
-      for (const int32_t c : proposals) {
+      for (size_t i = 0; i < proposals.size(); ++i) {
+        const int32_t c = proposals[i];
+        // A coherent copy proposes one source many times: a repeat's d is the first's, and a
+        // tie goes to the first.
+        if (i > 0 && c == proposals[i - 1]) continue;
         double d = 0;
         for (size_t k = 0; k < 3; ++k)
           d += std::pow(double(e.rgb[3 * size_t(c) + k]) - mean[k] / double(proposals.size()), 2);
         if (in.balance > 0 && !e.colour_excess.empty())
-          d = (d + kBalanceFloor) * std::pow(double(e.colour_excess[size_t(c)]), in.balance);
+          d = (d + kBalanceFloor) * power(e.colour_excess[size_t(c)]);
         if (d < least) least = d, winner = c;
       }
     }

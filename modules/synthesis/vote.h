@@ -22,6 +22,9 @@
 // whatever the step's own radius: with radius 2 it under-states the wider vote's narrowing.
 #pragma once
 
+#include <array>
+#include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -37,9 +40,13 @@ namespace maquette::synthesis {
 bool across_depth_break(float a, float b, double ratio);
 
 // The squared difference of a target guide at `i` and exemplar pixel `c`'s value (0 when either
-// has none, or the target's is NaN): the correction's and the patch passes' guide terms.
-double guide_mismatch(const std::vector<float>& target, std::size_t i,
-                      const std::vector<float>& exemplar, int32_t c);
+// has none, or the target's is NaN): the correction's and the patch passes' guide terms. Inline:
+// they call it for every candidate.
+inline double guide_mismatch(const std::vector<float>& target, std::size_t i,
+                             const std::vector<float>& exemplar, int32_t c) {
+  if (target.empty() || exemplar.empty() || std::isnan(target[i])) return 0;
+  return std::pow(double(target[i]) - double(exemplar[std::size_t(c)]), 2);
+}
 
 // Whether a depth break lies between pixel (col, row) and any pixel within `radius` (Chebyshev)
 // of it, `depth` holding the depths over `rect`, row-major (empty: no breaks). Precondition: the
@@ -50,6 +57,30 @@ bool depth_break_within(const std::vector<float>& depth, const PixelRect& rect, 
 // Added to a proposal's squared distance (RGB 0..1) before the balance's factor: a proposal at
 // the mean itself is still weighed by its excess.
 inline constexpr double kBalanceFloor = 1e-4;
+
+// std::pow(excess, balance) of colour excesses, memoised: an excess takes few values (one per
+// label and colour bin, exemplar_usage.h) and pow is costly. Bit for bit std::pow's.
+class ExcessPower {
+ public:
+  explicit ExcessPower(double balance) : balance_(balance) {}
+
+  double operator()(float excess) {
+    const uint32_t bits = std::bit_cast<uint32_t>(excess);
+    Slot& slot = slots_[(bits * 0x9e3779b1u) >> (32 - kSlotBits)];
+    if (!slot.set || slot.bits != bits) slot = {bits, true, std::pow(double(excess), balance_)};
+    return slot.value;
+  }
+
+ private:
+  static constexpr int kSlotBits = 10;
+  struct Slot {
+    uint32_t bits = 0;
+    bool set = false;
+    double value = 0;
+  };
+  double balance_;
+  std::array<Slot, std::size_t(1) << kSlotBits> slots_{};
+};
 
 // Rasters over rectangles of global pixels, row-major.
 struct VoteInputs {
