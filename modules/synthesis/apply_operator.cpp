@@ -35,8 +35,11 @@ OperatorSpec apply_spec() {
        "the images' colours at the sources, as the transfer's (0 is nodata: a channel at 0 is "
        "written 1)",
        DType::U8, 3, Semantics::Continuous, "", 0.0},
-      {"value", "the one-band images' values at the sources", DType::F32, 1, Semantics::Continuous,
-       "", std::nullopt}};
+      {"value", "the one-band images' values at the sources: each block's mean", DType::F32, 1,
+       Semantics::Continuous, "", std::nullopt},
+      {"classes",
+       "the one-band images' classes at the sources: each block's most frequent (65535: none)",
+       DType::U16, 1, Semantics::Categorical, "", 65535.0}};
   s.writes_all_samples = true;
   s.params_schema = {
       {"type", "object"},
@@ -49,20 +52,13 @@ OperatorSpec apply_spec() {
           {"items", {{"type", "string"}}},
           {"description",
            "one image per painting, each of its painting's size: the transfer's painting first, "
-           "then each of its exemplars (colours for rgb, one band for value)"}}},
+           "then each of its exemplars (colours for rgb, one band for value and classes)"}}},
         {"exemplar_scale",
          {{"type", "integer"},
           {"enum", {1, 2, 4, 8}},
           {"description",
            "painting pixels per source block: the transfer's (by default the one recorded with "
-           "the source layer, else 2)"}}},
-        {"block",
-         {{"type", "string"},
-          {"enum", {"mean", "mode"}},
-          {"default", "mean"},
-          {"description",
-           "value: each block's mean, or its most frequent value (classes); rgb: always the "
-           "mean, as the transfer's colours"}}}}}};
+           "the source layer, else 2)"}}}}}};
   s.check_params = [](const json& params, const std::set<std::string>&) {
     const auto& images = params.at("images");
     for (size_t i = 0; i < images.size(); ++i)
@@ -96,22 +92,26 @@ int source_scale(const CellContext& ctx) {
   return made;
 }
 
-// Each set of images read and shrunk once per process, shared by the cells.
+// How an output port reads the images: colours, or one band's block means or modes.
+enum class Reading { Colours, Means, Modes };
+
+// Each set of images read and shrunk once per process for each reading, shared by the cells.
 std::shared_ptr<const std::vector<SourceImage>> source_images(const json& params, int scale,
-                                                              bool colours) {
+                                                              Reading reading) {
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const std::vector<SourceImage>>> cache;
-  const std::string key =
-      params.dump() + " at " + std::to_string(scale) + (colours ? " rgb" : " value");
+  const std::string key = params.at("images").dump() + " at " + std::to_string(scale) + " as " +
+                          std::to_string(int(reading));
   const std::lock_guard lock(mutex);
   auto& slot = cache[key];
   if (!slot) {
-    const BlockValue block =
-        params.at("block").get<std::string>() == "mode" ? BlockValue::Mode : BlockValue::Mean;
     auto images = std::make_shared<std::vector<SourceImage>>();
-    for (const auto& path : params.at("images"))
-      images->push_back(colours ? colour_image(path.get<std::string>(), scale)
-                                : value_image(path.get<std::string>(), scale, block));
+    for (const auto& item : params.at("images")) {
+      const std::string path = item.get<std::string>();
+      images->push_back(reading == Reading::Colours ? colour_image(path, scale)
+                        : reading == Reading::Means ? value_image(path, scale, BlockValue::Mean)
+                                                    : value_image(path, scale, BlockValue::Mode));
+    }
     slot = images;
   }
   return slot;
@@ -124,17 +124,13 @@ class Apply : public CellOperator {
   void run(const CellContext& ctx, CellData& data) const override {
     const Tile<float>& source = data.input("source");
     const int n = source.size(), scale = source_scale(ctx);
-    if (ctx.params->at("block") == "mode" && !data.wants("value"))
-      throw Error(std::string(kOp) +
-                  ".block \"mode\" takes the one-band images' most frequent values, and no "
-                  "value output is mapped (rgb takes each block's mean): map value or leave block "
-                  "out");
-    const auto fill = [&](const char* port, int channels, const auto& value_of) {
+    const auto fill = [&](const char* port, Reading reading, const auto& value_of) {
       if (!data.wants(port)) return;
+      const int channels = reading == Reading::Colours ? 3 : 1;
       Tile<float>& out = data.output(port);
       if (out.size() != n || out.channels() != channels || out.halo() != 0)
         out = Tile<float>::uninitialized(n, channels);
-      const auto images = source_images(*ctx.params, scale, channels == 3);
+      const auto images = source_images(*ctx.params, scale, reading);
       float block[3];
       for (int r = 0; r < n; ++r)
         for (int c = 0; c < n; ++c) {
@@ -153,8 +149,14 @@ class Apply : public CellOperator {
           for (int k = 0; k < channels; ++k) out.at(c, r, k) = value_of(block[k]);
         }
     };
-    fill("rgb", 3, [](float v) { return colour_byte(v / 255.0f); });
-    fill("value", 1, [](float v) { return v; });
+    fill("rgb", Reading::Colours, [](float v) { return colour_byte(v / 255.0f); });
+    fill("value", Reading::Means, [](float v) { return v; });
+    fill("classes", Reading::Modes, [&](float v) {
+      if (!std::isnan(v) && !(v >= 0 && v < 65535 && v == std::floor(v)))
+        throw Error(std::string(kOp) + ": outputs.classes: the images hold " + std::to_string(v) +
+                    ", not a class (a whole number 0 .. 65534): map such an image to value");
+      return v;
+    });
   }
 
  private:

@@ -220,7 +220,7 @@ TEST(TransferZion, ThePaintingsBlackIsAColourNotNodata) {
 
 // synthesis.apply (apply_sources.h) after the transfer: applied to the painting itself, the
 // transfer's colours byte for byte; applied to an image of the painting's columns, each pixel its
-// source's block: the mean of its columns, or (every column once, a tie) the first.
+// source's block: the mean of its columns, or as classes (every column once, a tie) the first.
 TEST(TransferZion, TheSourcesAppliedToThePaintingAreTheTransfersColours) {
   if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
     GTEST_SKIP() << "../shared/data is absent";
@@ -238,11 +238,10 @@ TEST(TransferZion, TheSourcesAppliedToThePaintingAreTheTransfersColours) {
                 {"outputs", {{output, layer}}},
                 {"params", params}};
   };
-  const json then =
-      json::array({apply("rgb", "applied", {{"images", {kPainting}}}),
-                   apply("value", "column_mean", {{"images", {columns}}}),
-                   apply("value", "column_mode",
-                         {{"images", {columns}}, {"block", "mode"}, {"exemplar_scale", kScale}})});
+  const json then = json::array(
+      {apply("rgb", "applied", {{"images", {kPainting}}}),
+       apply("value", "column_mean", {{"images", {columns}}}),
+       apply("classes", "column_mode", {{"images", {columns}}, {"exemplar_scale", kScale}})});
   const TransferRun run = run_transfer("-apply", 2, "", json::object(), nullptr,
                                        {{"landcover", "landcover"}, {"dem", "dem"}}, then);
   const auto store = Store::open(run.store, Store::Mode::ReadOnly);
@@ -273,13 +272,14 @@ TEST(TransferZion, TheSourcesAppliedToThePaintingAreTheTransfersColours) {
   EXPECT_EQ(missing, 0u);
   fs::remove_all(run.dir);
 
-  // Another scale than the transfer's, or one image for... the images' count is the paintings'.
-  const auto refused = [&](const std::string& name, const json& params,
-                           const std::string& message) {
+  // Refused by name: another exemplar_scale than the transfer's, two images for its one painting,
+  // a missing image, values that are no classes mapped to classes.
+  const auto refused = [&](const std::string& name, const json& params, const std::string& message,
+                           const std::string& output = "rgb") {
     test::CliResult r;
     const TransferRun bad =
         run_transfer(name, 2, "", json::object(), &r, {{"landcover", "landcover"}, {"dem", "dem"}},
-                     json::array({apply("rgb", "applied", params)}));
+                     json::array({apply(output, "applied", params)}));
     EXPECT_NE(r.exit_code, 0) << name;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     fs::remove_all(bad.dir);
@@ -290,11 +290,14 @@ TEST(TransferZion, TheSourcesAppliedToThePaintingAreTheTransfersColours) {
   refused("-apply-images", {{"images", {kPainting, kPainting}}},
           "synthesis.apply.images: 2 for the 1 painting(s) of the synthesis.transfer that made "
           "'painted_source'");
-  refused("-apply-mode", {{"images", {kPainting}}, {"block", "mode"}},
-          "synthesis.apply.block \"mode\" takes the one-band images' most frequent values, and no "
-          "value output is mapped");
   refused("-apply-missing", {{"images", {"no/such.png"}}}, "no/such.png");
+  const std::string halves = test::temp_dir() + "/painting-halves.tif";
+  test::write_raster(halves, spec, [](int, double x, double) { return x; });  // centres: n + 0.5
+  refused("-apply-halves", {{"images", {halves}}},
+          ".500000, not a class (a whole number 0 .. 65534): map such an image to value",
+          "classes");
   fs::remove(columns);
+  fs::remove(halves);
 }
 
 }  // namespace
