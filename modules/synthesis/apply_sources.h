@@ -26,12 +26,14 @@ enum class BlockValue { Mean, Mode };
 // The image's colours read as the transfer reads its painting (painting.h's read_painting: grey,
 // RGB, RGBA or a palette; 8-bit, or 16-bit over 257) and averaged over each block as it shrinks it
 // (shrink_exemplar): applied to the transfer's first painting itself, its colours bit for bit.
+// Throws maquette::Error naming the file when read_painting does, or when the image is smaller
+// than one block.
 SourceImage colour_image(const std::string& path, int scale);
 
 // A one-band image of any type GDAL reads (its nodata NaN): each block's mean (NaN when it holds a
 // NaN), or with BlockValue::Mode its most frequent value (ties: the smallest; NaN not counted, a
 // block of NaN only NaN), for classes. Throws maquette::Error naming the file when it has
-// another count of bands.
+// another count of bands or is smaller than one block.
 SourceImage value_image(const std::string& path, int scale, BlockValue block);
 
 // The `channels` values of images[painting] at the block whose top-left painting pixel is (col,
