@@ -149,6 +149,8 @@ class Apply : public CellOperator {
           for (int k = 0; k < channels; ++k) out.at(c, r, k) = value_of(block[k]);
         }
     };
+    // The transfer writes its level's colours, the shrunk painting's over 255: the same float
+    // first, so that the same rounding gives the same byte.
     fill("rgb", Reading::Colours, [](float v) { return colour_byte(v / 255.0f); });
     fill("value", Reading::Means, [](float v) { return v; });
     fill("classes", Reading::Modes, [&](float v) {
