@@ -14,6 +14,9 @@
 //    s per output megapixel = 1e6 / items_per_second.
 //  - WholeImage: the same 512 x 512 output synthesized as one window: the tiling overhead is
 //    Transfer's time over this one.
+//  - TransferWanted/wanted: one tile of 256 of which only the left `wanted` % of columns are
+//    kept (synthesize()'s `wanted`, as the operator keeps the pixels with land cover), one thread:
+//    items are the kept pixels.
 //  - TurnedEdgeBand/band: one polar cell of 256 beside a turned edge (N's cell at level 2 next
 //    to P, turned_edges.h) on the fixture's labels, on one thread: its own synthesis alone
 //    (band:0, what any cell costs) and with the band synthesized in P's chart and cut in (band:1).
@@ -117,6 +120,31 @@ void BM_WholeImage(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
 }
 BENCHMARK(BM_WholeImage)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+// One tile of 256 whose left `wanted` % of columns are kept (synthesize()'s `wanted`: the land,
+// where the rest has no land cover), one thread: the cost follows the kept share.
+void BM_TransferWanted(benchmark::State& state) {
+  const auto t = zion_exemplar();
+  const PixelRect out{0, 0, kTile, kTile};
+  const int halo = synthesis_halo();
+  TargetGuides g;
+  g.rect = {-halo, -halo, kTile + 2 * halo, kTile + 2 * halo};
+  g.labels = zion_labels(g.rect);
+  std::vector<uint8_t> wanted(size_t(kTile) * kTile);
+  for (size_t i = 0; i < wanted.size(); ++i)
+    wanted[i] = int64_t(i % kTile) * 100 < state.range(0) * kTile;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(synthesize(t->pyramid, g, SynthesisParams{}, out, wanted));
+  state.SetItemsProcessed(state.iterations() * kTile * kTile * state.range(0) / 100);
+}
+BENCHMARK(BM_TransferWanted)
+    ->ArgName("wanted")
+    ->Arg(100)
+    ->Arg(50)
+    ->Arg(10)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(3);
 
 void BM_TurnedEdgeBand(benchmark::State& state) {
   const auto t = zion_exemplar();

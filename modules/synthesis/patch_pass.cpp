@@ -45,7 +45,8 @@ uint8_t most_present_other(const std::array<uint8_t, kSide * kSide>& window, uin
 
 std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInputs& in,
                                     const PixelRect& state_rect, const std::vector<int32_t>& state,
-                                    const PixelRect& out, int px, int py, uint64_t salt) {
+                                    const PixelRect& out, int px, int py, uint64_t salt,
+                                    std::span<const uint8_t> needed) {
   constexpr int R = kPatchPassRadius;
   std::vector<int32_t> result(size_t(out.width) * size_t(out.height));
   std::array<float, kSide * kRowValues> patch{};  // the output's colours around p, row by row
@@ -58,6 +59,7 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
       int32_t& winner = result[offset(out, col, row)];
       winner = state[offset(state_rect, col, row)];
       if ((col & 1) != px || (row & 1) != py) continue;
+      if (!needed.empty() && !needed[offset(out, col, row)]) continue;
       if (depth_break_within(in.depth, in.guide_rect, col, row, R, in.depth_break)) continue;
       const size_t g = offset(in.guide_rect, col, row);
       const uint8_t label = in.labels[g];

@@ -10,66 +10,11 @@
 #include "core/error.h"
 #include "patch_pass.h"
 #include "pixel_hash.h"
+#include "synthesis_plan.h"
 #include "vote.h"
 
 namespace maquette::synthesis {
 namespace {
-
-PixelRect grow(const PixelRect& r, int64_t m) {
-  return {r.col0 - m, r.row0 - m, r.width + 2 * m, r.height + 2 * m};
-}
-
-// The pixels of the next coarser level covering `r`.
-PixelRect parent(const PixelRect& r) {
-  const int64_t c0 = r.col0 >> 1, r0 = r.row0 >> 1;
-  return {c0, r0, ((r.col0 + r.width - 1) >> 1) - c0 + 1, ((r.row0 + r.height - 1) >> 1) - r0 + 1};
-}
-
-// What each sub-pass of a pass computes, and what the pass starts from.
-struct PassPlan {
-  PixelRect start;                           // the state the pass reads (and its snapshot)
-  std::array<PixelRect, kSubPasses> outs{};  // each sub-pass's output
-};
-
-struct LevelPlan {
-  PixelRect start;  // upsampled (or initialized) state
-  std::array<PassPlan, kPasses> passes{};
-};
-
-// From the finest level's window back to the coarsest (the vote reads kVoteRadius around the
-// output window, each patch pass's sub-pass its state within kPatchPassRadius): each sub-pass
-// reads its state within kPatchRadius, each pass its snapshot within kRepetitionRadius, each
-// level its parent.
-struct Plan {
-  std::array<PassPlan, kMaxPatchPasses> patch_passes{};
-  std::array<LevelPlan, kLevels> levels{};
-};
-
-Plan plan_levels(const PixelRect& out, int patch_passes) {
-  Plan plan;
-  PixelRect need = grow(out, kVoteRadius);  // the finest level's vote reads it
-  for (int pass = patch_passes - 1; pass >= 0; --pass) {
-    PassPlan& p = plan.patch_passes[size_t(pass)];
-    p.outs[kSubPasses - 1] = need;
-    for (int s = kSubPasses - 2; s >= 0; --s)
-      p.outs[size_t(s)] = grow(p.outs[size_t(s) + 1], kPatchPassRadius);
-    p.start = grow(p.outs[0], kPatchPassRadius);
-    need = p.start;
-  }
-  for (int l = 0; l < kLevels; ++l) {
-    for (int pass = kPasses - 1; pass >= 0; --pass) {
-      PassPlan& p = plan.levels[size_t(l)].passes[size_t(pass)];
-      p.outs[kSubPasses - 1] = need;
-      for (int s = kSubPasses - 2; s >= 0; --s)
-        p.outs[size_t(s)] = grow(p.outs[size_t(s) + 1], kPatchRadius);
-      p.start = grow(p.outs[0], std::max(kPatchRadius, kRepetitionRadius));
-      need = p.start;
-    }
-    plan.levels[size_t(l)].start = need;
-    need = parent(need);
-  }
-  return plan;
-}
 
 // Exemplar pixel indices over a rectangle of global pixels of one level.
 struct State {
@@ -350,13 +295,14 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
   State snapshot = state;
   for (int32_t& s : snapshot.src) s = s % e.width | (s / e.width) << 16;
   for (int sub = 0; sub < kSubPasses; ++sub) {
-    const PixelRect& r = plan.outs[size_t(sub)];
+    const PixelMask& needed = plan.outs[size_t(sub)];
+    const PixelRect& r = needed.rect;
     State next(r);
     const auto [px, py] = kParities[size_t(sub)];
     const uint64_t salt = 16 + uint64_t(pass * kSubPasses + sub) * 2;
     for (int64_t row = r.row0; row < r.row0 + r.height; ++row)
       for (int64_t col = r.col0; col < r.col0 + r.width; ++col)
-        next.at(col, row) = (col & 1) == px && (row & 1) == py
+        next.at(col, row) = (col & 1) == px && (row & 1) == py && needed.has(col, row)
                                 ? corrector.best(state, snapshot, col, row, salt)
                                 : state.at(col, row);
     state = std::move(next);
@@ -373,11 +319,12 @@ State patch_passed(State state, const ExemplarLevel& e, const LevelGuides& g,
                            p.w_altitude,  p.seed,          col_period,     p.line_classes};
   for (int pass = 0; pass < p.patch_passes; ++pass)
     for (int sub = 0; sub < kSubPasses; ++sub) {
-      const PixelRect& r = plans[size_t(pass)].outs[size_t(sub)];
-      State next(r);
+      const PixelMask& needed = plans[size_t(pass)].outs[size_t(sub)];
+      State next(needed.rect);
       const auto [px, py] = kParities[size_t(sub)];
       const uint64_t salt = 64 + uint64_t(pass * kSubPasses + sub) * kMaxPatchSearch;
-      next.src = patch_sub_pass(e, in, state.rect, state.src, r, px, py, salt);
+      next.src =
+          patch_sub_pass(e, in, state.rect, state.src, needed.rect, px, py, salt, needed.bits);
       state = std::move(next);
     }
   return state;
@@ -408,7 +355,8 @@ PixelRect guide_rect(const PixelRect& out, int shift) {
 }
 
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
-                                const SynthesisParams& params, const PixelRect& out) {
+                                const SynthesisParams& params, const PixelRect& out,
+                                std::span<const uint8_t> wanted) {
   if (int(pyramid.levels.size()) != kLevels)
     throw Error("synthesis: the exemplar pyramid has " + std::to_string(pyramid.levels.size()) +
                 " levels, not " + std::to_string(kLevels));
@@ -427,7 +375,10 @@ std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuid
   if (params.patch_edges < 0 || params.patch_edges > kMaxPatchEdges)
     throw Error("synthesis: patch_edges " + std::to_string(params.patch_edges) + ": must be 0 .. " +
                 std::to_string(kMaxPatchEdges));
-  const Plan plans = plan_levels(out, params.patch_passes);
+  if (!wanted.empty() && wanted.size() != size_t(out.width) * size_t(out.height))
+    throw Error("synthesis: " + std::to_string(wanted.size()) + " wanted flags for a window of " +
+                std::to_string(out.width) + " x " + std::to_string(out.height));
+  const Plan plans = plan_levels(out, params.patch_passes, wanted);
   State state({});
   for (int l = kLevels - 1; l >= 0; --l) {
     const LevelPlan& plan = plans.levels[size_t(l)];

@@ -91,6 +91,7 @@
 
 #include <bitset>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "exemplar_pyramid.h"
@@ -169,13 +170,18 @@ int synthesis_halo();
 PixelRect guide_rect(const PixelRect& out, int shift);
 
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
-// exemplar pixel at the pyramid's finest level. Preconditions: guides.rect covers `out` grown by
-// synthesis_halo() pixels (>> guides.shift); the pyramid has kLevels levels. Throws
-// maquette::Error when the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius,
+// exemplar pixel at the pyramid's finest level. `wanted` (row-major over `out`, or empty: every
+// pixel) names the pixels whose result the caller keeps: only what they read is computed
+// (synthesis_plan.h), so their results are the same bits as without it, and the others' are
+// exemplar pixels of no meaning (where the land cover has no data, say). Preconditions:
+// guides.rect covers `out` grown by synthesis_halo() pixels (>> guides.shift); the pyramid has
+// kLevels levels. Throws maquette::Error when wanted is neither empty nor of out's size, when
+// the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius,
 // params.patch_passes outside 0 .. kMaxPatchPasses, params.patch_search outside 0 ..
 // kMaxPatchSearch, params.patch_edges outside 0 .. kMaxPatchEdges (patch_pass.h) or
 // guides.col_period is not a multiple of 2^kLevels.
 std::vector<int32_t> synthesize(const ExemplarPyramid& pyramid, const TargetGuides& guides,
-                                const SynthesisParams& params, const PixelRect& out);
+                                const SynthesisParams& params, const PixelRect& out,
+                                std::span<const uint8_t> wanted = {});
 
 }  // namespace maquette::synthesis

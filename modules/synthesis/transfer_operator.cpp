@@ -93,11 +93,22 @@ class Transfer : public CellOperator {
     guides.col_period = plane.wrap_columns(ctx.cell, n);
     const auto first = plane.tile_pixel(ctx.cell, n, 0, 0);
     const PixelRect out{first[0], first[1], n, n};
-    // Along a polar face's turned edges, the band continued from the equatorial face's chart.
+    // Where the land cover has no data the output has none either (its nodata): the synthesis
+    // computes only what the other pixels read (none: nothing).
+    std::vector<uint8_t> land(size_t(n) * size_t(n));
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        land[size_t(r) * size_t(n) + size_t(c)] =
+            !std::isnan(landcover.at(c >> ctx.refine, r >> ctx.refine));
+    const bool any_land = std::find(land.begin(), land.end(), 1) != land.end();
+    // Along a polar face's turned edges, the band continued from the equatorial face's chart
+    // (its cut reads the band's every pixel: there the whole window is computed).
+    const auto edges = turned_edges(*ctx.grid, plane, ctx.cell, ctx.tile_size, ctx.refine);
     const std::vector<int32_t> src =
-        join_turned_edges(exemplar->pyramid, sp, guides, halo,
-                          turned_edges(*ctx.grid, plane, ctx.cell, ctx.tile_size, ctx.refine),
-                          synthesize(exemplar->pyramid, guides, sp, out));
+        any_land ? join_turned_edges(exemplar->pyramid, sp, guides, halo, edges,
+                                     synthesize(exemplar->pyramid, guides, sp, out,
+                                                edges.empty() ? land : std::vector<uint8_t>{}))
+                 : std::vector<int32_t>{};
 
     const ExemplarLevel& e = exemplar->pyramid.levels[0];
     const auto target = [&](const char* port, int channels) -> Tile<float>* {
@@ -111,8 +122,7 @@ class Transfer : public CellOperator {
     Tile<float>* source = target("source", 3);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
-        // Where the land cover has no data the output has none either (its nodata).
-        if (std::isnan(landcover.at(c >> ctx.refine, r >> ctx.refine))) {
+        if (!land[size_t(r) * size_t(n) + size_t(c)]) {
           for (int k = 0; k < 3 && rgb; ++k) rgb->at(c, r, k) = NAN;
           for (int k = 0; k < 3 && source; ++k) source->at(c, r, k) = NAN;
           continue;

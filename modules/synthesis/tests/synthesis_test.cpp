@@ -2,10 +2,10 @@
 // their halo equal the whole image's crop (64^2 and 128^2 tiles, the guides cut to each window
 // and its halo), on one thread and two; no excluded pixel is ever copied; sources keep the
 // target's labels; the output is the vote of the copy, and the vote smooths the colours of
-// neighbours; the patch passes keep the tiles equal and lower the coherence; strong block
-// preferences with spread_typical keep off the atypical regions; guides that miss the
-// halo, a vote radius outside 0 .. kVoteRadius and patch passes or draws outside their ranges are
-// refused.
+// neighbours; the patch passes keep the tiles equal and lower the coherence; the wanted pixels
+// computed alone are the same bits; strong block preferences with spread_typical keep off the
+// atypical regions; guides that miss the halo, a vote radius outside 0 .. kVoteRadius and patch
+// passes or draws outside their ranges are refused.
 #include "../synthesis.h"
 
 #include <gtest/gtest.h>
@@ -68,6 +68,16 @@ TargetGuides guides(const PixelRect& rect) {
       g.altitude[i] = float(std::clamp(0.5 - y / 400.0, 0.0, 1.0));
     }
   return g;
+}
+
+// The most patch passes, balanced, with the most draws around the source and from class edges.
+SynthesisParams every_patch_pass() {
+  SynthesisParams p;
+  p.patch_passes = kMaxPatchPasses;
+  p.patch_balance = 0.25;
+  p.patch_search = kMaxPatchSearch;
+  p.patch_edges = kMaxPatchEdges;
+  return p;
 }
 
 PixelRect grown(const PixelRect& r, int m) {
@@ -162,11 +172,7 @@ TEST_F(SynthesisTest, TheBalancedVoteOfRadius2TilesEqualTheWholeImage) {
 // function of global pixel coordinates (their reach is in the halo), change it, and lower its
 // coherence (synthesis.assess's: the SSD of each 5 x 5 output patch to its nearest exemplar patch).
 TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoherence) {
-  SynthesisParams passed;
-  passed.patch_passes = kMaxPatchPasses;
-  passed.patch_balance = 0.25;
-  passed.patch_search = kMaxPatchSearch;
-  passed.patch_edges = kMaxPatchEdges;
+  SynthesisParams passed = every_patch_pass();
   ASSERT_FALSE(pyramid_->levels[0].class_edges.empty());
   passed.line_classes.set(1);  // its thin pixels keep their sources: a function of the labels too
   const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
@@ -192,6 +198,29 @@ TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoheren
   };
   EXPECT_GT(differing(whole, *whole_), whole.size() / 10);
   EXPECT_LT(coherence(whole), 0.9 * coherence(*whole_));
+}
+
+// Only the wanted pixels kept (synthesis_plan.h: the land where the land cover has no data
+// around it): they are the whole image's bits, with every pass, draw and the widest vote; the
+// others were not computed (many differ from the whole image's).
+TEST_F(SynthesisTest, WantedPixelsAloneAreTheWholeImagesBits) {
+  SynthesisParams passed = every_patch_pass();
+  passed.vote_radius = kVoteRadius;
+  const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
+  const auto whole = synthesize(*pyramid_, target, passed, kWhole);
+  // A half-disc on the left, a line of pixels and one pixel apart.
+  std::vector<uint8_t> wanted(whole.size(), 0);
+  for (int64_t r = 0; r < kWhole.height; ++r)
+    for (int64_t c = 0; c < kWhole.width; ++c)
+      wanted[size_t(r * kWhole.width + c)] =
+          (c < 128 && (c - 128) * (c - 128) + (r - 128) * (r - 128) < 70 * 70) ||
+          (r == 17 && c > 140) || (r == 230 && c == 200);
+  const auto kept = synthesize(*pyramid_, target, passed, kWhole, wanted);
+  size_t wrong = 0, other = 0;
+  for (size_t i = 0; i < whole.size(); ++i) (wanted[i] ? wrong : other) += kept[i] != whole[i];
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(other, whole.size() / 4);
+  EXPECT_THROW(synthesize(*pyramid_, target, passed, kWhole, std::vector<uint8_t>(7, 1)), Error);
 }
 
 TEST_F(SynthesisTest, NeverCopiesAnExcludedPixel) {
