@@ -76,10 +76,10 @@ struct PatchPassInputs {
 // One sub-pass: the pixels of `out` of parity (px, py) take their best proposal, the others keep
 // their source; with `needed` (row-major over `out`; empty: every pixel) only those of its
 // pixels that are non-zero (synthesis_plan.h). `salt` tells the sub-pass's draws from the
-// others' (pixel_hash). Preconditions:
-// `state` holds exemplar pixels y * width + x of the level over `state_rect`, which covers `out`
-// grown by kPatchPassRadius; in.search is 0 .. kMaxPatchSearch, in.edges 0 .. kMaxPatchEdges (with
-// e.class_edges empty, not indexed, they draw nothing).
+// others' (pixel_hash). Preconditions: `state` holds exemplar pixels y * width + x of the level
+// over `state_rect`, which covers `out` grown by kPatchPassRadius; `needed` is empty or of out's
+// size; in.search is 0 .. kMaxPatchSearch, in.edges 0 .. kMaxPatchEdges (with e.class_edges
+// empty, not indexed, they draw nothing).
 std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInputs& in,
                                     const PixelRect& state_rect, const std::vector<int32_t>& state,
                                     const PixelRect& out, int px, int py, uint64_t salt,

@@ -52,8 +52,8 @@
 // A candidate whose exemplar label is the pixel's target label beats any that is not (the cost
 // decides among those of one kind): the two random candidates of the label offer one (unless
 // forbidden) whenever the level's exemplar has that label, so such an output pixel ends on a
-// pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel ends
-// on an allowed pixel.
+// pixel of its label. Excluded exemplar pixels are never candidates, and every output pixel
+// (every kept one, given synthesize()'s `wanted`) ends on an allowed pixel.
 //
 // Then, with patch_passes > 0, the finest level's patch passes (patch_pass.h): each pixel takes,
 // among the copies under way around it (S(p + d) - d, d within 2), the one whose 5 x 5 exemplar
@@ -171,9 +171,10 @@ PixelRect guide_rect(const PixelRect& out, int shift);
 
 // For each pixel of `out` (output resolution), row-major, the index y * width + x of its
 // exemplar pixel at the pyramid's finest level. `wanted` (row-major over `out`, or empty: every
-// pixel) names the pixels whose result the caller keeps: only what they read is computed
-// (synthesis_plan.h), so their results are the same bits as without it, and the others' are
-// exemplar pixels of no meaning (where the land cover has no data, say). Preconditions:
+// pixel) names the pixels whose result the caller keeps: the corrections and patch passes
+// compute only what those read (synthesis_plan.h), so their results are the same bits as without
+// it, and the others' are exemplar pixels of no meaning, excluded ones perhaps (where the land
+// cover has no data, say). Preconditions:
 // guides.rect covers `out` grown by synthesis_halo() pixels (>> guides.shift); the pyramid has
 // kLevels levels. Throws maquette::Error when wanted is neither empty nor of out's size, when
 // the guides do not cover it, params.vote_radius is outside 0 .. kVoteRadius,

@@ -201,25 +201,36 @@ TEST_F(SynthesisTest, PatchPassesKeepTilesEqualToTheWholeImageAndLowerTheCoheren
 }
 
 // Only the wanted pixels kept (synthesis_plan.h: the land where the land cover has no data
-// around it): they are the whole image's bits, with every pass, draw and the widest vote; the
+// around it): they are the whole image's bits, with every pass, draw and the widest vote, and
+// scattered single pixels (cones at every parity and offset) under a strong reuse penalty; the
 // others were not computed (many differ from the whole image's).
 TEST_F(SynthesisTest, WantedPixelsAloneAreTheWholeImagesBits) {
   SynthesisParams passed = every_patch_pass();
   passed.vote_radius = kVoteRadius;
+  SynthesisParams reused;
+  reused.w_repetition = 4;
   const TargetGuides target = guides(grown(kWhole, synthesis_halo()));
-  const auto whole = synthesize(*pyramid_, target, passed, kWhole);
-  // A half-disc on the left, a line of pixels and one pixel apart.
-  std::vector<uint8_t> wanted(whole.size(), 0);
+  // A half-disc on the left, a line of pixels and one pixel apart; one pixel in 61, scattered.
+  std::vector<uint8_t> shapes(size_t(kWhole.width * kWhole.height)), scattered(shapes.size());
   for (int64_t r = 0; r < kWhole.height; ++r)
-    for (int64_t c = 0; c < kWhole.width; ++c)
-      wanted[size_t(r * kWhole.width + c)] =
-          (c < 128 && (c - 128) * (c - 128) + (r - 128) * (r - 128) < 70 * 70) ||
-          (r == 17 && c > 140) || (r == 230 && c == 200);
-  const auto kept = synthesize(*pyramid_, target, passed, kWhole, wanted);
-  size_t wrong = 0, other = 0;
-  for (size_t i = 0; i < whole.size(); ++i) (wanted[i] ? wrong : other) += kept[i] != whole[i];
+    for (int64_t c = 0; c < kWhole.width; ++c) {
+      const size_t i = size_t(r * kWhole.width + c);
+      shapes[i] = (c < 128 && (c - 128) * (c - 128) + (r - 128) * (r - 128) < 70 * 70) ||
+                  (r == 17 && c > 140) || (r == 230 && c == 200);
+      scattered[i] = splitmix64_mix(i) % 61 == 0;
+    }
+  // The kept pixels' differences from the whole image (none expected), and the others'.
+  const auto differences = [&](const SynthesisParams& params, const std::vector<uint8_t>& wanted) {
+    const auto whole = synthesize(*pyramid_, target, params, kWhole);
+    const auto kept = synthesize(*pyramid_, target, params, kWhole, wanted);
+    std::array<size_t, 2> n{};
+    for (size_t i = 0; i < whole.size(); ++i) n[wanted[i] ? 0 : 1] += kept[i] != whole[i];
+    return n;
+  };
+  const auto [wrong, other] = differences(passed, shapes);
   EXPECT_EQ(wrong, 0u);
-  EXPECT_GT(other, whole.size() / 4);
+  EXPECT_GT(other, shapes.size() / 4);
+  EXPECT_EQ(differences(reused, scattered)[0], 0u);
   EXPECT_THROW(synthesize(*pyramid_, target, passed, kWhole, std::vector<uint8_t>(7, 1)), Error);
 }
 
