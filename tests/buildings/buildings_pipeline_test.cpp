@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -159,7 +160,15 @@ bool inside(const json& rings, LonLat p) {
   return in;
 }
 
-TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
+// Every test reads the Soho footprints of ../shared/data: skipped without them.
+class BuildingsPipeline : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kSoho)) GTEST_SKIP() << kSoho << " is absent (../shared/data)";
+  }
+};
+
+TEST_F(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
   // Every fifth footprint with a pitched roof 3 m high on its 10 m walls (default), the shapes
   // in turn.
   json footprints = soho();
@@ -262,7 +271,7 @@ TEST(BuildingsPipeline, SohoStandsOnTheDemAsValidSolids) {
 // On a DEM of EGM96 heights (SRTM's datum, the ingest's default) each building stands at its base
 // plus the geoid height there, as the exported terrain does: its lowest vertex's height above the
 // ellipsoid is base_m + N, N from PROJ (EGM96 height -> WGS 84 ellipsoidal; ~46 m in London).
-TEST(BuildingsPipeline, OnAnEgm96DemBuildingsStandOnTheEllipsoidalTerrain) {
+TEST_F(BuildingsPipeline, OnAnEgm96DemBuildingsStandOnTheEllipsoidalTerrain) {
   const Scene scene(soho(), json::object(), kLevel, kTileSize, "egm96");
   const CliResult r = scene.run();
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -288,7 +297,7 @@ TEST(BuildingsPipeline, OnAnEgm96DemBuildingsStandOnTheEllipsoidalTerrain) {
   EXPECT_EQ(checked, 158);
 }
 
-TEST(BuildingsPipeline, SameBitsForOneAndTwoThreads) {
+TEST_F(BuildingsPipeline, SameBitsForOneAndTwoThreads) {
   const Scene one(soho(), json::object()), two(soho(), json::object());
   ASSERT_EQ(one.run("-t 1").exit_code, 0);
   ASSERT_EQ(two.run("-t 2").exit_code, 0);
@@ -310,7 +319,7 @@ std::map<int64_t, json> buildings(const std::string& store) {
 
 // The same pixels in cells of half the side (level 15, tiles of 128): other owning cells and
 // frames, the same buildings (their base from the same pixels, their area in the same plane).
-TEST(BuildingsPipeline, SameBuildingsForAnotherTiling) {
+TEST_F(BuildingsPipeline, SameBuildingsForAnotherTiling) {
   const Scene coarse(soho(), json::object()),
       fine(soho(), json::object(), kLevel + 1, kTileSize / 2);
   ASSERT_EQ(coarse.run().exit_code, 0);
@@ -354,7 +363,7 @@ TEST(BuildingsPipeline, SameBuildingsForAnotherTiling) {
   }
 }
 
-TEST(BuildingsPipeline, FootprintGivingNoSolidIsNamedNotWritten) {
+TEST_F(BuildingsPipeline, FootprintGivingNoSolidIsNamedNotWritten) {
   // A courtyard touching the outer wall at a corner: a valid polygon (OGC; the ingest takes it),
   // but its solid would have an edge shared by four faces.
   json footprints = soho();

@@ -5,6 +5,7 @@
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
+#include <filesystem>
 
 #include "../building_mesh.h"
 #include "../building_solid.h"
@@ -33,7 +34,15 @@ std::vector<std::vector<std::array<double, 2>>> plane_rings(
   return rings;
 }
 
-TEST(BuildingsSoho, EverySolidIsValidByCgal) {
+// Every test reads the Soho footprints of ../shared/data: skipped without them.
+class BuildingsSoho : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kSoho)) GTEST_SKIP() << kSoho << " is absent (../shared/data)";
+  }
+};
+
+TEST_F(BuildingsSoho, EverySolidIsValidByCgal) {
   const SohoScene scene(kSoho);
   ASSERT_EQ(scene.footprints.size(), 158u);
   for (const VectorFeature& f : scene.footprints) {
@@ -50,7 +59,7 @@ TEST(BuildingsSoho, EverySolidIsValidByCgal) {
   }
 }
 
-TEST(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
+TEST_F(BuildingsSoho, MeshesStandOnTheTerrainInTheirCell) {
   const SohoScene scene(kSoho);
   ASSERT_EQ(scene.footprints.size(), 158u);
   const Grid& grid = default_grid();
