@@ -60,6 +60,16 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
       winner = state[offset(state_rect, col, row)];
       if ((col & 1) != px || (row & 1) != py) continue;
       if (!needed.empty() && !needed[offset(out, col, row)]) continue;
+      // The sources the next pixel of this parity adds to the window: their loads under way
+      // while this one is weighed.
+      if (col + 2 < out.col0 + out.width)
+        for (int dy = -R; dy <= R; ++dy)
+          for (int dx = R - 1; dx <= R; ++dx) {
+            const size_t s = size_t(state[offset(state_rect, col + 2 + dx, row + dy)]);
+            __builtin_prefetch(&e.rgb[3 * s]);
+            __builtin_prefetch(&e.excluded[s]);
+            __builtin_prefetch(&e.labels[s]);
+          }
       if (depth_break_within(in.depth, in.guide_rect, col, row, R, in.depth_break)) continue;
       const size_t g = offset(in.guide_rect, col, row);
       const uint8_t label = in.labels[g];
@@ -112,6 +122,18 @@ std::vector<int32_t> patch_sub_pass(const ExemplarLevel& e, const PatchPassInput
       if (n <= 1) {  // within a copy under way, or no proposal kept
         if (n == 1) winner = proposals[0];
         continue;
+      }
+      // The proposals' patches, guides and excess lie scattered over the exemplar: their loads
+      // issued together before the distances read them.
+      for (size_t i = 0; i < n; ++i) {
+        const std::ptrdiff_t c = proposals[i];
+        for (int oy = -R; oy <= R; ++oy) {
+          const float* b = e.rgb.data() + 3 * (c + std::ptrdiff_t(oy) * e.width - R);
+          __builtin_prefetch(b);
+          __builtin_prefetch(b + kRowValues - 1);
+        }
+        if (!e.altitude.empty()) __builtin_prefetch(&e.altitude[size_t(c)]);
+        if (balanced) __builtin_prefetch(&e.colour_excess[size_t(c)]);
       }
       std::array<float, kSide * kSide + kMaxPatchSearch + kMaxPatchEdges> excess_factor{};
       if (balanced)

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "least_cost.h"
 #include "patch_pass.h"
 #include "pixel_hash.h"
 #include "synthesis_plan.h"
@@ -109,12 +110,41 @@ class Corrector {
  public:
   Corrector(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p, int level,
             int k, int64_t col_period)
-      : e_(e), g_(g), p_(p), level_(level), k_(k), col_period_(col_period) {}
+      : e_(e),
+        g_(g),
+        p_(p),
+        level_(level),
+        k_(k),
+        col_period_(col_period),
+        floorable_(p.w_label >= 0 && p.w_altitude >= 0 && p.w_distance >= 0 && p.w_light >= 0 &&
+                   p.w_repetition >= 0 && p.w_spread >= 0 && p.w_usage >= 0 && p.coherence > -1) {}
+
+  // Issues the first loads best() makes for pixel (col, row), its neighbours' sources' colours
+  // and similar patches, so that they are under way while the pixel before it is corrected.
+  void prefetch(const State& state, int64_t col, int64_t row) const {
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
+      for (int dx = -kPatchRadius; dx <= kPatchRadius; ++dx) {
+        const size_t s = size_t(state.at(col + dx, row + dy));
+        __builtin_prefetch(&e_.rgb[3 * s]);
+        __builtin_prefetch(&e_.similar[s * size_t(k_)]);
+        __builtin_prefetch(&e_.excluded[s]);
+      }
+  }
 
   // The best candidate for pixel (col, row) given the current state and the pass's snapshot
   // (packed coordinates, see corrected()).
   int32_t best(const State& state, const State& snapshot, int64_t col, int64_t row,
                uint64_t salt) const {
+    // The two random candidates of the pixel's label: their loads issued first (a cache miss
+    // each, in pools as large as the level).
+    const uint8_t label = g_.labels[g_.index(col, row)];
+    const std::vector<int32_t>& pool = start_pool(e_, label);
+    const int64_t hashed_col = wrapped_col(col, col_period_);
+    std::array<const int32_t*, 2> drawn{};
+    for (uint64_t j = 0; j < drawn.size(); ++j) {
+      drawn[j] = &pool[pixel_hash(hashed_col, row, level_, p_.seed, salt + j) % pool.size()];
+      __builtin_prefetch(drawn[j]);
+    }
     std::array<float, kPatchValues> patch{};
     size_t o = 0;
     for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
@@ -142,6 +172,7 @@ class Corrector {
         const int32_t s = state.at(col + dx, row + dy);
         shifted[m] = e_.index(std::clamp(s % e_.width - dx, 0, e_.width - 1),
                               std::clamp(s / e_.width - dy, 0, e_.height - 1));
+        __builtin_prefetch(&e_.similar[size_t(shifted[m]) * size_t(k_)]);
         across[m] = breaks_between(g_, p_, g_.index(col, row), g_.index(col + dx, row + dy));
         if (across[m]) forbidden[f++] = shifted[m];
         around.labels[m] = across[m] ? kUnknownLabel : g_.labels[g_.index(col + dx, row + dy)];
@@ -159,11 +190,12 @@ class Corrector {
           std::copy_n(own.begin() + ptrdiff_t(3 * j), 3, mixed.begin() + ptrdiff_t(3 * j));
       return e_.basis.project(mixed);
     };
-    const uint8_t label = g_.labels[g_.index(col, row)];
     std::array<int32_t, kPatchSide * kPatchSide * 8 + 2> candidates{};
     size_t n = 0;
-    const auto add = [&](int32_t c) {
-      if (c < 0 || e_.excluded[size_t(c)] || n == candidates.size()) return;
+    // Similar patches and the pools hold allowed pixels only (exemplar_pyramid.h), or -1.
+    const auto add_allowed = [&](int32_t c) {
+      assert(c < 0 || !e_.excluded[size_t(c)]);
+      if (c < 0 || n == candidates.size()) return;
       const auto in = [c](const auto& list, size_t count) {
         return std::find(list.begin(), list.begin() + ptrdiff_t(count), c) !=
                list.begin() + ptrdiff_t(count);
@@ -171,47 +203,79 @@ class Corrector {
       if (!in(candidates, n) && !in(forbidden, f)) candidates[n++] = c;
     };
     // Coherent candidates first (the neighbours' sources, shifted), then their similar patches.
-    for (const int32_t c : shifted) add(c);
+    for (const int32_t c : shifted)
+      if (!e_.excluded[size_t(c)]) add_allowed(c);
     const size_t coherent = n;
     for (const int32_t c : shifted)
-      for (int j = 0; j < k_; ++j) add(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
-    const std::vector<int32_t>& pool = start_pool(e_, label);
-    const int64_t hashed_col = wrapped_col(col, col_period_);
-    for (uint64_t j = 0; j < 2; ++j)
-      add(pool[pixel_hash(hashed_col, row, level_, p_.seed, salt + j) % pool.size()]);
+      for (int j = 0; j < k_; ++j) add_allowed(e_.similar[size_t(c) * size_t(k_) + size_t(j)]);
+    for (const int32_t* c : drawn) add_allowed(*c);
 
     // The candidates' features lie scattered over the level (a cache miss each): their loads
     // issued together before the costs read them (-27 % of the transfer's CPU).
-    for (size_t i = 0; i < n; ++i)
-      __builtin_prefetch(&e_.features[size_t(candidates[i]) * kFeatureDims]);
-    // A candidate of the pixel's own label beats any other (the pool's random candidates offer
-    // one whenever the exemplar has that label); among equals the least cost wins.
-    int32_t winner = -1;
-    bool winner_fits = false;
-    double least = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < n; ++i) {
-      const bool fits = label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
-      if (winner_fits && !fits) continue;
-      const double base =
-          this->cost(candidates[i], feature_for(candidates[i]), around, col, row, hashed_col);
-      const double cost =
-          i < coherent ? base : base * (1.0 + p_.coherence) + p_.w_usage * usage(candidates[i]);
-      if (cost < least || (fits && !winner_fits))
-        least = cost, winner = candidates[i], winner_fits = fits;
+      const size_t c = size_t(candidates[i]);
+      __builtin_prefetch(&e_.features[c * kFeatureDims]);
+      if (!e_.altitude.empty()) __builtin_prefetch(&e_.altitude[c]);
+      const size_t w = size_t(e_.width);
+      if (c >= w) __builtin_prefetch(&e_.labels[c - w]);
+      __builtin_prefetch(&e_.labels[c]);
+      if (c + w < e_.labels.size()) __builtin_prefetch(&e_.labels[c + w]);
+      if (level_ > 0 && !e_.usage.empty()) __builtin_prefetch(&e_.usage[c]);
+      if (p_.spread_typical < 1 && !e_.region_quantile.empty())
+        __builtin_prefetch(&e_.region_quantile[c]);
     }
-    return winner >= 0 ? winner : state.at(col, row);  // every candidate forbidden: kept
+    // A candidate of the pixel's own label beats any other (the pool's random candidates offer
+    // one whenever the exemplar has that label); among equals the least cost wins (least_cost.h),
+    // most dismissed on their floor().
+    const auto scale = [&](size_t i) { return i < coherent ? 1.0 : 1.0 + p_.coherence; };
+    Floor low{};
+    const int chosen = least_cost(
+        n,
+        [&](size_t i) {
+          return label == kUnknownLabel || e_.labels[size_t(candidates[i])] == label;
+        },
+        [&](size_t i) {
+          low = floor(candidates[i], feature_for(candidates[i]), row, hashed_col);
+          return floorable_ ? (low.colour + low.spread) * scale(i)
+                            : -std::numeric_limits<double>::infinity();
+        },
+        [&](size_t i) {
+          const double base = cost(candidates[i], low, around, col, row);
+          return i < coherent ? base : base * scale(i) + p_.w_usage * usage(candidates[i]);
+        });
+    return chosen >= 0 ? candidates[size_t(chosen)]
+                       : state.at(col, row);  // every candidate forbidden: kept
   }
 
  private:
-  // hashed_col: col as the hashes read it (wrapped_col).
-  double cost(int32_t c, const std::array<float, kFeatureDims>& feature, const Around& around,
-              int64_t col, int64_t row, int64_t hashed_col) const {
+  // A candidate's D_color and its weighted D_spread, the first and last terms of its cost: with
+  // every weight >= 0 the terms between are >= 0 and rounding is monotone, so the cost is no less
+  // than their sum (nor, times 1 + coherence, than it times that): computed first, they dismiss
+  // most candidates before the rest of their cost is. hashed_col: the column as the hashes read
+  // it (wrapped_col).
+  struct Floor {
+    double colour, spread;
+  };
+  Floor floor(int32_t c, const std::array<float, kFeatureDims>& feature, int64_t row,
+              int64_t hashed_col) const {
     double colour = 0;
     for (int i = 0; i < kFeatureDims; ++i) {
       const double d =
           double(feature[size_t(i)]) - double(e_.features[size_t(c) * kFeatureDims + size_t(i)]);
       colour += d * d;
     }
+    const int cx = c % e_.width, cy = c / e_.width;
+    const uint64_t h =
+        pixel_hash(hashed_col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
+                   kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
+                       uint64_t(cy >> kSpreadRegionShift) << 20);
+    const bool preferable = p_.spread_typical >= 1 || e_.region_quantile.empty() ||
+                            typical_region(e_.region_quantile[size_t(c)], p_.spread_typical);
+    const double spread = preferable ? double(h >> 11) * 0x1.0p-53 : 1.0;  // [0, 1), or 1
+    return {colour, p_.w_spread * spread};
+  }
+
+  double cost(int32_t c, const Floor& floor, const Around& around, int64_t col, int64_t row) const {
     const int cx = c % e_.width, cy = c / e_.width;
     int mismatched = 0;
     size_t t = 0;
@@ -230,16 +294,9 @@ class Corrector {
     for (size_t i = 0; i < kRepetitionOffsets.size(); ++i)
       reused +=
           int(unsigned(around.x[i] - cx + 1) <= 2u) & int(unsigned(around.y[i] - cy + 1) <= 2u);
-    const uint64_t h =
-        pixel_hash(hashed_col >> kSpreadBlockShift, row >> kSpreadBlockShift, level_, p_.seed,
-                   kSpreadSalt ^ uint64_t(cx >> kSpreadRegionShift) << 40 ^
-                       uint64_t(cy >> kSpreadRegionShift) << 20);
-    const bool preferable = p_.spread_typical >= 1 || e_.region_quantile.empty() ||
-                            typical_region(e_.region_quantile[size_t(c)], p_.spread_typical);
-    const double spread = preferable ? double(h >> 11) * 0x1.0p-53 : 1.0;  // [0, 1), or 1
-    return colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
+    return floor.colour + p_.w_label * mismatched / double(kPatchSide * kPatchSide) +
            p_.w_altitude * altitude + p_.w_distance * distance + p_.w_light * light +
-           p_.w_repetition * reused / double(kRepetitionOffsets.size()) + p_.w_spread * spread;
+           p_.w_repetition * reused / double(kRepetitionOffsets.size()) + floor.spread;
   }
 
   // D_usage (synthesis.h): the exemplar's measured over-use, at the coarser levels.
@@ -252,6 +309,7 @@ class Corrector {
   const SynthesisParams& p_;
   int level_, k_;
   int64_t col_period_;  // at this level
+  bool floorable_;      // every weight >= 0: a candidate's floor bounds its cost (floor())
 };
 
 State initial_state(const ExemplarLevel& e, const LevelGuides& g, const SynthesisParams& p,
@@ -301,10 +359,12 @@ State corrected(State state, const ExemplarLevel& e, const LevelGuides& g, const
     const auto [px, py] = kParities[size_t(sub)];
     const uint64_t salt = 16 + uint64_t(pass * kSubPasses + sub) * 2;
     for (int64_t row = r.row0; row < r.row0 + r.height; ++row)
-      for (int64_t col = r.col0; col < r.col0 + r.width; ++col)
-        next.at(col, row) = (col & 1) == px && (row & 1) == py && needed.has(col, row)
-                                ? corrector.best(state, snapshot, col, row, salt)
-                                : state.at(col, row);
+      for (int64_t col = r.col0; col < r.col0 + r.width; ++col) {
+        const bool corrects = (col & 1) == px && (row & 1) == py && needed.has(col, row);
+        if (corrects && col + 2 < r.col0 + r.width) corrector.prefetch(state, col + 2, row);
+        next.at(col, row) =
+            corrects ? corrector.best(state, snapshot, col, row, salt) : state.at(col, row);
+      }
     state = std::move(next);
   }
   return state;
