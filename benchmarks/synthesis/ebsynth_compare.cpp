@@ -109,16 +109,17 @@ ClassPixels class_pixels(const Exemplar& e, const std::vector<uint8_t>& labels) 
 // The most distinct sources a copy can have with every pixel copied from a usable exemplar pixel
 // of its label: the sum over labels of min(target pixels, usable exemplar pixels), as a fraction
 // of the target pixels with a label.
-double distinct_bound(const ClassPixels& count) {
-  int64_t bound = 0, target = 0;
+double distinct_bound(const Exemplar& e, const ClassPixels& count) {
+  std::map<uint8_t, uint64_t> targets;
+  uint64_t target = 0;
   for (const auto& [label, n] : count) {
-    bound += std::min(n[0], n[1]);
-    target += n[0];
+    if (n[0] > 0) targets[label] = uint64_t(n[0]);
+    target += uint64_t(n[0]);
     std::printf("  class %d: %lld target pixels, %lld usable exemplar pixels\n", int(label),
                 (long long)n[0], (long long)n[1]);
   }
   if (target == 0) throw maquette::Error("the window holds no pixel of a land-cover class");
-  return double(bound) / double(target);
+  return double(label_keeping_sources(e, targets, 0)) / double(target);
 }
 
 void print(const char* name, const Metrics& m) {
@@ -412,7 +413,7 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
   std::printf("the window's classes (painting classes through the class table):\n");
   const std::vector<uint8_t> labels = zion_labels(out, classes);
   const ClassPixels count = class_pixels(e, labels);
-  std::printf("distinct-source bound with label consistency 1: %.4f\n", distinct_bound(count));
+  std::printf("distinct-source bound with label consistency 1: %.4f\n", distinct_bound(e, count));
   std::printf("ours with vote radius %d; ours+mean: its colours replaced by ebsynth's plain vote\n",
               params.vote_radius);
   std::vector<Metrics> ours_m, averaged_m;

@@ -121,6 +121,7 @@ void Tally::merge(const Tally& o) {
   pixels += o.pixels;
   labelled += o.labelled;
   label_matches += o.label_matches;
+  for (const auto& [label, n] : o.labelled_by) labelled_by[label] += n;
   excluded += o.excluded;
   coherence_sum += o.coherence_sum;
   coherence_patches += o.coherence_patches;
@@ -155,6 +156,7 @@ Tally tally(const Exemplar& e, const AssessedImage& image, const PixelRect& coun
       t.excluded += e.excluded[size_t(s)] != 0;
       if (label != kUnknownLabel) {
         ++t.labelled;
+        ++t.labelled_by[label];
         t.label_matches += e.labels[size_t(s)] == label;
       }
       if (!image.altitude.empty() && !e.altitude.empty() && !std::isnan(image.altitude[i])) {
@@ -174,6 +176,17 @@ std::vector<uint64_t> exemplar_histogram(const Exemplar& e, uint8_t label) {
   return h;
 }
 
+uint64_t label_keeping_sources(const Exemplar& e, const std::map<uint8_t, uint64_t>& labelled,
+                               uint64_t unlabelled) {
+  std::map<uint8_t, uint64_t> allowed_by;
+  for (size_t i = 0; i < e.labels.size(); ++i)
+    if (!e.excluded[i]) ++allowed_by[e.labels[i]];
+  uint64_t allowed = 0, drawn = 0;
+  for (const auto& [label, n] : allowed_by) allowed += n;
+  for (const auto& [label, n] : labelled) drawn += std::min(n, allowed_by[label]);
+  return drawn + std::min(unlabelled, allowed - drawn);
+}
+
 Metrics metrics(const Exemplar& e, const Tally& t) {
   Metrics m;
   m.pixels = t.pixels;
@@ -185,6 +198,10 @@ Metrics metrics(const Exemplar& e, const Tally& t) {
   if (t.pixels) {
     m.distinct_source_fraction = double(t.uses.size()) / double(t.pixels);
     m.max_source_share = double(most) / double(t.pixels);
+    const auto allowed = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
+    m.distinct_source_bound = std::min(1.0, double(allowed) / double(t.pixels));
+    m.distinct_source_label_bound =
+        double(label_keeping_sources(e, t.labelled_by, t.pixels - t.labelled)) / double(t.pixels);
   }
   for (const auto& [label, counts] : t.histograms) {
     const double d = total_variation(counts, exemplar_histogram(e, label));

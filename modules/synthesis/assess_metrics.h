@@ -35,11 +35,12 @@ struct AssessedImage {
 
 // Sums and counts of one window; merge() adds another window's.
 struct Tally {
-  uint64_t pixels = 0;         // output pixels with a source
-  uint64_t labelled = 0;       // of which with a known target label
-  uint64_t label_matches = 0;  // of which whose source has that label
-  uint64_t excluded = 0;       // pixels with a source in the exclusion mask
-  double coherence_sum = 0;    // sum of the nearest exemplar patches' SSD
+  uint64_t pixels = 0;                      // output pixels with a source
+  uint64_t labelled = 0;                    // of which with a known target label
+  uint64_t label_matches = 0;               // of which whose source has that label
+  std::map<uint8_t, uint64_t> labelled_by;  // the labelled ones by target label
+  uint64_t excluded = 0;                    // pixels with a source in the exclusion mask
+  double coherence_sum = 0;                 // sum of the nearest exemplar patches' SSD
   uint64_t coherence_patches = 0;
   double altitude_sum = 0;  // sum of |target altitude - source altitude|
   uint64_t altitude_pixels = 0;
@@ -58,7 +59,11 @@ struct Metrics {
   // 0..255 units (so 25 x 3 squared differences per patch).
   double coherence = 0;
   double distinct_source_fraction = 0;  // distinct source pixels / pixels
-  double max_source_share = 0;          // most used source pixel's uses / pixels
+  // The most the fraction can be: the exemplar's allowed pixels over the pixels (at most 1);
+  // and the most for a synthesis that keeps every pixel's label, each label's pixels drawing on
+  // the allowed pixels of that label (the pixels of no label on any left), over the pixels.
+  double distinct_source_bound = 0, distinct_source_label_bound = 0;
+  double max_source_share = 0;  // most used source pixel's uses / pixels
   // Per target label, total variation 0.5 sum |p - q| between the bin frequencies of the output
   // colours of its pixels and of the exemplar's allowed pixels of that label (1 when the
   // exemplar has none); and the worst of them.
@@ -85,6 +90,12 @@ int histogram_bin(float r, float g, float b);
 // sources are -1 or exemplar pixels, `counted` lies in image.rect, coherence_step >= 1.
 Tally tally(const Exemplar& e, const AssessedImage& image, const PixelRect& counted,
             int coherence_step);
+
+// The most distinct sources output pixels can have while each keeps its label: `labelled` of
+// each target label drawing on the allowed pixels of exemplar `e` of that label, `unlabelled`
+// ones on the allowed pixels left.
+uint64_t label_keeping_sources(const Exemplar& e, const std::map<uint8_t, uint64_t>& labelled,
+                               uint64_t unlabelled);
 
 // The Metrics of a (merged) Tally against the exemplar it was tallied on.
 Metrics metrics(const Exemplar& e, const Tally& t);

@@ -64,9 +64,12 @@ json to_json(const Tally& t) {
   json uses = json::array(), histograms = json::object();
   for (const auto& [pixel, n] : t.uses) uses.push_back({pixel, n});
   for (const auto& [label, counts] : t.histograms) histograms[std::to_string(label)] = counts;
+  json labelled_by = json::object();
+  for (const auto& [label, n] : t.labelled_by) labelled_by[std::to_string(label)] = n;
   return {{"pixels", t.pixels},
           {"labelled", t.labelled},
           {"label_matches", t.label_matches},
+          {"labelled_by", labelled_by},
           {"excluded", t.excluded},
           {"coherence_sum", t.coherence_sum},
           {"coherence_patches", t.coherence_patches},
@@ -81,6 +84,8 @@ Tally from_json(const json& j) {
   t.pixels = j.at("pixels");
   t.labelled = j.at("labelled");
   t.label_matches = j.at("label_matches");
+  for (const auto& [label, n] : j.at("labelled_by").items())
+    t.labelled_by[uint8_t(std::stoi(label))] = n.get<uint64_t>();
   t.excluded = j.at("excluded");
   t.coherence_sum = j.at("coherence_sum");
   t.coherence_patches = j.at("coherence_patches");
@@ -205,7 +210,6 @@ class Assess : public ReduceOperator {
     const Tally t = from_json(merged);
     const Exemplar e = copied_exemplar(transfer_exemplar(*ctx.params, kOp)->pyramid.levels[0]);
     const Metrics m = metrics(e, t);
-    const auto usable = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
     json distances = json::object();
     for (const auto& [label, d] : m.histogram_distance) distances[std::to_string(label)] = d;
     json report = {{"pixels", m.pixels},
@@ -214,9 +218,10 @@ class Assess : public ReduceOperator {
                    {"coherence", m.coherence},
                    {"coherence_patches", t.coherence_patches},
                    {"distinct_source_fraction", m.distinct_source_fraction},
-                   // The fraction cannot exceed the exemplar's usable pixels over the output's.
-                   {"distinct_source_bound", std::min(1.0, double(usable) / double(m.pixels))},
-                   {"usable_exemplar_pixels", usable},
+                   {"distinct_source_bound", m.distinct_source_bound},
+                   {"distinct_source_label_bound", m.distinct_source_label_bound},
+                   {"usable_exemplar_pixels",
+                    uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)))},
                    {"max_source_share", m.max_source_share},
                    {"histogram_distance", distances},
                    {"worst_histogram_distance", m.worst_histogram_distance}};

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "../pixel_hash.h"
 #include "painted_exemplar.h"
@@ -92,6 +93,39 @@ TEST(AssessMetrics, OneRepeatedExcludedSource) {
   EXPECT_DOUBLE_EQ(m.distinct_source_fraction, 1.0 / 30);
   EXPECT_DOUBLE_EQ(m.max_source_share, 1.0);
   EXPECT_EQ(m.label_consistency, 1.0);
+}
+
+// The bounds of the distinct fraction: 40 allowed pixels of label 0 (60 excluded) and 100 of
+// label 1; 50 output pixels of label 0, 20 of label 1 and 5 of none, all from one source. A
+// synthesis keeping the labels draws at most 40 distinct for label 0, 20 for label 1 and 5
+// anywhere: 65 of 75; the allowed pixels alone (140) would allow every one.
+TEST(AssessMetrics, TheLabelBoundDrawsEachLabelFromItsOwnAllowedPixels) {
+  Exemplar e = noise_exemplar(20, 10, 4);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 10; ++x) e.excluded[size_t(y * 20 + x)] = 1;
+  AssessedImage a;
+  a.rect = {0, 0, 75, 1};
+  for (int i = 0; i < 75; ++i) {
+    for (size_t k = 0; k < 3; ++k) a.rgb.push_back(e.rgb[3 * 199 + k]);
+    a.source.push_back(199);
+    a.labels.push_back(i < 50 ? 0 : i < 70 ? 1 : kUnknownLabel);
+  }
+  const Tally t = tally(e, a, a.rect, 1);
+  EXPECT_EQ(t.labelled_by, (std::map<uint8_t, uint64_t>{{0, 50}, {1, 20}}));
+  const Metrics m = metrics(e, t);
+  EXPECT_DOUBLE_EQ(m.distinct_source_label_bound, 65.0 / 75);
+  EXPECT_DOUBLE_EQ(m.distinct_source_bound, 1.0);
+  EXPECT_DOUBLE_EQ(m.distinct_source_fraction, 1.0 / 75);
+  // 100 more pixels of no label: only 140 - 60 allowed pixels are left for the 105 of them.
+  a.rect.width = 175;
+  for (int i = 0; i < 100; ++i) {
+    for (size_t k = 0; k < 3; ++k) a.rgb.push_back(e.rgb[3 * 199 + k]);
+    a.source.push_back(199);
+    a.labels.push_back(kUnknownLabel);
+  }
+  const Metrics wide = metrics(e, tally(e, a, a.rect, 1));
+  EXPECT_DOUBLE_EQ(wide.distinct_source_label_bound, 140.0 / 175);
+  EXPECT_DOUBLE_EQ(wide.distinct_source_bound, 140.0 / 175);
 }
 
 TEST(AssessMetrics, CoherenceOfConstantColoursIsTheirSquaredDifferenceTimes75) {
@@ -189,6 +223,7 @@ TEST(AssessMetrics, WindowsMergedEqualTheWhole) {
     merged.merge(tally(e, a, part, 1));
   EXPECT_EQ(merged.pixels, whole.pixels);
   EXPECT_EQ(merged.uses, whole.uses);
+  EXPECT_EQ(merged.labelled_by, whole.labelled_by);
   EXPECT_EQ(merged.histograms, whole.histograms);
   EXPECT_EQ(merged.coherence_patches, whole.coherence_patches);
   EXPECT_NEAR(merged.coherence_sum, whole.coherence_sum, 1e-9 * whole.coherence_sum);

@@ -123,6 +123,12 @@ TEST(AssessZion, ReportsTheTransfersMeasuresAtTheirCurrentLevels) {
   ASSERT_FALSE(report.is_null());
   const uint64_t pixels = expect_the_stored_sources(report, stored_uses(store));
   EXPECT_GE(report.at("distinct_source_bound").get<double>(), 0.3);  // 0.3 is reachable
+  // With every pixel's label kept (below), the fraction is under the label bound, itself under
+  // the bound.
+  EXPECT_LE(report.at("distinct_source_fraction").get<double>(),
+            report.at("distinct_source_label_bound").get<double>());
+  EXPECT_LE(report.at("distinct_source_label_bound").get<double>(),
+            report.at("distinct_source_bound").get<double>());
   // A sample of every 4th column and row, less the patches reaching beyond the region.
   EXPECT_GT(report.at("coherence_patches").get<uint64_t>(), pixels / 17);
   EXPECT_LE(report.at("coherence_patches").get<uint64_t>(), pixels / 16);
