@@ -192,14 +192,14 @@ Metrics metrics(const Exemplar& e, const Tally& t) {
   m.pixels = t.pixels;
   m.label_consistency = t.labelled ? double(t.label_matches) / double(t.labelled) : 1.0;
   m.excluded_pixels = t.excluded;
+  m.allowed_pixels = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
   m.coherence = t.coherence_patches ? t.coherence_sum / double(t.coherence_patches) : 0.0;
   uint64_t most = 0;
   for (const auto& [pixel, n] : t.uses) most = std::max(most, n);
   if (t.pixels) {
     m.distinct_source_fraction = double(t.uses.size()) / double(t.pixels);
     m.max_source_share = double(most) / double(t.pixels);
-    const auto allowed = uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)));
-    m.distinct_source_bound = std::min(1.0, double(allowed) / double(t.pixels));
+    m.distinct_source_bound = std::min(1.0, double(m.allowed_pixels) / double(t.pixels));
     m.distinct_source_label_bound =
         double(label_keeping_sources(e, t.labelled_by, t.pixels - t.labelled)) / double(t.pixels);
   }

@@ -59,6 +59,7 @@ struct Metrics {
   // 0..255 units (so 25 x 3 squared differences per patch).
   double coherence = 0;
   double distinct_source_fraction = 0;  // distinct source pixels / pixels
+  uint64_t allowed_pixels = 0;          // the exemplar's (not excluded)
   // The most the fraction can be: the exemplar's allowed pixels over the pixels (at most 1);
   // and the most for a synthesis that keeps every pixel's label, each label's pixels drawing on
   // the allowed pixels of that label (the pixels of no label on any left), over the pixels.

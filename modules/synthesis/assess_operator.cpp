@@ -220,8 +220,7 @@ class Assess : public ReduceOperator {
                    {"distinct_source_fraction", m.distinct_source_fraction},
                    {"distinct_source_bound", m.distinct_source_bound},
                    {"distinct_source_label_bound", m.distinct_source_label_bound},
-                   {"usable_exemplar_pixels",
-                    uint64_t(std::count(e.excluded.begin(), e.excluded.end(), uint8_t(0)))},
+                   {"usable_exemplar_pixels", m.allowed_pixels},
                    {"max_source_share", m.max_source_share},
                    {"histogram_distance", distances},
                    {"worst_histogram_distance", m.worst_histogram_distance}};
