@@ -2,7 +2,6 @@
 // colours and source coordinates against its exemplar (the same params) and the target's land
 // cover and altitude. Each cell tallies its pixels (coherence reads kCoherenceRadius pixels of
 // halo), the tallies are summed, and the report is a JSON artifact and a table on stdout.
-#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
