@@ -197,8 +197,9 @@ class Corrector {
       assert(c < 0 || !e_.excluded[size_t(c)]);
       if (c < 0 || n == candidates.size()) return;
       const auto in = [c](const auto& list, size_t count) {
-        return std::find(list.begin(), list.begin() + ptrdiff_t(count), c) !=
-               list.begin() + ptrdiff_t(count);
+        int found = 0;  // no early exit: vectorized
+        for (size_t i = 0; i < count; ++i) found |= int(list[i] == c);
+        return found != 0;
       };
       if (!in(candidates, n) && !in(forbidden, f)) candidates[n++] = c;
     };
