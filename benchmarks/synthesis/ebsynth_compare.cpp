@@ -34,7 +34,6 @@
 #include "core/whole_int.h"
 #include "ebsynth.h"
 #include "gdal/image_file.h"
-#include "runtime/params_schema.h"
 #include "transfer_params.h"
 #include "zion_fixture.h"
 
@@ -527,17 +526,7 @@ nlohmann::json synthesis_weights(int argc, char** argv) {
                             " disagree: give the vote's radius once");
     given["vote_radius"] = vote;
   }
-  nlohmann::json properties = maquette::synthesis::synthesis_params_schema();
-  properties["landcover_classes"] =
-      maquette::synthesis::exemplar_params_schema().at("landcover_classes");
-  properties["landcover_classes"]["default"] = maquette::synthesis::bench::zion_classes();
-  for (const char* key : {"labels", "exclude_classes"})
-    properties[key] = maquette::synthesis::exemplar_params_schema().at(key);
-  properties["exclude_classes"].erase("default");
-  properties.update(maquette::synthesis::further_exemplars_schema());
-  const nlohmann::json schema = {
-      {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
-  return maquette::validate_params(schema, given, kProgram);
+  return maquette::synthesis::bench::zion_weights(given, kProgram);
 }
 
 }  // namespace

@@ -14,6 +14,9 @@
 //    s per output megapixel = 1e6 / items_per_second.
 //  - WholeImage: the same 512 x 512 output synthesized as one window: the tiling overhead is
 //    Transfer's time over this one.
+//  - TransferExampleWeights/threads, WholeImageExampleWeights: the same two with the weights of
+//    examples/synthesis-zion.json (read from it: the vote of radius 2 and its balance, the patch
+//    passes, the over-use and spread weights...) in place of the defaults.
 //  - TransferWanted/wanted: one tile of 256 of which only the left `wanted` % of columns are
 //    kept (synthesize()'s `wanted`, as the operator keeps the pixels with land cover), one thread:
 //    items are the kept pixels.
@@ -25,12 +28,14 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/face_plane.h"
 #include "core/grid.h"
 #include "exemplar_cache.h"
 #include "exemplar_usage.h"
+#include "transfer_params.h"
 #include "turned_edges.h"
 #include "zion_fixture.h"
 
@@ -106,20 +111,45 @@ void BM_AnalyseCached(benchmark::State& state) {
 }
 BENCHMARK(BM_AnalyseCached)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(3);
 
-void BM_Transfer(benchmark::State& state) {
+// kOut in tiles of `tile` on `threads` threads with `params`; items are output pixels.
+void transfer(benchmark::State& state, int tile, int threads, const SynthesisParams& params) {
   const auto t = zion_exemplar();
-  for (auto _ : state)
-    benchmark::DoNotOptimize(synthesize_tiles(*t, kOut, kTile, int(state.range(0))));
+  for (auto _ : state) benchmark::DoNotOptimize(synthesize_tiles(*t, kOut, tile, threads, params));
   state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
 }
+
+// The weights and choices of examples/synthesis-zion.json's synthesis.transfer, on the fixture's
+// class table.
+SynthesisParams example_weights() {
+  std::ifstream in(MAQUETTE_SOURCE_DIR "/examples/synthesis-zion.json");
+  const nlohmann::json pipeline = nlohmann::json::parse(in);
+  const nlohmann::json names = synthesis_params_schema();
+  nlohmann::json weights = nlohmann::json::object();
+  for (const nlohmann::json& step : pipeline.at("steps"))
+    if (step.at("op") == "synthesis.transfer")
+      for (const auto& [key, value] : step.at("params").items())
+        if (names.contains(key)) weights[key] = value;
+  return synthesis_params(zion_weights(weights, "synthesis_benchmark"));
+}
+
+void BM_Transfer(benchmark::State& state) { transfer(state, kTile, int(state.range(0)), {}); }
 BENCHMARK(BM_Transfer)->Apply(on_1_and_2_threads);
 
-void BM_WholeImage(benchmark::State& state) {
-  const auto t = zion_exemplar();
-  for (auto _ : state) benchmark::DoNotOptimize(synthesize_tiles(*t, kOut, int(kOut.width), 1));
-  state.SetItemsProcessed(state.iterations() * kOut.width * kOut.height);
-}
+void BM_WholeImage(benchmark::State& state) { transfer(state, int(kOut.width), 1, {}); }
 BENCHMARK(BM_WholeImage)->MeasureProcessCPUTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_TransferExampleWeights(benchmark::State& state) {
+  transfer(state, kTile, int(state.range(0)), example_weights());
+}
+BENCHMARK(BM_TransferExampleWeights)->Apply(on_1_and_2_threads);
+
+void BM_WholeImageExampleWeights(benchmark::State& state) {
+  transfer(state, int(kOut.width), 1, example_weights());
+}
+BENCHMARK(BM_WholeImageExampleWeights)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 // One tile of 256 whose left `wanted` % of columns are kept (synthesize()'s `wanted`: the land,
 // where the rest has no land cover), one thread: the cost follows the kept share.

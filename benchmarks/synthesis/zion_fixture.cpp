@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "runtime/params_schema.h"
 #include "transfer_params.h"
 
 namespace maquette::synthesis::bench {
@@ -38,6 +39,19 @@ nlohmann::json zion_params(const nlohmann::json& classes, const nlohmann::json& 
   for (const char* key : {"exemplars", "harmonize"})
     if (painting_classes.contains(key)) params[key] = painting_classes.at(key);
   return params;
+}
+
+nlohmann::json zion_weights(const nlohmann::json& weights, const std::string& program) {
+  nlohmann::json properties = synthesis_params_schema();
+  properties["landcover_classes"] = exemplar_params_schema().at("landcover_classes");
+  properties["landcover_classes"]["default"] = zion_classes();
+  for (const char* key : {"labels", "exclude_classes"})
+    properties[key] = exemplar_params_schema().at(key);
+  properties["exclude_classes"].erase("default");
+  properties.update(further_exemplars_schema());
+  const nlohmann::json schema = {
+      {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
+  return validate_params(schema, weights, program);
 }
 
 std::shared_ptr<const TransferExemplar> zion_exemplar(const nlohmann::json& classes,

@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "assess_metrics.h"
@@ -27,6 +28,12 @@ nlohmann::json zion_classes();
 // paintings searched with Bruegel's) are passed on.
 nlohmann::json zion_params(const nlohmann::json& classes = zion_classes(),
                            const nlohmann::json& painting_classes = nlohmann::json::object());
+
+// `weights` (an object of synthesis.transfer's weights and choices, synthesis_params_schema(),
+// and optionally its "landcover_classes", "labels", "exclude_classes", "exemplars" and
+// "harmonize") validated, the defaults filled in (the fixture's class table among them); errors
+// name `program`.
+nlohmann::json zion_weights(const nlohmann::json& weights, const std::string& program);
 
 // The exemplar analysed with zion_params(classes, painting_classes) (transfer_exemplar: cached
 // per process).
