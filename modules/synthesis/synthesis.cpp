@@ -256,6 +256,7 @@ class Corrector {
   // it (wrapped_col).
   struct Floor {
     double colour, spread;
+    int cx, cy;  // the candidate's exemplar coordinates, for the rest of its cost
   };
   Floor floor(int32_t c, const std::array<float, kFeatureDims>& feature, int64_t row,
               int64_t hashed_col) const {
@@ -273,11 +274,11 @@ class Corrector {
     const bool preferable = p_.spread_typical >= 1 || e_.region_quantile.empty() ||
                             typical_region(e_.region_quantile[size_t(c)], p_.spread_typical);
     const double spread = preferable ? double(h >> 11) * 0x1.0p-53 : 1.0;  // [0, 1), or 1
-    return {colour, p_.w_spread * spread};
+    return {colour, p_.w_spread * spread, cx, cy};
   }
 
   double cost(int32_t c, const Floor& floor, const Around& around, int64_t col, int64_t row) const {
-    const int cx = c % e_.width, cy = c / e_.width;
+    const int cx = floor.cx, cy = floor.cy;
     int mismatched = 0;
     size_t t = 0;
     for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy)
