@@ -555,13 +555,9 @@ int main(int argc, char** argv) try {
     throw maquette::Error(std::string(kProgram) +
                           ": params.exclude_classes without params.labels: the 8 colour classes "
                           "exclude their class 0");
-  nlohmann::json painting_classes = nlohmann::json::object();
-  for (const char* key : {"labels", "exclude_classes", "exemplars"})
-    if (weights.contains(key)) painting_classes[key] = weights.at(key);
-  if (weights.contains("exemplars")) painting_classes["harmonize"] = weights.at("harmonize");
-  return maquette::synthesis::bench::run(side, threads, step, params,
-                                         weights.at("landcover_classes"), painting_classes,
-                                         which == "both", seeds, picture);
+  return maquette::synthesis::bench::run(
+      side, threads, step, params, weights.at("landcover_classes"),
+      maquette::synthesis::bench::painting_classes(weights), which == "both", seeds, picture);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "%s\n%s", e.what(), kUsage);
   return 1;

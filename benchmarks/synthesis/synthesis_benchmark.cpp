@@ -28,7 +28,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/face_plane.h"
@@ -121,15 +120,8 @@ void transfer(benchmark::State& state, int tile, int threads, const SynthesisPar
 // The weights and choices of examples/synthesis-zion.json's synthesis.transfer, on the fixture's
 // class table.
 SynthesisParams example_weights() {
-  std::ifstream in(MAQUETTE_SOURCE_DIR "/examples/synthesis-zion.json");
-  const nlohmann::json pipeline = nlohmann::json::parse(in);
-  const nlohmann::json names = synthesis_params_schema();
-  nlohmann::json weights = nlohmann::json::object();
-  for (const nlohmann::json& step : pipeline.at("steps"))
-    if (step.at("op") == "synthesis.transfer")
-      for (const auto& [key, value] : step.at("params").items())
-        if (names.contains(key)) weights[key] = value;
-  return synthesis_params(zion_weights(weights, "synthesis_benchmark"));
+  return synthesis_params(
+      zion_weights(bench::example_weights("synthesis-zion.json"), "synthesis_benchmark"));
 }
 
 void BM_Transfer(benchmark::State& state) { transfer(state, kTile, int(state.range(0)), {}); }

@@ -5,6 +5,8 @@
 #include <tbb/task_arena.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/error.h"
@@ -52,6 +54,37 @@ nlohmann::json zion_weights(const nlohmann::json& weights, const std::string& pr
   const nlohmann::json schema = {
       {"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
   return validate_params(schema, weights, program);
+}
+
+nlohmann::json example_weights(const std::string& example) {
+  const std::filesystem::path source = MAQUETTE_SOURCE_DIR;
+  const std::filesystem::path path = source / "examples" / example;
+  std::ifstream in(path);
+  if (!in) throw Error(path.string() + ": cannot read it");
+  const nlohmann::json pipeline = nlohmann::json::parse(in);
+  const nlohmann::json names = synthesis_params_schema();
+  nlohmann::json weights = nlohmann::json::object();
+  for (const nlohmann::json& step : pipeline.at("steps")) {
+    if (step.at("op") != "synthesis.transfer") continue;
+    for (const auto& [key, value] : step.at("params").items())
+      if (names.contains(key) || key == "exemplars" || key == "harmonize") weights[key] = value;
+  }
+  if (weights.contains("exemplars"))
+    for (nlohmann::json& exemplar : weights["exemplars"]) {
+      exemplar.erase("painting_altitude");
+      for (const char* key : {"painting", "labels"})
+        if (exemplar.contains(key))
+          exemplar[key] = (source / exemplar.at(key).get<std::string>()).string();
+    }
+  return weights;
+}
+
+nlohmann::json painting_classes(const nlohmann::json& weights) {
+  nlohmann::json classes = nlohmann::json::object();
+  for (const char* key : {"labels", "exclude_classes", "exemplars"})
+    if (weights.contains(key)) classes[key] = weights.at(key);
+  if (weights.contains("exemplars")) classes["harmonize"] = weights.at("harmonize");
+  return classes;
 }
 
 std::shared_ptr<const TransferExemplar> zion_exemplar(const nlohmann::json& classes,

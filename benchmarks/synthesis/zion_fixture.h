@@ -35,6 +35,17 @@ nlohmann::json zion_params(const nlohmann::json& classes = zion_classes(),
 // name `program`.
 nlohmann::json zion_weights(const nlohmann::json& weights, const std::string& program);
 
+// The weights and choices of the synthesis.transfer step of `example` (a pipeline's file name in
+// examples/) for this fixture, to be validated by zion_weights(): its synthesis_params_schema()
+// fields, and its further paintings ("exemplars", "harmonize") with their relative paths read
+// from the source folder (as the examples are run) and without their altitude (the fixture has
+// no altitude guide). Bruegel's class table stays the fixture's.
+nlohmann::json example_weights(const std::string& example);
+
+// What of zion_weights()' `weights` describes the paintings, for zion_exemplar(): its "labels",
+// "exclude_classes", "exemplars" and "harmonize" (with "exemplars").
+nlohmann::json painting_classes(const nlohmann::json& weights);
+
 // The exemplar analysed with zion_params(classes, painting_classes) (transfer_exemplar: cached
 // per process).
 std::shared_ptr<const TransferExemplar> zion_exemplar(
