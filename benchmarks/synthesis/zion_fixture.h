@@ -2,10 +2,11 @@
 // Bruegel's painting, 8 colour classes, the sky's excluded, exemplar scale 2), or the painting
 // with another class image given (the hand-drawn examples/bruegel-harvesters-classes.geojson),
 // and a window of Zion's NLCD land cover at its own 30 m pixels as the target's labels (no
-// altitude guide: ebsynth is given the same labels and nothing else). Its class table (the
-// example's): forest and wetlands take the painting's near-black shade (class 1) with its dark
+// altitude guide: ebsynth is given the same labels and nothing else). Its class table: the
+// example's, but forest and wetlands take the painting's near-black shade (class 1) with its dark
 // olive foliage (6) as one class (session 20: the distinct-source bound 0.270 -> 0.376); another
-// table may be given. Shared by synthesis_benchmark and ebsynth_compare.
+// table may be given. Shared by synthesis_benchmark, ebsynth_compare and the synthesis module's
+// test of the goals (modules/synthesis/tests/window_goals_test.cpp).
 #pragma once
 
 #include <memory>
