@@ -422,9 +422,7 @@ int run(int side, int threads, int step, SynthesisParams params, const nlohmann:
     std::vector<int32_t> ours;
     const Timed ours_time =
         timed([&] { ours = synthesize_tiles(*t, out, 256, threads, params, classes); });
-    std::vector<float> ours_rgb(ours.size() * 3);
-    for (size_t p = 0; p < ours.size(); ++p)
-      for (size_t k = 0; k < 3; ++k) ours_rgb[3 * p + k] = e.rgb[3 * size_t(ours[p]) + k];
+    const std::vector<float> ours_rgb = source_colours(e, ours);
     std::printf("ours, seed %llu: CPU %.1f s (%.2f s/MP), wall %.1f s (%.2f s/MP)\n",
                 (unsigned long long)params.seed, ours_time.cpu, ours_time.cpu / mp, ours_time.wall,
                 ours_time.wall / mp);

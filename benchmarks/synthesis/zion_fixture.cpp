@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -144,6 +145,14 @@ std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect
     });
   });
   return result;
+}
+
+std::vector<float> source_colours(const Exemplar& e, const std::vector<int32_t>& source) {
+  std::vector<float> rgb(source.size() * 3);
+  for (size_t p = 0; p < source.size(); ++p)
+    std::copy_n(e.rgb.begin() + 3 * std::ptrdiff_t(source[p]), 3,
+                rgb.begin() + 3 * std::ptrdiff_t(p));
+  return rgb;
 }
 
 AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb,

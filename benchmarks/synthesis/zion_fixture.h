@@ -67,6 +67,10 @@ std::vector<int32_t> synthesize_tiles(const TransferExemplar& t, const PixelRect
                                       int threads, const SynthesisParams& params = {},
                                       const nlohmann::json& classes = zion_classes());
 
+// The colours (3 per pixel, 0..255) of exemplar `e`'s pixels `source`, in their order: what a
+// synthesis's output shows.
+std::vector<float> source_colours(const Exemplar& e, const std::vector<int32_t>& source);
+
 // `out`'s AssessedImage for exemplar pixels `source` and colours `rgb` (3 per pixel 0..255),
 // its labels through the class table `classes`.
 AssessedImage assessed(const PixelRect& out, std::vector<int32_t> source, std::vector<float> rgb,
