@@ -185,7 +185,7 @@ void BM_TurnedEdgeBand(benchmark::State& state) {
   if (state.range(0) && edges.size() != 1) state.SkipWithError("no turned edge beside the cell");
   for (auto _ : state)
     benchmark::DoNotOptimize(
-        join_turned_edges(t->pyramid, {}, g, halo, edges,
+        join_turned_edges(grid, plane, t->pyramid, {}, g, halo, edges,
                           synthesize(t->pyramid, g, {}, {first[0], first[1], kTile, kTile})));
   state.SetItemsProcessed(state.iterations() * kTile * kTile);
 }

@@ -38,6 +38,7 @@ FacePlane::FacePlane(const Grid& grid) {
   std::array<bool, kFaces> placed{};
   int f = start;
   for (; f >= 0 && !placed[size_t(f)]; f = face_at(f, {1, 0})) {
+    ring_[size_t(ring_faces_)] = f;
     places_[size_t(f)] = {ring_faces_++, 0};
     placed[size_t(f)] = true;
   }
@@ -67,6 +68,24 @@ std::array<int64_t, 2> FacePlane::tile_pixel(CellId cell, int size, int64_t col,
 
 int64_t FacePlane::wrap_columns(CellId cell, int size) const {
   return ring_faces_ * (int64_t(size) << cell.level());
+}
+
+std::optional<FaceCoord> FacePlane::chart_pixel(const Grid& grid, int face, int level, int64_t col,
+                                                int64_t row) const {
+  const int64_t n = int64_t(1) << level;
+  const bool col_in = col >= 0 && col < n, row_in = row >= 0 && row < n;
+  if (col_in && row_in) return FaceCoord{face, col, row};
+  const Offset& p = place(face);
+  const int64_t y = p[1] * n + row;  // the plane's row
+  // Beyond one edge, or a polar face's corner away from the row: the store's halo.
+  if (col_in || row_in || (p[1] != 0 && (y < 0 || y >= n)))
+    return grid.wrap({face, col, row}, level);
+  const int64_t ring = ring_faces_ * n;
+  const int64_t x = ((p[0] * n + col) % ring + ring) % ring;
+  const int f = ring_[size_t(x / n)];
+  const FaceCoord across{f, x % n, y};
+  if (y >= 0 && y < n) return across;
+  return grid.wrap(across, level);
 }
 
 }  // namespace maquette

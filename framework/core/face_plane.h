@@ -13,10 +13,19 @@
 // meets the equatorial face it is laid against. Not across the polar faces' other three edges each:
 // there the neighbour is turned by 90 or 180 degrees (and three faces meet at each cube corner),
 // which no single planar chart can lay unturned.
+//
+// A face's chart (chart_pixel): the face pixel a cell of that face reads at a pixel of its frame
+// continued beyond the face, as the store's halo reads it (Grid::wrap, core/halo.h) except in the
+// quadrant diagonally beyond a face corner, where three faces meet and the halo folds: there an
+// equatorial face, and a polar face toward the row, read the plane continued (the equatorial face
+// at that plane column, then across its edge beyond the row if the pixel lies beyond it), so that
+// the cells of two equatorial faces, and a polar face and the equatorial face it is laid against,
+// read the same pixel wherever their charts overlap, up to the cube corners.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/cell_id.h"
 #include "core/grid.h"
@@ -40,8 +49,14 @@ class FacePlane {
   // The period of the plane's columns at that pixel level: ring_faces() face widths.
   int64_t wrap_columns(CellId cell, int size) const;
 
+  // The face pixel `face`'s chart lays at pixel (col, row) of its frame at pixel level `level`
+  // (above); nullopt more than one face width beyond the face, as Grid::wrap.
+  std::optional<FaceCoord> chart_pixel(const Grid& grid, int face, int level, int64_t col,
+                                       int64_t row) const;
+
  private:
   std::array<std::array<int64_t, 2>, CellId::kNumFaces> places_{};
+  std::array<int, CellId::kNumFaces> ring_{};  // the row's faces by column
   int ring_faces_ = 0;
 };
 

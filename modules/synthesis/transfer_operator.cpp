@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "chart_guides.h"
 #include "core/error.h"
 #include "core/face_plane.h"
 #include "exemplar.h"
@@ -67,17 +68,24 @@ class Transfer : public CellOperator {
     const int halo = landcover.halo(), side = landcover.stride();
 
     // Global pixels of the faces' plane (core/face_plane.h): the halo's pixels from a neighbour
-    // face laid unturned are there that face's own (synthesis.h: where it is seamless).
+    // face laid unturned are there that face's own (synthesis.h: where it is seamless), and
+    // beyond a face corner the face's chart lays them (chart_guides.h), not the halo's fold.
     const FacePlane plane(*ctx.grid);
     TargetGuides guides;
     const auto corner = plane.tile_pixel(ctx.cell, ctx.tile_size, -halo, -halo);
     guides.rect = {corner[0], corner[1], side, side};
     guides.shift = ctx.refine;
+    const std::vector<int64_t> order = chart_order(*ctx.grid, plane, ctx.cell, ctx.tile_size, halo);
+    const auto laid = [&](const Tile<float>& t, int c, int r) {
+      if (order.empty()) return t.at(c - halo, r - halo);
+      const int64_t i = order[size_t(r) * size_t(side) + size_t(c)];
+      return t.at(int(i % side) - halo, int(i / side) - halo);
+    };
     guides.labels.resize(size_t(side) * size_t(side));
     for (int r = 0; r < side; ++r)
       for (int c = 0; c < side; ++c)
         guides.labels[size_t(r) * size_t(side) + size_t(c)] =
-            painting_class(table, landcover.at(c - halo, r - halo));
+            painting_class(table, laid(landcover, c, r));
     const auto range = altitude_range(params, spec_.name, data.inputs.count("dem") > 0);
     if (range) {
       const Tile<float>& dem = input_with_halo(spec_.name, ctx, data, "dem", spec_.halo);
@@ -85,7 +93,7 @@ class Transfer : public CellOperator {
       for (int r = 0; r < side; ++r)
         for (int c = 0; c < side; ++c)
           guides.altitude[size_t(r) * size_t(side) + size_t(c)] =
-              altitude_guide(dem.at(c - halo, r - halo), *range);
+              altitude_guide(laid(dem, c, r), *range);
     }
 
     const SynthesisParams sp = synthesis_params(params);
@@ -105,7 +113,7 @@ class Transfer : public CellOperator {
     // (its cut reads the band's every pixel: there the whole window is computed).
     const auto edges = turned_edges(*ctx.grid, plane, ctx.cell, ctx.tile_size, ctx.refine);
     const std::vector<int32_t> src =
-        any_land ? join_turned_edges(exemplar->pyramid, sp, guides, halo, edges,
+        any_land ? join_turned_edges(*ctx.grid, plane, exemplar->pyramid, sp, guides, halo, edges,
                                      synthesize(exemplar->pyramid, guides, sp, out,
                                                 edges.empty() ? land : std::vector<uint8_t>{}))
                  : std::vector<int32_t>{};

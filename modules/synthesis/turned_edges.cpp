@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "chart_guides.h"
 #include "core/error.h"
 #include "core/tile.h"
 #include "core/unfolded_faces.h"
@@ -17,8 +18,10 @@ namespace {
 using Pixel = std::array<int64_t, 2>;
 
 // B: the band of `e` over the cell (positions s0 .. s0 + n - 1, depths 0 .. kTurnedEdgeBand - 1)
-// synthesized in G's chart, indexed [t * n + s - s0].
-std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
+// synthesized in G's chart, indexed [t * n + s - s0]. The chart's guides are found among the
+// cell's (laid in the cell's own chart, chart_guides.h) by the face pixel G's chart lays.
+std::vector<int32_t> chart_band(const Grid& grid, const FacePlane& plane,
+                                const ExemplarPyramid& pyramid, const SynthesisParams& sp,
                                 const TargetGuides& guides, int halo, const TurnedEdge& e,
                                 int64_t s0, int n) {
   constexpr int64_t kBand = kTurnedEdgeBand;
@@ -28,22 +31,27 @@ std::vector<int32_t> chart_band(const ExemplarPyramid& pyramid, const SynthesisP
                          std::abs(a[1] - b[1]) + 1};
   const int shift = guides.shift;
   const int side = int(guides.rect.width), tile = side - 2 * halo;
+  const int level = e.cell.level() + log2_tile_size(tile);
+  const HaloPixels held(e.cell, tile, halo, [&](int c, int r) {
+    return plane.chart_pixel(grid, e.cell.face(), level, int64_t(e.cell.col()) * tile + c,
+                             int64_t(e.cell.row()) * tile + r);
+  });
   TargetGuides chart;
   chart.shift = shift;
   chart.col_period = guides.col_period;
   chart.rect = guide_rect(window, shift);
   const bool altitude = !guides.altitude.empty();
-  const Pixel plane = {e.plane[0] >> shift, e.plane[1] >> shift};
+  const Pixel origin = {e.plane[0] >> shift, e.plane[1] >> shift};  // G's first guide pixel
   for (int64_t y = chart.rect.row0; y < chart.rect.row0 + chart.rect.height; ++y)
     for (int64_t x = chart.rect.col0; x < chart.rect.col0 + chart.rect.width; ++x) {
-      const Pixel p = e.guide_place.tile_pixel({x - plane[0], y - plane[1]});
-      if (p[0] < -halo || p[0] >= tile + halo || p[1] < -halo || p[1] >= tile + halo)
+      const auto p = plane.chart_pixel(grid, e.face, level, x - origin[0], y - origin[1]);
+      const int64_t i = p ? held.find(*p) : -1;
+      if (i < 0)
         throw Error("synthesis.transfer: " + e.cell.ToText() + "'s band along face " +
                     std::to_string(e.face) + " needs guides beyond its halo of " +
                     std::to_string(halo));
-      const size_t i = size_t(p[1] + halo) * size_t(side) + size_t(p[0] + halo);
-      chart.labels.push_back(guides.labels[i]);
-      if (altitude) chart.altitude.push_back(guides.altitude[i]);
+      chart.labels.push_back(guides.labels[size_t(i)]);
+      if (altitude) chart.altitude.push_back(guides.altitude[size_t(i)]);
     }
   const std::vector<int32_t> src = synthesize(pyramid, chart, sp, window);
   std::vector<int32_t> band(size_t(n) * size_t(kBand));
@@ -71,6 +79,11 @@ int64_t TurnedEdge::depth(const Pixel& q) const {
 }
 
 int64_t TurnedEdge::along(const Pixel& q) const { return side % 2 == 0 ? q[0] : q[1]; }
+
+int64_t TurnedEdge::unturned_depth(int64_t row) const {
+  const int64_t face_row = int64_t(cell.row()) * (face_pixels >> cell.level()) + row;
+  return polar_row < 0 ? face_pixels - 1 - face_row : face_row;
+}
 
 Pixel TurnedEdge::at(int64_t s, int64_t t) const {
   switch (side) {
@@ -101,15 +114,14 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
     const bool laid_against = there[0] == here[0] && std::abs(there[1] - here[1]) == 1;
     if (there[1] != 0 || laid_against || !UnfoldedFaces::adjacent(grid, face, g)) continue;
     const auto out = UnfoldedFaces(grid, g, guide_level + refine).place_tile(cell, n);
-    const auto in = UnfoldedFaces(grid, g, guide_level).place_tile(cell, tile_size);
-    if (!out || !in) throw Error("synthesis.transfer: face " + std::to_string(g) + " has no place");
+    if (!out) throw Error("synthesis.transfer: face " + std::to_string(g) + " has no place");
     TurnedEdge e;
     e.cell = cell;
     e.face = g;
     e.face_pixels = int64_t(n) << cell.level();
     e.place = *out;
-    e.guide_place = *in;
     e.plane = {there[0] * e.face_pixels, there[1] * e.face_pixels};
+    e.polar_row = int(here[1]);
     const Pixel centre = e.place.at(n / 2, n / 2);
     e.side = centre[1] < 0                ? 0
              : centre[0] >= e.face_pixels ? 1
@@ -123,7 +135,8 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
   return edges;
 }
 
-std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
+std::vector<int32_t> join_turned_edges(const Grid& grid, const FacePlane& plane,
+                                       const ExemplarPyramid& pyramid, const SynthesisParams& sp,
                                        const TargetGuides& guides, int halo,
                                        const std::vector<TurnedEdge>& edges,
                                        std::vector<int32_t> own) {
@@ -141,13 +154,16 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
     }
     return d;
   };
-  // A pixel joins the band of its nearest turned edge (ties: the lower face).
+  // A pixel joins the band of its nearest turned edge (ties: the lower face), unless the edge
+  // with the face the polar face is laid against is as near (turned_edges.h).
   const auto owner = [&](int64_t c, int64_t r) {
     size_t best = 0;
     for (size_t k = 1; k < edges.size(); ++k)
       if (edges[k].depth(edges[k].place.at(c, r)) < edges[best].depth(edges[best].place.at(c, r)))
         best = k;
-    return best;
+    return edges[best].depth(edges[best].place.at(c, r)) < edges[best].unturned_depth(r)
+               ? best
+               : edges.size();
   };
   std::vector<int32_t> out = own;
   for (size_t k = 0; k < edges.size(); ++k) {
@@ -155,7 +171,7 @@ std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const Syn
     int64_t s0 = e.along(e.place.first);
     for (const int64_t c : {0, n - 1})
       for (const int64_t r : {0, n - 1}) s0 = std::min(s0, e.along(e.place.at(c, r)));
-    const std::vector<int32_t> band = chart_band(pyramid, sp, guides, halo, e, s0, n);
+    const std::vector<int32_t> band = chart_band(grid, plane, pyramid, sp, guides, halo, e, s0, n);
     std::vector<float> error(band.size());
     std::vector<size_t> at(band.size());  // each band pixel's index in the output
     for (int64_t t = 0; t < kTurnedEdgeBand; ++t)

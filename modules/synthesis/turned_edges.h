@@ -12,12 +12,14 @@
 // between E and a minimum-error cut (seam_cut.h, pinned at depth kTurnedEdgeBand / 2 every
 // kTurnedEdgePin pixels along E, so a function of global positions), A beyond it. A pixel
 // within the band of two turned edges (a corner of the polar face) belongs to the nearer one
-// (ties: the lower face number): there the two B meet along the diagonal.
+// (ties: the lower face number), and a pixel nearer the polar face's unturned edge than to the
+// turned one (ties too) keeps A: at each cube corner the charts meet along the diagonal from the
+// corner, and every face edge is seamless up to it.
 //
 // Every output pixel stays a copy of an exemplar pixel, and a function of global pixel
-// coordinates and the guides: the same bits for any tiling, window, thread or rank. Not G's
-// actual chart within synthesis_halo() of a cube corner: there the turned window holds the
-// halo's folded corner quadrant (core/halo.h), deterministic but not what G's cells see.
+// coordinates and the guides: the same bits for any tiling, window, thread or rank. B's guides
+// are G's chart (FacePlane::chart_pixel) found among the cell's own by the face pixel they hold
+// (chart_guides.h), up to the cube corners: there too the pixels G's cells read.
 #pragma once
 
 #include <array>
@@ -42,16 +44,19 @@ struct TurnedEdge {
   int face = -1;  // G
   int side = 0;
   int64_t face_pixels = 0;  // G's pixels a side at the output's level
-  // Where the cell lies in G's frame (UnfoldedFaces anchored on G), at the output's level and at
-  // the guides' (the tile's, no refine).
-  UnfoldedFaces::TilePlace place{}, guide_place{};
+  // Where the cell lies in G's frame (UnfoldedFaces anchored on G), at the output's level.
+  UnfoldedFaces::TilePlace place{};
   std::array<int64_t, 2> plane{};  // G's first pixel in the plane, at the output's level
+  int polar_row = 0;  // the polar face's row in the plane: -1 above the equatorial row, 1 below
 
   // A G-frame pixel beyond the side: its depth (0 beside the edge) and position along the edge.
   int64_t depth(const std::array<int64_t, 2>& q) const;
   int64_t along(const std::array<int64_t, 2>& q) const;
   // The G-frame pixel at depth t and position s.
   std::array<int64_t, 2> at(int64_t s, int64_t t) const;
+  // The depth of the cell's pixel row `row` (output level) from the polar face's edge with the
+  // equatorial face it is laid against unturned.
+  int64_t unturned_depth(int64_t row) const;
 };
 
 // The turned edges of `cell`'s face that the cell's output (tiles of tile_size << refine) lies
@@ -65,11 +70,12 @@ std::vector<TurnedEdge> turned_edges(const Grid& grid, const FacePlane& plane, C
 
 // The cell's sources (`own`, synthesize()'s for its output tile, row-major) with each turned
 // edge's band joined as above. `guides` are the cell's own: its tile with a halo of `halo`
-// guide pixels, in the plane (as synthesis.transfer lays them): labels and altitude, which the
-// band lays turned into G's chart. Throws maquette::Error, naming the cell, if a band's guides
-// reach beyond that halo, or if `guides` hold distance, depth or light (the band does not lay
-// them).
-std::vector<int32_t> join_turned_edges(const ExemplarPyramid& pyramid, const SynthesisParams& sp,
+// guide pixels laid in its face's chart (chart_guides.h, as synthesis.transfer lays them), in
+// the plane: labels and altitude, which the band lays turned into G's chart. Throws
+// maquette::Error, naming the cell, if a band's guides reach beyond that halo, or if `guides` hold
+// distance, depth or light (the band does not lay them).
+std::vector<int32_t> join_turned_edges(const Grid& grid, const FacePlane& plane,
+                                       const ExemplarPyramid& pyramid, const SynthesisParams& sp,
                                        const TargetGuides& guides, int halo,
                                        const std::vector<TurnedEdge>& edges,
                                        std::vector<int32_t> own);

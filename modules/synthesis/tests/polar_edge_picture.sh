@@ -6,19 +6,24 @@
 # straight row). Top: painted from The Harvesters (the Zion example's classes, no altitude);
 # bottom: from vertical stripes (one class everywhere, exemplar scale 1), which show each face's
 # chart by their direction. Left a build before the change, right one after, the same crop.
+# With `corner` (docs/synthesis-polar-corner.jpg): at longitude -90.2 .. -89.8 instead, the cube
+# corner where N, O (west of -90) and P (east) meet in the crop's middle.
 #
 #   bash modules/synthesis/tests/polar_edge_picture.sh BUILD_AFTER SHARED_DATA_DIR OUT.jpg \
-#     BUILD_BEFORE
-if [[ $# -ne 4 ]]; then
-  echo "usage: $0 BUILD_AFTER SHARED_DATA_DIR OUT.jpg BUILD_BEFORE" >&2
+#     BUILD_BEFORE [corner]
+if [[ $# -ne 4 && ($# -ne 5 || $5 != corner) ]]; then
+  echo "usage: $0 BUILD_AFTER SHARED_DATA_DIR OUT.jpg BUILD_BEFORE [corner]" >&2
   exit 2
 fi
 # shellcheck source=tests/bridge/picture.sh
 source "$(dirname "$0")/../../../tests/bridge/picture.sh"
 before=$(cd "$4" && pwd)
 
-bbox="-60.2 41.75 -59.8 42.13"
-gdal_translate -q -a_srs EPSG:4326 -a_ullr -60.2 42.13 -59.8 41.75 "$data/zion/nlcd.tif" \
+# The crop: its width (its first column that much left of the middle with `corner`) and zoom.
+west=-60.2 east=-59.8 crop=300 zoom=3 from=0
+if [[ $# -eq 5 ]]; then west=-90.2 east=-89.8 crop=120 zoom=5 from=-60; fi
+bbox="$west 41.75 $east 42.13"
+gdal_translate -q -a_srs EPSG:4326 -a_ullr "$west" 42.13 "$east" 41.75 "$data/zion/nlcd.tif" \
   "$work/landcover.tif"
 # 192 x 144 pixels: brown and ochre stripes 12 pixels apart, with noise.
 python3 - "$work/stripes.ppm" <<'PY'
@@ -67,14 +72,17 @@ paint stripes "$stripes"
 
 size=$(gdalinfo "$work/stripes_after.tif" | sed -n 's/^Size is \([0-9]*\), \([0-9]*\)/\1 \2/p')
 read -r width height <<<"$size"
-# 300 x 100 pixels at 3x, the edge (the picture's middle row) 49 rows down; the two rows stacked
-# 12 white pixels apart.
+# CROP x 100 pixels at ZOOM, the edge (the picture's middle row) 49 rows down; the two rows
+# stacked 12 white pixels apart.
 for name in harvesters stripes; do
-  side_by_side "$work/row_$name.png" $((width / 2)) $((height / 2 - 49)) 300 100 3 12 \
-    "$work/${name}_before.tif" "$work/${name}_after.tif"
+  side_by_side "$work/row_$name.png" $((width / 2 + from)) $((height / 2 - 49)) "$crop" 100 \
+    "$zoom" 12 "$work/${name}_before.tif" "$work/${name}_after.tif"
 done
-gdal_translate -q -a_ullr 0 0 1812 -300 "$work/row_harvesters.png" "$work/top.tif"
-gdal_translate -q -a_ullr 0 -312 1812 -612 "$work/row_stripes.png" "$work/bottom.tif"
+row_width=$((2 * crop * zoom + 12)) row_height=$((100 * zoom))
+gdal_translate -q -a_ullr 0 0 "$row_width" "-$row_height" "$work/row_harvesters.png" \
+  "$work/top.tif"
+gdal_translate -q -a_ullr 0 $((-row_height - 12)) "$row_width" $((-2 * row_height - 12)) \
+  "$work/row_stripes.png" "$work/bottom.tif"
 gdalbuildvrt -q -vrtnodata 255 "$work/rows.vrt" "$work/top.tif" "$work/bottom.tif"
 gdal_translate -q --config GDAL_PAM_ENABLED NO -of JPEG -co QUALITY=90 -a_nodata none \
   "$work/rows.vrt" "$out"

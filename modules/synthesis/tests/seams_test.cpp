@@ -70,6 +70,35 @@ TEST(FacePlaneSeams, TheStoresHaloLaysANeighbourWhereThePlaneDoes) {
   EXPECT_NE(read, laid);
 }
 
+TEST(FacePlaneSeams, AFacesChartIsTheStoresHaloButBeyondTheCubeCornersTowardTheRow) {
+  const Grid& grid = default_grid();
+  const FacePlane plane(grid);
+  const int level = kPixelLevel;
+  const int64_t n = kFace;
+  const auto chart = [&](int face, int64_t col, int64_t row) {
+    const FaceCoord p = *plane.chart_pixel(grid, face, level, col, row);
+    return std::array<int64_t, 3>{p.face, p.col, p.row};
+  };
+  const auto wrap = [&](int face, int64_t col, int64_t row) {
+    const FaceCoord p = *grid.wrap({face, col, row}, level);
+    return std::array<int64_t, 3>{p.face, p.col, p.row};
+  };
+  // Within a face and beyond one edge: the face's pixel and the store's halo's.
+  EXPECT_EQ(chart(kFaceP, 5, 7), (std::array<int64_t, 3>{kFaceP, 5, 7}));
+  EXPECT_EQ(chart(kFaceP, 5, -7), wrap(kFaceP, 5, -7));
+  EXPECT_EQ(chart(kFaceN, n + 5, 9), wrap(kFaceN, n + 5, 9));
+  // Beyond P's corner with N and O: above O's last column, where the plane lays N unturned (the
+  // store's halo folds it elsewhere).
+  EXPECT_EQ(chart(kFaceP, -3, -5), (std::array<int64_t, 3>{kFaceN, n - 3, n - 5}));
+  EXPECT_NE(chart(kFaceP, -3, -5), wrap(kFaceP, -3, -5));
+  // Beyond N's corner with O and P: P's own pixel, where the plane lays P beside O.
+  EXPECT_EQ(chart(kFaceN, n + 2, n + 4), (std::array<int64_t, 3>{kFaceP, 2, 4}));
+  // Beyond Q's corner with P and S: below P's last column, S as P's halo reads it.
+  EXPECT_EQ(chart(kFaceQ, -2, n + 6), wrap(kFaceP, n - 2, n + 6));
+  // Beyond N's corner with P and Q, away from the row: the store's halo.
+  EXPECT_EQ(chart(kFaceN, n + 2, -3), wrap(kFaceN, n + 2, -3));
+}
+
 TEST_F(Seams, CellsOnBothSidesOfAnEquatorialEdgeEqualOneSynthesisAcrossIt) {
   // A window of 192 x 64 across the edge between O and P, not aligned with the cells.
   const PixelRect window{kFace - 96, int64_t(kRow) * kSize + 40, 192, 64};

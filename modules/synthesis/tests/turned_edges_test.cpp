@@ -7,13 +7,18 @@
 // is the minimum-error one of those two syntheses, computed here. At an output finer than the
 // land cover (refine 1) too, P's chart continues into N's band. A cell of another tiling gives
 // the same bits. Across each of the six turned edges (N and S with P, Q, R) the sources continue
-// as coherently as within a face.
+// as coherently as within a face. Up to the cube corners, two equatorial cells meet as one
+// synthesis and the bands continue the equatorial face's chart: the plane continued (the ring's
+// face at each column, then across its edge beyond the row, laid here with Grid::wrap), where the
+// store's halo folds.
 #include "../turned_edges.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdlib>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../seam_cut.h"
@@ -28,6 +33,7 @@ using namespace seams;
 
 class TurnedEdges : public Seams {
  public:
+  using Seams::Lay;
   using Seams::plane_pixel;
   using Seams::transfer;
   using Seams::whole;
@@ -49,6 +55,14 @@ FaceCoord p_chart(int64_t x, int64_t r) {
 FaceCoord n_chart(int64_t x, int64_t r) {
   if (r < 0 && x >= kFace && x < 2 * kFace) return {kFaceP, -1 - r, x - kFace};
   return TurnedEdges::plane_pixel(x, r);
+}
+
+// The equatorial faces' chart: the plane's row, and beyond it the ring's face at that column
+// continued across its top or bottom edge as the grid's adjacency lays it (where the store's halo
+// folds the quadrant diagonally beyond a cube corner).
+FaceCoord ring_chart(int64_t x, int64_t r) {
+  if (r >= 0 && r < kFace) return TurnedEdges::plane_pixel(x, r);
+  return *default_grid().wrap({kFaceO + int(x / kFace), x % kFace, r}, kPixelLevel);
 }
 
 TEST(TurnedEdgeCharts, TheChartsLaidByHandAreTheStoresHalo) {
@@ -143,7 +157,8 @@ size_t differs_from_the_coarser_tiling(uint32_t row, int refine) {
 TEST_F(TurnedEdges, ACellOfAnotherTilingGivesTheSameBits) {
   // N's cell one level coarser (tiles of 512) holds the level-5 cell as a quarter: beside P's
   // edge, at the corner where N meets P and Q (two bands, a folded halo quadrant), and at the
-  // corner where N meets O and P (P's band runs into N's unturned edge with O).
+  // corner where N meets O and P (P's band meets A along the diagonal, the quadrant laid in N's
+  // chart).
   for (const uint32_t row : {kRow, 0u, kLast})
     EXPECT_EQ(differs_from_the_coarser_tiling(row, 0), 0u) << "row " << row;
 }
@@ -192,21 +207,25 @@ TEST_F(TurnedEdges, TheSourcesContinueAcrossEachTurnedEdgeAsWithinAFace) {
 
 // The band of the polar cell across the edge row of the equatorial cell `cell` (row 0 for N above
 // it, the last for S below) against one synthesis of the 256 x 64 window across that edge in
-// `cell`'s chart, laid from the store's halo of `cell` (pixel_source: not UnfoldedFaces nor
-// turned_edges.h). The band is that synthesis beside the edge, and to a depth of at least
-// kBand / 2 at each pin (where the cut lies at kBand / 2), whatever the side and the turn.
-void expect_band_continues_the_halos_chart(CellId cell, bool top) {
+// `cell`'s chart, laid by `chart` (by default from the store's halo of `cell`, pixel_source: not
+// UnfoldedFaces nor turned_edges.h). The band is that synthesis beside the edge, and to a depth
+// of at least kBand / 2 at each pin (where the cut lies at kBand / 2), whatever the side and the
+// turn; but at column `corner` (the cube corner where the polar face meets the face it is laid
+// against), whose pixels are nearer that edge, and at the pins within kBand of it.
+void expect_band_continues_the_chart(CellId cell, bool top, const TurnedEdges::Lay& chart = {},
+                                     int corner = -1) {
   const Grid& grid = default_grid();
   const int edge = top ? 0 : kSize - 1, step = top ? -1 : 1;
   const auto first = FacePlane(grid).tile_pixel(cell, kSize, 0, 0);
   const PixelRect across{first[0], first[1] + (top ? -kBand : kSize - kBand), kSize, 2 * kBand};
-  const auto b = TurnedEdges::whole(across, [&](int64_t x, int64_t r) {
-    return *pixel_source(grid, cell, kSize, int(x - first[0]), int(r - first[1]));
-  });
-  const FaceCoord corner = *pixel_source(grid, cell, kSize, 0, edge + step);
+  const auto b = TurnedEdges::whole(
+      across, chart ? chart : [&](int64_t x, int64_t r) {
+        return *pixel_source(grid, cell, kSize, int(x - first[0]), int(r - first[1]));
+      });
+  const FaceCoord polar_pixel = *pixel_source(grid, cell, kSize, 0, edge + step);
   const Tile<float> polar = TurnedEdges::transfer(
-      CellId::FromFaceColRow(corner.face, kLevel, uint32_t(corner.col / kSize),
-                             uint32_t(corner.row / kSize)),
+      CellId::FromFaceColRow(polar_pixel.face, kLevel, uint32_t(polar_pixel.col / kSize),
+                             uint32_t(polar_pixel.row / kSize)),
       kSize);
   size_t beside = 0, short_pins = 0;
   for (int c = 0; c < kSize; ++c) {
@@ -217,8 +236,8 @@ void expect_band_continues_the_halos_chart(CellId cell, bool top) {
       const int qc = int(q.col % kSize), qr = int(q.row % kSize);
       matching += polar.at(qc, qr, 0) == float(e[0]) && polar.at(qc, qr, 1) == float(e[1]);
     }
-    beside += matching == 0;
-    short_pins += c % kPin == 0 && matching < kBand / 2;
+    beside += c != corner && matching == 0;
+    short_pins += c % kPin == 0 && std::abs(c - corner) >= kBand && matching < kBand / 2;
   }
   EXPECT_EQ(beside, 0u) << cell.ToText();
   EXPECT_EQ(short_pins, 0u) << cell.ToText();
@@ -226,11 +245,41 @@ void expect_band_continues_the_halos_chart(CellId cell, bool top) {
 
 TEST_F(TurnedEdges, SsBandsContinueTheChartsOfPQAndRFromTheStoresHalo) {
   for (const int face : {kFaceP, kFaceQ, kFaceR})
-    expect_band_continues_the_halos_chart(CellId::FromFaceColRow(face, kLevel, kRow, kLast), false);
+    expect_band_continues_the_chart(CellId::FromFaceColRow(face, kLevel, kRow, kLast), false);
 }
 
 TEST_F(TurnedEdges, AcrossTheHalfTurnNsBandContinuesQsChartFromTheStoresHalo) {
-  expect_band_continues_the_halos_chart(CellId::FromFaceColRow(kFaceQ, kLevel, kRow, 0), true);
+  expect_band_continues_the_chart(CellId::FromFaceColRow(kFaceQ, kLevel, kRow, 0), true);
+}
+
+TEST_F(TurnedEdges, UpToTheCubeCornersTheBandsContinueTheEquatorialFacesChart) {
+  // P's first cell under N (the corner N, O, P: N's edge with O laid unturned), its last (N, P,
+  // Q: two turned edges) and R's last cell over S (S, R, O). The store's halo folds the quadrant
+  // beyond each corner; the band lays the plane continued there, as the equatorial cells do.
+  expect_band_continues_the_chart(CellId::FromFaceColRow(kFaceP, kLevel, 0, 0), true, ring_chart,
+                                  0);
+  expect_band_continues_the_chart(CellId::FromFaceColRow(kFaceP, kLevel, kLast, 0), true,
+                                  ring_chart);
+  expect_band_continues_the_chart(CellId::FromFaceColRow(kFaceR, kLevel, kLast, kLast), false,
+                                  ring_chart, kSize - 1);
+}
+
+TEST_F(TurnedEdges, UpToTheCubeCornersTwoEquatorialCellsMeetAsOneSynthesis) {
+  // O's last cell and P's first under N (the corner N, O, P), P's last and Q's first under N
+  // (N, P, Q), Q's last and R's first over S (S, Q, R): the quadrant beyond each corner in each
+  // cell's halo is the plane continued, so both read the same guides there.
+  for (const auto& [left, right, row] :
+       {std::tuple{kFaceO, kFaceP, 0u}, std::tuple{kFaceP, kFaceQ, 0u},
+        std::tuple{kFaceQ, kFaceR, kLast}}) {
+    const int64_t edge = int64_t(right - kFaceO) * kFace;
+    const PixelRect window{edge - 64, int64_t(row) * kSize, 128, kSize};
+    const auto expected = whole(window, ring_chart);
+    size_t compared = 0;
+    for (const CellId cell : {CellId::FromFaceColRow(left, kLevel, kLast, row),
+                              CellId::FromFaceColRow(right, kLevel, 0, row)})
+      EXPECT_EQ(differing(window, expected, cell, compared), 0u) << cell.ToText();
+    EXPECT_EQ(compared, size_t(window.width * window.height));
+  }
 }
 
 TEST_F(TurnedEdges, AtAFinerOutputThanTheLandCoverTooPsChartContinuesIntoNsBand) {
@@ -275,8 +324,8 @@ std::string join_error(int halo, bool distance) {
   guides.labels.assign(size_t(side) * size_t(side), 0);
   if (distance) guides.distance.assign(guides.labels.size(), 1.0f);
   try {
-    join_turned_edges(TurnedEdges::exemplar()->pyramid, TurnedEdges::sp(), guides, halo, edges,
-                      std::vector<int32_t>(size_t(kSize) * kSize));
+    join_turned_edges(grid, FacePlane(grid), TurnedEdges::exemplar()->pyramid, TurnedEdges::sp(),
+                      guides, halo, edges, std::vector<int32_t>(size_t(kSize) * kSize));
   } catch (const Error& e) {
     return e.what();
   }
