@@ -38,7 +38,7 @@ FacePlane::FacePlane(const Grid& grid) {
   std::array<bool, kFaces> placed{};
   int f = start;
   for (; f >= 0 && !placed[size_t(f)]; f = face_at(f, {1, 0})) {
-    ring_[size_t(ring_faces_)] = f;
+    ring_order_[size_t(ring_faces_)] = f;
     places_[size_t(f)] = {ring_faces_++, 0};
     placed[size_t(f)] = true;
   }
@@ -75,6 +75,7 @@ std::optional<FaceCoord> FacePlane::chart_pixel(const Grid& grid, int face, int 
   const int64_t n = int64_t(1) << level;
   const bool col_in = col >= 0 && col < n, row_in = row >= 0 && row < n;
   if (col_in && row_in) return FaceCoord{face, col, row};
+  if (col < -n || col >= 2 * n || row < -n || row >= 2 * n) return std::nullopt;
   const Offset& p = place(face);
   const int64_t y = p[1] * n + row;  // the plane's row
   // Beyond one edge, or a polar face's corner away from the row: the store's halo.
@@ -82,7 +83,7 @@ std::optional<FaceCoord> FacePlane::chart_pixel(const Grid& grid, int face, int 
     return grid.wrap({face, col, row}, level);
   const int64_t ring = ring_faces_ * n;
   const int64_t x = ((p[0] * n + col) % ring + ring) % ring;
-  const int f = ring_[size_t(x / n)];
+  const int f = ring_order_[size_t(x / n)];
   const FaceCoord across{f, x % n, y};
   if (y >= 0 && y < n) return across;
   return grid.wrap(across, level);

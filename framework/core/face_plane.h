@@ -18,9 +18,11 @@
 // continued beyond the face, as the store's halo reads it (Grid::wrap, core/halo.h) except in the
 // quadrant diagonally beyond a face corner, where three faces meet and the halo folds: there an
 // equatorial face, and a polar face toward the row, read the plane continued (the equatorial face
-// at that plane column, then across its edge beyond the row if the pixel lies beyond it), so that
-// the cells of two equatorial faces, and a polar face and the equatorial face it is laid against,
-// read the same pixel wherever their charts overlap, up to the cube corners.
+// at that plane column, then across its edge beyond the row if the pixel lies beyond it). So the
+// cells of the equatorial faces read one pixel at each plane position their charts share, up to
+// the cube corners, and so do a polar face and the equatorial face it is laid against, but beyond
+// the polar face's turned edges: there the polar face's chart lays the neighbour as the polar
+// face meets it, the equatorial faces' the polar face as they meet it.
 #pragma once
 
 #include <array>
@@ -50,13 +52,14 @@ class FacePlane {
   int64_t wrap_columns(CellId cell, int size) const;
 
   // The face pixel `face`'s chart lays at pixel (col, row) of its frame at pixel level `level`
-  // (above); nullopt more than one face width beyond the face, as Grid::wrap.
+  // (above); nullopt more than one face width beyond the face, as Grid::wrap. Preconditions:
+  // 0 <= face < CellId::kNumFaces, 0 <= level <= 60.
   std::optional<FaceCoord> chart_pixel(const Grid& grid, int face, int level, int64_t col,
                                        int64_t row) const;
 
  private:
   std::array<std::array<int64_t, 2>, CellId::kNumFaces> places_{};
-  std::array<int, CellId::kNumFaces> ring_{};  // the row's faces by column
+  std::array<int, CellId::kNumFaces> ring_order_{};  // the row's faces by column
   int ring_faces_ = 0;
 };
 

@@ -1,36 +1,44 @@
 #include "chart_guides.h"
 
+#include <cassert>
 #include <string>
 
 #include "core/error.h"
 #include "core/halo.h"
+#include "core/splitmix64.h"
 #include "core/tile.h"
 
 namespace maquette::synthesis {
-namespace {
 
-uint64_t key(const FaceCoord& p) {
-  return uint64_t(p.face) << 60 | uint64_t(p.col) << 30 | uint64_t(p.row);
+size_t HaloPixels::Hash::operator()(const FaceCoord& p) const {
+  return size_t(
+      splitmix64_mix(uint64_t(p.col) ^ splitmix64_mix(uint64_t(p.row) ^ uint64_t(p.face) << 61)));
 }
 
-}  // namespace
+bool HaloPixels::Equal::operator()(const FaceCoord& a, const FaceCoord& b) const {
+  return a.face == b.face && a.col == b.col && a.row == b.row;
+}
 
 HaloPixels::HaloPixels(CellId cell, int size, int halo, const Holds& holds)
     : cell_(cell), size_(size), halo_(halo) {
-  if (cell.level() + log2_tile_size(size) > 30)
-    throw Error("synthesis: pixel level beyond 30 for " + cell.ToText());
   const int side = size + 2 * halo;
   for (int r = -halo; r < size + halo; ++r)
     for (int c = -halo; c < size + halo; ++c) {
+      if (c >= 0 && c < size && r >= 0 && r < size) continue;  // the tile: its own pixels
       const std::optional<FaceCoord> p = holds(c, r);
-      if (p && p->face != cell.face())
-        other_faces_.emplace(key(*p), int64_t(r + halo) * side + c + halo);
+      if (!p) continue;
+      const int64_t i = int64_t(r + halo) * side + c + halo;
+      if (p->face != cell.face())
+        other_faces_.emplace(*p, i);
+      else
+        assert(find(*p) == i);  // an own-face pixel at its own place (the precondition)
     }
 }
 
 int64_t HaloPixels::find(const FaceCoord& pixel) const {
+  assert(pixel.col >= 0 && pixel.row >= 0);  // wrapped
   if (pixel.face != cell_.face()) {
-    const auto it = other_faces_.find(key(pixel));
+    const auto it = other_faces_.find(pixel);
     return it == other_faces_.end() ? -1 : it->second;
   }
   const int64_t c = pixel.col - int64_t(cell_.col()) * size_,

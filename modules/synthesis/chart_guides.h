@@ -4,9 +4,11 @@
 // band along a polar face's turned edge (turned_edges.h) lays the equatorial face's chart from
 // the polar cell's guides so.
 //
-// Contract: the tile with its halo is side = size + 2 * halo pixels a side, row-major, its pixel
-// (col, row) (from -halo) at index (row + halo) * side + col + halo, at pixel level
-// cell.level() + log2(size) (<= 30). Pixels nobody holds (beyond one face width) are not found.
+// Contract: the tile with its halo is side = size + 2 * halo pixels a side (size a power of two,
+// 0 <= halo <= size), row-major, its pixel (col, row) (from -halo) at index
+// (row + halo) * side + col + halo, at pixel level L = cell.level() + log2(size). Face pixels
+// are wrapped ones (0 <= col, row < 2^L). Pixels nobody holds (beyond one face width) are not
+// found.
 #pragma once
 
 #include <cstdint>
@@ -21,26 +23,37 @@
 
 namespace maquette::synthesis {
 
-// Where each face pixel lies among the pixels of `cell`'s tile with its halo, each pixel holding
-// the face pixel `holds(col, row)` names.
+// Where each face pixel lies among the pixels of `cell`'s tile with its halo, each halo pixel
+// holding the face pixel `holds(col, row)` names (the tile's own pixels hold themselves).
+// Precondition: `holds` names a pixel of the cell's own face only at its own place (as the
+// store's halo and the face's chart do: beyond a face they reach only the neighbouring faces).
 class HaloPixels {
  public:
   using Holds = std::function<std::optional<FaceCoord>(int col, int row)>;
   HaloPixels(CellId cell, int size, int halo, const Holds& holds);
 
-  // The index of a pixel holding `pixel`, or -1 when none does.
+  // The index of a pixel holding `pixel` (a wrapped face pixel at the tile's pixel level), or -1
+  // when none does.
   int64_t find(const FaceCoord& pixel) const;
 
  private:
+  struct Hash {
+    size_t operator()(const FaceCoord& p) const;
+  };
+  struct Equal {
+    bool operator()(const FaceCoord& a, const FaceCoord& b) const;
+  };
   CellId cell_;
   int size_ = 0, halo_ = 0;
-  std::unordered_map<uint64_t, int64_t> other_faces_;  // the cell's own face is found directly
+  // The other faces' pixels in the halo; the cell's own face's are found by their place.
+  std::unordered_map<FaceCoord, int64_t, Hash, Equal> other_faces_;
 };
 
 // For each pixel of `cell`'s tile with its halo (tiles of `size`), the index of the pixel of the
-// store's halo holding the face pixel the face's chart lays there; empty when they are the same
-// everywhere (a cell touching no face corner). Throws maquette::Error, naming the cell, when the
-// chart lays a pixel the store's halo does not hold.
+// store's halo holding the face pixel the face's chart lays there; empty for a cell whose halo
+// reaches no face corner (where the two are the same everywhere; they may be the same elsewhere
+// too). Throws maquette::Error, naming the cell, when the chart lays a pixel the store's halo
+// does not hold.
 std::vector<int64_t> chart_order(const Grid& grid, const FacePlane& plane, CellId cell, int size,
                                  int halo);
 

@@ -19,23 +19,18 @@ using Pixel = std::array<int64_t, 2>;
 
 // B: the band of `e` over the cell (positions s0 .. s0 + n - 1, depths 0 .. kTurnedEdgeBand - 1)
 // synthesized in G's chart, indexed [t * n + s - s0]. The chart's guides are found among the
-// cell's (laid in the cell's own chart, chart_guides.h) by the face pixel G's chart lays.
+// cell's (laid in the cell's own chart, chart_guides.h: `held`, at pixel level `level`) by the
+// face pixel G's chart lays.
 std::vector<int32_t> chart_band(const Grid& grid, const FacePlane& plane,
                                 const ExemplarPyramid& pyramid, const SynthesisParams& sp,
-                                const TargetGuides& guides, int halo, const TurnedEdge& e,
-                                int64_t s0, int n) {
+                                const TargetGuides& guides, const HaloPixels& held, int level,
+                                int halo, const TurnedEdge& e, int64_t s0, int n) {
   constexpr int64_t kBand = kTurnedEdgeBand;
   const Pixel a = e.at(s0, 0), b = e.at(s0 + n - 1, kBand - 1);
   const Pixel lo = {std::min(a[0], b[0]), std::min(a[1], b[1])};
   const PixelRect window{e.plane[0] + lo[0], e.plane[1] + lo[1], std::abs(a[0] - b[0]) + 1,
                          std::abs(a[1] - b[1]) + 1};
   const int shift = guides.shift;
-  const int side = int(guides.rect.width), tile = side - 2 * halo;
-  const int level = e.cell.level() + log2_tile_size(tile);
-  const HaloPixels held(e.cell, tile, halo, [&](int c, int r) {
-    return plane.chart_pixel(grid, e.cell.face(), level, int64_t(e.cell.col()) * tile + c,
-                             int64_t(e.cell.row()) * tile + r);
-  });
   TargetGuides chart;
   chart.shift = shift;
   chart.col_period = guides.col_period;
@@ -145,11 +140,11 @@ std::vector<int32_t> join_turned_edges(const Grid& grid, const FacePlane& plane,
     throw Error("synthesis.transfer: " + edges[0].cell.ToText() +
                 "'s band along a turned edge lays no distance, depth or light guides");
   const int n = (int(guides.rect.width) - 2 * halo) << guides.shift;
-  const ExemplarLevel& level = pyramid.levels[0];
+  const ExemplarLevel& finest = pyramid.levels[0];
   const auto colour_error = [&](int32_t x, int32_t y) {
     float d = 0;
     for (size_t k = 0; k < 3; ++k) {
-      const float v = level.rgb[3 * size_t(x) + k] - level.rgb[3 * size_t(y) + k];
+      const float v = finest.rgb[3 * size_t(x) + k] - finest.rgb[3 * size_t(y) + k];
       d += v * v;
     }
     return d;
@@ -165,13 +160,22 @@ std::vector<int32_t> join_turned_edges(const Grid& grid, const FacePlane& plane,
                ? best
                : edges.size();
   };
+  // The guides' face pixels, as the cell's chart lays them (as synthesis.transfer does).
+  const int tile = n >> guides.shift;
+  const CellId cell = edges[0].cell;
+  const int level = cell.level() + log2_tile_size(tile);
+  const HaloPixels held(cell, tile, halo, [&](int c, int r) {
+    return plane.chart_pixel(grid, cell.face(), level, int64_t(cell.col()) * tile + c,
+                             int64_t(cell.row()) * tile + r);
+  });
   std::vector<int32_t> out = own;
   for (size_t k = 0; k < edges.size(); ++k) {
     const TurnedEdge& e = edges[k];
     int64_t s0 = e.along(e.place.first);
     for (const int64_t c : {0, n - 1})
       for (const int64_t r : {0, n - 1}) s0 = std::min(s0, e.along(e.place.at(c, r)));
-    const std::vector<int32_t> band = chart_band(grid, plane, pyramid, sp, guides, halo, e, s0, n);
+    const std::vector<int32_t> band =
+        chart_band(grid, plane, pyramid, sp, guides, held, level, halo, e, s0, n);
     std::vector<float> error(band.size());
     std::vector<size_t> at(band.size());  // each band pixel's index in the output
     for (int64_t t = 0; t < kTurnedEdgeBand; ++t)

@@ -76,11 +76,11 @@ TEST(FacePlaneSeams, AFacesChartIsTheStoresHaloButBeyondTheCubeCornersTowardTheR
   const int level = kPixelLevel;
   const int64_t n = kFace;
   const auto chart = [&](int face, int64_t col, int64_t row) {
-    const FaceCoord p = *plane.chart_pixel(grid, face, level, col, row);
+    const FaceCoord p = plane.chart_pixel(grid, face, level, col, row).value();
     return std::array<int64_t, 3>{p.face, p.col, p.row};
   };
   const auto wrap = [&](int face, int64_t col, int64_t row) {
-    const FaceCoord p = *grid.wrap({face, col, row}, level);
+    const FaceCoord p = grid.wrap({face, col, row}, level).value();
     return std::array<int64_t, 3>{p.face, p.col, p.row};
   };
   // Within a face and beyond one edge: the face's pixel and the store's halo's.
@@ -97,6 +97,14 @@ TEST(FacePlaneSeams, AFacesChartIsTheStoresHaloButBeyondTheCubeCornersTowardTheR
   EXPECT_EQ(chart(kFaceQ, -2, n + 6), wrap(kFaceP, n - 2, n + 6));
   // Beyond N's corner with P and Q, away from the row: the store's halo.
   EXPECT_EQ(chart(kFaceN, n + 2, -3), wrap(kFaceN, n + 2, -3));
+  // Across the antimeridian: beyond O's corner with N and R, above R's last column (N as R's
+  // halo reads it); beyond S's corner with O and R and N's with O and R, R's own pixels.
+  EXPECT_EQ(chart(kFaceO, -3, -5), wrap(kFaceR, n - 3, -5));
+  EXPECT_EQ(chart(kFaceS, -2, -4), (std::array<int64_t, 3>{kFaceR, n - 2, n - 4}));
+  EXPECT_EQ(chart(kFaceN, -2, n + 4), (std::array<int64_t, 3>{kFaceR, n - 2, 4}));
+  // More than a face width beyond: none, as Grid::wrap.
+  EXPECT_FALSE(plane.chart_pixel(grid, kFaceO, level, -n - 1, -1));
+  EXPECT_FALSE(grid.wrap({kFaceO, -n - 1, -1}, level));
 }
 
 TEST_F(Seams, CellsOnBothSidesOfAnEquatorialEdgeEqualOneSynthesisAcrossIt) {

@@ -237,7 +237,8 @@ void expect_band_continues_the_chart(CellId cell, bool top, const TurnedEdges::L
       matching += polar.at(qc, qr, 0) == float(e[0]) && polar.at(qc, qr, 1) == float(e[1]);
     }
     beside += c != corner && matching == 0;
-    short_pins += c % kPin == 0 && std::abs(c - corner) >= kBand && matching < kBand / 2;
+    short_pins +=
+        c % kPin == 0 && (corner < 0 || std::abs(c - corner) >= kBand) && matching < kBand / 2;
   }
   EXPECT_EQ(beside, 0u) << cell.ToText();
   EXPECT_EQ(short_pins, 0u) << cell.ToText();
@@ -266,11 +267,12 @@ TEST_F(TurnedEdges, UpToTheCubeCornersTheBandsContinueTheEquatorialFacesChart) {
 
 TEST_F(TurnedEdges, UpToTheCubeCornersTwoEquatorialCellsMeetAsOneSynthesis) {
   // O's last cell and P's first under N (the corner N, O, P), P's last and Q's first under N
-  // (N, P, Q), Q's last and R's first over S (S, Q, R): the quadrant beyond each corner in each
-  // cell's halo is the plane continued, so both read the same guides there.
+  // (N, P, Q), Q's last and R's first over S (S, Q, R), R's last and O's first under N across the
+  // antimeridian (N, R, O): the quadrant beyond each corner in each cell's halo is the plane
+  // continued, so both read the same guides there.
   for (const auto& [left, right, row] :
        {std::tuple{kFaceO, kFaceP, 0u}, std::tuple{kFaceP, kFaceQ, 0u},
-        std::tuple{kFaceQ, kFaceR, kLast}}) {
+        std::tuple{kFaceQ, kFaceR, kLast}, std::tuple{kFaceR, kFaceO, 0u}}) {
     const int64_t edge = int64_t(right - kFaceO) * kFace;
     const PixelRect window{edge - 64, int64_t(row) * kSize, 128, kSize};
     const auto expected = whole(window, ring_chart);
