@@ -265,6 +265,31 @@ TEST_F(TurnedEdges, UpToTheCubeCornersTheBandsContinueTheEquatorialFacesChart) {
                                   ring_chart, kSize - 1);
 }
 
+TEST_F(TurnedEdges, AtTheCornerWithTheUnturnedEdgeThePixelsNearerItKeepNsOwnSynthesis) {
+  // N's cell at its corner with O and P: N's pixel (X, Y) is plane (X, Y - F) and P's chart
+  // (F - 1 - Y, X - F). A: the plane's N (N's chart, laid by hand: P turned beside it, P's own
+  // pixels beyond the corner); B: P's chart over its first cell's band.
+  const PixelRect own{kFace - 64, -64, 64, 64};
+  const auto a = whole(own, n_chart);
+  const PixelRect across{kFace, -kBand, kSize, 2 * kBand};
+  const auto b = whole(across, p_chart);
+  const Tile<float> out = transfer(CellId::FromFaceColRow(kFaceN, kLevel, kLast, kLast), kSize);
+  size_t kept = 0, wrong = 0, differ = 0;
+  for (int r = kSize - 64; r < kSize; ++r)
+    for (int c = kSize - kBand; c < kSize; ++c) {
+      const int depth = kSize - 1 - c, unturned = kSize - 1 - r;  // from P's edge, from O's
+      if (unturned > depth) continue;                             // nearer P's edge: the band's
+      const auto& e = a[size_t((r - (kSize - 64)) * 64 + c - (kSize - 64))];
+      const auto& other = b[size_t((kBand - 1 - depth) * kSize + unturned)];
+      ++kept;
+      wrong += out.at(c, r, 0) != float(e[0]) || out.at(c, r, 1) != float(e[1]);
+      differ += e != other;
+    }
+  EXPECT_EQ(kept, size_t(kBand * (kBand + 1) / 2));
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(differ, kept / 2);  // there A and B differ: the rule decides
+}
+
 TEST_F(TurnedEdges, UpToTheCubeCornersTwoEquatorialCellsMeetAsOneSynthesis) {
   // O's last cell and P's first under N (the corner N, O, P), P's last and Q's first under N
   // (N, P, Q), Q's last and R's first over S (S, Q, R), R's last and O's first under N across the
