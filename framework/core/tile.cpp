@@ -39,7 +39,10 @@ DType parse_dtype(std::string_view name) {
 int log2_tile_size(int size) {
   for (int k = 0; k <= 12; ++k)
     if (size == 1 << k) return k;
-  throw Error("tile size " + std::to_string(size) + " is not a power of two in [1, 4096]");
+  const bool power_of_two = size > 0 && (size & (size - 1)) == 0;
+  throw Error(
+      "tile size " + std::to_string(size) +
+      (power_of_two ? " is above the largest, 4096" : " is not a power of two in [1, 4096]"));
 }
 
 template <typename T>

@@ -135,12 +135,30 @@ const LoadedModule* OperatorRegistry::module_of(const std::string& name) const {
   return it == operators_.end() ? nullptr : &it->second.module;
 }
 
-nlohmann::json OperatorRegistry::to_json() const {
-  nlohmann::json out = nlohmann::json::array();
+std::vector<OperatorRegistry::Selected> OperatorRegistry::select(const std::string& only) const {
+  std::vector<Selected> out;
   for (const auto& m : modules_) {
-    nlohmann::json ops = nlohmann::json::array();
+    Selected s{&m, {}};
     for (uint32_t i = 0; i < m.info->operator_count; ++i)
-      ops.push_back(operator_json(find(m.info->operators[i].name)->spec()));
+      if (only.empty() || only == m.info->name || only == m.info->operators[i].name)
+        s.operators.push_back(&find(m.info->operators[i].name)->spec());
+    if (!s.operators.empty() || (only.empty() || only == m.info->name)) out.push_back(s);
+  }
+  if (!only.empty() && out.empty()) {
+    std::string names;
+    for (const auto& m : modules_) names += (names.empty() ? "" : ", ") + std::string(m.info->name);
+    throw Error("no module or operator '" + only +
+                "' (the modules: " + (names.empty() ? "none found" : names) + ")");
+  }
+  return out;
+}
+
+nlohmann::json OperatorRegistry::to_json(const std::string& only) const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [module, operators] : select(only)) {
+    const LoadedModule& m = *module;
+    nlohmann::json ops = nlohmann::json::array();
+    for (const OperatorSpec* s : operators) ops.push_back(operator_json(*s));
     out.push_back({{"name", m.info->name},
                    {"version", m.info->version},
                    {"description", m.info->description},
@@ -150,14 +168,15 @@ nlohmann::json OperatorRegistry::to_json() const {
   return out;
 }
 
-void OperatorRegistry::print(std::ostream& out) const {
+void OperatorRegistry::print(std::ostream& out, const std::string& only) const {
   if (modules_.empty())
     out << "no modules found (searched MAQUETTE_MODULE_PATH and lib/maquette)\n";
-  for (const auto& m : modules_) {
+  for (const auto& [module, operators] : select(only)) {
+    const LoadedModule& m = *module;
     out << m.info->name << " " << m.info->version << ": " << m.info->description << "\n  " << m.file
         << "\n";
-    for (uint32_t i = 0; i < m.info->operator_count; ++i) {
-      const OperatorSpec& s = find(m.info->operators[i].name)->spec();
+    for (const OperatorSpec* spec : operators) {
+      const OperatorSpec& s = *spec;
       out << "  " << s.name << " (" << operator_kind_name(s.kind);
       if (s.halo > 0) out << ", halo " << s.halo;
       out << "): " << s.description << "\n";

@@ -28,12 +28,21 @@ class OperatorRegistry {
   const std::vector<LoadedModule>& modules() const { return modules_; }
 
   // `maquette modules --json`: per module name, version, description, file and operators (kind,
-  // inputs, outputs with dtype/channels/semantics/units, halo, params schema).
-  nlohmann::json to_json() const;
+  // inputs, outputs with dtype/channels/semantics/units, halo, params schema). `only`: a module's
+  // name (that module) or an operator's (its module with that operator alone); empty: every
+  // module. Throws maquette::Error when `only` names neither.
+  nlohmann::json to_json(const std::string& only = "") const;
   // `maquette modules`: the same, as text.
-  void print(std::ostream& out) const;
+  void print(std::ostream& out, const std::string& only = "") const;
 
  private:
+  // The modules and, of each, the operators `only` selects (to_json, print), in their order.
+  struct Selected {
+    const LoadedModule* module;
+    std::vector<const OperatorSpec*> operators;
+  };
+  std::vector<Selected> select(const std::string& only) const;
+
   struct Entry {
     std::unique_ptr<Operator> op;
     LoadedModule module;

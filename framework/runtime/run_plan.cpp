@@ -83,6 +83,7 @@ class Planner {
       info.kind = out.kind;
       info.provenance = {{"operator", step.op_name}, {"params", step.params}};
       inherit_source_description(sp.inputs, out.name, info);
+      check_stored(step, out.name, info);
       sp.outputs.emplace(out.name, info);
       produced_[info.name] = {info, cells};
     }
@@ -92,6 +93,18 @@ class Planner {
   }
 
  private:
+  // An output layer the store holds must keep its definition (Store::check_layer): refused here,
+  // naming the step, before a run writes anything, and by a dry run.
+  void check_stored(const PipelineStep& step, const std::string& port,
+                    const LayerInfo& info) const {
+    if (store_ == nullptr) return;
+    try {
+      store_->check_layer(info);
+    } catch (const Error& e) {
+      throw Error(step.label() + ": outputs." + port + ": " + e.what());
+    }
+  }
+
   struct Produced {
     LayerInfo info;
     std::vector<CellId> cells;  // the cells an earlier step writes, sorted
@@ -116,6 +129,7 @@ class Planner {
     if (task.layer) {
       sp.level = task.layer->level;
       sp.tile_size = task.layer->tile_size;
+      check_stored(step, step.outputs.begin()->first, *task.layer);
       sp.outputs.emplace(step.outputs.begin()->first, *task.layer);
       produced_[task.layer->name] = {*task.layer, within_region(task.cells, task.layer->level)};
       cells = task.cells;

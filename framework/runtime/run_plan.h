@@ -72,7 +72,8 @@ TaskContext task_context(const Pipeline& pipeline, const PipelineStep& step);
 // than the port takes (InputSpec::semantics, channels), raster inputs of one step at
 // different levels or tile sizes, a region operator over cells of several faces (or, for one that
 // spans faces, of faces that no face and its edge neighbours hold, or of three faces meeting at a
-// corner) or with a mosaic side above kMaxMosaicSide.
+// corner) or with a mosaic side above kMaxMosaicSide, and an output naming a layer `store` holds
+// with another definition (Store::check_layer).
 RunPlan plan_run(const Pipeline& pipeline, const Store* store, int threads);
 
 // The dry-run report: steps, cell counts and the layers to be written.

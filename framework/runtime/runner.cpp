@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -235,16 +236,9 @@ class Runner {
         std::filesystem::create_directories(dir);
       store_ = Store::open(pipeline_.store_path, Store::Mode::Create);
     }
-    // Creating every output layer first also checks them against existing layers before any
-    // cell is computed. The complete ones are kept to be restored if the run fails before
-    // writing them (restore_untouched).
-    untouched_.clear();
-    for (const auto& sp : plan.steps)
-      for (const auto& [port, layer] : sp.outputs) {
-        if (store_->layer(layer.name) && !store_->incomplete(layer.name))
-          untouched_.insert(layer.name);
-        store_->create_layer(layer);
-      }
+    // Every output layer is created before any cell is computed (plan_run checked them
+    // against the stored layers).
+    create_outputs(plan);
 
     const nlohmann::json identity = run_identity(pipeline_);
     if (options_.resume) {
@@ -282,28 +276,44 @@ class Runner {
                                                : create ? Store::Mode::Create
                                                         : Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
-    if (copies_ && writes)
-      for (const auto& sp : plan.steps)
-        for (const auto& [port, layer] : sp.outputs) store_->create_layer(layer);
+    if (copies_ && writes) create_outputs(plan);
   }
 
-  // Marks the run failed (on the root); no rank leaves before, since a launcher may end the job
-  // as soon as one rank exits with an error.
-  void fail(int64_t run_id, const std::string& status, const RunPlan& plan) {
-    exchange(ranks_, [&] {
-      if (ranks_.root() && run_id != 0) {
-        restore_untouched(run_id, plan);
-        store_->finish_run(run_id, status);
+  // Creates the run's output layers in this rank's store (a step's layer is no other step's:
+  // check_distinct_outputs), keeping those that were complete as they were, provenance included,
+  // to be restored if the run fails before writing them (fail()).
+  void create_outputs(const RunPlan& plan) {
+    untouched_.clear();
+    for (const auto& sp : plan.steps)
+      for (const auto& [port, layer] : sp.outputs) {
+        if (const auto stored = store_->layer(layer.name);
+            stored && !store_->incomplete(layer.name))
+          untouched_.emplace(layer.name, *stored);
+        store_->create_layer(layer);
       }
-      return "";
-    });
   }
 
-  // A failed run leaves readable the layers that were complete before it and that it has not
-  // written: those of the steps it never started, and of the step that failed when that step
-  // recorded no cell in this run (cell, reduce and region steps record a cell with its tiles,
-  // in one transaction; a task, an ingest, writes its tiles first: its layers stay marked).
-  void restore_untouched(int64_t run_id, const RunPlan& plan) {
+  // Marks the run failed (on the root) and restores its untouched layers (below) in the store,
+  // and under --store-copies in every rank's copy, which took the run's provenance too; no rank
+  // leaves before, since a launcher may end the job as soon as one rank exits with an error.
+  void fail(int64_t run_id, const std::string& status, const RunPlan& plan) {
+    const std::vector<std::string> restored = exchange(ranks_, [&] {
+      if (!ranks_.root() || run_id == 0) return std::string();
+      const std::vector<std::string> layers = layers_to_restore(run_id, plan);
+      restore(layers);
+      store_->finish_run(run_id, status);
+      return nlohmann::json(layers).dump();
+    });
+    if (copies_ && !ranks_.root() && !restored.front().empty())
+      restore(nlohmann::json::parse(restored.front()).get<std::vector<std::string>>());
+  }
+
+  // A failed run leaves readable, with the provenance they had, the layers that were complete
+  // before it and that it has not written: those of the steps it never started, and of the step
+  // that failed when that step recorded no cell in this run (cell, reduce and region steps record a
+  // cell with its tiles, in one transaction; a task, an ingest, writes its tiles first: its layers
+  // stay marked). On the root.
+  std::vector<std::string> layers_to_restore(int64_t run_id, const RunPlan& plan) const {
     const auto wrote = [&](size_t i) {
       const int step = plan.steps[i].step->index;
       return i + 1 < started_ ||
@@ -311,12 +321,23 @@ class Runner {
                                     !store_->done_cells(run_id, step).empty() ||
                                     !store_->done_keys(run_id, step).empty()));
     };
-    std::set<std::string> written;  // a layer two steps write is written if either wrote it
+    std::set<std::string> written;
     for (size_t i = 0; i < plan.steps.size(); ++i)
       for (const auto& [port, layer] : plan.steps[i].outputs)
         if (wrote(i)) written.insert(layer.name);
-    for (const std::string& layer : untouched_)
-      if (!written.count(layer)) store_->mark_complete(layer);
+    std::vector<std::string> out;
+    for (const auto& [layer, stored] : untouched_)
+      if (!written.count(layer)) out.push_back(layer);
+    return out;
+  }
+
+  // Those of `layers` this rank's store held complete before the run, as they were.
+  void restore(const std::vector<std::string>& layers) {
+    for (const std::string& layer : layers)
+      if (const auto stored = untouched_.find(layer); stored != untouched_.end()) {
+        store_->create_layer(stored->second);  // the same definition: its provenance back
+        store_->mark_complete(layer);
+      }
   }
 
   // The artifacts the step's params refer to, now written by the earlier steps, pasted in and
@@ -500,7 +521,7 @@ class Runner {
   tbb::task_arena arena_;
   // On the root: the output layers complete before the run (restore_untouched); and how many
   // steps the run has started.
-  std::set<std::string> untouched_;
+  std::map<std::string, LayerInfo> untouched_;
   size_t started_ = 0;
   std::unique_ptr<Store> store_;     // on ranks but the root under --store-copies: this rank's copy
   std::optional<WriteRelay> relay_;  // under --store-copies

@@ -86,15 +86,31 @@ LayerEntry Store::Impl::require(const std::string& name) const {
   throw Error("unknown layer '" + name + "' in " + path);
 }
 
+namespace {
+
+// Throws unless the stored layer `old` has the (normalized) definition `def`.
+void refuse_another_definition(const std::string& path, const LayerInfo& old,
+                               const LayerInfo& def) {
+  if (const std::string diff = layer_difference(old, def); !diff.empty())
+    throw Error("layer '" + def.name + "' already exists in " + path +
+                " with another definition: " + diff + " (stored vs requested)");
+}
+
+}  // namespace
+
+void Store::check_layer(const LayerInfo& info) const {
+  const LayerInfo def = normalized_layer(info);
+  if (auto old = load_layer(*impl_->readers.borrow(), def.name))
+    refuse_another_definition(impl_->path, old->info, def);
+}
+
 void Store::create_layer(const LayerInfo& info) {
   const LayerInfo def = normalized_layer(info);
   impl_->write([&](sqlite::Connection& c) {
     // An existing layer keeps its codec: each blob names its own format, so a layer written
     // before a codec existed (normals before normal_oct) or at another level resumes as it is.
     if (auto old = load_layer(c, def.name)) {
-      if (const std::string diff = layer_difference(old->info, def); !diff.empty())
-        throw Error("layer '" + def.name + "' already exists in " + impl_->path +
-                    " with another definition: " + diff + " (stored vs requested)");
+      refuse_another_definition(impl_->path, old->info, def);
       update_provenance(c, *old, def.provenance);
       return;
     }

@@ -135,9 +135,14 @@ class Store {
   bool created() const;
 
   // Layers. create_layer fails if the name exists with a different definition, and is a no-op
-  // when it exists with the same one (so re-running a step is idempotent); an existing layer
-  // keeps its codec, whatever `info` asks (older stores resume).
+  // when it exists with the same one (so re-running a step is idempotent) but for its
+  // provenance, which `info`'s replaces; an existing layer keeps its codec, whatever `info` asks
+  // (older stores resume).
   void create_layer(const LayerInfo& info);
+  // Throws what create_layer would when `info` is no valid definition or names a stored layer of
+  // another definition; writes nothing: a run checks every output against its store before it
+  // writes any (plan_run).
+  void check_layer(const LayerInfo& info) const;
   std::optional<LayerInfo> layer(const std::string& name) const;
   // For readers: throws "unknown layer 'x' in STORE", and for a layer marked incomplete (below)
   // "layer 'x' in STORE is incomplete: ...", naming the run and how to finish it.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -239,6 +240,16 @@ TEST_F(IncompleteLayer, RunFailingBeforeItWritesALayerLeavesItReadable) {
   ASSERT_EQ(run(p).exit_code, 0);
   const std::string v = png_bytes("v"), w = png_bytes("w");
   ASSERT_FALSE(v.empty());
+  // Each layer's provenance, the params of the step that wrote its tiles.
+  const auto provenance = [&] {
+    const json info = info_of(store);
+    std::map<std::string, json> out;
+    for (const json& layer : info.at("layers"))
+      out[layer.at("name").get<std::string>()] = layer.at("provenance");
+    return out;
+  };
+  const auto written_by = provenance();
+  ASSERT_EQ(written_by.at("v")["params"]["seed"], 2);
 
   // The first step fails on every cell: neither layer is written, both stay readable.
   json failing = p;
@@ -249,6 +260,7 @@ TEST_F(IncompleteLayer, RunFailingBeforeItWritesALayerLeavesItReadable) {
   EXPECT_EQ(run_maquette("info " + store).out.find("INCOMPLETE"), std::string::npos);
   EXPECT_EQ(png_bytes("v"), v);
   EXPECT_EQ(png_bytes("w"), w);
+  EXPECT_EQ(provenance(), written_by);  // not the failed run's params
 
   // The second fails on every cell: the first rewrote v whole, w is as it was.
   failing = p;
@@ -256,6 +268,7 @@ TEST_F(IncompleteLayer, RunFailingBeforeItWritesALayerLeavesItReadable) {
   ASSERT_EQ(run(failing).exit_code, 1);
   EXPECT_EQ(png_bytes("v"), v);
   EXPECT_EQ(png_bytes("w"), w);
+  EXPECT_EQ(provenance().at("w"), written_by.at("w"));
 
   // Failing on its last cell, the first step has written the others: v is refused (as in
   // RunFailingMidwayLeavesItsOutputRefused), w, never started, is not.

@@ -207,6 +207,23 @@ TEST_F(CliRun, BadPipelinesAreRefusedBeforeAnythingRuns) {
   expect_refused(p.dump(), "95");
 }
 
+// An output naming a stored layer of another definition is refused naming the step, the port and
+// the difference, before anything is written (not even the new layer of the step before it), and
+// by a dry run.
+TEST_F(CliRun, AnOutputRedefiningAStoredLayerIsRefusedBeforeAnyWrite) {
+  json p = small_pipeline(store_);
+  p["steps"] = {{{"op", "terrain.synthesize"}, {"outputs", {{"dem", "fresh"}}}},
+                {{"op", "terrain.synthesize"}, {"outputs", {{"dem", "hs"}}}}};
+  const std::string message =
+      "step 2 (terrain.synthesize): outputs.dem: layer 'hs' already "
+      "exists in " +
+      store_ + " with another definition: dtype ";
+  expect_refused(p.dump(), message);
+  const CliResult dry = run_maquette("run " + dir_ + "/bad.json --dry-run");
+  EXPECT_NE(dry.exit_code, 0);
+  EXPECT_NE(dry.err.find(message), std::string::npos) << dry.err;
+}
+
 TEST_F(CliRun, MissingRequiredParameterIsNamed) {
   json p = small_pipeline(store_);
   p["steps"] = {{{"op", "fixture.fill"}, {"outputs", {{"value", "v"}}}}};
@@ -263,6 +280,27 @@ TEST(CliModules, ListsTheTerrainOperators) {
   EXPECT_NE(r.out.find("terrain.derive"), std::string::npos);
   EXPECT_NE(r.out.find("terrain.synthesize"), std::string::npos);
   EXPECT_TRUE(json::accept(r.out)) << r.out;
+}
+
+// `modules NAME`: one module's operators, or one operator; a name that is neither is refused,
+// listing the modules.
+TEST(CliModules, ANameSelectsAModuleOrAnOperator) {
+  CliResult r = run_maquette("modules terrain --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json modules = json::parse(r.out);
+  ASSERT_EQ(modules.size(), 1u);
+  EXPECT_EQ(modules[0]["name"], "terrain");
+  EXPECT_GT(modules[0]["operators"].size(), 1u);
+  r = run_maquette("modules terrain.derive");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("terrain.derive ("), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("terrain.synthesize"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("climate"), std::string::npos) << r.out;
+  r = run_maquette("modules terrian");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("no module or operator 'terrian' (the modules: "), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("terrain"), std::string::npos) << r.err;
 }
 
 TEST(CliModules, BadModulesAreRefusedNamingTheFile) {

@@ -585,6 +585,29 @@ TEST(MpiStoreCopies, IngestIsRefused) {
   EXPECT_FALSE(fs::exists(dir / "out.mqt"));
 }
 
+// A run failing before it writes a complete layer leaves it with the provenance it had (the
+// params later steps read), in the writer's store and in every copy alike (each copy took the
+// run's params too when the run created its output layers).
+TEST(MpiStoreCopies, AFailedRunGivesTheUntouchedLayersTheirProvenanceBackInEveryCopy) {
+  const std::string dir = write_pipeline();
+  copy_store(dir, 2);
+  ASSERT_EQ(run_copies(dir, 2).exit_code, 0);
+  const std::string provenance = "SELECT name, provenance FROM layers ORDER BY name";
+  const std::vector<std::string> before = rows(dir + "/out.mqt", provenance);
+  // fixture.blur (step 5) fails on every cell: it and the steps after it write nothing. The
+  // copies staged again from the writer's store, as a new job would.
+  const fs::path pipeline = fs::path(dir) / "pipeline.json";
+  json p = json::parse(std::ifstream(pipeline));
+  p["steps"][4]["params"] = {{"fail_on", "Q"}};
+  std::ofstream(pipeline) << p.dump(2);
+  copy_store(dir, 2);
+  const Result failed = run_copies(dir, 2);
+  EXPECT_NE(failed.exit_code, 0);
+  EXPECT_NE(failed.err.find("fixture failure requested"), std::string::npos) << failed.err;
+  EXPECT_EQ(rows(dir + "/out.mqt", provenance), before);
+  EXPECT_EQ(rows(rank_dir(dir, 1).string() + "/out.mqt", provenance), before);
+}
+
 TEST(MpiStoreCopies, KilledRankResumesToTheSameBits) {
   const std::string dir = write_pipeline({{"sleep_ms", 40}});
   copy_store(dir, 2);
