@@ -4,6 +4,7 @@
 // halo), the tallies are summed, and the report is a JSON artifact and a table on stdout.
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -33,11 +34,12 @@ OperatorSpec assess_spec() {
   s.kind = OperatorKind::Reduce;
   InputSpec rgb{"rgb", "the transfer's colours", false};
   rgb.channels = {3};
-  s.inputs = {rgb,
-              {"source",
-               "the transfer's painting pixel (column, row) per output pixel, and its painting "
-               "(0 when absent: one painting)",
-               false},
+  InputSpec source{"source",
+                   "the transfer's painting pixel (column, row) per output pixel, and its painting "
+                   "(0 when absent: one painting)",
+                   false};
+  source.channels = {2, 3};
+  s.inputs = {rgb, source,
               single_channel_input("landcover", "the target land cover the transfer was given",
                                    Semantics::Categorical),
               single_channel_input("dem", "the transfer's altitude guide (with altitude_range)",
@@ -103,40 +105,52 @@ std::string shown(const json& value) {
   return text.size() <= 60 ? text : text.substr(0, 57) + "...";
 }
 
-// The exemplar's params (exemplar_key_params) in which `params` differ from those of the
-// synthesis.transfer that made `source` (its layer's provenance), each as "field: the transfer's
-// value, assess's value"; none when they agree, or when the layer was made otherwise or by params
-// this version no longer reads.
-std::vector<std::string> differing_exemplar_params(const LayerInfo& source, const json& params) {
+// The params in which `params` differ from those of the synthesis.transfer that made `source`
+// (its layer's provenance), each as "field: the transfer's value, assess's value": the exemplar's
+// (exemplar_key_params), the land-cover table as it reads the target and groups the painting's
+// classes (class_table, class_groups: however spelled) and the altitude range. None when they
+// agree, or when the layer was made otherwise or by params this version no longer reads.
+std::vector<std::string> differing_params(const LayerInfo& source, const json& params) {
   const auto transfer = transfer_params_of(source);
   if (!transfer) return {};
-  const json made = exemplar_key_params(*transfer);
-  const json ours = exemplar_key_params(params, kOp);
+  json made = exemplar_key_params(*transfer), ours = exemplar_key_params(params, kOp);
+  made.erase("groups");  // the table's, compared below as the table is read
+  ours.erase("groups");
   json keys = made;
   keys.update(ours);
   std::vector<std::string> fields;
+  const auto differ = [&](const std::string& key, const json& theirs, const json& mine) {
+    fields.push_back(key + ": the transfer's " + shown(theirs) + ", assess's " + shown(mine));
+  };
   for (const auto& item : keys.items()) {
     const std::string& key = item.key();
     const json theirs = made.value(key, json()), mine = ours.value(key, json());
-    if (theirs != mine)
-      fields.push_back(key + ": the transfer's " + shown(theirs) + ", assess's " + shown(mine));
+    if (theirs != mine) differ(key, theirs, mine);
   }
+  const json their_table = transfer->value("landcover_classes", json()),
+             my_table = params.value("landcover_classes", json());
+  const auto read = [](const json& table) {
+    return table.is_null() ? std::pair<std::map<int, uint8_t>, std::map<uint8_t, uint8_t>>{}
+                           : std::pair{class_table(table, kOp), class_groups(table, kOp)};
+  };
+  if (read(their_table) != read(my_table)) differ("landcover_classes", their_table, my_table);
+  const json their_range = transfer->value("altitude_range", json()),
+             my_range = params.value("altitude_range", json());
+  if (their_range != my_range) differ("altitude_range", their_range, my_range);
   return fields;
 }
 
-// Throws maquette::Error when `params` differ from the transfer's that made `source` in the
-// exemplar's params: measured against another analysis (exemplar_scale 2 here, 4 there) the
-// figures were another exemplar's, silently, or its sources fell outside it.
-void check_same_exemplar(const LayerInfo& source, const json& params) {
-  const auto fields = differing_exemplar_params(source, params);
+// Throws maquette::Error when `params` differ from the transfer's that made `source` where the
+// measures depend on them: measured against another analysis (exemplar_scale 2 here, 4 there) the
+// figures were another exemplar's, silently, or its sources fell outside it; read through another
+// table, another target's.
+void check_same_params(const LayerInfo& source, const json& params) {
+  const auto fields = differing_params(source, params);
   if (fields.empty()) return;
   std::string list;
   for (const std::string& f : fields) list += (list.empty() ? "" : "; ") + f;
-  throw Error(std::string(kOp) +
-              ": its exemplar params differ from those synthesis.transfer made layer '" +
-              source.name + "' with (" + list +
-              "; \"groups\" is the landcover_classes' grouping): give assess the transfer's "
-              "params");
+  throw Error(std::string(kOp) + ": its params differ from those synthesis.transfer made layer '" +
+              source.name + "' with (" + list + "): give assess the transfer's params");
 }
 
 class Assess : public ReduceOperator {
@@ -145,7 +159,7 @@ class Assess : public ReduceOperator {
 
   json map(const CellContext& ctx, const CellData& data) const override {
     const json& params = *ctx.params;
-    check_same_exemplar(ctx.input_layer("source"), params);
+    check_same_params(ctx.input_layer("source"), params);
     const auto table = class_table(params.at("landcover_classes"), kOp);
     const auto range = altitude_range(params, kOp, data.inputs.count("dem") > 0);
     const auto exemplar = transfer_exemplar(params, kOp);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,12 @@
 
 namespace maquette::synthesis {
 namespace {
+
+// Throws unless the copy's place is given once: the destination polygons or the offset.
+void require_one_place(bool destination, bool offset) {
+  if (destination == offset)
+    throw Error("inputs.destination, params.offset_m: give one of them, the copy's place");
+}
 
 OperatorSpec clone_spec() {
   OperatorSpec s;
@@ -55,6 +62,10 @@ OperatorSpec clone_spec() {
                             {"description", "[east, north] metres from the source to the copy"}};
   s.params_schema = {
       {"type", "object"}, {"additionalProperties", false}, {"properties", properties}};
+  s.check_params = [](const json& params, const std::set<std::string>& mapped_inputs) {
+    read_inpaint_params(params);
+    require_one_place(mapped_inputs.count("destination") > 0, params.contains("offset_m"));
+  };
   return s;
 }
 
@@ -138,9 +149,7 @@ class Clone final : public RegionOperator {
     if (!from) throw Error("inputs.source: no sample of the region lies in its polygons");
     const auto destination = input.features.find("destination");
     const bool offset = p.contains("offset_m");
-    if ((destination != input.features.end()) == offset) {
-      throw Error("inputs.destination, params.offset_m: give one of them, the copy's place");
-    }
+    require_one_place(destination != input.features.end(), offset);
     const char* place = offset ? "params.offset_m" : "inputs.destination";
     const MosaicGeometry geometry(*ctx.grid, input.face, input.level, input.origin_col,
                                   input.origin_row);

@@ -43,6 +43,7 @@ void check_exemplar_params(const nlohmann::json& params, const std::string& op, 
       check_classes_beside_labels(fields, where + ".");
       further_classes(params.at("landcover_classes"), fields.at("landcover_classes"), op, where);
     }
+  check_altitude_of_every_painting(params, op);
   altitude_range(params, op, dem_given);
   if (params.contains("line_classes")) {  // the transfer's fields (not the assessment's)
     check_fields_without_effect(params, op);

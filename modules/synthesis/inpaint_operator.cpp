@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,12 @@
 
 namespace maquette::synthesis {
 namespace {
+
+// Throws unless the step maps the holes' input, footprints or mask (or both).
+void require_holes(bool footprints, bool mask) {
+  if (!footprints && !mask)
+    throw Error("inputs: give the holes as 'footprints' (polygons) or 'mask' (a raster)");
+}
 
 OperatorSpec inpaint_spec() {
   OperatorSpec s;
@@ -37,6 +44,10 @@ OperatorSpec inpaint_spec() {
   s.params_schema = {{"type", "object"},
                      {"additionalProperties", false},
                      {"properties", inpaint_param_properties()}};
+  s.check_params = [](const json& params, const std::set<std::string>& mapped_inputs) {
+    read_inpaint_params(params);
+    require_holes(mapped_inputs.count("footprints") > 0, mapped_inputs.count("mask") > 0);
+  };
   return s;
 }
 
@@ -50,9 +61,7 @@ class Inpaint final : public RegionOperator {
     const int side = layers.front().picture.width;
     const auto footprints = input.features.find("footprints");
     const auto mask = input.layers.find("mask");
-    if (footprints == input.features.end() && mask == input.layers.end()) {
-      throw Error("inputs: give the holes as 'footprints' (polygons) or 'mask' (a raster)");
-    }
+    require_holes(footprints != input.features.end(), mask != input.layers.end());
     std::vector<uint8_t> hole(size_t(side) * side, 0);
     if (footprints != input.features.end()) {
       hole = polygon_mask(ctx, input, footprints->second, side, "footprints");

@@ -23,6 +23,7 @@ namespace maquette::synthesis {
 // A missing file said as such: a relative path is the working directory's, not the pipeline's
 // (whose ingest sources are the pipeline file's).
 void require_file(const std::string& path, const std::string& what) {
+  if (path.empty()) throw Error(what + ": an empty path");
   VSIStatBufL stat;
   if (VSIStatL(path.c_str(), &stat) == 0) return;
   std::error_code error;

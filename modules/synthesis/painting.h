@@ -19,8 +19,9 @@ namespace maquette::synthesis {
 // (8-bit or 16-bit unsigned) do not fit, calling it `what`.
 Exemplar read_painting(const std::string& path, const std::string& what = "painting");
 
-// Throws maquette::Error "PATH: WHAT: no such file" (and for a relative path the working
-// directory it is relative to) when GDAL finds nothing at `path` (VSIStatL: virtual paths too).
+// Throws maquette::Error "WHAT: an empty path" for "", and "PATH: WHAT: no such file" (and for a
+// relative path the working directory it is relative to) when GDAL finds nothing at `path`
+// (VSIStatL: virtual paths too).
 void require_file(const std::string& path, const std::string& what);
 
 // A one-band 8-bit image (a class image, an exclusion mask, an altitude) that must have the

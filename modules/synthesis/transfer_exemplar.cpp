@@ -115,16 +115,11 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, const std:
                                         int scale) {
   std::vector<Exemplar> out;
   if (!params.contains("exemplars")) return out;
+  check_altitude_of_every_painting(params, op);
   const nlohmann::json& list = params.at("exemplars");
   for (size_t i = 0; i < list.size(); ++i) {
     const std::string where = op + ".exemplars[" + std::to_string(i) + "]";
     const nlohmann::json& fields = list.at(i);
-    if (fields.contains("painting_altitude") != params.contains("painting_altitude"))
-      throw Error(where + ".painting_altitude: " +
-                  (fields.contains("painting_altitude")
-                       ? "given, but the first painting has none"
-                       : "missing, but the first painting has one") +
-                  ": give every painting an altitude or none");
     Exemplar e = read_exemplar(fields, where, scale);
     const nlohmann::json& table = fields.at("landcover_classes");
     const auto labels = further_classes(params.at("landcover_classes"), table, op, where);
@@ -155,15 +150,20 @@ std::vector<Exemplar> further_exemplars(const nlohmann::json& params, const std:
 // no files.
 void add_inputs(const nlohmann::json& fields, const std::string& prefix,
                 std::vector<InputFile>& files) {
-  for (const auto& [field, what] : {std::pair<std::string, const char*>{"painting", "the painting"},
-                                    {"labels", "the class image"},
-                                    {"exclusion", "the exclusion mask"},
-                                    {"painting_altitude", "the painting's altitude image"},
-                                    {"painting_distance", "the painting's distance image"},
-                                    {"painting_light", "the painting's light image"},
-                                    {"painting_guides", "the painting's guides"}})
-    if (fields.contains(field) &&
-        fields.at(field) != (field == "painting_light" ? "lightness" : "rows") &&
+  struct Field {
+    std::string name;
+    const char* what;
+    const char* keyword;  // the value that names no file, or null
+  };
+  for (const auto& [field, what, keyword] :
+       {Field{"painting", "the painting", nullptr},
+        {"labels", "the class image", nullptr},
+        {"exclusion", "the exclusion mask", nullptr},
+        {"painting_altitude", "the painting's altitude image", "rows"},
+        {"painting_distance", "the painting's distance image", "rows"},
+        {"painting_light", "the painting's light image", "lightness"},
+        {"painting_guides", "the painting's guides", nullptr}})
+    if (fields.contains(field) && !(keyword && fields.at(field) == keyword) &&
         !from_guides(fields, field))
       files.push_back(
           {std::string(what) + " (" + prefix + field + ")", fields.at(field).get<std::string>()});
@@ -267,6 +267,18 @@ int32_t TransferExemplar::pixel_of(int exemplar, int col, int row) const {
   const int x = col / scale, y = row / scale;
   if (x >= at.width || y >= at.height) return -1;
   return pyramid.levels[0].index(at.x0 + x, y);
+}
+
+void check_altitude_of_every_painting(const nlohmann::json& params, const std::string& op) {
+  if (!params.contains("exemplars")) return;
+  const nlohmann::json& list = params.at("exemplars");
+  for (size_t i = 0; i < list.size(); ++i)
+    if (list.at(i).contains("painting_altitude") != params.contains("painting_altitude"))
+      throw Error(op + ".exemplars[" + std::to_string(i) + "].painting_altitude: " +
+                  (params.contains("painting_altitude")
+                       ? "missing, but the first painting has one"
+                       : "given, but the first painting has none") +
+                  ": give every painting an altitude or none");
 }
 
 nlohmann::json exemplar_key_params(const nlohmann::json& params, const std::string& op) {

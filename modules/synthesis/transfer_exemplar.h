@@ -60,6 +60,10 @@ std::shared_ptr<const TransferExemplar> transfer_exemplar(
 void check_class_has_pixels(const TransferExemplar& exemplar, int painting_class,
                             const std::string& field);
 
+// Throws maquette::Error naming `op` and the further painting unless every painting of `params`
+// has a "painting_altitude" or none has (the altitude guide compares them all).
+void check_altitude_of_every_painting(const nlohmann::json& params, const std::string& op);
+
 // What of the params the analysis reads (not the synthesis's weights): the exemplar's fields,
 // and of "landcover_classes" the sets of classes taken as one (the whole table with
 // "exemplars"), and what the masks made from "painting_guides" are mapped with

@@ -63,6 +63,7 @@ class Transfer : public CellOperator {
   void run(const CellContext& ctx, CellData& data) const override {
     const json& params = *ctx.params;
     const auto table = class_table(params.at("landcover_classes"), spec_.name);
+    check_table_fits(table, ctx.input_layer("landcover"), spec_.name);
     const auto exemplar = transfer_exemplar(params);
     const Tile<float>& landcover = input_with_halo(spec_.name, ctx, data, "landcover", spec_.halo);
     const int halo = landcover.halo(), side = landcover.stride();

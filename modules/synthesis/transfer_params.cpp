@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "core/samples.h"
 #include "core/whole_int.h"
 #include "exemplar.h"
 #include "patch_pass.h"
@@ -317,6 +319,21 @@ std::map<uint8_t, uint8_t> further_classes(const nlohmann::json& first,
   std::map<uint8_t, uint8_t> out;
   for (const auto& [c, set] : groups) out[c] = label_of.at(set).first;
   return out;
+}
+
+void check_table_fits(const std::map<int, uint8_t>& table, const LayerInfo& landcover,
+                      const std::string& op) {
+  const auto [low, high] = visit_dtype(landcover.dtype, []<typename T>(std::type_identity<T>) {
+    return std::pair{double(std::numeric_limits<T>::lowest()),
+                     double(std::numeric_limits<T>::max())};
+  });
+  for (const auto& [value, label] : table)
+    if (value < low || value > high)
+      throw Error(op + ".landcover_classes: land-cover value " + std::to_string(value) +
+                  " is outside what layer '" + landcover.name + "' holds (" +
+                  std::string(dtype_name(landcover.dtype)) + ", " + std::to_string(int64_t(low)) +
+                  ".." + std::to_string(int64_t(high)) +
+                  "): no pixel would take its class");  // an integer type: a float holds any key
 }
 
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value) {

@@ -82,6 +82,12 @@ std::map<int, uint8_t> class_table(const nlohmann::json& table, const std::strin
 // sets.
 std::map<uint8_t, uint8_t> class_groups(const nlohmann::json& table, const std::string& op);
 
+// Throws maquette::Error naming `op`, the value and the layer when a land-cover value of `table`
+// is no sample the layer can hold (300 in a uint8 layer): that entry would match no pixel, a typo
+// passed in silence.
+void check_table_fits(const std::map<int, uint8_t>& table, const LayerInfo& landcover,
+                      const std::string& op);
+
 // The painting class that land-cover sample `value` asks for: kUnknownLabel when it is NaN or
 // not in the table.
 uint8_t painting_class(const std::map<int, uint8_t>& table, float value);

@@ -195,8 +195,9 @@ TEST(AssessZion, WithoutAnAltitudeGuideNoAltitudeMismatchIsReported) {
 
 // An assessment given other exemplar params than the transfer that made its source layer measured
 // against another analysis, silently (exemplar_scale 8 against 4: coherence 13,750 instead of
-// 15,847): refused, naming the field; a differently spelled but equal value (the default k given)
-// passes.
+// 15,847), or reading the target through another table or altitude range: refused, naming the
+// field; differently spelled but equal values (the default k given, a class as a set of one)
+// pass.
 TEST(AssessZion, ParamsOfAnotherExemplarThanTheTransfersAreRefused) {
   if (!fs::exists(kPainting) || !fs::exists(kShared + "/zion/nlcd.tif"))
     GTEST_SKIP() << "../shared/data is absent";
@@ -224,13 +225,31 @@ TEST(AssessZion, ParamsOfAnotherExemplarThanTheTransfersAreRefused) {
   other["exemplar_scale"] = 8;
   const test::CliResult refused = assess_again(other);
   EXPECT_NE(refused.exit_code, 0);
-  EXPECT_NE(refused.err.find("synthesis.assess: its exemplar params differ from those "
+  EXPECT_NE(refused.err.find("synthesis.assess: its params differ from those "
                              "synthesis.transfer made layer 'painted_source' with (exemplar_scale: "
-                             "the transfer's 4, assess's 8;"),
+                             "the transfer's 4, assess's 8)"),
             std::string::npos)
       << refused.err;
+  // The same classes for other land-cover values, and another altitude range: the measures would
+  // read the target otherwise than the transfer did (label consistency 0.23 for this table).
+  json table = transfer_params();
+  table["landcover_classes"] = {{"1", 6}, {"2", 7}, {"3", 5}, {"4", 7},
+                                {"5", 6}, {"6", 3}, {"7", 3}, {"8", 2}};
+  const test::CliResult other_table = assess_again(table);
+  EXPECT_NE(other_table.exit_code, 0);
+  EXPECT_NE(other_table.err.find("landcover_classes: the transfer's {\"1\":7,"), std::string::npos)
+      << other_table.err;
+  json range = transfer_params();
+  range["altitude_range"] = {1000, 3000};
+  const test::CliResult other_range = assess_again(range);
+  EXPECT_NE(other_range.exit_code, 0);
+  EXPECT_NE(
+      other_range.err.find("altitude_range: the transfer's [1100,2700], assess's [1000,3000]"),
+      std::string::npos)
+      << other_range.err;
   json same = transfer_params();
-  same["k"] = 2;  // its default
+  same["k"] = 2;                         // its default
+  same["landcover_classes"]["2"] = {3};  // a set of one: the same table
   const test::CliResult passed = assess_again(same);
   EXPECT_EQ(passed.exit_code, 0) << passed.err;
 }

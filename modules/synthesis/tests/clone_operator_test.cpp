@@ -235,11 +235,22 @@ TEST(CloneOperator, ADestinationMissingOrGivenTwiceAndASourceThatIsNoPolygonAreN
     fs::remove_all(run.dir);
     return run.result.err;
   };
-  const std::string both = "inputs.destination, params.offset_m: give one of them";
-  EXPECT_NE(error(run_clone("-none", 1, json::object(), json::object())).find(both),
+  // The place told when the pipeline is read, before the ingest steps run (no store is made).
+  const auto refused_when_read = [&](const CloneRun& run) {
+    EXPECT_FALSE(fs::exists(run.store));
+    return error(run);
+  };
+  const std::string both =
+      "step 5 (synthesis.clone): inputs.destination, params.offset_m: give one of them";
+  EXPECT_NE(refused_when_read(run_clone("-none", 1, json::object(), json::object())).find(both),
             std::string::npos);
-  EXPECT_NE(error(run_clone("-twice", 1, {{"destination", "source"}}, {{"offset_m", {100, 0}}}))
+  EXPECT_NE(refused_when_read(
+                run_clone("-twice", 1, {{"destination", "source"}}, {{"offset_m", {100, 0}}}))
                 .find(both),
+            std::string::npos);
+  EXPECT_NE(refused_when_read(
+                run_clone("-even", 1, json::object(), {{"offset_m", {100, 0}}, {"patch", 8}}))
+                .find("step 5 (synthesis.clone): params.patch: 8 is even; give an odd side"),
             std::string::npos);
   EXPECT_NE(error(run_clone("-line", 1, json::object(), {{"offset_m", {100, 0}}}, "LineString"))
                 .find("inputs.source: feature 1 is a LineString, not a Polygon or MultiPolygon"),

@@ -77,6 +77,8 @@ TEST(ExemplarParamsCheck, AMistypedPaintingIsToldBeforeAnyStepRuns) {
   f.refused("missing", "synthesis.transfer", {{"painting", f.dir + "/paintng.png"}},
             {"step 2 (synthesis.transfer)", f.dir + "/paintng.png",
              "the painting (painting): no such file"});
+  f.refused("empty", "synthesis.transfer", {{"painting", ""}},
+            {"step 2 (synthesis.transfer)", "the painting (painting): an empty path"});
   f.refused("relative", "synthesis.transfer", {{"painting", "paintng.png"}},
             {"paintng.png: the painting (painting): no such file (relative to the working "
              "directory"});
@@ -110,6 +112,11 @@ TEST(ExemplarParamsCheck, FieldsThatWouldDoNothingAreRefused) {
   f.refused("table", "synthesis.transfer",
             {{"exemplars", {{{"painting", f.painting}, {"landcover_classes", {{"7", 1}}}}}}},
             {"target value 7 is not in the first painting's landcover_classes"});
+  f.refused("further_altitude", "synthesis.transfer",
+            {{"painting_altitude", "rows"},
+             {"exemplars", {{{"painting", f.painting}, {"landcover_classes", {{"1", 1}}}}}}},
+            {"synthesis.transfer.exemplars[0].painting_altitude: missing, but the first painting "
+             "has one"});
   f.refused("altitude", "synthesis.transfer", {{"altitude_range", {1000, 2000}}},
             {"synthesis.transfer.altitude_range is given without inputs.dem"});
   f.refused("lines", "synthesis.transfer", {{"line_classes", {1}}},

@@ -431,6 +431,19 @@ TEST(InpaintOperator, LayersOfTheWrongKindAreRefusedBeforeAnythingRuns) {
           "3");
 }
 
+// A step without its holes is refused when the pipeline is read, before the store is made.
+TEST(InpaintOperator, AStepWithoutItsHolesIsRefusedBeforeAnythingRuns) {
+  if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
+  const InpaintRun run = run_inpaint("-holeless", 1, "Polygon", {{"image", "landsat"}});
+  EXPECT_NE(run.result.exit_code, 0);
+  EXPECT_NE(run.result.err.find("step 4 (synthesis.inpaint): inputs: give the holes as "
+                                "'footprints' (polygons) or 'mask' (a raster)"),
+            std::string::npos)
+      << run.result.err;
+  EXPECT_FALSE(fs::exists(run.store));
+  fs::remove_all(run.dir);
+}
+
 TEST(InpaintOperator, AFootprintThatIsNoPolygonIsNamed) {
   if (!fs::exists(kLandsat)) GTEST_SKIP() << "../shared/data is absent";
   const InpaintRun run = run_inpaint("-line", 1, "LineString");

@@ -179,6 +179,21 @@ TEST(TransferParams, SetsOfClassesInTheTableAreTakenAsOne) {
 // line_classes are painting classes as the table gives them (a set's smallest class); one in no
 // table value, or without patch passes, would do nothing and is refused, as are the passes'
 // other fields without them.
+// A land-cover value the layer cannot hold (a typo: 300 for 30 in NLCD's uint8 classes) is named.
+TEST(TransferParams, ATableValueTheLandCoverCannotHoldIsNamed) {
+  LayerInfo landcover;
+  landcover.name = "nlcd";
+  landcover.dtype = DType::U8;
+  const auto table = class_table({{"30", 2}, {"255", 3}}, "synthesis.transfer");
+  check_table_fits(table, landcover, "synthesis.transfer");  // 0..255: accepted
+  const auto typo = class_table({{"300", 2}}, "synthesis.transfer");
+  expect_refused([&] { check_table_fits(typo, landcover, "synthesis.transfer"); }, "300",
+                 "synthesis.transfer.landcover_classes: land-cover value 300 is outside what layer "
+                 "'nlcd' holds (uint8, 0..255): no pixel would take its class");
+  landcover.dtype = DType::U16;
+  check_table_fits(typo, landcover, "synthesis.transfer");
+}
+
 TEST(TransferParams, LineClassesAreTheTablesLabels) {
   nlohmann::json p = {{"landcover_classes", {{"2", 3}, {"4", {6, 1}}}},
                       {"patch_passes", 2},
