@@ -259,9 +259,14 @@ Completion complete(const PatchImage& image, const std::vector<uint8_t>& hole, i
     const Roles roles = roles_at(pyramid[l], holes[l], params);
     if (!any(roles.references.member)) {
       if (l > 0) continue;  // too coarse for a patch outside the hole: start finer
+      const auto holed = std::count_if(hole.begin(), hole.end(), [](uint8_t h) { return h != 0; });
       throw Error("inpaint: no " + std::to_string(params.patch) + " x " +
                   std::to_string(params.patch) + " patch lies wholly outside the hole, its band (" +
-                  std::to_string(params.band) + " pixels) and the nodata");
+                  std::to_string(params.band) +
+                  " pixels) and the nodata: nothing is left to fill "
+                  "it from (the hole covers " +
+                  std::to_string(int(std::lround(100.0 * double(holed) / double(hole.size())))) +
+                  " % of the image with its context; give a smaller hole or a larger region)");
     }
     PatchImage level = pyramid[l].image;
     const bool coarsest = work.width == 0;

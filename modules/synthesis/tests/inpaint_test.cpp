@@ -195,7 +195,8 @@ TEST(Inpaint, RefusesBadParamsAndAnImageWithoutAPatchOutsideTheHole) {
             "inpaint: the hole mask has 10 pixels, the image 1600");
   EXPECT_EQ(message({}, test::square_mask(40, 40, 2, 2, 36)),
             "inpaint: no 7 x 7 patch lies wholly outside the hole, its band (3 pixels) and the "
-            "nodata");
+            "nodata: nothing is left to fill it from (the hole covers 81 % of the image with its "
+            "context; give a smaller hole or a larger region)");
 }
 
 }  // namespace
