@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "core/error.h"
+#include "gdal/gdal_drivers.h"
 
 namespace maquette {
 
@@ -46,6 +47,19 @@ void GdalErrorTrap::check(const std::string& what) const {
 std::string gdal_last_error(const std::string& fallback) {
   const char* msg = CPLGetLastErrorMsg();
   return msg && *msg ? std::string(msg) : fallback;
+}
+
+GdalSession::GdalSession() {
+  register_all_gdal_drivers();
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  CPLErrorReset();
+}
+
+GdalSession::~GdalSession() { CPLPopErrorHandler(); }
+
+void gdal_error(const std::string& what) {
+  const std::string detail = gdal_last_error("");
+  throw Error(detail.empty() ? what : what + ": " + detail);
 }
 
 }  // namespace maquette

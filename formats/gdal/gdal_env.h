@@ -13,6 +13,20 @@ void init_gdal(int cache_mb = 256);
 // GDAL's last error message on this thread, or `fallback` when there is none.
 std::string gdal_last_error(const std::string& fallback);
 
+// Registers GDAL's drivers once, and keeps GDAL's own error printing quiet on this thread while
+// alive: readers and writers report failures as maquette::Error with GDAL's message (gdal_error),
+// not GDAL's lines on stderr besides.
+class GdalSession {
+ public:
+  GdalSession();
+  ~GdalSession();
+  GdalSession(const GdalSession&) = delete;
+  GdalSession& operator=(const GdalSession&) = delete;
+};
+
+// A maquette::Error: `what`, then GDAL's last error message if any.
+[[noreturn]] void gdal_error(const std::string& what);
+
 // Records the failures GDAL reports on this thread while it lives, quietly: also those a driver
 // reports and then clears, or only warns about, while it closes a file (on a full disk a GeoTIFF's
 // last blocks and its .aux.xml are lost so, and GDAL's last error is empty afterwards). Writers

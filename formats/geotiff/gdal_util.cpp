@@ -1,24 +1,6 @@
 #include "geotiff/gdal_util.h"
 
-#include <cpl_error.h>
-
-#include "core/error.h"
-#include "gdal/gdal_drivers.h"
-
 namespace maquette {
-
-GdalSession::GdalSession() {
-  register_all_gdal_drivers();
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  CPLErrorReset();
-}
-
-GdalSession::~GdalSession() { CPLPopErrorHandler(); }
-
-void gdal_error(const std::string& what) {
-  const std::string detail = CPLGetLastErrorMsg();
-  throw Error(detail.empty() ? what : what + ": " + detail);
-}
 
 GDALDataType gdal_type(DType t) {
   switch (t) {

@@ -7,21 +7,9 @@
 #include <string>
 
 #include "core/tile.h"
+#include "gdal/gdal_env.h"  // GdalSession, gdal_error
 
 namespace maquette {
-
-// Registers GDAL's drivers once, and keeps GDAL's own error printing quiet while alive: the
-// writers report failures as maquette::Error with GDAL's message (gdal_error).
-class GdalSession {
- public:
-  GdalSession();
-  ~GdalSession();
-  GdalSession(const GdalSession&) = delete;
-  GdalSession& operator=(const GdalSession&) = delete;
-};
-
-// A maquette::Error: `what`, then GDAL's last error message if any.
-[[noreturn]] void gdal_error(const std::string& what);
 
 GDALDataType gdal_type(DType t);
 

@@ -183,9 +183,13 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
   const json& steps = doc.at("steps");
   if (!steps.is_array() || steps.empty())
     fail(source, "steps", "expected a non-empty array of steps");
-  for (size_t i = 0; i < steps.size(); ++i)
-    p.steps.push_back(parse_step(steps[i], int(i) + 1, registry));
-  check_distinct_outputs(p.steps);
+  try {  // a step's errors name it ("step 2 (op)"), and the file here
+    for (size_t i = 0; i < steps.size(); ++i)
+      p.steps.push_back(parse_step(steps[i], int(i) + 1, registry));
+    check_distinct_outputs(p.steps);
+  } catch (const Error& e) {
+    fail(source, "", e.what());
+  }
 
   p.region = region_cells(doc.at("region"), p.level, base_dir, source);
   return p;

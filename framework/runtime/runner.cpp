@@ -533,11 +533,15 @@ RunSummary run_pipeline(const Pipeline& pipeline, const RunOptions& options,
                         std::ostream& plan_out) {
   const std::unique_ptr<Ranks> alone = options.ranks ? nullptr : single_process();
   Ranks& ranks = options.ranks ? *options.ranks : *alone;
-  if (options.dry_run) {
-    std::ostringstream discard;  // the plan is printed once, by the root
-    return dry_run(pipeline, options, ranks.root() ? plan_out : discard);
+  try {
+    if (options.dry_run) {
+      std::ostringstream discard;  // the plan is printed once, by the root
+      return dry_run(pipeline, options, ranks.root() ? plan_out : discard);
+    }
+    return Runner(pipeline, options, ranks).run();
+  } catch (const Error& e) {  // "step 2 (op) failed on cell ...": of which pipeline
+    throw Error(pipeline.source + ": " + e.what());
   }
-  return Runner(pipeline, options, ranks).run();
 }
 
 }  // namespace maquette

@@ -23,6 +23,7 @@
 #include "core/whole_int.h"
 #include "exemplar_codec.h"
 #include "exemplar_pyramid.h"
+#include "gdal/gdal_env.h"
 #include "painting.h"
 #include "synthesis.h"
 
@@ -41,7 +42,7 @@ void add(EVP_MD_CTX* sha, const std::string& text) {
 
 // The files of the dataset GDAL opens at `path`, or nothing when it opens none.
 std::vector<std::string> dataset_files(const std::string& path) {
-  GDALAllRegister();
+  const GdalSession gdal;  // a file GDAL cannot open is said by the reader, not here
   const std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(
       path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!dataset) return {};

@@ -19,6 +19,7 @@
 #include "core/output_clash.h"
 #include "core/output_file.h"
 #include "core/sibling_path.h"
+#include "gdal/gdal_env.h"
 #include "gdal/image_file.h"
 #include "paint_panorama.h"
 
@@ -30,10 +31,10 @@ namespace {
 void write_source(const PaintedPanorama& painted, const std::string& path) {
   OutputFile file(path, {".aux.xml"});
   file.write([&] {
-    GDALAllRegister();
+    const GdalSession gdal;
     std::unique_ptr<GDALDataset> ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
         file.temp_path().c_str(), painted.width, painted.height, 2, GDT_Float32, nullptr));
-    if (!ds) throw Error(path + ": GDAL cannot create it");
+    if (!ds) gdal_error(path + ": GDAL cannot create it");
     int bands[2] = {1, 2};
     const char* names[2] = {"column", "row"};
     for (int b = 0; b < 2; ++b) {
@@ -43,7 +44,7 @@ void write_source(const PaintedPanorama& painted, const std::string& path) {
     if (ds->RasterIO(GF_Write, 0, 0, painted.width, painted.height,
                      const_cast<float*>(painted.source.data()), painted.width, painted.height,
                      GDT_Float32, 2, bands, 8, 8 * long(painted.width), 4, nullptr) != CE_None)
-      throw Error(path + ": GDAL cannot write it");
+      gdal_error(path + ": GDAL cannot write it");
     ds.reset();
   });
   file.commit();

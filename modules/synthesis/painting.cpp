@@ -17,6 +17,7 @@
 #include "../texture/kmeans.h"
 #include "../texture/majority_filter.h"
 #include "core/error.h"
+#include "gdal/gdal_env.h"
 
 namespace maquette::synthesis {
 
@@ -35,13 +36,14 @@ void require_file(const std::string& path, const std::string& what) {
 namespace {
 
 // `kinds`: GDAL_OF_RASTER, GDAL_OF_VECTOR or both.
+// Under a GdalSession (GDAL's reason in the error, not printed by GDAL besides).
 std::unique_ptr<GDALDataset> open_image(const std::string& path, const std::string& what,
                                         unsigned kinds = GDAL_OF_RASTER) {
-  GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY));
+  std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open(path.c_str(), kinds | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR));
   if (ds) return ds;
   require_file(path, "GDAL cannot open the " + what);
-  throw Error(path + ": GDAL cannot open the " + what);
+  gdal_error(path + ": GDAL cannot open the " + what);
 }
 
 // The one band of `ds` as bytes: it must be one 8-bit band of the painting's size. Read as bytes,
@@ -62,7 +64,7 @@ std::vector<uint8_t> read_band(GDALDataset& ds, const std::string& path, int wid
   std::vector<uint8_t> out(size_t(width) * size_t(height));
   if (ds.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, out.data(), width, height,
                                     GDT_Byte, 0, 0, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the " + what);
+    gdal_error(path + ": GDAL cannot read the " + what);
   return out;
 }
 
@@ -136,7 +138,7 @@ std::vector<uint8_t> rasterized_classes(GDALDataset& ds, const std::string& path
   OGRLayerH layers[] = {OGRLayer::ToHandle(layer)};
   if (GDALRasterizeLayersBuf(out.data(), width, height, GDT_Byte, 0, 0, 1, layers, nullptr, pixels,
                              nullptr, nullptr, 0, options, nullptr, nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot rasterize the class image's polygons");
+    gdal_error(path + ": GDAL cannot rasterize the class image's polygons");
   const auto outside = std::count(out.begin(), out.end(), kUnknownLabel);
   if (outside > 0)
     throw Error(path + ": " + std::to_string(outside) +
@@ -166,6 +168,7 @@ std::vector<uint8_t> majority_filtered(const std::vector<uint8_t>& labels, int w
 }  // namespace
 
 Exemplar read_painting(const std::string& path, const std::string& what) {
+  const GdalSession gdal;
   const auto ds = open_image(path, what);
   const int bands = ds->GetRasterCount();
   if (bands < 1 || bands > 4)
@@ -193,7 +196,7 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
     std::vector<int32_t> index(n);
     if (first->RasterIO(GF_Read, 0, 0, e.width, e.height, index.data(), e.width, e.height,
                         GDT_Int32, 0, 0, nullptr) != CE_None)
-      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+      gdal_error(path + ": GDAL cannot read the " + what + "'s pixels");
     for (size_t i = 0; i < n; ++i) {
       const GDALColorEntry* c = palette->GetColorEntry(index[i]);
       if (!c)
@@ -218,7 +221,7 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
     const auto size = GSpacing(sizeof(float));
     if (ds->RasterIO(GF_Read, 0, 0, e.width, e.height, e.rgb.data(), e.width, e.height, GDT_Float32,
                      3, band_map.data(), 3 * size, 3 * size * e.width, size, nullptr) != CE_None)
-      throw Error(path + ": GDAL cannot read the " + what + "'s pixels");
+      gdal_error(path + ": GDAL cannot read the " + what + "'s pixels");
     if (divisor != 1)
       for (float& v : e.rgb) v /= divisor;
   }
@@ -228,7 +231,7 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
     std::vector<uint8_t> mask(n);
     if (first->GetMaskBand()->RasterIO(GF_Read, 0, 0, e.width, e.height, mask.data(), e.width,
                                        e.height, GDT_Byte, 0, 0, nullptr) != CE_None)
-      throw Error(path + ": GDAL cannot read the " + what + "'s transparency");
+      gdal_error(path + ": GDAL cannot read the " + what + "'s transparency");
     for (size_t i = 0; i < n; ++i) e.excluded[i] |= mask[i] == 0;
   }
   return e;
@@ -236,11 +239,13 @@ Exemplar read_painting(const std::string& path, const std::string& what) {
 
 std::vector<uint8_t> read_mask(const std::string& path, int width, int height,
                                const std::string& what) {
+  const GdalSession gdal;
   return read_band(*open_image(path, what), path, width, height, what);
 }
 
 std::vector<float> read_value_band(const std::string& path, int& width, int& height,
                                    const std::string& what) {
+  const GdalSession gdal;
   const auto ds = open_image(path, what);
   if (ds->GetRasterCount() != 1)
     throw Error(path + ": the " + what + " has " + std::to_string(ds->GetRasterCount()) +
@@ -251,7 +256,7 @@ std::vector<float> read_value_band(const std::string& path, int& width, int& hei
   std::vector<float> values(size_t(width) * size_t(height));
   if (band->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float32, 0, 0,
                      nullptr) != CE_None)
-    throw Error(path + ": GDAL cannot read the " + what);
+    gdal_error(path + ": GDAL cannot read the " + what);
   int has_nodata = 0;
   if (const double nodata = band->GetNoDataValue(&has_nodata); has_nodata)
     std::replace(values.begin(), values.end(), float(nodata), float(NAN));
@@ -259,6 +264,7 @@ std::vector<float> read_value_band(const std::string& path, int& width, int& hei
 }
 
 std::vector<uint8_t> read_class_image(const std::string& path, int width, int height) {
+  const GdalSession gdal;
   const auto ds = open_image(path, "class image", GDAL_OF_RASTER | GDAL_OF_VECTOR);
   if (ds->GetRasterCount() > 0) return read_band(*ds, path, width, height, "class image");
   return rasterized_classes(*ds, path, width, height);

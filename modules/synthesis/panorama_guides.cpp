@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/sibling_path.h"
+#include "gdal/gdal_env.h"
 #include "painting.h"
 
 namespace maquette::synthesis {
@@ -14,10 +15,10 @@ namespace maquette::synthesis {
 std::vector<std::vector<float>> read_guide_bands(const std::string& path, int width, int height,
                                                  const std::string& of,
                                                  const std::vector<GuideBand>& wanted) {
-  GDALAllRegister();
+  const GdalSession gdal;
   const std::unique_ptr<GDALDataset> ds(
       GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-  if (!ds) throw Error(path + ": GDAL cannot open the guides");
+  if (!ds) gdal_error(path + ": GDAL cannot open the guides");
   if (ds->GetRasterXSize() != width || ds->GetRasterYSize() != height)
     throw Error(path + ": the guides are " + std::to_string(ds->GetRasterXSize()) + " x " +
                 std::to_string(ds->GetRasterYSize()) + " pixels, " + of + " " +
@@ -31,7 +32,7 @@ std::vector<std::vector<float>> read_guide_bands(const std::string& path, int wi
       values.resize(size_t(width) * size_t(height));
       if (band->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float32, 0,
                          0) != CE_None)
-        throw Error(path + ": GDAL cannot read band '" + wish.name + "'");
+        gdal_error(path + ": GDAL cannot read band '" + wish.name + "'");
     }
     if (values.empty() && wish.required)
       throw Error(path + ": no band '" + wish.name + "' (" + wish.hint + ")");

@@ -353,7 +353,9 @@ TEST(Mpi, FailingCellNamesRankStepAndCell) {
   EXPECT_NE(r.exit_code, 0);
   const std::string message =
       "rank 1 of 2: step 5 (fixture.blur) failed on cell Q2300: fixture failure requested";
-  EXPECT_NE(r.err.find("maquette: error: " + message), std::string::npos) << r.err;
+  // The error names the pipeline; the run's record, of that pipeline, need not.
+  EXPECT_NE(r.err.find("maquette: error: " + dir + "/pipeline.json: " + message), std::string::npos)
+      << r.err;
   EXPECT_TRUE(store_valid(dir));
   EXPECT_EQ(rows(dir + "/out.mqt", "SELECT status FROM runs"),
             std::vector<std::string>{"failed: " + message + "|"});
@@ -531,9 +533,11 @@ TEST(MpiStoreCopies, DifferentCopyIsRefusedBeforeAnythingRuns) {
                           [](const std::string& row) { return row.starts_with("runs|1|"); }));
   const Result r = run_copies(dir, 3);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("maquette: error: rank 2 of 3: its copy of the store out.mqt differs from "
-                       "the writer's (rank 0): /artifacts/assessment is nothing there"),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find(
+          "maquette: error: pipeline.json: rank 2 of 3: its copy of the store out.mqt differs from "
+          "the writer's (rank 0): /artifacts/assessment is nothing there"),
+      std::string::npos)
       << r.err;
   EXPECT_EQ(store_state(dir), writer);
   EXPECT_EQ(store_state(rank_dir(dir, 1)), copy);
@@ -578,7 +582,8 @@ TEST(MpiStoreCopies, IngestIsRefused) {
                "geometry": {"type": "Point", "coordinates": [30.5, -10.2]}}]})";
   const Result r = run_copies(dir.string(), 2);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("maquette: error: rank 0 of 2: step 1 (ingest): writes on the writer rank "
+  EXPECT_NE(r.err.find("maquette: error: pipeline.json: rank 0 of 2: step 1 (ingest): writes on "
+                       "the writer rank "
                        "alone, which --store-copies cannot pass to the other ranks' copies"),
             std::string::npos)
       << r.err;

@@ -71,42 +71,46 @@ TEST(Pipeline, MalformedJsonNamesLineAndColumn) {
 TEST(Pipeline, UnknownOperator) {
   json doc = demo_pipeline();
   doc["steps"][1]["op"] = "fixture.blurr";
-  EXPECT_THAT(
-      parse_error(doc),
-      ::testing::StartsWith("step 2 (fixture.blurr): op: unknown operator 'fixture.blurr'"));
+  EXPECT_THAT(parse_error(doc),
+              ::testing::StartsWith(
+                  "p.json: step 2 (fixture.blurr): op: unknown operator 'fixture.blurr'"));
 }
 
 TEST(Pipeline, MissingOrWrongTypedParameter) {
   json doc = demo_pipeline();
   doc["steps"][0]["params"].erase("seed");
-  EXPECT_EQ(parse_error(doc), "step 1 (fixture.fill): params: missing required field 'seed'");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: step 1 (fixture.fill): params: missing required field 'seed'");
   doc["steps"][0]["params"]["seed"] = "abc";
-  EXPECT_EQ(parse_error(doc), "step 1 (fixture.fill): params.seed: expected a number, got \"abc\"");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: step 1 (fixture.fill): params.seed: expected a number, got \"abc\"");
   doc["steps"][0]["params"]["seed"] = 1;
   doc["steps"][1]["params"]["sleep_ms"] = 20000;
   EXPECT_EQ(parse_error(doc),
-            "step 2 (fixture.blur): params.sleep_ms: 20000 is above the maximum 10000");
+            "p.json: step 2 (fixture.blur): params.sleep_ms: 20000 is above the maximum 10000");
 }
 
 TEST(Pipeline, PortErrors) {
   json doc = demo_pipeline();
   doc["steps"][1]["inputs"] = {{"source", "height"}};
   EXPECT_THAT(parse_error(doc),
-              HasSubstr("step 2 (fixture.blur): inputs.source: unknown input port"));
+              HasSubstr("p.json: step 2 (fixture.blur): inputs.source: unknown input port"));
   doc["steps"][1]["inputs"] = json::object();
-  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): inputs: missing required input 'src'");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: step 2 (fixture.blur): inputs: missing required input 'src'");
   doc = demo_pipeline();
   doc["steps"][1]["outputs"] = json::object();
-  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): outputs: map at least one of: dst");
+  EXPECT_EQ(parse_error(doc), "p.json: step 2 (fixture.blur): outputs: map at least one of: dst");
   doc["steps"][1]["outputs"] = {{"dst", "height"}};
   EXPECT_EQ(parse_error(doc),
-            "step 2 (fixture.blur): outputs.dst: layer 'height' is also the step's input");
+            "p.json: step 2 (fixture.blur): outputs.dst: layer 'height' is also the step's input");
   doc["steps"][1]["outputs"] = {{"dst", "scan"}};
   EXPECT_EQ(parse_error(doc),
-            "step 4 (fixture.region_scan): outputs.dst: layer 'scan' is already written by step 2");
+            "p.json: step 4 (fixture.region_scan): outputs.dst: layer 'scan' is already written by "
+            "step 2");
   doc = demo_pipeline();
   doc["steps"][1]["param"] = json::object();
-  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): unknown field 'param'");
+  EXPECT_EQ(parse_error(doc), "p.json: step 2 (fixture.blur): unknown field 'param'");
 }
 
 TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
@@ -141,10 +145,11 @@ TEST(Pipeline, UnknownLayerIsFoundBeforeAnythingRuns) {
   test::TempDir dir;
   json doc = demo_pipeline();
   doc["steps"][1]["inputs"]["src"] = "hieght";
-  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  const std::string file = test::write_pipeline(dir, doc);
+  const Pipeline p = test::load_fixture_pipeline(file);
   const std::string store = dir.file("out.mqt");
   EXPECT_EQ(error_of([&] { run_pipeline(p, RunOptions{}); }),
-            "step 2 (fixture.blur): inputs.src: unknown layer 'hieght' in " + store);
+            file + ": step 2 (fixture.blur): inputs.src: unknown layer 'hieght' in " + store);
   EXPECT_FALSE(std::filesystem::exists(store));
 }
 
@@ -152,12 +157,13 @@ TEST(Pipeline, RefineOnlyForRefinableCellOperators) {
   json doc = demo_pipeline();
   doc["steps"][1]["refine"] = 2;
   EXPECT_EQ(parse_error(doc),
-            "step 2 (fixture.blur): refine: the operator writes its outputs at its inputs' "
+            "p.json: step 2 (fixture.blur): refine: the operator writes its outputs at its inputs' "
             "resolution only (not refinable)");
   doc["steps"][1]["refine"] = 13;
-  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): refine: 13 is outside 0..12");
+  EXPECT_EQ(parse_error(doc), "p.json: step 2 (fixture.blur): refine: 13 is outside 0..12");
   doc["steps"][1]["refine"] = "2";
-  EXPECT_EQ(parse_error(doc), "step 2 (fixture.blur): refine: expected an integer, got \"2\"");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: step 2 (fixture.blur): refine: expected an integer, got \"2\"");
   doc["steps"][1]["refine"] = 0;  // allowed everywhere: the inputs' resolution
   EXPECT_EQ(parse(doc).steps[1].refine, 0);
 }
@@ -171,19 +177,22 @@ TEST(Pipeline, ArtifactReferencesInParams) {
   fill["outputs"] = {{"value", "again"}};
   fill["params"]["weights"] = {{"$artifact", "smooth_sum"}};
   doc["steps"].push_back(fill);
-  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  const std::string file = test::write_pipeline(dir, doc);
+  const Pipeline p = test::load_fixture_pipeline(file);
   RunOptions options;
   options.quiet = true;
   // fixture.sum's artifact is {"count": ..., "sum": ...}, not the array of numbers "weights" is.
   EXPECT_THAT(error_of([&] { run_pipeline(p, options); }),
-              ::testing::MatchesRegex("step 5 \\(fixture.fill\\): params.weights: expected an "
-                                      "array, got \\{\"count\":16384,\"sum\":.*\\}"));
+              ::testing::MatchesRegex(
+                  ".*/pipeline.json: step 5 \\(fixture.fill\\): params.weights: expected an "
+                  "array, got \\{\"count\":16384,\"sum\":.*\\}"));
 
   doc["steps"][4]["params"]["weights"] = {{"$artifact", "smooth_total"}};
   const Pipeline typo = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
-  EXPECT_EQ(error_of([&] { run_pipeline(typo, options); }),
-            "step 5 (fixture.fill): params.weights: unknown artifact 'smooth_total' (not in " +
-                dir.file("out.mqt") + " nor written by an earlier step)");
+  EXPECT_EQ(
+      error_of([&] { run_pipeline(typo, options); }),
+      file + ": step 5 (fixture.fill): params.weights: unknown artifact 'smooth_total' (not in " +
+          dir.file("out.mqt") + " nor written by an earlier step)");
 }
 
 // A part of an artifact: fixture.sum's count as fixture.fill's seed gives the tiles of that seed
@@ -212,11 +221,12 @@ TEST(Pipeline, ArtifactPartsByJsonPointer) {
   EXPECT_EQ(a.count("again/Q2000"), 1u);
 
   test::TempDir bad;
-  const Pipeline p = test::load_fixture_pipeline(
-      test::write_pipeline(bad, fill_again({{"$artifact", "smooth_sum"}, {"pointer", "/total"}})));
-  EXPECT_THAT(error_of([&] { run_pipeline(p, options); }),
-              ::testing::StartsWith("step 5 (fixture.fill): params.seed.pointer: \"/total\" in "
-                                    "artifact 'smooth_sum': "));
+  const std::string file =
+      test::write_pipeline(bad, fill_again({{"$artifact", "smooth_sum"}, {"pointer", "/total"}}));
+  EXPECT_THAT(
+      error_of([&] { run_pipeline(test::load_fixture_pipeline(file), options); }),
+      ::testing::StartsWith(file + ": step 5 (fixture.fill): params.seed.pointer: \"/total\" in "
+                                   "artifact 'smooth_sum': "));
 }
 
 // An operator's check_params (fixture.fill: a seed under 20000) runs when the pipeline is read,
@@ -225,8 +235,9 @@ TEST(Pipeline, ArtifactPartsByJsonPointer) {
 TEST(Pipeline, TheOperatorsCheckOfItsParamsRunsBeforeAnythingRuns) {
   json doc = demo_pipeline();
   doc["steps"][0]["params"]["seed"] = 20000;
-  EXPECT_EQ(parse_error(doc),
-            "step 1 (fixture.fill): params.seed: 20000 is 20000 or more (the fixture's check)");
+  EXPECT_EQ(
+      parse_error(doc),
+      "p.json: step 1 (fixture.fill): params.seed: 20000 is 20000 or more (the fixture's check)");
 
   doc = demo_pipeline();
   doc["tile_size"] = 32;
@@ -235,11 +246,12 @@ TEST(Pipeline, TheOperatorsCheckOfItsParamsRunsBeforeAnythingRuns) {
   fill["params"]["seed"] = {{"$artifact", "smooth_sum"}, {"pointer", "/count"}};  // 64 x 32^2
   doc["steps"].push_back(fill);
   test::TempDir dir;
-  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+  const std::string file = test::write_pipeline(dir, doc);
   RunOptions options;
   options.quiet = true;
-  EXPECT_EQ(error_of([&] { run_pipeline(p, options); }),
-            "step 5 (fixture.fill): params.seed: 65536 is 20000 or more (the fixture's check)");
+  EXPECT_EQ(
+      error_of([&] { run_pipeline(test::load_fixture_pipeline(file), options); }),
+      file + ": step 5 (fixture.fill): params.seed: 65536 is 20000 or more (the fixture's check)");
 }
 
 TEST(Pipeline, DryRunPrintsThePlanAndWritesNothing) {

@@ -113,9 +113,11 @@ TEST(Refine, SameBitsWithOneAndTwoThreads) {
 
 TEST(Refine, TilesAboveTheLargestSizeAreRefusedBeforeRunning) {
   test::TempDir dir;
-  EXPECT_EQ(test::error_of([&] { run_in(dir, refine_pipeline(9), 1); }),
-            "step 2 (texture.procedural): refine: 9 levels finer than 16-sample tiles: tile size "
-            "8192 is above the largest, 4096");
+  EXPECT_EQ(
+      test::error_of([&] { run_in(dir, refine_pipeline(9), 1); }),
+      dir.file("pipeline.json") +
+          ": step 2 (texture.procedural): refine: 9 levels finer than 16-sample tiles: tile size "
+          "8192 is above the largest, 4096");
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.mqt")));
 }
 

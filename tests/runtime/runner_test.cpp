@@ -87,10 +87,12 @@ TEST(Runner, FailingOperatorNamesStepAndCellAndKeepsEarlierTiles) {
   run_in(dir, demo_pipeline(), 2);
   const auto before = test::snapshot(dir.file("out.mqt"));
 
-  const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, demo_pipeline()));
+  const std::string file = test::write_pipeline(dir, demo_pipeline());
+  const Pipeline p = test::load_fixture_pipeline(file);
   const std::string failing = p.region[20].ToText();
-  EXPECT_EQ(error_of([&] { run_in(dir, demo_pipeline(0, 0, failing), 2); }),
-            "step 2 (fixture.blur) failed on cell " + failing + ": fixture failure requested");
+  EXPECT_EQ(
+      error_of([&] { run_in(dir, demo_pipeline(0, 0, failing), 2); }),
+      file + ": step 2 (fixture.blur) failed on cell " + failing + ": fixture failure requested");
   // Cells written before the failure were rewritten with the same bits, the others untouched.
   EXPECT_EQ(test::first_difference(before, test::snapshot(dir.file("out.mqt"))), "");
 
@@ -112,9 +114,10 @@ TEST(Runner, ReportedFailureIsTheLowestFailingCell) {
   for (const int threads : {1, 2, 4}) {
     SCOPED_TRACE(std::to_string(threads) + " threads");
     test::TempDir dir;
-    const Pipeline p = test::load_fixture_pipeline(test::write_pipeline(dir, doc));
+    const std::string file = test::write_pipeline(dir, doc);
+    const Pipeline p = test::load_fixture_pipeline(file);
     EXPECT_EQ(error_of([&] { run_in(dir, doc, threads); }),
-              "step 2 (fixture.blur) failed on cell " + p.region[16].ToText() +
+              file + ": step 2 (fixture.blur) failed on cell " + p.region[16].ToText() +
                   ": fixture failure requested");
     const auto written =
         Store::open(dir.file("out.mqt"), Store::Mode::ReadOnly)->tile_cells("smooth");
@@ -128,7 +131,8 @@ TEST(Runner, OperatorThrowingANonStandardExceptionFailsTheRun) {
   json doc = demo_pipeline(0, 0, "Q2013");
   doc["steps"][1]["params"]["fail_with"] = "int";
   const std::string expected = "step 2 (fixture.blur) failed on cell Q2013: unknown exception";
-  EXPECT_EQ(error_of([&] { run_in(dir, doc, 2); }), expected);
+  // The run's record names the step; the error the pipeline file too.
+  EXPECT_EQ(error_of([&] { run_in(dir, doc, 2); }), dir.file("pipeline.json") + ": " + expected);
   EXPECT_EQ(test::run_statuses(dir.file("out.mqt")),
             std::vector<std::string>{"failed: " + expected});
 }
@@ -170,9 +174,11 @@ TEST(Runner, RegionMosaicSizeIsLimited) {
   json doc = demo_pipeline();
   doc["level"] = 5;
   doc["tile_size"] = 4096;
-  EXPECT_EQ(error_of([&] { run_in(dir, doc, 2); }),
-            "step 4 (fixture.region_scan): the region's mosaic would be 65536 x 65536 samples, "
-            "above the limit of 16384 x 16384");
+  EXPECT_EQ(
+      error_of([&] { run_in(dir, doc, 2); }),
+      dir.file("pipeline.json") +
+          ": step 4 (fixture.region_scan): the region's mosaic would be 65536 x 65536 samples, "
+          "above the limit of 16384 x 16384");
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.mqt")));
 }
 
@@ -191,11 +197,13 @@ TEST(Runner, HaloTilesAreDecodedOnce) {
 
 TEST(Runner, RegionOperatorNeedsOneFace) {
   test::TempDir dir;
-  EXPECT_EQ(error_of([&] {
-              run_in(dir, demo_pipeline(0, 0, "", {"Q33", "R22"}), 2);
-            }),
-            "step 4 (fixture.region_scan): a region operator needs all cells on one face, but they "
-            "span faces Q to R");
+  EXPECT_EQ(
+      error_of([&] {
+        run_in(dir, demo_pipeline(0, 0, "", {"Q33", "R22"}), 2);
+      }),
+      dir.file("pipeline.json") +
+          ": step 4 (fixture.region_scan): a region operator needs all cells on one face, but they "
+          "span faces Q to R");
 }
 
 TEST(Runner, StepsReadTilesOfTheRegionOnly) {

@@ -110,8 +110,9 @@ TEST(RegionSeams, ThreeFacesAtACornerAreRefused) {
   ASSERT_EQ(first.size(), 3u);
   test::TempDir dir;
   EXPECT_EQ(test::error_of([&] { run_in(dir, seam_pipeline(cells), 2); }),
-            "step 2 (fixture.region_seams): the region's cells " + first[0].ToText() +
-                " (face N), " + first[1].ToText() + " (face O) and " + first[2].ToText() +
+            dir.file("pipeline.json") + ": step 2 (fixture.region_seams): the region's cells " +
+                first[0].ToText() + " (face N), " + first[1].ToText() + " (face O) and " +
+                first[2].ToText() +
                 " (face P) lie on three faces meeting at a corner, which leave a gap when "
                 "unfolded into one plane: split the region there");
 }

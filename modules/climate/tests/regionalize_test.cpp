@@ -235,13 +235,14 @@ TEST_F(Regionalize, MissingValuesAreLeftOut) {
   EXPECT_EQ(error_of([&] {
               fit({{"stations", "stations"}, {"columns", {"t"}}}, {kCell});
             }),
-            "step 1 (climate.fit_stations) failed: climate.fit_stations: params.stations: "
+            "test: step 1 (climate.fit_stations) failed: climate.fit_stations: params.stations: "
             "artifact 'stations': station 4 ('3'): lat 95 is outside [-90, 90]");
 }
 
 TEST_F(Regionalize, BadInput) {
   const json base = {{"stations", "stations"}, {"columns", {"t"}}};
-  const std::string fit_failed = "step 1 (climate.fit_stations) failed: climate.fit_stations: ";
+  const std::string fit_failed =
+      "test: step 1 (climate.fit_stations) failed: climate.fit_stations: ";
   EXPECT_EQ(error_of([&] { fit(base, {kCell}); }),
             fit_failed + "params.stations: no artifact 'stations' in " + path_);
   put_json("stations", synthetic_stations());
@@ -288,8 +289,8 @@ TEST_F(Regionalize, BadInput) {
   // Regionalize: a mapped output without its column, and an unknown column.
   fit(base, {kCell});
   const Tile<float> dem = sample(kCell, kSize, [](LonLat) { return 1.0; });
-  const std::string failed =
-      "step 1 (climate.regionalize) failed on cell " + kCell.ToText() + ": climate.regionalize: ";
+  const std::string failed = "test: step 1 (climate.regionalize) failed on cell " + kCell.ToText() +
+                             ": climate.regionalize: ";
   EXPECT_EQ(
       error_of([&] {
         regionalize(kCell, dem, {{"fit", "fit"}});

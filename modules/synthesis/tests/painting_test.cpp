@@ -1,12 +1,14 @@
 // The painting's segmentation by colour on a tiny analytic case: its majority filter; a class
 // image drawn as polygons, against the pixel centres' classes worked out by hand (a class written
 // as text named by its feature); masks of one 8-bit band only; paintings with transparency, a
-// palette or 16 bits read as a viewer shows them.
+// palette or 16 bits read as a viewer shows them; a file GDAL cannot read named with GDAL's reason.
 #include "../painting.h"
 
 #include <gdal_priv.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -280,6 +282,31 @@ TEST(ReadPainting, SixteenBitsSpanTheirRangeOtherTypesAreNamed) {
       painting_error(dir + "/float.tif")
           .find("/float.tif: the painting's band 1 is Float32: a painting is 8-bit or 16-bit"),
       std::string::npos);
+}
+
+// A painting cut short, or not an image at all: GDAL's reason in the one error, GDAL's own lines
+// not printed besides (they were, three of them, before the error).
+TEST(ReadPainting, AFileGdalCannotReadIsNamedWithItsReasonAndNothingElsePrinted) {
+  const std::string dir = test::temp_dir();
+  const std::string whole = test::write_png(dir + "/whole.png", 96, 96, 3, [](int x, int y, int b) {
+    return int((uint32_t(x * 7919 + y * 104729 + b * 1299709) * 2654435761u) >> 24);
+  });
+  const auto size = std::filesystem::file_size(whole);
+  const std::string cut = dir + "/cut.png";
+  std::filesystem::copy_file(whole, cut);
+  std::filesystem::resize_file(cut, size / 2);
+  const std::string text = dir + "/text.png";
+  std::ofstream(text) << "not an image\n";
+
+  testing::internal::CaptureStderr();
+  const std::string cut_error = painting_error(cut);
+  const std::string text_error = painting_error(text);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  EXPECT_THAT(cut_error, testing::StartsWith(cut + ": GDAL cannot read the painting's pixels: "));
+  EXPECT_THAT(cut_error, testing::HasSubstr("libpng"));
+  EXPECT_THAT(text_error, testing::StartsWith(text + ": GDAL cannot open the painting: "));
+  EXPECT_THAT(text_error, testing::HasSubstr("not recognized as"));
+  EXPECT_EQ(painting_error(whole), "no error");
 }
 
 }  // namespace
