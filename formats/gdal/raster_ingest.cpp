@@ -100,6 +100,21 @@ void undo_failed_ingest(std::unique_ptr<Store> store, const std::string& layer, 
   }
 }
 
+// An ingest into an existing layer adds its part to the layer: where the sources have no data,
+// a tile they touch keeps the samples stored there (an earlier ingest's sources' part of the
+// tile), as a source later in one ingest fills only the nodata of those before it. (The whole tile
+// was replaced: a strip of nodata along the edge of the sources inside the tile.)
+void keep_stored_samples(const Store& store, const std::string& layer, CellId cell,
+                         const double* nodata, Tile<float>& tile) {
+  const std::optional<RawTile> stored = store.get_tile(layer, cell);
+  if (!stored) return;
+  const Tile<float> before = to_tile<float>(*stored, nodata);
+  const std::span<const float> was = before.data();
+  const std::span<float> now = tile.data();
+  for (size_t i = 0; i < now.size() && i < was.size(); ++i)
+    if (std::isnan(now[i])) now[i] = was[i];
+}
+
 // An ingest into an existing layer adds its footprint to the layer's (core/data_footprint.h); a
 // layer ingested before footprints were recorded gets none, since where its earlier sources lie
 // is not known.
@@ -211,6 +226,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
         const size_t begin = batches[chunk], end = batches[chunk + 1];
         for (size_t i = begin; i < end; ++i) {
           if (resampler->make(todo[i], layer.tile_size, tile)) {
+            if (!new_layer) keep_stored_samples(*store, layer.name, todo[i], nodata, tile);
             to_raw(tile, layer.dtype, nodata, raw);
             batch.put_tile(layer.name, todo[i], raw);
             ++written;

@@ -90,8 +90,13 @@ void warn_clicks_on_a_line(const PaintingFit& fit, const std::string& path) {
 void run(const FitOptions& o) {
   const PaintingFitJob& job = o.job;
   std::vector<std::string> outputs = {o.out};
-  if (!o.panorama.empty())
+  if (!o.panorama.empty()) {
     for (const std::string& file : panorama_files(o.panorama)) outputs.push_back(file);
+    check_outputs_distinct({{"OUT", outputs[0]},
+                            {"--panorama", outputs[1]},
+                            {"--panorama's guides", outputs[2]},
+                            {"--panorama's silhouettes", outputs[3]}});
+  }
   check_outputs_spare_inputs(outputs, {{"the store", o.store}, {"the control points", o.points}});
   if (!o.panorama.empty()) panorama_picture_format(o.panorama);  // before the fit, not after it
   const auto store =

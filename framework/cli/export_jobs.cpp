@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/geojson.h"
 #include "core/grid.h"
+#include "core/output_clash.h"
 #include "image/quicklook.h"
 #include "plugins/mesh_export.h"
 #include "runtime/plugin.h"
@@ -34,20 +35,27 @@ bool metres(const std::string& units) {
 // Runs an export writing files into the directory `dir`. Each file is written whole or not at all
 // (core/output_file.h); if the export fails, the files it wrote into a directory that did not
 // exist or was empty are removed again, so that a failed export leaves nothing behind.
+// Anything else at `dir` (a file: the store itself) is never removed.
 template <typename Export>
 void into_directory(const std::string& dir, Export&& write) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const bool existed = fs::is_directory(dir, ec);
-  const bool fresh = !existed || fs::is_empty(dir, ec);
+  const bool existed = fs::exists(fs::symlink_status(dir, ec));
+  const bool empty_directory = fs::is_directory(dir, ec) && fs::is_empty(dir, ec);
   try {
     write();
   } catch (...) {
-    if (fresh && !existed) fs::remove_all(dir, ec);
-    if (fresh && existed)
+    if (!existed) fs::remove_all(dir, ec);
+    if (empty_directory)
       for (const auto& entry : fs::directory_iterator(dir, ec)) fs::remove_all(entry.path(), ec);
     throw;
   }
+}
+
+// The store an export reads, once its output `out` is known not to be it (however spelled).
+std::unique_ptr<Store> open_source(const std::string& store, const std::string& out) {
+  check_outputs_spare_inputs({out}, {{"the store", store}});
+  return Store::open(store, Store::Mode::ReadOnly);
 }
 
 std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
@@ -59,14 +67,14 @@ std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
 }  // namespace
 
 void run_export(GtiffJob job) {
-  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const auto store = open_source(job.store, job.out);
   job.spec.region = region_of(job.region);
   export_geotiff(*store, default_grid(), job.spec, job.out);
   spdlog::info("wrote {} ({})", job.out, job.spec.crs);
 }
 
 void run_export(const PngJob& o) {
-  const auto store = Store::open(o.store, Store::Mode::ReadOnly);
+  const auto store = open_source(o.store, o.out);
   const Grid& grid = default_grid();
   const LayerInfo info = store->require_layer(o.layer);
   QuicklookStyle style;
@@ -113,7 +121,7 @@ void run_export(const PngJob& o) {
 }
 
 void run_export(const FeaturesJob& job) {
-  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const auto store = open_source(job.store, job.out);
   const LayerInfo layer = store->require_layer(job.layer);
   const std::vector<Feature> features =
       features_in_region(*store, default_grid(), layer, region_of(job.region));
@@ -122,7 +130,7 @@ void run_export(const FeaturesJob& job) {
 }
 
 void run_export(Tiles3dJob job) {
-  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const auto store = open_source(job.store, job.out);
   job.spec.region = region_of(job.region);
   if (!job.levels.empty()) {
     const size_t dots = job.levels.find("..");
@@ -143,14 +151,14 @@ void run_export(Tiles3dJob job) {
 }
 
 void run_glb_export(const MeshJob& job) {
-  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const auto store = open_source(job.store, job.out);
   plugin_function<decltype(maquette_mesh_glb)>(kMeshPlugin, kGlbEntry)(
       *store, default_grid(), GlbExport{job.terrain, job.content}, parse_cells(job.cells), job.out);
   spdlog::info("wrote {}", job.out);
 }
 
 void run_drc_export(const MeshJob& job) {
-  const auto store = Store::open(job.store, Store::Mode::ReadOnly);
+  const auto store = open_source(job.store, job.out);
   into_directory(job.out, [&] {
     plugin_function<decltype(maquette_mesh_drc)>(kMeshPlugin, kDrcEntry)(
         *store, default_grid(), job.terrain, parse_cells(job.cells), job.out);

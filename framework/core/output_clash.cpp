@@ -17,4 +17,15 @@ void check_outputs_spare_inputs(const std::vector<std::string>& outputs,
     }
 }
 
+void check_outputs_distinct(const std::vector<OutputName>& outputs) {
+  namespace fs = std::filesystem;
+  for (size_t i = 0; i < outputs.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      std::error_code ec;
+      if (fs::weakly_canonical(outputs[i].path, ec) == fs::weakly_canonical(outputs[j].path, ec))
+        throw Error(outputs[i].path + " is both " + outputs[j].what + " and " + outputs[i].what +
+                    ": give them other paths");
+    }
+}
+
 }  // namespace maquette

@@ -18,4 +18,13 @@ struct InputFile {
 void check_outputs_spare_inputs(const std::vector<std::string>& outputs,
                                 const std::vector<InputFile>& inputs);
 
+// An output file a command writes, named for messages: {"--panorama", "p.png"}.
+struct OutputName {
+  std::string what, path;
+};
+
+// Throws maquette::Error when two of `outputs` are one file (however spelled; the later would
+// replace the earlier): "p.png is both OUT and --panorama: give them other paths".
+void check_outputs_distinct(const std::vector<OutputName>& outputs);
+
 }  // namespace maquette

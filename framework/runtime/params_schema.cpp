@@ -143,6 +143,27 @@ json string_param(const std::string& def, const std::string& description) {
   return {{"type", "string"}, {"default", def}, {"description", description}};
 }
 
+namespace {
+
+constexpr const char* kNamesKey = "names";
+const char* const kNamedKinds[] = {"artifact", "layer", "output file"};  // by NamedKind
+
+}  // namespace
+
+json named_param(NamedKind kind, const std::optional<std::string>& def,
+                 const std::string& description) {
+  json p = {{"type", "string"}, {kNamesKey, kNamedKinds[int(kind)]}, {"description", description}};
+  if (def) p["default"] = *def;
+  return p;
+}
+
+std::optional<NamedKind> named_kind(const json& param_schema) {
+  if (!param_schema.is_object() || !param_schema.contains(kNamesKey)) return std::nullopt;
+  for (int k = 0; k < 3; ++k)
+    if (param_schema.at(kNamesKey) == kNamedKinds[k]) return NamedKind(k);
+  return std::nullopt;
+}
+
 json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description) {
   return {{"type", "integer"},
           {"minimum", min},

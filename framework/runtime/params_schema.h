@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace maquette {
@@ -20,5 +21,19 @@ nlohmann::json validate_params(const nlohmann::json& schema, const nlohmann::jso
 nlohmann::json number_param(double min, double max, double def, const std::string& description);
 nlohmann::json integer_param(int64_t min, int64_t max, int64_t def, const std::string& description);
 nlohmann::json string_param(const std::string& def, const std::string& description);
+
+// What a string param names (the schema keyword "names"), checked by the planner (run_plan.h)
+// before anything runs, a dry run too:
+// - Artifact, Layer: an artifact or a layer the step reads from the store or an earlier step's
+//   output (by name, as climate.regionalize's "fit"): it must be there, and no output of the step
+//   may have its name (the step would replace what it reads);
+// - OutputFile: a file the operator writes, relative to the working directory: refused when it is
+//   the pipeline's store or file (it would replace it).
+// An empty value names nothing. `def`: the default, none for a required param.
+enum class NamedKind { Artifact, Layer, OutputFile };
+nlohmann::json named_param(NamedKind kind, const std::optional<std::string>& def,
+                           const std::string& description);
+// The kind a param's schema names, if it names one.
+std::optional<NamedKind> named_kind(const nlohmann::json& param_schema);
 
 }  // namespace maquette

@@ -6,10 +6,12 @@
 
 #include "core/data_footprint.h"
 #include "core/error.h"
+#include "core/output_clash.h"
 #include "core/region.h"
 #include "core/tile.h"
 #include "core/unfolded_faces.h"
 #include "runtime/artifact_refs.h"
+#include "runtime/params_schema.h"
 
 namespace maquette {
 namespace {
@@ -38,6 +40,7 @@ class Planner {
     sp.tile_size = pipeline_.tile_size;
     const OperatorSpec& spec = step.op->spec();
     check_artifact_refs(step);
+    check_named_params(step);
     if (spec.kind == OperatorKind::Task) return plan_task(step, std::move(sp));
     for (const auto& in : spec.inputs) {
       const auto it = step.inputs.find(in.name);
@@ -175,10 +178,50 @@ class Planner {
   // Artifacts in params ({"$artifact": NAME}) must be in the store or written by an earlier step.
   void check_artifact_refs(const PipelineStep& step) const {
     for (const auto& [path, name] : artifact_refs(step.params))
-      if (!artifacts_.count(name) && !written_.count(name) &&
-          !(store_ != nullptr && store_->get_artifact(name)))
-        throw Error(step.label() + ": " + path + ": unknown artifact '" + name + "' (not in " +
-                    pipeline_.store_path + " nor written by an earlier step)");
+      require_artifact(step.label() + ": " + path, name);
+  }
+
+  // `where`: "step 2 (op): params.fit".
+  void require_artifact(const std::string& where, const std::string& name) const {
+    if (!artifacts_.count(name) && !written_.count(name) &&
+        !(store_ != nullptr && store_->get_artifact(name)))
+      throw Error(where + ": unknown artifact '" + name + "' (not in " + pipeline_.store_path +
+                  " nor written by an earlier step)");
+  }
+
+  // The params naming what the step reads or writes (params_schema.h, named_param).
+  void check_named_params(const PipelineStep& step) const {
+    const json& schema = step.op->spec().params_schema;
+    if (!schema.contains("properties")) return;
+    for (const auto& [key, param] : schema.at("properties").items()) {
+      const std::optional<NamedKind> kind = named_kind(param);
+      const auto value = step.params.find(key);  // a string, once validated
+      if (!kind || value == step.params.end() || !value->is_string() ||
+          value->get_ref<const std::string&>().empty())
+        continue;
+      const std::string& name = value->get_ref<const std::string&>();
+      const std::string where = step.label() + ": params." + key;
+      if (*kind == NamedKind::OutputFile) {
+        try {
+          check_outputs_spare_inputs(
+              {name}, {{"the store", pipeline_.store_path}, {"the pipeline", pipeline_.source}});
+        } catch (const Error& e) {
+          throw Error(where + ": " + e.what());
+        }
+        continue;
+      }
+      for (const auto& [port, output] : step.outputs)
+        if (output == name)
+          throw Error(step.label() + ": outputs." + port + ": '" + name +
+                      "' is also what the step reads (params." + key + ")");
+      if (*kind == NamedKind::Artifact) {
+        require_artifact(where, name);
+      } else if (!produced_.count(name) && !written_.count(name) &&
+                 !(store_ != nullptr && store_->layer(name))) {
+        throw Error(where + ": unknown layer '" + name + "' (not in " + pipeline_.store_path +
+                    " nor written by an earlier step)");
+      }
+    }
   }
 
   // The layer `name` given to a port taking `kind` layers, written by an earlier step or in the

@@ -35,8 +35,8 @@ OperatorSpec regionalize_spec() {
       {"additionalProperties", false},
       {"required", {"fit"}},
       {"properties",
-       {{"fit",
-         {{"type", "string"}, {"description", "artifact of climate.fit_stations in the store"}}},
+       {{"fit", named_param(NamedKind::Artifact, std::nullopt,
+                            "artifact of climate.fit_stations in the store")},
         {"temperature_column", string_param("", "fitted column for output 'temperature'")},
         {"precipitation_column", string_param("", "fitted column for output 'precipitation'")}}}};
   return s;

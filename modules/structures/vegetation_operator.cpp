@@ -12,6 +12,7 @@
 #include "gdal/vertical_datum.h"
 #include "operators.h"
 #include "poisson_disk.h"
+#include "runtime/params_schema.h"
 #include "vegetation_plant.h"
 #include "vegetation_random.h"
 #include "vegetation_stroke.h"
@@ -62,7 +63,9 @@ OperatorSpec vegetation_spec() {
           {"default", {{{"name", "builtin:broadleaf"}, {"weight", 1}}}}}},
         {"scale", scale},
         {"heading_deg", heading},
-        {"spacings", {{"type", "string"}, {"default", ""}}}}},
+        {"spacings", named_param(NamedKind::Artifact, "",
+                                 "artifact of structures.vegetation_spacing giving the strokes "
+                                 "without spacing_m theirs")}}},
       {"additionalProperties", false}};
   return s;
 }

@@ -53,11 +53,10 @@ OperatorSpec fill_voids_spec() {
            "border) or laplace (membrane, stays within the border's range); larger voids: "
            "membrane"}}},
         {"pyramid",
-         {{"type", "string"},
-          {"default", ""},
-          {"description",
-           "the layer the input 'dem' reads: voids larger than 63 pixels are filled through its "
-           "overview pyramid in the run's store (required when there are such voids)"}}}}}};
+         named_param(NamedKind::Layer, "",
+                     "the layer the input 'dem' reads: voids larger than 63 pixels are filled "
+                     "through its overview pyramid in the run's store (required when there are "
+                     "such voids)")}}}};
   return s;
 }
 

@@ -3,10 +3,10 @@
 // Gaussian mixture, k given or chosen; colour_clusters.h) and optionally its density plot as a PNG.
 // The artifact's "centres" are the "centres" parameter of texture.classify.
 #include <algorithm>
-#include <fstream>
 
 #include "colour_clusters.h"
 #include "core/error.h"
+#include "core/output_file.h"
 #include "hs_classes.h"
 #include "hs_plot.h"
 #include "illumination.h"
@@ -46,15 +46,11 @@ OperatorSpec cluster_spec() {
         {"k_max", integer_param(2, kMaxK, 8, "largest k tried when k is \"auto\"")},
         {"method", {{"type", "string"}, {"enum", {"kmeans", "gmm"}}, {"default", "kmeans"}}},
         {"space", {{"type", "string"}, {"enum", {"hs", "hsv", "lab"}}, {"default", "hs"}}},
-        {"out",
-         {{"type", "string"},
-          {"default", ""},
-          {"description", "also write the result to this file"}}},
+        {"out", named_param(NamedKind::OutputFile, "", "also write the result to this file")},
         {"plot",
-         {{"type", "string"},
-          {"default", ""},
-          {"description",
-           "write the hue-saturation density plot to this PNG file (\"hs\", \"hsv\")"}}}}}};
+         named_param(
+             NamedKind::OutputFile, "",
+             "write the hue-saturation density plot to this PNG file (\"hs\", \"hsv\")")}}}};
   s.params_schema["properties"].update(grey_params_schema());
   s.params_schema["properties"].update(illumination_params_schema());
   return s;
@@ -180,9 +176,11 @@ class ClusterOp : public ReduceOperator {
     const json doc = clusters_document(request, found, hist);
     const std::string text = doc.dump();
     if (const std::string out = params.at("out"); !out.empty()) {
-      std::ofstream file(out);
-      if (!(file << text << '\n'))
-        throw Error("texture.cluster: params.out: cannot write '" + out + "'");
+      try {
+        write_file_whole(out, text + '\n');  // whole or not at all
+      } catch (const Error& e) {
+        throw Error(std::string("texture.cluster: params.out: ") + e.what());
+      }
     }
     if (const std::string plot = params.at("plot"); !plot.empty()) {
       std::vector<Hsv> marks;

@@ -2,10 +2,10 @@
 // (paper 5.2.3), merged in cell-id order; finished into a model document (hierarchy.h).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "calibration.h"
 #include "core/error.h"
+#include "core/output_file.h"
 #include "fit_inputs.h"
 #include "hierarchy.h"
 #include "illumination.h"
@@ -97,10 +97,8 @@ OperatorSpec fit_spec() {
                       "pixels reach coverage 0.5: sharper class edges (calibration.h)")},
         {"sample_step",
          integer_param(1, 64, 4, "calibration sample: every n-th pixel of every n-th row")},
-        {"out",
-         {{"type", "string"},
-          {"default", ""},
-          {"description", "also write the model document to this file (for model_file)"}}}}}};
+        {"out", named_param(NamedKind::OutputFile, "",
+                            "also write the model document to this file (for model_file)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
   s.params_schema["properties"].update(colour_incidence_param());
   return s;
@@ -278,9 +276,11 @@ class Fit : public ReduceOperator {
     doc["fitted_classes"] = summary;
     const std::string text = doc.dump(1);
     if (const std::string out = params.at("out"); !out.empty()) {
-      std::ofstream file(out);
-      if (!(file << text << '\n'))
-        throw Error(std::string(kOp) + ": params.out: cannot write '" + out + "'");
+      try {
+        write_file_whole(out, text + '\n');  // whole or not at all
+      } catch (const Error& e) {
+        throw Error(std::string(kOp) + ": params.out: " + e.what());
+      }
     }
     return Artifact::FromText(
         "model", text,

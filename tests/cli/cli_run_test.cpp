@@ -15,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/json_file.h"
 #include "run_cli.h"
 #include "store/store.h"
 
@@ -222,6 +223,23 @@ TEST_F(CliRun, AnOutputRedefiningAStoredLayerIsRefusedBeforeAnyWrite) {
   const CliResult dry = run_maquette("run " + dir_ + "/bad.json --dry-run");
   EXPECT_NE(dry.exit_code, 0);
   EXPECT_NE(dry.err.find(message), std::string::npos) << dry.err;
+}
+
+// A file an operator writes (texture.cluster's "out", "plot") may not be the store or the
+// pipeline: it replaced the store with JSON or a PNG, exit 0 (an audit's find).
+TEST_F(CliRun, AFileAStepWritesIsNeitherTheStoreNorThePipeline) {
+  json p = small_pipeline(store_);
+  p["steps"] = {{{"op", "texture.cluster"},
+                 {"inputs", {{"rgb", "hs"}}},
+                 {"outputs", {{"clusters", "clusters"}}},
+                 {"params", {{"k", 3}, {"out", store_}}}}};
+  expect_refused(p.dump(), "bad.json: step 1 (texture.cluster): params.out: " + store_ +
+                               " is the store " + store_ +
+                               ": it would be replaced; give another output path");
+  p["steps"][0]["params"] = {{"k", 3}, {"plot", dir_ + "/bad.json"}};
+  expect_refused(p.dump(), "step 1 (texture.cluster): params.plot: " + dir_ +
+                               "/bad.json is the pipeline " + dir_ + "/bad.json: it would be");
+  EXPECT_EQ(read_text_file(dir_ + "/bad.json"), p.dump());
 }
 
 TEST_F(CliRun, MissingRequiredParameterIsNamed) {

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "export_fixture.h"
 #include "run_cli.h"
+#include "store/store.h"
 
 namespace maquette::test {
 namespace {
@@ -48,6 +50,33 @@ TEST(ExportBadInput, UnwritableOutput) {
   expect_refused("--layer dem", "cannot create", "/nonexistent-dir/out.tif");
   expect_refused("--layer dem --crs EPSG:4326", "/nonexistent-dir/out.tif",
                  "/nonexistent-dir/out.tif");
+}
+
+// The store given as OUT (however spelled) was replaced by the picture, exit 0; a file given as
+// tiles3d's or drc's directory, the store too, was removed by the failed export's clean-up (an
+// audit's finds). Each is refused and left as it was.
+TEST(ExportBadInput, TheStoreOrAFileGivenAsTheOutputIsLeftAsItWas) {
+  const std::string dir = temp_dir(), store = dir + "/s.mqt", notes = dir + "/notes.txt";
+  std::filesystem::copy_file(export_fixture().store_path, store);
+  std::ofstream(notes) << "precious\n";
+  const std::string before = file_fingerprint(store), notes_before = file_fingerprint(notes);
+  for (const std::string& args :
+       {"png " + store + " " + store + " --layer dem",
+        "gtiff " + store + " " + store + " --layer dem",
+        "png " + store + " " + dir + "/./s.mqt --layer dem",
+        "tiles3d " + store + " " + store + " --dem dem",
+        "drc " + store + " " + store + " --dem dem --cells " +
+            Store::open(store, Store::Mode::ReadOnly)->tile_cells("dem").front().ToText()}) {
+    const CliResult r = run_maquette("export " + args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find("is the store " + store + ": it would be replaced"), std::string::npos)
+        << args << ": " << r.err;
+    EXPECT_EQ(file_fingerprint(store), before) << args;
+  }
+  const CliResult r = run_maquette("export tiles3d " + store + " " + notes + " --dem dem");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(notes), std::string::npos) << r.err;
+  EXPECT_EQ(file_fingerprint(notes), notes_before);
 }
 
 TEST(ExportBadInput, PngUnknownLayerAndBadBands) {

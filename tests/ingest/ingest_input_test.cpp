@@ -190,6 +190,37 @@ TEST_F(IngestInput, MosaicLaterSourcesFillOnlyNodata) {
   EXPECT_GT(twos, 1000);
 }
 
+// Two sources side by side, their edge inside tiles: ingested one after the other into the same
+// layer, the tiles they share hold both parts, as when ingested together (the second ingest's
+// tiles replaced the first's: a strip of nodata along the edge, an audit's find).
+TEST_F(IngestInput, ALaterIngestIntoTheLayerKeepsTheEarlierSourcesSamples) {
+  const std::string west = dir + "/west.tif", east = dir + "/east.tif";
+  write_raster(west, small_lonlat(7.0), ramp);
+  write_raster(east, small_lonlat(8.0), ramp);
+  RasterIngestOptions o;
+  o.layer = "m";
+  o.as = "dem";
+  o.level = 9;
+  o.tile_size = 64;
+  o.resampling = Resampling::Nearest;
+  const auto together = ingest(dir, "together", {west, east}, o);
+  ingest(dir, "apart", {west}, o);
+  const auto apart = ingest(dir, "apart", {east}, o);
+  const std::vector<CellId> cells = together->tile_cells("m");
+  ASSERT_EQ(apart->tile_cells("m"), cells);
+  for (const CellId c : cells)
+    EXPECT_EQ(apart->get_tile("m", c)->bytes, together->get_tile("m", c)->bytes) << c.ToText();
+  EXPECT_GT(cells.size(), 4u);
+  int with_data = 0;
+  for_each_sample(*apart, "m", [&](CellId, LonLat p, const float* v) {
+    if (p.lon > 7.005 && p.lon < 8.995 && p.lat > 45.005 && p.lat < 45.995) {
+      EXPECT_FALSE(std::isnan(v[0])) << p.lon << ", " << p.lat;
+      ++with_data;
+    }
+  });
+  EXPECT_GT(with_data, 1000);
+}
+
 TEST_F(IngestInput, ClassTableFromTheCommandLine) {
   const CliResult r = run_maquette(
       "-q ingest " + store +

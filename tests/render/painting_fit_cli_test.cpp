@@ -459,6 +459,10 @@ TEST(PaintingFitCli, OutputsSpareTheInputs) {
   // --panorama's format, from its extension, checked before the fit writes OUT.
   expect_error(fit + f.dir + "/ok.json --dem dem --panorama " + f.dir + "/view.tif",
                "a panorama is written as PNG (.png) or JPEG (.jpg, .jpeg), not '.tif'");
+  // OUT and --panorama one file: the picture replaced the fit, exit 0 (an audit's find).
+  expect_error(fit + f.dir + "/same.png --dem dem --panorama " + f.dir + "/./same.png",
+               f.dir + "/./same.png is both OUT and --panorama: give them other paths");
+  EXPECT_FALSE(std::ifstream(f.dir + "/same.png"));
   EXPECT_EQ(run_maquette("info " + store).exit_code, 0);
   EXPECT_EQ(read_json(points), read_json(f.points));
   EXPECT_FALSE(std::ifstream(f.dir + "/ok.json"));

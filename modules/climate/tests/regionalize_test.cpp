@@ -243,9 +243,22 @@ TEST_F(Regionalize, BadInput) {
   const json base = {{"stations", "stations"}, {"columns", {"t"}}};
   const std::string fit_failed =
       "test: step 1 (climate.fit_stations) failed: climate.fit_stations: ";
+  // What the step reads by name is there before anything runs, and is not what it writes.
+  const std::string not_here = " (not in " + path_ + " nor written by an earlier step)";
   EXPECT_EQ(error_of([&] { fit(base, {kCell}); }),
-            fit_failed + "params.stations: no artifact 'stations' in " + path_);
+            "test: step 1 (climate.fit_stations): params.stations: unknown artifact 'stations'" +
+                not_here);
   put_json("stations", synthetic_stations());
+  const std::string stations(store_->get_artifact("stations")->text());
+  EXPECT_EQ(error_of([&] {
+              run_steps(path_, {kCell}, kSize,
+                        {{{"op", "climate.fit_stations"},
+                          {"outputs", {{"fit", "stations"}}},
+                          {"params", base}}});
+            }),
+            "test: step 1 (climate.fit_stations): outputs.fit: 'stations' is also what the step "
+            "reads (params.stations)");
+  EXPECT_EQ(std::string(store_->get_artifact("stations")->text()), stations);
   json p = base;
   p["columns"] = {"tmax"};
   EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
@@ -284,8 +297,9 @@ TEST_F(Regionalize, BadInput) {
   EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
             fit_failed + "params.zones: feature 1 of 'points' is a Point, not a polygon");
   p["zones"] = "nothing";
-  EXPECT_EQ(error_of([&] { fit(p, {kCell}); }),
-            fit_failed + "params.zones: no layer 'nothing' in " + path_);
+  EXPECT_EQ(
+      error_of([&] { fit(p, {kCell}); }),
+      "test: step 1 (climate.fit_stations): params.zones: unknown layer 'nothing'" + not_here);
   // Regionalize: a mapped output without its column, and an unknown column.
   fit(base, {kCell});
   const Tile<float> dem = sample(kCell, kSize, [](LonLat) { return 1.0; });
@@ -301,6 +315,10 @@ TEST_F(Regionalize, BadInput) {
         regionalize(kCell, dem, {{"fit", "fit"}, {"temperature_column", "p"}}, {"temperature"});
       }),
       failed + "params.temperature_column: column 'p' is not in fit 'fit'");
+  EXPECT_EQ(error_of([&] {
+              regionalize(kCell, dem, {{"fit", "nofit"}});
+            }),
+            "test: step 1 (climate.regionalize): params.fit: unknown artifact 'nofit'" + not_here);
   EXPECT_EQ(error_of([&] {
               regionalize(kCell, dem, {{"fit", "stations"}, {"temperature_column", "t"}},
                           {"temperature"});

@@ -301,6 +301,29 @@ TEST(PaintingGuides, BadInputIsNamed) {
                 s.dir + "/pano-guides.tif");
   EXPECT_NE(r.find("is the painting's guides"), std::string::npos) << r;
   EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  // OUT is a picture: PNG or JPEG by its extension (other names got PNG bytes, exit 0).
+  r = run_paint(views().target + " " + write_params(s, views().params(), "good.json") + " " +
+                s.dir + "/painted.tif");
+  EXPECT_NE(r.find("painted.tif: a panorama is written as PNG (.png) or JPEG (.jpg, .jpeg), not "
+                   "'.tif'"),
+            std::string::npos)
+      << r;
+  EXPECT_FALSE(std::ifstream(s.dir + "/painted.tif"));
+  // A write that fails (files limited to 200 KiB: the picture fits, its source does not) fails
+  // the run and leaves neither file (GDAL said it only while closing the source: exit 0, the
+  // source cut short, an audit's find).
+  r = test::shell_output("(trap '' XFSZ; ulimit -f 200; " + std::string(MAQUETTE_BIN_DIR) +
+                         "/maquette-paint " + views().target + " " +
+                         write_params(s, views().params(), "good.json") + " " + s.dir +
+                         "/limited.png 2>&1; echo \"exit $?\")");
+  EXPECT_NE(r.find("limited-source.tif: GDAL cannot write it: "), std::string::npos) << r;
+  EXPECT_NE(r.find("exit 1"), std::string::npos) << r;
+  EXPECT_FALSE(std::ifstream(s.dir + "/limited.png"));
+  EXPECT_FALSE(std::ifstream(s.dir + "/limited-source.tif"));
+  // --help says what each argument is, and exits 0.
+  r = run_paint("--help");
+  EXPECT_NE(r.find("PANORAMA-guides.tif"), std::string::npos) << r;
+  EXPECT_NE(r.find("exit 0"), std::string::npos) << r;
   std::ifstream written(out);
   EXPECT_FALSE(written.good());  // nothing written on failure
 }
