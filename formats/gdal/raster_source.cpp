@@ -68,10 +68,20 @@ GDALDataset* open_dataset(const std::string& path) {
 std::shared_ptr<const OGRSpatialReference> crs_of(GDALDataset& ds, const std::string& path,
                                                   const std::string& src_crs) {
   auto srs = std::make_shared<OGRSpatialReference>();
+  const OGRSpatialReference* own = ds.GetSpatialRef();
+  const bool has_own = own && !own->IsEmpty();
   if (!src_crs.empty()) {
     if (srs->SetFromUserInput(src_crs.c_str()) != OGRERR_NONE)
       throw Error("--src-crs: '" + src_crs + "' is not a CRS GDAL understands");
-  } else if (const OGRSpatialReference* own = ds.GetSpatialRef(); own && !own->IsEmpty()) {
+    // For sources without one: one of its own another CRS silently misplaced the raster.
+    const char* same[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=YES",
+                          "CRITERION=EQUIVALENT_EXCEPT_AXIS_ORDER_GEOGCRS", nullptr};
+    if (has_own && !srs->IsSame(own, same))
+      throw Error(path + ": the raster has its own CRS (" +
+                  std::string(own->GetName() ? own->GetName() : "unnamed") + "), not --src-crs " +
+                  src_crs + ": --src-crs is for sources without one (to correct a wrong CRS: " +
+                  "gdal_edit.py -a_srs)");
+  } else if (has_own) {
     *srs = *own;
   } else {
     throw Error(path + ": the raster has no CRS; give one with --src-crs (e.g. EPSG:4326)");

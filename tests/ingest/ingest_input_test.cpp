@@ -99,6 +99,14 @@ TEST_F(IngestInput, RasterWithoutCrsUnlessSrcCrs) {
   const CliResult r =
       run_maquette("-q ingest " + dir + "/other.mqt --layer b --as dem --src-crs EPSG:4326 " + bad);
   EXPECT_EQ(r.exit_code, 0) << r.err;
+  // A raster with a CRS of its own: --src-crs is not its (it read degrees as UTM metres, exit 0,
+  // an audit's find), and the same CRS is no error.
+  expect_refused("--as dem --src-crs EPSG:32612 " + good,
+                 good + ": the raster has its own CRS (WGS 84), not --src-crs EPSG:32612");
+  EXPECT_EQ(
+      run_maquette("-q ingest " + dir + "/same.mqt --layer b --as dem --src-crs EPSG:4326 " + good)
+          .exit_code,
+      0);
 }
 
 TEST_F(IngestInput, RegionNotOverlappingTheSource) {
