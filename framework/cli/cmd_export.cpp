@@ -1,5 +1,6 @@
 // maquette export gtiff|png|geojson|gpkg|tiles3d|glb|drc: layers out of a store as GeoTIFF, PNG
 // quicklooks, GeoJSON or GeoPackage features, 3D Tiles, GLB or Draco terrain meshes.
+#include <charconv>
 #include <memory>
 
 #include "cli/commands.h"
@@ -17,9 +18,17 @@ void add_region_options(CLI::App* cmd, RegionOptions& o, const std::string& bbox
 
 // --max-mib (in bytes) and --force: refuse exports estimated above a size unless forced.
 void add_size_guard(CLI::App* cmd, int64_t& max_bytes, bool& force, const std::string& force_help) {
+  constexpr int64_t kMostMib = int64_t(1) << 30;  // 1 PiB: its bytes fit int64_t
   cmd->add_option("--max-mib", max_bytes, "Refuse exports estimated above this size (MiB)")
-      ->capture_default_str()
-      ->transform([](std::string v) { return std::to_string(std::stoll(v) << 20); });
+      ->default_str(std::to_string(max_bytes >> 20))
+      ->transform([](const std::string& v) {
+        int64_t mib = 0;
+        const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), mib);
+        if (error != std::errc() || end != v.data() + v.size() || mib < 1 || mib > kMostMib)
+          throw CLI::ValidationError("expected a whole number of MiB in 1.." +
+                                     std::to_string(kMostMib) + ", got '" + v + "'");
+        return std::to_string(mib << 20);
+      });
   cmd->add_flag("--force", force, force_help);
 }
 

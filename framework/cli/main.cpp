@@ -22,6 +22,21 @@ void add_threads_option(CLI::App* cmd, int& threads) {
 }
 }  // namespace maquette::cli
 
+namespace {
+
+// An option of a fixed number of values (--bbox W S E N) or of one comma-separated list (--bands
+// 4,3,2) takes just those: CLI11's vector options took the positionals after them too
+// (`--bbox W S E N a.tif b.tif`: "received 6").
+void stop_options_at_their_arguments(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options())
+    if ((opt->get_expected_max() > 1 && opt->get_expected_min() == opt->get_expected_max()) ||
+        opt->get_delimiter() != '\0')
+      opt->allow_extra_args(false);
+  for (CLI::App* sub : app.get_subcommands({})) stop_options_at_their_arguments(*sub);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace maquette::cli;
   maquette::keep_tile_buffers_mapped();
@@ -54,6 +69,7 @@ int main(int argc, char** argv) {
   add_render_command(app);
   add_demo_command(app);
   add_view_command(app);
+  stop_options_at_their_arguments(app);
 
   spdlog::set_default_logger(spdlog::stderr_color_mt("maquette"));
   spdlog::set_pattern("%^%l%$: %v");

@@ -46,6 +46,14 @@ TEST(ExportBadInput, LevelFinerThanTheLayer) {
   expect_refused("--layer dem --level 9", "--level 9 must be in 0..6");
 }
 
+TEST(ExportBadInput, MaxMibIsAWholeNumberOfMib) {
+  for (const char* bad : {"abc", "0", "1.5", "-5", "9000000000000"})
+    expect_refused(
+        std::string("--layer dem --max-mib ") + bad,
+        std::string("--max-mib: expected a whole number of MiB in 1..1073741824, got '") + bad +
+            "'");
+}
+
 TEST(ExportBadInput, UnwritableOutput) {
   expect_refused("--layer dem", "cannot create", "/nonexistent-dir/out.tif");
   expect_refused("--layer dem --crs EPSG:4326", "/nonexistent-dir/out.tif",

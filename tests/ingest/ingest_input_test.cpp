@@ -229,6 +229,23 @@ TEST_F(IngestInput, ALaterIngestIntoTheLayerKeepsTheEarlierSourcesSamples) {
   EXPECT_GT(with_data, 1000);
 }
 
+// --bbox takes its four values and --bands its one list, not the sources after them too
+// ("--bbox: At Most 4 required but received 5").
+TEST_F(IngestInput, BboxAndBandsTakeOnlyTheirValues) {
+  const std::string east = dir + "/east.tif";
+  write_raster(east, small_lonlat(8.0), ramp);
+  CliResult r = run_maquette("-q ingest " + dir +
+                             "/b.mqt --layer m --as dem --level 6 --bbox 7 45 9 "
+                             "46 " +
+                             good + " " + east);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  r = run_maquette("-q ingest " + dir + "/b.mqt --layer n --as dem --level 6 --bands 1 " + good +
+                   " " + east);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto store = Store::open(dir + "/b.mqt", Store::Mode::ReadOnly);
+  EXPECT_EQ(store->tile_cells("m"), store->tile_cells("n"));
+}
+
 TEST_F(IngestInput, ClassTableFromTheCommandLine) {
   const CliResult r = run_maquette(
       "-q ingest " + store +
