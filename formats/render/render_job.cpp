@@ -37,8 +37,13 @@ void check_place(const std::string& option, const GeodeticPoint& p) {
 }
 
 LayerInfo raster_layer(const Store& store, const std::string& option, const std::string& name) {
-  const auto info = store.layer(name);
+  std::optional<LayerInfo> info = store.layer(name);
   if (!info) throw Error(option + " layer '" + name + "' is not in the store " + store.path());
+  try {  // a layer a run left incomplete is not drawn (nor fitted to, nor warped)
+    info = store.require_layer(name);
+  } catch (const Error& e) {
+    throw Error(option + ": " + e.what());
+  }
   if (info->kind != LayerKind::Raster)
     throw Error(option + " layer '" + name + "' is a " + std::string(layer_kind_name(info->kind)) +
                 " layer: expected a raster");

@@ -31,6 +31,7 @@
 #include "render/render_job.h"
 #include "render/terrain_scene.h"
 #include "run_cli.h"
+#include "store/store.h"
 #include "synthetic_raster.h"
 #include "test_camera.h"
 
@@ -1106,6 +1107,25 @@ TEST(PanoramaCli, OutputThatIsTheStoreIsRefused) {
   const auto info = run_maquette("info " + store);
   EXPECT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("dem: raster float32"), std::string::npos) << info.out;
+}
+
+// A layer a run left incomplete is not drawn (it was, exit 0: an audit's find), as exports refuse
+// it.
+TEST(PanoramaCli, AnIncompleteLayerIsNotDrawn) {
+  const Fixture& f = fixture();
+  const std::string dir = test::temp_dir(), store = dir + "/cut.mqt";
+  std::filesystem::copy_file(f.store, store);
+  {
+    const auto s = Store::open(store, Store::Mode::ReadWrite);
+    s->mark_incomplete("dem", s->begin_run({{"steps", 1}}));
+  }
+  const auto r = run_maquette("render panorama " + store + " " + dir +
+                              "/p.png --dem dem --camera 10.15 45.02 1500 --size 20 10");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--dem: layer 'dem' in " + store + " is incomplete (run "),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/p.png"));
 }
 
 // OUT's extension says the picture's format (OUT.jpg was PNG bytes); another extension, or a
