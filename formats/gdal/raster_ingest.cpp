@@ -87,14 +87,20 @@ void to_raw(const Tile<float>& tile, DType dtype, const double* nodata, RawTile&
 // A failed ingest leaves the store as it was where it can: a store it created is removed, a
 // layer it created is dropped with its run; a layer that existed before stays marked incomplete
 // (its old tiles may be overwritten), for --resume to finish.
+// `untouched`: the layer as it was, complete, when the ingest committed none of its tiles: it is
+// given back its definition (the footprint) and is readable again, not left incomplete.
 void undo_failed_ingest(std::unique_ptr<Store> store, const std::string& layer, int64_t run,
-                        bool new_layer) {
+                        bool new_layer, const std::optional<LayerInfo>& untouched) {
   const std::string path = store->path();
   try {
-    if (store->created())
+    if (store->created()) {
       remove_if_created(std::move(store));
-    else if (new_layer)
+    } else if (new_layer) {
       store->drop_layer(layer, run);
+    } else if (untouched) {
+      store->create_layer(*untouched);
+      store->mark_complete(layer);
+    }
   } catch (const std::exception& e) {
     spdlog::warn("{}: could not undo the failed ingest of layer {}: {}", path, layer, e.what());
   }
@@ -173,6 +179,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   auto store = fresh ? created.get() : Store::open(store_path, Store::Mode::Create);
   const std::optional<LayerInfo> existing = store->layer(layer.name);
   const bool new_layer = !existing;
+  const bool was_complete = existing && !store->incomplete(layer.name);
   store->create_layer(with_earlier_footprint(layer, existing));
   std::vector<CellId> todo = plan.cells;
   int64_t run = 0;
@@ -206,7 +213,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
     RawTile raw;
   };
   tbb::enumerable_thread_specific<Worker> workers;
-  std::atomic<int64_t> written = 0, empty = 0;
+  std::atomic<int64_t> written = 0, empty = 0, committed = 0;  // committed: batches
   std::atomic<bool> failed = false;
   std::exception_ptr error;
   std::mutex error_mutex;
@@ -239,6 +246,7 @@ RasterIngestReport ingest_raster(const std::string& store_path,
         // children (the footprint's edge) still give the overview here, in parallel.
         if (layer.level > 0) batch.put_parent_overview(layer.name, todo[begin].parent());
         batch.commit();
+        ++committed;
         progress.advance(int64_t(end - begin));
       } catch (...) {
         std::lock_guard lock(error_mutex);
@@ -262,7 +270,9 @@ RasterIngestReport ingest_raster(const std::string& store_path,
       what = e.what();
     }
     store->finish_run(run, "failed: " + what);
-    undo_failed_ingest(std::move(store), layer.name, run, new_layer);
+    const bool untouched = was_complete && committed == 0 && !report.resumed;
+    undo_failed_ingest(std::move(store), layer.name, run, new_layer,
+                       untouched ? existing : std::nullopt);
     std::rethrow_exception(error);
   }
   spdlog::debug("ingest {}: tiles done at {:.3f} s", layer.name, seconds());

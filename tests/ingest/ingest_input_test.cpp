@@ -61,6 +61,26 @@ TEST_F(IngestInput, TruncatedGeoTiff) {
   expect_refused("--as dem " + bad, bad);
 }
 
+// A failed ingest into a layer that wrote none of its tiles leaves the layer readable, with its
+// tiles and footprint as they were (it was left incomplete: unreadable until the sources were
+// ingested again, an audit's find).
+TEST_F(IngestInput, AFailedIngestThatWroteNothingLeavesTheLayerReadable) {
+  // Tiled, its header whole and its last tiles cut: the ingest fails reading them, after the
+  // store is ready.
+  const std::string tiled = dir + "/tiled.tif", bad = dir + "/cut.tif";
+  shell_output("gdal_translate -q -co TILED=YES -co BLOCKXSIZE=32 -co BLOCKYSIZE=32 " + good + " " +
+               tiled);
+  std::filesystem::copy_file(tiled, bad);
+  std::filesystem::resize_file(bad, std::filesystem::file_size(tiled) * 2 / 3);
+  const auto layer_before = Store::open(store, Store::Mode::ReadOnly)->require_layer("a");
+  const CliResult r = run_maquette("ingest " + store + " --layer a --as dem " + bad);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(bad + ": read error"), std::string::npos) << r.err;
+  const auto after = Store::open(store, Store::Mode::ReadOnly);
+  EXPECT_EQ(after->require_layer("a").provenance, layer_before.provenance);
+  EXPECT_EQ(run_maquette("-q export png " + store + " " + dir + "/a.png --layer a").exit_code, 0);
+}
+
 TEST_F(IngestInput, CorruptFile) {
   const std::string bad = dir + "/corrupt.tif";
   std::ofstream(bad) << "II*\0 this is not a tiff at all";
