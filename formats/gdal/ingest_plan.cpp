@@ -148,7 +148,13 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
     throw Error("--vertical-datum is for height layers (--as dem), not --as " + o.as);
   if (sources.empty()) throw Error("no SOURCE given");
   if (o.layer.empty()) throw Error("--layer: a layer name is required");
-  log2_tile_size(o.tile_size);
+  try {
+    log2_tile_size(o.tile_size);
+  } catch (const Error& e) {
+    throw Error(std::string("--tile-size: ") + e.what());
+  }
+  if (o.tile_size < 2)  // the store's overviews halve a layer's tiles
+    throw Error("--tile-size 1: a layer's tiles are at least 2 x 2 samples");
   if (o.level && (*o.level < 0 || *o.level > CellId::kMaxLevel))
     throw Error("--level " + std::to_string(*o.level) + " is outside 0.." +
                 std::to_string(CellId::kMaxLevel));

@@ -178,6 +178,8 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
     } catch (const Error& e) {
       fail(source, "tile_size", e.what());
     }
+    if (p.tile_size < 2)  // the store's overviews halve a layer's tiles
+      fail(source, "tile_size", "1: a layer's tiles are at least 2 x 2 samples");
   }
 
   const json& steps = doc.at("steps");

@@ -183,6 +183,10 @@ TEST_F(IngestInput, BadOptionValues) {
   expect_refused("--as dem --resampling lanczos " + good, "--resampling 'lanczos'");
   expect_refused("--as heights " + good, "--as 'heights'");
   expect_refused("--as dem --bands 2 " + good, "--bands: " + good + " has no band 2");
+  // Before the store is touched (tile size 1 failed at the overviews, the layer left incomplete).
+  expect_refused("--as dem --tile-size 1 " + good,
+                 "--tile-size 1: a layer's tiles are at least 2 x 2 samples");
+  expect_refused("--as dem --tile-size 100 " + good, "--tile-size: tile size 100 is not a power");
 }
 
 TEST_F(IngestInput, MosaicLaterSourcesFillOnlyNodata) {
