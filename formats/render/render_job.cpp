@@ -107,7 +107,11 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   if (job.antialias < 1 || job.antialias > 8)
     throw Error("--antialias " + std::to_string(job.antialias) +
                 " must be 1 to 8 (samples per pixel side)");
-  if (int64_t(std::max(job.camera.width, job.camera.height)) * job.antialias > 65536)
+  const int64_t side = std::max(job.camera.width, job.camera.height);
+  if (side > 65536)
+    throw Error("--size " + std::to_string(job.camera.width) + " " +
+                std::to_string(job.camera.height) + ": a picture is at most 65536 pixels a side");
+  if (side * job.antialias > 65536)
     throw Error("--antialias " + std::to_string(job.antialias) + " on a picture of " +
                 std::to_string(job.camera.width) + " x " + std::to_string(job.camera.height) +
                 " pixels: its samples would span more than 65536 pixels; lower it");
@@ -122,6 +126,9 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   // (the DEM's tiles read for it freed before the mesh is made).
   const auto ground = TerrainHeights(store, grid, dem, job.exaggeration, datum)(at);
   if (job.above_ground) {
+    if (!(eye.height > 0))  // 0 or below: an eye in the ground, a picture of its inside
+      throw Error("--above-ground: the camera's height " + metres(eye.height) +
+                  " must be above the ground (more than 0 m)");
     if (!ground)
       throw Error("--above-ground: the --dem layer '" + dem.name +
                   "' has no data under the camera at lon " + std::to_string(eye.lon) + ", lat " +

@@ -1042,7 +1042,12 @@ TEST(PanoramaCli, BadInputIsNamed) {
   expect_error(
       "render panorama " + f.store + " " + out + " --dem dem --camera 9 45 100 " + "--above-ground",
       "no data under the camera");
+  expect_error("render panorama " + f.store + " " + out +
+                   " --dem dem --camera 10.15 45.15 -50 --above-ground",
+               "--above-ground: the camera's height -50.0 m must be above the ground");
   expect_error(f.render(out, "--fov 175"), "camera fov 175");
+  expect_error(f.render(out, "--size 100000 20"),
+               "--size 100000 20: a picture is at most 65536 pixels a side");
   expect_error(f.render(out, "--fov 0"), "out of range");
   expect_error(f.render(out, "--bend-radius -300"), "--bend-radius -300");
   expect_error(f.render(out, "--sample-pixels -1"), "--sample-pixels -1");
