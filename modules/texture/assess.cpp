@@ -32,18 +32,19 @@ OperatorSpec assess_spec() {
       "model's dominant class; CIEDE2000 after a Gaussian blur (sigma 4 px); each class's mean "
       "colour and colour spread in the image and in the texture";
   s.kind = OperatorKind::Reduce;
-  s.inputs = {{"classes", "observed surface types (texture.classify)", false},
-              {"predicted", "dominant class of the model (texture.procedural classes)", false},
-              {"rgb", "the observed image", true},
-              {"synthesized", "the synthesized image (texture.procedural imagery)", true},
-              {"hillshade",
-               "terrain.derive's hillshade at the image's sun: the image compared with its "
-               "illumination removed (as texture.fit's colours)",
-               true},
-              {"colour_classes",
-               "each pixel's own class (as texture.fit's): a class's image colour from its "
-               "pixels whose own class it is",
-               true}};
+  s.inputs = {
+      {"classes", "observed surface types (texture.classify)", false},
+      {"predicted", "dominant class of the model (texture.procedural classes)", false},
+      {.name = "rgb", .description = "the observed image", .optional = true, .channels = {3}},
+      {"synthesized", "the synthesized image (texture.procedural imagery)", true},
+      {"hillshade",
+       "terrain.derive's hillshade at the image's sun: the image compared with its "
+       "illumination removed (as texture.fit's colours)",
+       true},
+      {"colour_classes",
+       "each pixel's own class (as texture.fit's): a class's image colour from its "
+       "pixels whose own class it is",
+       true}};
   s.outputs = {{"report", "assessment (JSON)", DType::U8, 1, Semantics::Continuous, "", {}}};
   s.halo = std::max(kBlur, kMaxMajorityRadius);
   s.params_schema = {
@@ -56,6 +57,9 @@ OperatorSpec assess_spec() {
              "the predicted classes compared after texture.classify's majority filter "
              "of this radius (the observed map's minimum mapping unit; 0: as they are)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
+  s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    check_illumination_params(p, mapped.count("hillshade") > 0, "texture.assess");
+  };
   s.params_schema["properties"].update(colour_incidence_param());
   return s;
 }

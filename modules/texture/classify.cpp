@@ -30,7 +30,7 @@ OperatorSpec classify_spec() {
       "excluded land cover and "
       "the polygons of a features layer removed";
   s.kind = OperatorKind::Cell;
-  s.inputs = {{"rgb", "RGB image, 0..255", false},
+  s.inputs = {{.name = "rgb", .description = "RGB image, 0..255", .channels = {3}},
               {"dem", "elevation in metres (snow rule)", true},
               {"landcover", "land-cover classes (exclusion)", true},
               {"hillshade",
@@ -99,6 +99,9 @@ OperatorSpec classify_spec() {
            "empty: none"}}}}}};
   s.params_schema["properties"].update(grey_params_schema());
   s.params_schema["properties"].update(illumination_params_schema());
+  s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    check_illumination_params(p, mapped.count("hillshade") > 0, "texture.classify");
+  };
   return s;
 }
 

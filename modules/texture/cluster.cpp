@@ -18,6 +18,8 @@ namespace {
 
 constexpr int kMaxK = 32;
 
+ClusterRequest parse_request(const json& p);
+
 OperatorSpec cluster_spec() {
   OperatorSpec s;
   s.name = "texture.cluster";
@@ -27,7 +29,7 @@ OperatorSpec cluster_spec() {
       "k-means or Gaussian mixture with k given or chosen (centres for texture.classify), and "
       "its density plot";
   s.kind = OperatorKind::Reduce;
-  s.inputs = {{"rgb", "RGB image, 0..255", false},
+  s.inputs = {{.name = "rgb", .description = "RGB image, 0..255", .channels = {3}},
               {"hillshade",
                "terrain.derive's hillshade at the image's sun (illumination correction, as "
                "texture.classify's)",
@@ -53,6 +55,10 @@ OperatorSpec cluster_spec() {
              "write the hue-saturation density plot to this PNG file (\"hs\", \"hsv\")")}}}};
   s.params_schema["properties"].update(grey_params_schema());
   s.params_schema["properties"].update(illumination_params_schema());
+  s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    check_illumination_params(p, mapped.count("hillshade") > 0, "texture.cluster");
+    parse_request(p);  // k, and a plot only in "hs" or "hsv"
+  };
   return s;
 }
 

@@ -25,7 +25,9 @@ OperatorSpec fit_spec() {
       "histograms of height, slope and any named raster; layer hierarchy of paper 001 5.2.2";
   s.kind = OperatorKind::Reduce;
   s.inputs = {{"classes", "surface types (texture.classify)", false},
-              {"rgb", "the image the classes come from (layer colours)", false},
+              {.name = "rgb",
+               .description = "the image the classes come from (layer colours)",
+               .channels = {3}},
               {"dem", "elevation in metres", false},
               {"hillshade",
                "terrain.derive's hillshade at the image's sun: colours fitted on the image with "
@@ -100,6 +102,9 @@ OperatorSpec fit_spec() {
         {"out", named_param(NamedKind::OutputFile, "",
                             "also write the model document to this file (for model_file)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
+  s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    check_illumination_params(p, mapped.count("hillshade") > 0, kOp);
+  };
   s.params_schema["properties"].update(colour_incidence_param());
   return s;
 }

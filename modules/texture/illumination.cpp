@@ -56,12 +56,17 @@ nlohmann::json illumination_params_schema() {
                         "scene's brightness regressed on cos i (0: the cosine correction)")}};
 }
 
+void check_illumination_params(const nlohmann::json& params, bool hillshade_mapped,
+                               const std::string& op) {
+  if (params.at("sun_altitude").get<double>() > 0 && !hillshade_mapped)
+    throw Error(op + ": params.sun_altitude needs inputs.hillshade");
+}
+
 std::optional<Illumination> illumination_of(const nlohmann::json& params, const CellData& data,
                                             const std::string& op) {
+  check_illumination_params(params, data.inputs.count("hillshade") > 0, op);
   const double altitude = params.at("sun_altitude").get<double>();
   if (altitude <= 0) return std::nullopt;
-  if (!data.inputs.count("hillshade"))
-    throw Error(op + ": params.sun_altitude needs inputs.hillshade");
   return Illumination{&data.inputs.at("hillshade"), std::sin(altitude * std::numbers::pi / 180),
                       params.at("min_incidence_cos").get<double>(),
                       params.at("c_correction").get<double>()};

@@ -46,6 +46,11 @@ nlohmann::json colour_incidence_param();
 double colour_incidence(const nlohmann::json& params, const std::optional<Illumination>& light,
                         const std::string& op);
 
+// Throws naming `op` when params.sun_altitude asks for the correction and inputs.hillshade is not
+// mapped: an operator's check_params, told when the pipeline is read.
+void check_illumination_params(const nlohmann::json& params, bool hillshade_mapped,
+                               const std::string& op);
+
 // The correction asked for by params, reading inputs.hillshade; nullopt when sun_altitude is 0.
 // Throws naming `op` when the hillshade input is not mapped.
 std::optional<Illumination> illumination_of(const nlohmann::json& params, const CellData& data,

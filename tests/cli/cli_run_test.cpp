@@ -242,6 +242,29 @@ TEST_F(CliRun, AFileAStepWritesIsNeitherTheStoreNorThePipeline) {
   EXPECT_EQ(read_text_file(dir_ + "/bad.json"), p.dump());
 }
 
+// texture.cluster's params and its image told when the pipeline is read or planned, a dry run
+// too: they failed at the step's end, after the steps before it had run (an audit's find).
+TEST_F(CliRun, ATextureStepsParamsAndImageAreCheckedBeforeAnythingRuns) {
+  json p = small_pipeline(store_);
+  const json cluster = {{"op", "texture.cluster"},
+                        {"inputs", {{"rgb", "hs"}}},
+                        {"outputs", {{"clusters", "clusters"}}},
+                        {"params", {{"k", 3}}}};
+  p["steps"] = {cluster};
+  p["steps"][0]["params"]["k"] = "many";
+  expect_refused(p.dump(),
+                 "step 1 (texture.cluster): texture.cluster: params.k: expected an "
+                 "integer 1..");
+  p["steps"][0]["params"] = {{"k", 3}, {"sun_altitude", 30}};
+  expect_refused(p.dump(),
+                 "step 1 (texture.cluster): texture.cluster: params.sun_altitude needs "
+                 "inputs.hillshade");
+  p["steps"] = {cluster};
+  expect_refused(p.dump(), "step 1 (texture.cluster): inputs.rgb: layer 'hs' has 1 channel");
+  const CliResult dry = run_maquette("run " + dir_ + "/bad.json --dry-run");
+  EXPECT_NE(dry.exit_code, 0);
+}
+
 TEST_F(CliRun, MissingRequiredParameterIsNamed) {
   json p = small_pipeline(store_);
   p["steps"] = {{{"op", "fixture.fill"}, {"outputs", {{"value", "v"}}}}};
