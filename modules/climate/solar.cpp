@@ -19,6 +19,8 @@ namespace {
 
 constexpr int kHalo = 64;
 
+SolarOptions options(const json& p);
+
 OperatorSpec solar_spec() {
   OperatorSpec s;
   s.name = "climate.solar";
@@ -57,6 +59,7 @@ OperatorSpec solar_spec() {
                       "metres searched for shadowing terrain (0: no shadows); at most "
                       "the 64-pixel halo")},
         {"horizon_directions", integer_param(4, 360, 36, "azimuths of the horizon angles")}}}};
+  s.check_params = [](const json& p, const std::set<std::string>&) { options(p); };
   return s;
 }
 

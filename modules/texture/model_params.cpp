@@ -22,14 +22,23 @@ json read_model_file(const std::string& path, const std::string& context) {
   }
 }
 
+void require_one_model(const json& params, const std::string& context) {
+  if (params.contains("model") == params.contains("model_file"))
+    throw Error(context + ": give exactly one of \"model\" and \"model_file\"");
+}
+
 }  // namespace
+
+void check_model_params(const json& params, const std::string& op_name) {
+  const std::string context = op_name + ": params";
+  require_one_model(params, context);
+  if (params.contains("model")) parse_model(params.at("model"), context);
+}
 
 std::shared_ptr<const Model> model_from_params(const json& params, const std::string& op_name) {
   const std::string context = op_name + ": params";
-  const bool inline_doc = params.contains("model"), file = params.contains("model_file");
-  if (inline_doc == file)
-    throw Error(context + ": give exactly one of \"model\" and \"model_file\"");
-  const json doc = inline_doc
+  require_one_model(params, context);
+  const json doc = params.contains("model")
                        ? params.at("model")
                        : read_model_file(params.at("model_file").get<std::string>(), context);
   static std::mutex mutex;

@@ -13,4 +13,9 @@ namespace maquette::texture {
 
 std::shared_ptr<const Model> model_from_params(const json& params, const std::string& op_name);
 
+// What can be told when the pipeline is read (an operator's check_params): exactly one of
+// "model" and "model_file", and an inline model that parses. A model_file is read when the step
+// runs (an earlier step, texture.fit's "out", may write it).
+void check_model_params(const json& params, const std::string& op_name);
+
 }  // namespace maquette::texture

@@ -45,6 +45,9 @@ OperatorSpec procedural_spec() {
         {"model_file",
          {{"type", "string"},
           {"description", "path of a model document instead, e.g. texture.fit's \"out\""}}}}}};
+  s.check_params = [name = s.name](const json& params, const std::set<std::string>&) {
+    check_model_params(params, name);
+  };
   return s;
 }
 

@@ -265,6 +265,25 @@ TEST_F(CliRun, ATextureStepsParamsAndImageAreCheckedBeforeAnythingRuns) {
   EXPECT_NE(dry.exit_code, 0);
 }
 
+// climate.solar's period and texture.procedural's model, told when the pipeline is read (they
+// failed on the first cell, after the steps before it had run).
+TEST_F(CliRun, PeriodAndModelAreToldWhenThePipelineIsRead) {
+  json p = small_pipeline(store_);
+  p["steps"] = {{{"op", "climate.solar"},
+                 {"inputs", {{"dem", "dem"}}},
+                 {"outputs", {{"radiation", "rad"}}},
+                 {"params", {{"first_day", 200}, {"last_day", 100}}}}};
+  expect_refused(p.dump(),
+                 "bad.json: step 1 (climate.solar): climate.solar: params.last_day: 100 "
+                 "is before first_day 200");
+  p["steps"] = {{{"op", "texture.procedural"},
+                 {"inputs", {{"dem", "dem"}}},
+                 {"outputs", {{"imagery", "tex"}}}}};
+  expect_refused(p.dump(),
+                 "bad.json: step 1 (texture.procedural): texture.procedural: params: "
+                 "give exactly one of \"model\" and \"model_file\"");
+}
+
 TEST_F(CliRun, MissingRequiredParameterIsNamed) {
   json p = small_pipeline(store_);
   p["steps"] = {{{"op", "fixture.fill"}, {"outputs", {{"value", "v"}}}}};
