@@ -192,9 +192,11 @@ void add_cells_command(CLI::App& app) {
   info->callback([opts] { print_cell_info(*opts); });
 
   CLI::App* cover = cells->add_subcommand("cover", "Print the cells at a level covering a region");
-  cover->add_option("--bbox", opts->bbox, "W S E N in degrees (W > E crosses the antimeridian)")
-      ->expected(4);
-  cover->add_option("--geojson", opts->geojson, "GeoJSON file with a Polygon or MultiPolygon");
+  auto* bbox =
+      cover->add_option("--bbox", opts->bbox, "W S E N in degrees (W > E crosses the antimeridian)")
+          ->expected(4);
+  cover->add_option("--geojson", opts->geojson, "GeoJSON file with a Polygon or MultiPolygon")
+      ->excludes(bbox);
   cover->add_option("--level,-l", opts->level, "Cell level (0..29)")->required();
   cover
       ->add_option("--mode", opts->mode,

@@ -2,7 +2,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <charconv>
 #include <filesystem>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/geojson.h"
@@ -58,9 +61,12 @@ std::unique_ptr<Store> open_source(const std::string& store, const std::string& 
   return Store::open(store, Store::Mode::ReadOnly);
 }
 
+// Sorted, each once (a cell given twice was meshed twice).
 std::vector<CellId> parse_cells(const std::vector<std::string>& ids) {
   std::vector<CellId> cells;
   for (const std::string& id : ids) cells.push_back(CellId::Parse(id));
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   return cells;
 }
 
@@ -133,14 +139,21 @@ void run_export(Tiles3dJob job) {
   const auto store = open_source(job.store, job.out);
   job.spec.region = region_of(job.region);
   if (!job.levels.empty()) {
+    // Whole numbers A <= B within the grid's levels, nothing else (-5..-1 and 9..10x were taken).
+    const auto level = [&](std::string_view text) {
+      int v = -1;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+      return error == std::errc() && end == text.data() + text.size() ? v : -1;
+    };
     const size_t dots = job.levels.find("..");
-    try {
-      if (dots == std::string::npos) throw std::invalid_argument("no ..");
-      job.spec.min_level = std::stoi(job.levels.substr(0, dots));
-      job.spec.max_level = std::stoi(job.levels.substr(dots + 2));
-    } catch (const std::exception&) {
-      throw Error("--levels '" + job.levels + "': expected A..B, e.g. 6..10");
-    }
+    const std::string_view levels = job.levels;
+    const int a = dots == std::string::npos ? -1 : level(levels.substr(0, dots)),
+              b = dots == std::string::npos ? -1 : level(levels.substr(dots + 2));
+    if (a < 0 || b < a || b > CellId::kMaxLevel)
+      throw Error("--levels '" + job.levels + "': expected A..B, levels 0 <= A <= B <= " +
+                  std::to_string(CellId::kMaxLevel) + ", e.g. 6..10");
+    job.spec.min_level = a;
+    job.spec.max_level = b;
   }
   int64_t tiles = 0;
   into_directory(job.out, [&] {

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/malloc_tuning.h"
+#include "gdal/gdal_env.h"
 
 namespace maquette::cli {
 namespace {
@@ -40,6 +41,7 @@ void stop_options_at_their_arguments(CLI::App& app) {
 int main(int argc, char** argv) {
   using namespace maquette::cli;
   maquette::keep_tile_buffers_mapped();
+  maquette::init_gdal();  // GDAL's errors become ours, with its message, not lines on stderr
   CLI::App app{
       "maquette: Digital Earth grids on rHEALPix (WGS84, aperture 4).\n"
       "Ingest data into a cell-indexed store, run operators from modules over cell ranges, "

@@ -151,6 +151,26 @@ class Runner {
         parallelism_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
         arena_(threads_) {}
 
+  // Resuming `run` finishes the steps it left unfinished: an output layer of such a step must
+  // still hold its mark. A later run that wrote the layer (another pipeline, or this one without
+  // --resume) left it whole or marked by itself: resumed, it would be half the later run's tiles
+  // and half the resumed one's, marked complete.
+  void check_resumable(const RunPlan& plan, int64_t run) const {
+    for (const StepPlan& sp : plan.steps) {
+      if (sp.outputs.empty() || store_->done_cells(run, sp.step->index).size() >= sp.cells.size())
+        continue;
+      for (const auto& [port, layer] : sp.outputs) {
+        const std::optional<int64_t> marked = store_->incomplete_run(layer.name);
+        if (marked == run) continue;
+        throw Error(sp.step->label() + ": outputs." + port + ": layer '" + layer.name +
+                    "' was written after run " + std::to_string(run) + " stopped" +
+                    (marked ? " (by run " + std::to_string(*marked) + ", unfinished)" : "") +
+                    ": resuming would mix the two runs' tiles; run the pipeline without "
+                    "--resume");
+      }
+    }
+  }
+
   RunSummary run() {
     const auto start = Clock::now();
     RunSummary summary;
@@ -231,6 +251,10 @@ class Runner {
     store_ = open_existing(pipeline_, Store::Mode::ReadWrite);
     plan = plan_run(pipeline_, store_.get(), threads_);
     if (copies_) check_relayed(plan);
+    const nlohmann::json identity = run_identity(pipeline_);
+    const std::optional<int64_t> resumable =
+        options_.resume && store_ ? store_->latest_unfinished_run(identity) : std::nullopt;
+    if (resumable) check_resumable(plan, *resumable);
     if (!store_) {
       if (const auto dir = std::filesystem::path(pipeline_.store_path).parent_path(); !dir.empty())
         std::filesystem::create_directories(dir);
@@ -240,9 +264,8 @@ class Runner {
     // against the stored layers).
     create_outputs(plan);
 
-    const nlohmann::json identity = run_identity(pipeline_);
     if (options_.resume) {
-      if (const auto id = store_->latest_unfinished_run(identity)) {
+      if (const auto id = resumable) {
         summary.run_id = *id;
         summary.resumed = true;
         if (!quiet_) spdlog::info("resuming run {} of {}", *id, pipeline_.source);

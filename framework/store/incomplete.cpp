@@ -31,6 +31,16 @@ void Store::mark_complete(const std::string& layer) {
   });
 }
 
+std::optional<int64_t> Store::incomplete_run(const std::string& layer) const {
+  const auto e = impl_->find(layer);
+  if (!e) return std::nullopt;
+  auto conn = impl_->readers.borrow();
+  if (!has_marks(*conn)) return std::nullopt;
+  auto q = conn->query("SELECT run FROM incomplete_layers WHERE layer = ?");
+  if (!q.bind_int(1, e->id).step()) return std::nullopt;
+  return q.int64(0);
+}
+
 std::optional<std::string> Store::incomplete(const std::string& layer) const {
   const auto e = impl_->find(layer);
   if (!e) return std::nullopt;

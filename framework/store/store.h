@@ -293,6 +293,8 @@ class Store {
   // Why the layer is incomplete ("run 3 failed: ...", "run 3 is running or was interrupted"),
   // or nothing when it is complete (or unknown).
   std::optional<std::string> incomplete(const std::string& layer) const;
+  // The run whose mark the layer holds, or nothing when it is complete (or unknown).
+  std::optional<int64_t> incomplete_run(const std::string& layer) const;
   // Undoes a failed write: removes the layer with its tiles, overviews and features, and the run
   // with its records, in one transaction (for a command that created the layer it failed to fill).
   void drop_layer(const std::string& layer, int64_t run_id);

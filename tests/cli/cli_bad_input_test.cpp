@@ -113,6 +113,18 @@ TEST(BadInput, MissingUnreadableAndForeignFilesAreTold) {
                dir + "/p.json: permission denied");
 }
 
+// GDAL's own lines ("ERROR 1: At line 2, character 1: Unterminated array", "Warning 1: Non
+// closed ring detected") were printed besides the error (an audit's find): the error says it.
+TEST(BadInput, AFeaturesSourceGdalCannotReadIsToldOnce) {
+  const std::string dir = temp_dir(), store = dir + "/s.mqt";
+  write_file(dir + "/cut.json", "{\"type\": \"FeatureCollection\", \"features\": [\n");
+  const CliResult r =
+      run_maquette("ingest " + store + " --layer a --as features " + dir + "/cut.json");
+  expect_error(r, "cannot open " + dir + "/cut.json: ");
+  EXPECT_EQ(r.err.find("ERROR 1"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("\n", r.err.find("maquette: error: ")), r.err.size() - 1) << r.err;
+}
+
 TEST(BadInput, JsonNumberOutOfRangeNamesFileLineAndField) {
   const std::string dir = temp_dir();
   write_file(dir + "/p.json",

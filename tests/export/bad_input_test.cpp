@@ -87,6 +87,32 @@ TEST(ExportBadInput, TheStoreOrAFileGivenAsTheOutputIsLeftAsItWas) {
   EXPECT_EQ(file_fingerprint(notes), notes_before);
 }
 
+// --levels takes whole levels A <= B (-5..-1 wrote the default tileset, 9..10x was taken); a
+// cell given twice to glb is meshed once (it was twice: a file of twice the size).
+TEST(ExportBadInput, LevelsAreWholeAndInOrderARepeatedCellCountsOnce) {
+  const std::string dir = temp_dir(), store = export_fixture().store_path;
+  for (const char* levels : {"-5..-1", "3..-1", "9..10x", "5..3", "4", "4..40"}) {
+    const CliResult r =
+        run_maquette("export tiles3d " + store + " " + dir + "/t --dem dem --levels=" + levels);
+    EXPECT_NE(r.exit_code, 0) << levels;
+    EXPECT_NE(r.err.find(std::string("--levels '") + levels + "': expected A..B, levels 0 <= A"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/t")) << levels;
+  }
+  const std::string cell =
+      Store::open(store, Store::Mode::ReadOnly)->tile_cells("dem").front().ToText();
+  ASSERT_EQ(
+      run_maquette("-q export glb " + store + " " + dir + "/once.glb --dem dem --cells " + cell)
+          .exit_code,
+      0);
+  ASSERT_EQ(run_maquette("-q export glb " + store + " " + dir + "/twice.glb --dem dem --cells " +
+                         cell + " " + cell)
+                .exit_code,
+            0);
+  EXPECT_EQ(file_fingerprint(dir + "/twice.glb"), file_fingerprint(dir + "/once.glb"));
+}
+
 TEST(ExportBadInput, PngUnknownLayerAndBadBands) {
   const std::string out = temp_dir() + "/out.png";
   CliResult r = run_maquette("export png " + export_fixture().store_path + " --layer nope " + out);

@@ -169,6 +169,30 @@ TEST(Runner, ResumeNeedsTheSameRegionCells) {
 }
 
 // A region step's mosaic (16 x 16 cells of 4096 pixels here) is refused before anything runs.
+// Run 1 fails midway through step 2; another pipeline then writes the same layers whole. Resuming
+// run 1 would leave 'smooth' half of each, marked complete (an audit's find): refused, the store
+// as the other pipeline left it.
+TEST(Runner, ResumingARunWhoseLayerAnotherRunWroteSinceIsRefused) {
+  test::TempDir dir;
+  const json failing = demo_pipeline(0, 0, "Q21");
+  EXPECT_NE(error_of([&] { run_in(dir, failing, 1); }), "");
+  json other = demo_pipeline();
+  other["steps"][1]["params"]["sleep_ms"] = 1;  // another pipeline writing the same layers
+  run_in(dir, other, 2);
+  const test::Snapshot before = test::snapshot(dir.file("out.mqt"));
+  const std::string file = test::write_pipeline(dir, failing);
+  RunOptions options;
+  options.resume = true;
+  options.quiet = true;
+  EXPECT_EQ(error_of([&] { run_pipeline(test::load_fixture_pipeline(file), options); }),
+            file +
+                ": step 2 (fixture.blur): outputs.dst: layer 'smooth' was written after run 1 "
+                "stopped: resuming would mix the two runs' tiles; run the pipeline without "
+                "--resume");
+  EXPECT_EQ(test::first_difference(before, test::snapshot(dir.file("out.mqt"))), "");
+  EXPECT_FALSE(Store::open(dir.file("out.mqt"), Store::Mode::ReadOnly)->incomplete("smooth"));
+}
+
 TEST(Runner, RegionMosaicSizeIsLimited) {
   test::TempDir dir;
   json doc = demo_pipeline();
