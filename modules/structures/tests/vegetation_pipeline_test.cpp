@@ -341,10 +341,11 @@ TEST(VegetationPipeline, BadSpacingNamesTheFeatureFieldAndValue) {
       << r.err;
   const auto st = Store::open(scene.store, Store::Mode::ReadOnly);
   EXPECT_TRUE(!st->layer("plants") || st->content_cells("plants").empty());
-  // No spacing_m: an artifact of spacings is needed, and must be there.
+  // No spacing_m: an artifact of spacings is needed, and must be there (told when planned).
   for (const auto& [spacings, message] :
        {std::pair("", "feature 1 (tool vegetation): field 'spacing_m' is missing"),
-        std::pair("nowhere", "params.spacings: no artifact 'nowhere' in the store")}) {
+        std::pair("nowhere",
+                  "step 1 (structures.vegetation): params.spacings: unknown artifact 'nowhere'")}) {
     json params = kParams;
     params["spacings"] = spacings;
     const CliResult missing = Scene(12, 64, nullptr, params).run();
