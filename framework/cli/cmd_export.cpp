@@ -24,8 +24,8 @@ void add_size_guard(CLI::App* cmd, int64_t& max_bytes, bool& force, const std::s
       ->transform([](const std::string& v) {
         int64_t mib = 0;
         const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), mib);
-        if (error != std::errc() || end != v.data() + v.size() || mib < 1 || mib > kMostMib)
-          throw CLI::ValidationError("expected a whole number of MiB in 1.." +
+        if (error != std::errc() || end != v.data() + v.size() || mib < 0 || mib > kMostMib)
+          throw CLI::ValidationError("expected a whole number of MiB in 0.." +
                                      std::to_string(kMostMib) + ", got '" + v + "'");
         return std::to_string(mib << 20);
       });
