@@ -143,18 +143,18 @@ RasterIngestPlan plan_raster_ingest(const std::string& store_path,
   if (std::find(kAs.begin(), kAs.end(), o.as) == kAs.end())
     throw Error("--as '" + excerpt(o.as) +
                 "' is not one of dem, imagery, climate, landcover, raster (rasters), features, "
-                "stations (vectors)");
+                "stations (vectors), model (a glTF file)");
   if (!o.vertical_datum.empty() && o.as != "dem")
     throw Error("--vertical-datum is for height layers (--as dem), not --as " + o.as);
+  if (!o.classes.empty() && o.as != "landcover")  // it was ignored
+    throw Error("--classes is for class layers (--as landcover), not --as " + o.as);
   if (sources.empty()) throw Error("no SOURCE given");
   if (o.layer.empty()) throw Error("--layer: a layer name is required");
   try {
-    log2_tile_size(o.tile_size);
+    check_overview_tile_size(o.tile_size);
   } catch (const Error& e) {
     throw Error(std::string("--tile-size: ") + e.what());
   }
-  if (o.tile_size < 2)  // the store's overviews halve a layer's tiles
-    throw Error("--tile-size 1: a layer's tiles are at least 2 x 2 samples");
   if (o.level && (*o.level < 0 || *o.level > CellId::kMaxLevel))
     throw Error("--level " + std::to_string(*o.level) + " is outside 0.." +
                 std::to_string(CellId::kMaxLevel));

@@ -262,6 +262,12 @@ RasterIngestReport ingest_raster(const std::string& store_path,
           tbb::simple_partitioner());
     });
   }
+  if (!error && written == 0 && report.skipped == 0)  // a layer without a tile, never wanted
+    error = std::make_exception_ptr(Error(fmt::format(
+        "ingest {}: no tile written: no pixel of the {} cells at level {} ({:.3g} m pixels) has a "
+        "valid sample of the sources ({:.3g} m pixels); are they all nodata, or smaller than a "
+        "pixel there (a finer --level)?",
+        layer.name, report.cells, layer.level, plan.target_pixel_m, plan.source_pixel_m)));
   if (error) {
     std::string what = "unknown error";
     try {
@@ -270,7 +276,8 @@ RasterIngestReport ingest_raster(const std::string& store_path,
       what = e.what();
     }
     store->finish_run(run, "failed: " + what);
-    const bool untouched = was_complete && committed == 0 && !report.resumed;
+    // A layer given no tile is as it was (its overviews are made from the same stored tiles).
+    const bool untouched = was_complete && (committed == 0 || written == 0) && !report.resumed;
     undo_failed_ingest(std::move(store), layer.name, run, new_layer,
                        untouched ? existing : std::nullopt);
     std::rethrow_exception(error);

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <functional>
 #include <numeric>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/lonlat_bounds.h"
@@ -29,9 +30,12 @@ TerrainSource::TerrainSource(const Store& store_, const Grid& grid_, TerrainSett
   const QuantizationBits& b = settings.bits;
   // Draco quantizes in float, rounding (value - min) / step + 0.5: exact only below 2^23 steps,
   // beyond which vertices shared by two tiles may decode apart.
-  if (b.position < 8 || b.position > 23 || b.texcoord < 6 || b.texcoord > 24 || b.normal < 6 ||
-      b.normal > 24)
-    throw Error("quantization bits out of range: positions 8..23, texcoords and normals 6..24");
+  for (const auto& [option, value, low, high] : {std::tuple{"--position-bits", b.position, 8, 23},
+                                                 std::tuple{"--texcoord-bits", b.texcoord, 6, 24},
+                                                 std::tuple{"--normal-bits", b.normal, 6, 24}})
+    if (value < low || value > high)
+      throw Error(std::string(option) + " " + std::to_string(value) + " is out of range " +
+                  std::to_string(low) + ".." + std::to_string(high));
 }
 
 double TerrainSource::vertex_spacing(int level) const {

@@ -13,6 +13,8 @@ LayerInfo require_dem_layer(const Store& store, const std::string& name) {
     throw Error("--dem layer '" + name + "' is a " + std::string(layer_kind_name(info.kind)) +
                 " layer with " + std::to_string(info.channels) +
                 " channel(s): expected a one-channel raster of heights");
+  if (info.semantics == Semantics::Categorical)  // classes meshed as heights of a few metres
+    throw Error("--dem layer '" + name + "' is categorical (classes, not heights)");
   return info;
 }
 

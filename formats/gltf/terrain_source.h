@@ -11,8 +11,8 @@
 
 namespace maquette {
 
-// Checks the layers an export uses: the DEM a one-channel raster, the imagery a uint8 raster of
-// 1, 3 or 4 channels. Throws maquette::Error naming the layer.
+// Checks the layers an export uses: the DEM a one-channel raster of heights (not categorical), the
+// imagery a uint8 raster of 1, 3 or 4 channels. Throws maquette::Error naming the layer.
 LayerInfo require_dem_layer(const Store& store, const std::string& name);
 LayerInfo require_texture_layer(const Store& store, const std::string& name);
 

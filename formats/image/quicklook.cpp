@@ -120,6 +120,39 @@ void write_georeference(const PictureFrame& frame, OutputFile& png) {
 
 }  // namespace
 
+void check_quicklook_style(const QuicklookStyle& style, int channels) {
+  const auto refuse = [](const char* option, const std::string& why) {
+    throw Error(std::string(option) + " does nothing here: " + why);
+  };
+  if (style.range && !(std::isfinite(style.range->first) && std::isfinite(style.range->second) &&
+                       style.range->first != style.range->second))
+    throw Error("--range " + std::to_string(style.range->first) + " " +
+                std::to_string(style.range->second) + ": expected two finite, distinct values");
+  const bool drawn_by_colour_table = channels == 0 || style.classes;
+  if (drawn_by_colour_table) {
+    const std::string why = channels == 0 ? "a features layer is drawn as its features"
+                                          : "a categorical layer is drawn in its class colours";
+    if (style.ramp) refuse("--ramp", why);
+    if (style.range) refuse("--range", why);
+    if (style.hillshade) refuse("--hillshade", why);
+    if (!style.bands.empty()) refuse("--bands", why);
+    return;
+  }
+  if (channels >= 3) {
+    const std::string why = "the layer's " + std::to_string(channels) +
+                            " channels are drawn as RGB (--bands), without a ramp";
+    if (style.ramp) refuse("--ramp", why);
+    if (style.hillshade) refuse("--hillshade", why);
+    return;
+  }
+  if (!style.bands.empty())
+    refuse("--bands", "the layer's channel 1 is drawn through a colour ramp");
+  if (style.range && style.ramp == Ramp::Hypsometric)
+    refuse("--range",
+           "the hypsometric ramp tints fixed heights in metres; give another --ramp to stretch "
+           "a range");
+}
+
 RgbaImage render_quicklook(const PictureRaster& m, const QuicklookStyle& style) {
   const std::vector<int> channels = drawn_channels(m, style);
   const bool rgb = channels.size() == 3;

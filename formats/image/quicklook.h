@@ -31,6 +31,13 @@ struct QuicklookStyle {
   std::string units = "";                            // of the values, for the legend
 };
 
+// Throws maquette::Error naming the option of `style` that would do nothing on a layer of
+// `channels` channels (0: a features layer, drawn alone): --ramp, --range, --hillshade or --bands
+// on class colours or features; --ramp or --hillshade on imagery (3+ channels, drawn as RGB);
+// --bands on one channel; --range under the hypsometric ramp (fixed tints by metres). Also a
+// --range not two finite, distinct values.
+void check_quicklook_style(const QuicklookStyle& style, int channels);
+
 // The picture of `m` in `style`, without a legend: one image pixel per raster pixel (a legend
 // added later goes below and to the right, so the frame stays valid). Throws
 // maquette::Error when a band is out of range.

@@ -27,7 +27,7 @@ std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target)
   return {std::atan2(d[0], d[1]) / kDegree, std::atan2(d[2], std::hypot(d[0], d[1])) / kDegree};
 }
 
-PinholeCamera::PinholeCamera(const CameraSpec& spec) : spec_(spec), frame_(spec.eye) {
+void check_camera_spec(const CameraSpec& spec) {
   if (!(spec.fov > 0 && spec.fov <= 170))
     throw Error("camera fov " + std::to_string(spec.fov) +
                 " is out of range: the horizontal field of view must be in (0, 170] degrees");
@@ -38,6 +38,10 @@ PinholeCamera::PinholeCamera(const CameraSpec& spec) : spec_(spec), frame_(spec.
   if (spec.width < 1 || spec.height < 1 || spec.width > 65536 || spec.height > 65536)
     throw Error("picture size " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                 " is out of range [1, 65536]");
+}
+
+PinholeCamera::PinholeCamera(const CameraSpec& spec) : spec_(spec), frame_(spec.eye) {
+  check_camera_spec(spec);
   focal_ = spec.width * 0.5 / std::tan(spec.fov * 0.5 * kDegree);
   const double h = spec.heading * kDegree, p = spec.pitch * kDegree;
   forward_ = {std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};

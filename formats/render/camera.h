@@ -30,10 +30,13 @@ std::string view_text(const CameraSpec& spec);
 // The heading and pitch (degrees) that aim the eye at `target`.
 std::array<double, 2> aim(const GeodeticPoint& eye, const GeodeticPoint& target);
 
+// Throws maquette::Error naming the field at fault: fov outside (0, 170], a heading not finite,
+// pitch outside [-90, 90], width or height outside [1, 65536].
+void check_camera_spec(const CameraSpec& spec);
+
 class PinholeCamera {
  public:
-  // Throws maquette::Error naming the field at fault: fov outside (0, 170], a heading not finite,
-  // pitch outside [-90, 90], width or height outside [1, 65536].
+  // Throws as check_camera_spec.
   explicit PinholeCamera(const CameraSpec& spec);
 
   const CameraSpec& spec() const { return spec_; }

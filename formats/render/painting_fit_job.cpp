@@ -53,7 +53,7 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 }
 
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
-                        const GroundWarp* ground_warp, const std::string& path) {
+                        const GroundWarp* ground_warp, OutputFile& file) {
   using nlohmann::json;
   const CameraSpec& c = fit.camera;
   json out;
@@ -97,7 +97,7 @@ void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
                    {"affine", fit.warp.affine()}};
   }
   const std::string text = out.dump(2) + '\n';
-  write_file_whole(path, text);  // whole or not at all: an older file stays as it was
+  file.write([&] { write_new_file(file.temp_path(), text); });
 }
 
 Panorama render_warped_panorama(const Store& store, const Grid& grid, PanoramaJob render,

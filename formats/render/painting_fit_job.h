@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/grid.h"
+#include "core/output_file.h"
 #include "render/painting_fit.h"
 #include "render/painting_fit_ground.h"
 #include "render/painting_fit_points.h"
@@ -37,9 +38,10 @@ PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const Pa
 // options), "points" (each click's name, x, y and where the camera and bend put it: fitted_x,
 // fitted_y, error; with `ground_warp`, ground_move: its ground point's move, east and north metres
 // in the eye's frame), and "warp" (painting_fit_warp.h: scale, centres, weights, affine; null
-// without the warp). Throws maquette::Error naming `path` when it cannot be written.
+// without the warp), into `file`'s temporary name (the caller commits it, with the files written
+// beside it). Throws maquette::Error naming the file when it cannot be written.
 void write_painting_fit(const PaintingFit& fit, const PaintingPoints& points,
-                        const GroundWarp* ground_warp, const std::string& path);
+                        const GroundWarp* ground_warp, OutputFile& file);
 
 // The panorama `render` draws (its camera and bend a fit's) moved by the fit's warp onto the
 // painting: each pixel takes the picture and guides of the pixel `unwarp` (PaintingFit::unwarp)

@@ -179,9 +179,14 @@ double PanoramaWriter::nearest_terrain() const { return files_->nearest_terrain;
 void PanoramaWriter::commit() {
   Files& f = *files_;
   f.guides.reset();  // flushes the last blocks
-  write_image(f.rgb, f.width, f.height, 3, panorama_picture_format(f.out), f.out);
-  write_image(f.silhouette, f.width, f.height, 1, panorama_picture_format(panorama_files(f.out)[2]),
-              panorama_files(f.out)[2]);
+  // Every file written under its temporary name before any is put in place: a failure leaves
+  // none of them (a picture without its guides was left when the guides could not be written).
+  const std::vector<std::string> paths = panorama_files(f.out);
+  OutputFile picture(paths[0], {".aux.xml"}), silhouettes(paths[2], {".aux.xml"});
+  write_image(f.rgb, f.width, f.height, 3, panorama_picture_format(paths[0]), picture);
+  write_image(f.silhouette, f.width, f.height, 1, panorama_picture_format(paths[2]), silhouettes);
+  picture.commit();
+  silhouettes.commit();
   f.guides_file.commit();
 }
 

@@ -62,6 +62,35 @@ LayerInfo dem_layer(const Store& store, const std::string& name) {
   return dem;
 }
 
+void check_panorama_job(const PanoramaJob& job) {
+  check_place("--camera", job.camera.eye);
+  if (job.look_at) check_place("--look-at", *job.look_at);
+  if (!std::isfinite(job.sun_azimuth) || !std::isfinite(job.sun_altitude))
+    throw Error("--sun " + fmt::format("{} {}", job.sun_azimuth, job.sun_altitude) +
+                " must be finite");
+  if (!(job.haze_distance > 0))
+    throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
+  check_bend(job.bend);
+  if (job.antialias < 1 || job.antialias > 8)
+    throw Error("--antialias " + std::to_string(job.antialias) +
+                " must be 1 to 8 (samples per pixel side)");
+  const int64_t side = std::max(job.camera.width, job.camera.height);
+  if (side > 65536)
+    throw Error("--size " + std::to_string(job.camera.width) + " " +
+                std::to_string(job.camera.height) + ": a picture is at most 65536 pixels a side");
+  if (side * job.antialias > 65536)
+    throw Error("--antialias " + std::to_string(job.antialias) + " on a picture of " +
+                std::to_string(job.camera.width) + " x " + std::to_string(job.camera.height) +
+                " pixels: its samples would span more than 65536 pixels; lower it");
+  if (job.shadows && !(job.sun_altitude > 0 && job.sun_altitude < 90))
+    throw Error("--sun altitude " + std::to_string(job.sun_altitude) +
+                " must be in (0, 90) degrees for --shadows");
+  if (job.strip_rows < 0)
+    throw Error("--strip-rows " + std::to_string(job.strip_rows) + " must be 0 or more");
+  check_camera_spec(job.camera);
+  // heading and pitch as given: a --look-at replaces them later
+}
+
 namespace {
 
 // What render_panorama and render_panorama_files share: the checked layers, the camera, the bent
@@ -96,28 +125,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
       throw Error("--land-cover layer '" + job.land_cover + "' is not categorical");
   }
 
-  check_place("--camera", job.camera.eye);
-  if (job.look_at) check_place("--look-at", *job.look_at);
-  if (!std::isfinite(job.sun_azimuth) || !std::isfinite(job.sun_altitude))
-    throw Error("--sun " + fmt::format("{} {}", job.sun_azimuth, job.sun_altitude) +
-                " must be finite");
-  if (!(job.haze_distance > 0))
-    throw Error("--haze-distance " + std::to_string(job.haze_distance) + " must be positive");
-  check_bend(job.bend);
-  if (job.antialias < 1 || job.antialias > 8)
-    throw Error("--antialias " + std::to_string(job.antialias) +
-                " must be 1 to 8 (samples per pixel side)");
-  const int64_t side = std::max(job.camera.width, job.camera.height);
-  if (side > 65536)
-    throw Error("--size " + std::to_string(job.camera.width) + " " +
-                std::to_string(job.camera.height) + ": a picture is at most 65536 pixels a side");
-  if (side * job.antialias > 65536)
-    throw Error("--antialias " + std::to_string(job.antialias) + " on a picture of " +
-                std::to_string(job.camera.width) + " x " + std::to_string(job.camera.height) +
-                " pixels: its samples would span more than 65536 pixels; lower it");
-  if (job.shadows && !(job.sun_altitude > 0 && job.sun_altitude < 90))
-    throw Error("--sun altitude " + std::to_string(job.sun_altitude) +
-                " must be in (0, 90) degrees for --shadows");
+  check_panorama_job(job);
   GeodeticPoint& eye = job.camera.eye;
   const LonLat at{eye.lon, eye.lat};
   // The DEM's conversion to the ellipsoid, set up once for the eye's ground and the mesh.
@@ -191,8 +199,6 @@ void render_panorama_files(const Store& store, const Grid& grid, PanoramaJob job
                            const std::string& out) {
   check_outputs_spare_inputs(panorama_files(out), {{"the store", store.path()}});
   panorama_picture_format(out);  // a wrong extension or a missing directory said before drawing
-  if (job.strip_rows < 0)
-    throw Error("--strip-rows " + std::to_string(job.strip_rows) + " must be 0 or more");
   const int rows = job.strip_rows > 0 ? job.strip_rows : default_strip_rows(job.camera.width);
   const auto p = prepare(store, grid, std::move(job));
   render_strips(store, grid, p->scene, *p->camera, p->look, rows, out);

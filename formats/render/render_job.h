@@ -46,6 +46,11 @@ struct PanoramaJob {
 // raster, not one channel, or categorical (land-cover classes drawn as heights of a few metres).
 LayerInfo dem_layer(const Store& store, const std::string& name);
 
+// The checks of render_panorama that need no store: the camera and --look-at places, the field of
+// view, size, --antialias, --sun, --haze-distance, the bend, --strip-rows. Throws
+// maquette::Error naming the option and value at fault.
+void check_panorama_job(const PanoramaJob& job);
+
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
 // wrong kind (--dem: dem_layer; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
 // categorical), a bend out of range (render/progressive_bend.h), a camera below the terrain (or

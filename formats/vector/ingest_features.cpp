@@ -306,6 +306,14 @@ FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>
                         {"features", count},
                         {"fields", field_definitions(*l.layer->GetLayerDefn())}});
     }
+    if (store.feature_count(options.layer) == 0) {  // an empty layer, which a user never wants
+      const FeatureIngestReport& r = writer.report();
+      throw Error("no feature stored in layer '" + options.layer + "': " +
+                  (r.invalid_skipped + r.outside_skipped == 0
+                       ? std::string("the sources hold none")
+                       : std::to_string(r.outside_skipped) + " outside the region, " +
+                             std::to_string(r.invalid_skipped) + " not placeable on the grid"));
+    }
     provenance["layers"] = layers;
     create_features_layer(store, options.layer, level, provenance);
   } catch (const std::exception& e) {

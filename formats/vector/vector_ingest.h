@@ -40,7 +40,8 @@ using FeatureIngestProgress = std::function<void(const FeatureIngestReport&)>;
 // is opened, its CRS checked and every geometry checked before anything is written: a feature
 // without geometry, with an empty one, a coordinate that is not finite (NaN) or a geometry GEOS
 // finds invalid (a self-intersecting polygon, ...) is an error naming the source, layer and
-// feature id. See formats/vector/README.md.
+// feature id. Throws, leaving no new layer, when no feature is stored (sources without features,
+// or every feature outside the region). See formats/vector/README.md.
 FeatureIngestReport ingest_features(Store& store, const std::vector<std::string>& sources,
                                     const FeatureIngestOptions& options,
                                     const FeatureIngestProgress& progress = {});

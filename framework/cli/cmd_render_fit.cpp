@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "cli/commands.h"
 #include "core/enu_frame.h"
 #include "core/output_clash.h"
+#include "core/output_file.h"
 #include "render/painting_fit_dem.h"
 #include "render/painting_fit_job.h"
 #include "render/render_job.h"
@@ -123,16 +125,17 @@ void run(const FitOptions& o) {
     panorama = render_warped_panorama(*store, default_grid(), render, fit.unwarp);
   }
   // The files before the layer: a file that cannot be written leaves no new layer behind, which
-  // would make every re-run refuse its name.
-  write_painting_fit(fit, points, ground_warp ? &*ground_warp : nullptr, o.out);
+  // would make every re-run refuse its name. The fit is put in place after the panorama's files
+  // are: one that cannot be written leaves no fit.
+  OutputFile fit_file(o.out);
+  write_painting_fit(fit, points, ground_warp ? &*ground_warp : nullptr, fit_file);
+  if (panorama) write_panorama(*panorama, o.panorama);
+  fit_file.commit();
   spdlog::info("wrote {}: rms error {:.2f} px over {} points", o.out, fit.rms_error,
                points.points.size());
+  if (panorama) spdlog::info("wrote {} and its guides", o.panorama);
   warn_far_clicks(fit, points, o.points);
   warn_clicks_on_a_line(fit, o.points);
-  if (panorama) {
-    write_panorama(*panorama, o.panorama);
-    spdlog::info("wrote {} and its guides", o.panorama);
-  }
   if (ground_warp) {
     write_warped_dem(*store, default_grid(), *store->layer(job.dem), *ground_warp, *o.warped_dem,
                      {{"command", "render fit"}, {"dem", job.dem}, {"points", o.points}});
@@ -163,7 +166,15 @@ void add_render_fit_command(CLI::App* render) {
   cmd->add_option("--warp-smoothing", o->job.warp_smoothing,
                   "Also fit the residual warp, a thin-plate spline with this smoothing (>= 0; "
                   "0.001 follows clicks with 2 px of noise)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {  // CLI::NonNegativeNumber's message printed DBL_MAX's 309 digits
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            return end != text.c_str() && *end == 0 && v >= 0
+                       ? std::string()
+                       : "expected a number >= 0, got " + text;
+          },
+          "NUMBER >= 0"));
   cmd->add_option(
          "--warped-dem", o->warped_dem,
          "Also write the --dem layer warped by the fit's warp (taken to the ground) as this "

@@ -84,19 +84,20 @@ void run_export(const PngJob& o) {
   const Grid& grid = default_grid();
   const LayerInfo info = store->require_layer(o.layer);
   QuicklookStyle style;
+  if (info.semantics == Semantics::Categorical) style.classes = class_table(info);
   if (!o.ramp.empty())
     style.ramp = parse_ramp(o.ramp);
-  else if (metres(info.units) && info.channels == 1)
+  else if (metres(info.units) && info.channels == 1 && !style.classes)
     style.ramp = Ramp::Hypsometric;
   if (!o.range.empty()) style.range = std::make_pair(o.range[0], o.range[1]);
   style.hillshade = o.hillshade;
   style.legend = o.legend;
   style.units = info.units;
   for (int b : o.bands) style.bands.push_back(b - 1);
-  if (info.semantics == Semantics::Categorical) style.classes = class_table(info);
   const RegionSpec region = region_of(o.region);
   // A features layer is drawn alone on a plain background; --overlay draws one over a raster.
   const bool features_alone = info.kind == LayerKind::Features;
+  check_quicklook_style(style, features_alone ? 0 : info.channels);
   if (features_alone && !o.overlay.empty())
     throw Error("--overlay draws features over a raster layer; '" + o.layer +
                 "' is a features layer (drawn alone)");

@@ -2,8 +2,12 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "core/error.h"
@@ -34,6 +38,29 @@ void stop_options_at_their_arguments(CLI::App& app) {
         opt->get_delimiter() != '\0')
       opt->allow_extra_args(false);
   for (CLI::App* sub : app.get_subcommands({})) stop_options_at_their_arguments(*sub);
+}
+
+// The command path of argv whose next word names no subcommand, as "maquette export: 'bogus' is
+// not one of gtiff, png, ...": CLI11 said "A subcommand is required", not which word was wrong.
+std::optional<std::string> unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* at = &app;
+  std::string path = "maquette";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.starts_with("-")) continue;  // the commands that hold subcommands take flags only
+    const std::vector<const CLI::App*> subs = at->get_subcommands({});
+    if (subs.empty()) return std::nullopt;
+    const auto next = std::find_if(subs.begin(), subs.end(),
+                                   [&](const CLI::App* sub) { return sub->get_name() == word; });
+    if (next == subs.end()) {
+      std::string names;
+      for (const CLI::App* sub : subs) names += (names.empty() ? "" : ", ") + sub->get_name();
+      return path + ": '" + word + "' is not one of " + names;
+    }
+    at = *next;
+    path += " " + word;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -84,6 +111,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);  // subcommand callbacks run here
   } catch (const CLI::ParseError& e) {
+    if (const auto unknown = unknown_subcommand(app, argc, argv)) {
+      std::fprintf(stderr, "maquette: error: %s\nRun with --help for more information.\n",
+                   unknown->c_str());
+      return e.get_exit_code();
+    }
     return app.exit(e);
   } catch (const maquette::Error& e) {
     std::fprintf(stderr, "maquette: error: %s\n", e.what());

@@ -232,6 +232,7 @@ class ExportStep : public TaskOperator {
   TaskPlan plan(const TaskContext& ctx) const override {
     const json& p = *ctx.params;
     check_format_options(p);
+    if (p.at("format") == "panorama") check_panorama_job(panorama_of(p));  // before any step runs
     TaskPlan plan;
     for (const char* key : {"layer", "dem", "texture", "overlay", "land_cover"})
       if (p.contains(key)) plan.reads.emplace_back(std::string("params.") + key, p.at(key));

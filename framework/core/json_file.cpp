@@ -1,6 +1,7 @@
 #include "core/json_file.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -147,6 +148,9 @@ json parse_json(std::string_view text, const std::string& source) {
 }
 
 std::string read_text_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))  // opened and read as an empty file
+    throw Error("cannot read " + path + ": it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error("cannot read " + path + ": " + file_access_problem(path).value_or("read error"));

@@ -1,6 +1,7 @@
 #include "core/output_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -29,6 +30,8 @@ int sync_file(const std::string& path) {
 
 OutputFile::OutputFile(std::string path, std::vector<std::string> suffixes)
     : path_(std::move(path)) {
+  // Said before anything is written: the rename at commit() would fail after the work.
+  if (struct stat st; ::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) fail(path_, EISDIR);
   static std::atomic<int> serial = 0;
   temp_ = path_ + ".part." + std::to_string(::getpid()) + "." + std::to_string(serial++);
   for (const std::string& s : suffixes) sidecars_.push_back({path_ + s, temp_ + s});

@@ -15,7 +15,8 @@ namespace maquette {
 class OutputFile {
  public:
   // `suffixes`: of sidecars a writer may add next to the temporary one (".aux.xml"), renamed
-  // with it (a stale sidecar of the final file is removed) or removed with it.
+  // with it (a stale sidecar of the final file is removed) or removed with it. Throws
+  // maquette::Error when `path` is a directory.
   explicit OutputFile(std::string path, std::vector<std::string> suffixes = {});
   ~OutputFile();  // removes the temporary file and its sidecars unless committed
   OutputFile(const OutputFile&) = delete;

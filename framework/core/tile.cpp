@@ -45,6 +45,11 @@ int log2_tile_size(int size) {
       (power_of_two ? " is above the largest, 4096" : " is not a power of two in [1, 4096]"));
 }
 
+void check_overview_tile_size(int size) {
+  log2_tile_size(size);
+  if (size < 2) throw Error("tile size 1: a layer's tiles are at least 2 x 2 samples");
+}
+
 template <typename T>
 Tile<T> to_tile(const RawTile& raw, const double* nodata) {
   check_bytes(raw);

@@ -154,5 +154,8 @@ inline int64_t global_row(CellId cell, int size, int row) {
   return int64_t(cell.row()) * size + row;
 }
 int log2_tile_size(int size);  // throws maquette::Error unless size is a power of two in [1, 4096]
+// The tile size of a layer that gets overviews (ingest, pipelines): a power of two in [2, 4096],
+// since each overview halves the tiles. Throws maquette::Error saying which rule `size` breaks.
+void check_overview_tile_size(int size);
 
 }  // namespace maquette

@@ -159,7 +159,7 @@ json named_param(NamedKind kind, const std::optional<std::string>& def,
 
 std::optional<NamedKind> named_kind(const json& param_schema) {
   if (!param_schema.is_object() || !param_schema.contains(kNamesKey)) return std::nullopt;
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < int(std::size(kNamedKinds)); ++k)
     if (param_schema.at(kNamesKey) == kNamedKinds[k]) return NamedKind(k);
   return std::nullopt;
 }

@@ -174,12 +174,10 @@ Pipeline parse_pipeline(std::string_view text, const std::string& source,
   if (doc.contains("tile_size")) {
     p.tile_size = integer(doc, "tile_size", INT_MIN, INT_MAX, source);
     try {
-      log2_tile_size(p.tile_size);
+      check_overview_tile_size(p.tile_size);
     } catch (const Error& e) {
       fail(source, "tile_size", e.what());
     }
-    if (p.tile_size < 2)  // the store's overviews halve a layer's tiles
-      fail(source, "tile_size", "1: a layer's tiles are at least 2 x 2 samples");
   }
 
   const json& steps = doc.at("steps");

@@ -1,8 +1,11 @@
 // Layer definitions: enum names, validation, comparison.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/json_file.h"
 #include "core/samples.h"
 #include "store/codec.h"
 #include "store/store_impl.h"
@@ -57,6 +60,14 @@ Semantics parse_semantics(std::string_view name) {
 LayerInfo normalized_layer(const LayerInfo& info) {
   const std::string where = "layer '" + info.name + "': ";
   if (info.name.empty()) throw Error("a layer needs a name");
+  // A name told apart from another only by blanks or unseen characters (" ", "dem ") reads as
+  // another layer's in every message and listing.
+  const auto unseen = [](unsigned char c) { return c < 0x20 || c == 0x7f; };
+  if (std::isspace((unsigned char)info.name.front()) ||
+      std::isspace((unsigned char)info.name.back()) ||
+      std::any_of(info.name.begin(), info.name.end(), unseen))
+    throw Error("layer name '" + excerpt(info.name) +
+                "': no blank at either end and no control character");
   if (info.level < 0 || info.level > CellId::kMaxLevel)
     throw Error(where + "level " + std::to_string(info.level) + " not in [0, 29]");
   if (holds_content(info.kind)) {

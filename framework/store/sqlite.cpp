@@ -1,5 +1,6 @@
 #include "store/sqlite.h"
 
+#include <spdlog/spdlog.h>
 #include <sqlite3.h>
 
 #include <chrono>
@@ -73,12 +74,25 @@ std::span<const std::byte> Query::blob(int i) const {
 
 namespace {
 
-// Waits for another connection's lock by polling every 0.2 ms, for up to 60 s. SQLite's own
-// busy_timeout backs off to sleeps of up to 100 ms, which left processes writing the same store
-// (MPI ranks) idle for much of a run.
-int wait_for_lock(void*, int attempts) {
-  constexpr int kMaxAttempts = 300000;
-  if (attempts >= kMaxAttempts) return 0;
+constexpr auto kLockWait = std::chrono::seconds(60);
+constexpr auto kLockNotice = std::chrono::seconds(2);
+
+// Waits for another connection's lock by polling every 0.2 ms, for up to kLockWait, saying so
+// once after kLockNotice (a wait without a word looked like a hang). SQLite's own busy_timeout
+// backs off to sleeps of up to 100 ms, which left processes writing the same store (MPI ranks)
+// idle for much of a run. `path`: the store's, a std::string.
+int wait_for_lock(void* path, int attempts) {
+  using Clock = std::chrono::steady_clock;
+  thread_local Clock::time_point since;  // a busy wait runs on one thread, start to end
+  thread_local bool told = false;
+  if (attempts == 0) since = Clock::now(), told = false;
+  const auto waited = Clock::now() - since;
+  if (waited >= kLockWait) return 0;
+  if (!told && waited >= kLockNotice) {
+    told = true;
+    spdlog::warn("{}: another process is writing it; waiting for it to finish (up to {} s)",
+                 *static_cast<const std::string*>(path), kLockWait.count());
+  }
   std::this_thread::sleep_for(std::chrono::microseconds(200));
   return 1;
 }
@@ -109,7 +123,7 @@ Connection::Connection(std::string path, int flags, bool immutable) : path_(std:
     sqlite3_close_v2(db_);
     throw Failure("cannot open " + path_ + ": " + msg, rc & 0xff);
   }
-  sqlite3_busy_handler(db_, &wait_for_lock, nullptr);
+  sqlite3_busy_handler(db_, &wait_for_lock, &path_);
 }
 
 Connection::~Connection() {
@@ -169,6 +183,10 @@ bool Connection::checkpoint_passive() noexcept {
 }
 
 void Connection::fail(int code) const {
+  if ((code & 0xff) == SQLITE_BUSY)
+    throw Failure(path_ + ": another process kept it locked for more than " +
+                      std::to_string(kLockWait.count()) + " s (" + sqlite3_errmsg(db_) + ")",
+                  code & 0xff);
   throw Failure(path_ + ": " + sqlite3_errmsg(db_), code & 0xff);
 }
 

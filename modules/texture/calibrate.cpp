@@ -14,7 +14,11 @@ namespace {
 constexpr const char* kBands[] = {"red", "green", "blue"};
 
 json triple(const std::string& description) {
-  return {{"type", "array"}, {"items", {{"type", "number"}}}, {"description", description}};
+  return {{"type", "array"},
+          {"items", {{"type", "number"}}},
+          {"minItems", 3},
+          {"maxItems", 3},
+          {"description", description}};
 }
 
 OperatorSpec calibrate_spec() {
@@ -24,8 +28,10 @@ OperatorSpec calibrate_spec() {
       "Red, green and blue digital numbers of a multispectral scene as true-colour sRGB: "
       "top-of-atmosphere reflectance, haze removed by dark-object subtraction";
   s.kind = OperatorKind::Cell;
-  for (const char* band : kBands)
+  for (const char* band : kBands) {
     s.inputs.push_back({band, std::string(band) + " band, digital numbers", false});
+    s.inputs.back().channels = {1};
+  }
   s.outputs = {{"rgb", "true colour, sRGB 1..255", DType::U8, 3, Semantics::Continuous, "", 0.0}};
   s.params_schema = {
       {"type", "object"},
@@ -47,10 +53,6 @@ OperatorSpec calibrate_spec() {
 }
 
 SceneCalibration calibration_of(const json& p) {
-  for (const char* key : {"reflectance_mult", "reflectance_add", "dark_object_dn"})
-    if (p.contains(key) && p[key].size() != 3)
-      throw Error(std::string("texture.calibrate: params.") + key +
-                  ": expected 3 numbers (red, green, blue), got " + p[key].dump());
   SceneCalibration cal;
   cal.sun_elevation_deg = p.at("sun_elevation").get<double>();
   cal.white = p.at("white").get<double>();
@@ -73,9 +75,6 @@ class CalibrateOp : public CellOperator {
     Tile<float>& rgb = data.output("rgb");
     for (int b = 0; b < 3; ++b) {
       const Tile<float>& dn = data.input(kBands[b]);
-      if (dn.channels() != 1)
-        throw Error(std::string("texture.calibrate: inputs.") + kBands[b] +
-                    ": expected 1 channel, got " + std::to_string(dn.channels()));
       for (int r = 0; r < ctx.tile_size; ++r)
         for (int c = 0; c < ctx.tile_size; ++c) rgb.at(c, r, b) = cal.display(b, dn.at(c, r));
     }

@@ -18,7 +18,20 @@ namespace maquette::texture {
 namespace {
 
 json range_schema(double lo, double hi) {
-  return {{"type", "array"}, {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}}};
+  return {{"type", "array"},
+          {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}},
+          {"minItems", 2},
+          {"maxItems", 2},
+          {"description", "[lo, hi]"}};
+}
+
+// The classes of params, their errors prefixed with the operator like its other errors.
+HsClassifier classifier_of(const json& params) {
+  try {
+    return HsClassifier::from_params(params);
+  } catch (const Error& e) {
+    throw Error(std::string("texture.classify: ") + e.what());
+  }
 }
 
 OperatorSpec classify_spec() {
@@ -100,18 +113,14 @@ OperatorSpec classify_spec() {
   s.params_schema["properties"].update(grey_params_schema());
   s.params_schema["properties"].update(illumination_params_schema());
   s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    if (p.at("boxes").empty() && p.at("polygons").empty() && p.at("centres").empty())
+      throw Error(
+          "texture.classify: params: give \"boxes\", \"polygons\" or \"centres\" (e.g. "
+          "from texture.cluster)");
+    classifier_of(p);
     check_illumination_params(p, mapped.count("hillshade") > 0, "texture.classify");
   };
   return s;
-}
-
-// The classes of params, their errors prefixed with the operator like its other errors.
-HsClassifier classifier_of(const json& params) {
-  try {
-    return HsClassifier::from_params(params);
-  } catch (const Error& e) {
-    throw Error(std::string("texture.classify: ") + e.what());
-  }
 }
 
 class Classify : public CellOperator {
@@ -120,20 +129,8 @@ class Classify : public CellOperator {
 
   void run(const CellContext& ctx, CellData& data) const override {
     const json& p = *ctx.params;
-    if (p.at("boxes").empty() && p.at("polygons").empty() && p.at("centres").empty())
-      throw Error(
-          "texture.classify: params: give \"boxes\", \"polygons\" or \"centres\" (e.g. "
-          "from texture.cluster)");
-    for (const char* key : {"hue", "saturation", "value"})
-      for (size_t i = 0; i < p.at("boxes").size(); ++i)
-        if (p["boxes"][i].contains(key) && p["boxes"][i][key].size() != 2)
-          throw Error("texture.classify: params.boxes[" + std::to_string(i) + "]." + key +
-                      ": expected [lo, hi]");
     const HsClassifier classifier = classifier_of(p);
     const Tile<float>& rgb = data.input("rgb");
-    if (rgb.channels() != 3)
-      throw Error("texture.classify: inputs.rgb: expected 3 channels, got " +
-                  std::to_string(rgb.channels()));
     const Tile<float>* dem = data.inputs.count("dem") ? &data.inputs.at("dem") : nullptr;
     const Tile<float>* lc = data.inputs.count("landcover") ? &data.inputs.at("landcover") : nullptr;
     const int snow = p.at("snow_class").get<int>();

@@ -17,6 +17,29 @@ namespace {
 
 const char* kOp = "texture.fit";
 
+std::vector<Quantity> quantities(const json& params) {
+  std::vector<Quantity> out;
+  const json& ranges = params.at("ranges");
+  for (const std::string& name : params.at("quantities").get<std::vector<std::string>>()) {
+    const std::string path = std::string(kOp) + ": params.ranges." + name;
+    json r = ranges.contains(name)  ? ranges.at(name)
+             : name == "slope"      ? json{0, 90}
+             : is_categorical(name) ? json{kCategoricalLo, kCategoricalHi}
+                                    : json();
+    if (r.is_null()) throw Error(path + ": missing (give [lo, hi] of the region's values)");
+    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
+        !(r[1].get<double>() > r[0].get<double>()))
+      throw Error(path + ": expected [lo, hi] with lo < hi, got " + r.dump());
+    if (is_categorical(name) && r != json{kCategoricalLo, kCategoricalHi})
+      throw Error(path +
+                  ": the categorical quantity has the range [-0.5, 255.5] (a bin per "
+                  "code), got " +
+                  r.dump());
+    out.push_back({name, r[0].get<double>(), r[1].get<double>()});
+  }
+  return out;
+}
+
 OperatorSpec fit_spec() {
   OperatorSpec s;
   s.name = kOp;
@@ -103,33 +126,12 @@ OperatorSpec fit_spec() {
                             "also write the model document to this file (for model_file)")}}}};
   s.params_schema["properties"].update(illumination_params_schema());
   s.check_params = [](const json& p, const std::set<std::string>& mapped) {
+    quantities(p);
+    check_quantity_inputs(p.at("quantities").get<std::vector<std::string>>(), mapped, kOp);
     check_illumination_params(p, mapped.count("hillshade") > 0, kOp);
   };
   s.params_schema["properties"].update(colour_incidence_param());
   return s;
-}
-
-std::vector<Quantity> quantities(const json& params) {
-  std::vector<Quantity> out;
-  const json& ranges = params.at("ranges");
-  for (const std::string& name : params.at("quantities").get<std::vector<std::string>>()) {
-    const std::string path = std::string(kOp) + ": params.ranges." + name;
-    json r = ranges.contains(name)  ? ranges.at(name)
-             : name == "slope"      ? json{0, 90}
-             : is_categorical(name) ? json{kCategoricalLo, kCategoricalHi}
-                                    : json();
-    if (r.is_null()) throw Error(path + ": missing (give [lo, hi] of the region's values)");
-    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
-        !(r[1].get<double>() > r[0].get<double>()))
-      throw Error(path + ": expected [lo, hi] with lo < hi, got " + r.dump());
-    if (is_categorical(name) && r != json{kCategoricalLo, kCategoricalHi})
-      throw Error(path +
-                  ": the categorical quantity has the range [-0.5, 255.5] (a bin per "
-                  "code), got " +
-                  r.dump());
-    out.push_back({name, r[0].get<double>(), r[1].get<double>()});
-  }
-  return out;
 }
 
 int bin(float v, const Quantity& q) {
@@ -153,9 +155,6 @@ class Fit : public ReduceOperator {
     const Tile<float>& rgb = data.input("rgb");
     const Tile<float>* own =
         data.inputs.count("colour_classes") ? &data.inputs.at("colour_classes") : nullptr;
-    if (rgb.channels() != 3)
-      throw Error(std::string(kOp) + ": inputs.rgb: expected 3 channels, got " +
-                  std::to_string(rgb.channels()));
     const std::optional<Illumination> light = illumination_of(*ctx.params, data, kOp);
     const double lit_cos = colour_incidence(*ctx.params, light, kOp);
     std::map<int, ClassStats> stats;

@@ -5,6 +5,7 @@
 // through the input pixels, categorical_values.h: at refine 0 they are read back within 3 %).
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,13 @@
 #include "runtime/operator.h"
 
 namespace maquette::texture {
+
+// The input port a quantity is computed from: "dem" for "height" and "slope", else its own name.
+std::string quantity_port(const std::string& quantity);
+
+// Throws maquette::Error naming `op` and the first of `quantities` whose port is not `mapped`.
+void check_quantity_inputs(const std::vector<std::string>& quantities,
+                           const std::set<std::string>& mapped, const std::string& op);
 
 // One plane (ring 0) per name in `quantities` ("height", "slope" or an input port name).
 // Throws naming `op` and the quantity when its input is not mapped.

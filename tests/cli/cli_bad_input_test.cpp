@@ -78,11 +78,23 @@ TEST(BadInput, DuplicatedStationIdIsRefused) {
   EXPECT_FALSE(fs::exists(store));  // a failed ingest leaves no new store
 }
 
+// A word that names no command is told with the choices (CLI11 said "A subcommand is required").
+TEST(BadInput, AnUnknownCommandIsNamedWithTheChoices) {
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"bogus", "maquette: 'bogus' is not one of cells, ingest, info,"},
+           {"-q export bogus", "maquette export: 'bogus' is not one of gtiff, png,"},
+           {"render pano", "maquette render: 'pano' is not one of panorama, fit"}}) {
+    const CliResult r = run_maquette(args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find("maquette: error: " + message), std::string::npos) << r.err;
+  }
+}
+
 TEST(BadInput, UnknownKindListsEveryKind) {
   const std::string dir = temp_dir();
   expect_error(run_maquette("ingest " + dir + "/s.mqt --layer a --as vectors " + small_dem(dir)),
                "--as 'vectors' is not one of dem, imagery, climate, landcover, raster (rasters), "
-               "features, stations (vectors)");
+               "features, stations (vectors), model (a glTF file)");
 }
 
 // A missing file, a file this user may not read, and a file GDAL cannot read get three messages.
@@ -98,6 +110,10 @@ TEST(BadInput, MissingUnreadableAndForeignFilesAreTold) {
   expect_error(run_maquette("ingest " + store + " --layer a --as stations " + dir + "/none.csv"),
                dir + "/none.csv: no such file");
   expect_error(run_maquette("run " + dir + "/none.json"), dir + "/none.json: no such file");
+  // A directory was read as an empty file ("parse error at line 1, column 1").
+  fs::create_directory(dir + "/folder.json");
+  expect_error(run_maquette("run " + dir + "/folder.json"),
+               "cannot read " + dir + "/folder.json: it is a directory");
 
   // Unreadable: run as user nobody (root reads any file), the directories open to all.
   if (std::system("command -v setpriv >/dev/null") != 0) GTEST_SKIP() << "no setpriv";

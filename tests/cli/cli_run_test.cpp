@@ -263,6 +263,28 @@ TEST_F(CliRun, ATextureStepsParamsAndImageAreCheckedBeforeAnythingRuns) {
   expect_refused(p.dump(), "step 1 (texture.cluster): inputs.rgb: layer 'hs' has 1 channel");
   const CliResult dry = run_maquette("run " + dir_ + "/bad.json --dry-run");
   EXPECT_NE(dry.exit_code, 0);
+  // texture.classify without classes, texture.fit's reversed range and unmapped quantity (they
+  // failed on the first cell).
+  p["steps"] = {{{"op", "texture.classify"},
+                 {"inputs", {{"rgb", "hs"}}},
+                 {"outputs", {{"classes", "classes"}}}}};
+  expect_refused(p.dump(),
+                 "step 1 (texture.classify): texture.classify: params: give \"boxes\", "
+                 "\"polygons\" or \"centres\"");
+  json fit = {{"op", "texture.fit"},
+              {"inputs", {{"classes", "slope"}, {"rgb", "hs"}, {"dem", "dem"}}},
+              {"outputs", {{"model", "model"}}},
+              {"params", {{"ranges", {{"height", {10, 5}}}}}}};
+  p["steps"] = {fit};
+  expect_refused(p.dump(),
+                 "step 1 (texture.fit): texture.fit: params.ranges.height: expected [lo, hi] "
+                 "with lo < hi, got [10,5]");
+  fit["params"] = {{"ranges", {{"height", {0, 3000}}}}, {"quantities", {"height", "rainfall"}}};
+  fit["params"]["ranges"]["rainfall"] = {0, 900};
+  p["steps"] = {fit};
+  expect_refused(p.dump(),
+                 "step 1 (texture.fit): texture.fit: params.quantities: 'rainfall' has no input "
+                 "(map inputs.rainfall)");
 }
 
 // climate.solar's period and texture.procedural's model, told when the pipeline is read (they
@@ -282,6 +304,31 @@ TEST_F(CliRun, PeriodAndModelAreToldWhenThePipelineIsRead) {
   expect_refused(p.dump(),
                  "bad.json: step 1 (texture.procedural): texture.procedural: params: "
                  "give exactly one of \"model\" and \"model_file\"");
+}
+
+// texture.calibrate's coefficients (three, one per band) and its one-channel bands told when the
+// pipeline is read or planned (they failed on the first cell, after the steps before it).
+TEST_F(CliRun, CalibrateParamsAndBandsAreCheckedBeforeAnythingRuns) {
+  json p = small_pipeline(store_);
+  const json calibrate = {{"op", "texture.calibrate"},
+                          {"inputs", {{"red", "dem"}, {"green", "dem"}, {"blue", "dem"}}},
+                          {"outputs", {{"rgb", "rgb"}}},
+                          {"params",
+                           {{"reflectance_mult", {2e-5, 2e-5, 2e-5}},
+                            {"reflectance_add", {-0.1, -0.1, -0.1}},
+                            {"sun_elevation", 60}}}};
+  p["steps"] = {calibrate};
+  p["steps"][0]["params"]["reflectance_add"] = {-0.1, -0.1};
+  expect_refused(p.dump(),
+                 "bad.json: step 1 (texture.calibrate): params.reflectance_add: expected at "
+                 "least 3 items");
+  json second = calibrate;
+  second["inputs"]["red"] = "rgb";
+  second["outputs"]["rgb"] = "rgb2";
+  p["steps"] = {calibrate, second};
+  expect_refused(p.dump(),
+                 "bad.json: step 2 (texture.calibrate): inputs.red: layer 'rgb' has 3 channels, "
+                 "but the port takes 1");
 }
 
 TEST_F(CliRun, MissingRequiredParameterIsNamed) {

@@ -113,6 +113,25 @@ TEST(ExportBadInput, LevelsAreWholeAndInOrderARepeatedCellCountsOnce) {
   EXPECT_EQ(file_fingerprint(dir + "/twice.glb"), file_fingerprint(dir + "/once.glb"));
 }
 
+// Each quantization option is named with its value and range (one message named all three); a
+// categorical --dem is refused (its classes were meshed as heights).
+TEST(ExportBadInput, QuantizationBitsAndTheDemAreNamed) {
+  const std::string dir = temp_dir(), store = export_fixture().store_path;
+  const std::string cell =
+      Store::open(store, Store::Mode::ReadOnly)->tile_cells("dem").front().ToText();
+  for (const auto& [option, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--dem dem --position-bits 30", "--position-bits 30 is out of range 8..23"},
+           {"--dem dem --texcoord-bits 5", "--texcoord-bits 5 is out of range 6..24"},
+           {"--dem dem --normal-bits 25", "--normal-bits 25 is out of range 6..24"},
+           {"--dem landcover", "--dem layer 'landcover' is categorical (classes, not heights)"}}) {
+    const CliResult r =
+        run_maquette("export glb " + store + " " + dir + "/t.glb --cells " + cell + " " + option);
+    EXPECT_NE(r.exit_code, 0) << option;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/t.glb")) << option;
+  }
+}
+
 TEST(ExportBadInput, PngUnknownLayerAndBadBands) {
   const std::string out = temp_dir() + "/out.png";
   CliResult r = run_maquette("export png " + export_fixture().store_path + " --layer nope " + out);
@@ -123,6 +142,36 @@ TEST(ExportBadInput, PngUnknownLayerAndBadBands) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("band 9 out of range"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// An option that would do nothing for the layer is refused, naming it (it was ignored, exit 0).
+TEST(ExportBadInput, PngOptionsThatDoNothingForTheLayerAreNamed) {
+  const std::string out = temp_dir() + "/out.png";
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--layer dem --range 0 100",
+            "--range does nothing here: the hypsometric ramp tints fixed heights"},
+           {"--layer dem --range nan 100", "--range nan 100.000000: expected two finite"},
+           {"--layer dem --range 5 5", "expected two finite, distinct values"},
+           {"--layer dem --bands 1,2,3", "--bands does nothing here"},
+           {"--layer rgb --hillshade",
+            "--hillshade does nothing here: the layer's 3 channels are drawn as RGB"},
+           {"--layer rgb --ramp grey", "--ramp does nothing here"},
+           {"--layer landcover --ramp viridis",
+            "--ramp does nothing here: a categorical layer is drawn in its class colours"},
+           {"--layer landcover --hillshade", "--hillshade does nothing here"}}) {
+    const CliResult r =
+        run_maquette("export png " + export_fixture().store_path + " " + out + " " + args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+  // What does something still draws: a range on a stretched ramp, a hillshaded height.
+  for (const std::string args : {"--layer dem --ramp grey --range 0 100", "--layer dem --hillshade",
+                                 "--layer rgb --range 0 255"}) {
+    const CliResult r =
+        run_maquette("-q export png " + export_fixture().store_path + " " + out + " " + args);
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+  }
 }
 
 }  // namespace

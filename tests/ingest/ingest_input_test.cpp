@@ -3,6 +3,7 @@
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <thread>
 
 #include "ingest_fixture.h"
@@ -154,6 +156,39 @@ TEST_F(IngestInput, AllNodata) {
   expect_refused("--as dem " + bad, bad + ": every sample is nodata");
 }
 
+// A level so coarse that no pixel centre falls on the source writes no tile: an error leaving no
+// layer (it exited 0 with an empty layer).
+TEST_F(IngestInput, AnIngestWritingNoTileIsAnErrorAndLeavesNoLayer) {
+  const CliResult r =
+      run_maquette("ingest " + store + " --layer b --as dem --level 0 --tile-size 2 " + good);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("ingest b: no tile written: no pixel of the 1 cells at level 0"),
+            std::string::npos)
+      << r.err;
+  const auto after = Store::open(store, Store::Mode::ReadOnly);
+  EXPECT_FALSE(after->layer("b"));
+  EXPECT_FALSE(after->incomplete("a"));
+}
+
+// An ingest waiting for another process's write says so after a while (it waited silently, for
+// up to a minute and more), and goes on once the lock is released.
+TEST_F(IngestInput, AnIngestWaitingForAnotherWriterSaysSo) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(store.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "BEGIN IMMEDIATE", nullptr, nullptr, nullptr), SQLITE_OK);
+  auto ingest = std::async(std::launch::async, [&] {
+    return run_maquette("ingest " + store + " --layer b --as dem " + good);
+  });
+  std::this_thread::sleep_for(std::chrono::seconds(4));
+  EXPECT_EQ(sqlite3_exec(db, "COMMIT", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  const CliResult r = ingest.get();
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(store + ": another process is writing it; waiting for it to finish"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(IngestInput, LevelTooFineIsRefusedWithTheEstimate) {
   expect_refused("--as dem --level 19 " + good, "tiles of 256x256x1 float32 at level 19");
 }
@@ -182,10 +217,12 @@ TEST_F(IngestInput, MismatchedBandCounts) {
 TEST_F(IngestInput, BadOptionValues) {
   expect_refused("--as dem --resampling lanczos " + good, "--resampling 'lanczos'");
   expect_refused("--as heights " + good, "--as 'heights'");
+  expect_refused("--as dem --classes '{\"1\": {\"name\": \"forest\"}}' " + good,
+                 "--classes is for class layers (--as landcover), not --as dem");
   expect_refused("--as dem --bands 2 " + good, "--bands: " + good + " has no band 2");
   // Before the store is touched (tile size 1 failed at the overviews, the layer left incomplete).
   expect_refused("--as dem --tile-size 1 " + good,
-                 "--tile-size 1: a layer's tiles are at least 2 x 2 samples");
+                 "--tile-size: tile size 1: a layer's tiles are at least 2 x 2 samples");
   expect_refused("--as dem --tile-size 100 " + good, "--tile-size: tile size 100 is not a power");
 }
 

@@ -377,7 +377,12 @@ TEST(PaintingFitCli, BadInputIsNamed) {
                    ": points[3] (far) has no height and the --dem layer 'dem' has no data at lon "
                    "12, lat 45.2");
   expect_error(fit + f.points + " " + out + " --dem dem --fov 200", "--fov");
-  expect_error(fit + f.points + " " + out + " --dem dem --warp-smoothing -1", "--warp-smoothing");
+  const auto negative = run_maquette(fit + f.points + " " + out + " --dem dem --warp-smoothing -1");
+  EXPECT_NE(negative.exit_code, 0);
+  EXPECT_NE(negative.err.find("--warp-smoothing: expected a number >= 0, got -1"),
+            std::string::npos)
+      << negative.err;
+  EXPECT_LT(negative.err.size(), 300u) << negative.err;  // it printed DBL_MAX's 309 digits
   expect_error(fit + f.points + " " + out + " --dem lc",
                "--dem layer 'lc' is categorical (classes, not heights)");
   // Every click on one pixel: OpenCV's SQPnP asserted, an internal error (exit 3).
@@ -466,6 +471,23 @@ TEST(PaintingFitCli, OutputsSpareTheInputs) {
   EXPECT_EQ(run_maquette("info " + store).exit_code, 0);
   EXPECT_EQ(read_json(points), read_json(f.points));
   EXPECT_FALSE(std::ifstream(f.dir + "/ok.json"));
+}
+
+// A panorama file that cannot be written leaves neither the fit nor the panorama's other files
+// (the fit and the picture were left when the silhouettes failed).
+TEST(PaintingFitCli, AFileThatCannotBeWrittenLeavesNone) {
+  const Fixture& f = fixture();
+  const std::string dir = f.dir + "/unwritable";
+  std::filesystem::create_directories(dir + "/view-silhouettes.png");  // a directory in the way
+  expect_error("render fit " + f.store + " " + f.points + " " + dir + "/fit.json --dem dem " +
+                   "--panorama " + dir + "/view.png",
+               "cannot write " + dir + "/view-silhouettes.png: Is a directory");
+  for (const char* name : {"/fit.json", "/view.png", "/view-guides.tif"})
+    EXPECT_FALSE(std::filesystem::exists(dir + name)) << name;
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"view-silhouettes.png"});
 }
 
 }  // namespace

@@ -360,6 +360,18 @@ TEST(PanoramaCli, ExportStepWritesTheCommandsFiles) {
   expect_error(R"("antialias": 9)", "antialias");
   expect_error(R"("smooth_land_cover": true)",
                "params.smooth_land_cover is given without params.land_cover: it smooths nothing");
+  // Told when the pipeline is planned, before the steps before it run (it failed after them).
+  std::ofstream(f.dir + "/two_steps.json")
+      << R"({"store": "s.mqt", "region": {"bbox": [10, 45, 10.3, 45.3]}, "level": 9,
+            "steps": [{"op": "terrain.derive", "inputs": {"dem": "dem"},
+                       "outputs": {"slope": "slope_before_panorama"}},
+                      {"op": "export", "params": {"format": "panorama", "out": "step/p0.png",
+                       "dem": "dem", "camera": [10.15, 45.02, 1500], "fov": 0}}]})";
+  const auto planned = run_maquette("-q run " + f.dir + "/two_steps.json");
+  EXPECT_NE(planned.exit_code, 0);
+  EXPECT_NE(planned.err.find("step 2 (export): camera fov 0"), std::string::npos) << planned.err;
+  EXPECT_FALSE(
+      Store::open(f.dir + "/s.mqt", Store::Mode::ReadOnly)->layer("slope_before_panorama"));
 }
 
 // A new store in `dir` holding steep hills (layer dem, 800 m high, 700 m to 1 km apart) from 10 E
@@ -1046,6 +1058,11 @@ TEST(PanoramaCli, BadInputIsNamed) {
                    " --dem dem --camera 10.15 45.15 -50 --above-ground",
                "--above-ground: the camera's height -50.0 m must be above the ground");
   expect_error(f.render(out, "--fov 175"), "camera fov 175");
+  // A file that cannot be written leaves none of the three (the picture was left).
+  std::filesystem::create_directory(f.dir + "/bad-silhouettes.png");
+  expect_error(f.render(out, ""), "cannot write " + f.dir + "/bad-silhouettes.png: Is a directory");
+  EXPECT_FALSE(std::filesystem::exists(f.dir + "/bad-guides.tif"));
+  std::filesystem::remove(f.dir + "/bad-silhouettes.png");
   expect_error(f.render(out, "--size 100000 20"),
                "--size 100000 20: a picture is at most 65536 pixels a side");
   expect_error(f.render(out, "--fov 0"), "out of range");

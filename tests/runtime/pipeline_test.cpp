@@ -136,7 +136,8 @@ TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
   EXPECT_EQ(parse_error(doc),
             "p.json: tile_size: tile size 100 is not a power of two in [1, 4096]");
   doc["tile_size"] = 1;  // its layers' overviews could not halve it (the run failed at its end)
-  EXPECT_EQ(parse_error(doc), "p.json: tile_size: 1: a layer's tiles are at least 2 x 2 samples");
+  EXPECT_EQ(parse_error(doc),
+            "p.json: tile_size: tile size 1: a layer's tiles are at least 2 x 2 samples");
   doc["tile_size"] = 4294967312;  // 16 when truncated to 32 bits
   EXPECT_EQ(parse_error(doc), "p.json: tile_size: 4294967312 is outside -2147483648..2147483647");
   doc.erase("store");

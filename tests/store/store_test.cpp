@@ -269,6 +269,9 @@ TEST(StoreLayers, RejectsBadDefinitions) {
     expect_error([&] { store->create_layer(l); }, {mentions});
   };
   bad([](LayerInfo& l) { l.name = ""; }, "name");
+  bad([](LayerInfo& l) { l.name = " "; }, "layer name ' ': no blank at either end");
+  bad([](LayerInfo& l) { l.name = "dem "; }, "layer name 'dem '");
+  bad([](LayerInfo& l) { l.name = "a\tb"; }, "no control character");
   bad([](LayerInfo& l) { l.tile_size = 100; }, "tile size 100");
   bad([](LayerInfo& l) { l.codec = "lz4"; }, "codec 'lz4'");
   bad([](LayerInfo& l) { l.level = 30; }, "level 30");

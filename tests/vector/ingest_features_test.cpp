@@ -238,6 +238,23 @@ TEST(IngestFeatures, SeveralSourcesGetDistinctFidsAndARegionFilters) {
   EXPECT_EQ(layers[1]["features"], 1);
 }
 
+// An ingest that stores no feature (sources without any, or none in the region) is an error that
+// leaves no layer (it exited 0 with an empty layer).
+TEST(IngestFeatures, AnIngestStoringNoFeatureIsAnErrorAndLeavesNoLayer) {
+  TempDir dir;
+  auto store = new_store(dir);
+  FeatureIngestOptions o = at_level(10);
+  o.region = {default_grid().cell_from_point({-100.0, 40.0}, 10)};  // far from every feature
+  expect_error([&] { ingest_features(*store, {mixed_geojson(dir)}, o); },
+               {"no feature stored in layer 'things': 3 outside the region"});
+  EXPECT_FALSE(store->layer("things"));
+  const std::string none = dir.file("none.geojson");
+  write_text(none, collection(json::array()));
+  expect_error([&] { ingest_features(*store, {none}, at_level(10)); },
+               {"no feature stored in layer 'things': the sources hold none"});
+  EXPECT_FALSE(store->layer("things"));
+}
+
 TEST(IngestFeatures, DefaultLevelFitsTheMedianFeature) {
   TempDir dir;
   json features = json::array();

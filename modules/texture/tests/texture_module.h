@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,11 +35,17 @@ inline json full_params(const std::string& name, const json& params) {
   return validate_params(texture_operator(name).spec().params_schema, params, name);
 }
 
-// Runs a cell operator on one cell.
+// Runs a cell operator on one cell, its params validated and checked as a pipeline's are
+// (OperatorSpec::check_params, the input ports `data` holds taken as mapped).
 inline CellData run_cell(const std::string& name, CellId cell, int size, CellData data,
                          const json& params) {
   const auto& op = static_cast<const CellOperator&>(texture_operator(name));
   const json full = full_params(name, params);
+  if (op.spec().check_params) {
+    std::set<std::string> mapped;
+    for (const auto& [port, tile] : data.inputs) mapped.insert(port);
+    op.spec().check_params(full, mapped);
+  }
   for (const OutputSpec& out : op.spec().outputs)
     data.outputs.emplace(out.name, Tile<float>(size, out.channels));
   op.run({.cell = cell, .tile_size = size, .grid = &default_grid(), .params = &full}, data);
