@@ -65,10 +65,11 @@ for size in $sizes; do
   "$bin/void_errors" seams "$out/rainier_$size/voids.tif" "$out/rainier_$size/filled.tif" "$tile"
 done
 
-# The picture: one height range and hillshade for the three layers.
+# The picture: the hypsometric tints (fixed colours by metres, the same for the three layers) and
+# a hillshade.
 for layer in voids filled gdal; do
   mq export png "$out/everest/s.mqt" "$out/everest/$layer.png" --layer "$layer" \
-    --hillshade --range 500 8000 --max-size 600
+    --hillshade --max-size 600
 done
 "$bin/void_errors" montage "$out/everest.jpg" "$out/everest/voids.png" \
   "$out/everest/filled.png" "$out/everest/gdal.png"

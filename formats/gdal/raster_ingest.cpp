@@ -180,7 +180,12 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   const std::optional<LayerInfo> existing = store->layer(layer.name);
   const bool new_layer = !existing;
   const bool was_complete = existing && !store->incomplete(layer.name);
-  store->create_layer(with_earlier_footprint(layer, existing));
+  try {  // a definition the store refuses (a bad layer name) leaves no new store either
+    store->create_layer(with_earlier_footprint(layer, existing));
+  } catch (...) {
+    if (store->created()) remove_if_created(std::move(store));
+    throw;
+  }
   std::vector<CellId> todo = plan.cells;
   int64_t run = 0;
   if (o.resume) {
@@ -265,9 +270,10 @@ RasterIngestReport ingest_raster(const std::string& store_path,
   if (!error && written == 0 && report.skipped == 0)  // a layer without a tile, never wanted
     error = std::make_exception_ptr(Error(fmt::format(
         "ingest {}: no tile written: no pixel of the {} cells at level {} ({:.3g} m pixels) has a "
-        "valid sample of the sources ({:.3g} m pixels); are they all nodata, or smaller than a "
-        "pixel there (a finer --level)?",
-        layer.name, report.cells, layer.level, plan.target_pixel_m, plan.source_pixel_m)));
+        "valid sample of the sources ({:.3g} m pixels); {}",
+        layer.name, report.cells, layer.level, plan.target_pixel_m, plan.source_pixel_m,
+        new_layer ? "are they all nodata, or smaller than a pixel there (a finer --level)?"
+                  : "the layer is as it was")));
   if (error) {
     std::string what = "unknown error";
     try {

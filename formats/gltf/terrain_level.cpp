@@ -13,6 +13,7 @@
 #include "core/lonlat_bounds.h"
 #include "gltf/lattice.h"
 #include "gltf/terrain_source.h"
+#include "image/option_layers.h"
 
 namespace maquette {
 
@@ -20,7 +21,7 @@ TerrainSource::TerrainSource(const Store& store_, const Grid& grid_, TerrainSett
     : store(store_),
       grid(grid_),
       settings(std::move(s)),
-      dem(require_dem_layer(store, settings.dem)),
+      dem(height_layer(store, settings.dem)),
       heights(ellipsoidal_heights(dem)) {
   if (!settings.texture.empty()) texture = require_texture_layer(store, settings.texture);
   const int k = settings.decimation;

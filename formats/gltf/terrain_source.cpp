@@ -7,17 +7,6 @@
 
 namespace maquette {
 
-LayerInfo require_dem_layer(const Store& store, const std::string& name) {
-  const LayerInfo info = store.require_layer(name);
-  if (info.kind != LayerKind::Raster || info.channels != 1)
-    throw Error("--dem layer '" + name + "' is a " + std::string(layer_kind_name(info.kind)) +
-                " layer with " + std::to_string(info.channels) +
-                " channel(s): expected a one-channel raster of heights");
-  if (info.semantics == Semantics::Categorical)  // classes meshed as heights of a few metres
-    throw Error("--dem layer '" + name + "' is categorical (classes, not heights)");
-  return info;
-}
-
 LayerInfo require_texture_layer(const Store& store, const std::string& name) {
   const LayerInfo info = store.require_layer(name);
   if (info.kind != LayerKind::Raster || info.dtype != DType::U8 || info.channels == 2 ||

@@ -11,9 +11,8 @@
 
 namespace maquette {
 
-// Checks the layers an export uses: the DEM a one-channel raster of heights (not categorical), the
-// imagery a uint8 raster of 1, 3 or 4 channels. Throws maquette::Error naming the layer.
-LayerInfo require_dem_layer(const Store& store, const std::string& name);
+// Checks the imagery an export uses (the DEM: image/option_layers.h height_layer): a uint8 raster
+// of 1, 3 or 4 channels. Throws maquette::Error naming the layer.
 LayerInfo require_texture_layer(const Store& store, const std::string& name);
 
 // The layer's tile (or overview tile) of `cell`, no finer than the layer's level.

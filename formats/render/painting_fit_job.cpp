@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/output_file.h"
+#include "image/option_layers.h"
 #include "render/terrain_scene.h"
 
 namespace maquette {
@@ -27,7 +28,7 @@ std::string number(double v) {
 
 PaintingFit fit_painting_to_store(const Store& store, const Grid& grid, const PaintingFitJob& job,
                                   const PaintingPoints& points, const std::string& points_path) {
-  TerrainHeights dem_heights(store, grid, dem_layer(store, job.dem));
+  TerrainHeights dem_heights(store, grid, height_layer(store, job.dem));
   std::vector<GroundClick> clicks;
   for (const ControlPoint& p : points.points) {
     GroundClick c{p.x, p.y, {p.lon, p.lat, 0}};

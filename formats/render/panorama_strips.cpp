@@ -33,7 +33,9 @@ struct PanoramaWriter::Files {
   bool land_cover = false, cast_shadow = false, coverage = false;
   int64_t terrain_pixels = 0;  // written so far
   double nearest_terrain = INFINITY;
-  OutputFile guides_file;
+  // Every file written under its temporary name before any is put in place (a picture without its
+  // guides was left when they could not be written); a path in the way is told before drawing.
+  OutputFile picture_file, guides_file, silhouettes_file;
   GdalSession gdal;
   DatasetPtr guides;
   Files(const std::string& path, int w, int h)
@@ -42,7 +44,9 @@ struct PanoramaWriter::Files {
         height(h),
         rgb(3 * size_t(w) * size_t(h)),
         silhouette(size_t(w) * size_t(h)),
-        guides_file(panorama_files(path)[1], {".aux.xml"}) {}
+        picture_file(panorama_files(path)[0], {".aux.xml"}),
+        guides_file(panorama_files(path)[1], {".aux.xml"}),
+        silhouettes_file(panorama_files(path)[2], {".aux.xml"}) {}
 };
 
 std::vector<std::string> panorama_files(const std::string& out) {
@@ -179,14 +183,11 @@ double PanoramaWriter::nearest_terrain() const { return files_->nearest_terrain;
 void PanoramaWriter::commit() {
   Files& f = *files_;
   f.guides.reset();  // flushes the last blocks
-  // Every file written under its temporary name before any is put in place: a failure leaves
-  // none of them (a picture without its guides was left when the guides could not be written).
-  const std::vector<std::string> paths = panorama_files(f.out);
-  OutputFile picture(paths[0], {".aux.xml"}), silhouettes(paths[2], {".aux.xml"});
-  write_image(f.rgb, f.width, f.height, 3, panorama_picture_format(paths[0]), picture);
-  write_image(f.silhouette, f.width, f.height, 1, panorama_picture_format(paths[2]), silhouettes);
-  picture.commit();
-  silhouettes.commit();
+  write_image(f.rgb, f.width, f.height, 3, panorama_picture_format(f.out), f.picture_file);
+  write_image(f.silhouette, f.width, f.height, 1,
+              panorama_picture_format(f.silhouettes_file.path()), f.silhouettes_file);
+  f.picture_file.commit();
+  f.silhouettes_file.commit();
   f.guides_file.commit();
 }
 

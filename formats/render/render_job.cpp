@@ -14,6 +14,7 @@
 #include "core/output_clash.h"
 #include "gdal/vertical_datum.h"
 #include "image/layer_sampler.h"
+#include "image/option_layers.h"
 #include "render/rasterizer.h"
 #include "render/terrain_scene.h"
 #include "render/terrain_shadow.h"
@@ -36,31 +37,7 @@ void check_place(const std::string& option, const GeodeticPoint& p) {
                 "and a finite height");
 }
 
-LayerInfo raster_layer(const Store& store, const std::string& option, const std::string& name) {
-  std::optional<LayerInfo> info = store.layer(name);
-  if (!info) throw Error(option + " layer '" + name + "' is not in the store " + store.path());
-  try {  // a layer a run left incomplete is not drawn (nor fitted to, nor warped)
-    info = store.require_layer(name);
-  } catch (const Error& e) {
-    throw Error(option + ": " + e.what());
-  }
-  if (info->kind != LayerKind::Raster)
-    throw Error(option + " layer '" + name + "' is a " + std::string(layer_kind_name(info->kind)) +
-                " layer: expected a raster");
-  return *info;
-}
-
 }  // namespace
-
-LayerInfo dem_layer(const Store& store, const std::string& name) {
-  const LayerInfo dem = raster_layer(store, "--dem", name);
-  if (dem.channels != 1)
-    throw Error("--dem layer '" + dem.name + "' has " + std::to_string(dem.channels) +
-                " channels: expected one channel of heights");
-  if (dem.semantics == Semantics::Categorical)
-    throw Error("--dem layer '" + dem.name + "' is categorical (classes, not heights)");
-  return dem;
-}
 
 void check_panorama_job(const PanoramaJob& job) {
   check_place("--camera", job.camera.eye);
@@ -107,9 +84,9 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
   auto prepared = std::make_unique<PreparedPanorama>();
   std::optional<LayerInfo>& texture = prepared->texture;
   std::optional<LayerInfo>& land_cover = prepared->land_cover;
-  const LayerInfo dem = dem_layer(store, job.dem);
+  const LayerInfo dem = height_layer(store, job.dem);
   if (!job.texture.empty()) {
-    texture = raster_layer(store, "--texture", job.texture);
+    texture = option_raster_layer(store, "--texture", job.texture);
     if (texture->dtype != DType::U8 || texture->channels == 2 || texture->channels > 4)
       throw Error("--texture layer '" + job.texture + "' is " +
                   std::string(dtype_name(texture->dtype)) + " with " +
@@ -120,7 +97,7 @@ std::unique_ptr<PreparedPanorama> prepare(const Store& store, const Grid& grid, 
                   "' is categorical (classes, not colours): give it as --land-cover");
   }
   if (!job.land_cover.empty()) {
-    land_cover = raster_layer(store, "--land-cover", job.land_cover);
+    land_cover = option_raster_layer(store, "--land-cover", job.land_cover);
     if (land_cover->semantics != Semantics::Categorical)
       throw Error("--land-cover layer '" + job.land_cover + "' is not categorical");
   }

@@ -42,18 +42,15 @@ struct PanoramaJob {
   int fragment_rows = 0;
 };
 
-// The layer `name` as --dem. Throws maquette::Error naming it when it is not in the store, not a
-// raster, not one channel, or categorical (land-cover classes drawn as heights of a few metres).
-LayerInfo dem_layer(const Store& store, const std::string& name);
-
 // The checks of render_panorama that need no store: the camera and --look-at places, the field of
 // view, size, --antialias, --sun, --haze-distance, the bend, --strip-rows. Throws
 // maquette::Error naming the option and value at fault.
 void check_panorama_job(const PanoramaJob& job);
 
 // Throws maquette::Error naming the option and value at fault: an unknown layer or one of the
-// wrong kind (--dem: dem_layer; --texture: uint8 of 1, 3 or 4 channels; --land-cover:
-// categorical), a bend out of range (render/progressive_bend.h), a camera below the terrain (or
+// wrong kind (--dem: image/option_layers.h height_layer; --texture: uint8 of 1, 3 or 4 channels;
+// --land-cover: categorical), a bend out of range (render/progressive_bend.h), a camera below the
+// terrain (or
 // --above-ground where the DEM has no data), a field of view, pitch or size out of range
 // (render/camera.h), a --camera or --look-at not a finite lon, a lat within +-90 and a finite
 // height, a --sun not finite, a sun altitude outside (0, 90) with --shadows, no tile of the DEM in

@@ -111,7 +111,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);  // subcommand callbacks run here
   } catch (const CLI::ParseError& e) {
-    if (const auto unknown = unknown_subcommand(app, argc, argv)) {
+    // --help and --version come as ParseErrors of exit code 0: they print what was asked.
+    if (const auto unknown =
+            e.get_exit_code() != 0 ? unknown_subcommand(app, argc, argv) : std::nullopt) {
       std::fprintf(stderr, "maquette: error: %s\nRun with --help for more information.\n",
                    unknown->c_str());
       return e.get_exit_code();

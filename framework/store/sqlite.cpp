@@ -90,7 +90,7 @@ int wait_for_lock(void* path, int attempts) {
   if (waited >= kLockWait) return 0;
   if (!told && waited >= kLockNotice) {
     told = true;
-    spdlog::warn("{}: another process is writing it; waiting for it to finish (up to {} s)",
+    spdlog::warn("{}: another connection holds its lock; waiting for it (up to {} s)",
                  *static_cast<const std::string*>(path), kLockWait.count());
   }
   std::this_thread::sleep_for(std::chrono::microseconds(200));
@@ -183,8 +183,8 @@ bool Connection::checkpoint_passive() noexcept {
 }
 
 void Connection::fail(int code) const {
-  if ((code & 0xff) == SQLITE_BUSY)
-    throw Failure(path_ + ": another process kept it locked for more than " +
+  if (code == SQLITE_BUSY)  // the busy handler gave up (not SQLITE_BUSY_SNAPSHOT and the like)
+    throw Failure(path_ + ": another connection kept it locked for more than " +
                       std::to_string(kLockWait.count()) + " s (" + sqlite3_errmsg(db_) + ")",
                   code & 0xff);
   throw Failure(path_ + ": " + sqlite3_errmsg(db_), code & 0xff);

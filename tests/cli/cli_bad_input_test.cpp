@@ -88,6 +88,11 @@ TEST(BadInput, AnUnknownCommandIsNamedWithTheChoices) {
     EXPECT_NE(r.exit_code, 0) << args;
     EXPECT_NE(r.err.find("maquette: error: " + message), std::string::npos) << r.err;
   }
+  // --help prints the help, whatever else is given.
+  const CliResult help = run_maquette("export bogus --help");
+  EXPECT_EQ(help.exit_code, 0) << help.err;
+  EXPECT_EQ(help.err.find("error"), std::string::npos) << help.err;
+  EXPECT_NE(help.out.find("tiles3d"), std::string::npos) << help.out;
 }
 
 TEST(BadInput, UnknownKindListsEveryKind) {

@@ -184,7 +184,7 @@ TEST_F(IngestInput, AnIngestWaitingForAnotherWriterSaysSo) {
   sqlite3_close(db);
   const CliResult r = ingest.get();
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find(store + ": another process is writing it; waiting for it to finish"),
+  EXPECT_NE(r.err.find(store + ": another connection holds its lock; waiting for it"),
             std::string::npos)
       << r.err;
 }
@@ -202,6 +202,13 @@ TEST_F(IngestInput, RefusedIngestLeavesNoNewStore) {
     for (const char* suffix : {"", "-wal", "-shm"})
       EXPECT_FALSE(std::filesystem::exists(fresh + suffix)) << args << suffix;
   }
+  // A name the store refuses, after the store is made (it was left behind).
+  const CliResult blank = run_maquette("ingest " + fresh + " --layer ' a' --as dem " + good);
+  EXPECT_EQ(blank.exit_code, 1) << blank.err;
+  EXPECT_NE(blank.err.find("layer name ' a': no blank at either end"), std::string::npos)
+      << blank.err;
+  for (const char* suffix : {"", "-wal", "-shm"})
+    EXPECT_FALSE(std::filesystem::exists(fresh + suffix)) << suffix;
   const CliResult ok = run_maquette("-q ingest " + fresh + " --layer a --as dem " + good);
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_TRUE(std::filesystem::exists(fresh));

@@ -157,8 +157,9 @@ TEST(Tiles3d, BadInput) {
     EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
   };
   const std::string out = temp_dir() + "/bad";
-  fails("tiles3d " + f.store_path + " " + out + " --dem nope", "unknown layer 'nope'");
-  fails("tiles3d " + f.store_path + " " + out + " --dem rgb", "expected a one-channel raster");
+  fails("tiles3d " + f.store_path + " " + out + " --dem nope",
+        "--dem layer 'nope' is not in the store");
+  fails("tiles3d " + f.store_path + " " + out + " --dem rgb", "expected one channel of heights");
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --texture dem", "is not imagery");
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --bbox 100 -40 101 -39", "no tiles");
   fails("tiles3d " + f.store_path + " " + out + " --dem dem --max-mib 0", "would write about");
