@@ -66,6 +66,8 @@ void ingest_vectors(const IngestJob& o) {
     throw Error("--as stations takes one CSV file, got " + std::to_string(o.sources.size()));
   if (!o.raster.vertical_datum.empty())
     throw Error("--vertical-datum is for height layers (--as dem), not --as " + o.raster.as);
+  if (!o.raster.classes.empty())  // it was ignored
+    throw Error("--classes is for class layers (--as landcover), not --as " + o.raster.as);
   auto store = Store::open(o.store, Store::Mode::Create);
   try {
     ingest_vectors_into(*store, o);
@@ -81,10 +83,10 @@ void ingest_model(const IngestJob& o) {
   if (o.sources.size() != 1)
     throw Error("--as model takes one .glb or .gltf file, got " + std::to_string(o.sources.size()));
   if (o.level || !o.bbox.empty() || !o.raster.region.empty() || !o.raster.bands.empty() ||
-      !o.raster.vertical_datum.empty())
+      !o.raster.vertical_datum.empty() || !o.raster.classes.empty())
     throw Error(
-        "--as model takes none of --level, --bbox, --region, --bands, --vertical-datum: a model "
-        "is in its own frame");
+        "--as model takes none of --level, --bbox, --region, --bands, --vertical-datum, "
+        "--classes: a model is in its own frame");
   const std::string& file = o.sources.front();
   // Instances name their prototypes: a model called like a built-in one would be mistaken for it.
   if (o.raster.layer.starts_with(kBuiltinPrototypePrefix))

@@ -100,6 +100,11 @@ TEST(BadInput, UnknownKindListsEveryKind) {
   expect_error(run_maquette("ingest " + dir + "/s.mqt --layer a --as vectors " + small_dem(dir)),
                "--as 'vectors' is not one of dem, imagery, climate, landcover, raster (rasters), "
                "features, stations (vectors), model (a glTF file)");
+  // --classes names a land cover's classes: with vectors it was ignored.
+  expect_error(run_maquette("ingest " + dir + "/s.mqt --layer a --as features --classes '{}' " +
+                            dir + "/none.json"),
+               "--classes is for class layers (--as landcover), not --as features");
+  EXPECT_FALSE(fs::exists(dir + "/s.mqt"));
 }
 
 // A missing file, a file this user may not read, and a file GDAL cannot read get three messages.
