@@ -46,8 +46,9 @@ int log2_tile_size(int size) {
 }
 
 void check_overview_tile_size(int size) {
-  log2_tile_size(size);
-  if (size < 2) throw Error("tile size 1: a layer's tiles are at least 2 x 2 samples");
+  if (size < 2 || size > 4096 || (size & (size - 1)) != 0)
+    throw Error("tile size " + std::to_string(size) +
+                " is not a power of two in [2, 4096] (a layer's overviews halve its tiles)");
 }
 
 template <typename T>

@@ -229,7 +229,7 @@ TEST_F(IngestInput, BadOptionValues) {
   expect_refused("--as dem --bands 2 " + good, "--bands: " + good + " has no band 2");
   // Before the store is touched (tile size 1 failed at the overviews, the layer left incomplete).
   expect_refused("--as dem --tile-size 1 " + good,
-                 "--tile-size: tile size 1: a layer's tiles are at least 2 x 2 samples");
+                 "--tile-size: tile size 1 is not a power of two in [2, 4096]");
   expect_refused("--as dem --tile-size 100 " + good, "--tile-size: tile size 100 is not a power");
 }
 

@@ -133,11 +133,15 @@ TEST(Pipeline, InvalidCellIdLevelAndLatitude) {
   EXPECT_THAT(parse_error(doc), HasSubstr("p.json: region: unknown field 'circle'"));
   doc = demo_pipeline();
   doc["tile_size"] = 100;
-  EXPECT_EQ(parse_error(doc),
-            "p.json: tile_size: tile size 100 is not a power of two in [1, 4096]");
+  EXPECT_EQ(
+      parse_error(doc),
+      "p.json: tile_size: tile size 100 is not a power of two in [2, 4096] (a layer's overviews "
+      "halve its tiles)");
   doc["tile_size"] = 1;  // its layers' overviews could not halve it (the run failed at its end)
-  EXPECT_EQ(parse_error(doc),
-            "p.json: tile_size: tile size 1: a layer's tiles are at least 2 x 2 samples");
+  EXPECT_EQ(
+      parse_error(doc),
+      "p.json: tile_size: tile size 1 is not a power of two in [2, 4096] (a layer's overviews "
+      "halve its tiles)");
   doc["tile_size"] = 4294967312;  // 16 when truncated to 32 bits
   EXPECT_EQ(parse_error(doc), "p.json: tile_size: 4294967312 is outside -2147483648..2147483647");
   doc.erase("store");
